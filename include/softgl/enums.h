@@ -1,0 +1,78 @@
+// softgl/enums.h — OpenGL's symbolic constants, with OpenGL's numeric values.
+//
+// Every entry point that takes an enum takes a plain `softgl::Enum`, so that a wrong value can be passed and
+// reported by GetError() as INVALID_ENUM, exactly as OpenGL does. The numbers are OpenGL's own, which makes
+// a scene easy to port between softgl and a real OpenGL implementation.
+#pragma once
+
+#include <cstdint>
+
+namespace softgl {
+
+using Enum = std::uint32_t;
+using Bitfield = std::uint32_t;
+
+// Errors, as returned by Context::GetError().
+inline constexpr Enum NO_ERROR = 0;
+inline constexpr Enum INVALID_ENUM = 0x0500;
+inline constexpr Enum INVALID_VALUE = 0x0501;
+inline constexpr Enum INVALID_OPERATION = 0x0502;
+inline constexpr Enum OUT_OF_MEMORY = 0x0505;
+inline constexpr Enum INVALID_FRAMEBUFFER_OPERATION = 0x0506;
+
+// Buffer targets and usage hints.
+inline constexpr Enum ARRAY_BUFFER = 0x8892;
+inline constexpr Enum ELEMENT_ARRAY_BUFFER = 0x8893;
+inline constexpr Enum STREAM_DRAW = 0x88E0;
+inline constexpr Enum STATIC_DRAW = 0x88E4;
+inline constexpr Enum DYNAMIC_DRAW = 0x88E8;
+
+// Data types (vertex attributes and indices).
+inline constexpr Enum BYTE = 0x1400;
+inline constexpr Enum UNSIGNED_BYTE = 0x1401;
+inline constexpr Enum SHORT = 0x1402;
+inline constexpr Enum UNSIGNED_SHORT = 0x1403;
+inline constexpr Enum INT = 0x1404;
+inline constexpr Enum UNSIGNED_INT = 0x1405;
+inline constexpr Enum FLOAT = 0x1406;
+
+// Primitive modes.
+inline constexpr Enum POINTS = 0x0000;
+inline constexpr Enum LINES = 0x0001;
+inline constexpr Enum LINE_LOOP = 0x0002;
+inline constexpr Enum LINE_STRIP = 0x0003;
+inline constexpr Enum TRIANGLES = 0x0004;
+inline constexpr Enum TRIANGLE_STRIP = 0x0005;
+inline constexpr Enum TRIANGLE_FAN = 0x0006;
+
+// Clear bits.
+inline constexpr Bitfield DEPTH_BUFFER_BIT = 0x00000100;
+inline constexpr Bitfield STENCIL_BUFFER_BIT = 0x00000400;
+inline constexpr Bitfield COLOR_BUFFER_BIT = 0x00004000;
+
+// Capabilities for Enable / Disable / IsEnabled.
+inline constexpr Enum CULL_FACE = 0x0B44;
+inline constexpr Enum DEPTH_TEST = 0x0B71;
+inline constexpr Enum PROGRAM_POINT_SIZE = 0x8642;
+
+// Faces, winding and polygon modes.
+inline constexpr Enum FRONT = 0x0404;
+inline constexpr Enum BACK = 0x0405;
+inline constexpr Enum FRONT_AND_BACK = 0x0408;
+inline constexpr Enum CW = 0x0900;
+inline constexpr Enum CCW = 0x0901;
+inline constexpr Enum POINT = 0x1B00;
+inline constexpr Enum LINE = 0x1B01;
+inline constexpr Enum FILL = 0x1B02;
+
+// Comparison functions (depth test).
+inline constexpr Enum NEVER = 0x0200;
+inline constexpr Enum LESS = 0x0201;
+inline constexpr Enum EQUAL = 0x0202;
+inline constexpr Enum LEQUAL = 0x0203;
+inline constexpr Enum GREATER = 0x0204;
+inline constexpr Enum NOTEQUAL = 0x0205;
+inline constexpr Enum GEQUAL = 0x0206;
+inline constexpr Enum ALWAYS = 0x0207;
+
+}  // namespace softgl

@@ -1,0 +1,29 @@
+// softgl/image.h — an RGBA8 image in memory, and PNG output.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace softgl {
+
+/// An 8-bit RGBA image. Rows are stored top row first, as in image files (the reverse of OpenGL's window
+/// coordinates, whose row 0 is the bottom one): Context::ReadPixels() does the flip.
+struct Image {
+  int width = 0;
+  int height = 0;
+  std::vector<std::uint8_t> rgba;  ///< width * height * 4 bytes, row-major, top row first.
+
+  /// The pixel at column x, row y counted from the top, as {r, g, b, a}. No bounds check beyond an assert.
+  const std::uint8_t* At(int x, int y) const { return rgba.data() + (std::size_t(y) * width + x) * 4; }
+};
+
+/// Writes `image` to a PNG file. Returns false (and writes nothing useful) if the image is empty or the file
+/// cannot be written.
+bool WritePng(const std::string& path, const Image& image);
+
+/// Reads a PNG (or any format stb_image decodes) into an RGBA8 image. Returns false, with a message in `error`
+/// when given, for a missing or corrupt file.
+bool ReadImage(const std::string& path, Image& image, std::string* error = nullptr);
+
+}  // namespace softgl

@@ -1,0 +1,170 @@
+// softgl/shader.h — the programmable stages: write a shader by subclassing softgl::Shader.
+//
+// A shader is a C++ class. Its uniforms are ordinary members; its varyings are a plain struct of floats and GLM
+// float vectors that the vertex stage writes and the fragment stage reads, interpolated perspective-correctly.
+//
+//     struct Vary { glm::vec3 color; };
+//     struct ColorShader : softgl::Shader<ColorShader, Vary> {
+//       glm::mat4 mvp{1.0f};                                   // a uniform
+//       void Vertex(const softgl::VertexIn& in, softgl::VertexOut<Vary>& out) const {
+//         out.position = mvp * in.attrib[0];                   // gl_Position, clip space
+//         out.varyings.color = glm::vec3(in.attrib[1]);
+//       }
+//       bool Fragment(const softgl::FragmentIn<Vary>& in, softgl::FragmentOut& out) const {
+//         out.color[0] = glm::vec4(in.varyings.color, 1.0f);   // return false to discard
+//         return true;
+//       }
+//     };
+//
+// The pipeline calls a shader through softgl::Program, once per batch of vertices and once per batch of 2x2
+// fragment quads; inside a batch, Shader<> calls your Vertex() and Fragment() directly (no virtual call per vertex
+// or fragment), so the compiler can inline them. A quad always holds the four fragments of an aligned 2x2 pixel
+// block; lanes not covered by the primitive are "helper" lanes whose varyings are still interpolated, so that
+// FragmentIn::dFdx / dFdy give screen-space derivatives, as in GLSL.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
+#include <type_traits>
+
+#include <glm/glm.hpp>
+
+namespace softgl {
+
+/// Number of vertex attribute locations (GL_MAX_VERTEX_ATTRIBS).
+inline constexpr int kMaxVertexAttribs = 16;
+/// Largest varyings struct, in floats: 16 vec4 (GL_MAX_VARYING_COMPONENTS = 64).
+inline constexpr int kMaxVaryingFloats = 64;
+/// Number of colour outputs a fragment shader may write (color[0] goes to the default framebuffer).
+inline constexpr int kMaxColorOutputs = 4;
+
+/// What the vertex stage reads: the fetched attributes of one vertex.
+struct VertexIn {
+  /// attrib[i] is the value of attribute location i, converted to float as OpenGL does (normalized or not);
+  /// missing components are filled from (0, 0, 0, 1); a disabled attribute reads its current value, by default
+  /// (0, 0, 0, 1).
+  const glm::vec4* attrib;
+  /// gl_VertexID: the index of this vertex (the element value for DrawElement).
+  int vertex_id;
+};
+
+/// What the vertex stage writes.
+template <class Varyings>
+struct VertexOut {
+  glm::vec4 position{0.0f, 0.0f, 0.0f, 1.0f};  ///< gl_Position, in clip space.
+  float point_size = 1.0f;  ///< gl_PointSize, used when PROGRAM_POINT_SIZE is enabled.
+  Varyings varyings{};      ///< Interpolated across the primitive for the fragment stage.
+};
+
+/// What the fragment stage writes.
+struct FragmentOut {
+  glm::vec4 color[kMaxColorOutputs];  ///< Colour outputs; color[0] is written to the colour buffer.
+  float depth;                        ///< gl_FragDepth, preset to frag_coord.z.
+};
+
+/// What the fragment stage reads for one fragment.
+template <class Varyings>
+struct FragmentIn {
+  const Varyings& varyings;  ///< Perspective-correct interpolated varyings.
+  glm::vec4 frag_coord;      ///< gl_FragCoord: window x, y (pixel centre at +0.5), depth z, and 1/w.
+  bool front_facing;         ///< gl_FrontFacing.
+  const Varyings* quad;      ///< The four lanes of this fragment's 2x2 quad (lane = x&1 + 2*(y&1)).
+  int lane;                  ///< This fragment's lane in quad.
+
+  /// Screen-space derivative of a varying along x (GLSL dFdx, coarse within the 2x2 quad).
+  template <class T>
+  T dFdx(T Varyings::*member) const {
+    const int left = lane & ~1;
+    return quad[left + 1].*member - quad[left].*member;
+  }
+  /// Screen-space derivative of a varying along y (GLSL dFdy, coarse within the 2x2 quad).
+  template <class T>
+  T dFdy(T Varyings::*member) const {
+    const int bottom = lane & ~2;
+    return quad[bottom + 2].*member - quad[bottom].*member;
+  }
+};
+
+/// A batch of vertices handed to the vertex stage. Filled by the pipeline.
+struct VertexBatch {
+  int count = 0;
+  const glm::vec4* attribs = nullptr;  ///< [count][kMaxVertexAttribs]
+  const int* vertex_ids = nullptr;     ///< [count]
+  glm::vec4* positions = nullptr;      ///< out: [count] clip-space positions
+  float* point_sizes = nullptr;        ///< out: [count]
+  float* varyings = nullptr;           ///< out: [count][VaryingFloats()]
+};
+
+/// A batch of 2x2 fragment quads handed to the fragment stage. Filled by the pipeline.
+struct QuadBatch {
+  int count = 0;                          ///< Number of quads; lanes are count * 4.
+  const float* varyings = nullptr;        ///< [count * 4][VaryingFloats()] interpolated varyings
+  const glm::vec4* frag_coord = nullptr;  ///< [count * 4]
+  bool front_facing = true;
+  FragmentOut* out = nullptr;  ///< [count * 4]
+  std::uint8_t* live = nullptr;  ///< [count * 4] in: 1 for covered lanes; out: 0 where the shader discarded
+};
+
+/// The interface the pipeline uses to run a shader. Subclass Shader<> rather than this.
+class Program {
+ public:
+  virtual ~Program() = default;
+  /// Size of the varyings struct in floats (0 to kMaxVaryingFloats).
+  virtual int VaryingFloats() const = 0;
+  /// Runs the vertex stage on every vertex of the batch.
+  virtual void ShadeVertices(const VertexBatch& batch) const = 0;
+  /// Runs the fragment stage on every live lane of the batch.
+  virtual void ShadeQuads(const QuadBatch& batch) const = 0;
+};
+
+/// Base class of user shaders (CRTP): `struct MyShader : softgl::Shader<MyShader, MyVaryings> { ... }`.
+///
+/// Derived must define
+///   void Vertex(const VertexIn&, VertexOut<Varyings>&) const;
+///   bool Fragment(const FragmentIn<Varyings>&, FragmentOut&) const;   // false discards the fragment
+/// Varyings must be a trivially copyable struct made only of floats (float, glm::vecN, glm::matN), at most
+/// kMaxVaryingFloats of them; an empty struct means no varyings.
+template <class Derived, class Varyings>
+class Shader : public Program {
+  static constexpr int kFloats = std::is_empty_v<Varyings> ? 0 : int(sizeof(Varyings) / sizeof(float));
+  static_assert(std::is_trivially_copyable_v<Varyings>, "varyings must be trivially copyable");
+  static_assert(std::is_empty_v<Varyings> || sizeof(Varyings) % sizeof(float) == 0,
+                "varyings must be made of floats");
+  static_assert(kFloats <= kMaxVaryingFloats, "at most kMaxVaryingFloats floats of varyings");
+
+ public:
+  int VaryingFloats() const final { return kFloats; }
+
+  void ShadeVertices(const VertexBatch& batch) const final {
+    const Derived& self = static_cast<const Derived&>(*this);
+    for (int i = 0; i < batch.count; ++i) {
+      VertexOut<Varyings> out;
+      self.Vertex(VertexIn{batch.attribs + std::size_t(i) * kMaxVertexAttribs, batch.vertex_ids[i]}, out);
+      batch.positions[i] = out.position;
+      batch.point_sizes[i] = out.point_size;
+      if constexpr (kFloats > 0)
+        std::memcpy(batch.varyings + std::size_t(i) * kFloats, &out.varyings, sizeof(Varyings));
+    }
+  }
+
+  void ShadeQuads(const QuadBatch& batch) const final {
+    const Derived& self = static_cast<const Derived&>(*this);
+    Varyings lanes[4]{};
+    for (int q = 0; q < batch.count; ++q) {
+      const int base = q * 4;
+      if constexpr (kFloats > 0)
+        std::memcpy(static_cast<void*>(lanes), batch.varyings + std::size_t(base) * kFloats,
+                    sizeof(Varyings) * 4);
+      for (int lane = 0; lane < 4; ++lane) {
+        if (!batch.live[base + lane]) continue;
+        const FragmentIn<Varyings> in{lanes[lane], batch.frag_coord[base + lane], batch.front_facing, lanes, lane};
+        FragmentOut& out = batch.out[base + lane];
+        out.depth = in.frag_coord.z;
+        if (!self.Fragment(in, out)) batch.live[base + lane] = 0;
+      }
+    }
+  }
+};
+
+}  // namespace softgl

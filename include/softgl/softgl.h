@@ -1,0 +1,7 @@
+// softgl/softgl.h — the whole public API: include this one header.
+#pragma once
+
+#include <softgl/context.h>
+#include <softgl/enums.h>
+#include <softgl/image.h>
+#include <softgl/shader.h>
