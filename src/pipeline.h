@@ -1,0 +1,62 @@
+// pipeline.h — one draw call through every stage: fetch -> vertex shader -> assembly -> clip -> divide/viewport
+// -> cull -> rasterize -> fragment shader -> fragment operations -> framebuffer.
+//
+// The context validates the call and resolves its objects into a FetchPlan and a DrawState; from there the draw
+// flows forward through the stages in plain structs (types.h), and only the framebuffer is written.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include <softgl/shader.h>
+
+#include "fragment_ops.h"
+#include "framebuffer.h"
+#include "primitive_assembly.h"
+#include "types.h"
+#include "vertex_fetch.h"
+#include "viewport.h"
+
+namespace softgl::detail {
+
+inline constexpr float kMaxPointSize = 255.0f;
+
+/// Everything a draw needs from the context's state, resolved at draw time.
+struct DrawState {
+  const Program* program = nullptr;
+  ViewportTransform viewport;
+  Rect bounds;  // viewport intersected with the framebuffer
+  bool cull_enabled = false;
+  Enum cull_face = BACK;
+  Enum front_face = CCW;
+  Enum polygon_mode = FILL;
+  bool program_point_size = false;
+  float point_size = 1.0f;
+  FragmentOpsState ops;
+};
+
+/// The vertices a draw reads: either `count` consecutive vertices from `first`, or `count` element indices.
+struct DrawCall {
+  Enum mode = TRIANGLES;
+  int count = 0;
+  std::uint32_t first = 0;
+  const std::uint32_t* elements = nullptr;  // null for DrawArrays
+};
+
+/// Per-context memory reused from draw to draw, so that drawing allocates only when a draw is bigger than any
+/// before it.
+struct Scratch {
+  std::vector<std::uint32_t> shade_indices;  // vertex index of each vertex to shade
+  std::vector<std::uint32_t> element_to_shaded;
+  std::vector<glm::vec4> attribs;
+  std::vector<int> vertex_ids;
+  ShadedVertices shaded;
+  Primitives primitives;
+  std::unique_ptr<QuadBuffer> quads = std::make_unique<QuadBuffer>();
+};
+
+/// Runs one draw. May throw std::bad_alloc for a draw too large for memory; nothing else is thrown.
+void Draw(const DrawCall& call, const FetchPlan& fetch, const DrawState& state, Framebuffer& fb, Scratch& scratch);
+
+}  // namespace softgl::detail

@@ -1,0 +1,26 @@
+// primitive_assembly.h — stage 3: turn a draw's vertex sequence into points, lines or triangles.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include <softgl/enums.h>
+
+namespace softgl::detail {
+
+/// The primitives of one draw, as positions in the draw's vertex sequence (0 .. count-1).
+struct Primitives {
+  int vertices_per_primitive = 0;  // 1 points, 2 lines, 3 triangles; 0 for an invalid mode
+  std::vector<std::uint32_t> indices;  // vertices_per_primitive entries per primitive
+  int Count() const { return vertices_per_primitive ? int(indices.size()) / vertices_per_primitive : 0; }
+};
+
+/// Assembles `count` vertices of `mode` following OpenGL's rules: incomplete trailing primitives are dropped;
+/// TRIANGLE_STRIP keeps every triangle's winding consistent with the first one (odd triangles swap their first two
+/// vertices); LINE_LOOP closes back to vertex 0.
+void AssemblePrimitives(Enum mode, int count, Primitives& out);
+
+/// 1, 2 or 3 for a valid mode, 0 otherwise.
+int VerticesPerPrimitive(Enum mode);
+
+}  // namespace softgl::detail

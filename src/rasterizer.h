@@ -1,0 +1,37 @@
+// rasterizer.h — stage 7: turn window-space triangles, lines and points into 2x2 fragment quads.
+//
+// Rules, all OpenGL's (4.6 specification, chapter 14) with the conventions of Mesa's llvmpipe where OpenGL leaves
+// a choice:
+// - Pixel (i, j) is sampled at its centre (i + 0.5, j + 0.5), window y pointing up.
+// - Triangles: vertex positions are snapped to 1/256 pixel (kSubpixelBits); coverage uses exact integer edge
+//   functions. A centre exactly on an edge belongs to the triangle when the edge is a left edge (interior to
+//   its right) or a bottom edge (horizontal, interior above), so triangles sharing an edge cover every pixel
+//   once.
+// - Varyings are interpolated perspective-correctly (v/w and 1/w are linear in window space), depth linearly.
+// - Lines: one pixel wide, one fragment per column (x-major) or row (y-major) whose centre lies in the half-open
+//   span [start, end), the diamond-exit rule for end points at pixel centres.
+// - Points: squares of the point size; pixels whose centres lie in [x - s/2, x + s/2) x [y - s/2, y + s/2).
+// Only pixels inside `bounds` (viewport, framebuffer) are marked live.
+#pragma once
+
+#include "types.h"
+
+namespace softgl::detail {
+
+inline constexpr int kSubpixelBits = 8;
+
+struct RasterTarget {
+  Rect bounds;  // viewport intersected with the framebuffer
+  int nvar = 0;
+};
+
+void RasterizeTriangle(const WindowVertex& v0, const WindowVertex& v1, const WindowVertex& v2, bool front_facing,
+                       const RasterTarget& target, QuadBuffer& quads, const QuadSink& sink);
+
+void RasterizeLine(const WindowVertex& a, const WindowVertex& b, bool front_facing, const RasterTarget& target,
+                   QuadBuffer& quads, const QuadSink& sink);
+
+void RasterizePoint(const WindowVertex& v, float size, bool front_facing, const RasterTarget& target,
+                    QuadBuffer& quads, const QuadSink& sink);
+
+}  // namespace softgl::detail

@@ -1,0 +1,100 @@
+// vertex_fetch.cpp — attribute and index reads with OpenGL's integer-to-float conversions.
+#include "vertex_fetch.h"
+
+#include <algorithm>
+#include <cstring>
+
+namespace softgl::detail {
+
+std::size_t TypeSize(Enum type) {
+  switch (type) {
+    case BYTE:
+    case UNSIGNED_BYTE: return 1;
+    case SHORT:
+    case UNSIGNED_SHORT: return 2;
+    case INT:
+    case UNSIGNED_INT:
+    case FLOAT: return 4;
+    default: return 0;
+  }
+}
+
+namespace {
+
+template <class T>
+T Load(const std::uint8_t* p) {
+  T v;
+  std::memcpy(&v, p, sizeof v);
+  return v;
+}
+
+// OpenGL 4.2+ conversions (section 2.3.5.1 of the 4.6 specification): unsigned c / (2^b - 1);
+// signed max(c / (2^(b-1) - 1), -1).
+float Component(Enum type, bool normalized, const std::uint8_t* p) {
+  switch (type) {
+    case FLOAT: return Load<float>(p);
+    case UNSIGNED_BYTE: {
+      const float c = Load<std::uint8_t>(p);
+      return normalized ? c / 255.0f : c;
+    }
+    case BYTE: {
+      const float c = Load<std::int8_t>(p);
+      return normalized ? std::max(c / 127.0f, -1.0f) : c;
+    }
+    case UNSIGNED_SHORT: {
+      const float c = Load<std::uint16_t>(p);
+      return normalized ? c / 65535.0f : c;
+    }
+    case SHORT: {
+      const float c = Load<std::int16_t>(p);
+      return normalized ? std::max(c / 32767.0f, -1.0f) : c;
+    }
+    case UNSIGNED_INT: {
+      const std::uint32_t c = Load<std::uint32_t>(p);
+      return normalized ? float(double(c) / 4294967295.0) : float(c);
+    }
+    case INT: {
+      const std::int32_t c = Load<std::int32_t>(p);
+      return normalized ? float(std::max(double(c) / 2147483647.0, -1.0)) : float(c);
+    }
+    default: return 0.0f;
+  }
+}
+
+}  // namespace
+
+glm::vec4 FetchAttribute(const AttribSource& src, std::uint32_t index) {
+  if (!src.enabled) return src.current;
+  glm::vec4 v(0.0f, 0.0f, 0.0f, 1.0f);
+  const std::size_t csize = TypeSize(src.type);
+  const std::size_t bytes = csize * std::size_t(src.components);
+  // Overflow-safe bounds check: start = offset + stride * index, end = start + bytes <= size.
+  if (src.data == nullptr || src.offset > src.size) return v;
+  const std::size_t room = src.size - src.offset;
+  if (bytes > room) return v;
+  if (src.stride != 0 && std::size_t(index) > (room - bytes) / src.stride) return v;
+  const std::uint8_t* p = src.data + src.offset + src.stride * std::size_t(index);
+  for (int c = 0; c < src.components; ++c) v[c] = Component(src.type, src.normalized, p + csize * c);
+  return v;
+}
+
+void FetchVertices(const FetchPlan& plan, const std::uint32_t* indices, int count, glm::vec4* out) {
+  for (int i = 0; i < count; ++i) {
+    glm::vec4* dst = out + std::size_t(i) * kMaxVertexAttribs;
+    for (int a = 0; a < kMaxVertexAttribs; ++a) dst[a] = FetchAttribute(plan.attrib[a], indices[i]);
+  }
+}
+
+void ReadIndices(Enum type, const std::uint8_t* data, int count, std::uint32_t* out) {
+  const std::size_t size = TypeSize(type);
+  for (int i = 0; i < count; ++i) {
+    const std::uint8_t* p = data + size * std::size_t(i);
+    switch (type) {
+      case UNSIGNED_BYTE: out[i] = Load<std::uint8_t>(p); break;
+      case UNSIGNED_SHORT: out[i] = Load<std::uint16_t>(p); break;
+      default: out[i] = Load<std::uint32_t>(p); break;
+    }
+  }
+}
+
+}  // namespace softgl::detail

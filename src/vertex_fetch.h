@@ -1,0 +1,44 @@
+// vertex_fetch.h — stage 1: read vertex attributes and indices from buffer memory, with OpenGL's conversions.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+#include <softgl/enums.h>
+#include <softgl/shader.h>
+
+namespace softgl::detail {
+
+/// Where one attribute comes from, resolved from the vertex array and buffer objects at draw time.
+struct AttribSource {
+  bool enabled = false;
+  const std::uint8_t* data = nullptr;  // start of the buffer's store
+  std::size_t size = 0;                // bytes in the store
+  std::size_t offset = 0;              // byte offset of element 0
+  std::size_t stride = 0;              // bytes between elements (already resolved: never 0 when enabled)
+  int components = 4;                  // 1..4
+  Enum type = FLOAT;
+  bool normalized = false;
+  glm::vec4 current{0.0f, 0.0f, 0.0f, 1.0f};  // value read while disabled
+};
+
+struct FetchPlan {
+  AttribSource attrib[kMaxVertexAttribs];
+};
+
+/// Size in bytes of one component of an attribute or index type; 0 for an unknown type.
+std::size_t TypeSize(Enum type);
+
+/// Reads attribute `src` of vertex `index`. Missing components come from (0, 0, 0, 1); an element that lies
+/// (even partly) outside the buffer reads as (0, 0, 0, 1).
+glm::vec4 FetchAttribute(const AttribSource& src, std::uint32_t index);
+
+/// Fetches all attributes of `count` vertices into out[count][kMaxVertexAttribs].
+void FetchVertices(const FetchPlan& plan, const std::uint32_t* indices, int count, glm::vec4* out);
+
+/// Reads `count` indices of `type` (UNSIGNED_BYTE/SHORT/INT) from `data`. The caller has checked the range.
+void ReadIndices(Enum type, const std::uint8_t* data, int count, std::uint32_t* out);
+
+}  // namespace softgl::detail
