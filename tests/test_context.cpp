@@ -1,0 +1,379 @@
+// The API: objects by id, what VAOs record, draw modes end to end, and OpenGL's error model on bad input.
+#include <catch2/catch.hpp>
+
+#include <cstring>
+#include <limits>
+
+#include "helpers.h"
+
+using namespace softgl;
+using testing::MakeVertexArray;
+using testing::SolidShader;
+
+namespace {
+
+int CountLit(const Context& gl) {
+  int n = 0;
+  const Image img = gl.ReadPixels();
+  for (std::size_t i = 0; i < img.rgba.size(); i += 4) n += img.rgba[i] != 0;
+  return n;
+}
+
+}  // namespace
+
+TEST_CASE("GetError reports the first error and clears it", "[context]") {
+  Context gl(4, 4);
+  CHECK(gl.GetError() == NO_ERROR);
+  gl.Enable(0xDEAD);
+  gl.Viewport(0, 0, -1, 1);
+  CHECK(gl.GetError() == INVALID_ENUM);
+  CHECK(gl.GetError() == NO_ERROR);
+}
+
+TEST_CASE("invalid enums set INVALID_ENUM and change nothing", "[context]") {
+  Context gl(4, 4);
+  const std::uint32_t vao = gl.GenVertexArray(), vbo = gl.GenBuffer();
+  gl.BindVertexArray(vao);
+  gl.BindBuffer(0x1234, vbo);
+  CHECK(gl.GetError() == INVALID_ENUM);
+  gl.BindBuffer(ARRAY_BUFFER, vbo);
+  gl.BufferData(ARRAY_BUFFER, 16, nullptr, 0x1234);
+  CHECK(gl.GetError() == INVALID_ENUM);
+  gl.VertexAttributePointer(0, 3, 0x1234, false, 0, 0);
+  CHECK(gl.GetError() == INVALID_ENUM);
+  gl.CullFace(TRIANGLES);
+  CHECK(gl.GetError() == INVALID_ENUM);
+  gl.FrontFace(FRONT);
+  CHECK(gl.GetError() == INVALID_ENUM);
+  gl.PolygonMode(FRONT, LINE);  // core profile: only FRONT_AND_BACK
+  CHECK(gl.GetError() == INVALID_ENUM);
+  gl.PolygonMode(FRONT_AND_BACK, FILL + 5);
+  CHECK(gl.GetError() == INVALID_ENUM);
+  gl.DepthFunc(0x0208);
+  CHECK(gl.GetError() == INVALID_ENUM);
+  CHECK_FALSE(gl.IsEnabled(0x1234));
+  CHECK(gl.GetError() == INVALID_ENUM);
+  SolidShader shader;
+  gl.UseProgram(shader);
+  gl.DrawArrays(0x7, 0, 3);
+  CHECK(gl.GetError() == INVALID_ENUM);
+  gl.DrawElement(TRIANGLES, 3, FLOAT, 0);
+  CHECK(gl.GetError() == INVALID_ENUM);
+}
+
+TEST_CASE("invalid values set INVALID_VALUE", "[context]") {
+  Context gl(4, 4);
+  const std::uint32_t vao = gl.GenVertexArray(), vbo = gl.GenBuffer();
+  gl.BindVertexArray(vao);
+  gl.BindBuffer(ARRAY_BUFFER, vbo);
+  gl.BufferData(ARRAY_BUFFER, -1, nullptr);
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.BufferData(ARRAY_BUFFER, 8, nullptr);
+  gl.BufferSubData(ARRAY_BUFFER, 4, 8, "12345678");  // past the end
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.BufferSubData(ARRAY_BUFFER, -1, 2, "12");
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.VertexAttributePointer(16, 3, FLOAT, false, 0, 0);
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.VertexAttributePointer(0, 5, FLOAT, false, 0, 0);
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.VertexAttributePointer(0, 0, FLOAT, false, 0, 0);
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.VertexAttributePointer(0, 3, FLOAT, false, -4, 0);
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.EnableVertexAttribArray(99);
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.Viewport(0, 0, 4, -4);
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.PointSize(0.0f);
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.Clear(0x1);
+  CHECK(gl.GetError() == INVALID_VALUE);
+  SolidShader shader;
+  gl.UseProgram(shader);
+  gl.DrawArrays(TRIANGLES, -1, 3);
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.DrawArrays(TRIANGLES, 0, -3);
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.GenBuffers(-1, nullptr);
+  CHECK(gl.GetError() == INVALID_VALUE);
+}
+
+TEST_CASE("unbound or unknown ids set INVALID_OPERATION", "[context]") {
+  Context gl(4, 4);
+  SolidShader shader;
+  gl.UseProgram(shader);
+  gl.DrawArrays(TRIANGLES, 0, 3);  // no vertex array bound (core profile)
+  CHECK(gl.GetError() == INVALID_OPERATION);
+  gl.BindBuffer(ARRAY_BUFFER, 77);  // never generated
+  CHECK(gl.GetError() == INVALID_OPERATION);
+  gl.BindVertexArray(77);
+  CHECK(gl.GetError() == INVALID_OPERATION);
+  gl.VertexAttributePointer(0, 3, FLOAT, false, 0, 0);
+  CHECK(gl.GetError() == INVALID_OPERATION);
+  gl.BindBuffer(ELEMENT_ARRAY_BUFFER, 0);  // the element binding lives in a vertex array
+  CHECK(gl.GetError() == INVALID_OPERATION);
+  const std::uint32_t vao = gl.GenVertexArray();
+  gl.BindVertexArray(vao);
+  gl.BufferData(ARRAY_BUFFER, 4, nullptr);  // nothing bound to ARRAY_BUFFER
+  CHECK(gl.GetError() == INVALID_OPERATION);
+  gl.VertexAttributePointer(0, 3, FLOAT, false, 0, 16);  // offset without a buffer
+  CHECK(gl.GetError() == INVALID_OPERATION);
+  gl.DrawElement(TRIANGLES, 3, UNSIGNED_INT, 0);  // no element buffer
+  CHECK(gl.GetError() == INVALID_OPERATION);
+  gl.UseProgram(nullptr);
+  gl.DrawArrays(TRIANGLES, 0, 3);
+  CHECK(gl.GetError() == INVALID_OPERATION);
+  const std::uint32_t vbo = gl.GenBuffer();
+  gl.DeleteBuffer(vbo);
+  CHECK_FALSE(gl.IsBuffer(vbo));
+  gl.BindBuffer(ARRAY_BUFFER, vbo);  // deleted
+  CHECK(gl.GetError() == INVALID_OPERATION);
+}
+
+TEST_CASE("a vertex array records attribute and element buffer bindings", "[context]") {
+  Context gl(8, 8);
+  SolidShader shader;
+  gl.UseProgram(shader);
+  const float full[] = {-1, -1, 0, 1, 3, -1, 0, 1, -1, 3, 0, 1};
+  const float none[] = {5, 5, 0, 1, 6, 5, 0, 1, 5, 6, 0, 1};
+  const std::uint16_t idx[] = {0, 1, 2};
+  std::uint32_t vaos[2], vbos[2], ebo;
+  gl.GenVertexArrays(2, vaos);
+  gl.GenBuffers(2, vbos);
+  ebo = gl.GenBuffer();
+  gl.BindVertexArray(vaos[0]);
+  gl.BindBuffer(ARRAY_BUFFER, vbos[0]);
+  gl.BufferData(ARRAY_BUFFER, sizeof full, full);
+  gl.VertexAttributePointer(0, 4, FLOAT, false, 0, 0);
+  gl.EnableVertexAttribArray(0);
+  gl.BindBuffer(ELEMENT_ARRAY_BUFFER, ebo);
+  gl.BufferData(ELEMENT_ARRAY_BUFFER, sizeof idx, idx);
+  gl.BindVertexArray(vaos[1]);
+  gl.BindBuffer(ARRAY_BUFFER, vbos[1]);
+  gl.BufferData(ARRAY_BUFFER, sizeof none, none);
+  gl.VertexAttributePointer(0, 4, FLOAT, false, 0, 0);
+  gl.EnableVertexAttribArray(0);
+  gl.DrawElement(TRIANGLES, 3, UNSIGNED_SHORT, 0);  // vaos[1] has no element buffer
+  CHECK(gl.GetError() == INVALID_OPERATION);
+  gl.BindVertexArray(vaos[0]);  // brings back its own attribute buffer and element buffer
+  gl.DrawElement(TRIANGLES, 3, UNSIGNED_SHORT, 0);
+  CHECK(gl.GetError() == NO_ERROR);
+  CHECK(CountLit(gl) == 64);
+  // Deleting a buffer that another vertex array still uses keeps its contents alive for that array.
+  gl.BindVertexArray(0);
+  gl.DeleteBuffer(vbos[0]);
+  gl.DeleteBuffer(ebo);
+  gl.BindVertexArray(vaos[0]);
+  gl.Clear(COLOR_BUFFER_BIT);
+  gl.DrawElement(TRIANGLES, 3, UNSIGNED_SHORT, 0);
+  CHECK(gl.GetError() == NO_ERROR);
+  CHECK(CountLit(gl) == 64);
+  gl.DeleteVertexArray(vaos[0]);  // deleting the bound array binds 0
+  gl.DrawArrays(TRIANGLES, 0, 3);
+  CHECK(gl.GetError() == INVALID_OPERATION);
+}
+
+TEST_CASE("indices past the end of the element buffer are refused", "[context]") {
+  Context gl(4, 4);
+  const std::uint32_t vao = MakeVertexArray(gl, {{-1, -1, 0, 1}, {1, -1, 0, 1}, {-1, 1, 0, 1}});
+  (void)vao;
+  const std::uint32_t ebo = gl.GenBuffer();
+  gl.BindBuffer(ELEMENT_ARRAY_BUFFER, ebo);
+  const std::uint32_t idx[] = {0, 1, 2};
+  gl.BufferData(ELEMENT_ARRAY_BUFFER, sizeof idx, idx);
+  SolidShader shader;
+  gl.UseProgram(shader);
+  gl.DrawElement(TRIANGLES, 4, UNSIGNED_INT, 0);
+  CHECK(gl.GetError() == INVALID_OPERATION);
+  gl.DrawElement(TRIANGLES, 3, UNSIGNED_INT, 4);
+  CHECK(gl.GetError() == INVALID_OPERATION);
+  gl.DrawElement(TRIANGLES, 1, UNSIGNED_INT, std::numeric_limits<std::size_t>::max());
+  CHECK(gl.GetError() == INVALID_OPERATION);
+  CHECK(CountLit(gl) == 0);
+}
+
+TEST_CASE("element values past the end of the vertex buffer read zeros, not memory", "[context]") {
+  Context gl(8, 8);
+  MakeVertexArray(gl, {{-1, -1, 0, 1}, {1, -1, 0, 1}, {-1, 1, 0, 1}});
+  const std::uint32_t ebo = gl.GenBuffer();
+  gl.BindBuffer(ELEMENT_ARRAY_BUFFER, ebo);
+  const std::uint32_t idx[] = {0, 1, 2, 7, 4000000000u, 9};
+  gl.BufferData(ELEMENT_ARRAY_BUFFER, sizeof idx, idx);
+  SolidShader shader;
+  gl.UseProgram(shader);
+  gl.DrawElement(TRIANGLES, 6, UNSIGNED_INT, 0);
+  CHECK(gl.GetError() == NO_ERROR);
+  // The second triangle reads (0, 0, 0, 1) three times and is degenerate; the first covers the lower-left half
+  // without its diagonal.
+  CHECK(CountLit(gl) == 28);
+}
+
+TEST_CASE("every draw mode through DrawArrays and DrawElement", "[context]") {
+  Context gl(16, 16);
+  testing::SolidShader shader;
+  gl.UseProgram(shader);
+  // Four vertices at pixel centres (2,2), (13,2), (13,13), (2,13).
+  auto c = [](float x, float y) { return testing::WindowToClip(x, y, 16, 16); };
+  MakeVertexArray(gl, {c(2.5f, 2.5f), c(13.5f, 2.5f), c(13.5f, 13.5f), c(2.5f, 13.5f)});
+  const std::uint32_t ebo = gl.GenBuffer();
+  gl.BindBuffer(ELEMENT_ARRAY_BUFFER, ebo);
+  const std::uint8_t idx[] = {0, 1, 2, 3};
+  gl.BufferData(ELEMENT_ARRAY_BUFFER, sizeof idx, idx);
+  struct Row {
+    Enum mode;
+    int lit;
+  };
+  const Row rows[] = {
+      {POINTS, 4},
+      {LINES, 11 + 11},                // bottom and top edges, last pixel of each left out
+      {LINE_STRIP, 11 * 3},            // three edges
+      {LINE_LOOP, 11 * 4},             // closed square
+      {TRIANGLES, 11 * 11 / 2 + 6},    // half the square with its diagonal
+      {TRIANGLE_STRIP, 11 * 11 / 2 + 6},  // 0,1,2 then 2,1,3: the second folds back over the first
+      {TRIANGLE_FAN, 11 * 11},         // the whole square
+  };
+  for (const Row& r : rows) {
+    INFO("mode " << r.mode);
+    gl.Clear(COLOR_BUFFER_BIT);
+    gl.DrawArrays(r.mode, 0, 4);
+    CHECK(gl.GetError() == NO_ERROR);
+    const int arrays = CountLit(gl);
+    gl.Clear(COLOR_BUFFER_BIT);
+    gl.DrawElement(r.mode, 4, UNSIGNED_BYTE, 0);
+    CHECK(CountLit(gl) == arrays);
+    if (r.mode != TRIANGLES && r.mode != TRIANGLE_STRIP) CHECK(arrays == r.lit);
+  }
+}
+
+TEST_CASE("polygon mode draws edges or vertices", "[context]") {
+  Context gl(16, 16);
+  SolidShader shader;
+  gl.UseProgram(shader);
+  auto c = [](float x, float y) { return testing::WindowToClip(x, y, 16, 16); };
+  MakeVertexArray(gl, {c(2.5f, 2.5f), c(13.5f, 2.5f), c(13.5f, 13.5f), c(2.5f, 13.5f)});
+  gl.PolygonMode(FRONT_AND_BACK, LINE);
+  gl.DrawArrays(TRIANGLE_FAN, 0, 4);
+  const int edges = CountLit(gl);
+  CHECK(edges > 40);
+  CHECK(edges < 60);  // outline and diagonal, not the interior (121)
+  std::uint8_t px[4];
+  gl.ReadPixel(7, 7, px);  // on the diagonal
+  CHECK(px[0] == 255);
+  gl.ReadPixel(10, 5, px);  // interior
+  CHECK(px[0] == 0);
+  gl.Clear(COLOR_BUFFER_BIT);
+  gl.PolygonMode(FRONT_AND_BACK, POINT);
+  gl.DrawArrays(TRIANGLE_FAN, 0, 4);
+  CHECK(CountLit(gl) == 4);
+  gl.Clear(COLOR_BUFFER_BIT);
+  gl.PointSize(3.0f);
+  gl.DrawArrays(TRIANGLE_FAN, 0, 4);
+  CHECK(CountLit(gl) == 36);
+  // Culling applies before the polygon mode: a culled polygon draws no edges.
+  gl.Clear(COLOR_BUFFER_BIT);
+  gl.Enable(CULL_FACE);
+  gl.CullFace(FRONT);
+  gl.PolygonMode(FRONT_AND_BACK, LINE);
+  gl.DrawArrays(TRIANGLE_FAN, 0, 4);
+  CHECK(CountLit(gl) == 0);
+}
+
+TEST_CASE("program point size comes from the vertex stage when enabled", "[context]") {
+  struct Sized : softgl::Shader<Sized, testing::NoVaryings> {
+    void Vertex(const VertexIn& in, VertexOut<testing::NoVaryings>& out) const {
+      out.position = in.attrib[0];
+      out.point_size = 4.0f;
+    }
+    bool Fragment(const FragmentIn<testing::NoVaryings>&, FragmentOut& out) const {
+      out.color[0] = glm::vec4(1);
+      return true;
+    }
+  };
+  Context gl(16, 16);
+  Sized shader;
+  gl.UseProgram(shader);
+  MakeVertexArray(gl, {testing::WindowToClip(8, 8, 16, 16)});
+  gl.DrawArrays(POINTS, 0, 1);
+  CHECK(CountLit(gl) == 1);
+  gl.Enable(PROGRAM_POINT_SIZE);
+  gl.DrawArrays(POINTS, 0, 1);
+  CHECK(CountLit(gl) == 16);
+}
+
+TEST_CASE("the viewport maps NDC to its rectangle and bounds the fragments", "[context]") {
+  Context gl(16, 16);
+  SolidShader shader;
+  gl.UseProgram(shader);
+  MakeVertexArray(gl, {{-2, -2, 0, 1}, {2, -2, 0, 1}, {-2, 2, 0, 1}, {2, 2, 0, 1}});  // beyond the volume
+  gl.Viewport(4, 2, 8, 6);
+  gl.DrawArrays(TRIANGLE_STRIP, 0, 4);
+  CHECK(CountLit(gl) == 48);
+  std::uint8_t px[4];
+  gl.ReadPixel(4, 2, px);
+  CHECK(px[0] == 255);
+  gl.ReadPixel(12, 2, px);
+  CHECK(px[0] == 0);
+  gl.ReadPixel(4, 8, px);
+  CHECK(px[0] == 0);
+}
+
+TEST_CASE("hostile geometry draws nothing wrong and never crashes", "[context]") {
+  const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
+  Context gl(32, 32);
+  SolidShader shader;
+  gl.UseProgram(shader);
+  MakeVertexArray(gl, {{nan, 0, 0, 1}, {1, 0, 0, 1}, {0, 1, 0, 1},               // NaN
+                       {inf, -inf, 0, 1}, {1, 0, 0, 1}, {0, 1, 0, 1},            // infinities
+                       {0, 0, 0, 0}, {1, 0, 0, 0}, {0, 1, 0, 0},                 // w = 0
+                       {-1e30f, -1e30f, 0, 1}, {1e30f, -1e30f, 0, 1}, {0, 1e30f, 0, 1},  // huge: covers all
+                       {0.1f, 0.1f, 0, -1}, {0.5f, 0.1f, 0, -1}, {0.1f, 0.5f, 0, -1}});  // behind the eye
+  for (Enum mode : {TRIANGLES, LINES, LINE_LOOP, POINTS, TRIANGLE_STRIP}) {
+    gl.Clear(COLOR_BUFFER_BIT);
+    gl.DrawArrays(mode, 0, 15);
+    CHECK(gl.GetError() == NO_ERROR);
+  }
+  gl.Clear(COLOR_BUFFER_BIT);
+  gl.DrawArrays(TRIANGLES, 9, 3);
+  CHECK(CountLit(gl) == 32 * 32);  // the huge triangle is clipped, not overflowed
+  gl.Clear(COLOR_BUFFER_BIT);
+  gl.DrawArrays(TRIANGLES, 0, 9);
+  gl.DrawArrays(TRIANGLES, 12, 3);
+  CHECK(CountLit(gl) == 0);
+}
+
+TEST_CASE("zero-sized and oversized framebuffers", "[context]") {
+  Context empty(0, 0);
+  CHECK(empty.GetError() == NO_ERROR);
+  SolidShader shader;
+  empty.UseProgram(shader);
+  MakeVertexArray(empty, {{-1, -1, 0, 1}, {1, -1, 0, 1}, {-1, 1, 0, 1}});
+  empty.Clear(COLOR_BUFFER_BIT | DEPTH_BUFFER_BIT);
+  empty.DrawArrays(TRIANGLES, 0, 3);
+  CHECK(empty.GetError() == NO_ERROR);
+  CHECK(empty.ReadPixels().rgba.empty());
+  CHECK(empty.ReadDepth(0, 0) == 0.0f);
+
+  Context too_big(kMaxFramebufferSize + 1, 4);
+  CHECK(too_big.GetError() == INVALID_VALUE);
+  CHECK(too_big.Width() == 0);
+  Context negative(-4, 4);
+  CHECK(negative.GetError() == INVALID_VALUE);
+
+  Context one(1, 1);
+  one.UseProgram(shader);
+  MakeVertexArray(one, {{-1, -1, 0, 1}, {3, -1, 0, 1}, {-1, 3, 0, 1}});
+  one.DrawArrays(TRIANGLES, 0, 3);
+  CHECK(CountLit(one) == 1);
+}
+
+TEST_CASE("ReadPixels returns rows top first", "[context]") {
+  Context gl(2, 2);
+  SolidShader shader;
+  gl.UseProgram(shader);
+  MakeVertexArray(gl, {{-1, -1, 0, 1}, {1, -1, 0, 1}, {-1, 0, 0, 1}, {1, 0, 0, 1}});  // bottom row only
+  gl.DrawArrays(TRIANGLE_STRIP, 0, 4);
+  const Image img = gl.ReadPixels();
+  CHECK(img.At(0, 1)[0] == 255);  // bottom row of the window is the last row of the image
+  CHECK(img.At(0, 0)[0] == 0);
+}

@@ -1,0 +1,65 @@
+// Image tests: each example scene against its golden PNG (tests/golden), made by this code and checked by eye.
+//
+// Tolerance: every channel of every pixel within 1 of the golden image (float rounding may differ between
+// compilers and optimisation levels; coverage, being exact integer arithmetic, may not). On failure the actual
+// image and a difference image are written to the test output folder. Set SOFTGL_UPDATE_GOLDEN=1 to rewrite the
+// golden images instead (then look at them before committing).
+#include <catch2/catch.hpp>
+
+#include <cstdlib>
+#include <filesystem>
+#include <functional>
+#include <string>
+
+#include "scenes.h"
+
+namespace {
+
+constexpr int kTolerance = 1;
+
+void CompareWithGolden(const std::string& name, const softgl::Image& actual) {
+  const std::string golden_path = std::string(SOFTGL_GOLDEN_DIR) + "/" + name + ".png";
+  if (const char* update = std::getenv("SOFTGL_UPDATE_GOLDEN"); update && std::string(update) == "1") {
+    REQUIRE(softgl::WritePng(golden_path, actual));
+    WARN("rewrote " << golden_path);
+    return;
+  }
+  softgl::Image golden;
+  std::string error;
+  REQUIRE(softgl::ReadImage(golden_path, golden, &error));
+  REQUIRE(golden.width == actual.width);
+  REQUIRE(golden.height == actual.height);
+  softgl::Image diff = actual;
+  int worst = 0, over = 0;
+  for (std::size_t i = 0; i < actual.rgba.size(); i += 4) {
+    int d = 0;
+    for (int c = 0; c < 4; ++c) d = std::max(d, std::abs(int(actual.rgba[i + c]) - int(golden.rgba[i + c])));
+    worst = std::max(worst, d);
+    over += d > kTolerance;
+    const std::uint8_t v = std::uint8_t(std::min(255, d * 32));
+    diff.rgba[i] = v;
+    diff.rgba[i + 1] = v;
+    diff.rgba[i + 2] = v;
+    diff.rgba[i + 3] = 255;
+  }
+  INFO(name << ": largest channel difference " << worst << ", pixels over tolerance " << over);
+  if (over > 0) {
+    std::filesystem::create_directories(SOFTGL_TEST_OUTPUT_DIR);
+    softgl::WritePng(std::string(SOFTGL_TEST_OUTPUT_DIR) + "/" + name + "_actual.png", actual);
+    softgl::WritePng(std::string(SOFTGL_TEST_OUTPUT_DIR) + "/" + name + "_diff.png", diff);
+  }
+  CHECK(over == 0);
+}
+
+}  // namespace
+
+TEST_CASE("image: triangle", "[image]") { CompareWithGolden("triangle", scenes::Triangle(640, 480)); }
+
+TEST_CASE("image: cube frames", "[image]") {
+  CompareWithGolden("cube_0", scenes::Cube(480, 480, 0.0f));
+  CompareWithGolden("cube_3", scenes::Cube(480, 480, 2.0f * 3.14159265f * 3.0f / 32.0f));
+}
+
+TEST_CASE("image: wireframe", "[image]") { CompareWithGolden("wireframe", scenes::Wireframe(640, 480)); }
+
+TEST_CASE("image: clipped", "[image]") { CompareWithGolden("clipped", scenes::Clipped(640, 480)); }

@@ -1,0 +1,43 @@
+// Primitive assembly: counts and vertex order for every mode.
+#include <catch2/catch.hpp>
+
+#include <vector>
+
+#include "primitive_assembly.h"
+
+using namespace softgl;
+using detail::AssemblePrimitives;
+using detail::Primitives;
+
+namespace {
+std::vector<std::uint32_t> Assemble(Enum mode, int count) {
+  Primitives p;
+  AssemblePrimitives(mode, count, p);
+  return p.indices;
+}
+}  // namespace
+
+TEST_CASE("primitive assembly follows OpenGL's modes", "[primitive_assembly]") {
+  using V = std::vector<std::uint32_t>;
+  CHECK(Assemble(POINTS, 3) == V{0, 1, 2});
+  CHECK(Assemble(LINES, 5) == V{0, 1, 2, 3});  // the incomplete last line is dropped
+  CHECK(Assemble(LINE_STRIP, 4) == V{0, 1, 1, 2, 2, 3});
+  CHECK(Assemble(LINE_LOOP, 3) == V{0, 1, 1, 2, 2, 0});
+  CHECK(Assemble(LINE_STRIP, 1).empty());
+  CHECK(Assemble(LINE_LOOP, 1).empty());
+  CHECK(Assemble(TRIANGLES, 7) == V{0, 1, 2, 3, 4, 5});
+  // Odd strip triangles swap their first two vertices so that all keep the winding of the first.
+  CHECK(Assemble(TRIANGLE_STRIP, 5) == V{0, 1, 2, 2, 1, 3, 2, 3, 4});
+  CHECK(Assemble(TRIANGLE_FAN, 5) == V{0, 1, 2, 0, 2, 3, 0, 3, 4});
+  CHECK(Assemble(TRIANGLE_STRIP, 2).empty());
+  CHECK(Assemble(TRIANGLES, 0).empty());
+}
+
+TEST_CASE("primitive assembly rejects unknown modes", "[primitive_assembly]") {
+  Primitives p;
+  AssemblePrimitives(0x1234, 6, p);
+  CHECK(p.vertices_per_primitive == 0);
+  CHECK(p.Count() == 0);
+  CHECK(detail::VerticesPerPrimitive(TRIANGLE_FAN) == 3);
+  CHECK(detail::VerticesPerPrimitive(LINE_LOOP) == 2);
+}

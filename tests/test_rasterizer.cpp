@@ -1,0 +1,222 @@
+// Rasterization: the fill rule (no gaps, no double hits, Mesa's tie convention), bounds, lines and points.
+#include <catch2/catch.hpp>
+
+#include <random>
+#include <string>
+
+#include "helpers.h"
+#include "rasterizer.h"
+
+using namespace softgl::detail;
+using testing::CoverageCounter;
+
+namespace {
+
+WindowVertex W(float x, float y) {
+  WindowVertex v{};
+  v.win = glm::vec4(x, y, 0.5f, 1.0f);
+  return v;
+}
+
+struct Raster {
+  CoverageCounter counter;
+  QuadBuffer quads;
+  RasterTarget target;
+  explicit Raster(int w, int h) : counter(w, h) { target.bounds = Rect{0, 0, w, h}; }
+  void Tri(glm::vec2 a, glm::vec2 b, glm::vec2 c) {
+    const QuadSink sink = counter.Sink();
+    RasterizeTriangle(W(a.x, a.y), W(b.x, b.y), W(c.x, c.y), true, target, quads, sink);
+    sink.Flush(quads);
+  }
+  void Line(glm::vec2 a, glm::vec2 b) {
+    const QuadSink sink = counter.Sink();
+    RasterizeLine(W(a.x, a.y), W(b.x, b.y), true, target, quads, sink);
+    sink.Flush(quads);
+  }
+  void Point(glm::vec2 p, float size) {
+    const QuadSink sink = counter.Sink();
+    RasterizePoint(W(p.x, p.y), size, true, target, quads, sink);
+    sink.Flush(quads);
+  }
+  // Rows top (high y) first, '#' for a hit, as the rows would read on screen.
+  std::string Picture() const {
+    std::string s;
+    for (int y = counter.height - 1; y >= 0; --y) {
+      for (int x = 0; x < counter.width; ++x) s += counter.At(x, y) ? '#' : '.';
+      s += '\n';
+    }
+    return s;
+  }
+};
+
+}  // namespace
+
+TEST_CASE("centres on edges follow Mesa's rule: left and bottom edges own them", "[rasterizer]") {
+  // The same two triangles drawn by Mesa's llvmpipe (OpenGL window coordinates, y up) give these pictures.
+  Raster lower(10, 10);
+  lower.Tri({2.5f, 2.5f}, {6.5f, 2.5f}, {2.5f, 6.5f});
+  CHECK(lower.Picture() ==
+        "..........\n"
+        "..........\n"
+        "..........\n"
+        "..........\n"
+        "..#.......\n"
+        "..##......\n"
+        "..###.....\n"
+        "..####....\n"
+        "..........\n"
+        "..........\n");
+  Raster upper(10, 10);
+  upper.Tri({2.5f, 6.5f}, {6.5f, 6.5f}, {6.5f, 2.5f});
+  CHECK(upper.Picture() ==
+        "..........\n"
+        "..........\n"
+        "..........\n"
+        "..........\n"
+        "...###....\n"
+        "....##....\n"
+        ".....#....\n"
+        "..........\n"
+        "..........\n"
+        "..........\n");
+}
+
+TEST_CASE("a grid of triangles sharing edges covers every pixel exactly once", "[rasterizer]") {
+  // A 9 x 7 grid of jittered sub-pixel vertices over a 64 x 48 target, each cell split into two triangles
+  // along alternating diagonals, in both windings; plus fans around interior vertices.
+  constexpr int W = 64, H = 48, NX = 9, NY = 7;
+  std::mt19937 rng(1234);
+  std::uniform_real_distribution<float> jitter(-2.3f, 2.3f);
+  glm::vec2 grid[NY + 1][NX + 1];
+  for (int j = 0; j <= NY; ++j)
+    for (int i = 0; i <= NX; ++i) {
+      const bool border = i == 0 || j == 0 || i == NX || j == NY;
+      // Border vertices sit outside the target so that the whole target is covered.
+      grid[j][i] = glm::vec2(-3.0f + float(i) * (W + 6.0f) / NX, -3.0f + float(j) * (H + 6.0f) / NY);
+      if (!border) grid[j][i] += glm::vec2(jitter(rng), jitter(rng));
+      // Some vertices exactly on pixel centres and on pixel corners, where ties are decided.
+      if (!border && (i + j) % 3 == 0) grid[j][i] = glm::floor(grid[j][i]) + 0.5f;
+      if (!border && (i + j) % 3 == 1) grid[j][i] = glm::floor(grid[j][i]);
+    }
+  Raster r(W, H);
+  for (int j = 0; j < NY; ++j)
+    for (int i = 0; i < NX; ++i) {
+      const glm::vec2 a = grid[j][i], b = grid[j][i + 1], c = grid[j + 1][i + 1], d = grid[j + 1][i];
+      if ((i + j) % 2) {
+        r.Tri(a, b, c);
+        r.Tri(a, d, c);  // clockwise
+      } else {
+        r.Tri(a, b, d);
+        r.Tri(b, c, d);
+      }
+    }
+  int zero = 0, twice = 0;
+  for (int y = 0; y < H; ++y)
+    for (int x = 0; x < W; ++x) {
+      zero += r.counter.At(x, y) == 0;
+      twice += r.counter.At(x, y) > 1;
+    }
+  CHECK(zero == 0);
+  CHECK(twice == 0);
+}
+
+TEST_CASE("a fan of thin triangles around a pixel centre hits each pixel once", "[rasterizer]") {
+  constexpr int N = 37;
+  Raster r(32, 32);
+  const glm::vec2 c(16.5f, 16.5f);  // exactly on a pixel centre shared by every triangle
+  glm::vec2 ring[N];
+  for (int i = 0; i < N; ++i) {
+    const float a = 2.0f * 3.14159265f * float(i) / float(N);
+    ring[i] = c + 40.0f * glm::vec2(std::cos(a), std::sin(a));
+  }
+  for (int i = 0; i < N; ++i) r.Tri(c, ring[i], ring[(i + 1) % N]);
+  for (int y = 0; y < 32; ++y)
+    for (int x = 0; x < 32; ++x) {
+      INFO("pixel " << x << ", " << y);
+      REQUIRE(r.counter.At(x, y) == 1);
+    }
+}
+
+TEST_CASE("coverage stops at the target bounds", "[rasterizer]") {
+  Raster r(8, 8);
+  r.target.bounds = Rect{2, 3, 6, 5};
+  r.Tri({-100, -100}, {100, -100}, {0, 100});
+  int hits = 0;
+  for (int y = 0; y < 8; ++y)
+    for (int x = 0; x < 8; ++x) {
+      const bool inside = x >= 2 && x < 6 && y >= 3 && y < 5;
+      CHECK(r.counter.At(x, y) == (inside ? 1 : 0));
+      hits += r.counter.At(x, y);
+    }
+  CHECK(hits == 8);
+}
+
+TEST_CASE("degenerate triangles produce nothing", "[rasterizer]") {
+  Raster r(8, 8);
+  r.Tri({1, 1}, {5, 5}, {3, 3});  // collinear
+  r.Tri({2, 2}, {2, 2}, {2, 2});
+  r.Tri({1.0f, 1.0f}, {7.0f, 1.0f}, {4.0f, 1.001f});  // sliver thinner than a subpixel: snaps to zero area
+  for (int v : r.counter.hits) CHECK(v == 0);
+}
+
+TEST_CASE("lines: one fragment per major-axis step, last pixel left out", "[rasterizer]") {
+  Raster h(8, 4);
+  h.Line({0.5f, 1.5f}, {6.5f, 1.5f});
+  CHECK(h.Picture() ==
+        "........\n"
+        "........\n"
+        "######..\n"
+        "........\n");
+  Raster d(6, 6);
+  d.Line({0.5f, 0.5f}, {5.5f, 5.5f});
+  CHECK(d.Picture() ==
+        "......\n"
+        "....#.\n"
+        "...#..\n"
+        "..#...\n"
+        ".#....\n"
+        "#.....\n");
+  Raster v(4, 6);
+  v.Line({1.5f, 5.5f}, {1.5f, 0.5f});  // downwards: the start pixel (row 5) in, the end pixel (row 0) out
+  CHECK(v.Picture() ==
+        ".#..\n"
+        ".#..\n"
+        ".#..\n"
+        ".#..\n"
+        ".#..\n"
+        "....\n");
+}
+
+TEST_CASE("a line strip hits shared vertices once", "[rasterizer]") {
+  Raster r(12, 12);
+  r.Line({0.5f, 0.5f}, {8.5f, 3.5f});
+  r.Line({8.5f, 3.5f}, {2.5f, 10.5f});
+  r.Line({2.5f, 10.5f}, {0.5f, 0.5f});
+  for (int v : r.counter.hits) CHECK(v <= 1);
+  CHECK(r.counter.At(8, 3) == 1);
+  CHECK(r.counter.At(0, 0) == 1);
+}
+
+TEST_CASE("points are squares of their size", "[rasterizer]") {
+  Raster one(6, 6);
+  one.Point({2.3f, 3.9f}, 1.0f);
+  CHECK(one.counter.At(2, 3) == 1);
+  int total = 0;
+  for (int v : one.counter.hits) total += v;
+  CHECK(total == 1);
+
+  Raster three(8, 8);
+  three.Point({4.5f, 4.5f}, 3.0f);
+  CHECK(three.Picture() ==
+        "........\n"
+        "........\n"
+        "...###..\n"
+        "...###..\n"
+        "...###..\n"
+        "........\n"
+        "........\n"
+        "........\n");
+  Raster two(6, 6);
+  two.Point({3.0f, 3.0f}, 2.0f);  // centred on a pixel corner: the 2 x 2 block around it
+  CHECK(two.counter.At(2, 2) + two.counter.At(3, 2) + two.counter.At(2, 3) + two.counter.At(3, 3) == 4);
+}

@@ -1,0 +1,131 @@
+// Vertex fetch: every attribute type with and without normalization, strides, offsets, bounds, indices.
+#include <catch2/catch.hpp>
+
+#include <cstring>
+#include <vector>
+
+#include "vertex_fetch.h"
+
+using namespace softgl;
+using detail::AttribSource;
+using detail::FetchAttribute;
+
+namespace {
+
+template <class T>
+AttribSource Source(const std::vector<T>& data, int components, Enum type, bool normalized, std::size_t stride = 0,
+                    std::size_t offset = 0) {
+  AttribSource s;
+  s.enabled = true;
+  s.data = reinterpret_cast<const std::uint8_t*>(data.data());
+  s.size = data.size() * sizeof(T);
+  s.offset = offset;
+  s.components = components;
+  s.type = type;
+  s.normalized = normalized;
+  s.stride = stride ? stride : sizeof(T) * std::size_t(components);
+  return s;
+}
+
+}  // namespace
+
+TEST_CASE("vertex fetch converts every type as OpenGL does", "[vertex_fetch]") {
+  struct Row {
+    Enum type;
+    bool normalized;
+    std::vector<std::uint8_t> bytes;  // two components
+    float expect0, expect1;
+  };
+  auto bytes_of = [](auto a, auto b) {
+    std::vector<std::uint8_t> v(sizeof a * 2);
+    std::memcpy(v.data(), &a, sizeof a);
+    std::memcpy(v.data() + sizeof a, &b, sizeof b);
+    return v;
+  };
+  const Row rows[] = {
+      {FLOAT, false, bytes_of(1.5f, -2.25f), 1.5f, -2.25f},
+      {UNSIGNED_BYTE, false, bytes_of(std::uint8_t(200), std::uint8_t(3)), 200.0f, 3.0f},
+      {UNSIGNED_BYTE, true, bytes_of(std::uint8_t(255), std::uint8_t(51)), 1.0f, 0.2f},
+      {BYTE, false, bytes_of(std::int8_t(-128), std::int8_t(127)), -128.0f, 127.0f},
+      {BYTE, true, bytes_of(std::int8_t(-128), std::int8_t(-127)), -1.0f, -1.0f},  // both clamp to -1
+      {BYTE, true, bytes_of(std::int8_t(127), std::int8_t(0)), 1.0f, 0.0f},
+      {UNSIGNED_SHORT, false, bytes_of(std::uint16_t(65535), std::uint16_t(7)), 65535.0f, 7.0f},
+      {UNSIGNED_SHORT, true, bytes_of(std::uint16_t(65535), std::uint16_t(13107)), 1.0f, 0.2f},
+      {SHORT, false, bytes_of(std::int16_t(-32768), std::int16_t(100)), -32768.0f, 100.0f},
+      {SHORT, true, bytes_of(std::int16_t(-32768), std::int16_t(16384)), -1.0f, 16384.0f / 32767.0f},
+      {UNSIGNED_INT, false, bytes_of(std::uint32_t(4000000000u), std::uint32_t(9)), 4000000000.0f, 9.0f},
+      {UNSIGNED_INT, true, bytes_of(std::uint32_t(0xFFFFFFFFu), std::uint32_t(0)), 1.0f, 0.0f},
+      {INT, false, bytes_of(std::int32_t(-5), std::int32_t(123456)), -5.0f, 123456.0f},
+      {INT, true, bytes_of(std::int32_t(-2147483647 - 1), std::int32_t(2147483647)), -1.0f, 1.0f},
+  };
+  for (const Row& row : rows) {
+    INFO("type 0x" << std::hex << row.type << " normalized " << row.normalized);
+    const AttribSource s = Source(row.bytes, 2, row.type, row.normalized);
+    const glm::vec4 v = FetchAttribute(s, 0);
+    CHECK(v.x == Approx(row.expect0));
+    CHECK(v.y == Approx(row.expect1));
+    CHECK(v.z == 0.0f);  // missing components come from (0, 0, 0, 1)
+    CHECK(v.w == 1.0f);
+  }
+}
+
+TEST_CASE("vertex fetch fills missing components for sizes 1 to 4", "[vertex_fetch]") {
+  const std::vector<float> data = {5, 6, 7, 8};
+  for (int size = 1; size <= 4; ++size) {
+    const glm::vec4 v = FetchAttribute(Source(data, size, FLOAT, false), 0);
+    const glm::vec4 expect(5.0f, size > 1 ? 6.0f : 0.0f, size > 2 ? 7.0f : 0.0f, size > 3 ? 8.0f : 1.0f);
+    CHECK(v == expect);
+  }
+}
+
+TEST_CASE("vertex fetch honours stride and offset in an interleaved buffer", "[vertex_fetch]") {
+  // Three vertices of {float x, y, z; uint8 r, g, b, a}: 16 bytes each.
+  struct V {
+    float p[3];
+    std::uint8_t c[4];
+  };
+  std::vector<V> vertices = {{{1, 2, 3}, {255, 0, 0, 255}}, {{4, 5, 6}, {0, 255, 0, 128}}, {{7, 8, 9}, {0, 0, 255, 0}}};
+  std::vector<std::uint8_t> raw(vertices.size() * sizeof(V));
+  std::memcpy(raw.data(), vertices.data(), raw.size());
+  const AttribSource pos = Source(raw, 3, FLOAT, false, sizeof(V), offsetof(V, p));
+  const AttribSource col = Source(raw, 4, UNSIGNED_BYTE, true, sizeof(V), offsetof(V, c));
+  CHECK(FetchAttribute(pos, 1) == glm::vec4(4, 5, 6, 1));
+  CHECK(FetchAttribute(pos, 2) == glm::vec4(7, 8, 9, 1));
+  const glm::vec4 c1 = FetchAttribute(col, 1);
+  CHECK(c1.y == 1.0f);
+  CHECK(c1.w == Approx(128.0f / 255.0f));
+}
+
+TEST_CASE("vertex fetch never reads past the end of a buffer", "[vertex_fetch]") {
+  const std::vector<float> data = {1, 2, 3, 4, 5, 6};  // two vec3
+  const AttribSource s = Source(data, 3, FLOAT, false);
+  CHECK(FetchAttribute(s, 1) == glm::vec4(4, 5, 6, 1));
+  CHECK(FetchAttribute(s, 2) == glm::vec4(0, 0, 0, 1));
+  CHECK(FetchAttribute(s, 0xFFFFFFFFu) == glm::vec4(0, 0, 0, 1));
+  AttribSource shifted = Source(data, 3, FLOAT, false, 0, 4);  // second element would end 4 bytes past the end
+  CHECK(FetchAttribute(shifted, 0) == glm::vec4(2, 3, 4, 1));
+  CHECK(FetchAttribute(shifted, 1) == glm::vec4(0, 0, 0, 1));
+  AttribSource past = Source(data, 3, FLOAT, false, 0, 1000);
+  CHECK(FetchAttribute(past, 0) == glm::vec4(0, 0, 0, 1));
+}
+
+TEST_CASE("a disabled attribute reads its current value", "[vertex_fetch]") {
+  AttribSource s;
+  s.enabled = false;
+  s.current = glm::vec4(0.25f, 0.5f, 0.75f, 1.0f);
+  CHECK(FetchAttribute(s, 42) == s.current);
+  CHECK(FetchAttribute(AttribSource{}, 0) == glm::vec4(0, 0, 0, 1));
+}
+
+TEST_CASE("indices of each type are read", "[vertex_fetch]") {
+  const std::uint8_t b[] = {1, 200, 255};
+  const std::uint16_t s[] = {1, 40000, 65535};
+  const std::uint32_t i[] = {1, 70000, 4000000000u};
+  std::uint32_t out[3];
+  detail::ReadIndices(UNSIGNED_BYTE, b, 3, out);
+  CHECK((out[0] == 1 && out[1] == 200 && out[2] == 255));
+  detail::ReadIndices(UNSIGNED_SHORT, reinterpret_cast<const std::uint8_t*>(s), 3, out);
+  CHECK((out[0] == 1 && out[1] == 40000 && out[2] == 65535));
+  detail::ReadIndices(UNSIGNED_INT, reinterpret_cast<const std::uint8_t*>(i), 3, out);
+  CHECK((out[0] == 1 && out[1] == 70000 && out[2] == 4000000000u));
+}
