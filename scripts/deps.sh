@@ -1,0 +1,21 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages softgl needs to build and test, when any is missing (apt-get, as root).
+# Extra package names given as arguments are checked too.
+set -euo pipefail
+
+packages=(g++ make cmake libglm-dev libassimp-dev libstb-dev catch2 "$@")
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+[ ${#missing[@]} -eq 0 ] && exit 0
+
+if [ "$(id -u)" -ne 0 ]; then
+  echo "softgl: missing packages: ${missing[*]}" >&2
+  echo "softgl: run this script as root, or: sudo apt-get install -y ${missing[*]}" >&2
+  exit 1
+fi
+echo "softgl: installing ${missing[*]}"
+export DEBIAN_FRONTEND=noninteractive
+apt-get update -qq
+apt-get install -y -qq --no-install-recommends "${missing[@]}"
