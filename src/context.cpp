@@ -68,6 +68,10 @@ struct ContextState {
   Enum front_face = CCW;
   Enum polygon_mode = FILL;
   float point_size = 1.0f;
+  bool scissor_enabled = false;
+  int scissor[4] = {0, 0, 0, 0};
+  bool offset_fill = false, offset_line = false, offset_point = false;
+  float offset_factor = 0.0f, offset_units = 0.0f;
   detail::FragmentOpsState ops;
 
   float clear_color[4] = {0, 0, 0, 0};
@@ -86,6 +90,18 @@ struct ContextState {
     return nullptr;
   }
 
+  // The framebuffer, cut to the scissor rectangle while the scissor test is enabled.
+  detail::Rect ClearArea() const {
+    detail::Rect r = fb.Bounds();
+    if (!scissor_enabled) return r;
+    const std::int64_t x1 = std::int64_t(scissor[0]) + scissor[2], y1 = std::int64_t(scissor[1]) + scissor[3];
+    r.x0 = std::max(r.x0, scissor[0]);
+    r.y0 = std::max(r.y0, scissor[1]);
+    r.x1 = int(std::min<std::int64_t>(r.x1, x1));
+    r.y1 = int(std::min<std::int64_t>(r.y1, y1));
+    return r;
+  }
+
   void Draw(const detail::DrawCall& call);
 };
 
@@ -99,8 +115,8 @@ Context::Context(int width, int height) : state_(std::make_unique<ContextState>(
     state_->SetError(OUT_OF_MEMORY);
     width = height = 0;
   }
-  state_->viewport[2] = width;
-  state_->viewport[3] = height;
+  state_->viewport[2] = state_->scissor[2] = width;
+  state_->viewport[3] = state_->scissor[3] = height;
 }
 
 Context::~Context() = default;
@@ -293,6 +309,12 @@ bool* CapFlag(ContextState& s, Enum cap) {
     case CULL_FACE: return &s.cull_enabled;
     case DEPTH_TEST: return &s.ops.depth_test;
     case PROGRAM_POINT_SIZE: return &s.program_point_size;
+    case SCISSOR_TEST: return &s.scissor_enabled;
+    case STENCIL_TEST: return &s.ops.stencil_test;
+    case BLEND: return &s.ops.blend.enabled;
+    case POLYGON_OFFSET_FILL: return &s.offset_fill;
+    case POLYGON_OFFSET_LINE: return &s.offset_line;
+    case POLYGON_OFFSET_POINT: return &s.offset_point;
     default: return nullptr;
   }
 }
@@ -347,6 +369,120 @@ void Context::DepthFunc(Enum func) {
 
 void Context::DepthMask(bool flag) { state_->ops.depth_write = flag; }
 
+void Context::PolygonOffset(float factor, float units) {
+  state_->offset_factor = factor;
+  state_->offset_units = units;
+}
+
+// ---- Per-fragment operations ---------------------------------------------------------------------------------
+
+namespace {
+
+bool IsCompareFunc(Enum func) { return func >= NEVER && func <= ALWAYS; }
+
+bool IsStencilOp(Enum op) {
+  switch (op) {
+    case KEEP:
+    case ZERO:
+    case REPLACE:
+    case INCR:
+    case DECR:
+    case INVERT:
+    case INCR_WRAP:
+    case DECR_WRAP: return true;
+    default: return false;
+  }
+}
+
+bool IsBlendFactor(Enum f) {
+  return f == ZERO || f == ONE || (f >= SRC_COLOR && f <= SRC_ALPHA_SATURATE) ||
+         (f >= CONSTANT_COLOR && f <= ONE_MINUS_CONSTANT_ALPHA);
+}
+
+bool IsBlendEquation(Enum e) {
+  return e == FUNC_ADD || e == FUNC_SUBTRACT || e == FUNC_REVERSE_SUBTRACT || e == MIN || e == MAX;
+}
+
+bool IsFace(Enum face) { return face == FRONT || face == BACK || face == FRONT_AND_BACK; }
+
+// Applies `set` to the stencil state of the faces that `face` names.
+template <class F>
+void ForFaces(detail::FragmentOpsState& ops, Enum face, F&& set) {
+  if (face != BACK) set(ops.front);
+  if (face != FRONT) set(ops.back);
+}
+
+}  // namespace
+
+void Context::Scissor(int x, int y, int width, int height) {
+  auto& s = *state_;
+  if (width < 0 || height < 0) return s.SetError(INVALID_VALUE);
+  s.scissor[0] = x;
+  s.scissor[1] = y;
+  s.scissor[2] = width;
+  s.scissor[3] = height;
+}
+
+void Context::StencilFunc(Enum func, int ref, std::uint32_t mask) { StencilFuncSeparate(FRONT_AND_BACK, func, ref, mask); }
+
+void Context::StencilFuncSeparate(Enum face, Enum func, int ref, std::uint32_t mask) {
+  if (!IsFace(face) || !IsCompareFunc(func)) return state_->SetError(INVALID_ENUM);
+  ForFaces(state_->ops, face, [&](detail::StencilFace& f) {
+    f.func = func;
+    f.ref = ref;
+    f.value_mask = mask;
+  });
+}
+
+void Context::StencilOp(Enum sfail, Enum dpfail, Enum dppass) { StencilOpSeparate(FRONT_AND_BACK, sfail, dpfail, dppass); }
+
+void Context::StencilOpSeparate(Enum face, Enum sfail, Enum dpfail, Enum dppass) {
+  if (!IsFace(face) || !IsStencilOp(sfail) || !IsStencilOp(dpfail) || !IsStencilOp(dppass))
+    return state_->SetError(INVALID_ENUM);
+  ForFaces(state_->ops, face, [&](detail::StencilFace& f) {
+    f.sfail = sfail;
+    f.dpfail = dpfail;
+    f.dppass = dppass;
+  });
+}
+
+void Context::StencilMask(std::uint32_t mask) { StencilMaskSeparate(FRONT_AND_BACK, mask); }
+
+void Context::StencilMaskSeparate(Enum face, std::uint32_t mask) {
+  if (!IsFace(face)) return state_->SetError(INVALID_ENUM);
+  ForFaces(state_->ops, face, [&](detail::StencilFace& f) { f.write_mask = mask; });
+}
+
+void Context::BlendFunc(Enum src, Enum dst) { BlendFuncSeparate(src, dst, src, dst); }
+
+void Context::BlendFuncSeparate(Enum src_rgb, Enum dst_rgb, Enum src_alpha, Enum dst_alpha) {
+  if (!IsBlendFactor(src_rgb) || !IsBlendFactor(dst_rgb) || !IsBlendFactor(src_alpha) || !IsBlendFactor(dst_alpha))
+    return state_->SetError(INVALID_ENUM);
+  auto& b = state_->ops.blend;
+  b.src_rgb = src_rgb;
+  b.dst_rgb = dst_rgb;
+  b.src_alpha = src_alpha;
+  b.dst_alpha = dst_alpha;
+}
+
+void Context::BlendEquation(Enum mode) { BlendEquationSeparate(mode, mode); }
+
+void Context::BlendEquationSeparate(Enum mode_rgb, Enum mode_alpha) {
+  if (!IsBlendEquation(mode_rgb) || !IsBlendEquation(mode_alpha)) return state_->SetError(INVALID_ENUM);
+  state_->ops.blend.eq_rgb = mode_rgb;
+  state_->ops.blend.eq_alpha = mode_alpha;
+}
+
+void Context::BlendColor(float r, float g, float b, float a) { state_->ops.blend.color = glm::vec4(r, g, b, a); }
+
+void Context::ColorMask(bool r, bool g, bool b, bool a) {
+  bool* m = state_->ops.color_mask;
+  m[0] = r;
+  m[1] = g;
+  m[2] = b;
+  m[3] = a;
+}
+
 // ---- Clearing ------------------------------------------------------------------------------------------------
 
 void Context::ClearColor(float r, float g, float b, float a) {
@@ -361,14 +497,15 @@ void Context::ClearStencil(int s) { state_->clear_stencil = std::uint8_t(s & 0xF
 void Context::Clear(Bitfield mask) {
   auto& s = *state_;
   if (mask & ~(COLOR_BUFFER_BIT | DEPTH_BUFFER_BIT | STENCIL_BUFFER_BIT)) return s.SetError(INVALID_VALUE);
-  const detail::Rect all = s.fb.Bounds();
+  const detail::Rect area = s.ClearArea();
+  if (area.Empty()) return;
   if (mask & COLOR_BUFFER_BIT) {
     std::uint8_t rgba[4];
     for (int i = 0; i < 4; ++i) rgba[i] = detail::FloatToUnorm8(s.clear_color[i]);
-    s.fb.ClearColor(all, rgba);
+    s.fb.ClearColor(area, rgba, s.ops.color_mask);
   }
-  if (mask & DEPTH_BUFFER_BIT) s.fb.ClearDepth(all, s.clear_depth);
-  if (mask & STENCIL_BUFFER_BIT) s.fb.ClearStencil(all, s.clear_stencil);
+  if ((mask & DEPTH_BUFFER_BIT) && s.ops.depth_write) s.fb.ClearDepth(area, s.clear_depth);
+  if (mask & STENCIL_BUFFER_BIT) s.fb.ClearStencil(area, s.clear_stencil, std::uint8_t(s.ops.front.write_mask));
 }
 
 // ---- Drawing -------------------------------------------------------------------------------------------------
@@ -394,7 +531,7 @@ void ContextState::Draw(const detail::DrawCall& call) {
   ds.program = program;
   ds.viewport = detail::MakeViewportTransform(viewport[0], viewport[1], viewport[2], viewport[3], depth_near,
                                               depth_far);
-  const detail::Rect fbr = fb.Bounds();
+  const detail::Rect fbr = ClearArea();  // framebuffer and scissor
   ds.bounds = detail::Rect{std::max(ds.viewport.rect.x0, fbr.x0), std::max(ds.viewport.rect.y0, fbr.y0),
                            std::min(ds.viewport.rect.x1, fbr.x1), std::min(ds.viewport.rect.y1, fbr.y1)};
   ds.cull_enabled = cull_enabled;
@@ -403,6 +540,11 @@ void ContextState::Draw(const detail::DrawCall& call) {
   ds.polygon_mode = polygon_mode;
   ds.program_point_size = program_point_size;
   ds.point_size = point_size;
+  ds.offset_fill = offset_fill;
+  ds.offset_line = offset_line;
+  ds.offset_point = offset_point;
+  ds.offset_factor = offset_factor;
+  ds.offset_units = offset_units;
   ds.ops = ops;
   try {
     detail::Draw(call, plan, ds, fb, scratch);

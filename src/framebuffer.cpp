@@ -28,18 +28,30 @@ bool Framebuffer::Allocate(int w, int h) {
   return true;
 }
 
-void Framebuffer::ClearColor(const Rect& r, const std::uint8_t rgba[4]) {
+void Framebuffer::ClearColor(const Rect& r, const std::uint8_t rgba[4], const bool mask[4]) {
+  const bool all = mask[0] && mask[1] && mask[2] && mask[3];
   for (int y = r.y0; y < r.y1; ++y)
-    for (int x = r.x0; x < r.x1; ++x) std::memcpy(&color[Index(x, y) * 4], rgba, 4);
+    for (int x = r.x0; x < r.x1; ++x) {
+      std::uint8_t* px = &color[Index(x, y) * 4];
+      if (all) {
+        std::memcpy(px, rgba, 4);
+      } else {
+        for (int c = 0; c < 4; ++c)
+          if (mask[c]) px[c] = rgba[c];
+      }
+    }
 }
 
 void Framebuffer::ClearDepth(const Rect& r, float value) {
   for (int y = r.y0; y < r.y1; ++y) std::fill(&depth[Index(r.x0, y)], &depth[Index(r.x0, y)] + (r.x1 - r.x0), value);
 }
 
-void Framebuffer::ClearStencil(const Rect& r, std::uint8_t value) {
+void Framebuffer::ClearStencil(const Rect& r, std::uint8_t value, std::uint8_t write_mask) {
   for (int y = r.y0; y < r.y1; ++y)
-    std::fill(&stencil[Index(r.x0, y)], &stencil[Index(r.x0, y)] + (r.x1 - r.x0), value);
+    for (int x = r.x0; x < r.x1; ++x) {
+      std::uint8_t& s = stencil[Index(x, y)];
+      s = std::uint8_t((s & ~write_mask) | (value & write_mask));
+    }
 }
 
 }  // namespace softgl::detail

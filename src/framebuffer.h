@@ -22,9 +22,11 @@ struct Framebuffer {
   std::size_t Index(int x, int y) const { return std::size_t(y) * std::size_t(width) + std::size_t(x); }
   Rect Bounds() const { return Rect{0, 0, width, height}; }
 
-  void ClearColor(const Rect& r, const std::uint8_t rgba[4]);
+  /// Clears rectangle r (inside the framebuffer) of the colour buffer, writing only the channels in mask.
+  void ClearColor(const Rect& r, const std::uint8_t rgba[4], const bool mask[4]);
   void ClearDepth(const Rect& r, float value);
-  void ClearStencil(const Rect& r, std::uint8_t value);
+  /// Clears the stencil bits of write_mask in rectangle r.
+  void ClearStencil(const Rect& r, std::uint8_t value, std::uint8_t write_mask);
 };
 
 }  // namespace softgl::detail

@@ -126,6 +126,11 @@ class PrimitiveRunner {
     if (area == 0.0f) return;
     const bool front = IsFrontFacing(area, state_.front_face);
     if (state_.cull_enabled && IsCulled(front, state_.cull_face)) return;
+    const bool offset = state_.polygon_mode == LINE    ? state_.offset_line
+                        : state_.polygon_mode == POINT ? state_.offset_point
+                                                       : state_.offset_fill;
+    target_.depth_offset =
+        offset ? PolygonOffset(win_[0], win_[1], win_[2], state_.offset_factor, state_.offset_units) : 0.0f;
     switch (state_.polygon_mode) {
       case LINE:  // the triangle's own edges, each clipped as a line
         Line(i0, i1, front);
@@ -145,6 +150,7 @@ class PrimitiveRunner {
           RasterizeTriangle(win_[0], win_[k], win_[k + 1], front, target_, quads_, sink_);
         break;
     }
+    target_.depth_offset = 0.0f;
   }
 
  private:

@@ -26,13 +26,15 @@ inline constexpr float kMaxPointSize = 255.0f;
 struct DrawState {
   const Program* program = nullptr;
   ViewportTransform viewport;
-  Rect bounds;  // viewport intersected with the framebuffer
+  Rect bounds;  // viewport, framebuffer and (when enabled) scissor rectangle intersected
   bool cull_enabled = false;
   Enum cull_face = BACK;
   Enum front_face = CCW;
   Enum polygon_mode = FILL;
   bool program_point_size = false;
   float point_size = 1.0f;
+  bool offset_fill = false, offset_line = false, offset_point = false;  // POLYGON_OFFSET_FILL / _LINE / _POINT
+  float offset_factor = 0.0f, offset_units = 0.0f;
   FragmentOpsState ops;
 };
 

@@ -56,6 +56,23 @@ struct Plane {
 
 }  // namespace
 
+float PolygonOffset(const WindowVertex& a, const WindowVertex& b, const WindowVertex& c, float factor, float units) {
+  const float dx1 = b.win.x - a.win.x, dy1 = b.win.y - a.win.y, dz1 = b.win.z - a.win.z;
+  const float dx2 = c.win.x - a.win.x, dy2 = c.win.y - a.win.y, dz2 = c.win.z - a.win.z;
+  const float det = dx1 * dy2 - dx2 * dy1;
+  float m = 0.0f;
+  if (det != 0.0f) {
+    const float dzdx = (dz1 * dy2 - dz2 * dy1) / det, dzdy = (dz2 * dx1 - dz1 * dx2) / det;
+    m = std::max(std::fabs(dzdx), std::fabs(dzdy));
+  }
+  const float zmax = std::max({std::fabs(a.win.z), std::fabs(b.win.z), std::fabs(c.win.z)});
+  int e = 0;
+  std::frexp(zmax, &e);  // zmax = f * 2^e with f in [0.5, 1): the IEEE exponent is e - 1
+  const float r = zmax > 0.0f ? std::ldexp(1.0f, e - 1 - 23) : std::ldexp(1.0f, -126);
+  const float offset = m * factor + r * units;
+  return std::isfinite(offset) ? offset : 0.0f;
+}
+
 void RasterizeTriangle(const WindowVertex& v0, const WindowVertex& v1, const WindowVertex& v2, bool front_facing,
                        const RasterTarget& target, QuadBuffer& quads, const QuadSink& sink) {
   const WindowVertex* v[3] = {&v0, &v1, &v2};
@@ -116,7 +133,8 @@ void RasterizeTriangle(const WindowVertex& v0, const WindowVertex& v1, const Win
     return Plane{a0, (da1 * dy2 - da2 * dy1) * inv_det, (da2 * dx1 - da1 * dx2) * inv_det};
   };
   const int nvar = target.nvar;
-  const Plane z = make_plane(v[0]->win.z, v[1]->win.z, v[2]->win.z);
+  Plane z = make_plane(v[0]->win.z, v[1]->win.z, v[2]->win.z);
+  z.a0 += target.depth_offset;
   const Plane oow = make_plane(v[0]->win.w, v[1]->win.w, v[2]->win.w);
   Plane var[kMaxVaryingFloats];
   for (int i = 0; i < nvar; ++i) var[i] = make_plane(v[0]->var[i], v[1]->var[i], v[2]->var[i]);
@@ -159,7 +177,7 @@ void RasterizeLine(const WindowVertex& a, const WindowVertex& b, bool front_faci
     const float t = std::clamp(((fx - ax) * dx + (fy - ay) * dy) / len2, 0.0f, 1.0f);
     const float q = a.win.w + t * (b.win.w - a.win.w);
     const float w = 1.0f / q;
-    frag = glm::vec4(fx, fy, a.win.z + t * (b.win.z - a.win.z), q);
+    frag = glm::vec4(fx, fy, a.win.z + t * (b.win.z - a.win.z) + target.depth_offset, q);
     for (int i = 0; i < nvar; ++i) out[i] = (a.var[i] + t * (b.var[i] - a.var[i])) * w;
   };
 
@@ -209,7 +227,7 @@ void RasterizePoint(const WindowVertex& v, float size, bool front_facing, const 
   const int nvar = target.nvar;
   const float w = 1.0f / v.win.w;
   auto eval = [&](int px, int py, glm::vec4& frag, float* out) {
-    frag = glm::vec4(float(px) + 0.5f, float(py) + 0.5f, v.win.z, v.win.w);
+    frag = glm::vec4(float(px) + 0.5f, float(py) + 0.5f, v.win.z + target.depth_offset, v.win.w);
     for (int i = 0; i < nvar; ++i) out[i] = v.var[i] * w;
   };
   for (long qy = y0 & ~1L; qy <= y1; qy += 2) {

@@ -11,7 +11,7 @@
 // - Lines: one pixel wide, one fragment per column (x-major) or row (y-major) whose centre lies in the half-open
 //   span [start, end), the diamond-exit rule for end points at pixel centres.
 // - Points: squares of the point size; pixels whose centres lie in [x - s/2, x + s/2) x [y - s/2, y + s/2).
-// Only pixels inside `bounds` (viewport, framebuffer) are marked live.
+// Only pixels inside `bounds` (viewport, framebuffer, scissor) are marked live.
 #pragma once
 
 #include "types.h"
@@ -21,9 +21,15 @@ namespace softgl::detail {
 inline constexpr int kSubpixelBits = 8;
 
 struct RasterTarget {
-  Rect bounds;  // viewport intersected with the framebuffer
+  Rect bounds;  // viewport, framebuffer and scissor rectangle intersected
   int nvar = 0;
+  float depth_offset = 0.0f;  // polygon offset added to every fragment's depth
 };
+
+/// OpenGL's polygon offset for the plane through a, b, c: m * factor + r * units, with m the larger of
+/// |dz/dx| and |dz/dy| and r the smallest resolvable difference of the 32-bit float depth buffer at the largest
+/// depth of the polygon, 2^(e - 23) (OpenGL 4.6, section 14.6.5).
+float PolygonOffset(const WindowVertex& a, const WindowVertex& b, const WindowVertex& c, float factor, float units);
 
 void RasterizeTriangle(const WindowVertex& v0, const WindowVertex& v1, const WindowVertex& v2, bool front_facing,
                        const RasterTarget& target, QuadBuffer& quads, const QuadSink& sink);

@@ -1,6 +1,10 @@
 // Per-fragment operations: depth comparisons, depth writes and masks, colour conversion.
 #include <catch2/catch.hpp>
 
+#include <array>
+#include <cmath>
+#include <limits>
+
 #include "fragment_ops.h"
 #include "helpers.h"
 
@@ -117,4 +121,351 @@ TEST_CASE("a discarding shader writes nothing", "[fragment_ops]") {
     CHECK(px[0] == (x % 2 == 0 ? 255 : 0));
     CHECK(gl.ReadDepth(x, 0) == (x % 2 == 0 ? 0.5f : 1.0f));
   }
+}
+
+// ---- Stencil ----------------------------------------------------------------------------------------------------
+
+using detail::StencilFace;
+using detail::StencilTest;
+using detail::StencilUpdate;
+
+TEST_CASE("every stencil function compares masked reference and stored value", "[fragment_ops][stencil]") {
+  struct Row {
+    Enum func;
+    int ref;
+    std::uint32_t mask;
+    std::uint8_t stored;
+    bool pass;
+  };
+  const Row rows[] = {
+      {NEVER, 5, 0xFF, 5, false},     {ALWAYS, 5, 0xFF, 9, true},
+      {LESS, 4, 0xFF, 5, true},       {LESS, 5, 0xFF, 5, false},      // ref < stored
+      {LEQUAL, 5, 0xFF, 5, true},     {LEQUAL, 6, 0xFF, 5, false},
+      {EQUAL, 0x13, 0x0F, 0x23, true}, {EQUAL, 0x13, 0xFF, 0x23, false},  // only the masked bits compare
+      {NOTEQUAL, 7, 0xFF, 7, false},  {NOTEQUAL, 7, 0xFE, 6, false},   // 7 & 0xFE == 6
+      {GREATER, 9, 0xFF, 5, true},    {GREATER, 9, 0x03, 5, false},    // 1 > 1 fails
+      {GEQUAL, 5, 0xFF, 5, true},     {GEQUAL, 4, 0xFF, 5, false},
+      {EQUAL, 300, 0xFF, 255, true},  {EQUAL, -3, 0xFF, 0, true},      // ref clamps to [0, 255]
+  };
+  for (const Row& r : rows) {
+    INFO("func 0x" << std::hex << r.func << " ref " << std::dec << r.ref << " stored " << int(r.stored));
+    StencilFace f;
+    f.func = r.func;
+    f.ref = r.ref;
+    f.value_mask = r.mask;
+    CHECK(StencilTest(f, r.stored) == r.pass);
+  }
+}
+
+TEST_CASE("every stencil operation, through the write mask", "[fragment_ops][stencil]") {
+  struct Row {
+    Enum op;
+    std::uint8_t stored;
+    int ref;
+    std::uint32_t write_mask;
+    std::uint8_t result;
+  };
+  const Row rows[] = {
+      {KEEP, 7, 3, 0xFF, 7},        {ZERO, 7, 3, 0xFF, 0},         {REPLACE, 7, 3, 0xFF, 3},
+      {INCR, 7, 0, 0xFF, 8},        {INCR, 255, 0, 0xFF, 255},     {INCR_WRAP, 255, 0, 0xFF, 0},
+      {DECR, 7, 0, 0xFF, 6},        {DECR, 0, 0, 0xFF, 0},         {DECR_WRAP, 0, 0, 0xFF, 255},
+      {INVERT, 0x0F, 0, 0xFF, 0xF0},
+      {REPLACE, 0xAA, 0x55, 0x0F, 0xA5},  // only the low bits change
+      {INVERT, 0xAA, 0, 0xF0, 0x5A},      {ZERO, 0xFF, 0, 0x00, 0xFF},
+      {INCR_WRAP, 0x0F, 0, 0x0F, 0x00},   // 0x10 through mask 0x0F
+      {REPLACE, 1, 999, 0xFF, 255},       // ref clamps
+  };
+  for (const Row& r : rows) {
+    INFO("op 0x" << std::hex << r.op << " stored " << int(r.stored));
+    StencilFace f;
+    f.ref = r.ref;
+    f.write_mask = r.write_mask;
+    CHECK(int(StencilUpdate(f, r.op, r.stored)) == int(r.result));
+  }
+}
+
+// ---- Blending ---------------------------------------------------------------------------------------------------
+
+TEST_CASE("every blend factor", "[fragment_ops][blend]") {
+  // src, dst and constant chosen so that every factor gives a different value.
+  const glm::vec4 s(0.8f, 0.6f, 0.4f, 0.7f), d(0.2f, 0.5f, 1.0f, 0.4f), c(0.1f, 0.3f, 0.9f, 0.25f);
+  struct Row {
+    Enum factor;
+    glm::vec4 value;  // the factor itself (rgb from the rgb factor, a from the alpha factor)
+  };
+  const Row rows[] = {
+      {ZERO, {0, 0, 0, 0}},
+      {ONE, {1, 1, 1, 1}},
+      {SRC_COLOR, s},
+      {ONE_MINUS_SRC_COLOR, {0.2f, 0.4f, 0.6f, 0.3f}},
+      {DST_COLOR, d},
+      {ONE_MINUS_DST_COLOR, {0.8f, 0.5f, 0.0f, 0.6f}},
+      {SRC_ALPHA, {0.7f, 0.7f, 0.7f, 0.7f}},
+      {ONE_MINUS_SRC_ALPHA, {0.3f, 0.3f, 0.3f, 0.3f}},
+      {DST_ALPHA, {0.4f, 0.4f, 0.4f, 0.4f}},
+      {ONE_MINUS_DST_ALPHA, {0.6f, 0.6f, 0.6f, 0.6f}},
+      {CONSTANT_COLOR, c},
+      {ONE_MINUS_CONSTANT_COLOR, {0.9f, 0.7f, 0.1f, 0.75f}},
+      {CONSTANT_ALPHA, {0.25f, 0.25f, 0.25f, 0.25f}},
+      {ONE_MINUS_CONSTANT_ALPHA, {0.75f, 0.75f, 0.75f, 0.75f}},
+      {SRC_ALPHA_SATURATE, {0.6f, 0.6f, 0.6f, 1.0f}},  // min(As, 1 - Ad) = min(0.7, 0.6); alpha 1
+  };
+  for (const Row& r : rows) {
+    INFO("factor 0x" << std::hex << r.factor);
+    detail::BlendState b;
+    b.enabled = true;
+    b.color = c;
+    // As source factor with the destination factor ZERO: result = s * factor.
+    b.src_rgb = b.src_alpha = r.factor;
+    b.dst_rgb = b.dst_alpha = ZERO;
+    const glm::vec4 as_src = detail::Blend(b, s, d);
+    // As destination factor with the source factor ZERO: result = d * factor.
+    b.src_rgb = b.src_alpha = ZERO;
+    b.dst_rgb = b.dst_alpha = r.factor;
+    const glm::vec4 as_dst = detail::Blend(b, s, d);
+    for (int i = 0; i < 4; ++i) {
+      CHECK(as_src[i] == Approx(s[i] * r.value[i]).margin(1e-6));
+      CHECK(as_dst[i] == Approx(d[i] * r.value[i]).margin(1e-6));
+    }
+  }
+}
+
+TEST_CASE("every blend equation, separately for colour and alpha", "[fragment_ops][blend]") {
+  const glm::vec4 s(0.8f, 0.2f, 0.5f, 0.6f), d(0.3f, 0.9f, 0.5f, 0.2f);
+  detail::BlendState b;
+  b.enabled = true;
+  b.src_rgb = b.src_alpha = SRC_ALPHA;          // 0.6
+  b.dst_rgb = b.dst_alpha = ONE_MINUS_SRC_ALPHA;  // 0.4
+  struct Row {
+    Enum eq;
+    glm::vec4 result;
+  };
+  const Row rows[] = {
+      {FUNC_ADD, s * 0.6f + d * 0.4f},
+      {FUNC_SUBTRACT, s * 0.6f - d * 0.4f},
+      {FUNC_REVERSE_SUBTRACT, d * 0.4f - s * 0.6f},
+      {MIN, glm::min(s, d)},  // factors ignored
+      {MAX, glm::max(s, d)},
+  };
+  for (const Row& r : rows) {
+    INFO("equation 0x" << std::hex << r.eq);
+    b.eq_rgb = b.eq_alpha = r.eq;
+    const glm::vec4 out = detail::Blend(b, s, d);
+    for (int i = 0; i < 4; ++i) CHECK(out[i] == Approx(r.result[i]).margin(1e-6));
+  }
+  b.eq_rgb = FUNC_ADD;
+  b.eq_alpha = MAX;
+  const glm::vec4 mixed = detail::Blend(b, s, d);
+  CHECK(mixed.r == Approx(0.8f * 0.6f + 0.3f * 0.4f));
+  CHECK(mixed.a == Approx(0.6f));
+}
+
+namespace {
+// One pixel of framebuffer, cleared to `dst`, then a fragment of colour `src` drawn over it.
+std::array<int, 4> DrawOnePixel(Context& gl, const glm::vec4& dst, const glm::vec4& src) {
+  testing::SolidShader shader;
+  gl.ClearColor(dst.r, dst.g, dst.b, dst.a);
+  gl.Clear(COLOR_BUFFER_BIT);
+  FullQuad(gl, shader, 0.0f, src);
+  std::uint8_t px[4];
+  gl.ReadPixel(0, 0, px);
+  return {px[0], px[1], px[2], px[3]};
+}
+}  // namespace
+
+TEST_CASE("blending into the 8-bit framebuffer, by hand", "[fragment_ops][blend]") {
+  Context gl(1, 1);
+  gl.Enable(BLEND);
+  gl.BlendFunc(SRC_ALPHA, ONE_MINUS_SRC_ALPHA);
+  // dst (0, 0, 255, 255) -> 0, 0, 1, 1; src (1, 0.5, 0, 0.5): 0.5*src + 0.5*dst = (0.5, 0.25, 0.5, 0.75).
+  CHECK(DrawOnePixel(gl, {0, 0, 1, 1}, {1, 0.5f, 0, 0.5f}) == std::array<int, 4>{128, 64, 128, 191});
+  gl.BlendFunc(ONE, ONE);  // saturates at 1
+  CHECK(DrawOnePixel(gl, {0.6f, 0.2f, 0, 1}, {0.6f, 0.2f, 0, 0}) == std::array<int, 4>{255, 102, 0, 255});
+  gl.BlendEquation(FUNC_REVERSE_SUBTRACT);  // d - s, clamped at 0
+  CHECK(DrawOnePixel(gl, {0.6f, 0.2f, 0, 1}, {0.2f, 0.4f, 0, 0.5f}) == std::array<int, 4>{102, 0, 0, 128});
+  gl.BlendEquation(FUNC_ADD);
+  gl.BlendColor(0.2f, 0.4f, 0.6f, 0.8f);
+  gl.BlendFuncSeparate(CONSTANT_COLOR, ZERO, ZERO, CONSTANT_ALPHA);  // rgb = s * c; a = d * 0.8
+  CHECK(DrawOnePixel(gl, {1, 1, 1, 1}, {1, 1, 0.25f, 0}) == std::array<int, 4>{51, 102, 38, 204});
+  // Fragment colours are clamped to [0, 1] before blending.
+  gl.BlendFunc(ONE, ZERO);
+  CHECK(DrawOnePixel(gl, {0, 0, 0, 0}, {2, -1, 0.5f, 1}) == std::array<int, 4>{255, 0, 128, 255});
+  CHECK(gl.GetError() == NO_ERROR);
+}
+
+// ---- Masks, scissor, stencil through the API --------------------------------------------------------------------
+
+TEST_CASE("colour, depth and stencil masks apply to Clear and to drawing", "[fragment_ops][masks]") {
+  Context gl(2, 2);
+  testing::SolidShader shader;
+  std::uint8_t px[4];
+  gl.ClearColor(1, 1, 1, 1);
+  gl.Clear(COLOR_BUFFER_BIT);
+  gl.ColorMask(true, false, true, false);
+  gl.ClearColor(0, 0, 0, 0);
+  gl.Clear(COLOR_BUFFER_BIT);
+  gl.ReadPixel(0, 0, px);
+  CHECK((px[0] == 0 && px[1] == 255 && px[2] == 0 && px[3] == 255));
+  FullQuad(gl, shader, 0.0f, {0.2f, 0.2f, 0.2f, 0.2f});
+  gl.ReadPixel(1, 1, px);
+  CHECK((px[0] == 51 && px[1] == 255 && px[2] == 51 && px[3] == 255));
+  gl.ColorMask(true, true, true, true);
+
+  gl.ClearDepth(0.5);
+  gl.Clear(DEPTH_BUFFER_BIT);
+  gl.DepthMask(false);
+  gl.ClearDepth(0.9);
+  gl.Clear(DEPTH_BUFFER_BIT);
+  CHECK(gl.ReadDepth(0, 0) == 0.5f);
+  gl.DepthMask(true);
+
+  gl.ClearStencil(0xFF);
+  gl.Clear(STENCIL_BUFFER_BIT);
+  gl.StencilMask(0x0F);
+  gl.ClearStencil(0x00);
+  gl.Clear(STENCIL_BUFFER_BIT);
+  CHECK(gl.ReadStencil(0, 0) == 0xF0);
+  gl.Enable(STENCIL_TEST);
+  gl.StencilFunc(ALWAYS, 0x3C, 0xFF);
+  gl.StencilOp(KEEP, KEEP, REPLACE);
+  FullQuad(gl, shader, 0.0f, {1, 1, 1, 1});
+  CHECK(gl.ReadStencil(1, 0) == 0xFC);  // high bits kept, low bits from 0x3C
+}
+
+TEST_CASE("the scissor test bounds drawing and Clear", "[fragment_ops][scissor]") {
+  Context gl(8, 8);
+  testing::SolidShader shader;
+  gl.Scissor(2, 3, 4, 2);
+  gl.Enable(SCISSOR_TEST);
+  gl.ClearColor(0, 1, 0, 1);
+  gl.Clear(COLOR_BUFFER_BIT);
+  FullQuad(gl, shader, 0.0f, {1, 0, 0, 1});
+  gl.Disable(SCISSOR_TEST);
+  std::uint8_t px[4];
+  for (int y = 0; y < 8; ++y)
+    for (int x = 0; x < 8; ++x) {
+      gl.ReadPixel(x, y, px);
+      const bool inside = x >= 2 && x < 6 && y >= 3 && y < 5;
+      CHECK(int(px[0]) == (inside ? 255 : 0));
+      CHECK(int(px[1]) == 0);  // the clear was scissored too, and the quad covered all of it
+    }
+  gl.Scissor(0, 0, -1, 4);
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.Scissor(-100, -100, 1000000000, 1000000000);  // far outside: clamps, no overflow
+  gl.Enable(SCISSOR_TEST);
+  gl.Clear(COLOR_BUFFER_BIT);
+  gl.ReadPixel(7, 7, px);
+  CHECK(px[1] == 255);
+}
+
+TEST_CASE("front and back faces use their own stencil state", "[fragment_ops][stencil]") {
+  Context gl(8, 4);
+  // Left half counter-clockwise (front), right half clockwise (back).
+  testing::MakeVertexArray(gl, {{-1, -1, 0, 1}, {0, -1, 0, 1}, {-1, 1, 0, 1}, {0, 1, 0, 1}, {0, -1, 0, 1},
+                                {-1, 1, 0, 1}, {0, -1, 0, 1}, {0, 1, 0, 1}, {1, -1, 0, 1}, {1, 1, 0, 1},
+                                {1, -1, 0, 1}, {0, 1, 0, 1}});
+  testing::SolidShader shader;
+  gl.UseProgram(shader);
+  gl.ClearStencil(10);
+  gl.Clear(STENCIL_BUFFER_BIT | COLOR_BUFFER_BIT);
+  gl.Enable(STENCIL_TEST);
+  gl.StencilFuncSeparate(FRONT, ALWAYS, 0, 0xFF);
+  gl.StencilFuncSeparate(BACK, EQUAL, 10, 0xFF);
+  gl.StencilOpSeparate(FRONT, KEEP, KEEP, INCR);
+  gl.StencilOpSeparate(BACK, KEEP, KEEP, DECR);
+  gl.StencilMaskSeparate(BACK, 0xFF);
+  // Left: two CCW triangles. Right: (0,-1),(0,1),(1,-1) and (1,1),(1,-1),(0,1) are both clockwise.
+  gl.DrawArrays(TRIANGLES, 0, 3);
+  gl.DrawArrays(TRIANGLES, 6, 6);
+  CHECK(gl.ReadStencil(0, 1) == 11);
+  CHECK(gl.ReadStencil(6, 2) == 9);
+  // Back faces now fail (9 != 10): their sfail op runs instead.
+  gl.StencilOpSeparate(BACK, ZERO, KEEP, KEEP);
+  gl.DrawArrays(TRIANGLES, 6, 6);
+  CHECK(gl.ReadStencil(6, 2) == 0);
+  std::uint8_t px[4];
+  gl.ReadPixel(6, 2, px);
+  CHECK(px[0] == 255);  // from the first, passing draw
+  CHECK(gl.GetError() == NO_ERROR);
+}
+
+TEST_CASE("stencil ops see the depth result: sfail, dpfail, dppass", "[fragment_ops][stencil]") {
+  Context gl(2, 2);
+  testing::SolidShader shader;
+  gl.Enable(DEPTH_TEST);
+  gl.Enable(STENCIL_TEST);
+  gl.ClearDepth(0.5);
+  gl.ClearStencil(5);
+  gl.Clear(DEPTH_BUFFER_BIT | STENCIL_BUFFER_BIT);
+  gl.StencilOp(ZERO, INCR, INVERT);
+  gl.StencilFunc(EQUAL, 5, 0xFF);
+  FullQuad(gl, shader, 0.5f, {1, 1, 1, 1});  // depth 0.75 fails LESS against 0.5: dpfail
+  CHECK(gl.ReadStencil(0, 0) == 6);
+  FullQuad(gl, shader, -0.5f, {1, 1, 1, 1});  // stencil 6 != 5: sfail
+  CHECK(gl.ReadStencil(0, 0) == 0);
+  gl.StencilFunc(EQUAL, 0, 0xFF);
+  FullQuad(gl, shader, -0.5f, {1, 1, 1, 1});  // both pass: dppass
+  CHECK(gl.ReadStencil(0, 0) == 255);
+  gl.Disable(DEPTH_TEST);
+  gl.StencilFunc(ALWAYS, 0, 0);
+  gl.StencilOp(KEEP, ZERO, DECR);  // no depth test: dppass
+  FullQuad(gl, shader, 0.9f, {1, 1, 1, 1});
+  CHECK(gl.ReadStencil(0, 0) == 254);
+}
+
+TEST_CASE("polygon offset separates coplanar surfaces", "[fragment_ops][offset]") {
+  Context gl(4, 4);
+  testing::SolidShader shader;
+  gl.Enable(DEPTH_TEST);
+  gl.Clear(COLOR_BUFFER_BIT | DEPTH_BUFFER_BIT);
+  FullQuad(gl, shader, 0.0f, {1, 0, 0, 1});
+  FullQuad(gl, shader, 0.0f, {0, 1, 0, 1});  // coplanar: LESS fails
+  std::uint8_t px[4];
+  gl.ReadPixel(1, 1, px);
+  CHECK(px[0] == 255);
+  gl.Enable(POLYGON_OFFSET_FILL);
+  gl.PolygonOffset(0.0f, -1.0f);  // one resolvable unit nearer: r = 2^-24 at depth 0.5
+  FullQuad(gl, shader, 0.0f, {0, 1, 0, 1});
+  gl.ReadPixel(1, 1, px);
+  CHECK(px[1] == 255);
+  CHECK(gl.ReadDepth(1, 1) == 0.5f - std::ldexp(1.0f, -24));
+  // The slope term: a plane with dz/dx = 0.25 per pixel, factor 2 -> +0.5.
+  gl.DepthFunc(ALWAYS);
+  gl.PolygonOffset(2.0f, 0.0f);
+  testing::MakeVertexArray(gl, {{-1, -1, -1, 1}, {1, -1, 1, 1}, {-1, 1, -1, 1}});  // z from 0 to 1 across x
+  gl.DrawArrays(TRIANGLES, 0, 3);
+  CHECK(gl.ReadDepth(0, 0) == Approx(0.125f + 0.5f));
+}
+
+TEST_CASE("per-fragment state rejects bad enums and changes nothing", "[fragment_ops][errors]") {
+  Context gl(1, 1);
+  gl.StencilFunc(0x1234, 0, 0xFF);
+  CHECK(gl.GetError() == INVALID_ENUM);
+  gl.StencilFuncSeparate(CW, ALWAYS, 0, 0xFF);
+  CHECK(gl.GetError() == INVALID_ENUM);
+  gl.StencilOp(KEEP, 0x1234, KEEP);
+  CHECK(gl.GetError() == INVALID_ENUM);
+  gl.StencilOpSeparate(0, KEEP, KEEP, KEEP);
+  CHECK(gl.GetError() == INVALID_ENUM);
+  gl.StencilMaskSeparate(0x1234, 0);
+  CHECK(gl.GetError() == INVALID_ENUM);
+  gl.BlendFunc(SRC_ALPHA, 0x0309);
+  CHECK(gl.GetError() == INVALID_ENUM);
+  gl.BlendFuncSeparate(ONE, ONE, 2, ONE);
+  CHECK(gl.GetError() == INVALID_ENUM);
+  gl.BlendEquation(0x8009);
+  CHECK(gl.GetError() == INVALID_ENUM);
+  gl.BlendEquationSeparate(FUNC_ADD, 0);
+  CHECK(gl.GetError() == INVALID_ENUM);
+  // Nothing changed: blending still replaces (ONE, ZERO, FUNC_ADD) and the stencil test still passes.
+  gl.Enable(BLEND);
+  gl.Enable(STENCIL_TEST);
+  testing::SolidShader shader;
+  gl.ClearColor(0, 0, 1, 1);
+  gl.Clear(COLOR_BUFFER_BIT);
+  FullQuad(gl, shader, 0.0f, {1, 0, 0, 0.5f});
+  std::uint8_t px[4];
+  gl.ReadPixel(0, 0, px);
+  CHECK((px[0] == 255 && px[2] == 0 && px[3] == 128));
+  CHECK(gl.GetError() == NO_ERROR);
 }

@@ -97,7 +97,8 @@ class Context {
   void Viewport(int x, int y, int width, int height);
   /// Maps NDC depth [-1, 1] to [n, f]; both clamped to [0, 1].
   void DepthRange(double n, double f);
-  /// cap: CULL_FACE, DEPTH_TEST or PROGRAM_POINT_SIZE; otherwise INVALID_ENUM.
+  /// cap: CULL_FACE, DEPTH_TEST, STENCIL_TEST, SCISSOR_TEST, BLEND, POLYGON_OFFSET_FILL, POLYGON_OFFSET_LINE,
+  /// POLYGON_OFFSET_POINT or PROGRAM_POINT_SIZE; otherwise INVALID_ENUM. All start disabled.
   void Enable(Enum cap);
   void Disable(Enum cap);
   bool IsEnabled(Enum cap);
@@ -112,15 +113,51 @@ class Context {
   void PointSize(float size);
   /// The depth comparison: NEVER, LESS (default), EQUAL, LEQUAL, GREATER, NOTEQUAL, GEQUAL, ALWAYS.
   void DepthFunc(Enum func);
-  /// Whether depth is written when the depth test is enabled.
+  /// Whether depth is written when the depth test is enabled (and by Clear).
   void DepthMask(bool flag);
+  /// Depth offset for polygons when POLYGON_OFFSET_FILL (or _LINE, _POINT for PolygonMode LINE, POINT) is enabled:
+  /// factor * max(|dz/dx|, |dz/dy|) + units * r, r being the depth buffer's resolution at the polygon's
+  /// largest depth (2^(e - 23) for its exponent e; the depth buffer is 32-bit float).
+  void PolygonOffset(float factor, float units);
+
+  // ---- Per-fragment operations -------------------------------------------------------------------------------
+  // In OpenGL's order: scissor test, stencil test, depth test, stencil update, blending, colour mask.
+
+  /// The scissor rectangle used while SCISSOR_TEST is enabled (also by Clear). width or height < 0:
+  /// INVALID_VALUE. Starts as the whole framebuffer.
+  void Scissor(int x, int y, int width, int height);
+  /// Stencil test for both faces: passes when (ref & mask) func (stencil & mask); ref is clamped to [0, 255].
+  /// func: NEVER, LESS, EQUAL, LEQUAL, GREATER, NOTEQUAL, GEQUAL, ALWAYS (default ALWAYS, 0, all ones).
+  void StencilFunc(Enum func, int ref, std::uint32_t mask);
+  /// As StencilFunc for face FRONT, BACK or FRONT_AND_BACK. Points, lines and front-facing polygons use FRONT.
+  void StencilFuncSeparate(Enum face, Enum func, int ref, std::uint32_t mask);
+  /// What happens to the stencil value when the stencil test fails (sfail), when it passes but the depth test
+  /// fails (dpfail), and when both pass or there is no depth test (dppass): KEEP, ZERO, REPLACE, INCR, INCR_WRAP,
+  /// DECR, DECR_WRAP, INVERT (default KEEP for all).
+  void StencilOp(Enum sfail, Enum dpfail, Enum dppass);
+  void StencilOpSeparate(Enum face, Enum sfail, Enum dpfail, Enum dppass);
+  /// The stencil bits that drawing and Clear may write (default all).
+  void StencilMask(std::uint32_t mask);
+  void StencilMaskSeparate(Enum face, std::uint32_t mask);
+  /// Blend factors for colour and alpha: ZERO, ONE, SRC_COLOR, ONE_MINUS_SRC_COLOR, DST_COLOR, ONE_MINUS_DST_COLOR,
+  /// SRC_ALPHA, ONE_MINUS_SRC_ALPHA, DST_ALPHA, ONE_MINUS_DST_ALPHA, CONSTANT_COLOR, ONE_MINUS_CONSTANT_COLOR,
+  /// CONSTANT_ALPHA, ONE_MINUS_CONSTANT_ALPHA, SRC_ALPHA_SATURATE (default ONE, ZERO).
+  void BlendFunc(Enum src, Enum dst);
+  void BlendFuncSeparate(Enum src_rgb, Enum dst_rgb, Enum src_alpha, Enum dst_alpha);
+  /// FUNC_ADD (default), FUNC_SUBTRACT, FUNC_REVERSE_SUBTRACT, MIN, MAX (the last two ignore the factors).
+  void BlendEquation(Enum mode);
+  void BlendEquationSeparate(Enum mode_rgb, Enum mode_alpha);
+  /// The constant colour of the CONSTANT_* factors (clamped to [0, 1] when used).
+  void BlendColor(float r, float g, float b, float a);
+  /// Which colour channels drawing and Clear write (default all).
+  void ColorMask(bool r, bool g, bool b, bool a);
 
   // ---- Clearing ----------------------------------------------------------------------------------------------
   void ClearColor(float r, float g, float b, float a);
   void ClearDepth(double depth);
   void ClearStencil(int s);
   /// Clears the buffers named by mask (COLOR_BUFFER_BIT | DEPTH_BUFFER_BIT | STENCIL_BUFFER_BIT); any other bit:
-  /// INVALID_VALUE.
+  /// INVALID_VALUE. Honours the scissor test, ColorMask, DepthMask and the front StencilMask, as OpenGL does.
   void Clear(Bitfield mask);
 
   // ---- Drawing -----------------------------------------------------------------------------------------------

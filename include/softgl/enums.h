@@ -54,6 +54,12 @@ inline constexpr Bitfield COLOR_BUFFER_BIT = 0x00004000;
 inline constexpr Enum CULL_FACE = 0x0B44;
 inline constexpr Enum DEPTH_TEST = 0x0B71;
 inline constexpr Enum PROGRAM_POINT_SIZE = 0x8642;
+inline constexpr Enum SCISSOR_TEST = 0x0C11;
+inline constexpr Enum STENCIL_TEST = 0x0B90;
+inline constexpr Enum BLEND = 0x0BE2;
+inline constexpr Enum POLYGON_OFFSET_POINT = 0x2A01;
+inline constexpr Enum POLYGON_OFFSET_LINE = 0x2A02;
+inline constexpr Enum POLYGON_OFFSET_FILL = 0x8037;
 
 // Faces, winding and polygon modes.
 inline constexpr Enum FRONT = 0x0404;
@@ -65,7 +71,7 @@ inline constexpr Enum POINT = 0x1B00;
 inline constexpr Enum LINE = 0x1B01;
 inline constexpr Enum FILL = 0x1B02;
 
-// Comparison functions (depth test).
+// Comparison functions (depth and stencil tests).
 inline constexpr Enum NEVER = 0x0200;
 inline constexpr Enum LESS = 0x0201;
 inline constexpr Enum EQUAL = 0x0202;
@@ -74,5 +80,38 @@ inline constexpr Enum GREATER = 0x0204;
 inline constexpr Enum NOTEQUAL = 0x0205;
 inline constexpr Enum GEQUAL = 0x0206;
 inline constexpr Enum ALWAYS = 0x0207;
+
+// Stencil operations (ZERO is the blend factor ZERO, 0, as in OpenGL).
+inline constexpr Enum KEEP = 0x1E00;
+inline constexpr Enum REPLACE = 0x1E01;
+inline constexpr Enum INCR = 0x1E02;
+inline constexpr Enum DECR = 0x1E03;
+inline constexpr Enum INVERT = 0x150A;
+inline constexpr Enum INCR_WRAP = 0x8507;
+inline constexpr Enum DECR_WRAP = 0x8508;
+
+// Blend factors.
+inline constexpr Enum ZERO = 0;
+inline constexpr Enum ONE = 1;
+inline constexpr Enum SRC_COLOR = 0x0300;
+inline constexpr Enum ONE_MINUS_SRC_COLOR = 0x0301;
+inline constexpr Enum SRC_ALPHA = 0x0302;
+inline constexpr Enum ONE_MINUS_SRC_ALPHA = 0x0303;
+inline constexpr Enum DST_ALPHA = 0x0304;
+inline constexpr Enum ONE_MINUS_DST_ALPHA = 0x0305;
+inline constexpr Enum DST_COLOR = 0x0306;
+inline constexpr Enum ONE_MINUS_DST_COLOR = 0x0307;
+inline constexpr Enum SRC_ALPHA_SATURATE = 0x0308;
+inline constexpr Enum CONSTANT_COLOR = 0x8001;
+inline constexpr Enum ONE_MINUS_CONSTANT_COLOR = 0x8002;
+inline constexpr Enum CONSTANT_ALPHA = 0x8003;
+inline constexpr Enum ONE_MINUS_CONSTANT_ALPHA = 0x8004;
+
+// Blend equations.
+inline constexpr Enum FUNC_ADD = 0x8006;
+inline constexpr Enum MIN = 0x8007;
+inline constexpr Enum MAX = 0x8008;
+inline constexpr Enum FUNC_SUBTRACT = 0x800A;
+inline constexpr Enum FUNC_REVERSE_SUBTRACT = 0x800B;
 
 }  // namespace softgl
