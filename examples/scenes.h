@@ -20,4 +20,20 @@ softgl::Image Wireframe(int width, int height);
 /// clipped by the near plane and the side planes, and the checks show perspective-correct interpolation.
 softgl::Image Clipped(int width, int height);
 
+/// A torus and a cube outlined in orange: each object writes 1 to the stencil buffer, then a slightly larger copy is
+/// drawn flat where the stencil is not 1, leaving only the silhouette.
+softgl::Image StencilOutline(int width, int height);
+
+/// A cube above a mirror set into a checkered floor: the mirror marks the stencil buffer, the reflected cube is
+/// drawn only where the stencil says "mirror" (with the winding flipped), then the mirror is blended over it.
+softgl::Image Mirror(int width, int height);
+
+/// Translucent panels over an opaque scene, drawn back to front with SRC_ALPHA / ONE_MINUS_SRC_ALPHA and depth
+/// writes off (left), and the same panels in the wrong order (right), which shows why the order matters.
+softgl::Image Transparency(int width, int height);
+
+/// Round decals on two cube faces, coplanar with them: without polygon offset (left) they fight with the face;
+/// with PolygonOffset(-1, -1) (right) they sit cleanly on top.
+softgl::Image Decals(int width, int height);
+
 }  // namespace scenes

@@ -9,6 +9,6 @@ cmake --build build/release -j "$(nproc)"
 
 out="${1:-out}"
 mkdir -p "$out"
-for example in hello triangle cube wireframe clipped; do
+for example in hello triangle cube wireframe clipped stencil_outline mirror transparency decals; do
   "build/release/examples/$example" "$out"
 done

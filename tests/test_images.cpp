@@ -63,3 +63,11 @@ TEST_CASE("image: cube frames", "[image]") {
 TEST_CASE("image: wireframe", "[image]") { CompareWithGolden("wireframe", scenes::Wireframe(640, 480)); }
 
 TEST_CASE("image: clipped", "[image]") { CompareWithGolden("clipped", scenes::Clipped(640, 480)); }
+
+TEST_CASE("image: stencil outline", "[image]") { CompareWithGolden("stencil_outline", scenes::StencilOutline(640, 480)); }
+
+TEST_CASE("image: mirror", "[image]") { CompareWithGolden("mirror", scenes::Mirror(640, 480)); }
+
+TEST_CASE("image: transparency", "[image]") { CompareWithGolden("transparency", scenes::Transparency(640, 480)); }
+
+TEST_CASE("image: decals", "[image]") { CompareWithGolden("decals", scenes::Decals(640, 480)); }

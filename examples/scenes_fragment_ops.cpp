@@ -1,0 +1,299 @@
+// scenes_fragment_ops.cpp — example scenes for the per-fragment operations: stencil, blending, polygon offset.
+#include <cmath>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "scene_kit.h"
+#include "scenes.h"
+
+namespace scenes {
+
+using namespace kit;
+
+namespace {
+
+const glm::mat4 kIdentity(1.0f);
+
+// A silhouette shell: each vertex pushed out along its normal, drawn in one flat colour.
+struct OutlineShader : softgl::Shader<OutlineShader, FlatVaryings> {
+  glm::mat4 mvp{1.0f};
+  float thickness = 0.05f;
+  glm::vec4 color{1.0f};
+  void Vertex(const softgl::VertexIn& in, softgl::VertexOut<FlatVaryings>& out) const {
+    out.position = mvp * glm::vec4(glm::vec3(in.attrib[0]) + thickness * glm::vec3(in.attrib[1]), 1.0f);
+  }
+  bool Fragment(const softgl::FragmentIn<FlatVaryings>&, softgl::FragmentOut& out) const {
+    out.color[0] = color;
+    return true;
+  }
+};
+
+glm::mat4 Place(glm::vec3 at, float yaw, float scale) {
+  return glm::scale(glm::rotate(glm::translate(kIdentity, at), yaw, glm::vec3(0, 1, 0)), glm::vec3(scale));
+}
+
+// A checkered floor quad of half size `half` at y = 0, through FloorShader.
+struct Floor {
+  std::uint32_t vao;
+  explicit Floor(softgl::Context& gl, float half) {
+    const float v[] = {-half, 0, half, half, 0, half, half, 0, -half, -half, 0, -half};
+    vao = gl.GenVertexArray();
+    const std::uint32_t vbo = gl.GenBuffer();
+    gl.BindVertexArray(vao);
+    gl.BindBuffer(softgl::ARRAY_BUFFER, vbo);
+    gl.BufferData(softgl::ARRAY_BUFFER, sizeof v, v);
+    gl.VertexAttributePointer(0, 3, softgl::FLOAT, false, 0, 0);
+    gl.EnableVertexAttribArray(0);
+  }
+  void Draw(softgl::Context& gl) const {
+    gl.BindVertexArray(vao);
+    gl.DrawArrays(softgl::TRIANGLE_FAN, 0, 4);
+  }
+};
+
+}  // namespace
+
+softgl::Image StencilOutline(int width, int height) {
+  softgl::Context gl(width, height);
+  const glm::mat4 vp = Projection(width, height, 45.0f, 0.1f, 20.0f) *
+                       glm::lookAt(glm::vec3(0.0f, 1.6f, 4.2f), glm::vec3(0.0f, 0.1f, 0.0f), glm::vec3(0, 1, 0));
+  const Mesh torus = MakeTorus(32, 16, 0.6f, 0.25f), cube = MakeCube();
+  const std::uint32_t torus_vao = UploadLitMesh(gl, torus), cube_vao = UploadLitMesh(gl, cube);
+  Floor floor(gl, 6.0f);
+
+  gl.Enable(softgl::DEPTH_TEST);
+  gl.ClearColor(0.12f, 0.13f, 0.17f, 1.0f);
+  gl.Clear(softgl::COLOR_BUFFER_BIT | softgl::DEPTH_BUFFER_BIT | softgl::STENCIL_BUFFER_BIT);
+  FloorShader floor_shader;
+  floor_shader.mvp = vp;
+  gl.UseProgram(floor_shader);
+  floor.Draw(gl);
+
+  // Pass 1: the objects, each writing 1 into the stencil buffer wherever it is drawn.
+  gl.Enable(softgl::STENCIL_TEST);
+  gl.StencilFunc(softgl::ALWAYS, 1, 0xFF);
+  gl.StencilOp(softgl::KEEP, softgl::KEEP, softgl::REPLACE);
+  const glm::mat4 torus_model = Place({-0.9f, 0.85f, 0.0f}, 0.4f, 1.0f) *
+                                glm::rotate(kIdentity, 1.1f, glm::vec3(1, 0, 0.3f));
+  const glm::mat4 cube_model = Place({1.0f, 0.5f, -0.2f}, 0.6f, 1.0f);
+  LitShader lit;
+  gl.UseProgram(lit);
+  for (auto [vao, mesh, model] : {std::tuple{torus_vao, &torus, torus_model}, std::tuple{cube_vao, &cube, cube_model}}) {
+    lit.model = model;
+    lit.mvp = vp * model;
+    gl.BindVertexArray(vao);
+    DrawMesh(gl, *mesh);
+  }
+
+  // Pass 2: shells pushed out along the normals, drawn where the stencil is not 1, on top of everything: only
+  // the rim around each silhouette shows (inside the torus's hole too).
+  gl.StencilFunc(softgl::NOTEQUAL, 1, 0xFF);
+  gl.StencilMask(0x00);
+  gl.Disable(softgl::DEPTH_TEST);
+  OutlineShader outline;
+  outline.color = glm::vec4(1.0f, 0.55f, 0.1f, 1.0f);
+  gl.UseProgram(outline);
+  gl.BindVertexArray(torus_vao);
+  outline.mvp = vp * torus_model;
+  DrawMesh(gl, torus);
+  gl.BindVertexArray(cube_vao);
+  outline.thickness = 0.0f;  // a cube's normals are per face: extruding would split its corners; scale instead
+  outline.mvp = vp * cube_model * glm::scale(kIdentity, glm::vec3(1.1f));
+  DrawMesh(gl, cube);
+  return gl.ReadPixels();
+}
+
+softgl::Image Mirror(int width, int height) {
+  softgl::Context gl(width, height);
+  const glm::mat4 vp = Projection(width, height, 50.0f, 0.1f, 30.0f) *
+                       glm::lookAt(glm::vec3(0.0f, 2.2f, 4.5f), glm::vec3(0.0f, 0.2f, 0.0f), glm::vec3(0, 1, 0));
+  const Mesh cube = MakeCube(), torus = MakeTorus(32, 16, 0.45f, 0.16f);
+  const std::uint8_t mirror_color[4] = {255, 255, 255, 255};
+  const Mesh mirror = MakeQuad(1.6f, mirror_color);
+  const std::uint32_t cube_vao = UploadLitMesh(gl, cube), torus_vao = UploadLitMesh(gl, torus);
+  const std::uint32_t mirror_vao = UploadLitMesh(gl, mirror);
+  Floor floor(gl, 8.0f);
+  const glm::mat4 cube_model = Place({-0.3f, 0.9f, 0.0f}, 0.7f, 0.9f);
+  const glm::mat4 torus_model = Place({0.9f, 0.5f, 0.6f}, 0.0f, 1.0f) * glm::rotate(kIdentity, 1.2f, glm::vec3(1, 0, 0));
+  const glm::mat4 reflect = glm::scale(kIdentity, glm::vec3(1.0f, -1.0f, 1.0f));  // about the plane y = 0
+
+  gl.ClearColor(0.5f, 0.62f, 0.78f, 1.0f);
+  gl.Clear(softgl::COLOR_BUFFER_BIT | softgl::DEPTH_BUFFER_BIT | softgl::STENCIL_BUFFER_BIT);
+  gl.Enable(softgl::DEPTH_TEST);
+  gl.Enable(softgl::CULL_FACE);
+  gl.Enable(softgl::STENCIL_TEST);
+
+  // 1. The mirror into the stencil buffer only: 1 where it is, no colour, no depth.
+  FlatShader flat;
+  flat.mvp = vp;
+  gl.UseProgram(flat);
+  gl.StencilFunc(softgl::ALWAYS, 1, 0xFF);
+  gl.StencilOp(softgl::KEEP, softgl::KEEP, softgl::REPLACE);
+  gl.ColorMask(false, false, false, false);
+  gl.DepthMask(false);
+  gl.BindVertexArray(mirror_vao);
+  DrawMesh(gl, mirror);
+  gl.ColorMask(true, true, true, true);
+  gl.DepthMask(true);
+
+  // 2. The reflected objects where the stencil is 1. A reflection reverses the winding, so front faces are CW.
+  gl.StencilFunc(softgl::EQUAL, 1, 0xFF);
+  gl.StencilOp(softgl::KEEP, softgl::KEEP, softgl::KEEP);
+  gl.FrontFace(softgl::CW);
+  LitShader lit;
+  auto draw_objects = [&](const glm::mat4& world) {
+    gl.UseProgram(lit);
+    for (auto [vao, mesh, model] : {std::tuple{cube_vao, &cube, cube_model}, std::tuple{torus_vao, &torus, torus_model}}) {
+      lit.model = world * model;
+      lit.mvp = vp * lit.model;
+      gl.BindVertexArray(vao);
+      DrawMesh(gl, *mesh);
+    }
+  };
+  draw_objects(reflect);
+  gl.FrontFace(softgl::CCW);
+
+  // 3. The floor around the mirror (where the stencil is not 1).
+  gl.StencilFunc(softgl::NOTEQUAL, 1, 0xFF);
+  FloorShader floor_shader;
+  floor_shader.mvp = vp;
+  gl.UseProgram(floor_shader);
+  floor.Draw(gl);
+
+  // 4. The mirror's glass: a tinted translucent layer blended over the reflection.
+  gl.Disable(softgl::STENCIL_TEST);
+  gl.Enable(softgl::BLEND);
+  gl.BlendFunc(softgl::SRC_ALPHA, softgl::ONE_MINUS_SRC_ALPHA);
+  flat.color = glm::vec4(0.55f, 0.7f, 0.85f, 0.35f);
+  gl.UseProgram(flat);
+  gl.BindVertexArray(mirror_vao);
+  DrawMesh(gl, mirror);
+  gl.Disable(softgl::BLEND);
+
+  // 5. The objects themselves.
+  draw_objects(kIdentity);
+  return gl.ReadPixels();
+}
+
+softgl::Image Transparency(int width, int height) {
+  softgl::Context gl(width, height);
+  const glm::mat4 vp = Projection(width, height, 45.0f, 0.1f, 30.0f) *
+                       glm::lookAt(glm::vec3(0.0f, 1.2f, 6.0f), glm::vec3(0.0f, 0.5f, 0.0f), glm::vec3(0, 1, 0));
+  const Mesh cube = MakeCube();
+  const std::uint8_t white[4] = {255, 255, 255, 255};
+  const Mesh panel = MakeQuad(0.6f, white);
+  const std::uint32_t cube_vao = UploadLitMesh(gl, cube), panel_vao = UploadLitMesh(gl, panel);
+  Floor floor(gl, 10.0f);
+
+  gl.ClearColor(0.9f, 0.9f, 0.92f, 1.0f);
+  gl.Clear(softgl::COLOR_BUFFER_BIT | softgl::DEPTH_BUFFER_BIT);
+  gl.Enable(softgl::DEPTH_TEST);
+  FloorShader floor_shader;
+  floor_shader.mvp = vp;
+  gl.UseProgram(floor_shader);
+  floor.Draw(gl);
+  LitShader lit;
+  gl.UseProgram(lit);
+  gl.BindVertexArray(cube_vao);
+  for (float x : {-1.6f, 1.6f}) {
+    lit.model = Place({x, 0.5f, -1.5f}, 0.5f, 1.0f);
+    lit.mvp = vp * lit.model;
+    DrawMesh(gl, cube);
+  }
+
+  // Three upright panels per side, red nearest; depth writes off while blending.
+  const glm::vec4 colors[3] = {{0.1f, 0.3f, 1.0f, 0.5f}, {0.1f, 0.85f, 0.2f, 0.5f}, {1.0f, 0.15f, 0.1f, 0.5f}};
+  const float depths[3] = {-0.6f, 0.2f, 1.0f};  // far to near
+  FlatShader flat;
+  gl.UseProgram(flat);
+  gl.BindVertexArray(panel_vao);
+  gl.Enable(softgl::BLEND);
+  gl.BlendFunc(softgl::SRC_ALPHA, softgl::ONE_MINUS_SRC_ALPHA);
+  gl.DepthMask(false);
+  auto draw_panel = [&](float x, int i) {
+    flat.color = colors[i];
+    const glm::mat4 model = glm::translate(kIdentity, glm::vec3(x + 0.3f * float(i), 0.8f + 0.15f * float(i), depths[i])) *
+                            glm::rotate(kIdentity, glm::radians(90.0f), glm::vec3(1, 0, 0));
+    flat.mvp = vp * model;
+    DrawMesh(gl, panel);
+  };
+  for (int i = 0; i < 3; ++i) draw_panel(-1.9f, i);  // back to front: correct
+  for (int i = 2; i >= 0; --i) draw_panel(1.3f, i);  // front to back: wrong
+  gl.DepthMask(true);
+  gl.Disable(softgl::BLEND);
+  return gl.ReadPixels();
+}
+
+namespace {
+
+struct DecalVaryings {
+  glm::vec2 uv;
+};
+
+// A round badge: rings in uv in [-1, 1]^2, discarded outside the unit circle.
+struct DecalShader : softgl::Shader<DecalShader, DecalVaryings> {
+  glm::mat4 mvp{1.0f};
+  void Vertex(const softgl::VertexIn& in, softgl::VertexOut<DecalVaryings>& out) const {
+    out.position = mvp * glm::vec4(glm::vec3(in.attrib[0]), 1.0f);
+    out.varyings.uv = glm::vec2(in.attrib[1]);
+  }
+  bool Fragment(const softgl::FragmentIn<DecalVaryings>& in, softgl::FragmentOut& out) const {
+    const float r = glm::length(in.varyings.uv);
+    if (r > 1.0f) return false;
+    const bool ring = int(std::floor(r * 4.0f)) % 2 == 0;
+    out.color[0] = ring ? glm::vec4(0.95f, 0.95f, 0.9f, 1.0f) : glm::vec4(0.85f, 0.1f, 0.15f, 1.0f);
+    return true;
+  }
+};
+
+}  // namespace
+
+softgl::Image Decals(int width, int height) {
+  softgl::Context gl(width, height);
+  const glm::mat4 vp = Projection(width, height, 40.0f, 0.5f, 40.0f) *
+                       glm::lookAt(glm::vec3(0.0f, 2.0f, 6.5f), glm::vec3(0.0f, 0.3f, 0.0f), glm::vec3(0, 1, 0));
+  const Mesh cube = MakeCube();
+  const std::uint32_t cube_vao = UploadLitMesh(gl, cube);
+  // A decal quad on the cube's +z face (z = 0.5), smaller than the face, with its own corners: coplanar with the
+  // face but not the same triangles, so without an offset its depth rounds differently from the face's.
+  const float decal[] = {-0.37f, -0.31f, 0.5f, -1, -1, 0.33f, -0.31f, 0.5f, 1, -1,
+                         0.33f,  0.39f,  0.5f, 1,  1,  -0.37f, 0.39f, 0.5f, -1, 1};
+  const std::uint32_t decal_vao = gl.GenVertexArray(), decal_vbo = gl.GenBuffer();
+  gl.BindVertexArray(decal_vao);
+  gl.BindBuffer(softgl::ARRAY_BUFFER, decal_vbo);
+  gl.BufferData(softgl::ARRAY_BUFFER, sizeof decal, decal);
+  gl.VertexAttributePointer(0, 3, softgl::FLOAT, false, 5 * sizeof(float), 0);
+  gl.VertexAttributePointer(1, 2, softgl::FLOAT, false, 5 * sizeof(float), 3 * sizeof(float));
+  gl.EnableVertexAttribArray(0);
+  gl.EnableVertexAttribArray(1);
+
+  gl.ClearColor(0.16f, 0.17f, 0.2f, 1.0f);
+  gl.Clear(softgl::COLOR_BUFFER_BIT | softgl::DEPTH_BUFFER_BIT);
+  gl.Enable(softgl::DEPTH_TEST);
+  gl.Enable(softgl::CULL_FACE);
+  LitShader lit;
+  DecalShader decal_shader;
+  for (int side = 0; side < 2; ++side) {
+    const glm::mat4 model = Place({side == 0 ? -1.3f : 1.3f, 0.3f, 0.0f}, side == 0 ? 0.45f : -0.45f, 1.6f) *
+                            glm::rotate(kIdentity, 0.35f, glm::vec3(1, 0, 0));
+    lit.model = model;
+    lit.mvp = vp * model;
+    gl.UseProgram(lit);
+    gl.BindVertexArray(cube_vao);
+    DrawMesh(gl, cube);
+    // The decal, drawn with the face's own depth function (LESS): without offset it loses wherever its depth
+    // rounds to the same or a larger value than the face's.
+    if (side == 1) {
+      gl.Enable(softgl::POLYGON_OFFSET_FILL);
+      gl.PolygonOffset(-1.0f, -1.0f);
+    }
+    decal_shader.mvp = vp * model;
+    gl.UseProgram(decal_shader);
+    gl.BindVertexArray(decal_vao);
+    gl.DrawArrays(softgl::TRIANGLE_FAN, 0, 4);
+    gl.Disable(softgl::POLYGON_OFFSET_FILL);
+  }
+  return gl.ReadPixels();
+}
+
+}  // namespace scenes

@@ -1,0 +1,7 @@
+// transparency — writes transparency.png (see scenes.h for what it shows).
+#include "example_main.h"
+#include "scenes.h"
+
+int main(int argc, char** argv) {
+  return example::Save(example::OutputDir(argc, argv), "transparency.png", scenes::Transparency(640, 480));
+}
