@@ -469,3 +469,29 @@ TEST_CASE("per-fragment state rejects bad enums and changes nothing", "[fragment
   CHECK((px[0] == 255 && px[2] == 0 && px[3] == 128));
   CHECK(gl.GetError() == NO_ERROR);
 }
+
+TEST_CASE("a fragment shader may write depth (gl_FragDepth)", "[fragment_ops]") {
+  struct DepthWriter : softgl::Shader<DepthWriter, testing::NoVaryings> {
+    void Vertex(const VertexIn& in, VertexOut<testing::NoVaryings>& out) const { out.position = in.attrib[0]; }
+    bool Fragment(const FragmentIn<testing::NoVaryings>& in, FragmentOut& out) const {
+      out.color[0] = glm::vec4(1);
+      out.depth = in.frag_coord.x < 2.0f ? 0.1f : 0.9f;  // left half near, right half far
+      return true;
+    }
+  };
+  Context gl(4, 1);
+  gl.Enable(DEPTH_TEST);
+  gl.ClearDepth(0.5);
+  gl.Clear(COLOR_BUFFER_BIT | DEPTH_BUFFER_BIT);
+  testing::MakeVertexArray(gl, {{-1, -1, 0, 1}, {1, -1, 0, 1}, {-1, 1, 0, 1}, {1, 1, 0, 1}});
+  DepthWriter shader;
+  gl.UseProgram(shader);
+  gl.DrawArrays(TRIANGLE_STRIP, 0, 4);
+  std::uint8_t px[4];
+  gl.ReadPixel(0, 0, px);
+  CHECK(px[0] == 255);
+  CHECK(gl.ReadDepth(0, 0) == 0.1f);
+  gl.ReadPixel(3, 0, px);
+  CHECK(px[0] == 0);
+  CHECK(gl.ReadDepth(3, 0) == 0.5f);
+}
