@@ -3,7 +3,7 @@
 # AddressSanitizer + UndefinedBehaviorSanitizer. Warnings are errors in both.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-scripts/deps.sh
+scripts/deps.sh libosmesa6-dev libgl1-mesa-dri assimp-testmodels
 
 jobs=$(nproc)
 

@@ -11,6 +11,7 @@ namespace softgl::detail {
 namespace {
 
 constexpr int kPlaneCount = 7;
+constexpr float kExactLimit = 1048576.0f;
 
 // Signed distance of p to plane i; inside is >= 0.
 float Distance(int plane, const glm::vec4& p, const ClipPlanes& planes) {
@@ -25,24 +26,31 @@ float Distance(int plane, const glm::vec4& p, const ClipPlanes& planes) {
   }
 }
 
-// The point at parameter t from `in` (inside) towards `out`, put exactly on `plane`. Always interpolating from the
-// inside vertex makes an edge shared by two triangles produce the same new vertex in both. Positions are
-// interpolated in double, and the coordinate the plane fixes is set exactly, so that vertices far outside the view
-// volume (1e30) still yield clipped vertices on the planes instead of rounding noise.
-void Lerp(const ClipVertex& in, const ClipVertex& out, float t, int nvar, int plane, const ClipPlanes& planes,
-          ClipVertex& dst) {
-  const double td = t;
-  for (int c = 0; c < 4; ++c) dst.pos[c] = float(double(in.pos[c]) + td * (double(out.pos[c]) - double(in.pos[c])));
-  switch (plane) {
-    case 0: dst.pos.x = -planes.guard_x * dst.pos.w; break;
-    case 1: dst.pos.x = planes.guard_x * dst.pos.w; break;
-    case 2: dst.pos.y = -planes.guard_y * dst.pos.w; break;
-    case 3: dst.pos.y = planes.guard_y * dst.pos.w; break;
-    case 4: dst.pos.z = -dst.pos.w; break;
-    case 5: dst.pos.z = dst.pos.w; break;
-    default: dst.pos.w = std::max(dst.pos.w, kMinW); break;
+// The vertex where edge (out, in) crosses `plane`, `out` being the vertex outside it, at t = d_out / (d_out - d_in)
+// from `out`: new = out + t * (in - out), in float, for the position and every varying. This is Mesa's
+// formulation (draw_pipe_clip.c), so that clipped vertices, and the pixels along the edges they make, match
+// llvmpipe's exactly; and since it depends only on which vertex is outside, an edge shared by two triangles
+// yields the same vertex in both.
+// Coordinates beyond kExactLimit (vertices at 1e30, say) would lose the result to cancellation in float: there the
+// position is recomputed in double and the clipped coordinate put exactly on the plane.
+void Intersect(const ClipVertex& out, const ClipVertex& in, float d_out, float d_in, int nvar, int plane,
+               const ClipPlanes& planes, ClipVertex& dst) {
+  const float t = d_out / (d_out - d_in);
+  dst.pos = out.pos + t * (in.pos - out.pos);
+  for (int i = 0; i < nvar; ++i) dst.var[i] = out.var[i] + t * (in.var[i] - out.var[i]);
+  float extent = 0.0f;
+  for (int c = 0; c < 4; ++c) extent = std::max({extent, std::fabs(out.pos[c]), std::fabs(in.pos[c])});
+  if (plane <= 3 && extent > kExactLimit) {
+    const double td = double(d_in) / (double(d_in) - double(d_out));  // from the inside vertex
+    for (int c = 0; c < 4; ++c)
+      dst.pos[c] = float(double(in.pos[c]) + td * (double(out.pos[c]) - double(in.pos[c])));
+    const float g = plane <= 1 ? planes.guard_x : planes.guard_y;
+    const float on_plane = (plane % 2 == 0 ? -g : g) * dst.pos.w;
+    if (plane <= 1) dst.pos.x = on_plane;
+    else dst.pos.y = on_plane;
+  } else if (plane == 6) {
+    dst.pos.w = std::max(dst.pos.w, kMinW);  // never divide by zero or a negative w
   }
-  for (int i = 0; i < nvar; ++i) dst.var[i] = in.var[i] + t * (out.var[i] - in.var[i]);
 }
 
 void Copy(const ClipVertex& src, int nvar, ClipVertex& dst) {
@@ -63,16 +71,19 @@ unsigned ClipCodes(const glm::vec4& p, const ClipPlanes& planes) {
 
 void ClipTriangle(const ClipVertex& a, const ClipVertex& b, const ClipVertex& c, int nvar,
                   const ClipPlanes& planes, ClipPolygon& out) {
-  const unsigned ca = ClipCodes(a.pos, planes), cb = ClipCodes(b.pos, planes), cc = ClipCodes(c.pos, planes);
   out.count = 0;
-  if ((ca | cb | cc) & kClipNonFinite) return;
-  if (ca & cb & cc) return;  // all three outside one plane
+  const unsigned ga = ClipCodes(a.pos, planes), gb = ClipCodes(b.pos, planes), gc = ClipCodes(c.pos, planes);
+  if ((ga | gb | gc) & kClipNonFinite) return;
+  if (ga & gb & gc) return;  // all three outside one plane
   Copy(a, nvar, out.v[0]);
   Copy(b, nvar, out.v[1]);
   Copy(c, nvar, out.v[2]);
   out.count = 3;
-  const unsigned crossing = ca | cb | cc;
-  if (crossing == 0) return;
+  if ((ga | gb | gc) == 0) return;  // inside the guard band: no clipping
+  // Clipping is needed: then against every plane of the view volume that a vertex is outside of, as llvmpipe
+  // does (its guard band decides whether to clip, not where).
+  const ClipPlanes volume;
+  const unsigned crossing = ClipCodes(a.pos, volume) | ClipCodes(b.pos, volume) | ClipCodes(c.pos, volume);
 
   ClipPolygon scratch;
   ClipPolygon* src = &out;
@@ -83,14 +94,14 @@ void ClipTriangle(const ClipVertex& a, const ClipVertex& b, const ClipVertex& c,
     for (int i = 0; i < src->count; ++i) {
       const ClipVertex& prev = src->v[(i + src->count - 1) % src->count];
       const ClipVertex& cur = src->v[i];
-      const float dp = Distance(plane, prev.pos, planes);
-      const float dc = Distance(plane, cur.pos, planes);
+      const float dp = Distance(plane, prev.pos, volume);
+      const float dc = Distance(plane, cur.pos, volume);
       if (dp >= 0.0f && dc >= 0.0f) {
         Copy(cur, nvar, dst->v[dst->count++]);
       } else if (dp >= 0.0f) {
-        Lerp(prev, cur, dp / (dp - dc), nvar, plane, planes, dst->v[dst->count++]);
+        Intersect(cur, prev, dc, dp, nvar, plane, volume, dst->v[dst->count++]);
       } else if (dc >= 0.0f) {
-        Lerp(cur, prev, dc / (dc - dp), nvar, plane, planes, dst->v[dst->count++]);
+        Intersect(prev, cur, dp, dc, nvar, plane, volume, dst->v[dst->count++]);
         Copy(cur, nvar, dst->v[dst->count++]);
       }
     }
@@ -108,27 +119,42 @@ void ClipTriangle(const ClipVertex& a, const ClipVertex& b, const ClipVertex& c,
 
 bool ClipLine(const ClipVertex& a, const ClipVertex& b, int nvar, const ClipPlanes& planes, ClipVertex& out_a,
               ClipVertex& out_b) {
-  const unsigned ca = ClipCodes(a.pos, planes), cb = ClipCodes(b.pos, planes);
-  if ((ca | cb) & kClipNonFinite) return false;
+  const unsigned ga = ClipCodes(a.pos, planes), gb = ClipCodes(b.pos, planes);
+  if ((ga | gb) & kClipNonFinite) return false;
+  if (ga & gb) return false;
+  if ((ga | gb) == 0) {  // inside the guard band: no clipping
+    Copy(a, nvar, out_a);
+    Copy(b, nvar, out_b);
+    return true;
+  }
+  const ClipPlanes volume;  // as for triangles: clip against the view volume itself
+  const unsigned ca = ClipCodes(a.pos, volume), cb = ClipCodes(b.pos, volume);
   if (ca & cb) return false;
-  float t0 = 0.0f, t1 = 1.0f;  // the visible part is [t0, t1] along a -> b
-  int plane0 = -1, plane1 = -1;  // the planes that set t0 and t1
+  // As Mesa does: the part cut from a's end is ta (from a towards b), from b's end tb (from b towards a), each the
+  // largest over the planes that end is outside of.
+  float ta = 0.0f, tb = 0.0f;
+  int plane_a = -1, plane_b = -1;
+  float da_at = 0.0f, db_at = 0.0f, da_other = 0.0f, db_other = 0.0f;
   for (int plane = 0; plane < kPlaneCount; ++plane) {
     if (!((ca | cb) & (1u << plane))) continue;
-    const float da = Distance(plane, a.pos, planes), db = Distance(plane, b.pos, planes);
-    const float t = da / (da - db);
-    if (da < 0.0f && t > t0) {
-      t0 = t;
-      plane0 = plane;
-    } else if (da >= 0.0f && t < t1) {
-      t1 = t;
-      plane1 = plane;
+    const float da = Distance(plane, a.pos, volume), db = Distance(plane, b.pos, volume);
+    if (da < 0.0f && da / (da - db) > ta) {
+      ta = da / (da - db);
+      plane_a = plane;
+      da_at = da;
+      da_other = db;
+    }
+    if (db < 0.0f && db / (db - da) > tb) {
+      tb = db / (db - da);
+      plane_b = plane;
+      db_at = db;
+      db_other = da;
     }
   }
-  if (t0 > t1) return false;
-  if (plane0 >= 0) Lerp(a, b, t0, nvar, plane0, planes, out_a);
+  if (ta + tb >= 1.0f) return false;
+  if (plane_a >= 0) Intersect(a, b, da_at, da_other, nvar, plane_a, volume, out_a);
   else Copy(a, nvar, out_a);
-  if (plane1 >= 0) Lerp(a, b, t1, nvar, plane1, planes, out_b);
+  if (plane_b >= 0) Intersect(b, a, db_at, db_other, nvar, plane_b, volume, out_b);
   else Copy(b, nvar, out_b);
   return true;
 }

@@ -181,26 +181,40 @@ void RasterizeLine(const WindowVertex& a, const WindowVertex& b, bool front_faci
     for (int i = 0; i < nvar; ++i) out[i] = (a.var[i] + t * (b.var[i] - a.var[i])) * w;
   };
 
-  // Major axis u, minor axis v. Fragments: one per centre u_c + 0.5 in [u_start, u_end) along the direction.
+  // The diamond-exit rule (OpenGL 4.6, section 14.5.1): pixel f is drawn when the segment leaves its diamond
+  // |x - xf| + |y - yf| < 1/2. Along the major axis u that is one fragment per pixel centre u_c in the half-open
+  // span [u_start, u_end) (in the direction of travel); besides, a start point strictly inside its pixel's diamond
+  // draws that pixel, and an end point strictly inside its diamond does not.
   const bool x_major = std::fabs(dx) >= std::fabs(dy);
   const float u0 = x_major ? ax : ay, du = x_major ? dx : dy;
   const float v0 = x_major ? ay : ax, dv = x_major ? dy : dx;
-  long first, last;  // inclusive range of major-axis pixel indices
+  auto inside_diamond = [](float x, float y) {
+    return std::fabs(x - std::floor(x) - 0.5f) + std::fabs(y - std::floor(y) - 0.5f) < 0.5f;
+  };
+  long first, last;  // inclusive range of major-axis pixel indices, in increasing order
   if (du > 0.0f) {
     first = long(std::ceil(u0 - 0.5f));
     last = long(std::ceil(u0 + du - 0.5f)) - 1;
+    if (inside_diamond(ax, ay)) first = std::min(first, long(std::floor(u0)));
+    if (inside_diamond(b.win.x, b.win.y)) last = std::min(last, long(std::floor(u0 + du)) - 1);
   } else {
     first = long(std::floor(u0 + du - 0.5f)) + 1;
     last = long(std::floor(u0 - 0.5f));
+    if (inside_diamond(ax, ay)) last = std::max(last, long(std::floor(u0)));
+    if (inside_diamond(b.win.x, b.win.y)) first = std::max(first, long(std::floor(u0 + du)) + 1);
   }
   // Keep the walk inside the target bounds.
   const long lo = x_major ? target.bounds.x0 : target.bounds.y0, hi = (x_major ? target.bounds.x1 : target.bounds.y1) - 1;
   first = std::max(first, lo);
   last = std::min(last, hi);
+  // Where the line passes exactly between two pixel centres of a column (row), the pixel on the side that a
+  // one-pixel-wide parallelogram around the line owns under the fill rule is taken: for x-major lines the upper
+  // one when the line rises, else the lower one; for y-major lines the left one.
+  const bool upper_on_tie = x_major && dv > 0.0f;
   for (long i = first; i <= last; ++i) {
     const float uc = float(i) + 0.5f;
     const float vc = v0 + (uc - u0) * dv / du;
-    const long j = long(std::floor(vc));
+    const long j = upper_on_tie ? long(std::floor(vc)) : long(std::ceil(vc)) - 1;
     const int px = int(x_major ? i : j), py = int(x_major ? j : i);
     if (px < target.bounds.x0 || px >= target.bounds.x1 || py < target.bounds.y0 || py >= target.bounds.y1) continue;
     const int qx = px & ~1, qy = py & ~1;

@@ -93,14 +93,17 @@ TEST_CASE("near, far and side planes at once, with w varying", "[clipper]") {
   CHECK(InsideVolume(out));
 }
 
-TEST_CASE("a guard band widens only the x and y planes", "[clipper]") {
+TEST_CASE("the guard band decides whether to clip; clipping then uses the view volume", "[clipper]") {
   ClipPlanes guard;
   guard.guard_x = guard.guard_y = 4.0f;
   ClipPolygon out;
   ClipTriangle(V(-3, -3, 0, 1), V(3, -3, 0, 1), V(0, 3, 0, 1), 1, guard, out);
   CHECK(out.count == 3);  // inside the guard band: untouched
   ClipTriangle(V(-3, -3, -2, 1), V(3, -3, 0, 1), V(0, 3, 0, 1), 1, guard, out);
-  CHECK(out.count == 4);  // near plane still clips
+  CHECK(out.count >= 4);  // the near plane forces clipping, and then x and y are clipped to the volume too
+  CHECK(InsideVolume(out));
+  ClipTriangle(V(-9, -9, 0, 1), V(3, -3, 0, 1), V(0, 3, 0, 1), 1, guard, out);
+  CHECK(InsideVolume(out));  // outside the guard band: clipped to the volume
 }
 
 TEST_CASE("non-finite positions discard the primitive", "[clipper]") {

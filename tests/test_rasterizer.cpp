@@ -220,3 +220,58 @@ TEST_CASE("points are squares of their size", "[rasterizer]") {
   two.Point({3.0f, 3.0f}, 2.0f);  // centred on a pixel corner: the 2 x 2 block around it
   CHECK(two.counter.At(2, 2) + two.counter.At(3, 2) + two.counter.At(2, 3) + two.counter.At(3, 3) == 4);
 }
+
+TEST_CASE("lines: the diamond-exit rule at end points off pixel centres", "[rasterizer]") {
+  // From (1.2, 1.3) to (9.7, 5.6): the end point lies inside pixel (9, 5)'s diamond, so that pixel is not drawn
+  // (the same pictures as Mesa's llvmpipe).
+  Raster fwd(12, 7);
+  fwd.Line({1.2f, 1.3f}, {9.7f, 5.6f});
+  CHECK(fwd.Picture() ==
+        "............\n"
+        "............\n"
+        ".......##...\n"
+        ".....##.....\n"
+        "...##.......\n"
+        ".##.........\n"
+        "............\n");
+  // Backwards, the start point is inside that diamond: the segment leaves it, so (9, 5) is drawn.
+  Raster back(12, 7);
+  back.Line({9.7f, 5.6f}, {1.2f, 1.3f});
+  CHECK(back.counter.At(9, 5) == 1);
+  CHECK(back.counter.At(1, 1) == 1);
+  // A start point inside its diamond but past the centre still draws its pixel.
+  Raster past(8, 3);
+  past.Line({1.6f, 1.5f}, {6.2f, 1.5f});
+  CHECK(past.Picture() ==
+        "........\n"
+        ".#####..\n"
+        "........\n");
+}
+
+TEST_CASE("lines: varyings follow OpenGL's projection parameter", "[rasterizer]") {
+  // A steep-ish x-major line with var[0] going 0 -> 1: at each fragment the value is the projection of the pixel
+  // centre onto the segment, t = (p - a).(b - a) / |b - a|^2 (OpenGL 4.6, equation 14.3), not x alone.
+  WindowVertex a = W(0.5f, 0.5f), b = W(20.5f, 12.5f);
+  a.var[0] = 0.0f;
+  b.var[0] = 1.0f;
+  struct Sink {
+    std::vector<std::pair<glm::vec2, float>> values;
+    static void Flush(void* user, QuadBuffer& q) {
+      for (int i = 0; i < q.count * 4; ++i)
+        if (q.live[i]) static_cast<Sink*>(user)->values.push_back({glm::vec2(q.frag_coord[i]), q.varyings[i * q.nvar]});
+    }
+  } collected;
+  QuadBuffer quads;
+  RasterTarget target;
+  target.bounds = Rect{0, 0, 32, 32};
+  target.nvar = 1;
+  const QuadSink sink{&Sink::Flush, &collected};
+  RasterizeLine(a, b, true, target, quads, sink);
+  sink.Flush(quads);
+  REQUIRE(collected.values.size() == 20);
+  for (const auto& [p, value] : collected.values) {
+    const glm::vec2 d(20.0f, 12.0f);
+    const float t = glm::dot(p - glm::vec2(0.5f, 0.5f), d) / glm::dot(d, d);
+    CHECK(value == Approx(t).margin(1e-5));
+  }
+}

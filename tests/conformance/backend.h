@@ -1,0 +1,96 @@
+// backend.h — one rendering API for the conformance scenes, implemented twice: by softgl (C++ shaders) and by
+// OpenGL 3.3 core through Mesa's OSMesa (GLSL shaders). Every call maps one to one onto the API of the same name;
+// the enums are OpenGL's numbers in both.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+#include <softgl/enums.h>
+
+namespace conformance {
+
+using softgl::Enum;
+
+/// The vertex layout of every draw: attribute 0 clip-space position, 1 colour, 2 extra (normal or uv).
+struct Vertex {
+  glm::vec4 pos;
+  glm::vec4 color{1.0f};
+  glm::vec4 extra{0.0f};
+};
+
+/// The shader pair a draw uses; each is written once in C++ (backend_softgl.cpp) and once in GLSL
+/// (backend_gl.cpp).
+enum class Program {
+  kColor,  // colour = interpolated attribute 1
+  kUv,     // colour = (extra.x, extra.y, 0.5, 1), extra interpolated: shows perspective-correct interpolation
+  kLit,    // per-fragment Blinn-Phong: normal = extra.xyz (world), colour = tint * (ambient + diffuse) + specular
+};
+
+struct Uniforms {
+  glm::vec4 tint{1.0f};
+  glm::vec3 light_dir{0.0f, 0.0f, 1.0f};
+  glm::vec3 half_vector{0.0f, 0.0f, 1.0f};
+};
+
+/// What a scene leaves in the framebuffer, rows bottom first (OpenGL's order).
+struct Frame {
+  int width = 0, height = 0;
+  std::vector<std::uint8_t> rgba;
+  std::vector<float> depth;
+  std::vector<std::uint8_t> stencil;
+};
+
+class Backend {
+ public:
+  virtual ~Backend() = default;
+  virtual std::string Name() const = 0;
+  virtual void Enable(Enum cap) = 0;
+  virtual void Disable(Enum cap) = 0;
+  virtual void Viewport(int x, int y, int w, int h) = 0;
+  virtual void DepthRange(double n, double f) = 0;
+  virtual void CullFace(Enum mode) = 0;
+  virtual void FrontFace(Enum mode) = 0;
+  virtual void PolygonMode(Enum mode) = 0;
+  virtual void PointSize(float size) = 0;
+  virtual void DepthFunc(Enum func) = 0;
+  virtual void DepthMask(bool flag) = 0;
+  virtual void PolygonOffset(float factor, float units) = 0;
+  virtual void Scissor(int x, int y, int w, int h) = 0;
+  virtual void StencilFuncSeparate(Enum face, Enum func, int ref, std::uint32_t mask) = 0;
+  virtual void StencilOpSeparate(Enum face, Enum sfail, Enum dpfail, Enum dppass) = 0;
+  virtual void StencilMaskSeparate(Enum face, std::uint32_t mask) = 0;
+  virtual void BlendFuncSeparate(Enum src_rgb, Enum dst_rgb, Enum src_a, Enum dst_a) = 0;
+  virtual void BlendEquationSeparate(Enum rgb, Enum alpha) = 0;
+  virtual void BlendColor(float r, float g, float b, float a) = 0;
+  virtual void ColorMask(bool r, bool g, bool b, bool a) = 0;
+  virtual void ClearColor(float r, float g, float b, float a) = 0;
+  virtual void ClearDepth(double d) = 0;
+  virtual void ClearStencil(int s) = 0;
+  virtual void Clear(std::uint32_t mask) = 0;
+  /// Draws `vertices` (through `indices` when not empty) with `mode` and `program`.
+  virtual void Draw(Enum mode, const std::vector<Vertex>& vertices, const std::vector<std::uint32_t>& indices,
+                    Program program, const Uniforms& uniforms) = 0;
+  virtual Frame Read() = 0;
+
+  // Conveniences over the calls above.
+  void StencilFunc(Enum func, int ref, std::uint32_t mask) { StencilFuncSeparate(softgl::FRONT_AND_BACK, func, ref, mask); }
+  void StencilOp(Enum a, Enum b, Enum c) { StencilOpSeparate(softgl::FRONT_AND_BACK, a, b, c); }
+  void BlendFunc(Enum s, Enum d) { BlendFuncSeparate(s, d, s, d); }
+  void Draw(Enum mode, const std::vector<Vertex>& vertices, Program program = Program::kColor,
+            const Uniforms& uniforms = {}) {
+    Draw(mode, vertices, {}, program, uniforms);
+  }
+};
+
+/// softgl, rendering into a width x height Context.
+std::unique_ptr<Backend> MakeSoftglBackend(int width, int height);
+
+/// Mesa through OSMesa (driver chosen by GALLIUM_DRIVER), OpenGL 3.3 core, RGBA8 + depth 24 + stencil 8.
+/// Returns null, with a reason in `error`, when no such context can be made.
+std::unique_ptr<Backend> MakeGlBackend(int width, int height, std::string* error);
+
+}  // namespace conformance

@@ -1,0 +1,151 @@
+// compare.cpp — runs every scene through softgl and Mesa and compares the framebuffers.
+//
+// As a Catch2 test (the default), each scene is a test case that must meet its Check. With --report, it prints
+// one markdown table row per scene instead (used for docs/conformance.md).
+#define CATCH_CONFIG_RUNNER
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <string>
+
+#include <softgl/image.h>
+
+#include "scenes.h"
+
+namespace conformance {
+namespace {
+
+struct Verdict {
+  int differing = 0;    // pixels whose colour differs at all
+  int max_diff = 0;     // largest channel difference
+  int over = 0;         // pixels beyond the scene's colour tolerance
+  int depth_over = 0;   // pixels whose depth differs by more than the 24-bit resolution
+  int stencil_diff = 0;
+  int coverage_diff = 0;  // pixels drawn by one and not the other (kCoverage scenes)
+  bool Pass() const { return over == 0 && depth_over == 0 && stencil_diff == 0 && coverage_diff == 0; }
+};
+
+softgl::Image ToImage(const Frame& f, bool diff_of = false, const Frame* other = nullptr) {
+  softgl::Image img;
+  img.width = f.width;
+  img.height = f.height;
+  img.rgba.resize(f.rgba.size());
+  for (int y = 0; y < f.height; ++y)
+    for (int x = 0; x < f.width; ++x) {
+      const std::size_t src = (std::size_t(y) * f.width + x) * 4, dst = (std::size_t(f.height - 1 - y) * f.width + x) * 4;
+      for (int c = 0; c < 4; ++c) {
+        int v = f.rgba[src + c];
+        if (diff_of) v = c == 3 ? 255 : std::min(255, 64 * std::abs(v - int(other->rgba[src + c])));
+        img.rgba[dst + c] = std::uint8_t(v);
+      }
+    }
+  return img;
+}
+
+Verdict Compare(const SceneInfo& s, const Frame& a, const Frame& b) {
+  Verdict v;
+  const int tolerance = Tolerance(s.check);
+  for (std::size_t i = 0; i < a.depth.size(); ++i) {
+    int d = 0;
+    for (int c = 0; c < 4; ++c) d = std::max(d, std::abs(int(a.rgba[i * 4 + c]) - int(b.rgba[i * 4 + c])));
+    v.differing += d > 0;
+    v.over += d > tolerance;
+    v.max_diff = std::max(v.max_diff, d);
+    if (s.check == Check::kExactWithDepth && std::fabs(a.depth[i] - b.depth[i]) > std::ldexp(1.0f, -22)) ++v.depth_over;
+    if (s.check == Check::kExactWithStencil && a.stencil[i] != b.stencil[i]) ++v.stencil_diff;
+    if (s.check == Check::kCoverage) {
+      const bool drawn_a = a.rgba[i * 4] | a.rgba[i * 4 + 1] | a.rgba[i * 4 + 2];
+      const bool drawn_b = b.rgba[i * 4] | b.rgba[i * 4 + 1] | b.rgba[i * 4 + 2];
+      v.coverage_diff += drawn_a != drawn_b;
+    }
+  }
+  return v;
+}
+
+const char* CheckName(Check c) {
+  switch (c) {
+    case Check::kExact: return "identical";
+    case Check::kExactWithDepth: return "identical, depth";
+    case Check::kExactWithStencil: return "identical, stencil";
+    case Check::kCoverage: return "coverage";
+    default: return "+-1";
+  }
+}
+
+bool RunScene(const SceneInfo& s, Frame& ours, Frame& mesa, std::string& renderer, std::string& error) {
+  auto gl = MakeGlBackend(s.width, s.height, &error);
+  if (!gl) return false;
+  renderer = gl->Name();
+  s.run(*gl);
+  mesa = gl->Read();
+  auto sg = MakeSoftglBackend(s.width, s.height);
+  s.run(*sg);
+  ours = sg->Read();
+  return true;
+}
+
+}  // namespace
+}  // namespace conformance
+
+using namespace conformance;
+
+TEST_CASE("conformance scenes match Mesa", "[conformance]") {
+  for (const SceneInfo& s : Scenes()) {
+    SECTION(s.name) {
+      Frame ours, mesa;
+      std::string renderer, error;
+      REQUIRE(RunScene(s, ours, mesa, renderer, error));
+      const Verdict v = Compare(s, ours, mesa);
+      INFO(s.name << " against " << renderer << " (" << CheckName(s.check) << "): " << v.differing
+                  << " differing pixels, largest channel difference " << v.max_diff << ", over tolerance " << v.over
+                  << ", depth beyond resolution " << v.depth_over << ", stencil differing " << v.stencil_diff
+                  << ", coverage differing " << v.coverage_diff);
+      if (!v.Pass()) {
+        const std::string dir = SOFTGL_TEST_OUTPUT_DIR "/conformance";
+        std::filesystem::create_directories(dir);
+        softgl::WritePng(dir + "/" + s.name + "_softgl.png", ToImage(ours));
+        softgl::WritePng(dir + "/" + s.name + "_mesa.png", ToImage(mesa));
+        softgl::WritePng(dir + "/" + s.name + "_diff.png", ToImage(ours, true, &mesa));
+      }
+      CHECK(v.Pass());
+    }
+  }
+}
+
+int main(int argc, char** argv) {
+  if (argc > 1 && std::string(argv[1]) == "--report") {
+    for (const SceneInfo& s : Scenes()) {
+      Frame ours, mesa;
+      std::string renderer, error;
+      if (!RunScene(s, ours, mesa, renderer, error)) {
+        std::printf("error: %s\n", error.c_str());
+        return 1;
+      }
+      const Verdict v = Compare(s, ours, mesa);
+      if (std::getenv("SOFTGL_CONFORMANCE_VERBOSE")) {
+        int shown = 0;
+        const int min_diff = std::atoi(std::getenv("SOFTGL_CONFORMANCE_VERBOSE"));
+        for (std::size_t i = 0; i < ours.depth.size() && shown < 40; ++i) {
+          int d = 0;
+          for (int c = 0; c < 4; ++c) d = std::max(d, std::abs(int(ours.rgba[i * 4 + c]) - int(mesa.rgba[i * 4 + c])));
+          if (d >= std::max(1, min_diff)) {
+            ++shown;
+            std::printf("  %s (%d, %d): softgl %d %d %d %d, mesa %d %d %d %d\n", s.name, int(i % ours.width),
+                        int(i / ours.width), ours.rgba[i * 4], ours.rgba[i * 4 + 1], ours.rgba[i * 4 + 2],
+                        ours.rgba[i * 4 + 3], mesa.rgba[i * 4], mesa.rgba[i * 4 + 1], mesa.rgba[i * 4 + 2],
+                        mesa.rgba[i * 4 + 3]);
+          }
+        }
+      }
+      std::printf("| %s | %s | %s | %d | %d | %d | %d | %d | %s |\n", s.name, renderer.c_str(), CheckName(s.check),
+                  v.differing, v.max_diff, v.coverage_diff, v.depth_over, v.stencil_diff, v.Pass() ? "pass" : "FAIL");
+    }
+    return 0;
+  }
+  return Catch::Session().run(argc, argv);
+}

@@ -1,0 +1,486 @@
+// scenes.cpp — the conformance scenes. Each is one function over a Backend, so the same vertex data, matrices and
+// state reach softgl and Mesa alike. Vertex transforms are done here, once, on the CPU: both pipelines then
+// rasterize bit-identical clip-space positions, and what is compared is clipping, rasterization, interpolation and
+// the per-fragment operations, not two compilers' rounding of a matrix product.
+#include "scenes.h"
+
+#include <cmath>
+#include <random>
+
+#include <assimp/cimport.h>
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+#include <glm/gtc/matrix_transform.hpp>
+
+namespace conformance {
+
+using namespace softgl;  // OpenGL's enum names
+
+namespace {
+
+constexpr int kSize = 128;
+
+// Clip-space position of window point (x, y) in a kSize x kSize viewport: exact for multiples of 1/256.
+glm::vec4 Win(float x, float y, float z = 0.0f) { return glm::vec4(x / 64.0f - 1.0f, y / 64.0f - 1.0f, z, 1.0f); }
+
+// A colour whose channels are exact multiples of 1/255, so that conversion to 8 bits has no ties.
+glm::vec4 Palette(unsigned i) {
+  const unsigned h = i * 2654435761u;
+  return glm::vec4(float((h >> 8) & 255) / 255.0f, float((h >> 16) & 255) / 255.0f, float((h >> 24) & 255) / 255.0f,
+                   1.0f);
+}
+
+// A random window coordinate on the 1/256 sub-pixel grid; every fourth lands exactly on a pixel centre.
+struct Jitter {
+  std::mt19937 rng;
+  explicit Jitter(unsigned seed) : rng(seed) {}
+  float Sub(float lo, float hi) {
+    std::uniform_int_distribution<int> d(int(lo * 256), int(hi * 256));
+    const float v = float(d(rng)) / 256.0f;
+    return (d(rng) % 4 == 0) ? std::floor(v) + 0.5f : v;
+  }
+  float Uniform(float lo, float hi) { return std::uniform_real_distribution<float>(lo, hi)(rng); }
+};
+
+std::vector<Vertex> Quad(glm::vec4 a, glm::vec4 b, glm::vec4 c, glm::vec4 d, glm::vec4 color) {
+  return {{a, color}, {b, color}, {d, color}, {b, color}, {c, color}, {d, color}};
+}
+
+// A window-space rectangle as two triangles at NDC depth z.
+std::vector<Vertex> Rect(float x0, float y0, float x1, float y1, float z, glm::vec4 color) {
+  return Quad(Win(x0, y0, z), Win(x1, y0, z), Win(x1, y1, z), Win(x0, y1, z), color);
+}
+
+// ---- Coverage ----------------------------------------------------------------------------------------------------
+
+void FillRuleTriangles(Backend& b) {
+  b.ClearColor(0, 0, 0, 1);
+  b.Clear(COLOR_BUFFER_BIT);
+  Jitter j(7);
+  std::vector<Vertex> v;
+  for (unsigned i = 0; i < 400; ++i) {
+    const float cx = j.Sub(2, 126), cy = j.Sub(2, 126), r = j.Uniform(0.6f, 7.0f);
+    const glm::vec4 c = Palette(i);
+    for (int k = 0; k < 3; ++k)
+      v.push_back({Win(std::round((cx + j.Uniform(-r, r)) * 256) / 256, std::round((cy + j.Uniform(-r, r)) * 256) / 256), c});
+  }
+  b.Draw(TRIANGLES, v);
+}
+
+// A jittered grid drawn as strips, and fans around shared centres, added up: a gap shows black, a double hit
+// shows twice the colour.
+void FillRuleSharedEdges(Backend& b) {
+  b.ClearColor(0, 0, 0, 1);
+  b.Clear(COLOR_BUFFER_BIT);
+  b.Enable(BLEND);
+  b.BlendFunc(ONE, ONE);
+  const glm::vec4 c(0.25f, 0.25f, 0.25f, 1.0f);
+  Jitter j(11);
+  constexpr int N = 12;
+  glm::vec2 grid[N + 1][N + 1];
+  for (int y = 0; y <= N; ++y)
+    for (int x = 0; x <= N; ++x) {
+      const bool border = x == 0 || y == 0 || x == N || y == N;
+      grid[y][x] = glm::vec2(float(x) * 64.0f / N, float(y) * 128.0f / N);
+      if (!border) grid[y][x] += glm::vec2(j.Sub(-2.5f, 2.5f), j.Sub(-2.5f, 2.5f));
+    }
+  for (int y = 0; y < N; ++y) {  // left half: one strip per row
+    std::vector<Vertex> strip;
+    for (int x = 0; x <= N; ++x) {
+      strip.push_back({Win(grid[y][x].x, grid[y][x].y), c});
+      strip.push_back({Win(grid[y + 1][x].x, grid[y + 1][x].y), c});
+    }
+    b.Draw(TRIANGLE_STRIP, strip);
+  }
+  // Right half: 4 x 4 cells, each a fan around a jittered centre.
+  for (int cy = 0; cy < 4; ++cy)
+    for (int cx = 0; cx < 4; ++cx) {
+      const float x0 = 64.0f + float(cx) * 16.0f, y0 = float(cy) * 32.0f;
+      std::vector<Vertex> fan{{Win(x0 + j.Sub(4, 12), y0 + j.Sub(8, 24)), c}};
+      const glm::vec2 ring[] = {{x0, y0}, {x0 + 16, y0}, {x0 + 16, y0 + 32}, {x0, y0 + 32}, {x0, y0}};
+      for (const glm::vec2& p : ring) fan.push_back({Win(p.x, p.y), c});
+      b.Draw(TRIANGLE_FAN, fan);
+    }
+  b.Disable(BLEND);
+}
+
+void Points(Backend& b) {
+  b.ClearColor(0, 0, 0, 1);
+  b.Clear(COLOR_BUFFER_BIT);
+  Jitter j(3);
+  const float sizes[] = {1, 2, 3, 4, 5, 8};
+  unsigned n = 0;
+  for (float s : sizes) {
+    b.PointSize(s);
+    std::vector<Vertex> v;
+    for (int i = 0; i < 24; ++i) v.push_back({Win(j.Sub(4, 124), j.Sub(4, 124)), Palette(n++)});
+    b.Draw(POINTS, v);
+  }
+}
+
+void Lines(Backend& b) {
+  b.ClearColor(0, 0, 0, 1);
+  b.Clear(COLOR_BUFFER_BIT);
+  Jitter j(5);
+  std::vector<Vertex> v;
+  unsigned n = 0;
+  for (int i = 0; i < 48; ++i) {  // segments in every direction
+    const float a = 6.2831853f * float(i) / 48.0f, len = j.Uniform(8, 40);
+    const float x = j.Sub(30, 98), y = j.Sub(30, 98);
+    const glm::vec4 c = Palette(n++);
+    v.push_back({Win(x, y), c});
+    v.push_back({Win(std::round((x + std::cos(a) * len) * 256) / 256, std::round((y + std::sin(a) * len) * 256) / 256), c});
+  }
+  b.Draw(LINES, v);
+  std::vector<Vertex> strip;
+  for (int i = 0; i < 8; ++i) strip.push_back({Win(j.Sub(2, 126), j.Sub(2, 30)), Palette(n)});
+  b.Draw(LINE_STRIP, strip);
+  std::vector<Vertex> loop;
+  for (int i = 0; i < 6; ++i) loop.push_back({Win(j.Sub(2, 126), j.Sub(100, 126)), Palette(n + 1)});
+  b.Draw(LINE_LOOP, loop);
+}
+
+// Colours varying along lines: OpenGL interpolates by the projection of the pixel centre onto the segment
+// (t = (p - a).(b - a) / |b - a|^2), llvmpipe by the major axis coordinate alone; see docs/conformance.md.
+void LineInterpolation(Backend& b) {
+  b.ClearColor(0, 0, 0, 1);
+  b.Clear(COLOR_BUFFER_BIT);
+  Jitter j(17);
+  std::vector<Vertex> strip;
+  for (int i = 0; i < 24; ++i) strip.push_back({Win(j.Sub(2, 126), j.Sub(2, 126)), Palette(unsigned(i))});
+  b.Draw(LINE_STRIP, strip);
+}
+
+void PolygonModeLine(Backend& b) {
+  b.ClearColor(0, 0, 0, 1);
+  b.Clear(COLOR_BUFFER_BIT);
+  b.PolygonMode(LINE);
+  Jitter j(13);
+  std::vector<Vertex> v;
+  for (unsigned i = 0; i < 30; ++i) {
+    const float cx = j.Sub(10, 118), cy = j.Sub(10, 118);
+    for (int k = 0; k < 3; ++k) v.push_back({Win(cx + j.Sub(-10, 10), cy + j.Sub(-10, 10)), Palette(i)});
+  }
+  b.Draw(TRIANGLES, v);
+  b.PolygonMode(FILL);
+}
+
+void Culling(Backend& b) {
+  b.ClearColor(0, 0, 0, 1);
+  b.Clear(COLOR_BUFFER_BIT);
+  b.Enable(CULL_FACE);
+  struct Cell {
+    Enum cull, front;
+  };
+  const Cell cells[4] = {{BACK, CCW}, {FRONT, CCW}, {BACK, CW}, {FRONT_AND_BACK, CCW}};
+  for (int i = 0; i < 4; ++i) {
+    b.CullFace(cells[i].cull);
+    b.FrontFace(cells[i].front);
+    const float x0 = float(i % 2) * 64, y0 = float(i / 2) * 64;
+    // A counter-clockwise triangle (red) and a clockwise one (green) in each cell.
+    b.Draw(TRIANGLES, {{Win(x0 + 4, y0 + 4), {1, 0, 0, 1}}, {Win(x0 + 30, y0 + 4), {1, 0, 0, 1}},
+                       {Win(x0 + 4, y0 + 60), {1, 0, 0, 1}}, {Win(x0 + 34, y0 + 4), {0, 1, 0, 1}},
+                       {Win(x0 + 34, y0 + 60), {0, 1, 0, 1}}, {Win(x0 + 60, y0 + 4), {0, 1, 0, 1}}});
+  }
+  b.Disable(CULL_FACE);
+}
+
+// ---- Clipping and interpolation ------------------------------------------------------------------------------------
+
+void Clipping(Backend& b) {
+  b.ClearColor(0, 0, 0, 1);
+  b.Clear(COLOR_BUFFER_BIT);
+  const glm::vec4 r(1, 0, 0, 1), g(0, 1, 0, 1), bl(0, 0, 1, 1), w(1, 1, 1, 1);
+  std::vector<Vertex> v = {
+      // Crossing the near plane (z < -w at one vertex), w varying.
+      {{-0.9f, -0.9f, -3.0f, 1.0f}, r}, {{0.5f, -0.6f, 0.2f, 1.5f}, g}, {{-0.2f, 0.4f, 0.5f, 2.0f}, bl},
+      // Crossing the far plane.
+      {{0.2f, 0.1f, 0.9f, 1.0f}, w}, {{0.9f, 0.2f, 4.0f, 1.2f}, r}, {{0.5f, 0.9f, 0.1f, 0.8f}, g},
+      // Crossing the left, top and right planes at once.
+      {{-2.5f, 0.6f, 0.0f, 1.0f}, bl}, {{3.0f, 0.7f, 0.0f, 1.0f}, r}, {{0.1f, 2.0f, 0.3f, 1.0f}, g},
+      // One vertex behind the eye (w < 0).
+      {{-0.3f, -0.2f, 0.0f, 1.0f}, g}, {{0.2f, -0.5f, 0.0f, 1.0f}, w}, {{0.4f, 0.8f, -0.5f, -1.0f}, r},
+      // Crossing the bottom and near planes with large w.
+      {{-4.0f, -6.0f, -1.0f, 3.0f}, w}, {{4.0f, -5.0f, -9.0f, 4.0f}, bl}, {{0.0f, 2.0f, 1.0f, 5.0f}, r},
+  };
+  b.Draw(TRIANGLES, v);
+}
+
+void Perspective(Backend& b) {
+  b.ClearColor(0, 0, 0, 1);
+  b.Clear(COLOR_BUFFER_BIT);
+  const glm::mat4 mvp = glm::perspective(glm::radians(60.0f), 1.0f, 0.5f, 50.0f) *
+                        glm::lookAt(glm::vec3(0, 1, 2), glm::vec3(0, 0, -6), glm::vec3(0, 1, 0));
+  const glm::vec3 corners[4] = {{-3, 0, 1}, {3, 0, 1}, {3, 0, -30}, {-3, 0, -30}};
+  const glm::vec2 uv[4] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  std::vector<Vertex> v;
+  for (int i : {0, 1, 3, 1, 2, 3}) v.push_back({mvp * glm::vec4(corners[i], 1), glm::vec4(1), glm::vec4(uv[i], 0, 0)});
+  b.Draw(TRIANGLES, v, Program::kUv);
+}
+
+// ---- Per-fragment operations ---------------------------------------------------------------------------------------
+
+void DepthFunctions(Backend& b) {
+  b.ClearColor(0, 0, 0, 1);
+  b.ClearDepth(1.0);
+  b.Clear(COLOR_BUFFER_BIT | DEPTH_BUFFER_BIT);
+  b.Enable(DEPTH_TEST);
+  const Enum funcs[8] = {NEVER, LESS, EQUAL, LEQUAL, GREATER, NOTEQUAL, GEQUAL, ALWAYS};
+  for (int i = 0; i < 8; ++i) {
+    const float x0 = float(i) * 16, x1 = x0 + 16;
+    b.DepthFunc(LESS);
+    b.Draw(TRIANGLES, Rect(x0, 0, x1, 128, 0.0f, {0.2f, 0.2f, 0.6f, 1}));  // depth 0.5
+    b.DepthFunc(funcs[i]);
+    // Depth from 0.25 (bottom) to 0.75 (top), crossing 0.5 between two rows of centres.
+    b.Draw(TRIANGLES, Quad(Win(x0, 0, -0.5f), Win(x1, 0, -0.5f), Win(x1, 128, 0.5f), Win(x0, 128, 0.5f), Palette(i)));
+    // The base quad again: EQUAL and LEQUAL pass where the base depth is still stored.
+    b.Draw(TRIANGLES, Rect(x0, 56, x1, 72, 0.0f, {1, 1, 1, 1}));
+  }
+  b.DepthFunc(LESS);
+  b.DepthMask(false);
+  b.Draw(TRIANGLES, Rect(0, 100, 128, 110, -0.9f, {1, 0.5f, 0, 1}));  // passes, writes no depth
+  b.DepthMask(true);
+  b.Disable(DEPTH_TEST);
+}
+
+void Stencil(Backend& b) {
+  b.ClearColor(0, 0, 0, 1);
+  b.ClearStencil(0x80);
+  b.ClearDepth(0.5);
+  b.Clear(COLOR_BUFFER_BIT | STENCIL_BUFFER_BIT | DEPTH_BUFFER_BIT);
+  b.Enable(STENCIL_TEST);
+  b.Enable(DEPTH_TEST);
+  const Enum funcs[8] = {NEVER, LESS, EQUAL, LEQUAL, GREATER, NOTEQUAL, GEQUAL, ALWAYS};
+  const Enum ops[8] = {KEEP, ZERO, REPLACE, INCR, DECR, INVERT, INCR_WRAP, DECR_WRAP};
+  for (int i = 0; i < 8; ++i) {
+    const float x0 = float(i) * 16;
+    // Front faces (counter-clockwise) in the lower half, back faces (clockwise) in the upper half, each with its
+    // own function, reference, masks and operations.
+    b.StencilFuncSeparate(FRONT, funcs[i], 0x80 + (i % 3) - 1, 0xF0 | unsigned(i));
+    b.StencilFuncSeparate(BACK, funcs[7 - i], 0x7F + i, 0xFF);
+    b.StencilOpSeparate(FRONT, ops[i], ops[(i + 3) % 8], ops[(i + 5) % 8]);
+    b.StencilOpSeparate(BACK, ops[(i + 1) % 8], ops[(i + 6) % 8], ops[(i + 2) % 8]);
+    b.StencilMaskSeparate(FRONT, 0xFF);
+    b.StencilMaskSeparate(BACK, i % 2 ? 0x0F : 0xFF);
+    for (int pass = 0; pass < 3; ++pass) {
+      // Three overlapping draws: depth 0.25 (passes LESS against 0.5) on the left, 0.75 (fails) on the right.
+      const float z = -0.5f;
+      b.Draw(TRIANGLES, Quad(Win(x0, 0, z), Win(x0 + 8, 0, z), Win(x0 + 8, 64, z), Win(x0, 64, z), Palette(i)));
+      b.Draw(TRIANGLES, Quad(Win(x0 + 8, 0, 0.5f), Win(x0 + 16, 0, 0.5f), Win(x0 + 16, 64, 0.5f),
+                             Win(x0 + 8, 64, 0.5f), Palette(i)));
+      b.Draw(TRIANGLES, Quad(Win(x0, 128, z), Win(x0 + 16, 128, z), Win(x0 + 16, 64, z), Win(x0, 64, z), Palette(i + 8)));
+    }
+  }
+  // Show the stencil values as colours: four bands of values.
+  b.Disable(DEPTH_TEST);
+  b.StencilOp(KEEP, KEEP, KEEP);
+  const int bands[4] = {0x00, 0x7F, 0x80, 0x81};
+  for (int k = 0; k < 4; ++k) {
+    b.StencilFunc(EQUAL, bands[k], 0xFF);
+    b.Draw(TRIANGLES, Rect(0, 0, 128, 128, 0.0f, Palette(100 + unsigned(k))));
+  }
+  b.Disable(STENCIL_TEST);
+}
+
+const Enum kFactors[15] = {ZERO,      ONE,       SRC_COLOR,          ONE_MINUS_SRC_COLOR,   DST_COLOR,
+                           ONE_MINUS_DST_COLOR,  SRC_ALPHA,          ONE_MINUS_SRC_ALPHA,   DST_ALPHA,
+                           ONE_MINUS_DST_ALPHA,  CONSTANT_COLOR,     ONE_MINUS_CONSTANT_COLOR, CONSTANT_ALPHA,
+                           ONE_MINUS_CONSTANT_ALPHA, SRC_ALPHA_SATURATE};
+
+// 15 x 15 cells of 8 x 8 pixels: source factor by column, destination factor by row, over a different
+// destination colour in every cell; alpha uses the factors swapped.
+void BlendFactors(Backend& b) {
+  b.ClearColor(0, 0, 0, 0);
+  b.Clear(COLOR_BUFFER_BIT);
+  b.BlendColor(0.3f, 0.6f, 0.9f, 0.4f);
+  for (int s = 0; s < 15; ++s)
+    for (int d = 0; d < 15; ++d) {
+      const float x0 = float(s) * 8 + 4, y0 = float(d) * 8 + 4;
+      const unsigned cell = unsigned(s * 15 + d);
+      glm::vec4 dst = Palette(cell), src = Palette(cell + 1000);
+      dst.a = float((cell * 37) % 256) / 255.0f;
+      src.a = float((cell * 91 + 13) % 256) / 255.0f;
+      b.Disable(BLEND);
+      b.Draw(TRIANGLES, Rect(x0, y0, x0 + 8, y0 + 8, 0.0f, dst));
+      b.Enable(BLEND);
+      b.BlendFuncSeparate(kFactors[s], kFactors[d], kFactors[d], kFactors[s]);
+      b.Draw(TRIANGLES, Rect(x0, y0, x0 + 8, y0 + 8, 0.0f, src));
+    }
+  b.Disable(BLEND);
+}
+
+void BlendEquations(Backend& b) {
+  b.ClearColor(0, 0, 0, 0);
+  b.Clear(COLOR_BUFFER_BIT);
+  const Enum eqs[5] = {FUNC_ADD, FUNC_SUBTRACT, FUNC_REVERSE_SUBTRACT, MIN, MAX};
+  for (int e = 0; e < 5; ++e)
+    for (int a = 0; a < 5; ++a)
+      for (int k = 0; k < 6; ++k) {
+        const float x0 = float(e * 5 + a) * 5, y0 = float(k) * 20;
+        const unsigned cell = unsigned((e * 5 + a) * 6 + k);
+        b.Disable(BLEND);
+        b.Draw(TRIANGLES, Rect(x0, y0, x0 + 5, y0 + 20, 0.0f, Palette(cell)));
+        b.Enable(BLEND);
+        b.BlendEquationSeparate(eqs[e], eqs[a]);
+        b.BlendFuncSeparate(kFactors[(k * 4 + 2) % 15], kFactors[(k * 7 + 5) % 15], SRC_ALPHA, ONE_MINUS_SRC_ALPHA);
+        glm::vec4 src = Palette(cell + 500);
+        src.a = float((cell * 53) % 256) / 255.0f;
+        b.Draw(TRIANGLES, Rect(x0, y0, x0 + 5, y0 + 20, 0.0f, src));
+      }
+  b.Disable(BLEND);
+  b.BlendEquationSeparate(FUNC_ADD, FUNC_ADD);
+}
+
+void Masks(Backend& b) {
+  b.ClearColor(0.2f, 0.4f, 0.6f, 0.8f);
+  b.ClearDepth(1.0);
+  b.ClearStencil(0);
+  b.Clear(COLOR_BUFFER_BIT | DEPTH_BUFFER_BIT | STENCIL_BUFFER_BIT);
+  b.Enable(DEPTH_TEST);
+  b.Enable(STENCIL_TEST);
+  b.StencilFunc(ALWAYS, 0xFF, 0xFF);
+  b.StencilOp(KEEP, KEEP, REPLACE);
+  for (int i = 0; i < 16; ++i) {
+    b.ColorMask(i & 1, i & 2, i & 4, i & 8);
+    b.DepthMask(i % 3 != 0);
+    b.StencilMaskSeparate(FRONT_AND_BACK, unsigned(i * 17) & 0xFF);
+    const float x0 = float(i % 4) * 32, y0 = float(i / 4) * 32;
+    b.Draw(TRIANGLES, Rect(x0, y0, x0 + 24, y0 + 24, -0.2f, Palette(unsigned(i))));
+  }
+  // Clears honour the masks too.
+  b.ColorMask(false, true, false, true);
+  b.DepthMask(false);
+  b.StencilMaskSeparate(FRONT_AND_BACK, 0x0F);
+  b.ClearColor(1, 1, 1, 1);
+  b.ClearDepth(0.0);
+  b.ClearStencil(0x33);
+  b.Enable(SCISSOR_TEST);
+  b.Scissor(10, 10, 100, 40);
+  b.Clear(COLOR_BUFFER_BIT | DEPTH_BUFFER_BIT | STENCIL_BUFFER_BIT);
+  b.Disable(SCISSOR_TEST);
+  b.ColorMask(true, true, true, true);
+  b.DepthMask(true);
+  b.StencilMaskSeparate(FRONT_AND_BACK, 0xFF);
+  // Make depth visible: a quad at depth 0.6 where the stored depth is nearer fails.
+  b.StencilFunc(ALWAYS, 0, 0);
+  b.StencilOp(KEEP, KEEP, KEEP);
+  b.Draw(TRIANGLES, Rect(0, 100, 128, 128, 0.2f, {1, 0, 1, 1}));
+  b.Disable(DEPTH_TEST);
+  b.Disable(STENCIL_TEST);
+}
+
+void Scissor(Backend& b) {
+  b.ClearColor(0, 0, 0, 1);
+  b.Clear(COLOR_BUFFER_BIT);
+  b.Enable(SCISSOR_TEST);
+  const int rects[][4] = {{0, 0, 64, 64}, {40, 30, 50, 70}, {100, 100, 100, 100}, {-20, 90, 50, 60}, {5, 5, 0, 50}};
+  for (int i = 0; i < 5; ++i) {
+    b.Scissor(rects[i][0], rects[i][1], rects[i][2], rects[i][3]);
+    b.ClearColor(0.1f * float(i), 0.2f, 0.3f, 1);
+    b.Clear(COLOR_BUFFER_BIT);
+    b.Draw(TRIANGLES, {{Win(-10, -10), Palette(unsigned(i))}, {Win(140, 20), Palette(unsigned(i))},
+                       {Win(60, 140), Palette(unsigned(i))}});
+  }
+  b.Disable(SCISSOR_TEST);
+}
+
+void PolygonOffset(Backend& b) {
+  b.ClearColor(0, 0, 0, 1);
+  b.ClearDepth(1.0);
+  b.Clear(COLOR_BUFFER_BIT | DEPTH_BUFFER_BIT);
+  b.Enable(DEPTH_TEST);
+  // A tilted plane, then a smaller coplanar quad pulled forward by the slope term.
+  const glm::mat4 mvp = glm::perspective(glm::radians(50.0f), 1.0f, 1.0f, 20.0f) *
+                        glm::lookAt(glm::vec3(0, 3, 4), glm::vec3(0, 0, 0), glm::vec3(0, 1, 0));
+  auto plane = [&](float half, glm::vec4 c) {
+    std::vector<Vertex> v;
+    const glm::vec3 p[4] = {{-half, 0, half}, {half, 0, half}, {half, 0, -half}, {-half, 0, -half}};
+    for (int i : {0, 1, 3, 1, 2, 3}) v.push_back({mvp * glm::vec4(p[i], 1), c});
+    return v;
+  };
+  b.Draw(TRIANGLES, plane(3.0f, Palette(1)));
+  b.Enable(POLYGON_OFFSET_FILL);
+  b.PolygonOffset(-1.0f, -1.0f);
+  b.Draw(TRIANGLES, plane(1.5f, Palette(2)));
+  // A flat (constant depth) pair: only the units term separates them.
+  b.PolygonOffset(0.0f, 0.0f);
+  b.Draw(TRIANGLES, Rect(8, 8, 40, 40, 0.1f, {0, 0, 1, 1}));
+  b.PolygonOffset(0.0f, -4.0f);
+  b.Draw(TRIANGLES, Rect(16, 16, 32, 32, 0.1f, {0, 1, 0, 1}));
+  b.PolygonOffset(0.0f, 4.0f);  // pushed back: fails
+  b.Draw(TRIANGLES, Rect(20, 20, 48, 28, 0.1f, {1, 0, 0, 1}));
+  b.Disable(POLYGON_OFFSET_FILL);
+  b.Disable(DEPTH_TEST);
+}
+
+// ---- A real model ------------------------------------------------------------------------------------------------
+
+void Model(Backend& b) {
+  b.ClearColor(0.1f, 0.1f, 0.12f, 1);
+  b.ClearDepth(1.0);
+  b.Clear(COLOR_BUFFER_BIT | DEPTH_BUFFER_BIT);
+  const aiScene* scene = aiImportFile(kModelPath, aiProcess_Triangulate | aiProcess_GenSmoothNormals |
+                                                      aiProcess_PreTransformVertices | aiProcess_JoinIdenticalVertices);
+  if (!scene) return;
+  glm::vec3 lo(1e30f), hi(-1e30f);
+  for (unsigned m = 0; m < scene->mNumMeshes; ++m)
+    for (unsigned i = 0; i < scene->mMeshes[m]->mNumVertices; ++i) {
+      const aiVector3D& p = scene->mMeshes[m]->mVertices[i];
+      lo = glm::min(lo, glm::vec3(p.x, p.y, p.z));
+      hi = glm::max(hi, glm::vec3(p.x, p.y, p.z));
+    }
+  const glm::vec3 center = (lo + hi) * 0.5f;
+  const float radius = glm::length(hi - lo) * 0.5f;
+  const glm::mat4 mvp = glm::perspective(glm::radians(40.0f), 1.0f, radius * 0.5f, radius * 6.0f) *
+                        glm::lookAt(center + radius * glm::vec3(1.2f, 1.4f, 2.2f), center, glm::vec3(0, 1, 0));
+  b.Enable(DEPTH_TEST);
+  b.Enable(CULL_FACE);
+  Uniforms u;
+  u.light_dir = glm::normalize(glm::vec3(0.5f, 0.8f, 0.4f));
+  u.half_vector = glm::normalize(u.light_dir + glm::normalize(glm::vec3(1.2f, 1.4f, 2.2f)));
+  for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
+    const aiMesh* mesh = scene->mMeshes[m];
+    std::vector<Vertex> v;
+    std::vector<std::uint32_t> idx;
+    for (unsigned i = 0; i < mesh->mNumVertices; ++i) {
+      const aiVector3D& p = mesh->mVertices[i];
+      const aiVector3D n = mesh->mNormals ? mesh->mNormals[i] : aiVector3D(0, 1, 0);
+      v.push_back({mvp * glm::vec4(p.x, p.y, p.z, 1), glm::vec4(1), glm::vec4(n.x, n.y, n.z, 0)});
+    }
+    for (unsigned f = 0; f < mesh->mNumFaces; ++f)
+      if (mesh->mFaces[f].mNumIndices == 3)
+        idx.insert(idx.end(), mesh->mFaces[f].mIndices, mesh->mFaces[f].mIndices + 3);
+    u.tint = glm::vec4(Palette(m + 7).r * 0.5f + 0.5f, 0.6f, Palette(m + 7).b * 0.5f + 0.4f, 1.0f);
+    b.Draw(TRIANGLES, v, idx, Program::kLit, u);
+  }
+  aiReleaseImport(scene);
+  b.Disable(CULL_FACE);
+  b.Disable(DEPTH_TEST);
+}
+
+}  // namespace
+
+const std::vector<SceneInfo>& Scenes() {
+  static const std::vector<SceneInfo> scenes = {
+      {"fill_rule_triangles", kSize, kSize, Check::kExact, FillRuleTriangles},
+      {"fill_rule_shared_edges", kSize, kSize, Check::kExact, FillRuleSharedEdges},
+      {"points", kSize, kSize, Check::kExact, Points},
+      {"lines", kSize, kSize, Check::kExact, Lines},
+      {"line_interpolation", kSize, kSize, Check::kCoverage, LineInterpolation},
+      {"polygon_mode_line", kSize, kSize, Check::kExact, PolygonModeLine},
+      {"culling", kSize, kSize, Check::kExact, Culling},
+      {"clipping", kSize, kSize, Check::kColor, Clipping},
+      {"perspective", kSize, kSize, Check::kColor, Perspective},
+      {"depth_functions", kSize, kSize, Check::kExactWithDepth, DepthFunctions},
+      {"stencil", kSize, kSize, Check::kExactWithStencil, Stencil},
+      {"blend_factors", kSize, kSize, Check::kColor, BlendFactors},
+      {"blend_equations", kSize, kSize, Check::kColor, BlendEquations},
+      {"masks", kSize, kSize, Check::kExactWithStencil, Masks},
+      {"scissor", kSize, kSize, Check::kExact, Scissor},
+      {"polygon_offset", kSize, kSize, Check::kExactWithDepth, PolygonOffset},
+      {"model", 256, 256, Check::kColor, Model},
+  };
+  return scenes;
+}
+
+}  // namespace conformance

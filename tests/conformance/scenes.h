@@ -1,0 +1,33 @@
+// scenes.h — the named conformance scenes and what each must match.
+#pragma once
+
+#include <vector>
+
+#include "backend.h"
+
+namespace conformance {
+
+/// The model scene's file, from Debian's assimp-testmodels.
+inline constexpr const char* kModelPath = "/usr/share/assimp/models/OBJ/spider.obj";
+
+enum class Check {
+  kExact,             // colour identical
+  kExactWithDepth,    // colour identical, depth within the 24-bit depth buffer's resolution
+  kExactWithStencil,  // colour and stencil identical
+  kColor,             // colour within +-1 per channel
+  kCoverage,          // the same pixels drawn (against a black background); colours reported, not compared
+};
+
+/// The largest colour difference a check allows (kCoverage: any).
+inline int Tolerance(Check c) { return c == Check::kColor ? 1 : c == Check::kCoverage ? 255 : 0; }
+
+struct SceneInfo {
+  const char* name;
+  int width, height;
+  Check check;
+  void (*run)(Backend&);
+};
+
+const std::vector<SceneInfo>& Scenes();
+
+}  // namespace conformance
