@@ -13,8 +13,10 @@
 #include <vector>
 
 #include "framebuffer.h"
+#include "image_io.h"
 #include "pipeline.h"
 #include "primitive_assembly.h"
+#include "texture.h"
 #include "vertex_fetch.h"
 #include "viewport.h"
 
@@ -43,6 +45,78 @@ struct VertexArray {
 
 bool IsUsage(Enum usage) { return usage >= 0x88E0 && usage <= 0x88EA && (usage & 3) != 3; }
 
+struct Attachment {
+  std::shared_ptr<detail::TextureObject> texture;  // keeps the storage alive, as OpenGL does
+  int face = 0;
+  int level = 0;
+  const detail::TextureLevel* Level() const { return texture ? &texture->levels[face][level] : nullptr; }
+};
+
+struct FramebufferObject {
+  Attachment color[kMaxColorOutputs];
+  Attachment depth;
+  Enum draw_buffers[kMaxColorOutputs] = {COLOR_ATTACHMENT0, NONE, NONE, NONE};
+};
+
+struct TextureUnit {
+  std::shared_ptr<detail::TextureObject> tex_2d, cube;
+};
+
+int CubeFaceIndex(Enum target) {
+  return target >= TEXTURE_CUBE_MAP_POSITIVE_X && target <= TEXTURE_CUBE_MAP_NEGATIVE_Z
+             ? int(target - TEXTURE_CUBE_MAP_POSITIVE_X)
+             : -1;
+}
+
+// Section 9.4: why a framebuffer object cannot be drawn to, or FRAMEBUFFER_COMPLETE.
+Enum FramebufferStatus(const FramebufferObject& f) {
+  bool any = false;
+  for (const Attachment& a : f.color) {
+    if (!a.texture) continue;
+    any = true;
+    const detail::TextureLevel* l = a.Level();
+    if (!l->Defined() || detail::IsDepthFormat(l->format)) return FRAMEBUFFER_INCOMPLETE_ATTACHMENT;
+  }
+  if (f.depth.texture) {
+    any = true;
+    const detail::TextureLevel* l = f.depth.Level();
+    if (!l->Defined() || !detail::IsDepthFormat(l->format)) return FRAMEBUFFER_INCOMPLETE_ATTACHMENT;
+  }
+  if (!any) return FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT;
+  for (Enum b : f.draw_buffers)
+    if (b != NONE && !f.color[b - COLOR_ATTACHMENT0].texture) return FRAMEBUFFER_INCOMPLETE_DRAW_BUFFER;
+  return FRAMEBUFFER_COMPLETE;
+}
+
+// The buffers of a complete framebuffer object, drawn through its draw buffers; its size is the intersection of
+// its attachments'.
+detail::RenderTarget FramebufferTarget(const FramebufferObject& f) {
+  detail::RenderTarget t;
+  t.width = t.height = 1 << 30;
+  auto fit = [&](const Attachment& a) {
+    if (!a.texture) return;
+    t.width = std::min(t.width, a.Level()->width);
+    t.height = std::min(t.height, a.Level()->height);
+  };
+  for (const Attachment& a : f.color) fit(a);
+  fit(f.depth);
+  for (int i = 0; i < kMaxColorOutputs; ++i) {
+    if (f.draw_buffers[i] == NONE) continue;
+    const Attachment& a = f.color[f.draw_buffers[i] - COLOR_ATTACHMENT0];
+    detail::ColorBuffer& cb = t.color[i];
+    cb.texels = const_cast<float*>(a.Level()->texels.data());
+    cb.normalized = detail::IsNormalizedFormat(a.Level()->format);
+    cb.components = detail::FormatComponents(a.Level()->format);
+    cb.pitch = a.Level()->width;
+  }
+  if (f.depth.texture) {
+    t.depth = const_cast<float*>(f.depth.Level()->texels.data());
+    t.depth_pitch = f.depth.Level()->width;
+  }
+  t.depth_stride = 4;
+  return t;
+}
+
 }  // namespace
 
 struct ContextState {
@@ -59,6 +133,16 @@ struct ContextState {
   std::uint32_t vao_id = 0;
   glm::vec4 current_attrib[kMaxVertexAttribs];
   const Program* program = nullptr;
+
+  std::unordered_map<std::uint32_t, std::shared_ptr<detail::TextureObject>> textures;
+  std::uint32_t next_texture = 1;
+  TextureUnit units[kMaxTextureUnits];
+  int active_unit = 0;
+  int unpack_alignment = 4;
+  std::unordered_map<std::uint32_t, std::unique_ptr<FramebufferObject>> framebuffers;
+  std::uint32_t next_framebuffer = 1;
+  FramebufferObject* draw_fbo = nullptr;
+  FramebufferObject* read_fbo = nullptr;
 
   int viewport[4] = {0, 0, 0, 0};
   double depth_near = 0.0, depth_far = 1.0;
@@ -90,9 +174,9 @@ struct ContextState {
     return nullptr;
   }
 
-  // The framebuffer, cut to the scissor rectangle while the scissor test is enabled.
-  detail::Rect ClearArea() const {
-    detail::Rect r = fb.Bounds();
+  // The draw target's area, cut to the scissor rectangle while the scissor test is enabled.
+  detail::Rect ClearArea(const detail::RenderTarget& target) const {
+    detail::Rect r = target.Bounds();
     if (!scissor_enabled) return r;
     const std::int64_t x1 = std::int64_t(scissor[0]) + scissor[2], y1 = std::int64_t(scissor[1]) + scissor[3];
     r.x0 = std::max(r.x0, scissor[0]);
@@ -100,6 +184,33 @@ struct ContextState {
     r.x1 = int(std::min<std::int64_t>(r.x1, x1));
     r.y1 = int(std::min<std::int64_t>(r.y1, y1));
     return r;
+  }
+
+  // What drawing writes to: the context's framebuffer or the bound framebuffer object. False (with
+  // INVALID_FRAMEBUFFER_OPERATION recorded) when that object is incomplete.
+  bool DrawTarget(detail::RenderTarget& target) {
+    if (!draw_fbo) {
+      target = fb.Target();
+      return true;
+    }
+    if (FramebufferStatus(*draw_fbo) != FRAMEBUFFER_COMPLETE) {
+      SetError(INVALID_FRAMEBUFFER_OPERATION);
+      return false;
+    }
+    target = FramebufferTarget(*draw_fbo);
+    return true;
+  }
+
+  // The texture bound to `target` of the active unit (a cube face target selects the cube map), and the face.
+  detail::TextureObject* Bound(Enum target, int* face = nullptr) {
+    TextureUnit& u = units[active_unit];
+    if (face) *face = 0;
+    if (target == TEXTURE_2D) return u.tex_2d.get();
+    if (target == TEXTURE_CUBE_MAP) return u.cube.get();
+    const int f = CubeFaceIndex(target);
+    if (f < 0) return nullptr;
+    if (face) *face = f;
+    return u.cube.get();
   }
 
   void Draw(const detail::DrawCall& call);
@@ -497,15 +608,16 @@ void Context::ClearStencil(int s) { state_->clear_stencil = std::uint8_t(s & 0xF
 void Context::Clear(Bitfield mask) {
   auto& s = *state_;
   if (mask & ~(COLOR_BUFFER_BIT | DEPTH_BUFFER_BIT | STENCIL_BUFFER_BIT)) return s.SetError(INVALID_VALUE);
-  const detail::Rect area = s.ClearArea();
+  detail::RenderTarget target;
+  if (!s.DrawTarget(target)) return;
+  const detail::Rect area = s.ClearArea(target);
   if (area.Empty()) return;
   if (mask & COLOR_BUFFER_BIT) {
-    std::uint8_t rgba[4];
-    for (int i = 0; i < 4; ++i) rgba[i] = detail::FloatToUnorm8(s.clear_color[i]);
-    s.fb.ClearColor(area, rgba, s.ops.color_mask);
+    const glm::vec4 c(s.clear_color[0], s.clear_color[1], s.clear_color[2], s.clear_color[3]);
+    target.ClearColor(area, c, s.ops.color_mask);
   }
-  if ((mask & DEPTH_BUFFER_BIT) && s.ops.depth_write) s.fb.ClearDepth(area, s.clear_depth);
-  if (mask & STENCIL_BUFFER_BIT) s.fb.ClearStencil(area, s.clear_stencil, std::uint8_t(s.ops.front.write_mask));
+  if ((mask & DEPTH_BUFFER_BIT) && s.ops.depth_write) target.ClearDepth(area, s.clear_depth);
+  if (mask & STENCIL_BUFFER_BIT) target.ClearStencil(area, s.clear_stencil, std::uint8_t(s.ops.front.write_mask));
 }
 
 // ---- Drawing -------------------------------------------------------------------------------------------------
@@ -527,11 +639,29 @@ void ContextState::Draw(const detail::DrawCall& call) {
     src.stride = a.stride ? std::size_t(a.stride) : std::size_t(a.size) * detail::TypeSize(a.type);
   }
 
+  detail::RenderTarget target;
+  if (!DrawTarget(target)) return;
+
+  // The textures of every unit, resolved once for the draw.
+  detail::TextureView views[2][kMaxTextureUnits];
+  Textures bound;
+  for (int u = 0; u < kMaxTextureUnits; ++u) {
+    if (units[u].tex_2d) {
+      views[0][u] = detail::MakeView(*units[u].tex_2d);
+      bound.unit_2d[u] = &views[0][u];
+    }
+    if (units[u].cube) {
+      views[1][u] = detail::MakeView(*units[u].cube);
+      bound.unit_cube[u] = &views[1][u];
+    }
+  }
+
   detail::DrawState ds;
   ds.program = program;
+  ds.textures = &bound;
   ds.viewport = detail::MakeViewportTransform(viewport[0], viewport[1], viewport[2], viewport[3], depth_near,
                                               depth_far);
-  const detail::Rect fbr = ClearArea();  // framebuffer and scissor
+  const detail::Rect fbr = ClearArea(target);  // draw target and scissor
   ds.bounds = detail::Rect{std::max(ds.viewport.rect.x0, fbr.x0), std::max(ds.viewport.rect.y0, fbr.y0),
                            std::min(ds.viewport.rect.x1, fbr.x1), std::min(ds.viewport.rect.y1, fbr.y1)};
   ds.cull_enabled = cull_enabled;
@@ -547,7 +677,7 @@ void ContextState::Draw(const detail::DrawCall& call) {
   ds.offset_units = offset_units;
   ds.ops = ops;
   try {
-    detail::Draw(call, plan, ds, fb, scratch);
+    detail::Draw(call, plan, ds, target, scratch);
   } catch (const std::bad_alloc&) {
     SetError(OUT_OF_MEMORY);
   } catch (const std::length_error&) {
@@ -593,38 +723,385 @@ void Context::DrawElement(Enum mode, int count, Enum type, std::size_t offset) {
 
 // ---- Reading back --------------------------------------------------------------------------------------------
 
+namespace {
+
+// What ReadPixels and friends read: the context's framebuffer, or COLOR_ATTACHMENT0 and the depth attachment of
+// the framebuffer object bound for reading (nothing when it is incomplete).
+detail::RenderTarget ReadTarget(ContextState& s) {
+  if (!s.read_fbo) return s.fb.Target();
+  if (FramebufferStatus(*s.read_fbo) != FRAMEBUFFER_COMPLETE) return {};
+  FramebufferObject reading = *s.read_fbo;  // reads COLOR_ATTACHMENT0 whatever the draw buffers say
+  reading.draw_buffers[0] = reading.color[0].texture ? COLOR_ATTACHMENT0 : NONE;
+  for (int i = 1; i < kMaxColorOutputs; ++i) reading.draw_buffers[i] = NONE;
+  return FramebufferTarget(reading);
+}
+}  // namespace
+
 Image Context::ReadPixels() const {
-  const auto& fb = state_->fb;
+  const detail::RenderTarget t = ReadTarget(*state_);
   Image image;
-  image.width = fb.width;
-  image.height = fb.height;
-  image.rgba.resize(fb.color.size());
-  const std::size_t row = std::size_t(fb.width) * 4;
-  for (int y = 0; y < fb.height; ++y)
-    std::memcpy(image.rgba.data() + std::size_t(fb.height - 1 - y) * row, fb.color.data() + std::size_t(y) * row,
-                row);
+  if (!t.color[0].Present() || t.width <= 0 || t.height <= 0) return image;
+  image.width = t.width;
+  image.height = t.height;
+  image.rgba.resize(std::size_t(t.width) * std::size_t(t.height) * 4);
+  for (int y = 0; y < t.height; ++y)
+    for (int x = 0; x < t.width; ++x) {
+      const glm::vec4 c = t.color[0].Load(x, y);
+      std::uint8_t* dst = image.rgba.data() + (std::size_t(t.height - 1 - y) * std::size_t(t.width) + x) * 4;
+      for (int k = 0; k < 4; ++k) dst[k] = detail::FloatToUnorm8(c[k]);
+    }
   return image;
 }
 
 void Context::ReadPixel(int x, int y, std::uint8_t rgba[4]) const {
-  const auto& fb = state_->fb;
-  if (x < 0 || y < 0 || x >= fb.width || y >= fb.height) {
-    std::memset(rgba, 0, 4);
-    return;
-  }
-  std::memcpy(rgba, &fb.color[fb.Index(x, y) * 4], 4);
+  const detail::RenderTarget t = ReadTarget(*state_);
+  std::memset(rgba, 0, 4);
+  if (!t.color[0].Present() || x < 0 || y < 0 || x >= t.width || y >= t.height) return;
+  const glm::vec4 c = t.color[0].Load(x, y);
+  for (int k = 0; k < 4; ++k) rgba[k] = detail::FloatToUnorm8(c[k]);
 }
 
 float Context::ReadDepth(int x, int y) const {
-  const auto& fb = state_->fb;
-  if (x < 0 || y < 0 || x >= fb.width || y >= fb.height) return 0.0f;
-  return fb.depth[fb.Index(x, y)];
+  const detail::RenderTarget t = ReadTarget(*state_);
+  if (!t.depth || x < 0 || y < 0 || x >= t.width || y >= t.height) return 0.0f;
+  return t.Depth(x, y);
 }
 
 std::uint8_t Context::ReadStencil(int x, int y) const {
-  const auto& fb = state_->fb;
-  if (x < 0 || y < 0 || x >= fb.width || y >= fb.height) return 0;
-  return fb.stencil[fb.Index(x, y)];
+  const detail::RenderTarget t = ReadTarget(*state_);
+  if (!t.stencil || x < 0 || y < 0 || x >= t.width || y >= t.height) return 0;
+  return t.Stencil(x, y);
+}
+
+// ---- Textures ------------------------------------------------------------------------------------------------
+
+std::uint32_t Context::GenTexture() {
+  const std::uint32_t id = state_->next_texture++;
+  state_->textures[id] = std::make_shared<detail::TextureObject>();
+  return id;
+}
+
+void Context::GenTextures(int n, std::uint32_t* ids) {
+  if (n < 0) return state_->SetError(INVALID_VALUE);
+  for (int i = 0; i < n; ++i) ids[i] = GenTexture();
+}
+
+void Context::DeleteTexture(std::uint32_t texture) {
+  auto& s = *state_;
+  auto it = s.textures.find(texture);
+  if (it == s.textures.end()) return;
+  const detail::TextureObject* dead = it->second.get();
+  for (TextureUnit& u : s.units) {
+    if (u.tex_2d.get() == dead) u.tex_2d.reset();
+    if (u.cube.get() == dead) u.cube.reset();
+  }
+  for (FramebufferObject* f : {s.draw_fbo, s.read_fbo}) {
+    if (!f) continue;
+    for (Attachment& a : f->color)
+      if (a.texture.get() == dead) a = Attachment{};
+    if (f->depth.texture.get() == dead) f->depth = Attachment{};
+  }
+  s.textures.erase(it);
+}
+
+bool Context::IsTexture(std::uint32_t texture) const { return state_->textures.count(texture) != 0; }
+
+void Context::ActiveTexture(Enum unit) {
+  if (unit < TEXTURE0 || unit >= TEXTURE0 + kMaxTextureUnits) return state_->SetError(INVALID_ENUM);
+  state_->active_unit = int(unit - TEXTURE0);
+}
+
+void Context::BindTexture(Enum target, std::uint32_t texture) {
+  auto& s = *state_;
+  if (target != TEXTURE_2D && target != TEXTURE_CUBE_MAP) return s.SetError(INVALID_ENUM);
+  std::shared_ptr<detail::TextureObject> object;
+  if (texture != 0) {
+    auto it = s.textures.find(texture);
+    if (it == s.textures.end()) return s.SetError(INVALID_OPERATION);
+    if (it->second->target != 0 && it->second->target != target) return s.SetError(INVALID_OPERATION);
+    it->second->target = target;
+    object = it->second;
+  }
+  TextureUnit& u = s.units[s.active_unit];
+  (target == TEXTURE_2D ? u.tex_2d : u.cube) = std::move(object);
+}
+
+namespace {
+
+bool IsTexImageTarget(Enum target) { return target == TEXTURE_2D || CubeFaceIndex(target) >= 0; }
+
+bool IsTransferType(Enum type) { return type == UNSIGNED_BYTE || type == FLOAT; }
+
+}  // namespace
+
+void Context::TexImage2D(Enum target, int level, Enum internal_format, int width, int height, int border,
+                         Enum format, Enum type, const void* pixels) {
+  auto& s = *state_;
+  if (!IsTexImageTarget(target)) return s.SetError(INVALID_ENUM);
+  if (level < 0 || level >= detail::kMaxLevels || width < 0 || height < 0 || width > kMaxTextureSize ||
+      height > kMaxTextureSize || border != 0 || detail::FormatComponents(internal_format) == 0)
+    return s.SetError(INVALID_VALUE);
+  if (detail::TransferComponents(format) == 0 || !IsTransferType(type)) return s.SetError(INVALID_ENUM);
+  if (detail::IsDepthFormat(internal_format) != (format == DEPTH_COMPONENT)) return s.SetError(INVALID_OPERATION);
+  if (CubeFaceIndex(target) >= 0 && width != height) return s.SetError(INVALID_VALUE);
+  int face = 0;
+  detail::TextureObject* tex = s.Bound(target, &face);
+  if (!tex) return s.SetError(INVALID_OPERATION);
+  detail::TextureLevel next;
+  next.format = internal_format;
+  next.width = width;
+  next.height = height;
+  try {
+    next.texels.assign(std::size_t(width) * std::size_t(height) * 4, 0.0f);
+  } catch (const std::bad_alloc&) {
+    return s.SetError(OUT_OF_MEMORY);
+  }
+  if (detail::FormatComponents(internal_format) < 4)  // formats without alpha read alpha 1
+    for (std::size_t i = 3; i < next.texels.size(); i += 4) next.texels[i] = 1.0f;
+  detail::UploadPixels(next, 0, 0, width, height, format, type, s.unpack_alignment, pixels);
+  tex->levels[face][level] = std::move(next);
+}
+
+void Context::TexSubImage2D(Enum target, int level, int x, int y, int width, int height, Enum format, Enum type,
+                            const void* pixels) {
+  auto& s = *state_;
+  if (!IsTexImageTarget(target)) return s.SetError(INVALID_ENUM);
+  if (detail::TransferComponents(format) == 0 || !IsTransferType(type)) return s.SetError(INVALID_ENUM);
+  if (level < 0 || level >= detail::kMaxLevels) return s.SetError(INVALID_VALUE);
+  int face = 0;
+  detail::TextureObject* tex = s.Bound(target, &face);
+  if (!tex || !tex->levels[face][level].Defined()) return s.SetError(INVALID_OPERATION);
+  detail::TextureLevel& lv = tex->levels[face][level];
+  if (detail::IsDepthFormat(lv.format) != (format == DEPTH_COMPONENT)) return s.SetError(INVALID_OPERATION);
+  if (x < 0 || y < 0 || width < 0 || height < 0 || std::int64_t(x) + width > lv.width ||
+      std::int64_t(y) + height > lv.height)
+    return s.SetError(INVALID_VALUE);
+  detail::UploadPixels(lv, x, y, width, height, format, type, s.unpack_alignment, pixels);
+}
+
+bool Context::TexImage2DFromFile(Enum target, const std::string& path, bool flip_vertically, std::string* error) {
+  auto& s = *state_;
+  if (!IsTexImageTarget(target)) {
+    s.SetError(INVALID_ENUM);
+    if (error) *error = "invalid texture target";
+    return false;
+  }
+  if (!s.Bound(target)) {
+    s.SetError(INVALID_OPERATION);
+    if (error) *error = "no texture bound";
+    return false;
+  }
+  detail::LoadedImage img;
+  try {
+    if (!detail::LoadImageFile(path, flip_vertically, img, error)) return false;
+  } catch (const std::bad_alloc&) {
+    s.SetError(OUT_OF_MEMORY);
+    if (error) *error = path + ": out of memory";
+    return false;
+  }
+  if (img.width > kMaxTextureSize || img.height > kMaxTextureSize) {
+    s.SetError(INVALID_VALUE);
+    if (error) *error = path + ": larger than kMaxTextureSize";
+    return false;
+  }
+  static constexpr Enum kFormats[4] = {RED, RG, RGB, RGBA};
+  static constexpr Enum kInternal[4] = {R8, RG8, RGB8, RGBA8};
+  const Enum format = kFormats[img.channels - 1];
+  const Enum internal = img.hdr ? RGBA32F : kInternal[img.channels - 1];
+  const int saved_alignment = s.unpack_alignment;
+  s.unpack_alignment = 1;
+  const Enum before = s.error;
+  TexImage2D(target, 0, internal, img.width, img.height, 0, format, img.hdr ? FLOAT : UNSIGNED_BYTE,
+             img.hdr ? static_cast<const void*>(img.floats.data()) : static_cast<const void*>(img.bytes.data()));
+  s.unpack_alignment = saved_alignment;
+  if (s.error != before) {
+    if (error) *error = path + ": the texture could not be defined";
+    return false;
+  }
+  return true;
+}
+
+void Context::GenerateMipmap(Enum target) {
+  auto& s = *state_;
+  if (target != TEXTURE_2D && target != TEXTURE_CUBE_MAP) return s.SetError(INVALID_ENUM);
+  detail::TextureObject* tex = s.Bound(target);
+  if (!tex) return s.SetError(INVALID_OPERATION);
+  const int base = tex->params.base_level;
+  if (base < 0 || base >= detail::kMaxLevels) return s.SetError(INVALID_OPERATION);
+  for (int f = 0; f < tex->Faces(); ++f) {
+    const detail::TextureLevel& b = tex->levels[f][base];
+    const detail::TextureLevel& b0 = tex->levels[0][base];
+    if (!b.Defined() || b.width != b0.width || b.height != b0.height || b.format != b0.format)
+      return s.SetError(INVALID_OPERATION);
+  }
+  try {
+    detail::GenerateMipmaps(*tex);
+  } catch (const std::bad_alloc&) {
+    s.SetError(OUT_OF_MEMORY);
+  }
+}
+
+namespace {
+
+bool IsMinFilter(int v) {
+  return v == NEAREST || v == LINEAR || v == NEAREST_MIPMAP_NEAREST || v == LINEAR_MIPMAP_NEAREST ||
+         v == NEAREST_MIPMAP_LINEAR || v == LINEAR_MIPMAP_LINEAR;
+}
+bool IsWrap(int v) { return v == REPEAT || v == MIRRORED_REPEAT || v == CLAMP_TO_EDGE || v == CLAMP_TO_BORDER; }
+
+}  // namespace
+
+void Context::TexParameterfv(Enum target, Enum pname, const float* values) {
+  auto& s = *state_;
+  if (target != TEXTURE_2D && target != TEXTURE_CUBE_MAP) return s.SetError(INVALID_ENUM);
+  if (values == nullptr) return s.SetError(INVALID_VALUE);
+  detail::TextureObject* tex = s.Bound(target);
+  if (!tex) return s.SetError(INVALID_OPERATION);
+  detail::SamplerParams& p = tex->params;
+  const float v = values[0];
+  const int iv = std::isfinite(v) ? int(std::clamp(v, -2e9f, 2e9f)) : -1;
+  switch (pname) {
+    case TEXTURE_MIN_FILTER:
+      if (!IsMinFilter(iv)) return s.SetError(INVALID_ENUM);
+      p.min_filter = Enum(iv);
+      break;
+    case TEXTURE_MAG_FILTER:
+      if (iv != NEAREST && iv != LINEAR) return s.SetError(INVALID_ENUM);
+      p.mag_filter = Enum(iv);
+      break;
+    case TEXTURE_WRAP_S:
+    case TEXTURE_WRAP_T:
+    case TEXTURE_WRAP_R:
+      if (!IsWrap(iv)) return s.SetError(INVALID_ENUM);
+      (pname == TEXTURE_WRAP_S ? p.wrap_s : pname == TEXTURE_WRAP_T ? p.wrap_t : p.wrap_r) = Enum(iv);
+      break;
+    case TEXTURE_BASE_LEVEL:
+    case TEXTURE_MAX_LEVEL:
+      if (iv < 0) return s.SetError(INVALID_VALUE);
+      (pname == TEXTURE_BASE_LEVEL ? p.base_level : p.max_level) = iv;
+      break;
+    case TEXTURE_MIN_LOD:
+    case TEXTURE_MAX_LOD:
+    case TEXTURE_LOD_BIAS:
+      if (std::isnan(v)) return s.SetError(INVALID_VALUE);
+      (pname == TEXTURE_MIN_LOD ? p.min_lod : pname == TEXTURE_MAX_LOD ? p.max_lod : p.lod_bias) = v;
+      break;
+    case TEXTURE_COMPARE_MODE:
+      if (iv != int(NONE) && iv != int(COMPARE_REF_TO_TEXTURE)) return s.SetError(INVALID_ENUM);
+      p.compare_mode = Enum(iv);
+      break;
+    case TEXTURE_COMPARE_FUNC:
+      if (iv < int(NEVER) || iv > int(ALWAYS)) return s.SetError(INVALID_ENUM);
+      p.compare_func = Enum(iv);
+      break;
+    case TEXTURE_BORDER_COLOR: p.border = glm::vec4(values[0], values[1], values[2], values[3]); break;
+    default: return s.SetError(INVALID_ENUM);
+  }
+}
+
+void Context::TexParameteri(Enum target, Enum pname, int value) {
+  if (pname == TEXTURE_BORDER_COLOR) return state_->SetError(INVALID_ENUM);  // four values: use TexParameterfv
+  const float v = float(value);
+  TexParameterfv(target, pname, &v);
+}
+
+void Context::TexParameterf(Enum target, Enum pname, float value) {
+  if (pname == TEXTURE_BORDER_COLOR) return state_->SetError(INVALID_ENUM);
+  TexParameterfv(target, pname, &value);
+}
+
+void Context::PixelStore(Enum pname, int value) {
+  if (pname != UNPACK_ALIGNMENT) return state_->SetError(INVALID_ENUM);
+  if (value != 1 && value != 2 && value != 4 && value != 8) return state_->SetError(INVALID_VALUE);
+  state_->unpack_alignment = value;
+}
+
+// ---- Framebuffer objects -------------------------------------------------------------------------------------
+
+std::uint32_t Context::GenFramebuffer() {
+  const std::uint32_t id = state_->next_framebuffer++;
+  state_->framebuffers[id] = std::make_unique<FramebufferObject>();
+  return id;
+}
+
+void Context::GenFramebuffers(int n, std::uint32_t* ids) {
+  if (n < 0) return state_->SetError(INVALID_VALUE);
+  for (int i = 0; i < n; ++i) ids[i] = GenFramebuffer();
+}
+
+void Context::DeleteFramebuffer(std::uint32_t framebuffer) {
+  auto& s = *state_;
+  auto it = s.framebuffers.find(framebuffer);
+  if (it == s.framebuffers.end()) return;
+  if (s.draw_fbo == it->second.get()) s.draw_fbo = nullptr;
+  if (s.read_fbo == it->second.get()) s.read_fbo = nullptr;
+  s.framebuffers.erase(it);
+}
+
+bool Context::IsFramebuffer(std::uint32_t framebuffer) const { return state_->framebuffers.count(framebuffer) != 0; }
+
+void Context::BindFramebuffer(Enum target, std::uint32_t framebuffer) {
+  auto& s = *state_;
+  if (target != FRAMEBUFFER && target != DRAW_FRAMEBUFFER && target != READ_FRAMEBUFFER)
+    return s.SetError(INVALID_ENUM);
+  FramebufferObject* f = nullptr;
+  if (framebuffer != 0) {
+    auto it = s.framebuffers.find(framebuffer);
+    if (it == s.framebuffers.end()) return s.SetError(INVALID_OPERATION);
+    f = it->second.get();
+  }
+  if (target != READ_FRAMEBUFFER) s.draw_fbo = f;
+  if (target != DRAW_FRAMEBUFFER) s.read_fbo = f;
+}
+
+void Context::FramebufferTexture2D(Enum target, Enum attachment, Enum textarget, std::uint32_t texture, int level) {
+  auto& s = *state_;
+  if (target != FRAMEBUFFER && target != DRAW_FRAMEBUFFER && target != READ_FRAMEBUFFER)
+    return s.SetError(INVALID_ENUM);
+  const bool color = attachment >= COLOR_ATTACHMENT0 && attachment < COLOR_ATTACHMENT0 + kMaxColorOutputs;
+  if (!color && attachment != DEPTH_ATTACHMENT) return s.SetError(INVALID_ENUM);
+  FramebufferObject* f = target == READ_FRAMEBUFFER ? s.read_fbo : s.draw_fbo;
+  if (!f) return s.SetError(INVALID_OPERATION);
+  Attachment& slot = color ? f->color[attachment - COLOR_ATTACHMENT0] : f->depth;
+  if (texture == 0) {
+    slot = Attachment{};
+    return;
+  }
+  if (!IsTexImageTarget(textarget)) return s.SetError(INVALID_ENUM);
+  auto it = s.textures.find(texture);
+  if (it == s.textures.end()) return s.SetError(INVALID_OPERATION);
+  const Enum kind = textarget == TEXTURE_2D ? TEXTURE_2D : TEXTURE_CUBE_MAP;
+  if (it->second->target != kind) return s.SetError(INVALID_OPERATION);
+  if (level < 0 || level >= detail::kMaxLevels) return s.SetError(INVALID_VALUE);
+  slot.texture = it->second;
+  slot.face = kind == TEXTURE_2D ? 0 : CubeFaceIndex(textarget);
+  slot.level = level;
+}
+
+Enum Context::CheckFramebufferStatus(Enum target) {
+  auto& s = *state_;
+  if (target != FRAMEBUFFER && target != DRAW_FRAMEBUFFER && target != READ_FRAMEBUFFER) {
+    s.SetError(INVALID_ENUM);
+    return 0;
+  }
+  const FramebufferObject* f = target == READ_FRAMEBUFFER ? s.read_fbo : s.draw_fbo;
+  return f ? FramebufferStatus(*f) : FRAMEBUFFER_COMPLETE;
+}
+
+void Context::DrawBuffers(int n, const Enum* bufs) {
+  auto& s = *state_;
+  if (n < 0 || n > kMaxColorOutputs) return s.SetError(INVALID_VALUE);
+  if (!s.draw_fbo) return s.SetError(INVALID_OPERATION);
+  Enum next[kMaxColorOutputs] = {NONE, NONE, NONE, NONE};
+  for (int i = 0; i < n; ++i) {
+    const Enum b = bufs[i];
+    if (b != NONE && (b < COLOR_ATTACHMENT0 || b >= COLOR_ATTACHMENT0 + kMaxColorOutputs))
+      return s.SetError(INVALID_ENUM);
+    for (int k = 0; k < i; ++k)
+      if (b != NONE && next[k] == b) return s.SetError(INVALID_OPERATION);  // one attachment, one output
+    next[i] = b;
+  }
+  std::copy(next, next + kMaxColorOutputs, s.draw_fbo->draw_buffers);
 }
 
 }  // namespace softgl

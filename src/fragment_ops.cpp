@@ -79,49 +79,46 @@ glm::vec4 Blend(const BlendState& state, const glm::vec4& src, const glm::vec4& 
   return out;
 }
 
-std::uint8_t FloatToUnorm8(float f) {
-  if (!(f > 0.0f)) return 0;  // also NaN
-  if (f >= 1.0f) return 255;
-  return std::uint8_t(std::lrint(f * 255.0f));
-}
-
-void ApplyFragmentOps(const FragmentOpsState& state, const QuadBuffer& quads, Framebuffer& fb) {
+void ApplyFragmentOps(const FragmentOpsState& state, const QuadBuffer& quads, const RenderTarget& target) {
   const StencilFace& face = quads.front_facing ? state.front : state.back;
+  // Without a depth or stencil buffer the test passes and nothing is written (OpenGL 4.6, 17.3.5 and 17.3.6).
+  const bool stencil_test = state.stencil_test && target.stencil != nullptr;
+  const bool depth_test = state.depth_test && target.depth != nullptr;
   const bool any_color = state.color_mask[0] || state.color_mask[1] || state.color_mask[2] || state.color_mask[3];
   for (int q = 0; q < quads.count; ++q) {
     for (int lane = 0; lane < 4; ++lane) {
       const int l = q * 4 + lane;
       if (!quads.live[l]) continue;
-      const std::size_t idx = fb.Index(quads.qx[q] + (lane & 1), quads.qy[q] + (lane >> 1));
+      const int x = quads.qx[q] + (lane & 1), y = quads.qy[q] + (lane >> 1);
       const FragmentOut& out = quads.out[l];
 
-      if (state.stencil_test && !StencilTest(face, fb.stencil[idx])) {
-        fb.stencil[idx] = StencilUpdate(face, face.sfail, fb.stencil[idx]);
+      if (stencil_test && !StencilTest(face, target.Stencil(x, y))) {
+        target.Stencil(x, y) = StencilUpdate(face, face.sfail, target.Stencil(x, y));
         continue;
       }
-      if (state.depth_test) {
+      if (depth_test) {
         // Depth is clamped to [0, 1] before the test (the depth buffer holds [0, 1]); NaN fails.
         const float z = std::clamp(out.depth, 0.0f, 1.0f);
-        if (std::isnan(out.depth) || !DepthTest(state.depth_func, z, fb.depth[idx])) {
-          if (state.stencil_test) fb.stencil[idx] = StencilUpdate(face, face.dpfail, fb.stencil[idx]);
+        if (std::isnan(out.depth) || !DepthTest(state.depth_func, z, target.Depth(x, y))) {
+          if (stencil_test) target.Stencil(x, y) = StencilUpdate(face, face.dpfail, target.Stencil(x, y));
           continue;
         }
-        if (state.depth_write) fb.depth[idx] = z;
+        if (state.depth_write) target.Depth(x, y) = z;
       }
-      if (state.stencil_test) fb.stencil[idx] = StencilUpdate(face, face.dppass, fb.stencil[idx]);
+      if (stencil_test) target.Stencil(x, y) = StencilUpdate(face, face.dppass, target.Stencil(x, y));
       if (!any_color) continue;
 
-      std::uint8_t* px = &fb.color[idx * 4];
-      // Colours are clamped to [0, 1] for a fixed-point colour buffer, before blending.
-      glm::vec4 color = glm::clamp(out.color[0], 0.0f, 1.0f);
-      for (int c = 0; c < 4; ++c)
-        if (std::isnan(out.color[0][c])) color[c] = 0.0f;
-      if (state.blend.enabled) {
-        const glm::vec4 dst(px[0] / 255.0f, px[1] / 255.0f, px[2] / 255.0f, px[3] / 255.0f);
-        color = Blend(state.blend, color, dst);
+      for (int o = 0; o < kMaxColorOutputs; ++o) {
+        const ColorBuffer& cb = target.color[o];
+        if (!cb.Present()) continue;
+        glm::vec4 color = out.color[o];
+        for (int c = 0; c < 4; ++c)
+          if (std::isnan(color[c])) color[c] = 0.0f;
+        // Fixed-point buffers take colours clamped to [0, 1], before blending.
+        if (cb.normalized) color = glm::clamp(color, 0.0f, 1.0f);
+        if (state.blend.enabled) color = Blend(state.blend, color, cb.Load(x, y));
+        cb.Store(x, y, color, state.color_mask);
       }
-      for (int c = 0; c < 4; ++c)
-        if (state.color_mask[c]) px[c] = FloatToUnorm8(color[c]);
     }
   }
 }

@@ -70,11 +70,8 @@ std::uint8_t StencilUpdate(const StencilFace& face, Enum op, std::uint8_t stored
 /// and equations, computed in float.
 glm::vec4 Blend(const BlendState& state, const glm::vec4& src, const glm::vec4& dst);
 
-/// OpenGL's float-to-normalized-fixed conversion for 8 bits: clamp to [0, 1], then round(f * 255).
-std::uint8_t FloatToUnorm8(float f);
-
 /// Runs the per-fragment operations for every live lane of `quads` (after the fragment shader has filled
-/// quads.out and cleared discarded lanes) into `fb`.
-void ApplyFragmentOps(const FragmentOpsState& state, const QuadBuffer& quads, Framebuffer& fb);
+/// quads.out and cleared discarded lanes) into the buffers of `target`.
+void ApplyFragmentOps(const FragmentOpsState& state, const QuadBuffer& quads, const RenderTarget& target);
 
 }  // namespace softgl::detail

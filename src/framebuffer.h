@@ -1,14 +1,53 @@
-// framebuffer.h — the offscreen framebuffer: RGBA8 colour, 32-bit float depth, 8-bit stencil.
-// Row 0 is the bottom row, as in OpenGL's window coordinates.
+// framebuffer.h — where fragments go: the context's own framebuffer (RGBA8 colour, 32-bit float depth, 8-bit
+// stencil) and RenderTarget, the view of whatever is bound for drawing (that framebuffer, or a framebuffer object's
+// texture attachments) that the per-fragment operations write through. Row 0 is the bottom row, as in OpenGL.
 #pragma once
 
 #include <cstdint>
 #include <vector>
 
+#include <softgl/shader.h>
+
 #include "types.h"
 
 namespace softgl::detail {
 
+/// One colour buffer: 8-bit RGBA bytes (the default framebuffer) or a texture level's RGBA floats.
+struct ColorBuffer {
+  std::uint8_t* rgba8 = nullptr;
+  float* texels = nullptr;
+  bool normalized = true;  // fixed-point format: values clamped to [0, 1] and rounded to 8 bits
+  int components = 4;      // channels of the format (R8: 1); the others are never written
+  int pitch = 0;           // pixels from one row to the next
+  bool Present() const { return rgba8 != nullptr || texels != nullptr; }
+  std::size_t Index(int x, int y) const { return std::size_t(y) * std::size_t(pitch) + std::size_t(x); }
+  glm::vec4 Load(int x, int y) const;
+  /// Stores `c` through `mask` with the format's conversion (clamp and round for fixed point).
+  void Store(int x, int y, const glm::vec4& c, const bool mask[4]) const;
+};
+
+/// The buffers drawing writes to; color[i] receives fragment output i (draw buffers already applied).
+struct RenderTarget {
+  int width = 0, height = 0;
+  ColorBuffer color[kMaxColorOutputs];
+  float* depth = nullptr;           // null: no depth buffer (the depth test then always passes)
+  int depth_stride = 1;             // floats from one depth value to the next (4 in a depth texture)
+  int depth_pitch = 0;              // depth values from one row to the next
+  std::uint8_t* stencil = nullptr;  // null: no stencil buffer (the stencil test then always passes); pitch = width
+  Rect Bounds() const { return Rect{0, 0, width, height}; }
+  float& Depth(int x, int y) const {
+    return depth[(std::size_t(y) * std::size_t(depth_pitch) + std::size_t(x)) * std::size_t(depth_stride)];
+  }
+  std::uint8_t& Stencil(int x, int y) const { return stencil[std::size_t(y) * std::size_t(width) + std::size_t(x)]; }
+
+  /// Clears rectangle r (inside the target) of every colour buffer through `mask`.
+  void ClearColor(const Rect& r, const glm::vec4& value, const bool mask[4]) const;
+  void ClearDepth(const Rect& r, float value) const;
+  /// Clears the stencil bits of write_mask in rectangle r.
+  void ClearStencil(const Rect& r, std::uint8_t value, std::uint8_t write_mask) const;
+};
+
+/// The context's own framebuffer.
 struct Framebuffer {
   int width = 0;
   int height = 0;
@@ -20,13 +59,10 @@ struct Framebuffer {
   /// if the memory cannot be had.
   bool Allocate(int w, int h);
   std::size_t Index(int x, int y) const { return std::size_t(y) * std::size_t(width) + std::size_t(x); }
-  Rect Bounds() const { return Rect{0, 0, width, height}; }
-
-  /// Clears rectangle r (inside the framebuffer) of the colour buffer, writing only the channels in mask.
-  void ClearColor(const Rect& r, const std::uint8_t rgba[4], const bool mask[4]);
-  void ClearDepth(const Rect& r, float value);
-  /// Clears the stencil bits of write_mask in rectangle r.
-  void ClearStencil(const Rect& r, std::uint8_t value, std::uint8_t write_mask);
+  RenderTarget Target();
 };
+
+/// OpenGL's float-to-normalized-fixed conversion for 8 bits: clamp to [0, 1], then round(f * 255).
+std::uint8_t FloatToUnorm8(float f);
 
 }  // namespace softgl::detail

@@ -12,6 +12,8 @@
 
 #include <cstring>
 
+#include "image_io.h"
+
 namespace softgl {
 
 bool WritePng(const std::string& path, const Image& image) {
@@ -34,5 +36,49 @@ bool ReadImage(const std::string& path, Image& image, std::string* error) {
   stbi_image_free(pixels);
   return true;
 }
+
+namespace detail {
+
+bool LoadImageFile(const std::string& path, bool flip_vertically, LoadedImage& out, std::string* error) {
+  int w = 0, h = 0, n = 0;
+  out = LoadedImage{};
+  auto fail = [&](const char* what) {
+    if (error) *error = path + ": " + (stbi_failure_reason() ? stbi_failure_reason() : what);
+    return false;
+  };
+  if (!stbi_info(path.c_str(), &w, &h, &n)) return fail("cannot read image");
+  out.hdr = stbi_is_hdr(path.c_str()) != 0;
+  std::size_t row_bytes = 0;
+  if (out.hdr) {
+    float* data = stbi_loadf(path.c_str(), &w, &h, &n, 0);
+    if (!data) return fail("cannot decode image");
+    out.floats.assign(data, data + std::size_t(w) * std::size_t(h) * std::size_t(n));
+    stbi_image_free(data);
+    row_bytes = std::size_t(w) * std::size_t(n) * sizeof(float);
+  } else {
+    stbi_uc* data = stbi_load(path.c_str(), &w, &h, &n, 0);
+    if (!data) return fail("cannot decode image");
+    out.bytes.assign(data, data + std::size_t(w) * std::size_t(h) * std::size_t(n));
+    stbi_image_free(data);
+    row_bytes = std::size_t(w) * std::size_t(n);
+  }
+  out.width = w;
+  out.height = h;
+  out.channels = n;
+  if (flip_vertically) {
+    auto* base = out.hdr ? reinterpret_cast<std::uint8_t*>(out.floats.data()) : out.bytes.data();
+    std::vector<std::uint8_t> tmp(row_bytes);
+    for (int y = 0; y < h / 2; ++y) {
+      std::uint8_t* a = base + std::size_t(y) * row_bytes;
+      std::uint8_t* b = base + std::size_t(h - 1 - y) * row_bytes;
+      std::memcpy(tmp.data(), a, row_bytes);
+      std::memcpy(a, b, row_bytes);
+      std::memcpy(b, tmp.data(), row_bytes);
+    }
+  }
+  return true;
+}
+
+}  // namespace detail
 
 }  // namespace softgl

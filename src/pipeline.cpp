@@ -16,7 +16,8 @@ namespace {
 constexpr int kVertexBatch = 64;
 
 // Stage 1-2: fetch and shade every vertex the draw references, once each where indices repeat.
-void ShadeVertices(const DrawCall& call, const FetchPlan& fetch, const Program& program, Scratch& s) {
+void ShadeVertices(const DrawCall& call, const FetchPlan& fetch, const Program& program, const Textures* textures,
+                   Scratch& s) {
   const int count = call.count;
   auto& to_shade = s.shade_indices;
   auto& map = s.element_to_shaded;
@@ -61,6 +62,7 @@ void ShadeVertices(const DrawCall& call, const FetchPlan& fetch, const Program& 
     batch.positions = out.position.data() + base;
     batch.point_sizes = out.point_size.data() + base;
     batch.varyings = out.varyings.data() + std::size_t(base) * out.nvar;
+    batch.textures = textures;
     program.ShadeVertices(batch);
   }
 }
@@ -73,7 +75,8 @@ void ToClipVertex(const ShadedVertices& sv, std::uint32_t i, ClipVertex& out) {
 struct FragmentStage {
   const Program* program;
   const FragmentOpsState* ops;
-  Framebuffer* fb;
+  const RenderTarget* target;
+  const Textures* textures;
 
   // Stages 8-9 on a full batch of quads: the fragment shader, then the per-fragment operations.
   static void Run(void* user, QuadBuffer& quads) {
@@ -85,8 +88,9 @@ struct FragmentStage {
     batch.front_facing = quads.front_facing;
     batch.out = quads.out;
     batch.live = quads.live;
+    batch.textures = self->textures;
     self->program->ShadeQuads(batch);
-    ApplyFragmentOps(*self->ops, quads, *self->fb);
+    ApplyFragmentOps(*self->ops, quads, *self->target);
   }
 };
 
@@ -172,14 +176,15 @@ class PrimitiveRunner {
 
 }  // namespace
 
-void Draw(const DrawCall& call, const FetchPlan& fetch, const DrawState& state, Framebuffer& fb, Scratch& scratch) {
+void Draw(const DrawCall& call, const FetchPlan& fetch, const DrawState& state, const RenderTarget& target,
+          Scratch& scratch) {
   if (call.count <= 0 || state.program == nullptr || state.bounds.Empty()) return;
-  ShadeVertices(call, fetch, *state.program, scratch);
+  ShadeVertices(call, fetch, *state.program, state.textures, scratch);
 
   Primitives& prims = scratch.primitives;
   AssemblePrimitives(call.mode, call.count, prims);
 
-  FragmentStage fragment{state.program, &state.ops, &fb};
+  FragmentStage fragment{state.program, &state.ops, &target, state.textures};
   const QuadSink sink{&FragmentStage::Run, &fragment};
   QuadBuffer& quads = *scratch.quads;
   quads.count = 0;

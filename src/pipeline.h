@@ -36,6 +36,7 @@ struct DrawState {
   bool offset_fill = false, offset_line = false, offset_point = false;  // POLYGON_OFFSET_FILL / _LINE / _POINT
   float offset_factor = 0.0f, offset_units = 0.0f;
   FragmentOpsState ops;
+  const Textures* textures = nullptr;  // what the shader stages sample
 };
 
 /// The vertices a draw reads: either `count` consecutive vertices from `first`, or `count` element indices.
@@ -59,6 +60,7 @@ struct Scratch {
 };
 
 /// Runs one draw. May throw std::bad_alloc for a draw too large for memory; nothing else is thrown.
-void Draw(const DrawCall& call, const FetchPlan& fetch, const DrawState& state, Framebuffer& fb, Scratch& scratch);
+void Draw(const DrawCall& call, const FetchPlan& fetch, const DrawState& state, const RenderTarget& target,
+          Scratch& scratch);
 
 }  // namespace softgl::detail

@@ -15,6 +15,9 @@
 #include <softgl/enums.h>
 #include <softgl/image.h>
 #include <softgl/shader.h>
+#include <softgl/texture.h>
+
+#include <string>
 
 namespace softgl {
 
@@ -90,6 +93,79 @@ class Context {
   void UseProgram(const Program& program);
   /// Unbinds the current shader; draws then record INVALID_OPERATION.
   void UseProgram(std::nullptr_t);
+
+  // ---- Textures ----------------------------------------------------------------------------------------------
+  /// Creates a texture object and returns its id (never 0). Its target is fixed by its first BindTexture.
+  std::uint32_t GenTexture();
+  void GenTextures(int n, std::uint32_t* ids);
+  /// Deletes a texture: it is unbound from every unit and detached from the bound framebuffer objects; a framebuffer
+  /// object not bound keeps using its storage, as in OpenGL. 0 and unknown ids are ignored.
+  void DeleteTexture(std::uint32_t texture);
+  bool IsTexture(std::uint32_t texture) const;
+  /// Selects the texture unit that BindTexture, TexImage2D, TexParameter and GenerateMipmap act on: TEXTURE0 + i,
+  /// i < kMaxTextureUnits (else INVALID_ENUM).
+  void ActiveTexture(Enum unit);
+  /// Binds texture (0 unbinds) to TEXTURE_2D or TEXTURE_CUBE_MAP of the active unit. Bad target: INVALID_ENUM;
+  /// unknown id, or a texture first bound to the other target: INVALID_OPERATION. There is no default texture
+  /// object: texture calls with nothing bound record INVALID_OPERATION.
+  void BindTexture(Enum target, std::uint32_t texture);
+  /// Defines level `level` of the bound texture: target TEXTURE_2D or a TEXTURE_CUBE_MAP_* face; internal_format
+  /// RGBA8, RGB8, RG8, R8, RGBA32F, R32F or DEPTH_COMPONENT (also DEPTH_COMPONENT24/32F: all depth is stored as
+  /// float); pixels of `format` RED, RG, RGB, RGBA or DEPTH_COMPONENT and `type` UNSIGNED_BYTE or FLOAT, rows bottom
+  /// first, each row aligned to UNPACK_ALIGNMENT; null pixels leave the level zero. Errors: bad target, format or
+  /// type: INVALID_ENUM; unsupported internal format, negative or too large size, level out of range, border != 0,
+  /// a non-square cube face: INVALID_VALUE; depth data for a colour format or the reverse, nothing bound:
+  /// INVALID_OPERATION; no memory: OUT_OF_MEMORY.
+  void TexImage2D(Enum target, int level, Enum internal_format, int width, int height, int border, Enum format,
+                  Enum type, const void* pixels);
+  /// Replaces the rectangle (x, y, width, height) of a defined level. Outside the level: INVALID_VALUE; level not
+  /// defined: INVALID_OPERATION.
+  void TexSubImage2D(Enum target, int level, int x, int y, int width, int height, Enum format, Enum type,
+                     const void* pixels);
+  /// Loads an image file (PNG, JPEG, TGA, BMP, HDR, through stb_image) into level 0 of the texture bound to
+  /// target (TEXTURE_2D or a cube face): 1 to 4 channels become R8, RG8, RGB8, RGBA8; HDR becomes RGBA32F.
+  /// Image files store the top row first; flip_vertically puts the bottom row at t = 0, OpenGL's convention.
+  /// Returns false with a message in `error` for a missing or corrupt file (the texture is unchanged, no GL error),
+  /// or an image too large (INVALID_VALUE).
+  bool TexImage2DFromFile(Enum target, const std::string& path, bool flip_vertically, std::string* error = nullptr);
+  /// Builds levels base+1 .. 1x1 of the bound texture from its base level (each texel the bilinear sample of the
+  /// level above at its centre: the 2x2 average for even sizes). Base level undefined: INVALID_OPERATION.
+  void GenerateMipmap(Enum target);
+  /// Sampling state of the bound texture: TEXTURE_MIN_FILTER (NEAREST, LINEAR, NEAREST_MIPMAP_NEAREST,
+  /// LINEAR_MIPMAP_NEAREST, NEAREST_MIPMAP_LINEAR (default), LINEAR_MIPMAP_LINEAR), TEXTURE_MAG_FILTER (NEAREST,
+  /// LINEAR (default)), TEXTURE_WRAP_S/T/R (REPEAT (default), MIRRORED_REPEAT, CLAMP_TO_EDGE, CLAMP_TO_BORDER),
+  /// TEXTURE_BASE_LEVEL, TEXTURE_MAX_LEVEL, TEXTURE_MIN_LOD, TEXTURE_MAX_LOD, TEXTURE_LOD_BIAS,
+  /// TEXTURE_COMPARE_MODE (NONE, COMPARE_REF_TO_TEXTURE), TEXTURE_COMPARE_FUNC (the eight comparisons).
+  /// Bad name or value: INVALID_ENUM; negative base or max level: INVALID_VALUE.
+  void TexParameteri(Enum target, Enum pname, int value);
+  void TexParameterf(Enum target, Enum pname, float value);
+  /// TEXTURE_BORDER_COLOR (four floats), or any single-valued name.
+  void TexParameterfv(Enum target, Enum pname, const float* values);
+  /// UNPACK_ALIGNMENT: 1, 2, 4 (default) or 8 (else INVALID_VALUE; another name: INVALID_ENUM).
+  void PixelStore(Enum pname, int value);
+
+  // ---- Framebuffer objects -----------------------------------------------------------------------------------
+  std::uint32_t GenFramebuffer();
+  void GenFramebuffers(int n, std::uint32_t* ids);
+  /// Deletes a framebuffer object; where it is bound, 0 (the context's own framebuffer) becomes bound.
+  void DeleteFramebuffer(std::uint32_t framebuffer);
+  bool IsFramebuffer(std::uint32_t framebuffer) const;
+  /// Binds a framebuffer object (0: the context's own) to FRAMEBUFFER (both), DRAW_FRAMEBUFFER or READ_FRAMEBUFFER.
+  void BindFramebuffer(Enum target, std::uint32_t framebuffer);
+  /// Attaches level `level` of a 2D texture (textarget TEXTURE_2D) or cube face (TEXTURE_CUBE_MAP_*) to
+  /// COLOR_ATTACHMENT0 .. COLOR_ATTACHMENT0 + 3 or DEPTH_ATTACHMENT of the framebuffer bound to target; texture
+  /// 0 detaches. Errors: bad target or attachment: INVALID_ENUM; framebuffer 0 bound, unknown texture, textarget
+  /// not the texture's: INVALID_OPERATION; level out of range: INVALID_VALUE.
+  void FramebufferTexture2D(Enum target, Enum attachment, Enum textarget, std::uint32_t texture, int level);
+  /// FRAMEBUFFER_COMPLETE, or why not: INCOMPLETE_ATTACHMENT (an attachment's level is not defined, or its format
+  /// cannot be rendered to that attachment), INCOMPLETE_MISSING_ATTACHMENT (none), INCOMPLETE_DRAW_BUFFER (a draw
+  /// buffer names an empty attachment). Attachments of different sizes are allowed, as in OpenGL 3.0 and later:
+  /// drawing covers their intersection. Draws and clears on an incomplete framebuffer record
+  /// INVALID_FRAMEBUFFER_OPERATION. Bad target: INVALID_ENUM and 0.
+  Enum CheckFramebufferStatus(Enum target);
+  /// Which attachment fragment output i writes: bufs[i] is COLOR_ATTACHMENT0 + k or NONE (default: output 0 to
+  /// COLOR_ATTACHMENT0, the others NONE). For the bound draw framebuffer object; n > 4: INVALID_VALUE.
+  void DrawBuffers(int n, const Enum* bufs);
 
   // ---- Fixed-function state ----------------------------------------------------------------------------------
   /// Maps normalized device coordinates to window pixels. width or height < 0: INVALID_VALUE. Sizes are
@@ -171,6 +247,9 @@ class Context {
   void DrawElement(Enum mode, int count, Enum type, std::size_t offset);
 
   // ---- Reading back ------------------------------------------------------------------------------------------
+  // From the framebuffer bound to READ_FRAMEBUFFER: the context's own, or a framebuffer object's
+  // COLOR_ATTACHMENT0 (converted to 8 bits) and depth attachment.
+
   /// The colour buffer, top row first (ready for WritePng).
   Image ReadPixels() const;
   /// The colour of window pixel (x, y), y counted from the bottom as in OpenGL; {0,0,0,0} outside.

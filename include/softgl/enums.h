@@ -114,4 +114,70 @@ inline constexpr Enum MAX = 0x8008;
 inline constexpr Enum FUNC_SUBTRACT = 0x800A;
 inline constexpr Enum FUNC_REVERSE_SUBTRACT = 0x800B;
 
+// Textures.
+inline constexpr Enum NONE = 0;
+inline constexpr Enum TEXTURE_2D = 0x0DE1;
+inline constexpr Enum TEXTURE_CUBE_MAP = 0x8513;
+inline constexpr Enum TEXTURE_CUBE_MAP_POSITIVE_X = 0x8515;
+inline constexpr Enum TEXTURE_CUBE_MAP_NEGATIVE_X = 0x8516;
+inline constexpr Enum TEXTURE_CUBE_MAP_POSITIVE_Y = 0x8517;
+inline constexpr Enum TEXTURE_CUBE_MAP_NEGATIVE_Y = 0x8518;
+inline constexpr Enum TEXTURE_CUBE_MAP_POSITIVE_Z = 0x8519;
+inline constexpr Enum TEXTURE_CUBE_MAP_NEGATIVE_Z = 0x851A;
+inline constexpr Enum TEXTURE0 = 0x84C0;  // TEXTURE0 + i selects unit i
+
+// Pixel formats (format argument) and internal formats.
+inline constexpr Enum DEPTH_COMPONENT = 0x1902;
+inline constexpr Enum RED = 0x1903;
+inline constexpr Enum RGB = 0x1907;
+inline constexpr Enum RGBA = 0x1908;
+inline constexpr Enum RG = 0x8227;
+inline constexpr Enum R8 = 0x8229;
+inline constexpr Enum RG8 = 0x822B;
+inline constexpr Enum RGB8 = 0x8051;
+inline constexpr Enum RGBA8 = 0x8058;
+inline constexpr Enum R32F = 0x822E;
+inline constexpr Enum RGBA32F = 0x8814;
+inline constexpr Enum DEPTH_COMPONENT24 = 0x81A6;
+inline constexpr Enum DEPTH_COMPONENT32F = 0x8CAC;
+
+// Texture parameters and their values.
+inline constexpr Enum TEXTURE_MAG_FILTER = 0x2800;
+inline constexpr Enum TEXTURE_MIN_FILTER = 0x2801;
+inline constexpr Enum TEXTURE_WRAP_S = 0x2802;
+inline constexpr Enum TEXTURE_WRAP_T = 0x2803;
+inline constexpr Enum TEXTURE_WRAP_R = 0x8072;
+inline constexpr Enum TEXTURE_BORDER_COLOR = 0x1004;
+inline constexpr Enum TEXTURE_MIN_LOD = 0x813A;
+inline constexpr Enum TEXTURE_MAX_LOD = 0x813B;
+inline constexpr Enum TEXTURE_BASE_LEVEL = 0x813C;
+inline constexpr Enum TEXTURE_MAX_LEVEL = 0x813D;
+inline constexpr Enum TEXTURE_LOD_BIAS = 0x8501;
+inline constexpr Enum TEXTURE_COMPARE_MODE = 0x884C;
+inline constexpr Enum TEXTURE_COMPARE_FUNC = 0x884D;
+inline constexpr Enum COMPARE_REF_TO_TEXTURE = 0x884E;
+inline constexpr Enum NEAREST = 0x2600;
+inline constexpr Enum LINEAR = 0x2601;
+inline constexpr Enum NEAREST_MIPMAP_NEAREST = 0x2700;
+inline constexpr Enum LINEAR_MIPMAP_NEAREST = 0x2701;
+inline constexpr Enum NEAREST_MIPMAP_LINEAR = 0x2702;
+inline constexpr Enum LINEAR_MIPMAP_LINEAR = 0x2703;
+inline constexpr Enum REPEAT = 0x2901;
+inline constexpr Enum CLAMP_TO_BORDER = 0x812D;
+inline constexpr Enum CLAMP_TO_EDGE = 0x812F;
+inline constexpr Enum MIRRORED_REPEAT = 0x8370;
+inline constexpr Enum UNPACK_ALIGNMENT = 0x0CF5;
+
+// Framebuffer objects.
+inline constexpr Enum FRAMEBUFFER = 0x8D40;
+inline constexpr Enum READ_FRAMEBUFFER = 0x8CA8;
+inline constexpr Enum DRAW_FRAMEBUFFER = 0x8CA9;
+inline constexpr Enum COLOR_ATTACHMENT0 = 0x8CE0;  // COLOR_ATTACHMENT0 + i
+inline constexpr Enum DEPTH_ATTACHMENT = 0x8D00;
+inline constexpr Enum FRAMEBUFFER_COMPLETE = 0x8CD5;
+inline constexpr Enum FRAMEBUFFER_INCOMPLETE_ATTACHMENT = 0x8CD6;
+inline constexpr Enum FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT = 0x8CD7;
+inline constexpr Enum FRAMEBUFFER_INCOMPLETE_DRAW_BUFFER = 0x8CDB;
+inline constexpr Enum FRAMEBUFFER_UNSUPPORTED = 0x8CDD;
+
 }  // namespace softgl

@@ -29,6 +29,7 @@
 #include <type_traits>
 
 #include <glm/glm.hpp>
+#include <softgl/texture.h>
 
 namespace softgl {
 
@@ -47,6 +48,8 @@ struct VertexIn {
   const glm::vec4* attrib;
   /// gl_VertexID: the index of this vertex (the element value for DrawElement).
   int vertex_id;
+  /// The textures bound for this draw (SampleLod only: there are no derivatives in the vertex stage).
+  const Textures* textures;
 };
 
 /// What the vertex stage writes.
@@ -71,6 +74,20 @@ struct FragmentIn {
   bool front_facing;         ///< gl_FrontFacing.
   const Varyings* quad;      ///< The four lanes of this fragment's 2x2 quad (lane = x&1 + 2*(y&1)).
   int lane;                  ///< This fragment's lane in quad.
+  const Textures* textures;  ///< The textures bound for this draw.
+
+  /// texture(sampler2D, uv) with uv a varying: the level of detail comes from uv's derivatives across the quad.
+  glm::vec4 Texture(int unit, glm::vec2 Varyings::*uv, float bias = 0.0f) const {
+    return textures->Sample(unit, varyings.*uv, dFdx(uv), dFdy(uv), bias);
+  }
+  /// texture(sampler2D, uv) for a computed uv: pass its derivatives (e.g. dFdx(&V::uv) * scale).
+  glm::vec4 Texture(int unit, glm::vec2 uv, glm::vec2 duv_dx, glm::vec2 duv_dy, float bias = 0.0f) const {
+    return textures->Sample(unit, uv, duv_dx, duv_dy, bias);
+  }
+  /// texture(samplerCube, dir) with dir a varying.
+  glm::vec4 TextureCube(int unit, glm::vec3 Varyings::*dir, float bias = 0.0f) const {
+    return textures->SampleCube(unit, varyings.*dir, dFdx(dir), dFdy(dir), bias);
+  }
 
   /// Screen-space derivative of a varying along x (GLSL dFdx, coarse within the 2x2 quad).
   template <class T>
@@ -94,6 +111,7 @@ struct VertexBatch {
   glm::vec4* positions = nullptr;      ///< out: [count] clip-space positions
   float* point_sizes = nullptr;        ///< out: [count]
   float* varyings = nullptr;           ///< out: [count][VaryingFloats()]
+  const Textures* textures = nullptr;
 };
 
 /// A batch of 2x2 fragment quads handed to the fragment stage. Filled by the pipeline.
@@ -104,6 +122,7 @@ struct QuadBatch {
   bool front_facing = true;
   FragmentOut* out = nullptr;  ///< [count * 4]
   std::uint8_t* live = nullptr;  ///< [count * 4] in: 1 for covered lanes; out: 0 where the shader discarded
+  const Textures* textures = nullptr;
 };
 
 /// The interface the pipeline uses to run a shader. Subclass Shader<> rather than this.
@@ -140,7 +159,8 @@ class Shader : public Program {
     const Derived& self = static_cast<const Derived&>(*this);
     for (int i = 0; i < batch.count; ++i) {
       VertexOut<Varyings> out;
-      self.Vertex(VertexIn{batch.attribs + std::size_t(i) * kMaxVertexAttribs, batch.vertex_ids[i]}, out);
+      self.Vertex(VertexIn{batch.attribs + std::size_t(i) * kMaxVertexAttribs, batch.vertex_ids[i], batch.textures},
+                  out);
       batch.positions[i] = out.position;
       batch.point_sizes[i] = out.point_size;
       if constexpr (kFloats > 0)
@@ -158,7 +178,8 @@ class Shader : public Program {
                     sizeof(Varyings) * 4);
       for (int lane = 0; lane < 4; ++lane) {
         if (!batch.live[base + lane]) continue;
-        const FragmentIn<Varyings> in{lanes[lane], batch.frag_coord[base + lane], batch.front_facing, lanes, lane};
+        const FragmentIn<Varyings> in{lanes[lane], batch.frag_coord[base + lane], batch.front_facing, lanes, lane,
+                                      batch.textures};
         FragmentOut& out = batch.out[base + lane];
         out.depth = in.frag_coord.z;
         if (!self.Fragment(in, out)) batch.live[base + lane] = 0;

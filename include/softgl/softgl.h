@@ -5,3 +5,4 @@
 #include <softgl/enums.h>
 #include <softgl/image.h>
 #include <softgl/shader.h>
+#include <softgl/texture.h>

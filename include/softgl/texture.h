@@ -1,0 +1,46 @@
+// softgl/texture.h — textures as the shader stages see them: sampling by texture unit.
+//
+// A draw hands its shader a `Textures`: for each of the kMaxTextureUnits units, the TEXTURE_2D and
+// TEXTURE_CUBE_MAP textures bound to it and their sampling state. Filtering, wrapping and the level of detail
+// follow the OpenGL 4.6 specification (section 8.14): texel centres at +0.5, wrap applied per texel, lambda from
+// the screen-space derivatives of the texture coordinates. Sampling a unit with no texture, or an incomplete one,
+// returns (0, 0, 0, 1), as OpenGL does.
+//
+// In a fragment shader use FragmentIn::Texture(unit, &Varyings::uv) (derivatives taken across the 2x2 quad), or
+// pass derivatives yourself; the vertex stage has only SampleLod.
+#pragma once
+
+#include <glm/glm.hpp>
+
+namespace softgl {
+
+/// Number of texture units (GL_MAX_COMBINED_TEXTURE_IMAGE_UNITS as far as softgl goes).
+inline constexpr int kMaxTextureUnits = 16;
+/// Largest texture width or height (GL_MAX_TEXTURE_SIZE).
+inline constexpr int kMaxTextureSize = 16384;
+
+namespace detail {
+struct TextureView;  // a bound texture resolved for one draw; defined in src/
+}
+
+class Textures {
+ public:
+  /// texture(sampler2D, uv): filtered sample of unit's 2D texture; duv_dx, duv_dy are the derivatives of uv along
+  /// window x and y, bias is added to the level of detail.
+  glm::vec4 Sample(int unit, glm::vec2 uv, glm::vec2 duv_dx, glm::vec2 duv_dy, float bias = 0.0f) const;
+  /// textureLod(sampler2D, uv, lod).
+  glm::vec4 SampleLod(int unit, glm::vec2 uv, float lod) const;
+  /// texture(samplerCube, dir): face chosen by the major axis of dir, then as Sample on that face.
+  glm::vec4 SampleCube(int unit, glm::vec3 dir, glm::vec3 ddir_dx, glm::vec3 ddir_dy, float bias = 0.0f) const;
+  /// texture(sampler2DShadow, vec3(uv, ref)): each texel the filter uses is compared with ref by the texture's
+  /// TEXTURE_COMPARE_FUNC (1 if it passes, 0 if not) and the results are filtered: percentage-closer filtering.
+  /// Needs TEXTURE_COMPARE_MODE = COMPARE_REF_TO_TEXTURE on a depth texture; otherwise returns 0.
+  float SampleShadow(int unit, glm::vec2 uv, float ref, glm::vec2 duv_dx, glm::vec2 duv_dy) const;
+  /// textureSize(sampler2D, level): the size of a level of unit's 2D texture, (0, 0) if there is none.
+  glm::ivec2 Size(int unit, int level = 0) const;
+
+  const detail::TextureView* unit_2d[kMaxTextureUnits] = {};
+  const detail::TextureView* unit_cube[kMaxTextureUnits] = {};
+};
+
+}  // namespace softgl

@@ -1,0 +1,192 @@
+// texture_sampler.cpp — texture sampling for the shader stages: level of detail, mipmap selection, NEAREST and
+// LINEAR filtering, wrap modes, cube map faces and depth comparison (OpenGL 4.6, sections 8.13 to 8.14, 8.22).
+#include <algorithm>
+#include <cmath>
+
+#include <softgl/texture.h>
+
+#include "fragment_ops.h"
+#include "texture.h"
+
+namespace softgl {
+
+namespace {
+
+using detail::SamplerParams;
+using detail::TextureLevel;
+using detail::TextureView;
+
+const glm::vec4 kMissing(0.0f, 0.0f, 0.0f, 1.0f);  // what an incomplete or missing texture samples as
+
+// Table 8.20: the texel index i wrapped into [0, size); -1 for a border texel.
+int Wrap(Enum mode, long i, int size) {
+  switch (mode) {
+    case CLAMP_TO_EDGE: return int(std::clamp<long>(i, 0, size - 1));
+    case CLAMP_TO_BORDER: return (i < 0 || i >= size) ? -1 : int(i);
+    case MIRRORED_REPEAT: {
+      const long m = ((i % (2L * size)) + 2L * size) % (2L * size);
+      const long a = m - size;
+      const long mirror = a >= 0 ? a : -(1 + a);
+      return int((size - 1) - mirror);
+    }
+    default: return int(((i % size) + size) % size);  // REPEAT
+  }
+}
+
+// Texel-space coordinate, kept finite and within a range where integer conversion is defined.
+float TexelCoord(float s, int size) {
+  const float u = s * float(size);
+  return std::isnan(u) ? 0.0f : std::clamp(u, -1e9f, 1e9f);
+}
+
+struct DepthCompare {
+  bool on = false;
+  Enum func = LEQUAL;
+  float ref = 0.0f;
+};
+
+glm::vec4 Fetch(const SamplerParams& p, const TextureLevel& level, long i, long j, const DepthCompare& cmp) {
+  const int wi = Wrap(p.wrap_s, i, level.width), wj = Wrap(p.wrap_t, j, level.height);
+  glm::vec4 t = p.border;
+  if (wi >= 0 && wj >= 0) {
+    const float* texel = level.At(wi, wj);
+    t = glm::vec4(texel[0], texel[1], texel[2], texel[3]);
+  }
+  if (cmp.on) return glm::vec4(detail::Compare(cmp.func, cmp.ref, t.r) ? 1.0f : 0.0f);
+  return t;
+}
+
+// One level, NEAREST or LINEAR (section 8.14.2): texel centres at +0.5.
+glm::vec4 FilterLevel(const SamplerParams& p, const TextureLevel& level, Enum filter, glm::vec2 st,
+                      const DepthCompare& cmp) {
+  const float u = TexelCoord(st.x, level.width), v = TexelCoord(st.y, level.height);
+  if (filter == NEAREST) return Fetch(p, level, long(std::floor(u)), long(std::floor(v)), cmp);
+  const float fu = u - 0.5f, fv = v - 0.5f;
+  const long i0 = long(std::floor(fu)), j0 = long(std::floor(fv));
+  const float a = fu - float(i0), b = fv - float(j0);
+  return (1 - a) * (1 - b) * Fetch(p, level, i0, j0, cmp) + a * (1 - b) * Fetch(p, level, i0 + 1, j0, cmp) +
+         (1 - a) * b * Fetch(p, level, i0, j0 + 1, cmp) + a * b * Fetch(p, level, i0 + 1, j0 + 1, cmp);
+}
+
+// Level of detail (section 8.14.1): lambda = log2(rho) + biases, clamped to [min_lod, max_lod].
+float Lambda(const TextureView& view, glm::vec2 dx, glm::vec2 dy, float shader_bias) {
+  const TextureLevel& base = view.texture->levels[0][view.base];
+  const glm::vec2 size(float(base.width), float(base.height));
+  const float rho = std::max(glm::length(dx * size), glm::length(dy * size));
+  const SamplerParams& p = view.texture->params;
+  const float bias = std::clamp(p.lod_bias + shader_bias, -16.0f, 16.0f);
+  float lambda = std::log2(rho) + bias;
+  if (std::isnan(lambda)) lambda = 0.0f;
+  return std::clamp(lambda, p.min_lod, p.max_lod);
+}
+
+// Minification or magnification at level of detail lambda, on one face (section 8.14.2 to 8.14.3).
+glm::vec4 SampleFace(const TextureView& view, int face, glm::vec2 st, float lambda, const DepthCompare& cmp) {
+  const SamplerParams& p = view.texture->params;
+  const auto& levels = view.texture->levels[face];
+  const bool nearest_mip = p.min_filter == NEAREST_MIPMAP_NEAREST || p.min_filter == LINEAR_MIPMAP_NEAREST;
+  const float c = (p.mag_filter == LINEAR && nearest_mip) ? 0.5f : 0.0f;
+  if (lambda <= c) return FilterLevel(p, levels[view.base], p.mag_filter, st, cmp);
+  const Enum filter = (p.min_filter == LINEAR || p.min_filter == LINEAR_MIPMAP_NEAREST ||
+                       p.min_filter == LINEAR_MIPMAP_LINEAR)
+                          ? LINEAR
+                          : NEAREST;
+  switch (p.min_filter) {
+    case NEAREST:
+    case LINEAR: return FilterLevel(p, levels[view.base], filter, st, cmp);
+    case NEAREST_MIPMAP_NEAREST:
+    case LINEAR_MIPMAP_NEAREST: {
+      const int d = lambda <= 0.5f ? view.base
+                                   : int(std::min<float>(float(view.base) + std::ceil(lambda + 0.5f) - 1.0f,
+                                                         float(view.q)));
+      return FilterLevel(p, levels[d], filter, st, cmp);
+    }
+    default: {  // *_MIPMAP_LINEAR
+      if (float(view.base) + lambda >= float(view.q)) return FilterLevel(p, levels[view.q], filter, st, cmp);
+      const float fl = std::floor(lambda);
+      const int d1 = view.base + int(fl);
+      const float f = lambda - fl;
+      return (1.0f - f) * FilterLevel(p, levels[d1], filter, st, cmp) +
+             f * FilterLevel(p, levels[d1 + 1], filter, st, cmp);
+    }
+  }
+}
+
+const TextureView* Usable(const TextureView* const* units, int unit) {
+  if (unit < 0 || unit >= kMaxTextureUnits) return nullptr;
+  const TextureView* v = units[unit];
+  return (v && v->complete) ? v : nullptr;
+}
+
+// Table 8.19: the face a direction selects, and its (s, t) in [0, 1].
+int CubeFace(glm::vec3 r, glm::vec2& st) {
+  const glm::vec3 a = glm::abs(r);
+  int face;
+  float sc, tc, ma;
+  if (a.x >= a.y && a.x >= a.z) {
+    face = r.x >= 0 ? 0 : 1;
+    sc = r.x >= 0 ? -r.z : r.z;
+    tc = -r.y;
+    ma = a.x;
+  } else if (a.y >= a.z) {
+    face = r.y >= 0 ? 2 : 3;
+    sc = r.x;
+    tc = r.y >= 0 ? r.z : -r.z;
+    ma = a.y;
+  } else {
+    face = r.z >= 0 ? 4 : 5;
+    sc = r.z >= 0 ? r.x : -r.x;
+    tc = -r.y;
+    ma = a.z;
+  }
+  st = ma > 0.0f ? glm::vec2((sc / ma + 1.0f) * 0.5f, (tc / ma + 1.0f) * 0.5f) : glm::vec2(0.5f);
+  return face;
+}
+
+}  // namespace
+
+glm::vec4 Textures::Sample(int unit, glm::vec2 uv, glm::vec2 duv_dx, glm::vec2 duv_dy, float bias) const {
+  const TextureView* v = Usable(unit_2d, unit);
+  if (!v) return kMissing;
+  return SampleFace(*v, 0, uv, Lambda(*v, duv_dx, duv_dy, bias), DepthCompare{});
+}
+
+glm::vec4 Textures::SampleLod(int unit, glm::vec2 uv, float lod) const {
+  const TextureView* v = Usable(unit_2d, unit);
+  if (!v) return kMissing;
+  const SamplerParams& p = v->texture->params;
+  const float lambda = std::clamp(lod + std::clamp(p.lod_bias, -16.0f, 16.0f), p.min_lod, p.max_lod);
+  return SampleFace(*v, 0, uv, std::isnan(lambda) ? 0.0f : lambda, DepthCompare{});
+}
+
+glm::vec4 Textures::SampleCube(int unit, glm::vec3 dir, glm::vec3 ddir_dx, glm::vec3 ddir_dy, float bias) const {
+  const TextureView* v = Usable(unit_cube, unit);
+  if (!v) return kMissing;
+  glm::vec2 st, st_x, st_y;
+  const int face = CubeFace(dir, st);
+  // Derivatives of (s, t) on the chosen face, by projecting the neighbouring directions onto it.
+  CubeFace(dir + ddir_dx, st_x);
+  CubeFace(dir + ddir_dy, st_y);
+  return SampleFace(*v, face, st, Lambda(*v, st_x - st, st_y - st, bias), DepthCompare{});
+}
+
+float Textures::SampleShadow(int unit, glm::vec2 uv, float ref, glm::vec2 duv_dx, glm::vec2 duv_dy) const {
+  const TextureView* v = Usable(unit_2d, unit);
+  if (!v || !v->depth || v->texture->params.compare_mode != COMPARE_REF_TO_TEXTURE) return 0.0f;
+  DepthCompare cmp;
+  cmp.on = true;
+  cmp.func = v->texture->params.compare_func;
+  cmp.ref = std::clamp(ref, 0.0f, 1.0f);  // depth textures hold [0, 1]
+  return SampleFace(*v, 0, uv, Lambda(*v, duv_dx, duv_dy, 0.0f), cmp).r;
+}
+
+glm::ivec2 Textures::Size(int unit, int level) const {
+  if (unit < 0 || unit >= kMaxTextureUnits || !unit_2d[unit]) return glm::ivec2(0);
+  const TextureView& v = *unit_2d[unit];
+  const int l = v.base + level;
+  if (level < 0 || l >= detail::kMaxLevels) return glm::ivec2(0);
+  const TextureLevel& lv = v.texture->levels[0][l];
+  return glm::ivec2(lv.width, lv.height);
+}
+
+}  // namespace softgl
