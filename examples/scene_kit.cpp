@@ -17,8 +17,9 @@ Mesh MakeCube() {
     const glm::vec3 v = glm::cross(n, u);
     const auto base = std::uint32_t(m.vertices.size());
     const glm::vec3 corners[4] = {n - u - v, n + u - v, n + u + v, n - u + v};
-    for (const glm::vec3& c : corners)
-      m.vertices.push_back({c * 0.5f, n, {colors[f][0], colors[f][1], colors[f][2], colors[f][3]}});
+    const glm::vec2 uvs[4] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+    for (int k = 0; k < 4; ++k)
+      m.vertices.push_back({corners[k] * 0.5f, n, {colors[f][0], colors[f][1], colors[f][2], colors[f][3]}, uvs[k]});
     m.indices.insert(m.indices.end(), {base, base + 1, base + 2, base, base + 2, base + 3});
   }
   return m;
@@ -33,7 +34,8 @@ Mesh MakeTorus(int rings, int sides, float major, float minor) {
       const glm::vec3 center(std::cos(a) * major, 0.0f, std::sin(a) * major);
       const glm::vec3 n(std::cos(a) * std::cos(b), std::sin(b), std::sin(a) * std::cos(b));
       const auto shade = std::uint8_t(120 + 120 * float(j) / float(sides));
-      m.vertices.push_back({center + n * minor, n, {shade, std::uint8_t(90 + i % 2 * 60), 200, 255}});
+      m.vertices.push_back({center + n * minor, n, {shade, std::uint8_t(90 + i % 2 * 60), 200, 255},
+                            {float(i) / float(rings), float(j) / float(sides)}});
     }
   }
   const int row = sides + 1;
@@ -57,7 +59,8 @@ std::uint32_t UploadLitMesh(softgl::Context& gl, const Mesh& mesh) {
   gl.VertexAttributePointer(0, 3, softgl::FLOAT, false, sizeof(LitVertex), offsetof(LitVertex, position));
   gl.VertexAttributePointer(1, 3, softgl::FLOAT, false, sizeof(LitVertex), offsetof(LitVertex, normal));
   gl.VertexAttributePointer(2, 4, softgl::UNSIGNED_BYTE, true, sizeof(LitVertex), offsetof(LitVertex, color));
-  for (std::uint32_t i = 0; i < 3; ++i) gl.EnableVertexAttribArray(i);
+  gl.VertexAttributePointer(3, 2, softgl::FLOAT, false, sizeof(LitVertex), offsetof(LitVertex, uv));
+  for (std::uint32_t i = 0; i < 4; ++i) gl.EnableVertexAttribArray(i);
   return vao;
 }
 
@@ -66,10 +69,31 @@ glm::mat4 Projection(int width, int height, float fovy_degrees, float near_plane
   return glm::perspective(glm::radians(fovy_degrees), aspect, near_plane, far_plane);
 }
 
+Mesh MakeSphere(int slices, int stacks, float radius) {
+  Mesh m;
+  for (int j = 0; j <= stacks; ++j) {
+    const float v = float(j) / float(stacks), phi = kPi * v;
+    for (int i = 0; i <= slices; ++i) {
+      const float u = float(i) / float(slices), theta = 2.0f * kPi * u;
+      const glm::vec3 n(std::sin(phi) * std::cos(theta), -std::cos(phi), std::sin(phi) * std::sin(theta));
+      m.vertices.push_back({n * radius, n, {220, 220, 220, 255}, {u, v}});
+    }
+  }
+  const int row = slices + 1;
+  for (int j = 0; j < stacks; ++j)
+    for (int i = 0; i < slices; ++i) {
+      const auto a = std::uint32_t(j * row + i), b = std::uint32_t((j + 1) * row + i);
+      m.indices.insert(m.indices.end(), {a, b, a + 1, a + 1, b, b + 1});
+    }
+  return m;
+}
+
 Mesh MakeQuad(float half, const std::uint8_t color[4]) {
   Mesh m;
   const glm::vec3 corners[4] = {{-half, 0, half}, {half, 0, half}, {half, 0, -half}, {-half, 0, -half}};
-  for (const glm::vec3& c : corners) m.vertices.push_back({c, {0, 1, 0}, {color[0], color[1], color[2], color[3]}});
+  const glm::vec2 uvs[4] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  for (int k = 0; k < 4; ++k)
+    m.vertices.push_back({corners[k], {0, 1, 0}, {color[0], color[1], color[2], color[3]}, uvs[k]});
   m.indices = {0, 1, 2, 0, 2, 3};
   return m;
 }

@@ -95,6 +95,7 @@ struct LitVertex {
   glm::vec3 position;
   glm::vec3 normal;
   std::uint8_t color[4];
+  glm::vec2 uv{0.0f};
 };
 
 struct Mesh {
@@ -104,11 +105,13 @@ struct Mesh {
 
 Mesh MakeCube();
 Mesh MakeTorus(int rings, int sides, float major, float minor);
+/// A UV sphere of the given radius, uv = (longitude, latitude) in [0, 1].
+Mesh MakeSphere(int slices, int stacks, float radius);
 /// A square of side 2 * half in the y = 0 plane, normal +y, counter-clockwise seen from above.
 Mesh MakeQuad(float half, const std::uint8_t color[4]);
 
-/// Uploads a mesh into a new vertex array: attribute 0 position, 1 normal, 2 colour (normalized bytes), with an
-/// element buffer of unsigned ints. Returns the vertex array id (left bound).
+/// Uploads a mesh into a new vertex array: attribute 0 position, 1 normal, 2 colour (normalized bytes), 3 texture
+/// coordinates, with an element buffer of unsigned ints. Returns the vertex array id (left bound).
 std::uint32_t UploadLitMesh(softgl::Context& gl, const Mesh& mesh);
 
 glm::mat4 Projection(int width, int height, float fovy_degrees, float near_plane, float far_plane);

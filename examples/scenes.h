@@ -36,4 +36,20 @@ softgl::Image Transparency(int width, int height);
 /// with PolygonOffset(-1, -1) (right) they sit cleanly on top.
 softgl::Image Decals(int width, int height);
 
+/// A receding floor and a cube with a mipmapped texture: left half NEAREST (moire in the distance), right half
+/// trilinear (LINEAR_MIPMAP_LINEAR), where the level of detail follows the screen-space derivatives.
+softgl::Image TexturedCube(int width, int height);
+
+/// Shadow mapping: depth from the light into a depth texture through a framebuffer object, then the lit pass
+/// samples it with depth comparison, 3 x 3 taps of 2 x 2 percentage-closer filtering.
+softgl::Image ShadowMap(int width, int height);
+
+/// Post-processing: the scene rendered into a floating-point (HDR) texture, then one full-screen pass tone maps it;
+/// right of the middle it is blurred first.
+softgl::Image PostProcess(int width, int height);
+
+/// Environment mapping: a sphere and a gold torus reflect a cube map (computed per texel, mipmapped), which is
+/// also drawn as the background.
+softgl::Image EnvironmentMap(int width, int height);
+
 }  // namespace scenes

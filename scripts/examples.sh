@@ -9,6 +9,7 @@ cmake --build build/release -j "$(nproc)"
 
 out="${1:-out}"
 mkdir -p "$out"
-for example in hello triangle cube wireframe clipped stencil_outline mirror transparency decals; do
+for example in hello triangle cube wireframe clipped stencil_outline mirror transparency decals \
+    textured_cube shadow_map post_process environment_map; do
   "build/release/examples/$example" "$out"
 done

@@ -118,29 +118,28 @@ const TextureView* Usable(const TextureView* const* units, int unit) {
   return (v && v->complete) ? v : nullptr;
 }
 
-// Table 8.19: the face a direction selects, and its (s, t) in [0, 1].
-int CubeFace(glm::vec3 r, glm::vec2& st) {
-  const glm::vec3 a = glm::abs(r);
-  int face;
+// Table 8.19: (sc, tc, ma) of direction r on cube face f, and its (s, t) in [0, 1] when ma > 0.
+bool FaceCoords(int face, glm::vec3 r, glm::vec2& st) {
   float sc, tc, ma;
-  if (a.x >= a.y && a.x >= a.z) {
-    face = r.x >= 0 ? 0 : 1;
-    sc = r.x >= 0 ? -r.z : r.z;
-    tc = -r.y;
-    ma = a.x;
-  } else if (a.y >= a.z) {
-    face = r.y >= 0 ? 2 : 3;
-    sc = r.x;
-    tc = r.y >= 0 ? r.z : -r.z;
-    ma = a.y;
-  } else {
-    face = r.z >= 0 ? 4 : 5;
-    sc = r.z >= 0 ? r.x : -r.x;
-    tc = -r.y;
-    ma = a.z;
+  switch (face) {
+    case 0: sc = -r.z; tc = -r.y; ma = r.x; break;
+    case 1: sc = r.z; tc = -r.y; ma = -r.x; break;
+    case 2: sc = r.x; tc = r.z; ma = r.y; break;
+    case 3: sc = r.x; tc = -r.z; ma = -r.y; break;
+    case 4: sc = r.x; tc = -r.y; ma = r.z; break;
+    default: sc = -r.x; tc = -r.y; ma = -r.z; break;
   }
-  st = ma > 0.0f ? glm::vec2((sc / ma + 1.0f) * 0.5f, (tc / ma + 1.0f) * 0.5f) : glm::vec2(0.5f);
-  return face;
+  if (!(ma > 0.0f)) return false;
+  st = glm::vec2((sc / ma + 1.0f) * 0.5f, (tc / ma + 1.0f) * 0.5f);
+  return true;
+}
+
+// The face the major axis of r selects.
+int CubeFace(glm::vec3 r) {
+  const glm::vec3 a = glm::abs(r);
+  if (a.x >= a.y && a.x >= a.z) return r.x >= 0 ? 0 : 1;
+  if (a.y >= a.z) return r.y >= 0 ? 2 : 3;
+  return r.z >= 0 ? 4 : 5;
 }
 
 }  // namespace
@@ -162,12 +161,14 @@ glm::vec4 Textures::SampleLod(int unit, glm::vec2 uv, float lod) const {
 glm::vec4 Textures::SampleCube(int unit, glm::vec3 dir, glm::vec3 ddir_dx, glm::vec3 ddir_dy, float bias) const {
   const TextureView* v = Usable(unit_cube, unit);
   if (!v) return kMissing;
-  glm::vec2 st, st_x, st_y;
-  const int face = CubeFace(dir, st);
-  // Derivatives of (s, t) on the chosen face, by projecting the neighbouring directions onto it.
-  CubeFace(dir + ddir_dx, st_x);
-  CubeFace(dir + ddir_dy, st_y);
-  return SampleFace(*v, face, st, Lambda(*v, st_x - st, st_y - st, bias), DepthCompare{});
+  const int face = CubeFace(dir);
+  glm::vec2 st(0.5f), st_x, st_y;
+  FaceCoords(face, dir, st);
+  // Derivatives of (s, t) on the chosen face, projecting the neighbouring directions onto that same face (a
+  // neighbour may point at another face: its coordinates must still be measured on this one).
+  const glm::vec2 dx = FaceCoords(face, dir + ddir_dx, st_x) ? st_x - st : glm::vec2(0.0f);
+  const glm::vec2 dy = FaceCoords(face, dir + ddir_dy, st_y) ? st_y - st : glm::vec2(0.0f);
+  return SampleFace(*v, face, st, Lambda(*v, dx, dy, bias), DepthCompare{});
 }
 
 float Textures::SampleShadow(int unit, glm::vec2 uv, float ref, glm::vec2 duv_dx, glm::vec2 duv_dy) const {

@@ -71,3 +71,13 @@ TEST_CASE("image: mirror", "[image]") { CompareWithGolden("mirror", scenes::Mirr
 TEST_CASE("image: transparency", "[image]") { CompareWithGolden("transparency", scenes::Transparency(640, 480)); }
 
 TEST_CASE("image: decals", "[image]") { CompareWithGolden("decals", scenes::Decals(640, 480)); }
+
+TEST_CASE("image: textured cube", "[image]") { CompareWithGolden("textured_cube", scenes::TexturedCube(640, 480)); }
+
+TEST_CASE("image: shadow map", "[image]") { CompareWithGolden("shadow_map", scenes::ShadowMap(640, 480)); }
+
+TEST_CASE("image: post-processing", "[image]") { CompareWithGolden("post_process", scenes::PostProcess(640, 480)); }
+
+TEST_CASE("image: environment map", "[image]") {
+  CompareWithGolden("environment_map", scenes::EnvironmentMap(640, 480));
+}

@@ -1,0 +1,440 @@
+// scenes_textures.cpp — example scenes for textures: mipmapped filtering, shadow mapping, post-processing through
+// a framebuffer object, environment mapping with a cube map.
+#include <cmath>
+#include <vector>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "scene_kit.h"
+#include "scenes.h"
+
+namespace scenes {
+
+using namespace kit;
+
+namespace {
+
+const glm::mat4 kIdentity(1.0f);
+
+// A 256 x 256 RGBA8 pattern with detail at every scale: checks of 32 texels, a grid every 8, thin diagonals.
+std::vector<std::uint8_t> PatternTexels(int n) {
+  std::vector<std::uint8_t> px(std::size_t(n) * n * 4);
+  for (int y = 0; y < n; ++y)
+    for (int x = 0; x < n; ++x) {
+      const bool check = ((x / 32) + (y / 32)) % 2 == 0;
+      const bool grid = x % 8 == 0 || y % 8 == 0;
+      const bool diagonal = (x + y) % 16 == 0;
+      glm::vec3 c = check ? glm::vec3(0.92f, 0.86f, 0.7f) : glm::vec3(0.55f, 0.22f, 0.18f);
+      if (grid) c *= 0.35f;
+      if (diagonal) c = glm::vec3(0.2f, 0.45f, 0.85f);
+      std::uint8_t* p = &px[(std::size_t(y) * n + x) * 4];
+      for (int k = 0; k < 3; ++k) p[k] = std::uint8_t(c[k] * 255.0f + 0.5f);
+      p[3] = 255;
+    }
+  return px;
+}
+
+// Creates a mipmapped pattern texture on the active unit.
+std::uint32_t MakePatternTexture(softgl::Context& gl) {
+  constexpr int kN = 256;
+  const std::vector<std::uint8_t> px = PatternTexels(kN);
+  const std::uint32_t tex = gl.GenTexture();
+  gl.BindTexture(softgl::TEXTURE_2D, tex);
+  gl.TexImage2D(softgl::TEXTURE_2D, 0, softgl::RGBA8, kN, kN, 0, softgl::RGBA, softgl::UNSIGNED_BYTE, px.data());
+  gl.GenerateMipmap(softgl::TEXTURE_2D);
+  gl.TexParameteri(softgl::TEXTURE_2D, softgl::TEXTURE_MIN_FILTER, softgl::LINEAR_MIPMAP_LINEAR);
+  gl.TexParameteri(softgl::TEXTURE_2D, softgl::TEXTURE_MAG_FILTER, softgl::LINEAR);
+  return tex;
+}
+
+struct TexVaryings {
+  glm::vec3 normal;
+  glm::vec2 uv;
+};
+
+// Diffuse lighting of a texture read on unit 0 through the uv varying (its derivatives give the LOD).
+struct TexturedShader : softgl::Shader<TexturedShader, TexVaryings> {
+  glm::mat4 mvp{1.0f}, model{1.0f};
+  float uv_scale = 1.0f;
+  glm::vec3 light_dir = glm::normalize(glm::vec3(0.4f, 0.8f, 0.6f));
+  void Vertex(const softgl::VertexIn& in, softgl::VertexOut<TexVaryings>& out) const {
+    out.position = mvp * glm::vec4(glm::vec3(in.attrib[0]), 1.0f);
+    out.varyings.normal = glm::mat3(model) * glm::vec3(in.attrib[1]);
+    out.varyings.uv = glm::vec2(in.attrib[3]) * uv_scale;
+  }
+  bool Fragment(const softgl::FragmentIn<TexVaryings>& in, softgl::FragmentOut& out) const {
+    const float diffuse = std::max(glm::dot(glm::normalize(in.varyings.normal), light_dir), 0.0f);
+    out.color[0] = in.Texture(0, &TexVaryings::uv) * (0.35f + 0.65f * diffuse);
+    out.color[0].a = 1.0f;
+    return true;
+  }
+};
+
+// A full-screen triangle: positions cover the viewport, uv spans [0, 1] over it.
+struct ScreenVaryings {
+  glm::vec2 uv;
+};
+const float kScreenTriangle[] = {-1, -1, 3, -1, -1, 3};
+
+std::uint32_t MakeScreenTriangle(softgl::Context& gl) {
+  const std::uint32_t vao = gl.GenVertexArray(), vbo = gl.GenBuffer();
+  gl.BindVertexArray(vao);
+  gl.BindBuffer(softgl::ARRAY_BUFFER, vbo);
+  gl.BufferData(softgl::ARRAY_BUFFER, sizeof kScreenTriangle, kScreenTriangle);
+  gl.VertexAttributePointer(0, 2, softgl::FLOAT, false, 0, 0);
+  gl.EnableVertexAttribArray(0);
+  return vao;
+}
+
+}  // namespace
+
+softgl::Image TexturedCube(int width, int height) {
+  softgl::Context gl(width, height);
+  const glm::mat4 vp = Projection(width, height, 55.0f, 0.1f, 200.0f) *
+                       glm::lookAt(glm::vec3(0.0f, 1.4f, 3.2f), glm::vec3(0.0f, 0.6f, -4.0f), glm::vec3(0, 1, 0));
+  const std::uint8_t white[4] = {255, 255, 255, 255};
+  const Mesh floor = MakeQuad(60.0f, white), cube = MakeCube();
+  const std::uint32_t floor_vao = UploadLitMesh(gl, floor), cube_vao = UploadLitMesh(gl, cube);
+  MakePatternTexture(gl);
+  gl.Enable(softgl::DEPTH_TEST);
+  gl.ClearColor(0.62f, 0.75f, 0.9f, 1.0f);
+  gl.Clear(softgl::COLOR_BUFFER_BIT | softgl::DEPTH_BUFFER_BIT);
+  TexturedShader shader;
+  gl.UseProgram(shader);
+  // The floor repeats the texture 60 times. Left of the middle it is drawn with NEAREST (no mipmaps): the far
+  // field breaks into moire; right of it with trilinear filtering (LINEAR_MIPMAP_LINEAR) it fades smoothly.
+  shader.model = kIdentity;
+  shader.mvp = vp;
+  shader.uv_scale = 60.0f;
+  gl.BindVertexArray(floor_vao);
+  gl.Enable(softgl::SCISSOR_TEST);
+  gl.Scissor(0, 0, width / 2, height);
+  gl.TexParameteri(softgl::TEXTURE_2D, softgl::TEXTURE_MIN_FILTER, softgl::NEAREST);
+  DrawMesh(gl, floor);
+  gl.Scissor(width / 2, 0, width - width / 2, height);
+  gl.TexParameteri(softgl::TEXTURE_2D, softgl::TEXTURE_MIN_FILTER, softgl::LINEAR_MIPMAP_LINEAR);
+  DrawMesh(gl, floor);
+  gl.Disable(softgl::SCISSOR_TEST);
+  // The cube, trilinear.
+  shader.model = glm::rotate(glm::translate(kIdentity, glm::vec3(0.0f, 0.55f, -1.2f)), 0.6f, glm::vec3(0, 1, 0));
+  shader.mvp = vp * shader.model;
+  shader.uv_scale = 1.0f;
+  gl.BindVertexArray(cube_vao);
+  DrawMesh(gl, cube);
+  return gl.ReadPixels();
+}
+
+namespace {
+
+struct DepthOnlyShader : softgl::Shader<DepthOnlyShader, FlatVaryings> {
+  glm::mat4 mvp{1.0f};
+  void Vertex(const softgl::VertexIn& in, softgl::VertexOut<FlatVaryings>& out) const {
+    out.position = mvp * glm::vec4(glm::vec3(in.attrib[0]), 1.0f);
+  }
+  bool Fragment(const softgl::FragmentIn<FlatVaryings>&, softgl::FragmentOut&) const { return true; }
+};
+
+struct ShadowVaryings {
+  glm::vec3 normal;
+  glm::vec3 color;
+  glm::vec4 light_pos;  // position in the light's clip space
+};
+
+// Per-fragment diffuse lighting, shadowed by a 3 x 3 grid of comparison samples of the shadow map on unit 0
+// (each itself a 2 x 2 bilinear comparison): percentage-closer filtering.
+struct ShadowedShader : softgl::Shader<ShadowedShader, ShadowVaryings> {
+  glm::mat4 mvp{1.0f}, model{1.0f}, light_vp{1.0f};
+  glm::vec3 light_dir{0, 1, 0};
+  float texel = 1.0f / 1024.0f;
+  void Vertex(const softgl::VertexIn& in, softgl::VertexOut<ShadowVaryings>& out) const {
+    const glm::vec4 world = model * glm::vec4(glm::vec3(in.attrib[0]), 1.0f);
+    out.position = mvp * glm::vec4(glm::vec3(in.attrib[0]), 1.0f);
+    out.varyings.normal = glm::mat3(model) * glm::vec3(in.attrib[1]);
+    out.varyings.color = glm::vec3(in.attrib[2]);
+    out.varyings.light_pos = light_vp * world;
+  }
+  bool Fragment(const softgl::FragmentIn<ShadowVaryings>& in, softgl::FragmentOut& out) const {
+    const glm::vec3 p = glm::vec3(in.varyings.light_pos) / in.varyings.light_pos.w * 0.5f + 0.5f;
+    float lit = 0.0f;
+    for (int dy = -1; dy <= 1; ++dy)
+      for (int dx = -1; dx <= 1; ++dx)
+        lit += in.textures->SampleShadow(0, glm::vec2(p) + glm::vec2(dx, dy) * texel, p.z, {}, {});
+    lit /= 9.0f;
+    const float diffuse = std::max(glm::dot(glm::normalize(in.varyings.normal), light_dir), 0.0f);
+    out.color[0] = glm::vec4(in.varyings.color * (0.25f + 0.75f * diffuse * lit), 1.0f);
+    return true;
+  }
+};
+
+}  // namespace
+
+softgl::Image ShadowMap(int width, int height) {
+  softgl::Context gl(width, height);
+  constexpr int kShadowSize = 1024;
+  const std::uint8_t ground[4] = {200, 200, 190, 255};
+  const Mesh floor = MakeQuad(5.0f, ground), cube = MakeCube(), torus = MakeTorus(40, 20, 0.55f, 0.22f);
+  const std::uint32_t floor_vao = UploadLitMesh(gl, floor), cube_vao = UploadLitMesh(gl, cube),
+                      torus_vao = UploadLitMesh(gl, torus);
+  struct Object {
+    std::uint32_t vao;
+    const Mesh* mesh;
+    glm::mat4 model;
+  };
+  const Object objects[] = {
+      {floor_vao, &floor, kIdentity},
+      {cube_vao, &cube, glm::rotate(glm::translate(kIdentity, glm::vec3(-0.9f, 0.5f, 0.3f)), 0.5f, glm::vec3(0, 1, 0))},
+      {cube_vao, &cube, glm::scale(glm::translate(kIdentity, glm::vec3(1.1f, 0.35f, -0.9f)), glm::vec3(0.7f))},
+      {torus_vao, &torus, glm::rotate(glm::translate(kIdentity, glm::vec3(0.6f, 1.0f, 0.9f)), 1.0f, glm::vec3(1, 0, 0.4f))},
+  };
+  const glm::vec3 light_dir = glm::normalize(glm::vec3(-0.5f, 1.0f, 0.35f));
+  const glm::mat4 light_vp = glm::ortho(-4.0f, 4.0f, -4.0f, 4.0f, 0.5f, 16.0f) *
+                             glm::lookAt(light_dir * 8.0f, glm::vec3(0.0f), glm::vec3(0, 1, 0));
+
+  // Pass 1: depth from the light into a depth texture (no colour buffer).
+  const std::uint32_t shadow_tex = gl.GenTexture(), fbo = gl.GenFramebuffer();
+  gl.BindTexture(softgl::TEXTURE_2D, shadow_tex);
+  gl.TexImage2D(softgl::TEXTURE_2D, 0, softgl::DEPTH_COMPONENT, kShadowSize, kShadowSize, 0, softgl::DEPTH_COMPONENT,
+                softgl::FLOAT, nullptr);
+  gl.TexParameteri(softgl::TEXTURE_2D, softgl::TEXTURE_MIN_FILTER, softgl::LINEAR);
+  gl.TexParameteri(softgl::TEXTURE_2D, softgl::TEXTURE_MAG_FILTER, softgl::LINEAR);
+  gl.TexParameteri(softgl::TEXTURE_2D, softgl::TEXTURE_WRAP_S, softgl::CLAMP_TO_BORDER);
+  gl.TexParameteri(softgl::TEXTURE_2D, softgl::TEXTURE_WRAP_T, softgl::CLAMP_TO_BORDER);
+  const float far_border[4] = {1, 1, 1, 1};
+  gl.TexParameterfv(softgl::TEXTURE_2D, softgl::TEXTURE_BORDER_COLOR, far_border);
+  gl.TexParameteri(softgl::TEXTURE_2D, softgl::TEXTURE_COMPARE_MODE, softgl::COMPARE_REF_TO_TEXTURE);
+  gl.TexParameteri(softgl::TEXTURE_2D, softgl::TEXTURE_COMPARE_FUNC, softgl::LEQUAL);
+  gl.BindFramebuffer(softgl::FRAMEBUFFER, fbo);
+  gl.FramebufferTexture2D(softgl::FRAMEBUFFER, softgl::DEPTH_ATTACHMENT, softgl::TEXTURE_2D, shadow_tex, 0);
+  const softgl::Enum no_color = softgl::NONE;
+  gl.DrawBuffers(1, &no_color);
+  gl.Viewport(0, 0, kShadowSize, kShadowSize);
+  gl.Enable(softgl::DEPTH_TEST);
+  gl.Clear(softgl::DEPTH_BUFFER_BIT);
+  gl.Enable(softgl::POLYGON_OFFSET_FILL);  // keeps lit surfaces from shadowing themselves (acne)
+  gl.PolygonOffset(2.0f, 4.0f);
+  DepthOnlyShader depth_shader;
+  gl.UseProgram(depth_shader);
+  for (const Object& o : objects) {
+    depth_shader.mvp = light_vp * o.model;
+    gl.BindVertexArray(o.vao);
+    DrawMesh(gl, *o.mesh);
+  }
+  gl.Disable(softgl::POLYGON_OFFSET_FILL);
+
+  // Pass 2: the camera's view, lit and shadowed.
+  gl.BindFramebuffer(softgl::FRAMEBUFFER, 0);
+  gl.Viewport(0, 0, width, height);
+  gl.ClearColor(0.16f, 0.18f, 0.22f, 1.0f);
+  gl.Clear(softgl::COLOR_BUFFER_BIT | softgl::DEPTH_BUFFER_BIT);
+  const glm::mat4 vp = Projection(width, height, 45.0f, 0.1f, 30.0f) *
+                       glm::lookAt(glm::vec3(2.2f, 3.4f, 5.2f), glm::vec3(0.0f, 0.4f, 0.0f), glm::vec3(0, 1, 0));
+  ShadowedShader lit;
+  lit.light_vp = light_vp;
+  lit.light_dir = light_dir;
+  lit.texel = 1.0f / float(kShadowSize);
+  gl.UseProgram(lit);
+  for (const Object& o : objects) {
+    lit.model = o.model;
+    lit.mvp = vp * o.model;
+    gl.BindVertexArray(o.vao);
+    DrawMesh(gl, *o.mesh);
+  }
+  return gl.ReadPixels();
+}
+
+namespace {
+
+// Tone map (Reinhard) of the HDR scene on unit 0; right of `split`, a 9 x 9 box blur first.
+struct PostShader : softgl::Shader<PostShader, ScreenVaryings> {
+  glm::vec2 texel{0.0f};
+  float split = 0.5f;
+  void Vertex(const softgl::VertexIn& in, softgl::VertexOut<ScreenVaryings>& out) const {
+    out.position = glm::vec4(glm::vec2(in.attrib[0]), 0.0f, 1.0f);
+    out.varyings.uv = glm::vec2(in.attrib[0]) * 0.5f + 0.5f;
+  }
+  bool Fragment(const softgl::FragmentIn<ScreenVaryings>& in, softgl::FragmentOut& out) const {
+    const glm::vec2 uv = in.varyings.uv;
+    glm::vec3 hdr(0.0f);
+    if (uv.x < split) {
+      hdr = glm::vec3(in.textures->SampleLod(0, uv, 0.0f));
+    } else {
+      for (int dy = -4; dy <= 4; ++dy)
+        for (int dx = -4; dx <= 4; ++dx) hdr += glm::vec3(in.textures->SampleLod(0, uv + glm::vec2(dx, dy) * texel, 0.0f));
+      hdr /= 81.0f;
+    }
+    glm::vec3 ldr = hdr / (hdr + 1.0f);
+    if (std::fabs(uv.x - split) < texel.x) ldr = glm::vec3(1.0f);  // the dividing line
+    out.color[0] = glm::vec4(glm::pow(ldr, glm::vec3(1.0f / 2.2f)), 1.0f);
+    return true;
+  }
+};
+
+}  // namespace
+
+softgl::Image PostProcess(int width, int height) {
+  softgl::Context gl(width, height);
+  // Pass 1: the scene into a floating-point texture, with light brighter than 1 (HDR).
+  const std::uint32_t scene_tex = gl.GenTexture(), depth_tex = gl.GenTexture(), fbo = gl.GenFramebuffer();
+  gl.BindTexture(softgl::TEXTURE_2D, scene_tex);
+  gl.TexImage2D(softgl::TEXTURE_2D, 0, softgl::RGBA32F, width, height, 0, softgl::RGBA, softgl::FLOAT, nullptr);
+  gl.TexParameteri(softgl::TEXTURE_2D, softgl::TEXTURE_MIN_FILTER, softgl::LINEAR);
+  gl.TexParameteri(softgl::TEXTURE_2D, softgl::TEXTURE_WRAP_S, softgl::CLAMP_TO_EDGE);
+  gl.TexParameteri(softgl::TEXTURE_2D, softgl::TEXTURE_WRAP_T, softgl::CLAMP_TO_EDGE);
+  gl.BindTexture(softgl::TEXTURE_2D, depth_tex);
+  gl.TexImage2D(softgl::TEXTURE_2D, 0, softgl::DEPTH_COMPONENT, width, height, 0, softgl::DEPTH_COMPONENT, softgl::FLOAT,
+                nullptr);
+  gl.BindFramebuffer(softgl::FRAMEBUFFER, fbo);
+  gl.FramebufferTexture2D(softgl::FRAMEBUFFER, softgl::COLOR_ATTACHMENT0, softgl::TEXTURE_2D, scene_tex, 0);
+  gl.FramebufferTexture2D(softgl::FRAMEBUFFER, softgl::DEPTH_ATTACHMENT, softgl::TEXTURE_2D, depth_tex, 0);
+  gl.Enable(softgl::DEPTH_TEST);
+  gl.ClearColor(0.05f, 0.06f, 0.1f, 1.0f);
+  gl.Clear(softgl::COLOR_BUFFER_BIT | softgl::DEPTH_BUFFER_BIT);
+  const glm::mat4 vp = Projection(width, height, 45.0f, 0.1f, 30.0f) *
+                       glm::lookAt(glm::vec3(0.0f, 1.6f, 4.4f), glm::vec3(0.0f, 0.4f, 0.0f), glm::vec3(0, 1, 0));
+  const Mesh cube = MakeCube(), torus = MakeTorus(40, 20, 0.6f, 0.24f), sphere = MakeSphere(32, 16, 0.45f);
+  const std::uint32_t cube_vao = UploadLitMesh(gl, cube), torus_vao = UploadLitMesh(gl, torus),
+                      sphere_vao = UploadLitMesh(gl, sphere);
+  LitShader lit;
+  lit.brightness = 4.0f;  // HDR: lit faces well above 1
+  gl.UseProgram(lit);
+  auto draw = [&](std::uint32_t vao, const Mesh& mesh, const glm::mat4& model) {
+    lit.model = model;
+    lit.mvp = vp * model;
+    gl.BindVertexArray(vao);
+    DrawMesh(gl, mesh);
+  };
+  draw(cube_vao, cube, glm::rotate(glm::translate(kIdentity, glm::vec3(-1.3f, 0.4f, 0.0f)), 0.7f, glm::vec3(0, 1, 0)));
+  draw(torus_vao, torus, glm::rotate(glm::translate(kIdentity, glm::vec3(0.1f, 0.5f, -0.4f)), 1.2f, glm::vec3(1, 0, 0)));
+  draw(sphere_vao, sphere, glm::translate(kIdentity, glm::vec3(1.3f, 0.45f, 0.3f)));
+
+  // Pass 2: the default framebuffer, one full-screen triangle sampling the scene texture.
+  gl.BindFramebuffer(softgl::FRAMEBUFFER, 0);
+  gl.Disable(softgl::DEPTH_TEST);
+  gl.BindTexture(softgl::TEXTURE_2D, scene_tex);
+  MakeScreenTriangle(gl);
+  PostShader post;
+  post.texel = glm::vec2(1.0f / float(width), 1.0f / float(height));
+  gl.UseProgram(post);
+  gl.DrawArrays(softgl::TRIANGLES, 0, 3);
+  return gl.ReadPixels();
+}
+
+namespace {
+
+// The sky of the environment: a gradient, a sun, and a checkered ground below the horizon.
+glm::vec3 Sky(glm::vec3 d) {
+  d = glm::normalize(d);
+  if (d.y < 0.0f) {
+    const glm::vec2 g = glm::vec2(d.x, d.z) / std::max(-d.y, 0.05f);
+    const bool check = (int(std::floor(g.x * 2.0f)) + int(std::floor(g.y * 2.0f))) % 2 == 0;
+    return check ? glm::vec3(0.35f, 0.3f, 0.25f) : glm::vec3(0.15f, 0.14f, 0.12f);
+  }
+  const glm::vec3 sun_dir = glm::normalize(glm::vec3(0.6f, 0.5f, -0.6f));
+  const float sun = std::pow(std::max(glm::dot(d, sun_dir), 0.0f), 200.0f);
+  return glm::mix(glm::vec3(0.85f, 0.9f, 1.0f), glm::vec3(0.2f, 0.45f, 0.85f), std::sqrt(d.y)) + glm::vec3(sun);
+}
+
+// The direction through texel (i, j) of cube face f (OpenGL's face orientations, table 8.19 read backwards).
+glm::vec3 FaceDirection(int f, float s, float t) {
+  const float sc = 2.0f * s - 1.0f, tc = 2.0f * t - 1.0f;
+  switch (f) {
+    case 0: return {1, -tc, -sc};
+    case 1: return {-1, -tc, sc};
+    case 2: return {sc, 1, tc};
+    case 3: return {sc, -1, -tc};
+    case 4: return {sc, -tc, 1};
+    default: return {-sc, -tc, -1};
+  }
+}
+
+struct EnvVaryings {
+  glm::vec3 dir;  // reflected (objects) or viewing (sky) direction, in world space
+};
+
+struct ReflectShader : softgl::Shader<ReflectShader, EnvVaryings> {
+  glm::mat4 mvp{1.0f}, model{1.0f};
+  glm::vec3 eye{0.0f};
+  glm::vec3 tint{1.0f};
+  void Vertex(const softgl::VertexIn& in, softgl::VertexOut<EnvVaryings>& out) const {
+    const glm::vec3 world = glm::vec3(model * glm::vec4(glm::vec3(in.attrib[0]), 1.0f));
+    const glm::vec3 n = glm::normalize(glm::mat3(model) * glm::vec3(in.attrib[1]));
+    out.position = mvp * glm::vec4(glm::vec3(in.attrib[0]), 1.0f);
+    out.varyings.dir = glm::reflect(world - eye, n);
+  }
+  bool Fragment(const softgl::FragmentIn<EnvVaryings>& in, softgl::FragmentOut& out) const {
+    out.color[0] = glm::vec4(glm::vec3(in.TextureCube(0, &EnvVaryings::dir)) * tint, 1.0f);
+    return true;
+  }
+};
+
+// The background: each pixel looks up the direction it sees.
+struct SkyShader : softgl::Shader<SkyShader, EnvVaryings> {
+  glm::mat4 inverse_vp{1.0f};
+  void Vertex(const softgl::VertexIn& in, softgl::VertexOut<EnvVaryings>& out) const {
+    const glm::vec2 p(in.attrib[0]);
+    out.position = glm::vec4(p, 1.0f, 1.0f);  // on the far plane
+    const glm::vec4 near_point = inverse_vp * glm::vec4(p, -1.0f, 1.0f), far_point = inverse_vp * glm::vec4(p, 1.0f, 1.0f);
+    out.varyings.dir = glm::vec3(far_point) / far_point.w - glm::vec3(near_point) / near_point.w;
+  }
+  bool Fragment(const softgl::FragmentIn<EnvVaryings>& in, softgl::FragmentOut& out) const {
+    out.color[0] = in.TextureCube(0, &EnvVaryings::dir);
+    return true;
+  }
+};
+
+}  // namespace
+
+softgl::Image EnvironmentMap(int width, int height) {
+  softgl::Context gl(width, height);
+  // The cube map, computed per texel from the direction it stands for.
+  constexpr int kFace = 128;
+  const std::uint32_t cube_map = gl.GenTexture();
+  gl.BindTexture(softgl::TEXTURE_CUBE_MAP, cube_map);
+  std::vector<float> texels(std::size_t(kFace) * kFace * 4);
+  for (int f = 0; f < 6; ++f) {
+    for (int j = 0; j < kFace; ++j)
+      for (int i = 0; i < kFace; ++i) {
+        const glm::vec3 c = Sky(FaceDirection(f, (float(i) + 0.5f) / kFace, (float(j) + 0.5f) / kFace));
+        float* p = &texels[(std::size_t(j) * kFace + i) * 4];
+        p[0] = c.r;
+        p[1] = c.g;
+        p[2] = c.b;
+        p[3] = 1.0f;
+      }
+    gl.TexImage2D(softgl::TEXTURE_CUBE_MAP_POSITIVE_X + softgl::Enum(f), 0, softgl::RGBA8, kFace, kFace, 0, softgl::RGBA,
+                  softgl::FLOAT, texels.data());
+  }
+  gl.GenerateMipmap(softgl::TEXTURE_CUBE_MAP);
+  gl.TexParameteri(softgl::TEXTURE_CUBE_MAP, softgl::TEXTURE_MIN_FILTER, softgl::LINEAR_MIPMAP_LINEAR);
+  gl.TexParameteri(softgl::TEXTURE_CUBE_MAP, softgl::TEXTURE_WRAP_S, softgl::CLAMP_TO_EDGE);
+  gl.TexParameteri(softgl::TEXTURE_CUBE_MAP, softgl::TEXTURE_WRAP_T, softgl::CLAMP_TO_EDGE);
+
+  const glm::vec3 eye(0.0f, 0.6f, 4.0f);
+  const glm::mat4 vp = Projection(width, height, 50.0f, 0.1f, 50.0f) *
+                       glm::lookAt(eye, glm::vec3(0.0f, 0.3f, 0.0f), glm::vec3(0, 1, 0));
+  gl.Enable(softgl::DEPTH_TEST);
+  gl.DepthFunc(softgl::LEQUAL);  // the sky is drawn on the far plane
+  gl.Clear(softgl::COLOR_BUFFER_BIT | softgl::DEPTH_BUFFER_BIT);
+  const Mesh sphere = MakeSphere(48, 24, 0.8f), torus = MakeTorus(48, 24, 0.7f, 0.25f);
+  const std::uint32_t sphere_vao = UploadLitMesh(gl, sphere), torus_vao = UploadLitMesh(gl, torus);
+  ReflectShader reflect;
+  reflect.eye = eye;
+  gl.UseProgram(reflect);
+  reflect.model = glm::translate(kIdentity, glm::vec3(-1.0f, 0.3f, 0.0f));
+  reflect.mvp = vp * reflect.model;
+  gl.BindVertexArray(sphere_vao);
+  DrawMesh(gl, sphere);
+  reflect.model = glm::rotate(glm::translate(kIdentity, glm::vec3(1.1f, 0.3f, 0.0f)), 1.1f, glm::vec3(1, 0, 0.3f));
+  reflect.mvp = vp * reflect.model;
+  reflect.tint = glm::vec3(1.0f, 0.8f, 0.45f);  // gold
+  gl.BindVertexArray(torus_vao);
+  DrawMesh(gl, torus);
+  SkyShader sky;
+  sky.inverse_vp = glm::inverse(vp);
+  gl.UseProgram(sky);
+  MakeScreenTriangle(gl);
+  gl.DrawArrays(softgl::TRIANGLES, 0, 3);
+  return gl.ReadPixels();
+}
+
+}  // namespace scenes

@@ -1,0 +1,537 @@
+// Textures: wrap modes and filters against hand-computed texels, mipmap contents, LOD selection from known
+// derivatives, completeness, depth comparison, cube faces; framebuffer objects; uploads and errors.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <vector>
+
+#include "helpers.h"
+#include "texture.h"
+
+using namespace softgl;
+using detail::TextureObject;
+using detail::TextureView;
+
+namespace {
+
+// A texture made directly: level 0 of w x h with texel (i, j) = f(i, j), format RGBA32F unless given.
+template <class F>
+TextureObject MakeTexture(int w, int h, F f, Enum format = RGBA32F) {
+  TextureObject t;
+  t.target = TEXTURE_2D;
+  auto& l = t.levels[0][0];
+  l.format = format;
+  l.width = w;
+  l.height = h;
+  l.texels.resize(std::size_t(w) * h * 4);
+  for (int j = 0; j < h; ++j)
+    for (int i = 0; i < w; ++i) {
+      const glm::vec4 v = f(i, j);
+      for (int c = 0; c < 4; ++c) l.texels[(std::size_t(j) * w + i) * 4 + c] = v[c];
+    }
+  t.params.min_filter = NEAREST;
+  t.params.mag_filter = NEAREST;
+  return t;
+}
+
+// Samples texture `t` at (s, t) with derivatives giving lambda = log2(scale) on a square texture of size n.
+struct Sampler {
+  TextureView view;
+  Textures textures;
+  explicit Sampler(const TextureObject& t) {
+    view = detail::MakeView(t);
+    textures.unit_2d[0] = &view;
+  }
+  glm::vec4 At(float s, float t, float texels_per_pixel = 1.0f) const {
+    const int w = view.texture->levels[0][view.base].width;
+    return textures.Sample(0, {s, t}, {texels_per_pixel / float(w), 0.0f}, {0.0f, texels_per_pixel / float(w)});
+  }
+};
+
+}  // namespace
+
+TEST_CASE("wrap modes pick OpenGL's texels", "[texture]") {
+  // Texel i of a 4 x 1 texture holds i; sample at the centre of texel index k (s = (k + 0.5) / 4).
+  TextureObject t = MakeTexture(4, 1, [](int i, int) { return glm::vec4(float(i), 0, 0, 1); });
+  struct Row {
+    Enum wrap;
+    int k;
+    float expect;  // -1: border
+  };
+  const Row rows[] = {
+      {REPEAT, 0, 0},          {REPEAT, 5, 1},          {REPEAT, -1, 3},          {REPEAT, -6, 2},
+      {MIRRORED_REPEAT, 4, 3}, {MIRRORED_REPEAT, 5, 2}, {MIRRORED_REPEAT, -1, 0}, {MIRRORED_REPEAT, -5, 3},
+      {MIRRORED_REPEAT, 8, 0}, {CLAMP_TO_EDGE, -3, 0},  {CLAMP_TO_EDGE, 9, 3},    {CLAMP_TO_BORDER, -1, -1},
+      {CLAMP_TO_BORDER, 4, -1}, {CLAMP_TO_BORDER, 2, 2},
+  };
+  for (const Row& r : rows) {
+    INFO("wrap 0x" << std::hex << r.wrap << std::dec << " texel " << r.k);
+    t.params.wrap_s = t.params.wrap_t = r.wrap;
+    t.params.border = glm::vec4(-1, -1, -1, -1);
+    const Sampler s(t);
+    CHECK(s.At((float(r.k) + 0.5f) / 4.0f, 0.5f).r == r.expect);
+  }
+}
+
+TEST_CASE("LINEAR weights texels by distance to their centres", "[texture]") {
+  // 2 x 2 texture: 0, 1 / 2, 3. At texel-space (1.0, 1.0) all four weigh 1/4.
+  TextureObject t = MakeTexture(2, 2, [](int i, int j) { return glm::vec4(float(i + 2 * j), 0, 0, 1); });
+  t.params.mag_filter = t.params.min_filter = LINEAR;
+  t.params.wrap_s = t.params.wrap_t = CLAMP_TO_EDGE;
+  const Sampler s(t);
+  CHECK(s.At(0.5f, 0.5f).r == Approx(1.5f));
+  // At texel-space (0.75, 0.5): u - 0.5 = 0.25 -> 0.75 of texel 0 and 0.25 of texel 1, row 0 only.
+  CHECK(s.At(0.375f, 0.25f).r == Approx(0.25f));
+  // At the centre of texel 1 exactly: no blending.
+  CHECK(s.At(0.75f, 0.25f).r == Approx(1.0f));
+  // Clamped at the edge: left of texel 0's centre stays texel 0.
+  CHECK(s.At(0.0f, 0.25f).r == Approx(0.0f));
+  t.params.wrap_s = REPEAT;  // repeat blends texel 0 with texel 1 across the edge
+  const Sampler r(t);
+  CHECK(r.At(0.0f, 0.25f).r == Approx(0.5f));
+}
+
+TEST_CASE("GenerateMipmap averages 2x2 blocks; odd sizes sample bilinearly", "[texture]") {
+  Context gl(1, 1);
+  const std::uint32_t tex = gl.GenTexture();
+  gl.BindTexture(TEXTURE_2D, tex);
+  std::vector<float> px(4 * 4);
+  for (int i = 0; i < 16; ++i) px[i] = float(i);
+  gl.TexImage2D(TEXTURE_2D, 0, R32F, 4, 4, 0, RED, FLOAT, px.data());
+  gl.GenerateMipmap(TEXTURE_2D);
+  CHECK(gl.GetError() == NO_ERROR);
+  // Level 1 texel (0, 0) = mean of 0, 1, 4, 5; (1, 1) = mean of 10, 11, 14, 15; level 2 = mean of all.
+  // Read back through textureLod in the vertex stage.
+  struct Lod : softgl::Shader<Lod, testing::NoVaryings> {
+    mutable std::vector<glm::vec4> got;
+    void Vertex(const VertexIn& in, VertexOut<testing::NoVaryings>& out) const {
+      out.position = in.attrib[0];
+      got.push_back(in.textures->SampleLod(0, glm::vec2(in.attrib[1]), in.attrib[1].z));
+    }
+    bool Fragment(const FragmentIn<testing::NoVaryings>&, FragmentOut& out) const {
+      out.color[0] = glm::vec4(1);
+      return true;
+    }
+  } shader;
+  gl.TexParameteri(TEXTURE_2D, TEXTURE_MIN_FILTER, NEAREST_MIPMAP_NEAREST);
+  testing::MakeVertexArray(gl, {{0, 0, 0, 1}, {0, 0, 0, 1}, {0, 0, 0, 1}},
+                           {{0.25f, 0.25f, 1, 0}, {0.75f, 0.75f, 1, 0}, {0.5f, 0.5f, 2, 0}});
+  gl.UseProgram(shader);
+  gl.DrawArrays(POINTS, 0, 3);
+  REQUIRE(shader.got.size() == 3);
+  CHECK(shader.got[0].r == Approx(2.5f));
+  CHECK(shader.got[1].r == Approx(12.5f));
+  CHECK(shader.got[2].r == Approx(7.5f));
+
+  // 3 x 3 -> 1 x 1: the bilinear sample at the centre of the 3 x 3 level is its middle texel.
+  std::vector<float> odd = {0, 0, 0, 0, 9, 0, 0, 0, 0};
+  gl.TexImage2D(TEXTURE_2D, 0, R32F, 3, 3, 0, RED, FLOAT, odd.data());
+  gl.GenerateMipmap(TEXTURE_2D);
+  shader.got.clear();
+  testing::MakeVertexArray(gl, {{0, 0, 0, 1}}, {{0.5f, 0.5f, 5, 0}});
+  gl.DrawArrays(POINTS, 0, 1);
+  REQUIRE(shader.got.size() == 1);
+  CHECK(shader.got[0].r == Approx(9.0f));
+}
+
+TEST_CASE("the level of detail comes from the derivatives, and selects levels as OpenGL says", "[texture]") {
+  // A 16 x 16 texture whose level k is filled with the value k.
+  TextureObject t;
+  t.target = TEXTURE_2D;
+  for (int k = 0; k < 5; ++k) {
+    auto& l = t.levels[0][k];
+    l.format = RGBA32F;
+    l.width = l.height = 16 >> k;
+    l.texels.assign(std::size_t(l.width) * l.height * 4, float(k));
+  }
+  struct Row {
+    Enum min_filter;
+    float texels_per_pixel;  // rho: lambda = log2(rho)
+    float expect;
+  };
+  const Row rows[] = {
+      {NEAREST_MIPMAP_NEAREST, 1.0f, 0},   {NEAREST_MIPMAP_NEAREST, 1.4f, 0},  // lambda 0.49 -> level 0
+      {NEAREST_MIPMAP_NEAREST, 1.5f, 1},   {NEAREST_MIPMAP_NEAREST, 4.0f, 2},  // lambda 2 -> ceil(2.5) - 1 = 2
+      {NEAREST_MIPMAP_NEAREST, 5.0f, 2},   {NEAREST_MIPMAP_NEAREST, 6.0f, 3},  // 2.32 -> 2; 2.58 -> 3
+      {LINEAR_MIPMAP_LINEAR, 2.0f, 1},     {LINEAR_MIPMAP_LINEAR, 2.8284271f, 1.5f},
+      {NEAREST_MIPMAP_LINEAR, 8.0f, 3},    {LINEAR_MIPMAP_LINEAR, 1000.0f, 4},  // clamped to the last level
+      {LINEAR, 1000.0f, 0},                {LINEAR_MIPMAP_LINEAR, 0.25f, 0},     // magnification
+  };
+  for (const Row& r : rows) {
+    INFO("min filter 0x" << std::hex << r.min_filter << std::dec << " rho " << r.texels_per_pixel);
+    t.params.min_filter = r.min_filter;
+    t.params.mag_filter = LINEAR;
+    const Sampler s(t);
+    CHECK(s.At(0.3f, 0.6f, r.texels_per_pixel).r == Approx(r.expect));
+  }
+  // Bias, min/max LOD and base/max level.
+  t.params.min_filter = NEAREST_MIPMAP_NEAREST;
+  t.params.lod_bias = 1.0f;
+  CHECK(Sampler(t).At(0.3f, 0.6f, 2.0f).r == Approx(2.0f));
+  t.params.lod_bias = 0.0f;
+  t.params.max_lod = 1.0f;
+  CHECK(Sampler(t).At(0.3f, 0.6f, 16.0f).r == Approx(1.0f));
+  t.params.max_lod = 1000.0f;
+  t.params.base_level = 1;
+  t.params.max_level = 2;
+  CHECK(Sampler(t).At(0.3f, 0.6f, 1.0f).r == Approx(1.0f));
+  CHECK(Sampler(t).At(0.3f, 0.6f, 64.0f).r == Approx(2.0f));
+}
+
+TEST_CASE("an incomplete texture samples as (0, 0, 0, 1)", "[texture]") {
+  TextureObject t = MakeTexture(4, 4, [](int, int) { return glm::vec4(1, 1, 1, 1); });
+  t.params.min_filter = LINEAR_MIPMAP_LINEAR;  // needs levels 1 and 2, which are missing
+  CHECK(Sampler(t).At(0.5f, 0.5f) == glm::vec4(0, 0, 0, 1));
+  t.params.min_filter = LINEAR;
+  CHECK(Sampler(t).At(0.5f, 0.5f) == glm::vec4(1, 1, 1, 1));
+  t.params.base_level = 2;
+  t.params.max_level = 1;  // base > max
+  CHECK(Sampler(t).At(0.5f, 0.5f) == glm::vec4(0, 0, 0, 1));
+  Textures none;
+  CHECK(none.Sample(0, {0.5f, 0.5f}, {}, {}) == glm::vec4(0, 0, 0, 1));
+  CHECK(none.Sample(99, {0.5f, 0.5f}, {}, {}) == glm::vec4(0, 0, 0, 1));
+}
+
+TEST_CASE("depth comparison filters the results of the comparisons (PCF)", "[texture]") {
+  // 2 x 1 depth texture: 0.2 | 0.6.
+  TextureObject t = MakeTexture(2, 1, [](int i, int) { return glm::vec4(i ? 0.6f : 0.2f, 0, 0, 1); },
+                                DEPTH_COMPONENT);
+  t.params.compare_mode = COMPARE_REF_TO_TEXTURE;
+  t.params.compare_func = LEQUAL;
+  t.params.wrap_s = t.params.wrap_t = CLAMP_TO_EDGE;
+  TextureView view = detail::MakeView(t);
+  Textures tx;
+  tx.unit_2d[0] = &view;
+  CHECK(tx.SampleShadow(0, {0.25f, 0.5f}, 0.1f, {}, {}) == 1.0f);  // 0.1 <= 0.2
+  CHECK(tx.SampleShadow(0, {0.25f, 0.5f}, 0.4f, {}, {}) == 0.0f);
+  t.params.mag_filter = LINEAR;
+  view = detail::MakeView(t);
+  // Half way between the texels: one comparison passes, one fails.
+  CHECK(tx.SampleShadow(0, {0.5f, 0.5f}, 0.4f, {}, {}) == Approx(0.5f));
+  t.params.compare_mode = NONE;
+  view = detail::MakeView(t);
+  CHECK(tx.SampleShadow(0, {0.5f, 0.5f}, 0.4f, {}, {}) == 0.0f);
+}
+
+TEST_CASE("cube maps choose the face of the major axis", "[texture]") {
+  TextureObject t;
+  t.target = TEXTURE_CUBE_MAP;
+  for (int f = 0; f < 6; ++f) {
+    auto& l = t.levels[f][0];
+    l.format = RGBA32F;
+    l.width = l.height = 2;
+    // Face f: texel (i, j) = f * 10 + i + 2 j.
+    for (int j = 0; j < 2; ++j)
+      for (int i = 0; i < 2; ++i)
+        for (float v : {float(f * 10 + i + 2 * j), 0.0f, 0.0f, 1.0f}) l.texels.push_back(v);
+  }
+  t.params.min_filter = t.params.mag_filter = NEAREST;
+  TextureView view = detail::MakeView(t);
+  REQUIRE(view.complete);
+  Textures tx;
+  tx.unit_cube[0] = &view;
+  auto at = [&](glm::vec3 d) { return tx.SampleCube(0, d, {}, {}).r; };
+  CHECK(at({1, 0.1f, 0.1f}) == Approx(0));    // +x: sc = -z < 0 -> i 0; tc = -y < 0 -> j 0
+  CHECK(at({1, -0.5f, -0.5f}) == Approx(3));  // +x: sc = 0.5 -> i 1; tc = 0.5 -> j 1
+  CHECK(at({-1, 0.5f, 0.5f}) == Approx(11));  // -x: sc = z -> i 1; tc = -y -> j 0
+  CHECK(at({0.5f, 1, 0.5f}) == Approx(23));   // +y: sc = x, tc = z
+  CHECK(at({0.5f, -1, 0.5f}) == Approx(31));  // -y: sc = x, tc = -z
+  CHECK(at({0.5f, -0.5f, 1}) == Approx(43));  // +z: sc = x, tc = -y
+  CHECK(at({0.5f, -0.5f, -1}) == Approx(52)); // -z: sc = -x, tc = -y
+}
+
+TEST_CASE("uploads honour UNPACK_ALIGNMENT and convert formats", "[texture]") {
+  Context gl(1, 1);
+  const std::uint32_t tex = gl.GenTexture();
+  gl.BindTexture(TEXTURE_2D, tex);
+  // 3 x 2 RGB bytes: rows of 9 bytes, padded to 12 with the default alignment of 4.
+  const std::uint8_t rgb[24] = {255, 0, 0, 0, 255, 0, 0, 0, 255, 7, 7, 7,  // row 0 + padding
+                                51, 51, 51, 102, 102, 102, 204, 204, 204, 7, 7, 7};
+  gl.TexImage2D(TEXTURE_2D, 0, RGB8, 3, 2, 0, RGB, UNSIGNED_BYTE, rgb);
+  CHECK(gl.GetError() == NO_ERROR);
+  gl.TexParameteri(TEXTURE_2D, TEXTURE_MIN_FILTER, NEAREST);
+  gl.TexParameteri(TEXTURE_2D, TEXTURE_MAG_FILTER, NEAREST);
+  struct Fetch : softgl::Shader<Fetch, testing::NoVaryings> {
+    mutable std::vector<glm::vec4> got;
+    void Vertex(const VertexIn& in, VertexOut<testing::NoVaryings>& out) const {
+      out.position = glm::vec4(2, 2, 2, 1);
+      got.push_back(in.textures->SampleLod(0, glm::vec2(in.attrib[1]), 0.0f));
+    }
+    bool Fragment(const FragmentIn<testing::NoVaryings>&, FragmentOut&) const { return false; }
+  } shader;
+  gl.UseProgram(shader);
+  testing::MakeVertexArray(gl, {{0, 0, 0, 1}, {0, 0, 0, 1}}, {{0.5f / 3, 0.25f, 0, 0}, {2.5f / 3, 0.75f, 0, 0}});
+  gl.DrawArrays(POINTS, 0, 2);
+  REQUIRE(shader.got.size() == 2);
+  CHECK(shader.got[0] == glm::vec4(1, 0, 0, 1));  // RGB8 reads alpha 1
+  CHECK(shader.got[1].r == Approx(0.8f));
+  // With alignment 1 the same bytes are read without padding: row 1 starts at byte 9.
+  gl.PixelStore(UNPACK_ALIGNMENT, 1);
+  gl.TexImage2D(TEXTURE_2D, 0, RGB8, 3, 2, 0, RGB, UNSIGNED_BYTE, rgb);
+  shader.got.clear();
+  gl.DrawArrays(POINTS, 0, 2);
+  CHECK(shader.got[1].r == Approx(102.0f / 255.0f));  // texel (2, 1) = bytes 15..17
+  // Floats into a fixed-point format are clamped and rounded to 8 bits.
+  const float f[4] = {1.5f, -1.0f, 0.5f, 0.25f};
+  gl.TexImage2D(TEXTURE_2D, 0, RGBA8, 1, 1, 0, RGBA, FLOAT, f);
+  shader.got.clear();
+  gl.DrawArrays(POINTS, 0, 1);
+  CHECK(shader.got[0].r == 1.0f);
+  CHECK(shader.got[0].g == 0.0f);
+  CHECK(shader.got[0].b == Approx(128.0f / 255.0f));
+  CHECK(shader.got[0].a == Approx(64.0f / 255.0f));
+}
+
+TEST_CASE("texture calls reject bad input with OpenGL's errors", "[texture][errors]") {
+  Context gl(1, 1);
+  const std::uint32_t tex = gl.GenTexture();
+  gl.TexImage2D(TEXTURE_2D, 0, RGBA8, 1, 1, 0, RGBA, UNSIGNED_BYTE, nullptr);
+  CHECK(gl.GetError() == INVALID_OPERATION);  // nothing bound
+  gl.BindTexture(TEXTURE_2D, tex);
+  gl.BindTexture(TEXTURE_CUBE_MAP, tex);
+  CHECK(gl.GetError() == INVALID_OPERATION);  // already a 2D texture
+  gl.BindTexture(0x1234, tex);
+  CHECK(gl.GetError() == INVALID_ENUM);
+  gl.BindTexture(TEXTURE_2D, 999);
+  CHECK(gl.GetError() == INVALID_OPERATION);
+  gl.TexImage2D(TEXTURE_2D, 0, RGBA8, -1, 1, 0, RGBA, UNSIGNED_BYTE, nullptr);
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.TexImage2D(TEXTURE_2D, 0, RGBA8, kMaxTextureSize + 1, 1, 0, RGBA, UNSIGNED_BYTE, nullptr);
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.TexImage2D(TEXTURE_2D, 0, RGBA8, 1, 1, 1, RGBA, UNSIGNED_BYTE, nullptr);
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.TexImage2D(TEXTURE_2D, -1, RGBA8, 1, 1, 0, RGBA, UNSIGNED_BYTE, nullptr);
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.TexImage2D(TEXTURE_2D, 0, 0x1234, 1, 1, 0, RGBA, UNSIGNED_BYTE, nullptr);
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.TexImage2D(TEXTURE_2D, 0, RGBA8, 1, 1, 0, 0x1234, UNSIGNED_BYTE, nullptr);
+  CHECK(gl.GetError() == INVALID_ENUM);
+  gl.TexImage2D(TEXTURE_2D, 0, RGBA8, 1, 1, 0, RGBA, SHORT, nullptr);
+  CHECK(gl.GetError() == INVALID_ENUM);
+  gl.TexImage2D(TEXTURE_2D, 0, RGBA8, 1, 1, 0, DEPTH_COMPONENT, FLOAT, nullptr);
+  CHECK(gl.GetError() == INVALID_OPERATION);
+  gl.TexSubImage2D(TEXTURE_2D, 0, 0, 0, 1, 1, RGBA, UNSIGNED_BYTE, nullptr);
+  CHECK(gl.GetError() == INVALID_OPERATION);  // level 0 not defined yet
+  gl.TexImage2D(TEXTURE_2D, 0, RGBA8, 2, 2, 0, RGBA, UNSIGNED_BYTE, nullptr);
+  gl.TexSubImage2D(TEXTURE_2D, 0, 1, 1, 2, 1, RGBA, UNSIGNED_BYTE, nullptr);
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.TexParameteri(TEXTURE_2D, TEXTURE_MIN_FILTER, REPEAT);
+  CHECK(gl.GetError() == INVALID_ENUM);
+  gl.TexParameteri(TEXTURE_2D, TEXTURE_WRAP_S, LINEAR);
+  CHECK(gl.GetError() == INVALID_ENUM);
+  gl.TexParameteri(TEXTURE_2D, TEXTURE_BASE_LEVEL, -1);
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.TexParameteri(TEXTURE_2D, 0x1234, 0);
+  CHECK(gl.GetError() == INVALID_ENUM);
+  gl.ActiveTexture(TEXTURE0 + kMaxTextureUnits);
+  CHECK(gl.GetError() == INVALID_ENUM);
+  gl.PixelStore(UNPACK_ALIGNMENT, 3);
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.GenerateMipmap(TEXTURE_CUBE_MAP);
+  CHECK(gl.GetError() == INVALID_OPERATION);  // no cube map bound
+  const std::uint32_t cube = gl.GenTexture();
+  gl.BindTexture(TEXTURE_CUBE_MAP, cube);
+  gl.TexImage2D(TEXTURE_CUBE_MAP_POSITIVE_X, 0, RGBA8, 2, 4, 0, RGBA, UNSIGNED_BYTE, nullptr);
+  CHECK(gl.GetError() == INVALID_VALUE);  // faces are square
+}
+
+TEST_CASE("image files: formats load, missing and corrupt files give a clear error", "[texture][files]") {
+  const std::filesystem::path dir = std::filesystem::path(SOFTGL_TEST_OUTPUT_DIR) / "files";
+  std::filesystem::create_directories(dir);
+  // A 2 x 2 PNG written by softgl itself: top row red, bottom row blue.
+  Image img;
+  img.width = img.height = 2;
+  img.rgba = {255, 0, 0, 255, 255, 0, 0, 255, 0, 0, 255, 255, 0, 0, 255, 255};
+  REQUIRE(WritePng((dir / "two.png").string(), img));
+  Context gl(1, 1);
+  gl.BindTexture(TEXTURE_2D, gl.GenTexture());
+  std::string error;
+  REQUIRE(gl.TexImage2DFromFile(TEXTURE_2D, (dir / "two.png").string(), true, &error));
+  struct Fetch : softgl::Shader<Fetch, testing::NoVaryings> {
+    mutable std::vector<glm::vec4> got;
+    void Vertex(const VertexIn& in, VertexOut<testing::NoVaryings>& out) const {
+      out.position = glm::vec4(2, 2, 2, 1);
+      got.push_back(in.textures->SampleLod(0, glm::vec2(in.attrib[1]), 0.0f));
+    }
+    bool Fragment(const FragmentIn<testing::NoVaryings>&, FragmentOut&) const { return false; }
+  } shader;
+  gl.TexParameteri(TEXTURE_2D, TEXTURE_MIN_FILTER, NEAREST);
+  gl.UseProgram(shader);
+  testing::MakeVertexArray(gl, {{0, 0, 0, 1}, {0, 0, 0, 1}}, {{0.25f, 0.25f, 0, 0}, {0.25f, 0.75f, 0, 0}});
+  gl.DrawArrays(POINTS, 0, 2);
+  REQUIRE(shader.got.size() == 2);
+  CHECK(shader.got[0] == glm::vec4(0, 0, 1, 1));  // flipped: the file's bottom row (blue) is at t = 0
+  CHECK(shader.got[1] == glm::vec4(1, 0, 0, 1));
+
+  CHECK_FALSE(gl.TexImage2DFromFile(TEXTURE_2D, (dir / "missing.png").string(), true, &error));
+  CHECK(error.find("missing.png") != std::string::npos);
+  {
+    std::ofstream corrupt(dir / "corrupt.png", std::ios::binary);
+    corrupt << "\x89PNG\r\n\x1a\n this is not a png";
+  }
+  CHECK_FALSE(gl.TexImage2DFromFile(TEXTURE_2D, (dir / "corrupt.png").string(), true, &error));
+  {
+    std::ofstream truncated(dir / "truncated.png", std::ios::binary);
+    std::ifstream good(dir / "two.png", std::ios::binary);
+    std::vector<char> bytes((std::istreambuf_iterator<char>(good)), {});
+    truncated.write(bytes.data(), std::streamsize(bytes.size() / 2));
+  }
+  CHECK_FALSE(gl.TexImage2DFromFile(TEXTURE_2D, (dir / "truncated.png").string(), true, &error));
+  CHECK(gl.GetError() == NO_ERROR);  // a bad file is not a GL error
+}
+
+// ---- Framebuffer objects --------------------------------------------------------------------------------------
+
+TEST_CASE("framebuffer completeness rules", "[framebuffer]") {
+  Context gl(4, 4);
+  CHECK(gl.CheckFramebufferStatus(FRAMEBUFFER) == FRAMEBUFFER_COMPLETE);  // the context's own
+  const std::uint32_t fbo = gl.GenFramebuffer();
+  gl.BindFramebuffer(FRAMEBUFFER, fbo);
+  CHECK(gl.CheckFramebufferStatus(FRAMEBUFFER) == FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT);
+  const std::uint32_t color = gl.GenTexture(), depth = gl.GenTexture();
+  gl.BindTexture(TEXTURE_2D, color);
+  gl.FramebufferTexture2D(FRAMEBUFFER, COLOR_ATTACHMENT0, TEXTURE_2D, color, 0);
+  CHECK(gl.CheckFramebufferStatus(FRAMEBUFFER) == FRAMEBUFFER_INCOMPLETE_ATTACHMENT);  // level 0 undefined
+  gl.TexImage2D(TEXTURE_2D, 0, RGBA8, 8, 8, 0, RGBA, UNSIGNED_BYTE, nullptr);
+  CHECK(gl.CheckFramebufferStatus(FRAMEBUFFER) == FRAMEBUFFER_COMPLETE);
+  gl.BindTexture(TEXTURE_2D, depth);
+  gl.TexImage2D(TEXTURE_2D, 0, RGBA8, 8, 8, 0, RGBA, UNSIGNED_BYTE, nullptr);
+  gl.FramebufferTexture2D(FRAMEBUFFER, DEPTH_ATTACHMENT, TEXTURE_2D, depth, 0);
+  CHECK(gl.CheckFramebufferStatus(FRAMEBUFFER) == FRAMEBUFFER_INCOMPLETE_ATTACHMENT);  // colour as depth
+  gl.TexImage2D(TEXTURE_2D, 0, DEPTH_COMPONENT, 6, 6, 0, DEPTH_COMPONENT, FLOAT, nullptr);
+  CHECK(gl.CheckFramebufferStatus(FRAMEBUFFER) == FRAMEBUFFER_COMPLETE);  // sizes may differ (OpenGL 3.0+)
+  const Enum bufs[2] = {COLOR_ATTACHMENT0, COLOR_ATTACHMENT0 + 1};
+  gl.DrawBuffers(2, bufs);
+  CHECK(gl.CheckFramebufferStatus(FRAMEBUFFER) == FRAMEBUFFER_INCOMPLETE_DRAW_BUFFER);
+  gl.Clear(COLOR_BUFFER_BIT);
+  CHECK(gl.GetError() == INVALID_FRAMEBUFFER_OPERATION);
+  gl.DrawBuffers(1, bufs);
+  CHECK(gl.CheckFramebufferStatus(FRAMEBUFFER) == FRAMEBUFFER_COMPLETE);
+  gl.FramebufferTexture2D(FRAMEBUFFER, COLOR_ATTACHMENT0 + 4, TEXTURE_2D, color, 0);
+  CHECK(gl.GetError() == INVALID_ENUM);
+  gl.FramebufferTexture2D(FRAMEBUFFER, COLOR_ATTACHMENT0, TEXTURE_CUBE_MAP_POSITIVE_X, color, 0);
+  CHECK(gl.GetError() == INVALID_OPERATION);  // not a cube map
+  gl.FramebufferTexture2D(FRAMEBUFFER, COLOR_ATTACHMENT0, TEXTURE_2D, 12345, 0);
+  CHECK(gl.GetError() == INVALID_OPERATION);
+  gl.CheckFramebufferStatus(0x1234);
+  CHECK(gl.GetError() == INVALID_ENUM);
+  gl.BindFramebuffer(FRAMEBUFFER, 0);
+  gl.FramebufferTexture2D(FRAMEBUFFER, COLOR_ATTACHMENT0, TEXTURE_2D, color, 0);
+  CHECK(gl.GetError() == INVALID_OPERATION);  // the context's own framebuffer has no attachments
+  // Deleting an attached texture detaches it from the bound framebuffer object.
+  gl.BindFramebuffer(FRAMEBUFFER, fbo);
+  gl.DeleteTexture(color);
+  CHECK(gl.CheckFramebufferStatus(FRAMEBUFFER) == FRAMEBUFFER_INCOMPLETE_DRAW_BUFFER);
+}
+
+TEST_CASE("render to texture, then sample it in a second pass", "[framebuffer]") {
+  Context gl(8, 8);
+  // Pass 1: a 4 x 4 RGBA8 texture, left half red and right half green, drawn through a framebuffer object.
+  const std::uint32_t tex = gl.GenTexture(), fbo = gl.GenFramebuffer();
+  gl.BindTexture(TEXTURE_2D, tex);
+  gl.TexImage2D(TEXTURE_2D, 0, RGBA8, 4, 4, 0, RGBA, UNSIGNED_BYTE, nullptr);
+  gl.TexParameteri(TEXTURE_2D, TEXTURE_MIN_FILTER, NEAREST);
+  gl.TexParameteri(TEXTURE_2D, TEXTURE_MAG_FILTER, NEAREST);
+  gl.BindFramebuffer(FRAMEBUFFER, fbo);
+  gl.FramebufferTexture2D(FRAMEBUFFER, COLOR_ATTACHMENT0, TEXTURE_2D, tex, 0);
+  REQUIRE(gl.CheckFramebufferStatus(FRAMEBUFFER) == FRAMEBUFFER_COMPLETE);
+  gl.Viewport(0, 0, 4, 4);
+  gl.ClearColor(0, 1, 0, 1);
+  gl.Clear(COLOR_BUFFER_BIT);
+  testing::SolidShader red;
+  red.color = glm::vec4(1, 0, 0, 1);
+  gl.UseProgram(red);
+  const std::uint32_t quad = testing::MakeVertexArray(gl, {{-1, -1, 0, 1}, {0, -1, 0, 1}, {-1, 1, 0, 1}, {0, 1, 0, 1}});
+  gl.DrawArrays(TRIANGLE_STRIP, 0, 4);
+  std::uint8_t px[4];
+  gl.ReadPixel(1, 1, px);  // reads the framebuffer object now
+  CHECK((px[0] == 255 && px[1] == 0));
+  CHECK(gl.ReadPixels().width == 4);
+  // Pass 2: the default framebuffer, a full-screen quad sampling the texture.
+  struct Show : softgl::Shader<Show, testing::Vec4Varyings> {
+    void Vertex(const VertexIn& in, VertexOut<testing::Vec4Varyings>& out) const {
+      out.position = in.attrib[0];
+      out.varyings.value = in.attrib[0] * 0.5f + 0.5f;
+    }
+    bool Fragment(const FragmentIn<testing::Vec4Varyings>& in, FragmentOut& out) const {
+      out.color[0] = in.textures->Sample(0, glm::vec2(in.varyings.value), {}, {});
+      return true;
+    }
+  } show;
+  gl.BindFramebuffer(FRAMEBUFFER, 0);
+  gl.Viewport(0, 0, 8, 8);
+  gl.UseProgram(show);
+  testing::MakeVertexArray(gl, {{-1, -1, 0, 1}, {1, -1, 0, 1}, {-1, 1, 0, 1}, {1, 1, 0, 1}});
+  gl.DrawArrays(TRIANGLE_STRIP, 0, 4);
+  gl.ReadPixel(1, 4, px);
+  CHECK((px[0] == 255 && px[1] == 0));
+  gl.ReadPixel(6, 4, px);
+  CHECK((px[0] == 0 && px[1] == 255));
+  CHECK(gl.GetError() == NO_ERROR);
+  (void)quad;
+}
+
+TEST_CASE("one fragment shader writes four render targets, with depth in a depth texture", "[framebuffer]") {
+  struct Mrt : softgl::Shader<Mrt, testing::NoVaryings> {
+    void Vertex(const VertexIn& in, VertexOut<testing::NoVaryings>& out) const { out.position = in.attrib[0]; }
+    bool Fragment(const FragmentIn<testing::NoVaryings>&, FragmentOut& out) const {
+      out.color[0] = glm::vec4(1, 0, 0, 1);
+      out.color[1] = glm::vec4(0, 1, 0, 1);
+      out.color[2] = glm::vec4(0.25f, 2.0f, -1.0f, 1);  // a float target keeps values outside [0, 1]
+      out.color[3] = glm::vec4(0.5f, 0, 0, 0);
+      return true;
+    }
+  } shader;
+  Context gl(1, 1);
+  const std::uint32_t fbo = gl.GenFramebuffer();
+  gl.BindFramebuffer(FRAMEBUFFER, fbo);
+  const Enum formats[4] = {RGBA8, RGBA8, RGBA32F, R8};
+  std::uint32_t tex[5];
+  gl.GenTextures(5, tex);
+  for (int i = 0; i < 4; ++i) {
+    gl.BindTexture(TEXTURE_2D, tex[i]);
+    gl.TexImage2D(TEXTURE_2D, 0, formats[i], 4, 4, 0, RGBA, UNSIGNED_BYTE, nullptr);
+    gl.FramebufferTexture2D(FRAMEBUFFER, COLOR_ATTACHMENT0 + Enum(i), TEXTURE_2D, tex[i], 0);
+  }
+  gl.BindTexture(TEXTURE_2D, tex[4]);
+  gl.TexImage2D(TEXTURE_2D, 0, DEPTH_COMPONENT, 4, 4, 0, DEPTH_COMPONENT, FLOAT, nullptr);
+  gl.FramebufferTexture2D(FRAMEBUFFER, DEPTH_ATTACHMENT, TEXTURE_2D, tex[4], 0);
+  const Enum bufs[4] = {COLOR_ATTACHMENT0, COLOR_ATTACHMENT0 + 1, COLOR_ATTACHMENT0 + 2, COLOR_ATTACHMENT0 + 3};
+  gl.DrawBuffers(4, bufs);
+  REQUIRE(gl.CheckFramebufferStatus(FRAMEBUFFER) == FRAMEBUFFER_COMPLETE);
+  gl.Viewport(0, 0, 4, 4);
+  gl.Enable(DEPTH_TEST);
+  gl.Clear(COLOR_BUFFER_BIT | DEPTH_BUFFER_BIT);
+  gl.UseProgram(shader);
+  testing::MakeVertexArray(gl, {{-1, -1, 0.5f, 1}, {3, -1, 0.5f, 1}, {-1, 3, 0.5f, 1}});
+  gl.DrawArrays(TRIANGLES, 0, 3);
+  CHECK(gl.GetError() == NO_ERROR);
+  CHECK(gl.ReadDepth(2, 2) == Approx(0.75f));
+  // Read each target back by sampling it.
+  struct Fetch : softgl::Shader<Fetch, testing::NoVaryings> {
+    mutable std::vector<glm::vec4> got;
+    void Vertex(const VertexIn& in, VertexOut<testing::NoVaryings>& out) const {
+      out.position = glm::vec4(2, 2, 2, 1);
+      for (int u = 0; u < 5; ++u) got.push_back(in.textures->SampleLod(u, {0.5f, 0.5f}, 0.0f));
+    }
+    bool Fragment(const FragmentIn<testing::NoVaryings>&, FragmentOut&) const { return false; }
+  } fetch;
+  for (int u = 0; u < 5; ++u) {
+    gl.ActiveTexture(TEXTURE0 + Enum(u));
+    gl.BindTexture(TEXTURE_2D, tex[u]);
+    gl.TexParameteri(TEXTURE_2D, TEXTURE_MIN_FILTER, NEAREST);
+  }
+  gl.BindFramebuffer(FRAMEBUFFER, 0);
+  gl.UseProgram(fetch);
+  gl.DrawArrays(POINTS, 0, 1);
+  REQUIRE(fetch.got.size() == 5);
+  CHECK(fetch.got[0] == glm::vec4(1, 0, 0, 1));
+  CHECK(fetch.got[1] == glm::vec4(0, 1, 0, 1));
+  CHECK(fetch.got[2] == glm::vec4(0.25f, 2.0f, -1.0f, 1));
+  CHECK(fetch.got[3].r == Approx(128.0f / 255.0f));  // R8 keeps r only
+  CHECK(fetch.got[3].a == 1.0f);
+  CHECK(fetch.got[4].r == Approx(0.75f));
+}
