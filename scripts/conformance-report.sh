@@ -5,7 +5,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 bin=build/release/tests/softgl_conformance
 [ -x "$bin" ] || { echo "build first: ./scripts/test.sh" >&2; exit 1; }
-echo "| scene | renderer | check | differing pixels | largest channel difference | coverage differing | depth beyond 2^-22 | stencil differing | verdict |"
-echo "|---|---|---|---|---|---|---|---|---|"
+echo "| scene | renderer | check | differing pixels | largest channel difference | beyond tolerance | coverage differing | depth beyond 2^-22 | stencil differing | verdict |"
+echo "|---|---|---|---|---|---|---|---|---|---|"
 GALLIUM_DRIVER=llvmpipe LP_NUM_THREADS=0 "$bin" --report
 GALLIUM_DRIVER=softpipe "$bin" --report

@@ -28,6 +28,20 @@ enum class Program {
   kColor,  // colour = interpolated attribute 1
   kUv,     // colour = (extra.x, extra.y, 0.5, 1), extra interpolated: shows perspective-correct interpolation
   kLit,    // per-fragment Blinn-Phong: normal = extra.xyz (world), colour = tint * (ambient + diffuse) + specular
+  kTexture,  // colour = texture(unit 0, extra.xy): implicit derivatives, so the LOD comes from the quad
+};
+
+/// A 2D RGBA8 texture for unit 0: the levels given (level 0 first), or level 0 and GenerateMipmap.
+struct TextureDesc {
+  struct Level {
+    int width = 0, height = 0;
+    std::vector<std::uint8_t> rgba;  // rows bottom first
+  };
+  std::vector<Level> levels;
+  bool generate_mipmap = false;
+  Enum min_filter = softgl::LINEAR_MIPMAP_LINEAR, mag_filter = softgl::LINEAR;
+  Enum wrap_s = softgl::REPEAT, wrap_t = softgl::REPEAT;
+  glm::vec4 border{0.0f};
 };
 
 struct Uniforms {
@@ -75,6 +89,12 @@ class Backend {
   virtual void Draw(Enum mode, const std::vector<Vertex>& vertices, const std::vector<std::uint32_t>& indices,
                     Program program, const Uniforms& uniforms) = 0;
   virtual Frame Read() = 0;
+  /// Defines the texture of unit 0 (replacing any before).
+  virtual void SetTexture(const TextureDesc& desc) = 0;
+  /// Directs drawing into a new width x height RGBA8 texture with a depth texture (viewport set to it).
+  virtual void BeginRenderToTexture(int width, int height) = 0;
+  /// Back to the default framebuffer (viewport restored); the texture drawn becomes unit 0's, LINEAR filtered.
+  virtual void EndRenderToTexture() = 0;
 
   // Conveniences over the calls above.
   void StencilFunc(Enum func, int ref, std::uint32_t mask) { StencilFuncSeparate(softgl::FRONT_AND_BACK, func, ref, mask); }

@@ -51,6 +51,13 @@ void main() {
 }
 )";
 
+constexpr const char* kTextureFragment = R"(#version 330 core
+in vec4 v_extra;
+uniform sampler2D u_tex;
+out vec4 o_color;
+void main() { o_color = texture(u_tex, v_extra.xy); }
+)";
+
 GLuint Compile(GLenum type, const char* source, std::string* error) {
   const GLuint s = glCreateShader(type);
   glShaderSource(s, 1, &source, nullptr);
@@ -89,6 +96,7 @@ class GlBackend final : public Backend {
     programs_[0] = Link(kColorFragment, error);
     programs_[1] = Link(kUvFragment, error);
     programs_[2] = Link(kLitFragment, error);
+    programs_[3] = Link(kTextureFragment, error);
     if (!error->empty()) return false;
     glGenVertexArrays(1, &vao_);
     glBindVertexArray(vao_);
@@ -152,6 +160,51 @@ class GlBackend final : public Backend {
     }
   }
 
+  void SetTexture(const TextureDesc& d) override {
+    GLuint tex = 0;
+    glGenTextures(1, &tex);
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, tex);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    for (std::size_t l = 0; l < d.levels.size(); ++l)
+      glTexImage2D(GL_TEXTURE_2D, GLint(l), GL_RGBA8, d.levels[l].width, d.levels[l].height, 0, GL_RGBA,
+                   GL_UNSIGNED_BYTE, d.levels[l].rgba.data());
+    if (d.generate_mipmap) glGenerateMipmap(GL_TEXTURE_2D);
+    else glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, GLint(d.levels.size()) - 1);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GLint(d.min_filter));
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GLint(d.mag_filter));
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GLint(d.wrap_s));
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GLint(d.wrap_t));
+    glTexParameterfv(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, &d.border[0]);
+    glUseProgram(programs_[3]);
+    glUniform1i(glGetUniformLocation(programs_[3], "u_tex"), 0);
+  }
+
+  void BeginRenderToTexture(int width, int height) override {
+    GLuint depth = 0, fbo = 0;
+    glGenTextures(1, &rtt_color_);
+    glBindTexture(GL_TEXTURE_2D, rtt_color_);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, width, height, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+    glGenTextures(1, &depth);
+    glBindTexture(GL_TEXTURE_2D, depth);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT24, width, height, 0, GL_DEPTH_COMPONENT, GL_FLOAT, nullptr);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glGenFramebuffers(1, &fbo);
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, rtt_color_, 0);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, depth, 0);
+    glViewport(0, 0, width, height);
+  }
+
+  void EndRenderToTexture() override {
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glViewport(0, 0, w_, h_);
+    glBindTexture(GL_TEXTURE_2D, rtt_color_);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glUseProgram(programs_[3]);
+    glUniform1i(glGetUniformLocation(programs_[3], "u_tex"), 0);
+  }
+
   Frame Read() override {
     Frame f;
     f.width = w_;
@@ -170,7 +223,8 @@ class GlBackend final : public Backend {
   OSMesaContext ctx_;
   int w_, h_;
   std::vector<std::uint8_t> buffer_;
-  GLuint programs_[3] = {};
+  GLuint programs_[4] = {};
+  GLuint rtt_color_ = 0;
   GLuint vao_ = 0, vbo_ = 0, ebo_ = 0;
 };
 

@@ -58,6 +58,21 @@ struct LitShader : softgl::Shader<LitShader, LitVaryings> {
   }
 };
 
+struct TexVaryings {
+  glm::vec2 uv;
+};
+
+struct TextureShader : softgl::Shader<TextureShader, TexVaryings> {
+  void Vertex(const softgl::VertexIn& in, softgl::VertexOut<TexVaryings>& out) const {
+    out.position = in.attrib[0];
+    out.varyings.uv = glm::vec2(in.attrib[2]);
+  }
+  bool Fragment(const softgl::FragmentIn<TexVaryings>& in, softgl::FragmentOut& out) const {
+    out.color[0] = in.Texture(0, &TexVaryings::uv);
+    return true;
+  }
+};
+
 class SoftglBackend final : public Backend {
  public:
   SoftglBackend(int w, int h) : gl_(w, h) {
@@ -107,6 +122,7 @@ class SoftglBackend final : public Backend {
       case Program::kColor: gl_.UseProgram(color_); break;
       case Program::kUv: gl_.UseProgram(uv_); break;
       case Program::kLit: gl_.UseProgram(lit_); break;
+      case Program::kTexture: gl_.UseProgram(texture_); break;
     }
     if (indices.empty()) {
       gl_.DrawArrays(mode, 0, int(vertices.size()));
@@ -115,6 +131,43 @@ class SoftglBackend final : public Backend {
                      indices.data());
       gl_.DrawElement(mode, int(indices.size()), softgl::UNSIGNED_INT, 0);
     }
+  }
+
+  void SetTexture(const TextureDesc& d) override {
+    const std::uint32_t tex = gl_.GenTexture();
+    gl_.BindTexture(softgl::TEXTURE_2D, tex);
+    gl_.PixelStore(softgl::UNPACK_ALIGNMENT, 1);
+    for (std::size_t l = 0; l < d.levels.size(); ++l)
+      gl_.TexImage2D(softgl::TEXTURE_2D, int(l), softgl::RGBA8, d.levels[l].width, d.levels[l].height, 0, softgl::RGBA,
+                     softgl::UNSIGNED_BYTE, d.levels[l].rgba.data());
+    if (d.generate_mipmap) gl_.GenerateMipmap(softgl::TEXTURE_2D);
+    else gl_.TexParameteri(softgl::TEXTURE_2D, softgl::TEXTURE_MAX_LEVEL, int(d.levels.size()) - 1);
+    gl_.TexParameteri(softgl::TEXTURE_2D, softgl::TEXTURE_MIN_FILTER, int(d.min_filter));
+    gl_.TexParameteri(softgl::TEXTURE_2D, softgl::TEXTURE_MAG_FILTER, int(d.mag_filter));
+    gl_.TexParameteri(softgl::TEXTURE_2D, softgl::TEXTURE_WRAP_S, int(d.wrap_s));
+    gl_.TexParameteri(softgl::TEXTURE_2D, softgl::TEXTURE_WRAP_T, int(d.wrap_t));
+    gl_.TexParameterfv(softgl::TEXTURE_2D, softgl::TEXTURE_BORDER_COLOR, &d.border[0]);
+  }
+
+  void BeginRenderToTexture(int width, int height) override {
+    rtt_color_ = gl_.GenTexture();
+    const std::uint32_t depth = gl_.GenTexture(), fbo = gl_.GenFramebuffer();
+    gl_.BindTexture(softgl::TEXTURE_2D, rtt_color_);
+    gl_.TexImage2D(softgl::TEXTURE_2D, 0, softgl::RGBA8, width, height, 0, softgl::RGBA, softgl::UNSIGNED_BYTE, nullptr);
+    gl_.BindTexture(softgl::TEXTURE_2D, depth);
+    gl_.TexImage2D(softgl::TEXTURE_2D, 0, softgl::DEPTH_COMPONENT, width, height, 0, softgl::DEPTH_COMPONENT,
+                   softgl::FLOAT, nullptr);
+    gl_.BindFramebuffer(softgl::FRAMEBUFFER, fbo);
+    gl_.FramebufferTexture2D(softgl::FRAMEBUFFER, softgl::COLOR_ATTACHMENT0, softgl::TEXTURE_2D, rtt_color_, 0);
+    gl_.FramebufferTexture2D(softgl::FRAMEBUFFER, softgl::DEPTH_ATTACHMENT, softgl::TEXTURE_2D, depth, 0);
+    gl_.Viewport(0, 0, width, height);
+  }
+
+  void EndRenderToTexture() override {
+    gl_.BindFramebuffer(softgl::FRAMEBUFFER, 0);
+    gl_.Viewport(0, 0, gl_.Width(), gl_.Height());
+    gl_.BindTexture(softgl::TEXTURE_2D, rtt_color_);
+    gl_.TexParameteri(softgl::TEXTURE_2D, softgl::TEXTURE_MIN_FILTER, softgl::LINEAR);
   }
 
   Frame Read() override {
@@ -138,6 +191,8 @@ class SoftglBackend final : public Backend {
   ColorShader color_;
   UvShader uv_;
   LitShader lit_;
+  TextureShader texture_;
+  std::uint32_t rtt_color_ = 0;
 };
 
 }  // namespace

@@ -413,6 +413,114 @@ void PolygonOffset(Backend& b) {
   b.Disable(DEPTH_TEST);
 }
 
+// ---- Textures ----------------------------------------------------------------------------------------------------
+
+// A 64 x 64 pattern level and its mipmaps computed here (each texel the pattern at that level's scale), each level
+// tinted a little differently, so that a wrong level choice shows; channels are exact bytes.
+TextureDesc PatternTexture(bool tint_levels) {
+  TextureDesc d;
+  for (int size = 64, level = 0; size >= 1; size /= 2, ++level) {
+    TextureDesc::Level l;
+    l.width = l.height = size;
+    for (int y = 0; y < size; ++y)
+      for (int x = 0; x < size; ++x) {
+        const int scale = 64 / size;
+        const int X = x * scale, Y = y * scale;
+        const bool check = ((X / 8) + (Y / 8)) % 2 == 0, line = X % 16 < 2;
+        std::uint8_t r = check ? 230 : 40, g = line ? 200 : std::uint8_t(X * 4), b = std::uint8_t(Y * 4);
+        if (tint_levels) r = std::uint8_t(r * 3 / 4 + level * 10);  // levels apart, as real mipmaps are
+        l.rgba.insert(l.rgba.end(), {r, g, b, 255});
+      }
+    d.levels.push_back(std::move(l));
+  }
+  return d;
+}
+
+// A floor receding to the horizon, with uv repeating `repeat` times, drawn in the viewport rectangle given.
+void RecedingPlane(Backend& b, int x, int y, int w, int h, float repeat) {
+  b.Viewport(x, y, w, h);
+  const glm::mat4 mvp = glm::perspective(glm::radians(60.0f), float(w) / float(h), 0.3f, 60.0f) *
+                        glm::lookAt(glm::vec3(0, 1, 1), glm::vec3(0, 0, -8), glm::vec3(0, 1, 0));
+  const glm::vec3 p[4] = {{-6, 0, 1}, {6, 0, 1}, {6, 0, -40}, {-6, 0, -40}};
+  const glm::vec2 uv[4] = {{0, 0}, {repeat, 0}, {repeat, repeat * 3.5f}, {0, repeat * 3.5f}};
+  std::vector<Vertex> v;
+  for (int i : {0, 1, 3, 1, 2, 3}) v.push_back({mvp * glm::vec4(p[i], 1), glm::vec4(1), glm::vec4(uv[i], 0, 0)});
+  b.Draw(TRIANGLES, v, Program::kTexture);
+  b.Viewport(0, 0, kSize, kSize);
+}
+
+void TextureFilters(Backend& b) {
+  b.ClearColor(0, 0, 0, 1);
+  b.Clear(COLOR_BUFFER_BIT);
+  const Enum mins[6] = {NEAREST, LINEAR, NEAREST_MIPMAP_NEAREST, LINEAR_MIPMAP_NEAREST, NEAREST_MIPMAP_LINEAR,
+                        LINEAR_MIPMAP_LINEAR};
+  for (int i = 0; i < 6; ++i) {
+    TextureDesc d = PatternTexture(true);
+    d.min_filter = mins[i];
+    d.mag_filter = i % 2 ? LINEAR : NEAREST;
+    b.SetTexture(d);
+    RecedingPlane(b, (i % 3) * 42, (i / 3) * 64, 42, 64, 4.0f);
+  }
+}
+
+void TextureWraps(Backend& b) {
+  b.ClearColor(0, 0, 0, 1);
+  b.Clear(COLOR_BUFFER_BIT);
+  const Enum wraps[4] = {REPEAT, MIRRORED_REPEAT, CLAMP_TO_EDGE, CLAMP_TO_BORDER};
+  for (int i = 0; i < 8; ++i) {
+    TextureDesc d = PatternTexture(false);
+    d.levels.resize(1);
+    d.levels[0].width = d.levels[0].height = 64;
+    d.min_filter = d.mag_filter = i < 4 ? NEAREST : LINEAR;
+    d.wrap_s = wraps[i % 4];
+    d.wrap_t = wraps[(i + 1) % 4];
+    d.border = glm::vec4(0.2f, 0.6f, 1.0f, 1.0f);
+    b.SetTexture(d);
+    // A quad of 32 x 64 pixels with uv from -1.25 to 2.25: each texel is magnified, wrapping shows.
+    const float x0 = float(i % 4) * 32, y0 = float(i / 4) * 64;
+    std::vector<Vertex> v;
+    const glm::vec4 p[4] = {Win(x0, y0), Win(x0 + 32, y0), Win(x0 + 32, y0 + 64), Win(x0, y0 + 64)};
+    const glm::vec2 uv[4] = {{-1.25f, -1.25f}, {2.25f, -1.25f}, {2.25f, 2.25f}, {-1.25f, 2.25f}};
+    for (int k : {0, 1, 3, 1, 2, 3}) v.push_back({p[k], glm::vec4(1), glm::vec4(uv[k], 0, 0)});
+    b.Draw(TRIANGLES, v, Program::kTexture);
+  }
+}
+
+void TextureGeneratedMipmaps(Backend& b) {
+  b.ClearColor(0, 0, 0, 1);
+  b.Clear(COLOR_BUFFER_BIT);
+  TextureDesc d = PatternTexture(false);
+  d.levels.resize(1);
+  d.generate_mipmap = true;
+  d.min_filter = LINEAR_MIPMAP_LINEAR;
+  b.SetTexture(d);
+  RecedingPlane(b, 0, 0, kSize, kSize, 6.0f);
+}
+
+void RenderToTexture(Backend& b) {
+  // Pass 1: a 64 x 64 texture with coloured triangles and a depth test.
+  b.BeginRenderToTexture(64, 64);
+  b.ClearColor(0.1f, 0.2f, 0.3f, 1);
+  b.ClearDepth(1.0);
+  b.Clear(COLOR_BUFFER_BIT | DEPTH_BUFFER_BIT);
+  b.Enable(DEPTH_TEST);
+  b.Draw(TRIANGLES, {{{-0.9f, -0.9f, 0.5f, 1}, {1, 0, 0, 1}}, {{0.9f, -0.7f, -0.5f, 1}, {0, 1, 0, 1}},
+                     {{0.0f, 0.9f, 0.0f, 1}, {0, 0, 1, 1}}, {{-0.9f, 0.6f, -0.2f, 1}, {1, 1, 0, 1}},
+                     {{0.8f, 0.8f, 0.3f, 1}, {1, 0, 1, 1}}, {{0.3f, -0.9f, 0.1f, 1}, {0, 1, 1, 1}}});
+  b.Disable(DEPTH_TEST);
+  b.EndRenderToTexture();
+  // Pass 2: the texture on a rotated quad, magnified (LINEAR).
+  b.ClearColor(0, 0, 0, 1);
+  b.Clear(COLOR_BUFFER_BIT);
+  const float c = std::cos(0.4f), s = std::sin(0.4f);
+  auto p = [&](float x, float y) { return glm::vec4(0.8f * (c * x - s * y), 0.8f * (s * x + c * y), 0, 1); };
+  std::vector<Vertex> v;
+  const glm::vec4 corners[4] = {p(-1, -1), p(1, -1), p(1, 1), p(-1, 1)};
+  const glm::vec2 uv[4] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  for (int k : {0, 1, 3, 1, 2, 3}) v.push_back({corners[k], glm::vec4(1), glm::vec4(uv[k], 0, 0)});
+  b.Draw(TRIANGLES, v, Program::kTexture);
+}
+
 // ---- A real model ------------------------------------------------------------------------------------------------
 
 void Model(Backend& b) {
@@ -478,6 +586,10 @@ const std::vector<SceneInfo>& Scenes() {
       {"masks", kSize, kSize, Check::kExactWithStencil, Masks},
       {"scissor", kSize, kSize, Check::kExact, Scissor},
       {"polygon_offset", kSize, kSize, Check::kExactWithDepth, PolygonOffset},
+      {"texture_filters", kSize, kSize, Check::kTexture, TextureFilters},
+      {"texture_wraps", kSize, kSize, Check::kTexture, TextureWraps},
+      {"texture_generated_mipmaps", kSize, kSize, Check::kTexture, TextureGeneratedMipmaps},
+      {"render_to_texture", kSize, kSize, Check::kTexture, RenderToTexture},
       {"model", 256, 256, Check::kColor, Model},
   };
   return scenes;

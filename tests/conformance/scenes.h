@@ -16,10 +16,13 @@ enum class Check {
   kExactWithStencil,  // colour and stencil identical
   kColor,             // colour within +-1 per channel
   kCoverage,          // the same pixels drawn (against a black background); colours reported, not compared
+  kTexture,           // colour within +-1 on at least 99.5% of the pixels (texture filtering)
 };
 
 /// The largest colour difference a check allows (kCoverage: any).
-inline int Tolerance(Check c) { return c == Check::kColor ? 1 : c == Check::kCoverage ? 255 : 0; }
+inline int Tolerance(Check c) {
+  return c == Check::kColor || c == Check::kTexture ? 1 : c == Check::kCoverage ? 255 : 0;
+}
 
 struct SceneInfo {
   const char* name;
