@@ -2,6 +2,8 @@
 // (which compare them with golden images).
 #pragma once
 
+#include <string>
+
 #include <softgl/softgl.h>
 
 namespace scenes {
@@ -51,5 +53,14 @@ softgl::Image PostProcess(int width, int height);
 /// Environment mapping: a sphere and a gold torus reflect a cube map (computed per texel, mipmapped), which is
 /// also drawn as the background.
 softgl::Image EnvironmentMap(int width, int height);
+
+/// The model in `path` (any format assimp reads), framed by its bounding box from (azimuth, elevation) degrees,
+/// three-point lit, drawn with the built-in shader named "unlit", "phong" or "pbr". An empty image, with the
+/// reason in `error`, when the model cannot be loaded.
+softgl::Image ModelView(const std::string& path, const std::string& shader, int width, int height, float azimuth,
+                        float elevation, std::string* error = nullptr);
+
+/// The folder of Debian's assimp-testmodels.
+inline constexpr const char* kTestModels = "/usr/share/assimp/models";
 
 }  // namespace scenes

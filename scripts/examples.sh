@@ -2,7 +2,7 @@
 # Builds softgl (Release) and runs every example program; the PNGs go to out/ and their paths are printed.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-scripts/deps.sh
+scripts/deps.sh assimp-testmodels
 
 cmake -S . -B build/release -DCMAKE_BUILD_TYPE=Release
 cmake --build build/release -j "$(nproc)"
@@ -10,6 +10,6 @@ cmake --build build/release -j "$(nproc)"
 out="${1:-out}"
 mkdir -p "$out"
 for example in hello triangle cube wireframe clipped stencil_outline mirror transparency decals \
-    textured_cube shadow_map post_process environment_map; do
+    textured_cube shadow_map post_process environment_map models; do
   "build/release/examples/$example" "$out"
 done

@@ -879,6 +879,36 @@ void Context::TexSubImage2D(Enum target, int level, int x, int y, int width, int
   detail::UploadPixels(lv, x, y, width, height, format, type, s.unpack_alignment, pixels);
 }
 
+namespace {
+
+// Defines level 0 of the texture bound to target from a decoded image: 1 to 4 channels as R8, RG8, RGB8, RGBA8,
+// HDR as RGBA32F.
+bool TexImageFromLoaded(Context& gl, ContextState& s, Enum target, const detail::LoadedImage& img,
+                        const std::string& name, std::string* error) {
+  if (img.width > kMaxTextureSize || img.height > kMaxTextureSize || img.channels < 1 || img.channels > 4) {
+    s.SetError(INVALID_VALUE);
+    if (error) *error = name + ": larger than kMaxTextureSize, or an unsupported channel count";
+    return false;
+  }
+  static constexpr Enum kFormats[4] = {RED, RG, RGB, RGBA};
+  static constexpr Enum kInternal[4] = {R8, RG8, RGB8, RGBA8};
+  const Enum format = kFormats[img.channels - 1];
+  const Enum internal = img.hdr ? RGBA32F : kInternal[img.channels - 1];
+  const int saved_alignment = s.unpack_alignment;
+  s.unpack_alignment = 1;
+  const Enum before = s.error;
+  gl.TexImage2D(target, 0, internal, img.width, img.height, 0, format, img.hdr ? FLOAT : UNSIGNED_BYTE,
+                img.hdr ? static_cast<const void*>(img.floats.data()) : static_cast<const void*>(img.bytes.data()));
+  s.unpack_alignment = saved_alignment;
+  if (s.error != before) {
+    if (error) *error = name + ": the texture could not be defined";
+    return false;
+  }
+  return true;
+}
+
+}  // namespace
+
 bool Context::TexImage2DFromFile(Enum target, const std::string& path, bool flip_vertically, std::string* error) {
   auto& s = *state_;
   if (!IsTexImageTarget(target)) {
@@ -899,26 +929,31 @@ bool Context::TexImage2DFromFile(Enum target, const std::string& path, bool flip
     if (error) *error = path + ": out of memory";
     return false;
   }
-  if (img.width > kMaxTextureSize || img.height > kMaxTextureSize) {
-    s.SetError(INVALID_VALUE);
-    if (error) *error = path + ": larger than kMaxTextureSize";
+  return TexImageFromLoaded(*this, s, target, img, path, error);
+}
+
+bool Context::TexImage2DFromMemory(Enum target, const void* data, std::size_t size, bool flip_vertically,
+                                   std::string* error) {
+  auto& s = *state_;
+  if (!IsTexImageTarget(target)) {
+    s.SetError(INVALID_ENUM);
+    if (error) *error = "invalid texture target";
     return false;
   }
-  static constexpr Enum kFormats[4] = {RED, RG, RGB, RGBA};
-  static constexpr Enum kInternal[4] = {R8, RG8, RGB8, RGBA8};
-  const Enum format = kFormats[img.channels - 1];
-  const Enum internal = img.hdr ? RGBA32F : kInternal[img.channels - 1];
-  const int saved_alignment = s.unpack_alignment;
-  s.unpack_alignment = 1;
-  const Enum before = s.error;
-  TexImage2D(target, 0, internal, img.width, img.height, 0, format, img.hdr ? FLOAT : UNSIGNED_BYTE,
-             img.hdr ? static_cast<const void*>(img.floats.data()) : static_cast<const void*>(img.bytes.data()));
-  s.unpack_alignment = saved_alignment;
-  if (s.error != before) {
-    if (error) *error = path + ": the texture could not be defined";
+  if (!s.Bound(target)) {
+    s.SetError(INVALID_OPERATION);
+    if (error) *error = "no texture bound";
     return false;
   }
-  return true;
+  detail::LoadedImage img;
+  try {
+    if (!detail::LoadImageMemory(data, size, "image in memory", flip_vertically, img, error)) return false;
+  } catch (const std::bad_alloc&) {
+    s.SetError(OUT_OF_MEMORY);
+    if (error) *error = "image in memory: out of memory";
+    return false;
+  }
+  return TexImageFromLoaded(*this, s, target, img, "image in memory", error);
 }
 
 void Context::GenerateMipmap(Enum target) {

@@ -10,6 +10,7 @@
 #define STB_IMAGE_WRITE_IMPLEMENTATION
 #include <stb/stb_image_write.h>
 
+#include <cstdint>
 #include <cstring>
 
 #include "image_io.h"
@@ -39,24 +40,29 @@ bool ReadImage(const std::string& path, Image& image, std::string* error) {
 
 namespace detail {
 
-bool LoadImageFile(const std::string& path, bool flip_vertically, LoadedImage& out, std::string* error) {
+namespace {
+
+// Decodes through the given stb calls (file or memory), then flips when asked.
+template <class Info, class IsHdr, class LoadF, class Load8>
+bool Decode(const std::string& name, bool flip_vertically, LoadedImage& out, std::string* error, Info info, IsHdr is_hdr,
+            LoadF loadf, Load8 load8) {
   int w = 0, h = 0, n = 0;
   out = LoadedImage{};
   auto fail = [&](const char* what) {
-    if (error) *error = path + ": " + (stbi_failure_reason() ? stbi_failure_reason() : what);
+    if (error) *error = name + ": " + (stbi_failure_reason() ? stbi_failure_reason() : what);
     return false;
   };
-  if (!stbi_info(path.c_str(), &w, &h, &n)) return fail("cannot read image");
-  out.hdr = stbi_is_hdr(path.c_str()) != 0;
+  if (!info(&w, &h, &n)) return fail("cannot read image");
+  out.hdr = is_hdr();
   std::size_t row_bytes = 0;
   if (out.hdr) {
-    float* data = stbi_loadf(path.c_str(), &w, &h, &n, 0);
+    float* data = loadf(&w, &h, &n);
     if (!data) return fail("cannot decode image");
     out.floats.assign(data, data + std::size_t(w) * std::size_t(h) * std::size_t(n));
     stbi_image_free(data);
     row_bytes = std::size_t(w) * std::size_t(n) * sizeof(float);
   } else {
-    stbi_uc* data = stbi_load(path.c_str(), &w, &h, &n, 0);
+    stbi_uc* data = load8(&w, &h, &n);
     if (!data) return fail("cannot decode image");
     out.bytes.assign(data, data + std::size_t(w) * std::size_t(h) * std::size_t(n));
     stbi_image_free(data);
@@ -77,6 +83,31 @@ bool LoadImageFile(const std::string& path, bool flip_vertically, LoadedImage& o
     }
   }
   return true;
+}
+
+}  // namespace
+
+bool LoadImageFile(const std::string& path, bool flip_vertically, LoadedImage& out, std::string* error) {
+  const char* p = path.c_str();
+  return Decode(
+      path, flip_vertically, out, error, [&](int* w, int* h, int* n) { return stbi_info(p, w, h, n); },
+      [&] { return stbi_is_hdr(p) != 0; }, [&](int* w, int* h, int* n) { return stbi_loadf(p, w, h, n, 0); },
+      [&](int* w, int* h, int* n) { return stbi_load(p, w, h, n, 0); });
+}
+
+bool LoadImageMemory(const void* data, std::size_t size, const std::string& name, bool flip_vertically,
+                     LoadedImage& out, std::string* error) {
+  if (data == nullptr || size == 0 || size > std::size_t(INT32_MAX)) {
+    if (error) *error = name + ": empty or oversized image data";
+    return false;
+  }
+  const auto* d = static_cast<const stbi_uc*>(data);
+  const int len = int(size);
+  return Decode(
+      name, flip_vertically, out, error, [&](int* w, int* h, int* n) { return stbi_info_from_memory(d, len, w, h, n); },
+      [&] { return stbi_is_hdr_from_memory(d, len) != 0; },
+      [&](int* w, int* h, int* n) { return stbi_loadf_from_memory(d, len, w, h, n, 0); },
+      [&](int* w, int* h, int* n) { return stbi_load_from_memory(d, len, w, h, n, 0); });
 }
 
 }  // namespace detail

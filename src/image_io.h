@@ -18,4 +18,8 @@ struct LoadedImage {
 /// OpenGL's texture coordinate t = 0 is. Returns false with a message for a missing, truncated or corrupt file.
 bool LoadImageFile(const std::string& path, bool flip_vertically, LoadedImage& out, std::string* error);
 
+/// As LoadImageFile, from an encoded image in memory; `name` labels error messages.
+bool LoadImageMemory(const void* data, std::size_t size, const std::string& name, bool flip_vertically,
+                     LoadedImage& out, std::string* error);
+
 }  // namespace softgl::detail

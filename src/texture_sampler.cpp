@@ -185,6 +185,17 @@ glm::vec4 Textures::SampleCube(int unit, glm::vec3 dir, glm::vec3 ddir_dx, glm::
   return SampleFace(*v, face, st, Lambda(*v, dx, dy, bias), DepthCompare{});
 }
 
+glm::vec4 Textures::SampleCubeLod(int unit, glm::vec3 dir, float lod) const {
+  const TextureView* v = Usable(unit_cube, unit);
+  if (!v) return kMissing;
+  const int face = CubeFace(dir);
+  glm::vec2 st(0.5f);
+  FaceCoords(face, dir, st);
+  const SamplerParams& p = v->texture->params;
+  const float lambda = std::clamp(lod + std::clamp(p.lod_bias, -16.0f, 16.0f), p.min_lod, p.max_lod);
+  return SampleFace(*v, face, st, std::isnan(lambda) ? 0.0f : lambda, DepthCompare{});
+}
+
 float Textures::SampleShadow(int unit, glm::vec2 uv, float ref, glm::vec2 duv_dx, glm::vec2 duv_dy) const {
   const TextureView* v = Usable(unit_2d, unit);
   if (!v || !v->depth || v->texture->params.compare_mode != COMPARE_REF_TO_TEXTURE) return 0.0f;

@@ -128,6 +128,9 @@ class Context {
   /// Returns false with a message in `error` for a missing or corrupt file (the texture is unchanged, no GL error),
   /// or an image too large (INVALID_VALUE).
   bool TexImage2DFromFile(Enum target, const std::string& path, bool flip_vertically, std::string* error = nullptr);
+  /// As TexImage2DFromFile, for an encoded image (PNG, JPEG, ...) already in memory, such as one embedded in a model.
+  bool TexImage2DFromMemory(Enum target, const void* data, std::size_t size, bool flip_vertically,
+                            std::string* error = nullptr);
   /// Builds levels base+1 .. 1x1 of the bound texture from its base level (each texel the bilinear sample of the
   /// level above at its centre: the 2x2 average for even sizes). Base level undefined: INVALID_OPERATION.
   void GenerateMipmap(Enum target);

@@ -32,6 +32,8 @@ class Textures {
   glm::vec4 SampleLod(int unit, glm::vec2 uv, float lod) const;
   /// texture(samplerCube, dir): face chosen by the major axis of dir, then as Sample on that face.
   glm::vec4 SampleCube(int unit, glm::vec3 dir, glm::vec3 ddir_dx, glm::vec3 ddir_dy, float bias = 0.0f) const;
+  /// textureLod(samplerCube, dir, lod).
+  glm::vec4 SampleCubeLod(int unit, glm::vec3 dir, float lod) const;
   /// texture(sampler2DShadow, vec3(uv, ref)): each texel the filter uses is compared with ref by the texture's
   /// TEXTURE_COMPARE_FUNC (1 if it passes, 0 if not) and the results are filtered: percentage-closer filtering.
   /// Needs TEXTURE_COMPARE_MODE = COMPARE_REF_TO_TEXTURE on a depth texture; otherwise returns 0.

@@ -1,0 +1,127 @@
+// softgl/model.h — models from files through assimp, material shaders' interface, and a camera helper.
+//
+// Part of the companion library softgl::model (it links assimp; the core library does not). A Model loads any
+// format assimp reads (OBJ+MTL, glTF 2.0 .gltf/.glb with embedded or external images, FBX, COLLADA, PLY, STL, 3DS,
+// ...) into a Context's buffers, vertex arrays and textures, and draws its node hierarchy with a MaterialProgram,
+// such as the built-in shaders of softgl/shaders.h.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+#include <softgl/context.h>
+
+namespace softgl {
+
+/// Vertex attribute locations of model meshes.
+enum ModelAttribute : std::uint32_t {
+  kAttribPosition = 0,  // vec3
+  kAttribNormal = 1,    // vec3 (generated, smooth, where the file has none)
+  kAttribUv = 2,        // vec2 (first channel; (0, 0) where absent)
+  kAttribTangent = 3,   // vec4: xyz tangent, w handedness (+1 or -1) of the bitangent; (0, 0, 0, 1) without uvs
+  kAttribColor = 4,     // vec4 vertex colour ((1, 1, 1, 1) where absent)
+};
+
+/// Texture units a material's textures are bound to while its meshes are drawn.
+enum MaterialUnit : int {
+  kUnitBaseColor = 0,
+  kUnitNormal = 1,
+  kUnitMetallicRoughness = 2,  // glTF: roughness in g, metallic in b
+  kUnitEmissive = 3,
+  kUnitOcclusion = 4,  // r
+  kUnitSpecular = 5,   // Phong specular intensity
+  kUnitEnvironment = 6,  // not a material's: a cube map for image-based ambient light (PbrShader)
+};
+
+struct Material {
+  enum class AlphaMode { kOpaque, kMask, kBlend };
+  std::string name;
+  glm::vec4 base_color{1.0f};  // glTF baseColorFactor or the diffuse colour
+  glm::vec3 specular{0.25f};   // Phong specular colour
+  float shininess = 32.0f;
+  glm::vec3 emissive{0.0f};
+  float metallic = 0.0f;
+  float roughness = 1.0f;
+  bool pbr = false;  // the file gives metallic-roughness parameters (glTF)
+  AlphaMode alpha_mode = AlphaMode::kOpaque;
+  float alpha_cutoff = 0.5f;
+  bool double_sided = false;
+  // Texture ids in the Context (0: none).
+  std::uint32_t base_color_texture = 0, normal_texture = 0, metallic_roughness_texture = 0, emissive_texture = 0,
+                occlusion_texture = 0, specular_texture = 0;
+};
+
+struct ModelMesh {
+  std::uint32_t vertex_array = 0;
+  int index_count = 0;
+  int vertex_count = 0;
+  int material = 0;
+};
+
+struct ModelNode {
+  std::string name;
+  glm::mat4 transform{1.0f};  // relative to the parent
+  std::vector<int> meshes;
+  std::vector<int> children;
+};
+
+struct Bounds {
+  glm::vec3 min{0.0f}, max{0.0f};
+  glm::vec3 Center() const { return (min + max) * 0.5f; }
+  float Radius() const { return glm::length(max - min) * 0.5f; }
+};
+
+/// What Model::Draw needs of a shader: the built-in shaders implement it; so can yours.
+class MaterialProgram {
+ public:
+  virtual ~MaterialProgram() = default;
+  virtual const Program& GetProgram() const = 0;
+  /// The node's world transform and the camera's view-projection, before each mesh.
+  virtual void SetTransforms(const glm::mat4& model, const glm::mat4& view_proj) = 0;
+  /// The mesh's material (its textures are bound to the MaterialUnit units by then).
+  virtual void SetMaterial(const Material& material) = 0;
+};
+
+class Model {
+ public:
+  /// Loads `path` into `gl`: meshes triangulated, smooth normals generated where missing, tangents computed,
+  /// images (external files or embedded) loaded as mipmapped textures. Returns false, with a message in `error`,
+  /// for a missing file, a format assimp cannot read, a corrupt file or a scene without triangles; `gl` may
+  /// then hold objects already made (deleting them is the caller's choice: Context objects die with it).
+  bool Load(Context& gl, const std::string& path, std::string* error = nullptr);
+
+  /// Draws every node, accumulating transforms from the root (times `world`): opaque and masked materials first,
+  /// then blended ones with blending on and depth writes off; back faces culled unless a material is double
+  /// sided. Leaves the vertex array, culling, blending and depth mask as they were.
+  void Draw(Context& gl, MaterialProgram& program, const glm::mat4& view_proj,
+            const glm::mat4& world = glm::mat4(1.0f)) const;
+
+  std::vector<ModelMesh> meshes;
+  std::vector<Material> materials;
+  std::vector<ModelNode> nodes;  // nodes[0] is the root
+  Bounds bounds;                 // of all vertices drawn, node transforms applied
+  int triangles_drawn = 0;       // instances counted
+  int textures_loaded = 0;
+  std::vector<std::string> warnings;  // textures that could not be read (the material then goes without)
+};
+
+/// A look-at camera with a perspective projection.
+struct Camera {
+  glm::vec3 eye{0.0f, 0.0f, 3.0f}, target{0.0f}, up{0.0f, 1.0f, 0.0f};
+  float fovy_degrees = 45.0f;
+  float near_plane = 0.1f, far_plane = 100.0f;
+
+  glm::mat4 View() const;
+  glm::mat4 Projection(float aspect) const;
+  /// On a sphere around `target`: azimuth about +y from +z, elevation above the xz plane, both in degrees.
+  static Camera Orbit(glm::vec3 target, float distance, float azimuth_degrees, float elevation_degrees,
+                      float fovy_degrees = 45.0f);
+  /// Orbits the centre of `bounds` at the distance where its bounding sphere fills the view (with a margin),
+  /// near and far planes fitted around it.
+  static Camera Frame(const Bounds& bounds, float aspect, float azimuth_degrees = 30.0f,
+                      float elevation_degrees = 20.0f, float fovy_degrees = 40.0f);
+};
+
+}  // namespace softgl

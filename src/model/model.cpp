@@ -1,0 +1,378 @@
+// model.cpp — loading models through assimp into softgl objects, drawing their node hierarchy, the camera helper.
+#include <softgl/model.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstring>
+#include <filesystem>
+#include <map>
+#include <utility>
+
+#include <assimp/GltfMaterial.h>
+#include <assimp/Importer.hpp>
+#include <assimp/material.h>
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+#include <glm/gtc/matrix_transform.hpp>
+
+namespace softgl {
+
+namespace {
+
+struct ModelVertex {
+  glm::vec3 position;
+  glm::vec3 normal;
+  glm::vec2 uv;
+  glm::vec4 tangent;
+  glm::vec4 color;
+};
+
+glm::mat4 ToGlm(const aiMatrix4x4& m) {
+  // assimp matrices are row-major; glm is column-major.
+  return glm::mat4(m.a1, m.b1, m.c1, m.d1, m.a2, m.b2, m.c2, m.d2, m.a3, m.b3, m.c3, m.d3, m.a4, m.b4, m.c4, m.d4);
+}
+
+bool Finite(const glm::mat4& m) {
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 4; ++r)
+      if (!std::isfinite(m[c][r])) return false;
+  return true;
+}
+
+class Loader {
+ public:
+  Loader(Context& gl, Model& model, const aiScene& scene, std::filesystem::path dir)
+      : gl_(gl), model_(model), scene_(scene), dir_(std::move(dir)) {}
+
+  void Materials() {
+    for (unsigned i = 0; i < scene_.mNumMaterials; ++i) model_.materials.push_back(MakeMaterial(*scene_.mMaterials[i]));
+    if (model_.materials.empty()) model_.materials.emplace_back();
+  }
+
+  void Meshes() {
+    for (unsigned i = 0; i < scene_.mNumMeshes; ++i) model_.meshes.push_back(Upload(*scene_.mMeshes[i]));
+  }
+
+  // The node tree, copied breadth-first without recursion (a hostile file may nest deeply).
+  void Nodes() {
+    std::vector<std::pair<const aiNode*, int>> queue{{scene_.mRootNode, -1}};
+    for (std::size_t q = 0; q < queue.size() && queue.size() < 1000000; ++q) {
+      const auto [node, parent] = queue[q];
+      const int index = int(model_.nodes.size());
+      ModelNode n;
+      n.name = node->mName.C_Str();
+      n.transform = ToGlm(node->mTransformation);
+      if (!Finite(n.transform)) n.transform = glm::mat4(1.0f);
+      for (unsigned m = 0; m < node->mNumMeshes; ++m)
+        if (node->mMeshes[m] < model_.meshes.size()) n.meshes.push_back(int(node->mMeshes[m]));
+      model_.nodes.push_back(std::move(n));
+      if (parent >= 0) model_.nodes[std::size_t(parent)].children.push_back(index);
+      for (unsigned c = 0; c < node->mNumChildren; ++c) queue.push_back({node->mChildren[c], index});
+    }
+  }
+
+  // Bounds and triangle count over every drawn instance.
+  void Measure(const std::vector<std::pair<glm::vec3, glm::vec3>>& mesh_boxes) {
+    bool any = false;
+    std::vector<std::pair<int, glm::mat4>> stack{{0, model_.nodes[0].transform}};
+    std::size_t visited = 0;
+    while (!stack.empty() && visited++ < 10000000) {
+      const auto [index, world] = stack.back();
+      stack.pop_back();
+      const ModelNode& node = model_.nodes[std::size_t(index)];
+      for (int m : node.meshes) {
+        const ModelMesh& mesh = model_.meshes[std::size_t(m)];
+        if (mesh.index_count == 0) continue;
+        model_.triangles_drawn += mesh.index_count / 3;
+        const auto& [lo, hi] = mesh_boxes[std::size_t(m)];
+        for (int corner = 0; corner < 8; ++corner) {
+          const glm::vec3 p((corner & 1) ? hi.x : lo.x, (corner & 2) ? hi.y : lo.y, (corner & 4) ? hi.z : lo.z);
+          const glm::vec3 w = glm::vec3(world * glm::vec4(p, 1.0f));
+          model_.bounds.min = any ? glm::min(model_.bounds.min, w) : w;
+          model_.bounds.max = any ? glm::max(model_.bounds.max, w) : w;
+          any = true;
+        }
+      }
+      for (int c : node.children) stack.push_back({c, world * model_.nodes[std::size_t(c)].transform});
+    }
+  }
+
+  std::vector<std::pair<glm::vec3, glm::vec3>> mesh_boxes;
+
+ private:
+  Material MakeMaterial(const aiMaterial& m) {
+    Material out;
+    aiString name;
+    if (m.Get(AI_MATKEY_NAME, name) == AI_SUCCESS) out.name = name.C_Str();
+    aiColor4D c;
+    if (m.Get(AI_MATKEY_BASE_COLOR, c) == AI_SUCCESS || m.Get(AI_MATKEY_COLOR_DIFFUSE, c) == AI_SUCCESS)
+      out.base_color = glm::vec4(c.r, c.g, c.b, c.a);
+    if (m.Get(AI_MATKEY_COLOR_SPECULAR, c) == AI_SUCCESS) out.specular = glm::vec3(c.r, c.g, c.b);
+    if (m.Get(AI_MATKEY_COLOR_EMISSIVE, c) == AI_SUCCESS) out.emissive = glm::vec3(c.r, c.g, c.b);
+    float f = 0.0f;
+    if (m.Get(AI_MATKEY_SHININESS, f) == AI_SUCCESS && f > 0.0f) out.shininess = std::min(f, 1024.0f);
+    if (m.Get(AI_MATKEY_METALLIC_FACTOR, f) == AI_SUCCESS) {
+      out.metallic = std::clamp(f, 0.0f, 1.0f);
+      out.pbr = true;
+    }
+    if (m.Get(AI_MATKEY_ROUGHNESS_FACTOR, f) == AI_SUCCESS) {
+      out.roughness = std::clamp(f, 0.0f, 1.0f);
+      out.pbr = true;
+    }
+    if (m.Get(AI_MATKEY_OPACITY, f) == AI_SUCCESS && f < 1.0f) {
+      out.base_color.a *= std::clamp(f, 0.0f, 1.0f);
+      out.alpha_mode = Material::AlphaMode::kBlend;
+    }
+    aiString mode;
+    if (m.Get(AI_MATKEY_GLTF_ALPHAMODE, mode) == AI_SUCCESS) {
+      const std::string s = mode.C_Str();
+      out.alpha_mode = s == "MASK"    ? Material::AlphaMode::kMask
+                       : s == "BLEND" ? Material::AlphaMode::kBlend
+                                      : Material::AlphaMode::kOpaque;
+    }
+    if (m.Get(AI_MATKEY_GLTF_ALPHACUTOFF, f) == AI_SUCCESS) out.alpha_cutoff = f;
+    int two_sided = 0;
+    if (m.Get(AI_MATKEY_TWOSIDED, two_sided) == AI_SUCCESS) out.double_sided = two_sided != 0;
+    out.base_color = glm::clamp(out.base_color, 0.0f, 1.0f);
+
+    out.base_color_texture = Texture(m, {aiTextureType_BASE_COLOR, aiTextureType_DIFFUSE});
+    out.normal_texture = Texture(m, {aiTextureType_NORMALS, aiTextureType_NORMAL_CAMERA});
+    out.metallic_roughness_texture = Texture(m, {aiTextureType_METALNESS, aiTextureType_UNKNOWN});
+    if (out.metallic_roughness_texture) out.pbr = true;
+    out.emissive_texture = Texture(m, {aiTextureType_EMISSIVE, aiTextureType_EMISSION_COLOR});
+    if (out.emissive_texture && out.emissive == glm::vec3(0.0f)) out.emissive = glm::vec3(1.0f);
+    out.occlusion_texture = Texture(m, {aiTextureType_LIGHTMAP, aiTextureType_AMBIENT_OCCLUSION});
+    out.specular_texture = Texture(m, {aiTextureType_SPECULAR});
+    return out;
+  }
+
+  // The first texture of the given types, loaded once per path: a file beside the model, or embedded in it.
+  std::uint32_t Texture(const aiMaterial& m, std::initializer_list<aiTextureType> types) {
+    for (aiTextureType type : types) {
+      aiString path;
+      if (m.GetTextureCount(type) == 0 || m.GetTexture(type, 0, &path) != AI_SUCCESS) continue;
+      const std::string key = path.C_Str();
+      if (key.empty()) continue;
+      if (auto it = cache_.find(key); it != cache_.end()) return it->second;
+      const std::uint32_t id = LoadTexture(key);
+      cache_[key] = id;
+      return id;
+    }
+    return 0;
+  }
+
+  std::uint32_t LoadTexture(const std::string& key) {
+    const std::uint32_t id = gl_.GenTexture();
+    gl_.BindTexture(TEXTURE_2D, id);
+    std::string error;
+    bool ok = false;
+    if (const aiTexture* embedded = scene_.GetEmbeddedTexture(key.c_str())) {
+      if (embedded->mHeight == 0) {  // a compressed image (PNG, JPEG, ...) of mWidth bytes
+        ok = gl_.TexImage2DFromMemory(TEXTURE_2D, embedded->pcData, embedded->mWidth, true, &error);
+      } else if (embedded->mWidth <= unsigned(kMaxTextureSize) && embedded->mHeight <= unsigned(kMaxTextureSize)) {
+        std::vector<std::uint8_t> rgba;  // aiTexel is BGRA, rows top first
+        const unsigned w = embedded->mWidth, h = embedded->mHeight;
+        rgba.reserve(std::size_t(w) * h * 4);
+        for (unsigned y = 0; y < h; ++y)
+          for (unsigned x = 0; x < w; ++x) {
+            const aiTexel& t = embedded->pcData[std::size_t(h - 1 - y) * w + x];
+            rgba.insert(rgba.end(), {t.r, t.g, t.b, t.a});
+          }
+        gl_.TexImage2D(TEXTURE_2D, 0, RGBA8, int(w), int(h), 0, RGBA, UNSIGNED_BYTE, rgba.data());
+        ok = gl_.GetError() == NO_ERROR;
+      }
+    } else {
+      std::string relative = key;
+      std::replace(relative.begin(), relative.end(), '\\', '/');
+      std::filesystem::path file = dir_ / relative;
+      std::error_code ec;
+      if (!std::filesystem::exists(file, ec)) file = dir_ / std::filesystem::path(relative).filename();
+      ok = gl_.TexImage2DFromFile(TEXTURE_2D, file.string(), true, &error);
+    }
+    if (!ok) {
+      model_.warnings.push_back(error.empty() ? key + ": cannot load texture" : error);
+      gl_.DeleteTexture(id);
+      return 0;
+    }
+    gl_.GenerateMipmap(TEXTURE_2D);
+    gl_.TexParameteri(TEXTURE_2D, TEXTURE_MIN_FILTER, LINEAR_MIPMAP_LINEAR);
+    gl_.TexParameteri(TEXTURE_2D, TEXTURE_MAG_FILTER, LINEAR);
+    ++model_.textures_loaded;
+    return id;
+  }
+
+  ModelMesh Upload(const aiMesh& mesh) {
+    ModelMesh out;
+    out.material = mesh.mMaterialIndex < model_.materials.size() ? int(mesh.mMaterialIndex) : 0;
+    std::vector<ModelVertex> vertices(mesh.mNumVertices);
+    glm::vec3 lo(0.0f), hi(0.0f);
+    bool any_finite = false;
+    for (unsigned i = 0; i < mesh.mNumVertices; ++i) {
+      ModelVertex& v = vertices[i];
+      const aiVector3D& p = mesh.mVertices[i];
+      v.position = glm::vec3(p.x, p.y, p.z);  // a NaN or infinite one makes the pipeline drop its triangles
+      v.normal = mesh.mNormals ? glm::vec3(mesh.mNormals[i].x, mesh.mNormals[i].y, mesh.mNormals[i].z)
+                               : glm::vec3(0.0f, 1.0f, 0.0f);
+      v.uv = mesh.mTextureCoords[0] ? glm::vec2(mesh.mTextureCoords[0][i].x, mesh.mTextureCoords[0][i].y) : glm::vec2(0.0f);
+      v.tangent = glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
+      if (mesh.mTangents && mesh.mBitangents) {
+        const glm::vec3 t(mesh.mTangents[i].x, mesh.mTangents[i].y, mesh.mTangents[i].z);
+        const glm::vec3 b(mesh.mBitangents[i].x, mesh.mBitangents[i].y, mesh.mBitangents[i].z);
+        v.tangent = glm::vec4(t, glm::dot(glm::cross(v.normal, t), b) < 0.0f ? -1.0f : 1.0f);
+      }
+      v.color = mesh.mColors[0] ? glm::vec4(mesh.mColors[0][i].r, mesh.mColors[0][i].g, mesh.mColors[0][i].b,
+                                            mesh.mColors[0][i].a)
+                                : glm::vec4(1.0f);
+      if (std::isfinite(v.position.x) && std::isfinite(v.position.y) && std::isfinite(v.position.z)) {
+        lo = any_finite ? glm::min(lo, v.position) : v.position;
+        hi = any_finite ? glm::max(hi, v.position) : v.position;
+        any_finite = true;
+      }
+    }
+    mesh_boxes.push_back({lo, hi});
+    std::vector<std::uint32_t> indices;
+    indices.reserve(std::size_t(mesh.mNumFaces) * 3);
+    for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
+      const aiFace& face = mesh.mFaces[f];
+      if (face.mNumIndices != 3) continue;  // points and lines are not drawn as surfaces
+      bool valid = true;
+      for (unsigned k = 0; k < 3; ++k) valid = valid && face.mIndices[k] < mesh.mNumVertices;
+      if (valid) indices.insert(indices.end(), face.mIndices, face.mIndices + 3);
+    }
+    out.vertex_count = int(vertices.size());
+    out.index_count = int(indices.size());
+    out.vertex_array = gl_.GenVertexArray();
+    const std::uint32_t vbo = gl_.GenBuffer(), ebo = gl_.GenBuffer();
+    gl_.BindVertexArray(out.vertex_array);
+    gl_.BindBuffer(ARRAY_BUFFER, vbo);
+    gl_.BufferData(ARRAY_BUFFER, std::ptrdiff_t(vertices.size() * sizeof(ModelVertex)), vertices.data());
+    gl_.BindBuffer(ELEMENT_ARRAY_BUFFER, ebo);
+    gl_.BufferData(ELEMENT_ARRAY_BUFFER, std::ptrdiff_t(indices.size() * sizeof(std::uint32_t)), indices.data());
+    const int stride = sizeof(ModelVertex);
+    gl_.VertexAttributePointer(kAttribPosition, 3, FLOAT, false, stride, offsetof(ModelVertex, position));
+    gl_.VertexAttributePointer(kAttribNormal, 3, FLOAT, false, stride, offsetof(ModelVertex, normal));
+    gl_.VertexAttributePointer(kAttribUv, 2, FLOAT, false, stride, offsetof(ModelVertex, uv));
+    gl_.VertexAttributePointer(kAttribTangent, 4, FLOAT, false, stride, offsetof(ModelVertex, tangent));
+    gl_.VertexAttributePointer(kAttribColor, 4, FLOAT, false, stride, offsetof(ModelVertex, color));
+    for (std::uint32_t a = 0; a <= kAttribColor; ++a) gl_.EnableVertexAttribArray(a);
+    gl_.BindVertexArray(0);
+    return out;
+  }
+
+  Context& gl_;
+  Model& model_;
+  const aiScene& scene_;
+  std::filesystem::path dir_;
+  std::map<std::string, std::uint32_t> cache_;
+};
+
+}  // namespace
+
+bool Model::Load(Context& gl, const std::string& path, std::string* error) {
+  *this = Model{};
+  auto fail = [&](const std::string& message) {
+    if (error) *error = path + ": " + message;
+    return false;
+  };
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) return fail("no such file");
+  Assimp::Importer importer;
+  importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
+  const aiScene* scene =
+      importer.ReadFile(path, aiProcess_Triangulate | aiProcess_GenSmoothNormals | aiProcess_CalcTangentSpace |
+                                  aiProcess_JoinIdenticalVertices | aiProcess_SortByPType | aiProcess_ValidateDataStructure);
+  if (!scene) {
+    const std::string why = importer.GetErrorString();
+    // Point and line meshes are dropped on import; a file of nothing else fails validation this way.
+    if (why.find("contains no faces") != std::string::npos) return fail("no geometry (no triangles to draw)");
+    return fail("cannot read: " + why);
+  }
+  if ((scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE) || !scene->mRootNode) return fail("incomplete scene");
+  Loader loader(gl, *this, *scene, std::filesystem::path(path).parent_path());
+  loader.Materials();
+  loader.Meshes();
+  loader.Nodes();
+  if (nodes.empty()) return fail("no nodes");
+  loader.Measure(loader.mesh_boxes);
+  if (triangles_drawn == 0) return fail("no geometry (no triangles to draw)");
+  return true;
+}
+
+void Model::Draw(Context& gl, MaterialProgram& program, const glm::mat4& view_proj, const glm::mat4& world) const {
+  if (nodes.empty()) return;
+  const bool cull_was = gl.IsEnabled(CULL_FACE), blend_was = gl.IsEnabled(BLEND);
+  gl.UseProgram(program.GetProgram());
+  for (int pass = 0; pass < 2; ++pass) {  // 0: opaque and masked; 1: blended
+    if (pass == 1) {
+      gl.Enable(BLEND);
+      gl.BlendFunc(SRC_ALPHA, ONE_MINUS_SRC_ALPHA);
+      gl.DepthMask(false);
+    }
+    std::vector<std::pair<int, glm::mat4>> stack{{0, world * nodes[0].transform}};
+    while (!stack.empty()) {
+      const auto [index, transform] = stack.back();
+      stack.pop_back();
+      const ModelNode& node = nodes[std::size_t(index)];
+      for (int m : node.meshes) {
+        const ModelMesh& mesh = meshes[std::size_t(m)];
+        const Material& mat = materials[std::size_t(mesh.material)];
+        if (mesh.index_count == 0 || (mat.alpha_mode == Material::AlphaMode::kBlend) != (pass == 1)) continue;
+        const std::pair<int, std::uint32_t> bindings[] = {
+            {kUnitBaseColor, mat.base_color_texture}, {kUnitNormal, mat.normal_texture},
+            {kUnitMetallicRoughness, mat.metallic_roughness_texture}, {kUnitEmissive, mat.emissive_texture},
+            {kUnitOcclusion, mat.occlusion_texture}, {kUnitSpecular, mat.specular_texture}};
+        for (const auto& [unit, id] : bindings) {
+          gl.ActiveTexture(TEXTURE0 + Enum(unit));
+          gl.BindTexture(TEXTURE_2D, id);
+        }
+        if (mat.double_sided) gl.Disable(CULL_FACE);
+        else gl.Enable(CULL_FACE);
+        program.SetMaterial(mat);
+        program.SetTransforms(transform, view_proj);
+        gl.BindVertexArray(mesh.vertex_array);
+        gl.DrawElement(TRIANGLES, mesh.index_count, UNSIGNED_INT, 0);
+      }
+      for (int c : node.children) stack.push_back({c, transform * nodes[std::size_t(c)].transform});
+    }
+  }
+  gl.DepthMask(true);
+  gl.ActiveTexture(TEXTURE0);
+  gl.BindVertexArray(0);
+  if (cull_was) gl.Enable(CULL_FACE);
+  else gl.Disable(CULL_FACE);
+  if (blend_was) gl.Enable(BLEND);
+  else gl.Disable(BLEND);
+}
+
+glm::mat4 Camera::View() const { return glm::lookAt(eye, target, up); }
+
+glm::mat4 Camera::Projection(float aspect) const {
+  return glm::perspective(glm::radians(fovy_degrees), aspect > 0.0f ? aspect : 1.0f, near_plane, far_plane);
+}
+
+Camera Camera::Orbit(glm::vec3 target, float distance, float azimuth_degrees, float elevation_degrees,
+                     float fovy_degrees) {
+  Camera c;
+  const float az = glm::radians(azimuth_degrees), el = glm::radians(std::clamp(elevation_degrees, -89.0f, 89.0f));
+  c.target = target;
+  c.eye = target + distance * glm::vec3(std::cos(el) * std::sin(az), std::sin(el), std::cos(el) * std::cos(az));
+  c.fovy_degrees = fovy_degrees;
+  c.near_plane = std::max(distance * 0.01f, 1e-4f);
+  c.far_plane = std::max(distance * 10.0f, c.near_plane * 2.0f);
+  return c;
+}
+
+Camera Camera::Frame(const Bounds& bounds, float aspect, float azimuth_degrees, float elevation_degrees,
+                     float fovy_degrees) {
+  const float radius = std::max(bounds.Radius(), 1e-6f);
+  const float half_y = glm::radians(fovy_degrees) * 0.5f;
+  const float half_x = std::atan(std::tan(half_y) * (aspect > 0.0f ? aspect : 1.0f));
+  const float distance = radius / std::sin(std::min(half_x, half_y)) * 1.05f;
+  Camera c = Orbit(bounds.Center(), distance, azimuth_degrees, elevation_degrees, fovy_degrees);
+  c.near_plane = std::max(distance - radius * 1.5f, distance * 0.01f);
+  c.far_plane = distance + radius * 1.5f;
+  return c;
+}
+
+}  // namespace softgl

@@ -1,0 +1,17 @@
+# Runs softgl-render with ARGS (a ;-list) and checks its exit status is EXPECTED; with FILES (a ;-list), also that
+# each file exists afterwards (and was not there before).
+foreach(f IN LISTS FILES)
+  file(REMOVE "${f}")
+endforeach()
+execute_process(COMMAND "${RENDER}" ${ARGS} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT rc EQUAL EXPECTED)
+  message(FATAL_ERROR "softgl-render ${ARGS}: exit ${rc}, expected ${EXPECTED}\n${out}${err}")
+endif()
+if(NOT EXPECTED EQUAL 0 AND NOT err MATCHES "softgl-render: ")
+  message(FATAL_ERROR "softgl-render ${ARGS}: no error message on stderr\n${err}")
+endif()
+foreach(f IN LISTS FILES)
+  if(NOT EXISTS "${f}")
+    message(FATAL_ERROR "softgl-render ${ARGS}: ${f} was not written")
+  endif()
+endforeach()

@@ -1,0 +1,163 @@
+// Models: loading each supported format from Debian's assimp-testmodels (counts, materials, hierarchy, textures),
+// errors for bad files, the camera helper, and one golden image per built-in shader.
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <softgl/model.h>
+#include <softgl/shaders.h>
+
+#include "scenes.h"
+
+using namespace softgl;
+
+namespace {
+
+std::string TestModel(const std::string& relative) { return std::string(scenes::kTestModels) + "/" + relative; }
+
+int CountTextures(const Model& m) {
+  int n = 0;
+  for (const Material& mat : m.materials)
+    n += (mat.base_color_texture != 0) + (mat.normal_texture != 0) + (mat.specular_texture != 0);
+  return n;
+}
+
+}  // namespace
+
+TEST_CASE("every supported format loads from assimp-testmodels", "[model]") {
+  struct Row {
+    const char* file;
+    int triangles;  // drawn, instances counted
+    int min_meshes;
+  };
+  const Row rows[] = {
+      {"OBJ/spider.obj", 1368, 19},                                      // OBJ + MTL
+      {"glTF2/BoxTextured-glTF/BoxTextured.gltf", 12, 1},               // glTF 2.0, external image
+      {"glTF2/BoxTextured-glTF-Embedded/BoxTextured.gltf", 12, 1},      // glTF 2.0, data-URI image
+      {"glTF2/BoxTextured-glTF-Binary/BoxTextured.glb", 12, 1},         // GLB, image in the binary chunk
+      {"glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb", 121496, 34},  // node hierarchy and instancing
+      {"FBX/box.fbx", 12, 1},
+      {"Collada/duck.dae", 4212, 1},
+      {"PLY/cube.ply", 12, 1},
+      {"STL/Spider_binary.stl", 1368, 1},
+      {"3DS/cube_with_diffuse_texture.3DS", 12, 1},
+  };
+  for (const Row& r : rows) {
+    INFO(r.file);
+    Context gl(4, 4);
+    Model model;
+    std::string error;
+    REQUIRE(model.Load(gl, TestModel(r.file), &error));
+    CHECK(model.triangles_drawn == r.triangles);
+    CHECK(int(model.meshes.size()) >= r.min_meshes);
+    CHECK(!model.materials.empty());
+    CHECK(!model.nodes.empty());
+    CHECK(model.bounds.Radius() > 0.0f);
+    CHECK(gl.GetError() == NO_ERROR);
+  }
+}
+
+TEST_CASE("materials, textures and the node hierarchy come through", "[model]") {
+  Context gl(4, 4);
+  Model engine;
+  REQUIRE(engine.Load(gl, TestModel("glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb")));
+  CHECK(engine.nodes.size() > 10);
+  CHECK(engine.nodes[0].children.size() > 0);
+  int instanced = 0;  // the engine draws some meshes from several nodes
+  for (const ModelMesh& m : engine.meshes) instanced += m.index_count / 3;
+  CHECK(engine.triangles_drawn > instanced);
+  bool pbr = false;
+  for (const Material& m : engine.materials) pbr = pbr || m.pbr;
+  CHECK(pbr);
+
+  Model duck;
+  REQUIRE(duck.Load(gl, TestModel("Collada/duck.dae")));
+  CHECK(CountTextures(duck) == 1);
+  const std::uint32_t tex = duck.materials[std::size_t(duck.meshes[0].material)].base_color_texture;
+  CHECK(gl.IsTexture(tex));
+
+  Model glb;
+  REQUIRE(glb.Load(gl, TestModel("glTF2/BoxTextured-glTF-Binary/BoxTextured.glb")));
+  CHECK(glb.textures_loaded == 1);  // embedded in the .glb
+  CHECK(glb.warnings.empty());
+
+  Model spider;
+  REQUIRE(spider.Load(gl, TestModel("OBJ/spider.obj")));
+  CHECK(spider.textures_loaded >= 4);
+  CHECK(spider.materials.size() >= 5);
+}
+
+TEST_CASE("bad model files give a clear error", "[model][errors]") {
+  const std::filesystem::path dir = std::filesystem::path(SOFTGL_TEST_OUTPUT_DIR) / "models";
+  std::filesystem::create_directories(dir);
+  Context gl(4, 4);
+  Model model;
+  std::string error;
+  CHECK_FALSE(model.Load(gl, (dir / "missing.obj").string(), &error));
+  CHECK(error.find("no such file") != std::string::npos);
+  {
+    std::ofstream f(dir / "garbage.glb", std::ios::binary);
+    f << "glTF\x02\x00\x00\x00 not really a binary glTF file at all";
+  }
+  CHECK_FALSE(model.Load(gl, (dir / "garbage.glb").string(), &error));
+  CHECK(error.find("garbage.glb") != std::string::npos);
+  {
+    std::ofstream f(dir / "random.xyz", std::ios::binary);
+    for (int i = 0; i < 4096; ++i) f.put(char((i * 2654435761u) >> 13));
+  }
+  CHECK_FALSE(model.Load(gl, (dir / "random.xyz").string(), &error));
+  // Points only: no triangles to draw.
+  CHECK_FALSE(model.Load(gl, TestModel("OBJ/point_cloud.obj"), &error));
+  CHECK(error.find("no geometry") != std::string::npos);
+  CHECK_FALSE(model.Load(gl, dir.string(), &error));  // a folder
+  CHECK(gl.GetError() == NO_ERROR);
+}
+
+TEST_CASE("the camera frames a bounding box", "[model]") {
+  Bounds b;
+  b.min = glm::vec3(-1, -2, -3);
+  b.max = glm::vec3(3, 2, 1);
+  const Camera c = Camera::Frame(b, 1.0f, 0.0f, 0.0f, 60.0f);
+  CHECK(c.target == b.Center());
+  // On the +z axis at azimuth 0, elevation 0, far enough for the bounding sphere to fit the 60 degree view.
+  CHECK(c.eye.x == Approx(b.Center().x));
+  CHECK(c.eye.z - c.target.z >= b.Radius() / std::sin(glm::radians(30.0f)));
+  CHECK(c.near_plane > 0.0f);
+  CHECK(c.far_plane > glm::length(c.eye - c.target) + b.Radius());
+  const Camera o = Camera::Orbit(glm::vec3(0), 2.0f, 90.0f, 0.0f);
+  CHECK(o.eye.x == Approx(2.0f));
+  CHECK(o.eye.z == Approx(0.0f).margin(1e-6));
+}
+
+namespace {
+
+// Golden images of models, as the image tests do for scenes: every channel within 1.
+void CheckGolden(const std::string& name, const softgl::Image& actual) {
+  const std::string path = std::string(SOFTGL_GOLDEN_DIR) + "/" + name + ".png";
+  if (const char* update = std::getenv("SOFTGL_UPDATE_GOLDEN"); update && std::string(update) == "1") {
+    REQUIRE(softgl::WritePng(path, actual));
+    return;
+  }
+  softgl::Image golden;
+  REQUIRE(softgl::ReadImage(path, golden));
+  REQUIRE(golden.width == actual.width);
+  REQUIRE(golden.height == actual.height);
+  int over = 0;
+  for (std::size_t i = 0; i < golden.rgba.size(); ++i) over += std::abs(int(golden.rgba[i]) - int(actual.rgba[i])) > 1;
+  if (over) {
+    std::filesystem::create_directories(SOFTGL_TEST_OUTPUT_DIR);
+    softgl::WritePng(std::string(SOFTGL_TEST_OUTPUT_DIR) + "/" + name + "_actual.png", actual);
+  }
+  CHECK(over == 0);
+}
+
+}  // namespace
+
+TEST_CASE("image: a model per built-in shader", "[model][image]") {
+  CheckGolden("model_spider_unlit", scenes::ModelView(TestModel("OBJ/spider.obj"), "unlit", 320, 240, 40, 30));
+  CheckGolden("model_duck_phong", scenes::ModelView(TestModel("Collada/duck.dae"), "phong", 320, 240, 30, 20));
+  CheckGolden("model_box_pbr",
+              scenes::ModelView(TestModel("glTF2/BoxTextured-glTF/BoxTextured.gltf"), "pbr", 320, 240, 35, 25));
+}
