@@ -164,8 +164,12 @@ struct ContextState {
 
   detail::Scratch scratch;
 
-  void SetError(Enum e) {
+  Context::DebugCallback debug_callback;
+
+  // Records `e` if no error is pending (OpenGL keeps the first), and reports every error to the debug callback.
+  void SetError(Enum e, const char* call, const char* message) {
     if (error == NO_ERROR) error = e;
+    if (debug_callback) debug_callback(e, call, message);
   }
 
   std::shared_ptr<Buffer>* BindingFor(Enum target) {
@@ -194,7 +198,7 @@ struct ContextState {
       return true;
     }
     if (FramebufferStatus(*draw_fbo) != FRAMEBUFFER_COMPLETE) {
-      SetError(INVALID_FRAMEBUFFER_OPERATION);
+      SetError(INVALID_FRAMEBUFFER_OPERATION, __func__, "the framebuffer bound for drawing is not complete");
       return false;
     }
     target = FramebufferTarget(*draw_fbo);
@@ -219,11 +223,11 @@ struct ContextState {
 Context::Context(int width, int height) : state_(std::make_unique<ContextState>()) {
   for (auto& a : state_->current_attrib) a = glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
   if (width < 0 || height < 0 || width > kMaxFramebufferSize || height > kMaxFramebufferSize) {
-    state_->SetError(INVALID_VALUE);
+    state_->SetError(INVALID_VALUE, __func__, "a numeric argument is out of range");
     width = height = 0;
   }
   if (!state_->fb.Allocate(width, height)) {
-    state_->SetError(OUT_OF_MEMORY);
+    state_->SetError(OUT_OF_MEMORY, __func__, "out of memory");
     width = height = 0;
   }
   state_->viewport[2] = state_->scissor[2] = width;
@@ -234,6 +238,8 @@ Context::~Context() = default;
 
 int Context::Width() const { return state_->fb.width; }
 int Context::Height() const { return state_->fb.height; }
+
+void Context::DebugMessageCallback(DebugCallback callback) { state_->debug_callback = std::move(callback); }
 
 Enum Context::GetError() {
   const Enum e = state_->error;
@@ -250,7 +256,7 @@ std::uint32_t Context::GenBuffer() {
 }
 
 void Context::GenBuffers(int n, std::uint32_t* ids) {
-  if (n < 0) return state_->SetError(INVALID_VALUE);
+  if (n < 0) return state_->SetError(INVALID_VALUE, __func__, "n is negative");
   for (int i = 0; i < n; ++i) ids[i] = GenBuffer();
 }
 
@@ -272,45 +278,45 @@ bool Context::IsBuffer(std::uint32_t buffer) const { return state_->buffers.coun
 
 void Context::BindBuffer(Enum target, std::uint32_t buffer) {
   auto& s = *state_;
-  if (target != ARRAY_BUFFER && target != ELEMENT_ARRAY_BUFFER) return s.SetError(INVALID_ENUM);
+  if (target != ARRAY_BUFFER && target != ELEMENT_ARRAY_BUFFER) return s.SetError(INVALID_ENUM, __func__, "target must be ARRAY_BUFFER or ELEMENT_ARRAY_BUFFER");
   std::shared_ptr<Buffer> object;
   if (buffer != 0) {
     auto it = s.buffers.find(buffer);
-    if (it == s.buffers.end()) return s.SetError(INVALID_OPERATION);
+    if (it == s.buffers.end()) return s.SetError(INVALID_OPERATION, __func__, "not a buffer id made by GenBuffer (or it was deleted)");
     object = it->second;
   }
   auto* binding = s.BindingFor(target);
-  if (binding == nullptr) return s.SetError(INVALID_OPERATION);  // element buffer with no vertex array bound
+  if (binding == nullptr) return s.SetError(INVALID_OPERATION, __func__, "ELEMENT_ARRAY_BUFFER needs a bound vertex array");  // element buffer with no vertex array bound
   *binding = std::move(object);
 }
 
 void Context::BufferData(Enum target, std::ptrdiff_t size, const void* data, Enum usage) {
   auto& s = *state_;
-  if (target != ARRAY_BUFFER && target != ELEMENT_ARRAY_BUFFER) return s.SetError(INVALID_ENUM);
-  if (!IsUsage(usage)) return s.SetError(INVALID_ENUM);
-  if (size < 0) return s.SetError(INVALID_VALUE);
+  if (target != ARRAY_BUFFER && target != ELEMENT_ARRAY_BUFFER) return s.SetError(INVALID_ENUM, __func__, "target must be ARRAY_BUFFER or ELEMENT_ARRAY_BUFFER");
+  if (!IsUsage(usage)) return s.SetError(INVALID_ENUM, __func__, "not a buffer usage");
+  if (size < 0) return s.SetError(INVALID_VALUE, __func__, "size is negative");
   auto* binding = s.BindingFor(target);
-  if (binding == nullptr || !*binding) return s.SetError(INVALID_OPERATION);
+  if (binding == nullptr || !*binding) return s.SetError(INVALID_OPERATION, __func__, "no buffer is bound to target");
   try {
     std::vector<std::uint8_t> store(std::size_t(size), 0);
     if (data != nullptr && size > 0) std::memcpy(store.data(), data, std::size_t(size));
     (*binding)->data = std::move(store);
   } catch (const std::bad_alloc&) {
-    s.SetError(OUT_OF_MEMORY);
+    s.SetError(OUT_OF_MEMORY, __func__, "out of memory");
   } catch (const std::length_error&) {
-    s.SetError(OUT_OF_MEMORY);
+    s.SetError(OUT_OF_MEMORY, __func__, "out of memory");
   }
 }
 
 void Context::BufferSubData(Enum target, std::ptrdiff_t offset, std::ptrdiff_t size, const void* data) {
   auto& s = *state_;
-  if (target != ARRAY_BUFFER && target != ELEMENT_ARRAY_BUFFER) return s.SetError(INVALID_ENUM);
+  if (target != ARRAY_BUFFER && target != ELEMENT_ARRAY_BUFFER) return s.SetError(INVALID_ENUM, __func__, "target must be ARRAY_BUFFER or ELEMENT_ARRAY_BUFFER");
   auto* binding = s.BindingFor(target);
-  if (binding == nullptr || !*binding) return s.SetError(INVALID_OPERATION);
-  if (offset < 0 || size < 0) return s.SetError(INVALID_VALUE);
+  if (binding == nullptr || !*binding) return s.SetError(INVALID_OPERATION, __func__, "no buffer is bound to target");
+  if (offset < 0 || size < 0) return s.SetError(INVALID_VALUE, __func__, "offset or size is negative");
   auto& store = (*binding)->data;
   if (std::size_t(offset) > store.size() || std::size_t(size) > store.size() - std::size_t(offset))
-    return s.SetError(INVALID_VALUE);
+    return s.SetError(INVALID_VALUE, __func__, "a numeric argument is out of range");
   if (data != nullptr && size > 0) std::memcpy(store.data() + offset, data, std::size_t(size));
 }
 
@@ -323,7 +329,7 @@ std::uint32_t Context::GenVertexArray() {
 }
 
 void Context::GenVertexArrays(int n, std::uint32_t* ids) {
-  if (n < 0) return state_->SetError(INVALID_VALUE);
+  if (n < 0) return state_->SetError(INVALID_VALUE, __func__, "n is negative");
   for (int i = 0; i < n; ++i) ids[i] = GenVertexArray();
 }
 
@@ -348,7 +354,7 @@ void Context::BindVertexArray(std::uint32_t array) {
     return;
   }
   auto it = s.arrays.find(array);
-  if (it == s.arrays.end()) return s.SetError(INVALID_OPERATION);
+  if (it == s.arrays.end()) return s.SetError(INVALID_OPERATION, __func__, "not a vertex array id made by GenVertexArray (or it was deleted)");
   s.vao = it->second.get();
   s.vao_id = array;
 }
@@ -357,10 +363,10 @@ void Context::VertexAttributePointer(std::uint32_t index, int size, Enum type, b
                                      std::size_t offset) {
   auto& s = *state_;
   if (index >= std::uint32_t(kMaxVertexAttribs) || size < 1 || size > 4 || stride < 0)
-    return s.SetError(INVALID_VALUE);
-  if (detail::TypeSize(type) == 0) return s.SetError(INVALID_ENUM);
-  if (s.vao == nullptr) return s.SetError(INVALID_OPERATION);
-  if (!s.array_buffer && offset != 0) return s.SetError(INVALID_OPERATION);
+    return s.SetError(INVALID_VALUE, __func__, "a numeric argument is out of range");
+  if (detail::TypeSize(type) == 0) return s.SetError(INVALID_ENUM, __func__, "not an attribute type");
+  if (s.vao == nullptr) return s.SetError(INVALID_OPERATION, __func__, "no vertex array is bound");
+  if (!s.array_buffer && offset != 0) return s.SetError(INVALID_OPERATION, __func__, "no buffer bound to ARRAY_BUFFER (client-side arrays do not exist in a core profile)");
   AttribBinding& a = s.vao->attrib[index];
   a.buffer = s.array_buffer;
   a.offset = offset;
@@ -372,20 +378,20 @@ void Context::VertexAttributePointer(std::uint32_t index, int size, Enum type, b
 
 void Context::EnableVertexAttribArray(std::uint32_t index) {
   auto& s = *state_;
-  if (index >= std::uint32_t(kMaxVertexAttribs)) return s.SetError(INVALID_VALUE);
-  if (s.vao == nullptr) return s.SetError(INVALID_OPERATION);
+  if (index >= std::uint32_t(kMaxVertexAttribs)) return s.SetError(INVALID_VALUE, __func__, "attribute index is kMaxVertexAttribs or more");
+  if (s.vao == nullptr) return s.SetError(INVALID_OPERATION, __func__, "no vertex array is bound");
   s.vao->attrib[index].enabled = true;
 }
 
 void Context::DisableVertexAttribArray(std::uint32_t index) {
   auto& s = *state_;
-  if (index >= std::uint32_t(kMaxVertexAttribs)) return s.SetError(INVALID_VALUE);
-  if (s.vao == nullptr) return s.SetError(INVALID_OPERATION);
+  if (index >= std::uint32_t(kMaxVertexAttribs)) return s.SetError(INVALID_VALUE, __func__, "attribute index is kMaxVertexAttribs or more");
+  if (s.vao == nullptr) return s.SetError(INVALID_OPERATION, __func__, "no vertex array is bound");
   s.vao->attrib[index].enabled = false;
 }
 
 void Context::VertexAttrib4f(std::uint32_t index, float x, float y, float z, float w) {
-  if (index >= std::uint32_t(kMaxVertexAttribs)) return state_->SetError(INVALID_VALUE);
+  if (index >= std::uint32_t(kMaxVertexAttribs)) return state_->SetError(INVALID_VALUE, __func__, "attribute index is kMaxVertexAttribs or more");
   state_->current_attrib[index] = glm::vec4(x, y, z, w);
 }
 
@@ -393,7 +399,7 @@ void Context::VertexAttrib4f(std::uint32_t index, float x, float y, float z, flo
 
 void Context::UseProgram(const Program& program) {
   if (program.VaryingFloats() < 0 || program.VaryingFloats() > kMaxVaryingFloats)
-    return state_->SetError(INVALID_VALUE);
+    return state_->SetError(INVALID_VALUE, __func__, "a numeric argument is out of range");
   state_->program = &program;
 }
 
@@ -401,7 +407,7 @@ void Context::UseProgram(std::nullptr_t) { state_->program = nullptr; }
 
 void Context::Viewport(int x, int y, int width, int height) {
   auto& s = *state_;
-  if (width < 0 || height < 0) return s.SetError(INVALID_VALUE);
+  if (width < 0 || height < 0) return s.SetError(INVALID_VALUE, __func__, "width or height is negative");
   s.viewport[0] = std::clamp(x, -32768, 32767);
   s.viewport[1] = std::clamp(y, -32768, 32767);
   s.viewport[2] = std::min(width, kMaxFramebufferSize);
@@ -433,48 +439,48 @@ bool* CapFlag(ContextState& s, Enum cap) {
 
 void Context::Enable(Enum cap) {
   bool* flag = CapFlag(*state_, cap);
-  if (!flag) return state_->SetError(INVALID_ENUM);
+  if (!flag) return state_->SetError(INVALID_ENUM, __func__, "not a capability Enable/Disable/IsEnabled knows");
   *flag = true;
 }
 
 void Context::Disable(Enum cap) {
   bool* flag = CapFlag(*state_, cap);
-  if (!flag) return state_->SetError(INVALID_ENUM);
+  if (!flag) return state_->SetError(INVALID_ENUM, __func__, "not a capability Enable/Disable/IsEnabled knows");
   *flag = false;
 }
 
 bool Context::IsEnabled(Enum cap) {
   bool* flag = CapFlag(*state_, cap);
   if (!flag) {
-    state_->SetError(INVALID_ENUM);
+    state_->SetError(INVALID_ENUM, __func__, "an enum argument is not one this call accepts");
     return false;
   }
   return *flag;
 }
 
 void Context::CullFace(Enum mode) {
-  if (mode != FRONT && mode != BACK && mode != FRONT_AND_BACK) return state_->SetError(INVALID_ENUM);
+  if (mode != FRONT && mode != BACK && mode != FRONT_AND_BACK) return state_->SetError(INVALID_ENUM, __func__, "mode must be FRONT, BACK or FRONT_AND_BACK");
   state_->cull_face = mode;
 }
 
 void Context::FrontFace(Enum mode) {
-  if (mode != CW && mode != CCW) return state_->SetError(INVALID_ENUM);
+  if (mode != CW && mode != CCW) return state_->SetError(INVALID_ENUM, __func__, "mode must be CW or CCW");
   state_->front_face = mode;
 }
 
 void Context::PolygonMode(Enum face, Enum mode) {
   if (face != FRONT_AND_BACK || (mode != POINT && mode != LINE && mode != FILL))
-    return state_->SetError(INVALID_ENUM);
+    return state_->SetError(INVALID_ENUM, __func__, "an enum argument is not one this call accepts");
   state_->polygon_mode = mode;
 }
 
 void Context::PointSize(float size) {
-  if (!(size > 0.0f)) return state_->SetError(INVALID_VALUE);
+  if (!(size > 0.0f)) return state_->SetError(INVALID_VALUE, __func__, "size must be positive");
   state_->point_size = size;
 }
 
 void Context::DepthFunc(Enum func) {
-  if (func < NEVER || func > ALWAYS) return state_->SetError(INVALID_ENUM);
+  if (func < NEVER || func > ALWAYS) return state_->SetError(INVALID_ENUM, __func__, "not a comparison function");
   state_->ops.depth_func = func;
 }
 
@@ -527,7 +533,7 @@ void ForFaces(detail::FragmentOpsState& ops, Enum face, F&& set) {
 
 void Context::Scissor(int x, int y, int width, int height) {
   auto& s = *state_;
-  if (width < 0 || height < 0) return s.SetError(INVALID_VALUE);
+  if (width < 0 || height < 0) return s.SetError(INVALID_VALUE, __func__, "width or height is negative");
   s.scissor[0] = x;
   s.scissor[1] = y;
   s.scissor[2] = width;
@@ -537,7 +543,7 @@ void Context::Scissor(int x, int y, int width, int height) {
 void Context::StencilFunc(Enum func, int ref, std::uint32_t mask) { StencilFuncSeparate(FRONT_AND_BACK, func, ref, mask); }
 
 void Context::StencilFuncSeparate(Enum face, Enum func, int ref, std::uint32_t mask) {
-  if (!IsFace(face) || !IsCompareFunc(func)) return state_->SetError(INVALID_ENUM);
+  if (!IsFace(face) || !IsCompareFunc(func)) return state_->SetError(INVALID_ENUM, __func__, "face must be FRONT, BACK or FRONT_AND_BACK and func a comparison function");
   ForFaces(state_->ops, face, [&](detail::StencilFace& f) {
     f.func = func;
     f.ref = ref;
@@ -549,7 +555,7 @@ void Context::StencilOp(Enum sfail, Enum dpfail, Enum dppass) { StencilOpSeparat
 
 void Context::StencilOpSeparate(Enum face, Enum sfail, Enum dpfail, Enum dppass) {
   if (!IsFace(face) || !IsStencilOp(sfail) || !IsStencilOp(dpfail) || !IsStencilOp(dppass))
-    return state_->SetError(INVALID_ENUM);
+    return state_->SetError(INVALID_ENUM, __func__, "an enum argument is not one this call accepts");
   ForFaces(state_->ops, face, [&](detail::StencilFace& f) {
     f.sfail = sfail;
     f.dpfail = dpfail;
@@ -560,7 +566,7 @@ void Context::StencilOpSeparate(Enum face, Enum sfail, Enum dpfail, Enum dppass)
 void Context::StencilMask(std::uint32_t mask) { StencilMaskSeparate(FRONT_AND_BACK, mask); }
 
 void Context::StencilMaskSeparate(Enum face, std::uint32_t mask) {
-  if (!IsFace(face)) return state_->SetError(INVALID_ENUM);
+  if (!IsFace(face)) return state_->SetError(INVALID_ENUM, __func__, "face must be FRONT, BACK or FRONT_AND_BACK");
   ForFaces(state_->ops, face, [&](detail::StencilFace& f) { f.write_mask = mask; });
 }
 
@@ -568,7 +574,7 @@ void Context::BlendFunc(Enum src, Enum dst) { BlendFuncSeparate(src, dst, src, d
 
 void Context::BlendFuncSeparate(Enum src_rgb, Enum dst_rgb, Enum src_alpha, Enum dst_alpha) {
   if (!IsBlendFactor(src_rgb) || !IsBlendFactor(dst_rgb) || !IsBlendFactor(src_alpha) || !IsBlendFactor(dst_alpha))
-    return state_->SetError(INVALID_ENUM);
+    return state_->SetError(INVALID_ENUM, __func__, "an enum argument is not one this call accepts");
   auto& b = state_->ops.blend;
   b.src_rgb = src_rgb;
   b.dst_rgb = dst_rgb;
@@ -579,7 +585,7 @@ void Context::BlendFuncSeparate(Enum src_rgb, Enum dst_rgb, Enum src_alpha, Enum
 void Context::BlendEquation(Enum mode) { BlendEquationSeparate(mode, mode); }
 
 void Context::BlendEquationSeparate(Enum mode_rgb, Enum mode_alpha) {
-  if (!IsBlendEquation(mode_rgb) || !IsBlendEquation(mode_alpha)) return state_->SetError(INVALID_ENUM);
+  if (!IsBlendEquation(mode_rgb) || !IsBlendEquation(mode_alpha)) return state_->SetError(INVALID_ENUM, __func__, "not a blend equation");
   state_->ops.blend.eq_rgb = mode_rgb;
   state_->ops.blend.eq_alpha = mode_alpha;
 }
@@ -607,7 +613,7 @@ void Context::ClearStencil(int s) { state_->clear_stencil = std::uint8_t(s & 0xF
 
 void Context::Clear(Bitfield mask) {
   auto& s = *state_;
-  if (mask & ~(COLOR_BUFFER_BIT | DEPTH_BUFFER_BIT | STENCIL_BUFFER_BIT)) return s.SetError(INVALID_VALUE);
+  if (mask & ~(COLOR_BUFFER_BIT | DEPTH_BUFFER_BIT | STENCIL_BUFFER_BIT)) return s.SetError(INVALID_VALUE, __func__, "mask has bits other than COLOR_, DEPTH_ and STENCIL_BUFFER_BIT");
   detail::RenderTarget target;
   if (!s.DrawTarget(target)) return;
   const detail::Rect area = s.ClearArea(target);
@@ -679,17 +685,17 @@ void ContextState::Draw(const detail::DrawCall& call) {
   try {
     detail::Draw(call, plan, ds, target, scratch);
   } catch (const std::bad_alloc&) {
-    SetError(OUT_OF_MEMORY);
+    SetError(OUT_OF_MEMORY, __func__, "out of memory");
   } catch (const std::length_error&) {
-    SetError(OUT_OF_MEMORY);
+    SetError(OUT_OF_MEMORY, __func__, "out of memory");
   }
 }
 
 void Context::DrawArrays(Enum mode, int first, int count) {
   auto& s = *state_;
-  if (detail::VerticesPerPrimitive(mode) == 0) return s.SetError(INVALID_ENUM);
-  if (first < 0 || count < 0) return s.SetError(INVALID_VALUE);
-  if (s.vao == nullptr || s.program == nullptr) return s.SetError(INVALID_OPERATION);
+  if (detail::VerticesPerPrimitive(mode) == 0) return s.SetError(INVALID_ENUM, __func__, "mode is not a primitive mode");
+  if (first < 0 || count < 0) return s.SetError(INVALID_VALUE, __func__, "first or count is negative");
+  if (s.vao == nullptr || s.program == nullptr) return s.SetError(INVALID_OPERATION, __func__, "needs a bound vertex array and a shader (UseProgram)");
   detail::DrawCall call;
   call.mode = mode;
   call.count = count;
@@ -699,19 +705,19 @@ void Context::DrawArrays(Enum mode, int first, int count) {
 
 void Context::DrawElement(Enum mode, int count, Enum type, std::size_t offset) {
   auto& s = *state_;
-  if (detail::VerticesPerPrimitive(mode) == 0) return s.SetError(INVALID_ENUM);
-  if (type != UNSIGNED_BYTE && type != UNSIGNED_SHORT && type != UNSIGNED_INT) return s.SetError(INVALID_ENUM);
-  if (count < 0) return s.SetError(INVALID_VALUE);
-  if (s.vao == nullptr || s.program == nullptr || !s.vao->element_buffer) return s.SetError(INVALID_OPERATION);
+  if (detail::VerticesPerPrimitive(mode) == 0) return s.SetError(INVALID_ENUM, __func__, "mode is not a primitive mode");
+  if (type != UNSIGNED_BYTE && type != UNSIGNED_SHORT && type != UNSIGNED_INT) return s.SetError(INVALID_ENUM, __func__, "index type must be UNSIGNED_BYTE, UNSIGNED_SHORT or UNSIGNED_INT");
+  if (count < 0) return s.SetError(INVALID_VALUE, __func__, "count is negative");
+  if (s.vao == nullptr || s.program == nullptr || !s.vao->element_buffer) return s.SetError(INVALID_OPERATION, __func__, "needs a bound vertex array with an element buffer, and a shader (UseProgram)");
   const auto& store = s.vao->element_buffer->data;
   const std::size_t bytes = std::size_t(count) * detail::TypeSize(type);
-  if (offset > store.size() || bytes > store.size() - offset) return s.SetError(INVALID_OPERATION);
+  if (offset > store.size() || bytes > store.size() - offset) return s.SetError(INVALID_OPERATION, __func__, "the indices would be read past the end of the element buffer");
   if (count == 0) return;
   std::vector<std::uint32_t> elements;
   try {
     elements.resize(std::size_t(count));
   } catch (const std::bad_alloc&) {
-    return s.SetError(OUT_OF_MEMORY);
+    return s.SetError(OUT_OF_MEMORY, __func__, "out of memory");
   }
   detail::ReadIndices(type, store.data() + offset, count, elements.data());
   detail::DrawCall call;
@@ -782,7 +788,7 @@ std::uint32_t Context::GenTexture() {
 }
 
 void Context::GenTextures(int n, std::uint32_t* ids) {
-  if (n < 0) return state_->SetError(INVALID_VALUE);
+  if (n < 0) return state_->SetError(INVALID_VALUE, __func__, "n is negative");
   for (int i = 0; i < n; ++i) ids[i] = GenTexture();
 }
 
@@ -807,18 +813,18 @@ void Context::DeleteTexture(std::uint32_t texture) {
 bool Context::IsTexture(std::uint32_t texture) const { return state_->textures.count(texture) != 0; }
 
 void Context::ActiveTexture(Enum unit) {
-  if (unit < TEXTURE0 || unit >= TEXTURE0 + kMaxTextureUnits) return state_->SetError(INVALID_ENUM);
+  if (unit < TEXTURE0 || unit >= TEXTURE0 + kMaxTextureUnits) return state_->SetError(INVALID_ENUM, __func__, "unit must be TEXTURE0 + i with i below kMaxTextureUnits");
   state_->active_unit = int(unit - TEXTURE0);
 }
 
 void Context::BindTexture(Enum target, std::uint32_t texture) {
   auto& s = *state_;
-  if (target != TEXTURE_2D && target != TEXTURE_CUBE_MAP) return s.SetError(INVALID_ENUM);
+  if (target != TEXTURE_2D && target != TEXTURE_CUBE_MAP) return s.SetError(INVALID_ENUM, __func__, "target must be TEXTURE_2D or TEXTURE_CUBE_MAP");
   std::shared_ptr<detail::TextureObject> object;
   if (texture != 0) {
     auto it = s.textures.find(texture);
-    if (it == s.textures.end()) return s.SetError(INVALID_OPERATION);
-    if (it->second->target != 0 && it->second->target != target) return s.SetError(INVALID_OPERATION);
+    if (it == s.textures.end()) return s.SetError(INVALID_OPERATION, __func__, "not a texture id made by GenTexture (or it was deleted)");
+    if (it->second->target != 0 && it->second->target != target) return s.SetError(INVALID_OPERATION, __func__, "the texture was first bound to the other target");
     it->second->target = target;
     object = it->second;
   }
@@ -837,16 +843,16 @@ bool IsTransferType(Enum type) { return type == UNSIGNED_BYTE || type == FLOAT; 
 void Context::TexImage2D(Enum target, int level, Enum internal_format, int width, int height, int border,
                          Enum format, Enum type, const void* pixels) {
   auto& s = *state_;
-  if (!IsTexImageTarget(target)) return s.SetError(INVALID_ENUM);
+  if (!IsTexImageTarget(target)) return s.SetError(INVALID_ENUM, __func__, "target must be TEXTURE_2D or a TEXTURE_CUBE_MAP_* face");
   if (level < 0 || level >= detail::kMaxLevels || width < 0 || height < 0 || width > kMaxTextureSize ||
       height > kMaxTextureSize || border != 0 || detail::FormatComponents(internal_format) == 0)
-    return s.SetError(INVALID_VALUE);
-  if (detail::TransferComponents(format) == 0 || !IsTransferType(type)) return s.SetError(INVALID_ENUM);
-  if (detail::IsDepthFormat(internal_format) != (format == DEPTH_COMPONENT)) return s.SetError(INVALID_OPERATION);
-  if (CubeFaceIndex(target) >= 0 && width != height) return s.SetError(INVALID_VALUE);
+    return s.SetError(INVALID_VALUE, __func__, "a numeric argument is out of range");
+  if (detail::TransferComponents(format) == 0 || !IsTransferType(type)) return s.SetError(INVALID_ENUM, __func__, "format must be RED, RG, RGB, RGBA or DEPTH_COMPONENT and type UNSIGNED_BYTE or FLOAT");
+  if (detail::IsDepthFormat(internal_format) != (format == DEPTH_COMPONENT)) return s.SetError(INVALID_OPERATION, __func__, "depth data for a colour format, or the reverse");
+  if (CubeFaceIndex(target) >= 0 && width != height) return s.SetError(INVALID_VALUE, __func__, "cube map faces must be square");
   int face = 0;
   detail::TextureObject* tex = s.Bound(target, &face);
-  if (!tex) return s.SetError(INVALID_OPERATION);
+  if (!tex) return s.SetError(INVALID_OPERATION, __func__, "no texture is bound to that target of the active unit");
   detail::TextureLevel next;
   next.format = internal_format;
   next.width = width;
@@ -854,7 +860,7 @@ void Context::TexImage2D(Enum target, int level, Enum internal_format, int width
   try {
     next.texels.assign(std::size_t(width) * std::size_t(height) * 4, 0.0f);
   } catch (const std::bad_alloc&) {
-    return s.SetError(OUT_OF_MEMORY);
+    return s.SetError(OUT_OF_MEMORY, __func__, "out of memory");
   }
   if (detail::FormatComponents(internal_format) < 4)  // formats without alpha read alpha 1
     for (std::size_t i = 3; i < next.texels.size(); i += 4) next.texels[i] = 1.0f;
@@ -865,17 +871,17 @@ void Context::TexImage2D(Enum target, int level, Enum internal_format, int width
 void Context::TexSubImage2D(Enum target, int level, int x, int y, int width, int height, Enum format, Enum type,
                             const void* pixels) {
   auto& s = *state_;
-  if (!IsTexImageTarget(target)) return s.SetError(INVALID_ENUM);
-  if (detail::TransferComponents(format) == 0 || !IsTransferType(type)) return s.SetError(INVALID_ENUM);
-  if (level < 0 || level >= detail::kMaxLevels) return s.SetError(INVALID_VALUE);
+  if (!IsTexImageTarget(target)) return s.SetError(INVALID_ENUM, __func__, "target must be TEXTURE_2D or a TEXTURE_CUBE_MAP_* face");
+  if (detail::TransferComponents(format) == 0 || !IsTransferType(type)) return s.SetError(INVALID_ENUM, __func__, "format must be RED, RG, RGB, RGBA or DEPTH_COMPONENT and type UNSIGNED_BYTE or FLOAT");
+  if (level < 0 || level >= detail::kMaxLevels) return s.SetError(INVALID_VALUE, __func__, "level is negative or beyond the largest mipmap level");
   int face = 0;
   detail::TextureObject* tex = s.Bound(target, &face);
-  if (!tex || !tex->levels[face][level].Defined()) return s.SetError(INVALID_OPERATION);
+  if (!tex || !tex->levels[face][level].Defined()) return s.SetError(INVALID_OPERATION, __func__, "no texture bound, or that level is not defined");
   detail::TextureLevel& lv = tex->levels[face][level];
-  if (detail::IsDepthFormat(lv.format) != (format == DEPTH_COMPONENT)) return s.SetError(INVALID_OPERATION);
+  if (detail::IsDepthFormat(lv.format) != (format == DEPTH_COMPONENT)) return s.SetError(INVALID_OPERATION, __func__, "depth data for a colour texture, or the reverse");
   if (x < 0 || y < 0 || width < 0 || height < 0 || std::int64_t(x) + width > lv.width ||
       std::int64_t(y) + height > lv.height)
-    return s.SetError(INVALID_VALUE);
+    return s.SetError(INVALID_VALUE, __func__, "a numeric argument is out of range");
   detail::UploadPixels(lv, x, y, width, height, format, type, s.unpack_alignment, pixels);
 }
 
@@ -886,7 +892,7 @@ namespace {
 bool TexImageFromLoaded(Context& gl, ContextState& s, Enum target, const detail::LoadedImage& img,
                         const std::string& name, std::string* error) {
   if (img.width > kMaxTextureSize || img.height > kMaxTextureSize || img.channels < 1 || img.channels > 4) {
-    s.SetError(INVALID_VALUE);
+    s.SetError(INVALID_VALUE, __func__, "a numeric argument is out of range");
     if (error) *error = name + ": larger than kMaxTextureSize, or an unsupported channel count";
     return false;
   }
@@ -912,12 +918,12 @@ bool TexImageFromLoaded(Context& gl, ContextState& s, Enum target, const detail:
 bool Context::TexImage2DFromFile(Enum target, const std::string& path, bool flip_vertically, std::string* error) {
   auto& s = *state_;
   if (!IsTexImageTarget(target)) {
-    s.SetError(INVALID_ENUM);
+    s.SetError(INVALID_ENUM, __func__, "an enum argument is not one this call accepts");
     if (error) *error = "invalid texture target";
     return false;
   }
   if (!s.Bound(target)) {
-    s.SetError(INVALID_OPERATION);
+    s.SetError(INVALID_OPERATION, __func__, "not allowed in the current state");
     if (error) *error = "no texture bound";
     return false;
   }
@@ -925,7 +931,7 @@ bool Context::TexImage2DFromFile(Enum target, const std::string& path, bool flip
   try {
     if (!detail::LoadImageFile(path, flip_vertically, img, error)) return false;
   } catch (const std::bad_alloc&) {
-    s.SetError(OUT_OF_MEMORY);
+    s.SetError(OUT_OF_MEMORY, __func__, "out of memory");
     if (error) *error = path + ": out of memory";
     return false;
   }
@@ -936,12 +942,12 @@ bool Context::TexImage2DFromMemory(Enum target, const void* data, std::size_t si
                                    std::string* error) {
   auto& s = *state_;
   if (!IsTexImageTarget(target)) {
-    s.SetError(INVALID_ENUM);
+    s.SetError(INVALID_ENUM, __func__, "an enum argument is not one this call accepts");
     if (error) *error = "invalid texture target";
     return false;
   }
   if (!s.Bound(target)) {
-    s.SetError(INVALID_OPERATION);
+    s.SetError(INVALID_OPERATION, __func__, "not allowed in the current state");
     if (error) *error = "no texture bound";
     return false;
   }
@@ -949,7 +955,7 @@ bool Context::TexImage2DFromMemory(Enum target, const void* data, std::size_t si
   try {
     if (!detail::LoadImageMemory(data, size, "image in memory", flip_vertically, img, error)) return false;
   } catch (const std::bad_alloc&) {
-    s.SetError(OUT_OF_MEMORY);
+    s.SetError(OUT_OF_MEMORY, __func__, "out of memory");
     if (error) *error = "image in memory: out of memory";
     return false;
   }
@@ -958,21 +964,21 @@ bool Context::TexImage2DFromMemory(Enum target, const void* data, std::size_t si
 
 void Context::GenerateMipmap(Enum target) {
   auto& s = *state_;
-  if (target != TEXTURE_2D && target != TEXTURE_CUBE_MAP) return s.SetError(INVALID_ENUM);
+  if (target != TEXTURE_2D && target != TEXTURE_CUBE_MAP) return s.SetError(INVALID_ENUM, __func__, "target must be TEXTURE_2D or TEXTURE_CUBE_MAP");
   detail::TextureObject* tex = s.Bound(target);
-  if (!tex) return s.SetError(INVALID_OPERATION);
+  if (!tex) return s.SetError(INVALID_OPERATION, __func__, "no texture is bound to that target of the active unit");
   const int base = tex->params.base_level;
-  if (base < 0 || base >= detail::kMaxLevels) return s.SetError(INVALID_OPERATION);
+  if (base < 0 || base >= detail::kMaxLevels) return s.SetError(INVALID_OPERATION, __func__, "the base level is out of range");
   for (int f = 0; f < tex->Faces(); ++f) {
     const detail::TextureLevel& b = tex->levels[f][base];
     const detail::TextureLevel& b0 = tex->levels[0][base];
     if (!b.Defined() || b.width != b0.width || b.height != b0.height || b.format != b0.format)
-      return s.SetError(INVALID_OPERATION);
+      return s.SetError(INVALID_OPERATION, __func__, "not allowed in the current state");
   }
   try {
     detail::GenerateMipmaps(*tex);
   } catch (const std::bad_alloc&) {
-    s.SetError(OUT_OF_MEMORY);
+    s.SetError(OUT_OF_MEMORY, __func__, "out of memory");
   }
 }
 
@@ -988,66 +994,66 @@ bool IsWrap(int v) { return v == REPEAT || v == MIRRORED_REPEAT || v == CLAMP_TO
 
 void Context::TexParameterfv(Enum target, Enum pname, const float* values) {
   auto& s = *state_;
-  if (target != TEXTURE_2D && target != TEXTURE_CUBE_MAP) return s.SetError(INVALID_ENUM);
-  if (values == nullptr) return s.SetError(INVALID_VALUE);
+  if (target != TEXTURE_2D && target != TEXTURE_CUBE_MAP) return s.SetError(INVALID_ENUM, __func__, "target must be TEXTURE_2D or TEXTURE_CUBE_MAP");
+  if (values == nullptr) return s.SetError(INVALID_VALUE, __func__, "values is null");
   detail::TextureObject* tex = s.Bound(target);
-  if (!tex) return s.SetError(INVALID_OPERATION);
+  if (!tex) return s.SetError(INVALID_OPERATION, __func__, "no texture is bound to that target of the active unit");
   detail::SamplerParams& p = tex->params;
   const float v = values[0];
   const int iv = std::isfinite(v) ? int(std::clamp(v, -2e9f, 2e9f)) : -1;
   switch (pname) {
     case TEXTURE_MIN_FILTER:
-      if (!IsMinFilter(iv)) return s.SetError(INVALID_ENUM);
+      if (!IsMinFilter(iv)) return s.SetError(INVALID_ENUM, __func__, "not a minification filter");
       p.min_filter = Enum(iv);
       break;
     case TEXTURE_MAG_FILTER:
-      if (iv != NEAREST && iv != LINEAR) return s.SetError(INVALID_ENUM);
+      if (iv != NEAREST && iv != LINEAR) return s.SetError(INVALID_ENUM, __func__, "magnification filter must be NEAREST or LINEAR");
       p.mag_filter = Enum(iv);
       break;
     case TEXTURE_WRAP_S:
     case TEXTURE_WRAP_T:
     case TEXTURE_WRAP_R:
-      if (!IsWrap(iv)) return s.SetError(INVALID_ENUM);
+      if (!IsWrap(iv)) return s.SetError(INVALID_ENUM, __func__, "wrap mode must be REPEAT, MIRRORED_REPEAT, CLAMP_TO_EDGE or CLAMP_TO_BORDER");
       (pname == TEXTURE_WRAP_S ? p.wrap_s : pname == TEXTURE_WRAP_T ? p.wrap_t : p.wrap_r) = Enum(iv);
       break;
     case TEXTURE_BASE_LEVEL:
     case TEXTURE_MAX_LEVEL:
-      if (iv < 0) return s.SetError(INVALID_VALUE);
+      if (iv < 0) return s.SetError(INVALID_VALUE, __func__, "level is negative");
       (pname == TEXTURE_BASE_LEVEL ? p.base_level : p.max_level) = iv;
       break;
     case TEXTURE_MIN_LOD:
     case TEXTURE_MAX_LOD:
     case TEXTURE_LOD_BIAS:
-      if (std::isnan(v)) return s.SetError(INVALID_VALUE);
+      if (std::isnan(v)) return s.SetError(INVALID_VALUE, __func__, "value is NaN");
       (pname == TEXTURE_MIN_LOD ? p.min_lod : pname == TEXTURE_MAX_LOD ? p.max_lod : p.lod_bias) = v;
       break;
     case TEXTURE_COMPARE_MODE:
-      if (iv != int(NONE) && iv != int(COMPARE_REF_TO_TEXTURE)) return s.SetError(INVALID_ENUM);
+      if (iv != int(NONE) && iv != int(COMPARE_REF_TO_TEXTURE)) return s.SetError(INVALID_ENUM, __func__, "compare mode must be NONE or COMPARE_REF_TO_TEXTURE");
       p.compare_mode = Enum(iv);
       break;
     case TEXTURE_COMPARE_FUNC:
-      if (iv < int(NEVER) || iv > int(ALWAYS)) return s.SetError(INVALID_ENUM);
+      if (iv < int(NEVER) || iv > int(ALWAYS)) return s.SetError(INVALID_ENUM, __func__, "not a comparison function");
       p.compare_func = Enum(iv);
       break;
     case TEXTURE_BORDER_COLOR: p.border = glm::vec4(values[0], values[1], values[2], values[3]); break;
-    default: return s.SetError(INVALID_ENUM);
+    default: return s.SetError(INVALID_ENUM, __func__, "an enum argument is not one this call accepts");
   }
 }
 
 void Context::TexParameteri(Enum target, Enum pname, int value) {
-  if (pname == TEXTURE_BORDER_COLOR) return state_->SetError(INVALID_ENUM);  // four values: use TexParameterfv
+  if (pname == TEXTURE_BORDER_COLOR) return state_->SetError(INVALID_ENUM, __func__, "TEXTURE_BORDER_COLOR takes four values: use TexParameterfv");  // four values: use TexParameterfv
   const float v = float(value);
   TexParameterfv(target, pname, &v);
 }
 
 void Context::TexParameterf(Enum target, Enum pname, float value) {
-  if (pname == TEXTURE_BORDER_COLOR) return state_->SetError(INVALID_ENUM);
+  if (pname == TEXTURE_BORDER_COLOR) return state_->SetError(INVALID_ENUM, __func__, "TEXTURE_BORDER_COLOR takes four values: use TexParameterfv");
   TexParameterfv(target, pname, &value);
 }
 
 void Context::PixelStore(Enum pname, int value) {
-  if (pname != UNPACK_ALIGNMENT) return state_->SetError(INVALID_ENUM);
-  if (value != 1 && value != 2 && value != 4 && value != 8) return state_->SetError(INVALID_VALUE);
+  if (pname != UNPACK_ALIGNMENT) return state_->SetError(INVALID_ENUM, __func__, "only UNPACK_ALIGNMENT is supported");
+  if (value != 1 && value != 2 && value != 4 && value != 8) return state_->SetError(INVALID_VALUE, __func__, "alignment must be 1, 2, 4 or 8");
   state_->unpack_alignment = value;
 }
 
@@ -1060,7 +1066,7 @@ std::uint32_t Context::GenFramebuffer() {
 }
 
 void Context::GenFramebuffers(int n, std::uint32_t* ids) {
-  if (n < 0) return state_->SetError(INVALID_VALUE);
+  if (n < 0) return state_->SetError(INVALID_VALUE, __func__, "n is negative");
   for (int i = 0; i < n; ++i) ids[i] = GenFramebuffer();
 }
 
@@ -1078,11 +1084,11 @@ bool Context::IsFramebuffer(std::uint32_t framebuffer) const { return state_->fr
 void Context::BindFramebuffer(Enum target, std::uint32_t framebuffer) {
   auto& s = *state_;
   if (target != FRAMEBUFFER && target != DRAW_FRAMEBUFFER && target != READ_FRAMEBUFFER)
-    return s.SetError(INVALID_ENUM);
+    return s.SetError(INVALID_ENUM, __func__, "an enum argument is not one this call accepts");
   FramebufferObject* f = nullptr;
   if (framebuffer != 0) {
     auto it = s.framebuffers.find(framebuffer);
-    if (it == s.framebuffers.end()) return s.SetError(INVALID_OPERATION);
+    if (it == s.framebuffers.end()) return s.SetError(INVALID_OPERATION, __func__, "not a framebuffer id made by GenFramebuffer (or it was deleted)");
     f = it->second.get();
   }
   if (target != READ_FRAMEBUFFER) s.draw_fbo = f;
@@ -1092,22 +1098,22 @@ void Context::BindFramebuffer(Enum target, std::uint32_t framebuffer) {
 void Context::FramebufferTexture2D(Enum target, Enum attachment, Enum textarget, std::uint32_t texture, int level) {
   auto& s = *state_;
   if (target != FRAMEBUFFER && target != DRAW_FRAMEBUFFER && target != READ_FRAMEBUFFER)
-    return s.SetError(INVALID_ENUM);
+    return s.SetError(INVALID_ENUM, __func__, "an enum argument is not one this call accepts");
   const bool color = attachment >= COLOR_ATTACHMENT0 && attachment < COLOR_ATTACHMENT0 + kMaxColorOutputs;
-  if (!color && attachment != DEPTH_ATTACHMENT) return s.SetError(INVALID_ENUM);
+  if (!color && attachment != DEPTH_ATTACHMENT) return s.SetError(INVALID_ENUM, __func__, "attachment must be COLOR_ATTACHMENT0..3 or DEPTH_ATTACHMENT");
   FramebufferObject* f = target == READ_FRAMEBUFFER ? s.read_fbo : s.draw_fbo;
-  if (!f) return s.SetError(INVALID_OPERATION);
+  if (!f) return s.SetError(INVALID_OPERATION, __func__, "no framebuffer object is bound to target");
   Attachment& slot = color ? f->color[attachment - COLOR_ATTACHMENT0] : f->depth;
   if (texture == 0) {
     slot = Attachment{};
     return;
   }
-  if (!IsTexImageTarget(textarget)) return s.SetError(INVALID_ENUM);
+  if (!IsTexImageTarget(textarget)) return s.SetError(INVALID_ENUM, __func__, "textarget must be TEXTURE_2D or a TEXTURE_CUBE_MAP_* face");
   auto it = s.textures.find(texture);
-  if (it == s.textures.end()) return s.SetError(INVALID_OPERATION);
+  if (it == s.textures.end()) return s.SetError(INVALID_OPERATION, __func__, "not a texture id made by GenTexture (or it was deleted)");
   const Enum kind = textarget == TEXTURE_2D ? TEXTURE_2D : TEXTURE_CUBE_MAP;
-  if (it->second->target != kind) return s.SetError(INVALID_OPERATION);
-  if (level < 0 || level >= detail::kMaxLevels) return s.SetError(INVALID_VALUE);
+  if (it->second->target != kind) return s.SetError(INVALID_OPERATION, __func__, "textarget does not match the texture (2D or cube map)");
+  if (level < 0 || level >= detail::kMaxLevels) return s.SetError(INVALID_VALUE, __func__, "level is negative or beyond the largest mipmap level");
   slot.texture = it->second;
   slot.face = kind == TEXTURE_2D ? 0 : CubeFaceIndex(textarget);
   slot.level = level;
@@ -1116,7 +1122,7 @@ void Context::FramebufferTexture2D(Enum target, Enum attachment, Enum textarget,
 Enum Context::CheckFramebufferStatus(Enum target) {
   auto& s = *state_;
   if (target != FRAMEBUFFER && target != DRAW_FRAMEBUFFER && target != READ_FRAMEBUFFER) {
-    s.SetError(INVALID_ENUM);
+    s.SetError(INVALID_ENUM, __func__, "an enum argument is not one this call accepts");
     return 0;
   }
   const FramebufferObject* f = target == READ_FRAMEBUFFER ? s.read_fbo : s.draw_fbo;
@@ -1125,15 +1131,15 @@ Enum Context::CheckFramebufferStatus(Enum target) {
 
 void Context::DrawBuffers(int n, const Enum* bufs) {
   auto& s = *state_;
-  if (n < 0 || n > kMaxColorOutputs) return s.SetError(INVALID_VALUE);
-  if (!s.draw_fbo) return s.SetError(INVALID_OPERATION);
+  if (n < 0 || n > kMaxColorOutputs) return s.SetError(INVALID_VALUE, __func__, "n must be 0 to kMaxColorOutputs");
+  if (!s.draw_fbo) return s.SetError(INVALID_OPERATION, __func__, "the context's own framebuffer has no draw buffers to choose: bind a framebuffer object");
   Enum next[kMaxColorOutputs] = {NONE, NONE, NONE, NONE};
   for (int i = 0; i < n; ++i) {
     const Enum b = bufs[i];
     if (b != NONE && (b < COLOR_ATTACHMENT0 || b >= COLOR_ATTACHMENT0 + kMaxColorOutputs))
-      return s.SetError(INVALID_ENUM);
+      return s.SetError(INVALID_ENUM, __func__, "an enum argument is not one this call accepts");
     for (int k = 0; k < i; ++k)
-      if (b != NONE && next[k] == b) return s.SetError(INVALID_OPERATION);  // one attachment, one output
+      if (b != NONE && next[k] == b) return s.SetError(INVALID_OPERATION, __func__, "an attachment appears twice");  // one attachment, one output
     next[i] = b;
   }
   std::copy(next, next + kMaxColorOutputs, s.draw_fbo->draw_buffers);

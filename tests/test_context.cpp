@@ -3,6 +3,8 @@
 
 #include <cstring>
 #include <limits>
+#include <string>
+#include <vector>
 
 #include "helpers.h"
 
@@ -376,4 +378,26 @@ TEST_CASE("ReadPixels returns rows top first", "[context]") {
   const Image img = gl.ReadPixels();
   CHECK(img.At(0, 1)[0] == 255);  // bottom row of the window is the last row of the image
   CHECK(img.At(0, 0)[0] == 0);
+}
+
+TEST_CASE("the debug callback reports every error with the call's name", "[context][errors]") {
+  Context gl(4, 4);
+  struct Report {
+    Enum error;
+    std::string call, message;
+  };
+  std::vector<Report> reports;
+  gl.DebugMessageCallback([&](Enum e, const char* call, const char* message) { reports.push_back({e, call, message}); });
+  gl.BindBuffer(ARRAY_BUFFER, 42);
+  gl.Enable(0x1234);
+  REQUIRE(reports.size() == 2);
+  CHECK(reports[0].error == INVALID_OPERATION);
+  CHECK(reports[0].call == "BindBuffer");
+  CHECK(reports[0].message.find("GenBuffer") != std::string::npos);
+  CHECK(reports[1].error == INVALID_ENUM);
+  CHECK(reports[1].call == "Enable");
+  CHECK(gl.GetError() == INVALID_OPERATION);  // GetError still keeps only the first
+  gl.DebugMessageCallback(nullptr);
+  gl.Enable(0x1234);
+  CHECK(reports.size() == 2);
 }

@@ -10,6 +10,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <memory>
 
 #include <softgl/enums.h>
@@ -43,6 +44,11 @@ class Context {
   // ---- Errors ------------------------------------------------------------------------------------------------
   /// Returns the first error recorded since the last call, and clears it (NO_ERROR when there was none).
   Enum GetError();
+  /// Called for every error a call records (not only the first), with the call's name and a readable message,
+  /// e.g. (INVALID_OPERATION, "BindBuffer", "not a buffer id made by GenBuffer (or it was deleted)"). Runs on the
+  /// calling thread, inside the failing call; an empty function removes it.
+  using DebugCallback = std::function<void(Enum error, const char* call, const char* message)>;
+  void DebugMessageCallback(DebugCallback callback);
 
   // ---- Buffer objects ----------------------------------------------------------------------------------------
   /// Creates a buffer object and returns its id (never 0).
