@@ -176,9 +176,11 @@ class PrimitiveRunner {
 
 }  // namespace
 
-void Draw(const DrawCall& call, const FetchPlan& fetch, const DrawState& state, const RenderTarget& target,
-          Scratch& scratch) {
-  if (call.count <= 0 || state.program == nullptr || state.bounds.Empty()) return;
+namespace {
+
+// One draw small enough to hold all its shaded vertices at once.
+void DrawChunk(const DrawCall& call, const FetchPlan& fetch, const DrawState& state, const RenderTarget& target,
+               Scratch& scratch) {
   ShadeVertices(call, fetch, *state.program, state.textures, scratch);
 
   Primitives& prims = scratch.primitives;
@@ -205,6 +207,58 @@ void Draw(const DrawCall& call, const FetchPlan& fetch, const DrawState& state, 
     default: break;
   }
   sink.Flush(quads);
+}
+
+}  // namespace
+
+void Draw(const DrawCall& call, const FetchPlan& fetch, const DrawState& state, const RenderTarget& target,
+          Scratch& scratch) {
+  if (call.count <= 0 || state.program == nullptr || state.bounds.Empty()) return;
+  if (call.count <= kDrawChunk) return DrawChunk(call, fetch, state, target, scratch);
+
+  // A large draw goes through in pieces of at most kDrawChunk vertices, so that memory stays bounded whatever the
+  // count. Each piece is an explicit element list of the draw's own vertex indices (gl_VertexID is kept); strips
+  // overlap by the vertices their primitives share, with an even step so that strip triangles keep their winding;
+  // fans repeat vertex 0; a loop's closing segment is drawn last as a line.
+  auto element = [&](std::int64_t k) { return call.elements ? call.elements[k] : call.first + std::uint32_t(k); };
+  const std::int64_t count = call.count;
+  Enum piece_mode = call.mode;
+  std::int64_t step = kDrawChunk, begin = 0;
+  switch (call.mode) {
+    case LINE_STRIP:
+    case LINE_LOOP:
+      piece_mode = LINE_STRIP;
+      step = kDrawChunk - 1;
+      break;
+    case TRIANGLE_STRIP: step = kDrawChunk - 2; break;
+    case TRIANGLE_FAN:
+      step = kDrawChunk - 2;
+      begin = 1;
+      break;
+    default: break;  // POINTS, LINES, TRIANGLES: kDrawChunk is a multiple of 6
+  }
+  std::vector<std::uint32_t> piece;
+  piece.reserve(std::size_t(kDrawChunk));
+  for (std::int64_t s = begin; s < count; s += step) {
+    piece.clear();
+    if (call.mode == TRIANGLE_FAN) piece.push_back(element(0));
+    const std::int64_t room = kDrawChunk - std::int64_t(piece.size());
+    for (std::int64_t k = s; k < std::min(count, s + room); ++k) piece.push_back(element(k));
+    DrawCall sub;
+    sub.mode = piece_mode;
+    sub.count = int(piece.size());
+    sub.elements = piece.data();
+    DrawChunk(sub, fetch, state, target, scratch);
+    if (s + room >= count) break;
+  }
+  if (call.mode == LINE_LOOP) {
+    const std::uint32_t closing[2] = {element(count - 1), element(0)};
+    DrawCall sub;
+    sub.mode = LINES;
+    sub.count = 2;
+    sub.elements = closing;
+    DrawChunk(sub, fetch, state, target, scratch);
+  }
 }
 
 }  // namespace softgl::detail

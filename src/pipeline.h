@@ -21,6 +21,9 @@
 namespace softgl::detail {
 
 inline constexpr float kMaxPointSize = 255.0f;
+/// Largest number of vertices shaded at once; larger draws go through in pieces (a multiple of 6, so that pieces of
+/// point, line and triangle lists hold whole primitives).
+inline constexpr int kDrawChunk = 6 * 8192;
 
 /// Everything a draw needs from the context's state, resolved at draw time.
 struct DrawState {

@@ -401,3 +401,64 @@ TEST_CASE("the debug callback reports every error with the call's name", "[conte
   gl.Enable(0x1234);
   CHECK(reports.size() == 2);
 }
+
+TEST_CASE("large draws go through in pieces with the same result", "[context]") {
+  // A triangle strip, a fan and a line loop of more than 100,000 vertices, against the same primitives given as
+  // independent triangles and lines (additive blending counts every hit, so a missed or doubled primitive shows).
+  constexpr int kN = 100001;
+  std::vector<glm::vec4> strip, fan, loop;
+  for (int i = 0; i < kN; ++i) {
+    const float t = float(i) / float(kN - 1);
+    strip.push_back({-0.9f + 1.8f * t, (i % 2 ? 0.2f : -0.2f) + 0.3f * std::sin(t * 40.0f), 0, 1});
+    const float a = 6.2831853f * t;
+    fan.push_back(i == 0 ? glm::vec4(0, 0, 0, 1) : glm::vec4(0.8f * std::cos(a), 0.8f * std::sin(a), 0, 1));
+    loop.push_back({0.7f * std::cos(a * 3), 0.7f * std::sin(a * 2), 0, 1});
+  }
+  auto as_list = [](const std::vector<glm::vec4>& v, Enum mode) {
+    std::vector<glm::vec4> out;
+    const int n = int(v.size());
+    if (mode == TRIANGLE_STRIP)
+      for (int i = 0; i + 2 < n; ++i) {
+        if (i % 2) out.insert(out.end(), {v[i + 1], v[i], v[i + 2]});
+        else out.insert(out.end(), {v[i], v[i + 1], v[i + 2]});
+      }
+    if (mode == TRIANGLE_FAN)
+      for (int i = 1; i + 1 < n; ++i) out.insert(out.end(), {v[0], v[i], v[i + 1]});
+    if (mode == LINE_LOOP)
+      for (int i = 0; i < n; ++i) out.insert(out.end(), {v[i], v[(i + 1) % n]});
+    return out;
+  };
+  struct Case {
+    std::vector<glm::vec4>* v;
+    Enum mode, list_mode;
+  };
+  for (const Case& c : {Case{&strip, TRIANGLE_STRIP, TRIANGLES}, Case{&fan, TRIANGLE_FAN, TRIANGLES},
+                        Case{&loop, LINE_LOOP, LINES}}) {
+    INFO("mode " << c.mode);
+    Image images[2];
+    for (int pass = 0; pass < 2; ++pass) {
+      Context gl(96, 96);
+      SolidShader shader;
+      shader.color = glm::vec4(8.0f / 255.0f, 0, 0, 1);
+      gl.UseProgram(shader);
+      gl.Enable(BLEND);
+      gl.BlendFunc(ONE, ONE);
+      const std::vector<glm::vec4> data = pass == 0 ? *c.v : as_list(*c.v, c.mode);
+      MakeVertexArray(gl, data);
+      gl.DrawArrays(pass == 0 ? c.mode : c.list_mode, 0, int(data.size()));
+      CHECK(gl.GetError() == NO_ERROR);
+      images[pass] = gl.ReadPixels();
+    }
+    CHECK(images[0].rgba == images[1].rgba);
+  }
+}
+
+TEST_CASE("a draw of 100 million vertices completes without exhausting memory", "[context][slow]") {
+  Context gl(16, 16);
+  SolidShader shader;
+  gl.UseProgram(shader);
+  gl.BindVertexArray(gl.GenVertexArray());  // no attribute enabled: every vertex reads (0, 0, 0, 1)
+  gl.DrawArrays(TRIANGLES, 0, 100000000);
+  CHECK(gl.GetError() == NO_ERROR);
+  CHECK(CountLit(gl) == 0);  // all degenerate
+}
