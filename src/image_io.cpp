@@ -12,6 +12,9 @@
 
 #include <cstdint>
 #include <cstring>
+#include <fstream>
+#include <iterator>
+#include <vector>
 
 #include "image_io.h"
 
@@ -68,6 +71,11 @@ bool Decode(const std::string& name, bool flip_vertically, LoadedImage& out, std
     stbi_image_free(data);
     row_bytes = std::size_t(w) * std::size_t(n);
   }
+  if (w <= 0 || h <= 0 || n < 1 || n > 4) {
+    out = LoadedImage{};
+    if (error) *error = name + ": empty image";
+    return false;
+  }
   out.width = w;
   out.height = h;
   out.channels = n;
@@ -85,14 +93,58 @@ bool Decode(const std::string& name, bool flip_vertically, LoadedImage& out, std
   return true;
 }
 
+// Walks the marker segments of a JPEG and checks every Huffman table (DHT) holds at most 256 codes. stb_image
+// trusts the counts and writes past its tables otherwise (found by fuzz_image); such a file is corrupt anyway.
+bool JpegHuffmanTablesValid(const std::uint8_t* d, std::size_t size) {
+  if (size < 4 || d[0] != 0xFF || d[1] != 0xD8) return true;  // not a JPEG
+  std::size_t p = 2;
+  while (p + 4 <= size) {
+    if (d[p] != 0xFF) {  // padding or garbage between segments: stb scans on for the next marker, and so do we
+      ++p;
+      continue;
+    }
+    const std::uint8_t marker = d[p + 1];
+    if (marker == 0xD8 || (marker >= 0xD0 && marker <= 0xD7) || marker == 0x01 || marker == 0xFF) {
+      p += marker == 0xFF ? 1 : 2;
+      continue;
+    }
+    if (marker == 0xDA || marker == 0xD9) return true;  // start of scan / end: the tables are all read
+    const std::size_t length = (std::size_t(d[p + 2]) << 8) | d[p + 3];
+    if (length < 2) return true;
+    if (marker == 0xC4) {
+      // stb reads a truncated segment on as zeros: so does this check.
+      auto at = [&](std::size_t i) -> std::size_t { return i < size ? d[i] : 0; };
+      std::size_t q = p + 4;
+      const std::size_t end = p + 2 + length;
+      while (q + 17 <= end) {
+        std::size_t total = 0;
+        for (std::size_t i = 1; i <= 16; ++i) total += at(q + i);
+        if (total > 256) return false;
+        q += 17 + total;
+      }
+    }
+    p += 2 + length;
+  }
+  return true;
+}
+
+bool Check(const std::uint8_t* d, std::size_t size, const std::string& name, std::string* error) {
+  if (JpegHuffmanTablesValid(d, size)) return true;
+  if (error) *error = name + ": corrupt JPEG (a Huffman table has more than 256 codes)";
+  return false;
+}
+
 }  // namespace
 
 bool LoadImageFile(const std::string& path, bool flip_vertically, LoadedImage& out, std::string* error) {
-  const char* p = path.c_str();
-  return Decode(
-      path, flip_vertically, out, error, [&](int* w, int* h, int* n) { return stbi_info(p, w, h, n); },
-      [&] { return stbi_is_hdr(p) != 0; }, [&](int* w, int* h, int* n) { return stbi_loadf(p, w, h, n, 0); },
-      [&](int* w, int* h, int* n) { return stbi_load(p, w, h, n, 0); });
+  // Read whole, then decode from memory: the same checks for files and for embedded images.
+  std::ifstream file(path, std::ios::binary);
+  if (!file) {
+    if (error) *error = path + ": cannot open file";
+    return false;
+  }
+  const std::vector<char> bytes((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+  return LoadImageMemory(bytes.data(), bytes.size(), path, flip_vertically, out, error);
 }
 
 bool LoadImageMemory(const void* data, std::size_t size, const std::string& name, bool flip_vertically,
@@ -103,6 +155,7 @@ bool LoadImageMemory(const void* data, std::size_t size, const std::string& name
   }
   const auto* d = static_cast<const stbi_uc*>(data);
   const int len = int(size);
+  if (!Check(d, size, name, error)) return false;
   return Decode(
       name, flip_vertically, out, error, [&](int* w, int* h, int* n) { return stbi_info_from_memory(d, len, w, h, n); },
       [&] { return stbi_is_hdr_from_memory(d, len) != 0; },

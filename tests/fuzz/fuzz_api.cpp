@@ -1,0 +1,166 @@
+// fuzz_api — random sequences of API calls with random arguments on one context. Every call must validate, record
+// OpenGL's error or act, and never crash or touch memory it should not.
+#include <algorithm>
+#include <cstring>
+#include <vector>
+
+#include <softgl/softgl.h>
+
+#include "fuzz_input.h"
+
+namespace {
+
+struct Vary {
+  glm::vec4 a;
+  glm::vec3 dir;
+  glm::vec2 uv;
+};
+
+struct FuzzShader : softgl::Shader<FuzzShader, Vary> {
+  void Vertex(const softgl::VertexIn& in, softgl::VertexOut<Vary>& out) const {
+    out.position = in.attrib[0];
+    out.point_size = in.attrib[1].x * 8.0f;
+    out.varyings.a = in.attrib[1];
+    out.varyings.dir = glm::vec3(in.attrib[2]);
+    out.varyings.uv = glm::vec2(in.attrib[2]);
+  }
+  bool Fragment(const softgl::FragmentIn<Vary>& in, softgl::FragmentOut& out) const {
+    out.color[0] = in.varyings.a + in.Texture(0, &Vary::uv) + in.TextureCube(1, &Vary::dir);
+    out.color[1] = in.textures->SampleLod(2, in.varyings.uv, in.varyings.a.w);
+    out.color[2] = glm::vec4(in.textures->SampleShadow(3, in.varyings.uv, in.varyings.a.x, {}, {}));
+    out.depth = in.varyings.a.z;
+    return in.varyings.a.w > -0.5f;
+  }
+};
+
+using namespace softgl;
+
+constexpr std::uint32_t kCaps[] = {CULL_FACE, DEPTH_TEST, STENCIL_TEST, SCISSOR_TEST, BLEND, POLYGON_OFFSET_FILL,
+                                   POLYGON_OFFSET_LINE, POLYGON_OFFSET_POINT, PROGRAM_POINT_SIZE};
+constexpr std::uint32_t kModes[] = {POINTS, LINES, LINE_LOOP, LINE_STRIP, TRIANGLES, TRIANGLE_STRIP, TRIANGLE_FAN};
+constexpr std::uint32_t kTypes[] = {BYTE, UNSIGNED_BYTE, SHORT, UNSIGNED_SHORT, INT, UNSIGNED_INT, FLOAT};
+constexpr std::uint32_t kIndexTypes[] = {UNSIGNED_BYTE, UNSIGNED_SHORT, UNSIGNED_INT};
+constexpr std::uint32_t kBufferTargets[] = {ARRAY_BUFFER, ELEMENT_ARRAY_BUFFER};
+constexpr std::uint32_t kTexTargets[] = {TEXTURE_2D, TEXTURE_CUBE_MAP};
+constexpr std::uint32_t kImageTargets[] = {TEXTURE_2D,
+                                           TEXTURE_CUBE_MAP_POSITIVE_X, TEXTURE_CUBE_MAP_NEGATIVE_X,
+                                           TEXTURE_CUBE_MAP_POSITIVE_Y, TEXTURE_CUBE_MAP_NEGATIVE_Y,
+                                           TEXTURE_CUBE_MAP_POSITIVE_Z, TEXTURE_CUBE_MAP_NEGATIVE_Z};
+constexpr std::uint32_t kInternal[] = {RGBA8, RGB8, RG8, R8, RGBA32F, R32F, DEPTH_COMPONENT};
+constexpr std::uint32_t kFormats[] = {RED, RG, RGB, RGBA, DEPTH_COMPONENT};
+constexpr std::uint32_t kPixelTypes[] = {UNSIGNED_BYTE, FLOAT};
+constexpr std::uint32_t kParams[] = {TEXTURE_MIN_FILTER, TEXTURE_MAG_FILTER, TEXTURE_WRAP_S, TEXTURE_WRAP_T,
+                                     TEXTURE_BASE_LEVEL, TEXTURE_MAX_LEVEL, TEXTURE_MIN_LOD, TEXTURE_MAX_LOD,
+                                     TEXTURE_LOD_BIAS, TEXTURE_COMPARE_MODE, TEXTURE_COMPARE_FUNC};
+constexpr std::uint32_t kParamValues[] = {NEAREST, LINEAR, NEAREST_MIPMAP_NEAREST, LINEAR_MIPMAP_LINEAR, REPEAT,
+                                          CLAMP_TO_EDGE, CLAMP_TO_BORDER, MIRRORED_REPEAT, COMPARE_REF_TO_TEXTURE,
+                                          LEQUAL, 0, 1, 2, 1000};
+constexpr std::uint32_t kFuncs[] = {NEVER, LESS, EQUAL, LEQUAL, GREATER, NOTEQUAL, GEQUAL, ALWAYS};
+constexpr std::uint32_t kOps[] = {KEEP, ZERO, REPLACE, INCR, DECR, INVERT, INCR_WRAP, DECR_WRAP};
+constexpr std::uint32_t kFactors[] = {ZERO, ONE, SRC_COLOR, ONE_MINUS_SRC_ALPHA, DST_COLOR, CONSTANT_ALPHA,
+                                      SRC_ALPHA_SATURATE};
+constexpr std::uint32_t kEquations[] = {FUNC_ADD, FUNC_SUBTRACT, FUNC_REVERSE_SUBTRACT, MIN, MAX};
+constexpr std::uint32_t kFaces[] = {FRONT, BACK, FRONT_AND_BACK};
+constexpr std::uint32_t kFbTargets[] = {FRAMEBUFFER, DRAW_FRAMEBUFFER, READ_FRAMEBUFFER};
+constexpr std::uint32_t kAttachments[] = {COLOR_ATTACHMENT0, COLOR_ATTACHMENT0 + 1, COLOR_ATTACHMENT0 + 3,
+                                          DEPTH_ATTACHMENT};
+constexpr std::uint32_t kPolygonModes[] = {FILL, LINE, POINT};
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  fuzz::Input in(data, size);
+  // Small framebuffers: size validation has its own tests, and a legitimately huge one only costs time here.
+  Context gl(in.Byte() % 49, in.Byte() % 49);
+  FuzzShader shader;
+  std::vector<std::uint8_t> scratch;
+  for (int step = 0; step < 200 && !in.Empty(); ++step) {
+    const auto id = [&] { return std::uint32_t(in.Byte() % 8); };
+    switch (in.Byte() % 40) {
+      case 0: gl.GenBuffer(); break;
+      case 1: gl.BindBuffer(in.Enum(kBufferTargets), id()); break;
+      case 2: {
+        const int n = in.Int(0, 512);
+        const std::size_t len = std::size_t(std::max(n, 0)), avail = std::min(len, in.Remaining());
+        const std::uint8_t* p = in.Bytes(len);
+        scratch.assign(len, 0);
+        if (avail) std::memcpy(scratch.data(), p, avail);
+        gl.BufferData(in.Enum(kBufferTargets), n, in.Byte() % 4 ? scratch.data() : nullptr);
+        break;
+      }
+      case 3: {
+        const int n = in.Int(0, 64);
+        scratch.assign(std::size_t(n > 0 ? n : 0), in.Byte());
+        gl.BufferSubData(in.Enum(kBufferTargets), in.Int(-4, 512), n, scratch.data());
+        break;
+      }
+      case 4: gl.GenVertexArray(); break;
+      case 5: gl.BindVertexArray(id()); break;
+      case 6:
+        gl.VertexAttributePointer(std::uint32_t(in.Int(0, 16)), in.Int(0, 5), in.Enum(kTypes), in.Byte() & 1,
+                                  in.Int(-4, 64), std::size_t(std::uint32_t(in.Int(0, 256))));
+        break;
+      case 7: gl.EnableVertexAttribArray(std::uint32_t(in.Int(0, 16))); break;
+      case 8: gl.DisableVertexAttribArray(std::uint32_t(in.Int(0, 16))); break;
+      case 9: gl.UseProgram(shader); break;
+      case 10: gl.DrawArrays(in.Enum(kModes), in.Int(-2, 64), in.Int(-2, 600)); break;
+      case 11:
+        gl.DrawElement(in.Enum(kModes), in.Int(-2, 600), in.Enum(kIndexTypes),
+                       std::size_t(std::uint32_t(in.Int(0, 512))));
+        break;
+      case 12: gl.Enable(in.Enum(kCaps)); break;
+      case 13: gl.Disable(in.Enum(kCaps)); break;
+      case 14: gl.Viewport(in.Int(-64, 64), in.Int(-64, 64), in.Int(-2, 80), in.Int(-2, 80)); break;
+      case 15: gl.Scissor(in.Int(-64, 64), in.Int(-64, 64), in.Int(-2, 80), in.Int(-2, 80)); break;
+      case 16: gl.Clear(std::uint32_t(in.Get<std::uint16_t>()) | COLOR_BUFFER_BIT); break;
+      case 17: gl.DeleteBuffer(id()); break;
+      case 18: gl.DeleteVertexArray(id()); break;
+      case 19: gl.GenTexture(); break;
+      case 20: gl.ActiveTexture(TEXTURE0 + std::uint32_t(in.Int(0, 17))); break;
+      case 21: gl.BindTexture(in.Enum(kTexTargets), id()); break;
+      case 22: {
+        // Sizes are mostly small, sometimes wild; pixels are given only when the buffer holds them (as a caller
+        // of OpenGL must), otherwise the level is allocated without data.
+        const int w = in.Int(0, 16), h = in.Int(0, 16);
+        const bool small = w >= 0 && h >= 0 && w <= 64 && h <= 64;
+        if (small) scratch.assign(std::size_t(w) * std::size_t(h) * 16 + 64, in.Byte());
+        gl.TexImage2D(in.Enum(kImageTargets), in.Int(-1, 5), in.Enum(kInternal), w, h, in.Byte() < 8,
+                      in.Enum(kFormats), in.Enum(kPixelTypes), small && in.Byte() % 4 ? scratch.data() : nullptr);
+        break;
+      }
+      case 23: gl.GenerateMipmap(in.Enum(kTexTargets)); break;
+      case 24: gl.TexParameteri(in.Enum(kTexTargets), in.Enum(kParams), int(in.Enum(kParamValues))); break;
+      case 25: gl.TexParameterf(in.Enum(kTexTargets), in.Enum(kParams), in.Float()); break;
+      case 26: gl.GenFramebuffer(); break;
+      case 27: gl.BindFramebuffer(in.Enum(kFbTargets), id()); break;
+      case 28:
+        gl.FramebufferTexture2D(in.Enum(kFbTargets), in.Enum(kAttachments), in.Enum(kImageTargets), id(),
+                                in.Int(-1, 4));
+        break;
+      case 29: {
+        const std::uint32_t bufs[4] = {in.Enum(kAttachments), in.Enum(kAttachments), NONE, COLOR_ATTACHMENT0 + 2};
+        gl.DrawBuffers(in.Int(-1, 5), bufs);
+        break;
+      }
+      case 30: gl.StencilFuncSeparate(in.Enum(kFaces), in.Enum(kFuncs), in.Int(-300, 300), in.Get<std::uint32_t>()); break;
+      case 31: gl.StencilOpSeparate(in.Enum(kFaces), in.Enum(kOps), in.Enum(kOps), in.Enum(kOps)); break;
+      case 32: gl.BlendFuncSeparate(in.Enum(kFactors), in.Enum(kFactors), in.Enum(kFactors), in.Enum(kFactors)); break;
+      case 33: gl.BlendEquationSeparate(in.Enum(kEquations), in.Enum(kEquations)); break;
+      case 34: gl.PolygonMode(FRONT_AND_BACK, in.Enum(kPolygonModes)); break;
+      case 35: gl.PolygonOffset(in.Float(), in.Float()); break;
+      case 36: gl.DepthRange(in.Float(), in.Float()); break;
+      case 37: gl.PointSize(in.Float()); break;
+      case 38: gl.VertexAttrib4f(std::uint32_t(in.Int(0, 16)), in.Float(), in.Float(), in.Float(), in.Float()); break;
+      default: {
+        std::uint8_t px[4];
+        gl.ReadPixel(in.Int(-2, 50), in.Int(-2, 50), px);
+        (void)gl.ReadPixels();
+        (void)gl.ReadDepth(in.Int(-2, 50), in.Int(-2, 50));
+        (void)gl.CheckFramebufferStatus(in.Enum(kFbTargets));
+        break;
+      }
+    }
+    (void)gl.GetError();
+  }
+  return 0;
+}
