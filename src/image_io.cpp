@@ -3,6 +3,7 @@
 
 #define STB_IMAGE_STATIC
 #define STB_IMAGE_IMPLEMENTATION
+#define STBI_MAX_DIMENSIONS 16384  // kMaxTextureSize: larger images are refused before anything is decoded
 #define STBI_FAILURE_USERMSG
 #include <stb/stb_image.h>
 
@@ -38,6 +39,24 @@ bool ReadImage(const std::string& path, Image& image, std::string* error) {
   image.height = h;
   image.rgba.assign(pixels, pixels + std::size_t(w) * std::size_t(h) * 4);
   stbi_image_free(pixels);
+  return true;
+}
+
+namespace detail {
+namespace {
+bool JpegHuffmanTablesValid(const std::uint8_t* d, std::size_t size);
+}  // namespace
+}  // namespace detail
+
+bool ReadImageInfo(const void* data, std::size_t size, int* width, int* height, int* channels) {
+  int w = 0, h = 0, n = 0;
+  if (data == nullptr || size == 0 || size > std::size_t(INT32_MAX) ||
+      !detail::JpegHuffmanTablesValid(static_cast<const std::uint8_t*>(data), size) ||
+      !stbi_info_from_memory(static_cast<const stbi_uc*>(data), int(size), &w, &h, &n))
+    return false;
+  if (width) *width = w;
+  if (height) *height = h;
+  if (channels) *channels = n;
   return true;
 }
 
@@ -93,37 +112,28 @@ bool Decode(const std::string& name, bool flip_vertically, LoadedImage& out, std
   return true;
 }
 
-// Walks the marker segments of a JPEG and checks every Huffman table (DHT) holds at most 256 codes. stb_image
-// trusts the counts and writes past its tables otherwise (found by fuzz_image); such a file is corrupt anyway.
+// stb_image 2.27 trusts the code counts of a JPEG Huffman table and writes past its tables when they add up to more
+// than 256 (found by fuzz_image). For any file stb would read as a JPEG (0xFF bytes, then SOI), every DHT marker in
+// the file is checked the way stb reads it, bytes past the end reading as zero; such a file is corrupt anyway.
+// (Compressed scan data cannot hold 0xFF 0xC4: a 0xFF there is always followed by 0x00 or a marker.)
 bool JpegHuffmanTablesValid(const std::uint8_t* d, std::size_t size) {
-  if (size < 4 || d[0] != 0xFF || d[1] != 0xD8) return true;  // not a JPEG
-  std::size_t p = 2;
-  while (p + 4 <= size) {
-    if (d[p] != 0xFF) {  // padding or garbage between segments: stb scans on for the next marker, and so do we
-      ++p;
-      continue;
+  auto at = [&](std::size_t i) -> std::size_t { return i < size ? d[i] : 0; };
+  std::size_t p = 0;
+  if (at(0) != 0xFF) return true;
+  while (p < size && d[p] == 0xFF) ++p;
+  if (at(p) != 0xD8) return true;  // not a JPEG to stb
+  for (std::size_t i = p; i + 1 < size; ++i) {
+    if (d[i] != 0xFF || d[i + 1] != 0xC4) continue;
+    const std::size_t length = (at(i + 2) << 8) | at(i + 3);
+    std::size_t q = i + 4;
+    for (std::size_t left = length >= 2 ? length - 2 : 0; left > 0;) {
+      std::size_t total = 0;
+      for (std::size_t k = 1; k <= 16; ++k) total += at(q + k);
+      if (total > 256) return false;
+      if (left < 17 + total) break;
+      left -= 17 + total;
+      q += 17 + total;
     }
-    const std::uint8_t marker = d[p + 1];
-    if (marker == 0xD8 || (marker >= 0xD0 && marker <= 0xD7) || marker == 0x01 || marker == 0xFF) {
-      p += marker == 0xFF ? 1 : 2;
-      continue;
-    }
-    if (marker == 0xDA || marker == 0xD9) return true;  // start of scan / end: the tables are all read
-    const std::size_t length = (std::size_t(d[p + 2]) << 8) | d[p + 3];
-    if (length < 2) return true;
-    if (marker == 0xC4) {
-      // stb reads a truncated segment on as zeros: so does this check.
-      auto at = [&](std::size_t i) -> std::size_t { return i < size ? d[i] : 0; };
-      std::size_t q = p + 4;
-      const std::size_t end = p + 2 + length;
-      while (q + 17 <= end) {
-        std::size_t total = 0;
-        for (std::size_t i = 1; i <= 16; ++i) total += at(q + i);
-        if (total > 256) return false;
-        q += 17 + total;
-      }
-    }
-    p += 2 + length;
   }
   return true;
 }

@@ -535,3 +535,30 @@ TEST_CASE("one fragment shader writes four render targets, with depth in a depth
   CHECK(fetch.got[3].a == 1.0f);
   CHECK(fetch.got[4].r == Approx(0.75f));
 }
+
+TEST_CASE("a JPEG with an oversized Huffman table is refused before decoding", "[texture][files]") {
+  // Found by fuzz_image: stb_image would write past its Huffman tables on this file.
+  std::ifstream f(std::string(SOFTGL_SOURCE_DIR) + "/tests/fuzz/corpus/fuzz_image/regression_jpeg_huffman",
+                  std::ios::binary);
+  REQUIRE(f);
+  const std::vector<char> bytes((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+  Context gl(1, 1);
+  gl.BindTexture(TEXTURE_2D, gl.GenTexture());
+  std::string error;
+  CHECK_FALSE(gl.TexImage2DFromMemory(TEXTURE_2D, bytes.data(), bytes.size(), true, &error));
+  CHECK(error.find("Huffman") != std::string::npos);
+  int w = 0, h = 0, n = 0;
+  CHECK_FALSE(ReadImageInfo(bytes.data(), bytes.size(), &w, &h, &n));
+  // A good image's header is read without decoding it.
+  Image img;
+  img.width = 3;
+  img.height = 2;
+  img.rgba.assign(24, 200);
+  const std::string path = std::string(SOFTGL_TEST_OUTPUT_DIR) + "/info.png";
+  std::filesystem::create_directories(SOFTGL_TEST_OUTPUT_DIR);
+  REQUIRE(WritePng(path, img));
+  std::ifstream png(path, std::ios::binary);
+  const std::vector<char> png_bytes((std::istreambuf_iterator<char>(png)), std::istreambuf_iterator<char>());
+  REQUIRE(ReadImageInfo(png_bytes.data(), png_bytes.size(), &w, &h, &n));
+  CHECK((w == 3 && h == 2 && n == 4));
+}

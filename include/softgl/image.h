@@ -1,6 +1,7 @@
 // softgl/image.h — an RGBA8 image in memory, and PNG output.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -25,5 +26,10 @@ bool WritePng(const std::string& path, const Image& image);
 /// Reads a PNG (or any format stb_image decodes) into an RGBA8 image. Returns false, with a message in `error`
 /// when given, for a missing or corrupt file.
 bool ReadImage(const std::string& path, Image& image, std::string* error = nullptr);
+
+/// The size and channel count an encoded image (PNG, JPEG, TGA, BMP, HDR, ...) declares, read from its header
+/// without decoding it: check it against your own budget before loading an untrusted image (a 100-byte TGA can
+/// declare 16384 x 16384 pixels). Returns false when the bytes are not an image stb_image recognizes.
+bool ReadImageInfo(const void* data, std::size_t size, int* width, int* height, int* channels);
 
 }  // namespace softgl
