@@ -462,3 +462,19 @@ TEST_CASE("a draw of 100 million vertices completes without exhausting memory", 
   CHECK(gl.GetError() == NO_ERROR);
   CHECK(CountLit(gl) == 0);  // all degenerate
 }
+
+TEST_CASE("the largest framebuffer, 16384 x 16384, works", "[context][slow]") {
+  Context gl(kMaxFramebufferSize, kMaxFramebufferSize);
+  REQUIRE(gl.GetError() == NO_ERROR);
+  REQUIRE(gl.Width() == kMaxFramebufferSize);
+  SolidShader shader;
+  gl.UseProgram(shader);
+  MakeVertexArray(gl, {{0.999f, 0.999f, 0, 1}, {1.5f, 0.999f, 0, 1}, {0.999f, 1.5f, 0, 1}});  // the top-right corner
+  gl.DrawArrays(TRIANGLES, 0, 3);
+  std::uint8_t px[4];
+  gl.ReadPixel(kMaxFramebufferSize - 1, kMaxFramebufferSize - 1, px);
+  CHECK(px[0] == 255);
+  gl.ReadPixel(0, 0, px);
+  CHECK(px[0] == 0);
+  CHECK(gl.GetError() == NO_ERROR);
+}
