@@ -37,6 +37,16 @@ TextureObject MakeTexture(int w, int h, F f, Enum format = RGBA32F) {
   return t;
 }
 
+// Reads texels back through textureLod(unit 0, attrib 1 .xy, attrib 1 .z) in the vertex stage; draws nothing.
+struct LodProbe : softgl::Shader<LodProbe, testing::NoVaryings> {
+  mutable std::vector<glm::vec4> got;
+  void Vertex(const VertexIn& in, VertexOut<testing::NoVaryings>& out) const {
+    out.position = glm::vec4(2, 2, 2, 1);  // outside the view volume
+    got.push_back(in.textures->SampleLod(0, glm::vec2(in.attrib[1]), in.attrib[1].z));
+  }
+  bool Fragment(const FragmentIn<testing::NoVaryings>&, FragmentOut&) const { return false; }
+};
+
 // Samples texture `t` at (s, t) with derivatives giving lambda = log2(scale) on a square texture of size n.
 struct Sampler {
   TextureView view;
@@ -254,14 +264,7 @@ TEST_CASE("uploads honour UNPACK_ALIGNMENT and convert formats", "[texture]") {
   CHECK(gl.GetError() == NO_ERROR);
   gl.TexParameteri(TEXTURE_2D, TEXTURE_MIN_FILTER, NEAREST);
   gl.TexParameteri(TEXTURE_2D, TEXTURE_MAG_FILTER, NEAREST);
-  struct Fetch : softgl::Shader<Fetch, testing::NoVaryings> {
-    mutable std::vector<glm::vec4> got;
-    void Vertex(const VertexIn& in, VertexOut<testing::NoVaryings>& out) const {
-      out.position = glm::vec4(2, 2, 2, 1);
-      got.push_back(in.textures->SampleLod(0, glm::vec2(in.attrib[1]), 0.0f));
-    }
-    bool Fragment(const FragmentIn<testing::NoVaryings>&, FragmentOut&) const { return false; }
-  } shader;
+  LodProbe shader;
   gl.UseProgram(shader);
   testing::MakeVertexArray(gl, {{0, 0, 0, 1}, {0, 0, 0, 1}}, {{0.5f / 3, 0.25f, 0, 0}, {2.5f / 3, 0.75f, 0, 0}});
   gl.DrawArrays(POINTS, 0, 2);
@@ -350,14 +353,7 @@ TEST_CASE("image files: formats load, missing and corrupt files give a clear err
   gl.BindTexture(TEXTURE_2D, gl.GenTexture());
   std::string error;
   REQUIRE(gl.TexImage2DFromFile(TEXTURE_2D, (dir / "two.png").string(), true, &error));
-  struct Fetch : softgl::Shader<Fetch, testing::NoVaryings> {
-    mutable std::vector<glm::vec4> got;
-    void Vertex(const VertexIn& in, VertexOut<testing::NoVaryings>& out) const {
-      out.position = glm::vec4(2, 2, 2, 1);
-      got.push_back(in.textures->SampleLod(0, glm::vec2(in.attrib[1]), 0.0f));
-    }
-    bool Fragment(const FragmentIn<testing::NoVaryings>&, FragmentOut&) const { return false; }
-  } shader;
+  LodProbe shader;
   gl.TexParameteri(TEXTURE_2D, TEXTURE_MIN_FILTER, NEAREST);
   gl.UseProgram(shader);
   testing::MakeVertexArray(gl, {{0, 0, 0, 1}, {0, 0, 0, 1}}, {{0.25f, 0.25f, 0, 0}, {0.25f, 0.75f, 0, 0}});
