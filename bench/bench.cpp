@@ -1,0 +1,416 @@
+// bench — softgl against Mesa's llvmpipe (OSMesa, OpenGL 3.3 core) on the same scenes, same size, in one run.
+//
+//   bench [--threads N] [--frames N]
+//
+// llvmpipe runs with LP_NUM_THREADS = N (0 for --threads 1: rendering on the calling thread alone); softgl renders
+// on the calling thread (it has no worker threads yet). Each scene is set up once per renderer (buffers, textures,
+// shaders compiled), two frames are drawn to warm up (llvmpipe compiles its shaders then), then --frames frames are
+// timed; a frame ends when its pixels are ready (glFinish for OpenGL). Prints the median ms/frame per renderer and
+// softgl's time over llvmpipe's (below 1: softgl is faster).
+#define GL_GLEXT_PROTOTYPES
+#include <GL/osmesa.h>
+#include <GL/gl.h>
+#include <GL/glext.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <functional>
+#include <random>
+#include <string>
+#include <vector>
+
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+#include <assimp/Importer.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+#include <softgl/softgl.h>
+
+namespace {
+
+// ---- Scene data, shared by both renderers -------------------------------------------------------------------
+
+struct Geometry {
+  std::vector<float> vertices;  // interleaved, `floats` per vertex
+  int floats = 3;
+  std::vector<std::uint32_t> indices;
+};
+
+Geometry SmallTriangles(int count) {
+  Geometry g;
+  g.floats = 3;
+  std::mt19937 rng(42);
+  std::uniform_real_distribution<float> pos(-1.0f, 1.0f), jitter(-0.006f, 0.006f), depth(-0.9f, 0.9f);
+  for (int i = 0; i < count; ++i) {
+    const float x = pos(rng), y = pos(rng), z = depth(rng);
+    for (int k = 0; k < 3; ++k) g.vertices.insert(g.vertices.end(), {x + jitter(rng), y + jitter(rng), z});
+  }
+  return g;
+}
+
+Geometry FullScreenQuads(int count, float uv_scale) {
+  Geometry g;
+  g.floats = 5;  // x, y, z, u, v
+  const float c[4][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
+  for (int q = 0; q < count; ++q)
+    for (int i : {0, 1, 2, 0, 2, 3}) {
+      const float z = 0.9f - 0.01f * float(q);
+      g.vertices.insert(g.vertices.end(), {c[i][0], c[i][1], z, (c[i][0] * 0.5f + 0.5f) * uv_scale,
+                                           (c[i][1] * 0.5f + 0.5f) * uv_scale});
+    }
+  return g;
+}
+
+// A model with node transforms applied: positions and normals, one index list.
+bool LoadModel(const std::string& path, Geometry& g, glm::mat4& view_proj, float aspect) {
+  Assimp::Importer importer;
+  const aiScene* s = importer.ReadFile(path, aiProcess_Triangulate | aiProcess_GenSmoothNormals |
+                                                 aiProcess_PreTransformVertices | aiProcess_JoinIdenticalVertices);
+  if (!s) return false;
+  g.floats = 6;
+  glm::vec3 lo(1e30f), hi(-1e30f);
+  for (unsigned m = 0; m < s->mNumMeshes; ++m) {
+    const aiMesh* mesh = s->mMeshes[m];
+    const auto base = std::uint32_t(g.vertices.size() / 6);
+    for (unsigned i = 0; i < mesh->mNumVertices; ++i) {
+      const aiVector3D p = mesh->mVertices[i];
+      const aiVector3D n = mesh->mNormals ? mesh->mNormals[i] : aiVector3D(0, 1, 0);
+      g.vertices.insert(g.vertices.end(), {p.x, p.y, p.z, n.x, n.y, n.z});
+      lo = glm::min(lo, glm::vec3(p.x, p.y, p.z));
+      hi = glm::max(hi, glm::vec3(p.x, p.y, p.z));
+    }
+    for (unsigned f = 0; f < mesh->mNumFaces; ++f)
+      if (mesh->mFaces[f].mNumIndices == 3)
+        for (int k = 0; k < 3; ++k) g.indices.push_back(base + mesh->mFaces[f].mIndices[k]);
+  }
+  const glm::vec3 center = (lo + hi) * 0.5f;
+  const float radius = glm::length(hi - lo) * 0.5f, distance = radius / std::sin(glm::radians(20.0f));
+  const glm::vec3 eye = center + distance * glm::normalize(glm::vec3(0.6f, 0.4f, 0.7f));
+  view_proj = glm::perspective(glm::radians(40.0f), aspect, distance - radius * 1.2f, distance + radius * 1.2f) *
+              glm::lookAt(eye, center, glm::vec3(0, 1, 0));
+  return true;
+}
+
+std::vector<std::uint8_t> PatternTexture(int n) {
+  std::vector<std::uint8_t> px(std::size_t(n) * n * 4);
+  for (int y = 0; y < n; ++y)
+    for (int x = 0; x < n; ++x) {
+      std::uint8_t* p = &px[(std::size_t(y) * n + x) * 4];
+      const bool check = ((x / 16) + (y / 16)) % 2 == 0;
+      p[0] = check ? 230 : 40;
+      p[1] = std::uint8_t(x * 255 / n);
+      p[2] = std::uint8_t(y * 255 / n);
+      p[3] = 255;
+    }
+  return px;
+}
+
+// ---- softgl shaders ------------------------------------------------------------------------------------------
+
+struct NoVaryings {};
+struct FlatShader : softgl::Shader<FlatShader, NoVaryings> {
+  glm::vec4 color{0.2f, 0.6f, 0.9f, 1.0f};
+  void Vertex(const softgl::VertexIn& in, softgl::VertexOut<NoVaryings>& out) const {
+    out.position = glm::vec4(glm::vec3(in.attrib[0]), 1.0f);
+  }
+  bool Fragment(const softgl::FragmentIn<NoVaryings>&, softgl::FragmentOut& out) const {
+    out.color[0] = color;
+    return true;
+  }
+};
+
+struct UvVaryings {
+  glm::vec2 uv;
+};
+struct TextureShader : softgl::Shader<TextureShader, UvVaryings> {
+  void Vertex(const softgl::VertexIn& in, softgl::VertexOut<UvVaryings>& out) const {
+    out.position = glm::vec4(glm::vec3(in.attrib[0]), 1.0f);
+    out.varyings.uv = glm::vec2(in.attrib[1]);
+  }
+  bool Fragment(const softgl::FragmentIn<UvVaryings>& in, softgl::FragmentOut& out) const {
+    out.color[0] = in.Texture(0, &UvVaryings::uv);
+    return true;
+  }
+};
+
+struct PhongVaryings {
+  glm::vec3 normal;
+  glm::vec3 world;
+};
+struct PhongShader : softgl::Shader<PhongShader, PhongVaryings> {
+  glm::mat4 view_proj{1.0f};
+  glm::vec3 light = glm::normalize(glm::vec3(0.4f, 0.8f, 0.5f));
+  glm::vec3 eye{0.0f};
+  void Vertex(const softgl::VertexIn& in, softgl::VertexOut<PhongVaryings>& out) const {
+    out.position = view_proj * glm::vec4(glm::vec3(in.attrib[0]), 1.0f);
+    out.varyings.normal = glm::vec3(in.attrib[1]);
+    out.varyings.world = glm::vec3(in.attrib[0]);
+  }
+  bool Fragment(const softgl::FragmentIn<PhongVaryings>& in, softgl::FragmentOut& out) const {
+    const glm::vec3 n = glm::normalize(in.varyings.normal);
+    const glm::vec3 h = glm::normalize(light + glm::normalize(eye - in.varyings.world));
+    const float d = std::max(glm::dot(n, light), 0.0f), s = std::pow(std::max(glm::dot(n, h), 0.0f), 32.0f);
+    out.color[0] = glm::vec4(glm::vec3(0.7f, 0.72f, 0.75f) * (0.15f + d) + glm::vec3(0.3f * s), 1.0f);
+    return true;
+  }
+};
+
+// ---- GLSL ----------------------------------------------------------------------------------------------------
+
+const char* kFlatVs = "#version 330 core\nlayout(location=0) in vec3 p; void main(){ gl_Position = vec4(p, 1.0); }";
+const char* kFlatFs = "#version 330 core\nuniform vec4 color; out vec4 o; void main(){ o = color; }";
+const char* kTexVs =
+    "#version 330 core\nlayout(location=0) in vec3 p; layout(location=1) in vec2 t; out vec2 uv;"
+    "void main(){ gl_Position = vec4(p, 1.0); uv = t; }";
+const char* kTexFs = "#version 330 core\nin vec2 uv; uniform sampler2D tex; out vec4 o; void main(){ o = texture(tex, uv); }";
+const char* kPhongVs =
+    "#version 330 core\nlayout(location=0) in vec3 p; layout(location=1) in vec3 n; uniform mat4 vp;"
+    "out vec3 normal; out vec3 world; void main(){ gl_Position = vp * vec4(p, 1.0); normal = n; world = p; }";
+const char* kPhongFs =
+    "#version 330 core\nin vec3 normal; in vec3 world; uniform vec3 light; uniform vec3 eye; out vec4 o;"
+    "void main(){ vec3 n = normalize(normal); vec3 h = normalize(light + normalize(eye - world));"
+    "float d = max(dot(n, light), 0.0); float s = pow(max(dot(n, h), 0.0), 32.0);"
+    "o = vec4(vec3(0.7, 0.72, 0.75) * (0.15 + d) + vec3(0.3 * s), 1.0); }";
+
+GLuint Program(const char* vs, const char* fs) {
+  const GLuint p = glCreateProgram();
+  for (auto [type, src] : {std::pair{GLenum(GL_VERTEX_SHADER), vs}, std::pair{GLenum(GL_FRAGMENT_SHADER), fs}}) {
+    const GLuint s = glCreateShader(type);
+    glShaderSource(s, 1, &src, nullptr);
+    glCompileShader(s);
+    glAttachShader(p, s);
+  }
+  glLinkProgram(p);
+  glUseProgram(p);
+  return p;
+}
+
+// ---- Running -------------------------------------------------------------------------------------------------
+
+double MedianMs(int frames, const std::function<void()>& frame) {
+  frame();  // warm-up: llvmpipe compiles its shaders on first use
+  frame();
+  std::vector<double> ms;
+  for (int i = 0; i < frames; ++i) {
+    const auto t0 = std::chrono::steady_clock::now();
+    frame();
+    ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+  }
+  std::sort(ms.begin(), ms.end());
+  return ms[ms.size() / 2];
+}
+
+struct Scene {
+  const char* name;
+  int width, height;
+  const char* unit;  // what to report besides time
+  double units;      // per frame (triangles, pixels)
+  std::function<double(int)> softgl_ms, gl_ms;
+};
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  int threads = 1, frames = 5;
+  for (int i = 1; i + 1 < argc; i += 2) {
+    if (!std::strcmp(argv[i], "--threads")) threads = std::max(1, std::atoi(argv[i + 1]));
+    if (!std::strcmp(argv[i], "--frames")) frames = std::max(1, std::atoi(argv[i + 1]));
+  }
+  const std::string lp_threads = std::to_string(threads == 1 ? 0 : threads);
+  setenv("LP_NUM_THREADS", lp_threads.c_str(), 1);
+  setenv("GALLIUM_DRIVER", "llvmpipe", 1);
+
+  const Geometry tris = SmallTriangles(1000000);
+  const Geometry blend_quads = FullScreenQuads(50, 1.0f), tex_quads = FullScreenQuads(20, 3.0f);
+  const std::vector<std::uint8_t> texture = PatternTexture(1024);
+  Geometry engine;
+  glm::mat4 engine_vp(1.0f);
+  const bool have_engine = LoadModel("/usr/share/assimp/models/glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb",
+                                     engine, engine_vp, 1280.0f / 720.0f);
+  const glm::vec3 engine_eye = glm::vec3(glm::inverse(engine_vp) * glm::vec4(0, 0, -1, 1));
+
+  // softgl: one context per scene; attributes 0, 1 from the interleaved buffer.
+  auto softgl_setup = [](softgl::Context& gl, const Geometry& g) {
+    gl.BindVertexArray(gl.GenVertexArray());
+    gl.BindBuffer(softgl::ARRAY_BUFFER, gl.GenBuffer());
+    gl.BufferData(softgl::ARRAY_BUFFER, std::ptrdiff_t(g.vertices.size() * 4), g.vertices.data());
+    gl.VertexAttributePointer(0, 3, softgl::FLOAT, false, g.floats * 4, 0);
+    gl.EnableVertexAttribArray(0);
+    if (g.floats > 3) {
+      gl.VertexAttributePointer(1, g.floats - 3, softgl::FLOAT, false, g.floats * 4, 12);
+      gl.EnableVertexAttribArray(1);
+    }
+    if (!g.indices.empty()) {
+      gl.BindBuffer(softgl::ELEMENT_ARRAY_BUFFER, gl.GenBuffer());
+      gl.BufferData(softgl::ELEMENT_ARRAY_BUFFER, std::ptrdiff_t(g.indices.size() * 4), g.indices.data());
+    }
+  };
+  auto gl_setup = [](const Geometry& g) {
+    GLuint vao, vbo, ebo;
+    glGenVertexArrays(1, &vao);
+    glBindVertexArray(vao);
+    glGenBuffers(1, &vbo);
+    glBindBuffer(GL_ARRAY_BUFFER, vbo);
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(g.vertices.size() * 4), g.vertices.data(), GL_STATIC_DRAW);
+    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, g.floats * 4, nullptr);
+    glEnableVertexAttribArray(0);
+    if (g.floats > 3) {
+      glVertexAttribPointer(1, g.floats - 3, GL_FLOAT, GL_FALSE, g.floats * 4, reinterpret_cast<void*>(12));
+      glEnableVertexAttribArray(1);
+    }
+    if (!g.indices.empty()) {
+      glGenBuffers(1, &ebo);
+      glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, ebo);
+      glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(g.indices.size() * 4), g.indices.data(), GL_STATIC_DRAW);
+    }
+  };
+  auto with_osmesa = [&](int w, int h, const std::function<double()>& body) {
+    const int attribs[] = {OSMESA_FORMAT, OSMESA_RGBA, OSMESA_DEPTH_BITS, 24, OSMESA_STENCIL_BITS, 8,
+                           OSMESA_PROFILE, OSMESA_CORE_PROFILE, OSMESA_CONTEXT_MAJOR_VERSION, 3,
+                           OSMESA_CONTEXT_MINOR_VERSION, 3, 0};
+    OSMesaContext ctx = OSMesaCreateContextAttribs(attribs, nullptr);
+    std::vector<std::uint8_t> buffer(std::size_t(w) * h * 4);
+    if (!ctx || !OSMesaMakeCurrent(ctx, buffer.data(), GL_UNSIGNED_BYTE, w, h)) return -1.0;
+    glViewport(0, 0, w, h);
+    const double ms = body();
+    OSMesaDestroyContext(ctx);
+    return ms;
+  };
+
+  std::vector<Scene> scenes;
+  if (have_engine) {
+    scenes.push_back({"model: 2CylinderEngine, Blinn-Phong", 1280, 720, "Mtri/s", double(engine.indices.size() / 3),
+                      [&](int n) {
+                        softgl::Context gl(1280, 720);
+                        softgl_setup(gl, engine);
+                        PhongShader shader;
+                        shader.view_proj = engine_vp;
+                        shader.eye = engine_eye;
+                        gl.UseProgram(shader);
+                        gl.Enable(softgl::DEPTH_TEST);
+                        gl.Enable(softgl::CULL_FACE);
+                        return MedianMs(n, [&] {
+                          gl.Clear(softgl::COLOR_BUFFER_BIT | softgl::DEPTH_BUFFER_BIT);
+                          gl.DrawElement(softgl::TRIANGLES, int(engine.indices.size()), softgl::UNSIGNED_INT, 0);
+                        });
+                      },
+                      [&](int n) {
+                        return with_osmesa(1280, 720, [&] {
+                          gl_setup(engine);
+                          const GLuint p = Program(kPhongVs, kPhongFs);
+                          glUniformMatrix4fv(glGetUniformLocation(p, "vp"), 1, GL_FALSE, &engine_vp[0][0]);
+                          const glm::vec3 light = glm::normalize(glm::vec3(0.4f, 0.8f, 0.5f));
+                          glUniform3fv(glGetUniformLocation(p, "light"), 1, &light[0]);
+                          glUniform3fv(glGetUniformLocation(p, "eye"), 1, &engine_eye[0]);
+                          glEnable(GL_DEPTH_TEST);
+                          glEnable(GL_CULL_FACE);
+                          return MedianMs(n, [&] {
+                            glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+                            glDrawElements(GL_TRIANGLES, GLsizei(engine.indices.size()), GL_UNSIGNED_INT, nullptr);
+                            glFinish();
+                          });
+                        });
+                      }});
+  }
+  scenes.push_back({"many small triangles: 1,000,000, flat, depth test", 1280, 720, "Mtri/s", 1e6,
+                    [&](int n) {
+                      softgl::Context gl(1280, 720);
+                      softgl_setup(gl, tris);
+                      FlatShader shader;
+                      gl.UseProgram(shader);
+                      gl.Enable(softgl::DEPTH_TEST);
+                      return MedianMs(n, [&] {
+                        gl.Clear(softgl::COLOR_BUFFER_BIT | softgl::DEPTH_BUFFER_BIT);
+                        gl.DrawArrays(softgl::TRIANGLES, 0, 3000000);
+                      });
+                    },
+                    [&](int n) {
+                      return with_osmesa(1280, 720, [&] {
+                        gl_setup(tris);
+                        const GLuint p = Program(kFlatVs, kFlatFs);
+                        glUniform4f(glGetUniformLocation(p, "color"), 0.2f, 0.6f, 0.9f, 1.0f);
+                        glEnable(GL_DEPTH_TEST);
+                        return MedianMs(n, [&] {
+                          glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+                          glDrawArrays(GL_TRIANGLES, 0, 3000000);
+                          glFinish();
+                        });
+                      });
+                    }});
+  scenes.push_back({"fill rate: 50 blended full-screen quads", 1920, 1080, "Mpixel/s", 50.0 * 1920 * 1080,
+                    [&](int n) {
+                      softgl::Context gl(1920, 1080);
+                      softgl_setup(gl, blend_quads);
+                      FlatShader shader;
+                      shader.color = glm::vec4(0.9f, 0.5f, 0.2f, 0.1f);
+                      gl.UseProgram(shader);
+                      gl.Enable(softgl::BLEND);
+                      gl.BlendFunc(softgl::SRC_ALPHA, softgl::ONE_MINUS_SRC_ALPHA);
+                      return MedianMs(n, [&] {
+                        gl.Clear(softgl::COLOR_BUFFER_BIT);
+                        gl.DrawArrays(softgl::TRIANGLES, 0, 300);
+                      });
+                    },
+                    [&](int n) {
+                      return with_osmesa(1920, 1080, [&] {
+                        gl_setup(blend_quads);
+                        const GLuint p = Program(kFlatVs, kFlatFs);
+                        glUniform4f(glGetUniformLocation(p, "color"), 0.9f, 0.5f, 0.2f, 0.1f);
+                        glEnable(GL_BLEND);
+                        glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+                        return MedianMs(n, [&] {
+                          glClear(GL_COLOR_BUFFER_BIT);
+                          glDrawArrays(GL_TRIANGLES, 0, 300);
+                          glFinish();
+                        });
+                      });
+                    }});
+  scenes.push_back({"textured overdraw: 20 quads, trilinear, 1024^2", 1920, 1080, "Mpixel/s", 20.0 * 1920 * 1080,
+                    [&](int n) {
+                      softgl::Context gl(1920, 1080);
+                      softgl_setup(gl, tex_quads);
+                      gl.BindTexture(softgl::TEXTURE_2D, gl.GenTexture());
+                      gl.TexImage2D(softgl::TEXTURE_2D, 0, softgl::RGBA8, 1024, 1024, 0, softgl::RGBA,
+                                    softgl::UNSIGNED_BYTE, texture.data());
+                      gl.GenerateMipmap(softgl::TEXTURE_2D);
+                      gl.TexParameteri(softgl::TEXTURE_2D, softgl::TEXTURE_MIN_FILTER, softgl::LINEAR_MIPMAP_LINEAR);
+                      TextureShader shader;
+                      gl.UseProgram(shader);
+                      return MedianMs(n, [&] {
+                        gl.Clear(softgl::COLOR_BUFFER_BIT);
+                        gl.DrawArrays(softgl::TRIANGLES, 0, 120);
+                      });
+                    },
+                    [&](int n) {
+                      return with_osmesa(1920, 1080, [&] {
+                        gl_setup(tex_quads);
+                        GLuint tex;
+                        glGenTextures(1, &tex);
+                        glBindTexture(GL_TEXTURE_2D, tex);
+                        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 1024, 1024, 0, GL_RGBA, GL_UNSIGNED_BYTE,
+                                     texture.data());
+                        glGenerateMipmap(GL_TEXTURE_2D);
+                        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+                        Program(kTexVs, kTexFs);
+                        return MedianMs(n, [&] {
+                          glClear(GL_COLOR_BUFFER_BIT);
+                          glDrawArrays(GL_TRIANGLES, 0, 120);
+                          glFinish();
+                        });
+                      });
+                    }});
+
+  std::printf("| scene | size | threads | softgl ms/frame | llvmpipe ms/frame | softgl / llvmpipe | softgl rate |\n");
+  std::printf("|---|---|---|---|---|---|---|\n");
+  for (const Scene& s : scenes) {
+    const double a = s.softgl_ms(frames), b = s.gl_ms(frames);
+    const double rate = s.units / (a * 1e3);  // per microsecond = millions per second
+    std::printf("| %s | %dx%d | %d | %.1f | %.1f | %.2f | %.1f %s |\n", s.name, s.width, s.height, threads, a, b,
+                b > 0 ? a / b : 0.0, rate, s.unit);
+    std::fflush(stdout);
+  }
+  if (!have_engine) std::printf("(model scene skipped: install assimp-testmodels)\n");
+  return 0;
+}
