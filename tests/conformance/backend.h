@@ -29,6 +29,8 @@ enum class Program {
   kUv,     // colour = (extra.x, extra.y, 0.5, 1), extra interpolated: shows perspective-correct interpolation
   kLit,    // per-fragment Blinn-Phong: normal = extra.xyz (world), colour = tint * (ambient + diffuse) + specular
   kTexture,  // colour = texture(unit 0, extra.xy): implicit derivatives, so the LOD comes from the quad
+  kCube,     // colour = texture(cube map on unit 1, extra.xyz)
+  kShadow,   // colour = texture(depth texture on unit 2 with comparison, vec3(extra.xy, extra.z)) in red
 };
 
 /// A 2D RGBA8 texture for unit 0: the levels given (level 0 first), or level 0 and GenerateMipmap.
@@ -91,6 +93,12 @@ class Backend {
   virtual Frame Read() = 0;
   /// Defines the texture of unit 0 (replacing any before).
   virtual void SetTexture(const TextureDesc& desc) = 0;
+  /// Defines the cube map of unit 1 from six faces (+x, -x, +y, -y, +z, -z) of size x size RGBA8, mipmapped with
+  /// GenerateMipmap, LINEAR_MIPMAP_LINEAR, CLAMP_TO_EDGE.
+  virtual void SetCubeTexture(int size, const std::vector<std::uint8_t> faces[6]) = 0;
+  /// Defines the depth texture of unit 2 (size x size floats), TEXTURE_COMPARE_MODE = COMPARE_REF_TO_TEXTURE with
+  /// `func`, filters `filter` (NEAREST or LINEAR), CLAMP_TO_EDGE.
+  virtual void SetShadowTexture(int size, const std::vector<float>& depth, Enum func, Enum filter) = 0;
   /// Directs drawing into a new width x height RGBA8 texture with a depth texture (viewport set to it).
   virtual void BeginRenderToTexture(int width, int height) = 0;
   /// Back to the default framebuffer (viewport restored); the texture drawn becomes unit 0's, LINEAR filtered.

@@ -58,6 +58,20 @@ out vec4 o_color;
 void main() { o_color = texture(u_tex, v_extra.xy); }
 )";
 
+constexpr const char* kCubeFragment = R"(#version 330 core
+in vec4 v_extra;
+uniform samplerCube u_cube;
+out vec4 o_color;
+void main() { o_color = texture(u_cube, v_extra.xyz); }
+)";
+
+constexpr const char* kShadowFragment = R"(#version 330 core
+in vec4 v_extra;
+uniform sampler2DShadow u_shadow;
+out vec4 o_color;
+void main() { o_color = vec4(texture(u_shadow, v_extra.xyz), 0.0, 0.0, 1.0); }
+)";
+
 GLuint Compile(GLenum type, const char* source, std::string* error) {
   const GLuint s = glCreateShader(type);
   glShaderSource(s, 1, &source, nullptr);
@@ -97,6 +111,12 @@ class GlBackend final : public Backend {
     programs_[1] = Link(kUvFragment, error);
     programs_[2] = Link(kLitFragment, error);
     programs_[3] = Link(kTextureFragment, error);
+    programs_[4] = Link(kCubeFragment, error);
+    programs_[5] = Link(kShadowFragment, error);
+    glUseProgram(programs_[4]);
+    glUniform1i(glGetUniformLocation(programs_[4], "u_cube"), 1);
+    glUseProgram(programs_[5]);
+    glUniform1i(glGetUniformLocation(programs_[5], "u_shadow"), 2);
     if (!error->empty()) return false;
     glGenVertexArrays(1, &vao_);
     glBindVertexArray(vao_);
@@ -180,6 +200,37 @@ class GlBackend final : public Backend {
     glUniform1i(glGetUniformLocation(programs_[3], "u_tex"), 0);
   }
 
+  void SetCubeTexture(int size, const std::vector<std::uint8_t> faces[6]) override {
+    GLuint tex = 0;
+    glGenTextures(1, &tex);
+    glActiveTexture(GL_TEXTURE1);
+    glBindTexture(GL_TEXTURE_CUBE_MAP, tex);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    for (int f = 0; f < 6; ++f)
+      glTexImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_X + GLenum(f), 0, GL_RGBA8, size, size, 0, GL_RGBA, GL_UNSIGNED_BYTE,
+                   faces[f].data());
+    glGenerateMipmap(GL_TEXTURE_CUBE_MAP);
+    glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+    glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    glActiveTexture(GL_TEXTURE0);
+  }
+
+  void SetShadowTexture(int size, const std::vector<float>& depth, Enum func, Enum filter) override {
+    GLuint tex = 0;
+    glGenTextures(1, &tex);
+    glActiveTexture(GL_TEXTURE2);
+    glBindTexture(GL_TEXTURE_2D, tex);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT32F, size, size, 0, GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GLint(filter));
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GLint(filter));
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_FUNC, GLint(func));
+    glActiveTexture(GL_TEXTURE0);
+  }
+
   void BeginRenderToTexture(int width, int height) override {
     GLuint depth = 0, fbo = 0;
     glGenTextures(1, &rtt_color_);
@@ -223,7 +274,7 @@ class GlBackend final : public Backend {
   OSMesaContext ctx_;
   int w_, h_;
   std::vector<std::uint8_t> buffer_;
-  GLuint programs_[4] = {};
+  GLuint programs_[6] = {};
   GLuint rtt_color_ = 0;
   GLuint vao_ = 0, vbo_ = 0, ebo_ = 0;
 };

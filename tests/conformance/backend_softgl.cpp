@@ -73,6 +73,37 @@ struct TextureShader : softgl::Shader<TextureShader, TexVaryings> {
   }
 };
 
+struct DirVaryings {
+  glm::vec3 dir;
+};
+
+struct CubeShader : softgl::Shader<CubeShader, DirVaryings> {
+  void Vertex(const softgl::VertexIn& in, softgl::VertexOut<DirVaryings>& out) const {
+    out.position = in.attrib[0];
+    out.varyings.dir = glm::vec3(in.attrib[2]);
+  }
+  bool Fragment(const softgl::FragmentIn<DirVaryings>& in, softgl::FragmentOut& out) const {
+    out.color[0] = in.TextureCube(1, &DirVaryings::dir);
+    return true;
+  }
+};
+
+struct ShadowVaryings {
+  glm::vec3 coord;
+};
+
+struct ShadowShader : softgl::Shader<ShadowShader, ShadowVaryings> {
+  void Vertex(const softgl::VertexIn& in, softgl::VertexOut<ShadowVaryings>& out) const {
+    out.position = in.attrib[0];
+    out.varyings.coord = glm::vec3(in.attrib[2]);
+  }
+  bool Fragment(const softgl::FragmentIn<ShadowVaryings>& in, softgl::FragmentOut& out) const {
+    const glm::vec3 c = in.varyings.coord;
+    out.color[0] = glm::vec4(in.textures->SampleShadow(2, glm::vec2(c), c.z, {}, {}), 0.0f, 0.0f, 1.0f);
+    return true;
+  }
+};
+
 class SoftglBackend final : public Backend {
  public:
   SoftglBackend(int w, int h) : gl_(w, h) {
@@ -123,6 +154,8 @@ class SoftglBackend final : public Backend {
       case Program::kUv: gl_.UseProgram(uv_); break;
       case Program::kLit: gl_.UseProgram(lit_); break;
       case Program::kTexture: gl_.UseProgram(texture_); break;
+      case Program::kCube: gl_.UseProgram(cube_); break;
+      case Program::kShadow: gl_.UseProgram(shadow_); break;
     }
     if (indices.empty()) {
       gl_.DrawArrays(mode, 0, int(vertices.size()));
@@ -147,6 +180,34 @@ class SoftglBackend final : public Backend {
     gl_.TexParameteri(softgl::TEXTURE_2D, softgl::TEXTURE_WRAP_S, int(d.wrap_s));
     gl_.TexParameteri(softgl::TEXTURE_2D, softgl::TEXTURE_WRAP_T, int(d.wrap_t));
     gl_.TexParameterfv(softgl::TEXTURE_2D, softgl::TEXTURE_BORDER_COLOR, &d.border[0]);
+  }
+
+  void SetCubeTexture(int size, const std::vector<std::uint8_t> faces[6]) override {
+    gl_.ActiveTexture(softgl::TEXTURE0 + 1);
+    gl_.BindTexture(softgl::TEXTURE_CUBE_MAP, gl_.GenTexture());
+    gl_.PixelStore(softgl::UNPACK_ALIGNMENT, 1);
+    for (int f = 0; f < 6; ++f)
+      gl_.TexImage2D(softgl::TEXTURE_CUBE_MAP_POSITIVE_X + softgl::Enum(f), 0, softgl::RGBA8, size, size, 0,
+                     softgl::RGBA, softgl::UNSIGNED_BYTE, faces[f].data());
+    gl_.GenerateMipmap(softgl::TEXTURE_CUBE_MAP);
+    gl_.TexParameteri(softgl::TEXTURE_CUBE_MAP, softgl::TEXTURE_MIN_FILTER, softgl::LINEAR_MIPMAP_LINEAR);
+    gl_.TexParameteri(softgl::TEXTURE_CUBE_MAP, softgl::TEXTURE_WRAP_S, softgl::CLAMP_TO_EDGE);
+    gl_.TexParameteri(softgl::TEXTURE_CUBE_MAP, softgl::TEXTURE_WRAP_T, softgl::CLAMP_TO_EDGE);
+    gl_.ActiveTexture(softgl::TEXTURE0);
+  }
+
+  void SetShadowTexture(int size, const std::vector<float>& depth, Enum func, Enum filter) override {
+    gl_.ActiveTexture(softgl::TEXTURE0 + 2);
+    gl_.BindTexture(softgl::TEXTURE_2D, gl_.GenTexture());
+    gl_.TexImage2D(softgl::TEXTURE_2D, 0, softgl::DEPTH_COMPONENT, size, size, 0, softgl::DEPTH_COMPONENT,
+                   softgl::FLOAT, depth.data());
+    gl_.TexParameteri(softgl::TEXTURE_2D, softgl::TEXTURE_MIN_FILTER, int(filter));
+    gl_.TexParameteri(softgl::TEXTURE_2D, softgl::TEXTURE_MAG_FILTER, int(filter));
+    gl_.TexParameteri(softgl::TEXTURE_2D, softgl::TEXTURE_WRAP_S, softgl::CLAMP_TO_EDGE);
+    gl_.TexParameteri(softgl::TEXTURE_2D, softgl::TEXTURE_WRAP_T, softgl::CLAMP_TO_EDGE);
+    gl_.TexParameteri(softgl::TEXTURE_2D, softgl::TEXTURE_COMPARE_MODE, softgl::COMPARE_REF_TO_TEXTURE);
+    gl_.TexParameteri(softgl::TEXTURE_2D, softgl::TEXTURE_COMPARE_FUNC, int(func));
+    gl_.ActiveTexture(softgl::TEXTURE0);
   }
 
   void BeginRenderToTexture(int width, int height) override {
@@ -192,6 +253,8 @@ class SoftglBackend final : public Backend {
   UvShader uv_;
   LitShader lit_;
   TextureShader texture_;
+  CubeShader cube_;
+  ShadowShader shadow_;
   std::uint32_t rtt_color_ = 0;
 };
 

@@ -521,6 +521,52 @@ void RenderToTexture(Backend& b) {
   b.Draw(TRIANGLES, v, Program::kTexture);
 }
 
+// A cube map with a different gradient per face, seen through a full-screen quad whose direction varyings sweep
+// across several faces (face selection, per-face coordinates, mipmapped filtering, edges between faces).
+void CubeMap(Backend& b) {
+  b.ClearColor(0, 0, 0, 1);
+  b.Clear(COLOR_BUFFER_BIT);
+  constexpr int kFace = 32;
+  std::vector<std::uint8_t> faces[6];
+  for (int f = 0; f < 6; ++f)
+    for (int j = 0; j < kFace; ++j)
+      for (int i = 0; i < kFace; ++i) {
+        const bool check = ((i / 4) + (j / 4)) % 2 == 0;
+        faces[f].insert(faces[f].end(), {std::uint8_t(40 * f + (check ? 20 : 0)), std::uint8_t(i * 8),
+                                         std::uint8_t(j * 8), 255});
+      }
+  b.SetCubeTexture(kFace, faces);
+  // Directions at the corners: a wide view that spans +z, +x, -x, +y and -y.
+  const glm::vec4 dirs[4] = {{-1.6f, -1.3f, 1, 0}, {1.7f, -1.2f, 1, 0}, {1.5f, 1.4f, 1, 0}, {-1.4f, 1.5f, 1, 0}};
+  const glm::vec4 p[4] = {Win(0, 0), Win(128, 0), Win(128, 128), Win(0, 128)};
+  std::vector<Vertex> v;
+  for (int k : {0, 1, 3, 1, 2, 3}) v.push_back({p[k], glm::vec4(1), dirs[k]});
+  b.Draw(TRIANGLES, v, Program::kCube);
+}
+
+// A depth texture of ramps and steps, compared against a reference that varies across the quad, with NEAREST and
+// LINEAR (2 x 2 percentage-closer) filtering and two comparison functions.
+void ShadowCompare(Backend& b) {
+  b.ClearColor(0, 0, 0, 1);
+  b.Clear(COLOR_BUFFER_BIT);
+  constexpr int kSize = 16;
+  std::vector<float> depth(kSize * kSize);
+  for (int j = 0; j < kSize; ++j)
+    for (int i = 0; i < kSize; ++i) depth[j * kSize + i] = ((i / 4 + j / 4) % 2 ? 0.3f : 0.7f) + 0.01f * float(i % 4);
+  const Enum funcs[2] = {LEQUAL, GREATER};
+  const Enum filters[2] = {NEAREST, LINEAR};
+  for (int q = 0; q < 4; ++q) {
+    b.SetShadowTexture(kSize, depth, funcs[q % 2], filters[q / 2]);
+    const float x0 = float(q % 2) * 64, y0 = float(q / 2) * 64;
+    const glm::vec4 p[4] = {Win(x0, y0), Win(x0 + 64, y0), Win(x0 + 64, y0 + 64), Win(x0, y0 + 64)};
+    // uv across the texture; the reference from 0.15 to 0.85 along x, between the texel depths.
+    const glm::vec4 coord[4] = {{0, 0, 0.15f, 0}, {1, 0, 0.85f, 0}, {1, 1, 0.85f, 0}, {0, 1, 0.15f, 0}};
+    std::vector<Vertex> v;
+    for (int k : {0, 1, 3, 1, 2, 3}) v.push_back({p[k], glm::vec4(1), coord[k]});
+    b.Draw(TRIANGLES, v, Program::kShadow);
+  }
+}
+
 // ---- A real model ------------------------------------------------------------------------------------------------
 
 void Model(Backend& b) {
@@ -590,6 +636,8 @@ const std::vector<SceneInfo>& Scenes() {
       {"texture_wraps", kSize, kSize, Check::kTexture, TextureWraps},
       {"texture_generated_mipmaps", kSize, kSize, Check::kTexture, TextureGeneratedMipmaps},
       {"render_to_texture", kSize, kSize, Check::kTexture, RenderToTexture},
+      {"cube_map", kSize, kSize, Check::kTexture, CubeMap},
+      {"shadow_compare", kSize, kSize, Check::kTexture, ShadowCompare},
       {"model", 256, 256, Check::kColor, Model},
   };
   return scenes;
