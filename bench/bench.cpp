@@ -1,6 +1,6 @@
 // bench — softgl against Mesa's llvmpipe (OSMesa, OpenGL 3.3 core) on the same scenes, same size, in one run.
 //
-//   bench [--threads N] [--frames N]
+//   bench [--threads N] [--frames N] [--png DIR]   (--png: also write each scene's last softgl frame)
 //
 // llvmpipe runs with LP_NUM_THREADS = N (0 for --threads 1: rendering on the calling thread alone); softgl renders
 // on the calling thread (it has no worker threads yet). Each scene is set up once per renderer (buffers, textures,
@@ -93,6 +93,32 @@ bool LoadModel(const std::string& path, Geometry& g, glm::mat4& view_proj, float
   return true;
 }
 
+// A textured OBJ: position, normal, uv, tangent (with handedness), 12 floats a vertex, v flipped for OpenGL.
+bool LoadTexturedModel(const std::string& path, Geometry& g) {
+  Assimp::Importer importer;
+  const aiScene* s = importer.ReadFile(path, aiProcess_Triangulate | aiProcess_GenSmoothNormals |
+                                                 aiProcess_CalcTangentSpace | aiProcess_JoinIdenticalVertices);
+  if (!s) return false;
+  g.floats = 12;
+  for (unsigned m = 0; m < s->mNumMeshes; ++m) {
+    const aiMesh* mesh = s->mMeshes[m];
+    const auto base = std::uint32_t(g.vertices.size() / 12);
+    for (unsigned i = 0; i < mesh->mNumVertices; ++i) {
+      const aiVector3D p = mesh->mVertices[i], n = mesh->mNormals[i];
+      const aiVector3D uv = mesh->mTextureCoords[0] ? mesh->mTextureCoords[0][i] : aiVector3D(0, 0, 0);
+      const aiVector3D t = mesh->mTangents ? mesh->mTangents[i] : aiVector3D(1, 0, 0);
+      const aiVector3D b = mesh->mBitangents ? mesh->mBitangents[i] : aiVector3D(0, 1, 0);
+      const glm::vec3 nn(n.x, n.y, n.z), tt(t.x, t.y, t.z), bb(b.x, b.y, b.z);
+      const float w = glm::dot(glm::cross(nn, tt), bb) < 0.0f ? -1.0f : 1.0f;
+      g.vertices.insert(g.vertices.end(), {p.x, p.y, p.z, n.x, n.y, n.z, uv.x, uv.y, t.x, t.y, t.z, w});
+    }
+    for (unsigned f = 0; f < mesh->mNumFaces; ++f)
+      if (mesh->mFaces[f].mNumIndices == 3)
+        for (int k = 0; k < 3; ++k) g.indices.push_back(base + mesh->mFaces[f].mIndices[k]);
+  }
+  return true;
+}
+
 std::vector<std::uint8_t> PatternTexture(int n) {
   std::vector<std::uint8_t> px(std::size_t(n) * n * 4);
   for (int y = 0; y < n; ++y)
@@ -157,6 +183,38 @@ struct PhongShader : softgl::Shader<PhongShader, PhongVaryings> {
   }
 };
 
+struct HeadVaryings {
+  glm::vec3 normal;
+  glm::vec3 world;
+  glm::vec2 uv;
+  glm::vec4 tangent;
+};
+// Diffuse, tangent-space normal map and specular map on units 0, 1, 2; Blinn-Phong.
+struct HeadShader : softgl::Shader<HeadShader, HeadVaryings> {
+  glm::mat4 view_proj{1.0f};
+  glm::vec3 light = glm::normalize(glm::vec3(0.4f, 0.6f, 0.8f));
+  glm::vec3 eye{0.0f, 0.0f, 3.0f};
+  void Vertex(const softgl::VertexIn& in, softgl::VertexOut<HeadVaryings>& out) const {
+    out.position = view_proj * glm::vec4(glm::vec3(in.attrib[0]), 1.0f);
+    out.varyings.normal = glm::vec3(in.attrib[1]);
+    out.varyings.world = glm::vec3(in.attrib[0]);
+    out.varyings.uv = glm::vec2(in.attrib[2]);
+    out.varyings.tangent = in.attrib[3];
+  }
+  bool Fragment(const softgl::FragmentIn<HeadVaryings>& in, softgl::FragmentOut& out) const {
+    const glm::vec3 n0 = glm::normalize(in.varyings.normal);
+    const glm::vec3 t = glm::normalize(glm::vec3(in.varyings.tangent) - n0 * glm::dot(n0, glm::vec3(in.varyings.tangent)));
+    const glm::vec3 b = glm::cross(n0, t) * in.varyings.tangent.w;
+    const glm::vec3 m = glm::vec3(in.Texture(1, &HeadVaryings::uv)) * 2.0f - 1.0f;
+    const glm::vec3 n = glm::normalize(t * m.x + b * m.y + n0 * m.z);
+    const glm::vec3 h = glm::normalize(light + glm::normalize(eye - in.varyings.world));
+    const float d = std::max(glm::dot(n, light), 0.0f);
+    const float s = std::pow(std::max(glm::dot(n, h), 0.0f), 24.0f) * in.Texture(2, &HeadVaryings::uv).r;
+    out.color[0] = glm::vec4(glm::vec3(in.Texture(0, &HeadVaryings::uv)) * (0.15f + d) + glm::vec3(s), 1.0f);
+    return true;
+  }
+};
+
 // ---- GLSL ----------------------------------------------------------------------------------------------------
 
 const char* kFlatVs = "#version 330 core\nlayout(location=0) in vec3 p; void main(){ gl_Position = vec4(p, 1.0); }";
@@ -174,6 +232,19 @@ const char* kPhongFs =
     "float d = max(dot(n, light), 0.0); float s = pow(max(dot(n, h), 0.0), 32.0);"
     "o = vec4(vec3(0.7, 0.72, 0.75) * (0.15 + d) + vec3(0.3 * s), 1.0); }";
 
+const char* kHeadVs =
+    "#version 330 core\nlayout(location=0) in vec3 p; layout(location=1) in vec3 n; layout(location=2) in vec2 t;"
+    "layout(location=3) in vec4 tg; uniform mat4 vp; out vec3 normal; out vec3 world; out vec2 uv; out vec4 tangent;"
+    "void main(){ gl_Position = vp * vec4(p, 1.0); normal = n; world = p; uv = t; tangent = tg; }";
+const char* kHeadFs =
+    "#version 330 core\nin vec3 normal; in vec3 world; in vec2 uv; in vec4 tangent; uniform sampler2D diffuse_map;"
+    "uniform sampler2D normal_map; uniform sampler2D spec_map; uniform vec3 light; uniform vec3 eye; out vec4 o;"
+    "void main(){ vec3 n0 = normalize(normal); vec3 t = normalize(tangent.xyz - n0 * dot(n0, tangent.xyz));"
+    "vec3 b = cross(n0, t) * tangent.w; vec3 m = texture(normal_map, uv).xyz * 2.0 - 1.0;"
+    "vec3 n = normalize(t * m.x + b * m.y + n0 * m.z); vec3 h = normalize(light + normalize(eye - world));"
+    "float d = max(dot(n, light), 0.0); float s = pow(max(dot(n, h), 0.0), 24.0) * texture(spec_map, uv).r;"
+    "o = vec4(texture(diffuse_map, uv).rgb * (0.15 + d) + vec3(s), 1.0); }";
+
 GLuint Program(const char* vs, const char* fs) {
   const GLuint p = glCreateProgram();
   for (auto [type, src] : {std::pair{GLenum(GL_VERTEX_SHADER), vs}, std::pair{GLenum(GL_FRAGMENT_SHADER), fs}}) {
@@ -188,6 +259,8 @@ GLuint Program(const char* vs, const char* fs) {
 }
 
 // ---- Running -------------------------------------------------------------------------------------------------
+
+std::string g_png_dir;  // --png
 
 double MedianMs(int frames, const std::function<void()>& frame) {
   frame();  // warm-up: llvmpipe compiles its shaders on first use
@@ -217,6 +290,7 @@ int main(int argc, char** argv) {
   for (int i = 1; i + 1 < argc; i += 2) {
     if (!std::strcmp(argv[i], "--threads")) threads = std::max(1, std::atoi(argv[i + 1]));
     if (!std::strcmp(argv[i], "--frames")) frames = std::max(1, std::atoi(argv[i + 1]));
+    if (!std::strcmp(argv[i], "--png")) g_png_dir = argv[i + 1];
   }
   const std::string lp_threads = std::to_string(threads == 1 ? 0 : threads);
   setenv("LP_NUM_THREADS", lp_threads.c_str(), 1);
@@ -238,7 +312,12 @@ int main(int argc, char** argv) {
     gl.BufferData(softgl::ARRAY_BUFFER, std::ptrdiff_t(g.vertices.size() * 4), g.vertices.data());
     gl.VertexAttributePointer(0, 3, softgl::FLOAT, false, g.floats * 4, 0);
     gl.EnableVertexAttribArray(0);
-    if (g.floats > 3) {
+    if (g.floats == 12) {  // position, normal, uv, tangent
+      gl.VertexAttributePointer(1, 3, softgl::FLOAT, false, 48, 12);
+      gl.VertexAttributePointer(2, 2, softgl::FLOAT, false, 48, 24);
+      gl.VertexAttributePointer(3, 4, softgl::FLOAT, false, 48, 32);
+      for (std::uint32_t a = 1; a < 4; ++a) gl.EnableVertexAttribArray(a);
+    } else if (g.floats > 3) {
       gl.VertexAttributePointer(1, g.floats - 3, softgl::FLOAT, false, g.floats * 4, 12);
       gl.EnableVertexAttribArray(1);
     }
@@ -256,7 +335,12 @@ int main(int argc, char** argv) {
     glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(g.vertices.size() * 4), g.vertices.data(), GL_STATIC_DRAW);
     glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, g.floats * 4, nullptr);
     glEnableVertexAttribArray(0);
-    if (g.floats > 3) {
+    if (g.floats == 12) {
+      glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, 48, reinterpret_cast<void*>(12));
+      glVertexAttribPointer(2, 2, GL_FLOAT, GL_FALSE, 48, reinterpret_cast<void*>(24));
+      glVertexAttribPointer(3, 4, GL_FLOAT, GL_FALSE, 48, reinterpret_cast<void*>(32));
+      for (GLuint a = 1; a < 4; ++a) glEnableVertexAttribArray(a);
+    } else if (g.floats > 3) {
       glVertexAttribPointer(1, g.floats - 3, GL_FLOAT, GL_FALSE, g.floats * 4, reinterpret_cast<void*>(12));
       glEnableVertexAttribArray(1);
     }
@@ -291,10 +375,12 @@ int main(int argc, char** argv) {
                         gl.UseProgram(shader);
                         gl.Enable(softgl::DEPTH_TEST);
                         gl.Enable(softgl::CULL_FACE);
-                        return MedianMs(n, [&] {
+                        const double ms = MedianMs(n, [&] {
                           gl.Clear(softgl::COLOR_BUFFER_BIT | softgl::DEPTH_BUFFER_BIT);
                           gl.DrawElement(softgl::TRIANGLES, int(engine.indices.size()), softgl::UNSIGNED_INT, 0);
                         });
+                        if (!g_png_dir.empty()) softgl::WritePng(g_png_dir + "/bench_engine.png", gl.ReadPixels());
+                        return ms;
                       },
                       [&](int n) {
                         return with_osmesa(1280, 720, [&] {
@@ -314,6 +400,75 @@ int main(int argc, char** argv) {
                         });
                       }});
   }
+  const std::string head_dir = "../shared/assets/african_head";
+  Geometry head;
+  const bool have_head = LoadTexturedModel(head_dir + "/african_head.obj", head);
+  const glm::vec3 head_eye(0.6f, 0.3f, 2.6f);
+  const glm::mat4 head_vp = glm::perspective(glm::radians(40.0f), 1280.0f / 720.0f, 0.5f, 10.0f) *
+                            glm::lookAt(head_eye, glm::vec3(0.0f), glm::vec3(0, 1, 0));
+  const char* maps[3] = {"/african_head_diffuse.tga", "/african_head_nm_tangent.tga", "/african_head_spec.tga"};
+  if (have_head)
+    scenes.push_back({"textured model: african_head, diffuse + normal + specular maps, trilinear", 1280, 720, "Mtri/s",
+                      double(head.indices.size() / 3),
+                      [&](int n) {
+                        softgl::Context gl(1280, 720);
+                        softgl_setup(gl, head);
+                        for (int u = 0; u < 3; ++u) {
+                          gl.ActiveTexture(softgl::TEXTURE0 + softgl::Enum(u));
+                          gl.BindTexture(softgl::TEXTURE_2D, gl.GenTexture());
+                          gl.TexImage2DFromFile(softgl::TEXTURE_2D, head_dir + maps[u], true);
+                          gl.GenerateMipmap(softgl::TEXTURE_2D);
+                          gl.TexParameteri(softgl::TEXTURE_2D, softgl::TEXTURE_MIN_FILTER, softgl::LINEAR_MIPMAP_LINEAR);
+                        }
+                        HeadShader shader;
+                        shader.view_proj = head_vp;
+                        shader.eye = head_eye;
+                        gl.UseProgram(shader);
+                        gl.Enable(softgl::DEPTH_TEST);
+                        gl.Enable(softgl::CULL_FACE);
+                        const double ms = MedianMs(n, [&] {
+                          gl.Clear(softgl::COLOR_BUFFER_BIT | softgl::DEPTH_BUFFER_BIT);
+                          gl.DrawElement(softgl::TRIANGLES, int(head.indices.size()), softgl::UNSIGNED_INT, 0);
+                        });
+                        if (!g_png_dir.empty()) softgl::WritePng(g_png_dir + "/bench_head.png", gl.ReadPixels());
+                        return ms;
+                      },
+                      [&](int n) {
+                        return with_osmesa(1280, 720, [&] {
+                          gl_setup(head);
+                          const GLuint p = Program(kHeadVs, kHeadFs);
+                          const char* names[3] = {"diffuse_map", "normal_map", "spec_map"};
+                          for (int u = 0; u < 3; ++u) {
+                            // The same texels: decoded by stb_image (softgl::ReadImage), rows flipped bottom first.
+                            softgl::Image img;
+                            softgl::ReadImage(head_dir + maps[u], img);
+                            std::vector<std::uint8_t> flipped(img.rgba.size());
+                            const std::size_t row = std::size_t(img.width) * 4;
+                            for (int y = 0; y < img.height; ++y)
+                              std::memcpy(&flipped[std::size_t(y) * row], &img.rgba[std::size_t(img.height - 1 - y) * row], row);
+                            GLuint tex;
+                            glGenTextures(1, &tex);
+                            glActiveTexture(GL_TEXTURE0 + GLenum(u));
+                            glBindTexture(GL_TEXTURE_2D, tex);
+                            glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, img.width, img.height, 0, GL_RGBA, GL_UNSIGNED_BYTE,
+                                         flipped.data());
+                            glGenerateMipmap(GL_TEXTURE_2D);
+                            glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+                            glUniform1i(glGetUniformLocation(p, names[u]), u);
+                          }
+                          glUniformMatrix4fv(glGetUniformLocation(p, "vp"), 1, GL_FALSE, &head_vp[0][0]);
+                          const glm::vec3 light = glm::normalize(glm::vec3(0.4f, 0.6f, 0.8f));
+                          glUniform3fv(glGetUniformLocation(p, "light"), 1, &light[0]);
+                          glUniform3fv(glGetUniformLocation(p, "eye"), 1, &head_eye[0]);
+                          glEnable(GL_DEPTH_TEST);
+                          glEnable(GL_CULL_FACE);
+                          return MedianMs(n, [&] {
+                            glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+                            glDrawElements(GL_TRIANGLES, GLsizei(head.indices.size()), GL_UNSIGNED_INT, nullptr);
+                            glFinish();
+                          });
+                        });
+                      }});
   scenes.push_back({"many small triangles: 1,000,000, flat, depth test", 1280, 720, "Mtri/s", 1e6,
                     [&](int n) {
                       softgl::Context gl(1280, 720);
@@ -378,10 +533,12 @@ int main(int argc, char** argv) {
                       gl.TexParameteri(softgl::TEXTURE_2D, softgl::TEXTURE_MIN_FILTER, softgl::LINEAR_MIPMAP_LINEAR);
                       TextureShader shader;
                       gl.UseProgram(shader);
-                      return MedianMs(n, [&] {
+                      const double ms = MedianMs(n, [&] {
                         gl.Clear(softgl::COLOR_BUFFER_BIT);
                         gl.DrawArrays(softgl::TRIANGLES, 0, 120);
                       });
+                      if (!g_png_dir.empty()) softgl::WritePng(g_png_dir + "/bench_overdraw.png", gl.ReadPixels());
+                      return ms;
                     },
                     [&](int n) {
                       return with_osmesa(1920, 1080, [&] {
@@ -407,10 +564,11 @@ int main(int argc, char** argv) {
   for (const Scene& s : scenes) {
     const double a = s.softgl_ms(frames), b = s.gl_ms(frames);
     const double rate = s.units / (a * 1e3);  // per microsecond = millions per second
-    std::printf("| %s | %dx%d | %d | %.1f | %.1f | %.2f | %.1f %s |\n", s.name, s.width, s.height, threads, a, b,
+    std::printf("| %s | %dx%d | %d | %.1f | %.1f | %.2f | %.2f %s |\n", s.name, s.width, s.height, threads, a, b,
                 b > 0 ? a / b : 0.0, rate, s.unit);
     std::fflush(stdout);
   }
   if (!have_engine) std::printf("(model scene skipped: install assimp-testmodels)\n");
+  if (!have_head) std::printf("(textured model scene skipped: %s not found)\n", head_dir.c_str());
   return 0;
 }
