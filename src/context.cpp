@@ -146,16 +146,9 @@ struct ContextState {
 
   int viewport[4] = {0, 0, 0, 0};
   double depth_near = 0.0, depth_far = 1.0;
-  bool cull_enabled = false;
-  bool program_point_size = false;
-  Enum cull_face = BACK;
-  Enum front_face = CCW;
-  Enum polygon_mode = FILL;
-  float point_size = 1.0f;
+  detail::PrimitiveState primitive;
   bool scissor_enabled = false;
   int scissor[4] = {0, 0, 0, 0};
-  bool offset_fill = false, offset_line = false, offset_point = false;
-  float offset_factor = 0.0f, offset_units = 0.0f;
   detail::FragmentOpsState ops;
 
   float clear_color[4] = {0, 0, 0, 0};
@@ -247,17 +240,35 @@ Enum Context::GetError() {
   return e;
 }
 
-// ---- Buffers -------------------------------------------------------------------------------------------------
+// ---- Object ids --------------------------------------------------------------------------------------------
 
-std::uint32_t Context::GenBuffer() {
-  const std::uint32_t id = state_->next_buffer++;
-  state_->buffers[id] = std::make_shared<Buffer>();
+namespace {
+
+// A new id (never 0) for a new object in `table`.
+template <class Table, class Make>
+std::uint32_t NewId(Table& table, std::uint32_t& next, Make&& make) {
+  const std::uint32_t id = next++;
+  table[id] = make();
   return id;
 }
 
+// The Gen*s(n, ids) form of a Gen* call.
+template <class Gen>
+void GenMany(ContextState& s, const char* call, int n, std::uint32_t* ids, Gen&& gen) {
+  if (n < 0) return s.SetError(INVALID_VALUE, call, "n is negative");
+  for (int i = 0; i < n; ++i) ids[i] = gen();
+}
+
+}  // namespace
+
+// ---- Buffers -------------------------------------------------------------------------------------------------
+
+std::uint32_t Context::GenBuffer() {
+  return NewId(state_->buffers, state_->next_buffer, [] { return std::make_shared<Buffer>(); });
+}
+
 void Context::GenBuffers(int n, std::uint32_t* ids) {
-  if (n < 0) return state_->SetError(INVALID_VALUE, __func__, "n is negative");
-  for (int i = 0; i < n; ++i) ids[i] = GenBuffer();
+  GenMany(*state_, __func__, n, ids, [this] { return GenBuffer(); });
 }
 
 void Context::DeleteBuffer(std::uint32_t buffer) {
@@ -323,14 +334,11 @@ void Context::BufferSubData(Enum target, std::ptrdiff_t offset, std::ptrdiff_t s
 // ---- Vertex arrays -------------------------------------------------------------------------------------------
 
 std::uint32_t Context::GenVertexArray() {
-  const std::uint32_t id = state_->next_array++;
-  state_->arrays[id] = std::make_unique<VertexArray>();
-  return id;
+  return NewId(state_->arrays, state_->next_array, [] { return std::make_unique<VertexArray>(); });
 }
 
 void Context::GenVertexArrays(int n, std::uint32_t* ids) {
-  if (n < 0) return state_->SetError(INVALID_VALUE, __func__, "n is negative");
-  for (int i = 0; i < n; ++i) ids[i] = GenVertexArray();
+  GenMany(*state_, __func__, n, ids, [this] { return GenVertexArray(); });
 }
 
 void Context::DeleteVertexArray(std::uint32_t array) {
@@ -423,15 +431,15 @@ void Context::DepthRange(double n, double f) {
 namespace {
 bool* CapFlag(ContextState& s, Enum cap) {
   switch (cap) {
-    case CULL_FACE: return &s.cull_enabled;
+    case CULL_FACE: return &s.primitive.cull_enabled;
     case DEPTH_TEST: return &s.ops.depth_test;
-    case PROGRAM_POINT_SIZE: return &s.program_point_size;
+    case PROGRAM_POINT_SIZE: return &s.primitive.program_point_size;
     case SCISSOR_TEST: return &s.scissor_enabled;
     case STENCIL_TEST: return &s.ops.stencil_test;
     case BLEND: return &s.ops.blend.enabled;
-    case POLYGON_OFFSET_FILL: return &s.offset_fill;
-    case POLYGON_OFFSET_LINE: return &s.offset_line;
-    case POLYGON_OFFSET_POINT: return &s.offset_point;
+    case POLYGON_OFFSET_FILL: return &s.primitive.offset_fill;
+    case POLYGON_OFFSET_LINE: return &s.primitive.offset_line;
+    case POLYGON_OFFSET_POINT: return &s.primitive.offset_point;
     default: return nullptr;
   }
 }
@@ -460,23 +468,23 @@ bool Context::IsEnabled(Enum cap) {
 
 void Context::CullFace(Enum mode) {
   if (mode != FRONT && mode != BACK && mode != FRONT_AND_BACK) return state_->SetError(INVALID_ENUM, __func__, "mode must be FRONT, BACK or FRONT_AND_BACK");
-  state_->cull_face = mode;
+  state_->primitive.cull_face = mode;
 }
 
 void Context::FrontFace(Enum mode) {
   if (mode != CW && mode != CCW) return state_->SetError(INVALID_ENUM, __func__, "mode must be CW or CCW");
-  state_->front_face = mode;
+  state_->primitive.front_face = mode;
 }
 
 void Context::PolygonMode(Enum face, Enum mode) {
   if (face != FRONT_AND_BACK || (mode != POINT && mode != LINE && mode != FILL))
     return state_->SetError(INVALID_ENUM, __func__, "an enum argument is not one this call accepts");
-  state_->polygon_mode = mode;
+  state_->primitive.polygon_mode = mode;
 }
 
 void Context::PointSize(float size) {
   if (!(size > 0.0f)) return state_->SetError(INVALID_VALUE, __func__, "size must be positive");
-  state_->point_size = size;
+  state_->primitive.point_size = size;
 }
 
 void Context::DepthFunc(Enum func) {
@@ -487,8 +495,8 @@ void Context::DepthFunc(Enum func) {
 void Context::DepthMask(bool flag) { state_->ops.depth_write = flag; }
 
 void Context::PolygonOffset(float factor, float units) {
-  state_->offset_factor = factor;
-  state_->offset_units = units;
+  state_->primitive.offset_factor = factor;
+  state_->primitive.offset_units = units;
 }
 
 // ---- Per-fragment operations ---------------------------------------------------------------------------------
@@ -670,17 +678,7 @@ void ContextState::Draw(const detail::DrawCall& call) {
   const detail::Rect fbr = ClearArea(target);  // draw target and scissor
   ds.bounds = detail::Rect{std::max(ds.viewport.rect.x0, fbr.x0), std::max(ds.viewport.rect.y0, fbr.y0),
                            std::min(ds.viewport.rect.x1, fbr.x1), std::min(ds.viewport.rect.y1, fbr.y1)};
-  ds.cull_enabled = cull_enabled;
-  ds.cull_face = cull_face;
-  ds.front_face = front_face;
-  ds.polygon_mode = polygon_mode;
-  ds.program_point_size = program_point_size;
-  ds.point_size = point_size;
-  ds.offset_fill = offset_fill;
-  ds.offset_line = offset_line;
-  ds.offset_point = offset_point;
-  ds.offset_factor = offset_factor;
-  ds.offset_units = offset_units;
+  ds.primitive = primitive;
   ds.ops = ops;
   try {
     detail::Draw(call, plan, ds, target, scratch);
@@ -782,14 +780,11 @@ std::uint8_t Context::ReadStencil(int x, int y) const {
 // ---- Textures ------------------------------------------------------------------------------------------------
 
 std::uint32_t Context::GenTexture() {
-  const std::uint32_t id = state_->next_texture++;
-  state_->textures[id] = std::make_shared<detail::TextureObject>();
-  return id;
+  return NewId(state_->textures, state_->next_texture, [] { return std::make_shared<detail::TextureObject>(); });
 }
 
 void Context::GenTextures(int n, std::uint32_t* ids) {
-  if (n < 0) return state_->SetError(INVALID_VALUE, __func__, "n is negative");
-  for (int i = 0; i < n; ++i) ids[i] = GenTexture();
+  GenMany(*state_, __func__, n, ids, [this] { return GenTexture(); });
 }
 
 void Context::DeleteTexture(std::uint32_t texture) {
@@ -915,51 +910,44 @@ bool TexImageFromLoaded(Context& gl, ContextState& s, Enum target, const detail:
 
 }  // namespace
 
-bool Context::TexImage2DFromFile(Enum target, const std::string& path, bool flip_vertically, std::string* error) {
-  auto& s = *state_;
-  if (!IsTexImageTarget(target)) {
-    s.SetError(INVALID_ENUM, __func__, "an enum argument is not one this call accepts");
-    if (error) *error = "invalid texture target";
+namespace {
+
+// TexImage2DFromFile and TexImage2DFromMemory: checks the target and binding, decodes with `decode`, defines level 0.
+template <class Decode>
+bool TexImageFromDecoded(Context& gl, ContextState& s, Enum target, const std::string& name, std::string* error,
+                         const char* call, Decode&& decode) {
+  auto refuse = [&](Enum code, const char* message) {
+    s.SetError(code, call, message);
+    if (error) *error = message;
     return false;
-  }
-  if (!s.Bound(target)) {
-    s.SetError(INVALID_OPERATION, __func__, "not allowed in the current state");
-    if (error) *error = "no texture bound";
-    return false;
-  }
+  };
+  if (!IsTexImageTarget(target)) return refuse(INVALID_ENUM, "target must be TEXTURE_2D or a TEXTURE_CUBE_MAP_* face");
+  if (!s.Bound(target)) return refuse(INVALID_OPERATION, "no texture is bound to that target of the active unit");
   detail::LoadedImage img;
   try {
-    if (!detail::LoadImageFile(path, flip_vertically, img, error)) return false;
+    if (!decode(img)) return false;
   } catch (const std::bad_alloc&) {
-    s.SetError(OUT_OF_MEMORY, __func__, "out of memory");
-    if (error) *error = path + ": out of memory";
+    s.SetError(OUT_OF_MEMORY, call, "out of memory");
+    if (error) *error = name + ": out of memory";
     return false;
   }
-  return TexImageFromLoaded(*this, s, target, img, path, error);
+  return TexImageFromLoaded(gl, s, target, img, name, error);
+}
+
+}  // namespace
+
+bool Context::TexImage2DFromFile(Enum target, const std::string& path, bool flip_vertically, std::string* error) {
+  return TexImageFromDecoded(*this, *state_, target, path, error, __func__, [&](detail::LoadedImage& img) {
+    return detail::LoadImageFile(path, flip_vertically, img, error);
+  });
 }
 
 bool Context::TexImage2DFromMemory(Enum target, const void* data, std::size_t size, bool flip_vertically,
                                    std::string* error) {
-  auto& s = *state_;
-  if (!IsTexImageTarget(target)) {
-    s.SetError(INVALID_ENUM, __func__, "an enum argument is not one this call accepts");
-    if (error) *error = "invalid texture target";
-    return false;
-  }
-  if (!s.Bound(target)) {
-    s.SetError(INVALID_OPERATION, __func__, "not allowed in the current state");
-    if (error) *error = "no texture bound";
-    return false;
-  }
-  detail::LoadedImage img;
-  try {
-    if (!detail::LoadImageMemory(data, size, "image in memory", flip_vertically, img, error)) return false;
-  } catch (const std::bad_alloc&) {
-    s.SetError(OUT_OF_MEMORY, __func__, "out of memory");
-    if (error) *error = "image in memory: out of memory";
-    return false;
-  }
-  return TexImageFromLoaded(*this, s, target, img, "image in memory", error);
+  const std::string name = "image in memory";
+  return TexImageFromDecoded(*this, *state_, target, name, error, __func__, [&](detail::LoadedImage& img) {
+    return detail::LoadImageMemory(data, size, name, flip_vertically, img, error);
+  });
 }
 
 void Context::GenerateMipmap(Enum target) {
@@ -1060,14 +1048,11 @@ void Context::PixelStore(Enum pname, int value) {
 // ---- Framebuffer objects -------------------------------------------------------------------------------------
 
 std::uint32_t Context::GenFramebuffer() {
-  const std::uint32_t id = state_->next_framebuffer++;
-  state_->framebuffers[id] = std::make_unique<FramebufferObject>();
-  return id;
+  return NewId(state_->framebuffers, state_->next_framebuffer, [] { return std::make_unique<FramebufferObject>(); });
 }
 
 void Context::GenFramebuffers(int n, std::uint32_t* ids) {
-  if (n < 0) return state_->SetError(INVALID_VALUE, __func__, "n is negative");
-  for (int i = 0; i < n; ++i) ids[i] = GenFramebuffer();
+  GenMany(*state_, __func__, n, ids, [this] { return GenFramebuffer(); });
 }
 
 void Context::DeleteFramebuffer(std::uint32_t framebuffer) {

@@ -128,14 +128,14 @@ class PrimitiveRunner {
     for (int k = 0; k < poly_.count; ++k) ToWindow(poly_.v[k], sv_.nvar, state_.viewport, win_[k]);
     const float area = SignedArea(win_, poly_.count);
     if (area == 0.0f) return;
-    const bool front = IsFrontFacing(area, state_.front_face);
-    if (state_.cull_enabled && IsCulled(front, state_.cull_face)) return;
-    const bool offset = state_.polygon_mode == LINE    ? state_.offset_line
-                        : state_.polygon_mode == POINT ? state_.offset_point
-                                                       : state_.offset_fill;
+    const bool front = IsFrontFacing(area, state_.primitive.front_face);
+    if (state_.primitive.cull_enabled && IsCulled(front, state_.primitive.cull_face)) return;
+    const bool offset = state_.primitive.polygon_mode == LINE    ? state_.primitive.offset_line
+                        : state_.primitive.polygon_mode == POINT ? state_.primitive.offset_point
+                                                       : state_.primitive.offset_fill;
     target_.depth_offset =
-        offset ? PolygonOffset(win_[0], win_[1], win_[2], state_.offset_factor, state_.offset_units) : 0.0f;
-    switch (state_.polygon_mode) {
+        offset ? PolygonOffset(win_[0], win_[1], win_[2], state_.primitive.offset_factor, state_.primitive.offset_units) : 0.0f;
+    switch (state_.primitive.polygon_mode) {
       case LINE:  // the triangle's own edges, each clipped as a line
         Line(i0, i1, front);
         Line(i1, i2, front);
@@ -159,7 +159,7 @@ class PrimitiveRunner {
 
  private:
   float PointSizeOf(std::uint32_t i) const {
-    const float size = state_.program_point_size ? sv_.point_size[i] : state_.point_size;
+    const float size = state_.primitive.program_point_size ? sv_.point_size[i] : state_.primitive.point_size;
     return std::isnan(size) ? 1.0f : std::clamp(size, 1.0f, kMaxPointSize);
   }
 

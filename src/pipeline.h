@@ -25,11 +25,8 @@ inline constexpr float kMaxPointSize = 255.0f;
 /// point, line and triangle lists hold whole primitives).
 inline constexpr int kDrawChunk = 6 * 8192;
 
-/// Everything a draw needs from the context's state, resolved at draw time.
-struct DrawState {
-  const Program* program = nullptr;
-  ViewportTransform viewport;
-  Rect bounds;  // viewport, framebuffer and (when enabled) scissor rectangle intersected
+/// How primitives are turned into fragments: the context keeps one and copies it into each draw.
+struct PrimitiveState {
   bool cull_enabled = false;
   Enum cull_face = BACK;
   Enum front_face = CCW;
@@ -38,6 +35,14 @@ struct DrawState {
   float point_size = 1.0f;
   bool offset_fill = false, offset_line = false, offset_point = false;  // POLYGON_OFFSET_FILL / _LINE / _POINT
   float offset_factor = 0.0f, offset_units = 0.0f;
+};
+
+/// Everything a draw needs from the context's state, resolved at draw time.
+struct DrawState {
+  const Program* program = nullptr;
+  ViewportTransform viewport;
+  Rect bounds;  // viewport, framebuffer and (when enabled) scissor rectangle intersected
+  PrimitiveState primitive;
   FragmentOpsState ops;
   const Textures* textures = nullptr;  // what the shader stages sample
 };

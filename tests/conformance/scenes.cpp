@@ -4,6 +4,7 @@
 // the per-fragment operations, not two compilers' rounding of a matrix product.
 #include "scenes.h"
 
+#include <array>
 #include <cmath>
 #include <random>
 
@@ -42,8 +43,34 @@ struct Jitter {
   float Uniform(float lo, float hi) { return std::uniform_real_distribution<float>(lo, hi)(rng); }
 };
 
+using Corners = std::array<glm::vec4, 4>;
+
+// Two triangles over corners p (in order around the quad), with `extra` (uv, direction, ...) at each corner.
+std::vector<Vertex> QuadWith(const Corners& p, const Corners& extra, glm::vec4 color = glm::vec4(1)) {
+  std::vector<Vertex> v;
+  for (int k : {0, 1, 3, 1, 2, 3}) v.push_back({p[k], color, extra[k]});
+  return v;
+}
+
 std::vector<Vertex> Quad(glm::vec4 a, glm::vec4 b, glm::vec4 c, glm::vec4 d, glm::vec4 color) {
-  return {{a, color}, {b, color}, {d, color}, {b, color}, {c, color}, {d, color}};
+  return QuadWith({a, b, c, d}, {}, color);
+}
+
+// The corners of the quad [x0, x1] x [z0, z1] in the plane y = 0, through mvp.
+Corners Floor(const glm::mat4& mvp, float x0, float x1, float z0, float z1) {
+  return {mvp * glm::vec4(x0, 0, z0, 1), mvp * glm::vec4(x1, 0, z0, 1), mvp * glm::vec4(x1, 0, z1, 1),
+          mvp * glm::vec4(x0, 0, z1, 1)};
+}
+
+// uv (or any two values) at the four corners as extras.
+Corners Uv(glm::vec2 a, glm::vec2 b, glm::vec2 c, glm::vec2 d) {
+  return {glm::vec4(a, 0, 0), glm::vec4(b, 0, 0), glm::vec4(c, 0, 0), glm::vec4(d, 0, 0)};
+}
+
+// Opaque black: the background coverage is measured against.
+void ClearBlack(Backend& b) {
+  b.ClearColor(0, 0, 0, 1);
+  b.Clear(COLOR_BUFFER_BIT);
 }
 
 // A window-space rectangle as two triangles at NDC depth z.
@@ -54,8 +81,7 @@ std::vector<Vertex> Rect(float x0, float y0, float x1, float y1, float z, glm::v
 // ---- Coverage ----------------------------------------------------------------------------------------------------
 
 void FillRuleTriangles(Backend& b) {
-  b.ClearColor(0, 0, 0, 1);
-  b.Clear(COLOR_BUFFER_BIT);
+  ClearBlack(b);
   Jitter j(7);
   std::vector<Vertex> v;
   for (unsigned i = 0; i < 400; ++i) {
@@ -70,8 +96,7 @@ void FillRuleTriangles(Backend& b) {
 // A jittered grid drawn as strips, and fans around shared centres, added up: a gap shows black, a double hit
 // shows twice the colour.
 void FillRuleSharedEdges(Backend& b) {
-  b.ClearColor(0, 0, 0, 1);
-  b.Clear(COLOR_BUFFER_BIT);
+  ClearBlack(b);
   b.Enable(BLEND);
   b.BlendFunc(ONE, ONE);
   const glm::vec4 c(0.25f, 0.25f, 0.25f, 1.0f);
@@ -105,8 +130,7 @@ void FillRuleSharedEdges(Backend& b) {
 }
 
 void Points(Backend& b) {
-  b.ClearColor(0, 0, 0, 1);
-  b.Clear(COLOR_BUFFER_BIT);
+  ClearBlack(b);
   Jitter j(3);
   const float sizes[] = {1, 2, 3, 4, 5, 8};
   unsigned n = 0;
@@ -119,8 +143,7 @@ void Points(Backend& b) {
 }
 
 void Lines(Backend& b) {
-  b.ClearColor(0, 0, 0, 1);
-  b.Clear(COLOR_BUFFER_BIT);
+  ClearBlack(b);
   Jitter j(5);
   std::vector<Vertex> v;
   unsigned n = 0;
@@ -143,8 +166,7 @@ void Lines(Backend& b) {
 // Colours varying along lines: OpenGL interpolates by the projection of the pixel centre onto the segment
 // (t = (p - a).(b - a) / |b - a|^2), llvmpipe by the major axis coordinate alone; see docs/conformance.md.
 void LineInterpolation(Backend& b) {
-  b.ClearColor(0, 0, 0, 1);
-  b.Clear(COLOR_BUFFER_BIT);
+  ClearBlack(b);
   Jitter j(17);
   std::vector<Vertex> strip;
   for (int i = 0; i < 24; ++i) strip.push_back({Win(j.Sub(2, 126), j.Sub(2, 126)), Palette(unsigned(i))});
@@ -152,8 +174,7 @@ void LineInterpolation(Backend& b) {
 }
 
 void PolygonModeLine(Backend& b) {
-  b.ClearColor(0, 0, 0, 1);
-  b.Clear(COLOR_BUFFER_BIT);
+  ClearBlack(b);
   b.PolygonMode(LINE);
   Jitter j(13);
   std::vector<Vertex> v;
@@ -166,8 +187,7 @@ void PolygonModeLine(Backend& b) {
 }
 
 void Culling(Backend& b) {
-  b.ClearColor(0, 0, 0, 1);
-  b.Clear(COLOR_BUFFER_BIT);
+  ClearBlack(b);
   b.Enable(CULL_FACE);
   struct Cell {
     Enum cull, front;
@@ -188,8 +208,7 @@ void Culling(Backend& b) {
 // ---- Clipping and interpolation ------------------------------------------------------------------------------------
 
 void Clipping(Backend& b) {
-  b.ClearColor(0, 0, 0, 1);
-  b.Clear(COLOR_BUFFER_BIT);
+  ClearBlack(b);
   const glm::vec4 r(1, 0, 0, 1), g(0, 1, 0, 1), bl(0, 0, 1, 1), w(1, 1, 1, 1);
   std::vector<Vertex> v = {
       // Crossing the near plane (z < -w at one vertex), w varying.
@@ -207,15 +226,10 @@ void Clipping(Backend& b) {
 }
 
 void Perspective(Backend& b) {
-  b.ClearColor(0, 0, 0, 1);
-  b.Clear(COLOR_BUFFER_BIT);
+  ClearBlack(b);
   const glm::mat4 mvp = glm::perspective(glm::radians(60.0f), 1.0f, 0.5f, 50.0f) *
                         glm::lookAt(glm::vec3(0, 1, 2), glm::vec3(0, 0, -6), glm::vec3(0, 1, 0));
-  const glm::vec3 corners[4] = {{-3, 0, 1}, {3, 0, 1}, {3, 0, -30}, {-3, 0, -30}};
-  const glm::vec2 uv[4] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
-  std::vector<Vertex> v;
-  for (int i : {0, 1, 3, 1, 2, 3}) v.push_back({mvp * glm::vec4(corners[i], 1), glm::vec4(1), glm::vec4(uv[i], 0, 0)});
-  b.Draw(TRIANGLES, v, Program::kUv);
+  b.Draw(TRIANGLES, QuadWith(Floor(mvp, -3, 3, 1, -30), Uv({0, 0}, {1, 0}, {1, 1}, {0, 1})), Program::kUv);
 }
 
 // ---- Per-fragment operations ---------------------------------------------------------------------------------------
@@ -370,8 +384,7 @@ void Masks(Backend& b) {
 }
 
 void Scissor(Backend& b) {
-  b.ClearColor(0, 0, 0, 1);
-  b.Clear(COLOR_BUFFER_BIT);
+  ClearBlack(b);
   b.Enable(SCISSOR_TEST);
   const int rects[][4] = {{0, 0, 64, 64}, {40, 30, 50, 70}, {100, 100, 100, 100}, {-20, 90, 50, 60}, {5, 5, 0, 50}};
   for (int i = 0; i < 5; ++i) {
@@ -392,12 +405,7 @@ void PolygonOffset(Backend& b) {
   // A tilted plane, then a smaller coplanar quad pulled forward by the slope term.
   const glm::mat4 mvp = glm::perspective(glm::radians(50.0f), 1.0f, 1.0f, 20.0f) *
                         glm::lookAt(glm::vec3(0, 3, 4), glm::vec3(0, 0, 0), glm::vec3(0, 1, 0));
-  auto plane = [&](float half, glm::vec4 c) {
-    std::vector<Vertex> v;
-    const glm::vec3 p[4] = {{-half, 0, half}, {half, 0, half}, {half, 0, -half}, {-half, 0, -half}};
-    for (int i : {0, 1, 3, 1, 2, 3}) v.push_back({mvp * glm::vec4(p[i], 1), c});
-    return v;
-  };
+  auto plane = [&](float half, glm::vec4 c) { return QuadWith(Floor(mvp, -half, half, half, -half), {}, c); };
   b.Draw(TRIANGLES, plane(3.0f, Palette(1)));
   b.Enable(POLYGON_OFFSET_FILL);
   b.PolygonOffset(-1.0f, -1.0f);
@@ -441,17 +449,14 @@ void RecedingPlane(Backend& b, int x, int y, int w, int h, float repeat) {
   b.Viewport(x, y, w, h);
   const glm::mat4 mvp = glm::perspective(glm::radians(60.0f), float(w) / float(h), 0.3f, 60.0f) *
                         glm::lookAt(glm::vec3(0, 1, 1), glm::vec3(0, 0, -8), glm::vec3(0, 1, 0));
-  const glm::vec3 p[4] = {{-6, 0, 1}, {6, 0, 1}, {6, 0, -40}, {-6, 0, -40}};
-  const glm::vec2 uv[4] = {{0, 0}, {repeat, 0}, {repeat, repeat * 3.5f}, {0, repeat * 3.5f}};
-  std::vector<Vertex> v;
-  for (int i : {0, 1, 3, 1, 2, 3}) v.push_back({mvp * glm::vec4(p[i], 1), glm::vec4(1), glm::vec4(uv[i], 0, 0)});
-  b.Draw(TRIANGLES, v, Program::kTexture);
+  b.Draw(TRIANGLES,
+         QuadWith(Floor(mvp, -6, 6, 1, -40), Uv({0, 0}, {repeat, 0}, {repeat, repeat * 3.5f}, {0, repeat * 3.5f})),
+         Program::kTexture);
   b.Viewport(0, 0, kSize, kSize);
 }
 
 void TextureFilters(Backend& b) {
-  b.ClearColor(0, 0, 0, 1);
-  b.Clear(COLOR_BUFFER_BIT);
+  ClearBlack(b);
   const Enum mins[6] = {NEAREST, LINEAR, NEAREST_MIPMAP_NEAREST, LINEAR_MIPMAP_NEAREST, NEAREST_MIPMAP_LINEAR,
                         LINEAR_MIPMAP_LINEAR};
   for (int i = 0; i < 6; ++i) {
@@ -464,8 +469,7 @@ void TextureFilters(Backend& b) {
 }
 
 void TextureWraps(Backend& b) {
-  b.ClearColor(0, 0, 0, 1);
-  b.Clear(COLOR_BUFFER_BIT);
+  ClearBlack(b);
   const Enum wraps[4] = {REPEAT, MIRRORED_REPEAT, CLAMP_TO_EDGE, CLAMP_TO_BORDER};
   for (int i = 0; i < 8; ++i) {
     TextureDesc d = PatternTexture(false);
@@ -478,17 +482,15 @@ void TextureWraps(Backend& b) {
     b.SetTexture(d);
     // A quad of 32 x 64 pixels with uv from -1.25 to 2.25: each texel is magnified, wrapping shows.
     const float x0 = float(i % 4) * 32, y0 = float(i / 4) * 64;
-    std::vector<Vertex> v;
-    const glm::vec4 p[4] = {Win(x0, y0), Win(x0 + 32, y0), Win(x0 + 32, y0 + 64), Win(x0, y0 + 64)};
-    const glm::vec2 uv[4] = {{-1.25f, -1.25f}, {2.25f, -1.25f}, {2.25f, 2.25f}, {-1.25f, 2.25f}};
-    for (int k : {0, 1, 3, 1, 2, 3}) v.push_back({p[k], glm::vec4(1), glm::vec4(uv[k], 0, 0)});
+    const std::vector<Vertex> v =
+        QuadWith({Win(x0, y0), Win(x0 + 32, y0), Win(x0 + 32, y0 + 64), Win(x0, y0 + 64)},
+                 Uv({-1.25f, -1.25f}, {2.25f, -1.25f}, {2.25f, 2.25f}, {-1.25f, 2.25f}));
     b.Draw(TRIANGLES, v, Program::kTexture);
   }
 }
 
 void TextureGeneratedMipmaps(Backend& b) {
-  b.ClearColor(0, 0, 0, 1);
-  b.Clear(COLOR_BUFFER_BIT);
+  ClearBlack(b);
   TextureDesc d = PatternTexture(false);
   d.levels.resize(1);
   d.generate_mipmap = true;
@@ -510,22 +512,18 @@ void RenderToTexture(Backend& b) {
   b.Disable(DEPTH_TEST);
   b.EndRenderToTexture();
   // Pass 2: the texture on a rotated quad, magnified (LINEAR).
-  b.ClearColor(0, 0, 0, 1);
-  b.Clear(COLOR_BUFFER_BIT);
+  ClearBlack(b);
   const float c = std::cos(0.4f), s = std::sin(0.4f);
   auto p = [&](float x, float y) { return glm::vec4(0.8f * (c * x - s * y), 0.8f * (s * x + c * y), 0, 1); };
-  std::vector<Vertex> v;
-  const glm::vec4 corners[4] = {p(-1, -1), p(1, -1), p(1, 1), p(-1, 1)};
-  const glm::vec2 uv[4] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
-  for (int k : {0, 1, 3, 1, 2, 3}) v.push_back({corners[k], glm::vec4(1), glm::vec4(uv[k], 0, 0)});
+  const std::vector<Vertex> v =
+      QuadWith({p(-1, -1), p(1, -1), p(1, 1), p(-1, 1)}, Uv({0, 0}, {1, 0}, {1, 1}, {0, 1}));
   b.Draw(TRIANGLES, v, Program::kTexture);
 }
 
 // A cube map with a different gradient per face, seen through a full-screen quad whose direction varyings sweep
 // across several faces (face selection, per-face coordinates, mipmapped filtering, edges between faces).
 void CubeMap(Backend& b) {
-  b.ClearColor(0, 0, 0, 1);
-  b.Clear(COLOR_BUFFER_BIT);
+  ClearBlack(b);
   constexpr int kFace = 32;
   std::vector<std::uint8_t> faces[6];
   for (int f = 0; f < 6; ++f)
@@ -537,18 +535,17 @@ void CubeMap(Backend& b) {
       }
   b.SetCubeTexture(kFace, faces);
   // Directions at the corners: a wide view that spans +z, +x, -x, +y and -y.
-  const glm::vec4 dirs[4] = {{-1.6f, -1.3f, 1, 0}, {1.7f, -1.2f, 1, 0}, {1.5f, 1.4f, 1, 0}, {-1.4f, 1.5f, 1, 0}};
-  const glm::vec4 p[4] = {Win(0, 0), Win(128, 0), Win(128, 128), Win(0, 128)};
-  std::vector<Vertex> v;
-  for (int k : {0, 1, 3, 1, 2, 3}) v.push_back({p[k], glm::vec4(1), dirs[k]});
+  const std::vector<Vertex> v =
+      QuadWith({Win(0, 0), Win(128, 0), Win(128, 128), Win(0, 128)},
+               {glm::vec4(-1.6f, -1.3f, 1, 0), glm::vec4(1.7f, -1.2f, 1, 0), glm::vec4(1.5f, 1.4f, 1, 0),
+                glm::vec4(-1.4f, 1.5f, 1, 0)});
   b.Draw(TRIANGLES, v, Program::kCube);
 }
 
 // A depth texture of ramps and steps, compared against a reference that varies across the quad, with NEAREST and
 // LINEAR (2 x 2 percentage-closer) filtering and two comparison functions.
 void ShadowCompare(Backend& b) {
-  b.ClearColor(0, 0, 0, 1);
-  b.Clear(COLOR_BUFFER_BIT);
+  ClearBlack(b);
   constexpr int kSize = 16;
   std::vector<float> depth(kSize * kSize);
   for (int j = 0; j < kSize; ++j)
@@ -558,11 +555,11 @@ void ShadowCompare(Backend& b) {
   for (int q = 0; q < 4; ++q) {
     b.SetShadowTexture(kSize, depth, funcs[q % 2], filters[q / 2]);
     const float x0 = float(q % 2) * 64, y0 = float(q / 2) * 64;
-    const glm::vec4 p[4] = {Win(x0, y0), Win(x0 + 64, y0), Win(x0 + 64, y0 + 64), Win(x0, y0 + 64)};
     // uv across the texture; the reference from 0.15 to 0.85 along x, between the texel depths.
-    const glm::vec4 coord[4] = {{0, 0, 0.15f, 0}, {1, 0, 0.85f, 0}, {1, 1, 0.85f, 0}, {0, 1, 0.15f, 0}};
-    std::vector<Vertex> v;
-    for (int k : {0, 1, 3, 1, 2, 3}) v.push_back({p[k], glm::vec4(1), coord[k]});
+    const std::vector<Vertex> v =
+        QuadWith({Win(x0, y0), Win(x0 + 64, y0), Win(x0 + 64, y0 + 64), Win(x0, y0 + 64)},
+                 {glm::vec4(0, 0, 0.15f, 0), glm::vec4(1, 0, 0.85f, 0), glm::vec4(1, 1, 0.85f, 0),
+                  glm::vec4(0, 1, 0.15f, 0)});
     b.Draw(TRIANGLES, v, Program::kShadow);
   }
 }
