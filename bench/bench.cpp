@@ -1,12 +1,16 @@
 // bench — softgl against Mesa's llvmpipe (OSMesa, OpenGL 3.3 core) on the same scenes, same size, in one run.
 //
-//   bench [--threads N] [--frames N] [--png DIR]   (--png: also write each scene's last softgl frame)
+//   bench [--threads N] [--frames N] [--png DIR] [--scene TEXT] [--softgl-only 1]
+//   (--png: also write each scene's last softgl frame)
 //
-// llvmpipe runs with LP_NUM_THREADS = N (0 for --threads 1: rendering on the calling thread alone); softgl renders
-// on the calling thread (it has no worker threads yet). Each scene is set up once per renderer (buffers, textures,
-// shaders compiled), two frames are drawn to warm up (llvmpipe compiles its shaders then), then --frames frames are
-// timed; a frame ends when its pixels are ready (glFinish for OpenGL). Prints the median ms/frame per renderer and
-// softgl's time over llvmpipe's (below 1: softgl is faster).
+// llvmpipe runs with LP_NUM_THREADS = N (0 for --threads 1: rendering on the calling thread alone); softgl with
+// Context::Options::threads = N (the calling thread and N - 1 workers). Each scene is set up once per renderer
+// (buffers, textures, shaders compiled), two frames are drawn to warm up (llvmpipe compiles its shaders then), then
+// --frames frames are timed; a frame ends when its pixels are ready (Finish for softgl, glFinish for OpenGL).
+// Prints the median ms/frame per renderer and softgl's time over llvmpipe's (below 1: softgl is faster).
+//
+//   --scene TEXT       only the scenes whose name contains TEXT
+//   --softgl-only 1    skip llvmpipe (for profiling softgl alone)
 #define GL_GLEXT_PROTOTYPES
 #include <GL/osmesa.h>
 #include <GL/gl.h>
@@ -261,6 +265,7 @@ GLuint Program(const char* vs, const char* fs) {
 // ---- Running -------------------------------------------------------------------------------------------------
 
 std::string g_png_dir;  // --png
+softgl::Context::Options g_options;  // --threads
 
 double MedianMs(int frames, const std::function<void()>& frame) {
   frame();  // warm-up: llvmpipe compiles its shaders on first use
@@ -287,13 +292,18 @@ struct Scene {
 
 int main(int argc, char** argv) {
   int threads = 1, frames = 5;
+  std::string only;          // --scene TEXT: run only scenes whose name contains TEXT
+  bool softgl_only = false;  // --softgl-only 1: skip llvmpipe (for profiling)
   for (int i = 1; i + 1 < argc; i += 2) {
     if (!std::strcmp(argv[i], "--threads")) threads = std::max(1, std::atoi(argv[i + 1]));
     if (!std::strcmp(argv[i], "--frames")) frames = std::max(1, std::atoi(argv[i + 1]));
     if (!std::strcmp(argv[i], "--png")) g_png_dir = argv[i + 1];
+    if (!std::strcmp(argv[i], "--scene")) only = argv[i + 1];
+    if (!std::strcmp(argv[i], "--softgl-only")) softgl_only = std::atoi(argv[i + 1]) != 0;
   }
   const std::string lp_threads = std::to_string(threads == 1 ? 0 : threads);
   setenv("LP_NUM_THREADS", lp_threads.c_str(), 1);
+  g_options.threads = threads;
   setenv("GALLIUM_DRIVER", "llvmpipe", 1);
 
   const Geometry tris = SmallTriangles(1000000);
@@ -367,7 +377,7 @@ int main(int argc, char** argv) {
   if (have_engine) {
     scenes.push_back({"model: 2CylinderEngine, Blinn-Phong", 1280, 720, "Mtri/s", double(engine.indices.size() / 3),
                       [&](int n) {
-                        softgl::Context gl(1280, 720);
+                        softgl::Context gl(1280, 720, g_options);
                         softgl_setup(gl, engine);
                         PhongShader shader;
                         shader.view_proj = engine_vp;
@@ -378,6 +388,7 @@ int main(int argc, char** argv) {
                         const double ms = MedianMs(n, [&] {
                           gl.Clear(softgl::COLOR_BUFFER_BIT | softgl::DEPTH_BUFFER_BIT);
                           gl.DrawElement(softgl::TRIANGLES, int(engine.indices.size()), softgl::UNSIGNED_INT, 0);
+                          gl.Finish();
                         });
                         if (!g_png_dir.empty()) softgl::WritePng(g_png_dir + "/bench_engine.png", gl.ReadPixels());
                         return ms;
@@ -411,7 +422,7 @@ int main(int argc, char** argv) {
     scenes.push_back({"textured model: african_head, diffuse + normal + specular maps, trilinear", 1280, 720, "Mtri/s",
                       double(head.indices.size() / 3),
                       [&](int n) {
-                        softgl::Context gl(1280, 720);
+                        softgl::Context gl(1280, 720, g_options);
                         softgl_setup(gl, head);
                         for (int u = 0; u < 3; ++u) {
                           gl.ActiveTexture(softgl::TEXTURE0 + softgl::Enum(u));
@@ -429,6 +440,7 @@ int main(int argc, char** argv) {
                         const double ms = MedianMs(n, [&] {
                           gl.Clear(softgl::COLOR_BUFFER_BIT | softgl::DEPTH_BUFFER_BIT);
                           gl.DrawElement(softgl::TRIANGLES, int(head.indices.size()), softgl::UNSIGNED_INT, 0);
+                          gl.Finish();
                         });
                         if (!g_png_dir.empty()) softgl::WritePng(g_png_dir + "/bench_head.png", gl.ReadPixels());
                         return ms;
@@ -471,7 +483,7 @@ int main(int argc, char** argv) {
                       }});
   scenes.push_back({"many small triangles: 1,000,000, flat, depth test", 1280, 720, "Mtri/s", 1e6,
                     [&](int n) {
-                      softgl::Context gl(1280, 720);
+                      softgl::Context gl(1280, 720, g_options);
                       softgl_setup(gl, tris);
                       FlatShader shader;
                       gl.UseProgram(shader);
@@ -479,6 +491,7 @@ int main(int argc, char** argv) {
                       return MedianMs(n, [&] {
                         gl.Clear(softgl::COLOR_BUFFER_BIT | softgl::DEPTH_BUFFER_BIT);
                         gl.DrawArrays(softgl::TRIANGLES, 0, 3000000);
+                        gl.Finish();
                       });
                     },
                     [&](int n) {
@@ -496,7 +509,7 @@ int main(int argc, char** argv) {
                     }});
   scenes.push_back({"fill rate: 50 blended full-screen quads", 1920, 1080, "Mpixel/s", 50.0 * 1920 * 1080,
                     [&](int n) {
-                      softgl::Context gl(1920, 1080);
+                      softgl::Context gl(1920, 1080, g_options);
                       softgl_setup(gl, blend_quads);
                       FlatShader shader;
                       shader.color = glm::vec4(0.9f, 0.5f, 0.2f, 0.1f);
@@ -506,6 +519,7 @@ int main(int argc, char** argv) {
                       return MedianMs(n, [&] {
                         gl.Clear(softgl::COLOR_BUFFER_BIT);
                         gl.DrawArrays(softgl::TRIANGLES, 0, 300);
+                        gl.Finish();
                       });
                     },
                     [&](int n) {
@@ -524,7 +538,7 @@ int main(int argc, char** argv) {
                     }});
   scenes.push_back({"textured overdraw: 20 quads, trilinear, 1024^2", 1920, 1080, "Mpixel/s", 20.0 * 1920 * 1080,
                     [&](int n) {
-                      softgl::Context gl(1920, 1080);
+                      softgl::Context gl(1920, 1080, g_options);
                       softgl_setup(gl, tex_quads);
                       gl.BindTexture(softgl::TEXTURE_2D, gl.GenTexture());
                       gl.TexImage2D(softgl::TEXTURE_2D, 0, softgl::RGBA8, 1024, 1024, 0, softgl::RGBA,
@@ -536,6 +550,7 @@ int main(int argc, char** argv) {
                       const double ms = MedianMs(n, [&] {
                         gl.Clear(softgl::COLOR_BUFFER_BIT);
                         gl.DrawArrays(softgl::TRIANGLES, 0, 120);
+                        gl.Finish();
                       });
                       if (!g_png_dir.empty()) softgl::WritePng(g_png_dir + "/bench_overdraw.png", gl.ReadPixels());
                       return ms;
@@ -562,7 +577,8 @@ int main(int argc, char** argv) {
   std::printf("| scene | size | threads | softgl ms/frame | llvmpipe ms/frame | softgl / llvmpipe | softgl rate |\n");
   std::printf("|---|---|---|---|---|---|---|\n");
   for (const Scene& s : scenes) {
-    const double a = s.softgl_ms(frames), b = s.gl_ms(frames);
+    if (!only.empty() && std::string(s.name).find(only) == std::string::npos) continue;
+    const double a = s.softgl_ms(frames), b = softgl_only ? 0.0 : s.gl_ms(frames);
     const double rate = s.units / (a * 1e3);  // per microsecond = millions per second
     std::printf("| %s | %dx%d | %d | %.1f | %.1f | %.2f | %.2f %s |\n", s.name, s.width, s.height, threads, a, b,
                 b > 0 ? a / b : 0.0, rate, s.unit);

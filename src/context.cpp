@@ -17,8 +17,10 @@
 #include "pipeline.h"
 #include "primitive_assembly.h"
 #include "texture.h"
+#include "tile_renderer.h"
 #include "vertex_fetch.h"
 #include "viewport.h"
+#include "worker_pool.h"
 
 namespace softgl {
 
@@ -156,6 +158,8 @@ struct ContextState {
   std::uint8_t clear_stencil = 0;
 
   detail::Scratch scratch;
+  std::unique_ptr<detail::WorkerPool> pool;
+  detail::Frame frame;  // recorded clears and draws, not yet rendered
 
   Context::DebugCallback debug_callback;
 
@@ -211,9 +215,23 @@ struct ContextState {
   }
 
   void Draw(const detail::DrawCall& call);
+
+  // Renders what is recorded, so that the buffers hold it: before the buffers are read, before anything a
+  // recorded draw refers to (textures, framebuffer attachments) changes, and before drawing elsewhere.
+  void Sync(const char* call) {
+    try {
+      frame.Render(*pool, scratch.tiles);
+    } catch (const std::bad_alloc&) {
+      SetError(OUT_OF_MEMORY, call, "out of memory while rendering recorded draws (they are dropped)");
+    }
+  }
 };
 
-Context::Context(int width, int height) : state_(std::make_unique<ContextState>()) {
+Context::Context(int width, int height) : Context(width, height, Options{}) {}
+
+Context::Context(int width, int height, const Options& options) : state_(std::make_unique<ContextState>()) {
+  state_->pool = std::make_unique<detail::WorkerPool>(options.threads > 0 ? options.threads
+                                                                          : detail::DefaultThreadCount());
   for (auto& a : state_->current_attrib) a = glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
   if (width < 0 || height < 0 || width > kMaxFramebufferSize || height > kMaxFramebufferSize) {
     state_->SetError(INVALID_VALUE, __func__, "a numeric argument is out of range");
@@ -231,6 +249,9 @@ Context::~Context() = default;
 
 int Context::Width() const { return state_->fb.width; }
 int Context::Height() const { return state_->fb.height; }
+int Context::Threads() const { return state_->pool->Threads(); }
+
+void Context::Finish() { state_->Sync(__func__); }
 
 void Context::DebugMessageCallback(DebugCallback callback) { state_->debug_callback = std::move(callback); }
 
@@ -626,12 +647,23 @@ void Context::Clear(Bitfield mask) {
   if (!s.DrawTarget(target)) return;
   const detail::Rect area = s.ClearArea(target);
   if (area.Empty()) return;
-  if (mask & COLOR_BUFFER_BIT) {
-    const glm::vec4 c(s.clear_color[0], s.clear_color[1], s.clear_color[2], s.clear_color[3]);
-    target.ClearColor(area, c, s.ops.color_mask);
+  detail::ClearPacket clear;
+  clear.area = area;
+  clear.color = (mask & COLOR_BUFFER_BIT) != 0;
+  clear.color_value = glm::vec4(s.clear_color[0], s.clear_color[1], s.clear_color[2], s.clear_color[3]);
+  for (int i = 0; i < 4; ++i) clear.color_mask[i] = s.ops.color_mask[i];
+  clear.depth = (mask & DEPTH_BUFFER_BIT) && s.ops.depth_write;
+  clear.depth_value = s.clear_depth;
+  clear.stencil = (mask & STENCIL_BUFFER_BIT) != 0;
+  clear.stencil_value = s.clear_stencil;
+  clear.stencil_mask = std::uint8_t(s.ops.front.write_mask);
+  if (!clear.color && !clear.depth && !clear.stencil) return;
+  if (!s.frame.Accepts(target)) s.Sync(__func__);
+  try {
+    s.frame.AddClear(target, clear);
+  } catch (const std::bad_alloc&) {
+    s.SetError(OUT_OF_MEMORY, __func__, "out of memory");
   }
-  if ((mask & DEPTH_BUFFER_BIT) && s.ops.depth_write) target.ClearDepth(area, s.clear_depth);
-  if (mask & STENCIL_BUFFER_BIT) target.ClearStencil(area, s.clear_stencil, std::uint8_t(s.ops.front.write_mask));
 }
 
 // ---- Drawing -------------------------------------------------------------------------------------------------
@@ -656,37 +688,46 @@ void ContextState::Draw(const detail::DrawCall& call) {
   detail::RenderTarget target;
   if (!DrawTarget(target)) return;
 
-  // The textures of every unit, resolved once for the draw.
-  detail::TextureView views[2][kMaxTextureUnits];
-  Textures bound;
+  // The fragment stage's state, captured now: the shader's uniforms (a copy), the textures of every unit resolved
+  // once, the per-fragment operations.
+  detail::DrawPacket packet;
   for (int u = 0; u < kMaxTextureUnits; ++u) {
     if (units[u].tex_2d) {
-      views[0][u] = detail::MakeView(*units[u].tex_2d);
-      bound.unit_2d[u] = &views[0][u];
+      packet.views[0][u] = detail::MakeView(*units[u].tex_2d);
+      packet.textures.unit_2d[u] = &packet.views[0][u];
     }
     if (units[u].cube) {
-      views[1][u] = detail::MakeView(*units[u].cube);
-      bound.unit_cube[u] = &views[1][u];
+      packet.views[1][u] = detail::MakeView(*units[u].cube);
+      packet.textures.unit_cube[u] = &packet.views[1][u];
     }
   }
+  packet.ops = ops;
+  packet.nvar = program->VaryingFloats();
 
   detail::DrawState ds;
   ds.program = program;
-  ds.textures = &bound;
+  ds.textures = &packet.textures;
   ds.viewport = detail::MakeViewportTransform(viewport[0], viewport[1], viewport[2], viewport[3], depth_near,
                                               depth_far);
   const detail::Rect fbr = ClearArea(target);  // draw target and scissor
   ds.bounds = detail::Rect{std::max(ds.viewport.rect.x0, fbr.x0), std::max(ds.viewport.rect.y0, fbr.y0),
                            std::min(ds.viewport.rect.x1, fbr.x1), std::min(ds.viewport.rect.y1, fbr.y1)};
   ds.primitive = primitive;
-  ds.ops = ops;
+  packet.bounds = ds.bounds;
+  if (!frame.Accepts(target)) Sync(__func__);
   try {
-    detail::Draw(call, plan, ds, target, scratch);
+    packet.snapshot = program->Snapshot();
+    packet.program = packet.snapshot ? packet.snapshot.get() : program;
+    detail::RecordDraw(call, plan, ds, packet, target, frame, *pool, scratch);
   } catch (const std::bad_alloc&) {
-    SetError(OUT_OF_MEMORY, __func__, "out of memory");
+    frame.Reset();
+    SetError(OUT_OF_MEMORY, __func__, "out of memory (recorded draws not yet rendered are dropped)");
   } catch (const std::length_error&) {
-    SetError(OUT_OF_MEMORY, __func__, "out of memory");
+    frame.Reset();
+    SetError(OUT_OF_MEMORY, __func__, "out of memory (recorded draws not yet rendered are dropped)");
   }
+  // A shader that cannot be copied is used as it is: render before the caller can change it.
+  if (!packet.snapshot) Sync(__func__);
 }
 
 void Context::DrawArrays(Enum mode, int first, int count) {
@@ -742,6 +783,7 @@ detail::RenderTarget ReadTarget(ContextState& s) {
 }  // namespace
 
 Image Context::ReadPixels() const {
+  state_->Sync(__func__);
   const detail::RenderTarget t = ReadTarget(*state_);
   Image image;
   if (!t.color[0].Present() || t.width <= 0 || t.height <= 0) return image;
@@ -758,6 +800,7 @@ Image Context::ReadPixels() const {
 }
 
 void Context::ReadPixel(int x, int y, std::uint8_t rgba[4]) const {
+  state_->Sync(__func__);
   const detail::RenderTarget t = ReadTarget(*state_);
   std::memset(rgba, 0, 4);
   if (!t.color[0].Present() || x < 0 || y < 0 || x >= t.width || y >= t.height) return;
@@ -766,12 +809,14 @@ void Context::ReadPixel(int x, int y, std::uint8_t rgba[4]) const {
 }
 
 float Context::ReadDepth(int x, int y) const {
+  state_->Sync(__func__);
   const detail::RenderTarget t = ReadTarget(*state_);
   if (!t.depth || x < 0 || y < 0 || x >= t.width || y >= t.height) return 0.0f;
   return t.Depth(x, y);
 }
 
 std::uint8_t Context::ReadStencil(int x, int y) const {
+  state_->Sync(__func__);
   const detail::RenderTarget t = ReadTarget(*state_);
   if (!t.stencil || x < 0 || y < 0 || x >= t.width || y >= t.height) return 0;
   return t.Stencil(x, y);
@@ -788,6 +833,7 @@ void Context::GenTextures(int n, std::uint32_t* ids) {
 }
 
 void Context::DeleteTexture(std::uint32_t texture) {
+  state_->Sync(__func__);
   auto& s = *state_;
   auto it = s.textures.find(texture);
   if (it == s.textures.end()) return;
@@ -837,6 +883,7 @@ bool IsTransferType(Enum type) { return type == UNSIGNED_BYTE || type == FLOAT; 
 
 void Context::TexImage2D(Enum target, int level, Enum internal_format, int width, int height, int border,
                          Enum format, Enum type, const void* pixels) {
+  state_->Sync(__func__);
   auto& s = *state_;
   if (!IsTexImageTarget(target)) return s.SetError(INVALID_ENUM, __func__, "target must be TEXTURE_2D or a TEXTURE_CUBE_MAP_* face");
   if (level < 0 || level >= detail::kMaxLevels || width < 0 || height < 0 || width > kMaxTextureSize ||
@@ -865,6 +912,7 @@ void Context::TexImage2D(Enum target, int level, Enum internal_format, int width
 
 void Context::TexSubImage2D(Enum target, int level, int x, int y, int width, int height, Enum format, Enum type,
                             const void* pixels) {
+  state_->Sync(__func__);
   auto& s = *state_;
   if (!IsTexImageTarget(target)) return s.SetError(INVALID_ENUM, __func__, "target must be TEXTURE_2D or a TEXTURE_CUBE_MAP_* face");
   if (detail::TransferComponents(format) == 0 || !IsTransferType(type)) return s.SetError(INVALID_ENUM, __func__, "format must be RED, RG, RGB, RGBA or DEPTH_COMPONENT and type UNSIGNED_BYTE or FLOAT");
@@ -951,6 +999,7 @@ bool Context::TexImage2DFromMemory(Enum target, const void* data, std::size_t si
 }
 
 void Context::GenerateMipmap(Enum target) {
+  state_->Sync(__func__);
   auto& s = *state_;
   if (target != TEXTURE_2D && target != TEXTURE_CUBE_MAP) return s.SetError(INVALID_ENUM, __func__, "target must be TEXTURE_2D or TEXTURE_CUBE_MAP");
   detail::TextureObject* tex = s.Bound(target);
@@ -981,6 +1030,7 @@ bool IsWrap(int v) { return v == REPEAT || v == MIRRORED_REPEAT || v == CLAMP_TO
 }  // namespace
 
 void Context::TexParameterfv(Enum target, Enum pname, const float* values) {
+  state_->Sync(__func__);
   auto& s = *state_;
   if (target != TEXTURE_2D && target != TEXTURE_CUBE_MAP) return s.SetError(INVALID_ENUM, __func__, "target must be TEXTURE_2D or TEXTURE_CUBE_MAP");
   if (values == nullptr) return s.SetError(INVALID_VALUE, __func__, "values is null");
@@ -1029,12 +1079,14 @@ void Context::TexParameterfv(Enum target, Enum pname, const float* values) {
 }
 
 void Context::TexParameteri(Enum target, Enum pname, int value) {
+  state_->Sync(__func__);
   if (pname == TEXTURE_BORDER_COLOR) return state_->SetError(INVALID_ENUM, __func__, "TEXTURE_BORDER_COLOR takes four values: use TexParameterfv");  // four values: use TexParameterfv
   const float v = float(value);
   TexParameterfv(target, pname, &v);
 }
 
 void Context::TexParameterf(Enum target, Enum pname, float value) {
+  state_->Sync(__func__);
   if (pname == TEXTURE_BORDER_COLOR) return state_->SetError(INVALID_ENUM, __func__, "TEXTURE_BORDER_COLOR takes four values: use TexParameterfv");
   TexParameterfv(target, pname, &value);
 }
@@ -1056,6 +1108,7 @@ void Context::GenFramebuffers(int n, std::uint32_t* ids) {
 }
 
 void Context::DeleteFramebuffer(std::uint32_t framebuffer) {
+  state_->Sync(__func__);
   auto& s = *state_;
   auto it = s.framebuffers.find(framebuffer);
   if (it == s.framebuffers.end()) return;
@@ -1067,6 +1120,7 @@ void Context::DeleteFramebuffer(std::uint32_t framebuffer) {
 bool Context::IsFramebuffer(std::uint32_t framebuffer) const { return state_->framebuffers.count(framebuffer) != 0; }
 
 void Context::BindFramebuffer(Enum target, std::uint32_t framebuffer) {
+  state_->Sync(__func__);
   auto& s = *state_;
   if (target != FRAMEBUFFER && target != DRAW_FRAMEBUFFER && target != READ_FRAMEBUFFER)
     return s.SetError(INVALID_ENUM, __func__, "an enum argument is not one this call accepts");
@@ -1081,6 +1135,7 @@ void Context::BindFramebuffer(Enum target, std::uint32_t framebuffer) {
 }
 
 void Context::FramebufferTexture2D(Enum target, Enum attachment, Enum textarget, std::uint32_t texture, int level) {
+  state_->Sync(__func__);
   auto& s = *state_;
   if (target != FRAMEBUFFER && target != DRAW_FRAMEBUFFER && target != READ_FRAMEBUFFER)
     return s.SetError(INVALID_ENUM, __func__, "an enum argument is not one this call accepts");
@@ -1115,6 +1170,7 @@ Enum Context::CheckFramebufferStatus(Enum target) {
 }
 
 void Context::DrawBuffers(int n, const Enum* bufs) {
+  state_->Sync(__func__);
   auto& s = *state_;
   if (n < 0 || n > kMaxColorOutputs) return s.SetError(INVALID_VALUE, __func__, "n must be 0 to kMaxColorOutputs");
   if (!s.draw_fbo) return s.SetError(INVALID_OPERATION, __func__, "the context's own framebuffer has no draw buffers to choose: bind a framebuffer object");

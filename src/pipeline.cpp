@@ -7,17 +7,20 @@
 
 #include "clipper.h"
 #include "culling.h"
-#include "rasterizer.h"
+#include "binner.h"
+#include "rasterizer.h"  // PolygonOffset
 
 namespace softgl::detail {
 
 namespace {
 
 constexpr int kVertexBatch = 64;
+constexpr int kVertexJob = 16 * kVertexBatch;
+constexpr int kBinJob = 1024;  // primitives clipped and binned per job
 
 // Stage 1-2: fetch and shade every vertex the draw references, once each where indices repeat.
 void ShadeVertices(const DrawCall& call, const FetchPlan& fetch, const Program& program, const Textures* textures,
-                   Scratch& s) {
+                   WorkerPool& pool, Scratch& s) {
   const int count = call.count;
   auto& to_shade = s.shade_indices;
   auto& map = s.element_to_shaded;
@@ -49,22 +52,29 @@ void ShadeVertices(const DrawCall& call, const FetchPlan& fetch, const Program& 
   out.position.resize(std::size_t(n));
   out.point_size.resize(std::size_t(n));
   out.varyings.resize(std::size_t(n) * std::size_t(out.nvar));
-  s.attribs.resize(std::size_t(kVertexBatch) * kMaxVertexAttribs);
-  s.vertex_ids.resize(kVertexBatch);
-  for (int base = 0; base < n; base += kVertexBatch) {
-    const int m = std::min(kVertexBatch, n - base);
-    FetchVertices(fetch, to_shade.data() + base, m, s.attribs.data());
-    for (int i = 0; i < m; ++i) s.vertex_ids[i] = int(to_shade[base + i]);
-    VertexBatch batch;
-    batch.count = m;
-    batch.attribs = s.attribs.data();
-    batch.vertex_ids = s.vertex_ids.data();
-    batch.positions = out.position.data() + base;
-    batch.point_sizes = out.point_size.data() + base;
-    batch.varyings = out.varyings.data() + std::size_t(base) * out.nvar;
-    batch.textures = textures;
-    program.ShadeVertices(batch);
-  }
+  if (s.vertex.size() < std::size_t(pool.Threads())) s.vertex.resize(std::size_t(pool.Threads()));
+  // Jobs of kVertexJob vertices, shaded in batches of kVertexBatch; every vertex is written by one job only.
+  const int jobs = (n + kVertexJob - 1) / kVertexJob;
+  pool.Run(jobs, [&](int job, int worker) {
+    VertexScratch& vs = s.vertex[std::size_t(worker)];
+    vs.attribs.resize(std::size_t(kVertexBatch) * kMaxVertexAttribs);
+    vs.vertex_ids.resize(kVertexBatch);
+    const int end = std::min(n, (job + 1) * kVertexJob);
+    for (int base = job * kVertexJob; base < end; base += kVertexBatch) {
+      const int m = std::min(kVertexBatch, end - base);
+      FetchVertices(fetch, to_shade.data() + base, m, vs.attribs.data());
+      for (int i = 0; i < m; ++i) vs.vertex_ids[i] = int(to_shade[base + i]);
+      VertexBatch batch;
+      batch.count = m;
+      batch.attribs = vs.attribs.data();
+      batch.vertex_ids = vs.vertex_ids.data();
+      batch.positions = out.position.data() + base;
+      batch.point_sizes = out.point_size.data() + base;
+      batch.varyings = out.varyings.data() + std::size_t(base) * out.nvar;
+      batch.textures = textures;
+      program.ShadeVertices(batch);
+    }
+  });
 }
 
 void ToClipVertex(const ShadedVertices& sv, std::uint32_t i, ClipVertex& out) {
@@ -72,42 +82,17 @@ void ToClipVertex(const ShadedVertices& sv, std::uint32_t i, ClipVertex& out) {
   if (sv.nvar > 0) std::memcpy(out.var, sv.Varyings(int(i)), sizeof(float) * std::size_t(sv.nvar));
 }
 
-struct FragmentStage {
-  const Program* program;
-  const FragmentOpsState* ops;
-  const RenderTarget* target;
-  const Textures* textures;
-
-  // Stages 8-9 on a full batch of quads: the fragment shader, then the per-fragment operations.
-  static void Run(void* user, QuadBuffer& quads) {
-    auto* self = static_cast<FragmentStage*>(user);
-    QuadBatch batch;
-    batch.count = quads.count;
-    batch.varyings = quads.varyings;
-    batch.frag_coord = quads.frag_coord;
-    batch.front_facing = quads.front_facing;
-    batch.out = quads.out;
-    batch.live = quads.live;
-    batch.textures = self->textures;
-    self->program->ShadeQuads(batch);
-    ApplyFragmentOps(*self->ops, quads, *self->target);
-  }
-};
-
 class PrimitiveRunner {
  public:
-  PrimitiveRunner(const DrawState& state, const ShadedVertices& sv, QuadBuffer& quads, const QuadSink& sink)
-      : state_(state), sv_(sv), quads_(quads), sink_(sink), planes_(GuardBandPlanes(state.viewport)) {
-    target_.bounds = state.bounds;
-    target_.nvar = sv.nvar;
-  }
+  PrimitiveRunner(const DrawState& state, const ShadedVertices& sv, BinnedBatch& bins, const TileGrid& grid)
+      : state_(state), sv_(sv), bins_(bins), grid_(grid), planes_(GuardBandPlanes(state.viewport)) {}
 
   void Point(std::uint32_t i) {
     ToClipVertex(sv_, i, clip_[0]);
     // A point is kept only when its centre lies inside the view volume itself (OpenGL 4.6, section 13.7.1).
     if (ClipCodes(clip_[0].pos, ClipPlanes{}) != 0) return;
     ToWindow(clip_[0], sv_.nvar, state_.viewport, win_[0]);
-    RasterizePoint(win_[0], PointSizeOf(i), true, target_, quads_, sink_);
+    AddPoint(win_[0], PointSizeOf(i), true);
   }
 
   void Line(std::uint32_t i0, std::uint32_t i1, bool front_facing = true) {
@@ -116,7 +101,11 @@ class PrimitiveRunner {
     if (!ClipLine(clip_[0], clip_[1], sv_.nvar, planes_, clip_[2], clip_[3])) return;
     ToWindow(clip_[2], sv_.nvar, state_.viewport, win_[0]);
     ToWindow(clip_[3], sv_.nvar, state_.viewport, win_[1]);
-    RasterizeLine(win_[0], win_[1], front_facing, target_, quads_, sink_);
+    BinnedPrimitive p;
+    p.kind = PrimitiveKind::kLine;
+    p.front_facing = front_facing;
+    p.depth_offset = depth_offset_;
+    bins_.Add(p, win_, LineBox(win_[0], win_[1], state_.bounds), grid_);
   }
 
   void Triangle(std::uint32_t i0, std::uint32_t i1, std::uint32_t i2) {
@@ -133,7 +122,7 @@ class PrimitiveRunner {
     const bool offset = state_.primitive.polygon_mode == LINE    ? state_.primitive.offset_line
                         : state_.primitive.polygon_mode == POINT ? state_.primitive.offset_point
                                                        : state_.primitive.offset_fill;
-    target_.depth_offset =
+    depth_offset_ =
         offset ? PolygonOffset(win_[0], win_[1], win_[2], state_.primitive.offset_factor, state_.primitive.offset_units) : 0.0f;
     switch (state_.primitive.polygon_mode) {
       case LINE:  // the triangle's own edges, each clipped as a line
@@ -146,15 +135,28 @@ class PrimitiveRunner {
           ToClipVertex(sv_, i, clip_[0]);
           if (ClipCodes(clip_[0].pos, ClipPlanes{}) != 0) continue;
           ToWindow(clip_[0], sv_.nvar, state_.viewport, win_[0]);
-          RasterizePoint(win_[0], PointSizeOf(i), front, target_, quads_, sink_);
+          AddPoint(win_[0], PointSizeOf(i), front);
         }
         break;
       default:
-        for (int k = 1; k + 1 < poly_.count; ++k)
-          RasterizeTriangle(win_[0], win_[k], win_[k + 1], front, target_, quads_, sink_);
+        for (int k = 1; k + 1 < poly_.count; ++k) {
+          BinnedPrimitive p;
+          p.kind = PrimitiveKind::kTriangle;
+          p.front_facing = front;
+          p.depth_offset = depth_offset_;
+          const Rect box = TriangleBox(win_[0], win_[k], win_[k + 1], state_.bounds);
+          if (k == 1) {
+            bins_.Add(p, win_, box, grid_);
+          } else {  // the fan's triangle (0, k, k+1), stored in order
+            fan_[0] = win_[0];
+            fan_[1] = win_[k];
+            fan_[2] = win_[k + 1];
+            bins_.Add(p, fan_, box, grid_);
+          }
+        }
         break;
     }
-    target_.depth_offset = 0.0f;
+    depth_offset_ = 0.0f;
   }
 
  private:
@@ -163,58 +165,79 @@ class PrimitiveRunner {
     return std::isnan(size) ? 1.0f : std::clamp(size, 1.0f, kMaxPointSize);
   }
 
+  void AddPoint(const WindowVertex& v, float size, bool front_facing) {
+    BinnedPrimitive p;
+    p.kind = PrimitiveKind::kPoint;
+    p.front_facing = front_facing;
+    p.depth_offset = depth_offset_;
+    p.point_size = size;
+    bins_.Add(p, &v, PointBox(v, size, state_.bounds), grid_);
+  }
+
   const DrawState& state_;
   const ShadedVertices& sv_;
-  QuadBuffer& quads_;
-  const QuadSink& sink_;
+  BinnedBatch& bins_;
+  const TileGrid& grid_;
   ClipPlanes planes_;
-  RasterTarget target_;
+  float depth_offset_ = 0.0f;
   ClipVertex clip_[4];
   ClipPolygon poly_;
   WindowVertex win_[kMaxPolygonVertices];
+  WindowVertex fan_[3];
 };
 
 }  // namespace
 
 namespace {
 
-// One draw small enough to hold all its shaded vertices at once.
-void DrawChunk(const DrawCall& call, const FetchPlan& fetch, const DrawState& state, const RenderTarget& target,
-               Scratch& scratch) {
-  ShadeVertices(call, fetch, *state.program, state.textures, scratch);
+// One draw small enough to hold all its shaded vertices at once: shaded, then its primitives clipped and binned
+// in jobs of kBinJob primitives, each job into its own batch, the batches kept in primitive order.
+void RecordChunk(const DrawCall& call, const FetchPlan& fetch, const DrawState& state, DrawPacket& packet,
+                 Frame& frame, WorkerPool& pool, Scratch& scratch) {
+  ShadeVertices(call, fetch, *state.program, state.textures, pool, scratch);
 
   Primitives& prims = scratch.primitives;
   AssemblePrimitives(call.mode, call.count, prims);
-
-  FragmentStage fragment{state.program, &state.ops, &target, state.textures};
-  const QuadSink sink{&FragmentStage::Run, &fragment};
-  QuadBuffer& quads = *scratch.quads;
-  quads.count = 0;
-  auto runner = std::make_unique<PrimitiveRunner>(state, scratch.shaded, quads, sink);
+  const int per = prims.vertices_per_primitive;
+  if (per < 1 || per > 3) return;
+  const std::size_t count = prims.indices.size() / std::size_t(per);
+  const int jobs = int((count + kBinJob - 1) / kBinJob);
+  const std::size_t first_batch = packet.batches.size();
+  for (int j = 0; j < jobs; ++j) packet.batches.push_back(&frame.NewBatch(scratch.shaded.nvar));
   const auto& map = scratch.element_to_shaded;
   const auto& idx = prims.indices;
-  const std::size_t n = idx.size();
-  switch (prims.vertices_per_primitive) {
-    case 1:
-      for (std::size_t i = 0; i < n; ++i) runner->Point(map[idx[i]]);
-      break;
-    case 2:
-      for (std::size_t i = 0; i + 1 < n; i += 2) runner->Line(map[idx[i]], map[idx[i + 1]]);
-      break;
-    case 3:
-      for (std::size_t i = 0; i + 2 < n; i += 3) runner->Triangle(map[idx[i]], map[idx[i + 1]], map[idx[i + 2]]);
-      break;
-    default: break;
-  }
-  sink.Flush(quads);
+  const TileGrid& grid = frame.Grid();
+  pool.Run(jobs, [&](int job, int) {
+    BinnedBatch& bins = *packet.batches[first_batch + std::size_t(job)];
+    auto runner = std::make_unique<PrimitiveRunner>(state, scratch.shaded, bins, grid);
+    const std::size_t end = std::min(count, std::size_t(job + 1) * kBinJob);
+    for (std::size_t p = std::size_t(job) * kBinJob; p < end; ++p) {
+      const std::size_t i = p * std::size_t(per);
+      switch (per) {
+        case 1: runner->Point(map[idx[i]]); break;
+        case 2: runner->Line(map[idx[i]], map[idx[i + 1]]); break;
+        default: runner->Triangle(map[idx[i]], map[idx[i + 1]], map[idx[i + 2]]); break;
+      }
+    }
+    bins.Finish(grid);
+  });
+}
+
+// Records one piece of a draw as its own command (a copy of the prototype packet), rendering the frame first
+// when what is recorded already exceeds the budget.
+void RecordPiece(const DrawCall& call, const FetchPlan& fetch, const DrawState& state, const DrawPacket& proto,
+                 const RenderTarget& target, Frame& frame, WorkerPool& pool, Scratch& scratch) {
+  if (frame.Bytes() > kFrameBudgetBytes) frame.Render(pool, scratch.tiles);
+  DrawPacket& packet = frame.AddDraw(target, proto);
+  RecordChunk(call, fetch, state, packet, frame, pool, scratch);
 }
 
 }  // namespace
 
-void Draw(const DrawCall& call, const FetchPlan& fetch, const DrawState& state, const RenderTarget& target,
-          Scratch& scratch) {
+void RecordDraw(const DrawCall& call, const FetchPlan& fetch, const DrawState& state, const DrawPacket& packet,
+                const RenderTarget& target, Frame& frame, WorkerPool& pool, Scratch& scratch) {
   if (call.count <= 0 || state.program == nullptr || state.bounds.Empty()) return;
-  if (call.count <= kDrawChunk) return DrawChunk(call, fetch, state, target, scratch);
+  if (call.count <= kDrawChunk) return RecordPiece(call, fetch, state, packet, target, frame, pool, scratch);
 
   // A large draw goes through in pieces of at most kDrawChunk vertices, so that memory stays bounded whatever the
   // count. Each piece is an explicit element list of the draw's own vertex indices (gl_VertexID is kept); strips
@@ -248,7 +271,7 @@ void Draw(const DrawCall& call, const FetchPlan& fetch, const DrawState& state, 
     sub.mode = piece_mode;
     sub.count = int(piece.size());
     sub.elements = piece.data();
-    DrawChunk(sub, fetch, state, target, scratch);
+    RecordPiece(sub, fetch, state, packet, target, frame, pool, scratch);
     if (s + room >= count) break;
   }
   if (call.mode == LINE_LOOP) {
@@ -257,7 +280,7 @@ void Draw(const DrawCall& call, const FetchPlan& fetch, const DrawState& state, 
     sub.mode = LINES;
     sub.count = 2;
     sub.elements = closing;
-    DrawChunk(sub, fetch, state, target, scratch);
+    RecordPiece(sub, fetch, state, packet, target, frame, pool, scratch);
   }
 }
 

@@ -1,8 +1,10 @@
 // pipeline.h — one draw call through every stage: fetch -> vertex shader -> assembly -> clip -> divide/viewport
-// -> cull -> rasterize -> fragment shader -> fragment operations -> framebuffer.
+// -> cull -> bin, recorded now; then, per tile when the frame is rendered (tile_renderer.h): rasterize ->
+// fragment shader -> fragment operations -> framebuffer.
 //
-// The context validates the call and resolves its objects into a FetchPlan and a DrawState; from there the draw
-// flows forward through the stages in plain structs (types.h), and only the framebuffer is written.
+// The context validates the call and resolves its objects into a FetchPlan, a DrawState and a DrawPacket; from
+// there the draw flows forward through the stages in plain structs (types.h), and only the framebuffer is
+// written.
 #pragma once
 
 #include <cstdint>
@@ -11,11 +13,12 @@
 
 #include <softgl/shader.h>
 
-#include "fragment_ops.h"
 #include "framebuffer.h"
 #include "primitive_assembly.h"
+#include "tile_renderer.h"
 #include "types.h"
 #include "vertex_fetch.h"
+#include "worker_pool.h"
 #include "viewport.h"
 
 namespace softgl::detail {
@@ -37,14 +40,13 @@ struct PrimitiveState {
   float offset_factor = 0.0f, offset_units = 0.0f;
 };
 
-/// Everything a draw needs from the context's state, resolved at draw time.
+/// Everything the front end of a draw needs from the context's state, resolved at draw time.
 struct DrawState {
   const Program* program = nullptr;
   ViewportTransform viewport;
   Rect bounds;  // viewport, framebuffer and (when enabled) scissor rectangle intersected
   PrimitiveState primitive;
-  FragmentOpsState ops;
-  const Textures* textures = nullptr;  // what the shader stages sample
+  const Textures* textures = nullptr;  // what the vertex stage samples
 };
 
 /// The vertices a draw reads: either `count` consecutive vertices from `first`, or `count` element indices.
@@ -55,20 +57,32 @@ struct DrawCall {
   const std::uint32_t* elements = nullptr;  // null for DrawArrays
 };
 
+/// Memory one worker thread reuses while shading vertices.
+struct VertexScratch {
+  std::vector<glm::vec4> attribs;
+  std::vector<int> vertex_ids;
+};
+
 /// Per-context memory reused from draw to draw, so that drawing allocates only when a draw is bigger than any
 /// before it.
 struct Scratch {
   std::vector<std::uint32_t> shade_indices;  // vertex index of each vertex to shade
   std::vector<std::uint32_t> element_to_shaded;
-  std::vector<glm::vec4> attribs;
-  std::vector<int> vertex_ids;
   ShadedVertices shaded;
   Primitives primitives;
-  std::unique_ptr<QuadBuffer> quads = std::make_unique<QuadBuffer>();
+  std::vector<VertexScratch> vertex;  // per worker
+  std::vector<TileScratch> tiles;     // per worker
 };
 
-/// Runs one draw. May throw std::bad_alloc for a draw too large for memory; nothing else is thrown.
-void Draw(const DrawCall& call, const FetchPlan& fetch, const DrawState& state, const RenderTarget& target,
-          Scratch& scratch);
+/// Recorded data beyond which a frame is rendered before recording goes on (between pieces of a draw).
+inline constexpr std::size_t kFrameBudgetBytes = std::size_t(64) << 20;
+
+/// Runs the front end of one draw (vertex fetch and shading, assembly, clipping, divide and viewport, culling,
+/// binning), in parallel batches on `pool`, and records it into `frame` as a copy of `packet` (the fragment
+/// stage's state); rasterization and everything after it happen when the frame is rendered. A draw whose
+/// recorded data outgrows kFrameBudgetBytes renders the frame between its pieces. May throw std::bad_alloc;
+/// nothing else is thrown.
+void RecordDraw(const DrawCall& call, const FetchPlan& fetch, const DrawState& state, const DrawPacket& packet,
+                const RenderTarget& target, Frame& frame, WorkerPool& pool, Scratch& scratch);
 
 }  // namespace softgl::detail

@@ -211,6 +211,7 @@ void RasterizeLine(const WindowVertex& a, const WindowVertex& b, bool front_faci
   // one-pixel-wide parallelogram around the line owns under the fill rule is taken: for x-major lines the upper
   // one when the line rises, else the lower one; for y-major lines the left one.
   const bool upper_on_tie = x_major && dv > 0.0f;
+  int last_quad = -1;  // the last quad this line emitted, while it is still in the buffer
   for (long i = first; i <= last; ++i) {
     const float uc = float(i) + 0.5f;
     const float vc = v0 + (uc - u0) * dv / du;
@@ -220,12 +221,12 @@ void RasterizeLine(const WindowVertex& a, const WindowVertex& b, bool front_faci
     const int qx = px & ~1, qy = py & ~1;
     const unsigned bit = 1u << ((px & 1) + 2 * (py & 1));
     // Neighbouring fragments of the same 2x2 block share one quad.
-    if (quads.count > 0 && quads.front_facing == front_facing && quads.qx[quads.count - 1] == qx &&
-        quads.qy[quads.count - 1] == qy) {
+    if (last_quad >= 0 && last_quad == quads.count - 1 && quads.qx[last_quad] == qx && quads.qy[last_quad] == qy) {
       quads.live[(quads.count - 1) * 4 + ((px & 1) + 2 * (py & 1))] = 1;
       continue;
     }
     EmitQuad(quads, sink, front_facing, nvar, qx, qy, bit, eval);
+    last_quad = quads.count - 1;
   }
 }
 

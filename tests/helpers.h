@@ -3,6 +3,8 @@
 
 #include <cstdint>
 #include <map>
+#include <memory>
+#include <mutex>
 #include <utility>
 #include <vector>
 
@@ -29,7 +31,8 @@ struct Vec4Varyings {
 };
 
 /// Position from attribute 0, varying from attribute 1; the fragment stage records every fragment's varying and
-/// gl_FragCoord by pixel, and counts how often each pixel was shaded.
+/// gl_FragCoord by pixel, and counts how often each pixel was shaded. The record is shared by the shader and the
+/// copies draws take of it (Program::Snapshot), and guarded for the worker threads; read it after Finish().
 struct CaptureShader : softgl::Shader<CaptureShader, Vec4Varyings> {
   struct Sample {
     glm::vec4 value;
@@ -37,12 +40,18 @@ struct CaptureShader : softgl::Shader<CaptureShader, Vec4Varyings> {
     bool front_facing;
     int hits = 0;
   };
-  mutable std::map<std::pair<int, int>, Sample> samples;
+  struct Record {
+    std::mutex mutex;
+    std::map<std::pair<int, int>, Sample> samples;
+  };
+  std::shared_ptr<Record> record = std::make_shared<Record>();
+  std::map<std::pair<int, int>, Sample>& samples = record->samples;
   void Vertex(const softgl::VertexIn& in, softgl::VertexOut<Vec4Varyings>& out) const {
     out.position = in.attrib[0];
     out.varyings.value = in.attrib[1];
   }
   bool Fragment(const softgl::FragmentIn<Vec4Varyings>& in, softgl::FragmentOut& out) const {
+    std::lock_guard<std::mutex> lock(record->mutex);
     Sample& s = samples[{int(in.frag_coord.x), int(in.frag_coord.y)}];
     s.value = in.varyings.value;
     s.frag_coord = in.frag_coord;

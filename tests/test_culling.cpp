@@ -70,6 +70,7 @@ TEST_CASE("gl_FrontFacing reaches the fragment stage", "[culling]") {
   testing::CaptureShader shader;
   gl.UseProgram(shader);
   gl.DrawArrays(TRIANGLES, 0, 6);
+  gl.Finish();  // fragments are shaded when the context renders
   CHECK(shader.samples.at({0, 0}).front_facing);       // counter-clockwise
   CHECK_FALSE(shader.samples.at({3, 3}).front_facing);  // clockwise
 }

@@ -1,4 +1,7 @@
 // Interpolation: perspective-correct varyings and linear window-space depth, checked against ray casting.
+#include <memory>
+#include <mutex>
+
 #include <catch2/catch.hpp>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -22,6 +25,7 @@ TEST_CASE("varyings are perspective-correct: they match the world point seen thr
   testing::CaptureShader shader;
   gl.UseProgram(shader);
   gl.DrawArrays(TRIANGLES, 0, 3);
+  gl.Finish();  // fragments are shaded when the context renders
   REQUIRE(shader.samples.size() > 200);
 
   const glm::mat4 inv = glm::inverse(proj);
@@ -62,6 +66,7 @@ TEST_CASE("with w = 1 everywhere, varyings are affine in window space", "[interp
   testing::CaptureShader shader;
   gl.UseProgram(shader);
   gl.DrawArrays(TRIANGLES, 0, 3);
+  gl.Finish();  // fragments are shaded when the context renders
   REQUIRE(!shader.samples.empty());
   for (const auto& [pixel, s] : shader.samples) {
     CHECK(s.value.x == Approx(float(pixel.first) + 0.5f).margin(1e-4));
@@ -75,14 +80,19 @@ TEST_CASE("derivatives across the 2x2 quad", "[interpolation]") {
     glm::vec2 uv;
   };
   struct DerivShader : softgl::Shader<DerivShader, UV> {
-    mutable glm::vec2 ddx{0}, ddy{0};
+    struct Seen {
+      std::mutex mutex;
+      glm::vec2 ddx{0}, ddy{0};
+    };
+    std::shared_ptr<Seen> seen = std::make_shared<Seen>();  // shared with the draw's copy of the shader
     void Vertex(const softgl::VertexIn& in, softgl::VertexOut<UV>& out) const {
       out.position = in.attrib[0];
       out.varyings.uv = glm::vec2(in.attrib[1]);
     }
     bool Fragment(const softgl::FragmentIn<UV>& in, softgl::FragmentOut& out) const {
-      ddx = in.dFdx(&UV::uv);
-      ddy = in.dFdy(&UV::uv);
+      std::lock_guard<std::mutex> lock(seen->mutex);
+      seen->ddx = in.dFdx(&UV::uv);
+      seen->ddy = in.dFdy(&UV::uv);
       out.color[0] = glm::vec4(1);
       return true;
     }
@@ -93,7 +103,8 @@ TEST_CASE("derivatives across the 2x2 quad", "[interpolation]") {
   DerivShader shader;
   gl.UseProgram(shader);
   gl.DrawArrays(TRIANGLES, 0, 3);
-  CHECK(shader.ddx.x == Approx(1.0f / 8));
-  CHECK(shader.ddx.y == Approx(0.0f).margin(1e-6));
-  CHECK(shader.ddy.y == Approx(2.0f / 8));
+  gl.Finish();
+  CHECK(shader.seen->ddx.x == Approx(1.0f / 8));
+  CHECK(shader.seen->ddx.y == Approx(0.0f).margin(1e-6));
+  CHECK(shader.seen->ddy.y == Approx(2.0f / 8));
 }

@@ -6,6 +6,12 @@
 // OpenGL's error code (the first one since the last GetError()) and changes nothing.
 //
 // A Context is not thread-safe: use one context per thread (several contexts may render at once).
+//
+// Rendering is deferred and parallel. A draw call runs the vertex stage at once and records the draw's primitives,
+// sorted into 64 x 64 pixel tiles; the recorded draws are rendered (rasterized, shaded, tested, blended) tile by
+// tile on the context's worker threads when their pixels are needed: ReadPixels and the other reads, Finish, a
+// framebuffer switch, a texture change, or when the recorded data grows large. Each tile is rendered by one thread
+// in submission order, so the image is the same whatever the number of threads.
 #pragma once
 
 #include <cstddef>
@@ -34,12 +40,25 @@ class Context {
   /// framebuffer that cannot be allocated gives a 0 x 0 one and OUT_OF_MEMORY. The viewport starts as the
   /// whole framebuffer.
   Context(int width, int height);
+  /// Options for a context.
+  struct Options {
+    /// Threads that render, the calling thread included; 0 (the default) takes SOFTGL_THREADS from the
+    /// environment when it is set to a number from 1 to 256, else the machine's hardware thread count.
+    int threads = 0;
+  };
+  Context(int width, int height, const Options& options);
+  /// Recorded draws not yet rendered are dropped.
   ~Context();
   Context(const Context&) = delete;
   Context& operator=(const Context&) = delete;
 
   int Width() const;
   int Height() const;
+  /// Number of threads rendering for this context (the calling thread included).
+  int Threads() const;
+
+  /// glFinish: renders every recorded draw and clear, so that the buffers hold their results.
+  void Finish();
 
   // ---- Errors ------------------------------------------------------------------------------------------------
   /// Returns the first error recorded since the last call, and clears it (NO_ERROR when there was none).

@@ -21,11 +21,18 @@
 // or fragment), so the compiler can inline them. A quad always holds the four fragments of an aligned 2x2 pixel
 // block; lanes not covered by the primitive are "helper" lanes whose varyings are still interpolated, so that
 // FragmentIn::dFdx / dFdy give screen-space derivatives, as in GLSL.
+//
+// Vertex() and Fragment() run on the context's worker threads, several at once on the same shader object: they
+// must only read the shader's members. The vertex stage runs during the draw call; the fragment stage runs later,
+// when the context renders (ReadPixels, Finish, ...), on a copy of the shader taken at the draw (Snapshot), so
+// changing uniforms between draws works as in OpenGL.
 #pragma once
 
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <memory>
+#include <typeinfo>
 #include <type_traits>
 
 #include <glm/glm.hpp>
@@ -135,6 +142,10 @@ class Program {
   virtual void ShadeVertices(const VertexBatch& batch) const = 0;
   /// Runs the fragment stage on every live lane of the batch.
   virtual void ShadeQuads(const QuadBatch& batch) const = 0;
+  /// A copy of this shader as it is now (its uniforms), which the fragment stage of a draw uses: fragments are
+  /// shaded later, when the context renders its recorded draws, and the shader may have changed by then. Null
+  /// when the shader cannot be copied: the context then renders each draw before the call returns.
+  virtual std::shared_ptr<const Program> Snapshot() const { return nullptr; }
 };
 
 /// Base class of user shaders (CRTP): `struct MyShader : softgl::Shader<MyShader, MyVaryings> { ... }`.
@@ -154,6 +165,14 @@ class Shader : public Program {
 
  public:
   int VaryingFloats() const final { return kFloats; }
+
+  std::shared_ptr<const Program> Snapshot() const override {
+    if constexpr (std::is_copy_constructible_v<Derived>) {
+      // Only a shader whose class is Derived itself is copied (a class derived from it again would be sliced).
+      if (typeid(*this) == typeid(Derived)) return std::make_shared<Derived>(static_cast<const Derived&>(*this));
+    }
+    return nullptr;
+  }
 
   void ShadeVertices(const VertexBatch& batch) const final {
     const Derived& self = static_cast<const Derived&>(*this);

@@ -1,0 +1,104 @@
+// binner.cpp — per-tile primitive lists, built batch by batch.
+#include "binner.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+namespace softgl::detail {
+
+TileGrid TileGrid::For(int width, int height) {
+  TileGrid g;
+  g.width = std::max(width, 0);
+  g.height = std::max(height, 0);
+  g.cols = (g.width + kTileSize - 1) / kTileSize;
+  g.rows = (g.height + kTileSize - 1) / kTileSize;
+  return g;
+}
+
+Rect TileGrid::TileRect(int tile) const {
+  const int tx = tile % cols, ty = tile / cols;
+  return Rect{tx * kTileSize, ty * kTileSize, std::min((tx + 1) * kTileSize, width),
+              std::min((ty + 1) * kTileSize, height)};
+}
+
+void BinnedBatch::Reset(int nvar) {
+  nvar_ = nvar;
+  prims_.clear();
+  vertices_.clear();
+  notes_.clear();
+  tile_start_.clear();
+  entries_.clear();
+}
+
+void BinnedBatch::Add(const BinnedPrimitive& prim, const WindowVertex* v, const Rect& box, const TileGrid& grid) {
+  if (box.Empty()) return;
+  const auto index = std::uint32_t(prims_.size());
+  BinnedPrimitive p = prim;
+  p.first_float = std::uint32_t(vertices_.size());
+  const int n = int(prim.kind), stride = 4 + nvar_;
+  vertices_.resize(vertices_.size() + std::size_t(n) * std::size_t(stride));
+  float* dst = vertices_.data() + p.first_float;
+  for (int k = 0; k < n; ++k, dst += stride) {
+    std::memcpy(dst, &v[k].win, sizeof(float) * 4);
+    std::memcpy(dst + 4, v[k].var, sizeof(float) * std::size_t(nvar_));
+  }
+  prims_.push_back(p);
+  const int tx0 = box.x0 / kTileSize, tx1 = (box.x1 - 1) / kTileSize;
+  const int ty0 = box.y0 / kTileSize, ty1 = (box.y1 - 1) / kTileSize;
+  for (int ty = ty0; ty <= ty1; ++ty)
+    for (int tx = tx0; tx <= tx1; ++tx) notes_.push_back(std::uint64_t(ty * grid.cols + tx) << 32 | index);
+}
+
+void BinnedBatch::Finish(const TileGrid& grid) {
+  // A stable counting sort of the notes by tile: each tile's list keeps submission order.
+  tile_start_.assign(std::size_t(grid.Count()) + 1, 0);
+  for (std::uint64_t n : notes_) ++tile_start_[std::size_t(n >> 32) + 1];
+  for (std::size_t t = 1; t < tile_start_.size(); ++t) tile_start_[t] += tile_start_[t - 1];
+  entries_.resize(notes_.size());
+  std::vector<std::uint32_t> fill(tile_start_.begin(), tile_start_.end() - 1);
+  for (std::uint64_t n : notes_) entries_[fill[std::size_t(n >> 32)]++] = std::uint32_t(n);
+  notes_.clear();
+}
+
+void BinnedBatch::Vertex(const BinnedPrimitive& p, int k, WindowVertex& out) const {
+  const float* src = vertices_.data() + p.first_float + std::size_t(k) * std::size_t(4 + nvar_);
+  std::memcpy(&out.win, src, sizeof(float) * 4);
+  std::memcpy(out.var, src + 4, sizeof(float) * std::size_t(nvar_));
+}
+
+std::size_t BinnedBatch::Bytes() const {
+  return prims_.capacity() * sizeof(BinnedPrimitive) + vertices_.capacity() * sizeof(float) +
+         notes_.capacity() * sizeof(std::uint64_t) + (tile_start_.capacity() + entries_.capacity()) * sizeof(std::uint32_t);
+}
+
+namespace {
+
+// [floor(lo) - 1, ceil(hi) + 1] in pixels, cut to bounds; coordinates beyond the guard band are clamped first.
+Rect Box(float x_lo, float y_lo, float x_hi, float y_hi, const Rect& bounds) {
+  auto lo = [](float f) { return int(std::floor(std::clamp(f, -1e8f, 1e8f))) - 1; };
+  auto hi = [](float f) { return int(std::ceil(std::clamp(f, -1e8f, 1e8f))) + 2; };  // exclusive
+  if (!(x_lo == x_lo) || !(y_lo == y_lo) || !(x_hi == x_hi) || !(y_hi == y_hi)) return Rect{};  // NaN
+  Rect r{std::max(lo(x_lo), bounds.x0), std::max(lo(y_lo), bounds.y0), std::min(hi(x_hi), bounds.x1),
+         std::min(hi(y_hi), bounds.y1)};
+  return r.Empty() ? Rect{} : r;
+}
+
+}  // namespace
+
+Rect TriangleBox(const WindowVertex& a, const WindowVertex& b, const WindowVertex& c, const Rect& bounds) {
+  return Box(std::min({a.win.x, b.win.x, c.win.x}), std::min({a.win.y, b.win.y, c.win.y}),
+             std::max({a.win.x, b.win.x, c.win.x}), std::max({a.win.y, b.win.y, c.win.y}), bounds);
+}
+
+Rect LineBox(const WindowVertex& a, const WindowVertex& b, const Rect& bounds) {
+  return Box(std::min(a.win.x, b.win.x), std::min(a.win.y, b.win.y), std::max(a.win.x, b.win.x),
+             std::max(a.win.y, b.win.y), bounds);
+}
+
+Rect PointBox(const WindowVertex& v, float size, const Rect& bounds) {
+  const float half = std::min(size, 1e6f) * 0.5f;
+  return Box(v.win.x - half, v.win.y - half, v.win.x + half, v.win.y + half, bounds);
+}
+
+}  // namespace softgl::detail

@@ -1,0 +1,79 @@
+// binner.h — binning: primitives after clipping, culling and the viewport transform are stored in window space
+// and sorted into the screen tiles they may touch, so that each tile can later be rasterized and shaded on its
+// own, by any thread, in primitive order.
+//
+// A draw is binned in batches of primitives (BinnedBatch), each batch by one thread; a tile's primitives are those
+// of its list in each batch, batches taken in order, which is the order the draw submitted them.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "types.h"
+
+namespace softgl::detail {
+
+/// Tile edge in pixels: a multiple of 2, so that no 2x2 quad straddles two tiles.
+inline constexpr int kTileSize = 64;
+
+/// The tiles covering a width x height render target, row by row from the bottom.
+struct TileGrid {
+  int width = 0, height = 0, cols = 0, rows = 0;
+  static TileGrid For(int width, int height);
+  int Count() const { return cols * rows; }
+  Rect TileRect(int tile) const;
+};
+
+enum class PrimitiveKind : std::uint8_t { kPoint = 1, kLine = 2, kTriangle = 3 };
+
+/// One primitive ready for the rasterizer; its vertices are `kind` WindowVertex values of 4 + nvar floats each,
+/// stored from BinnedBatch::vertices[first_float].
+struct BinnedPrimitive {
+  PrimitiveKind kind = PrimitiveKind::kTriangle;
+  bool front_facing = true;
+  float depth_offset = 0.0f;  // polygon offset
+  float point_size = 1.0f;
+  std::uint32_t first_float = 0;
+};
+
+/// The output of binning one batch of primitives.
+class BinnedBatch {
+ public:
+  /// Empties the batch for a draw with `nvar` floats of varyings per vertex.
+  void Reset(int nvar);
+  int nvar() const { return nvar_; }
+
+  /// Appends a primitive whose fragments all lie in `box` (pixels, half-open, already inside the draw's bounds)
+  /// and notes it in the list of every tile that box overlaps.
+  void Add(const BinnedPrimitive& prim, const WindowVertex* v, const Rect& box, const TileGrid& grid);
+  /// Sorts the notes into per-tile lists; call once, after the last Add.
+  void Finish(const TileGrid& grid);
+
+  const BinnedPrimitive& Primitive(std::uint32_t i) const { return prims_[i]; }
+  /// The primitives of `tile`, in order: [begin, end) of indices for Primitive().
+  const std::uint32_t* TileBegin(int tile) const { return entries_.data() + tile_start_[std::size_t(tile)]; }
+  const std::uint32_t* TileEnd(int tile) const { return entries_.data() + tile_start_[std::size_t(tile) + 1]; }
+  /// Vertex k of primitive p, copied out as a WindowVertex.
+  void Vertex(const BinnedPrimitive& p, int k, WindowVertex& out) const;
+
+  bool Empty() const { return prims_.empty(); }
+  /// Memory held, in bytes (what the context's recording budget counts).
+  std::size_t Bytes() const;
+
+ private:
+  int nvar_ = 0;
+  std::vector<BinnedPrimitive> prims_;
+  std::vector<float> vertices_;
+  std::vector<std::uint64_t> notes_;        // tile << 32 | primitive, in submission order
+  std::vector<std::uint32_t> tile_start_;   // [tiles + 1]: where each tile's list starts in entries_
+  std::vector<std::uint32_t> entries_;
+};
+
+/// The pixel box a primitive's fragments can fall in, from its window positions: the rounded-out bounding box
+/// (one pixel of margin for the fill rule's snapping), or for a point its square, cut to `bounds`.
+Rect TriangleBox(const WindowVertex& a, const WindowVertex& b, const WindowVertex& c, const Rect& bounds);
+Rect LineBox(const WindowVertex& a, const WindowVertex& b, const Rect& bounds);
+Rect PointBox(const WindowVertex& v, float size, const Rect& bounds);
+
+}  // namespace softgl::detail

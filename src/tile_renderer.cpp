@@ -1,0 +1,165 @@
+// tile_renderer.cpp — plays recorded clears and draws, one tile per job.
+#include "tile_renderer.h"
+
+#include <algorithm>
+#include <cstring>
+
+#include "rasterizer.h"
+
+namespace softgl::detail {
+
+DrawPacket& DrawPacket::operator=(const DrawPacket& other) {
+  if (this == &other) return *this;
+  snapshot = other.snapshot;
+  program = other.program;
+  ops = other.ops;
+  bounds = other.bounds;
+  nvar = other.nvar;
+  for (int k = 0; k < 2; ++k)
+    for (int u = 0; u < kMaxTextureUnits; ++u) views[k][u] = other.views[k][u];
+  for (int u = 0; u < kMaxTextureUnits; ++u) {
+    textures.unit_2d[u] = other.textures.unit_2d[u] ? &views[0][u] : nullptr;
+    textures.unit_cube[u] = other.textures.unit_cube[u] ? &views[1][u] : nullptr;
+  }
+  batches.clear();
+  return *this;
+}
+
+namespace {
+
+bool SameBuffers(const RenderTarget& a, const RenderTarget& b) {
+  if (a.width != b.width || a.height != b.height || a.depth != b.depth || a.depth_stride != b.depth_stride ||
+      a.depth_pitch != b.depth_pitch || a.stencil != b.stencil)
+    return false;
+  for (int i = 0; i < kMaxColorOutputs; ++i) {
+    const ColorBuffer &x = a.color[i], &y = b.color[i];
+    if (x.rgba8 != y.rgba8 || x.texels != y.texels || x.normalized != y.normalized ||
+        x.components != y.components || x.pitch != y.pitch)
+      return false;
+  }
+  return true;
+}
+
+Rect Intersect(const Rect& a, const Rect& b) {
+  return Rect{std::max(a.x0, b.x0), std::max(a.y0, b.y0), std::min(a.x1, b.x1), std::min(a.y1, b.y1)};
+}
+
+// The fragment shader, then the per-fragment operations, on a full batch of quads.
+struct FragmentStage {
+  const DrawPacket* draw;
+  const RenderTarget* target;
+
+  static void Run(void* user, QuadBuffer& quads) {
+    const auto* self = static_cast<const FragmentStage*>(user);
+    QuadBatch batch;
+    batch.count = quads.count;
+    batch.varyings = quads.varyings;
+    batch.frag_coord = quads.frag_coord;
+    batch.front_facing = quads.front_facing;
+    batch.out = quads.out;
+    batch.live = quads.live;
+    batch.textures = &self->draw->textures;
+    self->draw->program->ShadeQuads(batch);
+    ApplyFragmentOps(self->draw->ops, quads, *self->target);
+  }
+};
+
+}  // namespace
+
+bool Frame::Accepts(const RenderTarget& target) const { return Empty() || SameBuffers(target, target_); }
+
+void Frame::Begin(const RenderTarget& target) {
+  if (!Empty()) return;
+  target_ = target;
+  grid_ = TileGrid::For(target.width, target.height);
+}
+
+void Frame::AddClear(const RenderTarget& target, const ClearPacket& clear) {
+  Begin(target);
+  clears_.push_back(clear);
+  commands_.push_back(Command{false, clears_.size() - 1});
+}
+
+DrawPacket& Frame::AddDraw(const RenderTarget& target, const DrawPacket& proto) {
+  Begin(target);
+  draws_.push_back(std::make_unique<DrawPacket>(proto));
+  commands_.push_back(Command{true, draws_.size() - 1});
+  return *draws_.back();
+}
+
+BinnedBatch& Frame::NewBatch(int nvar) {
+  if (batches_used_ == batches_.size()) batches_.push_back(std::make_unique<BinnedBatch>());
+  BinnedBatch& b = *batches_[batches_used_++];
+  b.Reset(nvar);
+  return b;
+}
+
+std::size_t Frame::Bytes() const {
+  std::size_t n = 0;
+  for (std::size_t i = 0; i < batches_used_; ++i) n += batches_[i]->Bytes();
+  return n;
+}
+
+void Frame::Reset() {
+  commands_.clear();
+  draws_.clear();
+  clears_.clear();
+  // Keep the batches' memory for the next frame, but not an unusually large amount of it.
+  for (std::size_t i = 0; i < batches_.size(); ++i) {
+    batches_[i]->Reset(0);
+    if (batches_[i]->Bytes() > (std::size_t(8) << 20)) batches_[i] = std::make_unique<BinnedBatch>();
+  }
+  batches_used_ = 0;
+}
+
+void Frame::RenderTile(int tile, TileScratch& scratch) const {
+  const Rect rect = grid_.TileRect(tile);
+  QuadBuffer& quads = *scratch.quads;
+  WindowVertex v[3];
+  for (const Command& c : commands_) {
+    if (!c.draw) {
+      const ClearPacket& clear = clears_[c.index];
+      const Rect r = Intersect(clear.area, rect);
+      if (r.Empty()) continue;
+      if (clear.color) target_.ClearColor(r, clear.color_value, clear.color_mask);
+      if (clear.depth) target_.ClearDepth(r, clear.depth_value);
+      if (clear.stencil) target_.ClearStencil(r, clear.stencil_value, clear.stencil_mask);
+      continue;
+    }
+    const DrawPacket& draw = *draws_[c.index];
+    RasterTarget rt;
+    rt.bounds = Intersect(draw.bounds, rect);
+    rt.nvar = draw.nvar;
+    if (rt.bounds.Empty()) continue;
+    FragmentStage stage{&draw, &target_};
+    const QuadSink sink{&FragmentStage::Run, &stage};
+    quads.count = 0;
+    for (const BinnedBatch* batch : draw.batches) {
+      for (const std::uint32_t* e = batch->TileBegin(tile); e != batch->TileEnd(tile); ++e) {
+        const BinnedPrimitive& p = batch->Primitive(*e);
+        for (int k = 0; k < int(p.kind); ++k) batch->Vertex(p, k, v[k]);
+        rt.depth_offset = p.depth_offset;
+        switch (p.kind) {
+          case PrimitiveKind::kTriangle: RasterizeTriangle(v[0], v[1], v[2], p.front_facing, rt, quads, sink); break;
+          case PrimitiveKind::kLine: RasterizeLine(v[0], v[1], p.front_facing, rt, quads, sink); break;
+          case PrimitiveKind::kPoint: RasterizePoint(v[0], p.point_size, p.front_facing, rt, quads, sink); break;
+        }
+      }
+    }
+    sink.Flush(quads);
+  }
+}
+
+void Frame::Render(WorkerPool& pool, std::vector<TileScratch>& scratch) {
+  if (Empty()) return;
+  if (scratch.size() < std::size_t(pool.Threads())) scratch.resize(std::size_t(pool.Threads()));
+  try {
+    pool.Run(grid_.Count(), [&](int tile, int worker) { RenderTile(tile, scratch[std::size_t(worker)]); });
+  } catch (...) {
+    Reset();
+    throw;
+  }
+  Reset();
+}
+
+}  // namespace softgl::detail

@@ -1,0 +1,90 @@
+// worker_pool.cpp — a fixed pool of threads that share the jobs of one Run at a time.
+#include "worker_pool.h"
+
+#include <algorithm>
+#include <cstdlib>
+#include <exception>
+
+namespace softgl::detail {
+
+int DefaultThreadCount() {
+  if (const char* env = std::getenv("SOFTGL_THREADS")) {
+    char* end = nullptr;
+    const long n = std::strtol(env, &end, 10);
+    if (end != env && *end == '\0' && n >= 1 && n <= 256) return int(n);
+  }
+  return int(std::max(1u, std::thread::hardware_concurrency()));
+}
+
+WorkerPool::WorkerPool(int threads) : threads_(std::clamp(threads, 1, 256)) {
+  workers_.reserve(std::size_t(threads_ - 1));
+  try {
+    for (int w = 1; w < threads_; ++w) workers_.emplace_back([this, w] { Work(w); });
+  } catch (...) {  // fewer threads than asked for (the system refused more): run with those there are
+    threads_ = int(workers_.size()) + 1;
+  }
+}
+
+WorkerPool::~WorkerPool() {
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    stop_ = true;
+  }
+  wake_.notify_all();
+  for (std::thread& t : workers_) t.join();
+}
+
+void WorkerPool::Drain(int worker) {
+  for (int job = next_.fetch_add(1); job < jobs_; job = next_.fetch_add(1)) {
+    if (failed_.load(std::memory_order_relaxed)) continue;
+    try {
+      (*fn_)(job, worker);
+    } catch (...) {
+      std::lock_guard<std::mutex> lock(mutex_);
+      if (!error_) error_ = std::current_exception();
+      failed_ = true;
+    }
+  }
+}
+
+void WorkerPool::Work(int worker) {
+  std::uint64_t seen = 0;
+  for (;;) {
+    {
+      std::unique_lock<std::mutex> lock(mutex_);
+      wake_.wait(lock, [&] { return stop_ || generation_ != seen; });
+      if (stop_) return;
+      seen = generation_;
+    }
+    Drain(worker);
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      if (--busy_ == 0) done_.notify_one();
+    }
+  }
+}
+
+void WorkerPool::Run(int jobs, const std::function<void(int, int)>& fn) {
+  if (jobs <= 0) return;
+  fn_ = &fn;
+  jobs_ = jobs;
+  next_ = 0;
+  failed_ = false;
+  error_ = nullptr;
+  const bool spread = !workers_.empty() && jobs > 1;
+  if (spread) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    busy_ = int(workers_.size());
+    ++generation_;
+  }
+  if (spread) wake_.notify_all();
+  Drain(0);
+  if (spread) {
+    std::unique_lock<std::mutex> lock(mutex_);
+    done_.wait(lock, [&] { return busy_ == 0; });
+  }
+  fn_ = nullptr;
+  if (error_) std::rethrow_exception(error_);
+}
+
+}  // namespace softgl::detail

@@ -1,0 +1,55 @@
+// worker_pool.h — the fixed set of threads that run the parallel parts of the pipeline (vertex shading, primitive
+// processing and binning in batches, then one screen tile per job).
+//
+// Run(jobs, fn) calls fn(job, worker) once for every job in [0, jobs), on the calling thread (worker 0) and the
+// pool's threads (workers 1 .. Threads()-1), and returns when all have finished. Jobs are handed out in order but
+// run concurrently, so fn must write only what its job owns; `worker` indexes per-thread scratch memory.
+#pragma once
+
+#include <atomic>
+#include <condition_variable>
+#include <functional>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+namespace softgl::detail {
+
+/// The thread count a context uses when none is asked for: SOFTGL_THREADS from the environment when it holds a
+/// number from 1 to 256, else the number of hardware threads (at least 1).
+int DefaultThreadCount();
+
+class WorkerPool {
+ public:
+  /// A pool of `threads` threads in all, the calling thread included (clamped to 1 .. 256).
+  explicit WorkerPool(int threads);
+  ~WorkerPool();
+  WorkerPool(const WorkerPool&) = delete;
+  WorkerPool& operator=(const WorkerPool&) = delete;
+
+  int Threads() const { return threads_; }
+
+  /// Runs fn(job, worker) for every job; an exception thrown by fn is caught and rethrown here (the first one)
+  /// after every job has finished or been skipped.
+  void Run(int jobs, const std::function<void(int job, int worker)>& fn);
+
+ private:
+  void Work(int worker);
+  void Drain(int worker);
+
+  int threads_ = 1;
+  std::vector<std::thread> workers_;
+  std::mutex mutex_;
+  std::condition_variable wake_, done_;
+  std::uint64_t generation_ = 0;
+  bool stop_ = false;
+  int busy_ = 0;  // workers still inside the current generation
+  // The current run.
+  const std::function<void(int, int)>* fn_ = nullptr;
+  int jobs_ = 0;
+  std::atomic<int> next_{0};
+  std::atomic<bool> failed_{false};
+  std::exception_ptr error_;
+};
+
+}  // namespace softgl::detail
