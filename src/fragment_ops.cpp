@@ -3,6 +3,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 namespace softgl::detail {
 
@@ -79,12 +84,123 @@ glm::vec4 Blend(const BlendState& state, const glm::vec4& src, const glm::vec4& 
   return out;
 }
 
+namespace {
+
+// Blending and storing into an 8-bit RGBA buffer, one pixel's four channels at a time. Every operation is the one
+// Blend(), ColorBuffer::Load/Store and FloatToUnorm8 do per channel, in the same order, so the bytes written are
+// the same; a factor is evaluated as k0 + k1 * v (v a source, destination or constant vector, k1 in {-1, 0, 1}),
+// which is exact.
+struct Unorm8Blender {
+  enum Source { kNone, kSrc, kDst, kSrcAlpha, kDstAlpha, kConst, kConstAlpha };
+  struct Term {
+    float k0 = 0.0f, k1 = 0.0f;
+    Source source = kNone;
+  };
+  bool blend = false;
+  bool usable = true;  // false for SRC_ALPHA_SATURATE: the generic path then runs
+  Term src_rgb, dst_rgb, src_a, dst_a;
+  Enum eq_rgb = FUNC_ADD, eq_a = FUNC_ADD;
+  glm::vec4 constant{0.0f};
+  std::uint32_t keep = 0;  // bytes of the stored pixel the colour mask keeps
+
+  static Term TermOf(Enum f, bool& usable) {
+    switch (f) {
+      case ZERO: return {0.0f, 0.0f, kNone};
+      case ONE: return {1.0f, 0.0f, kNone};
+      case SRC_COLOR: return {0.0f, 1.0f, kSrc};
+      case ONE_MINUS_SRC_COLOR: return {1.0f, -1.0f, kSrc};
+      case DST_COLOR: return {0.0f, 1.0f, kDst};
+      case ONE_MINUS_DST_COLOR: return {1.0f, -1.0f, kDst};
+      case SRC_ALPHA: return {0.0f, 1.0f, kSrcAlpha};
+      case ONE_MINUS_SRC_ALPHA: return {1.0f, -1.0f, kSrcAlpha};
+      case DST_ALPHA: return {0.0f, 1.0f, kDstAlpha};
+      case ONE_MINUS_DST_ALPHA: return {1.0f, -1.0f, kDstAlpha};
+      case CONSTANT_COLOR: return {0.0f, 1.0f, kConst};
+      case ONE_MINUS_CONSTANT_COLOR: return {1.0f, -1.0f, kConst};
+      case CONSTANT_ALPHA: return {0.0f, 1.0f, kConstAlpha};
+      case ONE_MINUS_CONSTANT_ALPHA: return {1.0f, -1.0f, kConstAlpha};
+      default: usable = false; return {};
+    }
+  }
+
+  explicit Unorm8Blender(const FragmentOpsState& state) {
+    blend = state.blend.enabled;
+    for (int c = 0; c < 4; ++c)
+      if (!state.color_mask[c]) keep |= 0xFFu << (8 * c);
+    if (!blend) return;
+    src_rgb = TermOf(state.blend.src_rgb, usable);
+    dst_rgb = TermOf(state.blend.dst_rgb, usable);
+    src_a = TermOf(state.blend.src_alpha, usable);
+    dst_a = TermOf(state.blend.dst_alpha, usable);
+    eq_rgb = state.blend.eq_rgb;
+    eq_a = state.blend.eq_alpha;
+    constant = glm::clamp(state.blend.color, 0.0f, 1.0f);
+  }
+
+#if defined(__SSE2__)
+  static __m128 Pick(Source source, __m128 s, __m128 d, __m128 c) {
+    switch (source) {
+      case kSrc: return s;
+      case kDst: return d;
+      case kSrcAlpha: return _mm_shuffle_ps(s, s, _MM_SHUFFLE(3, 3, 3, 3));
+      case kDstAlpha: return _mm_shuffle_ps(d, d, _MM_SHUFFLE(3, 3, 3, 3));
+      case kConst: return c;
+      case kConstAlpha: return _mm_shuffle_ps(c, c, _MM_SHUFFLE(3, 3, 3, 3));
+      default: return _mm_setzero_ps();
+    }
+  }
+  static __m128 Factor(const Term& t, __m128 s, __m128 d, __m128 c) {
+    return _mm_add_ps(_mm_set1_ps(t.k0), _mm_mul_ps(_mm_set1_ps(t.k1), Pick(t.source, s, d, c)));
+  }
+  static __m128 Equation(Enum eq, __m128 s, __m128 sf, __m128 d, __m128 df) {
+    switch (eq) {
+      case FUNC_SUBTRACT: return _mm_sub_ps(_mm_mul_ps(s, sf), _mm_mul_ps(d, df));
+      case FUNC_REVERSE_SUBTRACT: return _mm_sub_ps(_mm_mul_ps(d, df), _mm_mul_ps(s, sf));
+      case MIN: return _mm_min_ps(d, s);
+      case MAX: return _mm_max_ps(d, s);
+      default: return _mm_add_ps(_mm_mul_ps(s, sf), _mm_mul_ps(d, df));
+    }
+  }
+
+  // Writes fragment colour `color` at `p` (4 bytes), blended with what is there.
+  void Store(const glm::vec4& color, std::uint8_t* p) const {
+    const __m128 zero = _mm_setzero_ps(), one = _mm_set1_ps(1.0f), scale = _mm_set1_ps(255.0f);
+    __m128 s = _mm_loadu_ps(&color.x);
+    s = _mm_and_ps(s, _mm_cmpord_ps(s, s));  // NaN -> 0
+    s = _mm_min_ps(_mm_max_ps(s, zero), one);
+    std::uint32_t old;
+    std::memcpy(&old, p, 4);
+    if (blend) {
+      const __m128i bytes = _mm_unpacklo_epi16(_mm_unpacklo_epi8(_mm_cvtsi32_si128(int(old)), _mm_setzero_si128()),
+                                               _mm_setzero_si128());
+      const __m128 d = _mm_div_ps(_mm_cvtepi32_ps(bytes), scale);
+      const __m128 c = _mm_loadu_ps(&constant.x);
+      const __m128 rgb = Equation(eq_rgb, s, Factor(src_rgb, s, d, c), d, Factor(dst_rgb, s, d, c));
+      const __m128 a = Equation(eq_a, s, Factor(src_a, s, d, c), d, Factor(dst_a, s, d, c));
+      const __m128 alpha_lane = _mm_castsi128_ps(_mm_set_epi32(-1, 0, 0, 0));
+      s = _mm_or_ps(_mm_andnot_ps(alpha_lane, rgb), _mm_and_ps(alpha_lane, a));
+      s = _mm_min_ps(_mm_max_ps(s, zero), one);  // FloatToUnorm8's clamp (NaN -> 0)
+    }
+    const __m128i v = _mm_cvtps_epi32(_mm_mul_ps(s, scale));  // round to nearest even, as lrint
+    const __m128i packed = _mm_packus_epi16(_mm_packs_epi32(v, v), _mm_setzero_si128());
+    const auto bytes = std::uint32_t(_mm_cvtsi128_si32(packed));
+    const std::uint32_t out = (old & keep) | (bytes & ~keep);
+    std::memcpy(p, &out, 4);
+  }
+#endif
+};
+
+}  // namespace
+
 void ApplyFragmentOps(const FragmentOpsState& state, const QuadBuffer& quads, const RenderTarget& target) {
   const StencilFace& face = quads.front_facing ? state.front : state.back;
   // Without a depth or stencil buffer the test passes and nothing is written (OpenGL 4.6, 17.3.5 and 17.3.6).
   const bool stencil_test = state.stencil_test && target.stencil != nullptr;
   const bool depth_test = state.depth_test && target.depth != nullptr;
   const bool any_color = state.color_mask[0] || state.color_mask[1] || state.color_mask[2] || state.color_mask[3];
+#if defined(__SSE2__)
+  const Unorm8Blender unorm8(state);
+#endif
   for (int q = 0; q < quads.count; ++q) {
     for (int lane = 0; lane < 4; ++lane) {
       const int l = q * 4 + lane;
@@ -111,6 +227,12 @@ void ApplyFragmentOps(const FragmentOpsState& state, const QuadBuffer& quads, co
       for (int o = 0; o < kMaxColorOutputs; ++o) {
         const ColorBuffer& cb = target.color[o];
         if (!cb.Present()) continue;
+#if defined(__SSE2__)
+        if (cb.rgba8 && unorm8.usable) {
+          unorm8.Store(out.color[o], cb.rgba8 + cb.Index(x, y) * 4);
+          continue;
+        }
+#endif
         glm::vec4 color = out.color[o];
         for (int c = 0; c < 4; ++c)
           if (std::isnan(color[c])) color[c] = 0.0f;
