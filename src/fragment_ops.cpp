@@ -135,22 +135,38 @@ struct Unorm8Blender {
     eq_rgb = state.blend.eq_rgb;
     eq_a = state.blend.eq_alpha;
     constant = glm::clamp(state.blend.color, 0.0f, 1.0f);
+#if defined(__SSE2__)
+    Prepare();
+#endif
   }
 
 #if defined(__SSE2__)
-  static __m128 Pick(Source source, __m128 s, __m128 d, __m128 c) {
-    switch (source) {
-      case kSrc: return s;
-      case kDst: return d;
-      case kSrcAlpha: return _mm_shuffle_ps(s, s, _MM_SHUFFLE(3, 3, 3, 3));
-      case kDstAlpha: return _mm_shuffle_ps(d, d, _MM_SHUFFLE(3, 3, 3, 3));
-      case kConst: return c;
-      case kConstAlpha: return _mm_shuffle_ps(c, c, _MM_SHUFFLE(3, 3, 3, 3));
-      default: return _mm_setzero_ps();
-    }
+  // Per channel (r, g, b from the rgb state, a from the alpha state): factor = k0 + k1 * source, and for the
+  // equations ADD, SUBTRACT and REVERSE_SUBTRACT, result = ks * (s * sf) + kd * (d * df) with ks, kd = +-1.
+  __m128 sk0, sk1, dk0, dk1, ks, kd;
+  int src_pick[2], dst_pick[2];  // [rgb, alpha]: index into the source vectors
+  bool min_max = false;          // MIN or MAX in either equation: the generic equations run
+
+  void Prepare() {
+    sk0 = _mm_setr_ps(src_rgb.k0, src_rgb.k0, src_rgb.k0, src_a.k0);
+    sk1 = _mm_setr_ps(src_rgb.k1, src_rgb.k1, src_rgb.k1, src_a.k1);
+    dk0 = _mm_setr_ps(dst_rgb.k0, dst_rgb.k0, dst_rgb.k0, dst_a.k0);
+    dk1 = _mm_setr_ps(dst_rgb.k1, dst_rgb.k1, dst_rgb.k1, dst_a.k1);
+    auto sign_s = [](Enum eq) { return eq == FUNC_REVERSE_SUBTRACT ? -1.0f : 1.0f; };
+    auto sign_d = [](Enum eq) { return eq == FUNC_SUBTRACT ? -1.0f : 1.0f; };
+    ks = _mm_setr_ps(sign_s(eq_rgb), sign_s(eq_rgb), sign_s(eq_rgb), sign_s(eq_a));
+    kd = _mm_setr_ps(sign_d(eq_rgb), sign_d(eq_rgb), sign_d(eq_rgb), sign_d(eq_a));
+    src_pick[0] = src_rgb.source;
+    src_pick[1] = src_a.source;
+    dst_pick[0] = dst_rgb.source;
+    dst_pick[1] = dst_a.source;
+    min_max = eq_rgb == MIN || eq_rgb == MAX || eq_a == MIN || eq_a == MAX;
   }
-  static __m128 Factor(const Term& t, __m128 s, __m128 d, __m128 c) {
-    return _mm_add_ps(_mm_set1_ps(t.k0), _mm_mul_ps(_mm_set1_ps(t.k1), Pick(t.source, s, d, c)));
+
+  static __m128 Alpha(__m128 v) { return _mm_shuffle_ps(v, v, _MM_SHUFFLE(3, 3, 3, 3)); }
+  static __m128 RgbA(__m128 rgb, __m128 a) {  // (rgb.r, rgb.g, rgb.b, a.a)
+    const __m128 alpha_lane = _mm_castsi128_ps(_mm_setr_epi32(0, 0, 0, -1));
+    return _mm_or_ps(_mm_andnot_ps(alpha_lane, rgb), _mm_and_ps(alpha_lane, a));
   }
   static __m128 Equation(Enum eq, __m128 s, __m128 sf, __m128 d, __m128 df) {
     switch (eq) {
@@ -175,10 +191,14 @@ struct Unorm8Blender {
                                                _mm_setzero_si128());
       const __m128 d = _mm_div_ps(_mm_cvtepi32_ps(bytes), scale);
       const __m128 c = _mm_loadu_ps(&constant.x);
-      const __m128 rgb = Equation(eq_rgb, s, Factor(src_rgb, s, d, c), d, Factor(dst_rgb, s, d, c));
-      const __m128 a = Equation(eq_a, s, Factor(src_a, s, d, c), d, Factor(dst_a, s, d, c));
-      const __m128 alpha_lane = _mm_castsi128_ps(_mm_set_epi32(-1, 0, 0, 0));
-      s = _mm_or_ps(_mm_andnot_ps(alpha_lane, rgb), _mm_and_ps(alpha_lane, a));
+      const __m128 sources[7] = {zero, s, d, Alpha(s), Alpha(d), c, Alpha(c)};  // indexed by Source
+      const __m128 sf = _mm_add_ps(sk0, _mm_mul_ps(sk1, RgbA(sources[src_pick[0]], sources[src_pick[1]])));
+      const __m128 df = _mm_add_ps(dk0, _mm_mul_ps(dk1, RgbA(sources[dst_pick[0]], sources[dst_pick[1]])));
+      if (!min_max) {
+        s = _mm_add_ps(_mm_mul_ps(ks, _mm_mul_ps(s, sf)), _mm_mul_ps(kd, _mm_mul_ps(d, df)));
+      } else {
+        s = RgbA(Equation(eq_rgb, s, sf, d, df), Equation(eq_a, s, sf, d, df));
+      }
       s = _mm_min_ps(_mm_max_ps(s, zero), one);  // FloatToUnorm8's clamp (NaN -> 0)
     }
     const __m128i v = _mm_cvtps_epi32(_mm_mul_ps(s, scale));  // round to nearest even, as lrint
@@ -200,6 +220,29 @@ void ApplyFragmentOps(const FragmentOpsState& state, const QuadBuffer& quads, co
   const bool any_color = state.color_mask[0] || state.color_mask[1] || state.color_mask[2] || state.color_mask[3];
 #if defined(__SSE2__)
   const Unorm8Blender unorm8(state);
+#endif
+#if defined(__SSE2__)
+  // The common case, in a loop of its own: one 8-bit colour buffer, no stencil test.
+  const ColorBuffer& cb0 = target.color[0];
+  if (unorm8.usable && !stencil_test && any_color && cb0.rgba8 && !target.color[1].Present() &&
+      !target.color[2].Present() && !target.color[3].Present()) {
+    for (int q = 0; q < quads.count; ++q) {
+      for (int lane = 0; lane < 4; ++lane) {
+        const int l = q * 4 + lane;
+        if (!quads.live[l]) continue;
+        const int x = quads.qx[q] + (lane & 1), y = quads.qy[q] + (lane >> 1);
+        const FragmentOut& out = quads.out[l];
+        if (depth_test) {
+          const float z = std::clamp(out.depth, 0.0f, 1.0f);
+          float& stored = target.Depth(x, y);
+          if (std::isnan(out.depth) || !DepthTest(state.depth_func, z, stored)) continue;
+          if (state.depth_write) stored = z;
+        }
+        unorm8.Store(out.color[0], cb0.rgba8 + cb0.Index(x, y) * 4);
+      }
+    }
+    return;
+  }
 #endif
   for (int q = 0; q < quads.count; ++q) {
     for (int lane = 0; lane < 4; ++lane) {
