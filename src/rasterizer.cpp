@@ -6,6 +6,11 @@
 #include <cstdint>
 #include <utility>
 
+#if defined(__SSE2__)
+#include <xmmintrin.h>
+#include <emmintrin.h>
+#endif
+
 namespace softgl::detail {
 
 namespace {
@@ -52,6 +57,60 @@ unsigned BoundsMask(const Rect& bounds, int qx, int qy) {
 struct Plane {
   float a0, dx, dy;
   float At(float x, float y) const { return a0 + dx * x + dy * y; }
+};
+
+// gl_FragCoord and perspective-correct varyings for the four lanes of a quad, every lane (helpers included):
+// with r = pixel centre - vertex 0, q = 1/w = oow(r), varying = plane(r) / q. The four lanes are computed side
+// by side with the same operations in the same order as one lane at a time.
+struct QuadInterpolator {
+  float x0, y0;
+  Plane z, oow;
+  const Plane* var;
+  int nvar;
+
+  void Quad(int qx, int qy, glm::vec4* frag, float* out) const {
+#if defined(__SSE2__)
+    const __m128 fx = _mm_add_ps(_mm_setr_ps(float(qx), float(qx + 1), float(qx), float(qx + 1)), _mm_set1_ps(0.5f));
+    const __m128 fy = _mm_add_ps(_mm_setr_ps(float(qy), float(qy), float(qy + 1), float(qy + 1)), _mm_set1_ps(0.5f));
+    const __m128 rx = _mm_sub_ps(fx, _mm_set1_ps(x0)), ry = _mm_sub_ps(fy, _mm_set1_ps(y0));
+    auto at = [&](const Plane& p) {
+      return _mm_add_ps(_mm_add_ps(_mm_set1_ps(p.a0), _mm_mul_ps(_mm_set1_ps(p.dx), rx)),
+                        _mm_mul_ps(_mm_set1_ps(p.dy), ry));
+    };
+    const __m128 q = at(oow);
+    const __m128 w = _mm_div_ps(_mm_set1_ps(1.0f), q);
+    __m128 c0 = fx, c1 = fy, c2 = at(z), c3 = q;
+    _MM_TRANSPOSE4_PS(c0, c1, c2, c3);
+    _mm_storeu_ps(&frag[0].x, c0);
+    _mm_storeu_ps(&frag[1].x, c1);
+    _mm_storeu_ps(&frag[2].x, c2);
+    _mm_storeu_ps(&frag[3].x, c3);
+    int i = 0;
+    for (; i + 4 <= nvar; i += 4) {
+      __m128 v0 = _mm_mul_ps(at(var[i]), w), v1 = _mm_mul_ps(at(var[i + 1]), w);
+      __m128 v2 = _mm_mul_ps(at(var[i + 2]), w), v3 = _mm_mul_ps(at(var[i + 3]), w);
+      _MM_TRANSPOSE4_PS(v0, v1, v2, v3);  // now lane-major
+      _mm_storeu_ps(out + i, v0);
+      _mm_storeu_ps(out + nvar + i, v1);
+      _mm_storeu_ps(out + 2 * nvar + i, v2);
+      _mm_storeu_ps(out + 3 * nvar + i, v3);
+    }
+    for (; i < nvar; ++i) {
+      alignas(16) float lanes[4];
+      _mm_store_ps(lanes, _mm_mul_ps(at(var[i]), w));
+      for (int lane = 0; lane < 4; ++lane) out[lane * nvar + i] = lanes[lane];
+    }
+#else
+    for (int lane = 0; lane < 4; ++lane) {
+      const float fx = float(qx + (lane & 1)) + 0.5f, fy = float(qy + (lane >> 1)) + 0.5f;
+      const float rx = fx - x0, ry = fy - y0;
+      const float q = oow.At(rx, ry);
+      const float w = 1.0f / q;
+      frag[lane] = glm::vec4(fx, fy, z.At(rx, ry), q);
+      for (int i = 0; i < nvar; ++i) out[lane * nvar + i] = var[i].At(rx, ry) * w;
+    }
+#endif
+  }
 };
 
 }  // namespace
@@ -139,26 +198,62 @@ void RasterizeTriangle(const WindowVertex& v0, const WindowVertex& v1, const Win
   Plane var[kMaxVaryingFloats];
   for (int i = 0; i < nvar; ++i) var[i] = make_plane(v[0]->var[i], v[1]->var[i], v[2]->var[i]);
 
-  auto eval = [&](int px, int py, glm::vec4& frag, float* out) {
-    const float fx = float(px) + 0.5f, fy = float(py) + 0.5f;
-    const float rx = fx - x0, ry = fy - y0;
-    const float q = oow.At(rx, ry);
-    const float w = 1.0f / q;
-    frag = glm::vec4(fx, fy, z.At(rx, ry), q);
-    for (int i = 0; i < nvar; ++i) out[i] = var[i].At(rx, ry) * w;
+  // Hierarchical traversal: 8x8 pixel blocks first. An edge function is linear, so over a block it is largest and
+  // smallest at the block's corner pixel centres: a block some edge excludes at all four corners is skipped, a
+  // block every edge includes at all four corners is covered whole, and only the others are tested per pixel,
+  // from edge values stepped incrementally across the block. Every pixel's coverage is the same exact integer
+  // test as a pixel-by-pixel walk; quads come out block by block (each pixel of a triangle once, so the order
+  // does not change the image).
+  constexpr int kBlock = 8;
+  std::int64_t step_x[3], step_y[3];  // E(px + 1) - E(px), E(py + 1) - E(py)
+  for (int e = 0; e < 3; ++e) {
+    step_x[e] = A[e] * kOne;
+    step_y[e] = B[e] * kOne;
+  }
+  auto edge_at = [&](int e, std::int64_t px, std::int64_t py) {
+    return A[e] * (px * kOne + kHalf) + B[e] * (py * kOne + kHalf) + C[e];
   };
-
-  for (std::int64_t qy = py0 & ~std::int64_t(1); qy <= py1; qy += 2) {
-    for (std::int64_t qx = px0 & ~std::int64_t(1); qx <= px1; qx += 2) {
-      unsigned mask = 0;
-      for (int lane = 0; lane < 4; ++lane) {
-        const std::int64_t cx = (qx + (lane & 1)) * kOne + kHalf, cy = (qy + (lane >> 1)) * kOne + kHalf;
-        bool inside = true;
-        for (int e = 0; e < 3; ++e) inside = inside && A[e] * cx + B[e] * cy + C[e] >= 0;
-        if (inside) mask |= 1u << lane;
+  const Rect& bounds = target.bounds;
+  QuadInterpolator interp{x0, y0, z, oow, var, nvar};
+  for (std::int64_t by = py0 & ~std::int64_t(kBlock - 1); by <= py1; by += kBlock) {
+    for (std::int64_t bx = px0 & ~std::int64_t(kBlock - 1); bx <= px1; bx += kBlock) {
+      bool skip = false, whole = true;
+      for (int e = 0; e < 3 && !skip; ++e) {
+        const std::int64_t c00 = edge_at(e, bx, by), dx = step_x[e] * (kBlock - 1), dy = step_y[e] * (kBlock - 1);
+        const std::int64_t lo = std::min({c00, c00 + dx, c00 + dy, c00 + dx + dy});
+        const std::int64_t hi = std::max({c00, c00 + dx, c00 + dy, c00 + dx + dy});
+        if (hi < 0) skip = true;
+        if (lo < 0) whole = false;
       }
-      mask &= BoundsMask(target.bounds, int(qx), int(qy));
-      if (mask) EmitQuad(quads, sink, front_facing, nvar, int(qx), int(qy), mask, eval);
+      if (skip) continue;
+      const std::int64_t qy0 = std::max(by, py0 & ~std::int64_t(1)), qy1 = std::min(by + kBlock - 1, py1);
+      const std::int64_t qx0 = std::max(bx, px0 & ~std::int64_t(1)), qx1 = std::min(bx + kBlock - 1, px1);
+      for (std::int64_t qy = qy0; qy <= qy1; qy += 2) {
+        std::int64_t row[3];
+        for (int e = 0; e < 3; ++e) row[e] = edge_at(e, qx0, qy);
+        for (std::int64_t qx = qx0; qx <= qx1; qx += 2) {
+          unsigned mask = 0xFu;
+          if (!whole) {
+            mask = 0;
+            for (int lane = 0; lane < 4; ++lane) {
+              bool inside = true;
+              for (int e = 0; e < 3; ++e)
+                inside = inside && row[e] + (lane & 1) * step_x[e] + (lane >> 1) * step_y[e] >= 0;
+              if (inside) mask |= 1u << lane;
+            }
+            for (int e = 0; e < 3; ++e) row[e] += 2 * step_x[e];
+          }
+          if (qx < bounds.x0 || qx + 1 >= bounds.x1 || qy < bounds.y0 || qy + 1 >= bounds.y1)
+            mask &= BoundsMask(bounds, int(qx), int(qy));
+          if (!mask) continue;
+          Reserve(quads, sink, front_facing, nvar);
+          const int q = quads.count++;
+          quads.qx[q] = int(qx);
+          quads.qy[q] = int(qy);
+          for (int lane = 0; lane < 4; ++lane) quads.live[q * 4 + lane] = (mask >> lane) & 1u;
+          interp.Quad(int(qx), int(qy), quads.frag_coord + q * 4, quads.varyings + std::size_t(q) * 4 * nvar);
+        }
+      }
     }
   }
 }
