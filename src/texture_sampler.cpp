@@ -2,6 +2,12 @@
 // LINEAR filtering, wrap modes, cube map faces and depth comparison (OpenGL 4.6, sections 8.13 to 8.14, 8.22).
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
+
+#if defined(__SSE2__)
+#include <xmmintrin.h>
+#endif
 
 #include <softgl/texture.h>
 
@@ -56,11 +62,48 @@ glm::vec4 Fetch(const SamplerParams& p, const TextureLevel& level, long i, long 
   return t;
 }
 
+// Wrap() for REPEAT and CLAMP_TO_EDGE without a division where the size allows; the same results.
+inline int WrapFast(Enum mode, long i, int size) {
+  if (mode == REPEAT && (size & (size - 1)) == 0) return int(i & long(size - 1));
+  if (mode == CLAMP_TO_EDGE) return int(i < 0 ? 0 : (i >= size ? size - 1 : i));
+  return Wrap(mode, i, size);
+}
+
+// LINEAR on one level without depth comparison: each of the two wrapped columns and rows is computed once, and
+// the weighted sum is taken four channels at a time, with the same operations in the same order as the generic
+// path below.
+glm::vec4 Bilinear(const SamplerParams& p, const TextureLevel& level, float u, float v) {
+  const float fu = u - 0.5f, fv = v - 0.5f;
+  const long i0 = long(std::floor(fu)), j0 = long(std::floor(fv));
+  const float a = fu - float(i0), b = fv - float(j0);
+  const int wi[2] = {WrapFast(p.wrap_s, i0, level.width), WrapFast(p.wrap_s, i0 + 1, level.width)};
+  const int wj[2] = {WrapFast(p.wrap_t, j0, level.height), WrapFast(p.wrap_t, j0 + 1, level.height)};
+  const float* t[4];
+  for (int k = 0; k < 4; ++k) {
+    const int i = wi[k & 1], j = wj[k >> 1];
+    t[k] = (i >= 0 && j >= 0) ? level.At(i, j) : &p.border.x;
+  }
+  const float w00 = (1 - a) * (1 - b), w10 = a * (1 - b), w01 = (1 - a) * b, w11 = a * b;
+#if defined(__SSE2__)
+  __m128 sum = _mm_mul_ps(_mm_set1_ps(w00), _mm_loadu_ps(t[0]));
+  sum = _mm_add_ps(sum, _mm_mul_ps(_mm_set1_ps(w10), _mm_loadu_ps(t[1])));
+  sum = _mm_add_ps(sum, _mm_mul_ps(_mm_set1_ps(w01), _mm_loadu_ps(t[2])));
+  sum = _mm_add_ps(sum, _mm_mul_ps(_mm_set1_ps(w11), _mm_loadu_ps(t[3])));
+  glm::vec4 out;
+  _mm_storeu_ps(&out.x, sum);
+  return out;
+#else
+  auto texel = [](const float* x) { return glm::vec4(x[0], x[1], x[2], x[3]); };
+  return w00 * texel(t[0]) + w10 * texel(t[1]) + w01 * texel(t[2]) + w11 * texel(t[3]);
+#endif
+}
+
 // One level, NEAREST or LINEAR (section 8.14.2): texel centres at +0.5.
 glm::vec4 FilterLevel(const SamplerParams& p, const TextureLevel& level, Enum filter, glm::vec2 st,
                       const DepthCompare& cmp) {
   const float u = TexelCoord(st.x, level.width), v = TexelCoord(st.y, level.height);
   if (filter == NEAREST) return Fetch(p, level, long(std::floor(u)), long(std::floor(v)), cmp);
+  if (!cmp.on) return Bilinear(p, level, u, v);
   const float fu = u - 0.5f, fv = v - 0.5f;
   const long i0 = long(std::floor(fu)), j0 = long(std::floor(fv));
   const float a = fu - float(i0), b = fv - float(j0);
@@ -72,6 +115,15 @@ glm::vec4 FilterLevel(const SamplerParams& p, const TextureLevel& level, Enum fi
 // at most 0.086 below log2 in between.
 float PiecewiseLog2(float x) {
   if (!(x > 0.0f)) return -INFINITY;
+  std::uint32_t bits;
+  std::memcpy(&bits, &x, 4);
+  const int biased = int(bits >> 23);
+  if (biased > 0 && biased < 255) {  // a normal number: exponent and mantissa straight from its bits
+    std::uint32_t one_m = (bits & 0x007FFFFFu) | 0x3F800000u;  // 1.mantissa, the same m as frexp gives
+    float m;
+    std::memcpy(&m, &one_m, 4);
+    return float(biased - 127) + (m - 1.0f);
+  }
   int e = 0;
   const float m = std::frexp(x, &e) * 2.0f;  // x = m * 2^(e - 1), m in [1, 2)
   return float(e - 1) + (m - 1.0f);
