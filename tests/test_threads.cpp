@@ -1,7 +1,11 @@
 // Several contexts used from several threads at once: each renders exactly what it renders alone.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <cstdlib>
 #include <functional>
+#include <string>
+#include <utility>
 #include <thread>
 #include <vector>
 
@@ -26,4 +30,67 @@ TEST_CASE("contexts on several threads render as they do alone", "[threads]") {
     INFO("scene " << i % scenes_to_draw.size());
     CHECK(together[i].rgba == alone[i % scenes_to_draw.size()].rgba);
   }
+}
+
+namespace {
+
+// Renders `draw` with contexts of `threads` threads (SOFTGL_THREADS is read when a context is created).
+softgl::Image WithThreads(int threads, const std::function<softgl::Image()>& draw) {
+  const std::string value = std::to_string(threads);
+  setenv("SOFTGL_THREADS", value.c_str(), 1);
+  softgl::Image image = draw();
+  unsetenv("SOFTGL_THREADS");
+  return image;
+}
+
+}  // namespace
+
+TEST_CASE("every example scene is the same image with 1, 2, 3 and 8 threads", "[threads]") {
+  // 320 x 240 is 5 x 4 tiles; the sizes are odd on purpose for the two that are not, so that tiles are cut.
+  const std::string models = scenes::kTestModels;
+  const std::vector<std::pair<const char*, std::function<softgl::Image()>>> all = {
+      {"triangle", [] { return scenes::Triangle(320, 240); }},
+      {"cube", [] { return scenes::Cube(241, 199, 0.6f); }},
+      {"wireframe", [] { return scenes::Wireframe(320, 240); }},
+      {"clipped", [] { return scenes::Clipped(320, 240); }},
+      {"stencil_outline", [] { return scenes::StencilOutline(320, 240); }},
+      {"mirror", [] { return scenes::Mirror(320, 240); }},
+      {"transparency", [] { return scenes::Transparency(320, 240); }},
+      {"decals", [] { return scenes::Decals(320, 240); }},
+      {"textured_cube", [] { return scenes::TexturedCube(333, 211); }},
+      {"shadow_map", [] { return scenes::ShadowMap(320, 240); }},
+      {"post_process", [] { return scenes::PostProcess(320, 240); }},
+      {"environment_map", [] { return scenes::EnvironmentMap(320, 240); }},
+      {"model_duck_phong", [&] { return scenes::ModelView(models + "/Collada/duck.dae", "phong", 320, 240, 30, 20); }},
+      {"model_spider_unlit", [&] { return scenes::ModelView(models + "/OBJ/spider.obj", "unlit", 320, 240, 40, 30); }},
+      {"model_box_pbr",
+       [&] { return scenes::ModelView(models + "/glTF2/BoxTextured-glTF/BoxTextured.gltf", "pbr", 320, 240, 35, 25); }},
+      {"model_engine_pbr",
+       [&] {
+         return scenes::ModelView(models + "/glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb", "pbr", 320, 240,
+                                  30, 20);
+       }},
+  };
+  for (const auto& [name, draw] : all) {
+    INFO("scene " << name);
+    const softgl::Image one = WithThreads(1, draw);
+    REQUIRE(one.width > 0);
+    REQUIRE(!one.rgba.empty());
+    for (int threads : {2, 3, 8}) {
+      INFO("threads " << threads);
+      const softgl::Image many = WithThreads(threads, draw);
+      CHECK(many.width == one.width);
+      CHECK(many.rgba == one.rgba);
+    }
+  }
+}
+
+TEST_CASE("Context::Options and SOFTGL_THREADS set the thread count", "[threads]") {
+  CHECK(softgl::Context(4, 4, softgl::Context::Options{3}).Threads() == 3);
+  setenv("SOFTGL_THREADS", "5", 1);
+  CHECK(softgl::Context(4, 4).Threads() == 5);
+  CHECK(softgl::Context(4, 4, softgl::Context::Options{2}).Threads() == 2);  // an explicit count wins
+  setenv("SOFTGL_THREADS", "zero", 1);  // not a number: the machine's count
+  CHECK(softgl::Context(4, 4).Threads() == int(std::max(1u, std::thread::hardware_concurrency())));
+  unsetenv("SOFTGL_THREADS");
 }
