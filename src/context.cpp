@@ -718,6 +718,7 @@ void ContextState::Draw(const detail::DrawCall& call) {
   try {
     packet.snapshot = program->Snapshot();
     packet.program = packet.snapshot ? packet.snapshot.get() : program;
+    packet.early_depth = detail::EarlyDepthTestApplies(ops, packet.program->WritesDepth());
     detail::RecordDraw(call, plan, ds, packet, target, frame, *pool, scratch);
   } catch (const std::bad_alloc&) {
     frame.Reset();

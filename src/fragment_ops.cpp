@@ -212,6 +212,31 @@ struct Unorm8Blender {
 
 }  // namespace
 
+bool EarlyDepthTestApplies(const FragmentOpsState& state, bool shader_writes_depth) {
+  const Enum f = state.depth_func;
+  return !shader_writes_depth && state.depth_test && !state.stencil_test &&
+         (f == LESS || f == LEQUAL || f == GREATER || f == GEQUAL);
+}
+
+int EarlyDepthTest(const FragmentOpsState& state, QuadBuffer& quads, const RenderTarget& target) {
+  int live = 0;
+  if (!target.depth) {
+    for (int l = 0; l < quads.count * 4; ++l) live += quads.live[l];
+    return live;
+  }
+  for (int q = 0; q < quads.count; ++q)
+    for (int lane = 0; lane < 4; ++lane) {
+      const int l = q * 4 + lane;
+      if (!quads.live[l]) continue;
+      const float depth = quads.frag_coord[l].z;
+      const float z = std::clamp(depth, 0.0f, 1.0f);
+      const int x = quads.qx[q] + (lane & 1), y = quads.qy[q] + (lane >> 1);
+      if (std::isnan(depth) || !DepthTest(state.depth_func, z, target.Depth(x, y))) quads.live[l] = 0;
+      live += quads.live[l];
+    }
+  return live;
+}
+
 void ApplyFragmentOps(const FragmentOpsState& state, const QuadBuffer& quads, const RenderTarget& target) {
   const StencilFace& face = quads.front_facing ? state.front : state.back;
   // Without a depth or stencil buffer the test passes and nothing is written (OpenGL 4.6, 17.3.5 and 17.3.6).

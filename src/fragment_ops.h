@@ -70,6 +70,17 @@ std::uint8_t StencilUpdate(const StencilFace& face, Enum op, std::uint8_t stored
 /// and equations, computed in float.
 glm::vec4 Blend(const BlendState& state, const glm::vec4& src, const glm::vec4& dst);
 
+/// Whether the depth test may run before the fragment shader without changing the result: the shader does not
+/// write depth, the stencil test is off (its depth-fail operation would be skipped), and the depth function is
+/// monotonic (LESS, LEQUAL, GREATER, GEQUAL), so that a fragment failing against the buffer now fails against any
+/// later content of it too, the buffer only moving towards the test's winning side.
+bool EarlyDepthTestApplies(const FragmentOpsState& state, bool shader_writes_depth);
+
+/// The early depth test: clears the live flag of every lane whose interpolated depth (frag_coord.z, clamped as
+/// the late test clamps it) fails against the depth buffer. Writes nothing; the late test runs as usual after the
+/// shader. Returns the number of lanes still live.
+int EarlyDepthTest(const FragmentOpsState& state, QuadBuffer& quads, const RenderTarget& target);
+
 /// Runs the per-fragment operations for every live lane of `quads` (after the fragment shader has filled
 /// quads.out and cleared discarded lanes) into the buffers of `target`.
 void ApplyFragmentOps(const FragmentOpsState& state, const QuadBuffer& quads, const RenderTarget& target);

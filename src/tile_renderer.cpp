@@ -15,6 +15,7 @@ DrawPacket& DrawPacket::operator=(const DrawPacket& other) {
   ops = other.ops;
   bounds = other.bounds;
   nvar = other.nvar;
+  early_depth = other.early_depth;
   for (int k = 0; k < 2; ++k)
     for (int u = 0; u < kMaxTextureUnits; ++u) views[k][u] = other.views[k][u];
   for (int u = 0; u < kMaxTextureUnits; ++u) {
@@ -51,6 +52,7 @@ struct FragmentStage {
 
   static void Run(void* user, QuadBuffer& quads) {
     const auto* self = static_cast<const FragmentStage*>(user);
+    if (self->draw->early_depth && EarlyDepthTest(self->draw->ops, quads, *self->target) == 0) return;
     QuadBatch batch;
     batch.count = quads.count;
     batch.varyings = quads.varyings;

@@ -29,6 +29,7 @@ struct DrawPacket {
   FragmentOpsState ops;
   Rect bounds;  // viewport, target and scissor
   int nvar = 0;
+  bool early_depth = false;  // EarlyDepthTestApplies
   TextureView views[2][kMaxTextureUnits];  // [2D, cube][unit]
   Textures textures;                       // points into views
   std::vector<BinnedBatch*> batches;

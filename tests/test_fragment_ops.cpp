@@ -2,6 +2,8 @@
 #include <catch2/catch.hpp>
 
 #include <array>
+#include <atomic>
+#include <memory>
 #include <cmath>
 #include <limits>
 
@@ -470,15 +472,19 @@ TEST_CASE("per-fragment state rejects bad enums and changes nothing", "[fragment
   CHECK(gl.GetError() == NO_ERROR);
 }
 
+namespace {
+struct DepthWriter : softgl::Shader<DepthWriter, testing::NoVaryings> {
+  static constexpr bool kWritesDepth = true;  // as a GLSL shader that writes gl_FragDepth
+  void Vertex(const VertexIn& in, VertexOut<testing::NoVaryings>& out) const { out.position = in.attrib[0]; }
+  bool Fragment(const FragmentIn<testing::NoVaryings>& in, FragmentOut& out) const {
+    out.color[0] = glm::vec4(1);
+    out.depth = in.frag_coord.x < 2.0f ? 0.1f : 0.9f;  // left half near, right half far
+    return true;
+  }
+};
+}  // namespace
+
 TEST_CASE("a fragment shader may write depth (gl_FragDepth)", "[fragment_ops]") {
-  struct DepthWriter : softgl::Shader<DepthWriter, testing::NoVaryings> {
-    void Vertex(const VertexIn& in, VertexOut<testing::NoVaryings>& out) const { out.position = in.attrib[0]; }
-    bool Fragment(const FragmentIn<testing::NoVaryings>& in, FragmentOut& out) const {
-      out.color[0] = glm::vec4(1);
-      out.depth = in.frag_coord.x < 2.0f ? 0.1f : 0.9f;  // left half near, right half far
-      return true;
-    }
-  };
   Context gl(4, 1);
   gl.Enable(DEPTH_TEST);
   gl.ClearDepth(0.5);
@@ -565,4 +571,74 @@ TEST_CASE("blending into 8-bit buffers writes the bytes of the per-channel float
           }
       }
   CHECK(checked == 15 * 15 * 5 * 16 * 4);
+}
+
+namespace {
+
+// Writes out.depth like DepthWriter above but does not declare it; counts its invocations.
+struct CountingShader : softgl::Shader<CountingShader, testing::NoVaryings> {
+  std::shared_ptr<std::atomic<int>> calls = std::make_shared<std::atomic<int>>(0);
+  glm::vec4 color{1.0f};
+  void Vertex(const VertexIn& in, VertexOut<testing::NoVaryings>& out) const { out.position = in.attrib[0]; }
+  bool Fragment(const FragmentIn<testing::NoVaryings>&, FragmentOut& out) const {
+    ++*calls;
+    out.color[0] = color;
+    out.depth = 0.0f;  // not declared (no kWritesDepth): ignored
+    return true;
+  }
+};
+
+}  // namespace
+
+TEST_CASE("a depth write the shader does not declare is ignored", "[fragment_ops]") {
+  Context gl(4, 1);
+  gl.Enable(DEPTH_TEST);
+  gl.ClearDepth(0.5);
+  gl.Clear(COLOR_BUFFER_BIT | DEPTH_BUFFER_BIT);
+  testing::MakeVertexArray(gl, {{-1, -1, 0, 1}, {1, -1, 0, 1}, {-1, 1, 0, 1}, {1, 1, 0, 1}});  // window z 0.5
+  CountingShader shader;
+  gl.UseProgram(shader);
+  gl.DrawArrays(TRIANGLE_STRIP, 0, 4);
+  std::uint8_t px[4];
+  gl.ReadPixel(0, 0, px);
+  CHECK(px[0] == 0);  // 0.5 < 0.5 fails: the written 0.0 did not count
+  CHECK(gl.ReadDepth(0, 0) == 0.5f);
+}
+
+TEST_CASE("the early depth test skips hidden fragments without changing the image", "[fragment_ops]") {
+  // A near quad, then a far one behind it: with LESS the far quad's fragments fail the depth test before the
+  // shader runs. The same draws with GL's late test give the same image (checked against ALWAYS-then-masked).
+  const int n = 64;
+  auto render = [&](Enum func, int* calls) {
+    Context gl(n, n);
+    gl.Enable(DEPTH_TEST);
+    gl.DepthFunc(func);
+    gl.Clear(COLOR_BUFFER_BIT | DEPTH_BUFFER_BIT);
+    CountingShader shader;
+    gl.UseProgram(shader);
+    const float z_near = func == GREATER ? 0.5f : -0.5f;
+    testing::MakeVertexArray(gl, {{-1, -1, z_near, 1}, {1, -1, z_near, 1}, {-1, 1, z_near, 1}, {1, 1, z_near, 1},
+                                  {-1, -1, -z_near, 1}, {1, -1, -z_near, 1}, {-1, 1, -z_near, 1}, {1, 1, -z_near, 1}});
+    if (func == GREATER) gl.ClearDepth(0.0);
+    gl.Clear(DEPTH_BUFFER_BIT);
+    shader.color = glm::vec4(1, 0, 0, 1);
+    gl.DrawArrays(TRIANGLE_STRIP, 0, 4);
+    shader.color = glm::vec4(0, 1, 0, 1);  // the second draw's own copy of the shader is green
+    gl.DrawArrays(TRIANGLE_STRIP, 4, 4);
+    softgl::Image img = gl.ReadPixels();
+    *calls = *shader.calls;
+    return img;
+  };
+  for (Enum func : {LESS, GREATER}) {
+    int calls = 0;
+    const softgl::Image img = render(func, &calls);
+    CHECK(calls == n * n);  // the hidden quad was never shaded
+    for (std::size_t i = 0; i < img.rgba.size(); i += 4) {
+      REQUIRE(img.rgba[i] == 255);  // red: the near quad everywhere
+      REQUIRE(img.rgba[i + 1] == 0);
+    }
+  }
+  int calls = 0;
+  render(NOTEQUAL, &calls);  // not monotonic: every fragment is shaded
+  CHECK(calls == 2 * n * n);
 }

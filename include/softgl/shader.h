@@ -70,7 +70,7 @@ struct VertexOut {
 /// What the fragment stage writes.
 struct FragmentOut {
   glm::vec4 color[kMaxColorOutputs];  ///< Colour outputs; color[0] is written to the colour buffer.
-  float depth;                        ///< gl_FragDepth, preset to frag_coord.z.
+  float depth;                        ///< gl_FragDepth, preset to frag_coord.z (see Shader<>::kWritesDepth).
 };
 
 /// What the fragment stage reads for one fragment.
@@ -146,6 +146,9 @@ class Program {
   /// shaded later, when the context renders its recorded draws, and the shader may have changed by then. Null
   /// when the shader cannot be copied: the context then renders each draw before the call returns.
   virtual std::shared_ptr<const Program> Snapshot() const { return nullptr; }
+  /// Whether the fragment stage writes FragmentOut::depth (gl_FragDepth). When it does not, the depth test may run
+  /// before the shader (early depth test), where that cannot change the result.
+  virtual bool WritesDepth() const { return true; }
 };
 
 /// Base class of user shaders (CRTP): `struct MyShader : softgl::Shader<MyShader, MyVaryings> { ... }`.
@@ -153,6 +156,9 @@ class Program {
 /// Derived must define
 ///   void Vertex(const VertexIn&, VertexOut<Varyings>&) const;
 ///   bool Fragment(const FragmentIn<Varyings>&, FragmentOut&) const;   // false discards the fragment
+/// A Fragment() that writes out.depth (gl_FragDepth) must say so with `static constexpr bool kWritesDepth = true;`
+/// in Derived, as GLSL knows from the source; otherwise out.depth is ignored (the fragment keeps frag_coord.z)
+/// and the depth test may run before the shader.
 /// Varyings must be a trivially copyable struct made only of floats (float, glm::vecN, glm::matN), at most
 /// kMaxVaryingFloats of them; an empty struct means no varyings.
 template <class Derived, class Varyings>
@@ -163,8 +169,19 @@ class Shader : public Program {
                 "varyings must be made of floats");
   static_assert(kFloats <= kMaxVaryingFloats, "at most kMaxVaryingFloats floats of varyings");
 
+  // Derived declares `static constexpr bool kWritesDepth = true;` when its Fragment() writes out.depth.
+  static constexpr bool DeclaresDepth() {
+    if constexpr (requires { Derived::kWritesDepth; }) {
+      return bool(Derived::kWritesDepth);
+    } else {
+      return false;
+    }
+  }
+
  public:
   int VaryingFloats() const final { return kFloats; }
+
+  bool WritesDepth() const final { return DeclaresDepth(); }
 
   std::shared_ptr<const Program> Snapshot() const override {
     if constexpr (std::is_copy_constructible_v<Derived>) {
@@ -202,6 +219,7 @@ class Shader : public Program {
         FragmentOut& out = batch.out[base + lane];
         out.depth = in.frag_coord.z;
         if (!self.Fragment(in, out)) batch.live[base + lane] = 0;
+        if constexpr (!DeclaresDepth()) out.depth = in.frag_coord.z;  // undeclared depth writes are ignored
       }
     }
   }
