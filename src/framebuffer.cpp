@@ -39,7 +39,28 @@ void ColorBuffer::Store(int x, int y, const glm::vec4& c, const bool mask[4]) co
 
 void RenderTarget::ClearColor(const Rect& r, const glm::vec4& value, const bool mask[4]) const {
   for (const ColorBuffer& cb : color) {
-    if (!cb.Present()) continue;
+    if (!cb.Present() || r.Empty()) continue;
+    if (cb.rgba8) {
+      // The pixel is converted once, then stored row by row as 32-bit words through the mask.
+      std::uint8_t px[4], keep_bytes[4];
+      for (int k = 0; k < 4; ++k) {
+        px[k] = FloatToUnorm8(value[k]);
+        keep_bytes[k] = mask[k] ? 0x00 : 0xFF;
+      }
+      std::uint32_t word, keep;
+      std::memcpy(&word, px, 4);
+      std::memcpy(&keep, keep_bytes, 4);
+      for (int y = r.y0; y < r.y1; ++y) {
+        std::uint8_t* row = cb.rgba8 + cb.Index(r.x0, y) * 4;
+        for (int x = 0; x < r.x1 - r.x0; ++x) {
+          std::uint32_t old = 0;
+          if (keep) std::memcpy(&old, row + 4 * x, 4);
+          const std::uint32_t out = (old & keep) | (word & ~keep);
+          std::memcpy(row + 4 * x, &out, 4);
+        }
+      }
+      continue;
+    }
     for (int y = r.y0; y < r.y1; ++y)
       for (int x = r.x0; x < r.x1; ++x) cb.Store(x, y, value, mask);
   }
