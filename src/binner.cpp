@@ -28,7 +28,7 @@ void BinnedBatch::Reset(int nvar) {
   vertices_.clear();
   notes_.clear();
   tile_start_.clear();
-  entries_.clear();
+  tile_data_.clear();
 }
 
 void BinnedBatch::Add(const BinnedPrimitive& prim, const WindowVertex* v, const Rect& box, const TileGrid& grid) {
@@ -51,25 +51,39 @@ void BinnedBatch::Add(const BinnedPrimitive& prim, const WindowVertex* v, const 
 }
 
 void BinnedBatch::Finish(const TileGrid& grid) {
-  // A stable counting sort of the notes by tile: each tile's list keeps submission order.
+  // A stable counting sort of the notes by tile, moving the data: each tile's list keeps submission order.
+  static_assert(sizeof(BinnedPrimitive) % sizeof(float) == 0);
+  auto size_of = [&](std::uint32_t prim) {
+    return std::uint32_t(kHeaderFloats + int(prims_[prim].kind) * (4 + nvar_));
+  };
   tile_start_.assign(std::size_t(grid.Count()) + 1, 0);
-  for (std::uint64_t n : notes_) ++tile_start_[std::size_t(n >> 32) + 1];
+  for (std::uint64_t n : notes_) tile_start_[std::size_t(n >> 32) + 1] += size_of(std::uint32_t(n));
   for (std::size_t t = 1; t < tile_start_.size(); ++t) tile_start_[t] += tile_start_[t - 1];
-  entries_.resize(notes_.size());
+  tile_data_.resize(tile_start_.back());
   std::vector<std::uint32_t> fill(tile_start_.begin(), tile_start_.end() - 1);
-  for (std::uint64_t n : notes_) entries_[fill[std::size_t(n >> 32)]++] = std::uint32_t(n);
+  for (std::uint64_t n : notes_) {
+    const auto prim = std::uint32_t(n);
+    float* dst = tile_data_.data() + fill[std::size_t(n >> 32)];
+    const BinnedPrimitive& p = prims_[prim];
+    std::memcpy(dst, static_cast<const void*>(&p), sizeof p);
+    std::memcpy(dst + kHeaderFloats, vertices_.data() + p.first_float,
+                sizeof(float) * std::size_t(int(p.kind) * (4 + nvar_)));
+    fill[std::size_t(n >> 32)] += size_of(prim);
+  }
   notes_.clear();
+  vertices_.clear();
 }
 
-void BinnedBatch::Vertex(const BinnedPrimitive& p, int k, WindowVertex& out) const {
-  const float* src = vertices_.data() + p.first_float + std::size_t(k) * std::size_t(4 + nvar_);
+void BinnedBatch::Vertex(const float* vertices, int k, WindowVertex& out) const {
+  const float* src = vertices + std::size_t(k) * std::size_t(4 + nvar_);
   std::memcpy(&out.win, src, sizeof(float) * 4);
   std::memcpy(out.var, src + 4, sizeof(float) * std::size_t(nvar_));
 }
 
 std::size_t BinnedBatch::Bytes() const {
   return prims_.capacity() * sizeof(BinnedPrimitive) + vertices_.capacity() * sizeof(float) +
-         notes_.capacity() * sizeof(std::uint64_t) + (tile_start_.capacity() + entries_.capacity()) * sizeof(std::uint32_t);
+         notes_.capacity() * sizeof(std::uint64_t) + tile_start_.capacity() * sizeof(std::uint32_t) +
+         tile_data_.capacity() * sizeof(float);
 }
 
 namespace {

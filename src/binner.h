@@ -8,6 +8,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <vector>
 
 #include "types.h"
@@ -29,7 +30,7 @@ enum class PrimitiveKind : std::uint8_t { kPoint = 1, kLine = 2, kTriangle = 3 }
 
 /// One primitive ready for the rasterizer; its vertices are `kind` WindowVertex values of 4 + nvar floats each,
 /// stored from BinnedBatch::vertices[first_float].
-struct BinnedPrimitive {
+struct BinnedPrimitive {  // 16 bytes: stored inline in the tile lists
   PrimitiveKind kind = PrimitiveKind::kTriangle;
   bool front_facing = true;
   float depth_offset = 0.0f;  // polygon offset
@@ -37,7 +38,9 @@ struct BinnedPrimitive {
   std::uint32_t first_float = 0;
 };
 
-/// The output of binning one batch of primitives.
+/// The output of binning one batch of primitives. Primitives are appended in submission order, then Finish()
+/// copies each into the contiguous list of every tile it may touch (a primitive record followed by its vertices),
+/// so that a tile reads its primitives from consecutive memory.
 class BinnedBatch {
  public:
   /// Empties the batch for a draw with `nvar` floats of varyings per vertex.
@@ -45,29 +48,40 @@ class BinnedBatch {
   int nvar() const { return nvar_; }
 
   /// Appends a primitive whose fragments all lie in `box` (pixels, half-open, already inside the draw's bounds)
-  /// and notes it in the list of every tile that box overlaps.
+  /// and notes it for every tile that box overlaps.
   void Add(const BinnedPrimitive& prim, const WindowVertex* v, const Rect& box, const TileGrid& grid);
-  /// Sorts the notes into per-tile lists; call once, after the last Add.
+  /// Builds the per-tile lists; call once, after the last Add.
   void Finish(const TileGrid& grid);
 
-  const BinnedPrimitive& Primitive(std::uint32_t i) const { return prims_[i]; }
-  /// The primitives of `tile`, in order: [begin, end) of indices for Primitive().
-  const std::uint32_t* TileBegin(int tile) const { return entries_.data() + tile_start_[std::size_t(tile)]; }
-  const std::uint32_t* TileEnd(int tile) const { return entries_.data() + tile_start_[std::size_t(tile) + 1]; }
-  /// Vertex k of primitive p, copied out as a WindowVertex.
-  void Vertex(const BinnedPrimitive& p, int k, WindowVertex& out) const;
+  /// Walks the primitives of `tile` in order: fn(const BinnedPrimitive&, const float* vertices), the vertices
+  /// being `kind` runs of 4 + nvar floats (window position, then varyings).
+  template <class Fn>
+  void ForEachInTile(int tile, Fn&& fn) const {
+    const float* p = tile_data_.data() + tile_start_[std::size_t(tile)];
+    const float* end = tile_data_.data() + tile_start_[std::size_t(tile) + 1];
+    while (p < end) {
+      BinnedPrimitive prim;
+      std::memcpy(static_cast<void*>(&prim), p, sizeof prim);
+      p += kHeaderFloats;
+      fn(prim, p);
+      p += int(prim.kind) * (4 + nvar_);
+    }
+  }
+  /// Copies vertex k of the run at `vertices` into a WindowVertex.
+  void Vertex(const float* vertices, int k, WindowVertex& out) const;
 
   bool Empty() const { return prims_.empty(); }
   /// Memory held, in bytes (what the context's recording budget counts).
   std::size_t Bytes() const;
 
  private:
+  static constexpr int kHeaderFloats = int(sizeof(BinnedPrimitive) / sizeof(float));
   int nvar_ = 0;
-  std::vector<BinnedPrimitive> prims_;
+  std::vector<BinnedPrimitive> prims_;      // in submission order
   std::vector<float> vertices_;
   std::vector<std::uint64_t> notes_;        // tile << 32 | primitive, in submission order
-  std::vector<std::uint32_t> tile_start_;   // [tiles + 1]: where each tile's list starts in entries_
-  std::vector<std::uint32_t> entries_;
+  std::vector<std::uint32_t> tile_start_;   // [tiles + 1]: where each tile's list starts in tile_data_
+  std::vector<float> tile_data_;
 };
 
 /// The pixel box a primitive's fragments can fall in, from its window positions: the rounded-out bounding box

@@ -137,16 +137,15 @@ void Frame::RenderTile(int tile, TileScratch& scratch) const {
     const QuadSink sink{&FragmentStage::Run, &stage};
     quads.count = 0;
     for (const BinnedBatch* batch : draw.batches) {
-      for (const std::uint32_t* e = batch->TileBegin(tile); e != batch->TileEnd(tile); ++e) {
-        const BinnedPrimitive& p = batch->Primitive(*e);
-        for (int k = 0; k < int(p.kind); ++k) batch->Vertex(p, k, v[k]);
+      batch->ForEachInTile(tile, [&](const BinnedPrimitive& p, const float* vertices) {
+        for (int k = 0; k < int(p.kind); ++k) batch->Vertex(vertices, k, v[k]);
         rt.depth_offset = p.depth_offset;
         switch (p.kind) {
           case PrimitiveKind::kTriangle: RasterizeTriangle(v[0], v[1], v[2], p.front_facing, rt, quads, sink); break;
           case PrimitiveKind::kLine: RasterizeLine(v[0], v[1], p.front_facing, rt, quads, sink); break;
           case PrimitiveKind::kPoint: RasterizePoint(v[0], p.point_size, p.front_facing, rt, quads, sink); break;
         }
-      }
+      });
     }
     sink.Flush(quads);
   }
