@@ -3,10 +3,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 
 #if defined(__SSE2__)
-#include <emmintrin.h>
+#include <immintrin.h>
 #endif
 
 namespace softgl::detail {
@@ -210,7 +211,63 @@ struct Unorm8Blender {
 #endif
 };
 
+#if defined(__SSE2__) && (defined(__x86_64__) || defined(__i386__))
+#define SOFTGL_AVX2_DISPATCH 1
+
+// Two horizontally adjacent pixels at once in 256-bit registers: Unorm8Blender::Store's operations, lane for lane,
+// so the bytes are the same. Compiled for AVX2 (without FMA, which would round differently) and used only when the
+// processor has it; the blender must not use MIN or MAX (their lane selection stays in the 128-bit path).
+__attribute__((target("avx2"))) void Store2Avx2(const Unorm8Blender& b, const glm::vec4& c0, const glm::vec4& c1,
+                                                std::uint8_t* p) {
+  const __m256 zero = _mm256_setzero_ps(), one = _mm256_set1_ps(1.0f), scale = _mm256_set1_ps(255.0f);
+  __m256 s = _mm256_set_m128(_mm_loadu_ps(&c1.x), _mm_loadu_ps(&c0.x));
+  s = _mm256_and_ps(s, _mm256_cmp_ps(s, s, _CMP_ORD_Q));  // NaN -> 0
+  s = _mm256_min_ps(_mm256_max_ps(s, zero), one);
+  std::uint64_t old;
+  std::memcpy(&old, p, 8);
+  if (b.blend) {
+    const __m256 d =
+        _mm256_div_ps(_mm256_cvtepi32_ps(_mm256_cvtepu8_epi32(_mm_cvtsi64_si128(std::int64_t(old)))), scale);
+    const __m128 c128 = _mm_loadu_ps(&b.constant.x);
+    const __m256 c = _mm256_set_m128(c128, c128);
+    // Each pixel's alpha in its four channels: _mm256_permute_ps(v, 0xFF); (rgb, alpha) lanes: blend 0x88.
+    const __m256 sources[7] = {zero, s, d, _mm256_permute_ps(s, 0xFF), _mm256_permute_ps(d, 0xFF), c,
+                               _mm256_permute_ps(c, 0xFF)};
+    const __m256 src_v = _mm256_blend_ps(sources[b.src_pick[0]], sources[b.src_pick[1]], 0x88);
+    const __m256 dst_v = _mm256_blend_ps(sources[b.dst_pick[0]], sources[b.dst_pick[1]], 0x88);
+    const __m256 sf = _mm256_add_ps(_mm256_set_m128(b.sk0, b.sk0), _mm256_mul_ps(_mm256_set_m128(b.sk1, b.sk1), src_v));
+    const __m256 df = _mm256_add_ps(_mm256_set_m128(b.dk0, b.dk0), _mm256_mul_ps(_mm256_set_m128(b.dk1, b.dk1), dst_v));
+    s = _mm256_add_ps(_mm256_mul_ps(_mm256_set_m128(b.ks, b.ks), _mm256_mul_ps(s, sf)),
+                      _mm256_mul_ps(_mm256_set_m128(b.kd, b.kd), _mm256_mul_ps(d, df)));
+    s = _mm256_min_ps(_mm256_max_ps(s, zero), one);
+  }
+  const __m256i v = _mm256_cvtps_epi32(_mm256_mul_ps(s, scale));
+  const __m128i w16 = _mm_packs_epi32(_mm256_castsi256_si128(v), _mm256_extracti128_si256(v, 1));
+  const auto bytes = std::uint64_t(_mm_cvtsi128_si64(_mm_packus_epi16(w16, w16)));
+  const std::uint64_t keep = std::uint64_t(b.keep) | std::uint64_t(b.keep) << 32;
+  const std::uint64_t out = (old & keep) | (bytes & ~keep);
+  std::memcpy(p, &out, 8);
+}
+
+bool ChooseAvx2() {
+  if (const char* simd = std::getenv("SOFTGL_SIMD"); simd && std::strcmp(simd, "sse2") == 0) return false;
+  __builtin_cpu_init();
+  return __builtin_cpu_supports("avx2");
+}
+#endif
+
 }  // namespace
+
+const char* FragmentSimdPath() {
+#if defined(SOFTGL_AVX2_DISPATCH)
+  static const bool avx2 = ChooseAvx2();
+  return avx2 ? "avx2" : "sse2";
+#elif defined(__SSE2__)
+  return "sse2";
+#else
+  return "portable";
+#endif
+}
 
 bool EarlyDepthTestApplies(const FragmentOpsState& state, bool shader_writes_depth) {
   const Enum f = state.depth_func;
@@ -251,19 +308,41 @@ void ApplyFragmentOps(const FragmentOpsState& state, const QuadBuffer& quads, co
   const ColorBuffer& cb0 = target.color[0];
   if (unorm8.usable && !stencil_test && any_color && cb0.rgba8 && !target.color[1].Present() &&
       !target.color[2].Present() && !target.color[3].Present()) {
+#if defined(SOFTGL_AVX2_DISPATCH)
+    static const bool avx2 = std::strcmp(FragmentSimdPath(), "avx2") == 0;
+    const bool pairs = avx2 && !unorm8.min_max;
+#else
+    const bool pairs = false;
+#endif
     for (int q = 0; q < quads.count; ++q) {
+      // Depth first for the four lanes (four different pixels), then colour a row of two at a time.
+      unsigned pass = 0;
       for (int lane = 0; lane < 4; ++lane) {
         const int l = q * 4 + lane;
         if (!quads.live[l]) continue;
-        const int x = quads.qx[q] + (lane & 1), y = quads.qy[q] + (lane >> 1);
-        const FragmentOut& out = quads.out[l];
         if (depth_test) {
-          const float z = std::clamp(out.depth, 0.0f, 1.0f);
+          const int x = quads.qx[q] + (lane & 1), y = quads.qy[q] + (lane >> 1);
+          const float depth = quads.out[l].depth;
+          const float z = std::clamp(depth, 0.0f, 1.0f);
           float& stored = target.Depth(x, y);
-          if (std::isnan(out.depth) || !DepthTest(state.depth_func, z, stored)) continue;
+          if (std::isnan(depth) || !DepthTest(state.depth_func, z, stored)) continue;
           if (state.depth_write) stored = z;
         }
-        unorm8.Store(out.color[0], cb0.rgba8 + cb0.Index(x, y) * 4);
+        pass |= 1u << lane;
+      }
+      for (int row = 0; row < 2; ++row) {
+        const unsigned bits = (pass >> (2 * row)) & 3u;
+        if (!bits) continue;
+        std::uint8_t* p = cb0.rgba8 + cb0.Index(quads.qx[q], quads.qy[q] + row) * 4;
+        const FragmentOut* out = quads.out + q * 4 + 2 * row;
+#if defined(SOFTGL_AVX2_DISPATCH)
+        if (pairs && bits == 3u) {
+          Store2Avx2(unorm8, out[0].color[0], out[1].color[0], p);
+          continue;
+        }
+#endif
+        if (bits & 1u) unorm8.Store(out[0].color[0], p);
+        if (bits & 2u) unorm8.Store(out[1].color[0], p + 4);
       }
     }
     return;

@@ -81,6 +81,10 @@ bool EarlyDepthTestApplies(const FragmentOpsState& state, bool shader_writes_dep
 /// shader. Returns the number of lanes still live.
 int EarlyDepthTest(const FragmentOpsState& state, QuadBuffer& quads, const RenderTarget& target);
 
+/// Which vector code the per-fragment operations run: "avx2" (chosen at run time on processors that have it,
+/// unless SOFTGL_SIMD=sse2 is set), "sse2", or "portable" (no vector code).
+const char* FragmentSimdPath();
+
 /// Runs the per-fragment operations for every live lane of `quads` (after the fragment shader has filled
 /// quads.out and cleared discarded lanes) into the buffers of `target`.
 void ApplyFragmentOps(const FragmentOpsState& state, const QuadBuffer& quads, const RenderTarget& target);
