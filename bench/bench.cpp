@@ -11,6 +11,9 @@
 //
 //   --scene TEXT       only the scenes whose name contains TEXT
 //   --softgl-only 1    skip llvmpipe (for profiling softgl alone)
+//
+// The last row is the model scene's peak memory: each renderer runs the scene (warm-up and one frame) in a process
+// of its own that loads the model and nothing else (this program with --rss-child), which reports its VmHWM.
 #define GL_GLEXT_PROTOTYPES
 #include <GL/osmesa.h>
 #include <GL/gl.h>
@@ -25,6 +28,8 @@
 #include <random>
 #include <string>
 #include <vector>
+
+#include <unistd.h>
 
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
@@ -288,27 +293,55 @@ struct Scene {
   std::function<double(int)> softgl_ms, gl_ms;
 };
 
+// A /proc/self/status field in KiB (VmRSS, VmHWM), or -1.
+long StatusKiB(const char* field) {
+  std::FILE* f = std::fopen("/proc/self/status", "r");
+  if (!f) return -1;
+  char line[256];
+  long value = -1;
+  const std::size_t n = std::strlen(field);
+  while (std::fgets(line, sizeof line, f))
+    if (std::strncmp(line, field, n) == 0 && line[n] == ':') value = std::atol(line + n + 1);
+  std::fclose(f);
+  return value;
+}
+
+// Runs this program again as `--rss-child RENDERER` (the model scene alone, nothing else loaded) and returns the
+// peak resident memory (VmHWM) that process reports, in MiB; -1 on failure.
+double ModelScenePeakMiB(const char* self, const char* renderer, int threads) {
+  const std::string cmd = std::string(self) + " --rss-child " + renderer + " --threads " + std::to_string(threads);
+  std::FILE* p = popen(cmd.c_str(), "r");
+  if (!p) return -1.0;
+  long kib = -1;
+  if (std::fscanf(p, "%ld", &kib) != 1) kib = -1;
+  pclose(p);
+  return kib < 0 ? -1.0 : double(kib) / 1024.0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   int threads = 1, frames = 5;
   std::string only;          // --scene TEXT: run only scenes whose name contains TEXT
   bool softgl_only = false;  // --softgl-only 1: skip llvmpipe (for profiling)
+  std::string rss_child;     // --rss-child softgl|llvmpipe: run the model scene once, print peak RSS in KiB
   for (int i = 1; i + 1 < argc; i += 2) {
     if (!std::strcmp(argv[i], "--threads")) threads = std::max(1, std::atoi(argv[i + 1]));
     if (!std::strcmp(argv[i], "--frames")) frames = std::max(1, std::atoi(argv[i + 1]));
     if (!std::strcmp(argv[i], "--png")) g_png_dir = argv[i + 1];
     if (!std::strcmp(argv[i], "--scene")) only = argv[i + 1];
     if (!std::strcmp(argv[i], "--softgl-only")) softgl_only = std::atoi(argv[i + 1]) != 0;
+    if (!std::strcmp(argv[i], "--rss-child")) rss_child = argv[i + 1];
   }
   const std::string lp_threads = std::to_string(threads == 1 ? 0 : threads);
   setenv("LP_NUM_THREADS", lp_threads.c_str(), 1);
   g_options.threads = threads;
   setenv("GALLIUM_DRIVER", "llvmpipe", 1);
 
-  const Geometry tris = SmallTriangles(1000000);
+  const bool all_data = rss_child.empty();  // a memory-measuring child loads the model alone
+  const Geometry tris = all_data ? SmallTriangles(1000000) : Geometry{};
   const Geometry blend_quads = FullScreenQuads(50, 1.0f), tex_quads = FullScreenQuads(20, 3.0f);
-  const std::vector<std::uint8_t> texture = PatternTexture(1024);
+  const std::vector<std::uint8_t> texture = all_data ? PatternTexture(1024) : std::vector<std::uint8_t>{};
   Geometry engine;
   glm::mat4 engine_vp(1.0f);
   const bool have_engine = LoadModel("/usr/share/assimp/models/glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb",
@@ -413,7 +446,7 @@ int main(int argc, char** argv) {
   }
   const std::string head_dir = "../shared/assets/african_head";
   Geometry head;
-  const bool have_head = LoadTexturedModel(head_dir + "/african_head.obj", head);
+  const bool have_head = all_data && LoadTexturedModel(head_dir + "/african_head.obj", head);
   const glm::vec3 head_eye(0.6f, 0.3f, 2.6f);
   const glm::mat4 head_vp = glm::perspective(glm::radians(40.0f), 1280.0f / 720.0f, 0.5f, 10.0f) *
                             glm::lookAt(head_eye, glm::vec3(0.0f), glm::vec3(0, 1, 0));
@@ -574,6 +607,19 @@ int main(int argc, char** argv) {
                       });
                     }});
 
+  if (!rss_child.empty()) {  // the memory-measuring child: the model scene once, then the peak
+    if (!have_engine) return 1;
+    (rss_child == "softgl" ? scenes[0].softgl_ms : scenes[0].gl_ms)(1);
+    std::printf("%ld\n", StatusKiB("VmHWM"));
+    return 0;
+  }
+  // Peak memory of the model scene: each renderer in a process of its own that loads the model and nothing else.
+  double rss_softgl = -1.0, rss_gl = -1.0;
+  if (have_engine && (only.empty() || std::string(scenes[0].name).find(only) != std::string::npos)) {
+    rss_softgl = ModelScenePeakMiB(argv[0], "softgl", threads);
+    if (!softgl_only) rss_gl = ModelScenePeakMiB(argv[0], "llvmpipe", threads);
+  }
+
   std::printf("| scene | size | threads | softgl ms/frame | llvmpipe ms/frame | softgl / llvmpipe | softgl rate |\n");
   std::printf("|---|---|---|---|---|---|---|\n");
   for (const Scene& s : scenes) {
@@ -584,6 +630,9 @@ int main(int argc, char** argv) {
                 b > 0 ? a / b : 0.0, rate, s.unit);
     std::fflush(stdout);
   }
+  if (rss_softgl >= 0.0)
+    std::printf("| model scene: peak RSS of the process, MiB | 1280x720 | %d | %.1f | %.1f | %.2f | |\n", threads, rss_softgl, rss_gl,
+                rss_gl > 0 ? rss_softgl / rss_gl : 0.0);
   if (!have_engine) std::printf("(model scene skipped: install assimp-testmodels)\n");
   if (!have_head) std::printf("(textured model scene skipped: %s not found)\n", head_dir.c_str());
   return 0;
