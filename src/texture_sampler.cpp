@@ -18,6 +18,14 @@ namespace softgl {
 
 namespace {
 
+// The sampling path is inlined into each entry point, so that each is compiled for its own case (depth comparison
+// or not, a constant face).
+#if defined(__GNUC__)
+#define SOFTGL_INLINE inline __attribute__((always_inline))
+#else
+#define SOFTGL_INLINE inline
+#endif
+
 using detail::SamplerParams;
 using detail::TextureLevel;
 using detail::TextureView;
@@ -25,7 +33,7 @@ using detail::TextureView;
 const glm::vec4 kMissing(0.0f, 0.0f, 0.0f, 1.0f);  // what an incomplete or missing texture samples as
 
 // Table 8.20: the texel index i wrapped into [0, size); -1 for a border texel.
-int Wrap(Enum mode, long i, int size) {
+SOFTGL_INLINE int Wrap(Enum mode, long i, int size) {
   switch (mode) {
     case CLAMP_TO_EDGE: return int(std::clamp<long>(i, 0, size - 1));
     case CLAMP_TO_BORDER: return (i < 0 || i >= size) ? -1 : int(i);
@@ -35,12 +43,14 @@ int Wrap(Enum mode, long i, int size) {
       const long mirror = a >= 0 ? a : -(1 + a);
       return int((size - 1) - mirror);
     }
-    default: return int(((i % size) + size) % size);  // REPEAT
+    default:  // REPEAT; a power-of-two size needs no division
+      if ((size & (size - 1)) == 0) return int(i & long(size - 1));
+      return int(((i % size) + size) % size);
   }
 }
 
 // Texel-space coordinate, kept finite and within a range where integer conversion is defined.
-float TexelCoord(float s, int size) {
+SOFTGL_INLINE float TexelCoord(float s, int size) {
   const float u = s * float(size);
   return std::isnan(u) ? 0.0f : std::clamp(u, -1e9f, 1e9f);
 }
@@ -62,22 +72,15 @@ glm::vec4 Fetch(const SamplerParams& p, const TextureLevel& level, long i, long 
   return t;
 }
 
-// Wrap() for REPEAT and CLAMP_TO_EDGE without a division where the size allows; the same results.
-inline int WrapFast(Enum mode, long i, int size) {
-  if (mode == REPEAT && (size & (size - 1)) == 0) return int(i & long(size - 1));
-  if (mode == CLAMP_TO_EDGE) return int(i < 0 ? 0 : (i >= size ? size - 1 : i));
-  return Wrap(mode, i, size);
-}
-
 // LINEAR on one level without depth comparison: each of the two wrapped columns and rows is computed once, and
 // the weighted sum is taken four channels at a time, with the same operations in the same order as the generic
 // path below.
-glm::vec4 Bilinear(const SamplerParams& p, const TextureLevel& level, float u, float v) {
+SOFTGL_INLINE glm::vec4 Bilinear(const SamplerParams& p, const TextureLevel& level, float u, float v) {
   const float fu = u - 0.5f, fv = v - 0.5f;
   const long i0 = long(std::floor(fu)), j0 = long(std::floor(fv));
   const float a = fu - float(i0), b = fv - float(j0);
-  const int wi[2] = {WrapFast(p.wrap_s, i0, level.width), WrapFast(p.wrap_s, i0 + 1, level.width)};
-  const int wj[2] = {WrapFast(p.wrap_t, j0, level.height), WrapFast(p.wrap_t, j0 + 1, level.height)};
+  const int wi[2] = {Wrap(p.wrap_s, i0, level.width), Wrap(p.wrap_s, i0 + 1, level.width)};
+  const int wj[2] = {Wrap(p.wrap_t, j0, level.height), Wrap(p.wrap_t, j0 + 1, level.height)};
   const float* t[4];
   for (int k = 0; k < 4; ++k) {
     const int i = wi[k & 1], j = wj[k >> 1];
@@ -99,7 +102,7 @@ glm::vec4 Bilinear(const SamplerParams& p, const TextureLevel& level, float u, f
 }
 
 // One level, NEAREST or LINEAR (section 8.14.2): texel centres at +0.5.
-glm::vec4 FilterLevel(const SamplerParams& p, const TextureLevel& level, Enum filter, glm::vec2 st,
+SOFTGL_INLINE glm::vec4 FilterLevel(const SamplerParams& p, const TextureLevel& level, Enum filter, glm::vec2 st,
                       const DepthCompare& cmp) {
   const float u = TexelCoord(st.x, level.width), v = TexelCoord(st.y, level.height);
   if (filter == NEAREST) return Fetch(p, level, long(std::floor(u)), long(std::floor(v)), cmp);
@@ -113,7 +116,7 @@ glm::vec4 FilterLevel(const SamplerParams& p, const TextureLevel& level, Enum fi
 
 // log2 evaluated piecewise-linearly between powers of two: exponent + (mantissa - 1). Exact at powers of two,
 // at most 0.086 below log2 in between.
-float PiecewiseLog2(float x) {
+SOFTGL_INLINE float PiecewiseLog2(float x) {
   if (!(x > 0.0f)) return -INFINITY;
   std::uint32_t bits;
   std::memcpy(&bits, &x, 4);
@@ -134,7 +137,7 @@ float PiecewiseLog2(float x) {
 // piecewise-linear log2 above (at most 0.043 levels from the exact value): the approximation Mesa's llvmpipe
 // makes, which keeps trilinear filtering within +-1 of it where the exact logarithm differs by up to 4
 // (docs/conformance.md).
-float Lambda(const TextureView& view, glm::vec2 dx, glm::vec2 dy, float shader_bias) {
+SOFTGL_INLINE float Lambda(const TextureView& view, glm::vec2 dx, glm::vec2 dy, float shader_bias) {
   const TextureLevel& base = view.texture->levels[0][view.base];
   const glm::vec2 size(float(base.width), float(base.height));
   const glm::vec2 tx = dx * size, ty = dy * size;
@@ -147,7 +150,7 @@ float Lambda(const TextureView& view, glm::vec2 dx, glm::vec2 dy, float shader_b
 }
 
 // Minification or magnification at level of detail lambda, on one face (section 8.14.2 to 8.14.3).
-glm::vec4 SampleFace(const TextureView& view, int face, glm::vec2 st, float lambda, const DepthCompare& cmp) {
+SOFTGL_INLINE glm::vec4 SampleFace(const TextureView& view, int face, glm::vec2 st, float lambda, const DepthCompare& cmp) {
   const SamplerParams& p = view.texture->params;
   const auto& levels = view.texture->levels[face];
   const bool nearest_mip = p.min_filter == NEAREST_MIPMAP_NEAREST || p.min_filter == LINEAR_MIPMAP_NEAREST;
