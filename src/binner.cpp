@@ -60,7 +60,8 @@ void BinnedBatch::Finish(const TileGrid& grid) {
   for (std::uint64_t n : notes_) tile_start_[std::size_t(n >> 32) + 1] += size_of(std::uint32_t(n));
   for (std::size_t t = 1; t < tile_start_.size(); ++t) tile_start_[t] += tile_start_[t - 1];
   tile_data_.resize(tile_start_.back());
-  std::vector<std::uint32_t> fill(tile_start_.begin(), tile_start_.end() - 1);
+  std::vector<std::uint32_t>& fill = fill_;
+  fill.assign(tile_start_.begin(), tile_start_.end() - 1);
   for (std::uint64_t n : notes_) {
     const auto prim = std::uint32_t(n);
     float* dst = tile_data_.data() + fill[std::size_t(n >> 32)];

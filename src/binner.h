@@ -82,6 +82,7 @@ class BinnedBatch {
   std::vector<std::uint64_t> notes_;        // tile << 32 | primitive, in submission order
   std::vector<std::uint32_t> tile_start_;   // [tiles + 1]: where each tile's list starts in tile_data_
   std::vector<float> tile_data_;
+  std::vector<std::uint32_t> fill_;         // Finish's write position per tile
 };
 
 /// The pixel box a primitive's fragments can fall in, from its window positions: the rounded-out bounding box

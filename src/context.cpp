@@ -753,7 +753,7 @@ void Context::DrawElement(Enum mode, int count, Enum type, std::size_t offset) {
   const std::size_t bytes = std::size_t(count) * detail::TypeSize(type);
   if (offset > store.size() || bytes > store.size() - offset) return s.SetError(INVALID_OPERATION, __func__, "the indices would be read past the end of the element buffer");
   if (count == 0) return;
-  std::vector<std::uint32_t> elements;
+  std::vector<std::uint32_t>& elements = s.scratch.elements;  // reused: no allocation (and page faults) per draw
   try {
     elements.resize(std::size_t(count));
   } catch (const std::bad_alloc&) {

@@ -260,7 +260,7 @@ void RecordDraw(const DrawCall& call, const FetchPlan& fetch, const DrawState& s
       break;
     default: break;  // POINTS, LINES, TRIANGLES: kDrawChunk is a multiple of 6
   }
-  std::vector<std::uint32_t> piece;
+  std::vector<std::uint32_t>& piece = scratch.piece;
   piece.reserve(std::size_t(kDrawChunk));
   for (std::int64_t s = begin; s < count; s += step) {
     piece.clear();

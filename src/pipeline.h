@@ -66,6 +66,8 @@ struct VertexScratch {
 /// Per-context memory reused from draw to draw, so that drawing allocates only when a draw is bigger than any
 /// before it.
 struct Scratch {
+  std::vector<std::uint32_t> elements;       // DrawElement's indices, read from the element buffer
+  std::vector<std::uint32_t> piece;          // the indices of one piece of a large draw
   std::vector<std::uint32_t> shade_indices;  // vertex index of each vertex to shade
   std::vector<std::uint32_t> element_to_shaded;
   ShadedVertices shaded;
