@@ -249,21 +249,79 @@ __attribute__((target("avx2"))) void Store2Avx2(const Unorm8Blender& b, const gl
   std::memcpy(p, &out, 8);
 }
 
-bool ChooseAvx2() {
-  if (const char* simd = std::getenv("SOFTGL_SIMD"); simd && std::strcmp(simd, "sse2") == 0) return false;
+// A whole quad (two rows of two pixels) in one 512-bit register: the same operations again, lane for lane.
+// (GCC 12's AVX-512 headers start intrinsics from a self-initialized "undefined" vector, which its
+// uninitialized-value warnings report at every use: a known false positive, silenced for this function only.)
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wuninitialized"
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#endif
+__attribute__((target("avx512f"))) void Store4Avx512(const Unorm8Blender& b, const FragmentOut* row0,
+                                                     const FragmentOut* row1, std::uint8_t* p0, std::uint8_t* p1) {
+  const __m512 zero = _mm512_setzero_ps(), one = _mm512_set1_ps(1.0f), scale = _mm512_set1_ps(255.0f);
+  __m512 s = _mm512_castps128_ps512(_mm_loadu_ps(&row0[0].color[0].x));
+  s = _mm512_insertf32x4(s, _mm_loadu_ps(&row0[1].color[0].x), 1);
+  s = _mm512_insertf32x4(s, _mm_loadu_ps(&row1[0].color[0].x), 2);
+  s = _mm512_insertf32x4(s, _mm_loadu_ps(&row1[1].color[0].x), 3);
+  s = _mm512_maskz_mov_ps(_mm512_cmp_ps_mask(s, s, _CMP_ORD_Q), s);  // NaN -> 0
+  s = _mm512_min_ps(_mm512_max_ps(s, zero), one);
+  std::uint64_t old0, old1;
+  std::memcpy(&old0, p0, 8);
+  std::memcpy(&old1, p1, 8);
+  if (b.blend) {
+    const __m128i old_bytes = _mm_set_epi64x(std::int64_t(old1), std::int64_t(old0));
+    const __m512 d = _mm512_div_ps(_mm512_cvtepi32_ps(_mm512_cvtepu8_epi32(old_bytes)), scale);
+    const __m512 c = _mm512_broadcast_f32x4(_mm_loadu_ps(&b.constant.x));
+    const __m512 sources[7] = {zero, s, d, _mm512_permute_ps(s, 0xFF), _mm512_permute_ps(d, 0xFF), c,
+                               _mm512_permute_ps(c, 0xFF)};
+    const __m512 src_v = _mm512_mask_blend_ps(0x8888, sources[b.src_pick[0]], sources[b.src_pick[1]]);
+    const __m512 dst_v = _mm512_mask_blend_ps(0x8888, sources[b.dst_pick[0]], sources[b.dst_pick[1]]);
+    const __m512 sf = _mm512_add_ps(_mm512_broadcast_f32x4(b.sk0), _mm512_mul_ps(_mm512_broadcast_f32x4(b.sk1), src_v));
+    const __m512 df = _mm512_add_ps(_mm512_broadcast_f32x4(b.dk0), _mm512_mul_ps(_mm512_broadcast_f32x4(b.dk1), dst_v));
+    s = _mm512_add_ps(_mm512_mul_ps(_mm512_broadcast_f32x4(b.ks), _mm512_mul_ps(s, sf)),
+                      _mm512_mul_ps(_mm512_broadcast_f32x4(b.kd), _mm512_mul_ps(d, df)));
+    s = _mm512_min_ps(_mm512_max_ps(s, zero), one);
+  }
+  const __m128i bytes = _mm512_cvtusepi32_epi8(_mm512_cvtps_epi32(_mm512_mul_ps(s, scale)));  // values in [0, 255]
+  const std::uint64_t keep = std::uint64_t(b.keep) | std::uint64_t(b.keep) << 32;
+  const auto new0 = std::uint64_t(_mm_cvtsi128_si64(bytes));
+  const auto new1 = std::uint64_t(_mm_cvtsi128_si64(_mm_unpackhi_epi64(bytes, bytes)));
+  const std::uint64_t out0 = (old0 & keep) | (new0 & ~keep), out1 = (old1 & keep) | (new1 & ~keep);
+  std::memcpy(p0, &out0, 8);
+  std::memcpy(p1, &out1, 8);
+}
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic pop
+#endif
+
+// 0: SSE2, 1: AVX2, 2: AVX-512. SOFTGL_SIMD=sse2 or avx2 caps it (to test the narrower paths).
+int ChooseSimd() {
   __builtin_cpu_init();
-  return __builtin_cpu_supports("avx2");
+  int level = __builtin_cpu_supports("avx512f") ? 2 : __builtin_cpu_supports("avx2") ? 1 : 0;
+  if (const char* simd = std::getenv("SOFTGL_SIMD")) {
+    if (std::strcmp(simd, "sse2") == 0) level = 0;
+    if (std::strcmp(simd, "avx2") == 0) level = std::min(level, 1);
+  }
+  return level;
 }
 #endif
+
+int SimdLevel() {
+#if defined(SOFTGL_AVX2_DISPATCH)
+  static const int level = ChooseSimd();
+  return level;
+#else
+  return 0;
+#endif
+}
 
 }  // namespace
 
 const char* FragmentSimdPath() {
-#if defined(SOFTGL_AVX2_DISPATCH)
-  static const bool avx2 = ChooseAvx2();
-  return avx2 ? "avx2" : "sse2";
-#elif defined(__SSE2__)
-  return "sse2";
+#if defined(__SSE2__)
+  static const char* const names[3] = {"sse2", "avx2", "avx512"};
+  return names[SimdLevel()];
 #else
   return "portable";
 #endif
@@ -308,12 +366,8 @@ void ApplyFragmentOps(const FragmentOpsState& state, const QuadBuffer& quads, co
   const ColorBuffer& cb0 = target.color[0];
   if (unorm8.usable && !stencil_test && any_color && cb0.rgba8 && !target.color[1].Present() &&
       !target.color[2].Present() && !target.color[3].Present()) {
-#if defined(SOFTGL_AVX2_DISPATCH)
-    static const bool avx2 = std::strcmp(FragmentSimdPath(), "avx2") == 0;
-    const bool pairs = avx2 && !unorm8.min_max;
-#else
-    const bool pairs = false;
-#endif
+    // Wider paths for the blenders without MIN or MAX: a row of two pixels (AVX2), a whole quad (AVX-512).
+    const int wide = unorm8.min_max ? 0 : SimdLevel();
     for (int q = 0; q < quads.count; ++q) {
       // Depth first for the four lanes (four different pixels), then colour a row of two at a time.
       unsigned pass = 0;
@@ -330,13 +384,21 @@ void ApplyFragmentOps(const FragmentOpsState& state, const QuadBuffer& quads, co
         }
         pass |= 1u << lane;
       }
+#if defined(SOFTGL_AVX2_DISPATCH)
+      if (wide == 2 && pass == 0xFu) {
+        Store4Avx512(unorm8, quads.out + q * 4, quads.out + q * 4 + 2,
+                     cb0.rgba8 + cb0.Index(quads.qx[q], quads.qy[q]) * 4,
+                     cb0.rgba8 + cb0.Index(quads.qx[q], quads.qy[q] + 1) * 4);
+        continue;
+      }
+#endif
       for (int row = 0; row < 2; ++row) {
         const unsigned bits = (pass >> (2 * row)) & 3u;
         if (!bits) continue;
         std::uint8_t* p = cb0.rgba8 + cb0.Index(quads.qx[q], quads.qy[q] + row) * 4;
         const FragmentOut* out = quads.out + q * 4 + 2 * row;
 #if defined(SOFTGL_AVX2_DISPATCH)
-        if (pairs && bits == 3u) {
+        if (wide >= 1 && bits == 3u) {
           Store2Avx2(unorm8, out[0].color[0], out[1].color[0], p);
           continue;
         }
