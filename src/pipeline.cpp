@@ -20,7 +20,7 @@ constexpr int kBinJob = 1024;  // primitives clipped and binned per job
 
 // Stage 1-2: fetch and shade every vertex the draw references, once each where indices repeat.
 void ShadeVertices(const DrawCall& call, const FetchPlan& fetch, const Program& program, const Textures* textures,
-                   WorkerPool& pool, Scratch& s) {
+                   const ViewportTransform& viewport, WorkerPool& pool, Scratch& s) {
   const int count = call.count;
   auto& to_shade = s.shade_indices;
   auto& map = s.element_to_shaded;
@@ -52,6 +52,10 @@ void ShadeVertices(const DrawCall& call, const FetchPlan& fetch, const Program& 
   out.position.resize(std::size_t(n));
   out.point_size.resize(std::size_t(n));
   out.varyings.resize(std::size_t(n) * std::size_t(out.nvar));
+  out.clip_codes.resize(std::size_t(n));
+  out.window.resize(std::size_t(n));
+  out.window_varyings.resize(std::size_t(n) * std::size_t(out.nvar));
+  const ClipPlanes planes = GuardBandPlanes(viewport);
   if (s.vertex.size() < std::size_t(pool.Threads())) s.vertex.resize(std::size_t(pool.Threads()));
   // Jobs of kVertexJob vertices, shaded in batches of kVertexBatch; every vertex is written by one job only.
   const int jobs = (n + kVertexJob - 1) / kVertexJob;
@@ -73,6 +77,20 @@ void ShadeVertices(const DrawCall& call, const FetchPlan& fetch, const Program& 
       batch.varyings = out.varyings.data() + std::size_t(base) * out.nvar;
       batch.textures = textures;
       program.ShadeVertices(batch);
+      // Clip codes, and the window position of each vertex inside the guard band (the divide and viewport
+      // transform of ToWindow, done once per vertex rather than once per primitive using it).
+      for (int i = base; i < base + m; ++i) {
+        const glm::vec4& p = out.position[std::size_t(i)];
+        out.clip_codes[std::size_t(i)] = ClipCodes(p, planes);
+        if (out.clip_codes[std::size_t(i)] != 0) continue;
+        const float oow = 1.0f / p.w;
+        out.window[std::size_t(i)] = glm::vec4(p.x * oow * viewport.scale.x + viewport.translate.x,
+                                               p.y * oow * viewport.scale.y + viewport.translate.y,
+                                               p.z * oow * viewport.scale.z + viewport.translate.z, oow);
+        const float* v = out.varyings.data() + std::size_t(i) * out.nvar;
+        float* w = out.window_varyings.data() + std::size_t(i) * out.nvar;
+        for (int k = 0; k < out.nvar; ++k) w[k] = v[k] * oow;
+      }
     }
   });
 }
@@ -109,16 +127,43 @@ class PrimitiveRunner {
   }
 
   void Triangle(std::uint32_t i0, std::uint32_t i1, std::uint32_t i2) {
-    ToClipVertex(sv_, i0, clip_[0]);
-    ToClipVertex(sv_, i1, clip_[1]);
-    ToClipVertex(sv_, i2, clip_[2]);
-    ClipTriangle(clip_[0], clip_[1], clip_[2], sv_.nvar, planes_, poly_);
-    if (poly_.count < 3) return;
-    for (int k = 0; k < poly_.count; ++k) ToWindow(poly_.v[k], sv_.nvar, state_.viewport, win_[k]);
-    const float area = SignedArea(win_, poly_.count);
-    if (area == 0.0f) return;
-    const bool front = IsFrontFacing(area, state_.primitive.front_face);
-    if (state_.primitive.cull_enabled && IsCulled(front, state_.primitive.cull_face)) return;
+    int count = 3;
+    const unsigned* codes = sv_.clip_codes.data();
+    if ((codes[i0] | codes[i1] | codes[i2]) == 0) {
+      // Inside the guard band: no clipping, and the window positions are already there. The varyings are
+      // copied only if the triangle survives culling.
+      const std::uint32_t idx[3] = {i0, i1, i2};
+      for (int k = 0; k < 3; ++k) win_[k].win = sv_.window[idx[k]];
+      if (!Facing(count)) return;
+      for (int k = 0; k < 3; ++k)
+        if (sv_.nvar > 0)
+          std::memcpy(win_[k].var, sv_.window_varyings.data() + std::size_t(idx[k]) * std::size_t(sv_.nvar),
+                      sizeof(float) * std::size_t(sv_.nvar));
+    } else {
+      ToClipVertex(sv_, i0, clip_[0]);
+      ToClipVertex(sv_, i1, clip_[1]);
+      ToClipVertex(sv_, i2, clip_[2]);
+      ClipTriangle(clip_[0], clip_[1], clip_[2], sv_.nvar, planes_, poly_);
+      if (poly_.count < 3) return;
+      count = poly_.count;
+      for (int k = 0; k < count; ++k) ToWindow(poly_.v[k], sv_.nvar, state_.viewport, win_[k]);
+      if (!Facing(count)) return;
+    }
+    Emit(i0, i1, i2, count);
+  }
+
+ private:
+  // Facing and culling of the polygon win_[0 .. count): false when it is dropped (no area, or culled).
+  bool Facing(int count) {
+    const float area = SignedArea(win_, count);
+    if (area == 0.0f) return false;
+    front_ = IsFrontFacing(area, state_.primitive.front_face);
+    return !(state_.primitive.cull_enabled && IsCulled(front_, state_.primitive.cull_face));
+  }
+
+  // The surviving polygon win_[0 .. count) of triangle (i0, i1, i2), filled, as lines or as points.
+  void Emit(std::uint32_t i0, std::uint32_t i1, std::uint32_t i2, int count) {
+    const bool front = front_;
     const bool offset = state_.primitive.polygon_mode == LINE    ? state_.primitive.offset_line
                         : state_.primitive.polygon_mode == POINT ? state_.primitive.offset_point
                                                        : state_.primitive.offset_fill;
@@ -139,7 +184,7 @@ class PrimitiveRunner {
         }
         break;
       default:
-        for (int k = 1; k + 1 < poly_.count; ++k) {
+        for (int k = 1; k + 1 < count; ++k) {
           BinnedPrimitive p;
           p.kind = PrimitiveKind::kTriangle;
           p.front_facing = front;
@@ -159,7 +204,6 @@ class PrimitiveRunner {
     depth_offset_ = 0.0f;
   }
 
- private:
   float PointSizeOf(std::uint32_t i) const {
     const float size = state_.primitive.program_point_size ? sv_.point_size[i] : state_.primitive.point_size;
     return std::isnan(size) ? 1.0f : std::clamp(size, 1.0f, kMaxPointSize);
@@ -180,6 +224,7 @@ class PrimitiveRunner {
   const TileGrid& grid_;
   ClipPlanes planes_;
   float depth_offset_ = 0.0f;
+  bool front_ = true;  // facing of the polygon in win_
   ClipVertex clip_[4];
   ClipPolygon poly_;
   WindowVertex win_[kMaxPolygonVertices];
@@ -194,7 +239,7 @@ namespace {
 // in jobs of kBinJob primitives, each job into its own batch, the batches kept in primitive order.
 void RecordChunk(const DrawCall& call, const FetchPlan& fetch, const DrawState& state, DrawPacket& packet,
                  Frame& frame, WorkerPool& pool, Scratch& scratch) {
-  ShadeVertices(call, fetch, *state.program, state.textures, pool, scratch);
+  ShadeVertices(call, fetch, *state.program, state.textures, state.viewport, pool, scratch);
 
   Primitives& prims = scratch.primitives;
   AssemblePrimitives(call.mode, call.count, prims);

@@ -27,6 +27,11 @@ struct ShadedVertices {
   std::vector<float> point_size;
   std::vector<float> varyings;  // [count][nvar]
   const float* Varyings(int i) const { return varyings.data() + std::size_t(i) * nvar; }
+  // Computed once per vertex beside the shader, for primitives that need no clipping: the vertex's guard-band
+  // clip codes and, where they are 0, its window position and varyings divided by w (what ToWindow gives).
+  std::vector<unsigned> clip_codes;
+  std::vector<glm::vec4> window;
+  std::vector<float> window_varyings;  // [count][nvar]
 };
 
 /// A vertex in homogeneous clip space with its varyings (input and output of clipping).
