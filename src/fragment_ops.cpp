@@ -333,23 +333,42 @@ bool EarlyDepthTestApplies(const FragmentOpsState& state, bool shader_writes_dep
          (f == LESS || f == LEQUAL || f == GREATER || f == GEQUAL);
 }
 
-int EarlyDepthTest(const FragmentOpsState& state, QuadBuffer& quads, const RenderTarget& target) {
+namespace {
+
+// The early test for one comparison, chosen once per batch rather than per lane.
+template <class Passes>
+int EarlyDepthLoop(QuadBuffer& quads, const RenderTarget& target, Passes passes) {
   int live = 0;
+  for (int q = 0; q < quads.count; ++q) {
+    for (int lane = 0; lane < 4; ++lane) {
+      const int l = q * 4 + lane;
+      if (!quads.live[l]) continue;  // a live lane lies inside the target; the others may not
+      const float depth = quads.frag_coord[l].z;
+      const float stored = target.Depth(quads.qx[q] + (lane & 1), quads.qy[q] + (lane >> 1));
+      // As the late test: depth clamped to [0, 1], NaN fails.
+      if (std::isnan(depth) || !passes(std::clamp(depth, 0.0f, 1.0f), stored)) quads.live[l] = 0;
+      live += quads.live[l];
+    }
+  }
+  return live;
+}
+
+}  // namespace
+
+int EarlyDepthTest(const FragmentOpsState& state, QuadBuffer& quads, const RenderTarget& target) {
   if (!target.depth) {
+    int live = 0;
     for (int l = 0; l < quads.count * 4; ++l) live += quads.live[l];
     return live;
   }
-  for (int q = 0; q < quads.count; ++q)
-    for (int lane = 0; lane < 4; ++lane) {
-      const int l = q * 4 + lane;
-      if (!quads.live[l]) continue;
-      const float depth = quads.frag_coord[l].z;
-      const float z = std::clamp(depth, 0.0f, 1.0f);
-      const int x = quads.qx[q] + (lane & 1), y = quads.qy[q] + (lane >> 1);
-      if (std::isnan(depth) || !DepthTest(state.depth_func, z, target.Depth(x, y))) quads.live[l] = 0;
-      live += quads.live[l];
-    }
-  return live;
+  switch (state.depth_func) {
+    case LESS: return EarlyDepthLoop(quads, target, [](float z, float d) { return z < d; });
+    case LEQUAL: return EarlyDepthLoop(quads, target, [](float z, float d) { return z <= d; });
+    case GREATER: return EarlyDepthLoop(quads, target, [](float z, float d) { return z > d; });
+    case GEQUAL: return EarlyDepthLoop(quads, target, [](float z, float d) { return z >= d; });
+    default:
+      return EarlyDepthLoop(quads, target, [&](float z, float d) { return DepthTest(state.depth_func, z, d); });
+  }
 }
 
 void ApplyFragmentOps(const FragmentOpsState& state, const QuadBuffer& quads, const RenderTarget& target) {
