@@ -139,6 +139,12 @@ TextureView MakeView(const TextureObject& texture) {
   }
   if (texture.target == TEXTURE_CUBE_MAP && base.width != base.height) return view;
   view.complete = true;
+  const bool pow2 = (base.width & (base.width - 1)) == 0 && (base.height & (base.height - 1)) == 0;
+  if (texture.target == TEXTURE_2D && !view.depth && pow2 && p.wrap_s == REPEAT && p.wrap_t == REPEAT &&
+      p.mag_filter == LINEAR && p.compare_mode == NONE) {
+    if (p.min_filter == LINEAR) view.fast = TextureView::Fast::kRepeatLinear;
+    if (p.min_filter == LINEAR_MIPMAP_LINEAR) view.fast = TextureView::Fast::kRepeatTrilinear;
+  }
   return view;
 }
 

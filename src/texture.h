@@ -46,6 +46,11 @@ struct TextureView {
   bool depth = false;  // a DEPTH_COMPONENT format
   int base = 0;        // level_base
   int q = 0;           // the last level mipmapped filtering may use
+  // The common case, which Textures::Sample takes without re-deciding per sample: a 2D colour texture with
+  // REPEAT in s and t on power-of-two sizes, LINEAR magnification, and LINEAR or LINEAR_MIPMAP_LINEAR
+  // minification, no depth comparison.
+  enum class Fast : unsigned char { kNone, kRepeatLinear, kRepeatTrilinear };
+  Fast fast = Fast::kNone;
 };
 
 /// Resolves a texture for sampling (OpenGL 4.6, section 8.17, texture completeness).

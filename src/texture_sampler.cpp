@@ -101,6 +101,44 @@ SOFTGL_INLINE glm::vec4 Bilinear(const SamplerParams& p, const TextureLevel& lev
 #endif
 }
 
+// Bilinear() for REPEAT on a power-of-two level: the same arithmetic, the wrap a mask, no border texel.
+SOFTGL_INLINE glm::vec4 BilinearRepeatPow2(const TextureLevel& level, glm::vec2 st) {
+  const float u = TexelCoord(st.x, level.width), v = TexelCoord(st.y, level.height);
+  const float fu = u - 0.5f, fv = v - 0.5f;
+  const long i0 = long(std::floor(fu)), j0 = long(std::floor(fv));
+  const float a = fu - float(i0), b = fv - float(j0);
+  const long mi = level.width - 1, mj = level.height - 1;
+  const std::size_t c0 = std::size_t(i0 & mi), c1 = std::size_t((i0 + 1) & mi);
+  const float* row0 = level.texels.data() + std::size_t(j0 & mj) * std::size_t(level.width) * 4;
+  const float* row1 = level.texels.data() + std::size_t((j0 + 1) & mj) * std::size_t(level.width) * 4;
+  const float w00 = (1 - a) * (1 - b), w10 = a * (1 - b), w01 = (1 - a) * b, w11 = a * b;
+#if defined(__SSE2__)
+  __m128 sum = _mm_mul_ps(_mm_set1_ps(w00), _mm_loadu_ps(row0 + c0 * 4));
+  sum = _mm_add_ps(sum, _mm_mul_ps(_mm_set1_ps(w10), _mm_loadu_ps(row0 + c1 * 4)));
+  sum = _mm_add_ps(sum, _mm_mul_ps(_mm_set1_ps(w01), _mm_loadu_ps(row1 + c0 * 4)));
+  sum = _mm_add_ps(sum, _mm_mul_ps(_mm_set1_ps(w11), _mm_loadu_ps(row1 + c1 * 4)));
+  glm::vec4 out;
+  _mm_storeu_ps(&out.x, sum);
+  return out;
+#else
+  auto texel = [](const float* x) { return glm::vec4(x[0], x[1], x[2], x[3]); };
+  return w00 * texel(row0 + c0 * 4) + w10 * texel(row0 + c1 * 4) + w01 * texel(row1 + c0 * 4) +
+         w11 * texel(row1 + c1 * 4);
+#endif
+}
+
+// SampleFace() for a view whose `fast` is set: the same decisions, taken knowing the filters.
+SOFTGL_INLINE glm::vec4 SampleRepeat(const TextureView& view, glm::vec2 st, float lambda) {
+  const auto& levels = view.texture->levels[0];
+  if (lambda <= 0.0f || view.fast == TextureView::Fast::kRepeatLinear)  // magnification, or LINEAR
+    return BilinearRepeatPow2(levels[view.base], st);
+  if (float(view.base) + lambda >= float(view.q)) return BilinearRepeatPow2(levels[view.q], st);
+  const float fl = std::floor(lambda);
+  const int d1 = view.base + int(fl);
+  const float f = lambda - fl;
+  return (1.0f - f) * BilinearRepeatPow2(levels[d1], st) + f * BilinearRepeatPow2(levels[d1 + 1], st);
+}
+
 // One level, NEAREST or LINEAR (section 8.14.2): texel centres at +0.5.
 SOFTGL_INLINE glm::vec4 FilterLevel(const SamplerParams& p, const TextureLevel& level, Enum filter, glm::vec2 st,
                       const DepthCompare& cmp) {
@@ -216,7 +254,9 @@ int CubeFace(glm::vec3 r) {
 glm::vec4 Textures::Sample(int unit, glm::vec2 uv, glm::vec2 duv_dx, glm::vec2 duv_dy, float bias) const {
   const TextureView* v = Usable(unit_2d, unit);
   if (!v) return kMissing;
-  return SampleFace(*v, 0, uv, Lambda(*v, duv_dx, duv_dy, bias), DepthCompare{});
+  const float lambda = Lambda(*v, duv_dx, duv_dy, bias);
+  if (v->fast != TextureView::Fast::kNone) return SampleRepeat(*v, uv, lambda);
+  return SampleFace(*v, 0, uv, lambda, DepthCompare{});
 }
 
 glm::vec4 Textures::SampleLod(int unit, glm::vec2 uv, float lod) const {
