@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdlib>
 #include <cstring>
 
 #if defined(__SSE2__)
@@ -251,12 +252,44 @@ int CubeFace(glm::vec3 r) {
 
 }  // namespace
 
+namespace {
+
+// The common 2D case, compiled twice: for the baseline processor, and for processors with AVX2 and SSE4.1 (which
+// round to an integer in one instruction), chosen once at run time. The arithmetic is the same operations, so the
+// results are the same (no FMA: it would round differently).
+glm::vec4 SampleRepeatBaseline(const TextureView& v, glm::vec2 uv, glm::vec2 dx, glm::vec2 dy, float bias) {
+  return SampleRepeat(v, uv, Lambda(v, dx, dy, bias));
+}
+
+#if defined(__SSE2__) && (defined(__x86_64__) || defined(__i386__))
+__attribute__((target("avx2,sse4.1"))) glm::vec4 SampleRepeatAvx2(const TextureView& v, glm::vec2 uv, glm::vec2 dx,
+                                                                  glm::vec2 dy, float bias) {
+  return SampleRepeat(v, uv, Lambda(v, dx, dy, bias));
+}
+#endif
+
+using SampleRepeatFn = glm::vec4 (*)(const TextureView&, glm::vec2, glm::vec2, glm::vec2, float);
+
+SampleRepeatFn ChooseSampleRepeat() {
+#if defined(__SSE2__) && (defined(__x86_64__) || defined(__i386__))
+  const char* simd = std::getenv("SOFTGL_SIMD");
+  __builtin_cpu_init();
+  if (!(simd && std::strcmp(simd, "sse2") == 0) && __builtin_cpu_supports("avx2") && __builtin_cpu_supports("sse4.1"))
+    return SampleRepeatAvx2;
+#endif
+  return SampleRepeatBaseline;
+}
+
+}  // namespace
+
 glm::vec4 Textures::Sample(int unit, glm::vec2 uv, glm::vec2 duv_dx, glm::vec2 duv_dy, float bias) const {
   const TextureView* v = Usable(unit_2d, unit);
   if (!v) return kMissing;
-  const float lambda = Lambda(*v, duv_dx, duv_dy, bias);
-  if (v->fast != TextureView::Fast::kNone) return SampleRepeat(*v, uv, lambda);
-  return SampleFace(*v, 0, uv, lambda, DepthCompare{});
+  if (v->fast != TextureView::Fast::kNone) {
+    static const SampleRepeatFn sample_repeat = ChooseSampleRepeat();
+    return sample_repeat(*v, uv, duv_dx, duv_dy, bias);
+  }
+  return SampleFace(*v, 0, uv, Lambda(*v, duv_dx, duv_dy, bias), DepthCompare{});
 }
 
 glm::vec4 Textures::SampleLod(int unit, glm::vec2 uv, float lod) const {
