@@ -66,7 +66,8 @@ void ShadeVertices(const DrawCall& call, const FetchPlan& fetch, const Program& 
     const int end = std::min(n, (job + 1) * kVertexJob);
     for (int base = job * kVertexJob; base < end; base += kVertexBatch) {
       const int m = std::min(kVertexBatch, end - base);
-      FetchVertices(fetch, to_shade.data() + base, m, vs.attribs.data());
+      // Disabled attributes read constant values: written into the scratch by the job's first batch only.
+      FetchVertices(fetch, to_shade.data() + base, m, vs.attribs.data(), base == job * kVertexJob);
       for (int i = 0; i < m; ++i) vs.vertex_ids[i] = int(to_shade[base + i]);
       VertexBatch batch;
       batch.count = m;

@@ -74,14 +74,28 @@ glm::vec4 FetchAttribute(const AttribSource& src, std::uint32_t index) {
   if (bytes > room) return v;
   if (src.stride != 0 && std::size_t(index) > (room - bytes) / src.stride) return v;
   const std::uint8_t* p = src.data + src.offset + src.stride * std::size_t(index);
+  if (src.type == FLOAT) {  // the common case, without the per-component conversion switch
+    std::memcpy(static_cast<void*>(&v), p, 4 * std::size_t(src.components));  // glm::vec4 is four floats
+    return v;
+  }
   for (int c = 0; c < src.components; ++c) v[c] = Component(src.type, src.normalized, p + csize * c);
   return v;
 }
 
-void FetchVertices(const FetchPlan& plan, const std::uint32_t* indices, int count, glm::vec4* out) {
+void FetchVertices(const FetchPlan& plan, const std::uint32_t* indices, int count, glm::vec4* out,
+                   bool fill_disabled) {
+  int enabled[kMaxVertexAttribs];
+  int n = 0;
+  for (int a = 0; a < kMaxVertexAttribs; ++a) {
+    if (plan.attrib[a].enabled) {
+      enabled[n++] = a;
+    } else if (fill_disabled) {
+      for (int i = 0; i < count; ++i) out[std::size_t(i) * kMaxVertexAttribs + std::size_t(a)] = plan.attrib[a].current;
+    }
+  }
   for (int i = 0; i < count; ++i) {
     glm::vec4* dst = out + std::size_t(i) * kMaxVertexAttribs;
-    for (int a = 0; a < kMaxVertexAttribs; ++a) dst[a] = FetchAttribute(plan.attrib[a], indices[i]);
+    for (int k = 0; k < n; ++k) dst[enabled[k]] = FetchAttribute(plan.attrib[enabled[k]], indices[i]);
   }
 }
 

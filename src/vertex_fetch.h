@@ -35,8 +35,11 @@ std::size_t TypeSize(Enum type);
 /// (even partly) outside the buffer reads as (0, 0, 0, 1).
 glm::vec4 FetchAttribute(const AttribSource& src, std::uint32_t index);
 
-/// Fetches all attributes of `count` vertices into out[count][kMaxVertexAttribs].
-void FetchVertices(const FetchPlan& plan, const std::uint32_t* indices, int count, glm::vec4* out);
+/// Fetches all attributes of `count` vertices into out[count][kMaxVertexAttribs]. With `fill_disabled` false the
+/// slots of disabled attributes are left as they are: for a caller whose `out` already holds this plan's current
+/// values there (from an earlier call with the same plan).
+void FetchVertices(const FetchPlan& plan, const std::uint32_t* indices, int count, glm::vec4* out,
+                   bool fill_disabled = true);
 
 /// Reads `count` indices of `type` (UNSIGNED_BYTE/SHORT/INT) from `data`. The caller has checked the range.
 void ReadIndices(Enum type, const std::uint8_t* data, int count, std::uint32_t* out);
