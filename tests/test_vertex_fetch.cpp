@@ -4,6 +4,7 @@
 #include <cstring>
 #include <vector>
 
+#include "helpers.h"
 #include "vertex_fetch.h"
 
 using namespace softgl;
@@ -128,4 +129,54 @@ TEST_CASE("indices of each type are read", "[vertex_fetch]") {
   CHECK((out[0] == 1 && out[1] == 40000 && out[2] == 65535));
   detail::ReadIndices(UNSIGNED_INT, reinterpret_cast<const std::uint8_t*>(i), 3, out);
   CHECK((out[0] == 1 && out[1] == 70000 && out[2] == 4000000000u));
+}
+
+TEST_CASE("FetchVertices: enabled attributes per vertex, disabled ones their current value", "[vertex_fetch]") {
+  const std::vector<float> positions = {1, 2, 3, 4, 5, 6, 7, 8, 9};
+  detail::FetchPlan plan;
+  plan.attrib[0] = Source(positions, 3, FLOAT, false);
+  plan.attrib[0].stride = 12;
+  plan.attrib[5].current = glm::vec4(0.25f, 0.5f, 0.75f, 1.0f);  // disabled
+  std::vector<glm::vec4> out(3 * kMaxVertexAttribs, glm::vec4(-1.0f));
+  const std::uint32_t indices[3] = {2, 0, 1};
+  detail::FetchVertices(plan, indices, 3, out.data());
+  CHECK(out[0] == glm::vec4(7, 8, 9, 1));
+  CHECK(out[kMaxVertexAttribs] == glm::vec4(1, 2, 3, 1));
+  CHECK(out[2 * kMaxVertexAttribs + 5] == glm::vec4(0.25f, 0.5f, 0.75f, 1.0f));
+  CHECK(out[kMaxVertexAttribs + 7] == glm::vec4(0, 0, 0, 1));  // never set: the default current value
+  // Again without filling the disabled slots: they keep what the first call wrote, the enabled ones change.
+  const std::uint32_t again[3] = {0, 1, 2};
+  detail::FetchVertices(plan, again, 3, out.data(), false);
+  CHECK(out[0] == glm::vec4(1, 2, 3, 1));
+  CHECK(out[5] == glm::vec4(0.25f, 0.5f, 0.75f, 1.0f));
+}
+
+TEST_CASE("a disabled attribute's value reaches every vertex of a large draw", "[vertex_fetch]") {
+  // 3000 points (three vertex jobs of 1,024) on a 64 x 64 target; attribute 1 is disabled, so every point takes
+  // its current value as colour.
+  struct Shader : softgl::Shader<Shader, testing::Vec4Varyings> {
+    void Vertex(const VertexIn& in, VertexOut<testing::Vec4Varyings>& out) const {
+      out.position = in.attrib[0];
+      out.varyings.value = in.attrib[1];
+    }
+    bool Fragment(const FragmentIn<testing::Vec4Varyings>& in, FragmentOut& out) const {
+      out.color[0] = in.varyings.value;
+      return true;
+    }
+  };
+  Context gl(64, 64);
+  std::vector<glm::vec4> points;
+  for (int i = 0; i < 3000; ++i)
+    points.push_back(glm::vec4((float(i % 64) + 0.5f) / 32.0f - 1.0f, (float(i / 64 % 64) + 0.5f) / 32.0f - 1.0f, 0, 1));
+  testing::MakeVertexArray(gl, points);
+  gl.DisableVertexAttribArray(1);
+  gl.VertexAttrib4f(1, 1.0f, 0.0f, 1.0f, 1.0f);
+  Shader shader;
+  gl.UseProgram(shader);
+  gl.DrawArrays(POINTS, 0, 3000);
+  const softgl::Image img = gl.ReadPixels();
+  int magenta = 0;
+  for (std::size_t i = 0; i < img.rgba.size(); i += 4)
+    magenta += img.rgba[i] == 255 && img.rgba[i + 1] == 0 && img.rgba[i + 2] == 255;
+  CHECK(magenta == 3000);  // 3000 distinct pixels
 }
