@@ -7,7 +7,7 @@
 #include <cstring>
 
 #if defined(__SSE2__)
-#include <xmmintrin.h>
+#include <immintrin.h>
 #endif
 
 #include <softgl/texture.h>
@@ -268,6 +268,134 @@ __attribute__((target("avx2,sse4.1"))) glm::vec4 SampleRepeatAvx2(const TextureV
 }
 #endif
 
+// Four lanes of a quad on the common 2D path. The baseline loops over the lanes; the AVX2 version computes the
+// level of detail, the level choice and the texel coordinates and weights of the four lanes side by side, with
+// each lane's operations those of the one-lane path in the same order, then fetches and weights each lane's texels
+// as BilinearRepeatPow2 does. Lanes whose rho^2 is not a normal positive float take the one-lane path.
+void SampleRepeatQuadBaseline(const TextureView& v, const glm::vec2* uv, const glm::vec2* dx, const glm::vec2* dy,
+                              float bias, glm::vec4* out) {
+  for (int l = 0; l < 4; ++l) out[l] = SampleRepeat(v, uv[l], Lambda(v, dx[l], dy[l], bias));
+}
+
+#if defined(__SSE2__) && (defined(__x86_64__) || defined(__i386__))
+__attribute__((target("avx2,sse4.1"))) void SampleRepeatQuadAvx2(const TextureView& v, const glm::vec2* uv,
+                                                                 const glm::vec2* dx, const glm::vec2* dy,
+                                                                 float bias, glm::vec4* out) {
+  const auto& levels = v.texture->levels[0];
+  const SamplerParams& p = v.texture->params;
+  const TextureLevel& base = levels[v.base];
+  const __m128 one = _mm_set1_ps(1.0f);
+  // Lambda(): tx = dx * size, ty = dy * size, rho^2 = max(dot(tx, tx), dot(ty, ty)).
+  const __m128 W = _mm_set1_ps(float(base.width)), H = _mm_set1_ps(float(base.height));
+  const __m128 txx = _mm_mul_ps(_mm_setr_ps(dx[0].x, dx[1].x, dx[2].x, dx[3].x), W);
+  const __m128 txy = _mm_mul_ps(_mm_setr_ps(dx[0].y, dx[1].y, dx[2].y, dx[3].y), H);
+  const __m128 tyx = _mm_mul_ps(_mm_setr_ps(dy[0].x, dy[1].x, dy[2].x, dy[3].x), W);
+  const __m128 tyy = _mm_mul_ps(_mm_setr_ps(dy[0].y, dy[1].y, dy[2].y, dy[3].y), H);
+  const __m128 dot_x = _mm_add_ps(_mm_mul_ps(txx, txx), _mm_mul_ps(txy, txy));
+  const __m128 dot_y = _mm_add_ps(_mm_mul_ps(tyx, tyx), _mm_mul_ps(tyy, tyy));
+  const __m128 rho2 = _mm_max_ps(dot_y, dot_x);  // std::max(dot_x, dot_y): dot_y if dot_x < dot_y, else dot_x
+  // PiecewiseLog2 for normal positive numbers: exponent + (1.mantissa - 1).
+  const __m128i bits = _mm_castps_si128(rho2);
+  const __m128i biased = _mm_srli_epi32(bits, 23);  // includes the sign bit: negative numbers are out of range
+  const __m128i normal = _mm_and_si128(_mm_cmpgt_epi32(biased, _mm_setzero_si128()),
+                                       _mm_cmplt_epi32(biased, _mm_set1_epi32(255)));
+  if (_mm_movemask_ps(_mm_castsi128_ps(normal)) != 0xF) return SampleRepeatQuadBaseline(v, uv, dx, dy, bias, out);
+  const __m128 m = _mm_castsi128_ps(
+      _mm_or_si128(_mm_and_si128(bits, _mm_set1_epi32(0x007FFFFF)), _mm_set1_epi32(0x3F800000)));
+  const __m128 log2 = _mm_add_ps(_mm_cvtepi32_ps(_mm_sub_epi32(biased, _mm_set1_epi32(127))), _mm_sub_ps(m, one));
+  const float b = std::clamp(p.lod_bias + bias, -16.0f, 16.0f);
+  __m128 lambda = _mm_add_ps(_mm_mul_ps(_mm_set1_ps(0.5f), log2), _mm_set1_ps(b));
+  lambda = _mm_and_ps(lambda, _mm_cmpord_ps(lambda, lambda));  // NaN -> 0
+  {  // std::clamp(lambda, min_lod, max_lod): lo if lambda < lo, else hi if hi < lambda, else lambda
+    const __m128 lo = _mm_set1_ps(p.min_lod), hi = _mm_set1_ps(p.max_lod);
+    __m128 r = _mm_blendv_ps(lambda, hi, _mm_cmplt_ps(hi, lambda));
+    lambda = _mm_blendv_ps(r, lo, _mm_cmplt_ps(lambda, lo));
+  }
+  // SampleRepeat(): the level (or the two levels and the weight between them) of each lane.
+  alignas(16) float lam[4];
+  _mm_store_ps(lam, lambda);
+  int level_a[4], level_b[4];
+  float f[4];
+  bool two[4];
+  for (int l = 0; l < 4; ++l) {
+    two[l] = false;
+    f[l] = 0.0f;
+    if (lam[l] <= 0.0f || v.fast == TextureView::Fast::kRepeatLinear) {
+      level_a[l] = level_b[l] = v.base;
+    } else if (float(v.base) + lam[l] >= float(v.q)) {
+      level_a[l] = level_b[l] = v.q;
+    } else {
+      const float fl = std::floor(lam[l]);
+      level_a[l] = v.base + int(fl);
+      level_b[l] = level_a[l] + 1;
+      f[l] = lam[l] - fl;
+      two[l] = true;
+    }
+  }
+  const __m128 s = _mm_setr_ps(uv[0].x, uv[1].x, uv[2].x, uv[3].x), t = _mm_setr_ps(uv[0].y, uv[1].y, uv[2].y, uv[3].y);
+  glm::vec4 result[2][4];
+  for (int pass = 0; pass < 2; ++pass) {
+    const int* level = pass == 0 ? level_a : level_b;
+    if (pass == 1 && !(two[0] || two[1] || two[2] || two[3])) break;
+    const TextureLevel* lv[4] = {&levels[level[0]], &levels[level[1]], &levels[level[2]], &levels[level[3]]};
+    const __m128i wi = _mm_setr_epi32(lv[0]->width, lv[1]->width, lv[2]->width, lv[3]->width);
+    const __m128i hi = _mm_setr_epi32(lv[0]->height, lv[1]->height, lv[2]->height, lv[3]->height);
+    // TexelCoord(): s * float(size), NaN -> 0, clamped to [-1e9, 1e9] (std::clamp's order of tests); then
+    // BilinearRepeatPow2's arithmetic.
+    const __m128 lo = _mm_set1_ps(-1e9f), hi1 = _mm_set1_ps(1e9f);
+    __m128 u = _mm_mul_ps(s, _mm_cvtepi32_ps(wi));
+    u = _mm_and_ps(u, _mm_cmpord_ps(u, u));
+    u = _mm_blendv_ps(_mm_blendv_ps(u, hi1, _mm_cmplt_ps(hi1, u)), lo, _mm_cmplt_ps(u, lo));
+    __m128 vv = _mm_mul_ps(t, _mm_cvtepi32_ps(hi));
+    vv = _mm_and_ps(vv, _mm_cmpord_ps(vv, vv));
+    vv = _mm_blendv_ps(_mm_blendv_ps(vv, hi1, _mm_cmplt_ps(hi1, vv)), lo, _mm_cmplt_ps(vv, lo));
+    const __m128 fu = _mm_sub_ps(u, _mm_set1_ps(0.5f));
+    const __m128 fv = _mm_sub_ps(vv, _mm_set1_ps(0.5f));
+    const __m128 flu = _mm_floor_ps(fu), flv = _mm_floor_ps(fv);
+    const __m128i i0 = _mm_cvttps_epi32(flu), j0 = _mm_cvttps_epi32(flv);
+    const __m128 a = _mm_sub_ps(fu, flu), bb = _mm_sub_ps(fv, flv);
+    const __m128i mi = _mm_sub_epi32(wi, _mm_set1_epi32(1)), mj = _mm_sub_epi32(hi, _mm_set1_epi32(1));
+    alignas(16) std::int32_t c0[4], c1[4], r0[4], r1[4];
+    _mm_store_si128(reinterpret_cast<__m128i*>(c0), _mm_and_si128(i0, mi));
+    _mm_store_si128(reinterpret_cast<__m128i*>(c1), _mm_and_si128(_mm_add_epi32(i0, _mm_set1_epi32(1)), mi));
+    _mm_store_si128(reinterpret_cast<__m128i*>(r0), _mm_and_si128(j0, mj));
+    _mm_store_si128(reinterpret_cast<__m128i*>(r1), _mm_and_si128(_mm_add_epi32(j0, _mm_set1_epi32(1)), mj));
+    const __m128 one_a = _mm_sub_ps(one, a), one_b = _mm_sub_ps(one, bb);
+    alignas(16) float w00[4], w10[4], w01[4], w11[4];
+    _mm_store_ps(w00, _mm_mul_ps(one_a, one_b));
+    _mm_store_ps(w10, _mm_mul_ps(a, one_b));
+    _mm_store_ps(w01, _mm_mul_ps(one_a, bb));
+    _mm_store_ps(w11, _mm_mul_ps(a, bb));
+    for (int l = 0; l < 4; ++l) {
+      const float* texels = lv[l]->texels.data();
+      const std::size_t w = std::size_t(lv[l]->width);
+      const float* row0 = texels + std::size_t(r0[l]) * w * 4;
+      const float* row1 = texels + std::size_t(r1[l]) * w * 4;
+      __m128 sum = _mm_mul_ps(_mm_set1_ps(w00[l]), _mm_loadu_ps(row0 + std::size_t(c0[l]) * 4));
+      sum = _mm_add_ps(sum, _mm_mul_ps(_mm_set1_ps(w10[l]), _mm_loadu_ps(row0 + std::size_t(c1[l]) * 4)));
+      sum = _mm_add_ps(sum, _mm_mul_ps(_mm_set1_ps(w01[l]), _mm_loadu_ps(row1 + std::size_t(c0[l]) * 4)));
+      sum = _mm_add_ps(sum, _mm_mul_ps(_mm_set1_ps(w11[l]), _mm_loadu_ps(row1 + std::size_t(c1[l]) * 4)));
+      _mm_storeu_ps(&result[pass][l].x, sum);
+    }
+  }
+  for (int l = 0; l < 4; ++l)
+    out[l] = two[l] ? (1.0f - f[l]) * result[0][l] + f[l] * result[1][l] : result[0][l];
+}
+#endif
+
+using SampleRepeatQuadFn = void (*)(const TextureView&, const glm::vec2*, const glm::vec2*, const glm::vec2*, float,
+                                    glm::vec4*);
+
+SampleRepeatQuadFn ChooseSampleRepeatQuad() {
+#if defined(__SSE2__) && (defined(__x86_64__) || defined(__i386__))
+  const char* simd = std::getenv("SOFTGL_SIMD");
+  __builtin_cpu_init();
+  if (!(simd && std::strcmp(simd, "sse2") == 0) && __builtin_cpu_supports("avx2") && __builtin_cpu_supports("sse4.1"))
+    return SampleRepeatQuadAvx2;
+#endif
+  return SampleRepeatQuadBaseline;
+}
+
 using SampleRepeatFn = glm::vec4 (*)(const TextureView&, glm::vec2, glm::vec2, glm::vec2, float);
 
 SampleRepeatFn ChooseSampleRepeat() {
@@ -290,6 +418,16 @@ glm::vec4 Textures::Sample(int unit, glm::vec2 uv, glm::vec2 duv_dx, glm::vec2 d
     return sample_repeat(*v, uv, duv_dx, duv_dy, bias);
   }
   return SampleFace(*v, 0, uv, Lambda(*v, duv_dx, duv_dy, bias), DepthCompare{});
+}
+
+void Textures::SampleQuad(int unit, const glm::vec2 uv[4], const glm::vec2 duv_dx[4], const glm::vec2 duv_dy[4],
+                          float bias, glm::vec4 out[4]) const {
+  const TextureView* v = Usable(unit_2d, unit);
+  if (v && v->fast != TextureView::Fast::kNone) {
+    static const SampleRepeatQuadFn sample_quad = ChooseSampleRepeatQuad();
+    return sample_quad(*v, uv, duv_dx, duv_dy, bias, out);
+  }
+  for (int l = 0; l < 4; ++l) out[l] = Sample(unit, uv[l], duv_dx[l], duv_dy[l], bias);
 }
 
 glm::vec4 Textures::SampleLod(int unit, glm::vec2 uv, float lod) const {

@@ -4,8 +4,10 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <vector>
 
 #include "helpers.h"
@@ -592,4 +594,55 @@ TEST_CASE("the fast REPEAT path samples exactly as the general one", "[texture]"
     INFO("min filter 0x" << std::hex << min_filter);
     CHECK(differing == 0);
   }
+}
+
+TEST_CASE("SampleQuad gives each lane exactly what Sample gives it", "[texture]") {
+  // Random quads (each lane its own coordinates and derivatives, mixed magnification and minification, some
+  // lanes past the last level, some with NaN or huge coordinates) on the fast path and on an incomplete unit.
+  std::uint32_t seed = 7;
+  auto next = [&] {
+    seed = seed * 1664525u + 1013904223u;
+    return float(seed >> 8) / float(1u << 24);
+  };
+  TextureObject t = MakeTexture(128, 64, [&](int, int) { return glm::vec4(next(), next(), next(), next()); });
+  detail::GenerateMipmaps(t);
+  t.params.wrap_s = t.params.wrap_t = REPEAT;
+  t.params.mag_filter = LINEAR;
+  for (Enum min_filter : {LINEAR_MIPMAP_LINEAR, LINEAR, NEAREST_MIPMAP_LINEAR}) {
+    t.params.min_filter = min_filter;
+    t.params.lod_bias = min_filter == LINEAR ? 0.0f : 0.25f;
+    const TextureView view = detail::MakeView(t);
+    TextureView general = view;
+    general.fast = TextureView::Fast::kNone;
+    Textures quad, lane;
+    quad.unit_2d[0] = &view;
+    lane.unit_2d[0] = &general;
+    int differing = 0;
+    for (int i = 0; i < 5000; ++i) {
+      glm::vec2 uv[4], dx[4], dy[4];
+      for (int l = 0; l < 4; ++l) {
+        uv[l] = glm::vec2((next() - 0.5f) * 6.0f, (next() - 0.5f) * 6.0f);
+        const float scale = std::ldexp(1.0f, int(next() * 16.0f) - 11);
+        dx[l] = glm::vec2((next() - 0.5f) * scale, next() * scale);
+        dy[l] = glm::vec2(next() * scale, (next() - 0.5f) * scale);
+      }
+      if (i % 97 == 0) uv[1].x = std::numeric_limits<float>::quiet_NaN();
+      if (i % 89 == 0) uv[2].y = 3e9f;
+      if (i % 83 == 0) dx[3] = dy[3] = glm::vec2(0.0f);  // rho = 0: lambda clamps to min_lod
+      const float bias = next() - 0.5f;
+      glm::vec4 got[4];
+      quad.SampleQuad(0, uv, dx, dy, bias, got);
+      for (int l = 0; l < 4; ++l) {
+        const glm::vec4 want = lane.Sample(0, uv[l], dx[l], dy[l], bias);
+        differing += std::memcmp(&got[l], &want, sizeof want) != 0;
+      }
+    }
+    INFO("min filter 0x" << std::hex << min_filter);
+    CHECK(differing == 0);
+  }
+  Textures none;  // no texture: (0, 0, 0, 1) in every lane
+  const glm::vec2 z[4] = {};
+  glm::vec4 got[4];
+  none.SampleQuad(0, z, z, z, 0.0f, got);
+  for (const glm::vec4& g : got) CHECK(g == glm::vec4(0, 0, 0, 1));
 }

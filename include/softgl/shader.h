@@ -73,6 +73,22 @@ struct FragmentOut {
   float depth;                        ///< gl_FragDepth, preset to frag_coord.z (see Shader<>::kWritesDepth).
 };
 
+/// The texture samples a quad's fragments have taken through FragmentIn::Texture(unit, &Varyings::uv): the first
+/// lane to sample a (unit, varying, bias) samples all four lanes at once (Textures::SampleQuad), the others read
+/// their result. Filled by Shader<>, one per quad.
+template <class Varyings>
+struct QuadSamples {
+  static constexpr int kEntries = 4;
+  struct Entry {
+    int unit;
+    glm::vec2 Varyings::*uv;
+    float bias;
+    glm::vec4 value[4];
+  };
+  int count = 0;
+  Entry entry[kEntries];
+};
+
 /// What the fragment stage reads for one fragment.
 template <class Varyings>
 struct FragmentIn {
@@ -82,9 +98,31 @@ struct FragmentIn {
   const Varyings* quad;      ///< The four lanes of this fragment's 2x2 quad (lane = x&1 + 2*(y&1)).
   int lane;                  ///< This fragment's lane in quad.
   const Textures* textures;  ///< The textures bound for this draw.
+  QuadSamples<Varyings>* samples = nullptr;  ///< This quad's samples so far (null: sample lane by lane).
 
   /// texture(sampler2D, uv) with uv a varying: the level of detail comes from uv's derivatives across the quad.
   glm::vec4 Texture(int unit, glm::vec2 Varyings::*uv, float bias = 0.0f) const {
+    if (samples) {
+      for (int i = 0; i < samples->count; ++i) {
+        const auto& e = samples->entry[i];
+        if (e.unit == unit && e.uv == uv && e.bias == bias) return e.value[lane];
+      }
+      if (samples->count < QuadSamples<Varyings>::kEntries) {
+        // Every lane's own coordinates and derivatives (as dFdx and dFdy give them in that lane), sampled at once.
+        glm::vec2 st[4], dx[4], dy[4];
+        for (int l = 0; l < 4; ++l) {
+          st[l] = quad[l].*uv;
+          dx[l] = quad[(l & ~1) + 1].*uv - quad[l & ~1].*uv;
+          dy[l] = quad[(l & ~2) + 2].*uv - quad[l & ~2].*uv;
+        }
+        auto& e = samples->entry[samples->count++];
+        e.unit = unit;
+        e.uv = uv;
+        e.bias = bias;
+        textures->SampleQuad(unit, st, dx, dy, bias, e.value);
+        return e.value[lane];
+      }
+    }
     return textures->Sample(unit, varyings.*uv, dFdx(uv), dFdy(uv), bias);
   }
   /// texture(sampler2D, uv) for a computed uv: pass its derivatives (e.g. dFdx(&V::uv) * scale).
@@ -207,15 +245,17 @@ class Shader : public Program {
   void ShadeQuads(const QuadBatch& batch) const final {
     const Derived& self = static_cast<const Derived&>(*this);
     Varyings lanes[4]{};
+    QuadSamples<Varyings> samples;
     for (int q = 0; q < batch.count; ++q) {
       const int base = q * 4;
+      samples.count = 0;
       if constexpr (kFloats > 0)
         std::memcpy(static_cast<void*>(lanes), batch.varyings + std::size_t(base) * kFloats,
                     sizeof(Varyings) * 4);
       for (int lane = 0; lane < 4; ++lane) {
         if (!batch.live[base + lane]) continue;
         const FragmentIn<Varyings> in{lanes[lane], batch.frag_coord[base + lane], batch.front_facing, lanes, lane,
-                                      batch.textures};
+                                      batch.textures, &samples};
         FragmentOut& out = batch.out[base + lane];
         out.depth = in.frag_coord.z;
         if (!self.Fragment(in, out)) batch.live[base + lane] = 0;

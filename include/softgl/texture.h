@@ -28,6 +28,10 @@ class Textures {
   /// texture(sampler2D, uv): filtered sample of unit's 2D texture; duv_dx, duv_dy are the derivatives of uv along
   /// window x and y, bias is added to the level of detail.
   glm::vec4 Sample(int unit, glm::vec2 uv, glm::vec2 duv_dx, glm::vec2 duv_dy, float bias = 0.0f) const;
+  /// Sample() for the four lanes of a 2x2 quad at once: out[l] is exactly Sample(unit, uv[l], duv_dx[l],
+  /// duv_dy[l], bias), computed side by side where the processor allows (FragmentIn::Texture uses it).
+  void SampleQuad(int unit, const glm::vec2 uv[4], const glm::vec2 duv_dx[4], const glm::vec2 duv_dy[4], float bias,
+                  glm::vec4 out[4]) const;
   /// textureLod(sampler2D, uv, lod).
   glm::vec4 SampleLod(int unit, glm::vec2 uv, float lod) const;
   /// texture(samplerCube, dir): face chosen by the major axis of dir, then as Sample on that face.
