@@ -78,13 +78,14 @@ struct QuadInterpolator {
                         _mm_mul_ps(_mm_set1_ps(p.dy), ry));
     };
     const __m128 q = at(oow);
-    const __m128 w = _mm_div_ps(_mm_set1_ps(1.0f), q);
     __m128 c0 = fx, c1 = fy, c2 = at(z), c3 = q;
     _MM_TRANSPOSE4_PS(c0, c1, c2, c3);
     _mm_storeu_ps(&frag[0].x, c0);
     _mm_storeu_ps(&frag[1].x, c1);
     _mm_storeu_ps(&frag[2].x, c2);
     _mm_storeu_ps(&frag[3].x, c3);
+    if (nvar == 0) return;
+    const __m128 w = _mm_div_ps(_mm_set1_ps(1.0f), q);
     int i = 0;
     for (; i + 4 <= nvar; i += 4) {
       __m128 v0 = _mm_mul_ps(at(var[i]), w), v1 = _mm_mul_ps(at(var[i + 1]), w);
