@@ -19,7 +19,7 @@ cmake --build build/sanitize -j "$jobs"
 ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
   ctest --test-dir build/sanitize --output-on-failure -j "$jobs"
 
-echo "== ThreadSanitizer: several contexts rendering on several threads at once"
+echo "== ThreadSanitizer: the tile renderer on 1 to 8 threads, and several contexts rendering at once"
 cmake -S . -B build/tsan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSOFTGL_TSAN=ON -DSOFTGL_WERROR=ON -DSOFTGL_INSTALL=OFF
 cmake --build build/tsan -j "$jobs" --target softgl_tests
 TSAN_OPTIONS=halt_on_error=1 ctest --test-dir build/tsan -R threads --output-on-failure
