@@ -7,7 +7,8 @@
 // Context::Options::threads = N (the calling thread and N - 1 workers). Each scene is set up once per renderer
 // (buffers, textures, shaders compiled), two frames are drawn to warm up (llvmpipe compiles its shaders then), then
 // --frames frames are timed; a frame ends when its pixels are ready (Finish for softgl, glFinish for OpenGL).
-// Prints the median ms/frame per renderer and softgl's time over llvmpipe's (below 1: softgl is faster).
+// Prints the median ms/frame per renderer and softgl's time over llvmpipe's (below 1: softgl is faster); with N > 1
+// threads, also softgl's speedup over itself on one thread, measured in the same run right after.
 //
 //   --scene TEXT       only the scenes whose name contains TEXT
 //   --softgl-only 1    skip llvmpipe (for profiling softgl alone)
@@ -620,18 +621,27 @@ int main(int argc, char** argv) {
     if (!softgl_only) rss_gl = ModelScenePeakMiB(argv[0], "llvmpipe", threads);
   }
 
-  std::printf("| scene | size | threads | softgl ms/frame | llvmpipe ms/frame | softgl / llvmpipe | softgl rate |\n");
-  std::printf("|---|---|---|---|---|---|---|\n");
+  std::printf("| scene | size | threads | softgl ms/frame | llvmpipe ms/frame | softgl / llvmpipe | softgl rate | "
+              "softgl 1 thread / %d threads |\n", threads);
+  std::printf("|---|---|---|---|---|---|---|---|\n");
   for (const Scene& s : scenes) {
     if (!only.empty() && std::string(s.name).find(only) == std::string::npos) continue;
     const double a = s.softgl_ms(frames), b = softgl_only ? 0.0 : s.gl_ms(frames);
+    // softgl's own scaling, measured in this run: the scene again on one thread, right after.
+    double one = a;
+    if (threads > 1) {
+      g_options.threads = 1;
+      one = s.softgl_ms(frames);
+      g_options.threads = threads;
+    }
     const double rate = s.units / (a * 1e3);  // per microsecond = millions per second
-    std::printf("| %s | %dx%d | %d | %.1f | %.1f | %.2f | %.2f %s |\n", s.name, s.width, s.height, threads, a, b,
-                b > 0 ? a / b : 0.0, rate, s.unit);
+    std::printf("| %s | %dx%d | %d | %.1f | %.1f | %.2f | %.2f %s | %.2f |\n", s.name, s.width, s.height, threads, a,
+                b, b > 0 ? a / b : 0.0, rate, s.unit, one / a);
     std::fflush(stdout);
   }
   if (rss_softgl >= 0.0)
-    std::printf("| model scene: peak RSS of the process, MiB | 1280x720 | %d | %.1f | %.1f | %.2f | |\n", threads, rss_softgl, rss_gl,
+    std::printf("| model scene: peak RSS of the process, MiB | 1280x720 | %d | %.1f | %.1f | %.2f | | |\n", threads,
+                rss_softgl, rss_gl,
                 rss_gl > 0 ? rss_softgl / rss_gl : 0.0);
   if (!have_engine) std::printf("(model scene skipped: install assimp-testmodels)\n");
   if (!have_head) std::printf("(textured model scene skipped: %s not found)\n", head_dir.c_str());
