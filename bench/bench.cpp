@@ -635,8 +635,10 @@ int main(int argc, char** argv) {
       g_options.threads = threads;
     }
     const double rate = s.units / (a * 1e3);  // per microsecond = millions per second
-    std::printf("| %s | %dx%d | %d | %.1f | %.1f | %.2f | %.2f %s | %.2f |\n", s.name, s.width, s.height, threads, a,
-                b, b > 0 ? a / b : 0.0, rate, s.unit, one / a);
+    char speedup[32] = "";
+    if (threads > 1) std::snprintf(speedup, sizeof speedup, "%.2f", one / a);
+    std::printf("| %s | %dx%d | %d | %.1f | %.1f | %.2f | %.2f %s | %s |\n", s.name, s.width, s.height, threads, a, b,
+                b > 0 ? a / b : 0.0, rate, s.unit, speedup);
     std::fflush(stdout);
   }
   if (rss_softgl >= 0.0)
