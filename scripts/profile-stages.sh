@@ -1,0 +1,44 @@
+#!/usr/bin/env bash
+# Where softgl's time goes per pipeline stage, for each bench scene on one thread: samples with `perf record`
+# (from linux-perf), then each sampled function is put in the stage it belongs to. The bench's own set-up
+# (model loading, scene generation, llvmpipe is not run) is counted apart and left out of the percentages.
+# Needs the Release build with the bench (./scripts/bench.sh builds it) and perf.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bench=build/release/bench/bench
+[ -x "$bench" ] || { echo "build first: ./scripts/bench.sh" >&2; exit 1; }
+data=$(mktemp)
+trap 'rm -f "$data"' EXIT
+echo "| scene | front end | binning | clears | rasterization | early depth test | fragment shader and texture sampling | fragment operations | memory copies, fills, page faults | bench set-up (% of samples, left out) |"
+echo "|---|---|---|---|---|---|---|---|---|---|"
+for scene in "model: 2Cyl" "african_head" "small triangles" "fill rate" "overdraw"; do
+  frames=6
+  case "$scene" in model*|african*) frames=60 ;; esac  # short frames: more of them, so set-up weighs little
+  perf record -q -o "$data" "$bench" --scene "$scene" --frames "$frames" --softgl-only 1 --threads 1 >/dev/null 2>&1
+  perf report -i "$data" --no-children --stdio --sort sym 2>/dev/null | python3 -c '
+import re, sys
+rules = [
+  ("front end", r"FetchAttribute|FetchVertices|ShadeVertices|ClipCodes|ClipTriangle|ClipLine|ToWindow|SignedArea|AssemblePrimitives|RecordChunk|RecordDraw|PrimitiveRunner|ReadIndices|Intersect|IsFrontFacing|IsCulled|PolygonOffset"),
+  ("binning", r"BinnedBatch::Add|BinnedBatch::Finish|TriangleBox|LineBox|PointBox|::Box\("),
+  ("clears", r"RenderTarget::Clear"),
+  ("rasterization", r"Rasterize|RenderTile|BinnedBatch::Vertex|FragmentStage"),
+  ("early depth test", r"EarlyDepth"),
+  ("fragment shader and texture sampling", r"ShadeQuads|Textures::|SampleRepeat|FilterLevel|SampleFace|Fetch\(|Lambda|powf|__pow|expf|logf|sqrt"),
+  ("fragment operations", r"ApplyFragmentOps|Store2Avx2|Store4Avx512|Unorm8Blender|ColorBuffer::|FloatToUnorm8|detail::Blend"),
+  ("memory copies, fills, page faults", r"memmove|memset|memcpy|page_fault|clear_page|do_anonymous_page|handle_mm_fault"),
+]
+total, other = {}, 0.0
+for line in sys.stdin:
+    m = re.match(r"\s+([0-9.]+)%\s+\[[.k]\]\s+(.*)", line)
+    if not m: continue
+    pct, sym = float(m.group(1)), m.group(2)
+    for name, rx in rules:
+        if re.search(rx, sym):
+            total[name] = total.get(name, 0) + pct
+            break
+    else:
+        other += pct
+s = sum(total.values()) or 1.0
+print("| " + sys.argv[1] + " | " + " | ".join("%.0f%%" % (total.get(n, 0) / s * 100) for n, _ in rules) + " | %.0f%% |" % other)
+' "$scene"
+done
