@@ -45,7 +45,6 @@ class BinnedBatch {
  public:
   /// Empties the batch for a draw with `nvar` floats of varyings per vertex.
   void Reset(int nvar);
-  int nvar() const { return nvar_; }
 
   /// Appends a primitive whose fragments all lie in `box` (pixels, half-open, already inside the draw's bounds)
   /// and notes it for every tile that box overlaps.
@@ -70,7 +69,6 @@ class BinnedBatch {
   /// Copies vertex k of the run at `vertices` into a WindowVertex.
   void Vertex(const float* vertices, int k, WindowVertex& out) const;
 
-  bool Empty() const { return prims_.empty(); }
   /// Memory held, in bytes (what the context's recording budget counts).
   std::size_t Bytes() const;
 

@@ -1,9 +1,10 @@
 // fragment_ops.cpp — stencil, depth, blending and masks with OpenGL's arithmetic.
 #include "fragment_ops.h"
 
+#include "simd.h"
+
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 #include <cstring>
 
 #if defined(__SSE2__)
@@ -295,37 +296,9 @@ __attribute__((target("avx512f"))) void Store4Avx512(const Unorm8Blender& b, con
 #pragma GCC diagnostic pop
 #endif
 
-// 0: SSE2, 1: AVX2, 2: AVX-512. SOFTGL_SIMD=sse2 or avx2 caps it (to test the narrower paths).
-int ChooseSimd() {
-  __builtin_cpu_init();
-  int level = __builtin_cpu_supports("avx512f") ? 2 : __builtin_cpu_supports("avx2") ? 1 : 0;
-  if (const char* simd = std::getenv("SOFTGL_SIMD")) {
-    if (std::strcmp(simd, "sse2") == 0) level = 0;
-    if (std::strcmp(simd, "avx2") == 0) level = std::min(level, 1);
-  }
-  return level;
-}
 #endif
-
-int SimdLevel() {
-#if defined(SOFTGL_AVX2_DISPATCH)
-  static const int level = ChooseSimd();
-  return level;
-#else
-  return 0;
-#endif
-}
 
 }  // namespace
-
-const char* FragmentSimdPath() {
-#if defined(__SSE2__)
-  static const char* const names[3] = {"sse2", "avx2", "avx512"};
-  return names[SimdLevel()];
-#else
-  return "portable";
-#endif
-}
 
 bool EarlyDepthTestApplies(const FragmentOpsState& state, bool shader_writes_depth) {
   const Enum f = state.depth_func;
@@ -386,7 +359,7 @@ void ApplyFragmentOps(const FragmentOpsState& state, const QuadBuffer& quads, co
   if (unorm8.usable && !stencil_test && any_color && cb0.rgba8 && !target.color[1].Present() &&
       !target.color[2].Present() && !target.color[3].Present()) {
     // Wider paths for the blenders without MIN or MAX: a row of two pixels (AVX2), a whole quad (AVX-512).
-    const int wide = unorm8.min_max ? 0 : SimdLevel();
+    const int wide = unorm8.min_max ? 0 : int(CpuSimdLevel());
     for (int q = 0; q < quads.count; ++q) {
       // Depth first for the four lanes (four different pixels), then colour a row of two at a time.
       unsigned pass = 0;

@@ -81,11 +81,6 @@ bool EarlyDepthTestApplies(const FragmentOpsState& state, bool shader_writes_dep
 /// shader. Returns the number of lanes still live.
 int EarlyDepthTest(const FragmentOpsState& state, QuadBuffer& quads, const RenderTarget& target);
 
-/// Which vector code the per-fragment operations run, chosen once at run time from what the processor has:
-/// "avx512" (a quad at a time), "avx2" (two pixels), "sse2" (one pixel), or "portable" (no vector code).
-/// SOFTGL_SIMD=avx2 or SOFTGL_SIMD=sse2 in the environment caps the choice.
-const char* FragmentSimdPath();
-
 /// Runs the per-fragment operations for every live lane of `quads` (after the fragment shader has filled
 /// quads.out and cleared discarded lanes) into the buffers of `target`.
 void ApplyFragmentOps(const FragmentOpsState& state, const QuadBuffer& quads, const RenderTarget& target);

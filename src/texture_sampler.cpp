@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <cstdlib>
 #include <cstring>
 
 #if defined(__SSE2__)
@@ -13,6 +12,7 @@
 #include <softgl/texture.h>
 
 #include "fragment_ops.h"
+#include "simd.h"
 #include "texture.h"
 
 namespace softgl {
@@ -388,10 +388,7 @@ using SampleRepeatQuadFn = void (*)(const TextureView&, const glm::vec2*, const 
 
 SampleRepeatQuadFn ChooseSampleRepeatQuad() {
 #if defined(__SSE2__) && (defined(__x86_64__) || defined(__i386__))
-  const char* simd = std::getenv("SOFTGL_SIMD");
-  __builtin_cpu_init();
-  if (!(simd && std::strcmp(simd, "sse2") == 0) && __builtin_cpu_supports("avx2") && __builtin_cpu_supports("sse4.1"))
-    return SampleRepeatQuadAvx2;
+  if (detail::CpuSimdLevel() >= detail::SimdLevel::kAvx2) return SampleRepeatQuadAvx2;
 #endif
   return SampleRepeatQuadBaseline;
 }
@@ -400,10 +397,7 @@ using SampleRepeatFn = glm::vec4 (*)(const TextureView&, glm::vec2, glm::vec2, g
 
 SampleRepeatFn ChooseSampleRepeat() {
 #if defined(__SSE2__) && (defined(__x86_64__) || defined(__i386__))
-  const char* simd = std::getenv("SOFTGL_SIMD");
-  __builtin_cpu_init();
-  if (!(simd && std::strcmp(simd, "sse2") == 0) && __builtin_cpu_supports("avx2") && __builtin_cpu_supports("sse4.1"))
-    return SampleRepeatAvx2;
+  if (detail::CpuSimdLevel() >= detail::SimdLevel::kAvx2) return SampleRepeatAvx2;
 #endif
   return SampleRepeatBaseline;
 }

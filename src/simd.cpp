@@ -1,0 +1,35 @@
+// simd.cpp — the processor's vector level, read once.
+#include "simd.h"
+
+#include <algorithm>
+#include <cstdlib>
+#include <cstring>
+
+namespace softgl::detail {
+
+namespace {
+
+SimdLevel Detect() {
+#if defined(__x86_64__) || defined(__i386__)
+  __builtin_cpu_init();
+  int level = 0;
+  if (__builtin_cpu_supports("avx2") && __builtin_cpu_supports("sse4.1")) level = 1;
+  if (level == 1 && __builtin_cpu_supports("avx512f")) level = 2;
+  if (const char* cap = std::getenv("SOFTGL_SIMD")) {
+    if (std::strcmp(cap, "sse2") == 0) level = 0;
+    if (std::strcmp(cap, "avx2") == 0) level = std::min(level, 1);
+  }
+  return SimdLevel(level);
+#else
+  return SimdLevel::kBaseline;
+#endif
+}
+
+}  // namespace
+
+SimdLevel CpuSimdLevel() {
+  static const SimdLevel level = Detect();
+  return level;
+}
+
+}  // namespace softgl::detail
