@@ -25,7 +25,9 @@ Rect TileGrid::TileRect(int tile) const {
 void BinnedBatch::Reset(int nvar) {
   nvar_ = nvar;
   prims_.clear();
+  prim_tiles_.clear();
   vertices_.clear();
+  shared_.clear();
   notes_.clear();
   tile_start_.clear();
   tile_data_.clear();
@@ -46,6 +48,7 @@ void BinnedBatch::Add(const BinnedPrimitive& prim, const WindowVertex* v, const 
   prims_.push_back(p);
   const int tx0 = box.x0 / kTileSize, tx1 = (box.x1 - 1) / kTileSize;
   const int ty0 = box.y0 / kTileSize, ty1 = (box.y1 - 1) / kTileSize;
+  prim_tiles_.push_back(std::uint32_t((tx1 - tx0 + 1) * (ty1 - ty0 + 1)));
   for (int ty = ty0; ty <= ty1; ++ty)
     for (int tx = tx0; tx <= tx1; ++tx) notes_.push_back(std::uint64_t(ty * grid.cols + tx) << 32 | index);
 }
@@ -53,8 +56,20 @@ void BinnedBatch::Add(const BinnedPrimitive& prim, const WindowVertex* v, const 
 void BinnedBatch::Finish(const TileGrid& grid) {
   // A stable counting sort of the notes by tile, moving the data: each tile's list keeps submission order.
   static_assert(sizeof(BinnedPrimitive) % sizeof(float) == 0);
+  static_assert(sizeof(BinnedPrimitive) == 16);
+  // Primitives over many tiles: their vertices once, in shared_.
+  for (std::size_t i = 0; i < prims_.size(); ++i) {
+    if (prim_tiles_[i] <= kInlineTiles) continue;
+    BinnedPrimitive& p = prims_[i];
+    const std::size_t n = std::size_t(int(p.kind) * (4 + nvar_));
+    const auto at = std::uint32_t(shared_.size());
+    shared_.insert(shared_.end(), vertices_.begin() + p.first_float, vertices_.begin() + p.first_float + n);
+    p.first_float = at;
+    p.shared = true;
+  }
   auto size_of = [&](std::uint32_t prim) {
-    return std::uint32_t(kHeaderFloats + int(prims_[prim].kind) * (4 + nvar_));
+    const BinnedPrimitive& p = prims_[prim];
+    return std::uint32_t(kHeaderFloats + (p.shared ? 0 : int(p.kind) * (4 + nvar_)));
   };
   tile_start_.assign(std::size_t(grid.Count()) + 1, 0);
   for (std::uint64_t n : notes_) tile_start_[std::size_t(n >> 32) + 1] += size_of(std::uint32_t(n));
@@ -67,8 +82,9 @@ void BinnedBatch::Finish(const TileGrid& grid) {
     float* dst = tile_data_.data() + fill[std::size_t(n >> 32)];
     const BinnedPrimitive& p = prims_[prim];
     std::memcpy(dst, static_cast<const void*>(&p), sizeof p);
-    std::memcpy(dst + kHeaderFloats, vertices_.data() + p.first_float,
-                sizeof(float) * std::size_t(int(p.kind) * (4 + nvar_)));
+    if (!p.shared)
+      std::memcpy(dst + kHeaderFloats, vertices_.data() + p.first_float,
+                  sizeof(float) * std::size_t(int(p.kind) * (4 + nvar_)));
     fill[std::size_t(n >> 32)] += size_of(prim);
   }
   notes_.clear();
@@ -82,7 +98,8 @@ void BinnedBatch::Vertex(const float* vertices, int k, WindowVertex& out) const 
 }
 
 std::size_t BinnedBatch::Bytes() const {
-  return prims_.capacity() * sizeof(BinnedPrimitive) + vertices_.capacity() * sizeof(float) +
+  return prims_.capacity() * sizeof(BinnedPrimitive) + prim_tiles_.capacity() * sizeof(std::uint32_t) +
+         (vertices_.capacity() + shared_.capacity()) * sizeof(float) +
          notes_.capacity() * sizeof(std::uint64_t) + tile_start_.capacity() * sizeof(std::uint32_t) +
          tile_data_.capacity() * sizeof(float);
 }

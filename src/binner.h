@@ -33,6 +33,7 @@ enum class PrimitiveKind : std::uint8_t { kPoint = 1, kLine = 2, kTriangle = 3 }
 struct BinnedPrimitive {  // 16 bytes: stored inline in the tile lists
   PrimitiveKind kind = PrimitiveKind::kTriangle;
   bool front_facing = true;
+  bool shared = false;  // its vertices are stored once for all its tiles (a primitive over many tiles)
   float depth_offset = 0.0f;  // polygon offset
   float point_size = 1.0f;
   std::uint32_t first_float = 0;
@@ -40,7 +41,9 @@ struct BinnedPrimitive {  // 16 bytes: stored inline in the tile lists
 
 /// The output of binning one batch of primitives. Primitives are appended in submission order, then Finish()
 /// copies each into the contiguous list of every tile it may touch (a primitive record followed by its vertices),
-/// so that a tile reads its primitives from consecutive memory.
+/// so that a tile reads its primitives from consecutive memory. A primitive over more than kInlineTiles tiles
+/// keeps one copy of its vertices that its records point to, so that memory grows with the number of tiles
+/// touched by 16 bytes, not by the size of the vertices.
 class BinnedBatch {
  public:
   /// Empties the batch for a draw with `nvar` floats of varyings per vertex.
@@ -62,8 +65,12 @@ class BinnedBatch {
       BinnedPrimitive prim;
       std::memcpy(static_cast<void*>(&prim), p, sizeof prim);
       p += kHeaderFloats;
-      fn(prim, p);
-      p += int(prim.kind) * (4 + nvar_);
+      if (prim.shared) {
+        fn(prim, shared_.data() + prim.first_float);
+      } else {
+        fn(prim, p);
+        p += int(prim.kind) * (4 + nvar_);
+      }
     }
   }
   /// Copies vertex k of the run at `vertices` into a WindowVertex.
@@ -74,9 +81,12 @@ class BinnedBatch {
 
  private:
   static constexpr int kHeaderFloats = int(sizeof(BinnedPrimitive) / sizeof(float));
+  static constexpr std::uint32_t kInlineTiles = 4;
   int nvar_ = 0;
   std::vector<BinnedPrimitive> prims_;      // in submission order
+  std::vector<std::uint32_t> prim_tiles_;   // how many tiles each primitive touches
   std::vector<float> vertices_;
+  std::vector<float> shared_;               // the vertices of primitives over more than kInlineTiles tiles
   std::vector<std::uint64_t> notes_;        // tile << 32 | primitive, in submission order
   std::vector<std::uint32_t> tile_start_;   // [tiles + 1]: where each tile's list starts in tile_data_
   std::vector<float> tile_data_;

@@ -48,6 +48,38 @@ int main() {
   std::uint8_t px[4];
   gl.ReadPixel(4, 4, px);
   Expect(gl.GetError() == NO_ERROR && px[0] == 255, "the context draws afterwards");
+
+  // Deferred rendering keeps what a draw bins until it is rendered: 40,000 slivers along the diagonal of a
+  // 512 x 512 framebuffer, whose bounding boxes cover all 64 tiles, with 64 floats of varyings, must fit in the
+  // same limit: each tile list holds a 16-byte reference to such a primitive, not a copy of its 800 bytes of
+  // vertices (copies would need 2 GB).
+  struct Wide {
+    float v[64];
+  };
+  struct WideShader : softgl::Shader<WideShader, Wide> {
+    void Vertex(const softgl::VertexIn& in, softgl::VertexOut<Wide>& out) const {
+      out.position = in.attrib[0];
+      for (int i = 0; i < 64; ++i) out.varyings.v[i] = in.attrib[0].x * float(i);
+    }
+    bool Fragment(const softgl::FragmentIn<Wide>& in, softgl::FragmentOut& out) const {
+      out.color[0] = glm::vec4(in.varyings.v[63] > -1e9f ? 1.0f : 0.0f, 0.0f, 0.0f, 1.0f);
+      return true;
+    }
+  };
+  Context big(512, 512);
+  std::vector<float> slivers;
+  for (int i = 0; i < 40000; ++i) slivers.insert(slivers.end(), {-1, -1, 0, 1, 1, 1, 0, 1, 1, 0.98f, 0, 1});
+  big.BindVertexArray(big.GenVertexArray());
+  big.BindBuffer(ARRAY_BUFFER, big.GenBuffer());
+  big.BufferData(ARRAY_BUFFER, std::ptrdiff_t(slivers.size() * sizeof(float)), slivers.data());
+  big.VertexAttributePointer(0, 4, FLOAT, false, 0, 0);
+  big.EnableVertexAttribArray(0);
+  WideShader wide;
+  big.UseProgram(wide);
+  big.DrawArrays(TRIANGLES, 0, 120000);
+  big.ReadPixel(500, 496, px);  // inside the sliver near its right end
+  Expect(big.GetError() == NO_ERROR && px[0] == 255, "40,000 slivers over every tile, 64 varyings each, in bounded memory");
+
   std::printf("%d failed\n", failures);
   return failures ? 1 : 0;
 }
