@@ -28,6 +28,7 @@ void BinnedBatch::Reset(int nvar) {
   prim_tiles_.clear();
   vertices_.clear();
   shared_.clear();
+  large_.clear();
   notes_.clear();
   tile_start_.clear();
   tile_data_.clear();
@@ -38,6 +39,7 @@ void BinnedBatch::Add(const BinnedPrimitive& prim, const WindowVertex* v, const 
   const auto index = std::uint32_t(prims_.size());
   BinnedPrimitive p = prim;
   p.first_float = std::uint32_t(vertices_.size());
+  p.index = index;
   const int n = int(prim.kind), stride = 4 + nvar_;
   vertices_.resize(vertices_.size() + std::size_t(n) * std::size_t(stride));
   float* dst = vertices_.data() + p.first_float;
@@ -48,7 +50,12 @@ void BinnedBatch::Add(const BinnedPrimitive& prim, const WindowVertex* v, const 
   prims_.push_back(p);
   const int tx0 = box.x0 / kTileSize, tx1 = (box.x1 - 1) / kTileSize;
   const int ty0 = box.y0 / kTileSize, ty1 = (box.y1 - 1) / kTileSize;
-  prim_tiles_.push_back(std::uint32_t((tx1 - tx0 + 1) * (ty1 - ty0 + 1)));
+  const auto tiles = std::uint32_t((tx1 - tx0 + 1) * (ty1 - ty0 + 1));
+  prim_tiles_.push_back(tiles);
+  if (tiles > kListedTiles) {  // in the list of large primitives, not in the tiles' lists
+    large_.push_back(Large{p, box});
+    return;
+  }
   for (int ty = ty0; ty <= ty1; ++ty)
     for (int tx = tx0; tx <= tx1; ++tx) notes_.push_back(std::uint64_t(ty * grid.cols + tx) << 32 | index);
 }
@@ -56,8 +63,9 @@ void BinnedBatch::Add(const BinnedPrimitive& prim, const WindowVertex* v, const 
 void BinnedBatch::Finish(const TileGrid& grid) {
   // A stable counting sort of the notes by tile, moving the data: each tile's list keeps submission order.
   static_assert(sizeof(BinnedPrimitive) % sizeof(float) == 0);
-  static_assert(sizeof(BinnedPrimitive) == 16);
+  static_assert(sizeof(BinnedPrimitive) == 20);
   // Primitives over many tiles: their vertices once, in shared_.
+  std::size_t next_large = 0;
   for (std::size_t i = 0; i < prims_.size(); ++i) {
     if (prim_tiles_[i] <= kInlineTiles) continue;
     BinnedPrimitive& p = prims_[i];
@@ -66,6 +74,7 @@ void BinnedBatch::Finish(const TileGrid& grid) {
     shared_.insert(shared_.end(), vertices_.begin() + p.first_float, vertices_.begin() + p.first_float + n);
     p.first_float = at;
     p.shared = true;
+    if (prim_tiles_[i] > kListedTiles) large_[next_large++].prim = p;  // large_ is in the same order
   }
   auto size_of = [&](std::uint32_t prim) {
     const BinnedPrimitive& p = prims_[prim];
@@ -99,7 +108,7 @@ void BinnedBatch::Vertex(const float* vertices, int k, WindowVertex& out) const 
 
 std::size_t BinnedBatch::Bytes() const {
   return prims_.capacity() * sizeof(BinnedPrimitive) + prim_tiles_.capacity() * sizeof(std::uint32_t) +
-         (vertices_.capacity() + shared_.capacity()) * sizeof(float) +
+         (vertices_.capacity() + shared_.capacity()) * sizeof(float) + large_.capacity() * sizeof(Large) +
          notes_.capacity() * sizeof(std::uint64_t) + tile_start_.capacity() * sizeof(std::uint32_t) +
          tile_data_.capacity() * sizeof(float);
 }

@@ -30,20 +30,22 @@ enum class PrimitiveKind : std::uint8_t { kPoint = 1, kLine = 2, kTriangle = 3 }
 
 /// One primitive ready for the rasterizer; its vertices are `kind` WindowVertex values of 4 + nvar floats each,
 /// stored from BinnedBatch::vertices[first_float].
-struct BinnedPrimitive {  // 16 bytes: stored inline in the tile lists
+struct BinnedPrimitive {  // 20 bytes: stored inline in the tile lists
   PrimitiveKind kind = PrimitiveKind::kTriangle;
   bool front_facing = true;
   bool shared = false;  // its vertices are stored once for all its tiles (a primitive over many tiles)
   float depth_offset = 0.0f;  // polygon offset
   float point_size = 1.0f;
   std::uint32_t first_float = 0;
+  std::uint32_t index = 0;  // submission order within the batch
 };
 
 /// The output of binning one batch of primitives. Primitives are appended in submission order, then Finish()
 /// copies each into the contiguous list of every tile it may touch (a primitive record followed by its vertices),
 /// so that a tile reads its primitives from consecutive memory. A primitive over more than kInlineTiles tiles
-/// keeps one copy of its vertices that its records point to, so that memory grows with the number of tiles
-/// touched by 16 bytes, not by the size of the vertices.
+/// keeps one copy of its vertices that its records point to; one over more than kListedTiles tiles is in no tile
+/// list at all but in the batch's list of large primitives, which every tile walks beside its own list, in
+/// submission order. So a batch's memory is bounded by its primitives, whatever the framebuffer's size.
 class BinnedBatch {
  public:
   /// Empties the batch for a draw with `nvar` floats of varyings per vertex.
@@ -58,12 +60,20 @@ class BinnedBatch {
   /// Walks the primitives of `tile` in order: fn(const BinnedPrimitive&, const float* vertices), the vertices
   /// being `kind` runs of 4 + nvar floats (window position, then varyings).
   template <class Fn>
-  void ForEachInTile(int tile, Fn&& fn) const {
+  void ForEachInTile(int tile, const Rect& tile_rect, Fn&& fn) const {
     const float* p = tile_data_.data() + tile_start_[std::size_t(tile)];
     const float* end = tile_data_.data() + tile_start_[std::size_t(tile) + 1];
-    while (p < end) {
+    std::size_t g = 0;  // next large primitive
+    for (;;) {
       BinnedPrimitive prim;
-      std::memcpy(static_cast<void*>(&prim), p, sizeof prim);
+      if (p < end) std::memcpy(static_cast<void*>(&prim), p, sizeof prim);
+      const std::uint32_t listed = p < end ? prim.index : ~0u;
+      if (g < large_.size() && large_[g].prim.index < listed) {  // a large primitive comes first
+        const Large& l = large_[g++];
+        if (Overlap(l.box, tile_rect)) fn(l.prim, shared_.data() + l.prim.first_float);
+        continue;
+      }
+      if (p >= end) break;
       p += kHeaderFloats;
       if (prim.shared) {
         fn(prim, shared_.data() + prim.first_float);
@@ -82,6 +92,15 @@ class BinnedBatch {
  private:
   static constexpr int kHeaderFloats = int(sizeof(BinnedPrimitive) / sizeof(float));
   static constexpr std::uint32_t kInlineTiles = 4;
+  static constexpr std::uint32_t kListedTiles = 64;
+  struct Large {
+    BinnedPrimitive prim;  // shared, in shared_
+    Rect box;
+  };
+  static bool Overlap(const Rect& a, const Rect& b) {
+    return a.x0 < b.x1 && b.x0 < a.x1 && a.y0 < b.y1 && b.y0 < a.y1;
+  }
+  std::vector<Large> large_;                // primitives over more than kListedTiles tiles, in order
   int nvar_ = 0;
   std::vector<BinnedPrimitive> prims_;      // in submission order
   std::vector<std::uint32_t> prim_tiles_;   // how many tiles each primitive touches

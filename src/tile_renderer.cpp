@@ -137,7 +137,7 @@ void Frame::RenderTile(int tile, TileScratch& scratch) const {
     const QuadSink sink{&FragmentStage::Run, &stage};
     quads.count = 0;
     for (const BinnedBatch* batch : draw.batches) {
-      batch->ForEachInTile(tile, [&](const BinnedPrimitive& p, const float* vertices) {
+      batch->ForEachInTile(tile, rect, [&](const BinnedPrimitive& p, const float* vertices) {
         for (int k = 0; k < int(p.kind); ++k) batch->Vertex(vertices, k, v[k]);
         rt.depth_offset = p.depth_offset;
         switch (p.kind) {
