@@ -622,7 +622,7 @@ int main(int argc, char** argv) {
   }
 
   std::printf("| scene | size | threads | softgl ms/frame | llvmpipe ms/frame | softgl / llvmpipe | softgl rate | "
-              "softgl 1 thread / %d threads |\n", threads);
+              "softgl speedup over 1 thread |\n");
   std::printf("|---|---|---|---|---|---|---|---|\n");
   for (const Scene& s : scenes) {
     if (!only.empty() && std::string(s.name).find(only) == std::string::npos) continue;
