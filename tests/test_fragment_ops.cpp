@@ -482,24 +482,35 @@ struct DepthWriter : softgl::Shader<DepthWriter, testing::NoVaryings> {
     return true;
   }
 };
+
+// A 4 x 1 target with depth cleared to 0.5, then `shader` over all of it at window depth 0.5 with LESS.
+struct DepthProbe {
+  Context gl{4, 1};
+  template <class S>
+  explicit DepthProbe(const S& shader) {
+    gl.Enable(DEPTH_TEST);
+    gl.ClearDepth(0.5);
+    gl.Clear(COLOR_BUFFER_BIT | DEPTH_BUFFER_BIT);
+    testing::MakeVertexArray(gl, {{-1, -1, 0, 1}, {1, -1, 0, 1}, {-1, 1, 0, 1}, {1, 1, 0, 1}});  // window z 0.5
+    gl.UseProgram(shader);
+    gl.DrawArrays(TRIANGLE_STRIP, 0, 4);
+  }
+  std::uint8_t Red(int x) {
+    std::uint8_t px[4];
+    gl.ReadPixel(x, 0, px);
+    return px[0];
+  }
+};
+
 }  // namespace
 
 TEST_CASE("a fragment shader may write depth (gl_FragDepth)", "[fragment_ops]") {
-  Context gl(4, 1);
-  gl.Enable(DEPTH_TEST);
-  gl.ClearDepth(0.5);
-  gl.Clear(COLOR_BUFFER_BIT | DEPTH_BUFFER_BIT);
-  testing::MakeVertexArray(gl, {{-1, -1, 0, 1}, {1, -1, 0, 1}, {-1, 1, 0, 1}, {1, 1, 0, 1}});
   DepthWriter shader;
-  gl.UseProgram(shader);
-  gl.DrawArrays(TRIANGLE_STRIP, 0, 4);
-  std::uint8_t px[4];
-  gl.ReadPixel(0, 0, px);
-  CHECK(px[0] == 255);
-  CHECK(gl.ReadDepth(0, 0) == 0.1f);
-  gl.ReadPixel(3, 0, px);
-  CHECK(px[0] == 0);
-  CHECK(gl.ReadDepth(3, 0) == 0.5f);
+  DepthProbe probe(shader);
+  CHECK(probe.Red(0) == 255);
+  CHECK(probe.gl.ReadDepth(0, 0) == 0.1f);
+  CHECK(probe.Red(3) == 0);
+  CHECK(probe.gl.ReadDepth(3, 0) == 0.5f);
 }
 
 TEST_CASE("blending into 8-bit buffers writes the bytes of the per-channel float arithmetic", "[fragment_ops][blend]") {
@@ -591,18 +602,10 @@ struct CountingShader : softgl::Shader<CountingShader, testing::NoVaryings> {
 }  // namespace
 
 TEST_CASE("a depth write the shader does not declare is ignored", "[fragment_ops]") {
-  Context gl(4, 1);
-  gl.Enable(DEPTH_TEST);
-  gl.ClearDepth(0.5);
-  gl.Clear(COLOR_BUFFER_BIT | DEPTH_BUFFER_BIT);
-  testing::MakeVertexArray(gl, {{-1, -1, 0, 1}, {1, -1, 0, 1}, {-1, 1, 0, 1}, {1, 1, 0, 1}});  // window z 0.5
   CountingShader shader;
-  gl.UseProgram(shader);
-  gl.DrawArrays(TRIANGLE_STRIP, 0, 4);
-  std::uint8_t px[4];
-  gl.ReadPixel(0, 0, px);
-  CHECK(px[0] == 0);  // 0.5 < 0.5 fails: the written 0.0 did not count
-  CHECK(gl.ReadDepth(0, 0) == 0.5f);
+  DepthProbe probe(shader);
+  CHECK(probe.Red(0) == 0);  // 0.5 < 0.5 fails: the written 0.0 did not count
+  CHECK(probe.gl.ReadDepth(0, 0) == 0.5f);
 }
 
 TEST_CASE("the early depth test skips hidden fragments without changing the image", "[fragment_ops]") {
