@@ -561,35 +561,56 @@ TEST_CASE("a JPEG with an oversized Huffman table is refused before decoding", "
   CHECK((w == 3 && h == 2 && n == 4));
 }
 
-TEST_CASE("the fast REPEAT path samples exactly as the general one", "[texture]") {
-  // A 64 x 32 mipmapped texture of arbitrary texels, sampled at random places with random derivatives (both
-  // magnified and minified, lambda past the last level too) through the view as MakeView resolves it (the fast
-  // path) and through a copy that has the fast path switched off: the results must be the same floats.
-  std::uint32_t seed = 99;
-  auto next = [&] {
+namespace {
+
+// For the exactness tests of the fast sampling paths: a mipmapped REPEAT / LINEAR texture of random texels, and
+// per minification filter the view MakeView resolves (which takes the fast path) beside a copy of it with the fast
+// path switched off (the general path), each bound to unit 0 of its own Textures.
+struct FastAndGeneral {
+  std::uint32_t seed;
+  TextureObject texture;
+  TextureView fast_view, general_view;
+  Textures fast, general;
+
+  FastAndGeneral(int w, int h, std::uint32_t s) : seed(s) {
+    texture = MakeTexture(w, h, [&](int, int) { return glm::vec4(Next(), Next(), Next(), Next()); });
+    detail::GenerateMipmaps(texture);
+    texture.params.wrap_s = texture.params.wrap_t = REPEAT;
+    texture.params.mag_filter = LINEAR;
+  }
+  // A pseudo-random float in [0, 1).
+  float Next() {
     seed = seed * 1664525u + 1013904223u;
     return float(seed >> 8) / float(1u << 24);
-  };
-  TextureObject t = MakeTexture(64, 32, [&](int, int) { return glm::vec4(next(), next(), next(), next()); });
-  detail::GenerateMipmaps(t);
-  t.params.wrap_s = t.params.wrap_t = REPEAT;
-  t.params.mag_filter = LINEAR;
+  }
+  void Use(Enum min_filter, float lod_bias = 0.0f) {
+    texture.params.min_filter = min_filter;
+    texture.params.lod_bias = lod_bias;
+    fast_view = detail::MakeView(texture);
+    general_view = fast_view;
+    general_view.fast = TextureView::Fast::kNone;
+    fast.unit_2d[0] = &fast_view;
+    general.unit_2d[0] = &general_view;
+  }
+};
+
+}  // namespace
+
+TEST_CASE("the fast REPEAT path samples exactly as the general one", "[texture]") {
+  // A 64 x 32 mipmapped texture of arbitrary texels, sampled at random places with random derivatives (both
+  // magnified and minified, lambda past the last level too) through the fast path and the general one: the results
+  // must be the same floats.
+  FastAndGeneral f(64, 32, 99);
   for (Enum min_filter : {LINEAR_MIPMAP_LINEAR, LINEAR}) {
-    t.params.min_filter = min_filter;
-    const TextureView fast = detail::MakeView(t);
-    REQUIRE(fast.fast != TextureView::Fast::kNone);
-    TextureView general = fast;
-    general.fast = TextureView::Fast::kNone;
-    Textures a, b;
-    a.unit_2d[0] = &fast;
-    b.unit_2d[0] = &general;
+    f.Use(min_filter);
+    REQUIRE(f.fast_view.fast != TextureView::Fast::kNone);
     int differing = 0;
     for (int i = 0; i < 20000; ++i) {
-      const glm::vec2 uv((next() - 0.5f) * 8.0f, (next() - 0.5f) * 8.0f);
-      const float scale = std::ldexp(1.0f, int(next() * 14.0f) - 10);  // 2^-10 .. 2^3 per pixel
-      const glm::vec2 dx(next() * scale, next() * scale), dy(next() * scale, next() * scale);
-      const float bias = next() - 0.5f;
-      differing += a.Sample(0, uv, dx, dy, bias) != b.Sample(0, uv, dx, dy, bias);
+      const glm::vec2 uv((f.Next() - 0.5f) * 8.0f, (f.Next() - 0.5f) * 8.0f);
+      const float scale = std::ldexp(1.0f, int(f.Next() * 14.0f) - 10);  // 2^-10 .. 2^3 per pixel
+      const glm::vec2 dx(f.Next() * scale, f.Next() * scale), dy(f.Next() * scale, f.Next() * scale);
+      const float bias = f.Next() - 0.5f;
+      differing += f.fast.Sample(0, uv, dx, dy, bias) != f.general.Sample(0, uv, dx, dy, bias);
     }
     INFO("min filter 0x" << std::hex << min_filter);
     CHECK(differing == 0);
@@ -599,41 +620,28 @@ TEST_CASE("the fast REPEAT path samples exactly as the general one", "[texture]"
 TEST_CASE("SampleQuad gives each lane exactly what Sample gives it", "[texture]") {
   // Random quads (each lane its own coordinates and derivatives, mixed magnification and minification, some
   // lanes past the last level, some with NaN or huge coordinates) on the fast path and on an incomplete unit.
-  std::uint32_t seed = 7;
-  auto next = [&] {
-    seed = seed * 1664525u + 1013904223u;
-    return float(seed >> 8) / float(1u << 24);
-  };
-  TextureObject t = MakeTexture(128, 64, [&](int, int) { return glm::vec4(next(), next(), next(), next()); });
-  detail::GenerateMipmaps(t);
-  t.params.wrap_s = t.params.wrap_t = REPEAT;
-  t.params.mag_filter = LINEAR;
+  FastAndGeneral f(128, 64, 7);
   for (Enum min_filter : {LINEAR_MIPMAP_LINEAR, LINEAR, NEAREST_MIPMAP_LINEAR}) {
-    t.params.min_filter = min_filter;
-    t.params.lod_bias = min_filter == LINEAR ? 0.0f : 0.25f;
-    const TextureView view = detail::MakeView(t);
-    TextureView general = view;
-    general.fast = TextureView::Fast::kNone;
-    Textures quad, lane;
-    quad.unit_2d[0] = &view;
-    lane.unit_2d[0] = &general;
+    f.Use(min_filter, min_filter == LINEAR ? 0.0f : 0.25f);
+    // NEAREST_MIPMAP_LINEAR is not on the fast path: SampleQuad samples lane by lane there.
+    CHECK((f.fast_view.fast != TextureView::Fast::kNone) == (min_filter != NEAREST_MIPMAP_LINEAR));
     int differing = 0;
     for (int i = 0; i < 5000; ++i) {
       glm::vec2 uv[4], dx[4], dy[4];
       for (int l = 0; l < 4; ++l) {
-        uv[l] = glm::vec2((next() - 0.5f) * 6.0f, (next() - 0.5f) * 6.0f);
-        const float scale = std::ldexp(1.0f, int(next() * 16.0f) - 11);
-        dx[l] = glm::vec2((next() - 0.5f) * scale, next() * scale);
-        dy[l] = glm::vec2(next() * scale, (next() - 0.5f) * scale);
+        uv[l] = glm::vec2((f.Next() - 0.5f) * 6.0f, (f.Next() - 0.5f) * 6.0f);
+        const float scale = std::ldexp(1.0f, int(f.Next() * 16.0f) - 11);
+        dx[l] = glm::vec2((f.Next() - 0.5f) * scale, f.Next() * scale);
+        dy[l] = glm::vec2(f.Next() * scale, (f.Next() - 0.5f) * scale);
       }
       if (i % 97 == 0) uv[1].x = std::numeric_limits<float>::quiet_NaN();
       if (i % 89 == 0) uv[2].y = 3e9f;
       if (i % 83 == 0) dx[3] = dy[3] = glm::vec2(0.0f);  // rho = 0: lambda clamps to min_lod
-      const float bias = next() - 0.5f;
+      const float bias = f.Next() - 0.5f;
       glm::vec4 got[4];
-      quad.SampleQuad(0, uv, dx, dy, bias, got);
+      f.fast.SampleQuad(0, uv, dx, dy, bias, got);
       for (int l = 0; l < 4; ++l) {
-        const glm::vec4 want = lane.Sample(0, uv[l], dx[l], dy[l], bias);
+        const glm::vec4 want = f.general.Sample(0, uv[l], dx[l], dy[l], bias);
         differing += std::memcmp(&got[l], &want, sizeof want) != 0;
       }
     }
