@@ -1,7 +1,7 @@
 // bench — softgl against Mesa's llvmpipe (OSMesa, OpenGL 3.3 core) on the same scenes, same size, in one run.
 //
 //   bench [--threads N] [--frames N] [--png DIR] [--scene TEXT] [--softgl-only 1]
-//   (--png: also write each scene's last softgl frame)
+//   (--png DIR: also write each scene's last softgl frame to DIR)
 //
 // llvmpipe runs with LP_NUM_THREADS = N (0 for --threads 1: rendering on the calling thread alone); softgl with
 // Context::Options::threads = N (the calling thread and N - 1 workers). Each scene is set up once per renderer
@@ -286,6 +286,41 @@ double MedianMs(int frames, const std::function<void()>& frame) {
   return ms[ms.size() / 2];
 }
 
+// One frame of a scene: clear colour (and depth), one draw of `count` vertices (indexed or not), then wait for the
+// pixels. `png` names the file --png writes softgl's last frame to.
+struct FrameSpec {
+  bool depth;
+  bool indexed;
+  int count;
+  const char* png;
+};
+
+double TimeSoftgl(int n, softgl::Context& gl, const FrameSpec& f) {
+  const double ms = MedianMs(n, [&] {
+    gl.Clear(softgl::COLOR_BUFFER_BIT | (f.depth ? softgl::DEPTH_BUFFER_BIT : 0));
+    if (f.indexed) {
+      gl.DrawElement(softgl::TRIANGLES, f.count, softgl::UNSIGNED_INT, 0);
+    } else {
+      gl.DrawArrays(softgl::TRIANGLES, 0, f.count);
+    }
+    gl.Finish();
+  });
+  if (!g_png_dir.empty()) softgl::WritePng(g_png_dir + "/" + f.png, gl.ReadPixels());
+  return ms;
+}
+
+double TimeGl(int n, const FrameSpec& f) {
+  return MedianMs(n, [&] {
+    glClear(GL_COLOR_BUFFER_BIT | (f.depth ? GL_DEPTH_BUFFER_BIT : 0));
+    if (f.indexed) {
+      glDrawElements(GL_TRIANGLES, GLsizei(f.count), GL_UNSIGNED_INT, nullptr);
+    } else {
+      glDrawArrays(GL_TRIANGLES, 0, GLsizei(f.count));
+    }
+    glFinish();
+  });
+}
+
 struct Scene {
   const char* name;
   int width, height;
@@ -407,6 +442,10 @@ int main(int argc, char** argv) {
     return ms;
   };
 
+  const FrameSpec engine_frame{true, true, int(engine.indices.size()), "bench_engine.png"};
+  const FrameSpec small_frame{true, false, 3000000, "bench_small.png"};
+  const FrameSpec fill_frame{false, false, 300, "bench_fill.png"};
+  const FrameSpec overdraw_frame{false, false, 120, "bench_overdraw.png"};
   std::vector<Scene> scenes;
   if (have_engine) {
     scenes.push_back({"model: 2CylinderEngine, Blinn-Phong", 1280, 720, "Mtri/s", double(engine.indices.size() / 3),
@@ -419,13 +458,7 @@ int main(int argc, char** argv) {
                         gl.UseProgram(shader);
                         gl.Enable(softgl::DEPTH_TEST);
                         gl.Enable(softgl::CULL_FACE);
-                        const double ms = MedianMs(n, [&] {
-                          gl.Clear(softgl::COLOR_BUFFER_BIT | softgl::DEPTH_BUFFER_BIT);
-                          gl.DrawElement(softgl::TRIANGLES, int(engine.indices.size()), softgl::UNSIGNED_INT, 0);
-                          gl.Finish();
-                        });
-                        if (!g_png_dir.empty()) softgl::WritePng(g_png_dir + "/bench_engine.png", gl.ReadPixels());
-                        return ms;
+                        return TimeSoftgl(n, gl, engine_frame);
                       },
                       [&](int n) {
                         return with_osmesa(1280, 720, [&] {
@@ -437,11 +470,7 @@ int main(int argc, char** argv) {
                           glUniform3fv(glGetUniformLocation(p, "eye"), 1, &engine_eye[0]);
                           glEnable(GL_DEPTH_TEST);
                           glEnable(GL_CULL_FACE);
-                          return MedianMs(n, [&] {
-                            glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-                            glDrawElements(GL_TRIANGLES, GLsizei(engine.indices.size()), GL_UNSIGNED_INT, nullptr);
-                            glFinish();
-                          });
+                          return TimeGl(n, engine_frame);
                         });
                       }});
   }
@@ -452,6 +481,7 @@ int main(int argc, char** argv) {
   const glm::mat4 head_vp = glm::perspective(glm::radians(40.0f), 1280.0f / 720.0f, 0.5f, 10.0f) *
                             glm::lookAt(head_eye, glm::vec3(0.0f), glm::vec3(0, 1, 0));
   const char* maps[3] = {"/african_head_diffuse.tga", "/african_head_nm_tangent.tga", "/african_head_spec.tga"};
+  const FrameSpec head_frame{true, true, int(head.indices.size()), "bench_head.png"};
   if (have_head)
     scenes.push_back({"textured model: african_head, diffuse + normal + specular maps, trilinear", 1280, 720, "Mtri/s",
                       double(head.indices.size() / 3),
@@ -471,13 +501,7 @@ int main(int argc, char** argv) {
                         gl.UseProgram(shader);
                         gl.Enable(softgl::DEPTH_TEST);
                         gl.Enable(softgl::CULL_FACE);
-                        const double ms = MedianMs(n, [&] {
-                          gl.Clear(softgl::COLOR_BUFFER_BIT | softgl::DEPTH_BUFFER_BIT);
-                          gl.DrawElement(softgl::TRIANGLES, int(head.indices.size()), softgl::UNSIGNED_INT, 0);
-                          gl.Finish();
-                        });
-                        if (!g_png_dir.empty()) softgl::WritePng(g_png_dir + "/bench_head.png", gl.ReadPixels());
-                        return ms;
+                        return TimeSoftgl(n, gl, head_frame);
                       },
                       [&](int n) {
                         return with_osmesa(1280, 720, [&] {
@@ -508,11 +532,7 @@ int main(int argc, char** argv) {
                           glUniform3fv(glGetUniformLocation(p, "eye"), 1, &head_eye[0]);
                           glEnable(GL_DEPTH_TEST);
                           glEnable(GL_CULL_FACE);
-                          return MedianMs(n, [&] {
-                            glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-                            glDrawElements(GL_TRIANGLES, GLsizei(head.indices.size()), GL_UNSIGNED_INT, nullptr);
-                            glFinish();
-                          });
+                          return TimeGl(n, head_frame);
                         });
                       }});
   scenes.push_back({"many small triangles: 1,000,000, flat, depth test", 1280, 720, "Mtri/s", 1e6,
@@ -522,11 +542,7 @@ int main(int argc, char** argv) {
                       FlatShader shader;
                       gl.UseProgram(shader);
                       gl.Enable(softgl::DEPTH_TEST);
-                      return MedianMs(n, [&] {
-                        gl.Clear(softgl::COLOR_BUFFER_BIT | softgl::DEPTH_BUFFER_BIT);
-                        gl.DrawArrays(softgl::TRIANGLES, 0, 3000000);
-                        gl.Finish();
-                      });
+                      return TimeSoftgl(n, gl, small_frame);
                     },
                     [&](int n) {
                       return with_osmesa(1280, 720, [&] {
@@ -534,11 +550,7 @@ int main(int argc, char** argv) {
                         const GLuint p = Program(kFlatVs, kFlatFs);
                         glUniform4f(glGetUniformLocation(p, "color"), 0.2f, 0.6f, 0.9f, 1.0f);
                         glEnable(GL_DEPTH_TEST);
-                        return MedianMs(n, [&] {
-                          glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-                          glDrawArrays(GL_TRIANGLES, 0, 3000000);
-                          glFinish();
-                        });
+                        return TimeGl(n, small_frame);
                       });
                     }});
   scenes.push_back({"fill rate: 50 blended full-screen quads", 1920, 1080, "Mpixel/s", 50.0 * 1920 * 1080,
@@ -550,11 +562,7 @@ int main(int argc, char** argv) {
                       gl.UseProgram(shader);
                       gl.Enable(softgl::BLEND);
                       gl.BlendFunc(softgl::SRC_ALPHA, softgl::ONE_MINUS_SRC_ALPHA);
-                      return MedianMs(n, [&] {
-                        gl.Clear(softgl::COLOR_BUFFER_BIT);
-                        gl.DrawArrays(softgl::TRIANGLES, 0, 300);
-                        gl.Finish();
-                      });
+                      return TimeSoftgl(n, gl, fill_frame);
                     },
                     [&](int n) {
                       return with_osmesa(1920, 1080, [&] {
@@ -563,11 +571,7 @@ int main(int argc, char** argv) {
                         glUniform4f(glGetUniformLocation(p, "color"), 0.9f, 0.5f, 0.2f, 0.1f);
                         glEnable(GL_BLEND);
                         glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
-                        return MedianMs(n, [&] {
-                          glClear(GL_COLOR_BUFFER_BIT);
-                          glDrawArrays(GL_TRIANGLES, 0, 300);
-                          glFinish();
-                        });
+                        return TimeGl(n, fill_frame);
                       });
                     }});
   scenes.push_back({"textured overdraw: 20 quads, trilinear, 1024^2", 1920, 1080, "Mpixel/s", 20.0 * 1920 * 1080,
@@ -581,13 +585,7 @@ int main(int argc, char** argv) {
                       gl.TexParameteri(softgl::TEXTURE_2D, softgl::TEXTURE_MIN_FILTER, softgl::LINEAR_MIPMAP_LINEAR);
                       TextureShader shader;
                       gl.UseProgram(shader);
-                      const double ms = MedianMs(n, [&] {
-                        gl.Clear(softgl::COLOR_BUFFER_BIT);
-                        gl.DrawArrays(softgl::TRIANGLES, 0, 120);
-                        gl.Finish();
-                      });
-                      if (!g_png_dir.empty()) softgl::WritePng(g_png_dir + "/bench_overdraw.png", gl.ReadPixels());
-                      return ms;
+                      return TimeSoftgl(n, gl, overdraw_frame);
                     },
                     [&](int n) {
                       return with_osmesa(1920, 1080, [&] {
@@ -600,11 +598,7 @@ int main(int argc, char** argv) {
                         glGenerateMipmap(GL_TEXTURE_2D);
                         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
                         Program(kTexVs, kTexFs);
-                        return MedianMs(n, [&] {
-                          glClear(GL_COLOR_BUFFER_BIT);
-                          glDrawArrays(GL_TRIANGLES, 0, 120);
-                          glFinish();
-                        });
+                        return TimeGl(n, overdraw_frame);
                       });
                     }});
 
