@@ -14,6 +14,8 @@
 // in submission order, so the image is the same whatever the number of threads.
 #pragma once
 
+#include <softgl/config.h>
+
 #include <cstddef>
 #include <cstdint>
 #include <functional>

@@ -5,6 +5,8 @@
 // a scene easy to port between softgl and a real OpenGL implementation.
 #pragma once
 
+#include <softgl/config.h>
+
 #include <cstdint>
 
 namespace softgl {

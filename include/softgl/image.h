@@ -1,6 +1,8 @@
 // softgl/image.h — an RGBA8 image in memory, and PNG output.
 #pragma once
 
+#include <softgl/config.h>
+
 #include <cstddef>
 #include <cstdint>
 #include <string>

@@ -6,6 +6,8 @@
 // such as the built-in shaders of softgl/shaders.h.
 #pragma once
 
+#include <softgl/config.h>
+
 #include <cstdint>
 #include <string>
 #include <vector>

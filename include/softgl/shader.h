@@ -28,6 +28,8 @@
 // changing uniforms between draws works as in OpenGL.
 #pragma once
 
+#include <softgl/config.h>
+
 #include <cstddef>
 #include <cstdint>
 #include <cstring>

@@ -5,6 +5,8 @@
 // (MaterialUnit); they implement MaterialProgram, so `model.Draw(gl, shader, view_proj)` just works.
 #pragma once
 
+#include <softgl/config.h>
+
 #include <algorithm>
 #include <cmath>
 

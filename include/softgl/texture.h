@@ -10,6 +10,8 @@
 // pass derivatives yourself; the vertex stage has only SampleLod.
 #pragma once
 
+#include <softgl/config.h>
+
 #include <glm/glm.hpp>
 
 namespace softgl {

@@ -1,6 +1,9 @@
-// A program outside the softgl tree: draws one triangle through the installed package and checks two pixels.
+// A program outside the softgl tree: draws one triangle with softgl and frames a box with softgl::model's camera,
+// then checks a few pixels.
+#include <cmath>
 #include <cstdio>
 
+#include <softgl/model.h>
 #include <softgl/softgl.h>
 
 struct Flat {};
@@ -28,7 +31,12 @@ int main() {
   std::uint8_t a[4], b[4];
   gl.ReadPixel(0, 0, a);
   gl.ReadPixel(15, 15, b);
-  const bool ok = gl.GetError() == softgl::NO_ERROR && a[0] == 255 && a[1] == 128 && b[0] == 255 && b[2] == 0;
-  std::printf("consumer: %s\n", ok ? "ok" : "wrong pixels");
+  // softgl::model: a camera that frames the unit box looks at its centre.
+  const softgl::Camera cam = softgl::Camera::Frame(softgl::Bounds{glm::vec3(-1.0f), glm::vec3(1.0f)}, 1.0f);
+  const glm::vec4 centre = cam.Projection(1.0f) * cam.View() * glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
+  const bool centred = std::abs(centre.x / centre.w) < 1e-4f && std::abs(centre.y / centre.w) < 1e-4f;
+  const bool ok = gl.GetError() == softgl::NO_ERROR && a[0] == 255 && a[1] == 128 && b[0] == 255 && b[2] == 0 &&
+                  centred;
+  std::printf("consumer: %s (C++ level %ld)\n", ok ? "ok" : "wrong result", long(__cplusplus));
   return ok ? 0 : 1;
 }
