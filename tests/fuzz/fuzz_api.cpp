@@ -80,7 +80,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       case 0: gl.GenBuffer(); break;
       case 1: gl.BindBuffer(in.Enum(kBufferTargets), id()); break;
       case 2: {
-        const int n = in.Int(0, 512);
+        const int n = in.Amount(0, 512, 1 << 20);
         const std::size_t len = std::size_t(std::max(n, 0)), avail = std::min(len, in.Remaining());
         const std::uint8_t* p = in.Bytes(len);
         scratch.assign(len, 0);
@@ -89,7 +89,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         break;
       }
       case 3: {
-        const int n = in.Int(0, 64);
+        const int n = in.Amount(0, 64, 1 << 16);
         scratch.assign(std::size_t(n > 0 ? n : 0), in.Byte());
         gl.BufferSubData(in.Enum(kBufferTargets), in.Int(-4, 512), n, scratch.data());
         break;
@@ -103,9 +103,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       case 7: gl.EnableVertexAttribArray(std::uint32_t(in.Int(0, 16))); break;
       case 8: gl.DisableVertexAttribArray(std::uint32_t(in.Int(0, 16))); break;
       case 9: gl.UseProgram(shader); break;
-      case 10: gl.DrawArrays(in.Enum(kModes), in.Int(-2, 64), in.Int(-2, 600)); break;
+      case 10: gl.DrawArrays(in.Enum(kModes), in.Int(-2, 64), in.Amount(-2, 600, 1 << 16)); break;
       case 11:
-        gl.DrawElement(in.Enum(kModes), in.Int(-2, 600), in.Enum(kIndexTypes),
+        gl.DrawElement(in.Enum(kModes), in.Amount(-2, 600, 1 << 16), in.Enum(kIndexTypes),
                        std::size_t(std::uint32_t(in.Int(0, 512))));
         break;
       case 12: gl.Enable(in.Enum(kCaps)); break;
@@ -121,7 +121,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       case 22: {
         // Sizes are mostly small, sometimes wild; pixels are given only when the buffer holds them (as a caller
         // of OpenGL must), otherwise the level is allocated without data.
-        const int w = in.Int(0, 16), h = in.Int(0, 16);
+        const int w = in.Amount(0, 16, 512, kMaxTextureSize), h = in.Amount(0, 16, 512, kMaxTextureSize);
         const bool small = w >= 0 && h >= 0 && w <= 64 && h <= 64;
         if (small) scratch.assign(std::size_t(w) * std::size_t(h) * 16 + 64, in.Byte());
         gl.TexImage2D(in.Enum(kImageTargets), in.Int(-1, 5), in.Enum(kInternal), w, h, in.Byte() < 8,

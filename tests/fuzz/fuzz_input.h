@@ -29,6 +29,15 @@ class Input {
     const long span = long(hi) - long(lo) + 1;
     return int(lo + ((long(raw) % span) + span) % span);
   }
+  /// Int(lo, hi) for an amount of memory or work: a wild value in (cap, limit] (valid, merely huge) is folded back
+  /// into [hi, cap], so that one input costs at most `cap`; values below lo or past `limit` stay as they are, to
+  /// reach the error paths. A huge valid size would test the machine's memory and patience, not softgl (allocation
+  /// failure has its own test, tests/oom_check.cpp), and would make a run's outcome depend on the machine's load.
+  int Amount(int lo, int hi, int cap, long limit = 0x7FFFFFFFL) {
+    const int v = Int(lo, hi);
+    if (v > cap && long(v) <= limit) return hi + int((long(v) - hi) % (long(cap) - hi + 1));
+    return v;
+  }
   /// One of `choices`, or (rarely) any value, to reach INVALID_ENUM paths.
   template <std::size_t N>
   std::uint32_t Enum(const std::uint32_t (&choices)[N]) {
