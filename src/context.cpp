@@ -106,16 +106,15 @@ detail::RenderTarget FramebufferTarget(const FramebufferObject& f) {
     if (f.draw_buffers[i] == NONE) continue;
     const Attachment& a = f.color[f.draw_buffers[i] - COLOR_ATTACHMENT0];
     detail::ColorBuffer& cb = t.color[i];
-    cb.texels = const_cast<float*>(a.Level()->texels.data());
-    cb.normalized = detail::IsNormalizedFormat(a.Level()->format);
-    cb.components = detail::FormatComponents(a.Level()->format);
+    cb.data = const_cast<std::uint8_t*>(a.Level()->data.data());
+    cb.layout = a.Level()->layout;
+    cb.rgb_only = a.Level()->format == RGB8;
     cb.pitch = a.Level()->width;
   }
   if (f.depth.texture) {
-    t.depth = const_cast<float*>(f.depth.Level()->texels.data());
+    t.depth = reinterpret_cast<float*>(const_cast<std::uint8_t*>(f.depth.Level()->data.data()));
     t.depth_pitch = f.depth.Level()->width;
   }
-  t.depth_stride = 4;
   return t;
 }
 
@@ -508,6 +507,12 @@ void Context::PointSize(float size) {
   state_->primitive.point_size = size;
 }
 
+void Context::ProvokingVertex(Enum mode) {
+  if (mode != FIRST_VERTEX_CONVENTION && mode != LAST_VERTEX_CONVENTION)
+    return state_->SetError(INVALID_ENUM, __func__, "mode must be FIRST_VERTEX_CONVENTION or LAST_VERTEX_CONVENTION");
+  state_->primitive.provoking_first = mode == FIRST_VERTEX_CONVENTION;
+}
+
 void Context::DepthFunc(Enum func) {
   if (func < NEVER || func > ALWAYS) return state_->SetError(INVALID_ENUM, __func__, "not a comparison function");
   state_->ops.depth_func = func;
@@ -703,10 +708,13 @@ void ContextState::Draw(const detail::DrawCall& call) {
   }
   packet.ops = ops;
   packet.nvar = program->VaryingFloats();
+  packet.interpolation = program->VaryingInterpolation();
+  packet.shader_depth = program->WritesDepth();
 
   detail::DrawState ds;
   ds.program = program;
   ds.textures = &packet.textures;
+  ds.interpolation = packet.interpolation;
   ds.viewport = detail::MakeViewportTransform(viewport[0], viewport[1], viewport[2], viewport[3], depth_near,
                                               depth_far);
   const detail::Rect fbr = ClearArea(target);  // draw target and scissor
@@ -897,16 +905,11 @@ void Context::TexImage2D(Enum target, int level, Enum internal_format, int width
   detail::TextureObject* tex = s.Bound(target, &face);
   if (!tex) return s.SetError(INVALID_OPERATION, __func__, "no texture is bound to that target of the active unit");
   detail::TextureLevel next;
-  next.format = internal_format;
-  next.width = width;
-  next.height = height;
   try {
-    next.texels.assign(std::size_t(width) * std::size_t(height) * 4, 0.0f);
+    next.Allocate(internal_format, width, height);
   } catch (const std::bad_alloc&) {
     return s.SetError(OUT_OF_MEMORY, __func__, "out of memory");
   }
-  if (detail::FormatComponents(internal_format) < 4)  // formats without alpha read alpha 1
-    for (std::size_t i = 3; i < next.texels.size(); i += 4) next.texels[i] = 1.0f;
   detail::UploadPixels(next, 0, 0, width, height, format, type, s.unpack_alignment, pixels);
   tex->levels[face][level] = std::move(next);
 }

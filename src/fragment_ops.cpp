@@ -2,6 +2,7 @@
 #include "fragment_ops.h"
 
 #include "simd.h"
+#include "wide.h"
 
 #include <algorithm>
 #include <cmath>
@@ -76,8 +77,7 @@ float Equation(Enum eq, float s, float sf, float d, float df) {
 }  // namespace
 
 glm::vec4 Blend(const BlendState& state, const glm::vec4& src, const glm::vec4& dst) {
-  // The framebuffer is fixed point, so the constant colour is clamped to [0, 1] as it is used.
-  const glm::vec4 c = glm::clamp(state.color, 0.0f, 1.0f);
+  const glm::vec4 c = state.color;  // a float buffer takes the constant colour unclamped
   const glm::vec4 sf_rgb = Factor(state.src_rgb, src, dst, c), df_rgb = Factor(state.dst_rgb, src, dst, c);
   const float sf_a = Factor(state.src_alpha, src, dst, c).a, df_a = Factor(state.dst_alpha, src, dst, c).a;
   glm::vec4 out;
@@ -86,219 +86,177 @@ glm::vec4 Blend(const BlendState& state, const glm::vec4& src, const glm::vec4& 
   return out;
 }
 
+
+// ---- 8-bit blending: exact integer arithmetic -------------------------------------------------------------------
+
 namespace {
 
-// Blending and storing into an 8-bit RGBA buffer, one pixel's four channels at a time. Every operation is the one
-// Blend(), ColorBuffer::Load/Store and FloatToUnorm8 do per channel, in the same order, so the bytes written are
-// the same; a factor is evaluated as k0 + k1 * v (v a source, destination or constant vector, k1 in {-1, 0, 1}),
-// which is exact.
-struct Unorm8Blender {
-  enum Source { kNone, kSrc, kDst, kSrcAlpha, kDstAlpha, kConst, kConstAlpha };
-  struct Term {
-    float k0 = 0.0f, k1 = 0.0f;
-    Source source = kNone;
-  };
-  bool blend = false;
-  bool usable = true;  // false for SRC_ALPHA_SATURATE: the generic path then runs
-  Term src_rgb, dst_rgb, src_a, dst_a;
-  Enum eq_rgb = FUNC_ADD, eq_a = FUNC_ADD;
-  glm::vec4 constant{0.0f};
-  std::uint32_t keep = 0;  // bytes of the stored pixel the colour mask keeps
-
-  static Term TermOf(Enum f, bool& usable) {
-    switch (f) {
-      case ZERO: return {0.0f, 0.0f, kNone};
-      case ONE: return {1.0f, 0.0f, kNone};
-      case SRC_COLOR: return {0.0f, 1.0f, kSrc};
-      case ONE_MINUS_SRC_COLOR: return {1.0f, -1.0f, kSrc};
-      case DST_COLOR: return {0.0f, 1.0f, kDst};
-      case ONE_MINUS_DST_COLOR: return {1.0f, -1.0f, kDst};
-      case SRC_ALPHA: return {0.0f, 1.0f, kSrcAlpha};
-      case ONE_MINUS_SRC_ALPHA: return {1.0f, -1.0f, kSrcAlpha};
-      case DST_ALPHA: return {0.0f, 1.0f, kDstAlpha};
-      case ONE_MINUS_DST_ALPHA: return {1.0f, -1.0f, kDstAlpha};
-      case CONSTANT_COLOR: return {0.0f, 1.0f, kConst};
-      case ONE_MINUS_CONSTANT_COLOR: return {1.0f, -1.0f, kConst};
-      case CONSTANT_ALPHA: return {0.0f, 1.0f, kConstAlpha};
-      case ONE_MINUS_CONSTANT_ALPHA: return {1.0f, -1.0f, kConstAlpha};
-      default: usable = false; return {};
-    }
-  }
-
-  explicit Unorm8Blender(const FragmentOpsState& state) {
-    blend = state.blend.enabled;
-    for (int c = 0; c < 4; ++c)
-      if (!state.color_mask[c]) keep |= 0xFFu << (8 * c);
-    if (!blend) return;
-    src_rgb = TermOf(state.blend.src_rgb, usable);
-    dst_rgb = TermOf(state.blend.dst_rgb, usable);
-    src_a = TermOf(state.blend.src_alpha, usable);
-    dst_a = TermOf(state.blend.dst_alpha, usable);
-    eq_rgb = state.blend.eq_rgb;
-    eq_a = state.blend.eq_alpha;
-    constant = glm::clamp(state.blend.color, 0.0f, 1.0f);
-#if defined(__SSE2__)
-    Prepare();
-#endif
-  }
-
-#if defined(__SSE2__)
-  // Per channel (r, g, b from the rgb state, a from the alpha state): factor = k0 + k1 * source, and for the
-  // equations ADD, SUBTRACT and REVERSE_SUBTRACT, result = ks * (s * sf) + kd * (d * df) with ks, kd = +-1.
-  __m128 sk0, sk1, dk0, dk1, ks, kd;
-  int src_pick[2], dst_pick[2];  // [rgb, alpha]: index into the source vectors
-  bool min_max = false;          // MIN or MAX in either equation: the generic equations run
-
-  void Prepare() {
-    sk0 = _mm_setr_ps(src_rgb.k0, src_rgb.k0, src_rgb.k0, src_a.k0);
-    sk1 = _mm_setr_ps(src_rgb.k1, src_rgb.k1, src_rgb.k1, src_a.k1);
-    dk0 = _mm_setr_ps(dst_rgb.k0, dst_rgb.k0, dst_rgb.k0, dst_a.k0);
-    dk1 = _mm_setr_ps(dst_rgb.k1, dst_rgb.k1, dst_rgb.k1, dst_a.k1);
-    auto sign_s = [](Enum eq) { return eq == FUNC_REVERSE_SUBTRACT ? -1.0f : 1.0f; };
-    auto sign_d = [](Enum eq) { return eq == FUNC_SUBTRACT ? -1.0f : 1.0f; };
-    ks = _mm_setr_ps(sign_s(eq_rgb), sign_s(eq_rgb), sign_s(eq_rgb), sign_s(eq_a));
-    kd = _mm_setr_ps(sign_d(eq_rgb), sign_d(eq_rgb), sign_d(eq_rgb), sign_d(eq_a));
-    src_pick[0] = src_rgb.source;
-    src_pick[1] = src_a.source;
-    dst_pick[0] = dst_rgb.source;
-    dst_pick[1] = dst_a.source;
-    min_max = eq_rgb == MIN || eq_rgb == MAX || eq_a == MIN || eq_a == MAX;
-  }
-
-  static __m128 Alpha(__m128 v) { return _mm_shuffle_ps(v, v, _MM_SHUFFLE(3, 3, 3, 3)); }
-  static __m128 RgbA(__m128 rgb, __m128 a) {  // (rgb.r, rgb.g, rgb.b, a.a)
-    const __m128 alpha_lane = _mm_castsi128_ps(_mm_setr_epi32(0, 0, 0, -1));
-    return _mm_or_ps(_mm_andnot_ps(alpha_lane, rgb), _mm_and_ps(alpha_lane, a));
-  }
-  static __m128 Equation(Enum eq, __m128 s, __m128 sf, __m128 d, __m128 df) {
-    switch (eq) {
-      case FUNC_SUBTRACT: return _mm_sub_ps(_mm_mul_ps(s, sf), _mm_mul_ps(d, df));
-      case FUNC_REVERSE_SUBTRACT: return _mm_sub_ps(_mm_mul_ps(d, df), _mm_mul_ps(s, sf));
-      case MIN: return _mm_min_ps(d, s);
-      case MAX: return _mm_max_ps(d, s);
-      default: return _mm_add_ps(_mm_mul_ps(s, sf), _mm_mul_ps(d, df));
-    }
-  }
-
-  // Writes fragment colour `color` at `p` (4 bytes), blended with what is there.
-  void Store(const glm::vec4& color, std::uint8_t* p) const {
-    const __m128 zero = _mm_setzero_ps(), one = _mm_set1_ps(1.0f), scale = _mm_set1_ps(255.0f);
-    __m128 s = _mm_loadu_ps(&color.x);
-    s = _mm_and_ps(s, _mm_cmpord_ps(s, s));  // NaN -> 0
-    s = _mm_min_ps(_mm_max_ps(s, zero), one);
-    std::uint32_t old;
-    std::memcpy(&old, p, 4);
-    if (blend) {
-      const __m128i bytes = _mm_unpacklo_epi16(_mm_unpacklo_epi8(_mm_cvtsi32_si128(int(old)), _mm_setzero_si128()),
-                                               _mm_setzero_si128());
-      const __m128 d = _mm_div_ps(_mm_cvtepi32_ps(bytes), scale);
-      const __m128 c = _mm_loadu_ps(&constant.x);
-      const __m128 sources[7] = {zero, s, d, Alpha(s), Alpha(d), c, Alpha(c)};  // indexed by Source
-      const __m128 sf = _mm_add_ps(sk0, _mm_mul_ps(sk1, RgbA(sources[src_pick[0]], sources[src_pick[1]])));
-      const __m128 df = _mm_add_ps(dk0, _mm_mul_ps(dk1, RgbA(sources[dst_pick[0]], sources[dst_pick[1]])));
-      if (!min_max) {
-        s = _mm_add_ps(_mm_mul_ps(ks, _mm_mul_ps(s, sf)), _mm_mul_ps(kd, _mm_mul_ps(d, df)));
-      } else {
-        s = RgbA(Equation(eq_rgb, s, sf, d, df), Equation(eq_a, s, sf, d, df));
-      }
-      s = _mm_min_ps(_mm_max_ps(s, zero), one);  // FloatToUnorm8's clamp (NaN -> 0)
-    }
-    const __m128i v = _mm_cvtps_epi32(_mm_mul_ps(s, scale));  // round to nearest even, as lrint
-    const __m128i packed = _mm_packus_epi16(_mm_packs_epi32(v, v), _mm_setzero_si128());
-    const auto bytes = std::uint32_t(_mm_cvtsi128_si32(packed));
-    const std::uint32_t out = (old & keep) | (bytes & ~keep);
-    std::memcpy(p, &out, 4);
-  }
-#endif
+// What a blend factor multiplies: factor = k0 + k1 * v, v one of these 8-bit values (k0 in {0, 255}, k1 in
+// {-1, 0, 1}); kSaturate is min(As, 1 - Ad) for colour.
+enum Source : std::uint8_t { kNothing, kSrc, kDst, kSrcAlpha, kDstAlpha, kConst, kConstAlpha, kSaturate };
+struct Term {
+  int k0 = 0, k1 = 0;
+  Source source = kNothing;
 };
 
-#if defined(__SSE2__) && (defined(__x86_64__) || defined(__i386__))
-#define SOFTGL_AVX2_DISPATCH 1
-
-// Two horizontally adjacent pixels at once in 256-bit registers: Unorm8Blender::Store's operations, lane for lane,
-// so the bytes are the same. Compiled for AVX2 (without FMA, which would round differently) and used only when the
-// processor has it; the blender must not use MIN or MAX (their lane selection stays in the 128-bit path).
-__attribute__((target("avx2"))) void Store2Avx2(const Unorm8Blender& b, const glm::vec4& c0, const glm::vec4& c1,
-                                                std::uint8_t* p) {
-  const __m256 zero = _mm256_setzero_ps(), one = _mm256_set1_ps(1.0f), scale = _mm256_set1_ps(255.0f);
-  __m256 s = _mm256_set_m128(_mm_loadu_ps(&c1.x), _mm_loadu_ps(&c0.x));
-  s = _mm256_and_ps(s, _mm256_cmp_ps(s, s, _CMP_ORD_Q));  // NaN -> 0
-  s = _mm256_min_ps(_mm256_max_ps(s, zero), one);
-  std::uint64_t old;
-  std::memcpy(&old, p, 8);
-  if (b.blend) {
-    const __m256 d =
-        _mm256_div_ps(_mm256_cvtepi32_ps(_mm256_cvtepu8_epi32(_mm_cvtsi64_si128(std::int64_t(old)))), scale);
-    const __m128 c128 = _mm_loadu_ps(&b.constant.x);
-    const __m256 c = _mm256_set_m128(c128, c128);
-    // Each pixel's alpha in its four channels: _mm256_permute_ps(v, 0xFF); (rgb, alpha) lanes: blend 0x88.
-    const __m256 sources[7] = {zero, s, d, _mm256_permute_ps(s, 0xFF), _mm256_permute_ps(d, 0xFF), c,
-                               _mm256_permute_ps(c, 0xFF)};
-    const __m256 src_v = _mm256_blend_ps(sources[b.src_pick[0]], sources[b.src_pick[1]], 0x88);
-    const __m256 dst_v = _mm256_blend_ps(sources[b.dst_pick[0]], sources[b.dst_pick[1]], 0x88);
-    const __m256 sf = _mm256_add_ps(_mm256_set_m128(b.sk0, b.sk0), _mm256_mul_ps(_mm256_set_m128(b.sk1, b.sk1), src_v));
-    const __m256 df = _mm256_add_ps(_mm256_set_m128(b.dk0, b.dk0), _mm256_mul_ps(_mm256_set_m128(b.dk1, b.dk1), dst_v));
-    s = _mm256_add_ps(_mm256_mul_ps(_mm256_set_m128(b.ks, b.ks), _mm256_mul_ps(s, sf)),
-                      _mm256_mul_ps(_mm256_set_m128(b.kd, b.kd), _mm256_mul_ps(d, df)));
-    s = _mm256_min_ps(_mm256_max_ps(s, zero), one);
+Term TermOf(Enum f, bool alpha) {
+  switch (f) {
+    case ZERO: return {0, 0, kNothing};
+    case ONE: return {255, 0, kNothing};
+    case SRC_COLOR: return {0, 1, kSrc};
+    case ONE_MINUS_SRC_COLOR: return {255, -1, kSrc};
+    case DST_COLOR: return {0, 1, kDst};
+    case ONE_MINUS_DST_COLOR: return {255, -1, kDst};
+    case SRC_ALPHA: return {0, 1, kSrcAlpha};
+    case ONE_MINUS_SRC_ALPHA: return {255, -1, kSrcAlpha};
+    case DST_ALPHA: return {0, 1, kDstAlpha};
+    case ONE_MINUS_DST_ALPHA: return {255, -1, kDstAlpha};
+    case CONSTANT_COLOR: return {0, 1, kConst};
+    case ONE_MINUS_CONSTANT_COLOR: return {255, -1, kConst};
+    case CONSTANT_ALPHA: return {0, 1, kConstAlpha};
+    case ONE_MINUS_CONSTANT_ALPHA: return {255, -1, kConstAlpha};
+    case SRC_ALPHA_SATURATE: return alpha ? Term{255, 0, kNothing} : Term{0, 1, kSaturate};
+    default: return {0, 0, kNothing};
   }
-  const __m256i v = _mm256_cvtps_epi32(_mm256_mul_ps(s, scale));
-  const __m128i w16 = _mm_packs_epi32(_mm256_castsi256_si128(v), _mm256_extracti128_si256(v, 1));
-  const auto bytes = std::uint64_t(_mm_cvtsi128_si64(_mm_packus_epi16(w16, w16)));
-  const std::uint64_t keep = std::uint64_t(b.keep) | std::uint64_t(b.keep) << 32;
-  const std::uint64_t out = (old & keep) | (bytes & ~keep);
-  std::memcpy(p, &out, 8);
 }
 
-// A whole quad (two rows of two pixels) in one 512-bit register: the same operations again, lane for lane.
-// (GCC 12's AVX-512 headers start intrinsics from a self-initialized "undefined" vector, which its
-// uninitialized-value warnings report at every use: a known false positive, silenced for this function only.)
-#if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wuninitialized"
-#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
-#endif
-__attribute__((target("avx512f"))) void Store4Avx512(const Unorm8Blender& b, const FragmentOut* row0,
-                                                     const FragmentOut* row1, std::uint8_t* p0, std::uint8_t* p1) {
-  const __m512 zero = _mm512_setzero_ps(), one = _mm512_set1_ps(1.0f), scale = _mm512_set1_ps(255.0f);
-  __m512 s = _mm512_castps128_ps512(_mm_loadu_ps(&row0[0].color[0].x));
-  s = _mm512_insertf32x4(s, _mm_loadu_ps(&row0[1].color[0].x), 1);
-  s = _mm512_insertf32x4(s, _mm_loadu_ps(&row1[0].color[0].x), 2);
-  s = _mm512_insertf32x4(s, _mm_loadu_ps(&row1[1].color[0].x), 3);
-  s = _mm512_maskz_mov_ps(_mm512_cmp_ps_mask(s, s, _CMP_ORD_Q), s);  // NaN -> 0
-  s = _mm512_min_ps(_mm512_max_ps(s, zero), one);
-  std::uint64_t old0, old1;
-  std::memcpy(&old0, p0, 8);
-  std::memcpy(&old1, p1, 8);
-  if (b.blend) {
-    const __m128i old_bytes = _mm_set_epi64x(std::int64_t(old1), std::int64_t(old0));
-    const __m512 d = _mm512_div_ps(_mm512_cvtepi32_ps(_mm512_cvtepu8_epi32(old_bytes)), scale);
-    const __m512 c = _mm512_broadcast_f32x4(_mm_loadu_ps(&b.constant.x));
-    const __m512 sources[7] = {zero, s, d, _mm512_permute_ps(s, 0xFF), _mm512_permute_ps(d, 0xFF), c,
-                               _mm512_permute_ps(c, 0xFF)};
-    const __m512 src_v = _mm512_mask_blend_ps(0x8888, sources[b.src_pick[0]], sources[b.src_pick[1]]);
-    const __m512 dst_v = _mm512_mask_blend_ps(0x8888, sources[b.dst_pick[0]], sources[b.dst_pick[1]]);
-    const __m512 sf = _mm512_add_ps(_mm512_broadcast_f32x4(b.sk0), _mm512_mul_ps(_mm512_broadcast_f32x4(b.sk1), src_v));
-    const __m512 df = _mm512_add_ps(_mm512_broadcast_f32x4(b.dk0), _mm512_mul_ps(_mm512_broadcast_f32x4(b.dk1), dst_v));
-    s = _mm512_add_ps(_mm512_mul_ps(_mm512_broadcast_f32x4(b.ks), _mm512_mul_ps(s, sf)),
-                      _mm512_mul_ps(_mm512_broadcast_f32x4(b.kd), _mm512_mul_ps(d, df)));
-    s = _mm512_min_ps(_mm512_max_ps(s, zero), one);
-  }
-  const __m128i bytes = _mm512_cvtusepi32_epi8(_mm512_cvtps_epi32(_mm512_mul_ps(s, scale)));  // values in [0, 255]
-  const std::uint64_t keep = std::uint64_t(b.keep) | std::uint64_t(b.keep) << 32;
-  const auto new0 = std::uint64_t(_mm_cvtsi128_si64(bytes));
-  const auto new1 = std::uint64_t(_mm_cvtsi128_si64(_mm_unpackhi_epi64(bytes, bytes)));
-  const std::uint64_t out0 = (old0 & keep) | (new0 & ~keep), out1 = (old1 & keep) | (new1 & ~keep);
-  std::memcpy(p0, &out0, 8);
-  std::memcpy(p1, &out1, 8);
-}
-#if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC diagnostic pop
-#endif
+// The blend state for 8-bit buffers, resolved once per batch.
+struct Unorm8Blend {
+  bool blend = false;
+  Term src[4], dst[4];  // per channel (r, g, b from the colour state, a from the alpha state)
+  Enum eq[4] = {FUNC_ADD, FUNC_ADD, FUNC_ADD, FUNC_ADD};
+  int constant[4] = {0, 0, 0, 0};  // the constant colour in 8 bits
+  std::uint32_t keep = 0;          // bytes of the stored pixel the colour mask keeps
 
-#endif
+  Unorm8Blend(const FragmentOpsState& state, bool rgb_only) {
+    for (int c = 0; c < 4; ++c)
+      if (!state.color_mask[c] || (c == 3 && rgb_only)) keep |= 0xFFu << (8 * c);
+    blend = state.blend.enabled;
+    const BlendState& b = state.blend;
+    for (int c = 0; c < 4; ++c) {
+      const bool a = c == 3;
+      src[c] = TermOf(a ? b.src_alpha : b.src_rgb, a);
+      dst[c] = TermOf(a ? b.dst_alpha : b.dst_rgb, a);
+      eq[c] = a ? b.eq_alpha : b.eq_rgb;
+      constant[c] = FloatToUnorm8(b.color[c]);
+    }
+  }
+};
+
+// (x + 127) / 255 for x in [0, 65025]: x / 255 rounded to the nearest integer (never a tie: 255 is odd).
+inline int Div255Round(int x) { return ((x + 127) * 32897) >> 23; }
+
+// One channel of the equation on 8-bit operands.
+inline int Equation8(Enum eq, int s, int sf, int d, int df) {
+  int x;
+  switch (eq) {
+    case FUNC_SUBTRACT: x = s * sf - d * df; break;
+    case FUNC_REVERSE_SUBTRACT: x = d * df - s * sf; break;
+    case MIN: return std::min(s, d);
+    case MAX: return std::max(s, d);
+    default: x = s * sf + d * df; break;
+  }
+  return Div255Round(std::clamp(x, 0, 65025));
+}
+
+inline int Factor8(const Term& t, int c, const int s[4], const int d[4], const int k[4]) {
+  int v = 0;
+  switch (t.source) {
+    case kNothing: v = 0; break;
+    case kSrc: v = s[c]; break;
+    case kDst: v = d[c]; break;
+    case kSrcAlpha: v = s[3]; break;
+    case kDstAlpha: v = d[3]; break;
+    case kConst: v = k[c]; break;
+    case kConstAlpha: v = k[3]; break;
+    case kSaturate: return std::min(s[3], 255 - d[3]);
+  }
+  return t.k0 + t.k1 * v;
+}
+
+// The new bytes of one pixel (before the colour mask).
+void Blend8(const Unorm8Blend& b, const glm::vec4& color, const std::uint8_t dst[4], std::uint8_t out[4]) {
+  int s[4], d[4];
+  for (int c = 0; c < 4; ++c) {
+    s[c] = FloatToUnorm8(color[c]);
+    d[c] = dst[c];
+  }
+  for (int c = 0; c < 4; ++c) {
+    if (!b.blend) {
+      out[c] = std::uint8_t(s[c]);
+      continue;
+    }
+    const int sf = Factor8(b.src[c], c, s, d, b.constant), df = Factor8(b.dst[c], c, s, d, b.constant);
+    out[c] = std::uint8_t(Equation8(b.eq[c], s[c], sf, d[c], df));
+  }
+}
+
+// The same, W pixels at a time: `color` the fragments' channels, `pixels` the stored RGBA8 words; the result
+// words, the colour mask applied.
+template <int W>
+SOFTGL_WIDE typename V<W>::U Blend8Lanes(const Unorm8Blend& b, const typename V<W>::F color[4],
+                                    typename V<W>::U pixels) {
+  using F = typename V<W>::F;
+  using I = typename V<W>::I;
+  using U = typename V<W>::U;
+  I s[4], d[4];
+  for (int c = 0; c < 4; ++c) {
+    // FloatToUnorm8: NaN and below 0 give 0, 1 and above 255, the rest round(f * 255) to nearest even (adding and
+    // subtracting 1.5 * 2^23 rounds, as lrint does, in the default rounding mode).
+    F x = color[c] > 0.0f ? color[c] : F{} + 0.0f;
+    x = x < 1.0f ? x : F{} + 1.0f;
+    x = (x * 255.0f + 12582912.0f) - 12582912.0f;
+    s[c] = __builtin_convertvector(x, I);
+    d[c] = I((pixels >> (8 * c)) & 0xFFu);
+  }
+  U out = U{};
+  if (!b.blend) {
+    for (int c = 0; c < 4; ++c) out |= U(s[c]) << (8 * c);
+  } else {
+    auto factor = [&](const Term& t, int c) -> I {
+      I v;
+      switch (t.source) {
+        case kNothing: return I{} + t.k0;
+        case kSrc: v = s[c]; break;
+        case kDst: v = d[c]; break;
+        case kSrcAlpha: v = s[3]; break;
+        case kDstAlpha: v = d[3]; break;
+        case kConst: v = I{} + b.constant[c]; break;
+        case kConstAlpha: v = I{} + b.constant[3]; break;
+        default: {  // kSaturate
+          const I one_minus = 255 - d[3];
+          return s[3] < one_minus ? s[3] : one_minus;
+        }
+      }
+      return t.k1 == 1 ? t.k0 + v : (t.k1 == -1 ? t.k0 - v : I{} + t.k0);
+    };
+    for (int c = 0; c < 4; ++c) {
+      I r;
+      switch (b.eq[c]) {
+        case MIN: r = s[c] < d[c] ? s[c] : d[c]; break;
+        case MAX: r = s[c] > d[c] ? s[c] : d[c]; break;
+        default: {
+          const I ss = s[c] * factor(b.src[c], c), dd = d[c] * factor(b.dst[c], c);
+          I x = b.eq[c] == FUNC_SUBTRACT ? ss - dd : (b.eq[c] == FUNC_REVERSE_SUBTRACT ? dd - ss : ss + dd);
+          x = x < 0 ? I{} : x;
+          x = x > 65025 ? I{} + 65025 : x;
+          r = ((x + 127) * 32897) >> 23;
+          break;
+        }
+      }
+      out |= U(r) << (8 * c);
+    }
+  }
+  return (pixels & b.keep) | (out & ~b.keep);
+}
 
 }  // namespace
+
+void BlendUnorm8(const BlendState& state, const glm::vec4& src, const std::uint8_t dst[4], std::uint8_t out[4]) {
+  FragmentOpsState s;
+  s.blend = state;
+  Blend8(Unorm8Blend(s, false), src, dst, out);
+}
 
 bool EarlyDepthTestApplies(const FragmentOpsState& state, bool shader_writes_depth) {
   const Enum f = state.depth_func;
@@ -306,143 +264,285 @@ bool EarlyDepthTestApplies(const FragmentOpsState& state, bool shader_writes_dep
          (f == LESS || f == LEQUAL || f == GREATER || f == GEQUAL);
 }
 
+// ---- Whole blocks ----------------------------------------------------------------------------------------------
+
 namespace {
 
-// The early test for one comparison, chosen once per batch rather than per lane.
-template <class Passes>
-int EarlyDepthLoop(QuadBuffer& quads, const RenderTarget& target, Passes passes) {
-  int live = 0;
-  for (int q = 0; q < quads.count; ++q) {
-    for (int lane = 0; lane < 4; ++lane) {
-      const int l = q * 4 + lane;
-      if (!quads.live[l]) continue;  // a live lane lies inside the target; the others may not
-      const float depth = quads.frag_coord[l].z;
-      const float stored = target.Depth(quads.qx[q] + (lane & 1), quads.qy[q] + (lane >> 1));
-      // As the late test: depth clamped to [0, 1], NaN fails.
-      if (std::isnan(depth) || !passes(std::clamp(depth, 0.0f, 1.0f), stored)) quads.live[l] = 0;
-      live += quads.live[l];
+// Whether a block lies inside the target, so that whole rows of it can be read and written.
+bool Inside(const RenderTarget& t, int bx, int by) { return bx + 4 <= t.width && by + 4 <= t.height; }
+
+// Lanes of `bits` as a W-lane mask, for the lanes l0 .. l0 + W - 1.
+template <int W>
+SOFTGL_WIDE typename V<W>::I LaneMask(std::uint32_t bits, int l0) {
+  typename V<W>::I m;
+  for (int l = 0; l < W; ++l) m[l] = -std::int32_t((bits >> (l0 + l)) & 1u);
+  return m;
+}
+template <int W>
+SOFTGL_WIDE std::uint32_t MaskBits(typename V<W>::I m, int l0) {
+  std::uint32_t bits = 0;
+  for (int l = 0; l < W; ++l) bits |= std::uint32_t(m[l] != 0) << (l0 + l);
+  return bits;
+}
+
+// Rows of a block: the W / 4 rows of lanes l0 .. l0 + W - 1, each 4 values of `bytes` bytes, from or to `base` with
+// `pitch` values between rows.
+template <class T, int W, class Vec>
+SOFTGL_WIDE Vec LoadRows(const T* base, std::size_t pitch, int l0) {
+  T lanes[W];
+  for (int r = 0; r < W / 4; ++r) std::memcpy(lanes + 4 * r, base + std::size_t(l0 / 4 + r) * pitch, 4 * sizeof(T));
+  return LoadVec<Vec>(lanes);
+}
+template <class T, int W, class Vec>
+SOFTGL_WIDE void StoreRows(T* base, std::size_t pitch, int l0, const Vec& v) {
+  T lanes[W];
+  StoreVec(lanes, v);
+  for (int r = 0; r < W / 4; ++r) std::memcpy(base + std::size_t(l0 / 4 + r) * pitch, lanes + 4 * r, 4 * sizeof(T));
+}
+
+// StencilUpdate for W lanes, where `where` holds.
+template <int W>
+SOFTGL_WIDE typename V<W>::I StencilOpLanes(const StencilFace& face, Enum op, typename V<W>::I s, typename V<W>::I where) {
+  using I = typename V<W>::I;
+  I v;
+  switch (op) {
+    case KEEP: return s;
+    case ZERO: v = I{}; break;
+    case REPLACE: v = I{} + std::clamp(face.ref, 0, 255); break;
+    case INCR: v = s < 255 ? s + 1 : s; break;
+    case DECR: v = s > 0 ? s - 1 : s; break;
+    case INVERT: v = ~s & 0xFF; break;
+    case INCR_WRAP: v = (s + 1) & 0xFF; break;
+    case DECR_WRAP: v = (s - 1) & 0xFF; break;
+    default: return s;
+  }
+  const std::int32_t wm = std::int32_t(face.write_mask & 0xFFu);
+  v = (s & ~wm) | (v & wm);
+  return where ? v : s;
+}
+
+// What a batch's blocks share.
+struct BlockOpsContext {
+  const FragmentOpsState* state;
+  const BlockBuffer* blocks;
+  const RenderTarget* target;
+  const Unorm8Blend* blend;  // for color[0] when it is RGBA8
+  bool shader_depth;
+  bool stencil_test, depth_test, any_color;
+  const StencilFace* face;
+};
+
+// The per-fragment operations on block b (inside the target, colour buffer 0 RGBA8 or none, no other colour
+// buffer), W lanes at a time.
+template <int W>
+SOFTGL_WIDE void BlockOps(const BlockOpsContext& ctx, int b) {
+  using F = typename V<W>::F;
+  using I = typename V<W>::I;
+  using U = typename V<W>::U;
+  const BlockBuffer& bb = *ctx.blocks;
+  const RenderTarget& t = *ctx.target;
+  const FragmentOpsState& st = *ctx.state;
+  const int bx = bb.bx[b], by = bb.by[b];
+  for (int l0 = 0; l0 < kLanes; l0 += W) {
+    I go = LaneMask<W>(bb.live[b], l0);
+    bool any = false;
+    for (int l = 0; l < W; ++l) any = any || go[l];
+    if (!any) continue;
+    I sten{};
+    std::uint8_t* sp = nullptr;
+    if (ctx.stencil_test) {
+      sp = t.stencil + std::size_t(by) * std::size_t(t.width) + std::size_t(bx);
+      std::uint8_t raw[W];
+      for (int r = 0; r < W / 4; ++r) std::memcpy(raw + 4 * r, sp + std::size_t(l0 / 4 + r) * std::size_t(t.width), 4);
+      for (int l = 0; l < W; ++l) sten[l] = raw[l];
+      const StencilFace& f = *ctx.face;
+      const std::int32_t m = std::int32_t(f.value_mask & 0xFFu);
+      const I pass = Compare(f.func, I{} + (std::clamp(f.ref, 0, 255) & m), sten & m);
+      sten = StencilOpLanes<W>(f, f.sfail, sten, go & ~pass);
+      go &= pass;
+    }
+    if (ctx.depth_test) {
+      float* dp = t.depth + std::size_t(by) * std::size_t(t.depth_pitch) + std::size_t(bx);
+      const F z = ctx.shader_depth ? LoadVec<F>(&bb.depth[b][l0]) : LoadVec<F>(&bb.frag_coord[b][2][l0]);
+      F zc = z > 0.0f ? z : F{} + 0.0f;  // clamped to [0, 1]; NaN fails below
+      zc = zc < 1.0f ? zc : F{} + 1.0f;
+      const F stored = LoadRows<float, W, F>(dp, std::size_t(t.depth_pitch), l0);
+      const I pass = Compare(st.depth_func, zc, stored) & (z == z);
+      if (ctx.stencil_test) {
+        sten = StencilOpLanes<W>(*ctx.face, ctx.face->dpfail, sten, go & ~pass);
+        sten = StencilOpLanes<W>(*ctx.face, ctx.face->dppass, sten, go & pass);
+      }
+      go &= pass;
+      if (st.depth_write) StoreRows<float, W, F>(dp, std::size_t(t.depth_pitch), l0, go ? zc : stored);
+    } else if (ctx.stencil_test) {
+      sten = StencilOpLanes<W>(*ctx.face, ctx.face->dppass, sten, go);
+    }
+    if (ctx.stencil_test) {
+      std::uint8_t raw[W];
+      for (int l = 0; l < W; ++l) raw[l] = std::uint8_t(sten[l]);
+      for (int r = 0; r < W / 4; ++r) std::memcpy(sp + std::size_t(l0 / 4 + r) * std::size_t(t.width), raw + 4 * r, 4);
+    }
+    if (!ctx.any_color || !t.color[0].Present()) continue;
+    const ColorBuffer& cb = t.color[0];
+    auto* cp = reinterpret_cast<std::uint32_t*>(cb.At(bx, by));
+    const U pixels = LoadRows<std::uint32_t, W, U>(cp, std::size_t(cb.pitch), l0);
+    F color[4];
+    for (int c = 0; c < 4; ++c) color[c] = LoadVec<F>(&bb.color[b][0][c][l0]);
+    const U result = Blend8Lanes<W>(*ctx.blend, color, pixels);
+    StoreRows<std::uint32_t, W, U>(cp, std::size_t(cb.pitch), l0, go ? result : pixels);
+  }
+}
+
+// The same for any block, lane by lane.
+void LaneOps(const BlockOpsContext& ctx, const Unorm8Blend* per_buffer, int b) {
+  const BlockBuffer& bb = *ctx.blocks;
+  const RenderTarget& t = *ctx.target;
+  const FragmentOpsState& st = *ctx.state;
+  const StencilFace& face = *ctx.face;
+  for (int lane = 0; lane < kLanes; ++lane) {
+    if (!((bb.live[b] >> lane) & 1u)) continue;
+    const int x = bb.bx[b] + (lane & 3), y = bb.by[b] + (lane >> 2);
+    if (x >= t.width || y >= t.height) continue;  // (live lanes lie inside; this only guards the arithmetic)
+    if (ctx.stencil_test && !StencilTest(face, t.Stencil(x, y))) {
+      t.Stencil(x, y) = StencilUpdate(face, face.sfail, t.Stencil(x, y));
+      continue;
+    }
+    if (ctx.depth_test) {
+      const float depth = ctx.shader_depth ? bb.depth[b][lane] : bb.frag_coord[b][2][lane];
+      // Depth is clamped to [0, 1] before the test (the depth buffer holds [0, 1]); NaN fails.
+      const float z = std::clamp(depth, 0.0f, 1.0f);
+      if (std::isnan(depth) || !DepthTest(st.depth_func, z, t.Depth(x, y))) {
+        if (ctx.stencil_test) t.Stencil(x, y) = StencilUpdate(face, face.dpfail, t.Stencil(x, y));
+        continue;
+      }
+      if (st.depth_write) t.Depth(x, y) = z;
+    }
+    if (ctx.stencil_test) t.Stencil(x, y) = StencilUpdate(face, face.dppass, t.Stencil(x, y));
+    if (!ctx.any_color) continue;
+    for (int o = 0; o < kMaxColorOutputs; ++o) {
+      const ColorBuffer& cb = t.color[o];
+      if (!cb.Present()) continue;
+      glm::vec4 color(bb.color[b][o][0][lane], bb.color[b][o][1][lane], bb.color[b][o][2][lane],
+                      bb.color[b][o][3][lane]);
+      if (cb.Normalized()) {
+        // 8-bit channels: the exact integer blend on the pixel's bytes (channels the format lacks read 0 or 1).
+        std::uint8_t* p = cb.At(x, y);
+        const int n = cb.Bytes();
+        std::uint8_t d[4] = {0, 0, 0, 255}, out[4];
+        for (int c = 0; c < n; ++c) d[c] = p[c];
+        if (cb.rgb_only) d[3] = 255;
+        Blend8(per_buffer[o], color, d, out);
+        const int channels = cb.layout == TexelLayout::kUnorm8x4 ? (cb.rgb_only ? 3 : 4) : n;
+        for (int c = 0; c < channels; ++c)
+          if (!((per_buffer[o].keep >> (8 * c)) & 0xFFu)) p[c] = out[c];
+        continue;
+      }
+      for (int c = 0; c < 4; ++c)
+        if (std::isnan(color[c])) color[c] = 0.0f;
+      if (st.blend.enabled) color = Blend(st.blend, color, cb.Load(x, y));
+      cb.Store(x, y, color, st.color_mask);
     }
   }
-  return live;
+}
+
+using BlockOpsFn = void (*)(const BlockOpsContext&, int);
+void BlockOpsBase(const BlockOpsContext& ctx, int b) { BlockOps<4>(ctx, b); }
+#if defined(SOFTGL_HAS_DISPATCH)
+SOFTGL_TARGET_AVX2 void BlockOpsAvx2(const BlockOpsContext& ctx, int b) { BlockOps<8>(ctx, b); }
+SOFTGL_TARGET_AVX512 void BlockOpsAvx512(const BlockOpsContext& ctx, int b) { BlockOps<16>(ctx, b); }
+#endif
+BlockOpsFn ChooseBlockOps() {
+#if defined(SOFTGL_HAS_DISPATCH)
+  if (CpuSimdLevel() == SimdLevel::kAvx512) return BlockOpsAvx512;
+  if (CpuSimdLevel() == SimdLevel::kAvx2) return BlockOpsAvx2;
+#endif
+  return BlockOpsBase;
+}
+
+// The early test on block b, W lanes at a time; returns its live lanes.
+template <int W>
+SOFTGL_WIDE std::uint32_t EarlyBlock(Enum func, BlockBuffer& bb, const RenderTarget& t, int b) {
+  using F = typename V<W>::F;
+  using I = typename V<W>::I;
+  const float* dp = t.depth + std::size_t(bb.by[b]) * std::size_t(t.depth_pitch) + std::size_t(bb.bx[b]);
+  std::uint32_t keep = 0;
+  for (int l0 = 0; l0 < kLanes; l0 += W) {
+    const F z = LoadVec<F>(&bb.frag_coord[b][2][l0]);
+    F zc = z > 0.0f ? z : F{} + 0.0f;
+    zc = zc < 1.0f ? zc : F{} + 1.0f;
+    const F stored = LoadRows<float, W, F>(dp, std::size_t(t.depth_pitch), l0);
+    const I pass = Compare(func, zc, stored) & (z == z);
+    keep |= MaskBits<W>(pass, l0);
+  }
+  return bb.live[b] &= keep;
+}
+using EarlyBlockFn = std::uint32_t (*)(Enum, BlockBuffer&, const RenderTarget&, int);
+std::uint32_t EarlyBlockBase(Enum f, BlockBuffer& bb, const RenderTarget& t, int b) { return EarlyBlock<4>(f, bb, t, b); }
+#if defined(SOFTGL_HAS_DISPATCH)
+SOFTGL_TARGET_AVX2 std::uint32_t EarlyBlockAvx2(Enum f, BlockBuffer& bb, const RenderTarget& t, int b) {
+  return EarlyBlock<8>(f, bb, t, b);
+}
+SOFTGL_TARGET_AVX512 std::uint32_t EarlyBlockAvx512(Enum f, BlockBuffer& bb, const RenderTarget& t, int b) {
+  return EarlyBlock<16>(f, bb, t, b);
+}
+#endif
+EarlyBlockFn ChooseEarlyBlock() {
+#if defined(SOFTGL_HAS_DISPATCH)
+  if (CpuSimdLevel() == SimdLevel::kAvx512) return EarlyBlockAvx512;
+  if (CpuSimdLevel() == SimdLevel::kAvx2) return EarlyBlockAvx2;
+#endif
+  return EarlyBlockBase;
 }
 
 }  // namespace
 
-int EarlyDepthTest(const FragmentOpsState& state, QuadBuffer& quads, const RenderTarget& target) {
-  if (!target.depth) {
-    int live = 0;
-    for (int l = 0; l < quads.count * 4; ++l) live += quads.live[l];
-    return live;
+int EarlyDepthTest(const FragmentOpsState& state, BlockBuffer& blocks, const RenderTarget& target) {
+  int live = 0;
+  static const EarlyBlockFn early = ChooseEarlyBlock();
+  for (int b = 0; b < blocks.count; ++b) {
+    if (target.depth && blocks.live[b]) {
+      if (Inside(target, blocks.bx[b], blocks.by[b])) {
+        early(state.depth_func, blocks, target, b);
+      } else {
+        for (int lane = 0; lane < kLanes; ++lane) {
+          if (!((blocks.live[b] >> lane) & 1u)) continue;  // a live lane lies inside the target
+          const float depth = blocks.frag_coord[b][2][lane];
+          const float stored = target.Depth(blocks.bx[b] + (lane & 3), blocks.by[b] + (lane >> 2));
+          // As the late test: depth clamped to [0, 1], NaN fails.
+          if (std::isnan(depth) || !DepthTest(state.depth_func, std::clamp(depth, 0.0f, 1.0f), stored))
+            blocks.live[b] &= ~(1u << lane);
+        }
+      }
+    }
+    live += __builtin_popcount(blocks.live[b]);
   }
-  switch (state.depth_func) {
-    case LESS: return EarlyDepthLoop(quads, target, [](float z, float d) { return z < d; });
-    case LEQUAL: return EarlyDepthLoop(quads, target, [](float z, float d) { return z <= d; });
-    case GREATER: return EarlyDepthLoop(quads, target, [](float z, float d) { return z > d; });
-    case GEQUAL: return EarlyDepthLoop(quads, target, [](float z, float d) { return z >= d; });
-    default:
-      return EarlyDepthLoop(quads, target, [&](float z, float d) { return DepthTest(state.depth_func, z, d); });
-  }
+  return live;
 }
 
-void ApplyFragmentOps(const FragmentOpsState& state, const QuadBuffer& quads, const RenderTarget& target) {
-  const StencilFace& face = quads.front_facing ? state.front : state.back;
+void ApplyFragmentOps(const FragmentOpsState& state, const BlockBuffer& blocks, bool shader_depth,
+                      const RenderTarget& target) {
   // Without a depth or stencil buffer the test passes and nothing is written (OpenGL 4.6, 17.3.5 and 17.3.6).
-  const bool stencil_test = state.stencil_test && target.stencil != nullptr;
-  const bool depth_test = state.depth_test && target.depth != nullptr;
-  const bool any_color = state.color_mask[0] || state.color_mask[1] || state.color_mask[2] || state.color_mask[3];
-#if defined(__SSE2__)
-  const Unorm8Blender unorm8(state);
-#endif
-#if defined(__SSE2__)
-  // The common case, in a loop of its own: one 8-bit colour buffer, no stencil test.
-  const ColorBuffer& cb0 = target.color[0];
-  if (unorm8.usable && !stencil_test && any_color && cb0.rgba8 && !target.color[1].Present() &&
-      !target.color[2].Present() && !target.color[3].Present()) {
-    // Wider paths for the blenders without MIN or MAX: a row of two pixels (AVX2), a whole quad (AVX-512).
-    const int wide = unorm8.min_max ? 0 : int(CpuSimdLevel());
-    for (int q = 0; q < quads.count; ++q) {
-      // Depth first for the four lanes (four different pixels), then colour a row of two at a time.
-      unsigned pass = 0;
-      for (int lane = 0; lane < 4; ++lane) {
-        const int l = q * 4 + lane;
-        if (!quads.live[l]) continue;
-        if (depth_test) {
-          const int x = quads.qx[q] + (lane & 1), y = quads.qy[q] + (lane >> 1);
-          const float depth = quads.out[l].depth;
-          const float z = std::clamp(depth, 0.0f, 1.0f);
-          float& stored = target.Depth(x, y);
-          if (std::isnan(depth) || !DepthTest(state.depth_func, z, stored)) continue;
-          if (state.depth_write) stored = z;
-        }
-        pass |= 1u << lane;
-      }
-#if defined(SOFTGL_AVX2_DISPATCH)
-      if (wide == 2 && pass == 0xFu) {
-        Store4Avx512(unorm8, quads.out + q * 4, quads.out + q * 4 + 2,
-                     cb0.rgba8 + cb0.Index(quads.qx[q], quads.qy[q]) * 4,
-                     cb0.rgba8 + cb0.Index(quads.qx[q], quads.qy[q] + 1) * 4);
-        continue;
-      }
-#endif
-      for (int row = 0; row < 2; ++row) {
-        const unsigned bits = (pass >> (2 * row)) & 3u;
-        if (!bits) continue;
-        std::uint8_t* p = cb0.rgba8 + cb0.Index(quads.qx[q], quads.qy[q] + row) * 4;
-        const FragmentOut* out = quads.out + q * 4 + 2 * row;
-#if defined(SOFTGL_AVX2_DISPATCH)
-        if (wide >= 1 && bits == 3u) {
-          Store2Avx2(unorm8, out[0].color[0], out[1].color[0], p);
-          continue;
-        }
-#endif
-        if (bits & 1u) unorm8.Store(out[0].color[0], p);
-        if (bits & 2u) unorm8.Store(out[1].color[0], p + 4);
-      }
-    }
-    return;
-  }
-#endif
-  for (int q = 0; q < quads.count; ++q) {
-    for (int lane = 0; lane < 4; ++lane) {
-      const int l = q * 4 + lane;
-      if (!quads.live[l]) continue;
-      const int x = quads.qx[q] + (lane & 1), y = quads.qy[q] + (lane >> 1);
-      const FragmentOut& out = quads.out[l];
-
-      if (stencil_test && !StencilTest(face, target.Stencil(x, y))) {
-        target.Stencil(x, y) = StencilUpdate(face, face.sfail, target.Stencil(x, y));
-        continue;
-      }
-      if (depth_test) {
-        // Depth is clamped to [0, 1] before the test (the depth buffer holds [0, 1]); NaN fails.
-        const float z = std::clamp(out.depth, 0.0f, 1.0f);
-        if (std::isnan(out.depth) || !DepthTest(state.depth_func, z, target.Depth(x, y))) {
-          if (stencil_test) target.Stencil(x, y) = StencilUpdate(face, face.dpfail, target.Stencil(x, y));
-          continue;
-        }
-        if (state.depth_write) target.Depth(x, y) = z;
-      }
-      if (stencil_test) target.Stencil(x, y) = StencilUpdate(face, face.dppass, target.Stencil(x, y));
-      if (!any_color) continue;
-
-      for (int o = 0; o < kMaxColorOutputs; ++o) {
-        const ColorBuffer& cb = target.color[o];
-        if (!cb.Present()) continue;
-#if defined(__SSE2__)
-        if (cb.rgba8 && unorm8.usable) {
-          unorm8.Store(out.color[o], cb.rgba8 + cb.Index(x, y) * 4);
-          continue;
-        }
-#endif
-        glm::vec4 color = out.color[o];
-        for (int c = 0; c < 4; ++c)
-          if (std::isnan(color[c])) color[c] = 0.0f;
-        // Fixed-point buffers take colours clamped to [0, 1], before blending.
-        if (cb.normalized) color = glm::clamp(color, 0.0f, 1.0f);
-        if (state.blend.enabled) color = Blend(state.blend, color, cb.Load(x, y));
-        cb.Store(x, y, color, state.color_mask);
-      }
-    }
+  BlockOpsContext ctx;
+  ctx.state = &state;
+  ctx.blocks = &blocks;
+  ctx.target = &target;
+  ctx.shader_depth = shader_depth;
+  ctx.stencil_test = state.stencil_test && target.stencil != nullptr;
+  ctx.depth_test = state.depth_test && target.depth != nullptr;
+  ctx.any_color = state.color_mask[0] || state.color_mask[1] || state.color_mask[2] || state.color_mask[3];
+  ctx.face = blocks.front_facing ? &state.front : &state.back;
+  const Unorm8Blend per_buffer[kMaxColorOutputs] = {
+      Unorm8Blend(state, target.color[0].rgb_only), Unorm8Blend(state, target.color[1].rgb_only),
+      Unorm8Blend(state, target.color[2].rgb_only), Unorm8Blend(state, target.color[3].rgb_only)};
+  ctx.blend = &per_buffer[0];
+  // The wide path: colour buffer 0 RGBA8 (or none) and no other.
+  const bool wide_target = (!target.color[0].Present() || target.color[0].Rgba8()) && !target.color[1].Present() &&
+                           !target.color[2].Present() && !target.color[3].Present();
+  static const BlockOpsFn block_ops = ChooseBlockOps();
+  for (int b = 0; b < blocks.count; ++b) {
+    if (!blocks.live[b]) continue;
+    if (wide_target && Inside(target, blocks.bx[b], blocks.by[b])) block_ops(ctx, b);
+    else LaneOps(ctx, per_buffer, b);
   }
 }
 

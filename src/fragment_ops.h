@@ -1,6 +1,13 @@
 // fragment_ops.h — stage 9: the per-fragment operations after the fragment shader, in OpenGL's order:
 // (scissor, done by the rasterizer's bounds) -> stencil test -> depth test -> stencil update -> blending ->
 // colour mask -> framebuffer. Arithmetic follows the OpenGL 4.6 specification, chapter 17.
+//
+// They run on whole 4x4 blocks: a block inside a target with one RGBA8 colour buffer (the common case) takes the
+// wide path, 4, 8 or 16 lanes per instruction; any other block goes lane by lane with the same arithmetic.
+// Blending into 8-bit buffers is exact integer arithmetic on the 8-bit operands: the fragment colour is converted
+// to the buffer's format first (clamped to [0, 1], round(c * 255)), like the destination, the constant colour and
+// the factors; the equation's value, (s * sf + d * df) / 255 with all terms in 0..255, is rounded to the nearest
+// byte. Float buffers blend in float.
 #pragma once
 
 #include <cstdint>
@@ -41,18 +48,19 @@ struct FragmentOpsState {
 };
 
 /// Whether `a` passes comparison `func` against `b` (a func b): the depth test compares incoming to stored, the
-/// stencil test the masked reference to the masked stored value.
+/// stencil test the masked reference to the masked stored value. For vectors (src/wide.h), a lane mask.
 template <class T>
-bool Compare(Enum func, T a, T b) {
+auto Compare(Enum func, T a, T b) {
+  using Result = decltype(a < b);
   switch (func) {
-    case NEVER: return false;
+    case NEVER: return Result{};
     case LESS: return a < b;
     case EQUAL: return a == b;
     case LEQUAL: return a <= b;
     case GREATER: return a > b;
     case NOTEQUAL: return a != b;
     case GEQUAL: return a >= b;
-    default: return true;  // ALWAYS
+    default: return Result(!Result{});  // ALWAYS
   }
 }
 
@@ -66,9 +74,12 @@ bool StencilTest(const StencilFace& face, std::uint8_t stored);
 /// `stored`, written through the face's write mask.
 std::uint8_t StencilUpdate(const StencilFace& face, Enum op, std::uint8_t stored);
 
-/// Blends source colour `src` (already clamped to [0, 1]) over destination `dst` (in [0, 1]): OpenGL's factors
-/// and equations, computed in float.
+/// Blends source colour `src` over destination `dst` in float: OpenGL's factors and equations (float buffers).
 glm::vec4 Blend(const BlendState& state, const glm::vec4& src, const glm::vec4& dst);
+
+/// Blends into an 8-bit RGBA pixel: `src` is the fragment colour (converted to 8 bits here, NaN as 0), `dst` the
+/// stored bytes; returns the new bytes (before the colour mask). The exact integer arithmetic described above.
+void BlendUnorm8(const BlendState& state, const glm::vec4& src, const std::uint8_t dst[4], std::uint8_t out[4]);
 
 /// Whether the depth test may run before the fragment shader without changing the result: the shader does not
 /// write depth, the stencil test is off (its depth-fail operation would be skipped), and the depth function is
@@ -76,13 +87,15 @@ glm::vec4 Blend(const BlendState& state, const glm::vec4& src, const glm::vec4& 
 /// later content of it too, the buffer only moving towards the test's winning side.
 bool EarlyDepthTestApplies(const FragmentOpsState& state, bool shader_writes_depth);
 
-/// The early depth test: clears the live flag of every lane whose interpolated depth (frag_coord.z, clamped as
-/// the late test clamps it) fails against the depth buffer. Writes nothing; the late test runs as usual after the
-/// shader. Returns the number of lanes still live.
-int EarlyDepthTest(const FragmentOpsState& state, QuadBuffer& quads, const RenderTarget& target);
+/// The early depth test: clears the live bit of every lane whose interpolated depth (frag_coord.z, clamped as the
+/// late test clamps it) fails against the depth buffer. Writes nothing; the late test runs as usual after the
+/// shader. Returns the number of live lanes left.
+int EarlyDepthTest(const FragmentOpsState& state, BlockBuffer& blocks, const RenderTarget& target);
 
-/// Runs the per-fragment operations for every live lane of `quads` (after the fragment shader has filled
-/// quads.out and cleared discarded lanes) into the buffers of `target`.
-void ApplyFragmentOps(const FragmentOpsState& state, const QuadBuffer& quads, const RenderTarget& target);
+/// Runs the per-fragment operations for every live lane of `blocks` (after the fragment shader has written its
+/// colours, and its depth when `shader_depth`, and cleared discarded lanes) into the buffers of `target`.
+/// `outputs`: how many of the shader's colour outputs the target uses.
+void ApplyFragmentOps(const FragmentOpsState& state, const BlockBuffer& blocks, bool shader_depth,
+                      const RenderTarget& target);
 
 }  // namespace softgl::detail

@@ -15,43 +15,48 @@ std::uint8_t FloatToUnorm8(float f) {
 }
 
 glm::vec4 ColorBuffer::Load(int x, int y) const {
-  const std::size_t i = Index(x, y);
-  if (rgba8) {
-    const std::uint8_t* p = rgba8 + i * 4;
-    return glm::vec4(p[0], p[1], p[2], p[3]) / 255.0f;
-  }
-  const float* p = texels + i * 4;
-  return glm::vec4(p[0], p[1], p[2], p[3]);
+  glm::vec4 raw = RawTexel(layout, At(x, y));
+  if (rgb_only) raw.a = 255.0f;
+  return raw / StorageScale(layout);
 }
 
 void ColorBuffer::Store(int x, int y, const glm::vec4& c, const bool mask[4]) const {
-  const std::size_t i = Index(x, y);
-  if (rgba8) {
-    std::uint8_t* p = rgba8 + i * 4;
-    for (int k = 0; k < 4; ++k)
-      if (mask[k]) p[k] = FloatToUnorm8(c[k]);
-    return;
+  std::uint8_t* p = At(x, y);
+  switch (layout) {
+    case TexelLayout::kUnorm8x4:
+    case TexelLayout::kUnorm8x2:
+    case TexelLayout::kUnorm8x1: {
+      const int n = layout == TexelLayout::kUnorm8x4 ? (rgb_only ? 3 : 4) : layout == TexelLayout::kUnorm8x2 ? 2 : 1;
+      for (int k = 0; k < n; ++k)
+        if (mask[k]) p[k] = FloatToUnorm8(c[k]);
+      return;
+    }
+    case TexelLayout::kFloat32x4:
+      for (int k = 0; k < 4; ++k)
+        if (mask[k]) std::memcpy(p + 4 * k, &c[k], 4);
+      return;
+    case TexelLayout::kFloat32x1:
+      if (mask[0]) std::memcpy(p, &c[0], 4);
+      return;
+    default: return;
   }
-  float* p = texels + i * 4;
-  for (int k = 0; k < components; ++k)
-    if (mask[k]) p[k] = normalized ? float(FloatToUnorm8(c[k])) / 255.0f : c[k];
 }
 
 void RenderTarget::ClearColor(const Rect& r, const glm::vec4& value, const bool mask[4]) const {
   for (const ColorBuffer& cb : color) {
     if (!cb.Present() || r.Empty()) continue;
-    if (cb.rgba8) {
+    if (cb.layout == TexelLayout::kUnorm8x4) {
       // The pixel is converted once, then stored row by row as 32-bit words through the mask.
       std::uint8_t px[4], keep_bytes[4];
       for (int k = 0; k < 4; ++k) {
         px[k] = FloatToUnorm8(value[k]);
-        keep_bytes[k] = mask[k] ? 0x00 : 0xFF;
+        keep_bytes[k] = mask[k] && !(k == 3 && cb.rgb_only) ? 0x00 : 0xFF;
       }
       std::uint32_t word, keep;
       std::memcpy(&word, px, 4);
       std::memcpy(&keep, keep_bytes, 4);
       for (int y = r.y0; y < r.y1; ++y) {
-        std::uint8_t* row = cb.rgba8 + cb.Index(r.x0, y) * 4;
+        std::uint8_t* row = cb.At(r.x0, y);
         for (int x = 0; x < r.x1 - r.x0; ++x) {
           std::uint32_t old = 0;
           if (keep) std::memcpy(&old, row + 4 * x, 4);
@@ -107,7 +112,8 @@ RenderTarget Framebuffer::Target() {
   t.width = width;
   t.height = height;
   if (width > 0 && height > 0) {
-    t.color[0].rgba8 = color.data();
+    t.color[0].data = color.data();
+    t.color[0].layout = TexelLayout::kUnorm8x4;
     t.color[0].pitch = width;
     t.depth = depth.data();
     t.depth_pitch = width;

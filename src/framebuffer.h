@@ -8,22 +8,28 @@
 
 #include <softgl/shader.h>
 
+#include "texture.h"
 #include "types.h"
 
 namespace softgl::detail {
 
-/// One colour buffer: 8-bit RGBA bytes (the default framebuffer) or a texture level's RGBA floats.
+/// One colour buffer: the default framebuffer's RGBA8 bytes, or a texture level's texels in their own layout.
 struct ColorBuffer {
-  std::uint8_t* rgba8 = nullptr;
-  float* texels = nullptr;
-  bool normalized = true;  // fixed-point format: values clamped to [0, 1] and rounded to 8 bits
-  int components = 4;      // channels of the format (R8: 1); the others are never written
-  int pitch = 0;           // pixels from one row to the next
-  bool Present() const { return rgba8 != nullptr || texels != nullptr; }
+  std::uint8_t* data = nullptr;
+  TexelLayout layout = TexelLayout::kNone;
+  bool rgb_only = false;  // RGB8: alpha is not stored (reads 1)
+  int pitch = 0;          // texels from one row to the next
+  bool Present() const { return data != nullptr; }
+  bool Rgba8() const { return layout == TexelLayout::kUnorm8x4 && !rgb_only; }
+  int Bytes() const { return BytesPerTexel(layout); }
   std::size_t Index(int x, int y) const { return std::size_t(y) * std::size_t(pitch) + std::size_t(x); }
+  std::uint8_t* At(int x, int y) const { return data + Index(x, y) * std::size_t(Bytes()); }
+  /// The pixel as RGBA floats (fixed point divided by 255; channels the format lacks read (0, 0, 0, 1)).
   glm::vec4 Load(int x, int y) const;
   /// Stores `c` through `mask` with the format's conversion (clamp and round for fixed point).
   void Store(int x, int y, const glm::vec4& c, const bool mask[4]) const;
+  /// Whether stored values are fixed point (clamped to [0, 1] before blending).
+  bool Normalized() const { return IsUnorm8(layout); }
 };
 
 /// The buffers drawing writes to; color[i] receives fragment output i (draw buffers already applied).
@@ -31,13 +37,10 @@ struct RenderTarget {
   int width = 0, height = 0;
   ColorBuffer color[kMaxColorOutputs];
   float* depth = nullptr;           // null: no depth buffer (the depth test then always passes)
-  int depth_stride = 1;             // floats from one depth value to the next (4 in a depth texture)
   int depth_pitch = 0;              // depth values from one row to the next
   std::uint8_t* stencil = nullptr;  // null: no stencil buffer (the stencil test then always passes); pitch = width
   Rect Bounds() const { return Rect{0, 0, width, height}; }
-  float& Depth(int x, int y) const {
-    return depth[(std::size_t(y) * std::size_t(depth_pitch) + std::size_t(x)) * std::size_t(depth_stride)];
-  }
+  float& Depth(int x, int y) const { return depth[std::size_t(y) * std::size_t(depth_pitch) + std::size_t(x)]; }
   std::uint8_t& Stencil(int x, int y) const { return stencil[std::size_t(y) * std::size_t(width) + std::size_t(x)]; }
 
   /// Clears rectangle r (inside the target) of every colour buffer through `mask`.

@@ -9,6 +9,7 @@
 #include "culling.h"
 #include "binner.h"
 #include "rasterizer.h"  // PolygonOffset
+#include "simd.h"
 
 namespace softgl::detail {
 
@@ -20,7 +21,8 @@ constexpr int kBinJob = 1024;  // primitives clipped and binned per job
 
 // Stage 1-2: fetch and shade every vertex the draw references, once each where indices repeat.
 void ShadeVertices(const DrawCall& call, const FetchPlan& fetch, const Program& program, const Textures* textures,
-                   const ViewportTransform& viewport, WorkerPool& pool, Scratch& s) {
+                   const Interpolation* interpolation, const ViewportTransform& viewport, WorkerPool& pool,
+                   Scratch& s) {
   const int count = call.count;
   auto& to_shade = s.shade_indices;
   auto& map = s.element_to_shaded;
@@ -57,6 +59,15 @@ void ShadeVertices(const DrawCall& call, const FetchPlan& fetch, const Program& 
   out.window_varyings.resize(std::size_t(n) * std::size_t(out.nvar));
   const ClipPlanes planes = GuardBandPlanes(viewport);
   if (s.vertex.size() < std::size_t(pool.Threads())) s.vertex.resize(std::size_t(pool.Threads()));
+  std::uint32_t enabled = 0;
+  for (int a = 0; a < kMaxVertexAttribs; ++a)
+    if (fetch.attrib[a].enabled) enabled |= 1u << a;
+  const int simd = int(CpuSimdLevel());
+  // Noperspective varyings are multiplied by the clip-space w here, so that clipping (linear in clip space) and
+  // the divide by w give each window vertex the varying's own value, which the rasterizer interpolates linearly.
+  bool noperspective = false;
+  for (int k = 0; interpolation && k < program.VaryingFloats(); ++k)
+    noperspective = noperspective || interpolation[k] == Interpolation::kNoPerspective;
   // Jobs of kVertexJob vertices, shaded in batches of kVertexBatch; every vertex is written by one job only.
   const int jobs = (n + kVertexJob - 1) / kVertexJob;
   pool.Run(jobs, [&](int job, int worker) {
@@ -72,6 +83,8 @@ void ShadeVertices(const DrawCall& call, const FetchPlan& fetch, const Program& 
       VertexBatch batch;
       batch.count = m;
       batch.attribs = vs.attribs.data();
+      batch.enabled = enabled;
+      batch.simd = simd;
       batch.vertex_ids = vs.vertex_ids.data();
       batch.positions = out.position.data() + base;
       batch.point_sizes = out.point_size.data() + base;
@@ -82,6 +95,11 @@ void ShadeVertices(const DrawCall& call, const FetchPlan& fetch, const Program& 
       // transform of ToWindow, done once per vertex rather than once per primitive using it).
       for (int i = base; i < base + m; ++i) {
         const glm::vec4& p = out.position[std::size_t(i)];
+        if (noperspective) {
+          float* v = out.varyings.data() + std::size_t(i) * out.nvar;
+          for (int k = 0; k < out.nvar; ++k)
+            if (interpolation[k] == Interpolation::kNoPerspective) v[k] *= p.w;
+        }
         out.clip_codes[std::size_t(i)] = ClipCodes(p, planes);
         if (out.clip_codes[std::size_t(i)] != 0) continue;
         const float oow = 1.0f / p.w;
@@ -104,22 +122,21 @@ void ToClipVertex(const ShadedVertices& sv, std::uint32_t i, ClipVertex& out) {
 class PrimitiveRunner {
  public:
   PrimitiveRunner(const DrawState& state, const ShadedVertices& sv, BinnedBatch& bins, const TileGrid& grid)
-      : state_(state), sv_(sv), bins_(bins), grid_(grid), planes_(GuardBandPlanes(state.viewport)) {}
-
-  void Point(std::uint32_t i) {
-    ToClipVertex(sv_, i, clip_[0]);
-    // A point is kept only when its centre lies inside the view volume itself (OpenGL 4.6, section 13.7.1).
-    if (ClipCodes(clip_[0].pos, ClipPlanes{}) != 0) return;
-    ToWindow(clip_[0], sv_.nvar, state_.viewport, win_[0]);
-    AddPoint(win_[0], PointSizeOf(i), true);
+      : state_(state), sv_(sv), bins_(bins), grid_(grid), planes_(GuardBandPlanes(state.viewport)) {
+    for (int k = 0; state.interpolation && k < sv.nvar; ++k)
+      if (state.interpolation[k] == Interpolation::kFlat) flat_[flat_count_++] = k;
   }
 
-  void Line(std::uint32_t i0, std::uint32_t i1, bool front_facing = true) {
+  void Point(std::uint32_t i) { Point(i, i, true); }
+
+  // A line between shaded vertices i0 and i1 whose flat varyings come from vertex `provoking`.
+  void Line(std::uint32_t i0, std::uint32_t i1, std::uint32_t provoking, bool front_facing = true) {
     ToClipVertex(sv_, i0, clip_[0]);
     ToClipVertex(sv_, i1, clip_[1]);
     if (!ClipLine(clip_[0], clip_[1], sv_.nvar, planes_, clip_[2], clip_[3])) return;
     ToWindow(clip_[2], sv_.nvar, state_.viewport, win_[0]);
     ToWindow(clip_[3], sv_.nvar, state_.viewport, win_[1]);
+    Flat(win_, 2, provoking);
     BinnedPrimitive p;
     p.kind = PrimitiveKind::kLine;
     p.front_facing = front_facing;
@@ -127,7 +144,7 @@ class PrimitiveRunner {
     bins_.Add(p, win_, LineBox(win_[0], win_[1], state_.bounds), grid_);
   }
 
-  void Triangle(std::uint32_t i0, std::uint32_t i1, std::uint32_t i2) {
+  void Triangle(std::uint32_t i0, std::uint32_t i1, std::uint32_t i2, std::uint32_t provoking) {
     int count = 3;
     const unsigned* codes = sv_.clip_codes.data();
     if ((codes[i0] | codes[i1] | codes[i2]) == 0) {
@@ -150,7 +167,8 @@ class PrimitiveRunner {
       for (int k = 0; k < count; ++k) ToWindow(poly_.v[k], sv_.nvar, state_.viewport, win_[k]);
       if (!Facing(count)) return;
     }
-    Emit(i0, i1, i2, count);
+    Flat(win_, count, provoking);
+    Emit(i0, i1, i2, provoking, count);
   }
 
  private:
@@ -162,8 +180,25 @@ class PrimitiveRunner {
     return !(state_.primitive.cull_enabled && IsCulled(front_, state_.primitive.cull_face));
   }
 
+  // Flat varyings: every vertex of the primitive takes the provoking vertex's value, as the vertex stage wrote it.
+  void Flat(WindowVertex* v, int count, std::uint32_t provoking) {
+    if (flat_count_ == 0) return;
+    const float* value = sv_.Varyings(int(provoking));
+    for (int k = 0; k < count; ++k)
+      for (int f = 0; f < flat_count_; ++f) v[k].var[flat_[f]] = value[flat_[f]];
+  }
+
+  void Point(std::uint32_t i, std::uint32_t provoking, bool front_facing) {
+    ToClipVertex(sv_, i, clip_[0]);
+    // A point is kept only when its centre lies inside the view volume itself (OpenGL 4.6, section 13.7.1).
+    if (ClipCodes(clip_[0].pos, ClipPlanes{}) != 0) return;
+    ToWindow(clip_[0], sv_.nvar, state_.viewport, win_[0]);
+    Flat(win_, 1, provoking);
+    AddPoint(win_[0], PointSizeOf(i), front_facing);
+  }
+
   // The surviving polygon win_[0 .. count) of triangle (i0, i1, i2), filled, as lines or as points.
-  void Emit(std::uint32_t i0, std::uint32_t i1, std::uint32_t i2, int count) {
+  void Emit(std::uint32_t i0, std::uint32_t i1, std::uint32_t i2, std::uint32_t provoking, int count) {
     const bool front = front_;
     const bool offset = state_.primitive.polygon_mode == LINE    ? state_.primitive.offset_line
                         : state_.primitive.polygon_mode == POINT ? state_.primitive.offset_point
@@ -172,17 +207,12 @@ class PrimitiveRunner {
         offset ? PolygonOffset(win_[0], win_[1], win_[2], state_.primitive.offset_factor, state_.primitive.offset_units) : 0.0f;
     switch (state_.primitive.polygon_mode) {
       case LINE:  // the triangle's own edges, each clipped as a line
-        Line(i0, i1, front);
-        Line(i1, i2, front);
-        Line(i2, i0, front);
+        Line(i0, i1, provoking, front);
+        Line(i1, i2, provoking, front);
+        Line(i2, i0, provoking, front);
         break;
       case POINT:
-        for (std::uint32_t i : {i0, i1, i2}) {
-          ToClipVertex(sv_, i, clip_[0]);
-          if (ClipCodes(clip_[0].pos, ClipPlanes{}) != 0) continue;
-          ToWindow(clip_[0], sv_.nvar, state_.viewport, win_[0]);
-          AddPoint(win_[0], PointSizeOf(i), front);
-        }
+        for (std::uint32_t i : {i0, i1, i2}) Point(i, provoking, front);
         break;
       default:
         for (int k = 1; k + 1 < count; ++k) {
@@ -228,6 +258,8 @@ class PrimitiveRunner {
   bool front_ = true;  // facing of the polygon in win_
   ClipVertex clip_[4];
   ClipPolygon poly_;
+  int flat_[kMaxVaryingFloats];  // the varyings that are flat
+  int flat_count_ = 0;
   WindowVertex win_[kMaxPolygonVertices];
   WindowVertex fan_[3];
 };
@@ -240,10 +272,10 @@ namespace {
 // in jobs of kBinJob primitives, each job into its own batch, the batches kept in primitive order.
 void RecordChunk(const DrawCall& call, const FetchPlan& fetch, const DrawState& state, DrawPacket& packet,
                  Frame& frame, WorkerPool& pool, Scratch& scratch) {
-  ShadeVertices(call, fetch, *state.program, state.textures, state.viewport, pool, scratch);
+  ShadeVertices(call, fetch, *state.program, state.textures, state.interpolation, state.viewport, pool, scratch);
 
   Primitives& prims = scratch.primitives;
-  AssemblePrimitives(call.mode, call.count, prims);
+  AssemblePrimitives(call.mode, call.count, prims, state.primitive.provoking_first);
   const int per = prims.vertices_per_primitive;
   if (per < 1 || per > 3) return;
   const std::size_t count = prims.indices.size() / std::size_t(per);
@@ -253,16 +285,19 @@ void RecordChunk(const DrawCall& call, const FetchPlan& fetch, const DrawState& 
   const auto& map = scratch.element_to_shaded;
   const auto& idx = prims.indices;
   const TileGrid& grid = frame.Grid();
+  const bool first = state.primitive.provoking_first;
   pool.Run(jobs, [&](int job, int) {
     BinnedBatch& bins = *packet.batches[first_batch + std::size_t(job)];
     auto runner = std::make_unique<PrimitiveRunner>(state, scratch.shaded, bins, grid);
     const std::size_t end = std::min(count, std::size_t(job + 1) * kBinJob);
     for (std::size_t p = std::size_t(job) * kBinJob; p < end; ++p) {
       const std::size_t i = p * std::size_t(per);
+      // The provoking vertex: the first of the primitive or its last (OpenGL 4.6, table 13.2; assembly put it there).
+      const std::size_t provoking = i + (first ? 0 : std::size_t(per - 1));
       switch (per) {
         case 1: runner->Point(map[idx[i]]); break;
-        case 2: runner->Line(map[idx[i]], map[idx[i + 1]]); break;
-        default: runner->Triangle(map[idx[i]], map[idx[i + 1]], map[idx[i + 2]]); break;
+        case 2: runner->Line(map[idx[i]], map[idx[i + 1]], map[idx[provoking]]); break;
+        default: runner->Triangle(map[idx[i]], map[idx[i + 1]], map[idx[i + 2]], map[idx[provoking]]); break;
       }
     }
     bins.Finish(grid);

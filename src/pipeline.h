@@ -38,6 +38,7 @@ struct PrimitiveState {
   float point_size = 1.0f;
   bool offset_fill = false, offset_line = false, offset_point = false;  // POLYGON_OFFSET_FILL / _LINE / _POINT
   float offset_factor = 0.0f, offset_units = 0.0f;
+  bool provoking_first = false;  // ProvokingVertex(FIRST_VERTEX_CONVENTION)
 };
 
 /// Everything the front end of a draw needs from the context's state, resolved at draw time.
@@ -47,6 +48,7 @@ struct DrawState {
   Rect bounds;  // viewport, framebuffer and (when enabled) scissor rectangle intersected
   PrimitiveState primitive;
   const Textures* textures = nullptr;  // what the vertex stage samples
+  const Interpolation* interpolation = nullptr;  // the program's varying qualifiers (null: all smooth)
 };
 
 /// The vertices a draw reads: either `count` consecutive vertices from `first`, or `count` element indices.

@@ -16,7 +16,7 @@ int VerticesPerPrimitive(Enum mode) {
   }
 }
 
-void AssemblePrimitives(Enum mode, int count, Primitives& out) {
+void AssemblePrimitives(Enum mode, int count, Primitives& out, bool first_vertex_convention) {
   out.vertices_per_primitive = VerticesPerPrimitive(mode);
   auto& idx = out.indices;
   idx.clear();
@@ -47,13 +47,17 @@ void AssemblePrimitives(Enum mode, int count, Primitives& out) {
       idx.reserve(3 * (n - 2));
       for (std::uint32_t i = 0; i + 2 < n; ++i) {
         if (i % 2 == 0) idx.insert(idx.end(), {i, i + 1, i + 2});
+        else if (first_vertex_convention) idx.insert(idx.end(), {i, i + 2, i + 1});  // (i + 1, i, i + 2) rotated
         else idx.insert(idx.end(), {i + 1, i, i + 2});
       }
       break;
     case TRIANGLE_FAN:
       if (n < 3) break;
       idx.reserve(3 * (n - 2));
-      for (std::uint32_t i = 1; i + 1 < n; ++i) idx.insert(idx.end(), {0u, i, i + 1});
+      for (std::uint32_t i = 1; i + 1 < n; ++i) {
+        if (first_vertex_convention) idx.insert(idx.end(), {i, i + 1, 0u});  // provoking vertex i, as table 13.2
+        else idx.insert(idx.end(), {0u, i, i + 1});
+      }
       break;
     default: break;
   }

@@ -17,8 +17,10 @@ struct Primitives {
 
 /// Assembles `count` vertices of `mode` following OpenGL's rules: incomplete trailing primitives are dropped;
 /// TRIANGLE_STRIP keeps every triangle's winding consistent with the first one (odd triangles swap their first two
-/// vertices); LINE_LOOP closes back to vertex 0.
-void AssemblePrimitives(Enum mode, int count, Primitives& out);
+/// vertices); LINE_LOOP closes back to vertex 0. Each primitive's provoking vertex (OpenGL 4.6, table 13.2) is its
+/// last for the last-vertex convention, its first when `first_vertex_convention` (strip and fan triangles are then
+/// rotated, which keeps their winding, to bring it first).
+void AssemblePrimitives(Enum mode, int count, Primitives& out, bool first_vertex_convention = false);
 
 /// 1, 2 or 3 for a valid mode, 0 otherwise.
 int VerticesPerPrimitive(Enum mode);

@@ -6,10 +6,12 @@
 #include <cstdint>
 #include <utility>
 
-#if defined(__SSE2__)
-#include <xmmintrin.h>
-#include <emmintrin.h>
-#endif
+#include <cstring>
+
+#include <softgl/lanes.h>
+
+#include "simd.h"
+#include "wide.h"
 
 namespace softgl::detail {
 
@@ -20,99 +22,104 @@ constexpr std::int64_t kHalf = kOne / 2;
 
 std::int64_t FloorDiv(std::int64_t a, std::int64_t b) { return a >= 0 ? a / b : -((-a + b - 1) / b); }
 
-// Makes room for one more quad: flushes a full buffer, or one holding quads of the other facing.
-void Reserve(QuadBuffer& quads, const QuadSink& sink, bool front_facing, int nvar) {
-  if (quads.count == QuadBuffer::kCapacity || (quads.count > 0 && quads.front_facing != front_facing))
-    sink.Flush(quads);
-  quads.front_facing = front_facing;
-  quads.nvar = nvar;
+// Makes room for one more block: flushes a full buffer, or one holding blocks of the other facing.
+int NewBlock(BlockBuffer& blocks, const BlockSink& sink, bool front_facing, int nvar, int bx, int by,
+             std::uint32_t mask) {
+  if (blocks.count == BlockBuffer::kCapacity || (blocks.count > 0 && blocks.front_facing != front_facing))
+    sink.Flush(blocks);
+  blocks.front_facing = front_facing;
+  blocks.nvar = nvar;
+  const int b = blocks.count++;
+  blocks.bx[b] = bx;
+  blocks.by[b] = by;
+  blocks.live[b] = mask;
+  return b;
 }
 
-// Appends the quad with origin (qx, qy) and coverage `mask` (bit = lane); `eval(lane, px, py, frag, var)` fills
-// every lane, helper lanes included, so that the fragment stage can take derivatives.
-template <class Eval>
-void EmitQuad(QuadBuffer& quads, const QuadSink& sink, bool front_facing, int nvar, int qx, int qy, unsigned mask,
-              Eval&& eval) {
-  Reserve(quads, sink, front_facing, nvar);
-  const int q = quads.count++;
-  quads.qx[q] = qx;
-  quads.qy[q] = qy;
-  for (int lane = 0; lane < 4; ++lane) {
-    const int l = q * 4 + lane;
-    quads.live[l] = (mask >> lane) & 1u;
-    eval(qx + (lane & 1), qy + (lane >> 1), quads.frag_coord[l], quads.varyings + std::size_t(l) * nvar);
-  }
-}
-
-unsigned BoundsMask(const Rect& bounds, int qx, int qy) {
-  unsigned mask = 0;
-  for (int lane = 0; lane < 4; ++lane) {
-    const int px = qx + (lane & 1), py = qy + (lane >> 1);
+// The lanes of the block at (bx, by) inside `bounds`.
+std::uint32_t BoundsMask(const Rect& bounds, int bx, int by) {
+  std::uint32_t mask = 0;
+  for (int lane = 0; lane < kLanes; ++lane) {
+    const int px = bx + (lane & 3), py = by + (lane >> 2);
     if (px >= bounds.x0 && px < bounds.x1 && py >= bounds.y0 && py < bounds.y1) mask |= 1u << lane;
   }
   return mask;
 }
 
-// a + dx * x + dy * y: an attribute's plane in window space, relative to vertex 0.
-struct Plane {
-  float a0, dx, dy;
-  float At(float x, float y) const { return a0 + dx * x + dy * y; }
-};
-
-// gl_FragCoord and perspective-correct varyings for the four lanes of a quad, every lane (helpers included):
-// with r = pixel centre - vertex 0, q = 1/w = oow(r), varying = plane(r) / q. The four lanes are computed side
-// by side with the same operations in the same order as one lane at a time.
-struct QuadInterpolator {
-  float x0, y0;
-  Plane z, oow;
-  const Plane* var;
-  int nvar;
-
-  void Quad(int qx, int qy, glm::vec4* frag, float* out) const {
-#if defined(__SSE2__)
-    const __m128 fx = _mm_add_ps(_mm_setr_ps(float(qx), float(qx + 1), float(qx), float(qx + 1)), _mm_set1_ps(0.5f));
-    const __m128 fy = _mm_add_ps(_mm_setr_ps(float(qy), float(qy), float(qy + 1), float(qy + 1)), _mm_set1_ps(0.5f));
-    const __m128 rx = _mm_sub_ps(fx, _mm_set1_ps(x0)), ry = _mm_sub_ps(fy, _mm_set1_ps(y0));
-    auto at = [&](const Plane& p) {
-      return _mm_add_ps(_mm_add_ps(_mm_set1_ps(p.a0), _mm_mul_ps(_mm_set1_ps(p.dx), rx)),
-                        _mm_mul_ps(_mm_set1_ps(p.dy), ry));
-    };
-    const __m128 q = at(oow);
-    __m128 c0 = fx, c1 = fy, c2 = at(z), c3 = q;
-    _MM_TRANSPOSE4_PS(c0, c1, c2, c3);
-    _mm_storeu_ps(&frag[0].x, c0);
-    _mm_storeu_ps(&frag[1].x, c1);
-    _mm_storeu_ps(&frag[2].x, c2);
-    _mm_storeu_ps(&frag[3].x, c3);
-    if (nvar == 0) return;
-    const __m128 w = _mm_div_ps(_mm_set1_ps(1.0f), q);
-    int i = 0;
-    for (; i + 4 <= nvar; i += 4) {
-      __m128 v0 = _mm_mul_ps(at(var[i]), w), v1 = _mm_mul_ps(at(var[i + 1]), w);
-      __m128 v2 = _mm_mul_ps(at(var[i + 2]), w), v3 = _mm_mul_ps(at(var[i + 3]), w);
-      _MM_TRANSPOSE4_PS(v0, v1, v2, v3);  // now lane-major
-      _mm_storeu_ps(out + i, v0);
-      _mm_storeu_ps(out + nvar + i, v1);
-      _mm_storeu_ps(out + 2 * nvar + i, v2);
-      _mm_storeu_ps(out + 3 * nvar + i, v3);
-    }
-    for (; i < nvar; ++i) {
-      alignas(16) float lanes[4];
-      _mm_store_ps(lanes, _mm_mul_ps(at(var[i]), w));
-      for (int lane = 0; lane < 4; ++lane) out[lane * nvar + i] = lanes[lane];
-    }
-#else
-    for (int lane = 0; lane < 4; ++lane) {
-      const float fx = float(qx + (lane & 1)) + 0.5f, fy = float(qy + (lane >> 1)) + 0.5f;
-      const float rx = fx - x0, ry = fy - y0;
-      const float q = oow.At(rx, ry);
-      const float w = 1.0f / q;
-      frag[lane] = glm::vec4(fx, fy, z.At(rx, ry), q);
-      for (int i = 0; i < nvar; ++i) out[lane * nvar + i] = var[i].At(rx, ry) * w;
-    }
-#endif
+// Appends the block at (bx, by) with coverage `mask`; `eval(px, py, frag, var)` fills one lane (helper lanes
+// too): frag the 4 values of gl_FragCoord, var the nvar varyings, each at a stride of 16 floats.
+template <class Eval>
+int EmitBlock(BlockBuffer& blocks, const BlockSink& sink, bool front_facing, int nvar, int bx, int by,
+              std::uint32_t mask, Eval&& eval) {
+  const int b = NewBlock(blocks, sink, front_facing, nvar, bx, by, mask);
+  float* var = blocks.Varyings(b);
+  for (int lane = 0; lane < kLanes; ++lane) {
+    float frag[4], v[kMaxVaryingFloats];
+    eval(bx + (lane & 3), by + (lane >> 2), frag, v);
+    for (int c = 0; c < 4; ++c) blocks.frag_coord[b][c][lane] = frag[c];
+    for (int i = 0; i < nvar; ++i) var[i * kLanes + lane] = v[i];
   }
-};
+  return b;
+}
+
+// gl_FragCoord and the varyings of a triangle's block, every lane (helpers included): with r = pixel centre -
+// vertex 0, q = 1/w = oow(r); a smooth varying is plane(r) / q, a noperspective or flat one plane(r) itself. W lanes
+// at a time, each lane's operations those of one lane alone, in the same order.
+template <int W>
+SOFTGL_WIDE void InterpolateBlock(const TrianglePlanes& p, int bx, int by, float (*frag)[kLanes], float* var) {
+  using F = typename V<W>::F;
+  for (int l0 = 0; l0 < kLanes; l0 += W) {
+    F fx, fy;
+    for (int l = 0; l < W; ++l) {
+      fx[l] = float(bx + ((l0 + l) & 3));
+      fy[l] = float(by + ((l0 + l) >> 2));
+    }
+    fx = fx + 0.5f;
+    fy = fy + 0.5f;
+    const F rx = fx - p.x0, ry = fy - p.y0;
+    auto at = [&](const Plane& pl) { return (pl.a0 + pl.dx * rx) + pl.dy * ry; };
+    const F q = at(p.oow), z = at(p.z);
+    std::memcpy(&frag[0][l0], &fx, sizeof fx);
+    std::memcpy(&frag[1][l0], &fy, sizeof fy);
+    std::memcpy(&frag[2][l0], &z, sizeof z);
+    std::memcpy(&frag[3][l0], &q, sizeof q);
+    if (p.nvar == 0) continue;
+    const F w = 1.0f / q;
+    for (int i = 0; i < p.nvar; ++i) {
+      F v = at(p.var[i]);
+      if (p.perspective[i]) v = v * w;
+      std::memcpy(var + i * kLanes + l0, &v, sizeof v);
+    }
+  }
+}
+
+using InterpolateFn = void (*)(const TrianglePlanes&, int, int, float (*)[kLanes], float*);
+
+void InterpolateBase(const TrianglePlanes& p, int bx, int by, float (*frag)[kLanes], float* var) {
+  InterpolateBlock<4>(p, bx, by, frag, var);
+}
+#if defined(SOFTGL_HAS_DISPATCH)
+SOFTGL_TARGET_AVX2 void InterpolateAvx2(const TrianglePlanes& p, int bx, int by, float (*frag)[kLanes], float* var) {
+  InterpolateBlock<8>(p, bx, by, frag, var);
+}
+SOFTGL_TARGET_AVX512 void InterpolateAvx512(const TrianglePlanes& p, int bx, int by, float (*frag)[kLanes],
+                                            float* var) {
+  InterpolateBlock<16>(p, bx, by, frag, var);
+}
+#endif
+
+InterpolateFn ChooseInterpolate() {
+#if defined(SOFTGL_HAS_DISPATCH)
+  if (CpuSimdLevel() == SimdLevel::kAvx512) return InterpolateAvx512;
+  if (CpuSimdLevel() == SimdLevel::kAvx2) return InterpolateAvx2;
+#endif
+  return InterpolateBase;
+}
+
+// Whether varying i is divided by w (smooth), or taken as it is (noperspective, flat).
+bool Perspective(const RasterTarget& t, int i) {
+  return !t.interpolation || t.interpolation[i] == Interpolation::kSmooth;
+}
 
 }  // namespace
 
@@ -134,7 +141,7 @@ float PolygonOffset(const WindowVertex& a, const WindowVertex& b, const WindowVe
 }
 
 void RasterizeTriangle(const WindowVertex& v0, const WindowVertex& v1, const WindowVertex& v2, bool front_facing,
-                       const RasterTarget& target, QuadBuffer& quads, const QuadSink& sink) {
+                       const RasterTarget& target, BlockBuffer& blocks, const BlockSink& sink) {
   const WindowVertex* v[3] = {&v0, &v1, &v2};
   std::int64_t X[3], Y[3];
   for (int i = 0; i < 3; ++i) {
@@ -193,19 +200,28 @@ void RasterizeTriangle(const WindowVertex& v0, const WindowVertex& v1, const Win
     return Plane{a0, (da1 * dy2 - da2 * dy1) * inv_det, (da2 * dx1 - da1 * dx2) * inv_det};
   };
   const int nvar = target.nvar;
-  Plane z = make_plane(v[0]->win.z, v[1]->win.z, v[2]->win.z);
-  z.a0 += target.depth_offset;
-  const Plane oow = make_plane(v[0]->win.w, v[1]->win.w, v[2]->win.w);
-  Plane var[kMaxVaryingFloats];
-  for (int i = 0; i < nvar; ++i) var[i] = make_plane(v[0]->var[i], v[1]->var[i], v[2]->var[i]);
+  TrianglePlanes planes;
+  planes.x0 = x0;
+  planes.y0 = y0;
+  planes.nvar = nvar;
+  planes.z = make_plane(v[0]->win.z, v[1]->win.z, v[2]->win.z);
+  planes.z.a0 += target.depth_offset;
+  planes.oow = make_plane(v[0]->win.w, v[1]->win.w, v[2]->win.w);
+  for (int i = 0; i < nvar; ++i) {
+    planes.perspective[i] = Perspective(target, i);
+    if (target.interpolation && target.interpolation[i] == Interpolation::kFlat)
+      planes.var[i] = Plane{v[0]->var[i], 0.0f, 0.0f};  // every vertex carries the provoking vertex's value
+    else
+      planes.var[i] = make_plane(v[0]->var[i], v[1]->var[i], v[2]->var[i]);
+  }
 
-  // Hierarchical traversal: 8x8 pixel blocks first. An edge function is linear, so over a block it is largest and
-  // smallest at the block's corner pixel centres: a block some edge excludes at all four corners is skipped, a
-  // block every edge includes at all four corners is covered whole, and only the others are tested per pixel,
-  // from edge values stepped incrementally across the block. Every pixel's coverage is the same exact integer
-  // test as a pixel-by-pixel walk; quads come out block by block (each pixel of a triangle once, so the order
-  // does not change the image).
-  constexpr int kBlock = 8;
+  // Hierarchical traversal: 8x8 pixel regions first. An edge function is linear, so over a region it is largest and
+  // smallest at the region's corner pixel centres: a region some edge excludes at all four corners is skipped, a
+  // region every edge includes at all four corners is covered whole, and only the others are tested per pixel,
+  // from edge values stepped incrementally. Every pixel's coverage is the same exact integer test as a
+  // pixel-by-pixel walk; the region's four 4x4 blocks come out one by one (each pixel of a triangle once, so the
+  // order does not change the image).
+  constexpr int kRegion = 8;
   std::int64_t step_x[3], step_y[3];  // E(px + 1) - E(px), E(py + 1) - E(py)
   for (int e = 0; e < 3; ++e) {
     step_x[e] = A[e] * kOne;
@@ -214,53 +230,48 @@ void RasterizeTriangle(const WindowVertex& v0, const WindowVertex& v1, const Win
   auto edge_at = [&](int e, std::int64_t px, std::int64_t py) {
     return A[e] * (px * kOne + kHalf) + B[e] * (py * kOne + kHalf) + C[e];
   };
+  static const InterpolateFn interpolate = ChooseInterpolate();
   const Rect& bounds = target.bounds;
-  QuadInterpolator interp{x0, y0, z, oow, var, nvar};
-  for (std::int64_t by = py0 & ~std::int64_t(kBlock - 1); by <= py1; by += kBlock) {
-    for (std::int64_t bx = px0 & ~std::int64_t(kBlock - 1); bx <= px1; bx += kBlock) {
+  for (std::int64_t ry = py0 & ~std::int64_t(kRegion - 1); ry <= py1; ry += kRegion) {
+    for (std::int64_t rx = px0 & ~std::int64_t(kRegion - 1); rx <= px1; rx += kRegion) {
       bool skip = false, whole = true;
       for (int e = 0; e < 3 && !skip; ++e) {
-        const std::int64_t c00 = edge_at(e, bx, by), dx = step_x[e] * (kBlock - 1), dy = step_y[e] * (kBlock - 1);
+        const std::int64_t c00 = edge_at(e, rx, ry), dx = step_x[e] * (kRegion - 1), dy = step_y[e] * (kRegion - 1);
         const std::int64_t lo = std::min({c00, c00 + dx, c00 + dy, c00 + dx + dy});
         const std::int64_t hi = std::max({c00, c00 + dx, c00 + dy, c00 + dx + dy});
         if (hi < 0) skip = true;
         if (lo < 0) whole = false;
       }
       if (skip) continue;
-      const std::int64_t qy0 = std::max(by, py0 & ~std::int64_t(1)), qy1 = std::min(by + kBlock - 1, py1);
-      const std::int64_t qx0 = std::max(bx, px0 & ~std::int64_t(1)), qx1 = std::min(bx + kBlock - 1, px1);
-      for (std::int64_t qy = qy0; qy <= qy1; qy += 2) {
-        std::int64_t row[3];
-        for (int e = 0; e < 3; ++e) row[e] = edge_at(e, qx0, qy);
-        for (std::int64_t qx = qx0; qx <= qx1; qx += 2) {
-          unsigned mask = 0xFu;
-          if (!whole) {
-            mask = 0;
-            for (int lane = 0; lane < 4; ++lane) {
-              bool inside = true;
-              for (int e = 0; e < 3; ++e)
-                inside = inside && row[e] + (lane & 1) * step_x[e] + (lane >> 1) * step_y[e] >= 0;
-              if (inside) mask |= 1u << lane;
+      for (int sub = 0; sub < 4; ++sub) {
+        const std::int64_t bx = rx + (sub & 1) * 4, by = ry + (sub >> 1) * 4;
+        if (bx > px1 || by > py1 || bx + 3 < px0 || by + 3 < py0) continue;
+        std::uint32_t mask = 0xFFFFu;
+        if (!whole) {
+          mask = 0;
+          std::int64_t row[3];
+          for (int e = 0; e < 3; ++e) row[e] = edge_at(e, bx, by);
+          for (int j = 0; j < 4; ++j) {
+            std::int64_t E[3] = {row[0], row[1], row[2]};
+            for (int i = 0; i < 4; ++i) {
+              if (E[0] >= 0 && E[1] >= 0 && E[2] >= 0) mask |= 1u << (j * 4 + i);
+              for (int e = 0; e < 3; ++e) E[e] += step_x[e];
             }
-            for (int e = 0; e < 3; ++e) row[e] += 2 * step_x[e];
+            for (int e = 0; e < 3; ++e) row[e] += step_y[e];
           }
-          if (qx < bounds.x0 || qx + 1 >= bounds.x1 || qy < bounds.y0 || qy + 1 >= bounds.y1)
-            mask &= BoundsMask(bounds, int(qx), int(qy));
-          if (!mask) continue;
-          Reserve(quads, sink, front_facing, nvar);
-          const int q = quads.count++;
-          quads.qx[q] = int(qx);
-          quads.qy[q] = int(qy);
-          for (int lane = 0; lane < 4; ++lane) quads.live[q * 4 + lane] = (mask >> lane) & 1u;
-          interp.Quad(int(qx), int(qy), quads.frag_coord + q * 4, quads.varyings + std::size_t(q) * 4 * nvar);
         }
+        if (bx < bounds.x0 || bx + 3 >= bounds.x1 || by < bounds.y0 || by + 3 >= bounds.y1)
+          mask &= BoundsMask(bounds, int(bx), int(by));
+        if (!mask) continue;
+        const int b = NewBlock(blocks, sink, front_facing, nvar, int(bx), int(by), mask);
+        interpolate(planes, int(bx), int(by), blocks.frag_coord[b], blocks.Varyings(b));
       }
     }
   }
 }
 
 void RasterizeLine(const WindowVertex& a, const WindowVertex& b, bool front_facing, const RasterTarget& target,
-                   QuadBuffer& quads, const QuadSink& sink) {
+                   BlockBuffer& blocks, const BlockSink& sink) {
   const float ax = a.win.x, ay = a.win.y, dx = b.win.x - ax, dy = b.win.y - ay;
   if (!(std::fabs(ax) < 1e7f && std::fabs(ay) < 1e7f && std::fabs(dx) < 1e7f && std::fabs(dy) < 1e7f)) return;
   const float len2 = dx * dx + dy * dy;
@@ -268,13 +279,19 @@ void RasterizeLine(const WindowVertex& a, const WindowVertex& b, bool front_faci
   const int nvar = target.nvar;
 
   // Varyings at the point of the segment nearest to the pixel centre (OpenGL's t, section 14.5.1).
-  auto eval = [&](int px, int py, glm::vec4& frag, float* out) {
+  auto eval = [&](int px, int py, float* frag, float* out) {
     const float fx = float(px) + 0.5f, fy = float(py) + 0.5f;
     const float t = std::clamp(((fx - ax) * dx + (fy - ay) * dy) / len2, 0.0f, 1.0f);
     const float q = a.win.w + t * (b.win.w - a.win.w);
     const float w = 1.0f / q;
-    frag = glm::vec4(fx, fy, a.win.z + t * (b.win.z - a.win.z) + target.depth_offset, q);
-    for (int i = 0; i < nvar; ++i) out[i] = (a.var[i] + t * (b.var[i] - a.var[i])) * w;
+    frag[0] = fx;
+    frag[1] = fy;
+    frag[2] = a.win.z + t * (b.win.z - a.win.z) + target.depth_offset;
+    frag[3] = q;
+    for (int i = 0; i < nvar; ++i) {
+      const float v = a.var[i] + t * (b.var[i] - a.var[i]);
+      out[i] = Perspective(target, i) ? v * w : v;
+    }
   };
 
   // The diamond-exit rule (OpenGL 4.6, section 14.5.1): pixel f is drawn when the segment leaves its diamond
@@ -307,27 +324,27 @@ void RasterizeLine(const WindowVertex& a, const WindowVertex& b, bool front_faci
   // one-pixel-wide parallelogram around the line owns under the fill rule is taken: for x-major lines the upper
   // one when the line rises, else the lower one; for y-major lines the left one.
   const bool upper_on_tie = x_major && dv > 0.0f;
-  int last_quad = -1;  // the last quad this line emitted, while it is still in the buffer
+  int last_block = -1;  // the last block this line emitted, while it is still in the buffer
   for (long i = first; i <= last; ++i) {
     const float uc = float(i) + 0.5f;
     const float vc = v0 + (uc - u0) * dv / du;
     const long j = upper_on_tie ? long(std::floor(vc)) : long(std::ceil(vc)) - 1;
     const int px = int(x_major ? i : j), py = int(x_major ? j : i);
     if (px < target.bounds.x0 || px >= target.bounds.x1 || py < target.bounds.y0 || py >= target.bounds.y1) continue;
-    const int qx = px & ~1, qy = py & ~1;
-    const unsigned bit = 1u << ((px & 1) + 2 * (py & 1));
-    // Neighbouring fragments of the same 2x2 block share one quad.
-    if (last_quad >= 0 && last_quad == quads.count - 1 && quads.qx[last_quad] == qx && quads.qy[last_quad] == qy) {
-      quads.live[(quads.count - 1) * 4 + ((px & 1) + 2 * (py & 1))] = 1;
+    const int bx = px & ~3, by = py & ~3;
+    const std::uint32_t bit = 1u << ((py & 3) * 4 + (px & 3));
+    // Neighbouring fragments of the same 4x4 block share one block.
+    if (last_block >= 0 && last_block == blocks.count - 1 && blocks.bx[last_block] == bx &&
+        blocks.by[last_block] == by) {
+      blocks.live[last_block] |= bit;
       continue;
     }
-    EmitQuad(quads, sink, front_facing, nvar, qx, qy, bit, eval);
-    last_quad = quads.count - 1;
+    last_block = EmitBlock(blocks, sink, front_facing, nvar, bx, by, bit, eval);
   }
 }
 
 void RasterizePoint(const WindowVertex& v, float size, bool front_facing, const RasterTarget& target,
-                    QuadBuffer& quads, const QuadSink& sink) {
+                    BlockBuffer& blocks, const BlockSink& sink) {
   if (!(size > 0.0f) || !(std::fabs(v.win.x) < 1e7f) || !(std::fabs(v.win.y) < 1e7f)) return;
   const float half = std::min(size, 1e6f) * 0.5f;
   const long x0 = std::max<long>(long(std::ceil(v.win.x - half - 0.5f)), target.bounds.x0);
@@ -337,18 +354,21 @@ void RasterizePoint(const WindowVertex& v, float size, bool front_facing, const 
   if (x0 > x1 || y0 > y1) return;
   const int nvar = target.nvar;
   const float w = 1.0f / v.win.w;
-  auto eval = [&](int px, int py, glm::vec4& frag, float* out) {
-    frag = glm::vec4(float(px) + 0.5f, float(py) + 0.5f, v.win.z + target.depth_offset, v.win.w);
-    for (int i = 0; i < nvar; ++i) out[i] = v.var[i] * w;
+  auto eval = [&](int px, int py, float* frag, float* out) {
+    frag[0] = float(px) + 0.5f;
+    frag[1] = float(py) + 0.5f;
+    frag[2] = v.win.z + target.depth_offset;
+    frag[3] = v.win.w;
+    for (int i = 0; i < nvar; ++i) out[i] = Perspective(target, i) ? v.var[i] * w : v.var[i];
   };
-  for (long qy = y0 & ~1L; qy <= y1; qy += 2) {
-    for (long qx = x0 & ~1L; qx <= x1; qx += 2) {
-      unsigned mask = 0;
-      for (int lane = 0; lane < 4; ++lane) {
-        const long px = qx + (lane & 1), py = qy + (lane >> 1);
+  for (long by = y0 & ~3L; by <= y1; by += 4) {
+    for (long bx = x0 & ~3L; bx <= x1; bx += 4) {
+      std::uint32_t mask = 0;
+      for (int lane = 0; lane < kLanes; ++lane) {
+        const long px = bx + (lane & 3), py = by + (lane >> 2);
         if (px >= x0 && px <= x1 && py >= y0 && py <= y1) mask |= 1u << lane;
       }
-      if (mask) EmitQuad(quads, sink, front_facing, nvar, int(qx), int(qy), mask, eval);
+      if (mask) EmitBlock(blocks, sink, front_facing, nvar, int(bx), int(by), mask, eval);
     }
   }
 }

@@ -1,4 +1,4 @@
-// rasterizer.h — stage 7: turn window-space triangles, lines and points into 2x2 fragment quads.
+// rasterizer.h — stage 7: turn window-space triangles, lines and points into 4x4 fragment blocks.
 //
 // Rules, all OpenGL's (4.6 specification, chapter 14) with the conventions of Mesa's llvmpipe where OpenGL leaves
 // a choice:
@@ -7,7 +7,9 @@
 //   functions. A centre exactly on an edge belongs to the triangle when the edge is a left edge (interior to
 //   its right) or a bottom edge (horizontal, interior above), so triangles sharing an edge cover every pixel
 //   once.
-// - Varyings are interpolated perspective-correctly (v/w and 1/w are linear in window space), depth linearly.
+// - Varyings are interpolated perspective-correctly (v/w and 1/w are linear in window space), depth linearly;
+//   noperspective varyings linearly in window space, flat ones not at all (the caller gives every vertex the
+//   provoking vertex's value, and the window vertices of noperspective and flat varyings hold the value itself).
 // - Lines: one pixel wide, one fragment per column (x-major) or row (y-major) whose centre lies in the half-open
 //   span [start, end), the diamond-exit rule for end points at pixel centres.
 // - Points: squares of the point size; pixels whose centres lie in [x - s/2, x + s/2) x [y - s/2, y + s/2).
@@ -24,6 +26,21 @@ struct RasterTarget {
   Rect bounds;  // viewport, framebuffer and scissor rectangle intersected
   int nvar = 0;
   float depth_offset = 0.0f;  // polygon offset added to every fragment's depth
+  const Interpolation* interpolation = nullptr;  // per varying (null: all smooth)
+};
+
+/// a0 + dx * x + dy * y: an attribute's plane in window space, relative to vertex 0.
+struct Plane {
+  float a0, dx, dy;
+};
+
+/// What interpolating a triangle's blocks needs: its planes, relative to vertex 0 at (x0, y0).
+struct TrianglePlanes {
+  float x0 = 0.0f, y0 = 0.0f;
+  Plane z, oow;
+  int nvar = 0;
+  Plane var[kMaxVaryingFloats];
+  bool perspective[kMaxVaryingFloats];  // smooth: divided by w (the others are taken as they are)
 };
 
 /// OpenGL's polygon offset for the plane through a, b, c: m * factor + r * units, with m the larger of
@@ -32,12 +49,12 @@ struct RasterTarget {
 float PolygonOffset(const WindowVertex& a, const WindowVertex& b, const WindowVertex& c, float factor, float units);
 
 void RasterizeTriangle(const WindowVertex& v0, const WindowVertex& v1, const WindowVertex& v2, bool front_facing,
-                       const RasterTarget& target, QuadBuffer& quads, const QuadSink& sink);
+                       const RasterTarget& target, BlockBuffer& blocks, const BlockSink& sink);
 
 void RasterizeLine(const WindowVertex& a, const WindowVertex& b, bool front_facing, const RasterTarget& target,
-                   QuadBuffer& quads, const QuadSink& sink);
+                   BlockBuffer& blocks, const BlockSink& sink);
 
 void RasterizePoint(const WindowVertex& v, float size, bool front_facing, const RasterTarget& target,
-                    QuadBuffer& quads, const QuadSink& sink);
+                    BlockBuffer& blocks, const BlockSink& sink);
 
 }  // namespace softgl::detail

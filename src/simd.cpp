@@ -1,6 +1,8 @@
 // simd.cpp — the processor's vector level, read once.
 #include "simd.h"
 
+#include <softgl/lanes.h>
+
 #include <algorithm>
 #include <cstdlib>
 #include <cstring>
@@ -14,7 +16,9 @@ SimdLevel Detect() {
   __builtin_cpu_init();
   int level = 0;
   if (__builtin_cpu_supports("avx2") && __builtin_cpu_supports("sse4.1")) level = 1;
-  if (level == 1 && __builtin_cpu_supports("avx512f")) level = 2;
+  if (level == 1 && __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512dq") &&
+      __builtin_cpu_supports("avx512bw") && __builtin_cpu_supports("avx512vl"))
+    level = 2;
   if (const char* cap = std::getenv("SOFTGL_SIMD")) {
     if (std::strcmp(cap, "sse2") == 0) level = 0;
     if (std::strcmp(cap, "avx2") == 0) level = std::min(level, 1);
@@ -33,3 +37,5 @@ SimdLevel CpuSimdLevel() {
 }
 
 }  // namespace softgl::detail
+
+int softgl::SimdLevel() { return int(detail::CpuSimdLevel()); }

@@ -9,7 +9,7 @@ namespace softgl::detail {
 enum class SimdLevel : int {
   kBaseline = 0,  // SSE2 on x86-64 (or no vector code elsewhere)
   kAvx2 = 1,      // AVX2 with SSE4.1
-  kAvx512 = 2,    // AVX-512F
+  kAvx512 = 2,    // AVX-512 F, DQ, BW and VL
 };
 
 /// The widest level the processor has, capped by SOFTGL_SIMD=sse2 or SOFTGL_SIMD=avx2 in the environment (to test

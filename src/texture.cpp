@@ -28,6 +28,32 @@ bool IsDepthFormat(Enum f) { return f == DEPTH_COMPONENT || f == DEPTH_COMPONENT
 
 bool IsNormalizedFormat(Enum f) { return f == R8 || f == RG8 || f == RGB8 || f == RGBA8; }
 
+TexelLayout LayoutOf(Enum f) {
+  switch (f) {
+    case RGBA8:
+    case RGB8: return TexelLayout::kUnorm8x4;
+    case RG8: return TexelLayout::kUnorm8x2;
+    case R8: return TexelLayout::kUnorm8x1;
+    case RGBA32F: return TexelLayout::kFloat32x4;
+    case R32F:
+    case DEPTH_COMPONENT:
+    case DEPTH_COMPONENT24:
+    case DEPTH_COMPONENT32F: return TexelLayout::kFloat32x1;
+    default: return TexelLayout::kNone;
+  }
+}
+
+int BytesPerTexel(TexelLayout l) {
+  switch (l) {
+    case TexelLayout::kUnorm8x4: return 4;
+    case TexelLayout::kUnorm8x2: return 2;
+    case TexelLayout::kUnorm8x1: return 1;
+    case TexelLayout::kFloat32x4: return 16;
+    case TexelLayout::kFloat32x1: return 4;
+    default: return 0;
+  }
+}
+
 int TransferComponents(Enum format) {
   switch (format) {
     case RED:
@@ -39,24 +65,64 @@ int TransferComponents(Enum format) {
   }
 }
 
-namespace {
-
-// A value as the internal format stores it: fixed point clamped and rounded to k/255, depth clamped to [0, 1].
-float Quantize(Enum internal_format, float v) {
-  if (std::isnan(v)) v = 0.0f;
-  if (IsNormalizedFormat(internal_format)) return float(FloatToUnorm8(v)) / 255.0f;
-  if (IsDepthFormat(internal_format)) return std::clamp(v, 0.0f, 1.0f);
-  return v;
+glm::vec4 RawTexel(TexelLayout layout, const std::uint8_t* p) {
+  switch (layout) {
+    case TexelLayout::kUnorm8x4: return glm::vec4(float(p[0]), float(p[1]), float(p[2]), float(p[3]));
+    case TexelLayout::kUnorm8x2: return glm::vec4(float(p[0]), float(p[1]), 0.0f, 255.0f);
+    case TexelLayout::kUnorm8x1: return glm::vec4(float(p[0]), 0.0f, 0.0f, 255.0f);
+    case TexelLayout::kFloat32x4: {
+      glm::vec4 v;
+      std::memcpy(&v.x, p, 16);
+      return v;
+    }
+    case TexelLayout::kFloat32x1: {
+      float r;
+      std::memcpy(&r, p, 4);
+      return glm::vec4(r, 0.0f, 0.0f, 1.0f);
+    }
+    default: return glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
+  }
 }
 
-// The stored texel of a format with n components: missing ones read (0, 0, 0, 1).
-void StoreTexel(Enum internal_format, const float in[4], float* out) {
-  const int n = FormatComponents(internal_format);
-  const float defaults[4] = {0.0f, 0.0f, 0.0f, 1.0f};
-  for (int c = 0; c < 4; ++c) out[c] = c < n ? Quantize(internal_format, in[c]) : defaults[c];
+glm::vec4 TextureLevel::Raw(int i, int j) const { return RawTexel(layout, At(i, j)); }
+
+glm::vec4 TextureLevel::Texel(int i, int j) const { return Raw(i, j) / StorageScale(layout); }
+
+void TextureLevel::Allocate(Enum internal_format, int w, int h) {
+  const TexelLayout l = LayoutOf(internal_format);
+  const int b = BytesPerTexel(l);
+  data.assign(std::size_t(w) * std::size_t(h) * std::size_t(b), 0);
+  format = internal_format;
+  width = w;
+  height = h;
+  layout = l;
+  bytes = b;
+  if (internal_format == RGB8)  // alpha reads 1
+    for (std::size_t k = 3; k < data.size(); k += 4) data[k] = 255;
 }
 
-}  // namespace
+void StoreTexel(TextureLevel& level, int i, int j, const glm::vec4& in) {
+  std::uint8_t* p = level.At(i, j);
+  switch (level.layout) {
+    case TexelLayout::kUnorm8x4:
+      for (int c = 0; c < 4; ++c) p[c] = FloatToUnorm8(in[c]);
+      if (level.format == RGB8) p[3] = 255;
+      break;
+    case TexelLayout::kUnorm8x2:
+      p[0] = FloatToUnorm8(in[0]);
+      p[1] = FloatToUnorm8(in[1]);
+      break;
+    case TexelLayout::kUnorm8x1: p[0] = FloatToUnorm8(in[0]); break;
+    case TexelLayout::kFloat32x4: std::memcpy(p, &in.x, 16); break;
+    case TexelLayout::kFloat32x1: {
+      float v = in[0];
+      if (IsDepthFormat(level.format)) v = std::isnan(v) ? 0.0f : std::clamp(v, 0.0f, 1.0f);  // depth holds [0, 1]
+      std::memcpy(p, &v, 4);
+      break;
+    }
+    default: break;
+  }
+}
 
 void UploadPixels(TextureLevel& level, int x, int y, int w, int h, Enum format, Enum type, int alignment,
                   const void* pixels) {
@@ -69,13 +135,20 @@ void UploadPixels(TextureLevel& level, int x, int y, int w, int h, Enum format, 
   for (int j = 0; j < h; ++j)
     for (int i = 0; i < w; ++i) {
       const std::uint8_t* p = bytes + std::size_t(j) * row + std::size_t(i) * std::size_t(n) * csize;
-      float in[4] = {0.0f, 0.0f, 0.0f, 1.0f};
+      if (type != FLOAT && IsUnorm8(level.layout)) {  // bytes into bytes: no conversion
+        std::uint8_t* dst = level.At(x + i, y + j);
+        for (int c = 0; c < level.bytes; ++c) dst[c] = c < n ? p[c] : (c == 3 ? 255 : 0);
+        if (level.format == RGB8) dst[3] = 255;
+        continue;
+      }
+      glm::vec4 in(0.0f, 0.0f, 0.0f, 1.0f);
       for (int c = 0; c < n; ++c) {
         if (type == FLOAT) std::memcpy(&in[c], p + 4 * c, 4);
         else in[c] = float(p[c]) / 255.0f;
       }
-      float* dst = level.texels.data() + (std::size_t(y + j) * std::size_t(level.width) + std::size_t(x + i)) * 4;
-      StoreTexel(level.format, in, dst);
+      for (int c = 0; c < 4; ++c)
+        if (std::isnan(in[c])) in[c] = 0.0f;
+      StoreTexel(level, x + i, y + j, in);
     }
 }
 
@@ -89,10 +162,7 @@ void GenerateMipmaps(TextureObject& texture) {
         break;
       }
       TextureLevel& dst = texture.levels[face][l];
-      dst.format = src.format;
-      dst.width = std::max(1, src.width / 2);
-      dst.height = std::max(1, src.height / 2);
-      dst.texels.assign(std::size_t(dst.width) * std::size_t(dst.height) * 4, 0.0f);
+      dst.Allocate(src.format, std::max(1, src.width / 2), std::max(1, src.height / 2));
       for (int j = 0; j < dst.height; ++j)
         for (int i = 0; i < dst.width; ++i) {
           // Bilinear sample of src at this texel's centre, clamped to the edge.
@@ -100,14 +170,13 @@ void GenerateMipmaps(TextureObject& texture) {
           const float v = (float(j) + 0.5f) * float(src.height) / float(dst.height) - 0.5f;
           const int i0 = int(std::floor(u)), j0 = int(std::floor(v));
           const float a = u - float(i0), b = v - float(j0);
-          float sum[4] = {0, 0, 0, 0};
+          glm::vec4 sum(0.0f);
           for (int dj = 0; dj < 2; ++dj)
             for (int di = 0; di < 2; ++di) {
               const float wgt = (di ? a : 1.0f - a) * (dj ? b : 1.0f - b);
-              const float* t = src.At(std::clamp(i0 + di, 0, src.width - 1), std::clamp(j0 + dj, 0, src.height - 1));
-              for (int c = 0; c < 4; ++c) sum[c] += wgt * t[c];
+              sum += wgt * src.Texel(std::clamp(i0 + di, 0, src.width - 1), std::clamp(j0 + dj, 0, src.height - 1));
             }
-          StoreTexel(dst.format, sum, dst.texels.data() + (std::size_t(j) * std::size_t(dst.width) + std::size_t(i)) * 4);
+          StoreTexel(dst, i, j, sum);
         }
     }
   }
@@ -122,6 +191,10 @@ TextureView MakeView(const TextureObject& texture) {
   const TextureLevel& base = texture.levels[0][p.base_level];
   if (!base.Defined()) return view;
   view.depth = IsDepthFormat(base.format);
+  view.layout = base.layout;
+  view.scale = StorageScale(base.layout);
+  // The border colour in storage units; a fixed-point texture takes it clamped to [0, 1], as it takes texels.
+  view.border_raw = IsUnorm8(base.layout) ? glm::clamp(p.border, 0.0f, 1.0f) * 255.0f : p.border;
   // q: the last level of the chain, level_base + floor(log2(max size)), but at most level_max.
   int levels = 0;
   for (int size = std::max(base.width, base.height); size > 1; size >>= 1) ++levels;

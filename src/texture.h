@@ -1,8 +1,11 @@
-// texture.h — texture objects: levels and faces, formats, uploads, mipmap generation and completeness.
-// Every level stores RGBA floats (a depth texture keeps depth in r); fixed-point formats hold exact k/255 values.
+// texture.h — texture objects: levels and faces, texel formats, uploads, mipmap generation and completeness.
+//
+// Each level keeps its texels in its own format: RGBA8 four bytes a texel (RGB8 too, alpha stored as 255), RG8
+// two, R8 one, RGBA32F sixteen, R32F and the depth formats one float. Fixed-point texels are bytes k meaning k / 255.
 #pragma once
 
 #include <cstdint>
+#include <cstring>
 #include <memory>
 #include <vector>
 
@@ -14,13 +17,51 @@ namespace softgl::detail {
 
 inline constexpr int kMaxLevels = 15;  // 16384 x 16384 down to 1 x 1
 
+/// How a level stores a texel.
+enum class TexelLayout : std::uint8_t {
+  kNone,
+  kUnorm8x4,   // RGBA8, RGB8 (alpha 255)
+  kUnorm8x2,   // RG8
+  kUnorm8x1,   // R8
+  kFloat32x4,  // RGBA32F
+  kFloat32x1,  // R32F, DEPTH_COMPONENT*
+};
+
+/// The layout of an internal format (kNone if softgl does not support it), and its bytes per texel.
+TexelLayout LayoutOf(Enum internal_format);
+int BytesPerTexel(TexelLayout layout);
+/// The texel at p as RGBA in storage units: byte values 0..255 for fixed-point layouts, the floats otherwise;
+/// channels the layout lacks read (0, 0, 0, 1) in the same units.
+glm::vec4 RawTexel(TexelLayout layout, const std::uint8_t* p);
+inline bool IsUnorm8(TexelLayout l) {
+  return l == TexelLayout::kUnorm8x4 || l == TexelLayout::kUnorm8x2 || l == TexelLayout::kUnorm8x1;
+}
+
 struct TextureLevel {
   Enum format = 0;  // internal format; 0: not defined
   int width = 0, height = 0;
-  std::vector<float> texels;  // [height][width][4]
+  TexelLayout layout = TexelLayout::kNone;
+  int bytes = 0;                    // per texel
+  std::vector<std::uint8_t> data;   // [height][width][bytes], rows from the bottom
   bool Defined() const { return format != 0 && width > 0 && height > 0; }
-  const float* At(int i, int j) const { return texels.data() + (std::size_t(j) * std::size_t(width) + std::size_t(i)) * 4; }
+  std::uint8_t* At(int i, int j) {
+    return data.data() + (std::size_t(j) * std::size_t(width) + std::size_t(i)) * std::size_t(bytes);
+  }
+  const std::uint8_t* At(int i, int j) const {
+    return data.data() + (std::size_t(j) * std::size_t(width) + std::size_t(i)) * std::size_t(bytes);
+  }
+  /// Texel (i, j) as RGBA in storage units: byte values 0..255 for fixed-point layouts, the floats otherwise;
+  /// channels the format lacks read (0, 0, 0, 1) in the same units.
+  glm::vec4 Raw(int i, int j) const;
+  /// Texel (i, j) as RGBA floats (fixed point divided by 255).
+  glm::vec4 Texel(int i, int j) const;
+  /// Allocates width x height texels of `internal_format`, zero (alpha 1 where the format has no alpha). Throws
+  /// std::bad_alloc.
+  void Allocate(Enum internal_format, int w, int h);
 };
+
+/// The number storage units are divided by to give the value: 255 for fixed-point layouts, 1 for float ones.
+inline float StorageScale(TexelLayout l) { return IsUnorm8(l) ? 255.0f : 1.0f; }
 
 struct SamplerParams {
   Enum min_filter = NEAREST_MIPMAP_LINEAR;
@@ -46,9 +87,12 @@ struct TextureView {
   bool depth = false;  // a DEPTH_COMPONENT format
   int base = 0;        // level_base
   int q = 0;           // the last level mipmapped filtering may use
-  // The common case, which Textures::Sample takes without re-deciding per sample: a 2D colour texture with
-  // REPEAT in s and t on power-of-two sizes, LINEAR magnification, and LINEAR or LINEAR_MIPMAP_LINEAR
-  // minification, no depth comparison.
+  TexelLayout layout = TexelLayout::kNone;
+  float scale = 1.0f;  // StorageScale(layout)
+  glm::vec4 border_raw{0.0f};  // the border colour in storage units
+  // The common case, which sampling takes without re-deciding per sample: a 2D colour texture with REPEAT in s
+  // and t on power-of-two sizes, LINEAR magnification, and LINEAR or LINEAR_MIPMAP_LINEAR minification, no depth
+  // comparison.
   enum class Fast : unsigned char { kNone, kRepeatLinear, kRepeatTrilinear };
   Fast fast = Fast::kNone;
 };
@@ -63,10 +107,13 @@ bool IsNormalizedFormat(Enum internal_format);  // fixed point: RGBA8, RGB8, RG8
 /// Channels of a pixel transfer format (RED 1, RG 2, RGB 3, RGBA 4, DEPTH_COMPONENT 1), 0 if unknown.
 int TransferComponents(Enum format);
 
-/// Converts client pixels (format, type UNSIGNED_BYTE or FLOAT, rows aligned to `alignment`) into RGBA floats
-/// for `internal_format`, writing rect (x, y, w, h) of `level` (already sized). Null pixels leave zeros.
+/// Converts client pixels (format, type UNSIGNED_BYTE or FLOAT, rows aligned to `alignment`) into the level's
+/// format, writing rect (x, y, w, h) of `level` (already allocated). Null pixels leave the level as it is.
 void UploadPixels(TextureLevel& level, int x, int y, int w, int h, Enum format, Enum type, int alignment,
                   const void* pixels);
+
+/// Writes RGBA value `v` (in [0, 1] for fixed point: clamped and rounded; floats as they are) into texel (i, j).
+void StoreTexel(TextureLevel& level, int i, int j, const glm::vec4& v);
 
 /// Fills levels base+1 .. the 1 x 1 level of each face from the base level: each texel is the bilinear sample of
 /// the level above at its centre (the 2 x 2 box average for even sizes), in the base level's format.

@@ -1,26 +1,38 @@
 // texture_sampler.cpp — texture sampling for the shader stages: level of detail, mipmap selection, NEAREST and
 // LINEAR filtering, wrap modes, cube map faces and depth comparison (OpenGL 4.6, sections 8.13 to 8.14, 8.22).
+//
+// Texels are filtered in their storage units (the bytes 0..255 of fixed-point formats, the floats of the others)
+// and the result is divided by the format's scale (255 or 1) once, at the end. The wide form (SampleLanes) computes
+// the common 2D case for a whole block of lanes with vector instructions and the same operations, in the same
+// order, as the one-lane form, so both give the same floats.
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
 
-#if defined(__SSE2__)
+#if defined(__x86_64__) || defined(__i386__)
 #include <immintrin.h>
 #endif
 
+#include <softgl/lanes.h>
 #include <softgl/texture.h>
 
 #include "fragment_ops.h"
 #include "simd.h"
 #include "texture.h"
+#include "wide.h"
+
+// GCC 12's AVX-512 gather starts from a self-initialized "undefined" vector, which its uninitialized-value warnings
+// report: a known false positive.
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic ignored "-Wuninitialized"
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#endif
 
 namespace softgl {
 
 namespace {
 
-// The sampling path is inlined into each entry point, so that each is compiled for its own case (depth comparison
-// or not, a constant face).
 #if defined(__GNUC__)
 #define SOFTGL_INLINE inline __attribute__((always_inline))
 #else
@@ -28,6 +40,7 @@ namespace {
 #endif
 
 using detail::SamplerParams;
+using detail::TexelLayout;
 using detail::TextureLevel;
 using detail::TextureView;
 
@@ -62,73 +75,52 @@ struct DepthCompare {
   float ref = 0.0f;
 };
 
-glm::vec4 Fetch(const SamplerParams& p, const TextureLevel& level, long i, long j, const DepthCompare& cmp) {
+// One texel in storage units, wrapped (the border colour outside the level under CLAMP_TO_BORDER), compared when
+// depth comparison is on.
+glm::vec4 Fetch(const TextureView& view, const TextureLevel& level, long i, long j, const DepthCompare& cmp) {
+  const SamplerParams& p = view.texture->params;
   const int wi = Wrap(p.wrap_s, i, level.width), wj = Wrap(p.wrap_t, j, level.height);
-  glm::vec4 t = p.border;
-  if (wi >= 0 && wj >= 0) {
-    const float* texel = level.At(wi, wj);
-    t = glm::vec4(texel[0], texel[1], texel[2], texel[3]);
-  }
+  const glm::vec4 t = (wi >= 0 && wj >= 0) ? level.Raw(wi, wj) : view.border_raw;
   if (cmp.on) return glm::vec4(detail::Compare(cmp.func, cmp.ref, t.r) ? 1.0f : 0.0f);
   return t;
 }
 
-// LINEAR on one level without depth comparison: each of the two wrapped columns and rows is computed once, and
-// the weighted sum is taken four channels at a time, with the same operations in the same order as the generic
-// path below.
-SOFTGL_INLINE glm::vec4 Bilinear(const SamplerParams& p, const TextureLevel& level, float u, float v) {
+// Bilinear weights of texel-space coordinates (u, v), and the lower-left texel.
+struct Bilerp {
+  long i0, j0;
+  float w00, w10, w01, w11;
+};
+SOFTGL_INLINE Bilerp Weights(float u, float v) {
   const float fu = u - 0.5f, fv = v - 0.5f;
-  const long i0 = long(std::floor(fu)), j0 = long(std::floor(fv));
-  const float a = fu - float(i0), b = fv - float(j0);
-  const int wi[2] = {Wrap(p.wrap_s, i0, level.width), Wrap(p.wrap_s, i0 + 1, level.width)};
-  const int wj[2] = {Wrap(p.wrap_t, j0, level.height), Wrap(p.wrap_t, j0 + 1, level.height)};
-  const float* t[4];
-  for (int k = 0; k < 4; ++k) {
-    const int i = wi[k & 1], j = wj[k >> 1];
-    t[k] = (i >= 0 && j >= 0) ? level.At(i, j) : &p.border.x;
-  }
-  const float w00 = (1 - a) * (1 - b), w10 = a * (1 - b), w01 = (1 - a) * b, w11 = a * b;
-#if defined(__SSE2__)
-  __m128 sum = _mm_mul_ps(_mm_set1_ps(w00), _mm_loadu_ps(t[0]));
-  sum = _mm_add_ps(sum, _mm_mul_ps(_mm_set1_ps(w10), _mm_loadu_ps(t[1])));
-  sum = _mm_add_ps(sum, _mm_mul_ps(_mm_set1_ps(w01), _mm_loadu_ps(t[2])));
-  sum = _mm_add_ps(sum, _mm_mul_ps(_mm_set1_ps(w11), _mm_loadu_ps(t[3])));
-  glm::vec4 out;
-  _mm_storeu_ps(&out.x, sum);
-  return out;
-#else
-  auto texel = [](const float* x) { return glm::vec4(x[0], x[1], x[2], x[3]); };
-  return w00 * texel(t[0]) + w10 * texel(t[1]) + w01 * texel(t[2]) + w11 * texel(t[3]);
-#endif
+  const float flu = std::floor(fu), flv = std::floor(fv);
+  const float a = fu - flu, b = fv - flv;
+  return Bilerp{long(flu), long(flv), (1 - a) * (1 - b), a * (1 - b), (1 - a) * b, a * b};
+}
+// The weighted sum, always in this order: ((w00 t00 + w10 t10) + w01 t01) + w11 t11.
+SOFTGL_INLINE glm::vec4 Sum(const Bilerp& w, const glm::vec4& t00, const glm::vec4& t10, const glm::vec4& t01,
+                            const glm::vec4& t11) {
+  return w.w00 * t00 + w.w10 * t10 + w.w01 * t01 + w.w11 * t11;
 }
 
-// Bilinear() for REPEAT on a power-of-two level: the same arithmetic, the wrap a mask, no border texel.
-SOFTGL_INLINE glm::vec4 BilinearRepeatPow2(const TextureLevel& level, glm::vec2 st) {
+// One level, NEAREST or LINEAR (section 8.14.2): texel centres at +0.5.
+SOFTGL_INLINE glm::vec4 FilterLevel(const TextureView& view, const TextureLevel& level, Enum filter, glm::vec2 st,
+                                    const DepthCompare& cmp) {
   const float u = TexelCoord(st.x, level.width), v = TexelCoord(st.y, level.height);
-  const float fu = u - 0.5f, fv = v - 0.5f;
-  const long i0 = long(std::floor(fu)), j0 = long(std::floor(fv));
-  const float a = fu - float(i0), b = fv - float(j0);
-  const long mi = level.width - 1, mj = level.height - 1;
-  const std::size_t c0 = std::size_t(i0 & mi), c1 = std::size_t((i0 + 1) & mi);
-  const float* row0 = level.texels.data() + std::size_t(j0 & mj) * std::size_t(level.width) * 4;
-  const float* row1 = level.texels.data() + std::size_t((j0 + 1) & mj) * std::size_t(level.width) * 4;
-  const float w00 = (1 - a) * (1 - b), w10 = a * (1 - b), w01 = (1 - a) * b, w11 = a * b;
-#if defined(__SSE2__)
-  __m128 sum = _mm_mul_ps(_mm_set1_ps(w00), _mm_loadu_ps(row0 + c0 * 4));
-  sum = _mm_add_ps(sum, _mm_mul_ps(_mm_set1_ps(w10), _mm_loadu_ps(row0 + c1 * 4)));
-  sum = _mm_add_ps(sum, _mm_mul_ps(_mm_set1_ps(w01), _mm_loadu_ps(row1 + c0 * 4)));
-  sum = _mm_add_ps(sum, _mm_mul_ps(_mm_set1_ps(w11), _mm_loadu_ps(row1 + c1 * 4)));
-  glm::vec4 out;
-  _mm_storeu_ps(&out.x, sum);
-  return out;
-#else
-  auto texel = [](const float* x) { return glm::vec4(x[0], x[1], x[2], x[3]); };
-  return w00 * texel(row0 + c0 * 4) + w10 * texel(row0 + c1 * 4) + w01 * texel(row1 + c0 * 4) +
-         w11 * texel(row1 + c1 * 4);
-#endif
+  if (filter == NEAREST) return Fetch(view, level, long(std::floor(u)), long(std::floor(v)), cmp);
+  const Bilerp w = Weights(u, v);
+  return Sum(w, Fetch(view, level, w.i0, w.j0, cmp), Fetch(view, level, w.i0 + 1, w.j0, cmp),
+             Fetch(view, level, w.i0, w.j0 + 1, cmp), Fetch(view, level, w.i0 + 1, w.j0 + 1, cmp));
 }
 
-// SampleFace() for a view whose `fast` is set: the same decisions, taken knowing the filters.
+// LINEAR for REPEAT on a power-of-two level: the same arithmetic, the wrap a mask, no border texel.
+SOFTGL_INLINE glm::vec4 BilinearRepeatPow2(const TextureLevel& level, glm::vec2 st) {
+  const Bilerp w = Weights(TexelCoord(st.x, level.width), TexelCoord(st.y, level.height));
+  const long mi = level.width - 1, mj = level.height - 1;
+  const int c0 = int(w.i0 & mi), c1 = int((w.i0 + 1) & mi), r0 = int(w.j0 & mj), r1 = int((w.j0 + 1) & mj);
+  return Sum(w, level.Raw(c0, r0), level.Raw(c1, r0), level.Raw(c0, r1), level.Raw(c1, r1));
+}
+
+// The fast path's level choice (what SampleFace decides for these filters), in storage units.
 SOFTGL_INLINE glm::vec4 SampleRepeat(const TextureView& view, glm::vec2 st, float lambda) {
   const auto& levels = view.texture->levels[0];
   if (lambda <= 0.0f || view.fast == TextureView::Fast::kRepeatLinear)  // magnification, or LINEAR
@@ -138,19 +130,6 @@ SOFTGL_INLINE glm::vec4 SampleRepeat(const TextureView& view, glm::vec2 st, floa
   const int d1 = view.base + int(fl);
   const float f = lambda - fl;
   return (1.0f - f) * BilinearRepeatPow2(levels[d1], st) + f * BilinearRepeatPow2(levels[d1 + 1], st);
-}
-
-// One level, NEAREST or LINEAR (section 8.14.2): texel centres at +0.5.
-SOFTGL_INLINE glm::vec4 FilterLevel(const SamplerParams& p, const TextureLevel& level, Enum filter, glm::vec2 st,
-                      const DepthCompare& cmp) {
-  const float u = TexelCoord(st.x, level.width), v = TexelCoord(st.y, level.height);
-  if (filter == NEAREST) return Fetch(p, level, long(std::floor(u)), long(std::floor(v)), cmp);
-  if (!cmp.on) return Bilinear(p, level, u, v);
-  const float fu = u - 0.5f, fv = v - 0.5f;
-  const long i0 = long(std::floor(fu)), j0 = long(std::floor(fv));
-  const float a = fu - float(i0), b = fv - float(j0);
-  return (1 - a) * (1 - b) * Fetch(p, level, i0, j0, cmp) + a * (1 - b) * Fetch(p, level, i0 + 1, j0, cmp) +
-         (1 - a) * b * Fetch(p, level, i0, j0 + 1, cmp) + a * b * Fetch(p, level, i0 + 1, j0 + 1, cmp);
 }
 
 // log2 evaluated piecewise-linearly between powers of two: exponent + (mantissa - 1). Exact at powers of two,
@@ -188,34 +167,36 @@ SOFTGL_INLINE float Lambda(const TextureView& view, glm::vec2 dx, glm::vec2 dy, 
   return std::clamp(lambda, p.min_lod, p.max_lod);
 }
 
-// Minification or magnification at level of detail lambda, on one face (section 8.14.2 to 8.14.3).
-SOFTGL_INLINE glm::vec4 SampleFace(const TextureView& view, int face, glm::vec2 st, float lambda, const DepthCompare& cmp) {
+// Minification or magnification at level of detail lambda, on one face (section 8.14.2 to 8.14.3), in storage
+// units.
+SOFTGL_INLINE glm::vec4 SampleFace(const TextureView& view, int face, glm::vec2 st, float lambda,
+                                   const DepthCompare& cmp) {
   const SamplerParams& p = view.texture->params;
   const auto& levels = view.texture->levels[face];
   const bool nearest_mip = p.min_filter == NEAREST_MIPMAP_NEAREST || p.min_filter == LINEAR_MIPMAP_NEAREST;
   const float c = (p.mag_filter == LINEAR && nearest_mip) ? 0.5f : 0.0f;
-  if (lambda <= c) return FilterLevel(p, levels[view.base], p.mag_filter, st, cmp);
+  if (lambda <= c) return FilterLevel(view, levels[view.base], p.mag_filter, st, cmp);
   const Enum filter = (p.min_filter == LINEAR || p.min_filter == LINEAR_MIPMAP_NEAREST ||
                        p.min_filter == LINEAR_MIPMAP_LINEAR)
                           ? LINEAR
                           : NEAREST;
   switch (p.min_filter) {
     case NEAREST:
-    case LINEAR: return FilterLevel(p, levels[view.base], filter, st, cmp);
+    case LINEAR: return FilterLevel(view, levels[view.base], filter, st, cmp);
     case NEAREST_MIPMAP_NEAREST:
     case LINEAR_MIPMAP_NEAREST: {
       const int d = lambda <= 0.5f ? view.base
                                    : int(std::min<float>(float(view.base) + std::ceil(lambda + 0.5f) - 1.0f,
                                                          float(view.q)));
-      return FilterLevel(p, levels[d], filter, st, cmp);
+      return FilterLevel(view, levels[d], filter, st, cmp);
     }
     default: {  // *_MIPMAP_LINEAR
-      if (float(view.base) + lambda >= float(view.q)) return FilterLevel(p, levels[view.q], filter, st, cmp);
+      if (float(view.base) + lambda >= float(view.q)) return FilterLevel(view, levels[view.q], filter, st, cmp);
       const float fl = std::floor(lambda);
       const int d1 = view.base + int(fl);
       const float f = lambda - fl;
-      return (1.0f - f) * FilterLevel(p, levels[d1], filter, st, cmp) +
-             f * FilterLevel(p, levels[d1 + 1], filter, st, cmp);
+      return (1.0f - f) * FilterLevel(view, levels[d1], filter, st, cmp) +
+             f * FilterLevel(view, levels[d1 + 1], filter, st, cmp);
     }
   }
 }
@@ -250,156 +231,190 @@ int CubeFace(glm::vec3 r) {
   return r.z >= 0 ? 4 : 5;
 }
 
-}  // namespace
+// ---- The common 2D case for a block of lanes --------------------------------------------------------------------
+//
+// W lanes at a time (4 with SSE2, 8 with AVX2, 16 with AVX-512), each lane's operations those of SampleRepeat and
+// BilinearRepeatPow2 above in the same order. The levels a chunk of lanes needs are taken one at a time (usually one
+// or two), and each is sampled for all its lanes: texel addresses, gathers, weights side by side. Lanes whose
+// rho^2 is not a normal positive float (zero or NaN derivatives, say) take the one-lane path.
 
-namespace {
+using detail::V;
 
-// The common 2D case, compiled twice: for the baseline processor, and for processors with AVX2 and SSE4.1 (which
-// round to an integer in one instruction), chosen once at run time. The arithmetic is the same operations, so the
-// results are the same (no FMA: it would round differently).
-glm::vec4 SampleRepeatBaseline(const TextureView& v, glm::vec2 uv, glm::vec2 dx, glm::vec2 dy, float bias) {
-  return SampleRepeat(v, uv, Lambda(v, dx, dy, bias));
+template <int W>
+SOFTGL_INLINE typename V<W>::F LoadF(const float* p) {
+  return detail::LoadVec<typename V<W>::F>(p);
+}
+template <int W>
+SOFTGL_INLINE typename V<W>::F FloorF(typename V<W>::F x) {
+  return detail::FloorVec<W>(x);
 }
 
-#if defined(__SSE2__) && (defined(__x86_64__) || defined(__i386__))
-__attribute__((target("avx2,sse4.1"))) glm::vec4 SampleRepeatAvx2(const TextureView& v, glm::vec2 uv, glm::vec2 dx,
-                                                                  glm::vec2 dy, float bias) {
-  return SampleRepeat(v, uv, Lambda(v, dx, dy, bias));
+// out[lane] = the 32-bit texel at row-major index idx[lane] of `base`. (By reference: the AVX2 and AVX-512 forms are
+// compiled for those instruction sets, and a vector passed by value to them would change the calling convention.)
+template <int W>
+inline void Gather(const std::uint32_t* base, const typename V<W>::I& idx, typename V<W>::U& out) {
+  for (int l = 0; l < W; ++l) out[l] = base[idx[l]];
+}
+#if defined(SOFTGL_HAS_DISPATCH)
+template <>
+__attribute__((target("avx2"))) inline void Gather<8>(const std::uint32_t* base, const V<8>::I& idx, V<8>::U& out) {
+  out = V<8>::U(_mm256_i32gather_epi32(reinterpret_cast<const int*>(base), __m256i(idx), 4));
+}
+template <>
+__attribute__((target("avx512f"))) inline void Gather<16>(const std::uint32_t* base, const V<16>::I& idx,
+                                                           V<16>::U& out) {
+  out = V<16>::U(_mm512_i32gather_epi32(__m512i(idx), base, 4));
 }
 #endif
 
-// Four lanes of a quad on the common 2D path. The baseline loops over the lanes; the AVX2 version computes the
-// level of detail, the level choice and the texel coordinates and weights of the four lanes side by side, with
-// each lane's operations those of the one-lane path in the same order, then fetches and weights each lane's texels
-// as BilinearRepeatPow2 does. Lanes whose rho^2 is not a normal positive float take the one-lane path.
-void SampleRepeatQuadBaseline(const TextureView& v, const glm::vec2* uv, const glm::vec2* dx, const glm::vec2* dy,
-                              float bias, glm::vec4* out) {
-  for (int l = 0; l < 4; ++l) out[l] = SampleRepeat(v, uv[l], Lambda(v, dx[l], dy[l], bias));
+// Bilinear samples of RGBA8 level `lv` for the lanes of `mask`, in byte units, written into r, g, b, a.
+template <int W>
+SOFTGL_INLINE void BilinearRgba8(const TextureLevel& lv, typename V<W>::F s, typename V<W>::F t,
+                                 typename V<W>::I mask, typename V<W>::F out[4]) {
+  using F = typename V<W>::F;
+  using I = typename V<W>::I;
+  using U = typename V<W>::U;
+  // TexelCoord: s * size, NaN -> 0, clamped to [-1e9, 1e9] (std::clamp's order of tests).
+  auto texel_coord = [](F x, float size) {
+    F u = x * size;
+    u = u == u ? u : F{} + 0.0f;
+    u = F{} + 1e9f < u ? F{} + 1e9f : u;
+    return u < -1e9f ? F{} - 1e9f : u;
+  };
+  const F u = texel_coord(s, float(lv.width)), v = texel_coord(t, float(lv.height));
+  const F fu = u - 0.5f, fv = v - 0.5f;
+  const F flu = FloorF<W>(fu), flv = FloorF<W>(fv);
+  const F a = fu - flu, b = fv - flv;
+  const I i0 = __builtin_convertvector(flu, I), j0 = __builtin_convertvector(flv, I);
+  const I mi = I{} + (lv.width - 1), mj = I{} + (lv.height - 1);
+  const I c0 = i0 & mi, c1 = (i0 + 1) & mi, r0 = (j0 & mj) * lv.width, r1 = ((j0 + 1) & mj) * lv.width;
+  const F w00 = (1 - a) * (1 - b), w10 = a * (1 - b), w01 = (1 - a) * b, w11 = a * b;
+  const auto* base = reinterpret_cast<const std::uint32_t*>(lv.data.data());
+  // Lanes outside the mask read texel 0 (always there) and are discarded below.
+  const I i00 = (r0 + c0) & mask, i10 = (r0 + c1) & mask, i01 = (r1 + c0) & mask, i11 = (r1 + c1) & mask;
+  U t00, t10, t01, t11;
+  Gather<W>(base, i00, t00);
+  Gather<W>(base, i10, t10);
+  Gather<W>(base, i01, t01);
+  Gather<W>(base, i11, t11);
+  for (int c = 0; c < 4; ++c) {
+    const int shift = 8 * c;
+    auto channel = [shift](U x) { return __builtin_convertvector((x >> shift) & 0xFFu, F); };
+    const F sum = w00 * channel(t00) + w10 * channel(t10) + w01 * channel(t01) + w11 * channel(t11);
+    out[c] = mask ? sum : out[c];
+  }
 }
 
-#if defined(__SSE2__) && (defined(__x86_64__) || defined(__i386__))
-__attribute__((target("avx2,sse4.1"))) void SampleRepeatQuadAvx2(const TextureView& v, const glm::vec2* uv,
-                                                                 const glm::vec2* dx, const glm::vec2* dy,
-                                                                 float bias, glm::vec4* out) {
-  const auto& levels = v.texture->levels[0];
-  const SamplerParams& p = v.texture->params;
-  const TextureLevel& base = levels[v.base];
-  const __m128 one = _mm_set1_ps(1.0f);
-  // Lambda(): tx = dx * size, ty = dy * size, rho^2 = max(dot(tx, tx), dot(ty, ty)).
-  const __m128 W = _mm_set1_ps(float(base.width)), H = _mm_set1_ps(float(base.height));
-  const __m128 txx = _mm_mul_ps(_mm_setr_ps(dx[0].x, dx[1].x, dx[2].x, dx[3].x), W);
-  const __m128 txy = _mm_mul_ps(_mm_setr_ps(dx[0].y, dx[1].y, dx[2].y, dx[3].y), H);
-  const __m128 tyx = _mm_mul_ps(_mm_setr_ps(dy[0].x, dy[1].x, dy[2].x, dy[3].x), W);
-  const __m128 tyy = _mm_mul_ps(_mm_setr_ps(dy[0].y, dy[1].y, dy[2].y, dy[3].y), H);
-  const __m128 dot_x = _mm_add_ps(_mm_mul_ps(txx, txx), _mm_mul_ps(txy, txy));
-  const __m128 dot_y = _mm_add_ps(_mm_mul_ps(tyx, tyx), _mm_mul_ps(tyy, tyy));
-  const __m128 rho2 = _mm_max_ps(dot_y, dot_x);  // std::max(dot_x, dot_y): dot_y if dot_x < dot_y, else dot_x
-  // PiecewiseLog2 for normal positive numbers: exponent + (1.mantissa - 1).
-  const __m128i bits = _mm_castps_si128(rho2);
-  const __m128i biased = _mm_srli_epi32(bits, 23);  // includes the sign bit: negative numbers are out of range
-  const __m128i normal = _mm_and_si128(_mm_cmpgt_epi32(biased, _mm_setzero_si128()),
-                                       _mm_cmplt_epi32(biased, _mm_set1_epi32(255)));
-  if (_mm_movemask_ps(_mm_castsi128_ps(normal)) != 0xF) return SampleRepeatQuadBaseline(v, uv, dx, dy, bias, out);
-  const __m128 m = _mm_castsi128_ps(
-      _mm_or_si128(_mm_and_si128(bits, _mm_set1_epi32(0x007FFFFF)), _mm_set1_epi32(0x3F800000)));
-  const __m128 log2 = _mm_add_ps(_mm_cvtepi32_ps(_mm_sub_epi32(biased, _mm_set1_epi32(127))), _mm_sub_ps(m, one));
+// Lambda() for W lanes; false for lanes whose rho^2 is not a normal positive float.
+template <int W>
+SOFTGL_INLINE typename V<W>::I LambdaLanes(const TextureView& view, const Textures::Lanes& c, int l0, float bias,
+                                           typename V<W>::F& lambda) {
+  using F = typename V<W>::F;
+  using I = typename V<W>::I;
+  const TextureLevel& base = view.texture->levels[0][view.base];
+  const float w = float(base.width), h = float(base.height);
+  const F txx = LoadF<W>(c.ds_dx + l0) * w, txy = LoadF<W>(c.dt_dx + l0) * h;
+  const F tyx = LoadF<W>(c.ds_dy + l0) * w, tyy = LoadF<W>(c.dt_dy + l0) * h;
+  const F dot_x = txx * txx + txy * txy, dot_y = tyx * tyx + tyy * tyy;
+  const F rho2 = dot_x < dot_y ? dot_y : dot_x;  // std::max(dot_x, dot_y)
+  I bits;
+  std::memcpy(&bits, &rho2, sizeof bits);
+  const I biased = (bits >> 23) & 0x1FF;  // the sign bit makes negative numbers out of range
+  const I normal = (biased > 0) & (biased < 255);
+  I m_bits = (bits & 0x007FFFFF) | 0x3F800000;
+  F m;
+  std::memcpy(&m, &m_bits, sizeof m);
+  const F log2 = __builtin_convertvector(biased - 127, F) + (m - 1.0f);
+  const SamplerParams& p = view.texture->params;
   const float b = std::clamp(p.lod_bias + bias, -16.0f, 16.0f);
-  __m128 lambda = _mm_add_ps(_mm_mul_ps(_mm_set1_ps(0.5f), log2), _mm_set1_ps(b));
-  lambda = _mm_and_ps(lambda, _mm_cmpord_ps(lambda, lambda));  // NaN -> 0
-  {  // std::clamp(lambda, min_lod, max_lod): lo if lambda < lo, else hi if hi < lambda, else lambda
-    const __m128 lo = _mm_set1_ps(p.min_lod), hi = _mm_set1_ps(p.max_lod);
-    __m128 r = _mm_blendv_ps(lambda, hi, _mm_cmplt_ps(hi, lambda));
-    lambda = _mm_blendv_ps(r, lo, _mm_cmplt_ps(lambda, lo));
-  }
-  // SampleRepeat(): the level (or the two levels and the weight between them) of each lane.
-  alignas(16) float lam[4];
-  _mm_store_ps(lam, lambda);
-  int level_a[4], level_b[4];
-  float f[4];
-  bool two[4];
-  for (int l = 0; l < 4; ++l) {
-    two[l] = false;
-    f[l] = 0.0f;
-    if (lam[l] <= 0.0f || v.fast == TextureView::Fast::kRepeatLinear) {
-      level_a[l] = level_b[l] = v.base;
-    } else if (float(v.base) + lam[l] >= float(v.q)) {
-      level_a[l] = level_b[l] = v.q;
-    } else {
-      const float fl = std::floor(lam[l]);
-      level_a[l] = v.base + int(fl);
-      level_b[l] = level_a[l] + 1;
-      f[l] = lam[l] - fl;
-      two[l] = true;
+  F lam = 0.5f * log2 + b;
+  lam = lam == lam ? lam : F{} + 0.0f;
+  const F lo = F{} + p.min_lod, hi = F{} + p.max_lod;
+  lam = lam < lo ? lo : (hi < lam ? hi : lam);  // std::clamp
+  lambda = lam;
+  return normal;
+}
+
+template <int W>
+SOFTGL_INLINE void SampleRepeatLanes(const TextureView& view, const Textures::Lanes& c, float bias,
+                                     float out[4][16]) {
+  using F = typename V<W>::F;
+  using I = typename V<W>::I;
+  const auto& levels = view.texture->levels[0];
+  const bool linear_only = view.fast == TextureView::Fast::kRepeatLinear;
+  for (int l0 = 0; l0 < 16; l0 += W) {
+    F lam;
+    const I normal = LambdaLanes<W>(view, c, l0, bias, lam);
+    // SampleRepeat's choice: one level (base or q) or two (d1, d1 + 1) with weight f.
+    const F fl = FloorF<W>(lam);
+    const I single_base = (lam <= 0.0f) | (I{} + (linear_only ? -1 : 0));
+    const I single_q = ~single_base & (F{} + float(view.base) + lam >= float(view.q));
+    const I two = ~single_base & ~single_q;
+    I level_a = __builtin_convertvector(fl, I) + view.base;
+    level_a = single_base ? I{} + view.base : (single_q ? I{} + view.q : level_a);
+    const F f = two ? lam - fl : F{} + 0.0f;
+    const F s = LoadF<W>(c.s + l0), t = LoadF<W>(c.t + l0);
+    F ra[4] = {}, rb[4] = {};
+    // Each level a lane needs, first and second, for the lanes that need it.
+    I pending = normal;
+    while (true) {
+      int first = -1;
+      for (int l = 0; l < W; ++l)
+        if (pending[l]) {
+          first = l;
+          break;
+        }
+      if (first < 0) break;
+      const int L = level_a[first];
+      const I mask = pending & (level_a == L);
+      BilinearRgba8<W>(levels[L], s, t, mask, ra);
+      const I second = mask & two;
+      for (int l = 0; l < W; ++l)
+        if (second[l]) {
+          BilinearRgba8<W>(levels[L + 1], s, t, second, rb);
+          break;
+        }
+      pending &= ~mask;
+    }
+    for (int ch = 0; ch < 4; ++ch) {
+      const F one = ra[ch];
+      const F lerp = (1.0f - f) * ra[ch] + f * rb[ch];
+      const F v = (two ? lerp : one) / 255.0f;
+      std::memcpy(&out[ch][l0], &v, sizeof v);
+    }
+    // Lanes the vector path does not take: one lane at a time.
+    for (int l = 0; l < W; ++l) {
+      if (normal[l]) continue;
+      const int lane = l0 + l;
+      const glm::vec2 dx(c.ds_dx[lane], c.dt_dx[lane]), dy(c.ds_dy[lane], c.dt_dy[lane]);
+      const glm::vec4 r = SampleRepeat(view, glm::vec2(c.s[lane], c.t[lane]), Lambda(view, dx, dy, bias)) / view.scale;
+      for (int ch = 0; ch < 4; ++ch) out[ch][lane] = r[ch];
     }
   }
-  const __m128 s = _mm_setr_ps(uv[0].x, uv[1].x, uv[2].x, uv[3].x), t = _mm_setr_ps(uv[0].y, uv[1].y, uv[2].y, uv[3].y);
-  glm::vec4 result[2][4];
-  for (int pass = 0; pass < 2; ++pass) {
-    const int* level = pass == 0 ? level_a : level_b;
-    if (pass == 1 && !(two[0] || two[1] || two[2] || two[3])) break;
-    const TextureLevel* lv[4] = {&levels[level[0]], &levels[level[1]], &levels[level[2]], &levels[level[3]]};
-    const __m128i wi = _mm_setr_epi32(lv[0]->width, lv[1]->width, lv[2]->width, lv[3]->width);
-    const __m128i hi = _mm_setr_epi32(lv[0]->height, lv[1]->height, lv[2]->height, lv[3]->height);
-    // TexelCoord(): s * float(size), NaN -> 0, clamped to [-1e9, 1e9] (std::clamp's order of tests); then
-    // BilinearRepeatPow2's arithmetic.
-    const __m128 lo = _mm_set1_ps(-1e9f), hi1 = _mm_set1_ps(1e9f);
-    __m128 u = _mm_mul_ps(s, _mm_cvtepi32_ps(wi));
-    u = _mm_and_ps(u, _mm_cmpord_ps(u, u));
-    u = _mm_blendv_ps(_mm_blendv_ps(u, hi1, _mm_cmplt_ps(hi1, u)), lo, _mm_cmplt_ps(u, lo));
-    __m128 vv = _mm_mul_ps(t, _mm_cvtepi32_ps(hi));
-    vv = _mm_and_ps(vv, _mm_cmpord_ps(vv, vv));
-    vv = _mm_blendv_ps(_mm_blendv_ps(vv, hi1, _mm_cmplt_ps(hi1, vv)), lo, _mm_cmplt_ps(vv, lo));
-    const __m128 fu = _mm_sub_ps(u, _mm_set1_ps(0.5f));
-    const __m128 fv = _mm_sub_ps(vv, _mm_set1_ps(0.5f));
-    const __m128 flu = _mm_floor_ps(fu), flv = _mm_floor_ps(fv);
-    const __m128i i0 = _mm_cvttps_epi32(flu), j0 = _mm_cvttps_epi32(flv);
-    const __m128 a = _mm_sub_ps(fu, flu), bb = _mm_sub_ps(fv, flv);
-    const __m128i mi = _mm_sub_epi32(wi, _mm_set1_epi32(1)), mj = _mm_sub_epi32(hi, _mm_set1_epi32(1));
-    alignas(16) std::int32_t c0[4], c1[4], r0[4], r1[4];
-    _mm_store_si128(reinterpret_cast<__m128i*>(c0), _mm_and_si128(i0, mi));
-    _mm_store_si128(reinterpret_cast<__m128i*>(c1), _mm_and_si128(_mm_add_epi32(i0, _mm_set1_epi32(1)), mi));
-    _mm_store_si128(reinterpret_cast<__m128i*>(r0), _mm_and_si128(j0, mj));
-    _mm_store_si128(reinterpret_cast<__m128i*>(r1), _mm_and_si128(_mm_add_epi32(j0, _mm_set1_epi32(1)), mj));
-    const __m128 one_a = _mm_sub_ps(one, a), one_b = _mm_sub_ps(one, bb);
-    alignas(16) float w00[4], w10[4], w01[4], w11[4];
-    _mm_store_ps(w00, _mm_mul_ps(one_a, one_b));
-    _mm_store_ps(w10, _mm_mul_ps(a, one_b));
-    _mm_store_ps(w01, _mm_mul_ps(one_a, bb));
-    _mm_store_ps(w11, _mm_mul_ps(a, bb));
-    for (int l = 0; l < 4; ++l) {
-      const float* texels = lv[l]->texels.data();
-      const std::size_t w = std::size_t(lv[l]->width);
-      const float* row0 = texels + std::size_t(r0[l]) * w * 4;
-      const float* row1 = texels + std::size_t(r1[l]) * w * 4;
-      __m128 sum = _mm_mul_ps(_mm_set1_ps(w00[l]), _mm_loadu_ps(row0 + std::size_t(c0[l]) * 4));
-      sum = _mm_add_ps(sum, _mm_mul_ps(_mm_set1_ps(w10[l]), _mm_loadu_ps(row0 + std::size_t(c1[l]) * 4)));
-      sum = _mm_add_ps(sum, _mm_mul_ps(_mm_set1_ps(w01[l]), _mm_loadu_ps(row1 + std::size_t(c0[l]) * 4)));
-      sum = _mm_add_ps(sum, _mm_mul_ps(_mm_set1_ps(w11[l]), _mm_loadu_ps(row1 + std::size_t(c1[l]) * 4)));
-      _mm_storeu_ps(&result[pass][l].x, sum);
-    }
-  }
-  for (int l = 0; l < 4; ++l)
-    out[l] = two[l] ? (1.0f - f[l]) * result[0][l] + f[l] * result[1][l] : result[0][l];
+}
+
+using SampleRepeatLanesFn = void (*)(const TextureView&, const Textures::Lanes&, float, float[4][16]);
+
+void SampleRepeatLanesBase(const TextureView& v, const Textures::Lanes& c, float bias, float out[4][16]) {
+  SampleRepeatLanes<4>(v, c, bias, out);
+}
+#if defined(SOFTGL_HAS_DISPATCH)
+SOFTGL_TARGET_AVX2 void SampleRepeatLanesAvx2(const TextureView& v, const Textures::Lanes& c, float bias,
+                                              float out[4][16]) {
+  SampleRepeatLanes<8>(v, c, bias, out);
+}
+SOFTGL_TARGET_AVX512 void SampleRepeatLanesAvx512(const TextureView& v, const Textures::Lanes& c, float bias,
+                                                  float out[4][16]) {
+  SampleRepeatLanes<16>(v, c, bias, out);
 }
 #endif
 
-using SampleRepeatQuadFn = void (*)(const TextureView&, const glm::vec2*, const glm::vec2*, const glm::vec2*, float,
-                                    glm::vec4*);
-
-SampleRepeatQuadFn ChooseSampleRepeatQuad() {
-#if defined(__SSE2__) && (defined(__x86_64__) || defined(__i386__))
-  if (detail::CpuSimdLevel() >= detail::SimdLevel::kAvx2) return SampleRepeatQuadAvx2;
+SampleRepeatLanesFn ChooseSampleRepeatLanes() {
+#if defined(SOFTGL_HAS_DISPATCH)
+  if (detail::CpuSimdLevel() == detail::SimdLevel::kAvx512) return SampleRepeatLanesAvx512;
+  if (detail::CpuSimdLevel() == detail::SimdLevel::kAvx2) return SampleRepeatLanesAvx2;
 #endif
-  return SampleRepeatQuadBaseline;
-}
-
-using SampleRepeatFn = glm::vec4 (*)(const TextureView&, glm::vec2, glm::vec2, glm::vec2, float);
-
-SampleRepeatFn ChooseSampleRepeat() {
-#if defined(__SSE2__) && (defined(__x86_64__) || defined(__i386__))
-  if (detail::CpuSimdLevel() >= detail::SimdLevel::kAvx2) return SampleRepeatAvx2;
-#endif
-  return SampleRepeatBaseline;
+  return SampleRepeatLanesBase;
 }
 
 }  // namespace
@@ -407,21 +422,27 @@ SampleRepeatFn ChooseSampleRepeat() {
 glm::vec4 Textures::Sample(int unit, glm::vec2 uv, glm::vec2 duv_dx, glm::vec2 duv_dy, float bias) const {
   const TextureView* v = Usable(unit_2d, unit);
   if (!v) return kMissing;
-  if (v->fast != TextureView::Fast::kNone) {
-    static const SampleRepeatFn sample_repeat = ChooseSampleRepeat();
-    return sample_repeat(*v, uv, duv_dx, duv_dy, bias);
-  }
-  return SampleFace(*v, 0, uv, Lambda(*v, duv_dx, duv_dy, bias), DepthCompare{});
+  const float lambda = Lambda(*v, duv_dx, duv_dy, bias);
+  if (v->fast != TextureView::Fast::kNone) return SampleRepeat(*v, uv, lambda) / v->scale;
+  return SampleFace(*v, 0, uv, lambda, DepthCompare{}) / v->scale;
 }
 
 void Textures::SampleQuad(int unit, const glm::vec2 uv[4], const glm::vec2 duv_dx[4], const glm::vec2 duv_dy[4],
                           float bias, glm::vec4 out[4]) const {
-  const TextureView* v = Usable(unit_2d, unit);
-  if (v && v->fast != TextureView::Fast::kNone) {
-    static const SampleRepeatQuadFn sample_quad = ChooseSampleRepeatQuad();
-    return sample_quad(*v, uv, duv_dx, duv_dy, bias, out);
-  }
   for (int l = 0; l < 4; ++l) out[l] = Sample(unit, uv[l], duv_dx[l], duv_dy[l], bias);
+}
+
+void Textures::SampleLanes(int unit, const Lanes& c, float bias, float out[4][16]) const {
+  const TextureView* v = Usable(unit_2d, unit);
+  if (v && v->fast != TextureView::Fast::kNone && v->layout == TexelLayout::kUnorm8x4) {
+    static const SampleRepeatLanesFn sample = ChooseSampleRepeatLanes();
+    return sample(*v, c, bias, out);
+  }
+  for (int l = 0; l < 16; ++l) {
+    const glm::vec4 r = Sample(unit, glm::vec2(c.s[l], c.t[l]), glm::vec2(c.ds_dx[l], c.dt_dx[l]),
+                               glm::vec2(c.ds_dy[l], c.dt_dy[l]), bias);
+    for (int ch = 0; ch < 4; ++ch) out[ch][l] = r[ch];
+  }
 }
 
 glm::vec4 Textures::SampleLod(int unit, glm::vec2 uv, float lod) const {
@@ -429,7 +450,14 @@ glm::vec4 Textures::SampleLod(int unit, glm::vec2 uv, float lod) const {
   if (!v) return kMissing;
   const SamplerParams& p = v->texture->params;
   const float lambda = std::clamp(lod + std::clamp(p.lod_bias, -16.0f, 16.0f), p.min_lod, p.max_lod);
-  return SampleFace(*v, 0, uv, std::isnan(lambda) ? 0.0f : lambda, DepthCompare{});
+  return SampleFace(*v, 0, uv, std::isnan(lambda) ? 0.0f : lambda, DepthCompare{}) / v->scale;
+}
+
+void Textures::SampleLodLanes(int unit, const Lanes& c, const float lod[16], float out[4][16]) const {
+  for (int l = 0; l < 16; ++l) {
+    const glm::vec4 r = SampleLod(unit, glm::vec2(c.s[l], c.t[l]), lod[l]);
+    for (int ch = 0; ch < 4; ++ch) out[ch][l] = r[ch];
+  }
 }
 
 glm::vec4 Textures::SampleCube(int unit, glm::vec3 dir, glm::vec3 ddir_dx, glm::vec3 ddir_dy, float bias) const {
@@ -442,7 +470,15 @@ glm::vec4 Textures::SampleCube(int unit, glm::vec3 dir, glm::vec3 ddir_dx, glm::
   // neighbour may point at another face: its coordinates must still be measured on this one).
   const glm::vec2 dx = FaceCoords(face, dir + ddir_dx, st_x) ? st_x - st : glm::vec2(0.0f);
   const glm::vec2 dy = FaceCoords(face, dir + ddir_dy, st_y) ? st_y - st : glm::vec2(0.0f);
-  return SampleFace(*v, face, st, Lambda(*v, dx, dy, bias), DepthCompare{});
+  return SampleFace(*v, face, st, Lambda(*v, dx, dy, bias), DepthCompare{}) / v->scale;
+}
+
+void Textures::SampleCubeLanes(int unit, const Lanes& c, float bias, float out[4][16]) const {
+  for (int l = 0; l < 16; ++l) {
+    const glm::vec4 r = SampleCube(unit, glm::vec3(c.s[l], c.t[l], c.r[l]), glm::vec3(c.ds_dx[l], c.dt_dx[l], c.dr_dx[l]),
+                                   glm::vec3(c.ds_dy[l], c.dt_dy[l], c.dr_dy[l]), bias);
+    for (int ch = 0; ch < 4; ++ch) out[ch][l] = r[ch];
+  }
 }
 
 glm::vec4 Textures::SampleCubeLod(int unit, glm::vec3 dir, float lod) const {
@@ -453,7 +489,14 @@ glm::vec4 Textures::SampleCubeLod(int unit, glm::vec3 dir, float lod) const {
   FaceCoords(face, dir, st);
   const SamplerParams& p = v->texture->params;
   const float lambda = std::clamp(lod + std::clamp(p.lod_bias, -16.0f, 16.0f), p.min_lod, p.max_lod);
-  return SampleFace(*v, face, st, std::isnan(lambda) ? 0.0f : lambda, DepthCompare{});
+  return SampleFace(*v, face, st, std::isnan(lambda) ? 0.0f : lambda, DepthCompare{}) / v->scale;
+}
+
+void Textures::SampleCubeLodLanes(int unit, const Lanes& c, const float lod[16], float out[4][16]) const {
+  for (int l = 0; l < 16; ++l) {
+    const glm::vec4 r = SampleCubeLod(unit, glm::vec3(c.s[l], c.t[l], c.r[l]), lod[l]);
+    for (int ch = 0; ch < 4; ++ch) out[ch][l] = r[ch];
+  }
 }
 
 float Textures::SampleShadow(int unit, glm::vec2 uv, float ref, glm::vec2 duv_dx, glm::vec2 duv_dy) const {
@@ -462,8 +505,14 @@ float Textures::SampleShadow(int unit, glm::vec2 uv, float ref, glm::vec2 duv_dx
   DepthCompare cmp;
   cmp.on = true;
   cmp.func = v->texture->params.compare_func;
-  cmp.ref = std::clamp(ref, 0.0f, 1.0f);  // depth textures hold [0, 1]
+  cmp.ref = std::isnan(ref) ? 0.0f : std::clamp(ref, 0.0f, 1.0f);  // depth textures hold [0, 1]
   return SampleFace(*v, 0, uv, Lambda(*v, duv_dx, duv_dy, 0.0f), cmp).r;
+}
+
+void Textures::SampleShadowLanes(int unit, const Lanes& c, float out[16]) const {
+  for (int l = 0; l < 16; ++l)
+    out[l] = SampleShadow(unit, glm::vec2(c.s[l], c.t[l]), c.r[l], glm::vec2(c.ds_dx[l], c.dt_dx[l]),
+                          glm::vec2(c.ds_dy[l], c.dt_dy[l]));
 }
 
 glm::ivec2 Textures::Size(int unit, int level) const {

@@ -5,6 +5,7 @@
 #include <cstring>
 
 #include "rasterizer.h"
+#include "simd.h"
 
 namespace softgl::detail {
 
@@ -15,6 +16,8 @@ DrawPacket& DrawPacket::operator=(const DrawPacket& other) {
   ops = other.ops;
   bounds = other.bounds;
   nvar = other.nvar;
+  interpolation = other.interpolation;
+  shader_depth = other.shader_depth;
   early_depth = other.early_depth;
   for (int k = 0; k < 2; ++k)
     for (int u = 0; u < kMaxTextureUnits; ++u) views[k][u] = other.views[k][u];
@@ -29,14 +32,12 @@ DrawPacket& DrawPacket::operator=(const DrawPacket& other) {
 namespace {
 
 bool SameBuffers(const RenderTarget& a, const RenderTarget& b) {
-  if (a.width != b.width || a.height != b.height || a.depth != b.depth || a.depth_stride != b.depth_stride ||
-      a.depth_pitch != b.depth_pitch || a.stencil != b.stencil)
+  if (a.width != b.width || a.height != b.height || a.depth != b.depth || a.depth_pitch != b.depth_pitch ||
+      a.stencil != b.stencil)
     return false;
   for (int i = 0; i < kMaxColorOutputs; ++i) {
     const ColorBuffer &x = a.color[i], &y = b.color[i];
-    if (x.rgba8 != y.rgba8 || x.texels != y.texels || x.normalized != y.normalized ||
-        x.components != y.components || x.pitch != y.pitch)
-      return false;
+    if (x.data != y.data || x.layout != y.layout || x.rgb_only != y.rgb_only || x.pitch != y.pitch) return false;
   }
   return true;
 }
@@ -45,24 +46,29 @@ Rect Intersect(const Rect& a, const Rect& b) {
   return Rect{std::max(a.x0, b.x0), std::max(a.y0, b.y0), std::min(a.x1, b.x1), std::min(a.y1, b.y1)};
 }
 
-// The fragment shader, then the per-fragment operations, on a full batch of quads.
+// The fragment shader, then the per-fragment operations, on a full batch of blocks.
 struct FragmentStage {
   const DrawPacket* draw;
   const RenderTarget* target;
+  int outputs;  // colour outputs the target keeps
+  int simd;
 
-  static void Run(void* user, QuadBuffer& quads) {
+  static void Run(void* user, BlockBuffer& blocks) {
     const auto* self = static_cast<const FragmentStage*>(user);
-    if (self->draw->early_depth && EarlyDepthTest(self->draw->ops, quads, *self->target) == 0) return;
-    QuadBatch batch;
-    batch.count = quads.count;
-    batch.varyings = quads.varyings;
-    batch.frag_coord = quads.frag_coord;
-    batch.front_facing = quads.front_facing;
-    batch.out = quads.out;
-    batch.live = quads.live;
+    if (self->draw->early_depth && EarlyDepthTest(self->draw->ops, blocks, *self->target) == 0) return;
+    BlockBatch batch;
+    batch.count = blocks.count;
+    batch.outputs = self->outputs;
+    batch.front_facing = blocks.front_facing;
+    batch.simd = self->simd;
+    batch.varyings = blocks.varyings;
+    batch.frag_coord = &blocks.frag_coord[0][0][0];
+    batch.live = blocks.live;
+    batch.color = &blocks.color[0][0][0][0];
+    batch.depth = &blocks.depth[0][0];
     batch.textures = &self->draw->textures;
-    self->draw->program->ShadeQuads(batch);
-    ApplyFragmentOps(self->draw->ops, quads, *self->target);
+    self->draw->program->ShadeBlocks(batch);
+    ApplyFragmentOps(self->draw->ops, blocks, self->draw->shader_depth, *self->target);
   }
 };
 
@@ -116,7 +122,11 @@ void Frame::Reset() {
 
 void Frame::RenderTile(int tile, TileScratch& scratch) const {
   const Rect rect = grid_.TileRect(tile);
-  QuadBuffer& quads = *scratch.quads;
+  BlockBuffer& blocks = *scratch.blocks;
+  int outputs = 1;
+  for (int o = 0; o < kMaxColorOutputs; ++o)
+    if (target_.color[o].Present()) outputs = o + 1;
+  const int simd = int(CpuSimdLevel());
   WindowVertex v[3];
   for (const Command& c : commands_) {
     if (!c.draw) {
@@ -132,22 +142,23 @@ void Frame::RenderTile(int tile, TileScratch& scratch) const {
     RasterTarget rt;
     rt.bounds = Intersect(draw.bounds, rect);
     rt.nvar = draw.nvar;
+    rt.interpolation = draw.interpolation;
     if (rt.bounds.Empty()) continue;
-    FragmentStage stage{&draw, &target_};
-    const QuadSink sink{&FragmentStage::Run, &stage};
-    quads.count = 0;
+    FragmentStage stage{&draw, &target_, outputs, simd};
+    const BlockSink sink{&FragmentStage::Run, &stage};
+    blocks.count = 0;
     for (const BinnedBatch* batch : draw.batches) {
       batch->ForEachInTile(tile, rect, [&](const BinnedPrimitive& p, const float* vertices) {
         for (int k = 0; k < int(p.kind); ++k) batch->Vertex(vertices, k, v[k]);
         rt.depth_offset = p.depth_offset;
         switch (p.kind) {
-          case PrimitiveKind::kTriangle: RasterizeTriangle(v[0], v[1], v[2], p.front_facing, rt, quads, sink); break;
-          case PrimitiveKind::kLine: RasterizeLine(v[0], v[1], p.front_facing, rt, quads, sink); break;
-          case PrimitiveKind::kPoint: RasterizePoint(v[0], p.point_size, p.front_facing, rt, quads, sink); break;
+          case PrimitiveKind::kTriangle: RasterizeTriangle(v[0], v[1], v[2], p.front_facing, rt, blocks, sink); break;
+          case PrimitiveKind::kLine: RasterizeLine(v[0], v[1], p.front_facing, rt, blocks, sink); break;
+          case PrimitiveKind::kPoint: RasterizePoint(v[0], p.point_size, p.front_facing, rt, blocks, sink); break;
         }
       });
     }
-    sink.Flush(quads);
+    sink.Flush(blocks);
   }
 }
 

@@ -29,6 +29,8 @@ struct DrawPacket {
   FragmentOpsState ops;
   Rect bounds;  // viewport, target and scissor
   int nvar = 0;
+  const Interpolation* interpolation = nullptr;  // the program's varying qualifiers (null: all smooth)
+  bool shader_depth = false;  // the program writes gl_FragDepth
   bool early_depth = false;  // EarlyDepthTestApplies
   TextureView views[2][kMaxTextureUnits];  // [2D, cube][unit]
   Textures textures;                       // points into views
@@ -52,7 +54,7 @@ struct ClearPacket {
 
 /// Memory one worker thread reuses from tile to tile.
 struct TileScratch {
-  std::unique_ptr<QuadBuffer> quads = std::make_unique<QuadBuffer>();
+  std::unique_ptr<BlockBuffer> blocks = std::make_unique<BlockBuffer>();
 };
 
 class Frame {

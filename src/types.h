@@ -6,8 +6,8 @@
 //   clipper       -> ClipPolygon (ClipVertex)
 //   divide/viewport -> WindowVertex
 //   culling       -> facing decision
-//   rasterizer    -> QuadBuffer (2x2 quads with coverage and interpolated varyings)
-//   fragment shader -> FragmentOut per lane
+//   rasterizer    -> BlockBuffer (4x4 blocks with coverage and interpolated varyings)
+//   fragment shader -> colours and depth per lane, in the BlockBuffer
 //   fragment ops  -> Framebuffer
 #pragma once
 
@@ -52,28 +52,32 @@ struct Rect {
   bool Empty() const { return x0 >= x1 || y0 >= y1; }
 };
 
-/// Rasterizer output: a batch of 2x2 quads ready for the fragment stage. Lane order within a quad:
-/// (x, y), (x+1, y), (x, y+1), (x+1, y+1), with (x, y) even.
-struct QuadBuffer {
-  static constexpr int kCapacity = 64;
+/// Rasterizer output: a batch of 4 x 4 fragment blocks ready for the fragment stage, with their coverage and
+/// interpolated values; and the fragment stage's outputs. Lane order in a block: row by row from the bottom,
+/// lane = (y - by) * 4 + (x - bx), with (bx, by) multiples of 4. Every lane is filled (helper lanes too), so that
+/// the fragment stage can take derivatives.
+struct BlockBuffer {
+  static constexpr int kCapacity = 16;
   int count = 0;
   int nvar = 0;
   bool front_facing = true;
-  int qx[kCapacity];
-  int qy[kCapacity];
-  std::uint8_t live[kCapacity * 4];           // coverage; cleared by discard
-  glm::vec4 frag_coord[kCapacity * 4];
-  float varyings[kCapacity * 4 * kMaxVaryingFloats];  // [lane][nvar], lanes packed with stride nvar
-  FragmentOut out[kCapacity * 4];
+  int bx[kCapacity];
+  int by[kCapacity];
+  std::uint32_t live[kCapacity];  // coverage bits; cleared by the early depth test and discard
+  alignas(64) float frag_coord[kCapacity][4][kLanes];                  // x, y, z, 1/w
+  alignas(64) float varyings[kCapacity * kBlockVaryingFloats];         // block b: [nvar][16] at b * kBlockVaryingFloats
+  alignas(64) float color[kCapacity][kMaxColorOutputs][4][kLanes];     // the shader's outputs
+  alignas(64) float depth[kCapacity][kLanes];                          // gl_FragDepth, when the shader writes it
+  float* Varyings(int b) { return varyings + std::size_t(b) * kBlockVaryingFloats; }
 };
 
-/// Where the rasterizer sends a full (or final) QuadBuffer: the fragment stage and per-fragment operations.
-struct QuadSink {
-  void (*flush)(void* user, QuadBuffer& quads) = nullptr;
+/// Where the rasterizer sends a full (or final) BlockBuffer: the fragment stage and per-fragment operations.
+struct BlockSink {
+  void (*flush)(void* user, BlockBuffer& blocks) = nullptr;
   void* user = nullptr;
-  void Flush(QuadBuffer& quads) const {
-    if (quads.count > 0) flush(user, quads);
-    quads.count = 0;
+  void Flush(BlockBuffer& blocks) const {
+    if (blocks.count > 0) flush(user, blocks);
+    blocks.count = 0;
   }
 };
 

@@ -85,21 +85,21 @@ inline glm::vec4 WindowToClip(float x, float y, int width, int height, float z =
   return glm::vec4(x / float(width) * 2.0f - 1.0f, y / float(height) * 2.0f - 1.0f, z, 1.0f);
 }
 
-/// Counts, per pixel, how many live fragments the rasterizer emits (collects QuadBuffers through a QuadSink).
+/// Counts, per pixel, how many live fragments the rasterizer emits (collects BlockBuffers through a BlockSink).
 struct CoverageCounter {
   int width, height;
   std::vector<int> hits;
   CoverageCounter(int w, int h) : width(w), height(h), hits(std::size_t(w) * std::size_t(h), 0) {}
-  static void Flush(void* user, softgl::detail::QuadBuffer& quads) {
+  static void Flush(void* user, softgl::detail::BlockBuffer& blocks) {
     auto* self = static_cast<CoverageCounter*>(user);
-    for (int q = 0; q < quads.count; ++q)
-      for (int lane = 0; lane < 4; ++lane)
-        if (quads.live[q * 4 + lane]) {
-          const int x = quads.qx[q] + (lane & 1), y = quads.qy[q] + (lane >> 1);
+    for (int b = 0; b < blocks.count; ++b)
+      for (int lane = 0; lane < softgl::kLanes; ++lane)
+        if ((blocks.live[b] >> lane) & 1u) {
+          const int x = blocks.bx[b] + (lane & 3), y = blocks.by[b] + (lane >> 2);
           if (x >= 0 && y >= 0 && x < self->width && y < self->height) ++self->hits[std::size_t(y) * self->width + x];
         }
   }
-  softgl::detail::QuadSink Sink() { return {&CoverageCounter::Flush, this}; }
+  softgl::detail::BlockSink Sink() { return {&CoverageCounter::Flush, this}; }
   int At(int x, int y) const { return hits[std::size_t(y) * width + x]; }
 };
 

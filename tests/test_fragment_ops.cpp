@@ -6,6 +6,7 @@
 #include <memory>
 #include <cmath>
 #include <limits>
+#include <vector>
 
 #include "fragment_ops.h"
 #include "helpers.h"
@@ -279,12 +280,14 @@ TEST_CASE("blending into the 8-bit framebuffer, by hand", "[fragment_ops][blend]
   Context gl(1, 1);
   gl.Enable(BLEND);
   gl.BlendFunc(SRC_ALPHA, ONE_MINUS_SRC_ALPHA);
-  // dst (0, 0, 255, 255) -> 0, 0, 1, 1; src (1, 0.5, 0, 0.5): 0.5*src + 0.5*dst = (0.5, 0.25, 0.5, 0.75).
-  CHECK(DrawOnePixel(gl, {0, 0, 1, 1}, {1, 0.5f, 0, 0.5f}) == std::array<int, 4>{128, 64, 128, 191});
+  // The operands are the buffer's 8 bits: src (1, 0.5, 0, 0.5) -> (255, 128, 0, 128), so the source alpha is
+  // 128/255 and one minus it 127/255; dst (0, 0, 255, 255). R 255*128/255 = 128, G 128*128/255 = 64.25 -> 64,
+  // B 255*127/255 = 127, A (128*128 + 255*127)/255 = 191.25 -> 191.
+  CHECK(DrawOnePixel(gl, {0, 0, 1, 1}, {1, 0.5f, 0, 0.5f}) == std::array<int, 4>{128, 64, 127, 191});
   gl.BlendFunc(ONE, ONE);  // saturates at 1
   CHECK(DrawOnePixel(gl, {0.6f, 0.2f, 0, 1}, {0.6f, 0.2f, 0, 0}) == std::array<int, 4>{255, 102, 0, 255});
-  gl.BlendEquation(FUNC_REVERSE_SUBTRACT);  // d - s, clamped at 0
-  CHECK(DrawOnePixel(gl, {0.6f, 0.2f, 0, 1}, {0.2f, 0.4f, 0, 0.5f}) == std::array<int, 4>{102, 0, 0, 128});
+  gl.BlendEquation(FUNC_REVERSE_SUBTRACT);  // d - s, clamped at 0; alpha 255 - 128 = 127
+  CHECK(DrawOnePixel(gl, {0.6f, 0.2f, 0, 1}, {0.2f, 0.4f, 0, 0.5f}) == std::array<int, 4>{102, 0, 0, 127});
   gl.BlendEquation(FUNC_ADD);
   gl.BlendColor(0.2f, 0.4f, 0.6f, 0.8f);
   gl.BlendFuncSeparate(CONSTANT_COLOR, ZERO, ZERO, CONSTANT_ALPHA);  // rgb = s * c; a = d * 0.8
@@ -513,9 +516,61 @@ TEST_CASE("a fragment shader may write depth (gl_FragDepth)", "[fragment_ops]") 
   CHECK(probe.gl.ReadDepth(3, 0) == 0.5f);
 }
 
-TEST_CASE("blending into 8-bit buffers writes the bytes of the per-channel float arithmetic", "[fragment_ops][blend]") {
-  // ApplyFragmentOps blends 8-bit pixels four channels at a time; the expected bytes come from Blend() and
-  // FloatToUnorm8 one channel at a time, for every factor pair and equation, with colour masks.
+namespace {
+
+// OpenGL's blend on 8-bit operands (the fragment colour converted to the buffer's 8 bits, like the destination and
+// the constant colour), evaluated in double on the values k / 255 and rounded once: the reference the 8-bit path
+// must match byte for byte.
+std::uint8_t ReferenceBlend8(const detail::BlendState& b, int channel, const std::uint8_t s8[4],
+                             const std::uint8_t d8[4]) {
+  double s[4], d[4], c[4];
+  for (int i = 0; i < 4; ++i) {
+    s[i] = s8[i] / 255.0;
+    d[i] = d8[i] / 255.0;
+    c[i] = FloatToUnorm8(b.color[i]) / 255.0;
+  }
+  const bool alpha = channel == 3;
+  auto factor = [&](Enum f) -> double {
+    const int i = channel;
+    switch (f) {
+      case ZERO: return 0.0;
+      case ONE: return 1.0;
+      case SRC_COLOR: return s[i];
+      case ONE_MINUS_SRC_COLOR: return 1.0 - s[i];
+      case DST_COLOR: return d[i];
+      case ONE_MINUS_DST_COLOR: return 1.0 - d[i];
+      case SRC_ALPHA: return s[3];
+      case ONE_MINUS_SRC_ALPHA: return 1.0 - s[3];
+      case DST_ALPHA: return d[3];
+      case ONE_MINUS_DST_ALPHA: return 1.0 - d[3];
+      case CONSTANT_COLOR: return c[i];
+      case ONE_MINUS_CONSTANT_COLOR: return 1.0 - c[i];
+      case CONSTANT_ALPHA: return c[3];
+      case ONE_MINUS_CONSTANT_ALPHA: return 1.0 - c[3];
+      case SRC_ALPHA_SATURATE: return alpha ? 1.0 : std::min(s[3], 1.0 - d[3]);
+      default: return 0.0;
+    }
+  };
+  const Enum eq = alpha ? b.eq_alpha : b.eq_rgb;
+  const double sf = factor(alpha ? b.src_alpha : b.src_rgb), df = factor(alpha ? b.dst_alpha : b.dst_rgb);
+  double r;
+  switch (eq) {
+    case FUNC_SUBTRACT: r = s[channel] * sf - d[channel] * df; break;
+    case FUNC_REVERSE_SUBTRACT: r = d[channel] * df - s[channel] * sf; break;
+    case MIN: r = std::min(s[channel], d[channel]); break;
+    case MAX: r = std::max(s[channel], d[channel]); break;
+    default: r = s[channel] * sf + d[channel] * df; break;
+  }
+  return std::uint8_t(std::lround(std::clamp(r, 0.0, 1.0) * 255.0));  // never a tie: 255 * r is k / 255
+}
+
+}  // namespace
+
+TEST_CASE("blending into 8-bit buffers is OpenGL's formula on the 8-bit operands, correctly rounded",
+          "[fragment_ops][blend]") {
+  // Four 4x4 blocks into an 8x8 RGBA8 target: the wide path (one 8-bit colour buffer, blocks inside the target),
+  // and again with a second colour buffer present, which takes the lane-by-lane path for both. Every factor pair
+  // and equation, random colours (out of range and NaN included), random colour masks.
   const Enum factors[] = {ZERO, ONE, SRC_COLOR, ONE_MINUS_SRC_COLOR, DST_COLOR, ONE_MINUS_DST_COLOR, SRC_ALPHA,
                           ONE_MINUS_SRC_ALPHA, DST_ALPHA, ONE_MINUS_DST_ALPHA, CONSTANT_COLOR,
                           ONE_MINUS_CONSTANT_COLOR, CONSTANT_ALPHA, ONE_MINUS_CONSTANT_ALPHA, SRC_ALPHA_SATURATE};
@@ -525,63 +580,64 @@ TEST_CASE("blending into 8-bit buffers writes the bytes of the per-channel float
     seed = seed * 1664525u + 1013904223u;
     return seed >> 8;
   };
-  std::vector<std::uint8_t> pixels(8 * 2 * 4);
-  detail::RenderTarget target;
-  target.width = 8;
-  target.height = 2;
-  target.color[0].rgba8 = pixels.data();
-  target.color[0].pitch = 8;
-  detail::QuadBuffer quads;
+  constexpr int kSize = 8;
+  std::vector<std::uint8_t> pixels(kSize * kSize * 4), second(kSize * kSize * 4);
+  auto blocks = std::make_unique<detail::BlockBuffer>();
   int checked = 0;
-  for (Enum src : factors)
-    for (Enum dst : factors)
-      for (Enum eq : equations) {
-        detail::FragmentOpsState state;
-        state.blend.enabled = true;
-        state.blend.src_rgb = src;
-        state.blend.dst_rgb = dst;
-        state.blend.src_alpha = dst;  // alpha uses the other pair, and another equation
-        state.blend.dst_alpha = src;
-        state.blend.eq_rgb = eq;
-        state.blend.eq_alpha = equations[(int(next()) % 5)];
-        state.blend.color = glm::vec4(0.3f, 1.2f, -0.1f, 0.55f);
-        for (int c = 0; c < 4; ++c) state.color_mask[c] = (next() % 5) != 0;
-        quads.count = 4;
-        std::vector<std::uint8_t> before(pixels.size());
-        for (auto& b : pixels) b = std::uint8_t(next());
-        before = pixels;
-        for (int q = 0; q < 4; ++q) {
-          quads.qx[q] = 2 * q;
-          quads.qy[q] = 0;
-          for (int lane = 0; lane < 4; ++lane) {
-            quads.live[q * 4 + lane] = 1;
-            glm::vec4& color = quads.out[q * 4 + lane].color[0];
-            for (int c = 0; c < 4; ++c) color[c] = float(int(next() % 1400) - 200) / 1000.0f;  // [-0.2, 1.2)
+  for (const bool two_buffers : {false, true}) {
+    detail::RenderTarget target;
+    target.width = target.height = kSize;
+    target.color[0].data = pixels.data();
+    target.color[0].layout = detail::TexelLayout::kUnorm8x4;
+    target.color[0].pitch = kSize;
+    if (two_buffers) target.color[1] = detail::ColorBuffer{second.data(), detail::TexelLayout::kUnorm8x4, false, kSize};
+    for (Enum src : factors)
+      for (Enum dst : factors)
+        for (Enum eq : equations) {
+          detail::FragmentOpsState state;
+          state.blend.enabled = true;
+          state.blend.src_rgb = src;
+          state.blend.dst_rgb = dst;
+          state.blend.src_alpha = dst;  // alpha uses the other pair, and another equation
+          state.blend.dst_alpha = src;
+          state.blend.eq_rgb = eq;
+          state.blend.eq_alpha = equations[(int(next()) % 5)];
+          state.blend.color = glm::vec4(0.3f, 1.2f, -0.1f, 0.55f);
+          for (int c = 0; c < 4; ++c) state.color_mask[c] = (next() % 5) != 0;
+          for (auto& v : pixels) v = std::uint8_t(next());
+          const std::vector<std::uint8_t> before = pixels;
+          blocks->count = 4;
+          for (int b = 0; b < 4; ++b) {
+            blocks->bx[b] = (b & 1) * 4;
+            blocks->by[b] = (b >> 1) * 4;
+            blocks->live[b] = 0xFFFFu;
+            for (int o = 0; o < 2; ++o)
+              for (int c = 0; c < 4; ++c)
+                for (int l = 0; l < softgl::kLanes; ++l)
+                  blocks->color[b][o][c][l] = float(int(next() % 1400) - 200) / 1000.0f;  // [-0.2, 1.2)
           }
-        }
-        quads.out[5].color[0].g = std::numeric_limits<float>::quiet_NaN();
-        detail::ApplyFragmentOps(state, quads, target);
-        for (int q = 0; q < 4; ++q)
-          for (int lane = 0; lane < 4; ++lane) {
-            const int x = 2 * q + (lane & 1), y = lane >> 1;
-            const std::size_t i = (std::size_t(y) * 8 + std::size_t(x)) * 4;
-            glm::vec4 s = quads.out[q * 4 + lane].color[0];
-            for (int c = 0; c < 4; ++c)
-              if (std::isnan(s[c])) s[c] = 0.0f;
-            s = glm::clamp(s, 0.0f, 1.0f);
-            const glm::vec4 d = glm::vec4(before[i], before[i + 1], before[i + 2], before[i + 3]) / 255.0f;
-            const glm::vec4 blended = detail::Blend(state.blend, s, d);
-            for (int c = 0; c < 4; ++c) {
-              const std::uint8_t want = state.color_mask[c] ? FloatToUnorm8(blended[c]) : before[i + std::size_t(c)];
-              if (pixels[i + std::size_t(c)] != want) {
-                INFO("src 0x" << std::hex << src << " dst 0x" << dst << " eq 0x" << eq << std::dec << " channel " << c);
-                CHECK(int(pixels[i + std::size_t(c)]) == int(want));
+          blocks->color[1][0][1][5] = std::numeric_limits<float>::quiet_NaN();
+          detail::ApplyFragmentOps(state, *blocks, false, target);
+          for (int b = 0; b < 4; ++b)
+            for (int l = 0; l < softgl::kLanes; ++l) {
+              const int x = blocks->bx[b] + (l & 3), y = blocks->by[b] + (l >> 2);
+              const std::size_t i = (std::size_t(y) * kSize + std::size_t(x)) * 4;
+              std::uint8_t s8[4];
+              for (int c = 0; c < 4; ++c) s8[c] = FloatToUnorm8(blocks->color[b][0][c][l]);  // NaN reads 0
+              for (int c = 0; c < 4; ++c) {
+                const std::uint8_t want =
+                    state.color_mask[c] ? ReferenceBlend8(state.blend, c, s8, &before[i]) : before[i + std::size_t(c)];
+                if (pixels[i + std::size_t(c)] != want) {
+                  INFO("src 0x" << std::hex << src << " dst 0x" << dst << " eq 0x" << eq << std::dec << " channel "
+                                << c << " two buffers " << two_buffers);
+                  CHECK(int(pixels[i + std::size_t(c)]) == int(want));
+                }
+                ++checked;
               }
-              ++checked;
             }
-          }
-      }
-  CHECK(checked == 15 * 15 * 5 * 16 * 4);
+        }
+  }
+  CHECK(checked == 2 * 15 * 15 * 5 * 64 * 4);
 }
 
 namespace {

@@ -1,6 +1,7 @@
 // Rasterization: the fill rule (no gaps, no double hits, Mesa's tie convention), bounds, lines and points.
 #include <catch2/catch.hpp>
 
+#include <memory>
 #include <random>
 #include <string>
 
@@ -20,23 +21,23 @@ WindowVertex W(float x, float y) {
 
 struct Raster {
   CoverageCounter counter;
-  QuadBuffer quads;
+  std::unique_ptr<BlockBuffer> blocks = std::make_unique<BlockBuffer>();
   RasterTarget target;
   explicit Raster(int w, int h) : counter(w, h) { target.bounds = Rect{0, 0, w, h}; }
   void Tri(glm::vec2 a, glm::vec2 b, glm::vec2 c) {
-    const QuadSink sink = counter.Sink();
-    RasterizeTriangle(W(a.x, a.y), W(b.x, b.y), W(c.x, c.y), true, target, quads, sink);
-    sink.Flush(quads);
+    const BlockSink sink = counter.Sink();
+    RasterizeTriangle(W(a.x, a.y), W(b.x, b.y), W(c.x, c.y), true, target, *blocks, sink);
+    sink.Flush(*blocks);
   }
   void Line(glm::vec2 a, glm::vec2 b) {
-    const QuadSink sink = counter.Sink();
-    RasterizeLine(W(a.x, a.y), W(b.x, b.y), true, target, quads, sink);
-    sink.Flush(quads);
+    const BlockSink sink = counter.Sink();
+    RasterizeLine(W(a.x, a.y), W(b.x, b.y), true, target, *blocks, sink);
+    sink.Flush(*blocks);
   }
   void Point(glm::vec2 p, float size) {
-    const QuadSink sink = counter.Sink();
-    RasterizePoint(W(p.x, p.y), size, true, target, quads, sink);
-    sink.Flush(quads);
+    const BlockSink sink = counter.Sink();
+    RasterizePoint(W(p.x, p.y), size, true, target, *blocks, sink);
+    sink.Flush(*blocks);
   }
   // Rows top (high y) first, '#' for a hit, as the rows would read on screen.
   std::string Picture() const {
@@ -256,18 +257,21 @@ TEST_CASE("lines: varyings follow OpenGL's projection parameter", "[rasterizer]"
   b.var[0] = 1.0f;
   struct Sink {
     std::vector<std::pair<glm::vec2, float>> values;
-    static void Flush(void* user, QuadBuffer& q) {
-      for (int i = 0; i < q.count * 4; ++i)
-        if (q.live[i]) static_cast<Sink*>(user)->values.push_back({glm::vec2(q.frag_coord[i]), q.varyings[i * q.nvar]});
+    static void Flush(void* user, BlockBuffer& q) {
+      for (int b = 0; b < q.count; ++b)
+        for (int l = 0; l < softgl::kLanes; ++l)
+          if ((q.live[b] >> l) & 1u)
+            static_cast<Sink*>(user)->values.push_back(
+                {glm::vec2(q.frag_coord[b][0][l], q.frag_coord[b][1][l]), q.Varyings(b)[l]});
     }
   } collected;
-  QuadBuffer quads;
+  auto blocks = std::make_unique<BlockBuffer>();
   RasterTarget target;
   target.bounds = Rect{0, 0, 32, 32};
   target.nvar = 1;
-  const QuadSink sink{&Sink::Flush, &collected};
-  RasterizeLine(a, b, true, target, quads, sink);
-  sink.Flush(quads);
+  const BlockSink sink{&Sink::Flush, &collected};
+  RasterizeLine(a, b, true, target, *blocks, sink);
+  sink.Flush(*blocks);
   REQUIRE(collected.values.size() == 20);
   for (const auto& [p, value] : collected.values) {
     const glm::vec2 d(20.0f, 12.0f);

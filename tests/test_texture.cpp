@@ -25,15 +25,9 @@ TextureObject MakeTexture(int w, int h, F f, Enum format = RGBA32F) {
   TextureObject t;
   t.target = TEXTURE_2D;
   auto& l = t.levels[0][0];
-  l.format = format;
-  l.width = w;
-  l.height = h;
-  l.texels.resize(std::size_t(w) * h * 4);
+  l.Allocate(format, w, h);
   for (int j = 0; j < h; ++j)
-    for (int i = 0; i < w; ++i) {
-      const glm::vec4 v = f(i, j);
-      for (int c = 0; c < 4; ++c) l.texels[(std::size_t(j) * w + i) * 4 + c] = v[c];
-    }
+    for (int i = 0; i < w; ++i) detail::StoreTexel(l, i, j, f(i, j));
   t.params.min_filter = NEAREST;
   t.params.mag_filter = NEAREST;
   return t;
@@ -155,9 +149,9 @@ TEST_CASE("the level of detail comes from the derivatives, and selects levels as
   t.target = TEXTURE_2D;
   for (int k = 0; k < 5; ++k) {
     auto& l = t.levels[0][k];
-    l.format = RGBA32F;
-    l.width = l.height = 16 >> k;
-    l.texels.assign(std::size_t(l.width) * l.height * 4, float(k));
+    l.Allocate(RGBA32F, 16 >> k, 16 >> k);
+    for (int j = 0; j < l.height; ++j)
+      for (int i = 0; i < l.width; ++i) detail::StoreTexel(l, i, j, glm::vec4(float(k)));
   }
   struct Row {
     Enum min_filter;
@@ -233,12 +227,10 @@ TEST_CASE("cube maps choose the face of the major axis", "[texture]") {
   t.target = TEXTURE_CUBE_MAP;
   for (int f = 0; f < 6; ++f) {
     auto& l = t.levels[f][0];
-    l.format = RGBA32F;
-    l.width = l.height = 2;
+    l.Allocate(RGBA32F, 2, 2);
     // Face f: texel (i, j) = f * 10 + i + 2 j.
     for (int j = 0; j < 2; ++j)
-      for (int i = 0; i < 2; ++i)
-        for (float v : {float(f * 10 + i + 2 * j), 0.0f, 0.0f, 1.0f}) l.texels.push_back(v);
+      for (int i = 0; i < 2; ++i) detail::StoreTexel(l, i, j, glm::vec4(float(f * 10 + i + 2 * j), 0.0f, 0.0f, 1.0f));
   }
   t.params.min_filter = t.params.mag_filter = NEAREST;
   TextureView view = detail::MakeView(t);

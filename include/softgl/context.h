@@ -217,6 +217,10 @@ class Context {
   void PolygonMode(Enum face, Enum mode);
   /// Point diameter in pixels when PROGRAM_POINT_SIZE is disabled. size <= 0: INVALID_VALUE.
   void PointSize(float size);
+  /// Which vertex of each primitive gives the value of flat varyings (Flat<> in shader.h): FIRST_VERTEX_CONVENTION
+  /// or LAST_VERTEX_CONVENTION (the default), as OpenGL 4.6's table 13.2 defines them per mode. Other values:
+  /// INVALID_ENUM.
+  void ProvokingVertex(Enum mode);
   /// The depth comparison: NEVER, LESS (default), EQUAL, LEQUAL, GREATER, NOTEQUAL, GEQUAL, ALWAYS.
   void DepthFunc(Enum func);
   /// Whether depth is written when the depth test is enabled (and by Clear).

@@ -47,6 +47,10 @@ inline constexpr Enum TRIANGLES = 0x0004;
 inline constexpr Enum TRIANGLE_STRIP = 0x0005;
 inline constexpr Enum TRIANGLE_FAN = 0x0006;
 
+// Provoking vertex conventions (ProvokingVertex): which vertex of a primitive gives flat varyings.
+inline constexpr Enum FIRST_VERTEX_CONVENTION = 0x8E4D;
+inline constexpr Enum LAST_VERTEX_CONVENTION = 0x8E4E;
+
 // Clear bits.
 inline constexpr Bitfield DEPTH_BUFFER_BIT = 0x00000100;
 inline constexpr Bitfield STENCIL_BUFFER_BIT = 0x00000400;

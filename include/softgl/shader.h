@@ -1,26 +1,31 @@
 // softgl/shader.h — the programmable stages: write a shader by subclassing softgl::Shader.
 //
-// A shader is a C++ class. Its uniforms are ordinary members; its varyings are a plain struct of floats and GLM
-// float vectors that the vertex stage writes and the fragment stage reads, interpolated perspective-correctly.
+// A shader is a C++ class. Its uniforms are ordinary members; its varyings are a plain struct that the vertex stage
+// writes and the fragment stage reads, interpolated perspective-correctly (or as the qualifiers Flat<> and
+// NoPerspective<> say). Each stage is written once, in code that reads like GLSL, and softgl runs it on 16 lanes at
+// a time: 16 vertices, or a 4 x 4 block of fragments, with the types of softgl/lanes.h:
 //
-//     struct Vary { glm::vec3 color; };
+//     struct Vary { softgl::vec3 color; };
 //     struct ColorShader : softgl::Shader<ColorShader, Vary> {
-//       glm::mat4 mvp{1.0f};                                   // a uniform
-//       void Vertex(const softgl::VertexIn& in, softgl::VertexOut<Vary>& out) const {
-//         out.position = mvp * in.attrib[0];                   // gl_Position, clip space
-//         out.varyings.color = glm::vec3(in.attrib[1]);
+//       glm::mat4 mvp{1.0f};                                       // a uniform
+//       void Vertex(const softgl::VertexLanes& in, softgl::VertexLanesOut<Vary>& out) const {
+//         out.position = mvp * in.attrib[0];                       // gl_Position, clip space
+//         out.varyings.color = softgl::vec3(in.attrib[1]);
 //       }
-//       bool Fragment(const softgl::FragmentIn<Vary>& in, softgl::FragmentOut& out) const {
-//         out.color[0] = glm::vec4(in.varyings.color, 1.0f);   // return false to discard
-//         return true;
+//       void Fragment(const softgl::FragmentLanes<Vary>& in, softgl::FragmentLanesOut& out) const {
+//         out.color[0] = softgl::vec4(in.varyings.color, 1.0f);
+//         out.Discard(in.varyings.color.x > 0.9f);                 // per lane, as GLSL's discard
 //       }
 //     };
 //
-// The pipeline calls a shader through softgl::Program, once per batch of vertices and once per batch of 2x2
-// fragment quads; inside a batch, Shader<> calls your Vertex() and Fragment() directly (no virtual call per vertex
-// or fragment), so the compiler can inline them. A quad always holds the four fragments of an aligned 2x2 pixel
-// block; lanes not covered by the primitive are "helper" lanes whose varyings are still interpolated, so that
-// FragmentIn::dFdx / dFdy give screen-space derivatives, as in GLSL.
+// softgl compiles the two stages for SSE2, AVX2 and AVX-512 and runs the version the processor allows (4, 8 or 16
+// lanes per instruction); each lane computes what the same code would compute for one vertex or fragment. Branches
+// that differ between lanes are written with select(), which computes both sides; `if (any(c))` skips work that no
+// lane needs.
+//
+// The scalar form of softgl 0.1, one vertex or fragment per call, still works: a shader whose Vertex takes a
+// VertexIn and whose Fragment takes a FragmentIn (and whose varyings are floats and GLM vectors) is run lane by
+// lane, with the same results and the speed of scalar code.
 //
 // Vertex() and Fragment() run on the context's worker threads, several at once on the same shader object: they
 // must only read the shader's members. The vertex stage runs during the draw call; the fragment stage runs later,
@@ -30,6 +35,7 @@
 
 #include <softgl/config.h>
 
+#include <concepts>
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
@@ -38,18 +44,186 @@
 #include <type_traits>
 
 #include <glm/glm.hpp>
+#include <softgl/lanes.h>
 #include <softgl/texture.h>
 
 namespace softgl {
 
 /// Number of vertex attribute locations (GL_MAX_VERTEX_ATTRIBS).
 inline constexpr int kMaxVertexAttribs = 16;
-/// Largest varyings struct, in floats: 16 vec4 (GL_MAX_VARYING_COMPONENTS = 64).
+/// Largest varyings struct, in floats per vertex: 16 vec4 (GL_MAX_VARYING_COMPONENTS = 64).
 inline constexpr int kMaxVaryingFloats = 64;
 /// Number of colour outputs a fragment shader may write (color[0] goes to the default framebuffer).
 inline constexpr int kMaxColorOutputs = 4;
 
-/// What the vertex stage reads: the fetched attributes of one vertex.
+// ---- Interpolation qualifiers ---------------------------------------------------------------------------------
+
+/// How a varying's floats are interpolated across a primitive (GLSL's qualifiers).
+enum class Interpolation : std::uint8_t {
+  kSmooth = 0,         ///< perspective-correct (the default)
+  kNoPerspective = 1,  ///< linear in window space
+  kFlat = 2,           ///< the provoking vertex's value for the whole primitive (see Context::ProvokingVertex)
+};
+
+namespace shader_detail {
+// A default-constructed Flat<> or NoPerspective<> member fills its floats with one of these NaN payloads, which is
+// how softgl reads the qualifiers of a varyings struct (once per shader class): no user value can carry them.
+inline constexpr std::uint32_t kFlatBits = 0x7FA5F1A7u;
+inline constexpr std::uint32_t kNoPerspectiveBits = 0x7FA5A0E5u;
+template <class T>
+void Mark(T* object, std::uint32_t bits) {
+  static_assert(sizeof(T) % sizeof(float) == 0, "interpolation qualifiers take float types");
+  unsigned char* p = reinterpret_cast<unsigned char*>(object);
+  for (std::size_t i = 0; i < sizeof(T); i += sizeof(float)) std::memcpy(p + i, &bits, sizeof bits);
+}
+}  // namespace shader_detail
+
+/// A varying that is not interpolated: every fragment of a primitive reads the provoking vertex's value (GLSL's
+/// `flat`). T is a vector or lane type: Flat<Float>, Flat<vec3> (wide shaders), Flat<glm::vec3> (scalar form).
+template <class T>
+struct Flat : T {
+  Flat() { shader_detail::Mark(static_cast<T*>(this), shader_detail::kFlatBits); }
+  Flat(const T& v) : T(v) {}
+  using T::T;
+  Flat& operator=(const T& v) {
+    T::operator=(v);
+    return *this;
+  }
+};
+
+/// A varying interpolated linearly in window space, without perspective correction (GLSL's `noperspective`).
+template <class T>
+struct NoPerspective : T {
+  NoPerspective() { shader_detail::Mark(static_cast<T*>(this), shader_detail::kNoPerspectiveBits); }
+  NoPerspective(const T& v) : T(v) {}
+  using T::T;
+  NoPerspective& operator=(const T& v) {
+    T::operator=(v);
+    return *this;
+  }
+};
+
+// ---- The wide form: 16 lanes per call ------------------------------------------------------------------------------
+
+namespace shader_detail {
+// Coordinates (and derivatives) of 16 lanes for the Textures::*Lanes calls, and their RGBA results as a vec4.
+inline Textures::Lanes Coords(const Float& s, const Float& t, const Float& r = 0.0f) {
+  Textures::Lanes c;
+  s.Store(c.s);
+  t.Store(c.t);
+  r.Store(c.r);
+  return c;
+}
+inline void Derivatives(Textures::Lanes& c, const vec3& dx, const vec3& dy) {
+  dx.x.Store(c.ds_dx);
+  dx.y.Store(c.dt_dx);
+  dx.z.Store(c.dr_dx);
+  dy.x.Store(c.ds_dy);
+  dy.y.Store(c.dt_dy);
+  dy.z.Store(c.dr_dy);
+}
+inline vec4 Rgba(const float (&out)[4][kLanes]) {
+  return vec4(Float::Load(out[0]), Float::Load(out[1]), Float::Load(out[2]), Float::Load(out[3]));
+}
+// textureLod for 2D (cube = false) or cube maps.
+inline vec4 Lod(const Textures* textures, int unit, const Textures::Lanes& c, const Float& lod, bool cube) {
+  float l[kLanes], out[4][kLanes];
+  lod.Store(l);
+  if (cube) textures->SampleCubeLodLanes(unit, c, l, out);
+  else textures->SampleLodLanes(unit, c, l, out);
+  return Rgba(out);
+}
+}  // namespace shader_detail
+
+/// What a wide vertex stage reads: the attributes of 16 vertices.
+struct VertexLanes {
+  /// attrib[i]: attribute location i, converted to float as OpenGL does (normalized or not); missing components
+  /// read (0, 0, 0, 1); a disabled attribute reads its current value (VertexAttrib4f), by default (0, 0, 0, 1).
+  vec4 attrib[kMaxVertexAttribs];
+  Int vertex_id;  ///< gl_VertexID: the index of each vertex (the element value for DrawElement)
+  const Textures* textures = nullptr;  ///< the textures bound for this draw
+
+  /// textureLod(sampler2D, uv, lod) (the vertex stage has no derivatives).
+  vec4 TextureLod(int unit, const vec2& uv, Float lod) const {
+    return shader_detail::Lod(textures, unit, shader_detail::Coords(uv.x, uv.y), lod, false);
+  }
+  /// textureLod(samplerCube, dir, lod).
+  vec4 TextureCubeLod(int unit, const vec3& dir, Float lod) const {
+    return shader_detail::Lod(textures, unit, shader_detail::Coords(dir.x, dir.y, dir.z), lod, true);
+  }
+};
+
+/// What a wide vertex stage writes for its 16 vertices.
+template <class Varyings>
+struct VertexLanesOut {
+  vec4 position = vec4(0.0f, 0.0f, 0.0f, 1.0f);  ///< gl_Position, in clip space
+  Float point_size = 1.0f;  ///< gl_PointSize, used when PROGRAM_POINT_SIZE is enabled
+  Varyings varyings{};      ///< interpolated across the primitive for the fragment stage
+};
+
+/// What a wide fragment stage reads: a 4 x 4 block of fragments of one primitive, lane = (y % 4) * 4 + x % 4.
+template <class Varyings>
+struct FragmentLanes {
+  Varyings varyings;   ///< interpolated varyings, per lane
+  vec4 frag_coord;     ///< gl_FragCoord: window x, y (pixel centre at +0.5), depth z, and 1/w
+  bool front_facing;   ///< gl_FrontFacing (one primitive per block)
+  Bool helper;         ///< gl_HelperInvocation: lanes outside the primitive, run for derivatives, never written
+  const Textures* textures;  ///< the textures bound for this draw
+
+  /// texture(sampler2D, uv): the level of detail from uv's derivatives across the block (implicit, as in GLSL).
+  vec4 Texture(int unit, const vec2& uv, float bias = 0.0f) const {
+    return TextureGrad(unit, uv, dFdx(uv), dFdy(uv), bias);
+  }
+  /// textureGrad(sampler2D, uv, dPdx, dPdy), with a bias added to the level of detail.
+  vec4 TextureGrad(int unit, const vec2& uv, const vec2& duv_dx, const vec2& duv_dy, float bias = 0.0f) const {
+    Textures::Lanes c = shader_detail::Coords(uv.x, uv.y);
+    shader_detail::Derivatives(c, vec3(duv_dx, 0.0f), vec3(duv_dy, 0.0f));
+    float out[4][kLanes];
+    textures->SampleLanes(unit, c, bias, out);
+    return shader_detail::Rgba(out);
+  }
+  /// textureLod(sampler2D, uv, lod).
+  vec4 TextureLod(int unit, const vec2& uv, Float lod) const {
+    return shader_detail::Lod(textures, unit, shader_detail::Coords(uv.x, uv.y), lod, false);
+  }
+  /// texture(samplerCube, dir).
+  vec4 TextureCube(int unit, const vec3& dir, float bias = 0.0f) const {
+    Textures::Lanes c = shader_detail::Coords(dir.x, dir.y, dir.z);
+    shader_detail::Derivatives(c, dFdx(dir), dFdy(dir));
+    float out[4][kLanes];
+    textures->SampleCubeLanes(unit, c, bias, out);
+    return shader_detail::Rgba(out);
+  }
+  /// textureLod(samplerCube, dir, lod).
+  vec4 TextureCubeLod(int unit, const vec3& dir, Float lod) const {
+    return shader_detail::Lod(textures, unit, shader_detail::Coords(dir.x, dir.y, dir.z), lod, true);
+  }
+  /// texture(sampler2DShadow, vec3(uv, ref)): percentage-closer filtering of the comparison (see
+  /// Textures::SampleShadow).
+  Float TextureShadow(int unit, const vec3& uv_ref) const {
+    Textures::Lanes c = shader_detail::Coords(uv_ref.x, uv_ref.y, uv_ref.z);
+    const vec2 uv(uv_ref.x, uv_ref.y);
+    shader_detail::Derivatives(c, vec3(dFdx(uv), 0.0f), vec3(dFdy(uv), 0.0f));
+    float out[kLanes];
+    textures->SampleShadowLanes(unit, c, out);
+    return Float::Load(out);
+  }
+  /// textureSize(sampler2D, level).
+  glm::ivec2 TextureSize(int unit, int level = 0) const { return textures->Size(unit, level); }
+};
+
+/// What a wide fragment stage writes for its 16 fragments.
+struct FragmentLanesOut {
+  vec4 color[kMaxColorOutputs] = {};  ///< colour outputs; color[0] is written to the colour buffer
+  Float depth;                   ///< gl_FragDepth, preset to frag_coord.z (see Shader<>::kWritesDepth)
+  Bool discarded = false;        ///< lanes discarded so far
+  /// GLSL's discard, in the lanes where `c` holds (the others go on).
+  void Discard(Bool c) { discarded = discarded | c; }
+};
+
+// ---- The scalar form: one vertex or fragment per call ---------------------------------------------------------------
+
+/// What a scalar vertex stage reads: the fetched attributes of one vertex.
 struct VertexIn {
   /// attrib[i] is the value of attribute location i, converted to float as OpenGL does (normalized or not);
   /// missing components are filled from (0, 0, 0, 1); a disabled attribute reads its current value, by default
@@ -61,7 +235,7 @@ struct VertexIn {
   const Textures* textures;
 };
 
-/// What the vertex stage writes.
+/// What a scalar vertex stage writes.
 template <class Varyings>
 struct VertexOut {
   glm::vec4 position{0.0f, 0.0f, 0.0f, 1.0f};  ///< gl_Position, in clip space.
@@ -69,10 +243,10 @@ struct VertexOut {
   Varyings varyings{};      ///< Interpolated across the primitive for the fragment stage.
 };
 
-/// What the fragment stage writes.
+/// What a scalar fragment stage writes.
 struct FragmentOut {
   glm::vec4 color[kMaxColorOutputs];  ///< Colour outputs; color[0] is written to the colour buffer.
-  float depth;                        ///< gl_FragDepth, preset to frag_coord.z (see Shader<>::kWritesDepth).
+  float depth;                        ///< gl_FragDepth, preset to frag_coord.z (see Shader<>::kWritesDepth)
 };
 
 /// The texture samples a quad's fragments have taken through FragmentIn::Texture(unit, &Varyings::uv): the first
@@ -91,7 +265,7 @@ struct QuadSamples {
   Entry entry[kEntries];
 };
 
-/// What the fragment stage reads for one fragment.
+/// What a scalar fragment stage reads for one fragment.
 template <class Varyings>
 struct FragmentIn {
   const Varyings& varyings;  ///< Perspective-correct interpolated varyings.
@@ -136,13 +310,13 @@ struct FragmentIn {
     return textures->SampleCube(unit, varyings.*dir, dFdx(dir), dFdy(dir), bias);
   }
 
-  /// Screen-space derivative of a varying along x (GLSL dFdx, coarse within the 2x2 quad).
+  /// Screen-space derivative of a varying along x (GLSL dFdx, within the 2x2 quad).
   template <class T>
   T dFdx(T Varyings::*member) const {
     const int left = lane & ~1;
     return quad[left + 1].*member - quad[left].*member;
   }
-  /// Screen-space derivative of a varying along y (GLSL dFdy, coarse within the 2x2 quad).
+  /// Screen-space derivative of a varying along y (GLSL dFdy, within the 2x2 quad).
   template <class T>
   T dFdy(T Varyings::*member) const {
     const int bottom = lane & ~2;
@@ -150,25 +324,35 @@ struct FragmentIn {
   }
 };
 
+// ---- What the pipeline hands a shader ---------------------------------------------------------------------------
+
 /// A batch of vertices handed to the vertex stage. Filled by the pipeline.
 struct VertexBatch {
   int count = 0;
   const glm::vec4* attribs = nullptr;  ///< [count][kMaxVertexAttribs]
+  std::uint32_t enabled = 0xFFFFu;     ///< attributes read from arrays (bit i); the others hold their current value
   const int* vertex_ids = nullptr;     ///< [count]
   glm::vec4* positions = nullptr;      ///< out: [count] clip-space positions
   float* point_sizes = nullptr;        ///< out: [count]
   float* varyings = nullptr;           ///< out: [count][VaryingFloats()]
   const Textures* textures = nullptr;
+  int simd = 0;                        ///< SimdLevel()
 };
 
-/// A batch of 2x2 fragment quads handed to the fragment stage. Filled by the pipeline.
-struct QuadBatch {
-  int count = 0;                          ///< Number of quads; lanes are count * 4.
-  const float* varyings = nullptr;        ///< [count * 4][VaryingFloats()] interpolated varyings
-  const glm::vec4* frag_coord = nullptr;  ///< [count * 4]
+/// Floats a block's varyings take in a BlockBatch: kMaxVaryingFloats rows of 16 lanes.
+inline constexpr int kBlockVaryingFloats = kMaxVaryingFloats * kLanes;
+
+/// A batch of 4 x 4 fragment blocks handed to the fragment stage. Filled by the pipeline.
+struct BlockBatch {
+  int count = 0;                          ///< number of blocks
+  int outputs = 1;                        ///< colour outputs the target keeps (1 to kMaxColorOutputs)
   bool front_facing = true;
-  FragmentOut* out = nullptr;  ///< [count * 4]
-  std::uint8_t* live = nullptr;  ///< [count * 4] in: 1 for covered lanes; out: 0 where the shader discarded
+  int simd = 0;                           ///< SimdLevel()
+  const float* varyings = nullptr;        ///< block b at + b * kBlockVaryingFloats: [VaryingFloats()][16]
+  const float* frag_coord = nullptr;      ///< block b at + b * 64: [4][16] (x, y, z, 1/w)
+  std::uint32_t* live = nullptr;          ///< [count] in: covered lanes (bit = lane); out: discarded lanes cleared
+  float* color = nullptr;                 ///< out: block b at + b * 256: [kMaxColorOutputs][4][16]
+  float* depth = nullptr;                 ///< out: block b at + b * 16: gl_FragDepth (when the shader writes it)
   const Textures* textures = nullptr;
 };
 
@@ -176,38 +360,53 @@ struct QuadBatch {
 class Program {
  public:
   virtual ~Program() = default;
-  /// Size of the varyings struct in floats (0 to kMaxVaryingFloats).
+  /// Size of the varyings struct in floats per vertex (0 to kMaxVaryingFloats).
   virtual int VaryingFloats() const = 0;
+  /// How each of those floats is interpolated (null: all smooth).
+  virtual const Interpolation* VaryingInterpolation() const { return nullptr; }
   /// Runs the vertex stage on every vertex of the batch.
   virtual void ShadeVertices(const VertexBatch& batch) const = 0;
-  /// Runs the fragment stage on every live lane of the batch.
-  virtual void ShadeQuads(const QuadBatch& batch) const = 0;
+  /// Runs the fragment stage on every block of the batch.
+  virtual void ShadeBlocks(const BlockBatch& batch) const = 0;
   /// A copy of this shader as it is now (its uniforms), which the fragment stage of a draw uses: fragments are
   /// shaded later, when the context renders its recorded draws, and the shader may have changed by then. Null
   /// when the shader cannot be copied: the context then renders each draw before the call returns.
   virtual std::shared_ptr<const Program> Snapshot() const { return nullptr; }
-  /// Whether the fragment stage writes FragmentOut::depth (gl_FragDepth). When it does not, the depth test may run
-  /// before the shader (early depth test), where that cannot change the result.
+  /// Whether the fragment stage writes gl_FragDepth. When it does not, the depth test may run before the shader
+  /// (early depth test), where that cannot change the result.
   virtual bool WritesDepth() const { return true; }
 };
 
 /// Base class of user shaders (CRTP): `struct MyShader : softgl::Shader<MyShader, MyVaryings> { ... }`.
 ///
-/// Derived must define
+/// Derived defines, in the wide form (varyings made of Float, vec2, vec3, vec4 and their Flat<> and
+/// NoPerspective<> forms):
+///   void Vertex(const VertexLanes&, VertexLanesOut<Varyings>&) const;
+///   void Fragment(const FragmentLanes<Varyings>&, FragmentLanesOut&) const;
+/// or, in the scalar form (varyings made of float and GLM float vectors):
 ///   void Vertex(const VertexIn&, VertexOut<Varyings>&) const;
 ///   bool Fragment(const FragmentIn<Varyings>&, FragmentOut&) const;   // false discards the fragment
-/// A Fragment() that writes out.depth (gl_FragDepth) must say so with `static constexpr bool kWritesDepth = true;`
+/// A Fragment() that writes gl_FragDepth (out.depth) must say so with `static constexpr bool kWritesDepth = true;`
 /// in Derived, as GLSL knows from the source; otherwise out.depth is ignored (the fragment keeps frag_coord.z)
-/// and the depth test may run before the shader.
-/// Varyings must be a trivially copyable struct made only of floats (float, glm::vecN, glm::matN), at most
-/// kMaxVaryingFloats of them; an empty struct means no varyings.
+/// and the depth test may run before the shader. Varyings must be trivially copyable, at most kMaxVaryingFloats
+/// floats per vertex; an empty struct means no varyings.
 template <class Derived, class Varyings>
 class Shader : public Program {
-  static constexpr int kFloats = std::is_empty_v<Varyings> ? 0 : int(sizeof(Varyings) / sizeof(float));
+  static constexpr bool kWideVertex = requires(const Derived& d, const VertexLanes& in, VertexLanesOut<Varyings>& out) {
+    d.Vertex(in, out);
+  };
+  static constexpr bool kWideFragment =
+      requires(const Derived& d, const FragmentLanes<Varyings>& in, FragmentLanesOut& out) { d.Fragment(in, out); };
+  static constexpr bool kWide = kWideVertex || kWideFragment;
+  static constexpr int kFloatBytes = kWide ? int(sizeof(float)) * kLanes : int(sizeof(float));
+  static constexpr int kFloats = std::is_empty_v<Varyings> ? 0 : int(sizeof(Varyings)) / kFloatBytes;
   static_assert(std::is_trivially_copyable_v<Varyings>, "varyings must be trivially copyable");
-  static_assert(std::is_empty_v<Varyings> || sizeof(Varyings) % sizeof(float) == 0,
+  static_assert(!kWide || std::is_empty_v<Varyings> || sizeof(Varyings) % kFloatBytes == 0,
+                "a wide shader's varyings must be made of Float, vec2, vec3 and vec4");
+  static_assert(kWide || std::is_empty_v<Varyings> || sizeof(Varyings) % sizeof(float) == 0,
                 "varyings must be made of floats");
-  static_assert(kFloats <= kMaxVaryingFloats, "at most kMaxVaryingFloats floats of varyings");
+  static_assert(kFloats <= kMaxVaryingFloats,
+                "too many varyings: at most kMaxVaryingFloats (64) floats per vertex, as GL_MAX_VARYING_COMPONENTS");
 
   // Derived declares `static constexpr bool kWritesDepth = true;` when its Fragment() writes out.depth.
   static constexpr bool DeclaresDepth() {
@@ -218,8 +417,33 @@ class Shader : public Program {
     }
   }
 
+  // The qualifiers of the varyings, read once from a value-initialized struct (Flat<> and NoPerspective<> mark
+  // their floats).
+  struct Qualifiers {
+    Interpolation mode[kMaxVaryingFloats > 0 ? kMaxVaryingFloats : 1] = {};
+    bool any = false;
+    Qualifiers() {
+      if constexpr (kFloats > 0) {
+        const Varyings probe{};
+        const unsigned char* bytes = reinterpret_cast<const unsigned char*>(&probe);
+        for (int k = 0; k < kFloats; ++k) {
+          std::uint32_t bits;
+          std::memcpy(&bits, bytes + std::size_t(k) * kFloatBytes, sizeof bits);
+          if (bits == shader_detail::kFlatBits) mode[k] = Interpolation::kFlat;
+          if (bits == shader_detail::kNoPerspectiveBits) mode[k] = Interpolation::kNoPerspective;
+          any = any || mode[k] != Interpolation::kSmooth;
+        }
+      }
+    }
+  };
+
  public:
   int VaryingFloats() const final { return kFloats; }
+
+  const Interpolation* VaryingInterpolation() const final {
+    static const Qualifiers q;
+    return q.any ? q.mode : nullptr;
+  }
 
   bool WritesDepth() const final { return DeclaresDepth(); }
 
@@ -232,36 +456,159 @@ class Shader : public Program {
   }
 
   void ShadeVertices(const VertexBatch& batch) const final {
-    const Derived& self = static_cast<const Derived&>(*this);
-    for (int i = 0; i < batch.count; ++i) {
-      VertexOut<Varyings> out;
-      self.Vertex(VertexIn{batch.attribs + std::size_t(i) * kMaxVertexAttribs, batch.vertex_ids[i], batch.textures},
-                  out);
-      batch.positions[i] = out.position;
-      batch.point_sizes[i] = out.point_size;
-      if constexpr (kFloats > 0)
-        std::memcpy(batch.varyings + std::size_t(i) * kFloats, &out.varyings, sizeof(Varyings));
+    static_assert(kWideVertex || requires(const Derived& d, const VertexIn& in, VertexOut<Varyings>& out) {
+      d.Vertex(in, out);
+    }, "Derived needs a Vertex(const VertexLanes&, VertexLanesOut<Varyings>&) const (or the scalar form)");
+    static_assert(kWideVertex == kWideFragment, "Vertex and Fragment must both be wide, or both scalar");
+    if constexpr (kWideVertex) {
+#if defined(SOFTGL_HAS_DISPATCH)
+      if (batch.simd == 2) return VerticesAvx512(batch);
+      if (batch.simd == 1) return VerticesAvx2(batch);
+#endif
+      VerticesBase(batch);
+    } else {
+      const Derived& self = static_cast<const Derived&>(*this);
+      for (int i = 0; i < batch.count; ++i) {
+        VertexOut<Varyings> out;
+        self.Vertex(
+            VertexIn{batch.attribs + std::size_t(i) * kMaxVertexAttribs, batch.vertex_ids[i], batch.textures}, out);
+        batch.positions[i] = out.position;
+        batch.point_sizes[i] = out.point_size;
+        if constexpr (kFloats > 0)
+          std::memcpy(batch.varyings + std::size_t(i) * kFloats, &out.varyings, sizeof(Varyings));
+      }
     }
   }
 
-  void ShadeQuads(const QuadBatch& batch) const final {
+  void ShadeBlocks(const BlockBatch& batch) const final {
+    static_assert(kWideFragment || requires(const Derived& d, const FragmentIn<Varyings>& in, FragmentOut& out) {
+      { d.Fragment(in, out) } -> std::convertible_to<bool>;
+    }, "Derived needs a Fragment(const FragmentLanes<Varyings>&, FragmentLanesOut&) const (or the scalar form)");
+    if constexpr (kWideFragment) {
+#if defined(SOFTGL_HAS_DISPATCH)
+      if (batch.simd == 2) return BlocksAvx512(batch);
+      if (batch.simd == 1) return BlocksAvx2(batch);
+#endif
+      BlocksBase(batch);
+    } else {
+      ScalarBlocks(batch);
+    }
+  }
+
+ private:
+  // ---- The wide form, compiled three times ----
+  void VertexLanesRun(const VertexBatch& batch) const {
     const Derived& self = static_cast<const Derived&>(*this);
-    Varyings lanes[4]{};
-    QuadSamples<Varyings> samples;
-    for (int q = 0; q < batch.count; ++q) {
-      const int base = q * 4;
-      samples.count = 0;
+    for (int base = 0; base < batch.count; base += kLanes) {
+      const int n = batch.count - base < kLanes ? batch.count - base : kLanes;
+      VertexLanes in;
+      in.textures = batch.textures;
+      // Attributes to lanes: vertex l's attribute a into lane l; lanes past the batch repeat its last vertex.
+      for (int a = 0; a < kMaxVertexAttribs; ++a) {
+        if (!((batch.enabled >> a) & 1u)) {
+          in.attrib[a] = vec4(batch.attribs[std::size_t(base) * kMaxVertexAttribs + std::size_t(a)]);
+          continue;
+        }
+        float lanes[4][kLanes];
+        for (int l = 0; l < kLanes; ++l) {
+          const glm::vec4& v = batch.attribs[std::size_t(base + (l < n ? l : n - 1)) * kMaxVertexAttribs + std::size_t(a)];
+          lanes[0][l] = v.x;
+          lanes[1][l] = v.y;
+          lanes[2][l] = v.z;
+          lanes[3][l] = v.w;
+        }
+        in.attrib[a] = vec4(Float::Load(lanes[0]), Float::Load(lanes[1]), Float::Load(lanes[2]), Float::Load(lanes[3]));
+      }
+      std::int32_t ids[kLanes];
+      for (int l = 0; l < kLanes; ++l) ids[l] = batch.vertex_ids[base + (l < n ? l : n - 1)];
+      in.vertex_id = Int::Load(ids);
+      VertexLanesOut<Varyings> out;
+      self.Vertex(in, out);
+      float pos[4][kLanes], size[kLanes];
+      for (int c = 0; c < 4; ++c) out.position[c].Store(pos[c]);
+      out.point_size.Store(size);
+      for (int l = 0; l < n; ++l) {
+        batch.positions[base + l] = glm::vec4(pos[0][l], pos[1][l], pos[2][l], pos[3][l]);
+        batch.point_sizes[base + l] = size[l];
+      }
+      if constexpr (kFloats > 0) {
+        float soa[kFloats][kLanes];
+        std::memcpy(soa, &out.varyings, sizeof soa);
+        for (int l = 0; l < n; ++l) {
+          float* dst = batch.varyings + std::size_t(base + l) * kFloats;
+          for (int k = 0; k < kFloats; ++k) dst[k] = soa[k][l];
+        }
+      }
+    }
+  }
+
+  void BlockLanesRun(const BlockBatch& batch) const {
+    const Derived& self = static_cast<const Derived&>(*this);
+    for (int b = 0; b < batch.count; ++b) {
+      if (!batch.live[b]) continue;  // every lane failed the early depth test
+      const float* fc = batch.frag_coord + std::size_t(b) * 4 * kLanes;
+      FragmentLanes<Varyings> in{{},
+                                 vec4(Float::Load(fc), Float::Load(fc + kLanes), Float::Load(fc + 2 * kLanes),
+                                      Float::Load(fc + 3 * kLanes)),
+                                 batch.front_facing,
+                                 !Bool::FromBits(batch.live[b]),
+                                 batch.textures};
       if constexpr (kFloats > 0)
-        std::memcpy(static_cast<void*>(lanes), batch.varyings + std::size_t(base) * kFloats,
-                    sizeof(Varyings) * 4);
-      for (int lane = 0; lane < 4; ++lane) {
-        if (!batch.live[base + lane]) continue;
-        const FragmentIn<Varyings> in{lanes[lane], batch.frag_coord[base + lane], batch.front_facing, lanes, lane,
-                                      batch.textures, &samples};
-        FragmentOut& out = batch.out[base + lane];
-        out.depth = in.frag_coord.z;
-        if (!self.Fragment(in, out)) batch.live[base + lane] = 0;
-        if constexpr (!DeclaresDepth()) out.depth = in.frag_coord.z;  // undeclared depth writes are ignored
+        std::memcpy(static_cast<void*>(&in.varyings), batch.varyings + std::size_t(b) * kBlockVaryingFloats,
+                    sizeof(Varyings));
+      FragmentLanesOut out;
+      out.depth = in.frag_coord.z;
+      self.Fragment(in, out);
+      batch.live[b] &= ~out.discarded.Bits();
+      float* color = batch.color + std::size_t(b) * kMaxColorOutputs * 4 * kLanes;
+      for (int o = 0; o < batch.outputs; ++o)
+        for (int c = 0; c < 4; ++c) out.color[o][c].Store(color + (o * 4 + c) * kLanes);
+      if constexpr (DeclaresDepth()) out.depth.Store(batch.depth + std::size_t(b) * kLanes);
+    }
+  }
+
+#if defined(SOFTGL_HAS_DISPATCH)
+  SOFTGL_TARGET_AVX512 void VerticesAvx512(const VertexBatch& batch) const { VertexLanesRun(batch); }
+  SOFTGL_TARGET_AVX2 void VerticesAvx2(const VertexBatch& batch) const { VertexLanesRun(batch); }
+  SOFTGL_TARGET_AVX512 void BlocksAvx512(const BlockBatch& batch) const { BlockLanesRun(batch); }
+  SOFTGL_TARGET_AVX2 void BlocksAvx2(const BlockBatch& batch) const { BlockLanesRun(batch); }
+#endif
+  SOFTGL_TARGET_BASE void VerticesBase(const VertexBatch& batch) const { VertexLanesRun(batch); }
+  SOFTGL_TARGET_BASE void BlocksBase(const BlockBatch& batch) const { BlockLanesRun(batch); }
+
+  // ---- The scalar form, lane by lane ----
+  void ScalarBlocks(const BlockBatch& batch) const {
+    const Derived& self = static_cast<const Derived&>(*this);
+    Varyings quad[4][4]{};  // [quad][lane in quad]: the block's four 2x2 quads
+    QuadSamples<Varyings> samples;
+    for (int b = 0; b < batch.count; ++b) {
+      const float* soa = batch.varyings + std::size_t(b) * kBlockVaryingFloats;
+      const float* fc = batch.frag_coord + std::size_t(b) * 4 * kLanes;
+      float* color = batch.color + std::size_t(b) * kMaxColorOutputs * 4 * kLanes;
+      for (int q = 0; q < 4; ++q) {
+        int lane_of[4];
+        for (int k = 0; k < 4; ++k) {
+          const int x = (q & 1) * 2 + (k & 1), y = (q >> 1) * 2 + (k >> 1);
+          lane_of[k] = y * 4 + x;
+          if constexpr (kFloats > 0) {
+            float lanes[kFloats];
+            for (int v = 0; v < kFloats; ++v) lanes[v] = soa[v * kLanes + lane_of[k]];
+            std::memcpy(static_cast<void*>(&quad[q][k]), lanes, sizeof(Varyings));
+          }
+        }
+        samples.count = 0;
+        for (int k = 0; k < 4; ++k) {
+          const int l = lane_of[k];
+          if (!((batch.live[b] >> l) & 1u)) continue;
+          const FragmentIn<Varyings> in{quad[q][k], glm::vec4(fc[l], fc[kLanes + l], fc[2 * kLanes + l], fc[3 * kLanes + l]),
+                                        batch.front_facing, quad[q], k, batch.textures, &samples};
+          FragmentOut out{};  // outputs the shader leaves alone read 0
+          out.depth = in.frag_coord.z;
+          if (!self.Fragment(in, out)) batch.live[b] &= ~(1u << l);
+          for (int o = 0; o < batch.outputs; ++o)
+            for (int c = 0; c < 4; ++c) color[(o * 4 + c) * kLanes + l] = out.color[o][c];
+          if constexpr (DeclaresDepth()) batch.depth[std::size_t(b) * kLanes + l] = out.depth;
+        }
       }
     }
   }

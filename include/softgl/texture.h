@@ -6,8 +6,9 @@
 // the screen-space derivatives of the texture coordinates. Sampling a unit with no texture, or an incomplete one,
 // returns (0, 0, 0, 1), as OpenGL does.
 //
-// In a fragment shader use FragmentIn::Texture(unit, &Varyings::uv) (derivatives taken across the 2x2 quad), or
-// pass derivatives yourself; the vertex stage has only SampleLod.
+// In a fragment shader use FragmentLanes::Texture(unit, uv) (wide shaders: derivatives taken across the block) or
+// FragmentIn::Texture(unit, &Varyings::uv) (derivatives across the 2x2 quad), or pass derivatives yourself; the
+// vertex stage has only the Lod forms.
 #pragma once
 
 #include <softgl/config.h>
@@ -46,6 +47,20 @@ class Textures {
   float SampleShadow(int unit, glm::vec2 uv, float ref, glm::vec2 duv_dx, glm::vec2 duv_dy) const;
   /// textureSize(sampler2D, level): the size of a level of unit's 2D texture, (0, 0) if there is none.
   glm::ivec2 Size(int unit, int level = 0) const;
+
+  /// Coordinates and their screen-space derivatives for 16 lanes (a wide shader's block of fragments).
+  struct Lanes {
+    float s[16], t[16], r[16];  ///< (s, t), and r: a cube map direction's z, or a shadow lookup's reference
+    float ds_dx[16], dt_dx[16], dr_dx[16];
+    float ds_dy[16], dt_dy[16], dr_dy[16];
+  };
+  /// The wide forms of the calls above, for 16 lanes at once; out[c][lane] is channel c of each lane's sample,
+  /// lane for lane the same floats as the one-lane call. FragmentLanes and VertexLanes (shader.h) call them.
+  void SampleLanes(int unit, const Lanes& c, float bias, float out[4][16]) const;           ///< Sample
+  void SampleLodLanes(int unit, const Lanes& c, const float lod[16], float out[4][16]) const;  ///< SampleLod (s, t)
+  void SampleCubeLanes(int unit, const Lanes& c, float bias, float out[4][16]) const;       ///< SampleCube (s, t, r)
+  void SampleCubeLodLanes(int unit, const Lanes& c, const float lod[16], float out[4][16]) const;
+  void SampleShadowLanes(int unit, const Lanes& c, float out[16]) const;  ///< SampleShadow, r the reference
 
   const detail::TextureView* unit_2d[kMaxTextureUnits] = {};
   const detail::TextureView* unit_cube[kMaxTextureUnits] = {};

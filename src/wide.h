@@ -1,0 +1,47 @@
+// wide.h — the vector types of softgl's own wide code (interpolation, texture sampling, per-fragment operations):
+// GCC vector extensions of W lanes, W being the processor's native width (4 with SSE2, 8 with AVX2, 16 with
+// AVX-512), so that every operation, comparisons included, compiles to that width's instructions. Each wide unit
+// is a template on W, compiled three times by functions marked SOFTGL_TARGET_* (softgl/lanes.h) and chosen once at
+// run time (CpuSimdLevel, simd.h).
+#pragma once
+
+#include <cstdint>
+#include <cstring>
+
+#include <softgl/lanes.h>
+
+// The helpers pass vectors by value, always inlined: the compilers' note that such a call's ABI depends on the
+// instruction set (-Wpsabi) is moot, and CMakeLists.txt turns it off for the files that include this header.
+
+// Wide helpers are always inlined into the function compiled for one instruction set: no out-of-line copy of them
+// exists, compiled for another.
+#define SOFTGL_WIDE inline __attribute__((always_inline))
+
+namespace softgl::detail {
+
+template <int W>
+struct V {
+  typedef float F __attribute__((vector_size(4 * W)));
+  typedef std::int32_t I __attribute__((vector_size(4 * W)));
+  typedef std::uint32_t U __attribute__((vector_size(4 * W)));
+};
+
+template <class T>
+SOFTGL_WIDE T LoadVec(const void* p) {
+  T r;
+  std::memcpy(&r, p, sizeof r);
+  return r;
+}
+template <class T>
+SOFTGL_WIDE void StoreVec(void* p, const T& v) {
+  std::memcpy(p, &v, sizeof v);
+}
+
+/// As std::floor, for |x| < 2^31 (callers keep x in range).
+template <int W>
+SOFTGL_WIDE typename V<W>::F FloorVec(typename V<W>::F x) {
+  const typename V<W>::F t = __builtin_convertvector(__builtin_convertvector(x, typename V<W>::I), typename V<W>::F);
+  return t > x ? t - 1.0f : t;
+}
+
+}  // namespace softgl::detail
