@@ -1,6 +1,6 @@
 // bench — softgl against Mesa's llvmpipe (OSMesa, OpenGL 3.3 core) on the same scenes, same size, in one run.
 //
-//   bench [--threads N] [--frames N] [--png DIR] [--scene TEXT] [--softgl-only 1]
+//   bench [--threads N] [--frames N] [--png DIR] [--scene TEXT] [--softgl-only 1] [--scalar 0]
 //   (--png DIR: also write each scene's last softgl frame to DIR)
 //
 // llvmpipe runs with LP_NUM_THREADS = N (0 for --threads 1: rendering on the calling thread alone); softgl with
@@ -12,6 +12,8 @@
 //
 //   --scene TEXT       only the scenes whose name contains TEXT
 //   --softgl-only 1    skip llvmpipe (for profiling softgl alone)
+//   --scalar 0         skip the runs with each scene's shader in the scalar form (by default they follow each
+//                      scene, and the last columns give their time and the wide form's gain over them)
 //
 // The last row is the model scene's peak memory: each renderer runs the scene (warm-up and one frame) in a process
 // of its own that loads the model and nothing else (this program with --rss-child), which reports its VmHWM.
@@ -144,6 +146,90 @@ std::vector<std::uint8_t> PatternTexture(int n) {
 }
 
 // ---- softgl shaders ------------------------------------------------------------------------------------------
+//
+// Each scene's shader in the wide form (16 lanes per call, what applications write), and in the scalar form (one
+// vertex or fragment per call, softgl 0.1's), so that the gain of the wide path is measured in the same run.
+
+namespace wide {
+using namespace softgl;
+
+struct NoVaryings {};
+struct FlatShader : Shader<FlatShader, NoVaryings> {
+  glm::vec4 color{0.2f, 0.6f, 0.9f, 1.0f};
+  void Vertex(const VertexLanes& in, VertexLanesOut<NoVaryings>& out) const {
+    out.position = vec4(vec3(in.attrib[0]), 1.0f);
+  }
+  void Fragment(const FragmentLanes<NoVaryings>&, FragmentLanesOut& out) const { out.color[0] = color; }
+};
+
+struct UvVaryings {
+  vec2 uv;
+};
+struct TextureShader : Shader<TextureShader, UvVaryings> {
+  void Vertex(const VertexLanes& in, VertexLanesOut<UvVaryings>& out) const {
+    out.position = vec4(vec3(in.attrib[0]), 1.0f);
+    out.varyings.uv = vec2(in.attrib[1]);
+  }
+  void Fragment(const FragmentLanes<UvVaryings>& in, FragmentLanesOut& out) const {
+    out.color[0] = in.Texture(0, in.varyings.uv);
+  }
+};
+
+struct PhongVaryings {
+  vec3 normal;
+  vec3 world;
+};
+struct PhongShader : Shader<PhongShader, PhongVaryings> {
+  glm::mat4 view_proj{1.0f};
+  glm::vec3 light = glm::normalize(glm::vec3(0.4f, 0.8f, 0.5f));
+  glm::vec3 eye{0.0f};
+  void Vertex(const VertexLanes& in, VertexLanesOut<PhongVaryings>& out) const {
+    out.position = view_proj * vec4(vec3(in.attrib[0]), 1.0f);
+    out.varyings.normal = vec3(in.attrib[1]);
+    out.varyings.world = vec3(in.attrib[0]);
+  }
+  void Fragment(const FragmentLanes<PhongVaryings>& in, FragmentLanesOut& out) const {
+    const vec3 n = normalize(in.varyings.normal);
+    const vec3 h = normalize(light + normalize(eye - in.varyings.world));
+    const Float d = max(dot(n, light), 0.0f), s = pow(max(dot(n, h), 0.0f), 32.0f);
+    out.color[0] = vec4(glm::vec3(0.7f, 0.72f, 0.75f) * (0.15f + d) + vec3(0.3f * s), 1.0f);
+  }
+};
+
+struct HeadVaryings {
+  vec3 normal;
+  vec3 world;
+  vec2 uv;
+  vec4 tangent;
+};
+// Diffuse, tangent-space normal map and specular map on units 0, 1, 2; Blinn-Phong.
+struct HeadShader : Shader<HeadShader, HeadVaryings> {
+  glm::mat4 view_proj{1.0f};
+  glm::vec3 light = glm::normalize(glm::vec3(0.4f, 0.6f, 0.8f));
+  glm::vec3 eye{0.0f, 0.0f, 3.0f};
+  void Vertex(const VertexLanes& in, VertexLanesOut<HeadVaryings>& out) const {
+    out.position = view_proj * vec4(vec3(in.attrib[0]), 1.0f);
+    out.varyings.normal = vec3(in.attrib[1]);
+    out.varyings.world = vec3(in.attrib[0]);
+    out.varyings.uv = vec2(in.attrib[2]);
+    out.varyings.tangent = in.attrib[3];
+  }
+  void Fragment(const FragmentLanes<HeadVaryings>& in, FragmentLanesOut& out) const {
+    const vec3 n0 = normalize(in.varyings.normal);
+    const vec3 tangent = in.varyings.tangent.xyz();
+    const vec3 t = normalize(tangent - n0 * dot(n0, tangent));
+    const vec3 b = cross(n0, t) * in.varyings.tangent.w;
+    const vec3 m = in.Texture(1, in.varyings.uv).xyz() * 2.0f - 1.0f;
+    const vec3 n = normalize(t * m.x + b * m.y + n0 * m.z);
+    const vec3 h = normalize(light + normalize(eye - in.varyings.world));
+    const Float d = max(dot(n, light), 0.0f);
+    const Float s = pow(max(dot(n, h), 0.0f), 24.0f) * in.Texture(2, in.varyings.uv).x;
+    out.color[0] = vec4(in.Texture(0, in.varyings.uv).xyz() * (0.15f + d) + vec3(s), 1.0f);
+  }
+};
+}  // namespace wide
+
+namespace scalar {
 
 struct NoVaryings {};
 struct FlatShader : softgl::Shader<FlatShader, NoVaryings> {
@@ -225,6 +311,8 @@ struct HeadShader : softgl::Shader<HeadShader, HeadVaryings> {
   }
 };
 
+}  // namespace scalar
+
 // ---- GLSL ----------------------------------------------------------------------------------------------------
 
 const char* kFlatVs = "#version 330 core\nlayout(location=0) in vec3 p; void main(){ gl_Position = vec4(p, 1.0); }";
@@ -272,6 +360,18 @@ GLuint Program(const char* vs, const char* fs) {
 
 std::string g_png_dir;  // --png
 softgl::Context::Options g_options;  // --threads
+bool g_scalar = false;  // run the scalar form of the scenes' shaders
+
+// Runs body with the scene's shader in the wide form, or in the scalar form when g_scalar.
+template <class Wide, class Scalar, class Body>
+double WithShader(Body&& body) {
+  if (g_scalar) {
+    Scalar shader;
+    return body(shader);
+  }
+  Wide shader;
+  return body(shader);
+}
 
 double MedianMs(int frames, const std::function<void()>& frame) {
   frame();  // warm-up: llvmpipe compiles its shaders on first use
@@ -360,6 +460,7 @@ int main(int argc, char** argv) {
   int threads = 1, frames = 5;
   std::string only;          // --scene TEXT: run only scenes whose name contains TEXT
   bool softgl_only = false;  // --softgl-only 1: skip llvmpipe (for profiling)
+  bool with_scalar = true;   // --scalar 0: skip the scalar-shader runs
   std::string rss_child;     // --rss-child softgl|llvmpipe: run the model scene once, print peak RSS in KiB
   for (int i = 1; i + 1 < argc; i += 2) {
     if (!std::strcmp(argv[i], "--threads")) threads = std::max(1, std::atoi(argv[i + 1]));
@@ -367,6 +468,7 @@ int main(int argc, char** argv) {
     if (!std::strcmp(argv[i], "--png")) g_png_dir = argv[i + 1];
     if (!std::strcmp(argv[i], "--scene")) only = argv[i + 1];
     if (!std::strcmp(argv[i], "--softgl-only")) softgl_only = std::atoi(argv[i + 1]) != 0;
+    if (!std::strcmp(argv[i], "--scalar")) with_scalar = std::atoi(argv[i + 1]) != 0;
     if (!std::strcmp(argv[i], "--rss-child")) rss_child = argv[i + 1];
   }
   const std::string lp_threads = std::to_string(threads == 1 ? 0 : threads);
@@ -450,15 +552,16 @@ int main(int argc, char** argv) {
   if (have_engine) {
     scenes.push_back({"model: 2CylinderEngine, Blinn-Phong", 1280, 720, "Mtri/s", double(engine.indices.size() / 3),
                       [&](int n) {
-                        softgl::Context gl(1280, 720, g_options);
-                        softgl_setup(gl, engine);
-                        PhongShader shader;
-                        shader.view_proj = engine_vp;
-                        shader.eye = engine_eye;
-                        gl.UseProgram(shader);
-                        gl.Enable(softgl::DEPTH_TEST);
-                        gl.Enable(softgl::CULL_FACE);
-                        return TimeSoftgl(n, gl, engine_frame);
+                        return WithShader<wide::PhongShader, scalar::PhongShader>([&](auto& shader) {
+                          softgl::Context gl(1280, 720, g_options);
+                          softgl_setup(gl, engine);
+                          shader.view_proj = engine_vp;
+                          shader.eye = engine_eye;
+                          gl.UseProgram(shader);
+                          gl.Enable(softgl::DEPTH_TEST);
+                          gl.Enable(softgl::CULL_FACE);
+                          return TimeSoftgl(n, gl, engine_frame);
+                        });
                       },
                       [&](int n) {
                         return with_osmesa(1280, 720, [&] {
@@ -486,22 +589,24 @@ int main(int argc, char** argv) {
     scenes.push_back({"textured model: african_head, diffuse + normal + specular maps, trilinear", 1280, 720, "Mtri/s",
                       double(head.indices.size() / 3),
                       [&](int n) {
-                        softgl::Context gl(1280, 720, g_options);
-                        softgl_setup(gl, head);
-                        for (int u = 0; u < 3; ++u) {
-                          gl.ActiveTexture(softgl::TEXTURE0 + softgl::Enum(u));
-                          gl.BindTexture(softgl::TEXTURE_2D, gl.GenTexture());
-                          gl.TexImage2DFromFile(softgl::TEXTURE_2D, head_dir + maps[u], true);
-                          gl.GenerateMipmap(softgl::TEXTURE_2D);
-                          gl.TexParameteri(softgl::TEXTURE_2D, softgl::TEXTURE_MIN_FILTER, softgl::LINEAR_MIPMAP_LINEAR);
-                        }
-                        HeadShader shader;
-                        shader.view_proj = head_vp;
-                        shader.eye = head_eye;
-                        gl.UseProgram(shader);
-                        gl.Enable(softgl::DEPTH_TEST);
-                        gl.Enable(softgl::CULL_FACE);
-                        return TimeSoftgl(n, gl, head_frame);
+                        return WithShader<wide::HeadShader, scalar::HeadShader>([&](auto& shader) {
+                          softgl::Context gl(1280, 720, g_options);
+                          softgl_setup(gl, head);
+                          for (int u = 0; u < 3; ++u) {
+                            gl.ActiveTexture(softgl::TEXTURE0 + softgl::Enum(u));
+                            gl.BindTexture(softgl::TEXTURE_2D, gl.GenTexture());
+                            gl.TexImage2DFromFile(softgl::TEXTURE_2D, head_dir + maps[u], true);
+                            gl.GenerateMipmap(softgl::TEXTURE_2D);
+                            gl.TexParameteri(softgl::TEXTURE_2D, softgl::TEXTURE_MIN_FILTER,
+                                             softgl::LINEAR_MIPMAP_LINEAR);
+                          }
+                          shader.view_proj = head_vp;
+                          shader.eye = head_eye;
+                          gl.UseProgram(shader);
+                          gl.Enable(softgl::DEPTH_TEST);
+                          gl.Enable(softgl::CULL_FACE);
+                          return TimeSoftgl(n, gl, head_frame);
+                        });
                       },
                       [&](int n) {
                         return with_osmesa(1280, 720, [&] {
@@ -537,12 +642,13 @@ int main(int argc, char** argv) {
                       }});
   scenes.push_back({"many small triangles: 1,000,000, flat, depth test", 1280, 720, "Mtri/s", 1e6,
                     [&](int n) {
-                      softgl::Context gl(1280, 720, g_options);
-                      softgl_setup(gl, tris);
-                      FlatShader shader;
-                      gl.UseProgram(shader);
-                      gl.Enable(softgl::DEPTH_TEST);
-                      return TimeSoftgl(n, gl, small_frame);
+                      return WithShader<wide::FlatShader, scalar::FlatShader>([&](auto& shader) {
+                        softgl::Context gl(1280, 720, g_options);
+                        softgl_setup(gl, tris);
+                        gl.UseProgram(shader);
+                        gl.Enable(softgl::DEPTH_TEST);
+                        return TimeSoftgl(n, gl, small_frame);
+                      });
                     },
                     [&](int n) {
                       return with_osmesa(1280, 720, [&] {
@@ -555,14 +661,15 @@ int main(int argc, char** argv) {
                     }});
   scenes.push_back({"fill rate: 50 blended full-screen quads", 1920, 1080, "Mpixel/s", 50.0 * 1920 * 1080,
                     [&](int n) {
-                      softgl::Context gl(1920, 1080, g_options);
-                      softgl_setup(gl, blend_quads);
-                      FlatShader shader;
-                      shader.color = glm::vec4(0.9f, 0.5f, 0.2f, 0.1f);
-                      gl.UseProgram(shader);
-                      gl.Enable(softgl::BLEND);
-                      gl.BlendFunc(softgl::SRC_ALPHA, softgl::ONE_MINUS_SRC_ALPHA);
-                      return TimeSoftgl(n, gl, fill_frame);
+                      return WithShader<wide::FlatShader, scalar::FlatShader>([&](auto& shader) {
+                        softgl::Context gl(1920, 1080, g_options);
+                        softgl_setup(gl, blend_quads);
+                        shader.color = glm::vec4(0.9f, 0.5f, 0.2f, 0.1f);
+                        gl.UseProgram(shader);
+                        gl.Enable(softgl::BLEND);
+                        gl.BlendFunc(softgl::SRC_ALPHA, softgl::ONE_MINUS_SRC_ALPHA);
+                        return TimeSoftgl(n, gl, fill_frame);
+                      });
                     },
                     [&](int n) {
                       return with_osmesa(1920, 1080, [&] {
@@ -576,16 +683,17 @@ int main(int argc, char** argv) {
                     }});
   scenes.push_back({"textured overdraw: 20 quads, trilinear, 1024^2", 1920, 1080, "Mpixel/s", 20.0 * 1920 * 1080,
                     [&](int n) {
-                      softgl::Context gl(1920, 1080, g_options);
-                      softgl_setup(gl, tex_quads);
-                      gl.BindTexture(softgl::TEXTURE_2D, gl.GenTexture());
-                      gl.TexImage2D(softgl::TEXTURE_2D, 0, softgl::RGBA8, 1024, 1024, 0, softgl::RGBA,
-                                    softgl::UNSIGNED_BYTE, texture.data());
-                      gl.GenerateMipmap(softgl::TEXTURE_2D);
-                      gl.TexParameteri(softgl::TEXTURE_2D, softgl::TEXTURE_MIN_FILTER, softgl::LINEAR_MIPMAP_LINEAR);
-                      TextureShader shader;
-                      gl.UseProgram(shader);
-                      return TimeSoftgl(n, gl, overdraw_frame);
+                      return WithShader<wide::TextureShader, scalar::TextureShader>([&](auto& shader) {
+                        softgl::Context gl(1920, 1080, g_options);
+                        softgl_setup(gl, tex_quads);
+                        gl.BindTexture(softgl::TEXTURE_2D, gl.GenTexture());
+                        gl.TexImage2D(softgl::TEXTURE_2D, 0, softgl::RGBA8, 1024, 1024, 0, softgl::RGBA,
+                                      softgl::UNSIGNED_BYTE, texture.data());
+                        gl.GenerateMipmap(softgl::TEXTURE_2D);
+                        gl.TexParameteri(softgl::TEXTURE_2D, softgl::TEXTURE_MIN_FILTER, softgl::LINEAR_MIPMAP_LINEAR);
+                        gl.UseProgram(shader);
+                        return TimeSoftgl(n, gl, overdraw_frame);
+                      });
                     },
                     [&](int n) {
                       return with_osmesa(1920, 1080, [&] {
@@ -616,8 +724,8 @@ int main(int argc, char** argv) {
   }
 
   std::printf("| scene | size | threads | softgl ms/frame | llvmpipe ms/frame | softgl / llvmpipe | softgl rate | "
-              "softgl speedup over 1 thread |\n");
-  std::printf("|---|---|---|---|---|---|---|---|\n");
+              "softgl speedup over 1 thread | scalar-shader ms/frame | wide gain |\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|---|\n");
   for (const Scene& s : scenes) {
     if (!only.empty() && std::string(s.name).find(only) == std::string::npos) continue;
     const double a = s.softgl_ms(frames), b = softgl_only ? 0.0 : s.gl_ms(frames);
@@ -628,11 +736,19 @@ int main(int argc, char** argv) {
       one = s.softgl_ms(frames);
       g_options.threads = threads;
     }
+    // The same scene with the scalar form of its shader, right after: what the wide form gains.
+    g_scalar = true;
+    const double scalar = with_scalar ? s.softgl_ms(frames) : 0.0;
+    g_scalar = false;
     const double rate = s.units / (a * 1e3);  // per microsecond = millions per second
-    char speedup[32] = "";
+    char speedup[32] = "", gain[32] = "", scalar_ms[32] = "";
     if (threads > 1) std::snprintf(speedup, sizeof speedup, "%.2f", one / a);
-    std::printf("| %s | %dx%d | %d | %.1f | %.1f | %.2f | %.2f %s | %s |\n", s.name, s.width, s.height, threads, a, b,
-                b > 0 ? a / b : 0.0, rate, s.unit, speedup);
+    if (with_scalar) {
+      std::snprintf(scalar_ms, sizeof scalar_ms, "%.1f", scalar);
+      std::snprintf(gain, sizeof gain, "%.2f", scalar / a);
+    }
+    std::printf("| %s | %dx%d | %d | %.1f | %.1f | %.2f | %.2f %s | %s | %s | %s |\n", s.name, s.width, s.height,
+                threads, a, b, b > 0 ? a / b : 0.0, rate, s.unit, speedup, scalar_ms, gain);
     std::fflush(stdout);
   }
   if (rss_softgl >= 0.0)

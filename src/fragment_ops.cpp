@@ -91,14 +91,6 @@ glm::vec4 Blend(const BlendState& state, const glm::vec4& src, const glm::vec4& 
 
 namespace {
 
-// What a blend factor multiplies: factor = k0 + k1 * v, v one of these 8-bit values (k0 in {0, 255}, k1 in
-// {-1, 0, 1}); kSaturate is min(As, 1 - Ad) for colour.
-enum Source : std::uint8_t { kNothing, kSrc, kDst, kSrcAlpha, kDstAlpha, kConst, kConstAlpha, kSaturate };
-struct Term {
-  int k0 = 0, k1 = 0;
-  Source source = kNothing;
-};
-
 Term TermOf(Enum f, bool alpha) {
   switch (f) {
     case ZERO: return {0, 0, kNothing};
@@ -120,28 +112,32 @@ Term TermOf(Enum f, bool alpha) {
   }
 }
 
-// The blend state for 8-bit buffers, resolved once per batch.
-struct Unorm8Blend {
-  bool blend = false;
-  Term src[4], dst[4];  // per channel (r, g, b from the colour state, a from the alpha state)
-  Enum eq[4] = {FUNC_ADD, FUNC_ADD, FUNC_ADD, FUNC_ADD};
-  int constant[4] = {0, 0, 0, 0};  // the constant colour in 8 bits
-  std::uint32_t keep = 0;          // bytes of the stored pixel the colour mask keeps
+}  // namespace
 
-  Unorm8Blend(const FragmentOpsState& state, bool rgb_only) {
-    for (int c = 0; c < 4; ++c)
-      if (!state.color_mask[c] || (c == 3 && rgb_only)) keep |= 0xFFu << (8 * c);
-    blend = state.blend.enabled;
-    const BlendState& b = state.blend;
-    for (int c = 0; c < 4; ++c) {
-      const bool a = c == 3;
-      src[c] = TermOf(a ? b.src_alpha : b.src_rgb, a);
-      dst[c] = TermOf(a ? b.dst_alpha : b.dst_rgb, a);
-      eq[c] = a ? b.eq_alpha : b.eq_rgb;
-      constant[c] = FloatToUnorm8(b.color[c]);
-    }
+Unorm8Blend::Unorm8Blend(const FragmentOpsState& state, bool rgb_only) {
+  for (int c = 0; c < 4; ++c)
+    if (!state.color_mask[c] || (c == 3 && rgb_only)) keep |= 0xFFu << (8 * c);
+  blend = state.blend.enabled;
+  const BlendState& b = state.blend;
+  for (int c = 0; c < 4; ++c) {
+    const bool a = c == 3;
+    src[c] = TermOf(a ? b.src_alpha : b.src_rgb, a);
+    dst[c] = TermOf(a ? b.dst_alpha : b.dst_rgb, a);
+    eq[c] = a ? b.eq_alpha : b.eq_rgb;
+    constant[c] = FloatToUnorm8(b.color[c]);
   }
-};
+}
+
+FragmentOpsPlan PlanFragmentOps(const FragmentOpsState& state, const RenderTarget& target) {
+  FragmentOpsPlan plan;
+  for (int o = 0; o < kMaxColorOutputs; ++o) plan.blend[o] = Unorm8Blend(state, target.color[o].rgb_only);
+  plan.wide_target = (!target.color[0].Present() || target.color[0].Rgba8()) && !target.color[1].Present() &&
+                     !target.color[2].Present() && !target.color[3].Present();
+  return plan;
+}
+
+
+namespace {
 
 // (x + 127) / 255 for x in [0, 65025]: x / 255 rounded to the nearest integer (never a tie: 255 is odd).
 inline int Div255Round(int x) { return ((x + 127) * 32897) >> 23; }
@@ -268,36 +264,39 @@ bool EarlyDepthTestApplies(const FragmentOpsState& state, bool shader_writes_dep
 
 namespace {
 
-// Whether a block lies inside the target, so that whole rows of it can be read and written.
-bool Inside(const RenderTarget& t, int bx, int by) { return bx + 4 <= t.width && by + 4 <= t.height; }
-
-// Lanes of `bits` as a W-lane mask, for the lanes l0 .. l0 + W - 1.
-template <int W>
-SOFTGL_WIDE typename V<W>::I LaneMask(std::uint32_t bits, int l0) {
-  typename V<W>::I m;
-  for (int l = 0; l < W; ++l) m[l] = -std::int32_t((bits >> (l0 + l)) & 1u);
-  return m;
-}
-template <int W>
-SOFTGL_WIDE std::uint32_t MaskBits(typename V<W>::I m, int l0) {
-  std::uint32_t bits = 0;
-  for (int l = 0; l < W; ++l) bits |= std::uint32_t(m[l] != 0) << (l0 + l);
-  return bits;
+// Whether a block's quads lie inside the target, so that whole quads of it can be read and written.
+bool Inside(const RenderTarget& t, const BlockBuffer& bb, int b) {
+  for (int q = 0; q < 4; ++q)
+    if (bb.qx[b][q] + 2 > t.width || bb.qy[b][q] + 2 > t.height) return false;
+  return true;
 }
 
-// Rows of a block: the W / 4 rows of lanes l0 .. l0 + W - 1, each 4 values of `bytes` bytes, from or to `base` with
-// `pitch` values between rows.
+// The values of block b's lanes l0 .. l0 + W - 1 (quads l0 / 4 on), each quad two rows of two values, from or to
+// `base` with `pitch` values between rows.
 template <class T, int W, class Vec>
-SOFTGL_WIDE Vec LoadRows(const T* base, std::size_t pitch, int l0) {
+SOFTGL_WIDE Vec LoadQuads(const T* base, std::size_t pitch, const BlockBuffer& bb, int b, int l0) {
   T lanes[W];
-  for (int r = 0; r < W / 4; ++r) std::memcpy(lanes + 4 * r, base + std::size_t(l0 / 4 + r) * pitch, 4 * sizeof(T));
+  for (int k = 0; k < W / 4; ++k) {
+    const int q = l0 / 4 + k;
+    const T* p = base + std::size_t(bb.qy[b][q]) * pitch + std::size_t(bb.qx[b][q]);
+    std::memcpy(lanes + 4 * k, p, 2 * sizeof(T));
+    std::memcpy(lanes + 4 * k + 2, p + pitch, 2 * sizeof(T));
+  }
   return LoadVec<Vec>(lanes);
 }
+// Quads without a live lane are not written back: they change nothing, and a block's unused quads repeat its
+// first quad's place.
 template <class T, int W, class Vec>
-SOFTGL_WIDE void StoreRows(T* base, std::size_t pitch, int l0, const Vec& v) {
+SOFTGL_WIDE void StoreQuads(T* base, std::size_t pitch, const BlockBuffer& bb, int b, int l0, const Vec& v) {
   T lanes[W];
   StoreVec(lanes, v);
-  for (int r = 0; r < W / 4; ++r) std::memcpy(base + std::size_t(l0 / 4 + r) * pitch, lanes + 4 * r, 4 * sizeof(T));
+  for (int k = 0; k < W / 4; ++k) {
+    const int q = l0 / 4 + k;
+    if (!((bb.live[b] >> (4 * q)) & 0xFu)) continue;
+    T* p = base + std::size_t(bb.qy[b][q]) * pitch + std::size_t(bb.qx[b][q]);
+    std::memcpy(p, lanes + 4 * k, 2 * sizeof(T));
+    std::memcpy(p + pitch, lanes + 4 * k + 2, 2 * sizeof(T));
+  }
 }
 
 // StencilUpdate for W lanes, where `where` holds.
@@ -342,19 +341,13 @@ SOFTGL_WIDE void BlockOps(const BlockOpsContext& ctx, int b) {
   const BlockBuffer& bb = *ctx.blocks;
   const RenderTarget& t = *ctx.target;
   const FragmentOpsState& st = *ctx.state;
-  const int bx = bb.bx[b], by = bb.by[b];
   for (int l0 = 0; l0 < kLanes; l0 += W) {
-    I go = LaneMask<W>(bb.live[b], l0);
-    bool any = false;
-    for (int l = 0; l < W; ++l) any = any || go[l];
-    if (!any) continue;
+    if (!((bb.live[b] >> l0) & ((1u << W) - 1u))) continue;
+    I go = BitsToMask<W>(bb.live[b], l0);
     I sten{};
-    std::uint8_t* sp = nullptr;
     if (ctx.stencil_test) {
-      sp = t.stencil + std::size_t(by) * std::size_t(t.width) + std::size_t(bx);
-      std::uint8_t raw[W];
-      for (int r = 0; r < W / 4; ++r) std::memcpy(raw + 4 * r, sp + std::size_t(l0 / 4 + r) * std::size_t(t.width), 4);
-      for (int l = 0; l < W; ++l) sten[l] = raw[l];
+      sten = __builtin_convertvector(
+          (LoadQuads<std::uint8_t, W, typename V<W>::B>(t.stencil, std::size_t(t.width), bb, b, l0)), I);
       const StencilFace& f = *ctx.face;
       const std::int32_t m = std::int32_t(f.value_mask & 0xFFu);
       const I pass = Compare(f.func, I{} + (std::clamp(f.ref, 0, 255) & m), sten & m);
@@ -362,34 +355,31 @@ SOFTGL_WIDE void BlockOps(const BlockOpsContext& ctx, int b) {
       go &= pass;
     }
     if (ctx.depth_test) {
-      float* dp = t.depth + std::size_t(by) * std::size_t(t.depth_pitch) + std::size_t(bx);
-      const F z = ctx.shader_depth ? LoadVec<F>(&bb.depth[b][l0]) : LoadVec<F>(&bb.frag_coord[b][2][l0]);
+      const F z = ctx.shader_depth ? LoadVec<F>(bb.Depth(b) + l0) : LoadVec<F>(&bb.frag_coord[b][2][l0]);
       F zc = z > 0.0f ? z : F{} + 0.0f;  // clamped to [0, 1]; NaN fails below
       zc = zc < 1.0f ? zc : F{} + 1.0f;
-      const F stored = LoadRows<float, W, F>(dp, std::size_t(t.depth_pitch), l0);
+      const F stored = LoadQuads<float, W, F>(t.depth, std::size_t(t.depth_pitch), bb, b, l0);
       const I pass = Compare(st.depth_func, zc, stored) & (z == z);
       if (ctx.stencil_test) {
         sten = StencilOpLanes<W>(*ctx.face, ctx.face->dpfail, sten, go & ~pass);
         sten = StencilOpLanes<W>(*ctx.face, ctx.face->dppass, sten, go & pass);
       }
       go &= pass;
-      if (st.depth_write) StoreRows<float, W, F>(dp, std::size_t(t.depth_pitch), l0, go ? zc : stored);
+      if (st.depth_write) StoreQuads<float, W, F>(t.depth, std::size_t(t.depth_pitch), bb, b, l0, go ? zc : stored);
     } else if (ctx.stencil_test) {
       sten = StencilOpLanes<W>(*ctx.face, ctx.face->dppass, sten, go);
     }
-    if (ctx.stencil_test) {
-      std::uint8_t raw[W];
-      for (int l = 0; l < W; ++l) raw[l] = std::uint8_t(sten[l]);
-      for (int r = 0; r < W / 4; ++r) std::memcpy(sp + std::size_t(l0 / 4 + r) * std::size_t(t.width), raw + 4 * r, 4);
-    }
+    if (ctx.stencil_test)
+      StoreQuads<std::uint8_t, W, typename V<W>::B>(t.stencil, std::size_t(t.width), bb, b, l0,
+                                                     __builtin_convertvector(sten, typename V<W>::B));
     if (!ctx.any_color || !t.color[0].Present()) continue;
     const ColorBuffer& cb = t.color[0];
-    auto* cp = reinterpret_cast<std::uint32_t*>(cb.At(bx, by));
-    const U pixels = LoadRows<std::uint32_t, W, U>(cp, std::size_t(cb.pitch), l0);
+    auto* cp = reinterpret_cast<std::uint32_t*>(cb.data);
+    const U pixels = LoadQuads<std::uint32_t, W, U>(cp, std::size_t(cb.pitch), bb, b, l0);
     F color[4];
-    for (int c = 0; c < 4; ++c) color[c] = LoadVec<F>(&bb.color[b][0][c][l0]);
+    for (int c = 0; c < 4; ++c) color[c] = LoadVec<F>(bb.Color(b, 0, c) + l0);
     const U result = Blend8Lanes<W>(*ctx.blend, color, pixels);
-    StoreRows<std::uint32_t, W, U>(cp, std::size_t(cb.pitch), l0, go ? result : pixels);
+    StoreQuads<std::uint32_t, W, U>(cp, std::size_t(cb.pitch), bb, b, l0, go ? result : pixels);
   }
 }
 
@@ -401,14 +391,13 @@ void LaneOps(const BlockOpsContext& ctx, const Unorm8Blend* per_buffer, int b) {
   const StencilFace& face = *ctx.face;
   for (int lane = 0; lane < kLanes; ++lane) {
     if (!((bb.live[b] >> lane) & 1u)) continue;
-    const int x = bb.bx[b] + (lane & 3), y = bb.by[b] + (lane >> 2);
-    if (x >= t.width || y >= t.height) continue;  // (live lanes lie inside; this only guards the arithmetic)
+    const int x = bb.X(b, lane), y = bb.Y(b, lane);
     if (ctx.stencil_test && !StencilTest(face, t.Stencil(x, y))) {
       t.Stencil(x, y) = StencilUpdate(face, face.sfail, t.Stencil(x, y));
       continue;
     }
     if (ctx.depth_test) {
-      const float depth = ctx.shader_depth ? bb.depth[b][lane] : bb.frag_coord[b][2][lane];
+      const float depth = ctx.shader_depth ? bb.Depth(b)[lane] : bb.frag_coord[b][2][lane];
       // Depth is clamped to [0, 1] before the test (the depth buffer holds [0, 1]); NaN fails.
       const float z = std::clamp(depth, 0.0f, 1.0f);
       if (std::isnan(depth) || !DepthTest(st.depth_func, z, t.Depth(x, y))) {
@@ -422,8 +411,8 @@ void LaneOps(const BlockOpsContext& ctx, const Unorm8Blend* per_buffer, int b) {
     for (int o = 0; o < kMaxColorOutputs; ++o) {
       const ColorBuffer& cb = t.color[o];
       if (!cb.Present()) continue;
-      glm::vec4 color(bb.color[b][o][0][lane], bb.color[b][o][1][lane], bb.color[b][o][2][lane],
-                      bb.color[b][o][3][lane]);
+      glm::vec4 color(bb.Color(b, o, 0)[lane], bb.Color(b, o, 1)[lane], bb.Color(b, o, 2)[lane],
+                      bb.Color(b, o, 3)[lane]);
       if (cb.Normalized()) {
         // 8-bit channels: the exact integer blend on the pixel's bytes (channels the format lacks read 0 or 1).
         std::uint8_t* p = cb.At(x, y);
@@ -464,15 +453,14 @@ template <int W>
 SOFTGL_WIDE std::uint32_t EarlyBlock(Enum func, BlockBuffer& bb, const RenderTarget& t, int b) {
   using F = typename V<W>::F;
   using I = typename V<W>::I;
-  const float* dp = t.depth + std::size_t(bb.by[b]) * std::size_t(t.depth_pitch) + std::size_t(bb.bx[b]);
   std::uint32_t keep = 0;
   for (int l0 = 0; l0 < kLanes; l0 += W) {
     const F z = LoadVec<F>(&bb.frag_coord[b][2][l0]);
     F zc = z > 0.0f ? z : F{} + 0.0f;
     zc = zc < 1.0f ? zc : F{} + 1.0f;
-    const F stored = LoadRows<float, W, F>(dp, std::size_t(t.depth_pitch), l0);
+    const F stored = LoadQuads<float, W, F>(t.depth, std::size_t(t.depth_pitch), bb, b, l0);
     const I pass = Compare(func, zc, stored) & (z == z);
-    keep |= MaskBits<W>(pass, l0);
+    keep |= MaskToBits<W>(pass, l0);
   }
   return bb.live[b] &= keep;
 }
@@ -501,13 +489,13 @@ int EarlyDepthTest(const FragmentOpsState& state, BlockBuffer& blocks, const Ren
   static const EarlyBlockFn early = ChooseEarlyBlock();
   for (int b = 0; b < blocks.count; ++b) {
     if (target.depth && blocks.live[b]) {
-      if (Inside(target, blocks.bx[b], blocks.by[b])) {
+      if (Inside(target, blocks, b)) {
         early(state.depth_func, blocks, target, b);
       } else {
         for (int lane = 0; lane < kLanes; ++lane) {
           if (!((blocks.live[b] >> lane) & 1u)) continue;  // a live lane lies inside the target
           const float depth = blocks.frag_coord[b][2][lane];
-          const float stored = target.Depth(blocks.bx[b] + (lane & 3), blocks.by[b] + (lane >> 2));
+          const float stored = target.Depth(blocks.X(b, lane), blocks.Y(b, lane));
           // As the late test: depth clamped to [0, 1], NaN fails.
           if (std::isnan(depth) || !DepthTest(state.depth_func, std::clamp(depth, 0.0f, 1.0f), stored))
             blocks.live[b] &= ~(1u << lane);
@@ -519,8 +507,8 @@ int EarlyDepthTest(const FragmentOpsState& state, BlockBuffer& blocks, const Ren
   return live;
 }
 
-void ApplyFragmentOps(const FragmentOpsState& state, const BlockBuffer& blocks, bool shader_depth,
-                      const RenderTarget& target) {
+void ApplyFragmentOps(const FragmentOpsState& state, const FragmentOpsPlan& plan, const BlockBuffer& blocks,
+                      bool shader_depth, const RenderTarget& target) {
   // Without a depth or stencil buffer the test passes and nothing is written (OpenGL 4.6, 17.3.5 and 17.3.6).
   BlockOpsContext ctx;
   ctx.state = &state;
@@ -531,18 +519,12 @@ void ApplyFragmentOps(const FragmentOpsState& state, const BlockBuffer& blocks, 
   ctx.depth_test = state.depth_test && target.depth != nullptr;
   ctx.any_color = state.color_mask[0] || state.color_mask[1] || state.color_mask[2] || state.color_mask[3];
   ctx.face = blocks.front_facing ? &state.front : &state.back;
-  const Unorm8Blend per_buffer[kMaxColorOutputs] = {
-      Unorm8Blend(state, target.color[0].rgb_only), Unorm8Blend(state, target.color[1].rgb_only),
-      Unorm8Blend(state, target.color[2].rgb_only), Unorm8Blend(state, target.color[3].rgb_only)};
-  ctx.blend = &per_buffer[0];
-  // The wide path: colour buffer 0 RGBA8 (or none) and no other.
-  const bool wide_target = (!target.color[0].Present() || target.color[0].Rgba8()) && !target.color[1].Present() &&
-                           !target.color[2].Present() && !target.color[3].Present();
+  ctx.blend = &plan.blend[0];
   static const BlockOpsFn block_ops = ChooseBlockOps();
   for (int b = 0; b < blocks.count; ++b) {
     if (!blocks.live[b]) continue;
-    if (wide_target && Inside(target, blocks.bx[b], blocks.by[b])) block_ops(ctx, b);
-    else LaneOps(ctx, per_buffer, b);
+    if (plan.wide_target && Inside(target, blocks, b)) block_ops(ctx, b);
+    else LaneOps(ctx, plan.blend, b);
   }
 }
 

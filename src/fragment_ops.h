@@ -81,6 +81,33 @@ glm::vec4 Blend(const BlendState& state, const glm::vec4& src, const glm::vec4& 
 /// stored bytes; returns the new bytes (before the colour mask). The exact integer arithmetic described above.
 void BlendUnorm8(const BlendState& state, const glm::vec4& src, const std::uint8_t dst[4], std::uint8_t out[4]);
 
+/// What an 8-bit blend factor multiplies: factor = k0 + k1 * v, v one of these 8-bit values (k0 in {0, 255}, k1 in
+/// {-1, 0, 1}); kSaturate is min(As, 1 - Ad) for colour.
+enum Source : std::uint8_t { kNothing, kSrc, kDst, kSrcAlpha, kDstAlpha, kConst, kConstAlpha, kSaturate };
+struct Term {
+  int k0 = 0, k1 = 0;
+  Source source = kNothing;
+};
+
+/// The blend state for an 8-bit buffer, resolved once per draw.
+struct Unorm8Blend {
+  bool blend = false;
+  Term src[4], dst[4];  // per channel (r, g, b from the colour state, a from the alpha state)
+  Enum eq[4] = {FUNC_ADD, FUNC_ADD, FUNC_ADD, FUNC_ADD};
+  int constant[4] = {0, 0, 0, 0};  // the constant colour in 8 bits
+  std::uint32_t keep = 0;          // bytes of the stored pixel the colour mask keeps
+
+  Unorm8Blend() = default;
+  Unorm8Blend(const FragmentOpsState& state, bool rgb_only);
+};
+
+/// What the per-fragment operations resolve once per draw and target.
+struct FragmentOpsPlan {
+  Unorm8Blend blend[kMaxColorOutputs];  // for the 8-bit colour buffers
+  bool wide_target = false;  // colour buffer 0 RGBA8 (or none) and no other: blocks take the vector path
+};
+FragmentOpsPlan PlanFragmentOps(const FragmentOpsState& state, const RenderTarget& target);
+
 /// Whether the depth test may run before the fragment shader without changing the result: the shader does not
 /// write depth, the stencil test is off (its depth-fail operation would be skipped), and the depth function is
 /// monotonic (LESS, LEQUAL, GREATER, GEQUAL), so that a fragment failing against the buffer now fails against any
@@ -94,8 +121,7 @@ int EarlyDepthTest(const FragmentOpsState& state, BlockBuffer& blocks, const Ren
 
 /// Runs the per-fragment operations for every live lane of `blocks` (after the fragment shader has written its
 /// colours, and its depth when `shader_depth`, and cleared discarded lanes) into the buffers of `target`.
-/// `outputs`: how many of the shader's colour outputs the target uses.
-void ApplyFragmentOps(const FragmentOpsState& state, const BlockBuffer& blocks, bool shader_depth,
-                      const RenderTarget& target);
+void ApplyFragmentOps(const FragmentOpsState& state, const FragmentOpsPlan& plan, const BlockBuffer& blocks,
+                      bool shader_depth, const RenderTarget& target);
 
 }  // namespace softgl::detail

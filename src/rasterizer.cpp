@@ -22,98 +22,145 @@ constexpr std::int64_t kHalf = kOne / 2;
 
 std::int64_t FloorDiv(std::int64_t a, std::int64_t b) { return a >= 0 ? a / b : -((-a + b - 1) / b); }
 
-// Makes room for one more block: flushes a full buffer, or one holding blocks of the other facing.
-int NewBlock(BlockBuffer& blocks, const BlockSink& sink, bool front_facing, int nvar, int bx, int by,
-             std::uint32_t mask) {
-  if (blocks.count == BlockBuffer::kCapacity || (blocks.count > 0 && blocks.front_facing != front_facing))
+// A new block of the four quads of the 4x4 square at (bx, by), all live.
+int AddSquare(BlockBuffer& blocks, const BlockSink& sink, bool front_facing, int nvar, int bx, int by) {
+  if (blocks.count == BlockBuffer::kCapacity || (blocks.count > 0 && blocks.front_facing != front_facing)) {
     sink.Flush(blocks);
+  } else {
+    blocks.CloseLast();
+  }
   blocks.front_facing = front_facing;
   blocks.nvar = nvar;
   const int b = blocks.count++;
-  blocks.bx[b] = bx;
-  blocks.by[b] = by;
-  blocks.live[b] = mask;
+  blocks.quads[b] = 4;
+  for (int q = 0; q < 4; ++q) {
+    blocks.qx[b][q] = bx + (q & 1) * 2;
+    blocks.qy[b][q] = by + (q >> 1) * 2;
+  }
+  blocks.live[b] = 0xFFFFu;
   return b;
 }
 
-// The lanes of the block at (bx, by) inside `bounds`.
-std::uint32_t BoundsMask(const Rect& bounds, int bx, int by) {
-  std::uint32_t mask = 0;
-  for (int lane = 0; lane < kLanes; ++lane) {
-    const int px = bx + (lane & 3), py = by + (lane >> 2);
+// A place for quad (qx, qy) with coverage `mask` (bit = lane of the quad): the current block while it has room, holds
+// no quad at that place and has this facing; else a new block (the buffer flushed first when full). Returns the
+// block and sets `slot` to the quad's place in it.
+inline int AddQuad(BlockBuffer& blocks, const BlockSink& sink, bool front_facing, int nvar, int qx, int qy,
+                   unsigned mask, int& slot) {
+  int b = blocks.count - 1;
+  bool fresh = b < 0 || blocks.quads[b] == 4 || blocks.front_facing != front_facing;
+  for (int q = 0; !fresh && q < blocks.quads[b]; ++q) fresh = blocks.qx[b][q] == qx && blocks.qy[b][q] == qy;
+  if (fresh) {
+    if (blocks.count == BlockBuffer::kCapacity || (blocks.count > 0 && blocks.front_facing != front_facing)) {
+      sink.Flush(blocks);
+    } else {
+      blocks.CloseLast();
+    }
+    blocks.front_facing = front_facing;
+    blocks.nvar = nvar;
+    b = blocks.count++;
+    blocks.quads[b] = 0;
+    blocks.live[b] = 0;
+  }
+  slot = blocks.quads[b]++;
+  blocks.qx[b][slot] = qx;
+  blocks.qy[b][slot] = qy;
+  blocks.live[b] |= std::uint32_t(mask) << (4 * slot);
+  return b;
+}
+
+// The lanes of the quad at (qx, qy) inside `bounds`.
+unsigned BoundsMask(const Rect& bounds, int qx, int qy) {
+  unsigned mask = 0;
+  for (int lane = 0; lane < 4; ++lane) {
+    const int px = qx + (lane & 1), py = qy + (lane >> 1);
     if (px >= bounds.x0 && px < bounds.x1 && py >= bounds.y0 && py < bounds.y1) mask |= 1u << lane;
   }
   return mask;
 }
 
-// Appends the block at (bx, by) with coverage `mask`; `eval(px, py, frag, var)` fills one lane (helper lanes
-// too): frag the 4 values of gl_FragCoord, var the nvar varyings, each at a stride of 16 floats.
+// Appends the quad at (qx, qy) with coverage `mask`; `eval(px, py, frag, var)` fills one lane (helper lanes too):
+// frag the 4 values of gl_FragCoord, var the nvar varyings.
 template <class Eval>
-int EmitBlock(BlockBuffer& blocks, const BlockSink& sink, bool front_facing, int nvar, int bx, int by,
-              std::uint32_t mask, Eval&& eval) {
-  const int b = NewBlock(blocks, sink, front_facing, nvar, bx, by, mask);
+int EmitQuad(BlockBuffer& blocks, const BlockSink& sink, bool front_facing, int nvar, int qx, int qy, unsigned mask,
+             Eval&& eval) {
+  int slot;
+  const int b = AddQuad(blocks, sink, front_facing, nvar, qx, qy, mask, slot);
   float* var = blocks.Varyings(b);
-  for (int lane = 0; lane < kLanes; ++lane) {
+  for (int k = 0; k < 4; ++k) {
+    const int lane = slot * 4 + k;
     float frag[4], v[kMaxVaryingFloats];
-    eval(bx + (lane & 3), by + (lane >> 2), frag, v);
+    eval(qx + (k & 1), qy + (k >> 1), frag, v);
     for (int c = 0; c < 4; ++c) blocks.frag_coord[b][c][lane] = frag[c];
     for (int i = 0; i < nvar; ++i) var[i * kLanes + lane] = v[i];
   }
   return b;
 }
 
-// gl_FragCoord and the varyings of a triangle's block, every lane (helpers included): with r = pixel centre -
-// vertex 0, q = 1/w = oow(r); a smooth varying is plane(r) / q, a noperspective or flat one plane(r) itself. W lanes
-// at a time, each lane's operations those of one lane alone, in the same order.
+// gl_FragCoord and the varyings of lanes l0 .. l0 + 4 * quads - 1 of block b, every lane (helpers included), with x, y
+// each lane's pixel: with r = pixel centre - vertex 0, q = 1/w = oow(r); a smooth varying is plane(r) / q, a
+// noperspective or flat one plane(r) itself. W lanes side by side, each lane's operations those of one lane alone.
 template <int W>
-SOFTGL_WIDE void InterpolateBlock(const TrianglePlanes& p, int bx, int by, float (*frag)[kLanes], float* var) {
+SOFTGL_WIDE void InterpolateLanes(const TrianglePlanes& p, BlockBuffer& blocks, int b, int l0, typename V<W>::F x,
+                                  typename V<W>::F y) {
   using F = typename V<W>::F;
-  for (int l0 = 0; l0 < kLanes; l0 += W) {
-    F fx, fy;
-    for (int l = 0; l < W; ++l) {
-      fx[l] = float(bx + ((l0 + l) & 3));
-      fy[l] = float(by + ((l0 + l) >> 2));
-    }
-    fx = fx + 0.5f;
-    fy = fy + 0.5f;
-    const F rx = fx - p.x0, ry = fy - p.y0;
-    auto at = [&](const Plane& pl) { return (pl.a0 + pl.dx * rx) + pl.dy * ry; };
-    const F q = at(p.oow), z = at(p.z);
-    std::memcpy(&frag[0][l0], &fx, sizeof fx);
-    std::memcpy(&frag[1][l0], &fy, sizeof fy);
-    std::memcpy(&frag[2][l0], &z, sizeof z);
-    std::memcpy(&frag[3][l0], &q, sizeof q);
-    if (p.nvar == 0) continue;
-    const F w = 1.0f / q;
-    for (int i = 0; i < p.nvar; ++i) {
-      F v = at(p.var[i]);
-      if (p.perspective[i]) v = v * w;
-      std::memcpy(var + i * kLanes + l0, &v, sizeof v);
-    }
+  const F fx = x + 0.5f, fy = y + 0.5f;
+  const F rx = fx - p.x0, ry = fy - p.y0;
+  auto at = [&](const Plane& pl) { return (pl.a0 + pl.dx * rx) + pl.dy * ry; };
+  const F q = at(p.oow), z = at(p.z);
+  StoreVec(&blocks.frag_coord[b][0][l0], fx);
+  StoreVec(&blocks.frag_coord[b][1][l0], fy);
+  StoreVec(&blocks.frag_coord[b][2][l0], z);
+  StoreVec(&blocks.frag_coord[b][3][l0], q);
+  if (p.nvar == 0) return;
+  const F w = 1.0f / q;
+  float* var = blocks.Varyings(b) + l0;
+  for (int i = 0; i < p.nvar; ++i) {
+    F v = at(p.var[i]);
+    if (p.perspective[i]) v = v * w;
+    StoreVec(var + i * kLanes, v);
   }
 }
 
-using InterpolateFn = void (*)(const TrianglePlanes&, int, int, float (*)[kLanes], float*);
+// One quad of block b: its four lanes.
+inline void InterpolateQuad(const TrianglePlanes& p, BlockBuffer& blocks, int b, int slot) {
+  using F = typename V<4>::F;
+  const F x = float(blocks.qx[b][slot]) + F{0.0f, 1.0f, 0.0f, 1.0f};
+  const F y = float(blocks.qy[b][slot]) + F{0.0f, 0.0f, 1.0f, 1.0f};
+  InterpolateLanes<4>(p, blocks, b, 4 * slot, x, y);
+}
 
-void InterpolateBase(const TrianglePlanes& p, int bx, int by, float (*frag)[kLanes], float* var) {
-  InterpolateBlock<4>(p, bx, by, frag, var);
+// A block that is the 4x4 square at (bx, by) (AddSquare), W lanes at a time.
+template <int W>
+SOFTGL_WIDE void InterpolateSquare(const TrianglePlanes& p, BlockBuffer& blocks, int b) {
+  using F = typename V<W>::F;
+  const float bx = float(blocks.qx[b][0]), by = float(blocks.qy[b][0]);
+  for (int l0 = 0; l0 < kLanes; l0 += W) {
+    F x, y;
+    for (int l = 0; l < W; ++l) {  // constants: lane l's place in the square
+      const int lane = l0 + l, q = lane >> 2;
+      x[l] = float((q & 1) * 2 + (lane & 1));
+      y[l] = float((q >> 1) * 2 + ((lane >> 1) & 1));
+    }
+    InterpolateLanes<W>(p, blocks, b, l0, bx + x, by + y);
+  }
 }
+
+using InterpolateSquareFn = void (*)(const TrianglePlanes&, BlockBuffer&, int);
+void InterpolateSquareBase(const TrianglePlanes& p, BlockBuffer& blocks, int b) { InterpolateSquare<4>(p, blocks, b); }
 #if defined(SOFTGL_HAS_DISPATCH)
-SOFTGL_TARGET_AVX2 void InterpolateAvx2(const TrianglePlanes& p, int bx, int by, float (*frag)[kLanes], float* var) {
-  InterpolateBlock<8>(p, bx, by, frag, var);
+SOFTGL_TARGET_AVX2 void InterpolateSquareAvx2(const TrianglePlanes& p, BlockBuffer& blocks, int b) {
+  InterpolateSquare<8>(p, blocks, b);
 }
-SOFTGL_TARGET_AVX512 void InterpolateAvx512(const TrianglePlanes& p, int bx, int by, float (*frag)[kLanes],
-                                            float* var) {
-  InterpolateBlock<16>(p, bx, by, frag, var);
+SOFTGL_TARGET_AVX512 void InterpolateSquareAvx512(const TrianglePlanes& p, BlockBuffer& blocks, int b) {
+  InterpolateSquare<16>(p, blocks, b);
 }
 #endif
-
-InterpolateFn ChooseInterpolate() {
+InterpolateSquareFn ChooseInterpolateSquare() {
 #if defined(SOFTGL_HAS_DISPATCH)
-  if (CpuSimdLevel() == SimdLevel::kAvx512) return InterpolateAvx512;
-  if (CpuSimdLevel() == SimdLevel::kAvx2) return InterpolateAvx2;
+  if (CpuSimdLevel() == SimdLevel::kAvx512) return InterpolateSquareAvx512;
+  if (CpuSimdLevel() == SimdLevel::kAvx2) return InterpolateSquareAvx2;
 #endif
-  return InterpolateBase;
+  return InterpolateSquareBase;
 }
 
 // Whether varying i is divided by w (smooth), or taken as it is (noperspective, flat).
@@ -219,8 +266,8 @@ void RasterizeTriangle(const WindowVertex& v0, const WindowVertex& v1, const Win
   // smallest at the region's corner pixel centres: a region some edge excludes at all four corners is skipped, a
   // region every edge includes at all four corners is covered whole, and only the others are tested per pixel,
   // from edge values stepped incrementally. Every pixel's coverage is the same exact integer test as a
-  // pixel-by-pixel walk; the region's four 4x4 blocks come out one by one (each pixel of a triangle once, so the
-  // order does not change the image).
+  // pixel-by-pixel walk; quads come out region by region (each pixel of a triangle once, so the order does not
+  // change the image).
   constexpr int kRegion = 8;
   std::int64_t step_x[3], step_y[3];  // E(px + 1) - E(px), E(py + 1) - E(py)
   for (int e = 0; e < 3; ++e) {
@@ -230,8 +277,8 @@ void RasterizeTriangle(const WindowVertex& v0, const WindowVertex& v1, const Win
   auto edge_at = [&](int e, std::int64_t px, std::int64_t py) {
     return A[e] * (px * kOne + kHalf) + B[e] * (py * kOne + kHalf) + C[e];
   };
-  static const InterpolateFn interpolate = ChooseInterpolate();
   const Rect& bounds = target.bounds;
+  static const InterpolateSquareFn interpolate_square = ChooseInterpolateSquare();
   for (std::int64_t ry = py0 & ~std::int64_t(kRegion - 1); ry <= py1; ry += kRegion) {
     for (std::int64_t rx = px0 & ~std::int64_t(kRegion - 1); rx <= px1; rx += kRegion) {
       bool skip = false, whole = true;
@@ -243,28 +290,38 @@ void RasterizeTriangle(const WindowVertex& v0, const WindowVertex& v1, const Win
         if (lo < 0) whole = false;
       }
       if (skip) continue;
-      for (int sub = 0; sub < 4; ++sub) {
-        const std::int64_t bx = rx + (sub & 1) * 4, by = ry + (sub >> 1) * 4;
-        if (bx > px1 || by > py1 || bx + 3 < px0 || by + 3 < py0) continue;
-        std::uint32_t mask = 0xFFFFu;
-        if (!whole) {
-          mask = 0;
-          std::int64_t row[3];
-          for (int e = 0; e < 3; ++e) row[e] = edge_at(e, bx, by);
-          for (int j = 0; j < 4; ++j) {
-            std::int64_t E[3] = {row[0], row[1], row[2]};
-            for (int i = 0; i < 4; ++i) {
-              if (E[0] >= 0 && E[1] >= 0 && E[2] >= 0) mask |= 1u << (j * 4 + i);
-              for (int e = 0; e < 3; ++e) E[e] += step_x[e];
-            }
-            for (int e = 0; e < 3; ++e) row[e] += step_y[e];
-          }
+      if (whole && rx >= bounds.x0 && rx + kRegion <= bounds.x1 && ry >= bounds.y0 && ry + kRegion <= bounds.y1) {
+        // Covered whole, inside the bounds: four full blocks, interpolated at the processor's width.
+        for (int sq = 0; sq < 4; ++sq) {
+          const int b = AddSquare(blocks, sink, front_facing, nvar, int(rx) + (sq & 1) * 4, int(ry) + (sq >> 1) * 4);
+          interpolate_square(planes, blocks, b);
         }
-        if (bx < bounds.x0 || bx + 3 >= bounds.x1 || by < bounds.y0 || by + 3 >= bounds.y1)
-          mask &= BoundsMask(bounds, int(bx), int(by));
-        if (!mask) continue;
-        const int b = NewBlock(blocks, sink, front_facing, nvar, int(bx), int(by), mask);
-        interpolate(planes, int(bx), int(by), blocks.frag_coord[b], blocks.Varyings(b));
+        continue;
+      }
+      const std::int64_t qy0 = std::max(ry, py0 & ~std::int64_t(1)), qy1 = std::min(ry + kRegion - 1, py1);
+      const std::int64_t qx0 = std::max(rx, px0 & ~std::int64_t(1)), qx1 = std::min(rx + kRegion - 1, px1);
+      for (std::int64_t qy = qy0; qy <= qy1; qy += 2) {
+        std::int64_t row[3];
+        for (int e = 0; e < 3; ++e) row[e] = edge_at(e, qx0, qy);
+        for (std::int64_t qx = qx0; qx <= qx1; qx += 2) {
+          unsigned mask = 0xFu;
+          if (!whole) {
+            mask = 0;
+            for (int lane = 0; lane < 4; ++lane) {
+              bool inside = true;
+              for (int e = 0; e < 3; ++e)
+                inside = inside && row[e] + (lane & 1) * step_x[e] + (lane >> 1) * step_y[e] >= 0;
+              if (inside) mask |= 1u << lane;
+            }
+            for (int e = 0; e < 3; ++e) row[e] += 2 * step_x[e];
+          }
+          if (qx < bounds.x0 || qx + 1 >= bounds.x1 || qy < bounds.y0 || qy + 1 >= bounds.y1)
+            mask &= BoundsMask(bounds, int(qx), int(qy));
+          if (!mask) continue;
+          int slot;
+          const int b = AddQuad(blocks, sink, front_facing, nvar, int(qx), int(qy), mask, slot);
+          InterpolateQuad(planes, blocks, b, slot);
+        }
       }
     }
   }
@@ -324,22 +381,23 @@ void RasterizeLine(const WindowVertex& a, const WindowVertex& b, bool front_faci
   // one-pixel-wide parallelogram around the line owns under the fill rule is taken: for x-major lines the upper
   // one when the line rises, else the lower one; for y-major lines the left one.
   const bool upper_on_tie = x_major && dv > 0.0f;
-  int last_block = -1;  // the last block this line emitted, while it is still in the buffer
+  int last_block = -1, last_slot = -1;  // the last quad this line emitted, while it is still in the buffer
   for (long i = first; i <= last; ++i) {
     const float uc = float(i) + 0.5f;
     const float vc = v0 + (uc - u0) * dv / du;
     const long j = upper_on_tie ? long(std::floor(vc)) : long(std::ceil(vc)) - 1;
     const int px = int(x_major ? i : j), py = int(x_major ? j : i);
     if (px < target.bounds.x0 || px >= target.bounds.x1 || py < target.bounds.y0 || py >= target.bounds.y1) continue;
-    const int bx = px & ~3, by = py & ~3;
-    const std::uint32_t bit = 1u << ((py & 3) * 4 + (px & 3));
-    // Neighbouring fragments of the same 4x4 block share one block.
-    if (last_block >= 0 && last_block == blocks.count - 1 && blocks.bx[last_block] == bx &&
-        blocks.by[last_block] == by) {
-      blocks.live[last_block] |= bit;
+    const int qx = px & ~1, qy = py & ~1;
+    const unsigned lane = unsigned((px & 1) + 2 * (py & 1));
+    // Neighbouring fragments of the same 2x2 quad share one quad.
+    if (last_block >= 0 && last_block == blocks.count - 1 && last_slot == blocks.quads[last_block] - 1 &&
+        blocks.qx[last_block][last_slot] == qx && blocks.qy[last_block][last_slot] == qy) {
+      blocks.live[last_block] |= 1u << (4 * last_slot + int(lane));
       continue;
     }
-    last_block = EmitBlock(blocks, sink, front_facing, nvar, bx, by, bit, eval);
+    last_block = EmitQuad(blocks, sink, front_facing, nvar, qx, qy, 1u << lane, eval);
+    last_slot = blocks.quads[last_block] - 1;
   }
 }
 
@@ -361,14 +419,14 @@ void RasterizePoint(const WindowVertex& v, float size, bool front_facing, const 
     frag[3] = v.win.w;
     for (int i = 0; i < nvar; ++i) out[i] = Perspective(target, i) ? v.var[i] * w : v.var[i];
   };
-  for (long by = y0 & ~3L; by <= y1; by += 4) {
-    for (long bx = x0 & ~3L; bx <= x1; bx += 4) {
-      std::uint32_t mask = 0;
-      for (int lane = 0; lane < kLanes; ++lane) {
-        const long px = bx + (lane & 3), py = by + (lane >> 2);
+  for (long qy = y0 & ~1L; qy <= y1; qy += 2) {
+    for (long qx = x0 & ~1L; qx <= x1; qx += 2) {
+      unsigned mask = 0;
+      for (int lane = 0; lane < 4; ++lane) {
+        const long px = qx + (lane & 1), py = qy + (lane >> 1);
         if (px >= x0 && px <= x1 && py >= y0 && py <= y1) mask |= 1u << lane;
       }
-      if (mask) EmitBlock(blocks, sink, front_facing, nvar, int(bx), int(by), mask, eval);
+      if (mask) EmitQuad(blocks, sink, front_facing, nvar, int(qx), int(qy), mask, eval);
     }
   }
 }

@@ -52,6 +52,7 @@ struct FragmentStage {
   const RenderTarget* target;
   int outputs;  // colour outputs the target keeps
   int simd;
+  FragmentOpsPlan plan;
 
   static void Run(void* user, BlockBuffer& blocks) {
     const auto* self = static_cast<const FragmentStage*>(user);
@@ -64,11 +65,10 @@ struct FragmentStage {
     batch.varyings = blocks.varyings;
     batch.frag_coord = &blocks.frag_coord[0][0][0];
     batch.live = blocks.live;
-    batch.color = &blocks.color[0][0][0][0];
-    batch.depth = &blocks.depth[0][0];
+    batch.out = blocks.out;
     batch.textures = &self->draw->textures;
     self->draw->program->ShadeBlocks(batch);
-    ApplyFragmentOps(self->draw->ops, blocks, self->draw->shader_depth, *self->target);
+    ApplyFragmentOps(self->draw->ops, self->plan, blocks, self->draw->shader_depth, *self->target);
   }
 };
 
@@ -144,7 +144,7 @@ void Frame::RenderTile(int tile, TileScratch& scratch) const {
     rt.nvar = draw.nvar;
     rt.interpolation = draw.interpolation;
     if (rt.bounds.Empty()) continue;
-    FragmentStage stage{&draw, &target_, outputs, simd};
+    FragmentStage stage{&draw, &target_, outputs, simd, PlanFragmentOps(draw.ops, target_)};
     const BlockSink sink{&FragmentStage::Run, &stage};
     blocks.count = 0;
     for (const BinnedBatch* batch : draw.batches) {

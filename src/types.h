@@ -52,23 +52,45 @@ struct Rect {
   bool Empty() const { return x0 >= x1 || y0 >= y1; }
 };
 
-/// Rasterizer output: a batch of 4 x 4 fragment blocks ready for the fragment stage, with their coverage and
-/// interpolated values; and the fragment stage's outputs. Lane order in a block: row by row from the bottom,
-/// lane = (y - by) * 4 + (x - bx), with (bx, by) multiples of 4. Every lane is filled (helper lanes too), so that
-/// the fragment stage can take derivatives.
+/// Rasterizer output: a batch of blocks ready for the fragment stage, with their coverage and interpolated values,
+/// and the fragment stage's outputs. A block is 16 fragments: four 2x2 quads anywhere in the target (of one draw and
+/// one facing, possibly of different primitives, never two at the same place), lane = quad * 4 + (x & 1) +
+/// 2 * (y & 1). Every lane is filled (helper lanes too), so that the fragment stage can take derivatives; a block
+/// with fewer than four quads repeats its first quad in the others, never live.
 struct BlockBuffer {
   static constexpr int kCapacity = 16;
   int count = 0;
   int nvar = 0;
   bool front_facing = true;
-  int bx[kCapacity];
-  int by[kCapacity];
+  int quads[kCapacity];   // quads in each block (1 to 4)
+  int qx[kCapacity][4];   // quad origins (even coordinates)
+  int qy[kCapacity][4];
   std::uint32_t live[kCapacity];  // coverage bits; cleared by the early depth test and discard
   alignas(64) float frag_coord[kCapacity][4][kLanes];                  // x, y, z, 1/w
   alignas(64) float varyings[kCapacity * kBlockVaryingFloats];         // block b: [nvar][16] at b * kBlockVaryingFloats
-  alignas(64) float color[kCapacity][kMaxColorOutputs][4][kLanes];     // the shader's outputs
-  alignas(64) float depth[kCapacity][kLanes];                          // gl_FragDepth, when the shader writes it
+  FragmentLanesOut out[kCapacity];  // the fragment shader's outputs (it writes them here)
   float* Varyings(int b) { return varyings + std::size_t(b) * kBlockVaryingFloats; }
+  /// Lanes of output o's channel c (or of the depth) of block b, as 16 floats.
+  const float* Color(int b, int o, int c) const { return reinterpret_cast<const float*>(&out[b].color[o][c].v); }
+  const float* Depth(int b) const { return reinterpret_cast<const float*>(&out[b].depth.v); }
+  const float* Varyings(int b) const { return varyings + std::size_t(b) * kBlockVaryingFloats; }
+  /// The pixel of lane `lane` of block b.
+  int X(int b, int lane) const { return qx[b][lane >> 2] + (lane & 1); }
+  int Y(int b, int lane) const { return qy[b][lane >> 2] + ((lane >> 1) & 1); }
+  /// Fills the unused quads of the last block from its first (positions and values, never live).
+  void CloseLast() {
+    if (count == 0) return;
+    const int b = count - 1;
+    for (int q = quads[b]; q < 4; ++q) {
+      qx[b][q] = qx[b][0];
+      qy[b][q] = qy[b][0];
+      for (int c = 0; c < 4; ++c)
+        for (int k = 0; k < 4; ++k) frag_coord[b][c][q * 4 + k] = frag_coord[b][c][k];
+      float* v = Varyings(b);
+      for (int i = 0; i < nvar; ++i)
+        for (int k = 0; k < 4; ++k) v[i * kLanes + q * 4 + k] = v[i * kLanes + k];
+    }
+  }
 };
 
 /// Where the rasterizer sends a full (or final) BlockBuffer: the fragment stage and per-fragment operations.
@@ -76,7 +98,10 @@ struct BlockSink {
   void (*flush)(void* user, BlockBuffer& blocks) = nullptr;
   void* user = nullptr;
   void Flush(BlockBuffer& blocks) const {
-    if (blocks.count > 0) flush(user, blocks);
+    if (blocks.count > 0) {
+      blocks.CloseLast();
+      flush(user, blocks);
+    }
     blocks.count = 0;
   }
 };

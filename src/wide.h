@@ -24,6 +24,7 @@ struct V {
   typedef float F __attribute__((vector_size(4 * W)));
   typedef std::int32_t I __attribute__((vector_size(4 * W)));
   typedef std::uint32_t U __attribute__((vector_size(4 * W)));
+  typedef std::uint8_t B __attribute__((vector_size(W)));
 };
 
 template <class T>
@@ -35,6 +36,32 @@ SOFTGL_WIDE T LoadVec(const void* p) {
 template <class T>
 SOFTGL_WIDE void StoreVec(void* p, const T& v) {
   std::memcpy(p, &v, sizeof v);
+}
+
+/// 0, 1, 2, ... W - 1.
+template <int W>
+SOFTGL_WIDE typename V<W>::I Iota() {
+  typename V<W>::I r;
+  for (int l = 0; l < W; ++l) r[l] = l;
+  return r;
+}
+
+/// The lanes l0 .. l0 + W - 1 of bit mask `bits` as a vector mask (all bits set where the bit is).
+template <int W>
+SOFTGL_WIDE typename V<W>::I BitsToMask(std::uint32_t bits, int l0) {
+  using I = typename V<W>::I;
+  const I lane_bit = (I{} + 1) << Iota<W>();
+  return ((I{} + std::int32_t(bits >> l0)) & lane_bit) != 0;
+}
+
+/// A vector mask as bits, shifted to lanes l0 .. l0 + W - 1.
+template <int W>
+SOFTGL_WIDE std::uint32_t MaskToBits(typename V<W>::I m, int l0) {
+  using I = typename V<W>::I;
+  I v = m & ((I{} + 1) << Iota<W>());
+  std::int32_t bits = 0;
+  for (int l = 0; l < W; ++l) bits |= v[l];  // OR of the lanes (the compiler reduces it)
+  return std::uint32_t(bits) << l0;
 }
 
 /// As std::floor, for |x| < 2^31 (callers keep x in range).

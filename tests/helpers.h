@@ -95,7 +95,7 @@ struct CoverageCounter {
     for (int b = 0; b < blocks.count; ++b)
       for (int lane = 0; lane < softgl::kLanes; ++lane)
         if ((blocks.live[b] >> lane) & 1u) {
-          const int x = blocks.bx[b] + (lane & 3), y = blocks.by[b] + (lane >> 2);
+          const int x = blocks.X(b, lane), y = blocks.Y(b, lane);
           if (x >= 0 && y >= 0 && x < self->width && y < self->height) ++self->hits[std::size_t(y) * self->width + x];
         }
   }

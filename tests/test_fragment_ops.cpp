@@ -568,7 +568,7 @@ std::uint8_t ReferenceBlend8(const detail::BlendState& b, int channel, const std
 
 TEST_CASE("blending into 8-bit buffers is OpenGL's formula on the 8-bit operands, correctly rounded",
           "[fragment_ops][blend]") {
-  // Four 4x4 blocks into an 8x8 RGBA8 target: the wide path (one 8-bit colour buffer, blocks inside the target),
+  // Four blocks of four quads into an 8x8 RGBA8 target: the wide path (one 8-bit colour buffer, blocks inside the target),
   // and again with a second colour buffer present, which takes the lane-by-lane path for both. Every factor pair
   // and equation, random colours (out of range and NaN included), random colour masks.
   const Enum factors[] = {ZERO, ONE, SRC_COLOR, ONE_MINUS_SRC_COLOR, DST_COLOR, ONE_MINUS_DST_COLOR, SRC_ALPHA,
@@ -607,23 +607,26 @@ TEST_CASE("blending into 8-bit buffers is OpenGL's formula on the 8-bit operands
           for (auto& v : pixels) v = std::uint8_t(next());
           const std::vector<std::uint8_t> before = pixels;
           blocks->count = 4;
-          for (int b = 0; b < 4; ++b) {
-            blocks->bx[b] = (b & 1) * 4;
-            blocks->by[b] = (b >> 1) * 4;
+          for (int b = 0; b < 4; ++b) {  // block b: the quads of rows 2b and 2b + 1, in a scrambled order
+            blocks->quads[b] = 4;
+            for (int q = 0; q < 4; ++q) {
+              blocks->qx[b][q] = ((q + b) % 4) * 2;
+              blocks->qy[b][q] = 2 * b;
+            }
             blocks->live[b] = 0xFFFFu;
             for (int o = 0; o < 2; ++o)
               for (int c = 0; c < 4; ++c)
                 for (int l = 0; l < softgl::kLanes; ++l)
-                  blocks->color[b][o][c][l] = float(int(next() % 1400) - 200) / 1000.0f;  // [-0.2, 1.2)
+                  blocks->out[b].color[o][c].v[l] = float(int(next() % 1400) - 200) / 1000.0f;  // [-0.2, 1.2)
           }
-          blocks->color[1][0][1][5] = std::numeric_limits<float>::quiet_NaN();
-          detail::ApplyFragmentOps(state, *blocks, false, target);
+          blocks->out[1].color[0][1].v[5] = std::numeric_limits<float>::quiet_NaN();
+          detail::ApplyFragmentOps(state, detail::PlanFragmentOps(state, target), *blocks, false, target);
           for (int b = 0; b < 4; ++b)
             for (int l = 0; l < softgl::kLanes; ++l) {
-              const int x = blocks->bx[b] + (l & 3), y = blocks->by[b] + (l >> 2);
+              const int x = blocks->X(b, l), y = blocks->Y(b, l);
               const std::size_t i = (std::size_t(y) * kSize + std::size_t(x)) * 4;
               std::uint8_t s8[4];
-              for (int c = 0; c < 4; ++c) s8[c] = FloatToUnorm8(blocks->color[b][0][c][l]);  // NaN reads 0
+              for (int c = 0; c < 4; ++c) s8[c] = FloatToUnorm8(blocks->out[b].color[0][c][l]);  // NaN reads 0
               for (int c = 0; c < 4; ++c) {
                 const std::uint8_t want =
                     state.color_mask[c] ? ReferenceBlend8(state.blend, c, s8, &before[i]) : before[i + std::size_t(c)];

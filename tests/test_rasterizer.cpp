@@ -262,7 +262,7 @@ TEST_CASE("lines: varyings follow OpenGL's projection parameter", "[rasterizer]"
         for (int l = 0; l < softgl::kLanes; ++l)
           if ((q.live[b] >> l) & 1u)
             static_cast<Sink*>(user)->values.push_back(
-                {glm::vec2(q.frag_coord[b][0][l], q.frag_coord[b][1][l]), q.Varyings(b)[l]});
+                {glm::vec2(q.frag_coord[b][0][l], q.frag_coord[b][1][l]), q.Varyings(b)[l]});  // var 0
     }
   } collected;
   auto blocks = std::make_unique<BlockBuffer>();

@@ -7,8 +7,8 @@
 //     vec3 c = mix(dark, base * d, step(0.5f, d));      // uniforms (glm types, floats) mix in freely
 //     out.color[0] = vec4(select(d > 0.9f, vec3(1.0f), c), 1.0f);   // a per-lane branch
 //
-// Lanes: a fragment shader's 16 lanes are a 4 x 4 pixel block, lane = (y % 4) * 4 + x % 4 (so dFdx and dFdy
-// read neighbouring lanes); a vertex shader's are 16 vertices. softgl compiles each shader three times (for SSE2,
+// Lanes: a fragment shader's 16 lanes are four 2x2 quads of pixels, lane = quad * 4 + (x % 2) + 2 * (y % 2) (so dFdx
+// and dFdy read the neighbouring lanes of the quad); a vertex shader's are 16 vertices. softgl compiles each shader three times (for SSE2,
 // AVX2 and AVX-512: 4, 8 and 16 lanes per instruction) and runs the version the processor allows, chosen at run
 // time; the results are the same on all three (none contracts a * b + c into a fused multiply-add).
 //
@@ -40,7 +40,7 @@
 
 namespace softgl {
 
-/// Lanes per wide value: a 4 x 4 block of fragments, or 16 vertices.
+/// Lanes per wide value: four 2x2 quads of fragments, or 16 vertices.
 inline constexpr int kLanes = 16;
 
 /// The instruction set the wide code runs on, read once: 0 for SSE2 (or no vector instructions), 1 for AVX2, 2 for
@@ -78,6 +78,7 @@ typedef std::uint32_t U32 __attribute__((vector_size(64), aligned(4)));
 typedef float F4 __attribute__((vector_size(16)));
 }  // namespace lanes_detail
 
+
 struct Float;
 
 /// A condition per lane (all bits set where it holds).
@@ -85,19 +86,29 @@ struct Bool {
   lanes_detail::I32 m;
 
   Bool() = default;
-  Bool(bool b) : m(lanes_detail::I32{} + (b ? -1 : 0)) {}
+  Bool(bool b) {
+    for (int i = 0; i < kLanes; ++i) m[i] = b ? -1 : 0;  // (compilers make this loop one broadcast)
+  }
   explicit Bool(const lanes_detail::I32& mask) : m(mask) {}
   /// Lane i holds where bit i of `bits` is set.
   static Bool FromBits(std::uint32_t bits) {
     const lanes_detail::I32 lane = {1 << 0, 1 << 1, 1 << 2,  1 << 3,  1 << 4,  1 << 5,  1 << 6,  1 << 7,
                                     1 << 8, 1 << 9, 1 << 10, 1 << 11, 1 << 12, 1 << 13, 1 << 14, 1 << 15};
-    return Bool(((lanes_detail::I32{} + std::int32_t(bits)) & lane) != 0);
+    lanes_detail::I32 all;
+    for (int i = 0; i < kLanes; ++i) all[i] = std::int32_t(bits);
+    return Bool((all & lane) != 0);
   }
   /// Bit i set where lane i holds.
   std::uint32_t Bits() const {
-    std::uint32_t bits = 0;
-    for (int i = 0; i < kLanes; ++i) bits |= std::uint32_t(m[i] != 0) << i;
-    return bits;
+    using lanes_detail::I32;
+    const I32 lane = {1 << 0, 1 << 1, 1 << 2,  1 << 3,  1 << 4,  1 << 5,  1 << 6,  1 << 7,
+                      1 << 8, 1 << 9, 1 << 10, 1 << 11, 1 << 12, 1 << 13, 1 << 14, 1 << 15};
+    I32 v = m & lane;  // then OR the lanes together, halving the width each step
+    v |= __builtin_shufflevector(v, v, 8, 9, 10, 11, 12, 13, 14, 15, 0, 1, 2, 3, 4, 5, 6, 7);
+    v |= __builtin_shufflevector(v, v, 4, 5, 6, 7, 0, 1, 2, 3, 12, 13, 14, 15, 8, 9, 10, 11);
+    v |= __builtin_shufflevector(v, v, 2, 3, 0, 1, 6, 7, 4, 5, 10, 11, 8, 9, 14, 15, 12, 13);
+    v |= __builtin_shufflevector(v, v, 1, 0, 3, 2, 5, 4, 7, 6, 9, 8, 11, 10, 13, 12, 15, 14);
+    return std::uint32_t(v[0]);
   }
   bool operator[](int i) const { return m[i] != 0; }
 
@@ -120,7 +131,9 @@ struct Int {
   lanes_detail::I32 v;
 
   Int() = default;
-  Int(int x) : v(lanes_detail::I32{} + std::int32_t(x)) {}
+  Int(int x) {
+    for (int i = 0; i < kLanes; ++i) v[i] = x;  // (compilers make this loop one broadcast)
+  }
   explicit Int(const lanes_detail::I32& x) : v(x) {}
   /// GLSL int(f): truncation towards zero. (Out of range and NaN give some value, never a trap.)
   explicit Int(const Float& f);
@@ -158,7 +171,9 @@ struct Float {
   lanes_detail::F32 v;
 
   Float() = default;
-  Float(float x) : v(lanes_detail::F32{} + x) {}
+  Float(float x) {
+    for (int i = 0; i < kLanes; ++i) v[i] = x;  // (compilers make this loop one broadcast)
+  }
   Float(double x) : Float(float(x)) {}
   Float(int x) : Float(float(x)) {}
   explicit Float(const lanes_detail::F32& x) : v(x) {}
@@ -713,8 +728,8 @@ inline vec3 cross(const glm::vec3& a, const vec3& b) { return cross(vec3(a), b);
 
 // ---- Derivatives across a fragment block ----------------------------------------------------------------------------
 
-/// GLSL dFdx in a fragment shader: per 2 x 2 quad of the 4 x 4 block, the difference between the right and the
-/// left fragment of the lane's row.
+/// GLSL dFdx in a fragment shader: per 2x2 quad, the difference between the right and the left fragment of the
+/// lane's row.
 inline Float dFdx(Float a) {
   const lanes_detail::F32 right = __builtin_shufflevector(a.v, a.v, 1, 1, 3, 3, 5, 5, 7, 7, 9, 9, 11, 11, 13, 13, 15, 15);
   const lanes_detail::F32 left = __builtin_shufflevector(a.v, a.v, 0, 0, 2, 2, 4, 4, 6, 6, 8, 8, 10, 10, 12, 12, 14, 14);
@@ -722,8 +737,8 @@ inline Float dFdx(Float a) {
 }
 /// GLSL dFdy: the difference between the upper and the lower fragment of the lane's column in its quad.
 inline Float dFdy(Float a) {
-  const lanes_detail::F32 up = __builtin_shufflevector(a.v, a.v, 4, 5, 6, 7, 4, 5, 6, 7, 12, 13, 14, 15, 12, 13, 14, 15);
-  const lanes_detail::F32 down = __builtin_shufflevector(a.v, a.v, 0, 1, 2, 3, 0, 1, 2, 3, 8, 9, 10, 11, 8, 9, 10, 11);
+  const lanes_detail::F32 up = __builtin_shufflevector(a.v, a.v, 2, 3, 2, 3, 6, 7, 6, 7, 10, 11, 10, 11, 14, 15, 14, 15);
+  const lanes_detail::F32 down = __builtin_shufflevector(a.v, a.v, 0, 1, 0, 1, 4, 5, 4, 5, 8, 9, 8, 9, 12, 13, 12, 13);
   return Float(up - down);
 }
 /// |dFdx| + |dFdy|.

@@ -3,7 +3,7 @@
 // A shader is a C++ class. Its uniforms are ordinary members; its varyings are a plain struct that the vertex stage
 // writes and the fragment stage reads, interpolated perspective-correctly (or as the qualifiers Flat<> and
 // NoPerspective<> say). Each stage is written once, in code that reads like GLSL, and softgl runs it on 16 lanes at
-// a time: 16 vertices, or a 4 x 4 block of fragments, with the types of softgl/lanes.h:
+// a time: 16 vertices, or four 2x2 quads of fragments, with the types of softgl/lanes.h:
 //
 //     struct Vary { softgl::vec3 color; };
 //     struct ColorShader : softgl::Shader<ColorShader, Vary> {
@@ -161,16 +161,18 @@ struct VertexLanesOut {
   Varyings varyings{};      ///< interpolated across the primitive for the fragment stage
 };
 
-/// What a wide fragment stage reads: a 4 x 4 block of fragments of one primitive, lane = (y % 4) * 4 + x % 4.
+/// What a wide fragment stage reads: 16 fragments, four 2x2 quads, lane = quad * 4 + (x % 2) + 2 * (y % 2). The
+/// quads may lie anywhere and belong to different primitives of the draw (as on a GPU); each quad's lanes are
+/// neighbours, so that derivatives are taken within the quad.
 template <class Varyings>
 struct FragmentLanes {
   Varyings varyings;   ///< interpolated varyings, per lane
   vec4 frag_coord;     ///< gl_FragCoord: window x, y (pixel centre at +0.5), depth z, and 1/w
-  bool front_facing;   ///< gl_FrontFacing (one primitive per block)
+  bool front_facing;   ///< gl_FrontFacing (the same for all 16 lanes)
   Bool helper;         ///< gl_HelperInvocation: lanes outside the primitive, run for derivatives, never written
   const Textures* textures;  ///< the textures bound for this draw
 
-  /// texture(sampler2D, uv): the level of detail from uv's derivatives across the block (implicit, as in GLSL).
+  /// texture(sampler2D, uv): the level of detail from uv's derivatives across each quad (implicit, as in GLSL).
   vec4 Texture(int unit, const vec2& uv, float bias = 0.0f) const {
     return TextureGrad(unit, uv, dFdx(uv), dFdy(uv), bias);
   }
@@ -214,7 +216,7 @@ struct FragmentLanes {
 
 /// What a wide fragment stage writes for its 16 fragments.
 struct FragmentLanesOut {
-  vec4 color[kMaxColorOutputs] = {};  ///< colour outputs; color[0] is written to the colour buffer
+  vec4 color[kMaxColorOutputs];  ///< colour outputs; color[0] is written to the colour buffer
   Float depth;                   ///< gl_FragDepth, preset to frag_coord.z (see Shader<>::kWritesDepth)
   Bool discarded = false;        ///< lanes discarded so far
   /// GLSL's discard, in the lanes where `c` holds (the others go on).
@@ -351,8 +353,7 @@ struct BlockBatch {
   const float* varyings = nullptr;        ///< block b at + b * kBlockVaryingFloats: [VaryingFloats()][16]
   const float* frag_coord = nullptr;      ///< block b at + b * 64: [4][16] (x, y, z, 1/w)
   std::uint32_t* live = nullptr;          ///< [count] in: covered lanes (bit = lane); out: discarded lanes cleared
-  float* color = nullptr;                 ///< out: block b at + b * 256: [kMaxColorOutputs][4][16]
-  float* depth = nullptr;                 ///< out: block b at + b * 16: gl_FragDepth (when the shader writes it)
+  FragmentLanesOut* out = nullptr;        ///< [count] what the fragment stage writes
   const Textures* textures = nullptr;
 };
 
@@ -392,43 +393,59 @@ class Program {
 /// floats per vertex; an empty struct means no varyings.
 template <class Derived, class Varyings>
 class Shader : public Program {
-  static constexpr bool kWideVertex = requires(const Derived& d, const VertexLanes& in, VertexLanesOut<Varyings>& out) {
-    d.Vertex(in, out);
-  };
-  static constexpr bool kWideFragment =
-      requires(const Derived& d, const FragmentLanes<Varyings>& in, FragmentLanesOut& out) { d.Fragment(in, out); };
-  static constexpr bool kWide = kWideVertex || kWideFragment;
-  static constexpr int kFloatBytes = kWide ? int(sizeof(float)) * kLanes : int(sizeof(float));
-  static constexpr int kFloats = std::is_empty_v<Varyings> ? 0 : int(sizeof(Varyings)) / kFloatBytes;
-  static_assert(std::is_trivially_copyable_v<Varyings>, "varyings must be trivially copyable");
-  static_assert(!kWide || std::is_empty_v<Varyings> || sizeof(Varyings) % kFloatBytes == 0,
-                "a wide shader's varyings must be made of Float, vec2, vec3 and vec4");
-  static_assert(kWide || std::is_empty_v<Varyings> || sizeof(Varyings) % sizeof(float) == 0,
-                "varyings must be made of floats");
-  static_assert(kFloats <= kMaxVaryingFloats,
-                "too many varyings: at most kMaxVaryingFloats (64) floats per vertex, as GL_MAX_VARYING_COMPONENTS");
-
-  // Derived declares `static constexpr bool kWritesDepth = true;` when its Fragment() writes out.depth.
-  static constexpr bool DeclaresDepth() {
-    if constexpr (requires { Derived::kWritesDepth; }) {
-      return bool(Derived::kWritesDepth);
-    } else {
-      return false;
+  // Which form Derived is written in, and what follows from it. (Asked inside member functions, where Derived is
+  // complete; in one nested struct, so that no name of it can hide or be hidden by a name of Derived.)
+  struct SoftglForm {
+    static constexpr bool WideVertex() {
+      return requires(const Derived& d, const VertexLanes& in, VertexLanesOut<Varyings>& out) { d.Vertex(in, out); };
     }
-  }
+    static constexpr bool WideFragment() {
+      return requires(const Derived& d, const FragmentLanes<Varyings>& in, FragmentLanesOut& out) {
+        d.Fragment(in, out);
+      };
+    }
+    static constexpr bool Wide() { return WideVertex() || WideFragment(); }
+    // Floats of varyings per vertex: one per float of the struct, or one per Float (16 lanes) in the wide form.
+    static constexpr int FloatBytes() { return Wide() ? int(sizeof(float)) * kLanes : int(sizeof(float)); }
+    static constexpr int Floats() { return std::is_empty_v<Varyings> ? 0 : int(sizeof(Varyings)) / FloatBytes(); }
+    static constexpr bool DeclaresDepth() {
+      if constexpr (requires { Derived::kWritesDepth; }) {
+        return bool(Derived::kWritesDepth);
+      } else {
+        return false;
+      }
+    }
+    static constexpr bool Check() {
+      static_assert(std::is_trivially_copyable_v<Varyings>, "varyings must be trivially copyable");
+      static_assert(!Wide() || std::is_empty_v<Varyings> || sizeof(Varyings) % (sizeof(float) * kLanes) == 0,
+                    "a wide shader's varyings must be made of Float, vec2, vec3 and vec4");
+      static_assert(Wide() || std::is_empty_v<Varyings> || sizeof(Varyings) % sizeof(float) == 0,
+                    "varyings must be made of floats");
+      static_assert(Floats() <= kMaxVaryingFloats,
+                    "too many varyings: at most kMaxVaryingFloats (64) floats per vertex, as GL_MAX_VARYING_COMPONENTS");
+      static_assert(WideVertex() || requires(const Derived& d, const VertexIn& in, VertexOut<Varyings>& out) {
+        d.Vertex(in, out);
+      }, "Derived needs a Vertex(const VertexLanes&, VertexLanesOut<Varyings>&) const (or the scalar form)");
+      static_assert(WideFragment() || requires(const Derived& d, const FragmentIn<Varyings>& in, FragmentOut& out) {
+        { d.Fragment(in, out) } -> std::convertible_to<bool>;
+      }, "Derived needs a Fragment(const FragmentLanes<Varyings>&, FragmentLanesOut&) const (or the scalar form)");
+      static_assert(WideVertex() == WideFragment(), "Vertex and Fragment must both be wide, or both scalar");
+      return true;
+    }
+  };
 
   // The qualifiers of the varyings, read once from a value-initialized struct (Flat<> and NoPerspective<> mark
   // their floats).
   struct Qualifiers {
-    Interpolation mode[kMaxVaryingFloats > 0 ? kMaxVaryingFloats : 1] = {};
+    Interpolation mode[kMaxVaryingFloats] = {};
     bool any = false;
     Qualifiers() {
-      if constexpr (kFloats > 0) {
+      if constexpr (SoftglForm::Floats() > 0) {
         const Varyings probe{};
         const unsigned char* bytes = reinterpret_cast<const unsigned char*>(&probe);
-        for (int k = 0; k < kFloats; ++k) {
+        for (int k = 0; k < SoftglForm::Floats(); ++k) {
           std::uint32_t bits;
-          std::memcpy(&bits, bytes + std::size_t(k) * kFloatBytes, sizeof bits);
+          std::memcpy(&bits, bytes + std::size_t(k) * SoftglForm::FloatBytes(), sizeof bits);
           if (bits == shader_detail::kFlatBits) mode[k] = Interpolation::kFlat;
           if (bits == shader_detail::kNoPerspectiveBits) mode[k] = Interpolation::kNoPerspective;
           any = any || mode[k] != Interpolation::kSmooth;
@@ -438,14 +455,17 @@ class Shader : public Program {
   };
 
  public:
-  int VaryingFloats() const final { return kFloats; }
+  int VaryingFloats() const final {
+    static_assert(SoftglForm::Check());
+    return SoftglForm::Floats();
+  }
 
   const Interpolation* VaryingInterpolation() const final {
     static const Qualifiers q;
     return q.any ? q.mode : nullptr;
   }
 
-  bool WritesDepth() const final { return DeclaresDepth(); }
+  bool WritesDepth() const final { return SoftglForm::DeclaresDepth(); }
 
   std::shared_ptr<const Program> Snapshot() const override {
     if constexpr (std::is_copy_constructible_v<Derived>) {
@@ -456,11 +476,8 @@ class Shader : public Program {
   }
 
   void ShadeVertices(const VertexBatch& batch) const final {
-    static_assert(kWideVertex || requires(const Derived& d, const VertexIn& in, VertexOut<Varyings>& out) {
-      d.Vertex(in, out);
-    }, "Derived needs a Vertex(const VertexLanes&, VertexLanesOut<Varyings>&) const (or the scalar form)");
-    static_assert(kWideVertex == kWideFragment, "Vertex and Fragment must both be wide, or both scalar");
-    if constexpr (kWideVertex) {
+    static_assert(SoftglForm::Check());
+    if constexpr (SoftglForm::WideVertex()) {
 #if defined(SOFTGL_HAS_DISPATCH)
       if (batch.simd == 2) return VerticesAvx512(batch);
       if (batch.simd == 1) return VerticesAvx2(batch);
@@ -474,17 +491,15 @@ class Shader : public Program {
             VertexIn{batch.attribs + std::size_t(i) * kMaxVertexAttribs, batch.vertex_ids[i], batch.textures}, out);
         batch.positions[i] = out.position;
         batch.point_sizes[i] = out.point_size;
-        if constexpr (kFloats > 0)
-          std::memcpy(batch.varyings + std::size_t(i) * kFloats, &out.varyings, sizeof(Varyings));
+        if constexpr (SoftglForm::Floats() > 0)
+          std::memcpy(batch.varyings + std::size_t(i) * SoftglForm::Floats(), &out.varyings, sizeof(Varyings));
       }
     }
   }
 
   void ShadeBlocks(const BlockBatch& batch) const final {
-    static_assert(kWideFragment || requires(const Derived& d, const FragmentIn<Varyings>& in, FragmentOut& out) {
-      { d.Fragment(in, out) } -> std::convertible_to<bool>;
-    }, "Derived needs a Fragment(const FragmentLanes<Varyings>&, FragmentLanesOut&) const (or the scalar form)");
-    if constexpr (kWideFragment) {
+    static_assert(SoftglForm::Check());
+    if constexpr (SoftglForm::WideFragment()) {
 #if defined(SOFTGL_HAS_DISPATCH)
       if (batch.simd == 2) return BlocksAvx512(batch);
       if (batch.simd == 1) return BlocksAvx2(batch);
@@ -531,12 +546,12 @@ class Shader : public Program {
         batch.positions[base + l] = glm::vec4(pos[0][l], pos[1][l], pos[2][l], pos[3][l]);
         batch.point_sizes[base + l] = size[l];
       }
-      if constexpr (kFloats > 0) {
-        float soa[kFloats][kLanes];
+      if constexpr (SoftglForm::Floats() > 0) {
+        float soa[SoftglForm::Floats()][kLanes];
         std::memcpy(soa, &out.varyings, sizeof soa);
         for (int l = 0; l < n; ++l) {
-          float* dst = batch.varyings + std::size_t(base + l) * kFloats;
-          for (int k = 0; k < kFloats; ++k) dst[k] = soa[k][l];
+          float* dst = batch.varyings + std::size_t(base + l) * SoftglForm::Floats();
+          for (int k = 0; k < SoftglForm::Floats(); ++k) dst[k] = soa[k][l];
         }
       }
     }
@@ -547,23 +562,20 @@ class Shader : public Program {
     for (int b = 0; b < batch.count; ++b) {
       if (!batch.live[b]) continue;  // every lane failed the early depth test
       const float* fc = batch.frag_coord + std::size_t(b) * 4 * kLanes;
-      FragmentLanes<Varyings> in{{},
-                                 vec4(Float::Load(fc), Float::Load(fc + kLanes), Float::Load(fc + 2 * kLanes),
-                                      Float::Load(fc + 3 * kLanes)),
-                                 batch.front_facing,
-                                 !Bool::FromBits(batch.live[b]),
-                                 batch.textures};
-      if constexpr (kFloats > 0)
+      FragmentLanes<Varyings> in;  // (not value-initialized: every member is set here)
+      if constexpr (SoftglForm::Floats() > 0)
         std::memcpy(static_cast<void*>(&in.varyings), batch.varyings + std::size_t(b) * kBlockVaryingFloats,
                     sizeof(Varyings));
-      FragmentLanesOut out;
+      in.frag_coord = vec4(Float::Load(fc), Float::Load(fc + kLanes), Float::Load(fc + 2 * kLanes),
+                           Float::Load(fc + 3 * kLanes));
+      in.front_facing = batch.front_facing;
+      in.helper = !Bool::FromBits(batch.live[b]);
+      in.textures = batch.textures;
+      FragmentLanesOut& out = batch.out[b];  // written in place (outputs the shader leaves alone are undefined)
       out.depth = in.frag_coord.z;
+      out.discarded = false;
       self.Fragment(in, out);
       batch.live[b] &= ~out.discarded.Bits();
-      float* color = batch.color + std::size_t(b) * kMaxColorOutputs * 4 * kLanes;
-      for (int o = 0; o < batch.outputs; ++o)
-        for (int c = 0; c < 4; ++c) out.color[o][c].Store(color + (o * 4 + c) * kLanes);
-      if constexpr (DeclaresDepth()) out.depth.Store(batch.depth + std::size_t(b) * kLanes);
     }
   }
 
@@ -579,35 +591,33 @@ class Shader : public Program {
   // ---- The scalar form, lane by lane ----
   void ScalarBlocks(const BlockBatch& batch) const {
     const Derived& self = static_cast<const Derived&>(*this);
-    Varyings quad[4][4]{};  // [quad][lane in quad]: the block's four 2x2 quads
+    Varyings quad[4]{};  // one 2x2 quad's lanes (lane = x&1 + 2*(y&1))
     QuadSamples<Varyings> samples;
     for (int b = 0; b < batch.count; ++b) {
       const float* soa = batch.varyings + std::size_t(b) * kBlockVaryingFloats;
       const float* fc = batch.frag_coord + std::size_t(b) * 4 * kLanes;
-      float* color = batch.color + std::size_t(b) * kMaxColorOutputs * 4 * kLanes;
+      FragmentLanesOut& lanes_out = batch.out[b];
       for (int q = 0; q < 4; ++q) {
-        int lane_of[4];
-        for (int k = 0; k < 4; ++k) {
-          const int x = (q & 1) * 2 + (k & 1), y = (q >> 1) * 2 + (k >> 1);
-          lane_of[k] = y * 4 + x;
-          if constexpr (kFloats > 0) {
-            float lanes[kFloats];
-            for (int v = 0; v < kFloats; ++v) lanes[v] = soa[v * kLanes + lane_of[k]];
-            std::memcpy(static_cast<void*>(&quad[q][k]), lanes, sizeof(Varyings));
+        if (!((batch.live[b] >> (4 * q)) & 0xFu)) continue;
+        if constexpr (SoftglForm::Floats() > 0) {
+          for (int k = 0; k < 4; ++k) {
+            float lanes[SoftglForm::Floats()];
+            for (int v = 0; v < SoftglForm::Floats(); ++v) lanes[v] = soa[v * kLanes + q * 4 + k];
+            std::memcpy(static_cast<void*>(&quad[k]), lanes, sizeof(Varyings));
           }
         }
         samples.count = 0;
         for (int k = 0; k < 4; ++k) {
-          const int l = lane_of[k];
+          const int l = q * 4 + k;
           if (!((batch.live[b] >> l) & 1u)) continue;
-          const FragmentIn<Varyings> in{quad[q][k], glm::vec4(fc[l], fc[kLanes + l], fc[2 * kLanes + l], fc[3 * kLanes + l]),
-                                        batch.front_facing, quad[q], k, batch.textures, &samples};
+          const FragmentIn<Varyings> in{quad[k], glm::vec4(fc[l], fc[kLanes + l], fc[2 * kLanes + l], fc[3 * kLanes + l]),
+                                        batch.front_facing, quad, k, batch.textures, &samples};
           FragmentOut out{};  // outputs the shader leaves alone read 0
           out.depth = in.frag_coord.z;
           if (!self.Fragment(in, out)) batch.live[b] &= ~(1u << l);
           for (int o = 0; o < batch.outputs; ++o)
-            for (int c = 0; c < 4; ++c) color[(o * 4 + c) * kLanes + l] = out.color[o][c];
-          if constexpr (DeclaresDepth()) batch.depth[std::size_t(b) * kLanes + l] = out.depth;
+            for (int c = 0; c < 4; ++c) lanes_out.color[o][c].v[l] = out.color[o][c];
+          if constexpr (SoftglForm::DeclaresDepth()) lanes_out.depth.v[l] = out.depth;
         }
       }
     }
