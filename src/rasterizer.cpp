@@ -8,6 +8,10 @@
 
 #include <cstring>
 
+#if defined(__x86_64__)
+#include <emmintrin.h>
+#endif
+
 #include <softgl/lanes.h>
 
 #include "simd.h"
@@ -21,6 +25,15 @@ constexpr std::int64_t kOne = std::int64_t(1) << kSubpixelBits;
 constexpr std::int64_t kHalf = kOne / 2;
 
 std::int64_t FloorDiv(std::int64_t a, std::int64_t b) { return a >= 0 ? a / b : -((-a + b - 1) / b); }
+
+// std::llrint (to nearest, ties to even, in the default rounding mode), without the library call.
+inline std::int64_t RoundToInt64(double x) {
+#if defined(__x86_64__)
+  return _mm_cvtsd_si64(_mm_set_sd(x));
+#else
+  return std::llrint(x);
+#endif
+}
 
 // A new block of the four quads of the 4x4 square at (bx, by), all live.
 int AddSquare(BlockBuffer& blocks, const BlockSink& sink, bool front_facing, int nvar, int bx, int by) {
@@ -38,6 +51,7 @@ int AddSquare(BlockBuffer& blocks, const BlockSink& sink, bool front_facing, int
     blocks.qy[b][q] = by + (q >> 1) * 2;
   }
   blocks.live[b] = 0xFFFFu;
+  for (int q = 0; q < 4; ++q) blocks.quad_planes[b][q] = nullptr;
   return b;
 }
 
@@ -64,6 +78,7 @@ inline int AddQuad(BlockBuffer& blocks, const BlockSink& sink, bool front_facing
   slot = blocks.quads[b]++;
   blocks.qx[b][slot] = qx;
   blocks.qy[b][slot] = qy;
+  blocks.quad_planes[b][slot] = nullptr;
   blocks.live[b] |= std::uint32_t(mask) << (4 * slot);
   return b;
 }
@@ -96,42 +111,48 @@ int EmitQuad(BlockBuffer& blocks, const BlockSink& sink, bool front_facing, int 
   return b;
 }
 
-// gl_FragCoord and the varyings of lanes l0 .. l0 + 4 * quads - 1 of block b, every lane (helpers included), with x, y
-// each lane's pixel: with r = pixel centre - vertex 0, q = 1/w = oow(r); a smooth varying is plane(r) / q, a
-// noperspective or flat one plane(r) itself. W lanes side by side, each lane's operations those of one lane alone.
+// gl_FragCoord of W lanes of block b from l0, every lane (helpers included), at pixels (x, y): with r = pixel
+// centre - vertex 0, z = z(r) and q = 1/w = oow(r).
 template <int W>
-SOFTGL_WIDE void InterpolateLanes(const TrianglePlanes& p, BlockBuffer& blocks, int b, int l0, typename V<W>::F x,
-                                  typename V<W>::F y) {
+SOFTGL_WIDE void FragCoordLanes(const TrianglePlanes& p, BlockBuffer& blocks, int b, int l0, typename V<W>::F x,
+                                typename V<W>::F y) {
   using F = typename V<W>::F;
   const F fx = x + 0.5f, fy = y + 0.5f;
   const F rx = fx - p.x0, ry = fy - p.y0;
-  auto at = [&](const Plane& pl) { return (pl.a0 + pl.dx * rx) + pl.dy * ry; };
-  const F q = at(p.oow), z = at(p.z);
+  const F q = (p.oow.a0 + p.oow.dx * rx) + p.oow.dy * ry, z = (p.z.a0 + p.z.dx * rx) + p.z.dy * ry;
   StoreVec(&blocks.frag_coord[b][0][l0], fx);
   StoreVec(&blocks.frag_coord[b][1][l0], fy);
   StoreVec(&blocks.frag_coord[b][2][l0], z);
   StoreVec(&blocks.frag_coord[b][3][l0], q);
-  if (p.nvar == 0) return;
-  const F w = 1.0f / q;
+}
+
+// The varyings of W lanes of block b from l0, whose gl_FragCoord is set: a smooth varying is plane(r) / q, a
+// noperspective or flat one plane(r) itself. Each lane's operations those of one lane alone, in the same order.
+template <int W>
+SOFTGL_WIDE void VaryingLanes(const TrianglePlanes& p, BlockBuffer& blocks, int b, int l0) {
+  using F = typename V<W>::F;
+  const F rx = LoadVec<F>(&blocks.frag_coord[b][0][l0]) - p.x0, ry = LoadVec<F>(&blocks.frag_coord[b][1][l0]) - p.y0;
+  const F w = 1.0f / LoadVec<F>(&blocks.frag_coord[b][3][l0]);
   float* var = blocks.Varyings(b) + l0;
   for (int i = 0; i < p.nvar; ++i) {
-    F v = at(p.var[i]);
+    const Plane& pl = p.var[i];
+    F v = (pl.a0 + pl.dx * rx) + pl.dy * ry;
     if (p.perspective[i]) v = v * w;
     StoreVec(var + i * kLanes, v);
   }
 }
 
-// One quad of block b: its four lanes.
-inline void InterpolateQuad(const TrianglePlanes& p, BlockBuffer& blocks, int b, int slot) {
+// One quad of block b: its four lanes' gl_FragCoord.
+inline void FragCoordQuad(const TrianglePlanes& p, BlockBuffer& blocks, int b, int slot) {
   using F = typename V<4>::F;
   const F x = float(blocks.qx[b][slot]) + F{0.0f, 1.0f, 0.0f, 1.0f};
   const F y = float(blocks.qy[b][slot]) + F{0.0f, 0.0f, 1.0f, 1.0f};
-  InterpolateLanes<4>(p, blocks, b, 4 * slot, x, y);
+  FragCoordLanes<4>(p, blocks, b, 4 * slot, x, y);
 }
 
 // A block that is the 4x4 square at (bx, by) (AddSquare), W lanes at a time.
 template <int W>
-SOFTGL_WIDE void InterpolateSquare(const TrianglePlanes& p, BlockBuffer& blocks, int b) {
+SOFTGL_WIDE void FragCoordSquare(const TrianglePlanes& p, BlockBuffer& blocks, int b) {
   using F = typename V<W>::F;
   const float bx = float(blocks.qx[b][0]), by = float(blocks.qy[b][0]);
   for (int l0 = 0; l0 < kLanes; l0 += W) {
@@ -141,27 +162,82 @@ SOFTGL_WIDE void InterpolateSquare(const TrianglePlanes& p, BlockBuffer& blocks,
       x[l] = float((q & 1) * 2 + (lane & 1));
       y[l] = float((q >> 1) * 2 + ((lane >> 1) & 1));
     }
-    InterpolateLanes<W>(p, blocks, b, l0, bx + x, by + y);
+    FragCoordLanes<W>(p, blocks, b, l0, bx + x, by + y);
   }
 }
 
-using InterpolateSquareFn = void (*)(const TrianglePlanes&, BlockBuffer&, int);
-void InterpolateSquareBase(const TrianglePlanes& p, BlockBuffer& blocks, int b) { InterpolateSquare<4>(p, blocks, b); }
+// The varyings of the live quads of a block that refer to planes: all 16 lanes at once when all four quads share
+// them (W lanes at a time), else quad by quad.
+template <int W>
+SOFTGL_WIDE void VaryingsOfBlock(BlockBuffer& blocks, int b) {
+  const TrianglePlanes* const* qp = blocks.quad_planes[b];
+  const std::uint32_t live = blocks.live[b];
+  if (qp[0] && qp[1] == qp[0] && qp[2] == qp[0] && qp[3] == qp[0] && (live & 0xFu) && (live & 0xF0u) &&
+      (live & 0xF00u) && (live & 0xF000u)) {
+    if (qp[0]->nvar == 0) return;
+    for (int l0 = 0; l0 < kLanes; l0 += W) VaryingLanes<W>(*qp[0], blocks, b, l0);
+    return;
+  }
+  for (int q = 0; q < 4; ++q)
+    if (qp[q] && qp[q]->nvar > 0 && ((live >> (4 * q)) & 0xFu)) VaryingLanes<4>(*qp[q], blocks, b, 4 * q);
+}
+
+using SquareFn = void (*)(const TrianglePlanes&, BlockBuffer&, int);
+using BlockFn = void (*)(BlockBuffer&, int);
+void FragCoordSquareBase(const TrianglePlanes& p, BlockBuffer& blocks, int b) { FragCoordSquare<4>(p, blocks, b); }
+void VaryingsOfBlockBase(BlockBuffer& blocks, int b) { VaryingsOfBlock<4>(blocks, b); }
 #if defined(SOFTGL_HAS_DISPATCH)
-SOFTGL_TARGET_AVX2 void InterpolateSquareAvx2(const TrianglePlanes& p, BlockBuffer& blocks, int b) {
-  InterpolateSquare<8>(p, blocks, b);
+SOFTGL_TARGET_AVX2 void FragCoordSquareAvx2(const TrianglePlanes& p, BlockBuffer& blocks, int b) {
+  FragCoordSquare<8>(p, blocks, b);
 }
-SOFTGL_TARGET_AVX512 void InterpolateSquareAvx512(const TrianglePlanes& p, BlockBuffer& blocks, int b) {
-  InterpolateSquare<16>(p, blocks, b);
+SOFTGL_TARGET_AVX512 void FragCoordSquareAvx512(const TrianglePlanes& p, BlockBuffer& blocks, int b) {
+  FragCoordSquare<16>(p, blocks, b);
 }
+SOFTGL_TARGET_AVX2 void VaryingsOfBlockAvx2(BlockBuffer& blocks, int b) { VaryingsOfBlock<8>(blocks, b); }
+SOFTGL_TARGET_AVX512 void VaryingsOfBlockAvx512(BlockBuffer& blocks, int b) { VaryingsOfBlock<16>(blocks, b); }
 #endif
-InterpolateSquareFn ChooseInterpolateSquare() {
+SquareFn ChooseFragCoordSquare() {
 #if defined(SOFTGL_HAS_DISPATCH)
-  if (CpuSimdLevel() == SimdLevel::kAvx512) return InterpolateSquareAvx512;
-  if (CpuSimdLevel() == SimdLevel::kAvx2) return InterpolateSquareAvx2;
+  if (CpuSimdLevel() == SimdLevel::kAvx512) return FragCoordSquareAvx512;
+  if (CpuSimdLevel() == SimdLevel::kAvx2) return FragCoordSquareAvx2;
 #endif
-  return InterpolateSquareBase;
+  return FragCoordSquareBase;
 }
+BlockFn ChooseVaryingsOfBlock() {
+#if defined(SOFTGL_HAS_DISPATCH)
+  if (CpuSimdLevel() == SimdLevel::kAvx512) return VaryingsOfBlockAvx512;
+  if (CpuSimdLevel() == SimdLevel::kAvx2) return VaryingsOfBlockAvx2;
+#endif
+  return VaryingsOfBlockBase;
+}
+
+// A triangle's planes in the buffer's table, entered when its first quad goes in (and again after each flush):
+// `fill` computes the varyings' planes into the entry the first time; after a flush the entry is copied from the
+// previous one (its memory is not reused before this triangle's next quad asks for its new entry).
+struct PlanesEntry {
+  const TrianglePlanes* planes = nullptr;
+  int epoch = -1;
+  template <class Fill>
+  const TrianglePlanes* For(BlockBuffer& blocks, const TrianglePlanes& p, Fill&& fill) {
+    if (epoch != blocks.epoch) {
+      TrianglePlanes& slot = blocks.planes[blocks.plane_count++];  // never full: one per triangle, <= quads
+      slot.x0 = p.x0;
+      slot.y0 = p.y0;
+      slot.z = p.z;
+      slot.oow = p.oow;
+      slot.nvar = p.nvar;
+      if (planes) {
+        std::memcpy(slot.var, planes->var, sizeof(Plane) * std::size_t(p.nvar));
+        std::memcpy(slot.perspective, planes->perspective, sizeof(bool) * std::size_t(p.nvar));
+      } else {
+        fill(slot);
+      }
+      planes = &slot;
+      epoch = blocks.epoch;
+    }
+    return planes;
+  }
+};
 
 // Whether varying i is divided by w (smooth), or taken as it is (noperspective, flat).
 bool Perspective(const RasterTarget& t, int i) {
@@ -195,8 +271,8 @@ void RasterizeTriangle(const WindowVertex& v0, const WindowVertex& v1, const Win
     const float x = v[i]->win.x, y = v[i]->win.y;
     // The clipper's guard band keeps finite window coordinates far inside this range.
     if (!(std::fabs(x) < 1e7f) || !(std::fabs(y) < 1e7f)) return;
-    X[i] = std::llrint(double(x) * double(kOne));
-    Y[i] = std::llrint(double(y) * double(kOne));
+    X[i] = RoundToInt64(double(x) * double(kOne));
+    Y[i] = RoundToInt64(double(y) * double(kOne));
   }
   std::int64_t area = (X[1] - X[0]) * (Y[2] - Y[0]) - (X[2] - X[0]) * (Y[1] - Y[0]);
   if (area == 0) return;
@@ -247,20 +323,22 @@ void RasterizeTriangle(const WindowVertex& v0, const WindowVertex& v1, const Win
     return Plane{a0, (da1 * dy2 - da2 * dy1) * inv_det, (da2 * dx1 - da1 * dx2) * inv_det};
   };
   const int nvar = target.nvar;
-  TrianglePlanes planes;
+  TrianglePlanes planes;  // position and depth now; the varyings' planes once a quad is emitted
   planes.x0 = x0;
   planes.y0 = y0;
   planes.nvar = nvar;
   planes.z = make_plane(v[0]->win.z, v[1]->win.z, v[2]->win.z);
   planes.z.a0 += target.depth_offset;
   planes.oow = make_plane(v[0]->win.w, v[1]->win.w, v[2]->win.w);
-  for (int i = 0; i < nvar; ++i) {
-    planes.perspective[i] = Perspective(target, i);
-    if (target.interpolation && target.interpolation[i] == Interpolation::kFlat)
-      planes.var[i] = Plane{v[0]->var[i], 0.0f, 0.0f};  // every vertex carries the provoking vertex's value
-    else
-      planes.var[i] = make_plane(v[0]->var[i], v[1]->var[i], v[2]->var[i]);
-  }
+  auto varying_planes = [&](TrianglePlanes& p) {
+    for (int i = 0; i < nvar; ++i) {
+      p.perspective[i] = Perspective(target, i);
+      if (target.interpolation && target.interpolation[i] == Interpolation::kFlat)
+        p.var[i] = Plane{v[0]->var[i], 0.0f, 0.0f};  // every vertex carries the provoking vertex's value
+      else
+        p.var[i] = make_plane(v[0]->var[i], v[1]->var[i], v[2]->var[i]);
+    }
+  };
 
   // Hierarchical traversal: 8x8 pixel regions first. An edge function is linear, so over a region it is largest and
   // smallest at the region's corner pixel centres: a region some edge excludes at all four corners is skipped, a
@@ -278,7 +356,8 @@ void RasterizeTriangle(const WindowVertex& v0, const WindowVertex& v1, const Win
     return A[e] * (px * kOne + kHalf) + B[e] * (py * kOne + kHalf) + C[e];
   };
   const Rect& bounds = target.bounds;
-  static const InterpolateSquareFn interpolate_square = ChooseInterpolateSquare();
+  static const SquareFn frag_coord_square = ChooseFragCoordSquare();
+  PlanesEntry entry;
   for (std::int64_t ry = py0 & ~std::int64_t(kRegion - 1); ry <= py1; ry += kRegion) {
     for (std::int64_t rx = px0 & ~std::int64_t(kRegion - 1); rx <= px1; rx += kRegion) {
       bool skip = false, whole = true;
@@ -294,7 +373,9 @@ void RasterizeTriangle(const WindowVertex& v0, const WindowVertex& v1, const Win
         // Covered whole, inside the bounds: four full blocks, interpolated at the processor's width.
         for (int sq = 0; sq < 4; ++sq) {
           const int b = AddSquare(blocks, sink, front_facing, nvar, int(rx) + (sq & 1) * 4, int(ry) + (sq >> 1) * 4);
-          interpolate_square(planes, blocks, b);
+          frag_coord_square(planes, blocks, b);
+          const TrianglePlanes* stored = entry.For(blocks, planes, varying_planes);
+          for (int q = 0; q < 4; ++q) blocks.quad_planes[b][q] = stored;
         }
         continue;
       }
@@ -320,7 +401,8 @@ void RasterizeTriangle(const WindowVertex& v0, const WindowVertex& v1, const Win
           if (!mask) continue;
           int slot;
           const int b = AddQuad(blocks, sink, front_facing, nvar, int(qx), int(qy), mask, slot);
-          InterpolateQuad(planes, blocks, b, slot);
+          FragCoordQuad(planes, blocks, b, slot);
+          blocks.quad_planes[b][slot] = entry.For(blocks, planes, varying_planes);
         }
       }
     }
@@ -429,6 +511,16 @@ void RasterizePoint(const WindowVertex& v, float size, bool front_facing, const 
       if (mask) EmitQuad(blocks, sink, front_facing, nvar, int(qx), int(qy), mask, eval);
     }
   }
+}
+
+}  // namespace softgl::detail
+
+namespace softgl::detail {
+
+void InterpolateVaryings(BlockBuffer& blocks) {
+  static const BlockFn varyings_of_block = ChooseVaryingsOfBlock();
+  for (int b = 0; b < blocks.count; ++b)
+    if (blocks.live[b]) varyings_of_block(blocks, b);
 }
 
 }  // namespace softgl::detail

@@ -29,20 +29,6 @@ struct RasterTarget {
   const Interpolation* interpolation = nullptr;  // per varying (null: all smooth)
 };
 
-/// a0 + dx * x + dy * y: an attribute's plane in window space, relative to vertex 0.
-struct Plane {
-  float a0, dx, dy;
-};
-
-/// What interpolating a triangle's blocks needs: its planes, relative to vertex 0 at (x0, y0).
-struct TrianglePlanes {
-  float x0 = 0.0f, y0 = 0.0f;
-  Plane z, oow;
-  int nvar = 0;
-  Plane var[kMaxVaryingFloats];
-  bool perspective[kMaxVaryingFloats];  // smooth: divided by w (the others are taken as they are)
-};
-
 /// OpenGL's polygon offset for the plane through a, b, c: m * factor + r * units, with m the larger of
 /// |dz/dx| and |dz/dy| and r the smallest resolvable difference of the 32-bit float depth buffer at the largest
 /// depth of the polygon, 2^(e - 23) (OpenGL 4.6, section 14.6.5).
@@ -56,5 +42,9 @@ void RasterizeLine(const WindowVertex& a, const WindowVertex& b, bool front_faci
 
 void RasterizePoint(const WindowVertex& v, float size, bool front_facing, const RasterTarget& target,
                     BlockBuffer& blocks, const BlockSink& sink);
+
+/// The varyings of the live quads of `blocks` whose triangle's planes they reference (the rasterizer leaves them
+/// for this, so that quads the early depth test drops are never interpolated).
+void InterpolateVaryings(BlockBuffer& blocks);
 
 }  // namespace softgl::detail

@@ -52,6 +52,20 @@ struct Rect {
   bool Empty() const { return x0 >= x1 || y0 >= y1; }
 };
 
+/// a0 + dx * x + dy * y: an attribute's plane in window space, relative to vertex 0.
+struct Plane {
+  float a0, dx, dy;
+};
+
+/// What interpolating a triangle's fragments needs: its planes, relative to vertex 0 at (x0, y0).
+struct TrianglePlanes {
+  float x0 = 0.0f, y0 = 0.0f;
+  Plane z, oow;
+  int nvar = 0;
+  Plane var[kMaxVaryingFloats];
+  bool perspective[kMaxVaryingFloats];  // smooth: divided by w (the others are taken as they are)
+};
+
 /// Rasterizer output: a batch of blocks ready for the fragment stage, with their coverage and interpolated values,
 /// and the fragment stage's outputs. A block is 16 fragments: four 2x2 quads anywhere in the target (of one draw and
 /// one facing, possibly of different primitives, never two at the same place), lane = quad * 4 + (x & 1) +
@@ -66,6 +80,14 @@ struct BlockBuffer {
   int qx[kCapacity][4];   // quad origins (even coordinates)
   int qy[kCapacity][4];
   std::uint32_t live[kCapacity];  // coverage bits; cleared by the early depth test and discard
+  // A triangle's quads have their varyings interpolated after the early depth test, from its planes: each quad
+  // refers to its triangle's planes here (null: the varyings are already there, as for lines and points). One entry
+  // per triangle with a quad in the buffer, so never more than the buffer has quads.
+  static constexpr int kPlanes = kCapacity * 4;
+  TrianglePlanes planes[kPlanes];
+  int plane_count = 0;
+  int epoch = 0;  // counts flushes: a triangle's entry in `planes` is valid in the epoch it was made
+  const TrianglePlanes* quad_planes[kCapacity][4];
   alignas(64) float frag_coord[kCapacity][4][kLanes];                  // x, y, z, 1/w
   alignas(64) float varyings[kCapacity * kBlockVaryingFloats];         // block b: [nvar][16] at b * kBlockVaryingFloats
   FragmentLanesOut out[kCapacity];  // the fragment shader's outputs (it writes them here)
@@ -84,6 +106,7 @@ struct BlockBuffer {
     for (int q = quads[b]; q < 4; ++q) {
       qx[b][q] = qx[b][0];
       qy[b][q] = qy[b][0];
+      quad_planes[b][q] = quad_planes[b][0];
       for (int c = 0; c < 4; ++c)
         for (int k = 0; k < 4; ++k) frag_coord[b][c][q * 4 + k] = frag_coord[b][c][k];
       float* v = Varyings(b);
@@ -103,6 +126,8 @@ struct BlockSink {
       flush(user, blocks);
     }
     blocks.count = 0;
+    blocks.plane_count = 0;
+    ++blocks.epoch;
   }
 };
 

@@ -125,6 +125,75 @@ inline void Derivatives(Textures::Lanes& c, const vec3& dx, const vec3& dy) {
 inline vec4 Rgba(const float (&out)[4][kLanes]) {
   return vec4(Float::Load(out[0]), Float::Load(out[1]), Float::Load(out[2]), Float::Load(out[3]));
 }
+// Moving 16 vertices between the pipeline's one-vertex-after-another arrays and lanes, four vertices at a time
+// through 4x4 transposes of 128-bit vectors (never one lane at a time).
+typedef float F4 __attribute__((vector_size(16)));
+inline void Transpose4(F4& a, F4& b, F4& c, F4& d) {
+  const F4 t0 = __builtin_shufflevector(a, b, 0, 4, 1, 5), t1 = __builtin_shufflevector(c, d, 0, 4, 1, 5);
+  const F4 t2 = __builtin_shufflevector(a, b, 2, 6, 3, 7), t3 = __builtin_shufflevector(c, d, 2, 6, 3, 7);
+  a = __builtin_shufflevector(t0, t1, 0, 1, 4, 5);
+  b = __builtin_shufflevector(t0, t1, 2, 3, 6, 7);
+  c = __builtin_shufflevector(t2, t3, 0, 1, 4, 5);
+  d = __builtin_shufflevector(t2, t3, 2, 3, 6, 7);
+}
+inline void Join(const F4 (&q)[4], Float& out) {
+  out.v = __builtin_shufflevector(__builtin_shufflevector(q[0], q[1], 0, 1, 2, 3, 4, 5, 6, 7),
+                                  __builtin_shufflevector(q[2], q[3], 0, 1, 2, 3, 4, 5, 6, 7), 0, 1, 2, 3, 4, 5, 6,
+                                  7, 8, 9, 10, 11, 12, 13, 14, 15);
+}
+inline void Split(const Float& in, F4 (&q)[4]) {
+  q[0] = __builtin_shufflevector(in.v, in.v, 0, 1, 2, 3);
+  q[1] = __builtin_shufflevector(in.v, in.v, 4, 5, 6, 7);
+  q[2] = __builtin_shufflevector(in.v, in.v, 8, 9, 10, 11);
+  q[3] = __builtin_shufflevector(in.v, in.v, 12, 13, 14, 15);
+}
+// vec4 lanes from the glm::vec4 at src[l * stride] of vertices l = 0 .. 15 (lanes from n on repeat vertex n - 1).
+inline void LoadVertices(const glm::vec4* src, std::size_t stride, int n, vec4& out) {
+  F4 col[4][4];  // [component][group of four vertices]
+  for (int g = 0; g < 4; ++g) {
+    F4 r[4];
+    for (int k = 0; k < 4; ++k) std::memcpy(&r[k], src + std::size_t(g * 4 + k < n ? g * 4 + k : n - 1) * stride, 16);
+    Transpose4(r[0], r[1], r[2], r[3]);
+    for (int c = 0; c < 4; ++c) col[c][g] = r[c];
+  }
+  Join(col[0], out.x);
+  Join(col[1], out.y);
+  Join(col[2], out.z);
+  Join(col[3], out.w);
+}
+// The other way: rows[k] lanes to dst[l * stride + k] for vertices l < n and rows k < count.
+inline void StoreVertices(const Float* rows, int count, float* dst, std::size_t stride, int n) {
+  int k = 0;
+  for (; k + 4 <= count; k += 4) {
+    F4 q[4][4];  // [row][group]
+    for (int i = 0; i < 4; ++i) Split(rows[k + i], q[i]);
+    for (int g = 0; g < 4; ++g) {
+      F4 a = q[0][g], b = q[1][g], c = q[2][g], d = q[3][g];
+      Transpose4(a, b, c, d);
+      const F4 out[4] = {a, b, c, d};
+      for (int v = 0; v < 4 && g * 4 + v < n; ++v) std::memcpy(dst + std::size_t(g * 4 + v) * stride + k, &out[v], 16);
+    }
+  }
+  for (; k < count; ++k)
+    for (int l = 0; l < n; ++l) dst[std::size_t(l) * stride + k] = rows[k][l];
+}
+
+// The stage inputs, filled by functions that are not inlined: the input is then an object in memory, which the
+// compiler reads as such, rather than a value it takes apart lane by lane (GCC's scalar replacement of aggregates
+// would build each broadcast one lane at a time).
+}  // namespace shader_detail
+struct VertexBatch;
+struct BlockBatch;
+struct VertexLanes;
+template <class Varyings>
+struct FragmentLanes;
+namespace shader_detail {
+// (Templates, so that a header can define them without `inline`, which `noinline` contradicts.)
+template <class Batch>
+[[gnu::noinline]] void FillVertexLanes(const Batch& batch, int base, int n, VertexLanes& in);
+template <class Varyings>
+[[gnu::noinline]] void FillFragmentLanes(const BlockBatch& batch, int b, FragmentLanes<Varyings>& in);
+
 // textureLod for 2D (cube = false) or cube maps.
 inline vec4 Lod(const Textures* textures, int unit, const Textures::Lanes& c, const Float& lod, bool cube) {
   float l[kLanes], out[4][kLanes];
@@ -357,6 +426,35 @@ struct BlockBatch {
   const Textures* textures = nullptr;
 };
 
+namespace shader_detail {
+template <class Batch>
+void FillVertexLanes(const Batch& batch, int base, int n, VertexLanes& in) {
+  in.textures = batch.textures;
+  // Attributes to lanes: vertex l's attribute a into lane l; lanes past the batch repeat its last vertex. A
+  // disabled attribute holds its current value in every vertex: written in the batch's first call only.
+  const glm::vec4* first = batch.attribs + std::size_t(base) * kMaxVertexAttribs;
+  for (int a = 0; a < kMaxVertexAttribs; ++a) {
+    if ((batch.enabled >> a) & 1u) LoadVertices(first + a, kMaxVertexAttribs, n, in.attrib[a]);
+    else if (base == 0) in.attrib[a] = vec4(first[a]);
+  }
+  std::int32_t ids[kLanes];
+  for (int l = 0; l < kLanes; ++l) ids[l] = batch.vertex_ids[base + (l < n ? l : n - 1)];
+  in.vertex_id = Int::Load(ids);
+}
+template <class Varyings>
+void FillFragmentLanes(const BlockBatch& batch, int b, FragmentLanes<Varyings>& in) {
+  if constexpr (!std::is_empty_v<Varyings>)
+    std::memcpy(static_cast<void*>(&in.varyings), batch.varyings + std::size_t(b) * kBlockVaryingFloats,
+                sizeof(Varyings));
+  const float* fc = batch.frag_coord + std::size_t(b) * 4 * kLanes;
+  in.frag_coord = vec4(Float::Load(fc), Float::Load(fc + kLanes), Float::Load(fc + 2 * kLanes),
+                       Float::Load(fc + 3 * kLanes));
+  in.front_facing = batch.front_facing;
+  in.helper = !Bool::FromBits(batch.live[b]);
+  in.textures = batch.textures;
+}
+}  // namespace shader_detail
+
 /// The interface the pipeline uses to run a shader. Subclass Shader<> rather than this.
 class Program {
  public:
@@ -514,45 +612,18 @@ class Shader : public Program {
   // ---- The wide form, compiled three times ----
   void VertexLanesRun(const VertexBatch& batch) const {
     const Derived& self = static_cast<const Derived&>(*this);
+    VertexLanes in;  // (kept from one group of 16 to the next: disabled attributes are written once)
     for (int base = 0; base < batch.count; base += kLanes) {
       const int n = batch.count - base < kLanes ? batch.count - base : kLanes;
-      VertexLanes in;
-      in.textures = batch.textures;
-      // Attributes to lanes: vertex l's attribute a into lane l; lanes past the batch repeat its last vertex.
-      for (int a = 0; a < kMaxVertexAttribs; ++a) {
-        if (!((batch.enabled >> a) & 1u)) {
-          in.attrib[a] = vec4(batch.attribs[std::size_t(base) * kMaxVertexAttribs + std::size_t(a)]);
-          continue;
-        }
-        float lanes[4][kLanes];
-        for (int l = 0; l < kLanes; ++l) {
-          const glm::vec4& v = batch.attribs[std::size_t(base + (l < n ? l : n - 1)) * kMaxVertexAttribs + std::size_t(a)];
-          lanes[0][l] = v.x;
-          lanes[1][l] = v.y;
-          lanes[2][l] = v.z;
-          lanes[3][l] = v.w;
-        }
-        in.attrib[a] = vec4(Float::Load(lanes[0]), Float::Load(lanes[1]), Float::Load(lanes[2]), Float::Load(lanes[3]));
-      }
-      std::int32_t ids[kLanes];
-      for (int l = 0; l < kLanes; ++l) ids[l] = batch.vertex_ids[base + (l < n ? l : n - 1)];
-      in.vertex_id = Int::Load(ids);
+      shader_detail::FillVertexLanes(batch, base, n, in);
       VertexLanesOut<Varyings> out;
       self.Vertex(in, out);
-      float pos[4][kLanes], size[kLanes];
-      for (int c = 0; c < 4; ++c) out.position[c].Store(pos[c]);
-      out.point_size.Store(size);
-      for (int l = 0; l < n; ++l) {
-        batch.positions[base + l] = glm::vec4(pos[0][l], pos[1][l], pos[2][l], pos[3][l]);
-        batch.point_sizes[base + l] = size[l];
-      }
+      shader_detail::StoreVertices(&out.position.x, 4, &batch.positions[base].x, 4, n);
+      for (int l = 0; l < n; ++l) batch.point_sizes[base + l] = out.point_size[l];
       if constexpr (SoftglForm::Floats() > 0) {
-        float soa[SoftglForm::Floats()][kLanes];
-        std::memcpy(soa, &out.varyings, sizeof soa);
-        for (int l = 0; l < n; ++l) {
-          float* dst = batch.varyings + std::size_t(base + l) * SoftglForm::Floats();
-          for (int k = 0; k < SoftglForm::Floats(); ++k) dst[k] = soa[k][l];
-        }
+        shader_detail::StoreVertices(reinterpret_cast<const Float*>(&out.varyings), SoftglForm::Floats(),
+                                     batch.varyings + std::size_t(base) * SoftglForm::Floats(), SoftglForm::Floats(),
+                                     n);
       }
     }
   }
@@ -561,16 +632,8 @@ class Shader : public Program {
     const Derived& self = static_cast<const Derived&>(*this);
     for (int b = 0; b < batch.count; ++b) {
       if (!batch.live[b]) continue;  // every lane failed the early depth test
-      const float* fc = batch.frag_coord + std::size_t(b) * 4 * kLanes;
       FragmentLanes<Varyings> in;  // (not value-initialized: every member is set here)
-      if constexpr (SoftglForm::Floats() > 0)
-        std::memcpy(static_cast<void*>(&in.varyings), batch.varyings + std::size_t(b) * kBlockVaryingFloats,
-                    sizeof(Varyings));
-      in.frag_coord = vec4(Float::Load(fc), Float::Load(fc + kLanes), Float::Load(fc + 2 * kLanes),
-                           Float::Load(fc + 3 * kLanes));
-      in.front_facing = batch.front_facing;
-      in.helper = !Bool::FromBits(batch.live[b]);
-      in.textures = batch.textures;
+      shader_detail::FillFragmentLanes(batch, b, in);
       FragmentLanesOut& out = batch.out[b];  // written in place (outputs the shader leaves alone are undefined)
       out.depth = in.frag_coord.z;
       out.discarded = false;
