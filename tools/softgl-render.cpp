@@ -162,19 +162,19 @@ softgl::Image Downsample(const softgl::Image& big, int factor) {
   return out;
 }
 
-struct FlatShader : softgl::Shader<FlatShader, softgl::SurfaceVaryings>, softgl::MaterialProgram {
+// One colour for the wireframe overlay.
+struct NoVaryings {};
+struct FlatShader : softgl::Shader<FlatShader, NoVaryings>, softgl::MaterialProgram {
   glm::mat4 mvp{1.0f};
-  glm::mat4 view_proj{1.0f};
   glm::vec4 color{0.05f, 0.05f, 0.05f, 1.0f};
   const softgl::Program& GetProgram() const override { return *this; }
   void SetTransforms(const glm::mat4& m, const glm::mat4& vp) override { mvp = vp * m; }
   void SetMaterial(const softgl::Material&) override {}
-  void Vertex(const softgl::VertexIn& in, softgl::VertexOut<softgl::SurfaceVaryings>& out) const {
-    out.position = mvp * glm::vec4(glm::vec3(in.attrib[softgl::kAttribPosition]), 1.0f);
+  void Vertex(const softgl::VertexLanes& in, softgl::VertexLanesOut<NoVaryings>& out) const {
+    out.position = mvp * softgl::vec4(softgl::vec3(in.attrib[softgl::kAttribPosition]), 1.0f);
   }
-  bool Fragment(const softgl::FragmentIn<softgl::SurfaceVaryings>&, softgl::FragmentOut& out) const {
+  void Fragment(const softgl::FragmentLanes<NoVaryings>&, softgl::FragmentLanesOut& out) const {
     out.color[0] = color;
-    return true;
   }
 };
 

@@ -520,7 +520,8 @@ class Shader : public Program {
       static_assert(Wide() || std::is_empty_v<Varyings> || sizeof(Varyings) % sizeof(float) == 0,
                     "varyings must be made of floats");
       static_assert(Floats() <= kMaxVaryingFloats,
-                    "too many varyings: at most kMaxVaryingFloats (64) floats per vertex, as GL_MAX_VARYING_COMPONENTS");
+                    "too many varyings: at most kMaxVaryingFloats (64) floats per vertex, as "
+                    "GL_MAX_VARYING_COMPONENTS (a wide shader counts one per Float, a scalar one per float)");
       static_assert(WideVertex() || requires(const Derived& d, const VertexIn& in, VertexOut<Varyings>& out) {
         d.Vertex(in, out);
       }, "Derived needs a Vertex(const VertexLanes&, VertexLanesOut<Varyings>&) const (or the scalar form)");

@@ -11,6 +11,7 @@
 #include <cmath>
 
 #include <glm/glm.hpp>
+#include <softgl/lanes.h>
 #include <softgl/model.h>
 #include <softgl/shader.h>
 
@@ -47,20 +48,21 @@ struct Lighting {
 
 /// The varyings all built-in shaders share.
 struct SurfaceVaryings {
-  glm::vec3 world_pos;
-  glm::vec3 normal;
-  glm::vec2 uv;
-  glm::vec4 tangent;
-  glm::vec4 color;
+  vec3 world_pos;
+  vec3 normal;
+  vec2 uv;
+  vec4 tangent;
+  vec4 color;
 };
 
 /// Common base: transforms, material, lighting, and the surface helpers (base colour with alpha test, normal
-/// with normal map). Derived defines Fragment.
+/// with normal map). Derived defines Fragment. Wide shaders (shader.h): each call shades 16 fragments.
 template <class Derived>
 class SurfaceShader : public Shader<Derived, SurfaceVaryings>, public MaterialProgram {
  public:
   using Varyings = SurfaceVaryings;
-  using In = FragmentIn<SurfaceVaryings>;
+  using In = FragmentLanes<SurfaceVaryings>;
+  using Out = FragmentLanesOut;
 
   glm::mat4 model{1.0f};
   glm::mat4 view_proj{1.0f};
@@ -76,84 +78,83 @@ class SurfaceShader : public Shader<Derived, SurfaceVaryings>, public MaterialPr
   }
   void SetMaterial(const Material& m) override { material = m; }
 
-  void Vertex(const VertexIn& in, VertexOut<SurfaceVaryings>& out) const {
-    const glm::vec4 world = model * glm::vec4(glm::vec3(in.attrib[kAttribPosition]), 1.0f);
+  void Vertex(const VertexLanes& in, VertexLanesOut<SurfaceVaryings>& out) const {
+    const vec4 world = model * vec4(vec3(in.attrib[kAttribPosition]), 1.0f);
     out.position = view_proj * world;
-    out.varyings.world_pos = glm::vec3(world);
-    out.varyings.normal = normal_matrix * glm::vec3(in.attrib[kAttribNormal]);
-    out.varyings.uv = glm::vec2(in.attrib[kAttribUv]);
-    const glm::vec4 t = in.attrib[kAttribTangent];
-    out.varyings.tangent = glm::vec4(glm::mat3(model) * glm::vec3(t), t.w);
+    out.varyings.world_pos = vec3(world);
+    out.varyings.normal = normal_matrix * vec3(in.attrib[kAttribNormal]);
+    out.varyings.uv = vec2(in.attrib[kAttribUv]);
+    const vec4 t = in.attrib[kAttribTangent];
+    out.varyings.tangent = vec4(glm::mat3(model) * vec3(t), t.w);
     out.varyings.color = in.attrib[kAttribColor];
   }
 
  protected:
-  /// Base colour (factor x vertex colour x texture); false when alpha-masked away.
-  bool BaseColor(const In& in, glm::vec4& color) const {
-    color = material.base_color * in.varyings.color;
-    if (material.base_color_texture) color *= in.Texture(kUnitBaseColor, &SurfaceVaryings::uv);
-    if (material.alpha_mode == Material::AlphaMode::kMask && color.a < material.alpha_cutoff) return false;
-    if (material.alpha_mode == Material::AlphaMode::kOpaque) color.a = 1.0f;
-    return true;
+  /// Base colour (factor x vertex colour x texture); lanes below the alpha cutoff of a masked material are
+  /// discarded.
+  vec4 BaseColor(const In& in, Out& out) const {
+    vec4 color = material.base_color * in.varyings.color;
+    if (material.base_color_texture) color *= in.Texture(kUnitBaseColor, in.varyings.uv);
+    if (material.alpha_mode == Material::AlphaMode::kMask) out.Discard(color.w < material.alpha_cutoff);
+    if (material.alpha_mode == Material::AlphaMode::kOpaque) color.w = 1.0f;
+    return color;
   }
 
   /// The shading normal: interpolated, turned towards the viewer for back faces, perturbed by the normal map.
-  glm::vec3 Normal(const In& in) const {
-    glm::vec3 n = in.varyings.normal;
-    const float len = glm::length(n);
-    n = len > 0.0f ? n / len : glm::vec3(0.0f, 0.0f, 1.0f);
+  vec3 Normal(const In& in) const {
+    const vec3 interpolated = in.varyings.normal;
+    const Float len = length(interpolated);
+    vec3 n = select(len > 0.0f, interpolated / len, vec3(0.0f, 0.0f, 1.0f));
     if (!in.front_facing) n = -n;
-    const glm::vec3 t3 = glm::vec3(in.varyings.tangent);
-    if (material.normal_texture && glm::dot(t3, t3) > 1e-12f) {
-      const glm::vec3 t = glm::normalize(t3 - n * glm::dot(n, t3));
-      const glm::vec3 b = glm::cross(n, t) * (in.varyings.tangent.w < 0.0f ? -1.0f : 1.0f);
-      const glm::vec3 m = glm::vec3(in.Texture(kUnitNormal, &SurfaceVaryings::uv)) * 2.0f - 1.0f;
-      const glm::vec3 p = t * m.x + b * m.y + n * m.z;
-      if (glm::dot(p, p) > 1e-12f) n = glm::normalize(p);
+    const vec3 t3 = vec3(in.varyings.tangent);
+    const Bool has_tangent = dot(t3, t3) > 1e-12f;
+    if (material.normal_texture && any(has_tangent)) {
+      const vec3 t = normalize(t3 - n * dot(n, t3));
+      const vec3 b = cross(n, t) * select(in.varyings.tangent.w < 0.0f, Float(-1.0f), Float(1.0f));
+      const vec3 m = vec3(in.Texture(kUnitNormal, in.varyings.uv)) * 2.0f - 1.0f;
+      const vec3 p = t * m.x + b * m.y + n * m.z;
+      n = select(has_tangent && dot(p, p) > 1e-12f, normalize(p), n);
     }
     return n;
   }
 
-  glm::vec3 Emissive(const In& in) const {
-    glm::vec3 e = material.emissive;
-    if (material.emissive_texture) e *= glm::vec3(in.Texture(kUnitEmissive, &SurfaceVaryings::uv));
+  vec3 Emissive(const In& in) const {
+    vec3 e = material.emissive;
+    if (material.emissive_texture) e *= vec3(in.Texture(kUnitEmissive, in.varyings.uv));
     return e;
   }
 };
 
 /// Base colour only.
 struct UnlitShader : SurfaceShader<UnlitShader> {
-  bool Fragment(const In& in, FragmentOut& out) const {
-    glm::vec4 c;
-    if (!BaseColor(in, c)) return false;
-    out.color[0] = glm::vec4(glm::vec3(c) + Emissive(in), c.a);
-    return true;
+  void Fragment(const In& in, Out& out) const {
+    const vec4 c = BaseColor(in, out);
+    out.color[0] = vec4(vec3(c) + Emissive(in), c.w);
   }
 };
 
 /// Blinn-Phong per fragment: diffuse from the base colour, specular colour (times the specular map's red),
 /// shininess, normal mapping, emissive, ambient (times the occlusion map).
 struct PhongShader : SurfaceShader<PhongShader> {
-  bool Fragment(const In& in, FragmentOut& out) const {
-    glm::vec4 base;
-    if (!BaseColor(in, base)) return false;
-    const glm::vec3 n = Normal(in);
-    const glm::vec3 v = glm::normalize(lighting.eye - in.varyings.world_pos);
-    glm::vec3 spec_color = material.specular;
-    if (material.specular_texture) spec_color *= in.Texture(kUnitSpecular, &SurfaceVaryings::uv).r;
-    float ao = 1.0f;
-    if (material.occlusion_texture) ao = in.Texture(kUnitOcclusion, &SurfaceVaryings::uv).r;
-    glm::vec3 c = lighting.ambient * glm::vec3(base) * ao;
+  void Fragment(const In& in, Out& out) const {
+    const vec4 base = BaseColor(in, out);
+    const vec3 n = Normal(in);
+    const vec3 v = normalize(lighting.eye - in.varyings.world_pos);
+    vec3 spec_color = material.specular;
+    if (material.specular_texture) spec_color *= in.Texture(kUnitSpecular, in.varyings.uv).x;
+    Float ao = 1.0f;
+    if (material.occlusion_texture) ao = in.Texture(kUnitOcclusion, in.varyings.uv).x;
+    vec3 c = lighting.ambient * vec3(base) * ao;
     for (int i = 0; i < lighting.count; ++i) {
       const DirectionalLight& l = lighting.lights[i];
-      const float ndl = glm::dot(n, l.direction);
-      if (ndl <= 0.0f) continue;
-      const glm::vec3 h = glm::normalize(l.direction + v);
-      const float spec = std::pow(std::max(glm::dot(n, h), 0.0f), material.shininess);
-      c += l.color * (glm::vec3(base) * ndl + spec_color * spec);
+      const Float ndl = dot(n, l.direction);
+      const Bool lit = ndl > 0.0f;
+      if (!any(lit)) continue;
+      const vec3 h = normalize(l.direction + v);
+      const Float spec = pow(max(dot(n, h), 0.0f), material.shininess);
+      c += select(lit, l.color * (vec3(base) * ndl + spec_color * spec), vec3(0.0f));
     }
-    out.color[0] = glm::vec4(c + Emissive(in), base.a);
-    return true;
+    out.color[0] = vec4(c + Emissive(in), base.w);
   }
 };
 
@@ -165,68 +166,67 @@ struct PbrShader : SurfaceShader<PbrShader> {
   float environment_levels = 0.0f;  // number of mip levels of the environment cube map; 0: none
   float environment_strength = 1.0f;
 
-  static glm::vec3 ToLinear(glm::vec3 c) { return glm::pow(glm::max(c, 0.0f), glm::vec3(2.2f)); }
+  static vec3 ToLinear(const vec3& c) { return pow(max(c, 0.0f), 2.2f); }
 
-  bool Fragment(const In& in, FragmentOut& out) const {
-    glm::vec4 base = material.base_color * in.varyings.color;
+  void Fragment(const In& in, Out& out) const {
+    vec4 base = material.base_color * in.varyings.color;
     if (material.base_color_texture) {
-      const glm::vec4 t = in.Texture(kUnitBaseColor, &SurfaceVaryings::uv);
-      base *= glm::vec4(ToLinear(glm::vec3(t)), t.a);
+      const vec4 t = in.Texture(kUnitBaseColor, in.varyings.uv);
+      base *= vec4(ToLinear(vec3(t)), t.w);
     }
-    if (material.alpha_mode == Material::AlphaMode::kMask && base.a < material.alpha_cutoff) return false;
-    if (material.alpha_mode == Material::AlphaMode::kOpaque) base.a = 1.0f;
-    float metallic = material.metallic, roughness = material.roughness, ao = 1.0f;
+    if (material.alpha_mode == Material::AlphaMode::kMask) out.Discard(base.w < material.alpha_cutoff);
+    if (material.alpha_mode == Material::AlphaMode::kOpaque) base.w = 1.0f;
+    Float metallic = material.metallic, roughness = material.roughness, ao = 1.0f;
     if (material.metallic_roughness_texture) {
-      const glm::vec4 mr = in.Texture(kUnitMetallicRoughness, &SurfaceVaryings::uv);
-      roughness *= mr.g;
-      metallic *= mr.b;
+      const vec4 mr = in.Texture(kUnitMetallicRoughness, in.varyings.uv);
+      roughness *= mr.y;
+      metallic *= mr.z;
     }
-    if (material.occlusion_texture) ao = in.Texture(kUnitOcclusion, &SurfaceVaryings::uv).r;
-    roughness = std::clamp(roughness, 0.04f, 1.0f);
-    const glm::vec3 albedo(base);
-    const glm::vec3 n = Normal(in);
-    const glm::vec3 v = glm::normalize(lighting.eye - in.varyings.world_pos);
-    const float ndv = std::max(glm::dot(n, v), 1e-4f);
-    const glm::vec3 f0 = glm::mix(glm::vec3(0.04f), albedo, metallic);
-    const float a = roughness * roughness, a2 = a * a;
-    const float k = (roughness + 1.0f) * (roughness + 1.0f) / 8.0f;
-    glm::vec3 color(0.0f);
+    if (material.occlusion_texture) ao = in.Texture(kUnitOcclusion, in.varyings.uv).x;
+    roughness = clamp(roughness, 0.04f, 1.0f);
+    const vec3 albedo = vec3(base);
+    const vec3 n = Normal(in);
+    const vec3 v = normalize(lighting.eye - in.varyings.world_pos);
+    const Float ndv = max(dot(n, v), 1e-4f);
+    const vec3 f0 = mix(vec3(0.04f), albedo, metallic);
+    const Float a = roughness * roughness, a2 = a * a;
+    const Float k = (roughness + 1.0f) * (roughness + 1.0f) / 8.0f;
+    vec3 color(0.0f);
     for (int i = 0; i < lighting.count; ++i) {
       const DirectionalLight& l = lighting.lights[i];
-      const float ndl = glm::dot(n, l.direction);
-      if (ndl <= 0.0f) continue;
-      const glm::vec3 h = glm::normalize(l.direction + v);
-      const float ndh = std::max(glm::dot(n, h), 0.0f), vdh = std::max(glm::dot(v, h), 0.0f);
-      const float d_denom = ndh * ndh * (a2 - 1.0f) + 1.0f;
-      const float d = a2 / (3.14159265f * d_denom * d_denom);
-      const float g = (ndl / (ndl * (1.0f - k) + k)) * (ndv / (ndv * (1.0f - k) + k));
-      const glm::vec3 f = f0 + (1.0f - f0) * std::pow(1.0f - vdh, 5.0f);
-      const glm::vec3 specular = d * g * f / (4.0f * ndl * ndv);
-      const glm::vec3 kd = (1.0f - f) * (1.0f - metallic);
-      color += (kd * albedo / 3.14159265f + specular) * l.color * ndl * 3.14159265f;
+      const Float ndl = dot(n, l.direction);
+      const Bool lit = ndl > 0.0f;
+      if (!any(lit)) continue;
+      const vec3 h = normalize(l.direction + v);
+      const Float ndh = max(dot(n, h), 0.0f), vdh = max(dot(v, h), 0.0f);
+      const Float d_denom = ndh * ndh * (a2 - 1.0f) + 1.0f;
+      const Float d = a2 / (3.14159265f * d_denom * d_denom);
+      const Float g = (ndl / (ndl * (1.0f - k) + k)) * (ndv / (ndv * (1.0f - k) + k));
+      const vec3 f = f0 + (1.0f - f0) * pow(1.0f - vdh, 5.0f);
+      const vec3 specular = d * g * f / (4.0f * ndl * ndv);
+      const vec3 kd = (1.0f - f) * (1.0f - metallic);
+      color += select(lit, (kd * albedo / 3.14159265f + specular) * l.color * ndl * 3.14159265f, vec3(0.0f));
     }
-    glm::vec3 ambient = lighting.ambient * albedo;
+    vec3 ambient = lighting.ambient * albedo;
     if (environment_levels > 0.0f) {
       const float last = environment_levels - 1.0f;
-      const glm::vec3 r = glm::reflect(-v, n);
-      const glm::vec3 irradiance = ToLinear(glm::vec3(in.textures->SampleCubeLod(kUnitEnvironment, n, last)));
-      const glm::vec3 prefiltered = ToLinear(glm::vec3(in.textures->SampleCubeLod(kUnitEnvironment, r, roughness * last)));
+      const vec3 r = reflect(-v, n);
+      const vec3 irradiance = ToLinear(vec3(in.TextureCubeLod(kUnitEnvironment, n, last)));
+      const vec3 prefiltered = ToLinear(vec3(in.TextureCubeLod(kUnitEnvironment, r, roughness * last)));
       // Analytic approximation of the split-sum environment BRDF.
-      const glm::vec4 c0(-1.0f, -0.0275f, -0.572f, 0.022f), c1(1.0f, 0.0425f, 1.04f, -0.04f);
-      const glm::vec4 rr = roughness * c0 + c1;
-      const float a004 = std::min(rr.x * rr.x, std::exp2(-9.28f * ndv)) * rr.x + rr.y;
-      const glm::vec2 ab = glm::vec2(-1.04f, 1.04f) * a004 + glm::vec2(rr.z, rr.w);
-      const glm::vec3 spec_env = prefiltered * (f0 * ab.x + ab.y);
-      const glm::vec3 kd = (1.0f - f0) * (1.0f - metallic);
+      const Float rr_x = roughness * -1.0f + 1.0f, rr_y = roughness * -0.0275f + 0.0425f;
+      const Float rr_z = roughness * -0.572f + 1.04f, rr_w = roughness * 0.022f + -0.04f;
+      const Float a004 = min(rr_x * rr_x, exp2(-9.28f * ndv)) * rr_x + rr_y;
+      const Float ab_x = -1.04f * a004 + rr_z, ab_y = 1.04f * a004 + rr_w;
+      const vec3 spec_env = prefiltered * (f0 * ab_x + ab_y);
+      const vec3 kd = (1.0f - f0) * (1.0f - metallic);
       ambient = (kd * albedo * irradiance + spec_env) * environment_strength;
     }
     color += ambient * ao;
-    glm::vec3 emissive = material.emissive;
-    if (material.emissive_texture)
-      emissive *= ToLinear(glm::vec3(in.Texture(kUnitEmissive, &SurfaceVaryings::uv)));
+    vec3 emissive = material.emissive;
+    if (material.emissive_texture) emissive *= ToLinear(vec3(in.Texture(kUnitEmissive, in.varyings.uv)));
     color += emissive;
-    out.color[0] = glm::vec4(glm::pow(glm::clamp(color, 0.0f, 1.0f), glm::vec3(1.0f / 2.2f)), base.a);
-    return true;
+    out.color[0] = vec4(pow(clamp(color, 0.0f, 1.0f), 1.0f / 2.2f), base.w);
   }
 };
 
