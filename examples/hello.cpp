@@ -11,19 +11,21 @@ struct Vertex {
   std::uint8_t color[4];
 };
 
+using namespace softgl;  // the lane types: Float, vec3, vec4, ... (softgl/lanes.h)
+
 struct Vary {
-  glm::vec3 color;
+  vec3 color;
 };
 
-struct ColorShader : softgl::Shader<ColorShader, Vary> {
-  glm::mat4 mvp{1.0f};
-  void Vertex(const softgl::VertexIn& in, softgl::VertexOut<Vary>& out) const {
-    out.position = mvp * glm::vec4(glm::vec3(in.attrib[0]), 1.0f);
-    out.varyings.color = glm::vec3(in.attrib[1]);
+// A wide shader: each call runs 16 vertices or 16 fragments at once, in code that reads like GLSL.
+struct ColorShader : Shader<ColorShader, Vary> {
+  glm::mat4 mvp{1.0f};  // a uniform
+  void Vertex(const VertexLanes& in, VertexLanesOut<Vary>& out) const {
+    out.position = mvp * vec4(vec3(in.attrib[0]), 1.0f);
+    out.varyings.color = vec3(in.attrib[1]);
   }
-  bool Fragment(const softgl::FragmentIn<Vary>& in, softgl::FragmentOut& out) const {
-    out.color[0] = glm::vec4(in.varyings.color, 1.0f);
-    return true;
+  void Fragment(const FragmentLanes<Vary>& in, FragmentLanesOut& out) const {
+    out.color[0] = vec4(in.varyings.color, 1.0f);
   }
 };
 

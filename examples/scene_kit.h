@@ -14,26 +14,36 @@ inline constexpr float kPi = 3.14159265358979f;
 
 // ---- Shaders ------------------------------------------------------------------------------------------------
 
+// The scenes' shaders are wide (softgl/shader.h): each call runs 16 vertices or fragments, in code that reads like
+// GLSL, with softgl's lane types.
+using softgl::Float;
+using softgl::FragmentLanes;
+using softgl::FragmentLanesOut;
+using softgl::VertexLanes;
+using softgl::VertexLanesOut;
+using softgl::vec2;
+using softgl::vec3;
+using softgl::vec4;
+
 struct ColorVaryings {
-  glm::vec3 color;
+  vec3 color;
 };
 
 // Position (attribute 0) through a matrix; colour (attribute 1) interpolated.
 struct ColorShader : softgl::Shader<ColorShader, ColorVaryings> {
   glm::mat4 mvp{1.0f};
-  void Vertex(const softgl::VertexIn& in, softgl::VertexOut<ColorVaryings>& out) const {
-    out.position = mvp * glm::vec4(glm::vec3(in.attrib[0]), 1.0f);
-    out.varyings.color = glm::vec3(in.attrib[1]);
+  void Vertex(const VertexLanes& in, VertexLanesOut<ColorVaryings>& out) const {
+    out.position = mvp * vec4(vec3(in.attrib[0]), 1.0f);
+    out.varyings.color = vec3(in.attrib[1]);
   }
-  bool Fragment(const softgl::FragmentIn<ColorVaryings>& in, softgl::FragmentOut& out) const {
-    out.color[0] = glm::vec4(in.varyings.color, 1.0f);
-    return true;
+  void Fragment(const FragmentLanes<ColorVaryings>& in, FragmentLanesOut& out) const {
+    out.color[0] = vec4(in.varyings.color, 1.0f);
   }
 };
 
 struct LitVaryings {
-  glm::vec3 normal;
-  glm::vec3 color;
+  vec3 normal;
+  vec3 color;
 };
 
 // Per-fragment diffuse lighting from one directional light plus ambient.
@@ -44,33 +54,31 @@ struct LitShader : softgl::Shader<LitShader, LitVaryings> {
   float ambient = 0.25f;
   float brightness = 1.0f;
   float alpha = 1.0f;
-  void Vertex(const softgl::VertexIn& in, softgl::VertexOut<LitVaryings>& out) const {
-    out.position = mvp * glm::vec4(glm::vec3(in.attrib[0]), 1.0f);
-    out.varyings.normal = glm::mat3(model) * glm::vec3(in.attrib[1]);
-    out.varyings.color = glm::vec3(in.attrib[2]);
+  void Vertex(const VertexLanes& in, VertexLanesOut<LitVaryings>& out) const {
+    out.position = mvp * vec4(vec3(in.attrib[0]), 1.0f);
+    out.varyings.normal = glm::mat3(model) * vec3(in.attrib[1]);
+    out.varyings.color = vec3(in.attrib[2]);
   }
-  bool Fragment(const softgl::FragmentIn<LitVaryings>& in, softgl::FragmentOut& out) const {
-    const float diffuse = std::max(glm::dot(glm::normalize(in.varyings.normal), light_dir), 0.0f);
-    out.color[0] = glm::vec4(in.varyings.color * (ambient + (1.0f - ambient) * diffuse) * brightness, alpha);
-    return true;
+  void Fragment(const FragmentLanes<LitVaryings>& in, FragmentLanesOut& out) const {
+    const Float diffuse = max(dot(normalize(in.varyings.normal), light_dir), 0.0f);
+    out.color[0] = vec4(in.varyings.color * (ambient + (1.0f - ambient) * diffuse) * brightness, alpha);
   }
 };
 
 struct FloorVaryings {
-  glm::vec2 world;  // world-space x, z: the checks are computed per fragment from it
+  vec2 world;  // world-space x, z: the checks are computed per fragment from it
 };
 
 struct FloorShader : softgl::Shader<FloorShader, FloorVaryings> {
   glm::mat4 mvp{1.0f};
-  void Vertex(const softgl::VertexIn& in, softgl::VertexOut<FloorVaryings>& out) const {
-    out.position = mvp * glm::vec4(glm::vec3(in.attrib[0]), 1.0f);
-    out.varyings.world = glm::vec2(in.attrib[0].x, in.attrib[0].z);
+  void Vertex(const VertexLanes& in, VertexLanesOut<FloorVaryings>& out) const {
+    out.position = mvp * vec4(vec3(in.attrib[0]), 1.0f);
+    out.varyings.world = vec2(in.attrib[0].x, in.attrib[0].z);
   }
-  bool Fragment(const softgl::FragmentIn<FloorVaryings>& in, softgl::FragmentOut& out) const {
-    const int cx = int(std::floor(in.varyings.world.x)), cz = int(std::floor(in.varyings.world.y));
-    const bool dark = ((cx + cz) & 1) != 0;
-    out.color[0] = dark ? glm::vec4(0.15f, 0.2f, 0.3f, 1.0f) : glm::vec4(0.9f, 0.85f, 0.7f, 1.0f);
-    return true;
+  void Fragment(const FragmentLanes<FloorVaryings>& in, FragmentLanesOut& out) const {
+    const softgl::Int cells = softgl::Int(floor(in.varyings.world.x)) + softgl::Int(floor(in.varyings.world.y));
+    const softgl::Bool dark = (cells & 1) != 0;
+    out.color[0] = select(dark, vec4(glm::vec4(0.15f, 0.2f, 0.3f, 1.0f)), vec4(glm::vec4(0.9f, 0.85f, 0.7f, 1.0f)));
   }
 };
 
@@ -80,13 +88,10 @@ struct FlatVaryings {};
 struct FlatShader : softgl::Shader<FlatShader, FlatVaryings> {
   glm::mat4 mvp{1.0f};
   glm::vec4 color{1.0f};
-  void Vertex(const softgl::VertexIn& in, softgl::VertexOut<FlatVaryings>& out) const {
-    out.position = mvp * glm::vec4(glm::vec3(in.attrib[0]), 1.0f);
+  void Vertex(const VertexLanes& in, VertexLanesOut<FlatVaryings>& out) const {
+    out.position = mvp * vec4(vec3(in.attrib[0]), 1.0f);
   }
-  bool Fragment(const softgl::FragmentIn<FlatVaryings>&, softgl::FragmentOut& out) const {
-    out.color[0] = color;
-    return true;
-  }
+  void Fragment(const FragmentLanes<FlatVaryings>&, FragmentLanesOut& out) const { out.color[0] = color; }
 };
 
 // ---- Geometry -----------------------------------------------------------------------------------------------

@@ -19,13 +19,10 @@ struct OutlineShader : softgl::Shader<OutlineShader, FlatVaryings> {
   glm::mat4 mvp{1.0f};
   float thickness = 0.05f;
   glm::vec4 color{1.0f};
-  void Vertex(const softgl::VertexIn& in, softgl::VertexOut<FlatVaryings>& out) const {
-    out.position = mvp * glm::vec4(glm::vec3(in.attrib[0]) + thickness * glm::vec3(in.attrib[1]), 1.0f);
+  void Vertex(const VertexLanes& in, VertexLanesOut<FlatVaryings>& out) const {
+    out.position = mvp * vec4(vec3(in.attrib[0]) + thickness * vec3(in.attrib[1]), 1.0f);
   }
-  bool Fragment(const softgl::FragmentIn<FlatVaryings>&, softgl::FragmentOut& out) const {
-    out.color[0] = color;
-    return true;
-  }
+  void Fragment(const FragmentLanes<FlatVaryings>&, FragmentLanesOut& out) const { out.color[0] = color; }
 };
 
 glm::mat4 Place(glm::vec3 at, float yaw, float scale) {
@@ -227,22 +224,21 @@ softgl::Image Transparency(int width, int height) {
 namespace {
 
 struct DecalVaryings {
-  glm::vec2 uv;
+  vec2 uv;
 };
 
 // A round badge: rings in uv in [-1, 1]^2, discarded outside the unit circle.
 struct DecalShader : softgl::Shader<DecalShader, DecalVaryings> {
   glm::mat4 mvp{1.0f};
-  void Vertex(const softgl::VertexIn& in, softgl::VertexOut<DecalVaryings>& out) const {
-    out.position = mvp * glm::vec4(glm::vec3(in.attrib[0]), 1.0f);
-    out.varyings.uv = glm::vec2(in.attrib[1]);
+  void Vertex(const VertexLanes& in, VertexLanesOut<DecalVaryings>& out) const {
+    out.position = mvp * vec4(vec3(in.attrib[0]), 1.0f);
+    out.varyings.uv = vec2(in.attrib[1]);
   }
-  bool Fragment(const softgl::FragmentIn<DecalVaryings>& in, softgl::FragmentOut& out) const {
-    const float r = glm::length(in.varyings.uv);
-    if (r > 1.0f) return false;
-    const bool ring = int(std::floor(r * 4.0f)) % 2 == 0;
-    out.color[0] = ring ? glm::vec4(0.95f, 0.95f, 0.9f, 1.0f) : glm::vec4(0.85f, 0.1f, 0.15f, 1.0f);
-    return true;
+  void Fragment(const FragmentLanes<DecalVaryings>& in, FragmentLanesOut& out) const {
+    const Float r = length(in.varyings.uv);
+    out.Discard(r > 1.0f);
+    const softgl::Bool ring = (softgl::Int(floor(r * 4.0f)) & 1) == 0;
+    out.color[0] = select(ring, vec4(glm::vec4(0.95f, 0.95f, 0.9f, 1.0f)), vec4(glm::vec4(0.85f, 0.1f, 0.15f, 1.0f)));
   }
 };
 

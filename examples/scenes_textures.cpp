@@ -48,8 +48,8 @@ std::uint32_t MakePatternTexture(softgl::Context& gl) {
 }
 
 struct TexVaryings {
-  glm::vec3 normal;
-  glm::vec2 uv;
+  vec3 normal;
+  vec2 uv;
 };
 
 // Diffuse lighting of a texture read on unit 0 through the uv varying (its derivatives give the LOD).
@@ -57,22 +57,21 @@ struct TexturedShader : softgl::Shader<TexturedShader, TexVaryings> {
   glm::mat4 mvp{1.0f}, model{1.0f};
   float uv_scale = 1.0f;
   glm::vec3 light_dir = glm::normalize(glm::vec3(0.4f, 0.8f, 0.6f));
-  void Vertex(const softgl::VertexIn& in, softgl::VertexOut<TexVaryings>& out) const {
-    out.position = mvp * glm::vec4(glm::vec3(in.attrib[0]), 1.0f);
-    out.varyings.normal = glm::mat3(model) * glm::vec3(in.attrib[1]);
-    out.varyings.uv = glm::vec2(in.attrib[3]) * uv_scale;
+  void Vertex(const VertexLanes& in, VertexLanesOut<TexVaryings>& out) const {
+    out.position = mvp * vec4(vec3(in.attrib[0]), 1.0f);
+    out.varyings.normal = glm::mat3(model) * vec3(in.attrib[1]);
+    out.varyings.uv = vec2(in.attrib[3]) * uv_scale;
   }
-  bool Fragment(const softgl::FragmentIn<TexVaryings>& in, softgl::FragmentOut& out) const {
-    const float diffuse = std::max(glm::dot(glm::normalize(in.varyings.normal), light_dir), 0.0f);
-    out.color[0] = in.Texture(0, &TexVaryings::uv) * (0.35f + 0.65f * diffuse);
-    out.color[0].a = 1.0f;
-    return true;
+  void Fragment(const FragmentLanes<TexVaryings>& in, FragmentLanesOut& out) const {
+    const Float diffuse = max(dot(normalize(in.varyings.normal), light_dir), 0.0f);
+    out.color[0] = in.Texture(0, in.varyings.uv) * (0.35f + 0.65f * diffuse);
+    out.color[0].w = 1.0f;
   }
 };
 
 // A full-screen triangle: positions cover the viewport, uv spans [0, 1] over it.
 struct ScreenVaryings {
-  glm::vec2 uv;
+  vec2 uv;
 };
 const float kScreenTriangle[] = {-1, -1, 3, -1, -1, 3};
 
@@ -128,16 +127,16 @@ namespace {
 
 struct DepthOnlyShader : softgl::Shader<DepthOnlyShader, FlatVaryings> {
   glm::mat4 mvp{1.0f};
-  void Vertex(const softgl::VertexIn& in, softgl::VertexOut<FlatVaryings>& out) const {
-    out.position = mvp * glm::vec4(glm::vec3(in.attrib[0]), 1.0f);
+  void Vertex(const VertexLanes& in, VertexLanesOut<FlatVaryings>& out) const {
+    out.position = mvp * vec4(vec3(in.attrib[0]), 1.0f);
   }
-  bool Fragment(const softgl::FragmentIn<FlatVaryings>&, softgl::FragmentOut&) const { return true; }
+  void Fragment(const FragmentLanes<FlatVaryings>&, FragmentLanesOut&) const {}
 };
 
 struct ShadowVaryings {
-  glm::vec3 normal;
-  glm::vec3 color;
-  glm::vec4 light_pos;  // position in the light's clip space
+  vec3 normal;
+  vec3 color;
+  vec4 light_pos;  // position in the light's clip space
 };
 
 // Per-fragment diffuse lighting, shadowed by a 3 x 3 grid of comparison samples of the shadow map on unit 0
@@ -146,23 +145,22 @@ struct ShadowedShader : softgl::Shader<ShadowedShader, ShadowVaryings> {
   glm::mat4 mvp{1.0f}, model{1.0f}, light_vp{1.0f};
   glm::vec3 light_dir{0, 1, 0};
   float texel = 1.0f / 1024.0f;
-  void Vertex(const softgl::VertexIn& in, softgl::VertexOut<ShadowVaryings>& out) const {
-    const glm::vec4 world = model * glm::vec4(glm::vec3(in.attrib[0]), 1.0f);
-    out.position = mvp * glm::vec4(glm::vec3(in.attrib[0]), 1.0f);
-    out.varyings.normal = glm::mat3(model) * glm::vec3(in.attrib[1]);
-    out.varyings.color = glm::vec3(in.attrib[2]);
+  void Vertex(const VertexLanes& in, VertexLanesOut<ShadowVaryings>& out) const {
+    const vec4 world = model * vec4(vec3(in.attrib[0]), 1.0f);
+    out.position = mvp * vec4(vec3(in.attrib[0]), 1.0f);
+    out.varyings.normal = glm::mat3(model) * vec3(in.attrib[1]);
+    out.varyings.color = vec3(in.attrib[2]);
     out.varyings.light_pos = light_vp * world;
   }
-  bool Fragment(const softgl::FragmentIn<ShadowVaryings>& in, softgl::FragmentOut& out) const {
-    const glm::vec3 p = glm::vec3(in.varyings.light_pos) / in.varyings.light_pos.w * 0.5f + 0.5f;
-    float lit = 0.0f;
+  void Fragment(const FragmentLanes<ShadowVaryings>& in, FragmentLanesOut& out) const {
+    const vec3 p = vec3(in.varyings.light_pos) / in.varyings.light_pos.w * 0.5f + 0.5f;
+    Float lit = 0.0f;
     for (int dy = -1; dy <= 1; ++dy)
       for (int dx = -1; dx <= 1; ++dx)
-        lit += in.textures->SampleShadow(0, glm::vec2(p) + glm::vec2(dx, dy) * texel, p.z, {}, {});
+        lit += in.TextureShadow(0, vec3(vec2(p) + glm::vec2(dx, dy) * texel, p.z));
     lit /= 9.0f;
-    const float diffuse = std::max(glm::dot(glm::normalize(in.varyings.normal), light_dir), 0.0f);
-    out.color[0] = glm::vec4(in.varyings.color * (0.25f + 0.75f * diffuse * lit), 1.0f);
-    return true;
+    const Float diffuse = max(dot(normalize(in.varyings.normal), light_dir), 0.0f);
+    out.color[0] = vec4(in.varyings.color * (0.25f + 0.75f * diffuse * lit), 1.0f);
   }
 };
 
@@ -248,24 +246,23 @@ namespace {
 struct PostShader : softgl::Shader<PostShader, ScreenVaryings> {
   glm::vec2 texel{0.0f};
   float split = 0.5f;
-  void Vertex(const softgl::VertexIn& in, softgl::VertexOut<ScreenVaryings>& out) const {
-    out.position = glm::vec4(glm::vec2(in.attrib[0]), 0.0f, 1.0f);
-    out.varyings.uv = glm::vec2(in.attrib[0]) * 0.5f + 0.5f;
+  void Vertex(const VertexLanes& in, VertexLanesOut<ScreenVaryings>& out) const {
+    out.position = vec4(vec2(in.attrib[0]), 0.0f, 1.0f);
+    out.varyings.uv = vec2(in.attrib[0]) * 0.5f + 0.5f;
   }
-  bool Fragment(const softgl::FragmentIn<ScreenVaryings>& in, softgl::FragmentOut& out) const {
-    const glm::vec2 uv = in.varyings.uv;
-    glm::vec3 hdr(0.0f);
-    if (uv.x < split) {
-      hdr = glm::vec3(in.textures->SampleLod(0, uv, 0.0f));
-    } else {
+  void Fragment(const FragmentLanes<ScreenVaryings>& in, FragmentLanesOut& out) const {
+    const vec2 uv = in.varyings.uv;
+    const softgl::Bool sharp = uv.x < split;
+    vec3 hdr = vec3(in.TextureLod(0, uv, 0.0f));
+    if (!all(sharp)) {  // some lanes lie right of the split: blur them
+      vec3 sum(0.0f);
       for (int dy = -4; dy <= 4; ++dy)
-        for (int dx = -4; dx <= 4; ++dx) hdr += glm::vec3(in.textures->SampleLod(0, uv + glm::vec2(dx, dy) * texel, 0.0f));
-      hdr /= 81.0f;
+        for (int dx = -4; dx <= 4; ++dx) sum += vec3(in.TextureLod(0, uv + glm::vec2(dx, dy) * texel, 0.0f));
+      hdr = select(sharp, hdr, sum / 81.0f);
     }
-    glm::vec3 ldr = hdr / (hdr + 1.0f);
-    if (std::fabs(uv.x - split) < texel.x) ldr = glm::vec3(1.0f);  // the dividing line
-    out.color[0] = glm::vec4(glm::pow(ldr, glm::vec3(1.0f / 2.2f)), 1.0f);
-    return true;
+    vec3 ldr = hdr / (hdr + 1.0f);
+    ldr = select(abs(uv.x - split) < texel.x, vec3(1.0f), ldr);  // the dividing line
+    out.color[0] = vec4(pow(ldr, 1.0f / 2.2f), 1.0f);
   }
 };
 
@@ -348,37 +345,35 @@ glm::vec3 FaceDirection(int f, float s, float t) {
 }
 
 struct EnvVaryings {
-  glm::vec3 dir;  // reflected (objects) or viewing (sky) direction, in world space
+  vec3 dir;  // reflected (objects) or viewing (sky) direction, in world space
 };
 
 struct ReflectShader : softgl::Shader<ReflectShader, EnvVaryings> {
   glm::mat4 mvp{1.0f}, model{1.0f};
   glm::vec3 eye{0.0f};
   glm::vec3 tint{1.0f};
-  void Vertex(const softgl::VertexIn& in, softgl::VertexOut<EnvVaryings>& out) const {
-    const glm::vec3 world = glm::vec3(model * glm::vec4(glm::vec3(in.attrib[0]), 1.0f));
-    const glm::vec3 n = glm::normalize(glm::mat3(model) * glm::vec3(in.attrib[1]));
-    out.position = mvp * glm::vec4(glm::vec3(in.attrib[0]), 1.0f);
-    out.varyings.dir = glm::reflect(world - eye, n);
+  void Vertex(const VertexLanes& in, VertexLanesOut<EnvVaryings>& out) const {
+    const vec3 world = vec3(model * vec4(vec3(in.attrib[0]), 1.0f));
+    const vec3 n = normalize(glm::mat3(model) * vec3(in.attrib[1]));
+    out.position = mvp * vec4(vec3(in.attrib[0]), 1.0f);
+    out.varyings.dir = reflect(world - eye, n);
   }
-  bool Fragment(const softgl::FragmentIn<EnvVaryings>& in, softgl::FragmentOut& out) const {
-    out.color[0] = glm::vec4(glm::vec3(in.TextureCube(0, &EnvVaryings::dir)) * tint, 1.0f);
-    return true;
+  void Fragment(const FragmentLanes<EnvVaryings>& in, FragmentLanesOut& out) const {
+    out.color[0] = vec4(vec3(in.TextureCube(0, in.varyings.dir)) * tint, 1.0f);
   }
 };
 
 // The background: each pixel looks up the direction it sees.
 struct SkyShader : softgl::Shader<SkyShader, EnvVaryings> {
   glm::mat4 inverse_vp{1.0f};
-  void Vertex(const softgl::VertexIn& in, softgl::VertexOut<EnvVaryings>& out) const {
-    const glm::vec2 p(in.attrib[0]);
-    out.position = glm::vec4(p, 1.0f, 1.0f);  // on the far plane
-    const glm::vec4 near_point = inverse_vp * glm::vec4(p, -1.0f, 1.0f), far_point = inverse_vp * glm::vec4(p, 1.0f, 1.0f);
-    out.varyings.dir = glm::vec3(far_point) / far_point.w - glm::vec3(near_point) / near_point.w;
+  void Vertex(const VertexLanes& in, VertexLanesOut<EnvVaryings>& out) const {
+    const vec2 p(in.attrib[0]);
+    out.position = vec4(p, 1.0f, 1.0f);  // on the far plane
+    const vec4 near_point = inverse_vp * vec4(p, -1.0f, 1.0f), far_point = inverse_vp * vec4(p, 1.0f, 1.0f);
+    out.varyings.dir = vec3(far_point) / far_point.w - vec3(near_point) / near_point.w;
   }
-  bool Fragment(const softgl::FragmentIn<EnvVaryings>& in, softgl::FragmentOut& out) const {
-    out.color[0] = in.TextureCube(0, &EnvVaryings::dir);
-    return true;
+  void Fragment(const FragmentLanes<EnvVaryings>& in, FragmentLanesOut& out) const {
+    out.color[0] = in.TextureCube(0, in.varyings.dir);
   }
 };
 

@@ -424,14 +424,15 @@ struct mat4 {
   const vec4& operator[](int i) const { return c[i]; }
 };
 
-// Matrix times vector, in GLM's order of operations: ((m0 * v.x + m1 * v.y) + m2 * v.z) + m3 * v.w.
+// Matrix times vector, in GLM's order of operations (so that the lanes get GLM's bits): for a mat3
+// (m0 v.x + m1 v.y) + m2 v.z, for a mat4 (m0 v.x + m1 v.y) + (m2 v.z + m3 v.w).
 inline vec3 operator*(const mat3& m, const vec3& v) { return m[0] * v.x + m[1] * v.y + m[2] * v.z; }
-inline vec4 operator*(const mat4& m, const vec4& v) { return m[0] * v.x + m[1] * v.y + m[2] * v.z + m[3] * v.w; }
+inline vec4 operator*(const mat4& m, const vec4& v) { return (m[0] * v.x + m[1] * v.y) + (m[2] * v.z + m[3] * v.w); }
 inline vec3 operator*(const glm::mat3& m, const vec3& v) {
   return vec3(m[0]) * v.x + vec3(m[1]) * v.y + vec3(m[2]) * v.z;
 }
 inline vec4 operator*(const glm::mat4& m, const vec4& v) {
-  return vec4(m[0]) * v.x + vec4(m[1]) * v.y + vec4(m[2]) * v.z + vec4(m[3]) * v.w;
+  return (vec4(m[0]) * v.x + vec4(m[1]) * v.y) + (vec4(m[2]) * v.z + vec4(m[3]) * v.w);
 }
 inline mat3 operator*(const mat3& a, const mat3& b) { return mat3(a * b[0], a * b[1], a * b[2]); }
 inline mat4 operator*(const mat4& a, const mat4& b) { return mat4(a * b[0], a * b[1], a * b[2], a * b[3]); }
