@@ -74,6 +74,17 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   Context gl(in.Byte() % 49, in.Byte() % 49);
   FuzzShader shader;
   std::vector<std::uint8_t> scratch;
+  // Work per input is bounded, so that an input's time says something about softgl: at most kDrawBudget vertices
+  // over all draws (a 255-pixel point covers the whole target, so fragments <= budget x target area), render
+  // targets of at most 64x64 (textures above 64 texels a side are folded back unless they are invalid).
+  constexpr int kDrawBudget = 1 << 10;
+  int drawn = 0;
+  const auto draw_count = [&] {
+    const int n = in.Amount(-2, 600, 1024);
+    const int left = kDrawBudget - drawn;
+    drawn += std::max(n, 0);
+    return n > left ? std::max(left, 0) : n;
+  };
   for (int step = 0; step < 200 && !in.Empty(); ++step) {
     const auto id = [&] { return std::uint32_t(in.Byte() % 8); };
     switch (in.Byte() % 40) {
@@ -103,11 +114,18 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       case 7: gl.EnableVertexAttribArray(std::uint32_t(in.Int(0, 16))); break;
       case 8: gl.DisableVertexAttribArray(std::uint32_t(in.Int(0, 16))); break;
       case 9: gl.UseProgram(shader); break;
-      case 10: gl.DrawArrays(in.Enum(kModes), in.Int(-2, 64), in.Amount(-2, 600, 1 << 16)); break;
-      case 11:
-        gl.DrawElement(in.Enum(kModes), in.Amount(-2, 600, 1 << 16), in.Enum(kIndexTypes),
-                       std::size_t(std::uint32_t(in.Int(0, 512))));
+      case 10: {
+        const std::uint32_t mode = in.Enum(kModes);
+        const int first = in.Int(-2, 64);
+        gl.DrawArrays(mode, first, draw_count());
         break;
+      }
+      case 11: {
+        const std::uint32_t mode = in.Enum(kModes);
+        const int count = draw_count();
+        gl.DrawElement(mode, count, in.Enum(kIndexTypes), std::size_t(std::uint32_t(in.Int(0, 512))));
+        break;
+      }
       case 12: gl.Enable(in.Enum(kCaps)); break;
       case 13: gl.Disable(in.Enum(kCaps)); break;
       case 14: gl.Viewport(in.Int(-64, 64), in.Int(-64, 64), in.Int(-2, 80), in.Int(-2, 80)); break;
@@ -121,7 +139,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       case 22: {
         // Sizes are mostly small, sometimes wild; pixels are given only when the buffer holds them (as a caller
         // of OpenGL must), otherwise the level is allocated without data.
-        const int w = in.Amount(0, 16, 512, kMaxTextureSize), h = in.Amount(0, 16, 512, kMaxTextureSize);
+        const int w = in.Amount(0, 16, 64, kMaxTextureSize), h = in.Amount(0, 16, 64, kMaxTextureSize);
         const bool small = w >= 0 && h >= 0 && w <= 64 && h <= 64;
         if (small) scratch.assign(std::size_t(w) * std::size_t(h) * 16 + 64, in.Byte());
         gl.TexImage2D(in.Enum(kImageTargets), in.Int(-1, 5), in.Enum(kInternal), w, h, in.Byte() < 8,
