@@ -149,6 +149,20 @@ struct Int {
   friend Int operator-(Int a, Int b) { return Int(lanes_detail::I32(lanes_detail::U32(a.v) - lanes_detail::U32(b.v))); }
   friend Int operator*(Int a, Int b) { return Int(lanes_detail::I32(lanes_detail::U32(a.v) * lanes_detail::U32(b.v))); }
   friend Int operator-(Int a) { return Int(0) - a; }
+  /// Division truncating toward zero and its remainder (sign of a), as GLSL's int / and %. Where GLSL leaves the
+  /// result undefined the lane gets a defined one: 0 for division by zero, a itself for INT_MIN / -1 (and 0 for its
+  /// remainder). Processors have no vector integer division, so these run lane by lane.
+  friend Int operator/(Int a, Int b) {
+    Int r;
+    for (int i = 0; i < kLanes; ++i)
+      r.v[i] = b.v[i] == 0 ? 0 : b.v[i] == -1 ? std::int32_t(0u - std::uint32_t(a.v[i])) : a.v[i] / b.v[i];
+    return r;
+  }
+  friend Int operator%(Int a, Int b) {
+    Int r;
+    for (int i = 0; i < kLanes; ++i) r.v[i] = b.v[i] == 0 || b.v[i] == -1 ? 0 : a.v[i] % b.v[i];
+    return r;
+  }
   friend Int operator&(Int a, Int b) { return Int(a.v & b.v); }
   friend Int operator|(Int a, Int b) { return Int(a.v | b.v); }
   friend Int operator^(Int a, Int b) { return Int(a.v ^ b.v); }
@@ -164,6 +178,8 @@ struct Int {
   Int& operator+=(Int b) { return *this = *this + b; }
   Int& operator-=(Int b) { return *this = *this - b; }
   Int& operator*=(Int b) { return *this = *this * b; }
+  Int& operator/=(Int b) { return *this = *this / b; }
+  Int& operator%=(Int b) { return *this = *this % b; }
 };
 
 /// A float per lane.
@@ -647,8 +663,8 @@ inline V clamp(const V& a, const V& lo, const V& hi) {
   return lanes_detail::Map(a, lo, hi, [](Float p, Float l, Float h) { return clamp(p, l, h); });
 }
 
-/// a + t (b - a), as GLM computes mix for floating-point t.
-inline Float mix(Float a, Float b, Float t) { return a + t * (b - a); }
+/// a (1 - t) + b t, as GLSL defines mix and GLM computes it.
+inline Float mix(Float a, Float b, Float t) { return a * (1.0f - t) + b * t; }
 template <WideVector V>
 inline V mix(const V& a, const V& b, Float t) {
   return lanes_detail::Map(a, b, [t](Float p, Float q) { return mix(p, q, t); });
