@@ -617,9 +617,9 @@ TEST_CASE("blending into 8-bit buffers is OpenGL's formula on the 8-bit operands
             for (int o = 0; o < 2; ++o)
               for (int c = 0; c < 4; ++c)
                 for (int l = 0; l < softgl::kLanes; ++l)
-                  blocks->out[b].color[o][c].v[l] = float(int(next() % 1400) - 200) / 1000.0f;  // [-0.2, 1.2)
+                  blocks->out[b].color[o][c].v.Set(l, float(int(next() % 1400) - 200) / 1000.0f);  // [-0.2, 1.2)
           }
-          blocks->out[1].color[0][1].v[5] = std::numeric_limits<float>::quiet_NaN();
+          blocks->out[1].color[0][1].v.Set(5, std::numeric_limits<float>::quiet_NaN());
           detail::ApplyFragmentOps(state, detail::PlanFragmentOps(state, target), *blocks, false, target);
           for (int b = 0; b < 4; ++b)
             for (int l = 0; l < softgl::kLanes; ++l) {

@@ -8,9 +8,10 @@
 //     out.color[0] = vec4(select(d > 0.9f, vec3(1.0f), c), 1.0f);   // a per-lane branch
 //
 // Lanes: a fragment shader's 16 lanes are four 2x2 quads of pixels, lane = quad * 4 + (x % 2) + 2 * (y % 2) (so dFdx
-// and dFdy read the neighbouring lanes of the quad); a vertex shader's are 16 vertices. softgl compiles each shader three times (for SSE2,
-// AVX2 and AVX-512: 4, 8 and 16 lanes per instruction) and runs the version the processor allows, chosen at run
-// time; the results are the same on all three (none contracts a * b + c into a fused multiply-add).
+// and dFdy read the neighbouring lanes of the quad); a vertex shader's are 16 vertices. softgl compiles each shader
+// three times (for SSE2, AVX2 and AVX-512: 4, 8 and 8 lanes per instruction, the lanes held in 32-byte parts; see
+// lanes_detail) and runs the version the processor allows, chosen at run time; the results are the same on all three
+// (none contracts a * b + c into a fused multiply-add).
 //
 //   Float, Int, Bool    one float, 32-bit int or condition per lane
 //   vec2, vec3, vec4    vectors of Float (members x, y, z, w); mat3, mat4: columns of vectors
@@ -69,15 +70,104 @@ int SimdLevel();
 namespace softgl {
 
 namespace lanes_detail {
-// GCC's vector extension types (clang has them too): the compiler lowers each operation to the widest vector
-// instructions of the function it is compiled in, so one source serves every instruction set. Aligned to 4 bytes:
-// loads and stores never assume more, and values pass through functions like any struct.
-typedef float F32 __attribute__((vector_size(64), aligned(4)));
-typedef std::int32_t I32 __attribute__((vector_size(64), aligned(4)));
-typedef std::uint32_t U32 __attribute__((vector_size(64), aligned(4)));
-typedef float F4 __attribute__((vector_size(16)));
-}  // namespace lanes_detail
+// The lanes are held in parts of GCC's vector extension types (clang has them too): 32-byte parts of 8 lanes on
+// x86, 16-byte parts of 4 lanes elsewhere. The compiler lowers each operation on a part to the vector instructions
+// of the function it is compiled in: one ymm instruction per part with AVX2 or AVX-512, two xmm instructions with
+// SSE2 (comparisons there go lane by lane: SSE2 alone has no 32-byte vectors). Parts of the processor's own width
+// keep every operation, comparisons and broadcasts included, in registers; a 64-byte vector type would leave
+// compilers to split it, which GCC does through memory and, for comparisons, one lane at a time. Aligned to 4
+// bytes: loads and stores never assume more, and values pass through functions like any struct.
+#if defined(__x86_64__) || defined(__i386__)
+#define SOFTGL_PART_LANES 8
+#else
+#define SOFTGL_PART_LANES 4
+#endif
+inline constexpr int kPartLanes = SOFTGL_PART_LANES;
+inline constexpr int kParts = kLanes / kPartLanes;
+typedef float FP __attribute__((vector_size(kPartLanes * 4), aligned(4)));
+typedef std::int32_t IP __attribute__((vector_size(kPartLanes * 4), aligned(4)));
+typedef std::uint32_t UP __attribute__((vector_size(kPartLanes * 4), aligned(4)));
+typedef float F4 __attribute__((vector_size(16), aligned(4)));
 
+// 16 floats and 16 ints as parts, with the operations of the vector types applied part by part.
+struct F32 {
+  FP p[kParts];
+  float operator[](int i) const { return p[i / kPartLanes][i % kPartLanes]; }
+  void Set(int i, float x) { p[i / kPartLanes][i % kPartLanes] = x; }
+};
+struct I32 {
+  IP p[kParts];
+  std::int32_t operator[](int i) const { return p[i / kPartLanes][i % kPartLanes]; }
+  void Set(int i, std::int32_t x) { p[i / kPartLanes][i % kPartLanes] = x; }
+};
+#define SOFTGL_PARTS(T, expr) \
+  T r;                        \
+  for (int k = 0; k < kParts; ++k) r.p[k] = expr; \
+  return r
+inline F32 operator+(const F32& a, const F32& b) { SOFTGL_PARTS(F32, a.p[k] + b.p[k]); }
+inline F32 operator-(const F32& a, const F32& b) { SOFTGL_PARTS(F32, a.p[k] - b.p[k]); }
+inline F32 operator*(const F32& a, const F32& b) { SOFTGL_PARTS(F32, a.p[k] * b.p[k]); }
+inline F32 operator/(const F32& a, const F32& b) { SOFTGL_PARTS(F32, a.p[k] / b.p[k]); }
+inline F32 operator-(const F32& a) { SOFTGL_PARTS(F32, -a.p[k]); }
+inline I32 operator==(const F32& a, const F32& b) { SOFTGL_PARTS(I32, a.p[k] == b.p[k]); }
+inline I32 operator!=(const F32& a, const F32& b) { SOFTGL_PARTS(I32, a.p[k] != b.p[k]); }
+inline I32 operator<(const F32& a, const F32& b) { SOFTGL_PARTS(I32, a.p[k] < b.p[k]); }
+inline I32 operator<=(const F32& a, const F32& b) { SOFTGL_PARTS(I32, a.p[k] <= b.p[k]); }
+// Integer + - * wrap around (computed unsigned, where overflow is defined).
+inline I32 operator+(const I32& a, const I32& b) { SOFTGL_PARTS(I32, IP(UP(a.p[k]) + UP(b.p[k]))); }
+inline I32 operator-(const I32& a, const I32& b) { SOFTGL_PARTS(I32, IP(UP(a.p[k]) - UP(b.p[k]))); }
+inline I32 operator*(const I32& a, const I32& b) { SOFTGL_PARTS(I32, IP(UP(a.p[k]) * UP(b.p[k]))); }
+inline I32 operator&(const I32& a, const I32& b) { SOFTGL_PARTS(I32, a.p[k] & b.p[k]); }
+inline I32 operator|(const I32& a, const I32& b) { SOFTGL_PARTS(I32, a.p[k] | b.p[k]); }
+inline I32 operator^(const I32& a, const I32& b) { SOFTGL_PARTS(I32, a.p[k] ^ b.p[k]); }
+inline I32 operator~(const I32& a) { SOFTGL_PARTS(I32, ~a.p[k]); }
+inline I32 ShiftLeft(const I32& a, int n) { SOFTGL_PARTS(I32, IP(UP(a.p[k]) << n)); }
+inline I32 ShiftRight(const I32& a, int n) { SOFTGL_PARTS(I32, a.p[k] >> n); }  // arithmetic
+inline I32 operator==(const I32& a, const I32& b) { SOFTGL_PARTS(I32, a.p[k] == b.p[k]); }
+inline I32 operator!=(const I32& a, const I32& b) { SOFTGL_PARTS(I32, a.p[k] != b.p[k]); }
+inline I32 operator<(const I32& a, const I32& b) { SOFTGL_PARTS(I32, a.p[k] < b.p[k]); }
+inline I32 operator<=(const I32& a, const I32& b) { SOFTGL_PARTS(I32, a.p[k] <= b.p[k]); }
+// Per lane: a where the mask m (all bits set or none) is set, else b.
+inline F32 Select(const I32& m, const F32& a, const F32& b) { SOFTGL_PARTS(F32, m.p[k] ? a.p[k] : b.p[k]); }
+inline I32 Select(const I32& m, const I32& a, const I32& b) { SOFTGL_PARTS(I32, m.p[k] ? a.p[k] : b.p[k]); }
+// Conversions (truncating float to int) and bit casts.
+inline I32 ToInt(const F32& a) { SOFTGL_PARTS(I32, __builtin_convertvector(a.p[k], IP)); }
+inline F32 ToFloat(const I32& a) { SOFTGL_PARTS(F32, __builtin_convertvector(a.p[k], FP)); }
+inline I32 BitsOf(const F32& a) { SOFTGL_PARTS(I32, IP(a.p[k])); }
+inline F32 FloatOf(const I32& a) { SOFTGL_PARTS(F32, FP(a.p[k])); }
+// One value in every lane: a broadcast instruction per part. (Written as a shuffle of a 16-byte vector, which
+// every x86 compiles natively; GCC builds a literal of the wider part type one lane at a time when the function it
+// comes from was compiled for SSE2, before it is inlined into an AVX2 or AVX-512 one.)
+typedef std::int32_t I4 __attribute__((vector_size(16), aligned(4)));
+inline I32 Splat(std::int32_t x) {
+  const I4 v = {x, 0, 0, 0};
+  I32 r;
+#if SOFTGL_PART_LANES == 8
+  for (int k = 0; k < kParts; ++k) r.p[k] = __builtin_shufflevector(v, v, 0, 0, 0, 0, 0, 0, 0, 0);
+#else
+  for (int k = 0; k < kParts; ++k) r.p[k] = __builtin_shufflevector(v, v, 0, 0, 0, 0);
+#endif
+  return r;
+}
+inline F32 Splat(float x) {
+  std::int32_t bits;
+  std::memcpy(&bits, &x, sizeof bits);
+  return FloatOf(Splat(bits));
+}
+#undef SOFTGL_PARTS
+// Loads and stores part by part (a copy of all 64 bytes at once may be one 64-byte move that reads what two 32-byte
+// stores wrote, which the processor cannot forward).
+template <class V, class T>
+inline V Load(const T* src) {
+  V r;
+  for (int k = 0; k < kParts; ++k) std::memcpy(&r.p[k], src + k * kPartLanes, sizeof r.p[k]);
+  return r;
+}
+template <class V, class T>
+inline void Store(const V& v, T* dst) {
+  for (int k = 0; k < kParts; ++k) std::memcpy(dst + k * kPartLanes, &v.p[k], sizeof v.p[k]);
+}
+}  // namespace lanes_detail
 
 struct Float;
 
@@ -86,29 +176,30 @@ struct Bool {
   lanes_detail::I32 m;
 
   Bool() = default;
-  Bool(bool b) {
-    for (int i = 0; i < kLanes; ++i) m[i] = b ? -1 : 0;  // (compilers make this loop one broadcast)
-  }
+  Bool(bool b) : m(lanes_detail::Splat(std::int32_t(b ? -1 : 0))) {}
   explicit Bool(const lanes_detail::I32& mask) : m(mask) {}
   /// Lane i holds where bit i of `bits` is set.
   static Bool FromBits(std::uint32_t bits) {
-    const lanes_detail::I32 lane = {1 << 0, 1 << 1, 1 << 2,  1 << 3,  1 << 4,  1 << 5,  1 << 6,  1 << 7,
-                                    1 << 8, 1 << 9, 1 << 10, 1 << 11, 1 << 12, 1 << 13, 1 << 14, 1 << 15};
-    lanes_detail::I32 all;
-    for (int i = 0; i < kLanes; ++i) all[i] = std::int32_t(bits);
-    return Bool((all & lane) != 0);
+    lanes_detail::I32 lane;
+    for (int i = 0; i < kLanes; ++i) lane.Set(i, std::int32_t(1u << i));
+    return Bool((lanes_detail::Splat(std::int32_t(bits)) & lane) != lanes_detail::Splat(0));
   }
   /// Bit i set where lane i holds.
   std::uint32_t Bits() const {
-    using lanes_detail::I32;
-    const I32 lane = {1 << 0, 1 << 1, 1 << 2,  1 << 3,  1 << 4,  1 << 5,  1 << 6,  1 << 7,
-                      1 << 8, 1 << 9, 1 << 10, 1 << 11, 1 << 12, 1 << 13, 1 << 14, 1 << 15};
-    I32 v = m & lane;  // then OR the lanes together, halving the width each step
-    v |= __builtin_shufflevector(v, v, 8, 9, 10, 11, 12, 13, 14, 15, 0, 1, 2, 3, 4, 5, 6, 7);
-    v |= __builtin_shufflevector(v, v, 4, 5, 6, 7, 0, 1, 2, 3, 12, 13, 14, 15, 8, 9, 10, 11);
-    v |= __builtin_shufflevector(v, v, 2, 3, 0, 1, 6, 7, 4, 5, 10, 11, 8, 9, 14, 15, 12, 13);
-    v |= __builtin_shufflevector(v, v, 1, 0, 3, 2, 5, 4, 7, 6, 9, 8, 11, 10, 13, 12, 15, 14);
-    return std::uint32_t(v[0]);
+    std::uint32_t bits = 0;
+#if defined(__SSE2__) && SOFTGL_PART_LANES == 8
+    // The sign bits of each 4-lane half of each part (movmskps).
+    using lanes_detail::F4;
+    using lanes_detail::FP;
+    for (int k = 0; k < lanes_detail::kParts; ++k) {
+      const FP f = FP(m.p[k]);
+      const F4 lo = __builtin_shufflevector(f, f, 0, 1, 2, 3), hi = __builtin_shufflevector(f, f, 4, 5, 6, 7);
+      bits |= std::uint32_t(_mm_movemask_ps(__m128(lo)) | _mm_movemask_ps(__m128(hi)) << 4) << (8 * k);
+    }
+#else
+    for (int i = 0; i < kLanes; ++i) bits |= std::uint32_t(m[i] != 0) << i;
+#endif
+    return bits;
   }
   bool operator[](int i) const { return m[i] != 0; }
 
@@ -131,23 +222,19 @@ struct Int {
   lanes_detail::I32 v;
 
   Int() = default;
-  Int(int x) {
-    for (int i = 0; i < kLanes; ++i) v[i] = x;  // (compilers make this loop one broadcast)
-  }
+  Int(int x) : v(lanes_detail::Splat(std::int32_t(x))) {}
   explicit Int(const lanes_detail::I32& x) : v(x) {}
   /// GLSL int(f): truncation towards zero. (Out of range and NaN give some value, never a trap.)
   explicit Int(const Float& f);
   static Int Load(const std::int32_t* p) {
-    Int r;
-    std::memcpy(&r.v, p, sizeof r.v);
-    return r;
+    return Int(lanes_detail::Load<lanes_detail::I32>(p));
   }
-  void Store(std::int32_t* p) const { std::memcpy(p, &v, sizeof v); }
+  void Store(std::int32_t* p) const { lanes_detail::Store(v, p); }
   int operator[](int i) const { return v[i]; }
 
-  friend Int operator+(Int a, Int b) { return Int(lanes_detail::I32(lanes_detail::U32(a.v) + lanes_detail::U32(b.v))); }
-  friend Int operator-(Int a, Int b) { return Int(lanes_detail::I32(lanes_detail::U32(a.v) - lanes_detail::U32(b.v))); }
-  friend Int operator*(Int a, Int b) { return Int(lanes_detail::I32(lanes_detail::U32(a.v) * lanes_detail::U32(b.v))); }
+  friend Int operator+(Int a, Int b) { return Int(a.v + b.v); }
+  friend Int operator-(Int a, Int b) { return Int(a.v - b.v); }
+  friend Int operator*(Int a, Int b) { return Int(a.v * b.v); }
   friend Int operator-(Int a) { return Int(0) - a; }
   /// Division truncating toward zero and its remainder (sign of a), as GLSL's int / and %. Where GLSL leaves the
   /// result undefined the lane gets a defined one: 0 for division by zero, a itself for INT_MIN / -1 (and 0 for its
@@ -155,26 +242,26 @@ struct Int {
   friend Int operator/(Int a, Int b) {
     Int r;
     for (int i = 0; i < kLanes; ++i)
-      r.v[i] = b.v[i] == 0 ? 0 : b.v[i] == -1 ? std::int32_t(0u - std::uint32_t(a.v[i])) : a.v[i] / b.v[i];
+      r.v.Set(i, b.v[i] == 0 ? 0 : b.v[i] == -1 ? std::int32_t(0u - std::uint32_t(a.v[i])) : a.v[i] / b.v[i]);
     return r;
   }
   friend Int operator%(Int a, Int b) {
     Int r;
-    for (int i = 0; i < kLanes; ++i) r.v[i] = b.v[i] == 0 || b.v[i] == -1 ? 0 : a.v[i] % b.v[i];
+    for (int i = 0; i < kLanes; ++i) r.v.Set(i, b.v[i] == 0 || b.v[i] == -1 ? 0 : a.v[i] % b.v[i]);
     return r;
   }
   friend Int operator&(Int a, Int b) { return Int(a.v & b.v); }
   friend Int operator|(Int a, Int b) { return Int(a.v | b.v); }
   friend Int operator^(Int a, Int b) { return Int(a.v ^ b.v); }
   friend Int operator~(Int a) { return Int(~a.v); }
-  friend Int operator<<(Int a, int n) { return Int(lanes_detail::I32(lanes_detail::U32(a.v) << (n & 31))); }
-  friend Int operator>>(Int a, int n) { return Int(a.v >> (n & 31)); }
+  friend Int operator<<(Int a, int n) { return Int(lanes_detail::ShiftLeft(a.v, n & 31)); }
+  friend Int operator>>(Int a, int n) { return Int(lanes_detail::ShiftRight(a.v, n & 31)); }
   friend Bool operator==(Int a, Int b) { return Bool(a.v == b.v); }
   friend Bool operator!=(Int a, Int b) { return Bool(a.v != b.v); }
   friend Bool operator<(Int a, Int b) { return Bool(a.v < b.v); }
   friend Bool operator<=(Int a, Int b) { return Bool(a.v <= b.v); }
-  friend Bool operator>(Int a, Int b) { return Bool(a.v > b.v); }
-  friend Bool operator>=(Int a, Int b) { return Bool(a.v >= b.v); }
+  friend Bool operator>(Int a, Int b) { return Bool(b.v < a.v); }
+  friend Bool operator>=(Int a, Int b) { return Bool(b.v <= a.v); }
   Int& operator+=(Int b) { return *this = *this + b; }
   Int& operator-=(Int b) { return *this = *this - b; }
   Int& operator*=(Int b) { return *this = *this * b; }
@@ -187,32 +274,20 @@ struct Float {
   lanes_detail::F32 v;
 
   Float() = default;
-  Float(float x) {
-    for (int i = 0; i < kLanes; ++i) v[i] = x;  // (compilers make this loop one broadcast)
-  }
+  Float(float x) : v(lanes_detail::Splat(x)) {}
   Float(double x) : Float(float(x)) {}
   Float(int x) : Float(float(x)) {}
   explicit Float(const lanes_detail::F32& x) : v(x) {}
   /// GLSL float(i).
-  explicit Float(Int i) : v(__builtin_convertvector(i.v, lanes_detail::F32)) {}
+  explicit Float(Int i) : v(lanes_detail::ToFloat(i.v)) {}
   static Float Load(const float* p) {
-    Float r;
-    std::memcpy(&r.v, p, sizeof r.v);
-    return r;
+    return Float(lanes_detail::Load<lanes_detail::F32>(p));
   }
-  void Store(float* p) const { std::memcpy(p, &v, sizeof v); }
+  void Store(float* p) const { lanes_detail::Store(v, p); }
   float operator[](int i) const { return v[i]; }
   /// The lanes' bits as integers (floatBitsToInt), and back (intBitsToFloat).
-  Int Bits() const {
-    Int r;
-    std::memcpy(&r.v, &v, sizeof v);
-    return r;
-  }
-  static Float FromBits(Int bits) {
-    Float r;
-    std::memcpy(&r.v, &bits.v, sizeof r.v);
-    return r;
-  }
+  Int Bits() const { return Int(lanes_detail::BitsOf(v)); }
+  static Float FromBits(Int bits) { return Float(lanes_detail::FloatOf(bits.v)); }
 
   friend Float operator+(Float a, Float b) { return Float(a.v + b.v); }
   friend Float operator-(Float a, Float b) { return Float(a.v - b.v); }
@@ -224,20 +299,20 @@ struct Float {
   friend Bool operator!=(Float a, Float b) { return Bool(a.v != b.v); }
   friend Bool operator<(Float a, Float b) { return Bool(a.v < b.v); }
   friend Bool operator<=(Float a, Float b) { return Bool(a.v <= b.v); }
-  friend Bool operator>(Float a, Float b) { return Bool(a.v > b.v); }
-  friend Bool operator>=(Float a, Float b) { return Bool(a.v >= b.v); }
+  friend Bool operator>(Float a, Float b) { return Bool(b.v < a.v); }
+  friend Bool operator>=(Float a, Float b) { return Bool(b.v <= a.v); }
   Float& operator+=(Float b) { return *this = *this + b; }
   Float& operator-=(Float b) { return *this = *this - b; }
   Float& operator*=(Float b) { return *this = *this * b; }
   Float& operator/=(Float b) { return *this = *this / b; }
 };
 
-inline Int::Int(const Float& f) : v(__builtin_convertvector(f.v, lanes_detail::I32)) {}
+inline Int::Int(const Float& f) : v(lanes_detail::ToInt(f.v)) {}
 
 /// Per lane: a where c holds, else b.
-inline Float select(Bool c, Float a, Float b) { return Float(c.m ? a.v : b.v); }
-inline Int select(Bool c, Int a, Int b) { return Int(c.m ? a.v : b.v); }
-inline Bool select(Bool c, Bool a, Bool b) { return Bool(c.m ? a.m : b.m); }
+inline Float select(Bool c, Float a, Float b) { return Float(lanes_detail::Select(c.m, a.v, b.v)); }
+inline Int select(Bool c, Int a, Int b) { return Int(lanes_detail::Select(c.m, a.v, b.v)); }
+inline Bool select(Bool c, Bool a, Bool b) { return Bool(lanes_detail::Select(c.m, a.m, b.m)); }
 
 // ---- Vectors of lanes ---------------------------------------------------------------------------------------------
 
@@ -524,18 +599,21 @@ SOFTGL_LANES_BINARY(mod)
 
 /// The square root, correctly rounded (as std::sqrt).
 inline Float sqrt(Float a) {
-#if defined(__SSE2__)
+#if defined(__SSE2__) && SOFTGL_PART_LANES == 8
+  // sqrtps on each 4-lane half of each part (GCC's vector types have no square root of their own).
   using lanes_detail::F4;
-  const F4 q0 = __builtin_shufflevector(a.v, a.v, 0, 1, 2, 3), q1 = __builtin_shufflevector(a.v, a.v, 4, 5, 6, 7);
-  const F4 q2 = __builtin_shufflevector(a.v, a.v, 8, 9, 10, 11), q3 = __builtin_shufflevector(a.v, a.v, 12, 13, 14, 15);
-  const F4 r0 = F4(_mm_sqrt_ps(__m128(q0))), r1 = F4(_mm_sqrt_ps(__m128(q1)));
-  const F4 r2 = F4(_mm_sqrt_ps(__m128(q2))), r3 = F4(_mm_sqrt_ps(__m128(q3)));
-  const auto lo = __builtin_shufflevector(r0, r1, 0, 1, 2, 3, 4, 5, 6, 7);
-  const auto hi = __builtin_shufflevector(r2, r3, 0, 1, 2, 3, 4, 5, 6, 7);
-  return Float(__builtin_shufflevector(lo, hi, 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15));
+  using lanes_detail::FP;
+  Float r;
+  for (int k = 0; k < lanes_detail::kParts; ++k) {
+    const FP f = a.v.p[k];
+    const F4 lo = F4(_mm_sqrt_ps(__m128(F4(__builtin_shufflevector(f, f, 0, 1, 2, 3)))));
+    const F4 hi = F4(_mm_sqrt_ps(__m128(F4(__builtin_shufflevector(f, f, 4, 5, 6, 7)))));
+    r.v.p[k] = __builtin_shufflevector(lo, hi, 0, 1, 2, 3, 4, 5, 6, 7);
+  }
+  return r;
 #else
   Float r;
-  for (int i = 0; i < kLanes; ++i) r.v[i] = std::sqrt(a.v[i]);
+  for (int i = 0; i < kLanes; ++i) r.v.Set(i, std::sqrt(a.v[i]));
   return r;
 #endif
 }
@@ -748,15 +826,29 @@ inline vec3 cross(const glm::vec3& a, const vec3& b) { return cross(vec3(a), b);
 /// GLSL dFdx in a fragment shader: per 2x2 quad, the difference between the right and the left fragment of the
 /// lane's row.
 inline Float dFdx(Float a) {
-  const lanes_detail::F32 right = __builtin_shufflevector(a.v, a.v, 1, 1, 3, 3, 5, 5, 7, 7, 9, 9, 11, 11, 13, 13, 15, 15);
-  const lanes_detail::F32 left = __builtin_shufflevector(a.v, a.v, 0, 0, 2, 2, 4, 4, 6, 6, 8, 8, 10, 10, 12, 12, 14, 14);
-  return Float(right - left);
+  Float r;
+  for (int k = 0; k < lanes_detail::kParts; ++k) {
+    const lanes_detail::FP f = a.v.p[k];
+#if SOFTGL_PART_LANES == 8
+    r.v.p[k] = __builtin_shufflevector(f, f, 1, 1, 3, 3, 5, 5, 7, 7) - __builtin_shufflevector(f, f, 0, 0, 2, 2, 4, 4, 6, 6);
+#else
+    r.v.p[k] = __builtin_shufflevector(f, f, 1, 1, 3, 3) - __builtin_shufflevector(f, f, 0, 0, 2, 2);
+#endif
+  }
+  return r;
 }
 /// GLSL dFdy: the difference between the upper and the lower fragment of the lane's column in its quad.
 inline Float dFdy(Float a) {
-  const lanes_detail::F32 up = __builtin_shufflevector(a.v, a.v, 2, 3, 2, 3, 6, 7, 6, 7, 10, 11, 10, 11, 14, 15, 14, 15);
-  const lanes_detail::F32 down = __builtin_shufflevector(a.v, a.v, 0, 1, 0, 1, 4, 5, 4, 5, 8, 9, 8, 9, 12, 13, 12, 13);
-  return Float(up - down);
+  Float r;
+  for (int k = 0; k < lanes_detail::kParts; ++k) {
+    const lanes_detail::FP f = a.v.p[k];
+#if SOFTGL_PART_LANES == 8
+    r.v.p[k] = __builtin_shufflevector(f, f, 2, 3, 2, 3, 6, 7, 6, 7) - __builtin_shufflevector(f, f, 0, 1, 0, 1, 4, 5, 4, 5);
+#else
+    r.v.p[k] = __builtin_shufflevector(f, f, 2, 3, 2, 3) - __builtin_shufflevector(f, f, 0, 1, 0, 1);
+#endif
+  }
+  return r;
 }
 /// |dFdx| + |dFdy|.
 inline Float fwidth(Float a) { return abs(dFdx(a)) + abs(dFdy(a)); }

@@ -127,7 +127,7 @@ inline vec4 Rgba(const float (&out)[4][kLanes]) {
 }
 // Moving 16 vertices between the pipeline's one-vertex-after-another arrays and lanes, four vertices at a time
 // through 4x4 transposes of 128-bit vectors (never one lane at a time).
-typedef float F4 __attribute__((vector_size(16)));
+using lanes_detail::F4;
 inline void Transpose4(F4& a, F4& b, F4& c, F4& d) {
   const F4 t0 = __builtin_shufflevector(a, b, 0, 4, 1, 5), t1 = __builtin_shufflevector(c, d, 0, 4, 1, 5);
   const F4 t2 = __builtin_shufflevector(a, b, 2, 6, 3, 7), t3 = __builtin_shufflevector(c, d, 2, 6, 3, 7);
@@ -137,15 +137,23 @@ inline void Transpose4(F4& a, F4& b, F4& c, F4& d) {
   d = __builtin_shufflevector(t2, t3, 2, 3, 6, 7);
 }
 inline void Join(const F4 (&q)[4], Float& out) {
-  out.v = __builtin_shufflevector(__builtin_shufflevector(q[0], q[1], 0, 1, 2, 3, 4, 5, 6, 7),
-                                  __builtin_shufflevector(q[2], q[3], 0, 1, 2, 3, 4, 5, 6, 7), 0, 1, 2, 3, 4, 5, 6,
-                                  7, 8, 9, 10, 11, 12, 13, 14, 15);
+#if SOFTGL_PART_LANES == 8
+  out.v.p[0] = __builtin_shufflevector(q[0], q[1], 0, 1, 2, 3, 4, 5, 6, 7);
+  out.v.p[1] = __builtin_shufflevector(q[2], q[3], 0, 1, 2, 3, 4, 5, 6, 7);
+#else
+  for (int k = 0; k < 4; ++k) out.v.p[k] = q[k];
+#endif
 }
 inline void Split(const Float& in, F4 (&q)[4]) {
-  q[0] = __builtin_shufflevector(in.v, in.v, 0, 1, 2, 3);
-  q[1] = __builtin_shufflevector(in.v, in.v, 4, 5, 6, 7);
-  q[2] = __builtin_shufflevector(in.v, in.v, 8, 9, 10, 11);
-  q[3] = __builtin_shufflevector(in.v, in.v, 12, 13, 14, 15);
+#if SOFTGL_PART_LANES == 8
+  for (int k = 0; k < 2; ++k) {
+    const lanes_detail::FP f = in.v.p[k];
+    q[2 * k] = __builtin_shufflevector(f, f, 0, 1, 2, 3);
+    q[2 * k + 1] = __builtin_shufflevector(f, f, 4, 5, 6, 7);
+  }
+#else
+  for (int k = 0; k < 4; ++k) q[k] = in.v.p[k];
+#endif
 }
 // vec4 lanes from the glm::vec4 at src[l * stride] of vertices l = 0 .. 15 (lanes from n on repeat vertex n - 1).
 inline void LoadVertices(const glm::vec4* src, std::size_t stride, int n, vec4& out) {
@@ -636,7 +644,7 @@ class Shader : public Program {
       FragmentLanes<Varyings> in;  // (not value-initialized: every member is set here)
       shader_detail::FillFragmentLanes(batch, b, in);
       FragmentLanesOut& out = batch.out[b];  // written in place (outputs the shader leaves alone are undefined)
-      out.depth = in.frag_coord.z;
+      if constexpr (SoftglForm::DeclaresDepth()) out.depth = in.frag_coord.z;  // (read only then)
       out.discarded = false;
       self.Fragment(in, out);
       batch.live[b] &= ~out.discarded.Bits();
@@ -680,8 +688,8 @@ class Shader : public Program {
           out.depth = in.frag_coord.z;
           if (!self.Fragment(in, out)) batch.live[b] &= ~(1u << l);
           for (int o = 0; o < batch.outputs; ++o)
-            for (int c = 0; c < 4; ++c) lanes_out.color[o][c].v[l] = out.color[o][c];
-          if constexpr (SoftglForm::DeclaresDepth()) lanes_out.depth.v[l] = out.depth;
+            for (int c = 0; c < 4; ++c) lanes_out.color[o][c].v.Set(l, out.color[o][c]);
+          if constexpr (SoftglForm::DeclaresDepth()) lanes_out.depth.v.Set(l, out.depth);
         }
       }
     }
