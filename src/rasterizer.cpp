@@ -211,6 +211,54 @@ BlockFn ChooseVaryingsOfBlock() {
   return VaryingsOfBlockBase;
 }
 
+// Coverage of one 8x8 region by a triangle, 64 bits in quad order: bit 4q + k is lane k (x % 2 + 2 (y % 2)) of the
+// region's quad q = (y / 2) * 4 + x / 2. Edge e's function at the region's pixel (ix, iy) is
+// c00[e] + ix sx[e] + iy sy[e]; only the edges that cross the region are given (an edge true at all four corners
+// adds nothing), and for those every value fits 32 bits (the caller checks |sx|, |sy| <= 2^26, and a crossing
+// edge has |c00| <= 7 (|sx| + |sy|)), so W lanes are tested per instruction.
+struct RegionEdges {
+  int count = 0;
+  std::int32_t c00[3], sx[3], sy[3];
+  int row0 = 0, row1 = 3;  // the quad rows to test (the others are left out of the result)
+};
+template <int W>
+SOFTGL_WIDE std::uint64_t RegionCoverage(const RegionEdges& edges) {
+  using I = typename V<W>::I;
+  std::uint64_t bits = 0;
+  // Only the lanes of quad rows row0 .. row1 (16 lanes a row).
+  for (int l0 = edges.row0 * 16; l0 < edges.row1 * 16 + 16; l0 += W) {
+    const I lane = Iota<W>() + l0, q = lane >> 2;
+    const I ix = ((q & 3) << 1) + (lane & 1), iy = ((q >> 2) << 1) + ((lane >> 1) & 1);
+    I outside = I{};  // sign bit set where some edge is negative
+    for (int e = 0; e < edges.count; ++e) outside |= edges.c00[e] + ix * edges.sx[e] + iy * edges.sy[e];
+    bits |= std::uint64_t(MaskToBits<W>(~outside, 0)) << l0;
+  }
+  return bits;
+}
+using CoverageFn = std::uint64_t (*)(const RegionEdges&);
+std::uint64_t RegionCoverageBase(const RegionEdges& e) { return RegionCoverage<4>(e); }
+#if defined(SOFTGL_HAS_DISPATCH)
+SOFTGL_TARGET_AVX2 std::uint64_t RegionCoverageAvx2(const RegionEdges& e) { return RegionCoverage<8>(e); }
+SOFTGL_TARGET_AVX512 std::uint64_t RegionCoverageAvx512(const RegionEdges& e) { return RegionCoverage<16>(e); }
+#endif
+CoverageFn ChooseRegionCoverage() {
+#if defined(SOFTGL_HAS_DISPATCH)
+  if (CpuSimdLevel() == SimdLevel::kAvx512) return RegionCoverageAvx512;
+  if (CpuSimdLevel() == SimdLevel::kAvx2) return RegionCoverageAvx2;
+#endif
+  return RegionCoverageBase;
+}
+
+// The lanes (in RegionCoverage's order) of the region's pixels with ix in [x0, x1) and iy in [y0, y1).
+std::uint64_t RegionRect(int x0, int x1, int y0, int y1) {
+  std::uint64_t bits = 0;
+  for (int l = 0; l < 64; ++l) {
+    const int q = l >> 2, ix = (q & 3) * 2 + (l & 1), iy = (q >> 2) * 2 + ((l >> 1) & 1);
+    if (ix >= x0 && ix < x1 && iy >= y0 && iy < y1) bits |= std::uint64_t(1) << l;
+  }
+  return bits;
+}
+
 // A triangle's planes in the buffer's table, entered when its first quad goes in (and again after each flush):
 // `fill` computes the varyings' planes into the entry the first time; after a flush the entry is copied from the
 // previous one (its memory is not reused before this triangle's next quad asks for its new entry).
@@ -357,16 +405,26 @@ void RasterizeTriangle(const WindowVertex& v0, const WindowVertex& v1, const Win
   };
   const Rect& bounds = target.bounds;
   static const SquareFn frag_coord_square = ChooseFragCoordSquare();
+  static const CoverageFn region_coverage = ChooseRegionCoverage();
+  // Edges no steeper than 2^26 (a side of at most 1024 pixels in x and y) keep a region's edge values in 32 bits.
+  bool narrow = true;
+  for (int e = 0; e < 3; ++e) {
+    constexpr std::int64_t kLimit = std::int64_t(1) << 26;
+    narrow = narrow && step_x[e] <= kLimit && step_x[e] >= -kLimit && step_y[e] <= kLimit && step_y[e] >= -kLimit;
+  }
   PlanesEntry entry;
   for (std::int64_t ry = py0 & ~std::int64_t(kRegion - 1); ry <= py1; ry += kRegion) {
     for (std::int64_t rx = px0 & ~std::int64_t(kRegion - 1); rx <= px1; rx += kRegion) {
       bool skip = false, whole = true;
+      std::int64_t corner[3], corner_lo[3];
       for (int e = 0; e < 3 && !skip; ++e) {
         const std::int64_t c00 = edge_at(e, rx, ry), dx = step_x[e] * (kRegion - 1), dy = step_y[e] * (kRegion - 1);
         const std::int64_t lo = std::min({c00, c00 + dx, c00 + dy, c00 + dx + dy});
         const std::int64_t hi = std::max({c00, c00 + dx, c00 + dy, c00 + dx + dy});
         if (hi < 0) skip = true;
         if (lo < 0) whole = false;
+        corner[e] = c00;
+        corner_lo[e] = lo;
       }
       if (skip) continue;
       if (whole && rx >= bounds.x0 && rx + kRegion <= bounds.x1 && ry >= bounds.y0 && ry + kRegion <= bounds.y1) {
@@ -376,6 +434,33 @@ void RasterizeTriangle(const WindowVertex& v0, const WindowVertex& v1, const Win
           frag_coord_square(planes, blocks, b);
           const TrianglePlanes* stored = entry.For(blocks, planes, varying_planes);
           for (int q = 0; q < 4; ++q) blocks.quad_planes[b][q] = stored;
+        }
+        continue;
+      }
+      if (narrow) {
+        // The edges that cross the region, tested 64 pixels at a time; the quads in order, each with its lanes.
+        RegionEdges edges;
+        for (int e = 0; e < 3; ++e) {
+          if (corner_lo[e] >= 0) continue;
+          edges.c00[edges.count] = std::int32_t(corner[e]);
+          edges.sx[edges.count] = std::int32_t(step_x[e]);
+          edges.sy[edges.count] = std::int32_t(step_y[e]);
+          ++edges.count;
+        }
+        edges.row0 = int((std::max(ry, py0) - ry) >> 1);
+        edges.row1 = int((std::min(ry + kRegion - 1, py1) - ry) >> 1);
+        std::uint64_t cover = region_coverage(edges);
+        if (rx < bounds.x0 || rx + kRegion > bounds.x1 || ry < bounds.y0 || ry + kRegion > bounds.y1)
+          cover &= RegionRect(int(std::max<std::int64_t>(bounds.x0 - rx, 0)), int(std::min<std::int64_t>(bounds.x1 - rx, kRegion)),
+                              int(std::max<std::int64_t>(bounds.y0 - ry, 0)), int(std::min<std::int64_t>(bounds.y1 - ry, kRegion)));
+        while (cover) {
+          const int q = __builtin_ctzll(cover) >> 2;
+          const unsigned mask = unsigned(cover >> (4 * q)) & 0xFu;
+          cover &= ~(std::uint64_t(0xF) << (4 * q));
+          int slot;
+          const int b = AddQuad(blocks, sink, front_facing, nvar, int(rx) + (q & 3) * 2, int(ry) + (q >> 2) * 2, mask, slot);
+          FragCoordQuad(planes, blocks, b, slot);
+          blocks.quad_planes[b][slot] = entry.For(blocks, planes, varying_planes);
         }
         continue;
       }

@@ -10,6 +10,10 @@
 
 #include <softgl/lanes.h>
 
+#if defined(SOFTGL_HAS_DISPATCH)
+#include <immintrin.h>
+#endif
+
 // The helpers pass vectors by value, always inlined: the compilers' note that such a call's ABI depends on the
 // instruction set (-Wpsabi) is moot, and CMakeLists.txt turns it off for the files that include this header.
 
@@ -63,6 +67,22 @@ SOFTGL_WIDE std::uint32_t MaskToBits(typename V<W>::I m, int l0) {
   for (int l = 0; l < W; ++l) bits |= v[l];  // OR of the lanes (the compiler reduces it)
   return std::uint32_t(bits) << l0;
 }
+#if defined(SOFTGL_HAS_DISPATCH)
+// On x86 the lanes' sign bits, one instruction (movmskps, vpmovd2m); the 8- and 16-lane forms are compiled for the
+// instruction sets that have them, and inlined into the functions compiled for those.
+template <>
+inline std::uint32_t MaskToBits<4>(V<4>::I m, int l0) {
+  return std::uint32_t(_mm_movemask_ps(__m128(m))) << l0;
+}
+template <>
+__attribute__((target("avx2"))) inline std::uint32_t MaskToBits<8>(V<8>::I m, int l0) {
+  return std::uint32_t(_mm256_movemask_ps(__m256(m))) << l0;
+}
+template <>
+__attribute__((target("avx512f,avx512dq"))) inline std::uint32_t MaskToBits<16>(V<16>::I m, int l0) {
+  return std::uint32_t(_mm512_movepi32_mask(__m512i(m))) << l0;
+}
+#endif
 
 /// As std::floor, for |x| < 2^31 (callers keep x in range).
 template <int W>
