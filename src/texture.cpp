@@ -91,14 +91,14 @@ glm::vec4 TextureLevel::Texel(int i, int j) const { return Raw(i, j) / StorageSc
 void TextureLevel::Allocate(Enum internal_format, int w, int h) {
   const TexelLayout l = LayoutOf(internal_format);
   const int b = BytesPerTexel(l);
-  data.assign(std::size_t(w) * std::size_t(h) * std::size_t(b), 0);
+  data.assign(std::size_t(w) * std::size_t(h) * std::size_t(b) + kGatherPad, 0);
   format = internal_format;
   width = w;
   height = h;
   layout = l;
   bytes = b;
   if (internal_format == RGB8)  // alpha reads 1
-    for (std::size_t k = 3; k < data.size(); k += 4) data[k] = 255;
+    for (std::size_t k = 3; k < data.size() - kGatherPad; k += 4) data[k] = 255;
 }
 
 void StoreTexel(TextureLevel& level, int i, int j, const glm::vec4& in) {

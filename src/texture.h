@@ -42,7 +42,10 @@ struct TextureLevel {
   int width = 0, height = 0;
   TexelLayout layout = TexelLayout::kNone;
   int bytes = 0;                    // per texel
-  std::vector<std::uint8_t> data;   // [height][width][bytes], rows from the bottom
+  // [height][width][bytes], rows from the bottom, then kGatherPad zero bytes: a 32-bit read of the last 1- or
+  // 2-byte texel (the vector sampling path reads texels so) stays inside the level.
+  std::vector<std::uint8_t> data;
+  static constexpr std::size_t kGatherPad = 3;
   bool Defined() const { return format != 0 && width > 0 && height > 0; }
   std::uint8_t* At(int i, int j) {
     return data.data() + (std::size_t(j) * std::size_t(width) + std::size_t(i)) * std::size_t(bytes);

@@ -255,6 +255,22 @@ template <int W>
 inline void Gather(const std::uint32_t* base, const typename V<W>::I& idx, typename V<W>::U& out) {
   for (int l = 0; l < W; ++l) out[l] = base[idx[l]];
 }
+// out[lane] = the 32 bits at byte offset off[lane] of `base` (unaligned).
+template <int W>
+inline void GatherBytes(const std::uint8_t* base, const typename V<W>::I& off, typename V<W>::U& out) {
+  for (int l = 0; l < W; ++l) std::memcpy(&out[l], base + off[l], 4);
+}
+#if defined(SOFTGL_HAS_DISPATCH)
+template <>
+__attribute__((target("avx2"))) inline void GatherBytes<8>(const std::uint8_t* base, const V<8>::I& off, V<8>::U& out) {
+  out = V<8>::U(_mm256_i32gather_epi32(reinterpret_cast<const int*>(base), __m256i(off), 1));
+}
+template <>
+__attribute__((target("avx512f"))) inline void GatherBytes<16>(const std::uint8_t* base, const V<16>::I& off,
+                                                                V<16>::U& out) {
+  out = V<16>::U(_mm512_i32gather_epi32(__m512i(off), base, 1));
+}
+#endif
 #if defined(SOFTGL_HAS_DISPATCH)
 template <>
 __attribute__((target("avx2"))) inline void Gather<8>(const std::uint32_t* base, const V<8>::I& idx, V<8>::U& out) {
@@ -267,9 +283,10 @@ __attribute__((target("avx512f"))) inline void Gather<16>(const std::uint32_t* b
 }
 #endif
 
-// Bilinear samples of RGBA8 level `lv` for the lanes of `mask`, in byte units, written into r, g, b, a.
-template <int W>
-SOFTGL_INLINE void BilinearRgba8(const TextureLevel& lv, typename V<W>::F s, typename V<W>::F t,
+// Bilinear samples of 8-bit level `lv` (RGBA8 and RGB8, RG8 or R8: Bytes 4, 2 or 1 a texel) for the lanes of
+// `mask`, in byte units, written into r, g, b, a; channels the layout lacks read 0 (alpha 255), as Raw() has them.
+template <int W, int Bytes>
+SOFTGL_INLINE void BilinearUnorm8(const TextureLevel& lv, typename V<W>::F s, typename V<W>::F t,
                                  typename V<W>::I mask, typename V<W>::F out[4]) {
   using F = typename V<W>::F;
   using I = typename V<W>::I;
@@ -289,17 +306,28 @@ SOFTGL_INLINE void BilinearRgba8(const TextureLevel& lv, typename V<W>::F s, typ
   const I mi = I{} + (lv.width - 1), mj = I{} + (lv.height - 1);
   const I c0 = i0 & mi, c1 = (i0 + 1) & mi, r0 = (j0 & mj) * lv.width, r1 = ((j0 + 1) & mj) * lv.width;
   const F w00 = (1 - a) * (1 - b), w10 = a * (1 - b), w01 = (1 - a) * b, w11 = a * b;
-  const auto* base = reinterpret_cast<const std::uint32_t*>(lv.data.data());
   // Lanes outside the mask read texel 0 (always there) and are discarded below.
   const I i00 = (r0 + c0) & mask, i10 = (r0 + c1) & mask, i01 = (r1 + c0) & mask, i11 = (r1 + c1) & mask;
   U t00, t10, t01, t11;
-  Gather<W>(base, i00, t00);
-  Gather<W>(base, i10, t10);
-  Gather<W>(base, i01, t01);
-  Gather<W>(base, i11, t11);
+  if constexpr (Bytes == 4) {
+    const auto* base = reinterpret_cast<const std::uint32_t*>(lv.data.data());
+    Gather<W>(base, i00, t00);
+    Gather<W>(base, i10, t10);
+    Gather<W>(base, i01, t01);
+    Gather<W>(base, i11, t11);
+  } else {  // 32 bits from each texel's first byte (the level's padding covers the last texel)
+    const std::uint8_t* base = lv.data.data();
+    GatherBytes<W>(base, i00 * Bytes, t00);
+    GatherBytes<W>(base, i10 * Bytes, t10);
+    GatherBytes<W>(base, i01 * Bytes, t01);
+    GatherBytes<W>(base, i11 * Bytes, t11);
+  }
   for (int c = 0; c < 4; ++c) {
     const int shift = 8 * c;
-    auto channel = [shift](U x) { return __builtin_convertvector((x >> shift) & 0xFFu, F); };
+    auto channel = [shift, c](U x) {
+      if (c >= Bytes) return F{} + (c == 3 ? 255.0f : 0.0f);  // a channel the layout lacks
+      return __builtin_convertvector((x >> shift) & 0xFFu, F);
+    };
     const F sum = w00 * channel(t00) + w10 * channel(t10) + w01 * channel(t01) + w11 * channel(t11);
     out[c] = mask ? sum : out[c];
   }
@@ -335,7 +363,7 @@ SOFTGL_INLINE typename V<W>::I LambdaLanes(const TextureView& view, const Textur
   return normal;
 }
 
-template <int W>
+template <int W, int Bytes>
 SOFTGL_INLINE void SampleRepeatLanes(const TextureView& view, const Textures::Lanes& c, float bias,
                                      float out[4][16]) {
   using F = typename V<W>::F;
@@ -367,11 +395,11 @@ SOFTGL_INLINE void SampleRepeatLanes(const TextureView& view, const Textures::La
       if (first < 0) break;
       const int L = level_a[first];
       const I mask = pending & (level_a == L);
-      BilinearRgba8<W>(levels[L], s, t, mask, ra);
+      BilinearUnorm8<W, Bytes>(levels[L], s, t, mask, ra);
       const I second = mask & two;
       for (int l = 0; l < W; ++l)
         if (second[l]) {
-          BilinearRgba8<W>(levels[L + 1], s, t, second, rb);
+          BilinearUnorm8<W, Bytes>(levels[L + 1], s, t, second, rb);
           break;
         }
       pending &= ~mask;
@@ -395,26 +423,43 @@ SOFTGL_INLINE void SampleRepeatLanes(const TextureView& view, const Textures::La
 
 using SampleRepeatLanesFn = void (*)(const TextureView&, const Textures::Lanes&, float, float[4][16]);
 
+// Each layout's form, for each instruction set.
+template <int Bytes>
 void SampleRepeatLanesBase(const TextureView& v, const Textures::Lanes& c, float bias, float out[4][16]) {
-  SampleRepeatLanes<4>(v, c, bias, out);
+  SampleRepeatLanes<4, Bytes>(v, c, bias, out);
 }
 #if defined(SOFTGL_HAS_DISPATCH)
+template <int Bytes>
 SOFTGL_TARGET_AVX2 void SampleRepeatLanesAvx2(const TextureView& v, const Textures::Lanes& c, float bias,
                                               float out[4][16]) {
-  SampleRepeatLanes<8>(v, c, bias, out);
+  SampleRepeatLanes<8, Bytes>(v, c, bias, out);
 }
+template <int Bytes>
 SOFTGL_TARGET_AVX512 void SampleRepeatLanesAvx512(const TextureView& v, const Textures::Lanes& c, float bias,
                                                   float out[4][16]) {
-  SampleRepeatLanes<16>(v, c, bias, out);
+  SampleRepeatLanes<16, Bytes>(v, c, bias, out);
 }
 #endif
 
+template <int Bytes>
 SampleRepeatLanesFn ChooseSampleRepeatLanes() {
 #if defined(SOFTGL_HAS_DISPATCH)
-  if (detail::CpuSimdLevel() == detail::SimdLevel::kAvx512) return SampleRepeatLanesAvx512;
-  if (detail::CpuSimdLevel() == detail::SimdLevel::kAvx2) return SampleRepeatLanesAvx2;
+  if (detail::CpuSimdLevel() == detail::SimdLevel::kAvx512) return SampleRepeatLanesAvx512<Bytes>;
+  if (detail::CpuSimdLevel() == detail::SimdLevel::kAvx2) return SampleRepeatLanesAvx2<Bytes>;
 #endif
-  return SampleRepeatLanesBase;
+  return SampleRepeatLanesBase<Bytes>;
+}
+
+// The vector path for an 8-bit view (null for other layouts).
+SampleRepeatLanesFn SampleRepeatLanesFor(TexelLayout layout) {
+  static const SampleRepeatLanesFn by_bytes[3] = {ChooseSampleRepeatLanes<1>(), ChooseSampleRepeatLanes<2>(),
+                                                  ChooseSampleRepeatLanes<4>()};
+  switch (layout) {
+    case TexelLayout::kUnorm8x1: return by_bytes[0];
+    case TexelLayout::kUnorm8x2: return by_bytes[1];
+    case TexelLayout::kUnorm8x4: return by_bytes[2];
+    default: return nullptr;
+  }
 }
 
 }  // namespace
@@ -434,9 +479,8 @@ void Textures::SampleQuad(int unit, const glm::vec2 uv[4], const glm::vec2 duv_d
 
 void Textures::SampleLanes(int unit, const Lanes& c, float bias, float out[4][16]) const {
   const TextureView* v = Usable(unit_2d, unit);
-  if (v && v->fast != TextureView::Fast::kNone && v->layout == TexelLayout::kUnorm8x4) {
-    static const SampleRepeatLanesFn sample = ChooseSampleRepeatLanes();
-    return sample(*v, c, bias, out);
+  if (v && v->fast != TextureView::Fast::kNone) {
+    if (const SampleRepeatLanesFn sample = SampleRepeatLanesFor(v->layout)) return sample(*v, c, bias, out);
   }
   for (int l = 0; l < 16; ++l) {
     const glm::vec4 r = Sample(unit, glm::vec2(c.s[l], c.t[l]), glm::vec2(c.ds_dx[l], c.dt_dx[l]),
