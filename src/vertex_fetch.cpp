@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <limits>
 
 namespace softgl::detail {
 
@@ -63,39 +64,66 @@ float Component(Enum type, bool normalized, const std::uint8_t* p) {
 
 }  // namespace
 
-glm::vec4 FetchAttribute(const AttribSource& src, std::uint32_t index) {
-  if (!src.enabled) return src.current;
-  glm::vec4 v(0.0f, 0.0f, 0.0f, 1.0f);
-  const std::size_t csize = TypeSize(src.type);
-  const std::size_t bytes = csize * std::size_t(src.components);
-  // Overflow-safe bounds check: start = offset + stride * index, end = start + bytes <= size.
-  if (src.data == nullptr || src.offset > src.size) return v;
+namespace {
+
+// An enabled attribute resolved for many reads: element i starts at base + stride * i and exists for i <= last
+// (last < 0: no element fits in the buffer).
+struct Resolved {
+  const std::uint8_t* base = nullptr;
+  std::size_t stride = 0;
+  long long last = -1;
+  std::size_t csize = 0;
+};
+Resolved Resolve(const AttribSource& src) {
+  Resolved r;
+  const std::size_t csize = TypeSize(src.type), bytes = csize * std::size_t(src.components);
+  r.csize = csize;
+  // Overflow-safe bounds: start = offset + stride * index, end = start + bytes <= size.
+  if (src.data == nullptr || src.offset > src.size) return r;
   const std::size_t room = src.size - src.offset;
-  if (bytes > room) return v;
-  if (src.stride != 0 && std::size_t(index) > (room - bytes) / src.stride) return v;
-  const std::uint8_t* p = src.data + src.offset + src.stride * std::size_t(index);
-  if (src.type == FLOAT) {  // the common case, without the per-component conversion switch
-    std::memcpy(static_cast<void*>(&v), p, 4 * std::size_t(src.components));  // glm::vec4 is four floats
+  if (bytes > room) return r;
+  r.base = src.data + src.offset;
+  r.stride = src.stride;
+  r.last = src.stride == 0 ? std::numeric_limits<long long>::max()
+                           : (long long)(std::min<std::size_t>((room - bytes) / src.stride, std::size_t(1) << 40));
+  return r;
+}
+glm::vec4 Read(const AttribSource& src, const Resolved& r, std::uint32_t index) {
+  glm::vec4 v(0.0f, 0.0f, 0.0f, 1.0f);
+  if ((long long)index > r.last) return v;
+  const std::uint8_t* p = r.base + r.stride * std::size_t(index);
+  if (src.type == FLOAT) {  // the common case: fixed-size copies (glm::vec4 is four floats)
+    switch (src.components) {
+      case 1: std::memcpy(static_cast<void*>(&v), p, 4); break;
+      case 2: std::memcpy(static_cast<void*>(&v), p, 8); break;
+      case 3: std::memcpy(static_cast<void*>(&v), p, 12); break;
+      default: std::memcpy(static_cast<void*>(&v), p, 16); break;
+    }
     return v;
   }
-  for (int c = 0; c < src.components; ++c) v[c] = Component(src.type, src.normalized, p + csize * c);
+  for (int c = 0; c < src.components; ++c) v[c] = Component(src.type, src.normalized, p + r.csize * c);
   return v;
+}
+
+}  // namespace
+
+glm::vec4 FetchAttribute(const AttribSource& src, std::uint32_t index) {
+  if (!src.enabled) return src.current;
+  return Read(src, Resolve(src), index);
 }
 
 void FetchVertices(const FetchPlan& plan, const std::uint32_t* indices, int count, glm::vec4* out,
                    bool fill_disabled) {
-  int enabled[kMaxVertexAttribs];
-  int n = 0;
   for (int a = 0; a < kMaxVertexAttribs; ++a) {
-    if (plan.attrib[a].enabled) {
-      enabled[n++] = a;
-    } else if (fill_disabled) {
-      for (int i = 0; i < count; ++i) out[std::size_t(i) * kMaxVertexAttribs + std::size_t(a)] = plan.attrib[a].current;
+    const AttribSource& src = plan.attrib[a];
+    glm::vec4* dst = out + a;
+    if (!src.enabled) {
+      if (fill_disabled)
+        for (int i = 0; i < count; ++i) dst[std::size_t(i) * kMaxVertexAttribs] = src.current;
+      continue;
     }
-  }
-  for (int i = 0; i < count; ++i) {
-    glm::vec4* dst = out + std::size_t(i) * kMaxVertexAttribs;
-    for (int k = 0; k < n; ++k) dst[enabled[k]] = FetchAttribute(plan.attrib[enabled[k]], indices[i]);
+    const Resolved r = Resolve(src);
+    for (int i = 0; i < count; ++i) dst[std::size_t(i) * kMaxVertexAttribs] = Read(src, r, indices[i]);
   }
 }
 
