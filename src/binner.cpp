@@ -31,7 +31,7 @@ void BinnedBatch::Reset(int nvar) {
   large_.clear();
   notes_.clear();
   tile_start_.clear();
-  tile_data_.clear();
+  // tile_data_ keeps its size: Finish overwrites what it uses (tile_start_ bounds it), without zeroing it first.
 }
 
 void BinnedBatch::Add(const BinnedPrimitive& prim, const WindowVertex* v, const Rect& box, const TileGrid& grid) {
@@ -83,7 +83,7 @@ void BinnedBatch::Finish(const TileGrid& grid) {
   tile_start_.assign(std::size_t(grid.Count()) + 1, 0);
   for (std::uint64_t n : notes_) tile_start_[std::size_t(n >> 32) + 1] += size_of(std::uint32_t(n));
   for (std::size_t t = 1; t < tile_start_.size(); ++t) tile_start_[t] += tile_start_[t - 1];
-  tile_data_.resize(tile_start_.back());
+  if (tile_data_.size() < tile_start_.back()) tile_data_.resize(tile_start_.back());
   std::vector<std::uint32_t>& fill = fill_;
   fill.assign(tile_start_.begin(), tile_start_.end() - 1);
   for (std::uint64_t n : notes_) {

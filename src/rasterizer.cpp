@@ -221,14 +221,28 @@ struct RegionEdges {
   std::int32_t c00[3], sx[3], sy[3];
   int row0 = 0, row1 = 3;  // the quad rows to test (the others are left out of the result)
 };
+// Each lane's pixel in the region (x, y), in RegionCoverage's order.
+struct RegionLanes {
+  std::int32_t x[64], y[64];
+  constexpr RegionLanes() : x(), y() {
+    for (int l = 0; l < 64; ++l) {
+      const int q = l >> 2;
+      x[l] = (q & 3) * 2 + (l & 1);
+      y[l] = (q >> 2) * 2 + ((l >> 1) & 1);
+    }
+  }
+};
+constexpr RegionLanes kRegionLanes;
+constexpr const std::int32_t* kRegionX = kRegionLanes.x;
+constexpr const std::int32_t* kRegionY = kRegionLanes.y;
+
 template <int W>
 SOFTGL_WIDE std::uint64_t RegionCoverage(const RegionEdges& edges) {
   using I = typename V<W>::I;
   std::uint64_t bits = 0;
   // Only the lanes of quad rows row0 .. row1 (16 lanes a row).
   for (int l0 = edges.row0 * 16; l0 < edges.row1 * 16 + 16; l0 += W) {
-    const I lane = Iota<W>() + l0, q = lane >> 2;
-    const I ix = ((q & 3) << 1) + (lane & 1), iy = ((q >> 2) << 1) + ((lane >> 1) & 1);
+    const I ix = LoadVec<I>(kRegionX + l0), iy = LoadVec<I>(kRegionY + l0);
     I outside = I{};  // sign bit set where some edge is negative
     for (int e = 0; e < edges.count; ++e) outside |= edges.c00[e] + ix * edges.sx[e] + iy * edges.sy[e];
     bits |= std::uint64_t(MaskToBits<W>(~outside, 0)) << l0;
@@ -412,15 +426,20 @@ void RasterizeTriangle(const WindowVertex& v0, const WindowVertex& v1, const Win
     constexpr std::int64_t kLimit = std::int64_t(1) << 26;
     narrow = narrow && step_x[e] <= kLimit && step_x[e] >= -kLimit && step_y[e] <= kLimit && step_y[e] >= -kLimit;
   }
+  // The smallest and largest of an edge's values at a region's four corner pixels, less its value at the first.
+  std::int64_t corner_min[3], corner_max[3];
+  for (int e = 0; e < 3; ++e) {
+    const std::int64_t dx = step_x[e] * (kRegion - 1), dy = step_y[e] * (kRegion - 1);
+    corner_min[e] = std::min<std::int64_t>(dx, 0) + std::min<std::int64_t>(dy, 0);
+    corner_max[e] = std::max<std::int64_t>(dx, 0) + std::max<std::int64_t>(dy, 0);
+  }
   PlanesEntry entry;
   for (std::int64_t ry = py0 & ~std::int64_t(kRegion - 1); ry <= py1; ry += kRegion) {
     for (std::int64_t rx = px0 & ~std::int64_t(kRegion - 1); rx <= px1; rx += kRegion) {
       bool skip = false, whole = true;
       std::int64_t corner[3], corner_lo[3];
       for (int e = 0; e < 3 && !skip; ++e) {
-        const std::int64_t c00 = edge_at(e, rx, ry), dx = step_x[e] * (kRegion - 1), dy = step_y[e] * (kRegion - 1);
-        const std::int64_t lo = std::min({c00, c00 + dx, c00 + dy, c00 + dx + dy});
-        const std::int64_t hi = std::max({c00, c00 + dx, c00 + dy, c00 + dx + dy});
+        const std::int64_t c00 = edge_at(e, rx, ry), lo = c00 + corner_min[e], hi = c00 + corner_max[e];
         if (hi < 0) skip = true;
         if (lo < 0) whole = false;
         corner[e] = c00;
