@@ -275,14 +275,32 @@ bool Inside(const RenderTarget& t, const BlockBuffer& bb, int b) {
 // `base` with `pitch` values between rows.
 template <class T, int W, class Vec>
 SOFTGL_WIDE Vec LoadQuads(const T* base, std::size_t pitch, const BlockBuffer& bb, int b, int l0) {
-  T lanes[W];
-  for (int k = 0; k < W / 4; ++k) {
-    const int q = l0 / 4 + k;
-    const T* p = base + std::size_t(bb.qy[b][q]) * pitch + std::size_t(bb.qx[b][q]);
-    std::memcpy(lanes + 4 * k, p, 2 * sizeof(T));
-    std::memcpy(lanes + 4 * k + 2, p + pitch, 2 * sizeof(T));
+  if constexpr (sizeof(T) == 4) {
+    // 32-bit values: each quad row is one 64-bit word, gathered into the vector in registers (a vector read back
+    // from small stores would stall the processor).
+    typename V<W>::Q rows;
+    for (int k = 0; k < W / 4; ++k) {
+      const int q = l0 / 4 + k;
+      const T* p = base + std::size_t(bb.qy[b][q]) * pitch + std::size_t(bb.qx[b][q]);
+      std::uint64_t lo, hi;
+      std::memcpy(&lo, p, 8);
+      std::memcpy(&hi, p + pitch, 8);
+      rows[2 * k] = lo;
+      rows[2 * k + 1] = hi;
+    }
+    Vec r;
+    std::memcpy(&r, &rows, sizeof r);
+    return r;
+  } else {
+    T lanes[W];
+    for (int k = 0; k < W / 4; ++k) {
+      const int q = l0 / 4 + k;
+      const T* p = base + std::size_t(bb.qy[b][q]) * pitch + std::size_t(bb.qx[b][q]);
+      std::memcpy(lanes + 4 * k, p, 2 * sizeof(T));
+      std::memcpy(lanes + 4 * k + 2, p + pitch, 2 * sizeof(T));
+    }
+    return LoadVec<Vec>(lanes);
   }
-  return LoadVec<Vec>(lanes);
 }
 // Quads without a live lane are not written back: they change nothing, and a block's unused quads repeat its
 // first quad's place.

@@ -29,6 +29,7 @@ struct V {
   typedef std::int32_t I __attribute__((vector_size(4 * W)));
   typedef std::uint32_t U __attribute__((vector_size(4 * W)));
   typedef std::uint8_t B __attribute__((vector_size(W)));
+  typedef std::uint64_t Q __attribute__((vector_size(4 * W)));  // pairs of 32-bit lanes
 };
 
 template <class T>
