@@ -209,7 +209,7 @@ SOFTGL_WIDE typename V<W>::U Blend8Lanes(const Unorm8Blend& b, const typename V<
   if (!b.blend) {
     for (int c = 0; c < 4; ++c) out |= U(s[c]) << (8 * c);
   } else {
-    auto factor = [&](const Term& t, int c) -> I {
+    auto factor = [&](const Term& t, int c) SOFTGL_WIDE_LAMBDA -> I {
       I v;
       switch (t.source) {
         case kNothing: return I{} + t.k0;

@@ -48,9 +48,10 @@ struct FragmentOpsState {
 };
 
 /// Whether `a` passes comparison `func` against `b` (a func b): the depth test compares incoming to stored, the
-/// stencil test the masked reference to the masked stored value. For vectors (src/wide.h), a lane mask.
+/// stencil test the masked reference to the masked stored value. For vectors (src/wide.h), a lane mask. Always
+/// inlined: a vector argument must not cross into a function compiled for another instruction set.
 template <class T>
-auto Compare(Enum func, T a, T b) {
+inline __attribute__((always_inline)) auto Compare(Enum func, T a, T b) {
   using Result = decltype(a < b);
   switch (func) {
     case NEVER: return Result{};

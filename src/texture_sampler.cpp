@@ -258,7 +258,11 @@ inline void Gather(const std::uint32_t* base, const typename V<W>::I& idx, typen
 // out[lane] = the 32 bits at byte offset off[lane] of `base` (unaligned).
 template <int W>
 inline void GatherBytes(const std::uint8_t* base, const typename V<W>::I& off, typename V<W>::U& out) {
-  for (int l = 0; l < W; ++l) std::memcpy(&out[l], base + off[l], 4);
+  for (int l = 0; l < W; ++l) {
+    std::uint32_t word;
+    std::memcpy(&word, base + off[l], 4);
+    out[l] = word;
+  }
 }
 #if defined(SOFTGL_HAS_DISPATCH)
 template <>
@@ -292,7 +296,7 @@ SOFTGL_INLINE void BilinearUnorm8(const TextureLevel& lv, typename V<W>::F s, ty
   using I = typename V<W>::I;
   using U = typename V<W>::U;
   // TexelCoord: s * size, NaN -> 0, clamped to [-1e9, 1e9] (std::clamp's order of tests).
-  auto texel_coord = [](F x, float size) {
+  auto texel_coord = [](F x, float size) SOFTGL_WIDE_LAMBDA {
     F u = x * size;
     u = u == u ? u : F{} + 0.0f;
     u = F{} + 1e9f < u ? F{} + 1e9f : u;
@@ -324,7 +328,7 @@ SOFTGL_INLINE void BilinearUnorm8(const TextureLevel& lv, typename V<W>::F s, ty
   }
   for (int c = 0; c < 4; ++c) {
     const int shift = 8 * c;
-    auto channel = [shift, c](U x) {
+    auto channel = [shift, c](U x) SOFTGL_WIDE_LAMBDA {
       if (c >= Bytes) return F{} + (c == 3 ? 255.0f : 0.0f);  // a channel the layout lacks
       return __builtin_convertvector((x >> shift) & 0xFFu, F);
     };

@@ -20,6 +20,8 @@
 // Wide helpers are always inlined into the function compiled for one instruction set: no out-of-line copy of them
 // exists, compiled for another.
 #define SOFTGL_WIDE inline __attribute__((always_inline))
+// The same for a lambda that takes or returns vectors: [&](F x) SOFTGL_WIDE_LAMBDA { ... }.
+#define SOFTGL_WIDE_LAMBDA __attribute__((always_inline))
 
 namespace softgl::detail {
 
@@ -32,17 +34,20 @@ struct V {
   typedef std::uint64_t Q __attribute__((vector_size(4 * W)));  // pairs of 32-bit lanes
 };
 
+// Unaligned vector loads and stores: one move through a type that may alias anything (a memcpy may be expanded as
+// 16-byte pieces through the stack).
+template <class T>
+struct __attribute__((packed, may_alias)) UnalignedVec {
+  T v;
+};
 template <class T>
 SOFTGL_WIDE T LoadVec(const void* p) {
-  T r;
-  std::memcpy(&r, p, sizeof r);
-  return r;
+  return static_cast<const UnalignedVec<T>*>(p)->v;
 }
 template <class T>
 SOFTGL_WIDE void StoreVec(void* p, const T& v) {
-  std::memcpy(p, &v, sizeof v);
+  static_cast<UnalignedVec<T>*>(p)->v = v;
 }
-
 /// 0, 1, 2, ... W - 1.
 template <int W>
 SOFTGL_WIDE typename V<W>::I Iota() {
@@ -68,9 +73,11 @@ SOFTGL_WIDE std::uint32_t MaskToBits(typename V<W>::I m, int l0) {
   for (int l = 0; l < W; ++l) bits |= v[l];  // OR of the lanes (the compiler reduces it)
   return std::uint32_t(bits) << l0;
 }
-#if defined(SOFTGL_HAS_DISPATCH)
+#if defined(SOFTGL_HAS_DISPATCH) && !defined(__clang__)
 // On x86 the lanes' sign bits, one instruction (movmskps, vpmovd2m); the 8- and 16-lane forms are compiled for the
-// instruction sets that have them, and inlined into the functions compiled for those.
+// instruction sets that have them, and inlined into the functions compiled for those. (Clang checks a target
+// attribute before it inlines the template that calls this into its target function, and rejects the call: it
+// compiles the generic form.)
 template <>
 inline std::uint32_t MaskToBits<4>(V<4>::I m, int l0) {
   return std::uint32_t(_mm_movemask_ps(__m128(m))) << l0;

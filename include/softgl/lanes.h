@@ -155,17 +155,26 @@ inline F32 Splat(float x) {
   return FloatOf(Splat(bits));
 }
 #undef SOFTGL_PARTS
-// Loads and stores part by part (a copy of all 64 bytes at once may be one 64-byte move that reads what two 32-byte
-// stores wrote, which the processor cannot forward).
+// Loads and stores part by part, each one vector move of a part through a type that may alias anything and sits at
+// any address. (A memcpy of a part, or of all 64 bytes, may be expanded as 16-byte pieces through the stack, or as
+// one 64-byte move that reads what two 32-byte stores wrote: either stalls the processor.)
+struct __attribute__((packed, may_alias)) UnalignedF {
+  FP v;
+};
+struct __attribute__((packed, may_alias)) UnalignedI {
+  IP v;
+};
 template <class V, class T>
 inline V Load(const T* src) {
+  using U = std::conditional_t<std::is_same_v<V, F32>, UnalignedF, UnalignedI>;
   V r;
-  for (int k = 0; k < kParts; ++k) std::memcpy(&r.p[k], src + k * kPartLanes, sizeof r.p[k]);
+  for (int k = 0; k < kParts; ++k) r.p[k] = reinterpret_cast<const U*>(src + k * kPartLanes)->v;
   return r;
 }
 template <class V, class T>
 inline void Store(const V& v, T* dst) {
-  for (int k = 0; k < kParts; ++k) std::memcpy(dst + k * kPartLanes, &v.p[k], sizeof v.p[k]);
+  using U = std::conditional_t<std::is_same_v<V, F32>, UnalignedF, UnalignedI>;
+  for (int k = 0; k < kParts; ++k) reinterpret_cast<U*>(dst + k * kPartLanes)->v = v.p[k];
 }
 }  // namespace lanes_detail
 

@@ -451,9 +451,11 @@ void FillVertexLanes(const Batch& batch, int base, int n, VertexLanes& in) {
 }
 template <class Varyings>
 void FillFragmentLanes(const BlockBatch& batch, int b, FragmentLanes<Varyings>& in) {
-  if constexpr (!std::is_empty_v<Varyings>)
-    std::memcpy(static_cast<void*>(&in.varyings), batch.varyings + std::size_t(b) * kBlockVaryingFloats,
-                sizeof(Varyings));
+  if constexpr (!std::is_empty_v<Varyings>) {  // Float by Float (the struct is made of them)
+    const float* src = batch.varyings + std::size_t(b) * kBlockVaryingFloats;
+    Float* dst = reinterpret_cast<Float*>(static_cast<void*>(&in.varyings));
+    for (std::size_t i = 0; i < sizeof(Varyings) / sizeof(Float); ++i) dst[i] = Float::Load(src + i * kLanes);
+  }
   const float* fc = batch.frag_coord + std::size_t(b) * 4 * kLanes;
   in.frag_coord = vec4(Float::Load(fc), Float::Load(fc + kLanes), Float::Load(fc + 2 * kLanes),
                        Float::Load(fc + 3 * kLanes));
