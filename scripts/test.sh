@@ -109,7 +109,7 @@ stage release release
 stage sanitizers sanitizers
 stage tsan tsan
 if stage fuzz_build fuzz_build; then
-  stage fuzz_api fuzz fuzz_api $((60000 * scale)) 1
+  stage fuzz_api fuzz fuzz_api $((150000 * scale)) 1
   stage fuzz_pipeline fuzz fuzz_pipeline $((200000 * scale)) 1
   stage fuzz_image fuzz fuzz_image $((40000 * scale)) 1
   # fuzz_model replays its seed corpus only: assimp's own importers can spin for minutes on some mutated inputs
