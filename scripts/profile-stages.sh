@@ -14,17 +14,17 @@ echo "|---|---|---|---|---|---|---|---|---|---|"
 for scene in "model: 2Cyl" "african_head" "small triangles" "fill rate" "overdraw"; do
   frames=6
   case "$scene" in model*|african*) frames=60 ;; esac  # short frames: more of them, so set-up weighs little
-  perf record -q -o "$data" "$bench" --scene "$scene" --frames "$frames" --softgl-only 1 --threads 1 >/dev/null 2>&1
+  perf record -q -o "$data" "$bench" --scene "$scene" --frames "$frames" --softgl-only 1 --scalar 0 --threads 1 >/dev/null 2>&1
   perf report -i "$data" --no-children --stdio --sort sym 2>/dev/null | python3 -c '
 import re, sys
 rules = [
-  ("front end", r"FetchAttribute|FetchVertices|ShadeVertices|ClipCodes|ClipTriangle|ClipLine|ToWindow|SignedArea|AssemblePrimitives|RecordChunk|RecordDraw|PrimitiveRunner|ReadIndices|Intersect|IsFrontFacing|IsCulled|PolygonOffset"),
+  ("front end", r"FetchAttribute|FetchVertices|ShadeVertices|Vertices(Avx512|Avx2|Base)|VertexLanes|Resolve|ClipCodes|ClipTriangle|ClipLine|ToWindow|SignedArea|AssemblePrimitives|RecordChunk|RecordDraw|PrimitiveRunner|ReadIndices|Intersect|IsFrontFacing|IsCulled|PolygonOffset"),
   ("binning", r"BinnedBatch::Add|BinnedBatch::Finish|TriangleBox|LineBox|PointBox|::Box\("),
   ("clears", r"RenderTarget::Clear"),
-  ("rasterization", r"Rasterize|RenderTile|BinnedBatch::Vertex|FragmentStage"),
-  ("early depth test", r"EarlyDepth"),
-  ("fragment shader and texture sampling", r"ShadeQuads|Textures::|SampleRepeat|FilterLevel|SampleFace|Fetch\(|Lambda|powf|__pow|expf|logf|sqrt"),
-  ("fragment operations", r"ApplyFragmentOps|Store2Avx2|Store4Avx512|Unorm8Blender|ColorBuffer::|FloatToUnorm8|detail::Blend"),
+  ("rasterization", r"Rasterize|RenderTile|BinnedBatch::Vertex|FragmentStage|RegionCoverage|FragCoord|VaryingsOfBlock|InterpolateVaryings|AddSquare|AddQuad|EmitQuad|BlockSink"),
+  ("early depth test", r"EarlyDepth|EarlyBlock"),
+  ("fragment shader and texture sampling", r"ShadeBlocks|Blocks(Avx512|Avx2|Base)|BlockLanes|FragmentLanes|Textures::|SampleRepeat|FilterLevel|SampleFace|Fetch\(|Lambda|powf|__pow|expf|logf|sqrt"),
+  ("fragment operations", r"ApplyFragmentOps|BlockOps|Unorm8Blender|ColorBuffer::|FloatToUnorm8|detail::Blend"),
   ("memory copies, fills, page faults", r"memmove|memset|memcpy|page_fault|clear_page|do_anonymous_page|handle_mm_fault"),
 ]
 total, other = {}, 0.0
