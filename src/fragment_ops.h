@@ -97,6 +97,7 @@ struct Unorm8Blend {
   Enum eq[4] = {FUNC_ADD, FUNC_ADD, FUNC_ADD, FUNC_ADD};
   int constant[4] = {0, 0, 0, 0};  // the constant colour in 8 bits
   std::uint32_t keep = 0;          // bytes of the stored pixel the colour mask keeps
+  bool packed = false;             // blending by one equation, FUNC_ADD or a subtraction, in all four channels
 
   Unorm8Blend() = default;
   Unorm8Blend(const FragmentOpsState& state, bool rgb_only);

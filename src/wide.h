@@ -32,6 +32,7 @@ struct V {
   typedef std::uint32_t U __attribute__((vector_size(4 * W)));
   typedef std::uint8_t B __attribute__((vector_size(W)));
   typedef std::uint64_t Q __attribute__((vector_size(4 * W)));  // pairs of 32-bit lanes
+  typedef std::uint16_t H __attribute__((vector_size(4 * W)));  // halves of 32-bit lanes
 };
 
 // Unaligned vector loads and stores: one move through a type that may alias anything (a memcpy may be expanded as
