@@ -6,7 +6,9 @@
 #include <cstddef>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <map>
+#include <string_view>
 #include <utility>
 
 #include <assimp/GltfMaterial.h>
@@ -267,6 +269,30 @@ class Loader {
   std::map<std::string, std::uint32_t> cache_;
 };
 
+// Whether the file is a PLY file (its first word "ply", as assimp reads it) whose header never ends: assimp 5.2.5's
+// PLY reader keeps looking for "end_header" past the end of such a file and does not return (fuzz_model found two
+// such files, tests/fuzz/corpus/fuzz_model/regression_ply_*). The file is read in pieces until the word is found,
+// which for a well-formed file is within its first lines.
+bool PlyHeaderUnterminated(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  constexpr std::size_t kPiece = 1 << 16;
+  constexpr std::string_view kEnd = "end_header";
+  std::string text(kPiece, '\0');
+  in.read(text.data(), std::streamsize(kPiece));
+  text.resize(std::size_t(in.gcount()));
+  const std::size_t start = text.find_first_not_of(" \t\r\n");
+  if (start == std::string::npos || text.compare(start, 3, "ply") != 0) return false;
+  std::string tail;  // the last bytes of the previous piece, so that a word cut between pieces is found
+  while (true) {
+    if ((tail + text).find(kEnd) != std::string::npos) return false;
+    if (text.size() < kPiece) return true;  // the end of the file
+    tail = text.substr(text.size() - (kEnd.size() - 1));
+    text.assign(kPiece, '\0');
+    in.read(text.data(), std::streamsize(kPiece));
+    text.resize(std::size_t(in.gcount()));
+  }
+}
+
 }  // namespace
 
 bool Model::Load(Context& gl, const std::string& path, std::string* error) {
@@ -277,6 +303,7 @@ bool Model::Load(Context& gl, const std::string& path, std::string* error) {
   };
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec)) return fail("no such file");
+  if (PlyHeaderUnterminated(path)) return fail("cannot read: a PLY header without end_header");
   Assimp::Importer importer;
   importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
   const aiScene* scene =
