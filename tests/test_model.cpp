@@ -132,9 +132,15 @@ TEST_CASE("a PLY header that never ends is refused, not handed to the importer",
   }
   CHECK_FALSE(model.Load(gl, (dir / "unterminated.ply").string(), &error));
   CHECK(error.find("end_header") != std::string::npos);
-  {
+  {  // the word not on a line of its own: assimp does not take it either
+    std::ofstream f(dir / "not_a_word.ply", std::ios::binary);
+    f << header << "end_header*0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+  }
+  CHECK_FALSE(model.Load(gl, (dir / "not_a_word.ply").string(), &error));
+  CHECK(error.find("end_header") != std::string::npos);
+  {  // Windows line ends, spaces before the word
     std::ofstream f(dir / "terminated.ply", std::ios::binary);
-    f << header << "end_header\n" << body;
+    f << header << "  end_header\r\n" << body;
   }
   CHECK(model.Load(gl, (dir / "terminated.ply").string(), &error));
   {  // the word cut between two of the pieces the check reads (64 KiB each): still found

@@ -270,9 +270,11 @@ class Loader {
 };
 
 // Whether the file is a PLY file (its first word "ply", as assimp reads it) whose header never ends: assimp 5.2.5's
-// PLY reader keeps looking for "end_header" past the end of such a file and does not return (fuzz_model found two
-// such files, tests/fuzz/corpus/fuzz_model/regression_ply_*). The file is read in pieces until the word is found,
-// which for a well-formed file is within its first lines.
+// PLY reader keeps looking for a line that starts with the word "end_header" past the end of such a file and does
+// not return (fuzz_model found such files, tests/fuzz/corpus/fuzz_model/regression_ply_*). The file is read in
+// pieces until that line is found, which for a well-formed file is within its first lines. A line starts after
+// '\n' or '\r' and any spaces or tabs; the word must be followed by a space, a tab, a line end, a zero byte or the
+// end of the file ("end_header*" is not the word).
 bool PlyHeaderUnterminated(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   constexpr std::size_t kPiece = 1 << 16;
@@ -282,15 +284,25 @@ bool PlyHeaderUnterminated(const std::string& path) {
   text.resize(std::size_t(in.gcount()));
   const std::size_t start = text.find_first_not_of(" \t\r\n");
   if (start == std::string::npos || text.compare(start, 3, "ply") != 0) return false;
-  std::string tail;  // the last bytes of the previous piece, so that a word cut between pieces is found
-  while (true) {
-    if ((tail + text).find(kEnd) != std::string::npos) return false;
-    if (text.size() < kPiece) return true;  // the end of the file
-    tail = text.substr(text.size() - (kEnd.size() - 1));
+  std::size_t matched = 0;  // characters of the word matched at the start of the current line; npos: none
+  constexpr std::size_t kNone = std::string::npos;
+  while (!text.empty()) {
+    for (const char c : text) {
+      const bool line_end = c == '\n' || c == '\r';
+      if (matched == kEnd.size()) {
+        if (line_end || c == ' ' || c == '\t' || c == '\0') return false;
+        matched = kNone;
+      }
+      if (line_end) matched = 0;
+      else if (matched == 0 && (c == ' ' || c == '\t')) continue;  // spaces before the line's first word
+      else if (matched != kNone && c == kEnd[matched]) ++matched;
+      else matched = kNone;
+    }
     text.assign(kPiece, '\0');
     in.read(text.data(), std::streamsize(kPiece));
     text.resize(std::size_t(in.gcount()));
   }
+  return matched != kEnd.size();  // the word at the very end of the file ends the header too
 }
 
 }  // namespace
