@@ -42,10 +42,10 @@ struct TextureLevel {
   int width = 0, height = 0;
   TexelLayout layout = TexelLayout::kNone;
   int bytes = 0;                    // per texel
-  // [height][width][bytes], rows from the bottom, then kGatherPad zero bytes: a 32-bit read of the last 1- or
-  // 2-byte texel (the vector sampling path reads texels so) stays inside the level.
+  // [height][width][bytes], rows from the bottom, then kGatherPad zero bytes: a 64-bit read at the last texel (the
+  // vector sampling path reads a texel and its right-hand neighbour so) stays inside the level.
   std::vector<std::uint8_t> data;
-  static constexpr std::size_t kGatherPad = 3;
+  static constexpr std::size_t kGatherPad = 7;
   bool Defined() const { return format != 0 && width > 0 && height > 0; }
   std::uint8_t* At(int i, int j) {
     return data.data() + (std::size_t(j) * std::size_t(width) + std::size_t(i)) * std::size_t(bytes);

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <utility>
 
 #if defined(__x86_64__) || defined(__i386__)
 #include <immintrin.h>
@@ -249,43 +250,19 @@ SOFTGL_INLINE typename V<W>::F FloorF(typename V<W>::F x) {
   return detail::FloorVec<W>(x);
 }
 
-// out[lane] = the 32-bit texel at row-major index idx[lane] of `base`. (By reference: the AVX2 and AVX-512 forms are
-// compiled for those instruction sets, and a vector passed by value to them would change the calling convention.)
-template <int W>
-inline void Gather(const std::uint32_t* base, const typename V<W>::I& idx, typename V<W>::U& out) {
-  for (int l = 0; l < W; ++l) out[l] = base[idx[l]];
+// Each lane's 64 bits at byte offset off[lane] of `base` (unaligned), one scalar load a lane: a texel and its
+// right-hand neighbour together. On the x86 processors measured, a gather instruction costs more than the loads it
+// stands for (docs/performance.md), and one 64-bit load brings both texels of a row.
+template <int W, std::size_t... L>
+SOFTGL_WIDE typename V<W>::D LoadPairs(const std::uint8_t* base, const typename V<W>::I& off,
+                                       std::index_sequence<L...>) {
+  auto load = [base](std::int32_t o) {
+    std::uint64_t x;
+    std::memcpy(&x, base + o, 8);
+    return x;
+  };
+  return typename V<W>::D{load(off[L])...};
 }
-// out[lane] = the 32 bits at byte offset off[lane] of `base` (unaligned).
-template <int W>
-inline void GatherBytes(const std::uint8_t* base, const typename V<W>::I& off, typename V<W>::U& out) {
-  for (int l = 0; l < W; ++l) {
-    std::uint32_t word;
-    std::memcpy(&word, base + off[l], 4);
-    out[l] = word;
-  }
-}
-#if defined(SOFTGL_HAS_DISPATCH)
-template <>
-__attribute__((target("avx2"))) inline void GatherBytes<8>(const std::uint8_t* base, const V<8>::I& off, V<8>::U& out) {
-  out = V<8>::U(_mm256_i32gather_epi32(reinterpret_cast<const int*>(base), __m256i(off), 1));
-}
-template <>
-__attribute__((target("avx512f"))) inline void GatherBytes<16>(const std::uint8_t* base, const V<16>::I& off,
-                                                                V<16>::U& out) {
-  out = V<16>::U(_mm512_i32gather_epi32(__m512i(off), base, 1));
-}
-#endif
-#if defined(SOFTGL_HAS_DISPATCH)
-template <>
-__attribute__((target("avx2"))) inline void Gather<8>(const std::uint32_t* base, const V<8>::I& idx, V<8>::U& out) {
-  out = V<8>::U(_mm256_i32gather_epi32(reinterpret_cast<const int*>(base), __m256i(idx), 4));
-}
-template <>
-__attribute__((target("avx512f"))) inline void Gather<16>(const std::uint32_t* base, const V<16>::I& idx,
-                                                           V<16>::U& out) {
-  out = V<16>::U(_mm512_i32gather_epi32(__m512i(idx), base, 4));
-}
-#endif
 
 // Bilinear samples of 8-bit level `lv` (RGBA8 and RGB8, RG8 or R8: Bytes 4, 2 or 1 a texel) for the lanes of
 // `mask`, in byte units, written into r, g, b, a; channels the layout lacks read 0 (alpha 255), as Raw() has them.
@@ -308,29 +285,31 @@ SOFTGL_INLINE void BilinearUnorm8(const TextureLevel& lv, typename V<W>::F s, ty
   const F a = fu - flu, b = fv - flv;
   const I i0 = __builtin_convertvector(flu, I), j0 = __builtin_convertvector(flv, I);
   const I mi = I{} + (lv.width - 1), mj = I{} + (lv.height - 1);
-  const I c0 = i0 & mi, c1 = (i0 + 1) & mi, r0 = (j0 & mj) * lv.width, r1 = ((j0 + 1) & mj) * lv.width;
+  const I c0 = i0 & mi, r0 = (j0 & mj) * lv.width, r1 = ((j0 + 1) & mj) * lv.width;
   const F w00 = (1 - a) * (1 - b), w10 = a * (1 - b), w01 = (1 - a) * b, w11 = a * b;
-  // Lanes outside the mask read texel 0 (always there) and are discarded below.
-  const I i00 = (r0 + c0) & mask, i10 = (r0 + c1) & mask, i01 = (r1 + c0) & mask, i11 = (r1 + c1) & mask;
-  U t00, t10, t01, t11;
-  if constexpr (Bytes == 4) {
-    const auto* base = reinterpret_cast<const std::uint32_t*>(lv.data.data());
-    Gather<W>(base, i00, t00);
-    Gather<W>(base, i10, t10);
-    Gather<W>(base, i01, t01);
-    Gather<W>(base, i11, t11);
-  } else {  // 32 bits from each texel's first byte (the level's padding covers the last texel)
-    const std::uint8_t* base = lv.data.data();
-    GatherBytes<W>(base, i00 * Bytes, t00);
-    GatherBytes<W>(base, i10 * Bytes, t10);
-    GatherBytes<W>(base, i01 * Bytes, t01);
-    GatherBytes<W>(base, i11 * Bytes, t11);
+  // Each row's two texels from one 64-bit read at its left texel (lanes outside the mask read at texel 0, always
+  // there, and are discarded below); the level's padding covers a read at its last texel.
+  using D = typename V<W>::D;
+  const std::uint8_t* base = lv.data.data();
+  const I o0 = ((r0 + c0) & mask) * Bytes, o1 = ((r1 + c0) & mask) * Bytes;
+  const D p0 = LoadPairs<W>(base, o0, std::make_index_sequence<W>()),
+          p1 = LoadPairs<W>(base, o1, std::make_index_sequence<W>());
+  U t00 = __builtin_convertvector(p0, U), t01 = __builtin_convertvector(p1, U);
+  U t10 = __builtin_convertvector(p0 >> (8 * Bytes), U), t11 = __builtin_convertvector(p1 >> (8 * Bytes), U);
+  // On the last column the right-hand texel wraps to the row's first (REPEAT).
+  for (std::uint32_t wrap = detail::MaskToBits<W>((c0 == mi) & mask, 0); wrap != 0; wrap &= wrap - 1) {
+    const int l = __builtin_ctz(wrap);
+    std::uint32_t w0, w1;
+    std::memcpy(&w0, base + std::size_t(r0[l]) * Bytes, 4);
+    std::memcpy(&w1, base + std::size_t(r1[l]) * Bytes, 4);
+    t10[l] = w0;
+    t11[l] = w1;
   }
   for (int c = 0; c < 4; ++c) {
     const int shift = 8 * c;
     auto channel = [shift, c](U x) SOFTGL_WIDE_LAMBDA {
       if (c >= Bytes) return F{} + (c == 3 ? 255.0f : 0.0f);  // a channel the layout lacks
-      return __builtin_convertvector((x >> shift) & 0xFFu, F);
+      return __builtin_convertvector(I((x >> shift) & 0xFFu), F);  // as signed: one instruction on every set
     };
     const F sum = w00 * channel(t00) + w10 * channel(t10) + w01 * channel(t01) + w11 * channel(t11);
     out[c] = mask ? sum : out[c];
@@ -343,6 +322,7 @@ SOFTGL_INLINE typename V<W>::I LambdaLanes(const TextureView& view, const Textur
                                            typename V<W>::F& lambda) {
   using F = typename V<W>::F;
   using I = typename V<W>::I;
+  using U = typename V<W>::U;
   const TextureLevel& base = view.texture->levels[0][view.base];
   const float w = float(base.width), h = float(base.height);
   const F txx = LoadF<W>(c.ds_dx + l0) * w, txy = LoadF<W>(c.dt_dx + l0) * h;
@@ -352,7 +332,7 @@ SOFTGL_INLINE typename V<W>::I LambdaLanes(const TextureView& view, const Textur
   I bits;
   std::memcpy(&bits, &rho2, sizeof bits);
   const I biased = (bits >> 23) & 0x1FF;  // the sign bit makes negative numbers out of range
-  const I normal = (biased > 0) & (biased < 255);
+  const I normal = U(biased - 1) < 254u;  // 0 < biased < 255 (one comparison: GCC 12 scalarizes an & of two)
   I m_bits = (bits & 0x007FFFFF) | 0x3F800000;
   F m;
   std::memcpy(&m, &m_bits, sizeof m);
@@ -388,24 +368,16 @@ SOFTGL_INLINE void SampleRepeatLanes(const TextureView& view, const Textures::La
     const F s = LoadF<W>(c.s + l0), t = LoadF<W>(c.t + l0);
     F ra[4] = {}, rb[4] = {};
     // Each level a lane needs, first and second, for the lanes that need it.
+    const std::uint32_t normal_bits = detail::MaskToBits<W>(normal, 0);
+    // (The masks stay results of comparisons: GCC 12 turns a select on a mask it cannot see is one into a branch
+    // per lane.)
     I pending = normal;
-    while (true) {
-      int first = -1;
-      for (int l = 0; l < W; ++l)
-        if (pending[l]) {
-          first = l;
-          break;
-        }
-      if (first < 0) break;
-      const int L = level_a[first];
+    for (std::uint32_t bits = normal_bits; bits != 0; bits = detail::MaskToBits<W>(pending, 0)) {
+      const int L = level_a[__builtin_ctz(bits)];
       const I mask = pending & (level_a == L);
       BilinearUnorm8<W, Bytes>(levels[L], s, t, mask, ra);
       const I second = mask & two;
-      for (int l = 0; l < W; ++l)
-        if (second[l]) {
-          BilinearUnorm8<W, Bytes>(levels[L + 1], s, t, second, rb);
-          break;
-        }
+      if (detail::MaskToBits<W>(second, 0) != 0) BilinearUnorm8<W, Bytes>(levels[L + 1], s, t, second, rb);
       pending &= ~mask;
     }
     for (int ch = 0; ch < 4; ++ch) {
@@ -415,9 +387,8 @@ SOFTGL_INLINE void SampleRepeatLanes(const TextureView& view, const Textures::La
       std::memcpy(&out[ch][l0], &v, sizeof v);
     }
     // Lanes the vector path does not take: one lane at a time.
-    for (int l = 0; l < W; ++l) {
-      if (normal[l]) continue;
-      const int lane = l0 + l;
+    for (std::uint32_t rest = ~normal_bits & ((1u << W) - 1); rest != 0; rest &= rest - 1) {
+      const int lane = l0 + __builtin_ctz(rest);
       const glm::vec2 dx(c.ds_dx[lane], c.dt_dx[lane]), dy(c.ds_dy[lane], c.dt_dy[lane]);
       const glm::vec4 r = SampleRepeat(view, glm::vec2(c.s[lane], c.t[lane]), Lambda(view, dx, dy, bias)) / view.scale;
       for (int ch = 0; ch < 4; ++ch) out[ch][lane] = r[ch];

@@ -33,6 +33,7 @@ struct V {
   typedef std::uint8_t B __attribute__((vector_size(W)));
   typedef std::uint64_t Q __attribute__((vector_size(4 * W)));  // pairs of 32-bit lanes
   typedef std::uint16_t H __attribute__((vector_size(4 * W)));  // halves of 32-bit lanes
+  typedef std::uint64_t D __attribute__((vector_size(8 * W)));  // W lanes of 64 bits
 };
 
 // Unaligned vector loads and stores: one move through a type that may alias anything (a memcpy may be expanded as
