@@ -8,7 +8,7 @@
 #include "clipper.h"
 #include "culling.h"
 #include "binner.h"
-#include "rasterizer.h"  // PolygonOffset
+#include "rasterizer.h"  // PolygonOffset, CoversNoPixelCentre
 #include "simd.h"
 
 namespace softgl::detail {
@@ -153,6 +153,9 @@ class PrimitiveRunner {
       const std::uint32_t idx[3] = {i0, i1, i2};
       for (int k = 0; k < 3; ++k) win_[k].win = sv_.window[idx[k]];
       if (!Facing(count)) return;
+      // A filled triangle that covers no pixel centre draws nothing: not binned at all.
+      if (state_.primitive.polygon_mode == FILL && CoversNoPixelCentre(win_[0].win, win_[1].win, win_[2].win))
+        return;
       for (int k = 0; k < 3; ++k)
         if (sv_.nvar > 0)
           std::memcpy(win_[k].var, sv_.window_varyings.data() + std::size_t(idx[k]) * std::size_t(sv_.nvar),

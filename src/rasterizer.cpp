@@ -325,18 +325,45 @@ float PolygonOffset(const WindowVertex& a, const WindowVertex& b, const WindowVe
   return std::isfinite(offset) ? offset : 0.0f;
 }
 
+namespace {
+
+// The vertices snapped to the subpixel grid; false when one is beyond the range the rasterizer takes (the
+// clipper's guard band keeps finite window coordinates far inside it).
+bool Snap(const glm::vec4* const p[3], std::int64_t X[3], std::int64_t Y[3]) {
+  for (int i = 0; i < 3; ++i) {
+    const float x = p[i]->x, y = p[i]->y;
+    if (!(std::fabs(x) < 1e7f) || !(std::fabs(y) < 1e7f)) return false;
+    X[i] = RoundToInt64(double(x) * double(kOne));
+    Y[i] = RoundToInt64(double(y) * double(kOne));
+  }
+  return true;
+}
+
+std::int64_t SnappedArea(const std::int64_t X[3], const std::int64_t Y[3]) {
+  return (X[1] - X[0]) * (Y[2] - Y[0]) - (X[2] - X[0]) * (Y[1] - Y[0]);
+}
+
+// The first and last pixel whose centre lies in [lo, hi] (snapped units) along one axis.
+std::int64_t FirstCentre(std::int64_t lo) { return -FloorDiv(-(lo - kHalf), kOne); }
+std::int64_t LastCentre(std::int64_t hi) { return FloorDiv(hi - kHalf, kOne); }
+
+}  // namespace
+
+bool CoversNoPixelCentre(const glm::vec4& a, const glm::vec4& b, const glm::vec4& c) {
+  const glm::vec4* const p[3] = {&a, &b, &c};
+  std::int64_t X[3], Y[3];
+  if (!Snap(p, X, Y) || SnappedArea(X, Y) == 0) return true;
+  return FirstCentre(std::min({X[0], X[1], X[2]})) > LastCentre(std::max({X[0], X[1], X[2]})) ||
+         FirstCentre(std::min({Y[0], Y[1], Y[2]})) > LastCentre(std::max({Y[0], Y[1], Y[2]}));
+}
+
 void RasterizeTriangle(const WindowVertex& v0, const WindowVertex& v1, const WindowVertex& v2, bool front_facing,
                        const RasterTarget& target, BlockBuffer& blocks, const BlockSink& sink) {
   const WindowVertex* v[3] = {&v0, &v1, &v2};
   std::int64_t X[3], Y[3];
-  for (int i = 0; i < 3; ++i) {
-    const float x = v[i]->win.x, y = v[i]->win.y;
-    // The clipper's guard band keeps finite window coordinates far inside this range.
-    if (!(std::fabs(x) < 1e7f) || !(std::fabs(y) < 1e7f)) return;
-    X[i] = RoundToInt64(double(x) * double(kOne));
-    Y[i] = RoundToInt64(double(y) * double(kOne));
-  }
-  std::int64_t area = (X[1] - X[0]) * (Y[2] - Y[0]) - (X[2] - X[0]) * (Y[1] - Y[0]);
+  const glm::vec4* const pos[3] = {&v0.win, &v1.win, &v2.win};
+  if (!Snap(pos, X, Y)) return;
+  std::int64_t area = SnappedArea(X, Y);
   if (area == 0) return;
   if (area < 0) {  // make the vertex order counter-clockwise (y up): the interior is left of every edge
     std::swap(v[1], v[2]);
@@ -361,10 +388,10 @@ void RasterizeTriangle(const WindowVertex& v0, const WindowVertex& v1, const Win
   // Pixel range whose centres lie in the snapped bounding box, clipped to the target bounds.
   const std::int64_t minX = std::min({X[0], X[1], X[2]}), maxX = std::max({X[0], X[1], X[2]});
   const std::int64_t minY = std::min({Y[0], Y[1], Y[2]}), maxY = std::max({Y[0], Y[1], Y[2]});
-  const std::int64_t px0 = std::max<std::int64_t>(-FloorDiv(-(minX - kHalf), kOne), target.bounds.x0);
-  const std::int64_t px1 = std::min<std::int64_t>(FloorDiv(maxX - kHalf, kOne), target.bounds.x1 - 1);
-  const std::int64_t py0 = std::max<std::int64_t>(-FloorDiv(-(minY - kHalf), kOne), target.bounds.y0);
-  const std::int64_t py1 = std::min<std::int64_t>(FloorDiv(maxY - kHalf, kOne), target.bounds.y1 - 1);
+  const std::int64_t px0 = std::max<std::int64_t>(FirstCentre(minX), target.bounds.x0);
+  const std::int64_t px1 = std::min<std::int64_t>(LastCentre(maxX), target.bounds.x1 - 1);
+  const std::int64_t py0 = std::max<std::int64_t>(FirstCentre(minY), target.bounds.y0);
+  const std::int64_t py1 = std::min<std::int64_t>(LastCentre(maxY), target.bounds.y1 - 1);
   if (px0 > px1 || py0 > py1) return;
 
   // Interpolation planes from the unsnapped float positions, relative to vertex 0.

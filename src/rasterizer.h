@@ -34,6 +34,11 @@ struct RasterTarget {
 /// depth of the polygon, 2^(e - 23) (OpenGL 4.6, section 14.6.5).
 float PolygonOffset(const WindowVertex& a, const WindowVertex& b, const WindowVertex& c, float factor, float units);
 
+/// Whether RasterizeTriangle draws nothing of the filled triangle a, b, c (window positions) whatever its bounds:
+/// no area once snapped, or no pixel centre inside its snapped bounding box, or beyond the rasterizer's range. The
+/// front end drops such triangles before binning them (at 1280x720 a third of a detailed model's triangles).
+bool CoversNoPixelCentre(const glm::vec4& a, const glm::vec4& b, const glm::vec4& c);
+
 void RasterizeTriangle(const WindowVertex& v0, const WindowVertex& v1, const WindowVertex& v2, bool front_facing,
                        const RasterTarget& target, BlockBuffer& blocks, const BlockSink& sink);
 

@@ -160,6 +160,37 @@ TEST_CASE("degenerate triangles produce nothing", "[rasterizer]") {
   for (int v : r.counter.hits) CHECK(v == 0);
 }
 
+TEST_CASE("a triangle the front end drops as covering no pixel centre draws nothing", "[rasterizer]") {
+  // Random small triangles around pixel centres and edges (subpixel slivers to a few pixels, both windings),
+  // plus out-of-range and zero-area ones: every triangle CoversNoPixelCentre reports must rasterize to nothing;
+  // and the test sees both kinds, so a predicate that dropped drawn triangles would fail it.
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<float> place(2.0f, 6.0f), size(-1.5f, 1.5f);
+  int dropped = 0, drawn = 0;
+  for (int i = 0; i < 20000; ++i) {
+    const float scale = (i % 3 == 0) ? 0.05f : (i % 3 == 1 ? 0.4f : 1.0f);
+    const glm::vec2 a(place(rng), place(rng));
+    const glm::vec2 b = a + scale * glm::vec2(size(rng), size(rng)), c = a + scale * glm::vec2(size(rng), size(rng));
+    Raster r(8, 8);
+    r.Tri(a, b, c);
+    int hits = 0;
+    for (int v : r.counter.hits) hits += v;
+    const bool none = CoversNoPixelCentre(glm::vec4(a, 0.5f, 1.0f), glm::vec4(b, 0.5f, 1.0f), glm::vec4(c, 0.5f, 1.0f));
+    if (none) {
+      INFO("triangle " << a.x << "," << a.y << " " << b.x << "," << b.y << " " << c.x << "," << c.y);
+      REQUIRE(hits == 0);
+      ++dropped;
+    }
+    drawn += hits > 0;
+  }
+  CHECK(dropped > 1000);
+  CHECK(drawn > 1000);
+  const glm::vec4 p(1.5f, 1.5f, 0.5f, 1.0f);
+  CHECK(CoversNoPixelCentre(p, p, glm::vec4(3.5f, 3.5f, 0.5f, 1.0f)));                    // no area
+  CHECK(CoversNoPixelCentre(p, glm::vec4(2e7f, 1.5f, 0.5f, 1.0f), glm::vec4(1.5f, 9.f, 0.5f, 1.0f)));  // beyond range
+  CHECK(!CoversNoPixelCentre(p, glm::vec4(1.5f, 0.5f, 0.5f, 1.0f), glm::vec4(0.5f, 1.5f, 0.5f, 1.0f)));
+}
+
 TEST_CASE("lines: one fragment per major-axis step, last pixel left out", "[rasterizer]") {
   Raster h(8, 4);
   h.Line({0.5f, 1.5f}, {6.5f, 1.5f});
