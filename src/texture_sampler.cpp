@@ -236,7 +236,7 @@ int CubeFace(glm::vec3 r) {
 //
 // W lanes at a time (4 with SSE2, 8 with AVX2, 16 with AVX-512), each lane's operations those of SampleRepeat and
 // BilinearRepeatPow2 above in the same order. The levels a chunk of lanes needs are taken one at a time (usually one
-// or two), and each is sampled for all its lanes: texel addresses, gathers, weights side by side. Lanes whose
+// or two), and each is sampled for all its lanes: texel addresses, texel loads, weights side by side. Lanes whose
 // rho^2 is not a normal positive float (zero or NaN derivatives, say) take the one-lane path.
 
 using detail::V;
@@ -251,8 +251,8 @@ SOFTGL_INLINE typename V<W>::F FloorF(typename V<W>::F x) {
 }
 
 // Each lane's 64 bits at byte offset off[lane] of `base` (unaligned), one scalar load a lane: a texel and its
-// right-hand neighbour together. On the x86 processors measured, a gather instruction costs more than the loads it
-// stands for (docs/performance.md), and one 64-bit load brings both texels of a row.
+// right-hand neighbour together. On the x86 processor measured, a gather instruction costs about as much as the
+// loads it stands for or more (docs/architecture.md), and one 64-bit load brings both texels of a row.
 template <int W, std::size_t... L>
 SOFTGL_WIDE typename V<W>::D LoadPairs(const std::uint8_t* base, const typename V<W>::I& off,
                                        std::index_sequence<L...>) {
