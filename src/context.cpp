@@ -751,28 +751,101 @@ void Context::DrawArrays(Enum mode, int first, int count) {
   s.Draw(call);
 }
 
-void Context::DrawElement(Enum mode, int count, Enum type, std::size_t offset) {
-  auto& s = *state_;
-  if (detail::VerticesPerPrimitive(mode) == 0) return s.SetError(INVALID_ENUM, __func__, "mode is not a primitive mode");
-  if (type != UNSIGNED_BYTE && type != UNSIGNED_SHORT && type != UNSIGNED_INT) return s.SetError(INVALID_ENUM, __func__, "index type must be UNSIGNED_BYTE, UNSIGNED_SHORT or UNSIGNED_INT");
-  if (count < 0) return s.SetError(INVALID_VALUE, __func__, "count is negative");
-  if (s.vao == nullptr || s.program == nullptr || !s.vao->element_buffer) return s.SetError(INVALID_OPERATION, __func__, "needs a bound vertex array with an element buffer, and a shader (UseProgram)");
+namespace {
+
+// The checks DrawElement and its variants share (OpenGL 3.3, section 2.8.3): an error set, and false, when the
+// draw must not happen. `what` names the call in the error.
+bool CheckElements(ContextState& s, const char* what, Enum mode, Enum type) {
+  if (detail::VerticesPerPrimitive(mode) == 0) return s.SetError(INVALID_ENUM, what, "mode is not a primitive mode"), false;
+  if (type != UNSIGNED_BYTE && type != UNSIGNED_SHORT && type != UNSIGNED_INT) return s.SetError(INVALID_ENUM, what, "index type must be UNSIGNED_BYTE, UNSIGNED_SHORT or UNSIGNED_INT"), false;
+  return true;
+}
+bool CheckElementsBound(ContextState& s, const char* what) {
+  if (s.vao == nullptr || s.program == nullptr || !s.vao->element_buffer) return s.SetError(INVALID_OPERATION, what, "needs a bound vertex array with an element buffer, and a shader (UseProgram)"), false;
+  return true;
+}
+bool CheckElementRange(ContextState& s, const char* what, int count, Enum type, std::size_t offset) {
   const auto& store = s.vao->element_buffer->data;
   const std::size_t bytes = std::size_t(count) * detail::TypeSize(type);
-  if (offset > store.size() || bytes > store.size() - offset) return s.SetError(INVALID_OPERATION, __func__, "the indices would be read past the end of the element buffer");
+  if (offset > store.size() || bytes > store.size() - offset) return s.SetError(INVALID_OPERATION, what, "the indices would be read past the end of the element buffer"), false;
+  return true;
+}
+
+// Draws count indices of `type` at byte `offset` of the bound element buffer, each plus `basevertex` (checked
+// already). An index whose sum with basevertex falls outside 0 .. 2^32 - 1 (undefined in OpenGL) becomes 2^32 - 1:
+// past the end of every buffer, so its attributes read (0, 0, 0, 1).
+void DrawIndexed(ContextState& s, const char* what, Enum mode, int count, Enum type, std::size_t offset,
+                 int basevertex) {
   if (count == 0) return;
   std::vector<std::uint32_t>& elements = s.scratch.elements;  // reused: no allocation (and page faults) per draw
   try {
     elements.resize(std::size_t(count));
   } catch (const std::bad_alloc&) {
-    return s.SetError(OUT_OF_MEMORY, __func__, "out of memory");
+    return s.SetError(OUT_OF_MEMORY, what, "out of memory");
   }
-  detail::ReadIndices(type, store.data() + offset, count, elements.data());
+  detail::ReadIndices(type, s.vao->element_buffer->data.data() + offset, count, elements.data());
+  if (basevertex != 0)
+    for (std::uint32_t& e : elements) {
+      const std::int64_t v = std::int64_t(e) + basevertex;
+      e = (v < 0 || v > std::int64_t(UINT32_MAX)) ? UINT32_MAX : std::uint32_t(v);
+    }
   detail::DrawCall call;
   call.mode = mode;
   call.count = count;
   call.elements = elements.data();
   s.Draw(call);
+}
+
+void DrawElementsChecked(ContextState& s, const char* what, Enum mode, int count, Enum type, std::size_t offset,
+                         int basevertex) {
+  if (!CheckElements(s, what, mode, type)) return;
+  if (count < 0) return s.SetError(INVALID_VALUE, what, "count is negative");
+  if (!CheckElementsBound(s, what) || !CheckElementRange(s, what, count, type, offset)) return;
+  DrawIndexed(s, what, mode, count, type, offset, basevertex);
+}
+
+}  // namespace
+
+void Context::DrawElement(Enum mode, int count, Enum type, std::size_t offset) {
+  DrawElementsChecked(*state_, __func__, mode, count, type, offset, 0);
+}
+
+void Context::DrawElementsBaseVertex(Enum mode, int count, Enum type, std::size_t offset, int basevertex) {
+  DrawElementsChecked(*state_, __func__, mode, count, type, offset, basevertex);
+}
+
+void Context::DrawRangeElements(Enum mode, std::uint32_t start, std::uint32_t end, int count, Enum type,
+                                std::size_t offset) {
+  auto& s = *state_;
+  if (!CheckElements(s, __func__, mode, type)) return;
+  if (count < 0) return s.SetError(INVALID_VALUE, __func__, "count is negative");
+  if (end < start) return s.SetError(INVALID_VALUE, __func__, "end is less than start");
+  if (!CheckElementsBound(s, __func__) || !CheckElementRange(s, __func__, count, type, offset)) return;
+  DrawIndexed(s, __func__, mode, count, type, offset, 0);
+}
+
+void Context::MultiDrawArrays(Enum mode, const int* first, const int* count, int drawcount) {
+  auto& s = *state_;
+  if (detail::VerticesPerPrimitive(mode) == 0) return s.SetError(INVALID_ENUM, __func__, "mode is not a primitive mode");
+  if (drawcount < 0) return s.SetError(INVALID_VALUE, __func__, "drawcount is negative");
+  if (drawcount > 0 && (first == nullptr || count == nullptr)) return s.SetError(INVALID_VALUE, __func__, "first or count is null");
+  for (int i = 0; i < drawcount; ++i)
+    if (first[i] < 0 || count[i] < 0) return s.SetError(INVALID_VALUE, __func__, "a first or count is negative");
+  if (s.vao == nullptr || s.program == nullptr) return s.SetError(INVALID_OPERATION, __func__, "needs a bound vertex array and a shader (UseProgram)");
+  for (int i = 0; i < drawcount; ++i) DrawArrays(mode, first[i], count[i]);
+}
+
+void Context::MultiDrawElements(Enum mode, const int* count, Enum type, const std::size_t* offsets, int drawcount) {
+  auto& s = *state_;
+  if (!CheckElements(s, __func__, mode, type)) return;
+  if (drawcount < 0) return s.SetError(INVALID_VALUE, __func__, "drawcount is negative");
+  if (drawcount > 0 && (count == nullptr || offsets == nullptr)) return s.SetError(INVALID_VALUE, __func__, "count or offsets is null");
+  for (int i = 0; i < drawcount; ++i)
+    if (count[i] < 0) return s.SetError(INVALID_VALUE, __func__, "a count is negative");
+  if (!CheckElementsBound(s, __func__)) return;
+  for (int i = 0; i < drawcount; ++i)
+    if (!CheckElementRange(s, __func__, count[i], type, offsets[i])) return;
+  for (int i = 0; i < drawcount; ++i) DrawIndexed(s, __func__, mode, count[i], type, offsets[i], 0);
 }
 
 // ---- Reading back --------------------------------------------------------------------------------------------

@@ -3,6 +3,7 @@
 
 #include <cstring>
 #include <limits>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -246,6 +247,161 @@ TEST_CASE("every draw mode through DrawArrays and DrawElement", "[context]") {
     CHECK(CountLit(gl) == arrays);
     if (r.mode != TRIANGLES && r.mode != TRIANGLE_STRIP) CHECK(arrays == r.lit);
   }
+}
+
+namespace {
+
+// Colour from gl_VertexID (red = id / 32, flat from the provoking vertex): shows which vertex a draw used.
+struct VertexIdVaryings {
+  softgl::Flat<glm::vec4> color;
+};
+struct VertexIdShader : softgl::Shader<VertexIdShader, VertexIdVaryings> {
+  void Vertex(const softgl::VertexIn& in, softgl::VertexOut<VertexIdVaryings>& out) const {
+    out.position = in.attrib[0];
+    out.varyings.color = glm::vec4(float(in.vertex_id) / 32.0f, 0.0f, 0.0f, 1.0f);
+  }
+  bool Fragment(const softgl::FragmentIn<VertexIdVaryings>& in, softgl::FragmentOut& out) const {
+    out.color[0] = in.varyings.color;
+    return true;
+  }
+};
+
+// Four quads of two triangles in a row across a 16 x 4 framebuffer (vertices 4q .. 4q + 3), and element lists
+// that draw them.
+struct QuadRow {
+  Context gl{16, 4};
+  VertexIdShader shader;
+  QuadRow() {
+    std::vector<glm::vec4> pos;
+    for (int q = 0; q < 4; ++q) {
+      const float x0 = -1.0f + 0.5f * float(q), x1 = x0 + 0.5f;
+      for (glm::vec2 p : {glm::vec2(x0, -1), glm::vec2(x1, -1), glm::vec2(x1, 1), glm::vec2(x0, 1)})
+        pos.push_back(glm::vec4(p, 0, 1));
+    }
+    MakeVertexArray(gl, pos);
+    const std::uint32_t ebo = gl.GenBuffer();
+    gl.BindBuffer(ELEMENT_ARRAY_BUFFER, ebo);
+    // Quad 0's six indices, then quads 1, 2, 3's (18 more).
+    std::vector<std::uint16_t> idx;
+    for (int q = 0; q < 4; ++q)
+      for (int k : {0, 1, 2, 0, 2, 3}) idx.push_back(std::uint16_t(4 * q + k));
+    gl.BufferData(ELEMENT_ARRAY_BUFFER, std::ptrdiff_t(idx.size() * 2), idx.data());
+    gl.UseProgram(shader);
+    gl.ProvokingVertex(FIRST_VERTEX_CONVENTION);
+  }
+  std::vector<std::uint8_t> Red() {
+    std::vector<std::uint8_t> r;
+    const Image img = gl.ReadPixels();
+    for (std::size_t i = 0; i < img.rgba.size(); i += 4) r.push_back(img.rgba[i]);
+    return r;
+  }
+};
+
+// QuadRow's quads as separate triangles, vertices 6q .. 6q + 5.
+std::vector<glm::vec4> SeparateTriangles() {
+  std::vector<glm::vec4> tri;
+  for (int q = 0; q < 4; ++q) {
+    const float x0 = -1.0f + 0.5f * float(q), x1 = x0 + 0.5f;
+    for (glm::vec2 p : {glm::vec2(x0, -1), glm::vec2(x1, -1), glm::vec2(x1, 1), glm::vec2(x0, -1), glm::vec2(x1, 1),
+                        glm::vec2(x0, 1)})
+      tri.push_back(glm::vec4(p, 0, 1));
+  }
+  return tri;
+}
+
+}  // namespace
+
+TEST_CASE("base vertex, range and multi-draw calls draw what their plain forms draw", "[context]") {
+  QuadRow ref;
+  for (int q = 0; q < 4; ++q) ref.gl.DrawElement(TRIANGLES, 6, UNSIGNED_SHORT, std::size_t(12 * q));
+  const std::vector<std::uint8_t> want = ref.Red();
+  REQUIRE(ref.gl.GetError() == NO_ERROR);
+  // Every quad drawn, each in its own red (gl_VertexID 0, 4, 8, 12 provoke): 64 pixels, 4 distinct values.
+  CHECK(std::set<std::uint8_t>(want.begin(), want.end()).size() == 4);
+
+  SECTION("DrawElementsBaseVertex: quad 0's indices moved by 4q vertices, gl_VertexID included") {
+    QuadRow t;
+    for (int q = 0; q < 4; ++q) t.gl.DrawElementsBaseVertex(TRIANGLES, 6, UNSIGNED_SHORT, 0, 4 * q);
+    CHECK(t.gl.GetError() == NO_ERROR);
+    CHECK(t.Red() == want);
+  }
+  SECTION("DrawRangeElements") {
+    QuadRow t;
+    t.gl.DrawRangeElements(TRIANGLES, 0, 15, 24, UNSIGNED_SHORT, 0);
+    CHECK(t.gl.GetError() == NO_ERROR);
+    CHECK(t.Red() == want);
+  }
+  SECTION("MultiDrawElements") {
+    QuadRow t;
+    const int count[] = {6, 12, 6};
+    const std::size_t offsets[] = {0, 12, 36};
+    t.gl.MultiDrawElements(TRIANGLES, count, UNSIGNED_SHORT, offsets, 3);
+    CHECK(t.gl.GetError() == NO_ERROR);
+    CHECK(t.Red() == want);
+  }
+  SECTION("MultiDrawArrays, against DrawArrays one draw at a time") {
+    QuadRow t;
+    MakeVertexArray(t.gl, SeparateTriangles());
+    const int first[] = {0, 6, 12, 18}, count[] = {6, 6, 6, 6};
+    t.gl.MultiDrawArrays(TRIANGLES, first, count, 4);
+    CHECK(t.gl.GetError() == NO_ERROR);
+    QuadRow r;  // the same with DrawArrays one at a time
+    MakeVertexArray(r.gl, SeparateTriangles());
+    for (int q = 0; q < 4; ++q) r.gl.DrawArrays(TRIANGLES, 6 * q, 6);
+    const std::vector<std::uint8_t> got = t.Red(), arrays = r.Red();
+    CHECK(got == arrays);
+    CHECK(std::set<std::uint8_t>(got.begin(), got.end()).size() == 8);  // each triangle its own first vertex
+  }
+  SECTION("a base vertex that takes an index below 0 reads zeros there, no crash") {
+    QuadRow t;
+    t.gl.DrawElementsBaseVertex(TRIANGLES, 6, UNSIGNED_SHORT, 0, -1);  // indices -1, 0, 1, -1, 1, 2
+    CHECK(t.gl.GetError() == NO_ERROR);
+    t.gl.DrawElementsBaseVertex(TRIANGLES, 6, UNSIGNED_SHORT, 0, std::numeric_limits<int>::max());
+    CHECK(t.gl.GetError() == NO_ERROR);
+  }
+}
+
+TEST_CASE("the draw variants' errors, as OpenGL gives them, draw nothing", "[context][errors]") {
+  QuadRow t;
+  const int count[] = {6, -1}, good_count[] = {6, 6}, first[] = {0, 0}, bad_first[] = {0, -3};
+  const std::size_t offsets[] = {0, 12}, past[] = {0, 48};
+  t.gl.DrawElementsBaseVertex(0x7, 6, UNSIGNED_SHORT, 0, 0);
+  CHECK(t.gl.GetError() == INVALID_ENUM);
+  t.gl.DrawElementsBaseVertex(TRIANGLES, 6, FLOAT, 0, 0);
+  CHECK(t.gl.GetError() == INVALID_ENUM);
+  t.gl.DrawElementsBaseVertex(TRIANGLES, -6, UNSIGNED_SHORT, 0, 4);
+  CHECK(t.gl.GetError() == INVALID_VALUE);
+  t.gl.DrawElementsBaseVertex(TRIANGLES, 6, UNSIGNED_SHORT, 40, 4);  // past the end of the element buffer
+  CHECK(t.gl.GetError() == INVALID_OPERATION);
+  t.gl.DrawRangeElements(TRIANGLES, 5, 4, 6, UNSIGNED_SHORT, 0);
+  CHECK(t.gl.GetError() == INVALID_VALUE);
+  t.gl.DrawRangeElements(TRIANGLES, 0, 3, -1, UNSIGNED_SHORT, 0);
+  CHECK(t.gl.GetError() == INVALID_VALUE);
+  t.gl.MultiDrawElements(TRIANGLES, count, UNSIGNED_SHORT, offsets, 2);  // quad 0 fine, then a negative count
+  CHECK(t.gl.GetError() == INVALID_VALUE);
+  t.gl.MultiDrawElements(TRIANGLES, good_count, UNSIGNED_SHORT, offsets, -1);
+  CHECK(t.gl.GetError() == INVALID_VALUE);
+  t.gl.MultiDrawElements(TRIANGLES, good_count, UNSIGNED_SHORT, past, 2);
+  CHECK(t.gl.GetError() == INVALID_OPERATION);
+  t.gl.MultiDrawElements(TRIANGLES, good_count, UNSIGNED_INT + 1, offsets, 2);
+  CHECK(t.gl.GetError() == INVALID_ENUM);
+  t.gl.MultiDrawElements(TRIANGLES, nullptr, UNSIGNED_SHORT, nullptr, 2);
+  CHECK(t.gl.GetError() == INVALID_VALUE);
+  t.gl.MultiDrawArrays(TRIANGLES, bad_first, good_count, 2);
+  CHECK(t.gl.GetError() == INVALID_VALUE);
+  t.gl.MultiDrawArrays(TRIANGLES, first, good_count, -2);
+  CHECK(t.gl.GetError() == INVALID_VALUE);
+  t.gl.MultiDrawArrays(LINES + 100, first, good_count, 2);
+  CHECK(t.gl.GetError() == INVALID_ENUM);
+  t.gl.MultiDrawArrays(TRIANGLES, first, good_count, 0);  // nothing to draw, no error
+  t.gl.MultiDrawElements(TRIANGLES, nullptr, UNSIGNED_SHORT, nullptr, 0);
+  CHECK(t.gl.GetError() == NO_ERROR);
+  for (std::uint8_t r : t.Red()) CHECK(r == 0);
+  t.gl.BindVertexArray(0);
+  t.gl.MultiDrawElements(TRIANGLES, good_count, UNSIGNED_SHORT, offsets, 2);
+  CHECK(t.gl.GetError() == INVALID_OPERATION);
+  t.gl.MultiDrawArrays(TRIANGLES, first, good_count, 2);
+  CHECK(t.gl.GetError() == INVALID_OPERATION);
 }
 
 TEST_CASE("polygon mode draws edges or vertices", "[context]") {

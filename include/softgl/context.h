@@ -279,6 +279,19 @@ class Context {
   /// bound vertex array's element buffer at byte `offset`. No element buffer, or indices past its end:
   /// INVALID_OPERATION (nothing is drawn); otherwise as DrawArrays.
   void DrawElement(Enum mode, int count, Enum type, std::size_t offset);
+  /// DrawElement with `basevertex` added to every index before it is used (gl_VertexID included). An index whose
+  /// sum falls outside 0 .. 2^32 - 1 (undefined in OpenGL) reads (0, 0, 0, 1) for every attribute.
+  void DrawElementsBaseVertex(Enum mode, int count, Enum type, std::size_t offset, int basevertex);
+  /// DrawElement with the promise that the indices lie in [start, end] (not relied on: any index is read as
+  /// DrawElement reads it). end < start: INVALID_VALUE.
+  void DrawRangeElements(Enum mode, std::uint32_t start, std::uint32_t end, int count, Enum type, std::size_t offset);
+  /// DrawArrays(mode, first[i], count[i]) for i in [0, drawcount). drawcount, a first or a count negative:
+  /// INVALID_VALUE, and nothing is drawn.
+  void MultiDrawArrays(Enum mode, const int* first, const int* count, int drawcount);
+  /// DrawElement(mode, count[i], type, offsets[i]) for i in [0, drawcount). drawcount or a count negative:
+  /// INVALID_VALUE; a list that would read past the end of the element buffer: INVALID_OPERATION; on any error
+  /// nothing is drawn.
+  void MultiDrawElements(Enum mode, const int* count, Enum type, const std::size_t* offsets, int drawcount);
 
   // ---- Reading back ------------------------------------------------------------------------------------------
   // From the framebuffer bound to READ_FRAMEBUFFER: the context's own, or a framebuffer object's

@@ -60,6 +60,17 @@ struct Frame {
   std::vector<std::uint8_t> stencil;
 };
 
+/// One call of Backend::DrawVariants: an OpenGL 3.3 draw variant and its arguments.
+struct DrawVariant {
+  enum class Call { kElementsBaseVertex, kRangeElements, kMultiElements, kMultiArrays };
+  Call call;
+  Enum mode;
+  std::vector<int> first;  // kMultiArrays: each draw's first vertex; the others: each draw's first index
+  std::vector<int> count;  // each draw's count (one draw for kElementsBaseVertex and kRangeElements)
+  int basevertex = 0;               // kElementsBaseVertex
+  std::uint32_t start = 0, end = 0;  // kRangeElements
+};
+
 class Backend {
  public:
   virtual ~Backend() = default;
@@ -90,6 +101,10 @@ class Backend {
   /// Draws `vertices` (through `indices` when not empty) with `mode` and `program`.
   virtual void Draw(Enum mode, const std::vector<Vertex>& vertices, const std::vector<std::uint32_t>& indices,
                     Program program, const Uniforms& uniforms) = 0;
+  /// Uploads `vertices` and `indices` (UNSIGNED_INT) once, then makes each call of `calls` in order with the
+  /// kColor program: DrawElementsBaseVertex, DrawRangeElements, MultiDrawElements or MultiDrawArrays.
+  virtual void DrawVariants(const std::vector<Vertex>& vertices, const std::vector<std::uint32_t>& indices,
+                            const std::vector<DrawVariant>& calls) = 0;
   virtual Frame Read() = 0;
   /// Defines the texture of unit 0 (replacing any before).
   virtual void SetTexture(const TextureDesc& desc) = 0;

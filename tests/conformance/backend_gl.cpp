@@ -4,6 +4,7 @@
 #include <GL/gl.h>
 #include <GL/glext.h>
 
+#include <cstdint>
 #include <cstring>
 
 #include "backend.h"
@@ -177,6 +178,35 @@ class GlBackend final : public Backend {
       glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(indices.size() * sizeof(std::uint32_t)), indices.data(),
                    GL_STREAM_DRAW);
       glDrawElements(mode, GLsizei(indices.size()), GL_UNSIGNED_INT, nullptr);
+    }
+  }
+
+  void DrawVariants(const std::vector<Vertex>& vertices, const std::vector<std::uint32_t>& indices,
+                    const std::vector<DrawVariant>& calls) override {
+    glUseProgram(programs_[int(Program::kColor)]);
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(vertices.size() * sizeof(Vertex)), vertices.data(), GL_STREAM_DRAW);
+    glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(indices.size() * sizeof(std::uint32_t)), indices.data(),
+                 GL_STREAM_DRAW);
+    auto at = [](int first) { return reinterpret_cast<const void*>(std::uintptr_t(first) * sizeof(std::uint32_t)); };
+    for (const DrawVariant& c : calls) {
+      switch (c.call) {
+        case DrawVariant::Call::kElementsBaseVertex:
+          glDrawElementsBaseVertex(c.mode, c.count[0], GL_UNSIGNED_INT, const_cast<void*>(at(c.first[0])),
+                                   c.basevertex);
+          break;
+        case DrawVariant::Call::kRangeElements:
+          glDrawRangeElements(c.mode, c.start, c.end, c.count[0], GL_UNSIGNED_INT, at(c.first[0]));
+          break;
+        case DrawVariant::Call::kMultiElements: {
+          std::vector<const void*> offsets;
+          for (int f : c.first) offsets.push_back(at(f));
+          glMultiDrawElements(c.mode, c.count.data(), GL_UNSIGNED_INT, offsets.data(), GLsizei(c.count.size()));
+          break;
+        }
+        case DrawVariant::Call::kMultiArrays:
+          glMultiDrawArrays(c.mode, c.first.data(), c.count.data(), GLsizei(c.count.size()));
+          break;
+      }
     }
   }
 

@@ -166,6 +166,34 @@ class SoftglBackend final : public Backend {
     }
   }
 
+  void DrawVariants(const std::vector<Vertex>& vertices, const std::vector<std::uint32_t>& indices,
+                    const std::vector<DrawVariant>& calls) override {
+    gl_.UseProgram(color_);
+    gl_.BufferData(softgl::ARRAY_BUFFER, std::ptrdiff_t(vertices.size() * sizeof(Vertex)), vertices.data());
+    gl_.BufferData(softgl::ELEMENT_ARRAY_BUFFER, std::ptrdiff_t(indices.size() * sizeof(std::uint32_t)),
+                   indices.data());
+    auto at = [](int first) { return std::size_t(first) * sizeof(std::uint32_t); };
+    for (const DrawVariant& c : calls) {
+      switch (c.call) {
+        case DrawVariant::Call::kElementsBaseVertex:
+          gl_.DrawElementsBaseVertex(c.mode, c.count[0], softgl::UNSIGNED_INT, at(c.first[0]), c.basevertex);
+          break;
+        case DrawVariant::Call::kRangeElements:
+          gl_.DrawRangeElements(c.mode, c.start, c.end, c.count[0], softgl::UNSIGNED_INT, at(c.first[0]));
+          break;
+        case DrawVariant::Call::kMultiElements: {
+          std::vector<std::size_t> offsets;
+          for (int f : c.first) offsets.push_back(at(f));
+          gl_.MultiDrawElements(c.mode, c.count.data(), softgl::UNSIGNED_INT, offsets.data(), int(c.count.size()));
+          break;
+        }
+        case DrawVariant::Call::kMultiArrays:
+          gl_.MultiDrawArrays(c.mode, c.first.data(), c.count.data(), int(c.count.size()));
+          break;
+      }
+    }
+  }
+
   void SetTexture(const TextureDesc& d) override {
     const std::uint32_t tex = gl_.GenTexture();
     gl_.BindTexture(softgl::TEXTURE_2D, tex);

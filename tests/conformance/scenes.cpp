@@ -205,6 +205,35 @@ void Culling(Backend& b) {
   b.Disable(CULL_FACE);
 }
 
+// ---- Draw variants -------------------------------------------------------------------------------------------------
+
+// A 4 x 3 grid of quads, each four vertices of their own colours, drawn by the OpenGL 3.3 draw variants: quads 0-2
+// by DrawElementsBaseVertex from one relative index list, 3-4 by DrawRangeElements, 5, 7, 9 as strips by
+// MultiDrawElements, 6, 8, 10, 11 as fans by MultiDrawArrays.
+void DrawVariants(Backend& b) {
+  ClearBlack(b);
+  std::vector<Vertex> v;
+  for (int q = 0; q < 12; ++q) {
+    const float x0 = float(q % 4) * 32 + 3.25f, y0 = float(q / 4) * 42 + 4.5f, x1 = x0 + 25.5f, y1 = y0 + 33.0f;
+    const glm::vec2 corners[4] = {{x0, y0}, {x1, y0 + 2}, {x1 - 3, y1}, {x0 + 1, y1 - 4}};  // counter-clockwise
+    for (int k = 0; k < 4; ++k) v.push_back({Win(corners[k].x, corners[k].y), Palette(unsigned(4 * q + k))});
+  }
+  std::vector<std::uint32_t> idx;
+  for (int q = 0; q < 12; ++q)  // quad q's triangles at 6q, its strip order at 72 + 4q
+    for (int k : {0, 1, 2, 0, 2, 3}) idx.push_back(std::uint32_t(4 * q + k));
+  for (int q = 0; q < 12; ++q)
+    for (int k : {0, 1, 3, 2}) idx.push_back(std::uint32_t(4 * q + k));
+  const int relative = int(idx.size());  // one quad's triangles, relative to its first vertex
+  for (int k : {0, 1, 2, 0, 2, 3}) idx.push_back(std::uint32_t(k));
+  using Call = DrawVariant::Call;
+  std::vector<DrawVariant> calls;
+  for (int q = 0; q < 3; ++q) calls.push_back({Call::kElementsBaseVertex, TRIANGLES, {relative}, {6}, 4 * q, 0, 0});
+  calls.push_back({Call::kRangeElements, TRIANGLES, {18}, {12}, 0, 12, 19});
+  calls.push_back({Call::kMultiElements, TRIANGLE_STRIP, {72 + 20, 72 + 28, 72 + 36}, {4, 4, 4}, 0, 0, 0});
+  calls.push_back({Call::kMultiArrays, TRIANGLE_FAN, {24, 32, 40, 44}, {4, 4, 4, 4}, 0, 0, 0});
+  b.DrawVariants(v, idx, calls);
+}
+
 // ---- Clipping and interpolation ------------------------------------------------------------------------------------
 
 void Clipping(Backend& b) {
@@ -620,6 +649,7 @@ const std::vector<SceneInfo>& Scenes() {
       {"line_interpolation", kSize, kSize, Check::kCoverage, LineInterpolation},
       {"polygon_mode_line", kSize, kSize, Check::kExact, PolygonModeLine},
       {"culling", kSize, kSize, Check::kExact, Culling},
+      {"draw_variants", kSize, kSize, Check::kColor, DrawVariants},
       {"clipping", kSize, kSize, Check::kColor, Clipping},
       {"perspective", kSize, kSize, Check::kColor, Perspective},
       {"depth_functions", kSize, kSize, Check::kExactWithDepth, DepthFunctions},

@@ -117,13 +117,33 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       case 10: {
         const std::uint32_t mode = in.Enum(kModes);
         const int first = in.Int(-2, 64);
-        gl.DrawArrays(mode, first, draw_count());
+        const int count = draw_count();
+        if (in.Byte() % 2 == 0) {  // (an input that ends here: DrawArrays)
+          gl.DrawArrays(mode, first, count);
+        } else {
+          const int firsts[3] = {first, in.Int(-2, 64), in.Int(-2, 64)};
+          const int counts[3] = {count, draw_count(), draw_count()};
+          gl.MultiDrawArrays(mode, firsts, counts, std::min(in.Int(-1, 3), 3));  // the arrays hold 3
+        }
         break;
       }
       case 11: {
         const std::uint32_t mode = in.Enum(kModes);
         const int count = draw_count();
-        gl.DrawElement(mode, count, in.Enum(kIndexTypes), std::size_t(std::uint32_t(in.Int(0, 512))));
+        const std::uint32_t type = in.Enum(kIndexTypes);
+        const auto offset = std::size_t(std::uint32_t(in.Int(0, 512)));
+        switch (in.Byte() % 4) {  // (an input that ends here: DrawElement)
+          case 0: gl.DrawElement(mode, count, type, offset); break;
+          case 1: gl.DrawElementsBaseVertex(mode, count, type, offset, in.Int(-64, 64)); break;
+          case 2: gl.DrawRangeElements(mode, in.Get<std::uint32_t>(), in.Get<std::uint32_t>(), count, type, offset); break;
+          default: {
+            const int counts[3] = {count, draw_count(), draw_count()};
+            const std::size_t offsets[3] = {offset, std::size_t(std::uint32_t(in.Int(0, 512))),
+                                            std::size_t(std::uint32_t(in.Int(0, 512)))};
+            gl.MultiDrawElements(mode, counts, type, offsets, std::min(in.Int(-1, 3), 3));  // the arrays hold 3
+            break;
+          }
+        }
         break;
       }
       case 12: gl.Enable(in.Enum(kCaps)); break;
