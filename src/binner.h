@@ -83,6 +83,14 @@ class BinnedBatch {
       }
     }
   }
+  /// Whether ForEachInTile(tile, tile_rect, ...) may call its function at all: the tile's list is not empty, or a
+  /// large primitive's box overlaps the tile.
+  bool Touches(int tile, const Rect& tile_rect) const {
+    if (tile_start_[std::size_t(tile)] != tile_start_[std::size_t(tile) + 1]) return true;
+    for (const Large& l : large_)
+      if (Overlap(l.box, tile_rect)) return true;
+    return false;
+  }
   /// Copies vertex k of the run at `vertices` into a WindowVertex.
   void Vertex(const float* vertices, int k, WindowVertex& out) const;
 

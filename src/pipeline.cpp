@@ -305,6 +305,7 @@ void RecordChunk(const DrawCall& call, const FetchPlan& fetch, const DrawState& 
     }
     bins.Finish(grid);
   });
+  for (int j = 0; j < jobs; ++j) frame.AddBytes(packet.batches[first_batch + std::size_t(j)]->Bytes());
 }
 
 // Records one piece of a draw as its own command (a copy of the prototype packet), rendering the frame first

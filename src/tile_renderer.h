@@ -70,8 +70,10 @@ class Frame {
   /// An empty batch owned by the frame (reused from frame to frame).
   BinnedBatch& NewBatch(int nvar);
 
-  /// Memory held by recorded batches, in bytes.
-  std::size_t Bytes() const;
+  /// Memory held by recorded batches, in bytes: the sum of what AddBytes was told since the frame began.
+  std::size_t Bytes() const { return bytes_; }
+  /// Counts `bytes` more held by the frame's batches (each batch counted once, when it is filled).
+  void AddBytes(std::size_t bytes) { bytes_ += bytes; }
   /// Renders every tile on the pool, then empties the frame. Throws std::bad_alloc when memory runs out.
   void Render(WorkerPool& pool, std::vector<TileScratch>& scratch);
   /// Forgets the recorded commands without rendering them.
@@ -92,6 +94,7 @@ class Frame {
   std::vector<ClearPacket> clears_;
   std::vector<std::unique_ptr<BinnedBatch>> batches_;
   std::size_t batches_used_ = 0;
+  std::size_t bytes_ = 0;
 };
 
 }  // namespace softgl::detail
