@@ -127,4 +127,75 @@ softgl::Image Clipped(int width, int height) {
   return gl.ReadPixels();
 }
 
+namespace {
+
+struct FieldVaryings {
+  vec3 normal;
+  vec3 color;
+};
+
+// One cube per instance: gl_InstanceID places it on a kSide x kSide grid; attribute 4 (divisor 1) holds its
+// height and attribute 5 (divisor 1) its colour, as normalized bytes.
+struct FieldShader : softgl::Shader<FieldShader, FieldVaryings> {
+  static constexpr int kSide = 100;
+  glm::mat4 view_proj{1.0f};
+  glm::vec3 light_dir = glm::normalize(glm::vec3(0.5f, 0.8f, 0.3f));
+  void Vertex(const VertexLanes& in, VertexLanesOut<FieldVaryings>& out) const {
+    const Float col = Float(in.instance_id % kSide), row = Float(in.instance_id / kSide);
+    const Float height = in.attrib[4].x;
+    const vec3 p = vec3(in.attrib[0]);  // the unit cube, [-0.5, 0.5]^3
+    const vec3 world(p.x * 0.8f + col - 0.5f * (kSide - 1), (p.y + 0.5f) * height, p.z * 0.8f + row - 0.5f * (kSide - 1));
+    out.position = view_proj * vec4(world, 1.0f);
+    out.varyings.normal = vec3(in.attrib[1]);  // scaling along the axes keeps a cube's face normals
+    out.varyings.color = vec3(in.attrib[5]);
+  }
+  void Fragment(const FragmentLanes<FieldVaryings>& in, FragmentLanesOut& out) const {
+    const Float diffuse = max(dot(normalize(in.varyings.normal), light_dir), 0.0f);
+    out.color[0] = vec4(in.varyings.color * (0.3f + 0.7f * diffuse), 1.0f);
+  }
+};
+
+}  // namespace
+
+softgl::Image Instancing(int width, int height) {
+  softgl::Context gl(width, height);
+  const Mesh cube = MakeCube();
+  UploadLitMesh(gl, cube);
+  // Per instance: a height (a rolling landscape) and a colour from it, read once per instance.
+  constexpr int kSide = FieldShader::kSide, kInstances = kSide * kSide;
+  std::vector<float> heights(kInstances);
+  std::vector<std::uint8_t> colors(std::size_t(kInstances) * 4);
+  for (int i = 0; i < kInstances; ++i) {
+    const float x = float(i % kSide), z = float(i / kSide);
+    const float h = 0.6f + 1.6f * (0.5f + 0.25f * std::sin(x * 0.21f) + 0.25f * std::cos(z * 0.17f + x * 0.05f));
+    heights[std::size_t(i)] = h;
+    const float t = (h - 0.6f) / 1.6f;
+    const std::uint8_t c[4] = {std::uint8_t(40 + 200 * t), std::uint8_t(170 - 60 * t), std::uint8_t(220 - 170 * t), 255};
+    std::copy(c, c + 4, colors.begin() + std::ptrdiff_t(i) * 4);
+  }
+  const std::uint32_t instance_vbo = gl.GenBuffer();
+  gl.BindBuffer(softgl::ARRAY_BUFFER, instance_vbo);
+  gl.BufferData(softgl::ARRAY_BUFFER, std::ptrdiff_t(heights.size() * sizeof(float) + colors.size()), nullptr);
+  gl.BufferSubData(softgl::ARRAY_BUFFER, 0, std::ptrdiff_t(heights.size() * sizeof(float)), heights.data());
+  gl.BufferSubData(softgl::ARRAY_BUFFER, std::ptrdiff_t(heights.size() * sizeof(float)), std::ptrdiff_t(colors.size()),
+                   colors.data());
+  gl.VertexAttributePointer(4, 1, softgl::FLOAT, false, 0, 0);
+  gl.VertexAttributePointer(5, 4, softgl::UNSIGNED_BYTE, true, 0, heights.size() * sizeof(float));
+  gl.EnableVertexAttribArray(4);
+  gl.EnableVertexAttribArray(5);
+  gl.VertexAttribDivisor(4, 1);
+  gl.VertexAttribDivisor(5, 1);
+
+  FieldShader shader;
+  const glm::mat4 view = glm::lookAt(glm::vec3(-50.0f, 56.0f, 74.0f), glm::vec3(2.0f, -8.0f, 4.0f), glm::vec3(0, 1, 0));
+  shader.view_proj = Projection(width, height, 50.0f, 1.0f, 300.0f) * view;
+  gl.UseProgram(shader);
+  gl.Enable(softgl::DEPTH_TEST);
+  gl.Enable(softgl::CULL_FACE);
+  gl.ClearColor(0.08f, 0.09f, 0.12f, 1.0f);
+  gl.Clear(softgl::COLOR_BUFFER_BIT | softgl::DEPTH_BUFFER_BIT);
+  gl.DrawElementsInstanced(softgl::TRIANGLES, int(cube.indices.size()), softgl::UNSIGNED_INT, 0, kInstances);
+  return gl.ReadPixels();
+}
+
 }  // namespace scenes

@@ -54,6 +54,10 @@ softgl::Image PostProcess(int width, int height);
 /// also drawn as the background.
 softgl::Image EnvironmentMap(int width, int height);
 
+/// A field of 10,000 lit cubes drawn by one DrawElementsInstanced: gl_InstanceID places each on a 100 x 100 grid,
+/// attributes with divisor 1 give its height and colour.
+softgl::Image Instancing(int width, int height);
+
 /// The model in `path` (any format assimp reads), framed by its bounding box from (azimuth, elevation) degrees,
 /// three-point lit, drawn with the built-in shader named "unlit", "phong" or "pbr". An empty image, with the
 /// reason in `error`, when the model cannot be loaded.

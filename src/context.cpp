@@ -38,6 +38,7 @@ struct AttribBinding {
   Enum type = FLOAT;
   bool normalized = false;
   int stride = 0;
+  std::uint32_t divisor = 0;  // VertexAttribDivisor
 };
 
 struct VertexArray {
@@ -418,6 +419,13 @@ void Context::DisableVertexAttribArray(std::uint32_t index) {
   s.vao->attrib[index].enabled = false;
 }
 
+void Context::VertexAttribDivisor(std::uint32_t index, std::uint32_t divisor) {
+  auto& s = *state_;
+  if (index >= std::uint32_t(kMaxVertexAttribs)) return s.SetError(INVALID_VALUE, __func__, "attribute index is kMaxVertexAttribs or more");
+  if (s.vao == nullptr) return s.SetError(INVALID_OPERATION, __func__, "no vertex array is bound");
+  s.vao->attrib[index].divisor = divisor;
+}
+
 void Context::VertexAttrib4f(std::uint32_t index, float x, float y, float z, float w) {
   if (index >= std::uint32_t(kMaxVertexAttribs)) return state_->SetError(INVALID_VALUE, __func__, "attribute index is kMaxVertexAttribs or more");
   state_->current_attrib[index] = glm::vec4(x, y, z, w);
@@ -687,6 +695,7 @@ void ContextState::Draw(const detail::DrawCall& call) {
     src.components = a.size;
     src.type = a.type;
     src.normalized = a.normalized;
+    src.divisor = a.divisor;
     src.stride = a.stride ? std::size_t(a.stride) : std::size_t(a.size) * detail::TypeSize(a.type);
   }
 
@@ -739,16 +748,28 @@ void ContextState::Draw(const detail::DrawCall& call) {
   if (!packet.snapshot) Sync(__func__);
 }
 
-void Context::DrawArrays(Enum mode, int first, int count) {
-  auto& s = *state_;
-  if (detail::VerticesPerPrimitive(mode) == 0) return s.SetError(INVALID_ENUM, __func__, "mode is not a primitive mode");
-  if (first < 0 || count < 0) return s.SetError(INVALID_VALUE, __func__, "first or count is negative");
-  if (s.vao == nullptr || s.program == nullptr) return s.SetError(INVALID_OPERATION, __func__, "needs a bound vertex array and a shader (UseProgram)");
+namespace {
+
+void DrawArraysChecked(ContextState& s, const char* what, Enum mode, int first, int count, int instances) {
+  if (detail::VerticesPerPrimitive(mode) == 0) return s.SetError(INVALID_ENUM, what, "mode is not a primitive mode");
+  if (first < 0 || count < 0) return s.SetError(INVALID_VALUE, what, "first or count is negative");
+  if (instances < 0) return s.SetError(INVALID_VALUE, what, "instancecount is negative");
+  if (s.vao == nullptr || s.program == nullptr) return s.SetError(INVALID_OPERATION, what, "needs a bound vertex array and a shader (UseProgram)");
+  if (instances == 0) return;
   detail::DrawCall call;
   call.mode = mode;
   call.count = count;
   call.first = std::uint32_t(first);
+  call.instances = instances;
   s.Draw(call);
+}
+
+}  // namespace
+
+void Context::DrawArrays(Enum mode, int first, int count) { DrawArraysChecked(*state_, __func__, mode, first, count, 1); }
+
+void Context::DrawArraysInstanced(Enum mode, int first, int count, int instancecount) {
+  DrawArraysChecked(*state_, __func__, mode, first, count, instancecount);
 }
 
 namespace {
@@ -775,8 +796,8 @@ bool CheckElementRange(ContextState& s, const char* what, int count, Enum type, 
 // already). An index whose sum with basevertex falls outside 0 .. 2^32 - 1 (undefined in OpenGL) becomes 2^32 - 1:
 // past the end of every buffer, so its attributes read (0, 0, 0, 1).
 void DrawIndexed(ContextState& s, const char* what, Enum mode, int count, Enum type, std::size_t offset,
-                 int basevertex) {
-  if (count == 0) return;
+                 int basevertex, int instances = 1) {
+  if (count == 0 || instances == 0) return;
   std::vector<std::uint32_t>& elements = s.scratch.elements;  // reused: no allocation (and page faults) per draw
   try {
     elements.resize(std::size_t(count));
@@ -793,15 +814,17 @@ void DrawIndexed(ContextState& s, const char* what, Enum mode, int count, Enum t
   call.mode = mode;
   call.count = count;
   call.elements = elements.data();
+  call.instances = instances;
   s.Draw(call);
 }
 
 void DrawElementsChecked(ContextState& s, const char* what, Enum mode, int count, Enum type, std::size_t offset,
-                         int basevertex) {
+                         int basevertex, int instances = 1) {
   if (!CheckElements(s, what, mode, type)) return;
   if (count < 0) return s.SetError(INVALID_VALUE, what, "count is negative");
+  if (instances < 0) return s.SetError(INVALID_VALUE, what, "instancecount is negative");
   if (!CheckElementsBound(s, what) || !CheckElementRange(s, what, count, type, offset)) return;
-  DrawIndexed(s, what, mode, count, type, offset, basevertex);
+  DrawIndexed(s, what, mode, count, type, offset, basevertex, instances);
 }
 
 }  // namespace
@@ -812,6 +835,15 @@ void Context::DrawElement(Enum mode, int count, Enum type, std::size_t offset) {
 
 void Context::DrawElementsBaseVertex(Enum mode, int count, Enum type, std::size_t offset, int basevertex) {
   DrawElementsChecked(*state_, __func__, mode, count, type, offset, basevertex);
+}
+
+void Context::DrawElementsInstanced(Enum mode, int count, Enum type, std::size_t offset, int instancecount) {
+  DrawElementsChecked(*state_, __func__, mode, count, type, offset, 0, instancecount);
+}
+
+void Context::DrawElementsInstancedBaseVertex(Enum mode, int count, Enum type, std::size_t offset, int instancecount,
+                                              int basevertex) {
+  DrawElementsChecked(*state_, __func__, mode, count, type, offset, basevertex, instancecount);
 }
 
 void Context::DrawRangeElements(Enum mode, std::uint32_t start, std::uint32_t end, int count, Enum type,

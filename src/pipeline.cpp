@@ -47,7 +47,10 @@ void ShadeVertices(const DrawCall& call, const FetchPlan& fetch, const Program& 
     }
   }
 
-  const int n = int(to_shade.size());
+  // An instanced piece shades the vertices once per instance: shaded vertex j is vertex to_shade[j % unique] of
+  // instance call.instance + j / unique.
+  const int unique = int(to_shade.size());
+  const int n = unique * call.instances;
   ShadedVertices& out = s.shaded;
   out.count = n;
   out.nvar = program.VaryingFloats();
@@ -75,17 +78,21 @@ void ShadeVertices(const DrawCall& call, const FetchPlan& fetch, const Program& 
     vs.attribs.resize(std::size_t(kVertexBatch) * kMaxVertexAttribs);
     vs.vertex_ids.resize(kVertexBatch);
     const int end = std::min(n, (job + 1) * kVertexJob);
-    for (int base = job * kVertexJob; base < end; base += kVertexBatch) {
-      const int m = std::min(kVertexBatch, end - base);
+    for (int base = job * kVertexJob, m = 0; base < end; base += m) {
+      // A batch never spans two instances.
+      const int k0 = base % unique;
+      m = std::min({kVertexBatch, end - base, unique - k0});
+      const std::uint32_t instance = call.instance + std::uint32_t(base / unique);
       // Disabled attributes read constant values: written into the scratch by the job's first batch only.
-      FetchVertices(fetch, to_shade.data() + base, m, vs.attribs.data(), base == job * kVertexJob);
-      for (int i = 0; i < m; ++i) vs.vertex_ids[i] = int(to_shade[base + i]);
+      FetchVertices(fetch, to_shade.data() + k0, m, instance, vs.attribs.data(), base == job * kVertexJob);
+      for (int i = 0; i < m; ++i) vs.vertex_ids[i] = int(to_shade[std::size_t(k0 + i)]);
       VertexBatch batch;
       batch.count = m;
       batch.attribs = vs.attribs.data();
       batch.enabled = enabled;
       batch.simd = simd;
       batch.vertex_ids = vs.vertex_ids.data();
+      batch.instance_id = int(instance);
       batch.positions = out.position.data() + base;
       batch.point_sizes = out.point_size.data() + base;
       batch.varyings = out.varyings.data() + std::size_t(base) * out.nvar;
@@ -281,7 +288,10 @@ void RecordChunk(const DrawCall& call, const FetchPlan& fetch, const DrawState& 
   AssemblePrimitives(call.mode, call.count, prims, state.primitive.provoking_first);
   const int per = prims.vertices_per_primitive;
   if (per < 1 || per > 3) return;
-  const std::size_t count = prims.indices.size() / std::size_t(per);
+  // Instance g of the piece repeats the primitives with its own shaded vertices, g * unique further on.
+  const std::size_t per_instance = prims.indices.size() / std::size_t(per);
+  const std::size_t count = per_instance * std::size_t(call.instances);
+  const std::uint32_t unique = std::uint32_t(scratch.shaded.count / call.instances);
   const int jobs = int((count + kBinJob - 1) / kBinJob);
   const std::size_t first_batch = packet.batches.size();
   for (int j = 0; j < jobs; ++j) packet.batches.push_back(&frame.NewBatch(scratch.shaded.nvar));
@@ -294,13 +304,15 @@ void RecordChunk(const DrawCall& call, const FetchPlan& fetch, const DrawState& 
     auto runner = std::make_unique<PrimitiveRunner>(state, scratch.shaded, bins, grid);
     const std::size_t end = std::min(count, std::size_t(job + 1) * kBinJob);
     for (std::size_t p = std::size_t(job) * kBinJob; p < end; ++p) {
-      const std::size_t i = p * std::size_t(per);
+      const std::uint32_t shift = std::uint32_t(p / per_instance) * unique;
+      const std::size_t i = (p % per_instance) * std::size_t(per);
       // The provoking vertex: the first of the primitive or its last (OpenGL 4.6, table 13.2; assembly put it there).
       const std::size_t provoking = i + (first ? 0 : std::size_t(per - 1));
+      auto at = [&](std::size_t k) { return map[idx[k]] + shift; };
       switch (per) {
-        case 1: runner->Point(map[idx[i]]); break;
-        case 2: runner->Line(map[idx[i]], map[idx[i + 1]], map[idx[provoking]]); break;
-        default: runner->Triangle(map[idx[i]], map[idx[i + 1]], map[idx[i + 2]], map[idx[provoking]]); break;
+        case 1: runner->Point(at(i)); break;
+        case 2: runner->Line(at(i), at(i + 1), at(provoking)); break;
+        default: runner->Triangle(at(i), at(i + 1), at(i + 2), at(provoking)); break;
       }
     }
     bins.Finish(grid);
@@ -321,8 +333,27 @@ void RecordPiece(const DrawCall& call, const FetchPlan& fetch, const DrawState& 
 
 void RecordDraw(const DrawCall& call, const FetchPlan& fetch, const DrawState& state, const DrawPacket& packet,
                 const RenderTarget& target, Frame& frame, WorkerPool& pool, Scratch& scratch) {
-  if (call.count <= 0 || state.program == nullptr || state.bounds.Empty()) return;
-  if (call.count <= kDrawChunk) return RecordPiece(call, fetch, state, packet, target, frame, pool, scratch);
+  if (call.count <= 0 || call.instances <= 0 || state.program == nullptr || state.bounds.Empty()) return;
+  if (call.count <= kDrawChunk) {
+    // Whole instances together, as many as kDrawChunk vertices hold, in instance order.
+    const int group = std::max(1, kDrawChunk / call.count);
+    DrawCall sub = call;
+    for (std::int64_t g = 0; g < call.instances; g += group) {
+      sub.instance = call.instance + std::uint32_t(g);
+      sub.instances = int(std::min<std::int64_t>(group, call.instances - g));
+      RecordPiece(sub, fetch, state, packet, target, frame, pool, scratch);
+    }
+    return;
+  }
+  if (call.instances > 1) {  // one instance at a time, each in pieces
+    DrawCall sub = call;
+    sub.instances = 1;
+    for (int g = 0; g < call.instances; ++g) {
+      sub.instance = call.instance + std::uint32_t(g);
+      RecordDraw(sub, fetch, state, packet, target, frame, pool, scratch);
+    }
+    return;
+  }
 
   // A large draw goes through in pieces of at most kDrawChunk vertices, so that memory stays bounded whatever the
   // count. Each piece is an explicit element list of the draw's own vertex indices (gl_VertexID is kept); strips
@@ -353,6 +384,7 @@ void RecordDraw(const DrawCall& call, const FetchPlan& fetch, const DrawState& s
     const std::int64_t room = kDrawChunk - std::int64_t(piece.size());
     for (std::int64_t k = s; k < std::min(count, s + room); ++k) piece.push_back(element(k));
     DrawCall sub;
+    sub.instance = call.instance;
     sub.mode = piece_mode;
     sub.count = int(piece.size());
     sub.elements = piece.data();
@@ -362,6 +394,7 @@ void RecordDraw(const DrawCall& call, const FetchPlan& fetch, const DrawState& s
   if (call.mode == LINE_LOOP) {
     const std::uint32_t closing[2] = {element(count - 1), element(0)};
     DrawCall sub;
+    sub.instance = call.instance;
     sub.mode = LINES;
     sub.count = 2;
     sub.elements = closing;

@@ -57,6 +57,8 @@ struct DrawCall {
   int count = 0;
   std::uint32_t first = 0;
   const std::uint32_t* elements = nullptr;  // null for DrawArrays
+  std::uint32_t instance = 0;  // gl_InstanceID of the first instance drawn
+  int instances = 1;           // instances drawn, in order: instance, instance + 1, ...
 };
 
 /// Memory one worker thread reuses while shading vertices.

@@ -112,8 +112,8 @@ glm::vec4 FetchAttribute(const AttribSource& src, std::uint32_t index) {
   return Read(src, Resolve(src), index);
 }
 
-void FetchVertices(const FetchPlan& plan, const std::uint32_t* indices, int count, glm::vec4* out,
-                   bool fill_disabled) {
+void FetchVertices(const FetchPlan& plan, const std::uint32_t* indices, int count, std::uint32_t instance,
+                   glm::vec4* out, bool fill_disabled) {
   for (int a = 0; a < kMaxVertexAttribs; ++a) {
     const AttribSource& src = plan.attrib[a];
     glm::vec4* dst = out + a;
@@ -123,6 +123,11 @@ void FetchVertices(const FetchPlan& plan, const std::uint32_t* indices, int coun
       continue;
     }
     const Resolved r = Resolve(src);
+    if (src.divisor != 0) {  // one element for the whole instance
+      const glm::vec4 v = Read(src, r, instance / src.divisor);
+      for (int i = 0; i < count; ++i) dst[std::size_t(i) * kMaxVertexAttribs] = v;
+      continue;
+    }
     for (int i = 0; i < count; ++i) dst[std::size_t(i) * kMaxVertexAttribs] = Read(src, r, indices[i]);
   }
 }

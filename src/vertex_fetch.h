@@ -21,6 +21,7 @@ struct AttribSource {
   int components = 4;                  // 1..4
   Enum type = FLOAT;
   bool normalized = false;
+  std::uint32_t divisor = 0;           // VertexAttribDivisor: 0 reads per vertex, d > 0 element instance / d
   glm::vec4 current{0.0f, 0.0f, 0.0f, 1.0f};  // value read while disabled
 };
 
@@ -35,11 +36,12 @@ std::size_t TypeSize(Enum type);
 /// (even partly) outside the buffer reads as (0, 0, 0, 1).
 glm::vec4 FetchAttribute(const AttribSource& src, std::uint32_t index);
 
-/// Fetches all attributes of `count` vertices into out[count][kMaxVertexAttribs]. With `fill_disabled` false the
-/// slots of disabled attributes are left as they are: for a caller whose `out` already holds this plan's current
-/// values there (from an earlier call with the same plan).
-void FetchVertices(const FetchPlan& plan, const std::uint32_t* indices, int count, glm::vec4* out,
-                   bool fill_disabled = true);
+/// Fetches all attributes of `count` vertices of instance `instance` into out[count][kMaxVertexAttribs]: an
+/// attribute with divisor d > 0 reads element instance / d for every vertex (OpenGL 3.3, section 2.8.2), the
+/// others the vertex's index. With `fill_disabled` false the slots of disabled attributes are left as they are: for
+/// a caller whose `out` already holds this plan's current values there (from an earlier call with the same plan).
+void FetchVertices(const FetchPlan& plan, const std::uint32_t* indices, int count, std::uint32_t instance,
+                   glm::vec4* out, bool fill_disabled = true);
 
 /// Reads `count` indices of `type` (UNSIGNED_BYTE/SHORT/INT) from `data`. The caller has checked the range.
 void ReadIndices(Enum type, const std::uint8_t* data, int count, std::uint32_t* out);

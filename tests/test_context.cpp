@@ -404,6 +404,201 @@ TEST_CASE("the draw variants' errors, as OpenGL gives them, draw nothing", "[con
   CHECK(t.gl.GetError() == INVALID_OPERATION);
 }
 
+namespace {
+
+// Instancing: attribute 0 a quad's corner, attribute 1 a per-instance colour (divisor set by the test); instance i
+// moves right by 4 pixels of a 16 x 4 framebuffer per gl_InstanceID. Written wide and scalar.
+struct InstanceVaryings {
+  glm::vec4 color;
+};
+struct WideColor {
+  softgl::vec4 value;
+};
+struct WideInstanceShader : softgl::Shader<WideInstanceShader, WideColor> {
+  void Vertex(const softgl::VertexLanes& in, softgl::VertexLanesOut<WideColor>& out) const {
+    const softgl::Float dx = softgl::Float(in.instance_id) * 0.5f;
+    out.position = softgl::vec4(in.attrib[0].x + dx, in.attrib[0].y, 0.0f, 1.0f);
+    out.varyings.value = in.attrib[1];
+  }
+  void Fragment(const softgl::FragmentLanes<WideColor>& in, softgl::FragmentLanesOut& out) const {
+    out.color[0] = in.varyings.value;
+  }
+};
+struct ScalarInstanceShader : softgl::Shader<ScalarInstanceShader, InstanceVaryings> {
+  void Vertex(const softgl::VertexIn& in, softgl::VertexOut<InstanceVaryings>& out) const {
+    out.position = in.attrib[0] + glm::vec4(0.5f * float(in.instance_id), 0, 0, 0);
+    out.varyings.color = in.attrib[1];
+  }
+  bool Fragment(const softgl::FragmentIn<InstanceVaryings>& in, softgl::FragmentOut& out) const {
+    out.color[0] = in.varyings.color;
+    return true;
+  }
+};
+
+// Quad 0 of QuadRow (4 vertices, and 6 indices), with 4 instance colours at attribute 1.
+struct InstanceScene {
+  Context gl{16, 4};
+  std::uint32_t colors = 0;
+  explicit InstanceScene(std::uint32_t divisor) {
+    const std::vector<glm::vec4> quad = {{-1, -1, 0, 1}, {-0.5f, -1, 0, 1}, {-0.5f, 1, 0, 1}, {-1, 1, 0, 1}};
+    MakeVertexArray(gl, quad);
+    const float c[4][4] = {{1, 0, 0, 1}, {0, 1, 0, 1}, {0, 0, 1, 1}, {1, 1, 1, 1}};
+    colors = gl.GenBuffer();
+    gl.BindBuffer(ARRAY_BUFFER, colors);
+    gl.BufferData(ARRAY_BUFFER, sizeof(c), c);
+    gl.VertexAttributePointer(1, 4, FLOAT, false, 0, 0);
+    gl.EnableVertexAttribArray(1);
+    gl.VertexAttribDivisor(1, divisor);
+    const std::uint8_t idx[6] = {0, 1, 2, 0, 2, 3};
+    gl.BindBuffer(ELEMENT_ARRAY_BUFFER, gl.GenBuffer());
+    gl.BufferData(ELEMENT_ARRAY_BUFFER, sizeof(idx), idx);
+  }
+  // The colour (as 0xRRGGBB) of the middle pixel of each 4 x 4 quad slot.
+  std::vector<std::uint32_t> Slots() {
+    std::vector<std::uint32_t> out;
+    for (int q = 0; q < 4; ++q) {
+      std::uint8_t px[4];
+      gl.ReadPixel(4 * q + 2, 2, px);
+      out.push_back(std::uint32_t(px[0]) << 16 | std::uint32_t(px[1]) << 8 | px[2]);
+    }
+    return out;
+  }
+};
+
+}  // namespace
+
+TEST_CASE("instanced draws: gl_InstanceID and attribute divisors, wide and scalar shaders", "[context]") {
+  WideInstanceShader wide;
+  ScalarInstanceShader scalar;
+  using Slots = std::vector<std::uint32_t>;
+  const Slots per_instance = {0xFF0000, 0x00FF00, 0x0000FF, 0xFFFFFF};
+  for (const Program* program : {static_cast<const Program*>(&wide), static_cast<const Program*>(&scalar)}) {
+    SECTION(program == &wide ? "wide" : "scalar") {
+      {
+        InstanceScene t(1);
+        t.gl.UseProgram(*program);
+        t.gl.DrawArraysInstanced(TRIANGLE_FAN, 0, 4, 4);
+        CHECK(t.gl.GetError() == NO_ERROR);
+        CHECK(t.Slots() == per_instance);
+      }
+      {
+        InstanceScene t(2);  // instances 0 and 1 read colour 0, 2 and 3 colour 1
+        t.gl.UseProgram(*program);
+        t.gl.DrawElementsInstanced(TRIANGLES, 6, UNSIGNED_BYTE, 0, 4);
+        CHECK(t.gl.GetError() == NO_ERROR);
+        CHECK(t.Slots() == Slots{0xFF0000, 0xFF0000, 0x00FF00, 0x00FF00});
+      }
+      {
+        InstanceScene t(1);  // three instances: the fourth slot stays clear
+        t.gl.UseProgram(*program);
+        t.gl.DrawElementsInstancedBaseVertex(TRIANGLES, 6, UNSIGNED_BYTE, 0, 3, 0);
+        CHECK(t.Slots() == Slots{0xFF0000, 0x00FF00, 0x0000FF, 0});
+      }
+      {
+        InstanceScene t(0);  // divisor 0: per vertex, so vertices 0-3 read colours 0-3; the plain draw is instance 0
+        t.gl.UseProgram(*program);
+        t.gl.VertexAttribDivisor(1, 3);
+        t.gl.DrawArrays(TRIANGLE_FAN, 0, 4);
+        CHECK(t.Slots() == Slots{0xFF0000, 0, 0, 0});
+      }
+    }
+  }
+}
+
+TEST_CASE("instanced draws: base vertex moves the vertices, not the instanced attributes", "[context]") {
+  // Two quads in the vertex buffer (quad 1 at x + 0.5); basevertex 4 draws quad 1 for each instance.
+  InstanceScene t(1);
+  WideInstanceShader shader;
+  t.gl.UseProgram(shader);
+  const std::vector<glm::vec4> quads = {{-1, -1, 0, 1},    {-0.5f, -1, 0, 1}, {-0.5f, 1, 0, 1}, {-1, 1, 0, 1},
+                                        {-0.5f, -1, 0, 1}, {0, -1, 0, 1},     {0, 1, 0, 1},     {-0.5f, 1, 0, 1}};
+  t.gl.BindBuffer(ARRAY_BUFFER, t.gl.GenBuffer());
+  t.gl.BufferData(ARRAY_BUFFER, std::ptrdiff_t(quads.size() * sizeof(glm::vec4)), quads.data());
+  t.gl.VertexAttributePointer(0, 4, FLOAT, false, 0, 0);
+  t.gl.DrawElementsInstancedBaseVertex(TRIANGLES, 6, UNSIGNED_BYTE, 0, 2, 4);
+  CHECK(t.gl.GetError() == NO_ERROR);
+  CHECK(t.Slots() == std::vector<std::uint32_t>{0, 0xFF0000, 0x00FF00, 0});
+}
+
+TEST_CASE("instanced draws larger than a piece match the same primitives drawn one instance at a time",
+          "[context]") {
+  // Additive blending counts every hit, so a missed or doubled instance shows. 30,000 instances of a 6-vertex
+  // pair of triangles (several pieces of whole instances), and 2 instances of a 60,000-vertex list (each split).
+  struct Case {
+    int vertices, instances;
+  };
+  for (const Case& c : {Case{6, 30000}, Case{60000, 2}}) {
+    INFO(c.vertices << " vertices x " << c.instances << " instances");
+    std::vector<glm::vec4> tris(std::size_t(c.vertices)), offsets(std::size_t(c.instances));
+    for (int i = 0; i < c.vertices; ++i) {
+      const float a = 0.37f * float(i);
+      tris[std::size_t(i)] = glm::vec4(0.1f * std::cos(a), 0.1f * std::sin(a), 0, 1);
+    }
+    for (int i = 0; i < c.instances; ++i)
+      offsets[std::size_t(i)] = glm::vec4(std::fmod(0.013f * float(i), 1.6f) - 0.8f, std::fmod(0.029f * float(i), 1.6f) - 0.8f, 0, 0);
+    struct OffsetShader : softgl::Shader<OffsetShader, WideColor> {
+      void Vertex(const softgl::VertexLanes& in, softgl::VertexLanesOut<WideColor>& out) const {
+        out.position = in.attrib[0] + in.attrib[1];
+        out.varyings.value = softgl::vec4(4.0f / 255.0f, 0.0f, 0.0f, 1.0f);
+      }
+      void Fragment(const softgl::FragmentLanes<WideColor>& in, softgl::FragmentLanesOut& out) const {
+        out.color[0] = in.varyings.value;
+      }
+    } shader;
+    Image images[2];
+    for (int pass = 0; pass < 2; ++pass) {
+      Context gl(96, 96);
+      gl.UseProgram(shader);
+      gl.Enable(BLEND);
+      gl.BlendFunc(ONE, ONE);
+      MakeVertexArray(gl, tris);
+      gl.BindBuffer(ARRAY_BUFFER, gl.GenBuffer());
+      gl.BufferData(ARRAY_BUFFER, std::ptrdiff_t(offsets.size() * sizeof(glm::vec4)), offsets.data());
+      gl.VertexAttributePointer(1, 4, FLOAT, false, 0, 0);
+      gl.EnableVertexAttribArray(1);
+      if (pass == 0) {
+        gl.VertexAttribDivisor(1, 1);
+        gl.DrawArraysInstanced(TRIANGLES, 0, c.vertices, c.instances);
+      } else {  // instance i as a plain draw whose attribute 1 is the constant offsets[i]
+        gl.DisableVertexAttribArray(1);
+        for (int i = 0; i < c.instances; ++i) {
+          const glm::vec4 o = offsets[std::size_t(i)];
+          gl.VertexAttrib4f(1, o.x, o.y, o.z, o.w);
+          gl.DrawArrays(TRIANGLES, 0, c.vertices);
+        }
+      }
+      CHECK(gl.GetError() == NO_ERROR);
+      images[pass] = gl.ReadPixels();
+    }
+    CHECK(images[0].rgba == images[1].rgba);
+  }
+}
+
+TEST_CASE("instanced draws' errors, as OpenGL gives them", "[context][errors]") {
+  InstanceScene t(1);
+  WideInstanceShader shader;
+  t.gl.UseProgram(shader);
+  t.gl.DrawArraysInstanced(TRIANGLES, 0, 3, -1);
+  CHECK(t.gl.GetError() == INVALID_VALUE);
+  t.gl.DrawElementsInstanced(TRIANGLES, 6, UNSIGNED_BYTE, 0, -1);
+  CHECK(t.gl.GetError() == INVALID_VALUE);
+  t.gl.DrawElementsInstancedBaseVertex(TRIANGLES, 6, FLOAT, 0, 1, 0);
+  CHECK(t.gl.GetError() == INVALID_ENUM);
+  t.gl.DrawElementsInstanced(TRIANGLES, 6, UNSIGNED_BYTE, 4, 2);  // past the end of the element buffer
+  CHECK(t.gl.GetError() == INVALID_OPERATION);
+  t.gl.DrawArraysInstanced(TRIANGLES, 0, 3, 0);  // nothing to draw, no error
+  t.gl.DrawElementsInstanced(TRIANGLES, 6, UNSIGNED_BYTE, 0, 0);
+  CHECK(t.gl.GetError() == NO_ERROR);
+  t.gl.VertexAttribDivisor(kMaxVertexAttribs, 1);
+  CHECK(t.gl.GetError() == INVALID_VALUE);
+  for (std::uint32_t c : t.Slots()) CHECK(c == 0);
+  t.gl.BindVertexArray(0);
+  t.gl.VertexAttribDivisor(1, 1);
+  CHECK(t.gl.GetError() == INVALID_OPERATION);
+  t.gl.DrawArraysInstanced(TRIANGLES, 0, 3, 2);
+  CHECK(t.gl.GetError() == INVALID_OPERATION);
+}
+
 TEST_CASE("polygon mode draws edges or vertices", "[context]") {
   Context gl(16, 16);
   SolidShader shader;

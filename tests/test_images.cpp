@@ -78,6 +78,8 @@ TEST_CASE("image: shadow map", "[image]") { CompareWithGolden("shadow_map", scen
 
 TEST_CASE("image: post-processing", "[image]") { CompareWithGolden("post_process", scenes::PostProcess(640, 480)); }
 
+TEST_CASE("image: instancing", "[image]") { CompareWithGolden("instancing", scenes::Instancing(800, 500)); }
+
 TEST_CASE("image: environment map", "[image]") {
   CompareWithGolden("environment_map", scenes::EnvironmentMap(640, 480));
 }

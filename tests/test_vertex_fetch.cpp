@@ -139,16 +139,39 @@ TEST_CASE("FetchVertices: enabled attributes per vertex, disabled ones their cur
   plan.attrib[5].current = glm::vec4(0.25f, 0.5f, 0.75f, 1.0f);  // disabled
   std::vector<glm::vec4> out(3 * kMaxVertexAttribs, glm::vec4(-1.0f));
   const std::uint32_t indices[3] = {2, 0, 1};
-  detail::FetchVertices(plan, indices, 3, out.data());
+  detail::FetchVertices(plan, indices, 3, 0, out.data());
   CHECK(out[0] == glm::vec4(7, 8, 9, 1));
   CHECK(out[kMaxVertexAttribs] == glm::vec4(1, 2, 3, 1));
   CHECK(out[2 * kMaxVertexAttribs + 5] == glm::vec4(0.25f, 0.5f, 0.75f, 1.0f));
   CHECK(out[kMaxVertexAttribs + 7] == glm::vec4(0, 0, 0, 1));  // never set: the default current value
   // Again without filling the disabled slots: they keep what the first call wrote, the enabled ones change.
   const std::uint32_t again[3] = {0, 1, 2};
-  detail::FetchVertices(plan, again, 3, out.data(), false);
+  detail::FetchVertices(plan, again, 3, 0, out.data(), false);
   CHECK(out[0] == glm::vec4(1, 2, 3, 1));
   CHECK(out[5] == glm::vec4(0.25f, 0.5f, 0.75f, 1.0f));
+}
+
+TEST_CASE("FetchVertices: an attribute with a divisor reads element instance / divisor for every vertex",
+          "[vertex_fetch]") {
+  const std::vector<float> positions = {1, 2, 3, 4, 5, 6, 7, 8, 9};
+  const std::vector<float> offsets = {10, 20, 30, 40};  // one vec2 per instance pair
+  detail::FetchPlan plan;
+  plan.attrib[0] = Source(positions, 3, FLOAT, false);
+  plan.attrib[0].stride = 12;
+  plan.attrib[1] = Source(offsets, 2, FLOAT, false);
+  plan.attrib[1].stride = 8;
+  plan.attrib[1].divisor = 2;
+  std::vector<glm::vec4> out(3 * kMaxVertexAttribs);
+  const std::uint32_t indices[3] = {2, 0, 1};
+  for (std::uint32_t instance : {0u, 1u, 2u, 3u, 4u}) {
+    detail::FetchVertices(plan, indices, 3, instance, out.data());
+    // Instances 0 and 1 read element 0, 2 and 3 element 1, 4 element 2: past the end, (0, 0, 0, 1).
+    const glm::vec4 want = instance < 2   ? glm::vec4(10, 20, 0, 1)
+                           : instance < 4 ? glm::vec4(30, 40, 0, 1)
+                                          : glm::vec4(0, 0, 0, 1);
+    for (int v = 0; v < 3; ++v) CHECK(out[std::size_t(v) * kMaxVertexAttribs + 1] == want);
+    CHECK(out[0] == glm::vec4(7, 8, 9, 1));  // the per-vertex attribute is unchanged by the instance
+  }
 }
 
 TEST_CASE("a disabled attribute's value reaches every vertex of a large draw", "[vertex_fetch]") {

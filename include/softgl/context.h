@@ -111,6 +111,11 @@ class Context {
                               std::size_t offset);
   void EnableVertexAttribArray(std::uint32_t index);
   void DisableVertexAttribArray(std::uint32_t index);
+  /// How attribute `index` of the bound vertex array advances: 0 (the default) once per vertex; d > 0 once per d
+  /// instances, so that instance i of an instanced draw reads element i / d for all its vertices (DrawArrays and
+  /// the other draws are instance 0). index >= kMaxVertexAttribs: INVALID_VALUE; no vertex array bound:
+  /// INVALID_OPERATION.
+  void VertexAttribDivisor(std::uint32_t index, std::uint32_t divisor);
   /// The current value of a generic attribute, read by the vertex stage while its array is disabled.
   void VertexAttrib4f(std::uint32_t index, float x, float y, float z, float w);
 
@@ -285,6 +290,14 @@ class Context {
   /// DrawElement with the promise that the indices lie in [start, end] (not relied on: any index is read as
   /// DrawElement reads it). end < start: INVALID_VALUE.
   void DrawRangeElements(Enum mode, std::uint32_t start, std::uint32_t end, int count, Enum type, std::size_t offset);
+  /// DrawArrays `instancecount` times, in order, instance i with gl_InstanceID = i (VertexLanes::instance_id) and
+  /// its divisor attributes at element i / divisor. instancecount < 0: INVALID_VALUE; 0 draws nothing.
+  void DrawArraysInstanced(Enum mode, int first, int count, int instancecount);
+  /// DrawElement `instancecount` times, as DrawArraysInstanced does DrawArrays.
+  void DrawElementsInstanced(Enum mode, int count, Enum type, std::size_t offset, int instancecount);
+  /// DrawElementsInstanced with `basevertex` added to every index (not to the instance's divisor attributes).
+  void DrawElementsInstancedBaseVertex(Enum mode, int count, Enum type, std::size_t offset, int instancecount,
+                                       int basevertex);
   /// DrawArrays(mode, first[i], count[i]) for i in [0, drawcount). drawcount, a first or a count negative:
   /// INVALID_VALUE, and nothing is drawn.
   void MultiDrawArrays(Enum mode, const int* first, const int* count, int drawcount);

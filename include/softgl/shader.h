@@ -220,6 +220,7 @@ struct VertexLanes {
   /// read (0, 0, 0, 1); a disabled attribute reads its current value (VertexAttrib4f), by default (0, 0, 0, 1).
   vec4 attrib[kMaxVertexAttribs];
   Int vertex_id;  ///< gl_VertexID: the index of each vertex (the element value for DrawElement)
+  Int instance_id;  ///< gl_InstanceID: the instance of an instanced draw (DrawArraysInstanced, ...); 0 otherwise
   const Textures* textures = nullptr;  ///< the textures bound for this draw
 
   /// textureLod(sampler2D, uv, lod) (the vertex stage has no derivatives).
@@ -314,6 +315,8 @@ struct VertexIn {
   int vertex_id;
   /// The textures bound for this draw (SampleLod only: there are no derivatives in the vertex stage).
   const Textures* textures;
+  /// gl_InstanceID: the instance of an instanced draw (DrawArraysInstanced, ...); 0 otherwise.
+  int instance_id = 0;
 };
 
 /// What a scalar vertex stage writes.
@@ -413,6 +416,7 @@ struct VertexBatch {
   const glm::vec4* attribs = nullptr;  ///< [count][kMaxVertexAttribs]
   std::uint32_t enabled = 0xFFFFu;     ///< attributes read from arrays (bit i); the others hold their current value
   const int* vertex_ids = nullptr;     ///< [count]
+  int instance_id = 0;                 ///< gl_InstanceID of every vertex of the batch
   glm::vec4* positions = nullptr;      ///< out: [count] clip-space positions
   float* point_sizes = nullptr;        ///< out: [count]
   float* varyings = nullptr;           ///< out: [count][VaryingFloats()]
@@ -450,6 +454,7 @@ void FillVertexLanes(const Batch& batch, int base, int n, VertexLanes& in) {
   std::int32_t ids[kLanes];
   for (int l = 0; l < kLanes; ++l) ids[l] = batch.vertex_ids[base + (l < n ? l : n - 1)];
   in.vertex_id = Int::Load(ids);
+  in.instance_id = Int(batch.instance_id);
 }
 template <class Varyings>
 void FillFragmentLanes(const BlockBatch& batch, int b, FragmentLanes<Varyings>& in) {
@@ -599,7 +604,9 @@ class Shader : public Program {
       for (int i = 0; i < batch.count; ++i) {
         VertexOut<Varyings> out;
         self.Vertex(
-            VertexIn{batch.attribs + std::size_t(i) * kMaxVertexAttribs, batch.vertex_ids[i], batch.textures}, out);
+            VertexIn{batch.attribs + std::size_t(i) * kMaxVertexAttribs, batch.vertex_ids[i], batch.textures,
+                     batch.instance_id},
+            out);
         batch.positions[i] = out.position;
         batch.point_sizes[i] = out.point_size;
         if constexpr (SoftglForm::Floats() > 0)

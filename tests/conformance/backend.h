@@ -60,15 +60,21 @@ struct Frame {
   std::vector<std::uint8_t> stencil;
 };
 
-/// One call of Backend::DrawVariants: an OpenGL 3.3 draw variant and its arguments.
+/// One call of Backend::DrawVariants or Backend::DrawInstanced: an OpenGL 3.3 draw variant and its arguments.
 struct DrawVariant {
-  enum class Call { kElementsBaseVertex, kRangeElements, kMultiElements, kMultiArrays };
+  enum class Call {
+    kElementsBaseVertex, kRangeElements, kMultiElements, kMultiArrays,  // DrawVariants
+    kArraysInstanced, kElementsInstanced, kElementsInstancedBaseVertex  // DrawInstanced
+  };
   Call call;
   Enum mode;
-  std::vector<int> first;  // kMultiArrays: each draw's first vertex; the others: each draw's first index
-  std::vector<int> count;  // each draw's count (one draw for kElementsBaseVertex and kRangeElements)
-  int basevertex = 0;               // kElementsBaseVertex
+  std::vector<int> first;  // k*Arrays*: each draw's first vertex; the others: each draw's first index
+  std::vector<int> count;  // each draw's count (one draw except for kMultiElements and kMultiArrays)
+  int basevertex = 0;               // kElementsBaseVertex, kElementsInstancedBaseVertex
   std::uint32_t start = 0, end = 0;  // kRangeElements
+  int instances = 1;                 // the instanced calls: instancecount
+  std::uint32_t divisor = 1;         // the instanced calls: attribute 3's divisor
+  int instance_first = 0;            // the instanced calls: attribute 3 starts at this element of `instance_data`
 };
 
 class Backend {
@@ -105,6 +111,12 @@ class Backend {
   /// kColor program: DrawElementsBaseVertex, DrawRangeElements, MultiDrawElements or MultiDrawArrays.
   virtual void DrawVariants(const std::vector<Vertex>& vertices, const std::vector<std::uint32_t>& indices,
                             const std::vector<DrawVariant>& calls) = 0;
+  /// Uploads `vertices`, `indices` (UNSIGNED_INT) and `instance_data` once, then makes each instanced call of
+  /// `calls` in order with the instanced program: position = attribute 0 + (attribute 3).xy, colour = attribute 1
+  /// times 1 - gl_InstanceID % 8 / 8 in rgb; attribute 3 reads `instance_data` from element c.instance_first, with
+  /// divisor c.divisor.
+  virtual void DrawInstanced(const std::vector<Vertex>& vertices, const std::vector<std::uint32_t>& indices,
+                             const std::vector<glm::vec4>& instance_data, const std::vector<DrawVariant>& calls) = 0;
   virtual Frame Read() = 0;
   /// Defines the texture of unit 0 (replacing any before).
   virtual void SetTexture(const TextureDesc& desc) = 0;

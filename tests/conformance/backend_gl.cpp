@@ -26,6 +26,18 @@ void main() {
 }
 )";
 
+constexpr const char* kInstancedVertexShader = R"(#version 330 core
+layout(location = 0) in vec4 a_pos;
+layout(location = 1) in vec4 a_color;
+layout(location = 3) in vec4 a_offset;
+out vec4 v_color;
+void main() {
+  gl_Position = a_pos + vec4(a_offset.xy, 0.0, 0.0);
+  float k = float(gl_InstanceID % 8);
+  v_color = a_color * vec4(vec3(1.0 - 0.125 * k), 1.0);
+}
+)";
+
 constexpr const char* kColorFragment = R"(#version 330 core
 in vec4 v_color;
 out vec4 o_color;
@@ -87,9 +99,9 @@ GLuint Compile(GLenum type, const char* source, std::string* error) {
   return s;
 }
 
-GLuint Link(const char* fragment, std::string* error) {
+GLuint Link(const char* fragment, std::string* error, const char* vertex = kVertexShader) {
   const GLuint p = glCreateProgram();
-  glAttachShader(p, Compile(GL_VERTEX_SHADER, kVertexShader, error));
+  glAttachShader(p, Compile(GL_VERTEX_SHADER, vertex, error));
   glAttachShader(p, Compile(GL_FRAGMENT_SHADER, fragment, error));
   glLinkProgram(p);
   GLint ok = 0;
@@ -114,6 +126,7 @@ class GlBackend final : public Backend {
     programs_[3] = Link(kTextureFragment, error);
     programs_[4] = Link(kCubeFragment, error);
     programs_[5] = Link(kShadowFragment, error);
+    instanced_ = Link(kColorFragment, error, kInstancedVertexShader);
     glUseProgram(programs_[4]);
     glUniform1i(glGetUniformLocation(programs_[4], "u_cube"), 1);
     glUseProgram(programs_[5]);
@@ -206,8 +219,46 @@ class GlBackend final : public Backend {
         case DrawVariant::Call::kMultiArrays:
           glMultiDrawArrays(c.mode, c.first.data(), c.count.data(), GLsizei(c.count.size()));
           break;
+        default: break;  // the instanced calls: DrawInstanced
       }
     }
+  }
+
+  void DrawInstanced(const std::vector<Vertex>& vertices, const std::vector<std::uint32_t>& indices,
+                     const std::vector<glm::vec4>& instance_data, const std::vector<DrawVariant>& calls) override {
+    glUseProgram(instanced_);
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(vertices.size() * sizeof(Vertex)), vertices.data(), GL_STREAM_DRAW);
+    glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(indices.size() * sizeof(std::uint32_t)), indices.data(),
+                 GL_STREAM_DRAW);
+    GLuint instance_vbo = 0;
+    glGenBuffers(1, &instance_vbo);
+    glBindBuffer(GL_ARRAY_BUFFER, instance_vbo);
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(instance_data.size() * sizeof(glm::vec4)), instance_data.data(),
+                 GL_STREAM_DRAW);
+    glEnableVertexAttribArray(3);
+    auto at = [](int first) { return reinterpret_cast<const void*>(std::uintptr_t(first) * sizeof(std::uint32_t)); };
+    for (const DrawVariant& c : calls) {
+      glVertexAttribPointer(3, 4, GL_FLOAT, GL_FALSE, 0,
+                            reinterpret_cast<const void*>(std::uintptr_t(c.instance_first) * sizeof(glm::vec4)));
+      glVertexAttribDivisor(3, c.divisor);
+      switch (c.call) {
+        case DrawVariant::Call::kArraysInstanced:
+          glDrawArraysInstanced(c.mode, c.first[0], c.count[0], c.instances);
+          break;
+        case DrawVariant::Call::kElementsInstanced:
+          glDrawElementsInstanced(c.mode, c.count[0], GL_UNSIGNED_INT, at(c.first[0]), c.instances);
+          break;
+        case DrawVariant::Call::kElementsInstancedBaseVertex:
+          glDrawElementsInstancedBaseVertex(c.mode, c.count[0], GL_UNSIGNED_INT, const_cast<void*>(at(c.first[0])),
+                                            c.instances, c.basevertex);
+          break;
+        default: break;
+      }
+    }
+    glDisableVertexAttribArray(3);
+    glVertexAttribDivisor(3, 0);
+    glBindBuffer(GL_ARRAY_BUFFER, vbo_);
+    glDeleteBuffers(1, &instance_vbo);
   }
 
   void SetTexture(const TextureDesc& d) override {
@@ -305,6 +356,7 @@ class GlBackend final : public Backend {
   int w_, h_;
   std::vector<std::uint8_t> buffer_;
   GLuint programs_[6] = {};
+  GLuint instanced_ = 0;
   GLuint rtt_color_ = 0;
   GLuint vao_ = 0, vbo_ = 0, ebo_ = 0;
 };

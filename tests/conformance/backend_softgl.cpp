@@ -104,6 +104,22 @@ struct ShadowShader : softgl::Shader<ShadowShader, ShadowVaryings> {
   }
 };
 
+// The instanced program, in the wide form (gl_InstanceID is an Int lane).
+struct InstancedVaryings {
+  softgl::vec4 color;
+};
+
+struct InstancedShader : softgl::Shader<InstancedShader, InstancedVaryings> {
+  void Vertex(const softgl::VertexLanes& in, softgl::VertexLanesOut<InstancedVaryings>& out) const {
+    out.position = in.attrib[0] + softgl::vec4(in.attrib[3].x, in.attrib[3].y, 0.0f, 0.0f);
+    const softgl::Float k = softgl::Float(in.instance_id % 8);
+    out.varyings.color = in.attrib[1] * softgl::vec4(softgl::vec3(1.0f - 0.125f * k), 1.0f);
+  }
+  void Fragment(const softgl::FragmentLanes<InstancedVaryings>& in, softgl::FragmentLanesOut& out) const {
+    out.color[0] = in.varyings.color;
+  }
+};
+
 class SoftglBackend final : public Backend {
  public:
   SoftglBackend(int w, int h) : gl_(w, h) {
@@ -190,8 +206,44 @@ class SoftglBackend final : public Backend {
         case DrawVariant::Call::kMultiArrays:
           gl_.MultiDrawArrays(c.mode, c.first.data(), c.count.data(), int(c.count.size()));
           break;
+        default: break;  // the instanced calls: DrawInstanced
       }
     }
+  }
+
+  void DrawInstanced(const std::vector<Vertex>& vertices, const std::vector<std::uint32_t>& indices,
+                     const std::vector<glm::vec4>& instance_data, const std::vector<DrawVariant>& calls) override {
+    gl_.UseProgram(instanced_);
+    gl_.BufferData(softgl::ARRAY_BUFFER, std::ptrdiff_t(vertices.size() * sizeof(Vertex)), vertices.data());
+    gl_.BufferData(softgl::ELEMENT_ARRAY_BUFFER, std::ptrdiff_t(indices.size() * sizeof(std::uint32_t)),
+                   indices.data());
+    const std::uint32_t instance_vbo = gl_.GenBuffer();
+    gl_.BindBuffer(softgl::ARRAY_BUFFER, instance_vbo);
+    gl_.BufferData(softgl::ARRAY_BUFFER, std::ptrdiff_t(instance_data.size() * sizeof(glm::vec4)),
+                   instance_data.data());
+    gl_.EnableVertexAttribArray(3);
+    auto at = [](int first) { return std::size_t(first) * sizeof(std::uint32_t); };
+    for (const DrawVariant& c : calls) {
+      gl_.VertexAttributePointer(3, 4, softgl::FLOAT, false, 0, std::size_t(c.instance_first) * sizeof(glm::vec4));
+      gl_.VertexAttribDivisor(3, c.divisor);
+      switch (c.call) {
+        case DrawVariant::Call::kArraysInstanced:
+          gl_.DrawArraysInstanced(c.mode, c.first[0], c.count[0], c.instances);
+          break;
+        case DrawVariant::Call::kElementsInstanced:
+          gl_.DrawElementsInstanced(c.mode, c.count[0], softgl::UNSIGNED_INT, at(c.first[0]), c.instances);
+          break;
+        case DrawVariant::Call::kElementsInstancedBaseVertex:
+          gl_.DrawElementsInstancedBaseVertex(c.mode, c.count[0], softgl::UNSIGNED_INT, at(c.first[0]), c.instances,
+                                              c.basevertex);
+          break;
+        default: break;
+      }
+    }
+    gl_.DisableVertexAttribArray(3);
+    gl_.VertexAttribDivisor(3, 0);
+    gl_.BindBuffer(softgl::ARRAY_BUFFER, vbo_);
+    gl_.DeleteBuffer(instance_vbo);
   }
 
   void SetTexture(const TextureDesc& d) override {
@@ -278,6 +330,7 @@ class SoftglBackend final : public Backend {
   softgl::Context gl_;
   std::uint32_t vao_, vbo_, ebo_;
   ColorShader color_;
+  InstancedShader instanced_;
   UvShader uv_;
   LitShader lit_;
   TextureShader texture_;

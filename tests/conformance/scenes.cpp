@@ -234,6 +234,39 @@ void DrawVariants(Backend& b) {
   b.DrawVariants(v, idx, calls);
 }
 
+// A 4 x 3 grid of cells drawn by instanced calls, each instance placed by attribute 3 (divisor 1 or 2) and
+// darkened by gl_InstanceID: row 0 one quad by DrawElementsInstanced, row 1 a fan by DrawArraysInstanced with
+// divisor 2 (instances 2k and 2k + 1 in the same cell, the odd one on top), row 2 another quad through relative
+// indices by DrawElementsInstancedBaseVertex.
+void Instancing(Backend& b) {
+  ClearBlack(b);
+  std::vector<Vertex> v;
+  const glm::vec2 quad[4] = {{3.25f, 4.5f}, {28.75f, 6.5f}, {25.75f, 37.5f}, {4.25f, 33.5f}};
+  const glm::vec2 fan[4] = {{6.5f, 3.25f}, {29.25f, 10.5f}, {22.5f, 36.75f}, {2.75f, 29.5f}};
+  for (int k = 0; k < 4; ++k) v.push_back({Win(quad[k].x, quad[k].y), Palette(unsigned(k))});
+  for (int k = 0; k < 4; ++k) v.push_back({Win(fan[k].x, fan[k].y), Palette(unsigned(4 + k))});
+  std::vector<std::uint32_t> idx = {0, 1, 2, 0, 2, 3};
+  std::vector<glm::vec4> offsets;  // cell (column, row) in clip units, row by row
+  for (int row = 0; row < 3; ++row)
+    for (int col = 0; col < 4; ++col) offsets.push_back(glm::vec4(float(col) * 0.5f, float(row) * 42.0f / 64.0f, 0, 0));
+  using Call = DrawVariant::Call;
+  std::vector<DrawVariant> calls;
+  DrawVariant c{Call::kElementsInstanced, TRIANGLES, {0}, {6}};
+  c.instances = 4;
+  calls.push_back(c);
+  c = {Call::kArraysInstanced, TRIANGLE_FAN, {4}, {4}};
+  c.instances = 8;
+  c.divisor = 2;
+  c.instance_first = 4;
+  calls.push_back(c);
+  c = {Call::kElementsInstancedBaseVertex, TRIANGLES, {0}, {6}};
+  c.basevertex = 4;
+  c.instances = 4;
+  c.instance_first = 8;
+  calls.push_back(c);
+  b.DrawInstanced(v, idx, offsets, calls);
+}
+
 // ---- Clipping and interpolation ------------------------------------------------------------------------------------
 
 void Clipping(Backend& b) {
@@ -650,6 +683,7 @@ const std::vector<SceneInfo>& Scenes() {
       {"polygon_mode_line", kSize, kSize, Check::kExact, PolygonModeLine},
       {"culling", kSize, kSize, Check::kExact, Culling},
       {"draw_variants", kSize, kSize, Check::kColor, DrawVariants},
+      {"instancing", kSize, kSize, Check::kColor, Instancing},
       {"clipping", kSize, kSize, Check::kColor, Clipping},
       {"perspective", kSize, kSize, Check::kColor, Perspective},
       {"depth_functions", kSize, kSize, Check::kExactWithDepth, DepthFunctions},

@@ -112,18 +112,28 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                                   in.Int(-4, 64), std::size_t(std::uint32_t(in.Int(0, 256))));
         break;
       case 7: gl.EnableVertexAttribArray(std::uint32_t(in.Int(0, 16))); break;
-      case 8: gl.DisableVertexAttribArray(std::uint32_t(in.Int(0, 16))); break;
+      case 8:
+        if (in.Byte() % 2) gl.DisableVertexAttribArray(std::uint32_t(in.Int(0, 16)));
+        else gl.VertexAttribDivisor(std::uint32_t(in.Int(0, 16)), std::uint32_t(in.Int(0, 3)));
+        break;
       case 9: gl.UseProgram(shader); break;
       case 10: {
         const std::uint32_t mode = in.Enum(kModes);
         const int first = in.Int(-2, 64);
         const int count = draw_count();
-        if (in.Byte() % 2 == 0) {  // (an input that ends here: DrawArrays)
-          gl.DrawArrays(mode, first, count);
-        } else {
-          const int firsts[3] = {first, in.Int(-2, 64), in.Int(-2, 64)};
-          const int counts[3] = {count, draw_count(), draw_count()};
-          gl.MultiDrawArrays(mode, firsts, counts, std::min(in.Int(-1, 3), 3));  // the arrays hold 3
+        switch (in.Byte() % 3) {  // (an input that ends here: DrawArrays)
+          case 0: gl.DrawArrays(mode, first, count); break;
+          case 1: {
+            const int firsts[3] = {first, in.Int(-2, 64), in.Int(-2, 64)};
+            const int counts[3] = {count, draw_count(), draw_count()};
+            gl.MultiDrawArrays(mode, firsts, counts, std::min(in.Int(-1, 3), 3));  // the arrays hold 3
+            break;
+          }
+          default: {  // instances share the budget the count took
+            const int instances = in.Int(-1, 4);
+            gl.DrawArraysInstanced(mode, first, instances > 1 ? count / instances : count, instances);
+            break;
+          }
         }
         break;
       }
@@ -132,8 +142,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         const int count = draw_count();
         const std::uint32_t type = in.Enum(kIndexTypes);
         const auto offset = std::size_t(std::uint32_t(in.Int(0, 512)));
-        switch (in.Byte() % 4) {  // (an input that ends here: DrawElement)
+        switch (in.Byte() % 5) {  // (an input that ends here: DrawElement)
           case 0: gl.DrawElement(mode, count, type, offset); break;
+          case 3: {  // instances share the budget the count took
+            const int instances = in.Int(-1, 4);
+            gl.DrawElementsInstancedBaseVertex(mode, instances > 1 ? count / instances : count, type, offset,
+                                               instances, in.Int(-64, 64));
+            break;
+          }
           case 1: gl.DrawElementsBaseVertex(mode, count, type, offset, in.Int(-64, 64)); break;
           case 2: gl.DrawRangeElements(mode, in.Get<std::uint32_t>(), in.Get<std::uint32_t>(), count, type, offset); break;
           default: {
