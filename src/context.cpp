@@ -151,6 +151,8 @@ struct ContextState {
   detail::PrimitiveState primitive;
   bool scissor_enabled = false;
   int scissor[4] = {0, 0, 0, 0};
+  bool primitive_restart = false, primitive_restart_fixed = false;
+  std::uint32_t restart_index = 0;  // PrimitiveRestartIndex
   detail::FragmentOpsState ops;
 
   float clear_color[4] = {0, 0, 0, 0};
@@ -468,6 +470,8 @@ bool* CapFlag(ContextState& s, Enum cap) {
     case POLYGON_OFFSET_FILL: return &s.primitive.offset_fill;
     case POLYGON_OFFSET_LINE: return &s.primitive.offset_line;
     case POLYGON_OFFSET_POINT: return &s.primitive.offset_point;
+    case PRIMITIVE_RESTART: return &s.primitive_restart;
+    case PRIMITIVE_RESTART_FIXED_INDEX: return &s.primitive_restart_fixed;
     default: return nullptr;
   }
 }
@@ -493,6 +497,8 @@ bool Context::IsEnabled(Enum cap) {
   }
   return *flag;
 }
+
+void Context::PrimitiveRestartIndex(std::uint32_t index) { state_->restart_index = index; }
 
 void Context::CullFace(Enum mode) {
   if (mode != FRONT && mode != BACK && mode != FRONT_AND_BACK) return state_->SetError(INVALID_ENUM, __func__, "mode must be FRONT, BACK or FRONT_AND_BACK");
@@ -805,6 +811,33 @@ void DrawIndexed(ContextState& s, const char* what, Enum mode, int count, Enum t
     return s.SetError(OUT_OF_MEMORY, what, "out of memory");
   }
   detail::ReadIndices(type, s.vao->element_buffer->data.data() + offset, count, elements.data());
+  // Primitive restart: the positions of the restart index, compared before basevertex is added (OpenGL 4.6,
+  // section 10.3.6); PRIMITIVE_RESTART_FIXED_INDEX (2^N - 1 for N-bit indices) takes precedence. Each marker then
+  // takes its neighbour's value, so that it widens the range of indices shaded by nothing.
+  std::vector<std::uint32_t>& restarts = s.scratch.restarts;
+  restarts.clear();
+  if (s.primitive_restart || s.primitive_restart_fixed) {
+    const std::uint32_t marker = !s.primitive_restart_fixed ? s.restart_index
+                                 : type == UNSIGNED_BYTE    ? 0xFFu
+                                 : type == UNSIGNED_SHORT   ? 0xFFFFu
+                                                            : 0xFFFFFFFFu;
+    try {
+      for (int i = 0; i < count; ++i)
+        if (elements[std::size_t(i)] == marker) restarts.push_back(std::uint32_t(i));
+    } catch (const std::bad_alloc&) {
+      return s.SetError(OUT_OF_MEMORY, what, "out of memory");
+    }
+    if (restarts.size() == std::size_t(count)) return;  // nothing but restarts
+    for (std::uint32_t i : restarts) {  // the previous element (already replaced), or the first non-marker
+      if (i > 0) {
+        elements[i] = elements[i - 1];
+      } else {
+        std::size_t k = 0;
+        while (elements[k] == marker) ++k;
+        elements[0] = elements[k];
+      }
+    }
+  }
   if (basevertex != 0)
     for (std::uint32_t& e : elements) {
       const std::int64_t v = std::int64_t(e) + basevertex;
@@ -815,6 +848,8 @@ void DrawIndexed(ContextState& s, const char* what, Enum mode, int count, Enum t
   call.count = count;
   call.elements = elements.data();
   call.instances = instances;
+  call.restarts = restarts.empty() ? nullptr : restarts.data();
+  call.restart_count = int(restarts.size());
   s.Draw(call);
 }
 

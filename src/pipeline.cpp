@@ -285,7 +285,7 @@ void RecordChunk(const DrawCall& call, const FetchPlan& fetch, const DrawState& 
   ShadeVertices(call, fetch, *state.program, state.textures, state.interpolation, state.viewport, pool, scratch);
 
   Primitives& prims = scratch.primitives;
-  AssemblePrimitives(call.mode, call.count, prims, state.primitive.provoking_first);
+  AssemblePrimitives(call.mode, call.count, call.restarts, call.restart_count, prims, state.primitive.provoking_first);
   const int per = prims.vertices_per_primitive;
   if (per < 1 || per > 3) return;
   // Instance g of the piece repeats the primitives with its own shaded vertices, g * unique further on.
@@ -329,6 +329,48 @@ void RecordPiece(const DrawCall& call, const FetchPlan& fetch, const DrawState& 
   RecordChunk(call, fetch, state, packet, frame, pool, scratch);
 }
 
+// A large draw with primitive restart: its runs (the element sequences between restart positions) in order, runs
+// shorter than kDrawChunk gathered into pieces of several runs (a restart between each two), longer ones drawn
+// on their own, each in pieces.
+void RecordRestartRuns(const DrawCall& call, const FetchPlan& fetch, const DrawState& state, const DrawPacket& packet,
+                       const RenderTarget& target, Frame& frame, WorkerPool& pool, Scratch& scratch) {
+  std::vector<std::uint32_t> group, group_restarts;
+  auto flush = [&] {
+    if (group.empty()) return;
+    DrawCall sub = call;
+    sub.elements = group.data();
+    sub.count = int(group.size());
+    sub.restarts = group_restarts.empty() ? nullptr : group_restarts.data();
+    sub.restart_count = int(group_restarts.size());
+    RecordPiece(sub, fetch, state, packet, target, frame, pool, scratch);
+    group.clear();
+    group_restarts.clear();
+  };
+  std::uint32_t begin = 0;
+  for (int r = 0; r <= call.restart_count; ++r) {
+    const std::uint32_t end = r < call.restart_count ? call.restarts[r] : std::uint32_t(call.count);
+    const int length = int(end - begin);
+    if (length > kDrawChunk) {  // a run of its own, in pieces
+      flush();
+      DrawCall sub = call;
+      sub.elements = call.elements + begin;
+      sub.count = length;
+      sub.restarts = nullptr;
+      sub.restart_count = 0;
+      RecordDraw(sub, fetch, state, packet, target, frame, pool, scratch);
+    } else if (length > 0) {
+      if (group.size() + std::size_t(length) + 1 > std::size_t(kDrawChunk)) flush();
+      if (!group.empty()) {  // a restart position between runs, holding a copy of the run's first element
+        group_restarts.push_back(std::uint32_t(group.size()));
+        group.push_back(call.elements[begin]);
+      }
+      group.insert(group.end(), call.elements + begin, call.elements + end);
+    }
+    begin = end + 1;
+  }
+  flush();
+}
+
 }  // namespace
 
 void RecordDraw(const DrawCall& call, const FetchPlan& fetch, const DrawState& state, const DrawPacket& packet,
@@ -354,6 +396,7 @@ void RecordDraw(const DrawCall& call, const FetchPlan& fetch, const DrawState& s
     }
     return;
   }
+  if (call.restart_count > 0) return RecordRestartRuns(call, fetch, state, packet, target, frame, pool, scratch);
 
   // A large draw goes through in pieces of at most kDrawChunk vertices, so that memory stays bounded whatever the
   // count. Each piece is an explicit element list of the draw's own vertex indices (gl_VertexID is kept); strips

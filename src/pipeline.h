@@ -59,6 +59,10 @@ struct DrawCall {
   const std::uint32_t* elements = nullptr;  // null for DrawArrays
   std::uint32_t instance = 0;  // gl_InstanceID of the first instance drawn
   int instances = 1;           // instances drawn, in order: instance, instance + 1, ...
+  // Primitive restart: positions in `elements` (ascending) that end one primitive sequence and start the next;
+  // the elements there are not vertices of any primitive.
+  const std::uint32_t* restarts = nullptr;
+  int restart_count = 0;
 };
 
 /// Memory one worker thread reuses while shading vertices.
@@ -71,6 +75,7 @@ struct VertexScratch {
 /// before it.
 struct Scratch {
   std::vector<std::uint32_t> elements;       // DrawElement's indices, read from the element buffer
+  std::vector<std::uint32_t> restarts;       // positions of the primitive restart index among them
   std::vector<std::uint32_t> piece;          // the indices of one piece of a large draw
   std::vector<std::uint32_t> shade_indices;  // vertex index of each vertex to shade
   std::vector<std::uint32_t> element_to_shaded;

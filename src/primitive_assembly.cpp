@@ -16,51 +16,65 @@ int VerticesPerPrimitive(Enum mode) {
   }
 }
 
-void AssemblePrimitives(Enum mode, int count, Primitives& out, bool first_vertex_convention) {
-  out.vertices_per_primitive = VerticesPerPrimitive(mode);
-  auto& idx = out.indices;
-  idx.clear();
+namespace {
+
+// Appends the primitives of `count` vertices at positions b .. b + count - 1.
+void AssembleRun(Enum mode, std::uint32_t b, int count, std::vector<std::uint32_t>& idx, bool first_vertex_convention) {
   if (count <= 0) return;
-  const std::uint32_t n = std::uint32_t(count);
+  const std::uint32_t n = b + std::uint32_t(count);  // one past the run's last position
   switch (mode) {
     case POINTS:
-      idx.reserve(n);
-      for (std::uint32_t i = 0; i < n; ++i) idx.push_back(i);
+      for (std::uint32_t i = b; i < n; ++i) idx.push_back(i);
       break;
     case LINES:
-      idx.reserve(n & ~1u);
-      for (std::uint32_t i = 0; i + 1 < n; i += 2) idx.insert(idx.end(), {i, i + 1});
+      for (std::uint32_t i = b; i + 1 < n; i += 2) idx.insert(idx.end(), {i, i + 1});
       break;
     case LINE_STRIP:
     case LINE_LOOP:
-      if (n < 2) break;
-      idx.reserve(2 * n);
-      for (std::uint32_t i = 0; i + 1 < n; ++i) idx.insert(idx.end(), {i, i + 1});
-      if (mode == LINE_LOOP) idx.insert(idx.end(), {n - 1, 0u});
+      if (count < 2) break;
+      for (std::uint32_t i = b; i + 1 < n; ++i) idx.insert(idx.end(), {i, i + 1});
+      if (mode == LINE_LOOP) idx.insert(idx.end(), {n - 1, b});
       break;
     case TRIANGLES:
-      idx.reserve(n / 3 * 3);
-      for (std::uint32_t i = 0; i + 2 < n; i += 3) idx.insert(idx.end(), {i, i + 1, i + 2});
+      for (std::uint32_t i = b; i + 2 < n; i += 3) idx.insert(idx.end(), {i, i + 1, i + 2});
       break;
     case TRIANGLE_STRIP:
-      if (n < 3) break;
-      idx.reserve(3 * (n - 2));
-      for (std::uint32_t i = 0; i + 2 < n; ++i) {
-        if (i % 2 == 0) idx.insert(idx.end(), {i, i + 1, i + 2});
+      if (count < 3) break;
+      for (std::uint32_t i = b; i + 2 < n; ++i) {
+        if ((i - b) % 2 == 0) idx.insert(idx.end(), {i, i + 1, i + 2});
         else if (first_vertex_convention) idx.insert(idx.end(), {i, i + 2, i + 1});  // (i + 1, i, i + 2) rotated
         else idx.insert(idx.end(), {i + 1, i, i + 2});
       }
       break;
     case TRIANGLE_FAN:
-      if (n < 3) break;
-      idx.reserve(3 * (n - 2));
-      for (std::uint32_t i = 1; i + 1 < n; ++i) {
-        if (first_vertex_convention) idx.insert(idx.end(), {i, i + 1, 0u});  // provoking vertex i, as table 13.2
-        else idx.insert(idx.end(), {0u, i, i + 1});
+      if (count < 3) break;
+      for (std::uint32_t i = b + 1; i + 1 < n; ++i) {
+        if (first_vertex_convention) idx.insert(idx.end(), {i, i + 1, b});  // provoking vertex i, as table 13.2
+        else idx.insert(idx.end(), {b, i, i + 1});
       }
       break;
     default: break;
   }
+}
+
+}  // namespace
+
+void AssemblePrimitives(Enum mode, int count, Primitives& out, bool first_vertex_convention) {
+  AssemblePrimitives(mode, count, nullptr, 0, out, first_vertex_convention);
+}
+
+void AssemblePrimitives(Enum mode, int count, const std::uint32_t* restarts, int restart_count, Primitives& out,
+                        bool first_vertex_convention) {
+  out.vertices_per_primitive = VerticesPerPrimitive(mode);
+  out.indices.clear();
+  if (count <= 0) return;
+  out.indices.reserve(std::size_t(count) * 3);  // enough for any mode (a loop adds one line per run)
+  std::uint32_t begin = 0;
+  for (int r = 0; r < restart_count; ++r) {
+    AssembleRun(mode, begin, int(restarts[r] - begin), out.indices, first_vertex_convention);
+    begin = restarts[r] + 1;
+  }
+  AssembleRun(mode, begin, count - int(begin), out.indices, first_vertex_convention);
 }
 
 }  // namespace softgl::detail

@@ -22,6 +22,11 @@ struct Primitives {
 /// rotated, which keeps their winding, to bring it first).
 void AssemblePrimitives(Enum mode, int count, Primitives& out, bool first_vertex_convention = false);
 
+/// As AssemblePrimitives, with primitive restart: the positions restarts[0 .. restart_count) (ascending) are no
+/// vertices; each run of positions between them is assembled on its own, as if it were a draw of its own.
+void AssemblePrimitives(Enum mode, int count, const std::uint32_t* restarts, int restart_count, Primitives& out,
+                        bool first_vertex_convention = false);
+
 /// 1, 2 or 3 for a valid mode, 0 otherwise.
 int VerticesPerPrimitive(Enum mode);
 

@@ -599,6 +599,152 @@ TEST_CASE("instanced draws' errors, as OpenGL gives them", "[context][errors]") 
   CHECK(t.gl.GetError() == INVALID_OPERATION);
 }
 
+namespace {
+
+// Additive blending of a dim colour: the image counts how often each pixel was drawn, so a primitive missed or
+// drawn twice shows.
+struct CountingScene {
+  Context gl{64, 64};
+  SolidShader shader;
+  CountingScene(const std::vector<glm::vec4>& positions, const std::vector<std::uint32_t>& indices, Enum type) {
+    shader.color = glm::vec4(16.0f / 255.0f, 0, 0, 1);
+    gl.UseProgram(shader);
+    gl.Enable(BLEND);
+    gl.BlendFunc(ONE, ONE);
+    MakeVertexArray(gl, positions);
+    std::vector<std::uint8_t> bytes;
+    for (std::uint32_t i : indices) {
+      const std::size_t size = type == UNSIGNED_BYTE ? 1 : type == UNSIGNED_SHORT ? 2 : 4;
+      for (std::size_t b = 0; b < size; ++b) bytes.push_back(std::uint8_t(i >> (8 * b)));
+    }
+    gl.BindBuffer(ELEMENT_ARRAY_BUFFER, gl.GenBuffer());
+    gl.BufferData(ELEMENT_ARRAY_BUFFER, std::ptrdiff_t(bytes.size()), bytes.data());
+  }
+};
+
+// A ring of 40 points around the centre of the framebuffer, and index lists over it.
+std::vector<glm::vec4> Ring() {
+  std::vector<glm::vec4> v;
+  for (int i = 0; i < 40; ++i) {
+    const float a = 0.157f * float(i), r = i % 2 ? 0.9f : 0.45f;
+    v.push_back(glm::vec4(r * std::cos(a), r * std::sin(a), 0, 1));
+  }
+  return v;
+}
+
+}  // namespace
+
+TEST_CASE("primitive restart: an indexed draw with restarts draws what its runs draw one by one", "[context]") {
+  // Runs of 5, 1, 0, 7 and 4 elements; the restart index is 39 (a real vertex of the ring when not a restart).
+  const std::vector<std::vector<std::uint32_t>> runs = {{0, 1, 2, 3, 4}, {5}, {}, {8, 9, 10, 11, 12, 13, 14},
+                                                        {20, 21, 22, 23}};
+  for (Enum mode : {POINTS, LINES, LINE_STRIP, LINE_LOOP, TRIANGLES, TRIANGLE_STRIP, TRIANGLE_FAN}) {
+    for (Enum type : {UNSIGNED_BYTE, UNSIGNED_SHORT, UNSIGNED_INT}) {
+      INFO("mode " << mode << ", type " << type);
+      const std::uint32_t fixed = type == UNSIGNED_BYTE ? 0xFFu : type == UNSIGNED_SHORT ? 0xFFFFu : 0xFFFFFFFFu;
+      for (bool use_fixed : {false, true}) {
+        const std::uint32_t marker = use_fixed ? fixed : 39;
+        std::vector<std::uint32_t> all = {marker};  // a leading restart too
+        for (const auto& run : runs) {
+          all.insert(all.end(), run.begin(), run.end());
+          all.push_back(marker);
+        }
+        all.pop_back();
+        CountingScene with(Ring(), all, type), separate(Ring(), all, type);
+        with.gl.Enable(use_fixed ? PRIMITIVE_RESTART_FIXED_INDEX : PRIMITIVE_RESTART);
+        with.gl.PrimitiveRestartIndex(use_fixed ? 7 : 39);  // ignored while the fixed index is enabled
+        with.gl.DrawElement(mode, int(all.size()), type, 0);
+        CHECK(with.gl.GetError() == NO_ERROR);
+        std::size_t at = 1;  // each run from its place in the element buffer
+        for (const auto& run : runs) {
+          const std::size_t size = type == UNSIGNED_BYTE ? 1 : type == UNSIGNED_SHORT ? 2 : 4;
+          separate.gl.DrawElement(mode, int(run.size()), type, at * size);
+          at += run.size() + 1;
+        }
+        const Image a = with.gl.ReadPixels(), b = separate.gl.ReadPixels();
+        CHECK(a.rgba == b.rgba);
+      }
+    }
+  }
+}
+
+TEST_CASE("primitive restart: compared before the base vertex, off for DrawArrays and when disabled", "[context]") {
+  // Elements {0, 1, 2, 3, 39, 5, 6, 7, 8} as a strip: with restart, two runs of 4.
+  const std::vector<std::uint32_t> idx = {0, 1, 2, 3, 39, 5, 6, 7, 8};
+  CountingScene a(Ring(), idx, UNSIGNED_SHORT), b(Ring(), idx, UNSIGNED_SHORT);
+  a.gl.Enable(PRIMITIVE_RESTART);
+  a.gl.PrimitiveRestartIndex(38);  // 39 - 1: the element 39 is not the restart index, whatever basevertex says
+  a.gl.DrawElementsBaseVertex(TRIANGLE_STRIP, 9, UNSIGNED_SHORT, 0, -1);
+  b.gl.DrawElementsBaseVertex(TRIANGLE_STRIP, 9, UNSIGNED_SHORT, 0, -1);
+  CHECK(a.gl.ReadPixels().rgba == b.gl.ReadPixels().rgba);
+
+  CountingScene c(Ring(), idx, UNSIGNED_SHORT), d(Ring(), idx, UNSIGNED_SHORT);
+  c.gl.Enable(PRIMITIVE_RESTART);
+  c.gl.PrimitiveRestartIndex(39);
+  CHECK(c.gl.IsEnabled(PRIMITIVE_RESTART));
+  c.gl.DrawElementsBaseVertex(TRIANGLE_STRIP, 9, UNSIGNED_SHORT, 0, 1);  // restarts at 39, then adds 1
+  d.gl.DrawElementsBaseVertex(TRIANGLE_STRIP, 4, UNSIGNED_SHORT, 0, 1);
+  d.gl.DrawElementsBaseVertex(TRIANGLE_STRIP, 4, UNSIGNED_SHORT, 10, 1);
+  CHECK(c.gl.ReadPixels().rgba == d.gl.ReadPixels().rgba);
+
+  // DrawArrays never restarts, and a disabled restart never does.
+  CountingScene e(Ring(), idx, UNSIGNED_SHORT), f(Ring(), idx, UNSIGNED_SHORT);
+  e.gl.Enable(PRIMITIVE_RESTART);
+  e.gl.Enable(PRIMITIVE_RESTART_FIXED_INDEX);
+  e.gl.PrimitiveRestartIndex(3);
+  e.gl.DrawArrays(TRIANGLE_STRIP, 0, 40);
+  f.gl.DrawArrays(TRIANGLE_STRIP, 0, 40);
+  CHECK(e.gl.ReadPixels().rgba == f.gl.ReadPixels().rgba);
+  e.gl.Disable(PRIMITIVE_RESTART);
+  e.gl.Disable(PRIMITIVE_RESTART_FIXED_INDEX);
+  e.gl.DrawElement(TRIANGLE_STRIP, 9, UNSIGNED_SHORT, 0);
+  f.gl.DrawElement(TRIANGLE_STRIP, 9, UNSIGNED_SHORT, 0);
+  CHECK(e.gl.ReadPixels().rgba == f.gl.ReadPixels().rgba);
+  // A draw of nothing but restarts draws nothing.
+  CountingScene g(Ring(), {39, 39, 39}, UNSIGNED_SHORT);
+  g.gl.Enable(PRIMITIVE_RESTART);
+  g.gl.PrimitiveRestartIndex(39);
+  g.gl.DrawElement(TRIANGLES, 3, UNSIGNED_SHORT, 0);
+  CHECK(g.gl.GetError() == NO_ERROR);
+  CHECK(CountLit(g.gl) == 0);
+}
+
+TEST_CASE("primitive restart across the pieces of large and instanced draws", "[context]") {
+  // 70,000 strip elements over the ring, restarting every 9 elements except for one run of 50,000 (longer than a
+  // piece), against the runs drawn one by one; then instanced, against the instances drawn one by one.
+  std::vector<std::uint32_t> all, ends;
+  for (int k = 0; all.size() < 70000; ++k) {
+    const int length = k == 500 ? 50000 : 8;
+    for (int i = 0; i < length; ++i) all.push_back(std::uint32_t((k * 3 + i) % 39));
+    ends.push_back(std::uint32_t(all.size()));
+    all.push_back(39);
+  }
+  CountingScene with(Ring(), all, UNSIGNED_INT), separate(Ring(), all, UNSIGNED_INT);
+  with.shader.color = separate.shader.color = glm::vec4(1.0f / 255.0f, 0, 0, 1);
+  with.gl.Enable(PRIMITIVE_RESTART);
+  with.gl.PrimitiveRestartIndex(39);
+  with.gl.DrawElement(TRIANGLE_STRIP, int(all.size()), UNSIGNED_INT, 0);
+  std::uint32_t begin = 0;
+  for (std::uint32_t end : ends) {
+    separate.gl.DrawElement(TRIANGLE_STRIP, int(end - begin), UNSIGNED_INT, std::size_t(begin) * 4);
+    begin = end + 1;
+  }
+  CHECK(with.gl.GetError() == NO_ERROR);
+  CHECK(with.gl.ReadPixels().rgba == separate.gl.ReadPixels().rgba);
+
+  // Instanced: every instance draws all its runs (the shader moves instance i to slot i): the quad's two
+  // triangles as runs of 3, then an empty run.
+  InstanceScene inst(1);
+  WideInstanceShader shader;
+  inst.gl.UseProgram(shader);
+  const std::uint8_t idx[9] = {0, 1, 2, 255, 0, 2, 3, 255, 255};
+  inst.gl.BufferData(ELEMENT_ARRAY_BUFFER, sizeof idx, idx);
+  inst.gl.Enable(PRIMITIVE_RESTART_FIXED_INDEX);
+  inst.gl.DrawElementsInstanced(TRIANGLES, 9, UNSIGNED_BYTE, 0, 4);
+  CHECK(inst.gl.GetError() == NO_ERROR);
+  CHECK(inst.Slots() == std::vector<std::uint32_t>{0xFF0000, 0x00FF00, 0x0000FF, 0xFFFFFF});
+}
+
 TEST_CASE("polygon mode draws edges or vertices", "[context]") {
   Context gl(16, 16);
   SolidShader shader;

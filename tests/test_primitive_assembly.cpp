@@ -41,3 +41,26 @@ TEST_CASE("primitive assembly rejects unknown modes", "[primitive_assembly]") {
   CHECK(detail::VerticesPerPrimitive(TRIANGLE_FAN) == 3);
   CHECK(detail::VerticesPerPrimitive(LINE_LOOP) == 2);
 }
+
+TEST_CASE("primitive restart assembles each run on its own", "[primitive_assembly]") {
+  using V = std::vector<std::uint32_t>;
+  auto with_restarts = [](Enum mode, int count, V restarts, bool first = false) {
+    Primitives p;
+    AssemblePrimitives(mode, count, restarts.data(), int(restarts.size()), p, first);
+    return p.indices;
+  };
+  // Positions 3 and 6 restart: runs {0, 1, 2}, {4, 5}, {7, 8, 9, 10}.
+  CHECK(with_restarts(TRIANGLE_STRIP, 11, {3, 6}) == V{0, 1, 2, 7, 8, 9, 9, 8, 10});
+  CHECK(with_restarts(TRIANGLE_FAN, 11, {3, 6}) == V{0, 1, 2, 7, 8, 9, 7, 9, 10});
+  CHECK(with_restarts(TRIANGLE_FAN, 11, {3, 6}, true) == V{1, 2, 0, 8, 9, 7, 9, 10, 7});
+  CHECK(with_restarts(LINE_LOOP, 11, {3, 6}) == V{0, 1, 1, 2, 2, 0, 4, 5, 5, 4, 7, 8, 8, 9, 9, 10, 10, 7});
+  CHECK(with_restarts(LINE_STRIP, 11, {3, 6}) == V{0, 1, 1, 2, 4, 5, 7, 8, 8, 9, 9, 10});
+  CHECK(with_restarts(LINES, 11, {3, 6}) == V{0, 1, 4, 5, 7, 8, 9, 10});  // counting starts again in each run
+  CHECK(with_restarts(TRIANGLES, 11, {3, 6}) == V{0, 1, 2, 7, 8, 9});
+  CHECK(with_restarts(POINTS, 5, {0, 2}) == V{1, 3, 4});
+  // Restarts at both ends and side by side leave empty runs, which draw nothing.
+  CHECK(with_restarts(TRIANGLE_STRIP, 7, {0, 1, 5, 6}) == V{2, 3, 4});
+  CHECK(with_restarts(TRIANGLE_STRIP, 4, {0, 1, 2, 3}).empty());
+  // Strip parity counts from each run's start: the second run's first triangle is not swapped.
+  CHECK(with_restarts(TRIANGLE_STRIP, 8, {4}) == V{0, 1, 2, 2, 1, 3, 5, 6, 7});
+}

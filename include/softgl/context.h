@@ -209,10 +209,17 @@ class Context {
   /// Maps NDC depth [-1, 1] to [n, f]; both clamped to [0, 1].
   void DepthRange(double n, double f);
   /// cap: CULL_FACE, DEPTH_TEST, STENCIL_TEST, SCISSOR_TEST, BLEND, POLYGON_OFFSET_FILL, POLYGON_OFFSET_LINE,
-  /// POLYGON_OFFSET_POINT or PROGRAM_POINT_SIZE; otherwise INVALID_ENUM. All start disabled.
+  /// POLYGON_OFFSET_POINT, PROGRAM_POINT_SIZE, PRIMITIVE_RESTART or PRIMITIVE_RESTART_FIXED_INDEX; otherwise
+  /// INVALID_ENUM. All start disabled.
   void Enable(Enum cap);
   void Disable(Enum cap);
   bool IsEnabled(Enum cap);
+  /// The index value that, while PRIMITIVE_RESTART is enabled, ends the primitive sequence of an indexed draw
+  /// (DrawElement and its variants) and starts a new one, as if the draw ended there and another began after it
+  /// (default 0). It is compared with the index as read, before any base vertex is added. While
+  /// PRIMITIVE_RESTART_FIXED_INDEX is enabled the index is instead 2^N - 1 for N-bit indices (255, 65535 or
+  /// 2^32 - 1). Draws without indices (DrawArrays and its variants) never restart.
+  void PrimitiveRestartIndex(std::uint32_t index);
   /// Which faces CULL_FACE removes: FRONT, BACK (default) or FRONT_AND_BACK.
   void CullFace(Enum mode);
   /// Which winding is front-facing in window coordinates: CCW (default) or CW.

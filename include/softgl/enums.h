@@ -66,6 +66,8 @@ inline constexpr Enum BLEND = 0x0BE2;
 inline constexpr Enum POLYGON_OFFSET_POINT = 0x2A01;
 inline constexpr Enum POLYGON_OFFSET_LINE = 0x2A02;
 inline constexpr Enum POLYGON_OFFSET_FILL = 0x8037;
+inline constexpr Enum PRIMITIVE_RESTART = 0x8F9D;              // with PrimitiveRestartIndex
+inline constexpr Enum PRIMITIVE_RESTART_FIXED_INDEX = 0x8D69;  // 2^N - 1 for N-bit indices
 
 // Faces, winding and polygon modes.
 inline constexpr Enum FRONT = 0x0404;

@@ -93,6 +93,7 @@ class Backend {
   virtual void DepthMask(bool flag) = 0;
   virtual void PolygonOffset(float factor, float units) = 0;
   virtual void Scissor(int x, int y, int w, int h) = 0;
+  virtual void PrimitiveRestartIndex(std::uint32_t index) = 0;
   virtual void StencilFuncSeparate(Enum face, Enum func, int ref, std::uint32_t mask) = 0;
   virtual void StencilOpSeparate(Enum face, Enum sfail, Enum dpfail, Enum dppass) = 0;
   virtual void StencilMaskSeparate(Enum face, std::uint32_t mask) = 0;

@@ -161,6 +161,7 @@ class GlBackend final : public Backend {
   void DepthMask(bool flag) override { glDepthMask(flag); }
   void PolygonOffset(float factor, float units) override { glPolygonOffset(factor, units); }
   void Scissor(int x, int y, int w, int h) override { glScissor(x, y, w, h); }
+  void PrimitiveRestartIndex(std::uint32_t index) override { glPrimitiveRestartIndex(index); }
   void StencilFuncSeparate(Enum face, Enum func, int ref, std::uint32_t mask) override {
     glStencilFuncSeparate(face, func, ref, mask);
   }

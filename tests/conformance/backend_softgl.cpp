@@ -147,6 +147,7 @@ class SoftglBackend final : public Backend {
   void DepthMask(bool flag) override { gl_.DepthMask(flag); }
   void PolygonOffset(float factor, float units) override { gl_.PolygonOffset(factor, units); }
   void Scissor(int x, int y, int w, int h) override { gl_.Scissor(x, y, w, h); }
+  void PrimitiveRestartIndex(std::uint32_t index) override { gl_.PrimitiveRestartIndex(index); }
   void StencilFuncSeparate(Enum face, Enum func, int ref, std::uint32_t mask) override {
     gl_.StencilFuncSeparate(face, func, ref, mask);
   }

@@ -267,6 +267,72 @@ void Instancing(Backend& b) {
   b.DrawInstanced(v, idx, offsets, calls);
 }
 
+// Primitive restart over a 4 x 3 grid of cells, each a ring of 8 vertices (vertex 8c .. 8c + 7 in cell c):
+// row 0 strips and fans split by PrimitiveRestartIndex(1000), one with a base vertex (the index compared before
+// it is added); row 1 line loops split by the fixed index 2^32 - 1, and a DrawArrays, which never restarts; row 2
+// triangles whose runs leave incomplete triangles behind.
+void PrimitiveRestart(Backend& b) {
+  ClearBlack(b);
+  std::vector<Vertex> v;
+  for (int c = 0; c < 12; ++c) {
+    const float cx = float(c % 4) * 32 + 16.25f, cy = float(c / 4) * 42 + 21.5f;
+    for (int k = 0; k < 8; ++k) {
+      const float a = 0.7853982f * float(k) + 0.3f, r = k % 2 ? 13.5f : 8.25f;
+      // Row 1 (lines) in one colour per cell: lines interpolate colour differently from llvmpipe (line_interpolation).
+      v.push_back({Win(cx + r * std::cos(a), cy + r * std::sin(a)), Palette(unsigned(c / 4 == 1 ? c : 8 * c + k))});
+    }
+  }
+  const std::uint32_t R = 1000, F = 0xFFFFFFFFu;
+  auto cell = [](std::uint32_t c, std::initializer_list<std::uint32_t> ks, std::uint32_t marker) {
+    std::vector<std::uint32_t> out;
+    for (std::uint32_t k : ks) out.push_back(k == 99 ? marker : 8 * c + k);
+    return out;
+  };
+  std::vector<std::uint32_t> idx;
+  auto add = [&](const std::vector<std::uint32_t>& list) {
+    const int first = int(idx.size());
+    idx.insert(idx.end(), list.begin(), list.end());
+    return first;
+  };
+  using Call = DrawVariant::Call;
+  std::vector<DrawVariant> calls;
+  // Row 0: a strip restarting twice (cell 0), a fan restarting once (cell 1), cells 2-3 through one base-vertex
+  // list relative to cell 0 with restarts (a marker of 1000 - 16 would not restart).
+  int f = add(cell(0, {99, 0, 1, 7, 2, 99, 3, 4, 2, 5, 99}, R));
+  calls.push_back({Call::kRangeElements, TRIANGLE_STRIP, {f}, {11}, 0, 0, 1000});
+  f = add(cell(1, {0, 1, 2, 3, 99, 4, 5, 6, 7, 0}, R));
+  calls.push_back({Call::kMultiElements, TRIANGLE_FAN, {f}, {10}, 0, 0, 0});
+  f = add(cell(0, {0, 1, 2, 99, 4, 5, 6, 7, 99, 99, 3, 4}, R));
+  calls.push_back({Call::kElementsBaseVertex, TRIANGLE_FAN, {f}, {12}, 16, 0, 0});
+  calls.push_back({Call::kElementsBaseVertex, TRIANGLE_STRIP, {f}, {12}, 24, 0, 0});
+  b.Enable(PRIMITIVE_RESTART);
+  b.PrimitiveRestartIndex(R);
+  b.DrawVariants(v, idx, calls);
+
+  // Row 1 with the fixed index (which takes precedence over PrimitiveRestartIndex).
+  idx.clear();
+  calls.clear();
+  std::vector<int> firsts, counts;
+  for (std::uint32_t c = 4; c < 7; ++c) {
+    firsts.push_back(add(cell(c, {0, 1, 2, 3, 99, 4, 5, 6, 7, 99, 1000 - 8 * c, 99}, F)));
+    counts.push_back(12);
+  }
+  calls.push_back({Call::kMultiElements, LINE_LOOP, firsts, counts, 0, 0, 0});
+  calls.push_back({Call::kMultiArrays, LINE_STRIP, {56}, {8}, 0, 0, 0});  // cell 7: no restart
+  // Row 2: triangles, runs of 4, 2 and 5 elements (the leftovers of each run are dropped).
+  firsts.clear();
+  counts.clear();
+  for (std::uint32_t c = 8; c < 12; ++c) {
+    firsts.push_back(add(cell(c, {0, 1, 2, 3, 99, 4, 5, 99, 5, 6, 7, 0, 1}, F)));
+    counts.push_back(13);
+  }
+  calls.push_back({Call::kMultiElements, TRIANGLES, firsts, counts, 0, 0, 0});
+  b.Enable(PRIMITIVE_RESTART_FIXED_INDEX);
+  b.DrawVariants(v, idx, calls);
+  b.Disable(PRIMITIVE_RESTART_FIXED_INDEX);
+  b.Disable(PRIMITIVE_RESTART);
+}
+
 // ---- Clipping and interpolation ------------------------------------------------------------------------------------
 
 void Clipping(Backend& b) {
@@ -684,6 +750,7 @@ const std::vector<SceneInfo>& Scenes() {
       {"culling", kSize, kSize, Check::kExact, Culling},
       {"draw_variants", kSize, kSize, Check::kColor, DrawVariants},
       {"instancing", kSize, kSize, Check::kColor, Instancing},
+      {"primitive_restart", kSize, kSize, Check::kColor, PrimitiveRestart},
       {"clipping", kSize, kSize, Check::kColor, Clipping},
       {"perspective", kSize, kSize, Check::kColor, Perspective},
       {"depth_functions", kSize, kSize, Check::kExactWithDepth, DepthFunctions},

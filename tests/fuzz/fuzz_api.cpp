@@ -36,7 +36,8 @@ struct FuzzShader : softgl::Shader<FuzzShader, Vary> {
 using namespace softgl;
 
 constexpr std::uint32_t kCaps[] = {CULL_FACE, DEPTH_TEST, STENCIL_TEST, SCISSOR_TEST, BLEND, POLYGON_OFFSET_FILL,
-                                   POLYGON_OFFSET_LINE, POLYGON_OFFSET_POINT, PROGRAM_POINT_SIZE};
+                                   POLYGON_OFFSET_LINE, POLYGON_OFFSET_POINT, PROGRAM_POINT_SIZE,
+                                   PRIMITIVE_RESTART, PRIMITIVE_RESTART_FIXED_INDEX};
 constexpr std::uint32_t kModes[] = {POINTS, LINES, LINE_LOOP, LINE_STRIP, TRIANGLES, TRIANGLE_STRIP, TRIANGLE_FAN};
 constexpr std::uint32_t kTypes[] = {BYTE, UNSIGNED_BYTE, SHORT, UNSIGNED_SHORT, INT, UNSIGNED_INT, FLOAT};
 constexpr std::uint32_t kIndexTypes[] = {UNSIGNED_BYTE, UNSIGNED_SHORT, UNSIGNED_INT};
@@ -203,7 +204,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       case 34: gl.PolygonMode(FRONT_AND_BACK, in.Enum(kPolygonModes)); break;
       case 35: gl.PolygonOffset(in.Float(), in.Float()); break;
       case 36: gl.DepthRange(in.Float(), in.Float()); break;
-      case 37: gl.PointSize(in.Float()); break;
+      case 37:
+        if (in.Byte() % 2) gl.PointSize(in.Float());
+        else gl.PrimitiveRestartIndex(in.Byte() % 2 ? in.Get<std::uint32_t>() : std::uint32_t(in.Int(0, 8)));
+        break;
       case 38: gl.VertexAttrib4f(std::uint32_t(in.Int(0, 16)), in.Float(), in.Float(), in.Float(), in.Float()); break;
       default: {
         std::uint8_t px[4];
