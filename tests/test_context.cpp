@@ -177,6 +177,168 @@ TEST_CASE("a vertex array records attribute and element buffer bindings", "[cont
   CHECK(gl.GetError() == INVALID_OPERATION);
 }
 
+TEST_CASE("buffers: mapping, flushing, copying and reading back", "[context]") {
+  Context gl(8, 8);
+  const std::uint32_t a = gl.GenBuffer(), b = gl.GenBuffer();
+  gl.BindBuffer(ARRAY_BUFFER, a);
+  gl.BufferData(ARRAY_BUFFER, 64, nullptr, DYNAMIC_DRAW);
+  gl.BindBuffer(COPY_WRITE_BUFFER, b);
+  gl.BufferData(COPY_WRITE_BUFFER, 32, nullptr, STREAM_READ);
+  int v = -1;
+  gl.GetBufferParameteriv(ARRAY_BUFFER, BUFFER_SIZE, &v);
+  CHECK(v == 64);
+  gl.GetBufferParameteriv(COPY_WRITE_BUFFER, BUFFER_USAGE, &v);
+  CHECK(v == int(STREAM_READ));
+  gl.GetBufferParameteriv(ARRAY_BUFFER, BUFFER_ACCESS, &v);
+  CHECK(v == int(READ_WRITE));
+
+  // Write bytes 4 .. 11 through a mapping with an explicit flush; the parameters describe the mapping.
+  auto* p = static_cast<std::uint8_t*>(gl.MapBufferRange(ARRAY_BUFFER, 4, 8, MAP_WRITE_BIT | MAP_FLUSH_EXPLICIT_BIT));
+  REQUIRE(p != nullptr);
+  for (int i = 0; i < 8; ++i) p[i] = std::uint8_t(10 + i);
+  gl.FlushMappedBufferRange(ARRAY_BUFFER, 0, 8);
+  CHECK(gl.GetError() == NO_ERROR);
+  std::int64_t w = 0;
+  gl.GetBufferParameteri64v(ARRAY_BUFFER, BUFFER_MAP_OFFSET, &w);
+  CHECK(w == 4);
+  gl.GetBufferParameteri64v(ARRAY_BUFFER, BUFFER_MAP_LENGTH, &w);
+  CHECK(w == 8);
+  gl.GetBufferParameteriv(ARRAY_BUFFER, BUFFER_ACCESS_FLAGS, &v);
+  CHECK(v == int(MAP_WRITE_BIT | MAP_FLUSH_EXPLICIT_BIT));
+  gl.GetBufferParameteriv(ARRAY_BUFFER, BUFFER_ACCESS, &v);
+  CHECK(v == int(WRITE_ONLY));
+  gl.GetBufferParameteriv(ARRAY_BUFFER, BUFFER_MAPPED, &v);
+  CHECK(v == 1);
+  void* pointer = nullptr;
+  gl.GetBufferPointerv(ARRAY_BUFFER, BUFFER_MAP_POINTER, &pointer);
+  CHECK(pointer == p);
+  CHECK(gl.UnmapBuffer(ARRAY_BUFFER));
+  gl.GetBufferParameteriv(ARRAY_BUFFER, BUFFER_MAPPED, &v);
+  CHECK(v == 0);
+  gl.GetBufferPointerv(ARRAY_BUFFER, BUFFER_MAP_POINTER, &pointer);
+  CHECK(pointer == nullptr);
+
+  // Copy bytes 4 .. 11 of a to 20 .. 27 of b, read them back, and within a to 40 .. 47.
+  gl.CopyBufferSubData(ARRAY_BUFFER, COPY_WRITE_BUFFER, 4, 20, 8);
+  gl.CopyBufferSubData(ARRAY_BUFFER, ARRAY_BUFFER, 4, 40, 8);
+  CHECK(gl.GetError() == NO_ERROR);
+  std::uint8_t got[8] = {};
+  gl.GetBufferSubData(COPY_WRITE_BUFFER, 20, 8, got);
+  for (int i = 0; i < 8; ++i) CHECK(got[i] == 10 + i);
+  gl.GetBufferSubData(ARRAY_BUFFER, 40, 8, got);
+  for (int i = 0; i < 8; ++i) CHECK(got[i] == 10 + i);
+  gl.GetBufferSubData(ARRAY_BUFFER, 0, 4, got);
+  CHECK((got[0] | got[1] | got[2] | got[3]) == 0);
+
+  // MapBuffer reads the whole store; a READ_ONLY map of b reads what the copy put there.
+  const auto* r = static_cast<const std::uint8_t*>(gl.MapBuffer(COPY_WRITE_BUFFER, READ_ONLY));
+  REQUIRE(r != nullptr);
+  CHECK(r[20] == 10);
+  CHECK(r[27] == 17);
+  gl.GetBufferParameteriv(COPY_WRITE_BUFFER, BUFFER_ACCESS_FLAGS, &v);
+  CHECK(v == int(MAP_READ_BIT));
+  // BufferData unmaps; DeleteBuffer of a mapped buffer is fine.
+  gl.BufferData(COPY_WRITE_BUFFER, 16, nullptr);
+  gl.GetBufferParameteriv(COPY_WRITE_BUFFER, BUFFER_MAPPED, &v);
+  CHECK(v == 0);
+  CHECK(gl.MapBufferRange(COPY_WRITE_BUFFER, 0, 16, MAP_WRITE_BIT | MAP_INVALIDATE_BUFFER_BIT) != nullptr);
+  gl.DeleteBuffer(b);
+  CHECK(!gl.IsBuffer(b));
+  CHECK(gl.GetError() == NO_ERROR);
+}
+
+TEST_CASE("buffers: a draw reads what was written through a mapping", "[context]") {
+  Context gl(8, 8);
+  SolidShader shader;
+  gl.UseProgram(shader);
+  gl.BindVertexArray(gl.GenVertexArray());
+  gl.BindBuffer(ARRAY_BUFFER, gl.GenBuffer());
+  gl.BufferData(ARRAY_BUFFER, 48, nullptr);
+  gl.VertexAttributePointer(0, 4, FLOAT, false, 0, 0);
+  gl.EnableVertexAttribArray(0);
+  const float full[] = {-1, -1, 0, 1, 3, -1, 0, 1, -1, 3, 0, 1};
+  void* p = gl.MapBufferRange(ARRAY_BUFFER, 0, 48, MAP_WRITE_BIT | MAP_INVALIDATE_RANGE_BIT);
+  REQUIRE(p != nullptr);
+  std::memcpy(p, full, sizeof full);
+  gl.DrawArrays(TRIANGLES, 0, 3);  // reading a mapped buffer is allowed (OpenGL says it may be an error)
+  CHECK(gl.GetError() == NO_ERROR);
+  CHECK(CountLit(gl) == 64);
+  CHECK(gl.UnmapBuffer(ARRAY_BUFFER));
+}
+
+TEST_CASE("buffers: the mapping and copying errors, as OpenGL gives them", "[context][errors]") {
+  Context gl(8, 8);
+  gl.BindBuffer(ARRAY_BUFFER, gl.GenBuffer());
+  gl.BufferData(ARRAY_BUFFER, 64, nullptr);
+  struct Case {
+    std::ptrdiff_t offset, length;
+    Bitfield access;
+    Enum error;
+  };
+  for (const Case& c : {Case{0, 0, MAP_WRITE_BIT, INVALID_OPERATION}, Case{60, 8, MAP_WRITE_BIT, INVALID_VALUE},
+                        Case{-1, 8, MAP_WRITE_BIT, INVALID_VALUE}, Case{0, 8, 0, INVALID_OPERATION},
+                        Case{0, 8, MAP_READ_BIT | MAP_INVALIDATE_RANGE_BIT, INVALID_OPERATION},
+                        Case{0, 8, MAP_READ_BIT | MAP_UNSYNCHRONIZED_BIT, INVALID_OPERATION},
+                        Case{0, 8, MAP_READ_BIT | MAP_FLUSH_EXPLICIT_BIT, INVALID_OPERATION},
+                        Case{0, 8, MAP_READ_BIT | 0x1000, INVALID_VALUE}}) {
+    INFO("offset " << c.offset << " length " << c.length << " access " << c.access);
+    CHECK(gl.MapBufferRange(ARRAY_BUFFER, c.offset, c.length, c.access) == nullptr);
+    CHECK(gl.GetError() == c.error);
+  }
+  CHECK(gl.MapBuffer(ARRAY_BUFFER, READ_ONLY + 5) == nullptr);
+  CHECK(gl.GetError() == INVALID_ENUM);
+  CHECK(gl.MapBufferRange(ARRAY_BUFFER + 1000, 0, 8, MAP_READ_BIT) == nullptr);
+  CHECK(gl.GetError() == INVALID_ENUM);
+  CHECK(gl.MapBufferRange(COPY_READ_BUFFER, 0, 8, MAP_READ_BIT) == nullptr);  // nothing bound there
+  CHECK(gl.GetError() == INVALID_OPERATION);
+
+  REQUIRE(gl.MapBufferRange(ARRAY_BUFFER, 4, 8, MAP_WRITE_BIT) != nullptr);
+  CHECK(gl.MapBufferRange(ARRAY_BUFFER, 0, 8, MAP_WRITE_BIT) == nullptr);  // already mapped
+  CHECK(gl.GetError() == INVALID_OPERATION);
+  const std::uint8_t bytes[8] = {};
+  std::uint8_t out[8];
+  gl.BufferSubData(ARRAY_BUFFER, 0, 4, bytes);  // outside the mapped range: allowed
+  CHECK(gl.GetError() == NO_ERROR);
+  gl.BufferSubData(ARRAY_BUFFER, 8, 8, bytes);
+  CHECK(gl.GetError() == INVALID_OPERATION);
+  gl.GetBufferSubData(ARRAY_BUFFER, 0, 8, out);
+  CHECK(gl.GetError() == INVALID_OPERATION);
+  gl.FlushMappedBufferRange(ARRAY_BUFFER, 0, 4);  // not mapped with MAP_FLUSH_EXPLICIT_BIT
+  CHECK(gl.GetError() == INVALID_OPERATION);
+  gl.CopyBufferSubData(ARRAY_BUFFER, ARRAY_BUFFER, 32, 48, 8);
+  CHECK(gl.GetError() == INVALID_OPERATION);
+  CHECK(gl.UnmapBuffer(ARRAY_BUFFER));
+  CHECK(!gl.UnmapBuffer(ARRAY_BUFFER));
+  CHECK(gl.GetError() == INVALID_OPERATION);
+
+  REQUIRE(gl.MapBufferRange(ARRAY_BUFFER, 4, 8, MAP_WRITE_BIT | MAP_FLUSH_EXPLICIT_BIT) != nullptr);
+  gl.FlushMappedBufferRange(ARRAY_BUFFER, 4, 8);  // past the 8 mapped bytes
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.FlushMappedBufferRange(ARRAY_BUFFER, -1, 2);
+  CHECK(gl.GetError() == INVALID_VALUE);
+  CHECK(gl.UnmapBuffer(ARRAY_BUFFER));
+
+  gl.CopyBufferSubData(ARRAY_BUFFER, ARRAY_BUFFER, 0, 8, 16);  // overlapping
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.CopyBufferSubData(ARRAY_BUFFER, ARRAY_BUFFER, 0, 56, 16);  // past the end
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.CopyBufferSubData(ARRAY_BUFFER, ARRAY_BUFFER, -1, 16, 8);
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.CopyBufferSubData(ARRAY_BUFFER, COPY_READ_BUFFER, 0, 16, 8);
+  CHECK(gl.GetError() == INVALID_OPERATION);
+  gl.GetBufferSubData(ARRAY_BUFFER, 60, 8, out);
+  CHECK(gl.GetError() == INVALID_VALUE);
+  int v = 0;
+  gl.GetBufferParameteriv(ARRAY_BUFFER, 0x1234, &v);
+  CHECK(gl.GetError() == INVALID_ENUM);
+  void* pointer = nullptr;
+  gl.GetBufferPointerv(ARRAY_BUFFER, BUFFER_SIZE, &pointer);
+  CHECK(gl.GetError() == INVALID_ENUM);
+  gl.BufferData(ARRAY_BUFFER, 0, nullptr);
+  CHECK(gl.MapBuffer(ARRAY_BUFFER, READ_ONLY) == nullptr);  // no store to map
+  CHECK(gl.GetError() == INVALID_OPERATION);
+}
+
 TEST_CASE("indices past the end of the element buffer are refused", "[context]") {
   Context gl(4, 4);
   const std::uint32_t vao = MakeVertexArray(gl, {{-1, -1, 0, 1}, {1, -1, 0, 1}, {-1, 1, 0, 1}});

@@ -80,16 +80,50 @@ class Context {
   /// Attribute bindings in other vertex arrays keep the storage alive, as OpenGL does. 0 and unknown ids are ignored.
   void DeleteBuffer(std::uint32_t buffer);
   bool IsBuffer(std::uint32_t buffer) const;
-  /// Binds buffer (0 unbinds) to target ARRAY_BUFFER or ELEMENT_ARRAY_BUFFER. The ELEMENT_ARRAY_BUFFER binding
-  /// is part of the bound vertex array (INVALID_OPERATION if none is bound). Bad target: INVALID_ENUM; an id not
-  /// made by GenBuffer: INVALID_OPERATION.
+  /// Binds buffer (0 unbinds) to target ARRAY_BUFFER, ELEMENT_ARRAY_BUFFER, COPY_READ_BUFFER or
+  /// COPY_WRITE_BUFFER. The ELEMENT_ARRAY_BUFFER binding is part of the bound vertex array (INVALID_OPERATION if
+  /// none is bound). Bad target: INVALID_ENUM; an id not made by GenBuffer: INVALID_OPERATION.
   void BindBuffer(Enum target, std::uint32_t buffer);
-  /// Replaces the store of the buffer bound to target with size bytes copied from data (zeros if data is null).
-  /// size < 0: INVALID_VALUE; bad target or usage: INVALID_ENUM; nothing bound: INVALID_OPERATION;
-  /// allocation failure: OUT_OF_MEMORY.
+  /// Replaces the store of the buffer bound to target with size bytes copied from data (zeros if data is null),
+  /// unmapping it first if it is mapped. size < 0: INVALID_VALUE; bad target or usage: INVALID_ENUM; nothing
+  /// bound: INVALID_OPERATION; allocation failure: OUT_OF_MEMORY.
   void BufferData(Enum target, std::ptrdiff_t size, const void* data, Enum usage = STATIC_DRAW);
-  /// Overwrites bytes [offset, offset + size) of the bound buffer. Range outside the store: INVALID_VALUE.
+  /// Overwrites bytes [offset, offset + size) of the bound buffer. Range outside the store: INVALID_VALUE; a range
+  /// that meets the buffer's mapped range: INVALID_OPERATION.
   void BufferSubData(Enum target, std::ptrdiff_t offset, std::ptrdiff_t size, const void* data);
+  /// Gives the caller bytes [offset, offset + length) of the buffer bound to target to read or write directly, until
+  /// UnmapBuffer. access: MAP_READ_BIT and/or MAP_WRITE_BIT, with MAP_INVALIDATE_RANGE_BIT,
+  /// MAP_INVALIDATE_BUFFER_BIT (the bytes may then read as anything; softgl keeps them), MAP_FLUSH_EXPLICIT_BIT
+  /// (see FlushMappedBufferRange), MAP_UNSYNCHRONIZED_BIT (no effect: draws read their vertices when they are
+  /// made). Returns null on error: offset or length negative, the range outside the store, an unknown access bit:
+  /// INVALID_VALUE; length 0, the buffer already mapped, neither READ nor WRITE, READ with an INVALIDATE or
+  /// UNSYNCHRONIZED bit, FLUSH_EXPLICIT without WRITE: INVALID_OPERATION. While mapped, BufferSubData and
+  /// GetBufferSubData on the mapped bytes and CopyBufferSubData on the buffer are INVALID_OPERATION; draws may read
+  /// it; BufferData and DeleteBuffer unmap it first. The pointer is valid until then.
+  void* MapBufferRange(Enum target, std::ptrdiff_t offset, std::ptrdiff_t length, Bitfield access);
+  /// The whole store: access READ_ONLY, WRITE_ONLY or READ_WRITE (else INVALID_ENUM). An empty store:
+  /// INVALID_OPERATION.
+  void* MapBuffer(Enum target, Enum access);
+  /// Says that bytes [offset, offset + length) of a mapping made with MAP_FLUSH_EXPLICIT_BIT (offset relative to
+  /// the mapping) were written. Not mapped so: INVALID_OPERATION; outside the mapping: INVALID_VALUE.
+  void FlushMappedBufferRange(Enum target, std::ptrdiff_t offset, std::ptrdiff_t length);
+  /// Ends the mapping; returns true (the store is never lost). Not mapped: INVALID_OPERATION and false.
+  bool UnmapBuffer(Enum target);
+  /// Copies size bytes from read_offset of the buffer bound to read_target to write_offset of the one bound to
+  /// write_target (any two buffer targets; COPY_READ_BUFFER and COPY_WRITE_BUFFER exist for this). Negative
+  /// values, a range outside its store, overlapping ranges of one buffer: INVALID_VALUE; nothing bound or either
+  /// buffer mapped: INVALID_OPERATION.
+  void CopyBufferSubData(Enum read_target, Enum write_target, std::ptrdiff_t read_offset, std::ptrdiff_t write_offset,
+                         std::ptrdiff_t size);
+  /// Copies bytes [offset, offset + size) of the bound buffer to data. Errors as BufferSubData.
+  void GetBufferSubData(Enum target, std::ptrdiff_t offset, std::ptrdiff_t size, void* data) const;
+  /// BUFFER_SIZE, BUFFER_USAGE, BUFFER_ACCESS (READ_WRITE unless mapped otherwise), BUFFER_MAPPED,
+  /// BUFFER_ACCESS_FLAGS, BUFFER_MAP_OFFSET, BUFFER_MAP_LENGTH of the bound buffer; another name: INVALID_ENUM.
+  /// The int form clamps values beyond its range.
+  void GetBufferParameteriv(Enum target, Enum pname, int* params) const;
+  void GetBufferParameteri64v(Enum target, Enum pname, std::int64_t* params) const;
+  /// BUFFER_MAP_POINTER: the pointer MapBufferRange returned, or null when not mapped.
+  void GetBufferPointerv(Enum target, Enum pname, void** params) const;
 
   // ---- Vertex array objects ----------------------------------------------------------------------------------
   /// Creates a vertex array object and returns its id (never 0). A vertex array records the attribute

@@ -25,9 +25,36 @@ inline constexpr Enum INVALID_FRAMEBUFFER_OPERATION = 0x0506;
 // Buffer targets and usage hints.
 inline constexpr Enum ARRAY_BUFFER = 0x8892;
 inline constexpr Enum ELEMENT_ARRAY_BUFFER = 0x8893;
+inline constexpr Enum COPY_READ_BUFFER = 0x8F36;   // binding points for CopyBufferSubData (any buffer call takes them)
+inline constexpr Enum COPY_WRITE_BUFFER = 0x8F37;
+
+// MapBufferRange access bits, MapBuffer access, and GetBufferParameter names.
+inline constexpr Bitfield MAP_READ_BIT = 0x0001;
+inline constexpr Bitfield MAP_WRITE_BIT = 0x0002;
+inline constexpr Bitfield MAP_INVALIDATE_RANGE_BIT = 0x0004;
+inline constexpr Bitfield MAP_INVALIDATE_BUFFER_BIT = 0x0008;
+inline constexpr Bitfield MAP_FLUSH_EXPLICIT_BIT = 0x0010;
+inline constexpr Bitfield MAP_UNSYNCHRONIZED_BIT = 0x0020;
+inline constexpr Enum READ_ONLY = 0x88B8;
+inline constexpr Enum WRITE_ONLY = 0x88B9;
+inline constexpr Enum READ_WRITE = 0x88BA;
+inline constexpr Enum BUFFER_SIZE = 0x8764;
+inline constexpr Enum BUFFER_USAGE = 0x8765;
+inline constexpr Enum BUFFER_ACCESS = 0x88BB;
+inline constexpr Enum BUFFER_MAPPED = 0x88BC;
+inline constexpr Enum BUFFER_MAP_POINTER = 0x88BD;
+inline constexpr Enum BUFFER_ACCESS_FLAGS = 0x911F;
+inline constexpr Enum BUFFER_MAP_LENGTH = 0x9120;
+inline constexpr Enum BUFFER_MAP_OFFSET = 0x9121;
 inline constexpr Enum STREAM_DRAW = 0x88E0;
+inline constexpr Enum STREAM_READ = 0x88E1;
+inline constexpr Enum STREAM_COPY = 0x88E2;
 inline constexpr Enum STATIC_DRAW = 0x88E4;
+inline constexpr Enum STATIC_READ = 0x88E5;
+inline constexpr Enum STATIC_COPY = 0x88E6;
 inline constexpr Enum DYNAMIC_DRAW = 0x88E8;
+inline constexpr Enum DYNAMIC_READ = 0x88E9;
+inline constexpr Enum DYNAMIC_COPY = 0x88EA;
 
 // Data types (vertex attributes and indices).
 inline constexpr Enum BYTE = 0x1400;

@@ -118,6 +118,11 @@ class Backend {
   /// divisor c.divisor.
   virtual void DrawInstanced(const std::vector<Vertex>& vertices, const std::vector<std::uint32_t>& indices,
                              const std::vector<glm::vec4>& instance_data, const std::vector<DrawVariant>& calls) = 0;
+  /// Fills a new vertex buffer through the buffer calls: the first `mapped` vertices written through
+  /// MapBufferRange (with an explicit flush), the rest copied from a COPY_READ_BUFFER by CopyBufferSubData; draws
+  /// BUFFER_SIZE / sizeof(Vertex) of them as `mode` with the kColor program, and returns the store as
+  /// GetBufferSubData reads it back.
+  virtual std::vector<Vertex> DrawThroughBufferCalls(Enum mode, const std::vector<Vertex>& vertices, int mapped) = 0;
   virtual Frame Read() = 0;
   /// Defines the texture of unit 0 (replacing any before).
   virtual void SetTexture(const TextureDesc& desc) = 0;

@@ -262,6 +262,29 @@ class GlBackend final : public Backend {
     glDeleteBuffers(1, &instance_vbo);
   }
 
+  std::vector<Vertex> DrawThroughBufferCalls(Enum mode, const std::vector<Vertex>& vertices, int mapped) override {
+    const GLsizeiptr size = GLsizeiptr(vertices.size() * sizeof(Vertex)), head = mapped * GLsizeiptr(sizeof(Vertex));
+    glUseProgram(programs_[int(Program::kColor)]);
+    glBufferData(GL_ARRAY_BUFFER, size, nullptr, GL_DYNAMIC_DRAW);
+    void* p = glMapBufferRange(GL_ARRAY_BUFFER, 0, head,
+                               GL_MAP_WRITE_BIT | GL_MAP_INVALIDATE_RANGE_BIT | GL_MAP_FLUSH_EXPLICIT_BIT);
+    if (p != nullptr) std::memcpy(p, vertices.data(), std::size_t(head));
+    glFlushMappedBufferRange(GL_ARRAY_BUFFER, 0, head);
+    glUnmapBuffer(GL_ARRAY_BUFFER);
+    GLuint staging = 0;
+    glGenBuffers(1, &staging);
+    glBindBuffer(GL_COPY_READ_BUFFER, staging);
+    glBufferData(GL_COPY_READ_BUFFER, size - head, vertices.data() + mapped, GL_STREAM_COPY);
+    glCopyBufferSubData(GL_COPY_READ_BUFFER, GL_ARRAY_BUFFER, 0, head, size - head);
+    glDeleteBuffers(1, &staging);
+    GLint stored = 0;
+    glGetBufferParameteriv(GL_ARRAY_BUFFER, GL_BUFFER_SIZE, &stored);
+    glDrawArrays(mode, 0, stored / GLint(sizeof(Vertex)));
+    std::vector<Vertex> back(std::size_t(stored) / sizeof(Vertex));
+    glGetBufferSubData(GL_ARRAY_BUFFER, 0, GLsizeiptr(back.size() * sizeof(Vertex)), back.data());
+    return back;
+  }
+
   void SetTexture(const TextureDesc& d) override {
     GLuint tex = 0;
     glGenTextures(1, &tex);

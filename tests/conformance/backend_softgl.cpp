@@ -1,5 +1,6 @@
 // backend_softgl.cpp — the conformance backend on softgl, with the scene shaders in C++.
 #include <cmath>
+#include <cstring>
 
 #include <softgl/softgl.h>
 
@@ -245,6 +246,28 @@ class SoftglBackend final : public Backend {
     gl_.VertexAttribDivisor(3, 0);
     gl_.BindBuffer(softgl::ARRAY_BUFFER, vbo_);
     gl_.DeleteBuffer(instance_vbo);
+  }
+
+  std::vector<Vertex> DrawThroughBufferCalls(Enum mode, const std::vector<Vertex>& vertices, int mapped) override {
+    const std::ptrdiff_t size = std::ptrdiff_t(vertices.size() * sizeof(Vertex)), head = mapped * std::ptrdiff_t(sizeof(Vertex));
+    gl_.UseProgram(color_);
+    gl_.BufferData(softgl::ARRAY_BUFFER, size, nullptr, softgl::DYNAMIC_DRAW);
+    void* p = gl_.MapBufferRange(softgl::ARRAY_BUFFER, 0, head,
+                                 softgl::MAP_WRITE_BIT | softgl::MAP_INVALIDATE_RANGE_BIT | softgl::MAP_FLUSH_EXPLICIT_BIT);
+    if (p != nullptr) std::memcpy(p, vertices.data(), std::size_t(head));
+    gl_.FlushMappedBufferRange(softgl::ARRAY_BUFFER, 0, head);
+    gl_.UnmapBuffer(softgl::ARRAY_BUFFER);
+    const std::uint32_t staging = gl_.GenBuffer();
+    gl_.BindBuffer(softgl::COPY_READ_BUFFER, staging);
+    gl_.BufferData(softgl::COPY_READ_BUFFER, size - head, vertices.data() + mapped, softgl::STREAM_COPY);
+    gl_.CopyBufferSubData(softgl::COPY_READ_BUFFER, softgl::ARRAY_BUFFER, 0, head, size - head);
+    gl_.DeleteBuffer(staging);
+    int stored = 0;
+    gl_.GetBufferParameteriv(softgl::ARRAY_BUFFER, softgl::BUFFER_SIZE, &stored);
+    gl_.DrawArrays(mode, 0, stored / int(sizeof(Vertex)));
+    std::vector<Vertex> back(std::size_t(stored) / sizeof(Vertex));
+    gl_.GetBufferSubData(softgl::ARRAY_BUFFER, 0, std::ptrdiff_t(back.size() * sizeof(Vertex)), back.data());
+    return back;
   }
 
   void SetTexture(const TextureDesc& d) override {

@@ -333,6 +333,24 @@ void PrimitiveRestart(Backend& b) {
   b.Disable(PRIMITIVE_RESTART);
 }
 
+// Vertex data that reaches the buffer through MapBufferRange and CopyBufferSubData (left half: a fan of 24
+// triangles, 40 vertices written through the mapping and 32 copied), and back through GetBufferSubData: what was
+// read back is drawn again on the right, moved by half the width.
+void Buffers(Backend& b) {
+  ClearBlack(b);
+  std::vector<Vertex> v;
+  for (int i = 0; i < 24; ++i) {
+    const float a0 = 0.2617994f * float(i) + 0.1f, a1 = a0 + 0.2617994f, r = i % 3 == 0 ? 28.5f : 22.25f;
+    const float cx = 32.3125f, cy = 64.1875f;  // no edge through a pixel centre
+    v.push_back({Win(cx, cy), Palette(unsigned(3 * i))});
+    v.push_back({Win(cx + r * std::cos(a0), cy + r * std::sin(a0)), Palette(unsigned(3 * i + 1))});
+    v.push_back({Win(cx + r * std::cos(a1), cy + r * std::sin(a1)), Palette(unsigned(3 * i + 2))});
+  }
+  std::vector<Vertex> back = b.DrawThroughBufferCalls(TRIANGLES, v, 40);
+  for (Vertex& x : back) x.pos.x += 1.0f;  // 64 pixels right
+  b.Draw(TRIANGLES, back);
+}
+
 // ---- Clipping and interpolation ------------------------------------------------------------------------------------
 
 void Clipping(Backend& b) {
@@ -751,6 +769,7 @@ const std::vector<SceneInfo>& Scenes() {
       {"draw_variants", kSize, kSize, Check::kColor, DrawVariants},
       {"instancing", kSize, kSize, Check::kColor, Instancing},
       {"primitive_restart", kSize, kSize, Check::kColor, PrimitiveRestart},
+      {"buffers", kSize, kSize, Check::kColor, Buffers},
       {"clipping", kSize, kSize, Check::kColor, Clipping},
       {"perspective", kSize, kSize, Check::kColor, Perspective},
       {"depth_functions", kSize, kSize, Check::kExactWithDepth, DepthFunctions},

@@ -41,7 +41,7 @@ constexpr std::uint32_t kCaps[] = {CULL_FACE, DEPTH_TEST, STENCIL_TEST, SCISSOR_
 constexpr std::uint32_t kModes[] = {POINTS, LINES, LINE_LOOP, LINE_STRIP, TRIANGLES, TRIANGLE_STRIP, TRIANGLE_FAN};
 constexpr std::uint32_t kTypes[] = {BYTE, UNSIGNED_BYTE, SHORT, UNSIGNED_SHORT, INT, UNSIGNED_INT, FLOAT};
 constexpr std::uint32_t kIndexTypes[] = {UNSIGNED_BYTE, UNSIGNED_SHORT, UNSIGNED_INT};
-constexpr std::uint32_t kBufferTargets[] = {ARRAY_BUFFER, ELEMENT_ARRAY_BUFFER};
+constexpr std::uint32_t kBufferTargets[] = {ARRAY_BUFFER, ELEMENT_ARRAY_BUFFER, COPY_READ_BUFFER, COPY_WRITE_BUFFER};
 constexpr std::uint32_t kTexTargets[] = {TEXTURE_2D, TEXTURE_CUBE_MAP};
 constexpr std::uint32_t kImageTargets[] = {TEXTURE_2D,
                                            TEXTURE_CUBE_MAP_POSITIVE_X, TEXTURE_CUBE_MAP_NEGATIVE_X,
@@ -103,7 +103,25 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       case 3: {
         const int n = in.Amount(0, 64, 1 << 16);
         scratch.assign(std::size_t(n > 0 ? n : 0), in.Byte());
-        gl.BufferSubData(in.Enum(kBufferTargets), in.Int(-4, 512), n, scratch.data());
+        const std::uint32_t target = in.Enum(kBufferTargets);
+        switch (in.Byte() % 6) {
+          case 0: gl.BufferSubData(target, in.Int(-4, 512), n, scratch.data()); break;
+          case 1: gl.GetBufferSubData(target, in.Int(-4, 512), n, scratch.data()); break;
+          case 2: {  // the mapping is written end to end, so that ASan sees any range it should not have given
+            const Bitfield access = in.Byte() % 4 ? std::uint32_t(in.Int(0, 0x3F)) : in.Get<std::uint32_t>();
+            if (auto* p = static_cast<std::uint8_t*>(gl.MapBufferRange(target, in.Int(-4, 512), n, access)))
+              std::memset(p, 0x5A, std::size_t(n));
+            break;
+          }
+          case 3: (void)gl.UnmapBuffer(target); break;
+          case 4: gl.CopyBufferSubData(target, in.Enum(kBufferTargets), in.Int(-4, 512), in.Int(-4, 512), n); break;
+          default: {
+            int v = 0;
+            gl.GetBufferParameteriv(target, BUFFER_SIZE + std::uint32_t(in.Int(0, 1)), &v);
+            gl.FlushMappedBufferRange(target, in.Int(-4, 64), in.Int(-4, 64));
+            break;
+          }
+        }
         break;
       }
       case 4: gl.GenVertexArray(); break;
