@@ -157,6 +157,7 @@ struct ContextState {
   TextureUnit units[kMaxTextureUnits];
   int active_unit = 0;
   int unpack_alignment = 4;
+  int pack_alignment = 4, pack_row_length = 0, pack_skip_rows = 0, pack_skip_pixels = 0;
   std::unordered_map<std::uint32_t, std::unique_ptr<FramebufferObject>> framebuffers;
   std::uint32_t next_framebuffer = 1;
   FramebufferObject* draw_fbo = nullptr;
@@ -1136,6 +1137,114 @@ void Context::ReadPixel(int x, int y, std::uint8_t rgba[4]) const {
   for (int k = 0; k < 4; ++k) rgba[k] = detail::FloatToUnorm8(c[k]);
 }
 
+namespace {
+
+// How ReadPixels lays out one pixel: which RGBA channels, in order (-1 ends), or depth and/or stencil.
+struct PixelLayout {
+  int channels[4] = {-1, -1, -1, -1};
+  int count = 0;  // components per pixel (DEPTH_STENCIL with UNSIGNED_INT_24_8: one 32-bit word)
+  bool depth = false, stencil = false;
+};
+
+bool LayoutOf(Enum format, PixelLayout& l) {
+  auto set = [&](std::initializer_list<int> c) {
+    for (int k : c) l.channels[l.count++] = k;
+    return true;
+  };
+  switch (format) {
+    case RED: return set({0});
+    case GREEN: return set({1});
+    case BLUE: return set({2});
+    case RG: return set({0, 1});
+    case RGB: return set({0, 1, 2});
+    case BGR: return set({2, 1, 0});
+    case RGBA: return set({0, 1, 2, 3});
+    case BGRA: return set({2, 1, 0, 3});
+    case DEPTH_COMPONENT: l.depth = true; l.count = 1; return true;
+    case STENCIL_INDEX: l.stencil = true; l.count = 1; return true;
+    case DEPTH_STENCIL: l.depth = l.stencil = true; l.count = 1; return true;
+    default: return false;
+  }
+}
+
+// Writes normalized value v (clamped to [0, 1]) or, for stencil indices, the integer value as `type`.
+void PutComponent(Enum type, double v, bool integer, std::uint8_t* dst) {
+  switch (type) {
+    case UNSIGNED_BYTE: {
+      const auto b = std::uint8_t(integer ? v : std::lround(std::clamp(v, 0.0, 1.0) * 255.0));
+      *dst = b;
+      break;
+    }
+    case UNSIGNED_SHORT: {
+      const auto h = std::uint16_t(integer ? v : std::lround(std::clamp(v, 0.0, 1.0) * 65535.0));
+      std::memcpy(dst, &h, 2);
+      break;
+    }
+    case UNSIGNED_INT: {
+      const auto u = std::uint32_t(integer ? v : std::llround(std::clamp(v, 0.0, 1.0) * 4294967295.0));
+      std::memcpy(dst, &u, 4);
+      break;
+    }
+    default: {  // FLOAT
+      const auto f = float(v);
+      std::memcpy(dst, &f, 4);
+      break;
+    }
+  }
+}
+
+}  // namespace
+
+void Context::ReadPixels(int x, int y, int width, int height, Enum format, Enum type, void* pixels) const {
+  auto& s = *state_;
+  PixelLayout l;
+  if (!LayoutOf(format, l)) return s.SetError(INVALID_ENUM, __func__, "not a pixel format ReadPixels knows");
+  if (type != UNSIGNED_BYTE && type != UNSIGNED_SHORT && type != UNSIGNED_INT && type != FLOAT &&
+      type != UNSIGNED_INT_24_8)
+    return s.SetError(INVALID_ENUM, __func__, "type must be UNSIGNED_BYTE, UNSIGNED_SHORT, UNSIGNED_INT, FLOAT or UNSIGNED_INT_24_8");
+  if (width < 0 || height < 0) return s.SetError(INVALID_VALUE, __func__, "width or height is negative");
+  if ((format == DEPTH_STENCIL) != (type == UNSIGNED_INT_24_8)) return s.SetError(INVALID_OPERATION, __func__, "DEPTH_STENCIL goes with UNSIGNED_INT_24_8, and only it");
+  if (s.read_fbo && FramebufferStatus(*s.read_fbo) != FRAMEBUFFER_COMPLETE) return s.SetError(INVALID_FRAMEBUFFER_OPERATION, __func__, "the read framebuffer is not complete");
+  s.Sync(__func__);
+  const detail::RenderTarget t = ReadTarget(s);
+  if ((l.depth && !t.depth) || (l.stencil && !t.stencil) || (l.count > 0 && !l.depth && !l.stencil && !t.color[0].Present()))
+    return s.SetError(INVALID_OPERATION, __func__, "the read framebuffer has no buffer of that kind");
+  if (pixels == nullptr || width == 0 || height == 0) return;
+  // OpenGL's pack layout: rows of PACK_ROW_LENGTH (or width) pixels, each row aligned to PACK_ALIGNMENT when a
+  // component is smaller than the alignment, starting PACK_SKIP_ROWS rows and PACK_SKIP_PIXELS pixels in.
+  const std::size_t component = type == UNSIGNED_BYTE ? 1 : type == UNSIGNED_SHORT ? 2 : 4;
+  const std::size_t pixel = component * std::size_t(l.count);
+  const std::size_t row_pixels = std::size_t(s.pack_row_length > 0 ? s.pack_row_length : width);
+  std::size_t stride = row_pixels * pixel;
+  const std::size_t align = std::size_t(s.pack_alignment);
+  if (component < align) stride = (stride + align - 1) / align * align;
+  auto* out = static_cast<std::uint8_t*>(pixels) + std::size_t(s.pack_skip_rows) * stride +
+              std::size_t(s.pack_skip_pixels) * pixel;
+  // Only pixels inside the read buffer are written (the others are undefined in OpenGL: left as they are).
+  const int x0 = std::max(x, 0), y0 = std::max(y, 0);
+  const int x1 = int(std::min<std::int64_t>(std::int64_t(x) + width, t.width));
+  const int y1 = int(std::min<std::int64_t>(std::int64_t(y) + height, t.height));
+  for (int py = y0; py < y1; ++py)
+    for (int px = x0; px < x1; ++px) {
+      std::uint8_t* dst = out + std::size_t(py - y) * stride + std::size_t(px - x) * pixel;
+      if (format == DEPTH_STENCIL) {
+        const double d = std::clamp(double(t.Depth(px, py)), 0.0, 1.0);
+        const std::uint32_t word = std::uint32_t(std::llround(d * 16777215.0)) << 8 | t.Stencil(px, py);
+        std::memcpy(dst, &word, 4);
+      } else if (l.depth) {
+        PutComponent(type, double(t.Depth(px, py)), false, dst);
+      } else if (l.stencil) {
+        PutComponent(type, double(t.Stencil(px, py)), true, dst);
+      } else {
+        const glm::vec4 c = t.color[0].Load(px, py);
+        // A fixed-point buffer's b / 255 gives back b for UNSIGNED_BYTE; a float buffer's values are clamped only
+        // when converted to a normalized type.
+        for (int k = 0; k < l.count; ++k)
+          PutComponent(type, double(c[l.channels[k]]), false, dst + std::size_t(k) * component);
+      }
+    }
+}
+
 float Context::ReadDepth(int x, int y) const {
   state_->Sync(__func__);
   const detail::RenderTarget t = ReadTarget(*state_);
@@ -1415,9 +1524,21 @@ void Context::TexParameterf(Enum target, Enum pname, float value) {
 }
 
 void Context::PixelStore(Enum pname, int value) {
-  if (pname != UNPACK_ALIGNMENT) return state_->SetError(INVALID_ENUM, __func__, "only UNPACK_ALIGNMENT is supported");
-  if (value != 1 && value != 2 && value != 4 && value != 8) return state_->SetError(INVALID_VALUE, __func__, "alignment must be 1, 2, 4 or 8");
-  state_->unpack_alignment = value;
+  auto& s = *state_;
+  switch (pname) {
+    case UNPACK_ALIGNMENT:
+    case PACK_ALIGNMENT:
+      if (value != 1 && value != 2 && value != 4 && value != 8) return s.SetError(INVALID_VALUE, __func__, "alignment must be 1, 2, 4 or 8");
+      (pname == PACK_ALIGNMENT ? s.pack_alignment : s.unpack_alignment) = value;
+      return;
+    case PACK_ROW_LENGTH:
+    case PACK_SKIP_ROWS:
+    case PACK_SKIP_PIXELS:
+      if (value < 0) return s.SetError(INVALID_VALUE, __func__, "value is negative");
+      (pname == PACK_ROW_LENGTH ? s.pack_row_length : pname == PACK_SKIP_ROWS ? s.pack_skip_rows : s.pack_skip_pixels) = value;
+      return;
+    default: return s.SetError(INVALID_ENUM, __func__, "pname must be UNPACK_ALIGNMENT, PACK_ALIGNMENT, PACK_ROW_LENGTH, PACK_SKIP_ROWS or PACK_SKIP_PIXELS");
+  }
 }
 
 // ---- Framebuffer objects -------------------------------------------------------------------------------------

@@ -1039,6 +1039,111 @@ TEST_CASE("ReadPixels returns rows top first", "[context]") {
   CHECK(img.At(0, 0)[0] == 0);
 }
 
+TEST_CASE("ReadPixels with a format and type: layouts, conversions, rectangles partly outside", "[context]") {
+  Context gl(4, 3);
+  gl.ClearColor(1.0f, 0.5f, 0.0f, 0.25f);  // bytes 255, 128, 0, 64
+  gl.ClearDepth(0.75);
+  gl.ClearStencil(7);
+  gl.Clear(COLOR_BUFFER_BIT | DEPTH_BUFFER_BIT | STENCIL_BUFFER_BIT);
+  SECTION("RGB bytes with rows padded to 4, and a rectangle half outside") {
+    std::vector<std::uint8_t> out(3 * 8, 0xCD);  // 3 rows of 2 pixels: 6 bytes padded to 8
+    gl.ReadPixels(3, 1, 2, 3, RGB, UNSIGNED_BYTE, out.data());
+    CHECK(gl.GetError() == NO_ERROR);
+    // Row 0 (window y 1): pixel x 3 written, x 4 outside; row 2 (window y 3) outside altogether.
+    CHECK(std::vector<std::uint8_t>(out.begin(), out.begin() + 8) ==
+          std::vector<std::uint8_t>{255, 128, 0, 0xCD, 0xCD, 0xCD, 0xCD, 0xCD});
+    CHECK(out[8] == 255);
+    CHECK(out[16] == 0xCD);
+  }
+  SECTION("BGRA, row length and skips") {
+    gl.PixelStore(PACK_ALIGNMENT, 1);
+    gl.PixelStore(PACK_ROW_LENGTH, 3);
+    gl.PixelStore(PACK_SKIP_PIXELS, 1);
+    gl.PixelStore(PACK_SKIP_ROWS, 1);
+    std::vector<std::uint8_t> out(3 * 4 * 3, 0xCD);
+    gl.ReadPixels(0, 0, 2, 2, BGRA, UNSIGNED_BYTE, out.data());
+    CHECK(out[0] == 0xCD);  // the skipped row
+    const std::size_t first = (3 + 1) * 4;  // one row of 3 pixels, then one pixel in
+    CHECK(std::vector<std::uint8_t>(out.begin() + first, out.begin() + first + 4) ==
+          std::vector<std::uint8_t>{0, 128, 255, 64});
+    CHECK(out[first + 8] == 0xCD);  // third pixel of the row: not part of the rectangle
+  }
+  SECTION("floats, shorts, depth, stencil and DEPTH_STENCIL") {
+    float f[4] = {};
+    gl.ReadPixels(0, 0, 1, 1, RGBA, FLOAT, f);
+    CHECK(f[1] == 128.0f / 255.0f);
+    CHECK(f[3] == 64.0f / 255.0f);
+    std::uint16_t h[2] = {};
+    gl.ReadPixels(1, 1, 1, 1, RG, UNSIGNED_SHORT, h);
+    CHECK((h[0] == 65535 && h[1] == 128 * 257));
+    float d = 0;
+    gl.ReadPixels(2, 2, 1, 1, DEPTH_COMPONENT, FLOAT, &d);
+    CHECK(d == 0.75f);
+    std::uint32_t u = 0;
+    gl.ReadPixels(2, 2, 1, 1, DEPTH_COMPONENT, UNSIGNED_INT, &u);
+    CHECK(u == std::uint32_t(std::llround(0.75 * 4294967295.0)));
+    std::uint8_t st = 0;
+    gl.ReadPixels(0, 2, 1, 1, STENCIL_INDEX, UNSIGNED_BYTE, &st);
+    CHECK(st == 7);
+    float sf = 0;
+    gl.ReadPixels(0, 2, 1, 1, STENCIL_INDEX, FLOAT, &sf);
+    CHECK(sf == 7.0f);  // an index, not normalized
+    std::uint32_t ds = 0;
+    gl.ReadPixels(3, 0, 1, 1, DEPTH_STENCIL, UNSIGNED_INT_24_8, &ds);
+    CHECK(ds == (std::uint32_t(std::llround(0.75 * 16777215.0)) << 8 | 7));
+    CHECK(gl.GetError() == NO_ERROR);
+  }
+  SECTION("errors") {
+    std::uint8_t out[64];
+    gl.ReadPixels(0, 0, 1, 1, RGBA + 100, UNSIGNED_BYTE, out);
+    CHECK(gl.GetError() == INVALID_ENUM);
+    gl.ReadPixels(0, 0, 1, 1, RGBA, BYTE, out);
+    CHECK(gl.GetError() == INVALID_ENUM);
+    gl.ReadPixels(0, 0, -1, 1, RGBA, UNSIGNED_BYTE, out);
+    CHECK(gl.GetError() == INVALID_VALUE);
+    gl.ReadPixels(0, 0, 1, 1, DEPTH_STENCIL, FLOAT, out);
+    CHECK(gl.GetError() == INVALID_OPERATION);
+    gl.ReadPixels(0, 0, 1, 1, RGBA, UNSIGNED_INT_24_8, out);
+    CHECK(gl.GetError() == INVALID_OPERATION);
+    gl.PixelStore(PACK_ALIGNMENT, 3);
+    CHECK(gl.GetError() == INVALID_VALUE);
+    gl.PixelStore(PACK_ROW_LENGTH, -1);
+    CHECK(gl.GetError() == INVALID_VALUE);
+    gl.ReadPixels(0, 0, 4, 3, RGBA, UNSIGNED_BYTE, nullptr);  // nothing to write to: nothing happens
+    CHECK(gl.GetError() == NO_ERROR);
+    // A framebuffer object without a depth attachment has no depth to read; an incomplete one cannot be read.
+    const std::uint32_t fbo = gl.GenFramebuffer(), tex = gl.GenTexture();
+    gl.BindTexture(TEXTURE_2D, tex);
+    gl.TexImage2D(TEXTURE_2D, 0, RGBA8, 2, 2, 0, RGBA, UNSIGNED_BYTE, nullptr);
+    gl.BindFramebuffer(FRAMEBUFFER, fbo);
+    gl.ReadPixels(0, 0, 1, 1, RGBA, UNSIGNED_BYTE, out);
+    CHECK(gl.GetError() == INVALID_FRAMEBUFFER_OPERATION);
+    gl.FramebufferTexture2D(FRAMEBUFFER, COLOR_ATTACHMENT0, TEXTURE_2D, tex, 0);
+    gl.ReadPixels(0, 0, 1, 1, DEPTH_COMPONENT, FLOAT, out);
+    CHECK(gl.GetError() == INVALID_OPERATION);
+    gl.ReadPixels(0, 0, 1, 1, RGBA, UNSIGNED_BYTE, out);
+    CHECK(gl.GetError() == NO_ERROR);
+  }
+}
+
+TEST_CASE("ReadPixels reads a float attachment as stored, and clamps it for bytes", "[context]") {
+  Context gl(2, 2);
+  const std::uint32_t fbo = gl.GenFramebuffer(), tex = gl.GenTexture();
+  gl.BindTexture(TEXTURE_2D, tex);
+  gl.TexImage2D(TEXTURE_2D, 0, RGBA32F, 2, 2, 0, RGBA, FLOAT, nullptr);
+  gl.BindFramebuffer(FRAMEBUFFER, fbo);
+  gl.FramebufferTexture2D(FRAMEBUFFER, COLOR_ATTACHMENT0, TEXTURE_2D, tex, 0);
+  gl.ClearColor(2.5f, -1.0f, 0.5f, 1.0f);
+  gl.Clear(COLOR_BUFFER_BIT);
+  float f[4] = {};
+  gl.ReadPixels(1, 1, 1, 1, RGBA, FLOAT, f);
+  CHECK((f[0] == 2.5f && f[1] == -1.0f && f[2] == 0.5f));
+  std::uint8_t b[4] = {};
+  gl.ReadPixels(1, 1, 1, 1, RGBA, UNSIGNED_BYTE, b);
+  CHECK((b[0] == 255 && b[1] == 0 && b[2] == 128));
+  CHECK(gl.GetError() == NO_ERROR);
+}
+
 TEST_CASE("the debug callback reports every error with the call's name", "[context][errors]") {
   Context gl(4, 4);
   struct Report {

@@ -210,7 +210,9 @@ class Context {
   void TexParameterf(Enum target, Enum pname, float value);
   /// TEXTURE_BORDER_COLOR (four floats), or any single-valued name.
   void TexParameterfv(Enum target, Enum pname, const float* values);
-  /// UNPACK_ALIGNMENT: 1, 2, 4 (default) or 8 (else INVALID_VALUE; another name: INVALID_ENUM).
+  /// UNPACK_ALIGNMENT (TexImage2D) and PACK_ALIGNMENT (ReadPixels): 1, 2, 4 (default) or 8, else INVALID_VALUE;
+  /// PACK_ROW_LENGTH, PACK_SKIP_ROWS, PACK_SKIP_PIXELS: >= 0 (default 0), else INVALID_VALUE. Another name:
+  /// INVALID_ENUM.
   void PixelStore(Enum pname, int value);
 
   // ---- Framebuffer objects -----------------------------------------------------------------------------------
@@ -351,6 +353,16 @@ class Context {
   // From the framebuffer bound to READ_FRAMEBUFFER: the context's own, or a framebuffer object's
   // COLOR_ATTACHMENT0 (converted to 8 bits) and depth attachment.
 
+  /// glReadPixels: the rectangle (x, y, width, height) of the read framebuffer (y from the bottom, rows bottom
+  /// first) into `pixels`, laid out by PACK_ALIGNMENT, PACK_ROW_LENGTH, PACK_SKIP_ROWS and PACK_SKIP_PIXELS
+  /// (PixelStore). format: RED, GREEN, BLUE, RG, RGB, BGR, RGBA, BGRA (from COLOR_ATTACHMENT0 of a framebuffer
+  /// object), DEPTH_COMPONENT, STENCIL_INDEX, DEPTH_STENCIL; type: UNSIGNED_BYTE, UNSIGNED_SHORT, UNSIGNED_INT
+  /// (normalized: round(clamp(v) * (2^N - 1)); stencil indices as they are), FLOAT (as stored), or
+  /// UNSIGNED_INT_24_8 with DEPTH_STENCIL (depth in the high 24 bits, stencil in the low 8). Pixels of the
+  /// rectangle outside the framebuffer are not written. Errors: bad format or type: INVALID_ENUM; negative size:
+  /// INVALID_VALUE; DEPTH_STENCIL without UNSIGNED_INT_24_8 or the reverse, no buffer of the kind asked:
+  /// INVALID_OPERATION; incomplete read framebuffer: INVALID_FRAMEBUFFER_OPERATION.
+  void ReadPixels(int x, int y, int width, int height, Enum format, Enum type, void* pixels) const;
   /// The colour buffer, top row first (ready for WritePng).
   Image ReadPixels() const;
   /// The colour of window pixel (x, y), y counted from the bottom as in OpenGL; {0,0,0,0} outside.

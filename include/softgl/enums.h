@@ -162,8 +162,15 @@ inline constexpr Enum TEXTURE_CUBE_MAP_NEGATIVE_Z = 0x851A;
 inline constexpr Enum TEXTURE0 = 0x84C0;  // TEXTURE0 + i selects unit i
 
 // Pixel formats (format argument) and internal formats.
+inline constexpr Enum STENCIL_INDEX = 0x1901;
 inline constexpr Enum DEPTH_COMPONENT = 0x1902;
 inline constexpr Enum RED = 0x1903;
+inline constexpr Enum GREEN = 0x1904;
+inline constexpr Enum BLUE = 0x1905;
+inline constexpr Enum BGR = 0x80E0;
+inline constexpr Enum BGRA = 0x80E1;
+inline constexpr Enum DEPTH_STENCIL = 0x84F9;
+inline constexpr Enum UNSIGNED_INT_24_8 = 0x84FA;  // DEPTH_STENCIL pixels: depth in the high 24 bits, stencil low
 inline constexpr Enum RGB = 0x1907;
 inline constexpr Enum RGBA = 0x1908;
 inline constexpr Enum RG = 0x8227;
@@ -202,6 +209,10 @@ inline constexpr Enum CLAMP_TO_BORDER = 0x812D;
 inline constexpr Enum CLAMP_TO_EDGE = 0x812F;
 inline constexpr Enum MIRRORED_REPEAT = 0x8370;
 inline constexpr Enum UNPACK_ALIGNMENT = 0x0CF5;
+inline constexpr Enum PACK_ROW_LENGTH = 0x0D02;
+inline constexpr Enum PACK_SKIP_ROWS = 0x0D03;
+inline constexpr Enum PACK_SKIP_PIXELS = 0x0D04;
+inline constexpr Enum PACK_ALIGNMENT = 0x0D05;
 
 // Framebuffer objects.
 inline constexpr Enum FRAMEBUFFER = 0x8D40;

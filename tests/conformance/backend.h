@@ -77,6 +77,13 @@ struct DrawVariant {
   int instance_first = 0;            // the instanced calls: attribute 3 starts at this element of `instance_data`
 };
 
+/// One ReadPixels call with its pack state (PixelStore's PACK_* values).
+struct PixelRead {
+  int x = 0, y = 0, width = 0, height = 0;
+  Enum format = softgl::RGBA, type = softgl::UNSIGNED_BYTE;
+  int alignment = 4, row_length = 0, skip_rows = 0, skip_pixels = 0;
+};
+
 class Backend {
  public:
   virtual ~Backend() = default;
@@ -124,6 +131,8 @@ class Backend {
   /// GetBufferSubData reads it back.
   virtual std::vector<Vertex> DrawThroughBufferCalls(Enum mode, const std::vector<Vertex>& vertices, int mapped) = 0;
   virtual Frame Read() = 0;
+  /// ReadPixels into a buffer of `bytes` bytes first filled with 0xCD (bytes the call does not write keep it).
+  virtual std::vector<std::uint8_t> ReadPixels(const PixelRead& read, std::size_t bytes) = 0;
   /// Defines the texture of unit 0 (replacing any before).
   virtual void SetTexture(const TextureDesc& desc) = 0;
   /// Defines the cube map of unit 1 from six faces (+x, -x, +y, -y, +z, -z) of size x size RGBA8, mipmapped with

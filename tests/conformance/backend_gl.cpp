@@ -375,6 +375,20 @@ class GlBackend final : public Backend {
     return f;
   }
 
+  std::vector<std::uint8_t> ReadPixels(const PixelRead& r, std::size_t bytes) override {
+    std::vector<std::uint8_t> out(bytes, 0xCD);
+    glPixelStorei(GL_PACK_ALIGNMENT, r.alignment);
+    glPixelStorei(GL_PACK_ROW_LENGTH, r.row_length);
+    glPixelStorei(GL_PACK_SKIP_ROWS, r.skip_rows);
+    glPixelStorei(GL_PACK_SKIP_PIXELS, r.skip_pixels);
+    glReadPixels(r.x, r.y, r.width, r.height, r.format, r.type, out.data());
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);  // as Init leaves it
+    glPixelStorei(GL_PACK_ROW_LENGTH, 0);
+    glPixelStorei(GL_PACK_SKIP_ROWS, 0);
+    glPixelStorei(GL_PACK_SKIP_PIXELS, 0);
+    return out;
+  }
+
  private:
   OSMesaContext ctx_;
   int w_, h_;

@@ -339,15 +339,28 @@ class SoftglBackend final : public Backend {
     Frame f;
     f.width = gl_.Width();
     f.height = gl_.Height();
-    for (int y = 0; y < f.height; ++y)
-      for (int x = 0; x < f.width; ++x) {
-        std::uint8_t px[4];
-        gl_.ReadPixel(x, y, px);
-        f.rgba.insert(f.rgba.end(), px, px + 4);
-        f.depth.push_back(gl_.ReadDepth(x, y));
-        f.stencil.push_back(gl_.ReadStencil(x, y));
-      }
+    f.rgba.resize(std::size_t(f.width) * std::size_t(f.height) * 4);
+    f.depth.resize(std::size_t(f.width) * std::size_t(f.height));
+    f.stencil.resize(std::size_t(f.width) * std::size_t(f.height));
+    gl_.PixelStore(softgl::PACK_ALIGNMENT, 1);
+    gl_.ReadPixels(0, 0, f.width, f.height, softgl::RGBA, softgl::UNSIGNED_BYTE, f.rgba.data());
+    gl_.ReadPixels(0, 0, f.width, f.height, softgl::DEPTH_COMPONENT, softgl::FLOAT, f.depth.data());
+    gl_.ReadPixels(0, 0, f.width, f.height, softgl::STENCIL_INDEX, softgl::UNSIGNED_BYTE, f.stencil.data());
     return f;
+  }
+
+  std::vector<std::uint8_t> ReadPixels(const PixelRead& r, std::size_t bytes) override {
+    std::vector<std::uint8_t> out(bytes, 0xCD);
+    gl_.PixelStore(softgl::PACK_ALIGNMENT, r.alignment);
+    gl_.PixelStore(softgl::PACK_ROW_LENGTH, r.row_length);
+    gl_.PixelStore(softgl::PACK_SKIP_ROWS, r.skip_rows);
+    gl_.PixelStore(softgl::PACK_SKIP_PIXELS, r.skip_pixels);
+    gl_.ReadPixels(r.x, r.y, r.width, r.height, r.format, r.type, out.data());
+    gl_.PixelStore(softgl::PACK_ALIGNMENT, 4);
+    gl_.PixelStore(softgl::PACK_ROW_LENGTH, 0);
+    gl_.PixelStore(softgl::PACK_SKIP_ROWS, 0);
+    gl_.PixelStore(softgl::PACK_SKIP_PIXELS, 0);
+    return out;
   }
 
  private:

@@ -120,6 +120,92 @@ TEST_CASE("conformance scenes match Mesa", "[conformance]") {
   }
 }
 
+namespace conformance {
+namespace {
+
+// Bytes a ReadPixels of `r` may touch, and how to compare two results: component size and tolerance.
+std::size_t ReadBytes(const PixelRead& r, std::size_t component, int per_pixel) {
+  const std::size_t pixel = component * std::size_t(per_pixel);
+  std::size_t stride = std::size_t(r.row_length > 0 ? r.row_length : r.width) * pixel;
+  if (component < std::size_t(r.alignment)) stride = (stride + r.alignment - 1) / r.alignment * r.alignment;
+  return (std::size_t(r.skip_rows) + std::size_t(r.height)) * stride + std::size_t(r.skip_pixels) * pixel;
+}
+
+}  // namespace
+}  // namespace conformance
+
+TEST_CASE("ReadPixels formats, types and pack layouts match Mesa", "[conformance]") {
+  using softgl::Enum;
+  struct Read {
+    const char* scene;
+    PixelRead r;
+    int per_pixel;
+    double tolerance;  // per component, in its own units
+  };
+  namespace gl = softgl;
+  const Read reads[] = {
+      {"stencil", {0, 0, 128, 128, gl::RGBA, gl::UNSIGNED_BYTE, 1}, 4, 0},
+      {"stencil", {-5, 120, 7, 16, gl::RGB, gl::UNSIGNED_BYTE, 4}, 3, 0},  // partly outside, rows padded
+      {"stencil", {30, 40, 9, 5, gl::BGRA, gl::UNSIGNED_BYTE, 4, 40, 2, 3}, 4, 0},
+      {"stencil", {10, 10, 33, 9, gl::BGR, gl::UNSIGNED_BYTE, 8}, 3, 0},
+      {"stencil", {0, 0, 128, 128, gl::RED, gl::FLOAT, 4}, 1, 1e-6},
+      {"stencil", {60, 70, 20, 20, gl::RG, gl::UNSIGNED_SHORT, 8}, 2, 0},
+      {"stencil", {100, 100, 40, 40, gl::GREEN, gl::UNSIGNED_BYTE, 2}, 1, 0},
+      {"stencil", {0, 0, 128, 128, gl::STENCIL_INDEX, gl::UNSIGNED_BYTE, 1}, 1, 0},
+      {"stencil", {0, 0, 128, 128, gl::STENCIL_INDEX, gl::FLOAT, 4}, 1, 0},
+      {"stencil", {20, -3, 50, 50, gl::DEPTH_STENCIL, gl::UNSIGNED_INT_24_8, 4}, 1, 3 * 256},
+      {"depth_functions", {0, 0, 128, 128, gl::DEPTH_COMPONENT, gl::FLOAT, 4}, 1, 1.0 / (1 << 22)},
+      {"depth_functions", {5, 5, 100, 30, gl::DEPTH_COMPONENT, gl::UNSIGNED_SHORT, 2, 0, 1, 1}, 1, 1},
+      {"depth_functions", {0, 64, 128, 10, gl::DEPTH_COMPONENT, gl::UNSIGNED_BYTE, 1}, 1, 1},
+      {"depth_functions", {0, 0, 128, 128, gl::DEPTH_STENCIL, gl::UNSIGNED_INT_24_8, 4}, 1, 3 * 256},
+  };
+  for (const Read& read : reads) {
+    const PixelRead& r = read.r;
+    INFO(read.scene << ": format " << r.format << " type " << r.type << " at (" << r.x << ", " << r.y << ") "
+                    << r.width << " x " << r.height << ", alignment " << r.alignment << ", row length "
+                    << r.row_length);
+    const SceneInfo* scene = nullptr;
+    for (const SceneInfo& s : Scenes())
+      if (std::string(s.name) == read.scene) scene = &s;
+    REQUIRE(scene != nullptr);
+    std::string error;
+    auto mesa = MakeGlBackend(scene->width, scene->height, &error);
+    REQUIRE(mesa);
+    auto ours = MakeSoftglBackend(scene->width, scene->height);
+    scene->run(*mesa);
+    scene->run(*ours);
+    const std::size_t component = r.type == gl::UNSIGNED_BYTE ? 1 : r.type == gl::UNSIGNED_SHORT ? 2 : 4;
+    const std::size_t bytes = ReadBytes(r, component, read.per_pixel);
+    const std::vector<std::uint8_t> a = ours->ReadPixels(r, bytes), b = mesa->ReadPixels(r, bytes);
+    int over = 0, untouched_a = 0, untouched_b = 0;
+    double worst = 0;
+    for (std::size_t i = 0; i + component <= bytes; i += component) {
+      double va = 0, vb = 0;
+      if (r.type == gl::FLOAT) {
+        float fa, fb;
+        std::memcpy(&fa, &a[i], 4);
+        std::memcpy(&fb, &b[i], 4);
+        va = fa, vb = fb;
+      } else {
+        std::uint32_t ua = 0, ub = 0;
+        std::memcpy(&ua, &a[i], component);
+        std::memcpy(&ub, &b[i], component);
+        va = ua, vb = ub;
+        if (r.type == gl::UNSIGNED_INT_24_8 && (ua & 0xFF) != (ub & 0xFF)) ++over;  // stencil exact
+      }
+      const double d = std::fabs(va - vb);
+      worst = std::max(worst, d);
+      over += d > read.tolerance;
+      untouched_a += a[i] == 0xCD && a[i + component - 1] == 0xCD;
+      untouched_b += b[i] == 0xCD && b[i + component - 1] == 0xCD;
+    }
+    INFO("largest difference " << worst << ", components untouched " << untouched_a << " (softgl) and "
+                               << untouched_b << " (Mesa)");
+    CHECK(over == 0);
+    CHECK(untouched_a == untouched_b);
+  }
+}
+
 int main(int argc, char** argv) {
   if (argc > 1 && std::string(argv[1]) == "--report") {
     for (const SceneInfo& s : Scenes()) {

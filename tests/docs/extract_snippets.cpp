@@ -84,7 +84,7 @@ bool Write(const fs::path& path, const std::string& text) {
 }
 
 const char* kPrelude =
-    "#include <cstdint>\n#include <cstdio>\n#include <cstring>\n#include <string>\n\n#include <softgl/model.h>\n"
+    "#include <cstdint>\n#include <cstdio>\n#include <cstring>\n#include <string>\n#include <vector>\n\n#include <softgl/model.h>\n"
     "#include <softgl/shaders.h>\n#include <softgl/softgl.h>\n\n";
 
 }  // namespace

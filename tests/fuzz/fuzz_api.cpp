@@ -232,6 +232,28 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         gl.ReadPixel(in.Int(-2, 50), in.Int(-2, 50), px);
         (void)gl.ReadPixels();
         (void)gl.ReadDepth(in.Int(-2, 50), in.Int(-2, 50));
+        {  // a rectangle of any format and pack layout, into a buffer exactly as large as OpenGL says it needs
+          constexpr std::uint32_t kReadFormats[] = {RED, RG, RGB, BGRA, RGBA, DEPTH_COMPONENT, STENCIL_INDEX,
+                                                    DEPTH_STENCIL};
+          constexpr std::uint32_t kReadTypes[] = {UNSIGNED_BYTE, UNSIGNED_SHORT, FLOAT, UNSIGNED_INT_24_8};
+          // (Int may return any int: sizes are clamped so that the buffer stays small; x and y may be anything.)
+          const auto small = [&](int lo, int hi) { return std::clamp(in.Int(lo, hi), lo, hi); };
+          const int align = 1 << small(0, 3), row = small(0, 60), skip_rows = small(0, 3), skip_px = small(0, 3);
+          gl.PixelStore(PACK_ALIGNMENT, align);
+          gl.PixelStore(PACK_ROW_LENGTH, row);
+          gl.PixelStore(PACK_SKIP_ROWS, skip_rows);
+          gl.PixelStore(PACK_SKIP_PIXELS, skip_px);
+          const int x = in.Int(-60, 60), y = in.Int(-60, 60), w = small(-1, 60), h = small(-1, 60);
+          const std::uint32_t format = in.Enum(kReadFormats), type = in.Enum(kReadTypes);
+          const std::size_t comp = type == UNSIGNED_BYTE ? 1 : type == UNSIGNED_SHORT ? 2 : 4;
+          const std::size_t per = format == RGBA || format == BGRA ? 4 : format == RGB ? 3 : format == RG ? 2 : 1;
+          std::size_t stride = std::size_t(row > 0 ? row : std::max(w, 0)) * comp * per;
+          if (comp < std::size_t(align)) stride = (stride + std::size_t(align) - 1) / std::size_t(align) * std::size_t(align);
+          // The last pixel written ends at (skip_rows + h - 1) * stride + (skip_pixels + w) * pixel bytes.
+          const std::size_t need = w > 0 && h > 0 ? std::size_t(skip_rows + h - 1) * stride + std::size_t(skip_px + w) * comp * per : 0;
+          scratch.assign(need, 0);
+          gl.ReadPixels(x, y, w, h, format, type, scratch.data());
+        }
         (void)gl.CheckFramebufferStatus(in.Enum(kFbTargets));
         break;
       }
