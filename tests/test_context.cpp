@@ -1144,6 +1144,81 @@ TEST_CASE("ReadPixels reads a float attachment as stored, and clamps it for byte
   CHECK(gl.GetError() == NO_ERROR);
 }
 
+TEST_CASE("state queries: bindings, conversions, limits, strings and errors", "[context]") {
+  Context gl(40, 30);
+  int v[4] = {-7, -7, -7, -7};
+  gl.GetIntegerv(VIEWPORT, v);
+  CHECK((v[0] == 0 && v[1] == 0 && v[2] == 40 && v[3] == 30));
+  // Bindings report the ids bound.
+  const std::uint32_t vao = gl.GenVertexArray(), vbo = gl.GenBuffer(), ebo = gl.GenBuffer(), tex = gl.GenTexture();
+  const std::uint32_t fbo = gl.GenFramebuffer();
+  gl.BindVertexArray(vao);
+  gl.BindBuffer(ARRAY_BUFFER, vbo);
+  gl.BindBuffer(ELEMENT_ARRAY_BUFFER, ebo);
+  gl.ActiveTexture(TEXTURE0 + 3);
+  gl.BindTexture(TEXTURE_2D, tex);
+  gl.BindFramebuffer(READ_FRAMEBUFFER, fbo);
+  const std::pair<Enum, int> bindings[] = {{VERTEX_ARRAY_BINDING, int(vao)}, {ARRAY_BUFFER_BINDING, int(vbo)},
+                                           {ELEMENT_ARRAY_BUFFER_BINDING, int(ebo)}, {ACTIVE_TEXTURE, int(TEXTURE0 + 3)},
+                                           {TEXTURE_BINDING_2D, int(tex)}, {TEXTURE_BINDING_CUBE_MAP, 0},
+                                           {READ_FRAMEBUFFER_BINDING, int(fbo)}, {DRAW_FRAMEBUFFER_BINDING, 0}};
+  for (const auto& [name, id] : bindings) {
+    INFO("name 0x" << std::hex << name);
+    gl.GetIntegerv(name, v);
+    CHECK(v[0] == id);
+  }
+  gl.BindVertexArray(0);
+  gl.GetIntegerv(ELEMENT_ARRAY_BUFFER_BINDING, v);  // part of the vertex array: none bound, none to report
+  CHECK(v[0] == 0);
+  // Conversions: booleans to 0 / 1, floats rounded, colours mapped linearly onto the integers.
+  gl.Enable(BLEND);
+  bool b[4] = {};
+  gl.GetBooleanv(BLEND, b);
+  CHECK(b[0]);
+  float f[4] = {};
+  gl.GetFloatv(BLEND, f);
+  CHECK(f[0] == 1.0f);
+  gl.PointSize(2.6f);
+  gl.GetIntegerv(POINT_SIZE, v);
+  CHECK(v[0] == 3);
+  gl.ClearColor(1.0f, 0.5f, 0.0f, -1.0f);
+  std::int64_t w[4] = {};
+  gl.GetInteger64v(COLOR_CLEAR_VALUE, w);
+  CHECK((w[0] == 2147483647 && w[1] == 1073741823 && w[2] == 0 && w[3] == -2147483647));
+  gl.ColorMask(true, false, true, false);
+  gl.GetIntegerv(COLOR_WRITEMASK, v);
+  CHECK((v[0] == 1 && v[1] == 0 && v[2] == 1 && v[3] == 0));
+  gl.StencilFunc(GEQUAL, 999, 0x0F);
+  gl.GetIntegerv(STENCIL_REF, v);
+  CHECK(v[0] == 255);  // clamped to the 8-bit stencil buffer's range
+  gl.GetIntegerv(STENCIL_FUNC, v);
+  CHECK(v[0] == int(GEQUAL));
+  // Limits are softgl's own constants.
+  gl.GetIntegerv(MAX_VERTEX_ATTRIBS, v);
+  CHECK(v[0] == kMaxVertexAttribs);
+  gl.GetIntegerv(MAX_TEXTURE_SIZE, v);
+  CHECK(v[0] == kMaxTextureSize);
+  gl.GetIntegerv(MAX_DRAW_BUFFERS, v);
+  CHECK(v[0] == kMaxColorOutputs);
+  gl.GetIntegerv(MAX_VIEWPORT_DIMS, v);
+  CHECK((v[0] == kMaxFramebufferSize && v[1] == kMaxFramebufferSize));
+  gl.GetIntegerv(MAJOR_VERSION, v);
+  gl.GetIntegerv(MINOR_VERSION, v + 1);
+  CHECK((v[0] == 3 && v[1] == 3));
+  CHECK(std::string(gl.GetString(VERSION)).rfind("3.3 softgl ", 0) == 0);
+  CHECK(std::string(gl.GetString(VENDOR)) == "softgl");
+  CHECK(gl.GetError() == NO_ERROR);
+  // An unknown name: INVALID_ENUM, nothing written.
+  v[0] = -7;
+  gl.GetIntegerv(0x1234, v);
+  CHECK(gl.GetError() == INVALID_ENUM);
+  CHECK(v[0] == -7);
+  gl.GetFloatv(0x1234, f);
+  CHECK(gl.GetError() == INVALID_ENUM);
+  CHECK(gl.GetString(0x1234) == nullptr);
+  CHECK(gl.GetError() == INVALID_ENUM);
+}
+
 TEST_CASE("the debug callback reports every error with the call's name", "[context][errors]") {
   Context gl(4, 4);
   struct Report {

@@ -349,6 +349,30 @@ class Context {
   /// nothing is drawn.
   void MultiDrawElements(Enum mode, const int* count, Enum type, const std::size_t* offsets, int drawcount);
 
+  // ---- State queries -----------------------------------------------------------------------------------------
+  /// glGet*: the state named by pname, converted as OpenGL converts it (booleans to 0 / 1; floats to integers by
+  /// rounding, except colours and depths, which map [-1, 1] linearly onto the integer range; GetIntegerv clamps to
+  /// int). Names: the Enable capabilities; the bindings (ARRAY_BUFFER_BINDING, ELEMENT_ARRAY_BUFFER_BINDING,
+  /// COPY_READ/WRITE_BUFFER_BINDING, VERTEX_ARRAY_BINDING, ACTIVE_TEXTURE, TEXTURE_BINDING_2D/CUBE_MAP of the
+  /// active unit, DRAW/READ_FRAMEBUFFER_BINDING, DRAW_BUFFER0 + i); VIEWPORT, SCISSOR_BOX (4 values), DEPTH_RANGE
+  /// (2); CULL_FACE_MODE, FRONT_FACE, POLYGON_MODE (2), POINT_SIZE, PROVOKING_VERTEX, POLYGON_OFFSET_FACTOR/UNITS,
+  /// PRIMITIVE_RESTART_INDEX; DEPTH_FUNC, DEPTH_WRITEMASK, DEPTH_CLEAR_VALUE; STENCIL_FUNC, _REF, _VALUE_MASK,
+  /// _FAIL, _PASS_DEPTH_FAIL, _PASS_DEPTH_PASS, _WRITEMASK and their STENCIL_BACK_ forms, STENCIL_CLEAR_VALUE;
+  /// BLEND_SRC/DST_RGB/ALPHA, BLEND_EQUATION_RGB/ALPHA, BLEND_COLOR (4), COLOR_CLEAR_VALUE (4), COLOR_WRITEMASK
+  /// (4); UNPACK_ALIGNMENT and the PACK_ settings; the limits MAX_VERTEX_ATTRIBS, MAX_TEXTURE_SIZE,
+  /// MAX_CUBE_MAP_TEXTURE_SIZE, MAX_TEXTURE_IMAGE_UNITS (and the VERTEX_ and COMBINED_ forms), MAX_DRAW_BUFFERS,
+  /// MAX_COLOR_ATTACHMENTS, MAX_SAMPLES (1), MAX_VIEWPORT_DIMS (2), MAX_VARYING_COMPONENTS,
+  /// MAX_ELEMENTS_VERTICES/INDICES, POINT_SIZE_RANGE (2), ALIASED_LINE_WIDTH_RANGE (2), SUBPIXEL_BITS,
+  /// MAJOR_VERSION, MINOR_VERSION (3.3), NUM_EXTENSIONS (0), CONTEXT_PROFILE_MASK (core). `data` must hold as many
+  /// values as the name has. Another name: INVALID_ENUM, data untouched.
+  void GetIntegerv(Enum pname, int* data) const;
+  void GetInteger64v(Enum pname, std::int64_t* data) const;
+  void GetFloatv(Enum pname, float* data) const;
+  void GetBooleanv(Enum pname, bool* data) const;
+  /// VENDOR, RENDERER, VERSION ("3.3 softgl" and softgl's version) or SHADING_LANGUAGE_VERSION; another name:
+  /// INVALID_ENUM and null.
+  const char* GetString(Enum name) const;
+
   // ---- Reading back ------------------------------------------------------------------------------------------
   // From the framebuffer bound to READ_FRAMEBUFFER: the context's own, or a framebuffer object's
   // COLOR_ATTACHMENT0 (converted to 8 bits) and depth attachment.

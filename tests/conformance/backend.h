@@ -130,6 +130,12 @@ class Backend {
   /// BUFFER_SIZE / sizeof(Vertex) of them as `mode` with the kColor program, and returns the store as
   /// GetBufferSubData reads it back.
   virtual std::vector<Vertex> DrawThroughBufferCalls(Enum mode, const std::vector<Vertex>& vertices, int mapped) = 0;
+  /// glGetIntegerv, glGetFloatv and glGetBooleanv of `count` values.
+  virtual std::vector<std::int64_t> GetIntegers(Enum pname, int count) = 0;
+  virtual std::vector<float> GetFloats(Enum pname, int count) = 0;
+  virtual std::vector<bool> GetBooleans(Enum pname, int count) = 0;
+  /// The first error since the last call (glGetError).
+  virtual Enum GetError() = 0;
   virtual Frame Read() = 0;
   /// ReadPixels into a buffer of `bytes` bytes first filled with 0xCD (bytes the call does not write keep it).
   virtual std::vector<std::uint8_t> ReadPixels(const PixelRead& read, std::size_t bytes) = 0;

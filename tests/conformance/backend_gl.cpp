@@ -4,6 +4,7 @@
 #include <GL/gl.h>
 #include <GL/glext.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <cstring>
 
@@ -360,6 +361,27 @@ class GlBackend final : public Backend {
     glUseProgram(programs_[3]);
     glUniform1i(glGetUniformLocation(programs_[3], "u_tex"), 0);
   }
+
+  std::vector<std::int64_t> GetIntegers(Enum pname, int count) override {
+    std::vector<std::int64_t> v(std::size_t(count), -12345);
+    std::vector<GLint> i(std::size_t(count), -12345);
+    glGetIntegerv(pname, i.data());
+    std::copy(i.begin(), i.end(), v.begin());
+    return v;
+  }
+  std::vector<float> GetFloats(Enum pname, int count) override {
+    std::vector<float> v(std::size_t(count), -12345.0f);
+    glGetFloatv(pname, v.data());
+    return v;
+  }
+  std::vector<bool> GetBooleans(Enum pname, int count) override {
+    GLboolean b[4] = {};
+    glGetBooleanv(pname, b);
+    std::vector<bool> v;
+    for (int k = 0; k < count; ++k) v.push_back(b[k] != GL_FALSE);
+    return v;
+  }
+  Enum GetError() override { return glGetError(); }
 
   Frame Read() override {
     Frame f;

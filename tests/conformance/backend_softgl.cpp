@@ -1,4 +1,5 @@
 // backend_softgl.cpp — the conformance backend on softgl, with the scene shaders in C++.
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 
@@ -334,6 +335,25 @@ class SoftglBackend final : public Backend {
     gl_.BindTexture(softgl::TEXTURE_2D, rtt_color_);
     gl_.TexParameteri(softgl::TEXTURE_2D, softgl::TEXTURE_MIN_FILTER, softgl::LINEAR);
   }
+
+  std::vector<std::int64_t> GetIntegers(Enum pname, int count) override {
+    std::vector<std::int64_t> v(std::size_t(count), -12345);
+    std::vector<int> i(std::size_t(count), -12345);
+    gl_.GetIntegerv(pname, i.data());
+    std::copy(i.begin(), i.end(), v.begin());
+    return v;
+  }
+  std::vector<float> GetFloats(Enum pname, int count) override {
+    std::vector<float> v(std::size_t(count), -12345.0f);
+    gl_.GetFloatv(pname, v.data());
+    return v;
+  }
+  std::vector<bool> GetBooleans(Enum pname, int count) override {
+    bool b[4] = {false, false, false, false};
+    gl_.GetBooleanv(pname, b);
+    return std::vector<bool>(b, b + count);
+  }
+  Enum GetError() override { return gl_.GetError(); }
 
   Frame Read() override {
     Frame f;

@@ -206,6 +206,73 @@ TEST_CASE("ReadPixels formats, types and pack layouts match Mesa", "[conformance
   }
 }
 
+TEST_CASE("state queries return what Mesa returns, at the defaults and after changes", "[conformance]") {
+  namespace gl = softgl;
+  // Every state name whose value OpenGL defines (the implementation's limits differ by design and are left out),
+  // with its value count.
+  const std::pair<Enum, int> names[] = {
+      {gl::VIEWPORT, 4}, {gl::SCISSOR_BOX, 4}, {gl::DEPTH_RANGE, 2}, {gl::CULL_FACE_MODE, 1}, {gl::FRONT_FACE, 1},
+      {gl::POLYGON_MODE, 1}, {gl::POINT_SIZE, 1}, {gl::PROVOKING_VERTEX, 1}, {gl::POLYGON_OFFSET_FACTOR, 1},
+      {gl::POLYGON_OFFSET_UNITS, 1}, {gl::PRIMITIVE_RESTART_INDEX, 1}, {gl::DEPTH_FUNC, 1},
+      {gl::DEPTH_WRITEMASK, 1}, {gl::DEPTH_CLEAR_VALUE, 1}, {gl::STENCIL_FUNC, 1}, {gl::STENCIL_REF, 1},
+      {gl::STENCIL_VALUE_MASK, 1}, {gl::STENCIL_FAIL, 1}, {gl::STENCIL_PASS_DEPTH_FAIL, 1},
+      {gl::STENCIL_PASS_DEPTH_PASS, 1}, {gl::STENCIL_WRITEMASK, 1}, {gl::STENCIL_BACK_FUNC, 1},
+      {gl::STENCIL_BACK_REF, 1}, {gl::STENCIL_BACK_VALUE_MASK, 1}, {gl::STENCIL_BACK_FAIL, 1},
+      {gl::STENCIL_BACK_PASS_DEPTH_FAIL, 1}, {gl::STENCIL_BACK_PASS_DEPTH_PASS, 1}, {gl::STENCIL_BACK_WRITEMASK, 1},
+      {gl::STENCIL_CLEAR_VALUE, 1}, {gl::BLEND_SRC_RGB, 1}, {gl::BLEND_DST_RGB, 1}, {gl::BLEND_SRC_ALPHA, 1},
+      {gl::BLEND_DST_ALPHA, 1}, {gl::BLEND_EQUATION_RGB, 1}, {gl::BLEND_EQUATION_ALPHA, 1}, {gl::BLEND_COLOR, 4},
+      {gl::COLOR_CLEAR_VALUE, 4}, {gl::COLOR_WRITEMASK, 4}, {gl::CULL_FACE, 1}, {gl::DEPTH_TEST, 1},
+      {gl::STENCIL_TEST, 1}, {gl::SCISSOR_TEST, 1}, {gl::BLEND, 1}, {gl::POLYGON_OFFSET_FILL, 1},
+      {gl::POLYGON_OFFSET_LINE, 1}, {gl::POLYGON_OFFSET_POINT, 1}, {gl::PROGRAM_POINT_SIZE, 1},
+      {gl::PRIMITIVE_RESTART, 1}, {gl::PRIMITIVE_RESTART_FIXED_INDEX, 1}};
+  auto change = [](Backend& b) {
+    b.Viewport(3, 5, 70, 40);
+    b.Scissor(-2, 7, 11, 13);
+    b.DepthRange(0.25, 0.8);
+    b.CullFace(gl::FRONT_AND_BACK);
+    b.FrontFace(gl::CW);
+    b.PolygonMode(gl::LINE);
+    b.PointSize(3.5f);
+    b.PolygonOffset(-1.5f, 2.0f);
+    b.PrimitiveRestartIndex(65535);
+    b.DepthFunc(gl::GEQUAL);
+    b.DepthMask(false);
+    b.ClearDepth(0.3);
+    b.StencilFuncSeparate(gl::FRONT, gl::NOTEQUAL, 300, 0x0F);  // the reference is kept as given, clamped on use
+    b.StencilFuncSeparate(gl::BACK, gl::LESS, -4, 0xF0F0F0F0u);
+    b.StencilOpSeparate(gl::FRONT, gl::INCR_WRAP, gl::INVERT, gl::REPLACE);
+    b.StencilOpSeparate(gl::BACK, gl::DECR, gl::ZERO, gl::INCR);
+    b.StencilMaskSeparate(gl::FRONT, 0x3C);
+    b.ClearStencil(0x1234);
+    b.BlendFuncSeparate(gl::SRC_ALPHA, gl::ONE_MINUS_SRC_ALPHA, gl::CONSTANT_COLOR, gl::DST_ALPHA);
+    b.BlendEquationSeparate(gl::FUNC_REVERSE_SUBTRACT, gl::MAX);
+    // (Colours in [-1, 1]: Mesa's integer conversion overflows beyond, where OpenGL clamps.)
+    b.BlendColor(0.2f, 1.0f, -0.25f, 0.75f);
+    b.ClearColor(0.1f, 0.9f, 0.0f, -1.0f);
+    b.ColorMask(true, false, true, false);
+    for (Enum cap : {gl::CULL_FACE, gl::DEPTH_TEST, gl::STENCIL_TEST, gl::BLEND, gl::POLYGON_OFFSET_LINE,
+                     gl::PRIMITIVE_RESTART})
+      b.Enable(cap);
+  };
+  for (bool changed : {false, true}) {
+    std::string error;
+    auto mesa = MakeGlBackend(32, 32, &error);
+    REQUIRE(mesa);
+    auto ours = MakeSoftglBackend(32, 32);
+    if (changed) {
+      change(*mesa);
+      change(*ours);
+    }
+    for (const auto& [pname, count] : names) {
+      INFO((changed ? "changed" : "default") << " state 0x" << std::hex << pname);
+      CHECK(ours->GetIntegers(pname, count) == mesa->GetIntegers(pname, count));
+      CHECK(ours->GetFloats(pname, count) == mesa->GetFloats(pname, count));
+      CHECK(ours->GetBooleans(pname, count) == mesa->GetBooleans(pname, count));
+      CHECK(ours->GetError() == mesa->GetError());
+    }
+  }
+}
+
 int main(int argc, char** argv) {
   if (argc > 1 && std::string(argv[1]) == "--report") {
     for (const SceneInfo& s : Scenes()) {

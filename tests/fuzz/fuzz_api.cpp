@@ -255,6 +255,18 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
           gl.ReadPixels(x, y, w, h, format, type, scratch.data());
         }
         (void)gl.CheckFramebufferStatus(in.Enum(kFbTargets));
+        {  // any name in the ranges OpenGL's state names use (every name fits in 4 values)
+          const std::uint32_t pname = in.Byte() % 2 ? std::uint32_t(in.Int(0x0B00, 0x0D60)) : std::uint32_t(in.Int(0x8000, 0x9130));
+          int iv[4];
+          float fv[4];
+          bool bv[4];
+          std::int64_t lv[4];
+          gl.GetIntegerv(pname, iv);
+          gl.GetFloatv(pname, fv);
+          gl.GetBooleanv(pname, bv);
+          gl.GetInteger64v(pname, lv);
+          (void)gl.GetString(pname);
+        }
         break;
       }
     }
