@@ -6,6 +6,7 @@
 #include <softgl/context.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstring>
 #include <memory>
 #include <new>
@@ -75,6 +76,27 @@ struct FramebufferObject {
   Attachment depth;
   Enum draw_buffers[kMaxColorOutputs] = {COLOR_ATTACHMENT0, NONE, NONE, NONE};
 };
+
+// A query object (GenQueries). Its target is fixed by its first BeginQuery.
+struct QueryObject {
+  Enum target = 0;
+  bool active = false;
+  std::shared_ptr<detail::OcclusionCounter> counter;  // SAMPLES_PASSED, ANY_SAMPLES_PASSED: tiles add to it
+  std::uint64_t count = 0;                            // PRIMITIVES_GENERATED, counted as draws are recorded
+  std::chrono::steady_clock::time_point start;        // TIME_ELAPSED
+  std::uint64_t elapsed_ns = 0;
+};
+
+// The slot of each query target: 0 SAMPLES_PASSED, 1 ANY_SAMPLES_PASSED, 2 PRIMITIVES_GENERATED, 3 TIME_ELAPSED.
+int QuerySlot(Enum target) {
+  switch (target) {
+    case SAMPLES_PASSED: return 0;
+    case ANY_SAMPLES_PASSED: return 1;
+    case PRIMITIVES_GENERATED: return 2;
+    case TIME_ELAPSED: return 3;
+    default: return -1;
+  }
+}
 
 struct TextureUnit {
   std::shared_ptr<detail::TextureObject> tex_2d, cube;
@@ -160,6 +182,9 @@ struct ContextState {
   int pack_alignment = 4, pack_row_length = 0, pack_skip_rows = 0, pack_skip_pixels = 0;
   std::unordered_map<std::uint32_t, std::unique_ptr<FramebufferObject>> framebuffers;
   std::uint32_t next_framebuffer = 1;
+  std::unordered_map<std::uint32_t, std::unique_ptr<QueryObject>> queries;
+  std::uint32_t next_query = 1;
+  std::uint32_t active_query[4] = {0, 0, 0, 0};  // by QuerySlot: the id active on each target (0: none)
   FramebufferObject* draw_fbo = nullptr;
   FramebufferObject* read_fbo = nullptr;
 
@@ -908,6 +933,11 @@ void ContextState::Draw(const detail::DrawCall& call) {
     }
   }
   packet.ops = ops;
+  for (int k = 0; k < 2; ++k)  // the active occlusion queries count this draw's fragments
+    if (active_query[k]) {
+      packet.occlusion[k] = queries.at(active_query[k])->counter;
+      packet.ops.occlusion[k] = packet.occlusion[k].get();
+    }
   packet.nvar = program->VaryingFloats();
   packet.interpolation = program->VaryingInterpolation();
   packet.shader_depth = program->WritesDepth();
@@ -922,6 +952,7 @@ void ContextState::Draw(const detail::DrawCall& call) {
   ds.bounds = detail::Rect{std::max(ds.viewport.rect.x0, fbr.x0), std::max(ds.viewport.rect.y0, fbr.y0),
                            std::min(ds.viewport.rect.x1, fbr.x1), std::min(ds.viewport.rect.y1, fbr.y1)};
   ds.primitive = primitive;
+  if (active_query[2]) ds.primitives_generated = &queries.at(active_query[2])->count;
   packet.bounds = ds.bounds;
   if (!frame.Accepts(target)) Sync(__func__);
   try {
@@ -1276,6 +1307,118 @@ const char* Context::GetString(Enum name) const {
     case SHADING_LANGUAGE_VERSION: return "none (shaders are C++ classes)";
     default: return state_->SetError(INVALID_ENUM, __func__, "name must be VENDOR, RENDERER, VERSION or SHADING_LANGUAGE_VERSION"), nullptr;
   }
+}
+
+// ---- Query objects ---------------------------------------------------------------------------------------------
+
+std::uint32_t Context::GenQuery() {
+  return NewId(state_->queries, state_->next_query, [] { return std::make_unique<QueryObject>(); });
+}
+
+void Context::GenQueries(int n, std::uint32_t* ids) {
+  GenMany(*state_, __func__, n, ids, [this] { return GenQuery(); });
+}
+
+void Context::DeleteQuery(std::uint32_t id) {
+  auto& s = *state_;
+  auto it = s.queries.find(id);
+  if (it == s.queries.end()) return;
+  for (std::uint32_t& active : s.active_query)  // an active query ends as it is deleted
+    if (active == id) active = 0;
+  s.queries.erase(it);  // recorded draws keep its counter alive until they are rendered
+}
+
+bool Context::IsQuery(std::uint32_t id) const { return state_->queries.count(id) != 0; }
+
+void Context::BeginQuery(Enum target, std::uint32_t id) {
+  auto& s = *state_;
+  const int slot = QuerySlot(target);
+  if (slot < 0) return s.SetError(INVALID_ENUM, __func__, "target must be SAMPLES_PASSED, ANY_SAMPLES_PASSED, PRIMITIVES_GENERATED or TIME_ELAPSED");
+  if (s.active_query[slot]) return s.SetError(INVALID_OPERATION, __func__, "a query is already active on target");
+  if (slot < 2 && s.active_query[1 - slot]) return s.SetError(INVALID_OPERATION, __func__, "an occlusion query of the other kind is active (one occlusion query at a time)");
+  auto it = s.queries.find(id);
+  if (it == s.queries.end()) return s.SetError(INVALID_OPERATION, __func__, "not a query id made by GenQuery (or it was deleted)");
+  QueryObject& q = *it->second;
+  if (q.active) return s.SetError(INVALID_OPERATION, __func__, "the query is active on another target");
+  if (q.target != 0 && q.target != target) return s.SetError(INVALID_OPERATION, __func__, "the query was begun with another target");
+  q.target = target;
+  q.active = true;
+  s.active_query[slot] = id;
+  switch (slot) {
+    case 0:
+    case 1: q.counter = std::make_shared<detail::OcclusionCounter>(); break;  // draws of earlier runs keep theirs
+    case 2: q.count = 0; break;
+    default:  // the time of the work between BeginQuery and EndQuery, rendering included
+      s.Sync(__func__);
+      q.start = std::chrono::steady_clock::now();
+      break;
+  }
+}
+
+void Context::EndQuery(Enum target) {
+  auto& s = *state_;
+  const int slot = QuerySlot(target);
+  if (slot < 0) return s.SetError(INVALID_ENUM, __func__, "target must be SAMPLES_PASSED, ANY_SAMPLES_PASSED, PRIMITIVES_GENERATED or TIME_ELAPSED");
+  if (!s.active_query[slot]) return s.SetError(INVALID_OPERATION, __func__, "no query is active on target");
+  QueryObject& q = *s.queries.at(s.active_query[slot]);
+  s.active_query[slot] = 0;
+  q.active = false;
+  if (slot == 3) {
+    s.Sync(__func__);
+    q.elapsed_ns = std::uint64_t(
+        std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now() - q.start).count());
+  }
+}
+
+void Context::GetQueryiv(Enum target, Enum pname, int* params) const {
+  auto& s = *state_;
+  const int slot = QuerySlot(target);
+  if (slot < 0) return s.SetError(INVALID_ENUM, __func__, "target must be SAMPLES_PASSED, ANY_SAMPLES_PASSED, PRIMITIVES_GENERATED or TIME_ELAPSED");
+  if (pname != CURRENT_QUERY && pname != QUERY_COUNTER_BITS) return s.SetError(INVALID_ENUM, __func__, "pname must be CURRENT_QUERY or QUERY_COUNTER_BITS");
+  if (params != nullptr) *params = pname == CURRENT_QUERY ? int(s.active_query[slot]) : 64;
+}
+
+namespace {
+
+// QUERY_RESULT or QUERY_RESULT_AVAILABLE of query `id`, or false with the error set. Results are made available by
+// rendering what was recorded: asking for one renders the recorded draws first.
+bool QueryResult(ContextState& s, const char* what, std::uint32_t id, Enum pname, std::uint64_t& out) {
+  if (pname != QUERY_RESULT && pname != QUERY_RESULT_AVAILABLE) return s.SetError(INVALID_ENUM, what, "pname must be QUERY_RESULT or QUERY_RESULT_AVAILABLE"), false;
+  auto it = s.queries.find(id);
+  if (it == s.queries.end() || it->second->target == 0) return s.SetError(INVALID_OPERATION, what, "not a query that has been begun"), false;
+  const QueryObject& q = *it->second;
+  if (q.active) return s.SetError(INVALID_OPERATION, what, "the query is active"), false;
+  s.Sync(what);
+  if (pname == QUERY_RESULT_AVAILABLE) return out = 1, true;
+  switch (QuerySlot(q.target)) {
+    case 0: out = q.counter ? q.counter->passed.load() : 0; break;
+    case 1: out = q.counter && q.counter->passed.load() != 0; break;
+    case 2: out = q.count; break;
+    default: out = q.elapsed_ns; break;
+  }
+  return true;
+}
+
+}  // namespace
+
+void Context::GetQueryObjectiv(std::uint32_t id, Enum pname, int* params) {
+  std::uint64_t v = 0;
+  if (QueryResult(*state_, __func__, id, pname, v) && params) *params = int(std::min<std::uint64_t>(v, INT32_MAX));
+}
+
+void Context::GetQueryObjectuiv(std::uint32_t id, Enum pname, std::uint32_t* params) {
+  std::uint64_t v = 0;
+  if (QueryResult(*state_, __func__, id, pname, v) && params) *params = std::uint32_t(std::min<std::uint64_t>(v, UINT32_MAX));
+}
+
+void Context::GetQueryObjecti64v(std::uint32_t id, Enum pname, std::int64_t* params) {
+  std::uint64_t v = 0;
+  if (QueryResult(*state_, __func__, id, pname, v) && params) *params = std::int64_t(std::min<std::uint64_t>(v, INT64_MAX));
+}
+
+void Context::GetQueryObjectui64v(std::uint32_t id, Enum pname, std::uint64_t* params) {
+  std::uint64_t v = 0;
+  if (QueryResult(*state_, __func__, id, pname, v) && params) *params = v;
 }
 
 // ---- Reading back --------------------------------------------------------------------------------------------

@@ -382,6 +382,7 @@ struct BlockOpsContext {
   bool shader_depth;
   bool stencil_test, depth_test, any_color;
   const StencilFace* face;
+  std::uint64_t* passed;  // counts the lanes that pass every test, while an occlusion query is active (else null)
 };
 
 // The per-fragment operations on block b (inside the target, colour buffer 0 RGBA8 or none, no other colour
@@ -425,6 +426,7 @@ SOFTGL_WIDE void BlockOps(const BlockOpsContext& ctx, int b) {
     if (ctx.stencil_test)
       StoreQuads<std::uint8_t, W, typename V<W>::B>(t.stencil, std::size_t(t.width), bb, b, l0,
                                                      __builtin_convertvector(sten, typename V<W>::B));
+    if (ctx.passed) *ctx.passed += std::uint64_t(__builtin_popcount(MaskToBits<W>(go, 0)));
     if (!ctx.any_color || !t.color[0].Present()) continue;
     const ColorBuffer& cb = t.color[0];
     auto* cp = reinterpret_cast<std::uint32_t*>(cb.data);
@@ -460,6 +462,7 @@ void LaneOps(const BlockOpsContext& ctx, const Unorm8Blend* per_buffer, int b) {
       if (st.depth_write) t.Depth(x, y) = z;
     }
     if (ctx.stencil_test) t.Stencil(x, y) = StencilUpdate(face, face.dppass, t.Stencil(x, y));
+    if (ctx.passed) ++*ctx.passed;
     if (!ctx.any_color) continue;
     for (int o = 0; o < kMaxColorOutputs; ++o) {
       const ColorBuffer& cb = t.color[o];
@@ -573,12 +576,16 @@ void ApplyFragmentOps(const FragmentOpsState& state, const FragmentOpsPlan& plan
   ctx.any_color = state.color_mask[0] || state.color_mask[1] || state.color_mask[2] || state.color_mask[3];
   ctx.face = blocks.front_facing ? &state.front : &state.back;
   ctx.blend = &plan.blend[0];
+  std::uint64_t passed = 0;
+  ctx.passed = state.occlusion[0] || state.occlusion[1] ? &passed : nullptr;
   static const BlockOpsFn block_ops = ChooseBlockOps();
   for (int b = 0; b < blocks.count; ++b) {
     if (!blocks.live[b]) continue;
     if (plan.wide_target && Inside(target, blocks, b)) block_ops(ctx, b);
     else LaneOps(ctx, plan.blend, b);
   }
+  for (OcclusionCounter* c : state.occlusion)
+    if (c && passed) c->passed.fetch_add(passed, std::memory_order_relaxed);
 }
 
 }  // namespace softgl::detail

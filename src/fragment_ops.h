@@ -10,6 +10,7 @@
 // byte. Float buffers blend in float.
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 
 #include <glm/glm.hpp>
@@ -37,7 +38,14 @@ struct BlendState {
   glm::vec4 color{0.0f};  // BlendColor
 };
 
+/// Fragments that passed every test while an occlusion query (SAMPLES_PASSED, ANY_SAMPLES_PASSED) was active;
+/// tiles add to it as they are rendered, on any thread.
+struct OcclusionCounter {
+  std::atomic<std::uint64_t> passed{0};
+};
+
 struct FragmentOpsState {
+  OcclusionCounter* occlusion[2] = {nullptr, nullptr};  // the active occlusion queries' counters (null: none)
   bool stencil_test = false;
   StencilFace front, back;
   bool depth_test = false;

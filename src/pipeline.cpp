@@ -291,6 +291,7 @@ void RecordChunk(const DrawCall& call, const FetchPlan& fetch, const DrawState& 
   // Instance g of the piece repeats the primitives with its own shaded vertices, g * unique further on.
   const std::size_t per_instance = prims.indices.size() / std::size_t(per);
   const std::size_t count = per_instance * std::size_t(call.instances);
+  if (state.primitives_generated) *state.primitives_generated += count;
   const std::uint32_t unique = std::uint32_t(scratch.shaded.count / call.instances);
   const int jobs = int((count + kBinJob - 1) / kBinJob);
   const std::size_t first_batch = packet.batches.size();

@@ -19,6 +19,7 @@ DrawPacket& DrawPacket::operator=(const DrawPacket& other) {
   interpolation = other.interpolation;
   shader_depth = other.shader_depth;
   early_depth = other.early_depth;
+  for (int k = 0; k < 2; ++k) occlusion[k] = other.occlusion[k];
   for (int k = 0; k < 2; ++k)
     for (int u = 0; u < kMaxTextureUnits; ++u) views[k][u] = other.views[k][u];
   for (int u = 0; u < kMaxTextureUnits; ++u) {

@@ -35,6 +35,7 @@ struct DrawPacket {
   TextureView views[2][kMaxTextureUnits];  // [2D, cube][unit]
   Textures textures;                       // points into views
   std::vector<BinnedBatch*> batches;
+  std::shared_ptr<OcclusionCounter> occlusion[2];  // keeps ops.occlusion's counters alive until rendered
 
   DrawPacket() = default;
   DrawPacket(const DrawPacket& other) { *this = other; }

@@ -1219,6 +1219,111 @@ TEST_CASE("state queries: bindings, conversions, limits, strings and errors", "[
   CHECK(gl.GetError() == INVALID_ENUM);
 }
 
+TEST_CASE("queries: samples passed, primitives generated, time elapsed, and their errors", "[context]") {
+  for (int threads : {1, 3}) {
+    INFO(threads << " threads");
+    Context gl(64, 64, Context::Options{threads});
+    SolidShader shader;
+    gl.UseProgram(shader);
+    gl.Enable(DEPTH_TEST);
+    MakeVertexArray(gl, {{-1, -1, 0, 1}, {1, -1, 0, 1}, {-1, 1, 0, 1}, {1, 1, 0, 1},              // full screen
+                         {-1, -1, 0.5f, 1}, {0, -1, 0.5f, 1}, {-1, 1, 0.5f, 1}, {0, 1, 0.5f, 1}});  // left half, behind
+    std::uint32_t q[4];
+    gl.GenQueries(4, q);
+    gl.BeginQuery(SAMPLES_PASSED, q[0]);
+    gl.DrawArrays(TRIANGLE_STRIP, 0, 4);
+    gl.EndQuery(SAMPLES_PASSED);
+    gl.BeginQuery(ANY_SAMPLES_PASSED, q[1]);
+    gl.DrawArrays(TRIANGLE_STRIP, 4, 4);  // wholly behind the first
+    gl.EndQuery(ANY_SAMPLES_PASSED);
+    // Re-begun before its result was read: the second run counts on its own (the draws of the first are still
+    // only recorded).
+    gl.BeginQuery(SAMPLES_PASSED, q[0]);
+    gl.Clear(DEPTH_BUFFER_BIT);
+    gl.DrawArrays(TRIANGLE_STRIP, 4, 4);
+    gl.EndQuery(SAMPLES_PASSED);
+    gl.BeginQuery(PRIMITIVES_GENERATED, q[2]);
+    gl.DrawArraysInstanced(TRIANGLE_STRIP, 0, 4, 3);  // 2 triangles x 3 instances
+    gl.DrawArrays(LINE_LOOP, 0, 5);                   // 5 lines
+    gl.EndQuery(PRIMITIVES_GENERATED);
+    gl.BeginQuery(TIME_ELAPSED, q[3]);
+    gl.DrawArrays(TRIANGLE_STRIP, 0, 4);
+    gl.EndQuery(TIME_ELAPSED);
+    std::uint64_t r = 0;
+    int available = 0;
+    gl.GetQueryObjectiv(q[0], QUERY_RESULT_AVAILABLE, &available);
+    CHECK(available == 1);
+    gl.GetQueryObjectui64v(q[0], QUERY_RESULT, &r);
+    CHECK(r == 32 * 64);
+    std::uint32_t any = 7;
+    gl.GetQueryObjectuiv(q[1], QUERY_RESULT, &any);
+    CHECK(any == 0);
+    std::int64_t prims = 0;
+    gl.GetQueryObjecti64v(q[2], QUERY_RESULT, &prims);
+    CHECK(prims == 11);
+    gl.GetQueryObjectui64v(q[3], QUERY_RESULT, &r);
+    CHECK(r > 0);
+    CHECK(gl.GetError() == NO_ERROR);
+  }
+}
+
+TEST_CASE("queries: discarded fragments and failed tests do not count; the errors", "[context][errors]") {
+  Context gl(16, 16);
+  struct HalfDiscard : softgl::Shader<HalfDiscard, WideColor> {
+    void Vertex(const softgl::VertexLanes& in, softgl::VertexLanesOut<WideColor>& out) const {
+      out.position = in.attrib[0];
+    }
+    void Fragment(const softgl::FragmentLanes<WideColor>& in, softgl::FragmentLanesOut& out) const {
+      out.color[0] = softgl::vec4(1.0f);
+      out.Discard(in.frag_coord.x < 8.0f);
+    }
+  } shader;
+  gl.UseProgram(shader);
+  MakeVertexArray(gl, {{-1, -1, 0, 1}, {1, -1, 0, 1}, {-1, 1, 0, 1}, {1, 1, 0, 1}});
+  const std::uint32_t q = gl.GenQuery(), other = gl.GenQuery();
+  gl.Enable(SCISSOR_TEST);
+  gl.Scissor(0, 0, 16, 4);
+  gl.BeginQuery(SAMPLES_PASSED, q);
+  int current = 0;
+  gl.GetQueryiv(SAMPLES_PASSED, CURRENT_QUERY, &current);
+  CHECK(current == int(q));
+  gl.DrawArrays(TRIANGLE_STRIP, 0, 4);
+  // The errors, while q is active.
+  gl.BeginQuery(SAMPLES_PASSED, other);
+  CHECK(gl.GetError() == INVALID_OPERATION);
+  gl.BeginQuery(ANY_SAMPLES_PASSED, other);  // one occlusion query at a time
+  CHECK(gl.GetError() == INVALID_OPERATION);
+  gl.BeginQuery(PRIMITIVES_GENERATED, q);  // q is active elsewhere
+  CHECK(gl.GetError() == INVALID_OPERATION);
+  std::uint64_t r = 0;
+  gl.GetQueryObjectui64v(q, QUERY_RESULT, &r);  // still active
+  CHECK(gl.GetError() == INVALID_OPERATION);
+  gl.EndQuery(SAMPLES_PASSED);
+  gl.GetQueryObjectui64v(q, QUERY_RESULT, &r);
+  CHECK(r == 8 * 4);  // the right half of the scissored rows
+  gl.BeginQuery(PRIMITIVES_GENERATED, q);  // begun before with SAMPLES_PASSED
+  CHECK(gl.GetError() == INVALID_OPERATION);
+  gl.EndQuery(TIME_ELAPSED);
+  CHECK(gl.GetError() == INVALID_OPERATION);
+  gl.BeginQuery(0x1234, q);
+  CHECK(gl.GetError() == INVALID_ENUM);
+  gl.BeginQuery(SAMPLES_PASSED, 999);
+  CHECK(gl.GetError() == INVALID_OPERATION);
+  gl.GetQueryObjectui64v(other, QUERY_RESULT, &r);  // never begun
+  CHECK(gl.GetError() == INVALID_OPERATION);
+  gl.GetQueryObjectui64v(q, 0x1234, &r);
+  CHECK(gl.GetError() == INVALID_ENUM);
+  // Deleting an active query ends it; the draws recorded for it still render safely.
+  gl.BeginQuery(SAMPLES_PASSED, other);
+  gl.DrawArrays(TRIANGLE_STRIP, 0, 4);
+  gl.DeleteQuery(other);
+  CHECK(!gl.IsQuery(other));
+  gl.GetQueryiv(SAMPLES_PASSED, CURRENT_QUERY, &current);
+  CHECK(current == 0);
+  gl.Finish();
+  CHECK(gl.GetError() == NO_ERROR);
+}
+
 TEST_CASE("the debug callback reports every error with the call's name", "[context][errors]") {
   Context gl(4, 4);
   struct Report {

@@ -349,6 +349,32 @@ class Context {
   /// nothing is drawn.
   void MultiDrawElements(Enum mode, const int* count, Enum type, const std::size_t* offsets, int drawcount);
 
+  // ---- Query objects -------------------------------------------------------------------------------------------
+  /// Creates a query object and returns its id (never 0).
+  std::uint32_t GenQuery();
+  void GenQueries(int n, std::uint32_t* ids);
+  /// Deletes a query object (an active one ends first). 0 and unknown ids are ignored.
+  void DeleteQuery(std::uint32_t id);
+  bool IsQuery(std::uint32_t id) const;
+  /// Starts counting into query `id` for target: SAMPLES_PASSED (fragments that pass every per-fragment test),
+  /// ANY_SAMPLES_PASSED (whether any did), PRIMITIVES_GENERATED (primitives assembled from the draws' vertices,
+  /// before clipping and culling) or TIME_ELAPSED (nanoseconds of the work between BeginQuery and EndQuery,
+  /// rendering included: both render what was recorded before them). Errors: bad target: INVALID_ENUM; a query
+  /// already active on target (SAMPLES_PASSED and ANY_SAMPLES_PASSED count as one), an id not made by GenQuery, a query active elsewhere or begun before with another
+  /// target: INVALID_OPERATION.
+  void BeginQuery(Enum target, std::uint32_t id);
+  /// Stops the query active on target (none: INVALID_OPERATION).
+  void EndQuery(Enum target);
+  /// CURRENT_QUERY (the id active on target, or 0) or QUERY_COUNTER_BITS (64).
+  void GetQueryiv(Enum target, Enum pname, int* params) const;
+  /// QUERY_RESULT (the count, or 0 / 1 for ANY_SAMPLES_PASSED, or nanoseconds) or QUERY_RESULT_AVAILABLE (true:
+  /// asking renders the recorded draws the result depends on, so it is always available). The smaller types clamp
+  /// the value. A query never begun, or active: INVALID_OPERATION; another pname: INVALID_ENUM.
+  void GetQueryObjectiv(std::uint32_t id, Enum pname, int* params);
+  void GetQueryObjectuiv(std::uint32_t id, Enum pname, std::uint32_t* params);
+  void GetQueryObjecti64v(std::uint32_t id, Enum pname, std::int64_t* params);
+  void GetQueryObjectui64v(std::uint32_t id, Enum pname, std::uint64_t* params);
+
   // ---- State queries -----------------------------------------------------------------------------------------
   /// glGet*: the state named by pname, converted as OpenGL converts it (booleans to 0 / 1; floats to integers by
   /// rounding, except colours and depths, which map [-1, 1] linearly onto the integer range; GetIntegerv clamps to

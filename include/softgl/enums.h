@@ -301,4 +301,14 @@ inline constexpr Enum RENDERER = 0x1F01;
 inline constexpr Enum VERSION = 0x1F02;
 inline constexpr Enum SHADING_LANGUAGE_VERSION = 0x8B8C;
 
+// Queries.
+inline constexpr Enum SAMPLES_PASSED = 0x8914;
+inline constexpr Enum ANY_SAMPLES_PASSED = 0x8C2F;
+inline constexpr Enum PRIMITIVES_GENERATED = 0x8C87;
+inline constexpr Enum TIME_ELAPSED = 0x88BF;
+inline constexpr Enum QUERY_COUNTER_BITS = 0x8864;
+inline constexpr Enum CURRENT_QUERY = 0x8865;
+inline constexpr Enum QUERY_RESULT = 0x8866;
+inline constexpr Enum QUERY_RESULT_AVAILABLE = 0x8867;
+
 }  // namespace softgl

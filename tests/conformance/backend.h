@@ -136,6 +136,11 @@ class Backend {
   virtual std::vector<bool> GetBooleans(Enum pname, int count) = 0;
   /// The first error since the last call (glGetError).
   virtual Enum GetError() = 0;
+  /// Query objects: a new id, glBeginQuery / glEndQuery, and QUERY_RESULT (64-bit).
+  virtual std::uint32_t GenQuery() = 0;
+  virtual void BeginQuery(Enum target, std::uint32_t id) = 0;
+  virtual void EndQuery(Enum target) = 0;
+  virtual std::uint64_t QueryResult(std::uint32_t id) = 0;
   virtual Frame Read() = 0;
   /// ReadPixels into a buffer of `bytes` bytes first filled with 0xCD (bytes the call does not write keep it).
   virtual std::vector<std::uint8_t> ReadPixels(const PixelRead& read, std::size_t bytes) = 0;

@@ -382,6 +382,18 @@ class GlBackend final : public Backend {
     return v;
   }
   Enum GetError() override { return glGetError(); }
+  std::uint32_t GenQuery() override {
+    GLuint id = 0;
+    glGenQueries(1, &id);
+    return id;
+  }
+  void BeginQuery(Enum target, std::uint32_t id) override { glBeginQuery(target, id); }
+  void EndQuery(Enum target) override { glEndQuery(target); }
+  std::uint64_t QueryResult(std::uint32_t id) override {
+    GLuint v = ~0u;  // (OSMesa exports the 32-bit form; the counts here are small)
+    glGetQueryObjectuiv(id, GL_QUERY_RESULT, &v);
+    return v;
+  }
 
   Frame Read() override {
     Frame f;

@@ -354,6 +354,14 @@ class SoftglBackend final : public Backend {
     return std::vector<bool>(b, b + count);
   }
   Enum GetError() override { return gl_.GetError(); }
+  std::uint32_t GenQuery() override { return gl_.GenQuery(); }
+  void BeginQuery(Enum target, std::uint32_t id) override { gl_.BeginQuery(target, id); }
+  void EndQuery(Enum target) override { gl_.EndQuery(target); }
+  std::uint64_t QueryResult(std::uint32_t id) override {
+    std::uint64_t v = ~0ull;
+    gl_.GetQueryObjectui64v(id, softgl::QUERY_RESULT, &v);
+    return v;
+  }
 
   Frame Read() override {
     Frame f;

@@ -273,6 +273,82 @@ TEST_CASE("state queries return what Mesa returns, at the defaults and after cha
   }
 }
 
+TEST_CASE("query results equal Mesa's", "[conformance]") {
+  namespace gl = softgl;
+  // In 128 x 128 window coordinates, z in [-1, 1] as NDC.
+  auto win = [](float x, float y, float z) { return glm::vec4(x / 64.0f - 1.0f, y / 64.0f - 1.0f, z, 1.0f); };
+  auto quad = [&](float x0, float y0, float x1, float y1, float z, glm::vec4 c) {
+    return std::vector<Vertex>{{win(x0, y0, z), c}, {win(x1, y0, z), c}, {win(x1, y1, z), c},
+                               {win(x0, y0, z), c}, {win(x1, y1, z), c}, {win(x0, y1, z), c}};
+  };
+  auto run = [&](Backend& b) {
+    std::vector<std::uint64_t> results;
+    b.ClearDepth(1.0);
+    b.Clear(gl::COLOR_BUFFER_BIT | gl::DEPTH_BUFFER_BIT | gl::STENCIL_BUFFER_BIT);
+    b.Enable(gl::DEPTH_TEST);
+    std::uint32_t q[6];
+    for (std::uint32_t& id : q) id = b.GenQuery();
+    // Samples: a quad, then one half behind it; a triangle with edges through pixel centres.
+    b.BeginQuery(gl::SAMPLES_PASSED, q[0]);
+    b.Draw(gl::TRIANGLES, quad(10.5f, 10.25f, 70.5f, 50.75f, 0.0f, glm::vec4(1, 0, 0, 1)));
+    b.Draw(gl::TRIANGLES, quad(40.25f, 20.5f, 100.5f, 60.5f, 0.5f, glm::vec4(0, 1, 0, 1)));
+    b.Draw(gl::TRIANGLES, {{win(64, 64, -0.5f)}, {win(120, 64, -0.5f)}, {win(64, 120, -0.5f)}});
+    b.EndQuery(gl::SAMPLES_PASSED);
+    // Any samples: one draw wholly behind (none), then one in front (some); one occlusion query at a time.
+    b.BeginQuery(gl::ANY_SAMPLES_PASSED, q[2]);
+    b.Draw(gl::TRIANGLES, quad(20, 20, 30, 30, 0.8f, glm::vec4(1)));
+    b.BeginQuery(gl::SAMPLES_PASSED, q[1]);  // INVALID_OPERATION on both
+    results.push_back(b.GetError());
+    b.EndQuery(gl::ANY_SAMPLES_PASSED);
+    b.BeginQuery(gl::ANY_SAMPLES_PASSED, q[3]);
+    b.Draw(gl::TRIANGLES, quad(20, 20, 30, 30, -0.8f, glm::vec4(1)));
+    b.EndQuery(gl::ANY_SAMPLES_PASSED);
+    b.BeginQuery(gl::SAMPLES_PASSED, q[1]);
+    b.Draw(gl::TRIANGLES, quad(20, 20, 30, 30, -0.85f, glm::vec4(1)));
+    b.EndQuery(gl::SAMPLES_PASSED);
+    // Stencil-masked samples: only where the stencil test passes.
+    b.Enable(gl::STENCIL_TEST);
+    b.StencilFunc(gl::ALWAYS, 1, 0xFF);
+    b.StencilOp(gl::KEEP, gl::KEEP, gl::REPLACE);
+    b.Draw(gl::TRIANGLES, quad(0, 80, 64, 128, -0.9f, glm::vec4(0, 0, 1, 1)));
+    b.StencilFunc(gl::EQUAL, 1, 0xFF);
+    b.BeginQuery(gl::SAMPLES_PASSED, q[4]);
+    b.Draw(gl::TRIANGLES, quad(30, 70, 128, 128, -0.95f, glm::vec4(1, 1, 0, 1)));
+    b.EndQuery(gl::SAMPLES_PASSED);
+    b.Disable(gl::STENCIL_TEST);
+    // Primitives: a strip of 10 (8 triangles), a loop of 5 (5 lines), 7 points, and triangles culled or clipped
+    // away (counted all the same).
+    b.BeginQuery(gl::PRIMITIVES_GENERATED, q[5]);
+    std::vector<Vertex> strip, loop, points;
+    for (int i = 0; i < 10; ++i) strip.push_back({win(5.0f + 10 * i, i % 2 ? 100 : 90, 0.2f)});
+    for (int i = 0; i < 5; ++i) loop.push_back({win(60.0f + 9 * i, 110.0f - 3 * i, 0.2f)});
+    for (int i = 0; i < 7; ++i) points.push_back({win(3.0f + 4 * i, 3, 0.2f)});
+    b.Draw(gl::TRIANGLE_STRIP, strip);
+    b.Draw(gl::LINE_LOOP, loop);
+    b.Draw(gl::POINTS, points);
+    b.Enable(gl::CULL_FACE);
+    b.Draw(gl::TRIANGLES, {{win(10, 10, 0)}, {win(10, 40, 0)}, {win(40, 10, 0)},         // clockwise: culled
+                           {win(300, 10, 0)}, {win(400, 10, 0)}, {win(300, 90, 0)}});  // outside: clipped away
+    b.Disable(gl::CULL_FACE);
+    b.EndQuery(gl::PRIMITIVES_GENERATED);
+    for (std::uint32_t id : q) results.push_back(b.QueryResult(id));
+    return results;
+  };
+  std::string error;
+  auto mesa = MakeGlBackend(128, 128, &error);
+  REQUIRE(mesa);
+  auto ours = MakeSoftglBackend(128, 128);
+  const std::vector<std::uint64_t> want = run(*mesa), got = run(*ours);
+  CHECK(mesa->GetError() == softgl::NO_ERROR);
+  CHECK(ours->GetError() == softgl::NO_ERROR);
+  CHECK(got == want);
+  REQUIRE(want.size() == 7);
+  CHECK(want[0] == softgl::INVALID_OPERATION);
+  CHECK(want[3] == 0);  // the scene means what it says: nothing passed behind the quad, something in front
+  CHECK(want[4] == 1);
+  CHECK(want[6] == 22);
+}
+
 int main(int argc, char** argv) {
   if (argc > 1 && std::string(argv[1]) == "--report") {
     for (const SceneInfo& s : Scenes()) {

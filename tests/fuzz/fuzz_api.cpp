@@ -221,7 +221,20 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       case 33: gl.BlendEquationSeparate(in.Enum(kEquations), in.Enum(kEquations)); break;
       case 34: gl.PolygonMode(FRONT_AND_BACK, in.Enum(kPolygonModes)); break;
       case 35: gl.PolygonOffset(in.Float(), in.Float()); break;
-      case 36: gl.DepthRange(in.Float(), in.Float()); break;
+      case 36: {
+        constexpr std::uint32_t kQueryTargets[] = {SAMPLES_PASSED, ANY_SAMPLES_PASSED, PRIMITIVES_GENERATED,
+                                                   TIME_ELAPSED};
+        std::uint64_t result = 0;
+        switch (in.Byte() % 6) {
+          case 0: gl.DepthRange(in.Float(), in.Float()); break;
+          case 1: gl.GenQuery(); break;
+          case 2: gl.BeginQuery(in.Enum(kQueryTargets), id()); break;
+          case 3: gl.EndQuery(in.Enum(kQueryTargets)); break;
+          case 4: gl.DeleteQuery(id()); break;
+          default: gl.GetQueryObjectui64v(id(), in.Byte() % 2 ? QUERY_RESULT : QUERY_RESULT_AVAILABLE, &result); break;
+        }
+        break;
+      }
       case 37:
         if (in.Byte() % 2) gl.PointSize(in.Float());
         else gl.PrimitiveRestartIndex(in.Byte() % 2 ? in.Get<std::uint32_t>() : std::uint32_t(in.Int(0, 8)));
