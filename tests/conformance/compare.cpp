@@ -212,7 +212,7 @@ TEST_CASE("state queries return what Mesa returns, at the defaults and after cha
   // with its value count.
   const std::pair<Enum, int> names[] = {
       {gl::VIEWPORT, 4}, {gl::SCISSOR_BOX, 4}, {gl::DEPTH_RANGE, 2}, {gl::CULL_FACE_MODE, 1}, {gl::FRONT_FACE, 1},
-      {gl::POLYGON_MODE, 1}, {gl::POINT_SIZE, 1}, {gl::PROVOKING_VERTEX, 1}, {gl::POLYGON_OFFSET_FACTOR, 1},
+      {gl::POLYGON_MODE, 2}, {gl::POINT_SIZE, 1}, {gl::PROVOKING_VERTEX, 1}, {gl::POLYGON_OFFSET_FACTOR, 1},
       {gl::POLYGON_OFFSET_UNITS, 1}, {gl::PRIMITIVE_RESTART_INDEX, 1}, {gl::DEPTH_FUNC, 1},
       {gl::DEPTH_WRITEMASK, 1}, {gl::DEPTH_CLEAR_VALUE, 1}, {gl::STENCIL_FUNC, 1}, {gl::STENCIL_REF, 1},
       {gl::STENCIL_VALUE_MASK, 1}, {gl::STENCIL_FAIL, 1}, {gl::STENCIL_PASS_DEPTH_FAIL, 1},
