@@ -659,6 +659,35 @@ int main(int argc, char** argv) {
                         return TimeGl(n, small_frame);
                       });
                     }});
+  // The per-draw cost: the first 10,000 of those triangles, one draw call each (a scene of many small objects).
+  constexpr int kDraws = 10000;
+  scenes.push_back({"many draws: 10,000 draw calls of one small triangle each", 1280, 720, "Mdraw/s", double(kDraws),
+                    [&](int n) {
+                      return WithShader<wide::FlatShader, scalar::FlatShader>([&](auto& shader) {
+                        softgl::Context gl(1280, 720, g_options);
+                        softgl_setup(gl, tris);
+                        gl.UseProgram(shader);
+                        gl.Enable(softgl::DEPTH_TEST);
+                        return MedianMs(n, [&] {
+                          gl.Clear(softgl::COLOR_BUFFER_BIT | softgl::DEPTH_BUFFER_BIT);
+                          for (int i = 0; i < kDraws; ++i) gl.DrawArrays(softgl::TRIANGLES, 3 * i, 3);
+                          gl.Finish();
+                        });
+                      });
+                    },
+                    [&](int n) {
+                      return with_osmesa(1280, 720, [&] {
+                        gl_setup(tris);
+                        const GLuint p = Program(kFlatVs, kFlatFs);
+                        glUniform4f(glGetUniformLocation(p, "color"), 0.2f, 0.6f, 0.9f, 1.0f);
+                        glEnable(GL_DEPTH_TEST);
+                        return MedianMs(n, [&] {
+                          glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+                          for (int i = 0; i < kDraws; ++i) glDrawArrays(GL_TRIANGLES, 3 * i, 3);
+                          glFinish();
+                        });
+                      });
+                    }});
   scenes.push_back({"fill rate: 50 blended full-screen quads", 1920, 1080, "Mpixel/s", 50.0 * 1920 * 1080,
                     [&](int n) {
                       return WithShader<wide::FlatShader, scalar::FlatShader>([&](auto& shader) {

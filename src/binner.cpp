@@ -31,6 +31,7 @@ void BinnedBatch::Reset(int nvar) {
   large_.clear();
   notes_.clear();
   tile_start_.clear();
+  box_ = Rect{};
   // tile_data_ keeps its size: Finish overwrites what it uses (tile_start_ bounds it), without zeroing it first.
 }
 
@@ -48,6 +49,8 @@ void BinnedBatch::Add(const BinnedPrimitive& prim, const WindowVertex* v, const 
     std::memcpy(dst + 4, v[k].var, sizeof(float) * std::size_t(nvar_));
   }
   prims_.push_back(p);
+  box_ = box_.Empty() ? box : Rect{std::min(box_.x0, box.x0), std::min(box_.y0, box.y0), std::max(box_.x1, box.x1),
+                                   std::max(box_.y1, box.y1)};
   const int tx0 = box.x0 / kTileSize, tx1 = (box.x1 - 1) / kTileSize;
   const int ty0 = box.y0 / kTileSize, ty1 = (box.y1 - 1) / kTileSize;
   const auto tiles = std::uint32_t((tx1 - tx0 + 1) * (ty1 - ty0 + 1));

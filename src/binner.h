@@ -91,6 +91,8 @@ class BinnedBatch {
       if (Overlap(l.box, tile_rect)) return true;
     return false;
   }
+  /// The union of the boxes of the primitives added (pixels; empty when none was).
+  const Rect& Box() const { return box_; }
   /// Copies vertex k of the run at `vertices` into a WindowVertex.
   void Vertex(const float* vertices, int k, WindowVertex& out) const;
 
@@ -109,6 +111,7 @@ class BinnedBatch {
     return a.x0 < b.x1 && b.x0 < a.x1 && a.y0 < b.y1 && b.y0 < a.y1;
   }
   std::vector<Large> large_;                // primitives over more than kListedTiles tiles, in order
+  Rect box_;                                // the union of the primitives' boxes
   int nvar_ = 0;
   std::vector<BinnedPrimitive> prims_;      // in submission order
   std::vector<std::uint32_t> prim_tiles_;   // how many tiles each primitive touches

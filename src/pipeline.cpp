@@ -328,6 +328,7 @@ void RecordPiece(const DrawCall& call, const FetchPlan& fetch, const DrawState& 
   if (frame.Bytes() > kFrameBudgetBytes) frame.Render(pool, scratch.tiles);
   DrawPacket& packet = frame.AddDraw(target, proto);
   RecordChunk(call, fetch, state, packet, frame, pool, scratch);
+  frame.ListLastDraw();
 }
 
 // A large draw with primitive restart: its runs (the element sequences between restart positions) in order, runs

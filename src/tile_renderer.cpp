@@ -82,12 +82,43 @@ void Frame::Begin(const RenderTarget& target) {
   if (!Empty()) return;
   target_ = target;
   grid_ = TileGrid::For(target.width, target.height);
+  if (tile_commands_.size() < std::size_t(grid_.Count())) tile_commands_.resize(std::size_t(grid_.Count()));
 }
 
 void Frame::AddClear(const RenderTarget& target, const ClearPacket& clear) {
   Begin(target);
   clears_.push_back(clear);
   commands_.push_back(Command{false, clears_.size() - 1});
+  const auto index = std::uint32_t(commands_.size() - 1);
+  for (int t = 0; t < grid_.Count(); ++t)
+    if (!Intersect(clear.area, grid_.TileRect(t)).Empty()) {
+      tile_commands_[std::size_t(t)].push_back(index);
+      bytes_ += sizeof(index);
+    }
+}
+
+void Frame::ListLastDraw() {
+  const DrawPacket& draw = *draws_.back();
+  const auto index = std::uint32_t(commands_.size() - 1);
+  Rect box;  // the union of the batches' boxes: only the tiles under it can have anything
+  for (const BinnedBatch* b : draw.batches) {
+    const Rect& r = b->Box();
+    if (r.Empty()) continue;
+    box = box.Empty() ? r : Rect{std::min(box.x0, r.x0), std::min(box.y0, r.y0), std::max(box.x1, r.x1),
+                                 std::max(box.y1, r.y1)};
+  }
+  if (box.Empty()) return;
+  const int tx0 = box.x0 / kTileSize, tx1 = (box.x1 - 1) / kTileSize;
+  const int ty0 = box.y0 / kTileSize, ty1 = (box.y1 - 1) / kTileSize;
+  for (int ty = ty0; ty <= ty1; ++ty)
+    for (int tx = tx0; tx <= tx1; ++tx) {
+      const int t = ty * grid_.cols + tx;
+      const Rect rect = grid_.TileRect(t);
+      if (std::any_of(draw.batches.begin(), draw.batches.end(), [&](const BinnedBatch* b) { return b->Touches(t, rect); })) {
+        tile_commands_[std::size_t(t)].push_back(index);
+        bytes_ += sizeof(index);
+      }
+    }
 }
 
 DrawPacket& Frame::AddDraw(const RenderTarget& target, const DrawPacket& proto) {
@@ -107,6 +138,7 @@ BinnedBatch& Frame::NewBatch(int nvar) {
 
 void Frame::Reset() {
   commands_.clear();
+  for (auto& list : tile_commands_) list.clear();
   draws_.clear();
   clears_.clear();
   // Keep the batches' memory for the next frame, but not an unusually large amount of it.
@@ -126,7 +158,8 @@ void Frame::RenderTile(int tile, TileScratch& scratch) const {
     if (target_.color[o].Present()) outputs = o + 1;
   const int simd = int(CpuSimdLevel());
   WindowVertex v[3];
-  for (const Command& c : commands_) {
+  for (const std::uint32_t ci : tile_commands_[std::size_t(tile)]) {
+    const Command& c = commands_[ci];
     if (!c.draw) {
       const ClearPacket& clear = clears_[c.index];
       const Rect r = Intersect(clear.area, rect);
@@ -142,10 +175,6 @@ void Frame::RenderTile(int tile, TileScratch& scratch) const {
     rt.nvar = draw.nvar;
     rt.interpolation = draw.interpolation;
     if (rt.bounds.Empty()) continue;
-    // Draws with nothing in this tile cost no fragment set-up (many small draws touch few tiles each).
-    if (std::none_of(draw.batches.begin(), draw.batches.end(),
-                     [&](const BinnedBatch* b) { return b->Touches(tile, rect); }))
-      continue;
     FragmentStage stage{&draw, &target_, outputs, simd, PlanFragmentOps(draw.ops, target_)};
     const BlockSink sink{&FragmentStage::Run, &stage};
     blocks.count = 0;

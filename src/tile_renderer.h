@@ -70,6 +70,9 @@ class Frame {
   DrawPacket& AddDraw(const RenderTarget& target, const DrawPacket& proto);
   /// An empty batch owned by the frame (reused from frame to frame).
   BinnedBatch& NewBatch(int nvar);
+  /// Lists the last draw added in the tiles its batches touch, once its batches are filled: a tile renders only
+  /// the commands listed in it.
+  void ListLastDraw();
 
   /// Memory held by recorded batches, in bytes: the sum of what AddBytes was told since the frame began.
   std::size_t Bytes() const { return bytes_; }
@@ -91,6 +94,7 @@ class Frame {
   RenderTarget target_;
   TileGrid grid_;
   std::vector<Command> commands_;
+  std::vector<std::vector<std::uint32_t>> tile_commands_;  // per tile: the commands touching it, in order
   std::vector<std::unique_ptr<DrawPacket>> draws_;
   std::vector<ClearPacket> clears_;
   std::vector<std::unique_ptr<BinnedBatch>> batches_;
