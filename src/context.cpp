@@ -108,6 +108,8 @@ int CubeFaceIndex(Enum target) {
              : -1;
 }
 
+bool IsTexImageTarget(Enum target) { return target == TEXTURE_2D || CubeFaceIndex(target) >= 0; }
+
 // Section 9.4: why a framebuffer object cannot be drawn to, or FRAMEBUFFER_COMPLETE.
 Enum FramebufferStatus(const FramebufferObject& f) {
   bool any = false;
@@ -1519,6 +1521,25 @@ void PutComponent(Enum type, double v, bool integer, std::uint8_t* dst) {
   }
 }
 
+// OpenGL's pack layout: rows of PACK_ROW_LENGTH (or width) pixels, each row aligned to PACK_ALIGNMENT when a
+// component is smaller than the alignment, starting PACK_SKIP_ROWS rows and PACK_SKIP_PIXELS pixels in.
+struct PackLayout {
+  std::uint8_t* out;
+  std::size_t stride, pixel, component;
+  std::uint8_t* At(int i, int j) const { return out + std::size_t(j) * stride + std::size_t(i) * pixel; }
+};
+PackLayout Pack(const ContextState& s, int width, const PixelLayout& l, Enum type, void* pixels) {
+  PackLayout p;
+  p.component = type == UNSIGNED_BYTE ? 1 : type == UNSIGNED_SHORT ? 2 : 4;
+  p.pixel = p.component * std::size_t(l.count);
+  p.stride = std::size_t(s.pack_row_length > 0 ? s.pack_row_length : width) * p.pixel;
+  const std::size_t align = std::size_t(s.pack_alignment);
+  if (p.component < align) p.stride = (p.stride + align - 1) / align * align;
+  p.out = static_cast<std::uint8_t*>(pixels) + std::size_t(s.pack_skip_rows) * p.stride +
+          std::size_t(s.pack_skip_pixels) * p.pixel;
+  return p;
+}
+
 }  // namespace
 
 void Context::ReadPixels(int x, int y, int width, int height, Enum format, Enum type, void* pixels) const {
@@ -1536,23 +1557,15 @@ void Context::ReadPixels(int x, int y, int width, int height, Enum format, Enum 
   if ((l.depth && !t.depth) || (l.stencil && !t.stencil) || (l.count > 0 && !l.depth && !l.stencil && !t.color[0].Present()))
     return s.SetError(INVALID_OPERATION, __func__, "the read framebuffer has no buffer of that kind");
   if (pixels == nullptr || width == 0 || height == 0) return;
-  // OpenGL's pack layout: rows of PACK_ROW_LENGTH (or width) pixels, each row aligned to PACK_ALIGNMENT when a
-  // component is smaller than the alignment, starting PACK_SKIP_ROWS rows and PACK_SKIP_PIXELS pixels in.
-  const std::size_t component = type == UNSIGNED_BYTE ? 1 : type == UNSIGNED_SHORT ? 2 : 4;
-  const std::size_t pixel = component * std::size_t(l.count);
-  const std::size_t row_pixels = std::size_t(s.pack_row_length > 0 ? s.pack_row_length : width);
-  std::size_t stride = row_pixels * pixel;
-  const std::size_t align = std::size_t(s.pack_alignment);
-  if (component < align) stride = (stride + align - 1) / align * align;
-  auto* out = static_cast<std::uint8_t*>(pixels) + std::size_t(s.pack_skip_rows) * stride +
-              std::size_t(s.pack_skip_pixels) * pixel;
+  const PackLayout pack = Pack(s, width, l, type, pixels);
+  const std::size_t component = pack.component;
   // Only pixels inside the read buffer are written (the others are undefined in OpenGL: left as they are).
   const int x0 = std::max(x, 0), y0 = std::max(y, 0);
   const int x1 = int(std::min<std::int64_t>(std::int64_t(x) + width, t.width));
   const int y1 = int(std::min<std::int64_t>(std::int64_t(y) + height, t.height));
   for (int py = y0; py < y1; ++py)
     for (int px = x0; px < x1; ++px) {
-      std::uint8_t* dst = out + std::size_t(py - y) * stride + std::size_t(px - x) * pixel;
+      std::uint8_t* dst = pack.At(px - x, py - y);
       if (format == DEPTH_STENCIL) {
         const double d = std::clamp(double(t.Depth(px, py)), 0.0, 1.0);
         const std::uint32_t word = std::uint32_t(std::llround(d * 16777215.0)) << 8 | t.Stencil(px, py);
@@ -1569,6 +1582,111 @@ void Context::ReadPixels(int x, int y, int width, int height, Enum format, Enum 
           PutComponent(type, double(c[l.channels[k]]), false, dst + std::size_t(k) * component);
       }
     }
+}
+
+void Context::GetTexImage(Enum target, int level, Enum format, Enum type, void* pixels) const {
+  auto& s = *state_;
+  if (!IsTexImageTarget(target)) return s.SetError(INVALID_ENUM, __func__, "target must be TEXTURE_2D or a TEXTURE_CUBE_MAP_* face");
+  PixelLayout l;
+  if (!LayoutOf(format, l) || l.stencil) return s.SetError(INVALID_ENUM, __func__, "format must be a colour format or DEPTH_COMPONENT");
+  if (type != UNSIGNED_BYTE && type != UNSIGNED_SHORT && type != UNSIGNED_INT && type != FLOAT)
+    return s.SetError(INVALID_ENUM, __func__, "type must be UNSIGNED_BYTE, UNSIGNED_SHORT, UNSIGNED_INT or FLOAT");
+  if (level < 0 || level >= detail::kMaxLevels) return s.SetError(INVALID_VALUE, __func__, "level is negative or beyond the largest mipmap level");
+  int face = 0;
+  const detail::TextureObject* tex = s.Bound(target, &face);
+  if (!tex) return s.SetError(INVALID_OPERATION, __func__, "no texture is bound to that target of the active unit");
+  const detail::TextureLevel& lv = tex->levels[face][level];
+  if (!lv.Defined() || pixels == nullptr) return;  // an undefined level has no texels to return
+  if (detail::IsDepthFormat(lv.format) != l.depth) return s.SetError(INVALID_OPERATION, __func__, "DEPTH_COMPONENT for a colour texture, or the reverse");
+  s.Sync(__func__);  // a texture being rendered into holds its texels once the recorded draws are rendered
+  const PackLayout pack = Pack(s, lv.width, l, type, pixels);
+  for (int j = 0; j < lv.height; ++j)
+    for (int i = 0; i < lv.width; ++i) {
+      const glm::vec4 c = lv.Texel(i, j);
+      std::uint8_t* dst = pack.At(i, j);
+      if (l.depth) PutComponent(type, double(c.r), false, dst);
+      else
+        for (int k = 0; k < l.count; ++k)
+          PutComponent(type, double(c[l.channels[k]]), false, dst + std::size_t(k) * pack.component);
+    }
+}
+
+namespace {
+
+// The checks CopyTexImage2D and CopyTexSubImage2D share about the read framebuffer: complete, and holding the kind
+// of buffer the texture needs. False with the error set otherwise.
+bool CheckCopySource(ContextState& s, const char* what, bool depth) {
+  if (s.read_fbo && FramebufferStatus(*s.read_fbo) != FRAMEBUFFER_COMPLETE) return s.SetError(INVALID_FRAMEBUFFER_OPERATION, what, "the read framebuffer is not complete"), false;
+  const detail::RenderTarget t = ReadTarget(s);
+  if (depth ? !t.depth : !t.color[0].Present()) return s.SetError(INVALID_OPERATION, what, "the read framebuffer has no buffer of the texture's kind"), false;
+  return true;
+}
+
+// Copies the read framebuffer's rectangle (x, y, w, h) into level `lv` at (xo, yo); checked already. Pixels outside
+// the framebuffer (undefined in OpenGL) copy as zero.
+void CopyToLevel(ContextState& s, const char* what, detail::TextureLevel& lv, int xo, int yo, int x, int y, int w, int h) {
+  s.Sync(what);
+  const detail::RenderTarget t = ReadTarget(s);
+  const bool depth = detail::IsDepthFormat(lv.format);
+  std::vector<float> rect(std::size_t(w) * std::size_t(h) * (depth ? 1 : 4), 0.0f);  // read first: the
+  for (int j = 0; j < h; ++j)                                                          // source may be lv itself
+    for (int i = 0; i < w; ++i) {
+      const int px = x + i, py = y + j;
+      if (px < 0 || py < 0 || px >= t.width || py >= t.height) continue;
+      float* dst = rect.data() + (std::size_t(j) * std::size_t(w) + std::size_t(i)) * (depth ? 1 : 4);
+      if (depth) {
+        *dst = t.Depth(px, py);
+      } else {
+        const glm::vec4 c = t.color[0].Load(px, py);
+        for (int k = 0; k < 4; ++k) dst[k] = c[k];
+      }
+    }
+  detail::UploadPixels(lv, xo, yo, w, h, depth ? DEPTH_COMPONENT : RGBA, FLOAT, 4, rect.data());
+}
+
+}  // namespace
+
+void Context::CopyTexSubImage2D(Enum target, int level, int xoffset, int yoffset, int x, int y, int width,
+                                int height) {
+  auto& s = *state_;
+  if (!IsTexImageTarget(target)) return s.SetError(INVALID_ENUM, __func__, "target must be TEXTURE_2D or a TEXTURE_CUBE_MAP_* face");
+  if (level < 0 || level >= detail::kMaxLevels) return s.SetError(INVALID_VALUE, __func__, "level is negative or beyond the largest mipmap level");
+  int face = 0;
+  detail::TextureObject* tex = s.Bound(target, &face);
+  if (!tex || !tex->levels[face][level].Defined()) return s.SetError(INVALID_OPERATION, __func__, "no texture bound, or that level is not defined");
+  detail::TextureLevel& lv = tex->levels[face][level];
+  if (xoffset < 0 || yoffset < 0 || width < 0 || height < 0 || std::int64_t(xoffset) + width > lv.width ||
+      std::int64_t(yoffset) + height > lv.height)
+    return s.SetError(INVALID_VALUE, __func__, "the rectangle is outside the level");
+  if (!CheckCopySource(s, __func__, detail::IsDepthFormat(lv.format))) return;
+  try {
+    CopyToLevel(s, __func__, lv, xoffset, yoffset, x, y, width, height);
+  } catch (const std::bad_alloc&) {
+    s.SetError(OUT_OF_MEMORY, __func__, "out of memory");
+  }
+}
+
+void Context::CopyTexImage2D(Enum target, int level, Enum internal_format, int x, int y, int width, int height,
+                             int border) {
+  auto& s = *state_;
+  if (!IsTexImageTarget(target)) return s.SetError(INVALID_ENUM, __func__, "target must be TEXTURE_2D or a TEXTURE_CUBE_MAP_* face");
+  if (level < 0 || level >= detail::kMaxLevels || width < 0 || height < 0 || width > kMaxTextureSize ||
+      height > kMaxTextureSize || border != 0 || detail::FormatComponents(internal_format) == 0)
+    return s.SetError(INVALID_VALUE, __func__, "a numeric argument is out of range");
+  if (CubeFaceIndex(target) >= 0 && width != height) return s.SetError(INVALID_VALUE, __func__, "cube map faces must be square");
+  int face = 0;
+  detail::TextureObject* tex = s.Bound(target, &face);
+  if (!tex) return s.SetError(INVALID_OPERATION, __func__, "no texture is bound to that target of the active unit");
+  if (!CheckCopySource(s, __func__, detail::IsDepthFormat(internal_format))) return;
+  try {
+    s.Sync(__func__);  // the old level may be what recorded draws sample or render into
+    detail::TextureLevel next;
+    next.Allocate(internal_format, width, height);
+    CopyToLevel(s, __func__, next, 0, 0, x, y, width, height);
+    tex->levels[face][level] = std::move(next);
+  } catch (const std::bad_alloc&) {
+    s.SetError(OUT_OF_MEMORY, __func__, "out of memory");
+  }
 }
 
 float Context::ReadDepth(int x, int y) const {
@@ -1637,8 +1755,6 @@ void Context::BindTexture(Enum target, std::uint32_t texture) {
 }
 
 namespace {
-
-bool IsTexImageTarget(Enum target) { return target == TEXTURE_2D || CubeFaceIndex(target) >= 0; }
 
 bool IsTransferType(Enum type) { return type == UNSIGNED_BYTE || type == FLOAT; }
 

@@ -1324,6 +1324,80 @@ TEST_CASE("queries: discarded fragments and failed tests do not count; the error
   CHECK(gl.GetError() == NO_ERROR);
 }
 
+TEST_CASE("CopyTexImage2D, CopyTexSubImage2D and GetTexImage", "[context]") {
+  Context gl(8, 8);
+  gl.ClearColor(1.0f, 0.5f, 0.0f, 1.0f);
+  gl.ClearDepth(0.25);
+  gl.Clear(COLOR_BUFFER_BIT | DEPTH_BUFFER_BIT);
+  gl.Enable(SCISSOR_TEST);  // the top-right 4 x 4 pixels blue
+  gl.Scissor(4, 4, 4, 4);
+  gl.ClearColor(0.0f, 0.0f, 1.0f, 1.0f);
+  gl.Clear(COLOR_BUFFER_BIT);
+  gl.Disable(SCISSOR_TEST);
+  const std::uint32_t tex = gl.GenTexture();
+  gl.BindTexture(TEXTURE_2D, tex);
+  // A 6 x 6 copy from (3, 3): 5 x 5 of it inside the framebuffer, the rest outside (zero).
+  gl.CopyTexImage2D(TEXTURE_2D, 0, RGBA8, 3, 3, 6, 6, 0);
+  REQUIRE(gl.GetError() == NO_ERROR);
+  std::vector<std::uint8_t> texels(6 * 6 * 4, 0xCD);
+  gl.PixelStore(PACK_ALIGNMENT, 1);
+  gl.GetTexImage(TEXTURE_2D, 0, RGBA, UNSIGNED_BYTE, texels.data());
+  auto at = [&](int i, int j) {
+    const std::uint8_t* p = &texels[(std::size_t(j) * 6 + std::size_t(i)) * 4];
+    return std::uint32_t(p[0]) << 24 | std::uint32_t(p[1]) << 16 | std::uint32_t(p[2]) << 8 | p[3];
+  };
+  CHECK(at(0, 0) == 0xFF8000FFu);  // framebuffer (3, 3): orange
+  CHECK(at(1, 1) == 0x0000FFFFu);  // (4, 4): blue
+  CHECK(at(4, 4) == 0x0000FFFFu);  // (7, 7)
+  CHECK(at(5, 5) == 0x00000000u);  // (8, 8): outside, zero
+  // CopyTexSubImage2D overwrites part of the level: framebuffer (0, 0) .. (1, 1) to texel (4, 0).
+  gl.CopyTexSubImage2D(TEXTURE_2D, 0, 4, 0, 0, 0, 2, 2);
+  gl.GetTexImage(TEXTURE_2D, 0, RGBA, UNSIGNED_BYTE, texels.data());
+  CHECK(at(4, 0) == 0xFF8000FFu);
+  CHECK(at(5, 1) == 0xFF8000FFu);
+  CHECK(at(3, 0) == 0xFF8000FFu);  // (6, 3) of the first copy, untouched
+  // Other formats and types through GetTexImage.
+  float f[6 * 6] = {};
+  gl.GetTexImage(TEXTURE_2D, 0, GREEN, FLOAT, f);
+  CHECK(f[0] == 128.0f / 255.0f);
+  // Depth: a depth texture copies the depth buffer.
+  const std::uint32_t depth_tex = gl.GenTexture();
+  gl.BindTexture(TEXTURE_2D, depth_tex);
+  gl.CopyTexImage2D(TEXTURE_2D, 0, DEPTH_COMPONENT, 0, 0, 2, 2, 0);
+  float d[4] = {};
+  gl.GetTexImage(TEXTURE_2D, 0, DEPTH_COMPONENT, FLOAT, d);
+  CHECK((d[0] == 0.25f && d[3] == 0.25f));
+  CHECK(gl.GetError() == NO_ERROR);
+  // Errors.
+  gl.GetTexImage(TEXTURE_2D, 0, RGBA, FLOAT, f);  // colour data from a depth texture
+  CHECK(gl.GetError() == INVALID_OPERATION);
+  gl.GetTexImage(TEXTURE_2D, 0, STENCIL_INDEX, UNSIGNED_BYTE, f);
+  CHECK(gl.GetError() == INVALID_ENUM);
+  gl.GetTexImage(TEXTURE_2D, -1, DEPTH_COMPONENT, FLOAT, f);
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.CopyTexSubImage2D(TEXTURE_2D, 0, 1, 1, 0, 0, 2, 2);  // past the 2 x 2 level
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.CopyTexSubImage2D(TEXTURE_2D, 1, 0, 0, 0, 0, 1, 1);  // level 1 not defined
+  CHECK(gl.GetError() == INVALID_OPERATION);
+  gl.CopyTexImage2D(TEXTURE_2D, 0, RGBA8, 0, 0, 2, 2, 1);  // border
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.CopyTexImage2D(TEXTURE_CUBE_MAP_POSITIVE_X, 0, RGBA8, 0, 0, 2, 2, 0);  // nothing bound to the cube target
+  CHECK(gl.GetError() == INVALID_OPERATION);
+  gl.CopyTexImage2D(TEXTURE_2D + 1, 0, RGBA8, 0, 0, 2, 2, 0);
+  CHECK(gl.GetError() == INVALID_ENUM);
+  // A framebuffer object with colour only: no depth to copy from; an incomplete one cannot be read.
+  const std::uint32_t fbo = gl.GenFramebuffer(), color = gl.GenTexture();
+  gl.BindTexture(TEXTURE_2D, color);
+  gl.TexImage2D(TEXTURE_2D, 0, RGBA8, 2, 2, 0, RGBA, UNSIGNED_BYTE, nullptr);
+  gl.BindFramebuffer(FRAMEBUFFER, fbo);
+  gl.CopyTexSubImage2D(TEXTURE_2D, 0, 0, 0, 0, 0, 1, 1);
+  CHECK(gl.GetError() == INVALID_FRAMEBUFFER_OPERATION);
+  gl.FramebufferTexture2D(FRAMEBUFFER, COLOR_ATTACHMENT0, TEXTURE_2D, color, 0);
+  gl.BindTexture(TEXTURE_2D, depth_tex);
+  gl.CopyTexSubImage2D(TEXTURE_2D, 0, 0, 0, 0, 0, 1, 1);
+  CHECK(gl.GetError() == INVALID_OPERATION);
+}
+
 TEST_CASE("the debug callback reports every error with the call's name", "[context][errors]") {
   Context gl(4, 4);
   struct Report {

@@ -197,6 +197,22 @@ class Context {
   /// As TexImage2DFromFile, for an encoded image (PNG, JPEG, ...) already in memory, such as one embedded in a model.
   bool TexImage2DFromMemory(Enum target, const void* data, std::size_t size, bool flip_vertically,
                             std::string* error = nullptr);
+  /// Copies the rectangle (x, y, width, height) of the read framebuffer (its COLOR_ATTACHMENT0 or colour buffer, or
+  /// its depth buffer for a depth texture) into level `level` of the bound texture at (xoffset, yoffset), converted
+  /// to the level's format; pixels outside the framebuffer (undefined in OpenGL) copy as zero. Errors: bad target:
+  /// INVALID_ENUM; level out of range, a rectangle outside the level: INVALID_VALUE; nothing bound, level not
+  /// defined, no buffer of the texture's kind to read: INVALID_OPERATION; incomplete read framebuffer:
+  /// INVALID_FRAMEBUFFER_OPERATION.
+  void CopyTexSubImage2D(Enum target, int level, int xoffset, int yoffset, int x, int y, int width, int height);
+  /// Defines level `level` of the bound texture as width x height of `internal_format` (as TexImage2D, with its
+  /// errors) holding the read framebuffer's rectangle (x, y, width, height), as CopyTexSubImage2D copies it.
+  void CopyTexImage2D(Enum target, int level, Enum internal_format, int x, int y, int width, int height, int border);
+  /// Writes level `level` of the bound texture (TEXTURE_2D or a cube face) to `pixels`, rows bottom first, laid out
+  /// by the PACK_ settings as ReadPixels lays them out: format a colour format (RED ... BGRA) or DEPTH_COMPONENT
+  /// for a depth texture; type UNSIGNED_BYTE, UNSIGNED_SHORT, UNSIGNED_INT (normalized) or FLOAT. An undefined
+  /// level writes nothing. Errors: bad target, format or type: INVALID_ENUM; level out of range: INVALID_VALUE;
+  /// nothing bound, DEPTH_COMPONENT for a colour texture or the reverse: INVALID_OPERATION.
+  void GetTexImage(Enum target, int level, Enum format, Enum type, void* pixels) const;
   /// Builds levels base+1 .. 1x1 of the bound texture from its base level (each texel the bilinear sample of the
   /// level above at its centre: the 2x2 average for even sizes). Base level undefined: INVALID_OPERATION.
   void GenerateMipmap(Enum target);

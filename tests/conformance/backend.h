@@ -130,6 +130,10 @@ class Backend {
   /// BUFFER_SIZE / sizeof(Vertex) of them as `mode` with the kColor program, and returns the store as
   /// GetBufferSubData reads it back.
   virtual std::vector<Vertex> DrawThroughBufferCalls(Enum mode, const std::vector<Vertex>& vertices, int mapped) = 0;
+  /// Defines the texture of unit 0 (replacing any before; NEAREST, CLAMP_TO_EDGE) by CopyTexImage2D(RGBA8) of the
+  /// framebuffer's rectangle (x, y, w, h), then CopyTexSubImage2D of the framebuffer's (sx, sy, sw, sh) into it at
+  /// (dx, dy).
+  virtual void CopyToTexture(int x, int y, int w, int h, int dx, int dy, int sx, int sy, int sw, int sh) = 0;
   /// glGetIntegerv, glGetFloatv and glGetBooleanv of `count` values.
   virtual std::vector<std::int64_t> GetIntegers(Enum pname, int count) = 0;
   virtual std::vector<float> GetFloats(Enum pname, int count) = 0;

@@ -382,6 +382,21 @@ class GlBackend final : public Backend {
     return v;
   }
   Enum GetError() override { return glGetError(); }
+  void CopyToTexture(int x, int y, int w, int h, int dx, int dy, int sx, int sy, int sw, int sh) override {
+    GLuint tex = 0;
+    glGenTextures(1, &tex);
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, tex);
+    glCopyTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, x, y, w, h, 0);
+    glCopyTexSubImage2D(GL_TEXTURE_2D, 0, dx, dy, sx, sy, sw, sh);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    glUseProgram(programs_[3]);
+    glUniform1i(glGetUniformLocation(programs_[3], "u_tex"), 0);
+  }
   std::uint32_t GenQuery() override {
     GLuint id = 0;
     glGenQueries(1, &id);

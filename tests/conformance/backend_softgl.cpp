@@ -354,6 +354,16 @@ class SoftglBackend final : public Backend {
     return std::vector<bool>(b, b + count);
   }
   Enum GetError() override { return gl_.GetError(); }
+  void CopyToTexture(int x, int y, int w, int h, int dx, int dy, int sx, int sy, int sw, int sh) override {
+    gl_.ActiveTexture(softgl::TEXTURE0);
+    gl_.BindTexture(softgl::TEXTURE_2D, gl_.GenTexture());
+    gl_.CopyTexImage2D(softgl::TEXTURE_2D, 0, softgl::RGBA8, x, y, w, h, 0);
+    gl_.CopyTexSubImage2D(softgl::TEXTURE_2D, 0, dx, dy, sx, sy, sw, sh);
+    gl_.TexParameteri(softgl::TEXTURE_2D, softgl::TEXTURE_MIN_FILTER, softgl::NEAREST);
+    gl_.TexParameteri(softgl::TEXTURE_2D, softgl::TEXTURE_MAG_FILTER, softgl::NEAREST);
+    gl_.TexParameteri(softgl::TEXTURE_2D, softgl::TEXTURE_WRAP_S, softgl::CLAMP_TO_EDGE);
+    gl_.TexParameteri(softgl::TEXTURE_2D, softgl::TEXTURE_WRAP_T, softgl::CLAMP_TO_EDGE);
+  }
   std::uint32_t GenQuery() override { return gl_.GenQuery(); }
   void BeginQuery(Enum target, std::uint32_t id) override { gl_.BeginQuery(target, id); }
   void EndQuery(Enum target) override { gl_.EndQuery(target); }

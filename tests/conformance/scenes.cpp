@@ -666,6 +666,18 @@ void RenderToTexture(Backend& b) {
   b.Draw(TRIANGLES, v, Program::kTexture);
 }
 
+// Coloured triangles in the lower-left 64 x 64 pixels, copied into a texture by CopyTexImage2D (a 48 x 40 rectangle
+// from (8, 12)) and CopyTexSubImage2D (the framebuffer's lower-left 16 x 16 over the texture's upper-right
+// corner), then drawn 1:1 with NEAREST into the upper right, where each pixel centre meets a texel centre.
+void CopyTexImage(Backend& b) {
+  ClearBlack(b);
+  b.Draw(TRIANGLES, {{Win(2, 3), {1, 0, 0, 1}}, {Win(61, 9), {0, 1, 0, 1}}, {Win(30, 62), {0, 0, 1, 1}},
+                     {Win(5, 50), {1, 1, 0, 1}}, {Win(20, 20), {1, 0, 1, 1}}, {Win(60, 58), {0, 1, 1, 1}}});
+  b.CopyToTexture(8, 12, 48, 40, 32, 24, 0, 0, 16, 16);
+  b.Draw(TRIANGLES, QuadWith({Win(72, 80), Win(120, 80), Win(120, 120), Win(72, 120)}, Uv({0, 0}, {1, 0}, {1, 1}, {0, 1})),
+         Program::kTexture);
+}
+
 // A cube map with a different gradient per face, seen through a full-screen quad whose direction varyings sweep
 // across several faces (face selection, per-face coordinates, mipmapped filtering, edges between faces).
 void CubeMap(Backend& b) {
@@ -783,6 +795,7 @@ const std::vector<SceneInfo>& Scenes() {
       {"texture_wraps", kSize, kSize, Check::kTexture, TextureWraps},
       {"texture_generated_mipmaps", kSize, kSize, Check::kTexture, TextureGeneratedMipmaps},
       {"render_to_texture", kSize, kSize, Check::kTexture, RenderToTexture},
+      {"copy_tex_image", kSize, kSize, Check::kColor, CopyTexImage},
       {"cube_map", kSize, kSize, Check::kTexture, CubeMap},
       {"shadow_compare", kSize, kSize, Check::kTexture, ShadowCompare},
       {"model", 256, 256, Check::kColor, Model},

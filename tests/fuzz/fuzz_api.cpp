@@ -201,7 +201,32 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                       in.Enum(kFormats), in.Enum(kPixelTypes), small && in.Byte() % 4 ? scratch.data() : nullptr);
         break;
       }
-      case 23: gl.GenerateMipmap(in.Enum(kTexTargets)); break;
+      case 23: {
+        constexpr std::uint32_t kImageTargets[] = {TEXTURE_2D, TEXTURE_CUBE_MAP_POSITIVE_X, TEXTURE_CUBE_MAP_NEGATIVE_Z};
+        const auto small = [&](int lo, int hi) { return std::clamp(in.Int(lo, hi), lo, hi); };
+        switch (in.Byte() % 4) {
+          case 0: gl.GenerateMipmap(in.Enum(kTexTargets)); break;
+          case 1:
+            gl.CopyTexImage2D(in.Enum(kImageTargets), small(-1, 3), in.Enum(kFormats), in.Int(-60, 60), in.Int(-60, 60),
+                              small(-1, 64), small(-1, 64), small(0, 1));
+            break;
+          case 2:
+            gl.CopyTexSubImage2D(in.Enum(kImageTargets), small(-1, 3), in.Int(-4, 64), in.Int(-4, 64), in.Int(-60, 60),
+                                 in.Int(-60, 60), small(-1, 64), small(-1, 64));
+            break;
+          default: {  // into a buffer as large as the largest level any input makes (64 x 64 RGBA floats)
+            scratch.assign(std::size_t(64) * 64 * 16 + 64 * 16, 0);
+            gl.PixelStore(PACK_ALIGNMENT, 4);
+            gl.PixelStore(PACK_ROW_LENGTH, 0);
+            gl.PixelStore(PACK_SKIP_ROWS, 0);
+            gl.PixelStore(PACK_SKIP_PIXELS, 0);
+            gl.GetTexImage(in.Enum(kImageTargets), small(-1, 3), in.Byte() % 2 ? RGBA : DEPTH_COMPONENT,
+                           in.Byte() % 2 ? FLOAT : UNSIGNED_BYTE, scratch.data());
+            break;
+          }
+        }
+        break;
+      }
       case 24: gl.TexParameteri(in.Enum(kTexTargets), in.Enum(kParams), int(in.Enum(kParamValues))); break;
       case 25: gl.TexParameterf(in.Enum(kTexTargets), in.Enum(kParams), in.Float()); break;
       case 26: gl.GenFramebuffer(); break;
