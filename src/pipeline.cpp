@@ -304,9 +304,16 @@ void RecordChunk(const DrawCall& call, const FetchPlan& fetch, const DrawState& 
     BinnedBatch& bins = *packet.batches[first_batch + std::size_t(job)];
     auto runner = std::make_unique<PrimitiveRunner>(state, scratch.shaded, bins, grid);
     const std::size_t end = std::min(count, std::size_t(job + 1) * kBinJob);
-    for (std::size_t p = std::size_t(job) * kBinJob; p < end; ++p) {
-      const std::uint32_t shift = std::uint32_t(p / per_instance) * unique;
-      const std::size_t i = (p % per_instance) * std::size_t(per);
+    // Primitive p is primitive q of instance g: q and the instance's shift advance with p (no division per
+    // primitive).
+    std::size_t q = per_instance ? std::size_t(job) * kBinJob % per_instance : 0;
+    std::uint32_t shift = per_instance ? std::uint32_t(std::size_t(job) * kBinJob / per_instance) * unique : 0;
+    for (std::size_t p = std::size_t(job) * kBinJob; p < end; ++p, ++q) {
+      if (q == per_instance) {
+        q = 0;
+        shift += unique;
+      }
+      const std::size_t i = q * std::size_t(per);
       // The provoking vertex: the first of the primitive or its last (OpenGL 4.6, table 13.2; assembly put it there).
       const std::size_t provoking = i + (first ? 0 : std::size_t(per - 1));
       auto at = [&](std::size_t k) { return map[idx[k]] + shift; };
