@@ -640,22 +640,29 @@ int main(int argc, char** argv) {
                           return TimeGl(n, head_frame);
                         });
                       }});
+  // The small triangles' set-up, shared by the scene that draws them at once and the one that draws them one by one.
+  auto small_softgl = [&](softgl::Context& gl, const softgl::Program& shader) {
+    softgl_setup(gl, tris);
+    gl.UseProgram(shader);
+    gl.Enable(softgl::DEPTH_TEST);
+  };
+  auto small_gl = [&] {
+    gl_setup(tris);
+    const GLuint p = Program(kFlatVs, kFlatFs);
+    glUniform4f(glGetUniformLocation(p, "color"), 0.2f, 0.6f, 0.9f, 1.0f);
+    glEnable(GL_DEPTH_TEST);
+  };
   scenes.push_back({"many small triangles: 1,000,000, flat, depth test", 1280, 720, "Mtri/s", 1e6,
                     [&](int n) {
                       return WithShader<wide::FlatShader, scalar::FlatShader>([&](auto& shader) {
                         softgl::Context gl(1280, 720, g_options);
-                        softgl_setup(gl, tris);
-                        gl.UseProgram(shader);
-                        gl.Enable(softgl::DEPTH_TEST);
+                        small_softgl(gl, shader);
                         return TimeSoftgl(n, gl, small_frame);
                       });
                     },
                     [&](int n) {
                       return with_osmesa(1280, 720, [&] {
-                        gl_setup(tris);
-                        const GLuint p = Program(kFlatVs, kFlatFs);
-                        glUniform4f(glGetUniformLocation(p, "color"), 0.2f, 0.6f, 0.9f, 1.0f);
-                        glEnable(GL_DEPTH_TEST);
+                        small_gl();
                         return TimeGl(n, small_frame);
                       });
                     }});
@@ -665,9 +672,7 @@ int main(int argc, char** argv) {
                     [&](int n) {
                       return WithShader<wide::FlatShader, scalar::FlatShader>([&](auto& shader) {
                         softgl::Context gl(1280, 720, g_options);
-                        softgl_setup(gl, tris);
-                        gl.UseProgram(shader);
-                        gl.Enable(softgl::DEPTH_TEST);
+                        small_softgl(gl, shader);
                         return MedianMs(n, [&] {
                           gl.Clear(softgl::COLOR_BUFFER_BIT | softgl::DEPTH_BUFFER_BIT);
                           for (int i = 0; i < kDraws; ++i) gl.DrawArrays(softgl::TRIANGLES, 3 * i, 3);
@@ -677,10 +682,7 @@ int main(int argc, char** argv) {
                     },
                     [&](int n) {
                       return with_osmesa(1280, 720, [&] {
-                        gl_setup(tris);
-                        const GLuint p = Program(kFlatVs, kFlatFs);
-                        glUniform4f(glGetUniformLocation(p, "color"), 0.2f, 0.6f, 0.9f, 1.0f);
-                        glEnable(GL_DEPTH_TEST);
+                        small_gl();
                         return MedianMs(n, [&] {
                           glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
                           for (int i = 0; i < kDraws; ++i) glDrawArrays(GL_TRIANGLES, 3 * i, 3);
