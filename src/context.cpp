@@ -64,17 +64,29 @@ struct VertexArray {
 
 bool IsUsage(Enum usage) { return usage >= 0x88E0 && usage <= 0x88EA && (usage & 3) != 3; }
 
+// A renderbuffer object (GenRenderbuffers): one image that drawing can render to and blits and reads can use.
+struct Renderbuffer {
+  detail::TextureLevel image;  // in its sized format (an unsized one resolved), with its stencil plane
+  Enum internal_format = RGBA;  // as RenderbufferStorage was given it (RENDERBUFFER_INTERNAL_FORMAT)
+};
+
+// What a framebuffer attachment point holds: a texture's level (of one cube face), a renderbuffer, or nothing.
 struct Attachment {
   std::shared_ptr<detail::TextureObject> texture;  // keeps the storage alive, as OpenGL does
+  std::shared_ptr<Renderbuffer> renderbuffer;
   int face = 0;
   int level = 0;
-  const detail::TextureLevel* Level() const { return texture ? &texture->levels[face][level] : nullptr; }
+  bool Present() const { return texture || renderbuffer; }
+  const detail::TextureLevel* Level() const {
+    return texture ? &texture->levels[face][level] : renderbuffer ? &renderbuffer->image : nullptr;
+  }
 };
 
 struct FramebufferObject {
   Attachment color[kMaxColorOutputs];
-  Attachment depth;
+  Attachment depth, stencil;  // DEPTH_STENCIL_ATTACHMENT sets both
   Enum draw_buffers[kMaxColorOutputs] = {COLOR_ATTACHMENT0, NONE, NONE, NONE};
+  Enum read_buffer = COLOR_ATTACHMENT0;  // ReadBuffer: COLOR_ATTACHMENT0 + i or NONE
 };
 
 // A query object (GenQueries). Its target is fixed by its first BeginQuery.
@@ -110,23 +122,30 @@ int CubeFaceIndex(Enum target) {
 
 bool IsTexImageTarget(Enum target) { return target == TEXTURE_2D || CubeFaceIndex(target) >= 0; }
 
-// Section 9.4: why a framebuffer object cannot be drawn to, or FRAMEBUFFER_COMPLETE.
+// Section 9.4: why a framebuffer object cannot be drawn to, or FRAMEBUFFER_COMPLETE. Depth and stencil may be
+// separate images (OpenGL allows it; llvmpipe answers FRAMEBUFFER_UNSUPPORTED there).
 Enum FramebufferStatus(const FramebufferObject& f) {
   bool any = false;
   for (const Attachment& a : f.color) {
-    if (!a.texture) continue;
+    if (!a.Present()) continue;
     any = true;
     const detail::TextureLevel* l = a.Level();
-    if (!l->Defined() || detail::IsDepthFormat(l->format)) return FRAMEBUFFER_INCOMPLETE_ATTACHMENT;
+    if (!l->Defined() || detail::IsDepthFormat(l->format) || detail::HasStencil(l->format))
+      return FRAMEBUFFER_INCOMPLETE_ATTACHMENT;
   }
-  if (f.depth.texture) {
+  if (f.depth.Present()) {
     any = true;
     const detail::TextureLevel* l = f.depth.Level();
     if (!l->Defined() || !detail::IsDepthFormat(l->format)) return FRAMEBUFFER_INCOMPLETE_ATTACHMENT;
   }
+  if (f.stencil.Present()) {
+    any = true;
+    const detail::TextureLevel* l = f.stencil.Level();
+    if (!l->Defined() || !detail::HasStencil(l->format)) return FRAMEBUFFER_INCOMPLETE_ATTACHMENT;
+  }
   if (!any) return FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT;
   for (Enum b : f.draw_buffers)
-    if (b != NONE && !f.color[b - COLOR_ATTACHMENT0].texture) return FRAMEBUFFER_INCOMPLETE_DRAW_BUFFER;
+    if (b != NONE && !f.color[b - COLOR_ATTACHMENT0].Present()) return FRAMEBUFFER_INCOMPLETE_DRAW_BUFFER;
   return FRAMEBUFFER_COMPLETE;
 }
 
@@ -136,24 +155,30 @@ detail::RenderTarget FramebufferTarget(const FramebufferObject& f) {
   detail::RenderTarget t;
   t.width = t.height = 1 << 30;
   auto fit = [&](const Attachment& a) {
-    if (!a.texture) return;
+    if (!a.Present()) return;
     t.width = std::min(t.width, a.Level()->width);
     t.height = std::min(t.height, a.Level()->height);
   };
   for (const Attachment& a : f.color) fit(a);
   fit(f.depth);
+  fit(f.stencil);
   for (int i = 0; i < kMaxColorOutputs; ++i) {
     if (f.draw_buffers[i] == NONE) continue;
     const Attachment& a = f.color[f.draw_buffers[i] - COLOR_ATTACHMENT0];
+    if (!a.Present()) continue;
     detail::ColorBuffer& cb = t.color[i];
     cb.data = const_cast<std::uint8_t*>(a.Level()->data.data());
     cb.layout = a.Level()->layout;
     cb.rgb_only = a.Level()->format == RGB8;
     cb.pitch = a.Level()->width;
   }
-  if (f.depth.texture) {
+  if (f.depth.Present()) {
     t.depth = reinterpret_cast<float*>(const_cast<std::uint8_t*>(f.depth.Level()->data.data()));
     t.depth_pitch = f.depth.Level()->width;
+  }
+  if (f.stencil.Present()) {
+    t.stencil = const_cast<std::uint8_t*>(f.stencil.Level()->stencil.data());
+    t.stencil_pitch = f.stencil.Level()->width;
   }
   return t;
 }
@@ -184,6 +209,10 @@ struct ContextState {
   int pack_alignment = 4, pack_row_length = 0, pack_skip_rows = 0, pack_skip_pixels = 0;
   std::unordered_map<std::uint32_t, std::unique_ptr<FramebufferObject>> framebuffers;
   std::uint32_t next_framebuffer = 1;
+  std::unordered_map<std::uint32_t, std::shared_ptr<Renderbuffer>> renderbuffers;
+  std::uint32_t next_renderbuffer = 1;
+  std::shared_ptr<Renderbuffer> renderbuffer;  // bound to RENDERBUFFER
+  Enum default_read_buffer = BACK;             // ReadBuffer while the context's own framebuffer is read: or NONE
   std::unordered_map<std::uint32_t, std::unique_ptr<QueryObject>> queries;
   std::uint32_t next_query = 1;
   std::uint32_t active_query[4] = {0, 0, 0, 0};  // by QuerySlot: the id active on each target (0: none)
@@ -1185,6 +1214,9 @@ bool QueryState(ContextState& s, Enum pname, StateValue& out) {
     case TEXTURE_BINDING_2D: return integer(IdOf(s.textures, s.units[s.active_unit].tex_2d.get()));
     case TEXTURE_BINDING_CUBE_MAP: return integer(IdOf(s.textures, s.units[s.active_unit].cube.get()));
     case DRAW_FRAMEBUFFER_BINDING: return integer(IdOf(s.framebuffers, s.draw_fbo));
+    case DRAW_BUFFER: return QueryState(s, DRAW_BUFFER0, out);
+    case READ_BUFFER: return integer(s.read_fbo ? s.read_fbo->read_buffer : s.default_read_buffer);
+    case RENDERBUFFER_BINDING: return integer(IdOf(s.renderbuffers, s.renderbuffer.get()));
     case READ_FRAMEBUFFER_BINDING: return integer(IdOf(s.framebuffers, s.read_fbo));
     case VIEWPORT: return put(Kind::kInt, {double(s.viewport[0]), double(s.viewport[1]), double(s.viewport[2]), double(s.viewport[3])});
     case SCISSOR_BOX: return put(Kind::kInt, {double(s.scissor[0]), double(s.scissor[1]), double(s.scissor[2]), double(s.scissor[3])});
@@ -1245,6 +1277,7 @@ bool QueryState(ContextState& s, Enum pname, StateValue& out) {
     case MAX_DRAW_BUFFERS:
     case MAX_COLOR_ATTACHMENTS: return integer(kMaxColorOutputs);
     case MAX_SAMPLES: return integer(1);  // no multisampling
+    case MAX_RENDERBUFFER_SIZE: return integer(kMaxFramebufferSize);
     case MAX_VIEWPORT_DIMS: return put(Kind::kInt, {double(kMaxFramebufferSize), double(kMaxFramebufferSize)});
     case MAX_VARYING_COMPONENTS: return integer(kMaxVaryingFloats);
     case MAX_ELEMENTS_VERTICES:
@@ -1427,13 +1460,18 @@ void Context::GetQueryObjectui64v(std::uint32_t id, Enum pname, std::uint64_t* p
 
 namespace {
 
-// What ReadPixels and friends read: the context's framebuffer, or COLOR_ATTACHMENT0 and the depth attachment of
-// the framebuffer object bound for reading (nothing when it is incomplete).
+// What ReadPixels and friends read: the context's framebuffer, or the framebuffer object bound for reading (its
+// read buffer as color[0], depth and stencil; nothing when it is incomplete). color[0] is absent when the read
+// buffer is NONE or names an empty attachment.
 detail::RenderTarget ReadTarget(ContextState& s) {
-  if (!s.read_fbo) return s.fb.Target();
+  if (!s.read_fbo) {
+    detail::RenderTarget t = s.fb.Target();
+    if (s.default_read_buffer == NONE) t.color[0] = detail::ColorBuffer{};
+    return t;
+  }
   if (FramebufferStatus(*s.read_fbo) != FRAMEBUFFER_COMPLETE) return {};
-  FramebufferObject reading = *s.read_fbo;  // reads COLOR_ATTACHMENT0 whatever the draw buffers say
-  reading.draw_buffers[0] = reading.color[0].texture ? COLOR_ATTACHMENT0 : NONE;
+  FramebufferObject reading = *s.read_fbo;  // reads the read buffer whatever the draw buffers say
+  reading.draw_buffers[0] = reading.read_buffer;
   for (int i = 1; i < kMaxColorOutputs; ++i) reading.draw_buffers[i] = NONE;
   return FramebufferTarget(reading);
 }
@@ -1588,9 +1626,10 @@ void Context::GetTexImage(Enum target, int level, Enum format, Enum type, void* 
   auto& s = *state_;
   if (!IsTexImageTarget(target)) return s.SetError(INVALID_ENUM, __func__, "target must be TEXTURE_2D or a TEXTURE_CUBE_MAP_* face");
   PixelLayout l;
-  if (!LayoutOf(format, l) || l.stencil) return s.SetError(INVALID_ENUM, __func__, "format must be a colour format or DEPTH_COMPONENT");
-  if (type != UNSIGNED_BYTE && type != UNSIGNED_SHORT && type != UNSIGNED_INT && type != FLOAT)
-    return s.SetError(INVALID_ENUM, __func__, "type must be UNSIGNED_BYTE, UNSIGNED_SHORT, UNSIGNED_INT or FLOAT");
+  if (!LayoutOf(format, l) || (l.stencil && !l.depth)) return s.SetError(INVALID_ENUM, __func__, "format must be a colour format, DEPTH_COMPONENT or DEPTH_STENCIL");
+  if (type != UNSIGNED_BYTE && type != UNSIGNED_SHORT && type != UNSIGNED_INT && type != FLOAT && type != UNSIGNED_INT_24_8)
+    return s.SetError(INVALID_ENUM, __func__, "type must be UNSIGNED_BYTE, UNSIGNED_SHORT, UNSIGNED_INT, FLOAT or UNSIGNED_INT_24_8");
+  if ((format == DEPTH_STENCIL) != (type == UNSIGNED_INT_24_8)) return s.SetError(INVALID_OPERATION, __func__, "DEPTH_STENCIL goes with UNSIGNED_INT_24_8, and only it");
   if (level < 0 || level >= detail::kMaxLevels) return s.SetError(INVALID_VALUE, __func__, "level is negative or beyond the largest mipmap level");
   int face = 0;
   const detail::TextureObject* tex = s.Bound(target, &face);
@@ -1598,16 +1637,24 @@ void Context::GetTexImage(Enum target, int level, Enum format, Enum type, void* 
   const detail::TextureLevel& lv = tex->levels[face][level];
   if (!lv.Defined() || pixels == nullptr) return;  // an undefined level has no texels to return
   if (detail::IsDepthFormat(lv.format) != l.depth) return s.SetError(INVALID_OPERATION, __func__, "DEPTH_COMPONENT for a colour texture, or the reverse");
+  if (l.stencil && lv.stencil.empty()) return s.SetError(INVALID_OPERATION, __func__, "DEPTH_STENCIL for a texture without stencil");
   s.Sync(__func__);  // a texture being rendered into holds its texels once the recorded draws are rendered
   const PackLayout pack = Pack(s, lv.width, l, type, pixels);
   for (int j = 0; j < lv.height; ++j)
     for (int i = 0; i < lv.width; ++i) {
       const glm::vec4 c = lv.Texel(i, j);
       std::uint8_t* dst = pack.At(i, j);
-      if (l.depth) PutComponent(type, double(c.r), false, dst);
-      else
+      if (l.stencil) {
+        const double d = std::clamp(double(c.r), 0.0, 1.0);
+        const std::uint32_t word = std::uint32_t(std::llround(d * 16777215.0)) << 8 |
+                                   lv.stencil[std::size_t(j) * std::size_t(lv.width) + std::size_t(i)];
+        std::memcpy(dst, &word, 4);
+      } else if (l.depth) {
+        PutComponent(type, double(c.r), false, dst);
+      } else {
         for (int k = 0; k < l.count; ++k)
           PutComponent(type, double(c[l.channels[k]]), false, dst + std::size_t(k) * pack.component);
+      }
     }
 }
 
@@ -1642,6 +1689,17 @@ void CopyToLevel(ContextState& s, const char* what, detail::TextureLevel& lv, in
       }
     }
   detail::UploadPixels(lv, xo, yo, w, h, depth ? DEPTH_COMPONENT : RGBA, FLOAT, 4, rect.data());
+  if (lv.stencil.empty() || !t.stencil) return;  // a depth-stencil texture takes the stencil indices too
+  std::vector<std::uint8_t> indices(std::size_t(w) * std::size_t(h), 0);
+  for (int j = 0; j < h; ++j)
+    for (int i = 0; i < w; ++i) {
+      const int px = x + i, py = y + j;
+      if (px >= 0 && py >= 0 && px < t.width && py < t.height)
+        indices[std::size_t(j) * std::size_t(w) + std::size_t(i)] = t.Stencil(px, py);
+    }
+  for (int j = 0; j < h; ++j)
+    std::memcpy(lv.stencil.data() + std::size_t(yo + j) * std::size_t(lv.width) + std::size_t(xo),
+                indices.data() + std::size_t(j) * std::size_t(w), std::size_t(w));
 }
 
 }  // namespace
@@ -1728,6 +1786,7 @@ void Context::DeleteTexture(std::uint32_t texture) {
     for (Attachment& a : f->color)
       if (a.texture.get() == dead) a = Attachment{};
     if (f->depth.texture.get() == dead) f->depth = Attachment{};
+    if (f->stencil.texture.get() == dead) f->stencil = Attachment{};
   }
   s.textures.erase(it);
 }
@@ -1756,7 +1815,18 @@ void Context::BindTexture(Enum target, std::uint32_t texture) {
 
 namespace {
 
-bool IsTransferType(Enum type) { return type == UNSIGNED_BYTE || type == FLOAT; }
+// TexImage2D's and TexSubImage2D's client data: RED, RG, RGB, RGBA or DEPTH_COMPONENT as UNSIGNED_BYTE or FLOAT,
+// or DEPTH_STENCIL as UNSIGNED_INT_24_8 or FLOAT_32_UNSIGNED_INT_24_8_REV. False with the error recorded otherwise.
+bool CheckTransfer(ContextState& s, const char* what, Enum format, Enum type) {
+  const bool packed = type == UNSIGNED_INT_24_8 || type == FLOAT_32_UNSIGNED_INT_24_8_REV;
+  if (detail::TransferComponents(format) == 0 || (type != UNSIGNED_BYTE && type != FLOAT && !packed))
+    return s.SetError(INVALID_ENUM, what, "format must be RED, RG, RGB, RGBA, DEPTH_COMPONENT or DEPTH_STENCIL and type UNSIGNED_BYTE, FLOAT, UNSIGNED_INT_24_8 or FLOAT_32_UNSIGNED_INT_24_8_REV"), false;
+  if ((format == DEPTH_STENCIL) != packed)
+    return s.SetError(INVALID_OPERATION, what, "DEPTH_STENCIL data goes with UNSIGNED_INT_24_8 or FLOAT_32_UNSIGNED_INT_24_8_REV, and only it"), false;
+  return true;
+}
+
+bool IsDepthTransfer(Enum format) { return format == DEPTH_COMPONENT || format == DEPTH_STENCIL; }
 
 }  // namespace
 
@@ -1768,8 +1838,8 @@ void Context::TexImage2D(Enum target, int level, Enum internal_format, int width
   if (level < 0 || level >= detail::kMaxLevels || width < 0 || height < 0 || width > kMaxTextureSize ||
       height > kMaxTextureSize || border != 0 || detail::FormatComponents(internal_format) == 0)
     return s.SetError(INVALID_VALUE, __func__, "a numeric argument is out of range");
-  if (detail::TransferComponents(format) == 0 || !IsTransferType(type)) return s.SetError(INVALID_ENUM, __func__, "format must be RED, RG, RGB, RGBA or DEPTH_COMPONENT and type UNSIGNED_BYTE or FLOAT");
-  if (detail::IsDepthFormat(internal_format) != (format == DEPTH_COMPONENT)) return s.SetError(INVALID_OPERATION, __func__, "depth data for a colour format, or the reverse");
+  if (!CheckTransfer(s, __func__, format, type)) return;
+  if (detail::IsDepthFormat(internal_format) != IsDepthTransfer(format)) return s.SetError(INVALID_OPERATION, __func__, "depth data for a colour format, or the reverse");
   if (CubeFaceIndex(target) >= 0 && width != height) return s.SetError(INVALID_VALUE, __func__, "cube map faces must be square");
   int face = 0;
   detail::TextureObject* tex = s.Bound(target, &face);
@@ -1789,13 +1859,13 @@ void Context::TexSubImage2D(Enum target, int level, int x, int y, int width, int
   state_->Sync(__func__);
   auto& s = *state_;
   if (!IsTexImageTarget(target)) return s.SetError(INVALID_ENUM, __func__, "target must be TEXTURE_2D or a TEXTURE_CUBE_MAP_* face");
-  if (detail::TransferComponents(format) == 0 || !IsTransferType(type)) return s.SetError(INVALID_ENUM, __func__, "format must be RED, RG, RGB, RGBA or DEPTH_COMPONENT and type UNSIGNED_BYTE or FLOAT");
+  if (!CheckTransfer(s, __func__, format, type)) return;
   if (level < 0 || level >= detail::kMaxLevels) return s.SetError(INVALID_VALUE, __func__, "level is negative or beyond the largest mipmap level");
   int face = 0;
   detail::TextureObject* tex = s.Bound(target, &face);
   if (!tex || !tex->levels[face][level].Defined()) return s.SetError(INVALID_OPERATION, __func__, "no texture bound, or that level is not defined");
   detail::TextureLevel& lv = tex->levels[face][level];
-  if (detail::IsDepthFormat(lv.format) != (format == DEPTH_COMPONENT)) return s.SetError(INVALID_OPERATION, __func__, "depth data for a colour texture, or the reverse");
+  if (detail::IsDepthFormat(lv.format) != IsDepthTransfer(format)) return s.SetError(INVALID_OPERATION, __func__, "depth data for a colour texture, or the reverse");
   if (x < 0 || y < 0 || width < 0 || height < 0 || std::int64_t(x) + width > lv.width ||
       std::int64_t(y) + height > lv.height)
     return s.SetError(INVALID_VALUE, __func__, "a numeric argument is out of range");
@@ -2020,18 +2090,48 @@ void Context::BindFramebuffer(Enum target, std::uint32_t framebuffer) {
   if (target != DRAW_FRAMEBUFFER) s.read_fbo = f;
 }
 
+namespace {
+
+// The attachment points an attachment enum names in f (two for DEPTH_STENCIL_ATTACHMENT), or none with
+// INVALID_ENUM recorded.
+int AttachmentSlots(ContextState& s, const char* what, FramebufferObject& f, Enum attachment, Attachment* slots[2]) {
+  if (attachment >= COLOR_ATTACHMENT0 && attachment < COLOR_ATTACHMENT0 + kMaxColorOutputs) {
+    slots[0] = &f.color[attachment - COLOR_ATTACHMENT0];
+    return 1;
+  }
+  switch (attachment) {
+    case DEPTH_ATTACHMENT: slots[0] = &f.depth; return 1;
+    case STENCIL_ATTACHMENT: slots[0] = &f.stencil; return 1;
+    case DEPTH_STENCIL_ATTACHMENT: slots[0] = &f.depth; slots[1] = &f.stencil; return 2;
+    default:
+      s.SetError(INVALID_ENUM, what, "attachment must be COLOR_ATTACHMENT0..3, DEPTH_ATTACHMENT, STENCIL_ATTACHMENT or DEPTH_STENCIL_ATTACHMENT");
+      return 0;
+  }
+}
+
+// The attachment points `attachment` names in the framebuffer object bound to `target` (two for
+// DEPTH_STENCIL_ATTACHMENT), or 0 with the error recorded: a bad target or attachment (INVALID_ENUM, checked
+// first), the context's own framebuffer bound (INVALID_OPERATION).
+int TargetAttachment(ContextState& s, const char* what, Enum target, Enum attachment, Attachment* slots[2]) {
+  if (target != FRAMEBUFFER && target != DRAW_FRAMEBUFFER && target != READ_FRAMEBUFFER)
+    return s.SetError(INVALID_ENUM, what, "target must be FRAMEBUFFER, DRAW_FRAMEBUFFER or READ_FRAMEBUFFER"), 0;
+  FramebufferObject probe;
+  if (AttachmentSlots(s, what, probe, attachment, slots) == 0) return 0;
+  FramebufferObject* f = target == READ_FRAMEBUFFER ? s.read_fbo : s.draw_fbo;
+  if (!f) return s.SetError(INVALID_OPERATION, what, "no framebuffer object is bound to target"), 0;
+  return AttachmentSlots(s, what, *f, attachment, slots);
+}
+
+}  // namespace
+
 void Context::FramebufferTexture2D(Enum target, Enum attachment, Enum textarget, std::uint32_t texture, int level) {
   state_->Sync(__func__);
   auto& s = *state_;
-  if (target != FRAMEBUFFER && target != DRAW_FRAMEBUFFER && target != READ_FRAMEBUFFER)
-    return s.SetError(INVALID_ENUM, __func__, "an enum argument is not one this call accepts");
-  const bool color = attachment >= COLOR_ATTACHMENT0 && attachment < COLOR_ATTACHMENT0 + kMaxColorOutputs;
-  if (!color && attachment != DEPTH_ATTACHMENT) return s.SetError(INVALID_ENUM, __func__, "attachment must be COLOR_ATTACHMENT0..3 or DEPTH_ATTACHMENT");
-  FramebufferObject* f = target == READ_FRAMEBUFFER ? s.read_fbo : s.draw_fbo;
-  if (!f) return s.SetError(INVALID_OPERATION, __func__, "no framebuffer object is bound to target");
-  Attachment& slot = color ? f->color[attachment - COLOR_ATTACHMENT0] : f->depth;
+  Attachment* slots[2] = {nullptr, nullptr};
+  const int n = TargetAttachment(s, __func__, target, attachment, slots);
+  if (n == 0) return;
   if (texture == 0) {
-    slot = Attachment{};
+    for (int k = 0; k < n; ++k) *slots[k] = Attachment{};
     return;
   }
   if (!IsTexImageTarget(textarget)) return s.SetError(INVALID_ENUM, __func__, "textarget must be TEXTURE_2D or a TEXTURE_CUBE_MAP_* face");
@@ -2040,9 +2140,265 @@ void Context::FramebufferTexture2D(Enum target, Enum attachment, Enum textarget,
   const Enum kind = textarget == TEXTURE_2D ? TEXTURE_2D : TEXTURE_CUBE_MAP;
   if (it->second->target != kind) return s.SetError(INVALID_OPERATION, __func__, "textarget does not match the texture (2D or cube map)");
   if (level < 0 || level >= detail::kMaxLevels) return s.SetError(INVALID_VALUE, __func__, "level is negative or beyond the largest mipmap level");
-  slot.texture = it->second;
-  slot.face = kind == TEXTURE_2D ? 0 : CubeFaceIndex(textarget);
-  slot.level = level;
+  for (int k = 0; k < n; ++k) {
+    *slots[k] = Attachment{};
+    slots[k]->texture = it->second;
+    slots[k]->face = kind == TEXTURE_2D ? 0 : CubeFaceIndex(textarget);
+    slots[k]->level = level;
+  }
+}
+
+void Context::FramebufferRenderbuffer(Enum target, Enum attachment, Enum renderbuffer_target,
+                                      std::uint32_t renderbuffer) {
+  state_->Sync(__func__);
+  auto& s = *state_;
+  if (renderbuffer_target != RENDERBUFFER) return s.SetError(INVALID_ENUM, __func__, "renderbuffer_target must be RENDERBUFFER");
+  Attachment* slots[2] = {nullptr, nullptr};
+  const int n = TargetAttachment(s, __func__, target, attachment, slots);
+  if (n == 0) return;
+  std::shared_ptr<Renderbuffer> object;
+  if (renderbuffer != 0) {
+    auto it = s.renderbuffers.find(renderbuffer);
+    if (it == s.renderbuffers.end()) return s.SetError(INVALID_OPERATION, __func__, "not a renderbuffer id made by GenRenderbuffer (or it was deleted)");
+    object = it->second;
+  }
+  for (int k = 0; k < n; ++k) {
+    *slots[k] = Attachment{};
+    slots[k]->renderbuffer = object;
+  }
+}
+
+void Context::GetFramebufferAttachmentParameteriv(Enum target, Enum attachment, Enum pname, int* params) {
+  auto& s = *state_;
+  Attachment* slots[2] = {nullptr, nullptr};
+  const int n = TargetAttachment(s, __func__, target, attachment, slots);
+  if (n == 0) return;
+  const Attachment& a = *slots[0];
+  if (n == 2 && (a.texture != slots[1]->texture || a.renderbuffer != slots[1]->renderbuffer || a.level != slots[1]->level || a.face != slots[1]->face))
+    return s.SetError(INVALID_OPERATION, __func__, "DEPTH_STENCIL_ATTACHMENT asked while depth and stencil hold different images");
+  int v = 0;
+  switch (pname) {
+    case FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE: v = int(a.texture ? TEXTURE : a.renderbuffer ? RENDERBUFFER : NONE); break;
+    case FRAMEBUFFER_ATTACHMENT_OBJECT_NAME:
+      v = int(a.texture ? IdOf(s.textures, a.texture.get()) : IdOf(s.renderbuffers, a.renderbuffer.get()));
+      break;
+    case FRAMEBUFFER_ATTACHMENT_TEXTURE_LEVEL:
+    case FRAMEBUFFER_ATTACHMENT_TEXTURE_CUBE_MAP_FACE:
+      if (!a.texture) return s.SetError(a.Present() ? INVALID_ENUM : INVALID_OPERATION, __func__, "no texture is attached there");
+      v = pname == FRAMEBUFFER_ATTACHMENT_TEXTURE_LEVEL ? a.level
+          : a.texture->target == TEXTURE_CUBE_MAP     ? int(TEXTURE_CUBE_MAP_POSITIVE_X) + a.face
+                                                      : 0;
+      break;
+    default: return s.SetError(INVALID_ENUM, __func__, "pname must be FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, _OBJECT_NAME, _TEXTURE_LEVEL or _TEXTURE_CUBE_MAP_FACE");
+  }
+  if (params) *params = v;
+}
+
+// ---- Renderbuffers -------------------------------------------------------------------------------------------
+
+namespace {
+
+// The sized format RenderbufferStorage stores for `f` (an unsized base format takes its 8-bit or 24-bit size, as
+// Mesa does), or 0 when drawing cannot render to it.
+Enum SizedRenderbufferFormat(Enum f) {
+  switch (f) {
+    case RGBA: return RGBA8;
+    case RGB: return RGB8;
+    case RG: return RG8;
+    case RED: return R8;
+    case DEPTH_COMPONENT: return DEPTH_COMPONENT24;
+    case DEPTH_STENCIL: return DEPTH24_STENCIL8;
+    case STENCIL_INDEX: return STENCIL_INDEX8;
+    case RGBA8: case RGB8: case RG8: case R8: case RGBA32F: case R32F: case DEPTH_COMPONENT16:
+    case DEPTH_COMPONENT24: case DEPTH_COMPONENT32F: case DEPTH24_STENCIL8: case DEPTH32F_STENCIL8:
+    case STENCIL_INDEX8: return f;
+    default: return 0;
+  }
+}
+
+// Bits of a sized format's red, green, blue, alpha, depth and stencil, as OpenGL reports them.
+struct FormatBits {
+  int r = 0, g = 0, b = 0, a = 0, depth = 0, stencil = 0;
+};
+FormatBits BitsOf(Enum f) {
+  switch (f) {
+    case RGBA8: return {8, 8, 8, 8, 0, 0};
+    case RGB8: return {8, 8, 8, 0, 0, 0};
+    case RG8: return {8, 8, 0, 0, 0, 0};
+    case R8: return {8, 0, 0, 0, 0, 0};
+    case RGBA32F: return {32, 32, 32, 32, 0, 0};
+    case R32F: return {32, 0, 0, 0, 0, 0};
+    case DEPTH_COMPONENT16: return {0, 0, 0, 0, 16, 0};
+    case DEPTH_COMPONENT:
+    case DEPTH_COMPONENT24: return {0, 0, 0, 0, 24, 0};
+    case DEPTH_COMPONENT32F: return {0, 0, 0, 0, 32, 0};
+    case DEPTH24_STENCIL8: return {0, 0, 0, 0, 24, 8};
+    case DEPTH32F_STENCIL8: return {0, 0, 0, 0, 32, 8};
+    case STENCIL_INDEX8: return {0, 0, 0, 0, 0, 8};
+    default: return {};
+  }
+}
+
+Renderbuffer* BoundRenderbuffer(ContextState& s, const char* what, Enum target) {
+  if (target != RENDERBUFFER) return s.SetError(INVALID_ENUM, what, "target must be RENDERBUFFER"), nullptr;
+  if (!s.renderbuffer) return s.SetError(INVALID_OPERATION, what, "no renderbuffer is bound"), nullptr;
+  return s.renderbuffer.get();
+}
+
+}  // namespace
+
+std::uint32_t Context::GenRenderbuffer() {
+  return NewId(state_->renderbuffers, state_->next_renderbuffer, [] { return std::make_shared<Renderbuffer>(); });
+}
+
+void Context::GenRenderbuffers(int n, std::uint32_t* ids) {
+  GenMany(*state_, __func__, n, ids, [this] { return GenRenderbuffer(); });
+}
+
+void Context::DeleteRenderbuffer(std::uint32_t renderbuffer) {
+  state_->Sync(__func__);
+  auto& s = *state_;
+  auto it = s.renderbuffers.find(renderbuffer);
+  if (it == s.renderbuffers.end()) return;
+  const Renderbuffer* dead = it->second.get();
+  if (s.renderbuffer.get() == dead) s.renderbuffer.reset();
+  for (FramebufferObject* f : {s.draw_fbo, s.read_fbo}) {
+    if (!f) continue;
+    for (Attachment* a : {&f->color[0], &f->color[1], &f->color[2], &f->color[3], &f->depth, &f->stencil})
+      if (a->renderbuffer.get() == dead) *a = Attachment{};
+  }
+  s.renderbuffers.erase(it);
+}
+
+bool Context::IsRenderbuffer(std::uint32_t renderbuffer) const {
+  return state_->renderbuffers.count(renderbuffer) != 0;
+}
+
+void Context::BindRenderbuffer(Enum target, std::uint32_t renderbuffer) {
+  auto& s = *state_;
+  if (target != RENDERBUFFER) return s.SetError(INVALID_ENUM, __func__, "target must be RENDERBUFFER");
+  std::shared_ptr<Renderbuffer> object;
+  if (renderbuffer != 0) {
+    auto it = s.renderbuffers.find(renderbuffer);
+    if (it == s.renderbuffers.end()) return s.SetError(INVALID_OPERATION, __func__, "not a renderbuffer id made by GenRenderbuffer (or it was deleted)");
+    object = it->second;
+  }
+  s.renderbuffer = std::move(object);
+}
+
+void Context::RenderbufferStorage(Enum target, Enum internal_format, int width, int height) {
+  auto& s = *state_;
+  Renderbuffer* rb = BoundRenderbuffer(s, __func__, target);
+  if (!rb) return;
+  const Enum sized = SizedRenderbufferFormat(internal_format);
+  if (sized == 0) return s.SetError(INVALID_ENUM, __func__, "internal_format is not a colour, depth or stencil format drawing can render to");
+  if (width < 0 || height < 0 || width > kMaxFramebufferSize || height > kMaxFramebufferSize)
+    return s.SetError(INVALID_VALUE, __func__, "width or height is negative or above MAX_RENDERBUFFER_SIZE");
+  s.Sync(__func__);  // recorded draws may render into the old image
+  detail::TextureLevel next;
+  try {
+    next.Allocate(sized, width, height);
+  } catch (const std::bad_alloc&) {
+    return s.SetError(OUT_OF_MEMORY, __func__, "out of memory");
+  }
+  rb->image = std::move(next);
+  rb->internal_format = internal_format;
+}
+
+void Context::GetRenderbufferParameteriv(Enum target, Enum pname, int* params) {
+  auto& s = *state_;
+  const Renderbuffer* rb = BoundRenderbuffer(s, __func__, target);
+  if (!rb) return;
+  const FormatBits bits = BitsOf(rb->image.format);
+  int v = 0;
+  switch (pname) {
+    case RENDERBUFFER_WIDTH: v = rb->image.width; break;
+    case RENDERBUFFER_HEIGHT: v = rb->image.height; break;
+    case RENDERBUFFER_INTERNAL_FORMAT: v = int(rb->internal_format); break;
+    case RENDERBUFFER_RED_SIZE: v = bits.r; break;
+    case RENDERBUFFER_GREEN_SIZE: v = bits.g; break;
+    case RENDERBUFFER_BLUE_SIZE: v = bits.b; break;
+    case RENDERBUFFER_ALPHA_SIZE: v = bits.a; break;
+    case RENDERBUFFER_DEPTH_SIZE: v = bits.depth; break;
+    case RENDERBUFFER_STENCIL_SIZE: v = bits.stencil; break;
+    case RENDERBUFFER_SAMPLES: v = 0; break;
+    default: return s.SetError(INVALID_ENUM, __func__, "pname is not a renderbuffer parameter");
+  }
+  if (params) *params = v;
+}
+
+// ---- Read buffer and blits -----------------------------------------------------------------------------------
+
+void Context::ReadBuffer(Enum src) {
+  auto& s = *state_;
+  const bool attachment = src >= COLOR_ATTACHMENT0 && src < COLOR_ATTACHMENT0 + 32;
+  const bool window = src == FRONT || src == BACK || src == LEFT || src == FRONT_LEFT || src == BACK_LEFT ||
+                      src == FRONT_AND_BACK;
+  const bool right = src == RIGHT || src == FRONT_RIGHT || src == BACK_RIGHT;
+  if (src != NONE && !attachment && !window && !right) return s.SetError(INVALID_ENUM, __func__, "src must be NONE, a colour buffer of the context's framebuffer or COLOR_ATTACHMENTi");
+  if (s.read_fbo) {
+    if (window || right) return s.SetError(INVALID_OPERATION, __func__, "a framebuffer object is bound for reading: src must be NONE or COLOR_ATTACHMENTi");
+    if (attachment && src >= COLOR_ATTACHMENT0 + kMaxColorOutputs) return s.SetError(INVALID_OPERATION, __func__, "COLOR_ATTACHMENTi with i at or above MAX_COLOR_ATTACHMENTS");
+    s.read_fbo->read_buffer = src;
+    return;
+  }
+  if (attachment || right) return s.SetError(INVALID_OPERATION, __func__, "the context's framebuffer has one colour buffer (FRONT, BACK, LEFT ...), no attachments or right buffers");
+  s.default_read_buffer = src;
+}
+
+namespace {
+
+// The depth and stencil formats BlitFramebuffer compares (OpenGL requires them to match): the bits of the read or
+// draw framebuffer's depth buffer and stencil buffer, 0 where there is none. The context's framebuffer counts as
+// DEPTH24_STENCIL8 (its depth is stored as float, as every depth format is).
+FormatBits DepthStencilBits(const FramebufferObject* f) {
+  if (!f) return BitsOf(DEPTH24_STENCIL8);
+  FormatBits b;
+  if (f->depth.Present()) b.depth = BitsOf(f->depth.Level()->format).depth;
+  if (f->stencil.Present()) b.stencil = BitsOf(f->stencil.Level()->format).stencil;
+  if (b.depth == 32) b.r = 1;  // float depth: a kind of its own (r marks it)
+  return b;
+}
+
+}  // namespace
+
+void Context::BlitFramebuffer(int src_x0, int src_y0, int src_x1, int src_y1, int dst_x0, int dst_y0, int dst_x1,
+                              int dst_y1, Bitfield mask, Enum filter) {
+  auto& s = *state_;
+  if ((mask & ~(COLOR_BUFFER_BIT | DEPTH_BUFFER_BIT | STENCIL_BUFFER_BIT)) != 0)
+    return s.SetError(INVALID_VALUE, __func__, "mask has bits other than COLOR_BUFFER_BIT, DEPTH_BUFFER_BIT and STENCIL_BUFFER_BIT");
+  if (filter != NEAREST && filter != LINEAR) return s.SetError(INVALID_ENUM, __func__, "filter must be NEAREST or LINEAR");
+  if (filter == LINEAR && (mask & (DEPTH_BUFFER_BIT | STENCIL_BUFFER_BIT)) != 0)
+    return s.SetError(INVALID_OPERATION, __func__, "depth and stencil are blitted with NEAREST only");
+  if ((s.read_fbo && FramebufferStatus(*s.read_fbo) != FRAMEBUFFER_COMPLETE) ||
+      (s.draw_fbo && FramebufferStatus(*s.draw_fbo) != FRAMEBUFFER_COMPLETE))
+    return s.SetError(INVALID_FRAMEBUFFER_OPERATION, __func__, "the read or draw framebuffer is not complete");
+  s.Sync(__func__);
+  const detail::RenderTarget src = ReadTarget(s);
+  detail::RenderTarget dst;
+  s.DrawTarget(dst);
+  // A buffer missing from either framebuffer is skipped without an error (OpenGL 4.6, section 18.3.1).
+  const bool depth = (mask & DEPTH_BUFFER_BIT) != 0 && src.depth && dst.depth;
+  const bool stencil = (mask & STENCIL_BUFFER_BIT) != 0 && src.stencil && dst.stencil;
+  if (depth || stencil) {
+    const FormatBits a = DepthStencilBits(s.read_fbo), b = DepthStencilBits(s.draw_fbo);
+    const bool depth_differs = a.depth != b.depth || a.r != b.r;
+    if ((depth && depth_differs) || (stencil && (a.stencil != b.stencil || (a.depth && b.depth && depth_differs))))
+      return s.SetError(INVALID_OPERATION, __func__, "the read and draw framebuffers' depth or stencil formats differ");
+  }
+  detail::BlitRegion r;
+  r.src[0] = src_x0, r.src[1] = src_y0, r.src[2] = src_x1, r.src[3] = src_y1;
+  r.dst[0] = dst_x0, r.dst[1] = dst_y0, r.dst[2] = dst_x1, r.dst[3] = dst_y1;
+  r.clip = s.ClearArea(dst);  // the draw buffers' area cut to the scissor box
+  r.color = (mask & COLOR_BUFFER_BIT) != 0 && src.color[0].Present();
+  r.depth = depth;
+  r.stencil = stencil;
+  r.linear = filter == LINEAR;
+  try {
+    detail::Blit(src, dst, r);
+  } catch (const std::bad_alloc&) {
+    s.SetError(OUT_OF_MEMORY, __func__, "out of memory");
+  }
 }
 
 Enum Context::CheckFramebufferStatus(Enum target) {

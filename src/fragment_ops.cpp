@@ -401,7 +401,7 @@ SOFTGL_WIDE void BlockOps(const BlockOpsContext& ctx, int b) {
     I sten{};
     if (ctx.stencil_test) {
       sten = __builtin_convertvector(
-          (LoadQuads<std::uint8_t, W, typename V<W>::B>(t.stencil, std::size_t(t.width), bb, b, l0)), I);
+          (LoadQuads<std::uint8_t, W, typename V<W>::B>(t.stencil, std::size_t(t.stencil_pitch), bb, b, l0)), I);
       const StencilFace& f = *ctx.face;
       const std::int32_t m = std::int32_t(f.value_mask & 0xFFu);
       const I pass = Compare(f.func, I{} + (std::clamp(f.ref, 0, 255) & m), sten & m);
@@ -424,7 +424,7 @@ SOFTGL_WIDE void BlockOps(const BlockOpsContext& ctx, int b) {
       sten = StencilOpLanes<W>(*ctx.face, ctx.face->dppass, sten, go);
     }
     if (ctx.stencil_test)
-      StoreQuads<std::uint8_t, W, typename V<W>::B>(t.stencil, std::size_t(t.width), bb, b, l0,
+      StoreQuads<std::uint8_t, W, typename V<W>::B>(t.stencil, std::size_t(t.stencil_pitch), bb, b, l0,
                                                      __builtin_convertvector(sten, typename V<W>::B));
     if (ctx.passed) *ctx.passed += std::uint64_t(__builtin_popcount(MaskToBits<W>(go, 0)));
     if (!ctx.any_color || !t.color[0].Present()) continue;

@@ -86,6 +86,94 @@ void RenderTarget::ClearStencil(const Rect& r, std::uint8_t value, std::uint8_t 
     }
 }
 
+namespace {
+
+// Where destination pixels [d0, d1) along one axis read: the source coordinate of each pixel centre, for the
+// rectangles' edges s0, s1 (source) and e0, e1 (destination).
+struct BlitAxis {
+  int d0 = 0, d1 = 0;  // destination pixels written, clipped
+  double s0 = 0, scale = 0, e0 = 0;
+  double At(int d) const { return s0 + (double(d) + 0.5 - e0) * scale; }
+};
+BlitAxis MakeAxis(int s0, int s1, int e0, int e1, int clip0, int clip1) {
+  BlitAxis a;
+  a.s0 = s0;
+  a.e0 = e0;
+  a.scale = (double(s1) - double(s0)) / (double(e1) - double(e0));
+  a.d0 = std::max(std::min(e0, e1), clip0);
+  a.d1 = std::min(std::max(e0, e1), clip1);
+  return a;
+}
+
+// The pixel index holding coordinate c, or -1 outside [0, size).
+int PixelAt(double c, int size) {
+  if (!(c >= 0.0) || c >= double(size)) return -1;
+  return int(c);
+}
+
+// A copy of a buffer of `rows` rows of `pitch` elements, for a blit whose source is its destination.
+template <class T>
+std::vector<T> Snapshot(const T* data, int pitch, int rows) {
+  return std::vector<T>(data, data + std::size_t(pitch) * std::size_t(rows));
+}
+
+}  // namespace
+
+void Blit(const RenderTarget& src_in, const RenderTarget& dst, const BlitRegion& r) {
+  if (r.src[0] == r.src[2] || r.src[1] == r.src[3] || r.dst[0] == r.dst[2] || r.dst[1] == r.dst[3]) return;
+  const BlitAxis ax = MakeAxis(r.src[0], r.src[2], r.dst[0], r.dst[2], std::max(r.clip.x0, 0), std::min(r.clip.x1, dst.width));
+  const BlitAxis ay = MakeAxis(r.src[1], r.src[3], r.dst[1], r.dst[3], std::max(r.clip.y0, 0), std::min(r.clip.y1, dst.height));
+  if (ax.d0 >= ax.d1 || ay.d0 >= ay.d1) return;
+  // Where the destination's buffers are the source's, read from a copy taken first.
+  RenderTarget src = src_in;
+  std::vector<std::uint8_t> color_copy, stencil_copy;
+  std::vector<float> depth_copy;
+  bool aliased = false;
+  for (const ColorBuffer& cb : dst.color) aliased = aliased || (r.color && cb.Present() && cb.data == src.color[0].data);
+  if (aliased) {
+    color_copy = Snapshot(src.color[0].data, src.color[0].pitch * src.color[0].Bytes(), src.height);
+    src.color[0].data = color_copy.data();
+  }
+  if (r.depth && dst.depth == src.depth) {
+    depth_copy = Snapshot(src.depth, src.depth_pitch, src.height);
+    src.depth = depth_copy.data();
+  }
+  if (r.stencil && dst.stencil == src.stencil) {
+    stencil_copy = Snapshot(src.stencil, src.stencil_pitch, src.height);
+    src.stencil = stencil_copy.data();
+  }
+  const bool all[4] = {true, true, true, true};
+  for (int y = ay.d0; y < ay.d1; ++y) {
+    const double sy = ay.At(y);
+    const int py = PixelAt(sy, src.height);
+    if (py < 0) continue;
+    for (int x = ax.d0; x < ax.d1; ++x) {
+      const double sx = ax.At(x);
+      const int px = PixelAt(sx, src.width);
+      if (px < 0) continue;
+      if (r.color) {
+        glm::vec4 c;
+        if (r.linear) {  // bilinear between pixel centres, clamped to the edge
+          const double u = sx - 0.5, v = sy - 0.5;
+          const int i0 = int(std::floor(u)), j0 = int(std::floor(v));
+          const float a = float(u - i0), b = float(v - j0);
+          const int i1 = std::min(i0 + 1, src.width - 1), j1 = std::min(j0 + 1, src.height - 1);
+          const int ic = std::max(i0, 0), jc = std::max(j0, 0);
+          const ColorBuffer& cb = src.color[0];
+          c = (1.0f - b) * ((1.0f - a) * cb.Load(ic, jc) + a * cb.Load(i1, jc)) +
+              b * ((1.0f - a) * cb.Load(ic, j1) + a * cb.Load(i1, j1));
+        } else {
+          c = src.color[0].Load(px, py);
+        }
+        for (const ColorBuffer& cb : dst.color)
+          if (cb.Present()) cb.Store(x, y, c, all);
+      }
+      if (r.depth) dst.Depth(x, y) = src.Depth(px, py);
+      if (r.stencil) dst.Stencil(x, y) = src.Stencil(px, py);
+    }
+  }
+}
+
 bool Framebuffer::Allocate(int w, int h) {
   width = height = 0;
   color.clear();
@@ -118,6 +206,7 @@ RenderTarget Framebuffer::Target() {
     t.depth = depth.data();
     t.depth_pitch = width;
     t.stencil = stencil.data();
+    t.stencil_pitch = width;
   }
   return t;
 }

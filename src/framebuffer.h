@@ -38,10 +38,13 @@ struct RenderTarget {
   ColorBuffer color[kMaxColorOutputs];
   float* depth = nullptr;           // null: no depth buffer (the depth test then always passes)
   int depth_pitch = 0;              // depth values from one row to the next
-  std::uint8_t* stencil = nullptr;  // null: no stencil buffer (the stencil test then always passes); pitch = width
+  std::uint8_t* stencil = nullptr;  // null: no stencil buffer (the stencil test then always passes)
+  int stencil_pitch = 0;            // stencil values from one row to the next
   Rect Bounds() const { return Rect{0, 0, width, height}; }
   float& Depth(int x, int y) const { return depth[std::size_t(y) * std::size_t(depth_pitch) + std::size_t(x)]; }
-  std::uint8_t& Stencil(int x, int y) const { return stencil[std::size_t(y) * std::size_t(width) + std::size_t(x)]; }
+  std::uint8_t& Stencil(int x, int y) const {
+    return stencil[std::size_t(y) * std::size_t(stencil_pitch) + std::size_t(x)];
+  }
 
   /// Clears rectangle r (inside the target) of every colour buffer through `mask`.
   void ClearColor(const Rect& r, const glm::vec4& value, const bool mask[4]) const;
@@ -64,6 +67,25 @@ struct Framebuffer {
   std::size_t Index(int x, int y) const { return std::size_t(y) * std::size_t(width) + std::size_t(x); }
   RenderTarget Target();
 };
+
+/// One BlitFramebuffer, checked: rectangles (x0, y0, x1, y1) of the source and the destination (either may be
+/// reversed, which mirrors the image), the destination pixels that may be written, and which buffers go.
+struct BlitRegion {
+  int src[4] = {0, 0, 0, 0};
+  int dst[4] = {0, 0, 0, 0};
+  Rect clip;  // the draw buffers' area cut to the scissor box
+  bool color = false, depth = false, stencil = false;
+  bool linear = false;  // colour only
+};
+
+/// Copies src's color[0] into each of dst's colour buffers, and depth and stencil, as BlitFramebuffer does
+/// (OpenGL 4.6, section 18.3.1): each destination pixel whose centre lies in the destination rectangle takes the
+/// source at the corresponding point (scaled and mirrored by the two rectangles): with NEAREST the pixel holding
+/// that point, with LINEAR (colour only) the bilinear mix of the four nearest pixel centres, clamped to the read
+/// buffer's edge. A destination pixel whose point lies outside the read buffer is not written (the blit is
+/// clipped), nor is one outside r.clip. Write masks do not apply. Source and destination may be the same buffers:
+/// what is read is the source as it was before the blit. Throws std::bad_alloc.
+void Blit(const RenderTarget& src, const RenderTarget& dst, const BlitRegion& r);
 
 /// OpenGL's float-to-normalized-fixed conversion for 8 bits: clamp to [0, 1], then round(f * 255).
 std::uint8_t FloatToUnorm8(float f);

@@ -14,8 +14,11 @@ int FormatComponents(Enum f) {
     case R8:
     case R32F:
     case DEPTH_COMPONENT:
+    case DEPTH_COMPONENT16:
     case DEPTH_COMPONENT24:
-    case DEPTH_COMPONENT32F: return 1;
+    case DEPTH_COMPONENT32F:
+    case DEPTH24_STENCIL8:
+    case DEPTH32F_STENCIL8: return 1;
     case RG8: return 2;
     case RGB8: return 3;
     case RGBA8:
@@ -24,7 +27,12 @@ int FormatComponents(Enum f) {
   }
 }
 
-bool IsDepthFormat(Enum f) { return f == DEPTH_COMPONENT || f == DEPTH_COMPONENT24 || f == DEPTH_COMPONENT32F; }
+bool IsDepthFormat(Enum f) {
+  return f == DEPTH_COMPONENT || f == DEPTH_COMPONENT16 || f == DEPTH_COMPONENT24 || f == DEPTH_COMPONENT32F ||
+         f == DEPTH24_STENCIL8 || f == DEPTH32F_STENCIL8;
+}
+
+bool HasStencil(Enum f) { return f == DEPTH24_STENCIL8 || f == DEPTH32F_STENCIL8 || f == STENCIL_INDEX8; }
 
 bool IsNormalizedFormat(Enum f) { return f == R8 || f == RG8 || f == RGB8 || f == RGBA8; }
 
@@ -37,8 +45,11 @@ TexelLayout LayoutOf(Enum f) {
     case RGBA32F: return TexelLayout::kFloat32x4;
     case R32F:
     case DEPTH_COMPONENT:
+    case DEPTH_COMPONENT16:
     case DEPTH_COMPONENT24:
-    case DEPTH_COMPONENT32F: return TexelLayout::kFloat32x1;
+    case DEPTH_COMPONENT32F:
+    case DEPTH24_STENCIL8:
+    case DEPTH32F_STENCIL8: return TexelLayout::kFloat32x1;
     default: return TexelLayout::kNone;
   }
 }
@@ -57,7 +68,8 @@ int BytesPerTexel(TexelLayout l) {
 int TransferComponents(Enum format) {
   switch (format) {
     case RED:
-    case DEPTH_COMPONENT: return 1;
+    case DEPTH_COMPONENT:
+    case DEPTH_STENCIL: return 1;
     case RG: return 2;
     case RGB: return 3;
     case RGBA: return 4;
@@ -92,6 +104,8 @@ void TextureLevel::Allocate(Enum internal_format, int w, int h) {
   const TexelLayout l = LayoutOf(internal_format);
   const int b = BytesPerTexel(l);
   data.assign(std::size_t(w) * std::size_t(h) * std::size_t(b) + kGatherPad, 0);
+  if (HasStencil(internal_format)) stencil.assign(std::size_t(w) * std::size_t(h), 0);
+  else stencil.clear();
   format = internal_format;
   width = w;
   height = h;
@@ -127,6 +141,29 @@ void StoreTexel(TextureLevel& level, int i, int j, const glm::vec4& in) {
 void UploadPixels(TextureLevel& level, int x, int y, int w, int h, Enum format, Enum type, int alignment,
                   const void* pixels) {
   if (pixels == nullptr || w <= 0 || h <= 0) return;
+  if (format == DEPTH_STENCIL) {  // one packed value a pixel: 4 bytes (24_8) or 8 (float, then 24_8 with stencil low)
+    const std::size_t size = type == FLOAT_32_UNSIGNED_INT_24_8_REV ? 8 : 4;
+    std::size_t row = std::size_t(w) * size;
+    row = (row + std::size_t(alignment) - 1) / std::size_t(alignment) * std::size_t(alignment);
+    const auto* bytes = static_cast<const std::uint8_t*>(pixels);
+    for (int j = 0; j < h; ++j)
+      for (int i = 0; i < w; ++i) {
+        const std::uint8_t* p = bytes + std::size_t(j) * row + std::size_t(i) * size;
+        float depth;
+        std::uint32_t word;
+        if (size == 8) {
+          std::memcpy(&depth, p, 4);
+          std::memcpy(&word, p + 4, 4);
+        } else {
+          std::memcpy(&word, p, 4);
+          depth = float(double(word >> 8) / 16777215.0);
+        }
+        StoreTexel(level, x + i, y + j, glm::vec4(std::isnan(depth) ? 0.0f : depth, 0.0f, 0.0f, 1.0f));
+        if (!level.stencil.empty())
+          level.stencil[std::size_t(y + j) * std::size_t(level.width) + std::size_t(x + i)] = std::uint8_t(word);
+      }
+    return;
+  }
   const int n = TransferComponents(format);
   const std::size_t csize = type == FLOAT ? 4 : 1;
   std::size_t row = std::size_t(w) * std::size_t(n) * csize;

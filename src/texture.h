@@ -2,6 +2,8 @@
 //
 // Each level keeps its texels in its own format: RGBA8 four bytes a texel (RGB8 too, alpha stored as 255), RG8
 // two, R8 one, RGBA32F sixteen, R32F and the depth formats one float. Fixed-point texels are bytes k meaning k / 255.
+// Formats with stencil (DEPTH24_STENCIL8, DEPTH32F_STENCIL8, and STENCIL_INDEX8 for renderbuffers) keep their
+// stencil indices in a plane of their own, one byte a texel.
 #pragma once
 
 #include <cstdint>
@@ -24,7 +26,7 @@ enum class TexelLayout : std::uint8_t {
   kUnorm8x2,   // RG8
   kUnorm8x1,   // R8
   kFloat32x4,  // RGBA32F
-  kFloat32x1,  // R32F, DEPTH_COMPONENT*
+  kFloat32x1,  // R32F, DEPTH_COMPONENT*, the depth of DEPTH*_STENCIL8
 };
 
 /// The layout of an internal format (kNone if softgl does not support it), and its bytes per texel.
@@ -46,6 +48,7 @@ struct TextureLevel {
   // vector sampling path reads a texel and its right-hand neighbour so) stays inside the level.
   std::vector<std::uint8_t> data;
   static constexpr std::size_t kGatherPad = 7;
+  std::vector<std::uint8_t> stencil;  // [height][width] stencil indices for a format with stencil, else empty
   bool Defined() const { return format != 0 && width > 0 && height > 0; }
   std::uint8_t* At(int i, int j) {
     return data.data() + (std::size_t(j) * std::size_t(width) + std::size_t(i)) * std::size_t(bytes);
@@ -58,8 +61,8 @@ struct TextureLevel {
   glm::vec4 Raw(int i, int j) const;
   /// Texel (i, j) as RGBA floats (fixed point divided by 255).
   glm::vec4 Texel(int i, int j) const;
-  /// Allocates width x height texels of `internal_format`, zero (alpha 1 where the format has no alpha). Throws
-  /// std::bad_alloc.
+  /// Allocates width x height texels of `internal_format`, zero (alpha 1 where the format has no alpha; stencil
+  /// 0). Throws std::bad_alloc.
   void Allocate(Enum internal_format, int w, int h);
 };
 
@@ -105,13 +108,19 @@ TextureView MakeView(const TextureObject& texture);
 
 /// Number of colour or depth channels of an internal format, 0 if softgl does not support it.
 int FormatComponents(Enum internal_format);
+/// DEPTH_COMPONENT, DEPTH_COMPONENT16/24/32F, DEPTH24_STENCIL8, DEPTH32F_STENCIL8.
 bool IsDepthFormat(Enum internal_format);
+/// DEPTH24_STENCIL8, DEPTH32F_STENCIL8, STENCIL_INDEX8.
+bool HasStencil(Enum internal_format);
 bool IsNormalizedFormat(Enum internal_format);  // fixed point: RGBA8, RGB8, RG8, R8
-/// Channels of a pixel transfer format (RED 1, RG 2, RGB 3, RGBA 4, DEPTH_COMPONENT 1), 0 if unknown.
+/// Channels of a pixel transfer format (RED 1, RG 2, RGB 3, RGBA 4, DEPTH_COMPONENT 1, DEPTH_STENCIL 1: one packed
+/// value), 0 if unknown.
 int TransferComponents(Enum format);
 
-/// Converts client pixels (format, type UNSIGNED_BYTE or FLOAT, rows aligned to `alignment`) into the level's
-/// format, writing rect (x, y, w, h) of `level` (already allocated). Null pixels leave the level as it is.
+/// Converts client pixels (format, type UNSIGNED_BYTE or FLOAT, rows aligned to `alignment`; or DEPTH_STENCIL
+/// with UNSIGNED_INT_24_8 or FLOAT_32_UNSIGNED_INT_24_8_REV) into the level's format, writing rect (x, y, w, h) of
+/// `level` (already allocated). Depth data leaves a level's stencil as it is; depth-stencil data into a depth
+/// format drops the stencil. Null pixels leave the level as it is.
 void UploadPixels(TextureLevel& level, int x, int y, int w, int h, Enum format, Enum type, int alignment,
                   const void* pixels);
 

@@ -34,7 +34,7 @@ namespace {
 
 bool SameBuffers(const RenderTarget& a, const RenderTarget& b) {
   if (a.width != b.width || a.height != b.height || a.depth != b.depth || a.depth_pitch != b.depth_pitch ||
-      a.stencil != b.stencil)
+      a.stencil != b.stencil || a.stencil_pitch != b.stencil_pitch)
     return false;
   for (int i = 0; i < kMaxColorOutputs; ++i) {
     const ColorBuffer &x = a.color[i], &y = b.color[i];

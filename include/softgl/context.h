@@ -176,12 +176,14 @@ class Context {
   /// object: texture calls with nothing bound record INVALID_OPERATION.
   void BindTexture(Enum target, std::uint32_t texture);
   /// Defines level `level` of the bound texture: target TEXTURE_2D or a TEXTURE_CUBE_MAP_* face; internal_format
-  /// RGBA8, RGB8, RG8, R8, RGBA32F, R32F or DEPTH_COMPONENT (also DEPTH_COMPONENT24/32F: all depth is stored as
-  /// float); pixels of `format` RED, RG, RGB, RGBA or DEPTH_COMPONENT and `type` UNSIGNED_BYTE or FLOAT, rows bottom
-  /// first, each row aligned to UNPACK_ALIGNMENT; null pixels leave the level zero. Errors: bad target, format or
-  /// type: INVALID_ENUM; unsupported internal format, negative or too large size, level out of range, border != 0,
-  /// a non-square cube face: INVALID_VALUE; depth data for a colour format or the reverse, nothing bound:
-  /// INVALID_OPERATION; no memory: OUT_OF_MEMORY.
+  /// RGBA8, RGB8, RG8, R8, RGBA32F, R32F, DEPTH_COMPONENT (also DEPTH_COMPONENT16/24/32F: all depth is stored as
+  /// float), DEPTH24_STENCIL8 or DEPTH32F_STENCIL8 (depth, sampled as a depth texture, and a stencil index each);
+  /// pixels of `format` RED, RG, RGB, RGBA or DEPTH_COMPONENT and `type` UNSIGNED_BYTE or FLOAT, or DEPTH_STENCIL
+  /// with UNSIGNED_INT_24_8 or FLOAT_32_UNSIGNED_INT_24_8_REV, rows bottom first, each row aligned to
+  /// UNPACK_ALIGNMENT; null pixels leave the level zero. Errors: bad target, format or type: INVALID_ENUM;
+  /// unsupported internal format, negative or too large size, level out of range, border != 0, a non-square cube
+  /// face: INVALID_VALUE; depth data for a colour format or the reverse, DEPTH_STENCIL with another type or the
+  /// reverse, nothing bound: INVALID_OPERATION; no memory: OUT_OF_MEMORY.
   void TexImage2D(Enum target, int level, Enum internal_format, int width, int height, int border, Enum format,
                   Enum type, const void* pixels);
   /// Replaces the rectangle (x, y, width, height) of a defined level. Outside the level: INVALID_VALUE; level not
@@ -209,9 +211,10 @@ class Context {
   void CopyTexImage2D(Enum target, int level, Enum internal_format, int x, int y, int width, int height, int border);
   /// Writes level `level` of the bound texture (TEXTURE_2D or a cube face) to `pixels`, rows bottom first, laid out
   /// by the PACK_ settings as ReadPixels lays them out: format a colour format (RED ... BGRA) or DEPTH_COMPONENT
-  /// for a depth texture; type UNSIGNED_BYTE, UNSIGNED_SHORT, UNSIGNED_INT (normalized) or FLOAT. An undefined
-  /// level writes nothing. Errors: bad target, format or type: INVALID_ENUM; level out of range: INVALID_VALUE;
-  /// nothing bound, DEPTH_COMPONENT for a colour texture or the reverse: INVALID_OPERATION.
+  /// for a depth texture; type UNSIGNED_BYTE, UNSIGNED_SHORT, UNSIGNED_INT (normalized) or FLOAT; or DEPTH_STENCIL
+  /// with UNSIGNED_INT_24_8 for a depth-stencil texture. An undefined level writes nothing. Errors: bad target,
+  /// format or type: INVALID_ENUM; level out of range: INVALID_VALUE; nothing bound, DEPTH_COMPONENT for a colour
+  /// texture or the reverse, DEPTH_STENCIL for a texture without stencil or with another type: INVALID_OPERATION.
   void GetTexImage(Enum target, int level, Enum format, Enum type, void* pixels) const;
   /// Builds levels base+1 .. 1x1 of the bound texture from its base level (each texel the bilinear sample of the
   /// level above at its centre: the 2x2 average for even sizes). Base level undefined: INVALID_OPERATION.
@@ -240,19 +243,75 @@ class Context {
   /// Binds a framebuffer object (0: the context's own) to FRAMEBUFFER (both), DRAW_FRAMEBUFFER or READ_FRAMEBUFFER.
   void BindFramebuffer(Enum target, std::uint32_t framebuffer);
   /// Attaches level `level` of a 2D texture (textarget TEXTURE_2D) or cube face (TEXTURE_CUBE_MAP_*) to
-  /// COLOR_ATTACHMENT0 .. COLOR_ATTACHMENT0 + 3 or DEPTH_ATTACHMENT of the framebuffer bound to target; texture
-  /// 0 detaches. Errors: bad target or attachment: INVALID_ENUM; framebuffer 0 bound, unknown texture, textarget
-  /// not the texture's: INVALID_OPERATION; level out of range: INVALID_VALUE.
+  /// COLOR_ATTACHMENT0 .. COLOR_ATTACHMENT0 + 3, DEPTH_ATTACHMENT, STENCIL_ATTACHMENT or DEPTH_STENCIL_ATTACHMENT
+  /// (both of the last two) of the framebuffer bound to target; texture 0 detaches. A DEPTH24_STENCIL8 or
+  /// DEPTH32F_STENCIL8 texture at DEPTH_STENCIL_ATTACHMENT gives rendering into a texture a stencil buffer.
+  /// Errors: bad target or attachment: INVALID_ENUM; framebuffer 0 bound, unknown texture, textarget not the
+  /// texture's: INVALID_OPERATION; level out of range: INVALID_VALUE.
   void FramebufferTexture2D(Enum target, Enum attachment, Enum textarget, std::uint32_t texture, int level);
-  /// FRAMEBUFFER_COMPLETE, or why not: INCOMPLETE_ATTACHMENT (an attachment's level is not defined, or its format
-  /// cannot be rendered to that attachment), INCOMPLETE_MISSING_ATTACHMENT (none), INCOMPLETE_DRAW_BUFFER (a draw
-  /// buffer names an empty attachment). Attachments of different sizes are allowed, as in OpenGL 3.0 and later:
-  /// drawing covers their intersection. Draws and clears on an incomplete framebuffer record
-  /// INVALID_FRAMEBUFFER_OPERATION. Bad target: INVALID_ENUM and 0.
+  /// Attaches a renderbuffer (renderbuffer_target RENDERBUFFER; 0 detaches) to an attachment point as
+  /// FramebufferTexture2D does. Errors: bad target, attachment or renderbuffer_target: INVALID_ENUM; framebuffer 0
+  /// bound, unknown renderbuffer: INVALID_OPERATION.
+  void FramebufferRenderbuffer(Enum target, Enum attachment, Enum renderbuffer_target, std::uint32_t renderbuffer);
+  /// What an attachment point holds: FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE (NONE, TEXTURE or RENDERBUFFER),
+  /// _OBJECT_NAME, _TEXTURE_LEVEL, _TEXTURE_CUBE_MAP_FACE (0 for a 2D texture). Errors: bad target, attachment or
+  /// pname, a texture name asked of a renderbuffer: INVALID_ENUM; framebuffer 0 bound, a texture name asked of an
+  /// empty point, DEPTH_STENCIL_ATTACHMENT while depth and stencil hold different images: INVALID_OPERATION.
+  void GetFramebufferAttachmentParameteriv(Enum target, Enum attachment, Enum pname, int* params);
+  /// FRAMEBUFFER_COMPLETE, or why not: INCOMPLETE_ATTACHMENT (an attachment's image is not defined or has no size,
+  /// or its format cannot be rendered to that point: colour formats at colour points, depth formats at
+  /// DEPTH_ATTACHMENT, formats with stencil at STENCIL_ATTACHMENT), INCOMPLETE_MISSING_ATTACHMENT (none),
+  /// INCOMPLETE_DRAW_BUFFER (a draw buffer names an empty attachment). Attachments of different sizes are allowed,
+  /// as in OpenGL 3.0 and later: drawing covers their intersection; depth and stencil may be separate images. The
+  /// read buffer is checked when it is read (INVALID_OPERATION), as in OpenGL 4.1 and later. Draws and clears on an
+  /// incomplete framebuffer record INVALID_FRAMEBUFFER_OPERATION. Bad target: INVALID_ENUM and 0.
   Enum CheckFramebufferStatus(Enum target);
   /// Which attachment fragment output i writes: bufs[i] is COLOR_ATTACHMENT0 + k or NONE (default: output 0 to
   /// COLOR_ATTACHMENT0, the others NONE). For the bound draw framebuffer object; n > 4: INVALID_VALUE.
   void DrawBuffers(int n, const Enum* bufs);
+  /// Which colour buffer ReadPixels, CopyTex(Sub)Image2D and BlitFramebuffer read: for a framebuffer object
+  /// COLOR_ATTACHMENT0 + i (default COLOR_ATTACHMENT0) or NONE; for the context's framebuffer, whose one colour
+  /// buffer FRONT, BACK (the default), LEFT, FRONT_LEFT, BACK_LEFT and FRONT_AND_BACK all name, or NONE. Reading
+  /// colour from NONE or an empty attachment records INVALID_OPERATION. Errors: not a buffer name: INVALID_ENUM;
+  /// a buffer the bound read framebuffer cannot have (COLOR_ATTACHMENTi of the context's framebuffer, i >= 4, BACK
+  /// of a framebuffer object, the RIGHT buffers): INVALID_OPERATION.
+  void ReadBuffer(Enum src);
+  /// Copies the rectangle (src_x0, src_y0) - (src_x1, src_y1) of the read framebuffer into the rectangle
+  /// (dst_x0, dst_y0) - (dst_x1, dst_y1) of the draw framebuffer (lower bounds inclusive, upper exclusive),
+  /// scaling to fit and mirroring where a rectangle is reversed. mask: COLOR_BUFFER_BIT (the read buffer into
+  /// every draw buffer, converted to each one's format), DEPTH_BUFFER_BIT, STENCIL_BUFFER_BIT. filter: NEAREST,
+  /// or LINEAR (bilinear, colour only) for a scaled copy. Each destination pixel whose centre lies in the
+  /// destination rectangle takes the source at the matching point; pixels whose point lies outside the read
+  /// buffer, and pixels outside the scissor box while the scissor test is enabled, are not written; write masks do
+  /// not apply. A buffer that either framebuffer lacks is skipped. The rectangles may overlap in one framebuffer
+  /// (the source is read as it was before the blit). Errors: other mask bits: INVALID_VALUE; bad filter:
+  /// INVALID_ENUM; LINEAR with depth or stencil, depth or stencil formats that differ (the context's
+  /// framebuffer counts as DEPTH24_STENCIL8): INVALID_OPERATION; an incomplete read or draw framebuffer:
+  /// INVALID_FRAMEBUFFER_OPERATION.
+  void BlitFramebuffer(int src_x0, int src_y0, int src_x1, int src_y1, int dst_x0, int dst_y0, int dst_x1, int dst_y1,
+                       Bitfield mask, Enum filter);
+
+  // ---- Renderbuffers -----------------------------------------------------------------------------------------
+  /// Creates a renderbuffer object (an image to render into, never sampled) and returns its id (never 0).
+  std::uint32_t GenRenderbuffer();
+  void GenRenderbuffers(int n, std::uint32_t* ids);
+  /// Deletes a renderbuffer: unbound from RENDERBUFFER and detached from the bound framebuffer objects (others keep
+  /// using its storage, as in OpenGL). 0 and unknown ids are ignored.
+  void DeleteRenderbuffer(std::uint32_t renderbuffer);
+  bool IsRenderbuffer(std::uint32_t renderbuffer) const;
+  /// Binds a renderbuffer (0 unbinds) to RENDERBUFFER. Bad target: INVALID_ENUM; unknown id: INVALID_OPERATION.
+  void BindRenderbuffer(Enum target, std::uint32_t renderbuffer);
+  /// Gives the bound renderbuffer width x height pixels of internal_format: RGBA8, RGB8, RG8, R8, RGBA32F, R32F,
+  /// DEPTH_COMPONENT16/24/32F, DEPTH24_STENCIL8, DEPTH32F_STENCIL8, STENCIL_INDEX8, or the unsized RGBA, RGB, RG,
+  /// RED, DEPTH_COMPONENT, DEPTH_STENCIL, STENCIL_INDEX (stored as RGBA8, ..., DEPTH24_STENCIL8, STENCIL_INDEX8).
+  /// Contents start zero. Errors: target not RENDERBUFFER, another format: INVALID_ENUM; size negative or above
+  /// MAX_RENDERBUFFER_SIZE (kMaxFramebufferSize): INVALID_VALUE; nothing bound: INVALID_OPERATION; no memory:
+  /// OUT_OF_MEMORY.
+  void RenderbufferStorage(Enum target, Enum internal_format, int width, int height);
+  /// RENDERBUFFER_WIDTH, _HEIGHT, _INTERNAL_FORMAT (as given, RGBA before any storage), _RED_SIZE, _GREEN_SIZE,
+  /// _BLUE_SIZE, _ALPHA_SIZE, _DEPTH_SIZE, _STENCIL_SIZE (the format's bits, as OpenGL reports them), _SAMPLES (0)
+  /// of the bound renderbuffer. Errors: bad target or pname: INVALID_ENUM; nothing bound: INVALID_OPERATION.
+  void GetRenderbufferParameteriv(Enum target, Enum pname, int* params);
 
   // ---- Fixed-function state ----------------------------------------------------------------------------------
   /// Maps normalized device coordinates to window pixels. width or height < 0: INVALID_VALUE. Sizes are
@@ -396,14 +455,15 @@ class Context {
   /// rounding, except colours and depths, which map [-1, 1] linearly onto the integer range; GetIntegerv clamps to
   /// int). Names: the Enable capabilities; the bindings (ARRAY_BUFFER_BINDING, ELEMENT_ARRAY_BUFFER_BINDING,
   /// COPY_READ/WRITE_BUFFER_BINDING, VERTEX_ARRAY_BINDING, ACTIVE_TEXTURE, TEXTURE_BINDING_2D/CUBE_MAP of the
-  /// active unit, DRAW/READ_FRAMEBUFFER_BINDING, DRAW_BUFFER0 + i); VIEWPORT, SCISSOR_BOX (4 values), DEPTH_RANGE
+  /// active unit, DRAW/READ_FRAMEBUFFER_BINDING, RENDERBUFFER_BINDING, DRAW_BUFFER0 + i (DRAW_BUFFER: the first),
+  /// READ_BUFFER); VIEWPORT, SCISSOR_BOX (4 values), DEPTH_RANGE
   /// (2); CULL_FACE_MODE, FRONT_FACE, POLYGON_MODE (2), POINT_SIZE, PROVOKING_VERTEX, POLYGON_OFFSET_FACTOR/UNITS,
   /// PRIMITIVE_RESTART_INDEX; DEPTH_FUNC, DEPTH_WRITEMASK, DEPTH_CLEAR_VALUE; STENCIL_FUNC, _REF, _VALUE_MASK,
   /// _FAIL, _PASS_DEPTH_FAIL, _PASS_DEPTH_PASS, _WRITEMASK and their STENCIL_BACK_ forms, STENCIL_CLEAR_VALUE;
   /// BLEND_SRC/DST_RGB/ALPHA, BLEND_EQUATION_RGB/ALPHA, BLEND_COLOR (4), COLOR_CLEAR_VALUE (4), COLOR_WRITEMASK
   /// (4); UNPACK_ALIGNMENT and the PACK_ settings; the limits MAX_VERTEX_ATTRIBS, MAX_TEXTURE_SIZE,
   /// MAX_CUBE_MAP_TEXTURE_SIZE, MAX_TEXTURE_IMAGE_UNITS (and the VERTEX_ and COMBINED_ forms), MAX_DRAW_BUFFERS,
-  /// MAX_COLOR_ATTACHMENTS, MAX_SAMPLES (1), MAX_VIEWPORT_DIMS (2), MAX_VARYING_COMPONENTS,
+  /// MAX_COLOR_ATTACHMENTS, MAX_SAMPLES (1), MAX_RENDERBUFFER_SIZE, MAX_VIEWPORT_DIMS (2), MAX_VARYING_COMPONENTS,
   /// MAX_ELEMENTS_VERTICES/INDICES, POINT_SIZE_RANGE (2), ALIASED_LINE_WIDTH_RANGE (2), SUBPIXEL_BITS,
   /// MAJOR_VERSION, MINOR_VERSION (3.3), NUM_EXTENSIONS (0), CONTEXT_PROFILE_MASK (core). `data` must hold as many
   /// values as the name has. Another name: INVALID_ENUM, data untouched.
@@ -416,14 +476,13 @@ class Context {
   const char* GetString(Enum name) const;
 
   // ---- Reading back ------------------------------------------------------------------------------------------
-  // From the framebuffer bound to READ_FRAMEBUFFER: the context's own, or a framebuffer object's
-  // COLOR_ATTACHMENT0 (converted to 8 bits) and depth attachment.
+  // From the framebuffer bound to READ_FRAMEBUFFER: the context's own, or a framebuffer object's read buffer
+  // (ReadBuffer; COLOR_ATTACHMENT0 unless changed), depth and stencil attachments.
 
   /// glReadPixels: the rectangle (x, y, width, height) of the read framebuffer (y from the bottom, rows bottom
   /// first) into `pixels`, laid out by PACK_ALIGNMENT, PACK_ROW_LENGTH, PACK_SKIP_ROWS and PACK_SKIP_PIXELS
-  /// (PixelStore). format: RED, GREEN, BLUE, RG, RGB, BGR, RGBA, BGRA (from COLOR_ATTACHMENT0 of a framebuffer
-  /// object), DEPTH_COMPONENT, STENCIL_INDEX, DEPTH_STENCIL; type: UNSIGNED_BYTE, UNSIGNED_SHORT, UNSIGNED_INT
-  /// (normalized: round(clamp(v) * (2^N - 1)); stencil indices as they are), FLOAT (as stored), or
+  /// (PixelStore). format: RED, GREEN, BLUE, RG, RGB, BGR, RGBA, BGRA (from the read buffer), DEPTH_COMPONENT,
+  /// STENCIL_INDEX, DEPTH_STENCIL; type: UNSIGNED_BYTE, UNSIGNED_SHORT, UNSIGNED_INT (normalized: round(clamp(v) * (2^N - 1)); stencil indices as they are), FLOAT (as stored), or
   /// UNSIGNED_INT_24_8 with DEPTH_STENCIL (depth in the high 24 bits, stencil in the low 8). Pixels of the
   /// rectangle outside the framebuffer are not written. Errors: bad format or type: INVALID_ENUM; negative size:
   /// INVALID_VALUE; DEPTH_STENCIL without UNSIGNED_INT_24_8 or the reverse, no buffer of the kind asked:

@@ -180,8 +180,13 @@ inline constexpr Enum RGB8 = 0x8051;
 inline constexpr Enum RGBA8 = 0x8058;
 inline constexpr Enum R32F = 0x822E;
 inline constexpr Enum RGBA32F = 0x8814;
+inline constexpr Enum DEPTH_COMPONENT16 = 0x81A5;  // all depth formats are stored as 32-bit floats
 inline constexpr Enum DEPTH_COMPONENT24 = 0x81A6;
 inline constexpr Enum DEPTH_COMPONENT32F = 0x8CAC;
+inline constexpr Enum DEPTH24_STENCIL8 = 0x88F0;
+inline constexpr Enum DEPTH32F_STENCIL8 = 0x8CAD;
+inline constexpr Enum STENCIL_INDEX8 = 0x8D48;  // renderbuffers only
+inline constexpr Enum FLOAT_32_UNSIGNED_INT_24_8_REV = 0x8DAD;  // DEPTH_STENCIL pixels: a float, then stencil low
 
 // Texture parameters and their values.
 inline constexpr Enum TEXTURE_MAG_FILTER = 0x2800;
@@ -220,11 +225,39 @@ inline constexpr Enum READ_FRAMEBUFFER = 0x8CA8;
 inline constexpr Enum DRAW_FRAMEBUFFER = 0x8CA9;
 inline constexpr Enum COLOR_ATTACHMENT0 = 0x8CE0;  // COLOR_ATTACHMENT0 + i
 inline constexpr Enum DEPTH_ATTACHMENT = 0x8D00;
+inline constexpr Enum STENCIL_ATTACHMENT = 0x8D20;
+inline constexpr Enum DEPTH_STENCIL_ATTACHMENT = 0x821A;  // both DEPTH_ATTACHMENT and STENCIL_ATTACHMENT
 inline constexpr Enum FRAMEBUFFER_COMPLETE = 0x8CD5;
 inline constexpr Enum FRAMEBUFFER_INCOMPLETE_ATTACHMENT = 0x8CD6;
 inline constexpr Enum FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT = 0x8CD7;
 inline constexpr Enum FRAMEBUFFER_INCOMPLETE_DRAW_BUFFER = 0x8CDB;
 inline constexpr Enum FRAMEBUFFER_UNSUPPORTED = 0x8CDD;
+inline constexpr Enum FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE = 0x8CD0;  // GetFramebufferAttachmentParameteriv
+inline constexpr Enum FRAMEBUFFER_ATTACHMENT_OBJECT_NAME = 0x8CD1;
+inline constexpr Enum FRAMEBUFFER_ATTACHMENT_TEXTURE_LEVEL = 0x8CD2;
+inline constexpr Enum FRAMEBUFFER_ATTACHMENT_TEXTURE_CUBE_MAP_FACE = 0x8CD3;
+inline constexpr Enum TEXTURE = 0x1702;  // an attachment's object type (or NONE, RENDERBUFFER)
+
+// Renderbuffers.
+inline constexpr Enum RENDERBUFFER = 0x8D41;
+inline constexpr Enum RENDERBUFFER_WIDTH = 0x8D42;  // GetRenderbufferParameteriv
+inline constexpr Enum RENDERBUFFER_HEIGHT = 0x8D43;
+inline constexpr Enum RENDERBUFFER_INTERNAL_FORMAT = 0x8D44;
+inline constexpr Enum RENDERBUFFER_RED_SIZE = 0x8D50;
+inline constexpr Enum RENDERBUFFER_GREEN_SIZE = 0x8D51;
+inline constexpr Enum RENDERBUFFER_BLUE_SIZE = 0x8D52;
+inline constexpr Enum RENDERBUFFER_ALPHA_SIZE = 0x8D53;
+inline constexpr Enum RENDERBUFFER_DEPTH_SIZE = 0x8D54;
+inline constexpr Enum RENDERBUFFER_STENCIL_SIZE = 0x8D55;
+inline constexpr Enum RENDERBUFFER_SAMPLES = 0x8CAB;
+
+// Colour buffers of the default framebuffer (ReadBuffer): it has one, which all of these name but the RIGHT ones.
+inline constexpr Enum FRONT_LEFT = 0x0400;
+inline constexpr Enum FRONT_RIGHT = 0x0401;
+inline constexpr Enum BACK_LEFT = 0x0402;
+inline constexpr Enum BACK_RIGHT = 0x0403;
+inline constexpr Enum LEFT = 0x0406;
+inline constexpr Enum RIGHT = 0x0407;
 
 // State queries (GetIntegerv, GetFloatv, GetBooleanv, GetInteger64v) and GetString.
 inline constexpr Enum ARRAY_BUFFER_BINDING = 0x8894;
@@ -238,6 +271,10 @@ inline constexpr Enum TEXTURE_BINDING_CUBE_MAP = 0x8514;
 inline constexpr Enum DRAW_FRAMEBUFFER_BINDING = 0x8CA6;  // also FRAMEBUFFER_BINDING
 inline constexpr Enum READ_FRAMEBUFFER_BINDING = 0x8CAA;
 inline constexpr Enum DRAW_BUFFER0 = 0x8825;  // DRAW_BUFFER0 + i
+inline constexpr Enum DRAW_BUFFER = 0x0C01;   // the same as DRAW_BUFFER0
+inline constexpr Enum READ_BUFFER = 0x0C02;
+inline constexpr Enum RENDERBUFFER_BINDING = 0x8CA7;
+inline constexpr Enum MAX_RENDERBUFFER_SIZE = 0x84E8;
 inline constexpr Enum VIEWPORT = 0x0BA2;
 inline constexpr Enum DEPTH_RANGE = 0x0B70;
 inline constexpr Enum SCISSOR_BOX = 0x0C10;

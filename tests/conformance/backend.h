@@ -134,6 +134,23 @@ class Backend {
   /// framebuffer's rectangle (x, y, w, h), then CopyTexSubImage2D of the framebuffer's (sx, sy, sw, sh) into it at
   /// (dx, dy).
   virtual void CopyToTexture(int x, int y, int w, int h, int dx, int dy, int sx, int sy, int sw, int sh) = 0;
+  /// Framebuffer objects and renderbuffers, one to one with OpenGL's calls of the same names (the renderbuffer
+  /// target is RENDERBUFFER).
+  virtual std::uint32_t GenFramebuffer() = 0;
+  virtual void BindFramebuffer(Enum target, std::uint32_t framebuffer) = 0;
+  virtual Enum CheckFramebufferStatus(Enum target) = 0;
+  virtual std::uint32_t GenRenderbuffer() = 0;
+  virtual void BindRenderbuffer(std::uint32_t renderbuffer) = 0;
+  virtual void RenderbufferStorage(Enum internal_format, int width, int height) = 0;
+  virtual void FramebufferRenderbuffer(Enum target, Enum attachment, std::uint32_t renderbuffer) = 0;
+  virtual void ReadBuffer(Enum src) = 0;
+  virtual void DrawBuffers(int n, const Enum* bufs) = 0;
+  virtual void BlitFramebuffer(int sx0, int sy0, int sx1, int sy1, int dx0, int dy0, int dx1, int dy1,
+                               std::uint32_t mask, Enum filter) = 0;
+  /// A new width x height 2D texture of `internal_format` without data (colour: RGBA / UNSIGNED_BYTE; depth:
+  /// DEPTH_COMPONENT / FLOAT; depth-stencil: DEPTH_STENCIL with its packed type), attached to `attachment` of the
+  /// framebuffer bound to `target` by FramebufferTexture2D.
+  virtual void AttachNewTexture(Enum target, Enum attachment, Enum internal_format, int width, int height) = 0;
   /// glGetIntegerv, glGetFloatv and glGetBooleanv of `count` values.
   virtual std::vector<std::int64_t> GetIntegers(Enum pname, int count) = 0;
   virtual std::vector<float> GetFloats(Enum pname, int count) = 0;

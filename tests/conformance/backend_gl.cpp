@@ -362,6 +362,50 @@ class GlBackend final : public Backend {
     glUniform1i(glGetUniformLocation(programs_[3], "u_tex"), 0);
   }
 
+  std::uint32_t GenFramebuffer() override {
+    GLuint id = 0;
+    glGenFramebuffers(1, &id);
+    return id;
+  }
+  void BindFramebuffer(Enum target, std::uint32_t framebuffer) override { glBindFramebuffer(target, framebuffer); }
+  Enum CheckFramebufferStatus(Enum target) override { return glCheckFramebufferStatus(target); }
+  std::uint32_t GenRenderbuffer() override {
+    GLuint id = 0;
+    glGenRenderbuffers(1, &id);
+    return id;
+  }
+  void BindRenderbuffer(std::uint32_t renderbuffer) override { glBindRenderbuffer(GL_RENDERBUFFER, renderbuffer); }
+  void RenderbufferStorage(Enum internal_format, int width, int height) override {
+    glRenderbufferStorage(GL_RENDERBUFFER, internal_format, width, height);
+  }
+  void FramebufferRenderbuffer(Enum target, Enum attachment, std::uint32_t renderbuffer) override {
+    glFramebufferRenderbuffer(target, attachment, GL_RENDERBUFFER, renderbuffer);
+  }
+  void ReadBuffer(Enum src) override { glReadBuffer(src); }
+  void DrawBuffers(int n, const Enum* bufs) override {
+    std::vector<GLenum> b(bufs, bufs + n);
+    glDrawBuffers(n, b.data());
+  }
+  void BlitFramebuffer(int sx0, int sy0, int sx1, int sy1, int dx0, int dy0, int dx1, int dy1, std::uint32_t mask,
+                       Enum filter) override {
+    glBlitFramebuffer(sx0, sy0, sx1, sy1, dx0, dy0, dx1, dy1, mask, filter);
+  }
+  void AttachNewTexture(Enum target, Enum attachment, Enum internal_format, int width, int height) override {
+    GLuint tex = 0;
+    glGenTextures(1, &tex);
+    glBindTexture(GL_TEXTURE_2D, tex);
+    const bool ds = internal_format == GL_DEPTH24_STENCIL8 || internal_format == GL_DEPTH32F_STENCIL8;
+    const bool depth = internal_format == GL_DEPTH_COMPONENT24 || internal_format == GL_DEPTH_COMPONENT32F;
+    const GLenum format = ds ? GL_DEPTH_STENCIL : depth ? GL_DEPTH_COMPONENT : GL_RGBA;
+    const GLenum type = internal_format == GL_DEPTH32F_STENCIL8 ? GL_FLOAT_32_UNSIGNED_INT_24_8_REV
+                        : ds                                     ? GL_UNSIGNED_INT_24_8
+                        : depth                                  ? GL_FLOAT
+                                                                 : GL_UNSIGNED_BYTE;
+    glTexImage2D(GL_TEXTURE_2D, 0, internal_format, width, height, 0, format, type, nullptr);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glFramebufferTexture2D(target, attachment, GL_TEXTURE_2D, tex, 0);
+  }
+
   std::vector<std::int64_t> GetIntegers(Enum pname, int count) override {
     std::vector<std::int64_t> v(std::size_t(count), -12345);
     std::vector<GLint> i(std::size_t(count), -12345);

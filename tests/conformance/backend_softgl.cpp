@@ -336,6 +336,38 @@ class SoftglBackend final : public Backend {
     gl_.TexParameteri(softgl::TEXTURE_2D, softgl::TEXTURE_MIN_FILTER, softgl::LINEAR);
   }
 
+  std::uint32_t GenFramebuffer() override { return gl_.GenFramebuffer(); }
+  void BindFramebuffer(Enum target, std::uint32_t framebuffer) override { gl_.BindFramebuffer(target, framebuffer); }
+  Enum CheckFramebufferStatus(Enum target) override { return gl_.CheckFramebufferStatus(target); }
+  std::uint32_t GenRenderbuffer() override { return gl_.GenRenderbuffer(); }
+  void BindRenderbuffer(std::uint32_t renderbuffer) override { gl_.BindRenderbuffer(softgl::RENDERBUFFER, renderbuffer); }
+  void RenderbufferStorage(Enum internal_format, int width, int height) override {
+    gl_.RenderbufferStorage(softgl::RENDERBUFFER, internal_format, width, height);
+  }
+  void FramebufferRenderbuffer(Enum target, Enum attachment, std::uint32_t renderbuffer) override {
+    gl_.FramebufferRenderbuffer(target, attachment, softgl::RENDERBUFFER, renderbuffer);
+  }
+  void ReadBuffer(Enum src) override { gl_.ReadBuffer(src); }
+  void DrawBuffers(int n, const Enum* bufs) override { gl_.DrawBuffers(n, bufs); }
+  void BlitFramebuffer(int sx0, int sy0, int sx1, int sy1, int dx0, int dy0, int dx1, int dy1, std::uint32_t mask,
+                       Enum filter) override {
+    gl_.BlitFramebuffer(sx0, sy0, sx1, sy1, dx0, dy0, dx1, dy1, mask, filter);
+  }
+  void AttachNewTexture(Enum target, Enum attachment, Enum internal_format, int width, int height) override {
+    const std::uint32_t tex = gl_.GenTexture();
+    gl_.BindTexture(softgl::TEXTURE_2D, tex);
+    const bool ds = internal_format == softgl::DEPTH24_STENCIL8 || internal_format == softgl::DEPTH32F_STENCIL8;
+    const bool depth = softgl::DEPTH_COMPONENT24 == internal_format || softgl::DEPTH_COMPONENT32F == internal_format;
+    const Enum format = ds ? softgl::DEPTH_STENCIL : depth ? softgl::DEPTH_COMPONENT : softgl::RGBA;
+    const Enum type = internal_format == softgl::DEPTH32F_STENCIL8 ? softgl::FLOAT_32_UNSIGNED_INT_24_8_REV
+                      : ds                                          ? softgl::UNSIGNED_INT_24_8
+                      : depth                                       ? softgl::FLOAT
+                                                                    : softgl::UNSIGNED_BYTE;
+    gl_.TexImage2D(softgl::TEXTURE_2D, 0, internal_format, width, height, 0, format, type, nullptr);
+    gl_.TexParameteri(softgl::TEXTURE_2D, softgl::TEXTURE_MIN_FILTER, softgl::NEAREST);
+    gl_.FramebufferTexture2D(target, attachment, softgl::TEXTURE_2D, tex, 0);
+  }
+
   std::vector<std::int64_t> GetIntegers(Enum pname, int count) override {
     std::vector<std::int64_t> v(std::size_t(count), -12345);
     std::vector<int> i(std::size_t(count), -12345);

@@ -58,8 +58,10 @@ Verdict Compare(const SceneInfo& s, const Frame& a, const Frame& b) {
     v.differing += d > 0;
     v.over += d > tolerance;
     v.max_diff = std::max(v.max_diff, d);
-    if (s.check == Check::kExactWithDepth && std::fabs(a.depth[i] - b.depth[i]) > std::ldexp(1.0f, -22)) ++v.depth_over;
-    if (s.check == Check::kExactWithStencil && a.stencil[i] != b.stencil[i]) ++v.stencil_diff;
+    const bool depth = s.check == Check::kExactWithDepth || s.check == Check::kExactWithDepthStencil;
+    const bool stencil = s.check == Check::kExactWithStencil || s.check == Check::kExactWithDepthStencil;
+    if (depth && std::fabs(a.depth[i] - b.depth[i]) > std::ldexp(1.0f, -22)) ++v.depth_over;
+    if (stencil && a.stencil[i] != b.stencil[i]) ++v.stencil_diff;
     if (s.check == Check::kCoverage) {
       const bool drawn_a = a.rgba[i * 4] | a.rgba[i * 4 + 1] | a.rgba[i * 4 + 2];
       const bool drawn_b = b.rgba[i * 4] | b.rgba[i * 4 + 1] | b.rgba[i * 4 + 2];
@@ -74,6 +76,7 @@ const char* CheckName(Check c) {
     case Check::kExact: return "identical";
     case Check::kExactWithDepth: return "identical, depth";
     case Check::kExactWithStencil: return "identical, stencil";
+    case Check::kExactWithDepthStencil: return "identical, depth, stencil";
     case Check::kCoverage: return "coverage";
     case Check::kTexture: return "+-1 on 99.5%";
     default: return "+-1";

@@ -678,6 +678,109 @@ void CopyTexImage(Backend& b) {
          Program::kTexture);
 }
 
+// The stencil scene drawn into a framebuffer object: colour in an RGBA8 renderbuffer, depth and stencil in one
+// image of `format` at `attachment` (a renderbuffer, or a texture when `texture`). The object stays bound, so
+// what is compared is read from it.
+void StencilInFramebuffer(Backend& b, Enum format, Enum attachment, bool texture) {
+  b.BindFramebuffer(FRAMEBUFFER, b.GenFramebuffer());
+  const std::uint32_t color = b.GenRenderbuffer();
+  b.BindRenderbuffer(color);
+  b.RenderbufferStorage(RGBA8, kSize, kSize);
+  b.FramebufferRenderbuffer(FRAMEBUFFER, COLOR_ATTACHMENT0, color);
+  if (texture) {
+    b.AttachNewTexture(FRAMEBUFFER, attachment, format, kSize, kSize);
+  } else {
+    const std::uint32_t ds = b.GenRenderbuffer();
+    b.BindRenderbuffer(ds);
+    b.RenderbufferStorage(format, kSize, kSize);
+    b.FramebufferRenderbuffer(FRAMEBUFFER, attachment, ds);
+  }
+  if (b.CheckFramebufferStatus(FRAMEBUFFER) != FRAMEBUFFER_COMPLETE) return;  // left black: the check fails
+  Stencil(b);
+}
+
+void StencilRenderbuffer(Backend& b) { StencilInFramebuffer(b, DEPTH24_STENCIL8, DEPTH_STENCIL_ATTACHMENT, false); }
+void StencilIndex8(Backend& b) { StencilInFramebuffer(b, STENCIL_INDEX8, STENCIL_ATTACHMENT, false); }
+void StencilTexture(Backend& b) { StencilInFramebuffer(b, DEPTH32F_STENCIL8, DEPTH_STENCIL_ATTACHMENT, true); }
+
+// A 64 x 64 framebuffer object to blit from, left bound for drawing: colour attachments 0 and 1 (RGBA8
+// renderbuffers) and a DEPTH24_STENCIL8 renderbuffer, holding overlapping triangles with depth, stencil values
+// written by them (REPLACE with a reference per triangle), and a second image in attachment 1. Each triangle has
+// one colour, so that the source is identical on both renderers and the blits alone are compared.
+void BlitSource(Backend& b) {
+  b.BindFramebuffer(FRAMEBUFFER, b.GenFramebuffer());
+  for (Enum attachment : {COLOR_ATTACHMENT0, COLOR_ATTACHMENT0 + 1, DEPTH_STENCIL_ATTACHMENT}) {
+    const std::uint32_t rb = b.GenRenderbuffer();
+    b.BindRenderbuffer(rb);
+    b.RenderbufferStorage(attachment == DEPTH_STENCIL_ATTACHMENT ? DEPTH24_STENCIL8 : RGBA8, 64, 64);
+    b.FramebufferRenderbuffer(FRAMEBUFFER, attachment, rb);
+  }
+  b.Viewport(0, 0, 64, 64);
+  auto w = [](float x, float y, float z = 0.0f) { return Win(2 * x, 2 * y, z); };  // window point of the 64 x 64
+  b.ClearColor(0.2f, 0.3f, 0.4f, 1);
+  b.ClearDepth(0.75);
+  b.ClearStencil(3);
+  b.Clear(COLOR_BUFFER_BIT | DEPTH_BUFFER_BIT | STENCIL_BUFFER_BIT);
+  b.Enable(DEPTH_TEST);
+  b.Enable(STENCIL_TEST);
+  b.StencilOp(KEEP, KEEP, REPLACE);
+  for (unsigned k = 0; k < 6; ++k) {
+    b.StencilFunc(ALWAYS, int(10 + 20 * k), 0xFF);
+    const float x = float(k * 9), z = 0.6f - 0.25f * float(k % 5);
+    b.Draw(TRIANGLES, {{w(x + 1, 2, z), Palette(k)}, {w(x + 30, 20 + float(k) * 5, -z), Palette(k)},
+                       {w(x + 6, 62, z * 0.5f), Palette(k)}});
+  }
+  b.Disable(STENCIL_TEST);
+  b.Disable(DEPTH_TEST);
+  const Enum second = COLOR_ATTACHMENT0 + 1;
+  b.DrawBuffers(1, &second);
+  b.ClearColor(0.9f, 0.1f, 0.5f, 1);
+  b.Clear(COLOR_BUFFER_BIT);
+  b.Draw(TRIANGLES, {{w(0, 0), Palette(40)}, {w(64, 0), Palette(40)}, {w(32, 64), Palette(40)}});
+  const Enum first = COLOR_ATTACHMENT0;
+  b.DrawBuffers(1, &first);
+  b.Viewport(0, 0, kSize, kSize);
+}
+
+// NEAREST blits from the framebuffer object into the context's framebuffer: colour, depth and stencil 1:1; scaled
+// up 2x; mirrored; scaled down by 1.5 (no pixel centre maps onto an edge); from colour attachment 1 by ReadBuffer;
+// and through a scissor box. Colour, depth and stencil must be identical.
+void BlitNearest(Backend& b) {
+  BlitSource(b);
+  const std::uint32_t fbo = 1;  // BlitSource's framebuffer object is the first made
+  b.BindFramebuffer(DRAW_FRAMEBUFFER, 0);
+  b.ClearColor(0, 0, 0, 1);
+  b.ClearDepth(1.0);
+  b.ClearStencil(0);
+  b.Clear(COLOR_BUFFER_BIT | DEPTH_BUFFER_BIT | STENCIL_BUFFER_BIT);
+  b.BindFramebuffer(READ_FRAMEBUFFER, fbo);
+  b.BlitFramebuffer(0, 0, 64, 64, 0, 0, 64, 64, COLOR_BUFFER_BIT | DEPTH_BUFFER_BIT | STENCIL_BUFFER_BIT, NEAREST);
+  b.BlitFramebuffer(0, 0, 32, 32, 64, 0, 128, 64, COLOR_BUFFER_BIT | STENCIL_BUFFER_BIT, NEAREST);
+  b.BlitFramebuffer(0, 0, 64, 64, 128, 64, 64, 128, COLOR_BUFFER_BIT | DEPTH_BUFFER_BIT, NEAREST);  // mirrored in x
+  b.BlitFramebuffer(8, 8, 56, 56, 0, 96, 32, 64, COLOR_BUFFER_BIT | STENCIL_BUFFER_BIT, NEAREST);  // in y, 1.5:1
+  b.ReadBuffer(COLOR_ATTACHMENT0 + 1);
+  b.BlitFramebuffer(40, 40, 64, 64, 32, 64, 56, 88, COLOR_BUFFER_BIT, NEAREST);
+  b.ReadBuffer(COLOR_ATTACHMENT0);
+  b.Scissor(36, 100, 20, 16);
+  b.Enable(SCISSOR_TEST);
+  b.BlitFramebuffer(0, 0, 64, 64, 0, 64, 64, 128, COLOR_BUFFER_BIT | DEPTH_BUFFER_BIT | STENCIL_BUFFER_BIT, NEAREST);
+  b.Disable(SCISSOR_TEST);
+  b.BindFramebuffer(READ_FRAMEBUFFER, 0);
+}
+
+// LINEAR blits of colour: 2x up, 1.5x up mirrored in y, and 2x down, from the framebuffer object's colour into the
+// context's framebuffer. Colour within 1 (filtering).
+void BlitLinear(Backend& b) {
+  BlitSource(b);
+  b.BindFramebuffer(DRAW_FRAMEBUFFER, 0);
+  ClearBlack(b);
+  b.BindFramebuffer(READ_FRAMEBUFFER, 1);
+  b.BlitFramebuffer(0, 0, 32, 32, 0, 0, 64, 64, COLOR_BUFFER_BIT, LINEAR);
+  b.BlitFramebuffer(16, 16, 48, 48, 64, 112, 112, 64, COLOR_BUFFER_BIT, LINEAR);
+  b.BlitFramebuffer(0, 0, 64, 64, 0, 64, 32, 96, COLOR_BUFFER_BIT, LINEAR);
+  b.BindFramebuffer(READ_FRAMEBUFFER, 0);
+}
+
 // A cube map with a different gradient per face, seen through a full-screen quad whose direction varyings sweep
 // across several faces (face selection, per-face coordinates, mipmapped filtering, edges between faces).
 void CubeMap(Backend& b) {
@@ -796,6 +899,11 @@ const std::vector<SceneInfo>& Scenes() {
       {"texture_generated_mipmaps", kSize, kSize, Check::kTexture, TextureGeneratedMipmaps},
       {"render_to_texture", kSize, kSize, Check::kTexture, RenderToTexture},
       {"copy_tex_image", kSize, kSize, Check::kColor, CopyTexImage},
+      {"stencil_renderbuffer", kSize, kSize, Check::kExactWithDepthStencil, StencilRenderbuffer},
+      {"stencil_index8", kSize, kSize, Check::kExactWithStencil, StencilIndex8},
+      {"stencil_texture", kSize, kSize, Check::kExactWithDepthStencil, StencilTexture},
+      {"blit_nearest", kSize, kSize, Check::kExactWithDepthStencil, BlitNearest},
+      {"blit_linear", kSize, kSize, Check::kColor, BlitLinear},
       {"cube_map", kSize, kSize, Check::kTexture, CubeMap},
       {"shadow_compare", kSize, kSize, Check::kTexture, ShadowCompare},
       {"model", 256, 256, Check::kColor, Model},

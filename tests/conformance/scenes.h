@@ -14,6 +14,7 @@ enum class Check {
   kExact,             // colour identical
   kExactWithDepth,    // colour identical, depth within the 24-bit depth buffer's resolution
   kExactWithStencil,  // colour and stencil identical
+  kExactWithDepthStencil,  // colour and stencil identical, depth within the 24-bit depth buffer's resolution
   kColor,             // colour within +-1 per channel
   kCoverage,          // the same pixels drawn (against a black background); colours reported, not compared
   kTexture,           // colour within +-1 on at least 99.5% of the pixels (texture filtering)

@@ -47,9 +47,10 @@ constexpr std::uint32_t kImageTargets[] = {TEXTURE_2D,
                                            TEXTURE_CUBE_MAP_POSITIVE_X, TEXTURE_CUBE_MAP_NEGATIVE_X,
                                            TEXTURE_CUBE_MAP_POSITIVE_Y, TEXTURE_CUBE_MAP_NEGATIVE_Y,
                                            TEXTURE_CUBE_MAP_POSITIVE_Z, TEXTURE_CUBE_MAP_NEGATIVE_Z};
-constexpr std::uint32_t kInternal[] = {RGBA8, RGB8, RG8, R8, RGBA32F, R32F, DEPTH_COMPONENT};
-constexpr std::uint32_t kFormats[] = {RED, RG, RGB, RGBA, DEPTH_COMPONENT};
-constexpr std::uint32_t kPixelTypes[] = {UNSIGNED_BYTE, FLOAT};
+constexpr std::uint32_t kInternal[] = {RGBA8, RGB8, RG8, R8, RGBA32F, R32F, DEPTH_COMPONENT, DEPTH24_STENCIL8,
+                                       DEPTH32F_STENCIL8};
+constexpr std::uint32_t kFormats[] = {RED, RG, RGB, RGBA, DEPTH_COMPONENT, DEPTH_STENCIL};
+constexpr std::uint32_t kPixelTypes[] = {UNSIGNED_BYTE, FLOAT, UNSIGNED_INT_24_8, FLOAT_32_UNSIGNED_INT_24_8_REV};
 constexpr std::uint32_t kParams[] = {TEXTURE_MIN_FILTER, TEXTURE_MAG_FILTER, TEXTURE_WRAP_S, TEXTURE_WRAP_T,
                                      TEXTURE_BASE_LEVEL, TEXTURE_MAX_LEVEL, TEXTURE_MIN_LOD, TEXTURE_MAX_LOD,
                                      TEXTURE_LOD_BIAS, TEXTURE_COMPARE_MODE, TEXTURE_COMPARE_FUNC};
@@ -64,7 +65,11 @@ constexpr std::uint32_t kEquations[] = {FUNC_ADD, FUNC_SUBTRACT, FUNC_REVERSE_SU
 constexpr std::uint32_t kFaces[] = {FRONT, BACK, FRONT_AND_BACK};
 constexpr std::uint32_t kFbTargets[] = {FRAMEBUFFER, DRAW_FRAMEBUFFER, READ_FRAMEBUFFER};
 constexpr std::uint32_t kAttachments[] = {COLOR_ATTACHMENT0, COLOR_ATTACHMENT0 + 1, COLOR_ATTACHMENT0 + 3,
-                                          DEPTH_ATTACHMENT};
+                                          DEPTH_ATTACHMENT, STENCIL_ATTACHMENT, DEPTH_STENCIL_ATTACHMENT};
+constexpr std::uint32_t kRenderbufferFormats[] = {RGBA8, RGB8, R32F, RGBA, DEPTH_COMPONENT16, DEPTH_COMPONENT24,
+                                                  DEPTH24_STENCIL8, DEPTH32F_STENCIL8, STENCIL_INDEX8, 0x1234};
+constexpr std::uint32_t kReadBuffers[] = {NONE, BACK, FRONT, RIGHT, COLOR_ATTACHMENT0, COLOR_ATTACHMENT0 + 1,
+                                          COLOR_ATTACHMENT0 + 3, COLOR_ATTACHMENT0 + 5};
 constexpr std::uint32_t kPolygonModes[] = {FILL, LINE, POINT};
 
 }  // namespace
@@ -88,7 +93,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   };
   for (int step = 0; step < 200 && !in.Empty(); ++step) {
     const auto id = [&] { return std::uint32_t(in.Byte() % 8); };
-    switch (in.Byte() % 40) {
+    switch (in.Byte() % 42) {
       case 0: gl.GenBuffer(); break;
       case 1: gl.BindBuffer(in.Enum(kBufferTargets), id()); break;
       case 2: {
@@ -265,6 +270,34 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         else gl.PrimitiveRestartIndex(in.Byte() % 2 ? in.Get<std::uint32_t>() : std::uint32_t(in.Int(0, 8)));
         break;
       case 38: gl.VertexAttrib4f(std::uint32_t(in.Int(0, 16)), in.Float(), in.Float(), in.Float(), in.Float()); break;
+      case 39: {  // renderbuffers (sizes mostly small, sometimes wild)
+        int v = 0;
+        switch (in.Byte() % 6) {
+          case 0: gl.GenRenderbuffer(); break;
+          case 1: gl.BindRenderbuffer(in.Byte() % 8 ? RENDERBUFFER : TEXTURE_2D, id()); break;
+          case 2:
+            gl.RenderbufferStorage(RENDERBUFFER, in.Enum(kRenderbufferFormats), in.Amount(-1, 16, 64, kMaxFramebufferSize),
+                                   in.Amount(-1, 16, 64, kMaxFramebufferSize));
+            break;
+          case 3: gl.FramebufferRenderbuffer(in.Enum(kFbTargets), in.Enum(kAttachments), RENDERBUFFER, id()); break;
+          case 4: gl.DeleteRenderbuffer(id()); break;
+          default:
+            gl.GetRenderbufferParameteriv(RENDERBUFFER, std::uint32_t(in.Int(0x8D40, 0x8D56)), &v);
+            gl.GetFramebufferAttachmentParameteriv(in.Enum(kFbTargets), in.Enum(kAttachments),
+                                                   std::uint32_t(in.Int(0x8CCF, 0x8CD4)), &v);
+            break;
+        }
+        break;
+      }
+      case 40:
+        if (in.Byte() % 3 == 0) {
+          gl.ReadBuffer(in.Enum(kReadBuffers));
+        } else {  // rectangles anywhere, mostly near the small targets
+          const auto c = [&] { return in.Int(-80, 80); };
+          gl.BlitFramebuffer(c(), c(), c(), c(), c(), c(), c(), c(), std::uint32_t(in.Get<std::uint16_t>()) & 0x4500u,
+                             in.Byte() % 2 ? NEAREST : LINEAR);
+        }
+        break;
       default: {
         std::uint8_t px[4];
         gl.ReadPixel(in.Int(-2, 50), in.Int(-2, 50), px);

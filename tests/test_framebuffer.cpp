@@ -1,0 +1,449 @@
+// Framebuffers: renderbuffers, stencil in framebuffer objects (renderbuffers and depth-stencil textures), the read
+// buffer, and BlitFramebuffer (detail::Blit's mapping, mirroring, scaling, clipping and overlap; the call's errors).
+#include <catch2/catch.hpp>
+
+#include <cstdint>
+#include <vector>
+
+#include "framebuffer.h"
+#include "helpers.h"
+
+using namespace softgl;
+
+namespace {
+
+// A framebuffer object with an RGBA8 colour renderbuffer and a depth/stencil renderbuffer of `ds_format` (0: none),
+// w x h, bound to FRAMEBUFFER.
+struct RenderbufferFbo {
+  std::uint32_t fbo = 0, color = 0, ds = 0;
+  RenderbufferFbo(Context& gl, int w, int h, Enum ds_format, Enum ds_attachment = DEPTH_STENCIL_ATTACHMENT) {
+    fbo = gl.GenFramebuffer();
+    gl.BindFramebuffer(FRAMEBUFFER, fbo);
+    color = gl.GenRenderbuffer();
+    gl.BindRenderbuffer(RENDERBUFFER, color);
+    gl.RenderbufferStorage(RENDERBUFFER, RGBA8, w, h);
+    gl.FramebufferRenderbuffer(FRAMEBUFFER, COLOR_ATTACHMENT0, RENDERBUFFER, color);
+    if (ds_format != 0) {
+      ds = gl.GenRenderbuffer();
+      gl.BindRenderbuffer(RENDERBUFFER, ds);
+      gl.RenderbufferStorage(RENDERBUFFER, ds_format, w, h);
+      gl.FramebufferRenderbuffer(FRAMEBUFFER, ds_attachment, RENDERBUFFER, ds);
+    }
+  }
+};
+
+// Marks the stencil buffer with 1 where a quad covers x in [x0, x1) of the viewport (clip-space x), then draws
+// full-screen colour `c` where the stencil is 1.
+void StencilMaskedFill(Context& gl, float x0, float x1, const glm::vec4& c) {
+  testing::SolidShader shader;
+  gl.UseProgram(shader);
+  gl.Enable(STENCIL_TEST);
+  gl.ClearStencil(0);
+  gl.Clear(STENCIL_BUFFER_BIT);
+  gl.StencilFunc(ALWAYS, 1, 0xFF);
+  gl.StencilOp(KEEP, KEEP, REPLACE);
+  gl.ColorMask(false, false, false, false);
+  testing::MakeVertexArray(gl, {{x0, -1, 0, 1}, {x1, -1, 0, 1}, {x0, 1, 0, 1}, {x1, 1, 0, 1}});
+  gl.DrawArrays(TRIANGLE_STRIP, 0, 4);
+  gl.ColorMask(true, true, true, true);
+  gl.StencilFunc(EQUAL, 1, 0xFF);
+  gl.StencilOp(KEEP, KEEP, KEEP);
+  shader.color = c;
+  testing::MakeVertexArray(gl, {{-1, -1, 0, 1}, {1, -1, 0, 1}, {-1, 1, 0, 1}, {1, 1, 0, 1}});
+  gl.DrawArrays(TRIANGLE_STRIP, 0, 4);
+  gl.Finish();
+  gl.Disable(STENCIL_TEST);
+}
+
+// An RGBA8 buffer with depth and stencil (colour 0, depth 1, stencil 0) of w x h, for detail::Blit.
+struct Buffers : detail::Framebuffer {
+  Buffers(int w, int h) { REQUIRE(Allocate(w, h)); }
+  std::uint8_t& R(int x, int y) { return color[Index(x, y) * 4]; }
+};
+
+// A source whose red channel is x * 16 + y and stencil x + 10 * y, depth (x + y) / 64.
+Buffers Gradient(int w, int h) {
+  Buffers b(w, h);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      b.R(x, y) = std::uint8_t(x * 16 + y);
+      b.stencil[std::size_t(y * w + x)] = std::uint8_t(x + 10 * y);
+      b.depth[std::size_t(y * w + x)] = float(x + y) / 64.0f;
+    }
+  return b;
+}
+
+detail::BlitRegion Region(int sx0, int sy0, int sx1, int sy1, int dx0, int dy0, int dx1, int dy1, int clip_w, int clip_h) {
+  detail::BlitRegion r;
+  r.src[0] = sx0, r.src[1] = sy0, r.src[2] = sx1, r.src[3] = sy1;
+  r.dst[0] = dx0, r.dst[1] = dy0, r.dst[2] = dx1, r.dst[3] = dy1;
+  r.clip = detail::Rect{0, 0, clip_w, clip_h};
+  r.color = r.depth = r.stencil = true;
+  return r;
+}
+
+}  // namespace
+
+TEST_CASE("renderbuffer objects: storage, parameters and errors", "[framebuffer]") {
+  Context gl(4, 4);
+  gl.RenderbufferStorage(RENDERBUFFER, RGBA8, 4, 4);
+  CHECK(gl.GetError() == INVALID_OPERATION);  // nothing bound
+  const std::uint32_t rb = gl.GenRenderbuffer();
+  CHECK(gl.IsRenderbuffer(rb));
+  gl.BindRenderbuffer(TEXTURE_2D, rb);
+  CHECK(gl.GetError() == INVALID_ENUM);
+  gl.BindRenderbuffer(RENDERBUFFER, 999);
+  CHECK(gl.GetError() == INVALID_OPERATION);
+  gl.BindRenderbuffer(RENDERBUFFER, rb);
+  int v = -1;
+  gl.GetRenderbufferParameteriv(RENDERBUFFER, RENDERBUFFER_INTERNAL_FORMAT, &v);
+  CHECK(v == int(RGBA));  // before any storage
+  gl.GetIntegerv(RENDERBUFFER_BINDING, &v);
+  CHECK(v == int(rb));
+  gl.RenderbufferStorage(RENDERBUFFER, 0x1234, 4, 4);
+  CHECK(gl.GetError() == INVALID_ENUM);
+  gl.RenderbufferStorage(RENDERBUFFER, RGBA8, -1, 4);
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.RenderbufferStorage(RENDERBUFFER, RGBA8, kMaxFramebufferSize + 1, 4);
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.GetIntegerv(MAX_RENDERBUFFER_SIZE, &v);
+  CHECK(v == kMaxFramebufferSize);
+  struct Expect {
+    Enum format;
+    int r, g, b, a, d, s;
+  };
+  for (const Expect& e : {Expect{RGBA8, 8, 8, 8, 8, 0, 0}, Expect{RGB8, 8, 8, 8, 0, 0, 0}, Expect{R32F, 32, 0, 0, 0, 0, 0},
+                          Expect{DEPTH_COMPONENT16, 0, 0, 0, 0, 16, 0}, Expect{DEPTH_COMPONENT, 0, 0, 0, 0, 24, 0},
+                          Expect{DEPTH24_STENCIL8, 0, 0, 0, 0, 24, 8}, Expect{DEPTH32F_STENCIL8, 0, 0, 0, 0, 32, 8},
+                          Expect{STENCIL_INDEX8, 0, 0, 0, 0, 0, 8}, Expect{DEPTH_STENCIL, 0, 0, 0, 0, 24, 8}}) {
+    gl.RenderbufferStorage(RENDERBUFFER, e.format, 16, 8);
+    int got[9];
+    const Enum names[9] = {RENDERBUFFER_WIDTH, RENDERBUFFER_HEIGHT, RENDERBUFFER_INTERNAL_FORMAT, RENDERBUFFER_RED_SIZE,
+                           RENDERBUFFER_GREEN_SIZE, RENDERBUFFER_BLUE_SIZE, RENDERBUFFER_ALPHA_SIZE,
+                           RENDERBUFFER_DEPTH_SIZE, RENDERBUFFER_STENCIL_SIZE};
+    for (int k = 0; k < 9; ++k) gl.GetRenderbufferParameteriv(RENDERBUFFER, names[k], &got[k]);
+    INFO("format " << e.format);
+    CHECK(got[0] == 16);
+    CHECK(got[1] == 8);
+    CHECK(got[2] == int(e.format));
+    CHECK((got[3] == e.r && got[4] == e.g && got[5] == e.b && got[6] == e.a && got[7] == e.d && got[8] == e.s));
+  }
+  CHECK(gl.GetError() == NO_ERROR);
+  gl.GetRenderbufferParameteriv(RENDERBUFFER, 0x1234, &v);
+  CHECK(gl.GetError() == INVALID_ENUM);
+  gl.DeleteRenderbuffer(rb);
+  CHECK(!gl.IsRenderbuffer(rb));
+  gl.GetIntegerv(RENDERBUFFER_BINDING, &v);
+  CHECK(v == 0);  // deleting the bound renderbuffer unbinds it
+}
+
+TEST_CASE("framebuffer completeness with renderbuffers and stencil attachments", "[framebuffer]") {
+  Context gl(4, 4);
+  RenderbufferFbo f(gl, 8, 8, 0);
+  CHECK(gl.CheckFramebufferStatus(FRAMEBUFFER) == FRAMEBUFFER_COMPLETE);
+  const std::uint32_t depth = gl.GenRenderbuffer(), stencil = gl.GenRenderbuffer(), both = gl.GenRenderbuffer();
+  gl.BindRenderbuffer(RENDERBUFFER, depth);
+  gl.RenderbufferStorage(RENDERBUFFER, DEPTH_COMPONENT24, 8, 8);
+  gl.BindRenderbuffer(RENDERBUFFER, stencil);
+  gl.RenderbufferStorage(RENDERBUFFER, STENCIL_INDEX8, 8, 8);
+  gl.BindRenderbuffer(RENDERBUFFER, both);
+  gl.RenderbufferStorage(RENDERBUFFER, DEPTH24_STENCIL8, 8, 8);
+  gl.FramebufferRenderbuffer(FRAMEBUFFER, STENCIL_ATTACHMENT, RENDERBUFFER, stencil);
+  CHECK(gl.CheckFramebufferStatus(FRAMEBUFFER) == FRAMEBUFFER_COMPLETE);  // stencil alone
+  gl.FramebufferRenderbuffer(FRAMEBUFFER, DEPTH_ATTACHMENT, RENDERBUFFER, depth);
+  CHECK(gl.CheckFramebufferStatus(FRAMEBUFFER) == FRAMEBUFFER_COMPLETE);  // separate depth and stencil images
+  gl.FramebufferRenderbuffer(FRAMEBUFFER, DEPTH_ATTACHMENT, RENDERBUFFER, stencil);
+  CHECK(gl.CheckFramebufferStatus(FRAMEBUFFER) == FRAMEBUFFER_INCOMPLETE_ATTACHMENT);  // stencil-only as depth
+  gl.FramebufferRenderbuffer(FRAMEBUFFER, DEPTH_ATTACHMENT, RENDERBUFFER, depth);
+  gl.FramebufferRenderbuffer(FRAMEBUFFER, STENCIL_ATTACHMENT, RENDERBUFFER, depth);
+  CHECK(gl.CheckFramebufferStatus(FRAMEBUFFER) == FRAMEBUFFER_INCOMPLETE_ATTACHMENT);  // depth-only as stencil
+  gl.FramebufferRenderbuffer(FRAMEBUFFER, COLOR_ATTACHMENT0 + 1, RENDERBUFFER, both);
+  gl.FramebufferRenderbuffer(FRAMEBUFFER, DEPTH_STENCIL_ATTACHMENT, RENDERBUFFER, both);
+  CHECK(gl.CheckFramebufferStatus(FRAMEBUFFER) == FRAMEBUFFER_INCOMPLETE_ATTACHMENT);  // depth-stencil as colour
+  gl.FramebufferRenderbuffer(FRAMEBUFFER, COLOR_ATTACHMENT0 + 1, RENDERBUFFER, 0);
+  CHECK(gl.CheckFramebufferStatus(FRAMEBUFFER) == FRAMEBUFFER_COMPLETE);
+  int v = 0;
+  gl.GetFramebufferAttachmentParameteriv(FRAMEBUFFER, DEPTH_STENCIL_ATTACHMENT, FRAMEBUFFER_ATTACHMENT_OBJECT_NAME, &v);
+  CHECK(v == int(both));
+  gl.GetFramebufferAttachmentParameteriv(FRAMEBUFFER, STENCIL_ATTACHMENT, FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, &v);
+  CHECK(v == int(RENDERBUFFER));
+  gl.GetFramebufferAttachmentParameteriv(FRAMEBUFFER, COLOR_ATTACHMENT0 + 2, FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, &v);
+  CHECK(v == int(NONE));
+  CHECK(gl.GetError() == NO_ERROR);
+  gl.GetFramebufferAttachmentParameteriv(FRAMEBUFFER, COLOR_ATTACHMENT0, FRAMEBUFFER_ATTACHMENT_TEXTURE_LEVEL, &v);
+  CHECK(gl.GetError() == INVALID_ENUM);  // a renderbuffer has no level
+  // An RGBA8 renderbuffer at a zero size is attached but not complete.
+  gl.BindRenderbuffer(RENDERBUFFER, f.color);
+  gl.RenderbufferStorage(RENDERBUFFER, RGBA8, 0, 0);
+  CHECK(gl.CheckFramebufferStatus(FRAMEBUFFER) == FRAMEBUFFER_INCOMPLETE_ATTACHMENT);
+  // Errors of FramebufferRenderbuffer.
+  gl.FramebufferRenderbuffer(FRAMEBUFFER, COLOR_ATTACHMENT0, TEXTURE_2D, both);
+  CHECK(gl.GetError() == INVALID_ENUM);
+  gl.FramebufferRenderbuffer(FRAMEBUFFER, BACK, RENDERBUFFER, both);
+  CHECK(gl.GetError() == INVALID_ENUM);
+  gl.FramebufferRenderbuffer(FRAMEBUFFER, COLOR_ATTACHMENT0, RENDERBUFFER, 777);
+  CHECK(gl.GetError() == INVALID_OPERATION);
+  // Deleting an attached renderbuffer detaches it from the bound framebuffer object.
+  gl.DeleteRenderbuffer(both);
+  gl.GetFramebufferAttachmentParameteriv(FRAMEBUFFER, DEPTH_ATTACHMENT, FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, &v);
+  CHECK(v == int(NONE));
+  gl.BindFramebuffer(FRAMEBUFFER, 0);
+  gl.FramebufferRenderbuffer(FRAMEBUFFER, COLOR_ATTACHMENT0, RENDERBUFFER, depth);
+  CHECK(gl.GetError() == INVALID_OPERATION);  // the context's own framebuffer has no attachment points
+}
+
+TEST_CASE("the stencil test works in framebuffer objects: renderbuffers and depth-stencil textures", "[framebuffer]") {
+  for (Enum format : {DEPTH24_STENCIL8, DEPTH32F_STENCIL8, STENCIL_INDEX8}) {
+    INFO("renderbuffer format " << format);
+    Context gl(4, 4);
+    RenderbufferFbo f(gl, 8, 4, format, format == STENCIL_INDEX8 ? STENCIL_ATTACHMENT : DEPTH_STENCIL_ATTACHMENT);
+    REQUIRE(gl.CheckFramebufferStatus(FRAMEBUFFER) == FRAMEBUFFER_COMPLETE);
+    gl.Viewport(0, 0, 8, 4);
+    gl.ClearColor(0, 0, 0, 1);
+    gl.Clear(COLOR_BUFFER_BIT);
+    StencilMaskedFill(gl, -1.0f, 0.0f, glm::vec4(1, 0, 0, 1));  // left half
+    std::uint8_t px[4];
+    gl.ReadPixel(1, 1, px);
+    CHECK(px[0] == 255);
+    gl.ReadPixel(6, 1, px);
+    CHECK(px[0] == 0);
+    CHECK(gl.ReadStencil(1, 1) == 1);
+    CHECK(gl.ReadStencil(6, 1) == 0);
+    CHECK(gl.GetError() == NO_ERROR);
+  }
+  // A DEPTH24_STENCIL8 texture: rendered with depth and stencil, then its depth sampled and its texels read back.
+  Context gl(4, 4);
+  const std::uint32_t color = gl.GenTexture(), ds = gl.GenTexture(), fbo = gl.GenFramebuffer();
+  gl.BindTexture(TEXTURE_2D, color);
+  gl.TexImage2D(TEXTURE_2D, 0, RGBA8, 8, 4, 0, RGBA, UNSIGNED_BYTE, nullptr);
+  gl.BindTexture(TEXTURE_2D, ds);
+  gl.TexImage2D(TEXTURE_2D, 0, DEPTH24_STENCIL8, 8, 4, 0, DEPTH_STENCIL, UNSIGNED_INT_24_8, nullptr);
+  CHECK(gl.GetError() == NO_ERROR);
+  gl.BindFramebuffer(FRAMEBUFFER, fbo);
+  gl.FramebufferTexture2D(FRAMEBUFFER, COLOR_ATTACHMENT0, TEXTURE_2D, color, 0);
+  gl.FramebufferTexture2D(FRAMEBUFFER, DEPTH_STENCIL_ATTACHMENT, TEXTURE_2D, ds, 0);
+  REQUIRE(gl.CheckFramebufferStatus(FRAMEBUFFER) == FRAMEBUFFER_COMPLETE);
+  gl.Viewport(0, 0, 8, 4);
+  gl.ClearDepth(0.25);
+  gl.Clear(COLOR_BUFFER_BIT | DEPTH_BUFFER_BIT);
+  StencilMaskedFill(gl, 0.0f, 1.0f, glm::vec4(0, 1, 0, 1));  // right half
+  std::vector<std::uint32_t> words(32, 0);
+  gl.GetTexImage(TEXTURE_2D, 0, DEPTH_STENCIL, UNSIGNED_INT_24_8, words.data());
+  CHECK(gl.GetError() == NO_ERROR);
+  CHECK(words[0] == ((std::uint32_t(std::lround(0.25 * 16777215.0)) << 8) | 0u));
+  CHECK((words[7] & 0xFF) == 1u);  // right half marked
+  std::uint8_t px[4];
+  gl.ReadPixel(6, 2, px);
+  CHECK(px[1] == 255);
+  gl.ReadPixel(1, 2, px);
+  CHECK(px[1] == 0);
+  // Data uploads as DEPTH_STENCIL: UNSIGNED_INT_24_8 and FLOAT_32_UNSIGNED_INT_24_8_REV.
+  const std::uint32_t packed[2] = {(0x800000u << 8) | 7u, (0xFFFFFFu << 8) | 200u};
+  gl.TexImage2D(TEXTURE_2D, 0, DEPTH24_STENCIL8, 2, 1, 0, DEPTH_STENCIL, UNSIGNED_INT_24_8, packed);
+  std::uint32_t back[2] = {0, 0};
+  gl.GetTexImage(TEXTURE_2D, 0, DEPTH_STENCIL, UNSIGNED_INT_24_8, back);
+  CHECK(back[0] == packed[0]);
+  CHECK(back[1] == packed[1]);
+  struct {
+    float depth;
+    std::uint32_t stencil;
+  } rev[1] = {{0.5f, 9u}};
+  gl.TexImage2D(TEXTURE_2D, 0, DEPTH32F_STENCIL8, 1, 1, 0, DEPTH_STENCIL, FLOAT_32_UNSIGNED_INT_24_8_REV, rev);
+  float d = 0;
+  gl.GetTexImage(TEXTURE_2D, 0, DEPTH_COMPONENT, FLOAT, &d);
+  CHECK(d == 0.5f);
+  gl.GetTexImage(TEXTURE_2D, 0, DEPTH_STENCIL, UNSIGNED_INT_24_8, back);
+  CHECK((back[0] & 0xFF) == 9u);
+  CHECK(gl.GetError() == NO_ERROR);
+  gl.TexImage2D(TEXTURE_2D, 0, DEPTH24_STENCIL8, 1, 1, 0, DEPTH_STENCIL, FLOAT, nullptr);
+  CHECK(gl.GetError() == INVALID_OPERATION);  // DEPTH_STENCIL takes the packed types only
+  gl.TexImage2D(TEXTURE_2D, 0, RGBA8, 1, 1, 0, RGBA, UNSIGNED_INT_24_8, nullptr);
+  CHECK(gl.GetError() == INVALID_OPERATION);
+  gl.TexImage2D(TEXTURE_2D, 0, RGBA8, 1, 1, 0, DEPTH_STENCIL, UNSIGNED_INT_24_8, nullptr);
+  CHECK(gl.GetError() == INVALID_OPERATION);  // depth data for a colour format
+  gl.TexImage2D(TEXTURE_2D, 0, STENCIL_INDEX8, 1, 1, 0, DEPTH_STENCIL, UNSIGNED_INT_24_8, nullptr);
+  CHECK(gl.GetError() == INVALID_VALUE);  // stencil-only textures are not OpenGL 3.3's
+}
+
+TEST_CASE("ReadBuffer chooses the colour buffer that reads and copies take", "[framebuffer]") {
+  Context gl(4, 4);
+  int v = 0;
+  gl.GetIntegerv(READ_BUFFER, &v);
+  CHECK(v == int(BACK));
+  for (Enum ok : {FRONT, LEFT, FRONT_LEFT, BACK_LEFT, FRONT_AND_BACK, BACK}) {
+    gl.ReadBuffer(ok);
+    CHECK(gl.GetError() == NO_ERROR);
+  }
+  gl.ReadBuffer(RIGHT);
+  CHECK(gl.GetError() == INVALID_OPERATION);
+  gl.ReadBuffer(COLOR_ATTACHMENT0);
+  CHECK(gl.GetError() == INVALID_OPERATION);
+  gl.ReadBuffer(0x1234);
+  CHECK(gl.GetError() == INVALID_ENUM);
+  gl.ReadBuffer(NONE);
+  std::uint8_t px[4];
+  gl.ReadPixels(0, 0, 1, 1, RGBA, UNSIGNED_BYTE, px);
+  CHECK(gl.GetError() == INVALID_OPERATION);  // no colour buffer to read
+  float d = 0;
+  gl.ReadPixels(0, 0, 1, 1, DEPTH_COMPONENT, FLOAT, &d);
+  CHECK(gl.GetError() == NO_ERROR);  // depth still reads
+  gl.ReadBuffer(BACK);
+  // A framebuffer object with two colour attachments: each clear goes to one, ReadBuffer picks which is read.
+  Context g2(2, 2);
+  const std::uint32_t fbo = g2.GenFramebuffer(), rb[2] = {g2.GenRenderbuffer(), g2.GenRenderbuffer()};
+  g2.BindFramebuffer(FRAMEBUFFER, fbo);
+  for (int k = 0; k < 2; ++k) {
+    g2.BindRenderbuffer(RENDERBUFFER, rb[k]);
+    g2.RenderbufferStorage(RENDERBUFFER, RGBA8, 2, 2);
+    g2.FramebufferRenderbuffer(FRAMEBUFFER, COLOR_ATTACHMENT0 + Enum(k), RENDERBUFFER, rb[k]);
+    const Enum buf = COLOR_ATTACHMENT0 + Enum(k);
+    g2.DrawBuffers(1, &buf);
+    g2.ClearColor(k == 0 ? 1.0f : 0.0f, k == 1 ? 1.0f : 0.0f, 0, 1);
+    g2.Clear(COLOR_BUFFER_BIT);
+  }
+  g2.GetIntegerv(READ_BUFFER, &v);
+  CHECK(v == int(COLOR_ATTACHMENT0));
+  g2.ReadPixel(0, 0, px);
+  CHECK((px[0] == 255 && px[1] == 0));
+  g2.ReadBuffer(COLOR_ATTACHMENT0 + 1);
+  g2.ReadPixel(0, 0, px);
+  CHECK((px[0] == 0 && px[1] == 255));
+  g2.ReadBuffer(BACK);
+  CHECK(g2.GetError() == INVALID_OPERATION);
+  g2.ReadBuffer(COLOR_ATTACHMENT0 + 4);
+  CHECK(g2.GetError() == INVALID_OPERATION);  // beyond MAX_COLOR_ATTACHMENTS
+  g2.ReadBuffer(COLOR_ATTACHMENT0 + 3);  // an empty attachment: accepted, but reading colour fails
+  CHECK(g2.GetError() == NO_ERROR);
+  CHECK(g2.CheckFramebufferStatus(READ_FRAMEBUFFER) == FRAMEBUFFER_COMPLETE);
+  g2.ReadPixels(0, 0, 1, 1, RGBA, UNSIGNED_BYTE, px);
+  CHECK(g2.GetError() == INVALID_OPERATION);
+}
+
+TEST_CASE("Blit copies, scales, mirrors and clips as BlitFramebuffer says", "[framebuffer]") {
+  SECTION("one to one, with depth and stencil, only inside the clip") {
+    Buffers src = Gradient(4, 4), dst(8, 8);
+    detail::BlitRegion r = Region(0, 0, 4, 4, 2, 3, 6, 7, 8, 8);
+    r.clip = detail::Rect{0, 0, 5, 8};  // a scissor box cutting x at 5
+    detail::Blit(src.Target(), dst.Target(), r);
+    CHECK(dst.R(2, 3) == src.R(0, 0));
+    CHECK(dst.R(4, 6) == src.R(2, 3));
+    CHECK(dst.R(5, 6) == 0);  // outside the clip
+    CHECK(dst.R(1, 3) == 0);  // outside the rectangle
+    CHECK(dst.stencil[std::size_t(6 * 8 + 4)] == src.stencil[std::size_t(3 * 4 + 2)]);
+    CHECK(dst.depth[std::size_t(6 * 8 + 4)] == src.depth[std::size_t(3 * 4 + 2)]);
+  }
+  SECTION("mirrored by a reversed destination or source") {
+    Buffers src = Gradient(4, 4), a(4, 4), b(4, 4);
+    detail::Blit(src.Target(), a.Target(), Region(0, 0, 4, 4, 4, 0, 0, 4, 4, 4));
+    detail::Blit(src.Target(), b.Target(), Region(0, 4, 4, 0, 0, 0, 4, 4, 4, 4));
+    for (int y = 0; y < 4; ++y)
+      for (int x = 0; x < 4; ++x) {
+        CHECK(a.R(x, y) == src.R(3 - x, y));
+        CHECK(b.R(x, y) == src.R(x, 3 - y));
+      }
+  }
+  SECTION("NEAREST scaling takes the pixel holding each destination centre") {
+    Buffers src = Gradient(4, 4), up(8, 8), down(2, 2);
+    detail::Blit(src.Target(), up.Target(), Region(0, 0, 4, 4, 0, 0, 8, 8, 8, 8));
+    for (int y = 0; y < 8; ++y)
+      for (int x = 0; x < 8; ++x) CHECK(up.R(x, y) == src.R(x / 2, y / 2));
+    detail::Blit(src.Target(), down.Target(), Region(0, 0, 4, 4, 0, 0, 2, 2, 2, 2));
+    CHECK(down.R(0, 0) == src.R(1, 1));  // centre 0.5 maps to 1.0: pixel 1
+    CHECK(down.R(1, 1) == src.R(3, 3));
+  }
+  SECTION("LINEAR mixes the four nearest centres, clamped to the edge") {
+    Buffers src(2, 1), dst(4, 1);
+    src.R(0, 0) = 0;
+    src.R(1, 0) = 200;
+    detail::BlitRegion r = Region(0, 0, 2, 1, 0, 0, 4, 1, 4, 1);
+    r.depth = r.stencil = false;
+    r.linear = true;
+    detail::Blit(src.Target(), dst.Target(), r);
+    // Destination centres 0.5, 1.5, 2.5, 3.5 map to 0.25, 0.75, 1.25, 1.75: 0, 50, 150, 200 after the clamp.
+    CHECK(dst.R(0, 0) == 0);
+    CHECK(dst.R(1, 0) == 50);
+    CHECK(dst.R(2, 0) == 150);
+    CHECK(dst.R(3, 0) == 200);
+  }
+  SECTION("source outside the read buffer is clipped, not read") {
+    Buffers src = Gradient(4, 4), dst(8, 8);
+    dst.R(0, 0) = 77;
+    detail::Blit(src.Target(), dst.Target(), Region(-2, 0, 6, 8, 0, 0, 8, 8, 8, 8));
+    CHECK(dst.R(0, 0) == 77);  // its source x is -1.5
+    CHECK(dst.R(2, 0) == src.R(0, 0));
+    CHECK(dst.R(6, 0) == 0);  // source x 4.5: outside, left as it was
+  }
+  SECTION("overlapping rectangles of one buffer read the source as it was") {
+    Buffers buf = Gradient(4, 4), orig = Gradient(4, 4);
+    const detail::RenderTarget t = buf.Target();
+    detail::Blit(t, t, Region(0, 0, 3, 4, 1, 0, 4, 4, 4, 4));
+    for (int x = 1; x < 4; ++x) CHECK(buf.R(x, 2) == orig.R(x - 1, 2));
+    CHECK(buf.stencil[std::size_t(2 * 4 + 3)] == orig.stencil[std::size_t(2 * 4 + 2)]);
+  }
+}
+
+TEST_CASE("BlitFramebuffer between framebuffer objects and the context's framebuffer, and its errors", "[framebuffer]") {
+  Context gl(8, 8);
+  RenderbufferFbo f(gl, 4, 4, DEPTH24_STENCIL8);
+  gl.ClearColor(1, 0, 0, 1);
+  gl.ClearDepth(0.5);
+  gl.ClearStencil(5);
+  gl.Clear(COLOR_BUFFER_BIT | DEPTH_BUFFER_BIT | STENCIL_BUFFER_BIT);
+  gl.BindFramebuffer(DRAW_FRAMEBUFFER, 0);
+  gl.BlitFramebuffer(0, 0, 4, 4, 0, 0, 8, 8, COLOR_BUFFER_BIT | DEPTH_BUFFER_BIT | STENCIL_BUFFER_BIT, NEAREST);
+  CHECK(gl.GetError() == NO_ERROR);
+  gl.BindFramebuffer(READ_FRAMEBUFFER, 0);
+  std::uint8_t px[4];
+  gl.ReadPixel(7, 7, px);
+  CHECK((px[0] == 255 && px[3] == 255));
+  CHECK(gl.ReadDepth(7, 7) == 0.5f);
+  CHECK(gl.ReadStencil(7, 7) == 5);
+  // Errors.
+  gl.BindFramebuffer(READ_FRAMEBUFFER, f.fbo);
+  gl.BlitFramebuffer(0, 0, 4, 4, 0, 0, 4, 4, 0x8000, NEAREST);
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.BlitFramebuffer(0, 0, 4, 4, 0, 0, 4, 4, COLOR_BUFFER_BIT, 0x1234);
+  CHECK(gl.GetError() == INVALID_ENUM);
+  gl.BlitFramebuffer(0, 0, 4, 4, 0, 0, 4, 4, DEPTH_BUFFER_BIT, LINEAR);
+  CHECK(gl.GetError() == INVALID_OPERATION);
+  gl.BlitFramebuffer(0, 0, 4, 4, 0, 0, 4, 4, 0, NEAREST);
+  CHECK(gl.GetError() == NO_ERROR);  // nothing to copy
+  // DEPTH32F_STENCIL8 against the context's framebuffer (DEPTH24_STENCIL8): formats differ for depth and stencil.
+  gl.BindRenderbuffer(RENDERBUFFER, f.ds);
+  gl.RenderbufferStorage(RENDERBUFFER, DEPTH32F_STENCIL8, 4, 4);
+  gl.BlitFramebuffer(0, 0, 4, 4, 0, 0, 4, 4, DEPTH_BUFFER_BIT, NEAREST);
+  CHECK(gl.GetError() == INVALID_OPERATION);
+  gl.BlitFramebuffer(0, 0, 4, 4, 0, 0, 4, 4, STENCIL_BUFFER_BIT, NEAREST);
+  CHECK(gl.GetError() == INVALID_OPERATION);
+  gl.BlitFramebuffer(0, 0, 4, 4, 0, 0, 4, 4, COLOR_BUFFER_BIT, LINEAR);
+  CHECK(gl.GetError() == NO_ERROR);  // colour goes whatever the depth formats
+  // A read framebuffer without depth: the depth bit is skipped without an error.
+  gl.FramebufferRenderbuffer(READ_FRAMEBUFFER, DEPTH_STENCIL_ATTACHMENT, RENDERBUFFER, 0);
+  gl.BlitFramebuffer(0, 0, 4, 4, 0, 0, 4, 4, DEPTH_BUFFER_BIT | STENCIL_BUFFER_BIT, NEAREST);
+  CHECK(gl.GetError() == NO_ERROR);
+  // An incomplete read framebuffer.
+  gl.BindRenderbuffer(RENDERBUFFER, f.color);
+  gl.RenderbufferStorage(RENDERBUFFER, RGBA8, 0, 0);
+  gl.BlitFramebuffer(0, 0, 4, 4, 0, 0, 4, 4, COLOR_BUFFER_BIT, NEAREST);
+  CHECK(gl.GetError() == INVALID_FRAMEBUFFER_OPERATION);
+  // The scissor test limits what is written; the colour mask does not.
+  gl.BindFramebuffer(FRAMEBUFFER, 0);
+  gl.ClearColor(0, 0, 0, 0);
+  gl.Clear(COLOR_BUFFER_BIT);
+  gl.ClearColor(0, 0, 1, 1);
+  gl.Scissor(0, 0, 4, 4);
+  gl.Enable(SCISSOR_TEST);
+  gl.Clear(COLOR_BUFFER_BIT);  // blue in the lower-left quarter
+  gl.Disable(SCISSOR_TEST);
+  gl.Scissor(4, 0, 2, 8);
+  gl.Enable(SCISSOR_TEST);
+  gl.ColorMask(false, false, false, false);
+  gl.BlitFramebuffer(0, 0, 4, 4, 4, 0, 8, 4, COLOR_BUFFER_BIT, NEAREST);  // same framebuffer, side by side
+  gl.ColorMask(true, true, true, true);
+  gl.Disable(SCISSOR_TEST);
+  gl.ReadPixel(5, 1, px);
+  CHECK((px[2] == 255 && px[3] == 255));
+  gl.ReadPixel(6, 1, px);
+  CHECK(px[2] == 0);  // outside the scissor box
+  CHECK(gl.GetError() == NO_ERROR);
+}
