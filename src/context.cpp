@@ -1004,11 +1004,21 @@ void ContextState::Draw(const detail::DrawCall& call) {
 
 namespace {
 
+// OpenGL 3.3 (2.9.3): reading a mapped buffer is INVALID_OPERATION. False, with the error set, when an enabled
+// attribute array's buffer (or, for indexed draws, the element buffer) is mapped. Needs a bound vertex array.
+bool CheckNotMapped(ContextState& s, const char* what, bool elements) {
+  bool mapped = elements && s.vao->element_buffer && s.vao->element_buffer->mapped;
+  for (const AttribBinding& a : s.vao->attrib) mapped = mapped || (a.enabled && a.buffer && a.buffer->mapped);
+  if (mapped) return s.SetError(INVALID_OPERATION, what, "a buffer the draw reads (an enabled attribute array's or the element buffer) is mapped"), false;
+  return true;
+}
+
 void DrawArraysChecked(ContextState& s, const char* what, Enum mode, int first, int count, int instances) {
   if (detail::VerticesPerPrimitive(mode) == 0) return s.SetError(INVALID_ENUM, what, "mode is not a primitive mode");
   if (first < 0 || count < 0) return s.SetError(INVALID_VALUE, what, "first or count is negative");
   if (instances < 0) return s.SetError(INVALID_VALUE, what, "instancecount is negative");
   if (s.vao == nullptr || s.program == nullptr) return s.SetError(INVALID_OPERATION, what, "needs a bound vertex array and a shader (UseProgram)");
+  if (!CheckNotMapped(s, what, false)) return;
   if (instances == 0) return;
   detail::DrawCall call;
   call.mode = mode;
@@ -1037,7 +1047,7 @@ bool CheckElements(ContextState& s, const char* what, Enum mode, Enum type) {
 }
 bool CheckElementsBound(ContextState& s, const char* what) {
   if (s.vao == nullptr || s.program == nullptr || !s.vao->element_buffer) return s.SetError(INVALID_OPERATION, what, "needs a bound vertex array with an element buffer, and a shader (UseProgram)"), false;
-  return true;
+  return CheckNotMapped(s, what, true);
 }
 bool CheckElementRange(ContextState& s, const char* what, int count, Enum type, std::size_t offset) {
   const auto& store = s.vao->element_buffer->data;
@@ -1147,6 +1157,7 @@ void Context::MultiDrawArrays(Enum mode, const int* first, const int* count, int
   for (int i = 0; i < drawcount; ++i)
     if (first[i] < 0 || count[i] < 0) return s.SetError(INVALID_VALUE, __func__, "a first or count is negative");
   if (s.vao == nullptr || s.program == nullptr) return s.SetError(INVALID_OPERATION, __func__, "needs a bound vertex array and a shader (UseProgram)");
+  if (!CheckNotMapped(s, __func__, false)) return;
   for (int i = 0; i < drawcount; ++i) DrawArrays(mode, first[i], count[i]);
 }
 
@@ -2386,11 +2397,21 @@ void Context::BlitFramebuffer(int src_x0, int src_y0, int src_x1, int src_y1, in
     if ((depth && depth_differs) || (stencil && (a.stencil != b.stencil || (a.depth && b.depth && depth_differs))))
       return s.SetError(INVALID_OPERATION, __func__, "the read and draw framebuffers' depth or stencil formats differ");
   }
+  const bool color = (mask & COLOR_BUFFER_BIT) != 0 && src.color[0].Present();
+  bool same = (depth && src.depth == dst.depth) || (stencil && src.stencil == dst.stencil);
+  for (const detail::ColorBuffer& cb : dst.color) same = same || (color && cb.Present() && cb.data == src.color[0].data);
+  // OpenGL leaves a copy between overlapping rectangles of one buffer undefined: it is refused, as OpenGL ES 3.0
+  // refuses any blit within one buffer.
+  auto overlaps = [](int a0, int a1, int b0, int b1) {
+    return std::max(std::min(a0, a1), std::min(b0, b1)) < std::min(std::max(a0, a1), std::max(b0, b1));
+  };
+  if (same && overlaps(src_x0, src_x1, dst_x0, dst_x1) && overlaps(src_y0, src_y1, dst_y0, dst_y1))
+    return s.SetError(INVALID_OPERATION, __func__, "the source and destination rectangles overlap in the same buffer (undefined in OpenGL)");
   detail::BlitRegion r;
   r.src[0] = src_x0, r.src[1] = src_y0, r.src[2] = src_x1, r.src[3] = src_y1;
   r.dst[0] = dst_x0, r.dst[1] = dst_y0, r.dst[2] = dst_x1, r.dst[3] = dst_y1;
   r.clip = s.ClearArea(dst);  // the draw buffers' area cut to the scissor box
-  r.color = (mask & COLOR_BUFFER_BIT) != 0 && src.color[0].Present();
+  r.color = color;
   r.depth = depth;
   r.stencil = stencil;
   r.linear = filter == LINEAR;

@@ -111,37 +111,13 @@ int PixelAt(double c, int size) {
   return int(c);
 }
 
-// A copy of a buffer of `rows` rows of `pitch` elements, for a blit whose source is its destination.
-template <class T>
-std::vector<T> Snapshot(const T* data, int pitch, int rows) {
-  return std::vector<T>(data, data + std::size_t(pitch) * std::size_t(rows));
-}
-
 }  // namespace
 
-void Blit(const RenderTarget& src_in, const RenderTarget& dst, const BlitRegion& r) {
+void Blit(const RenderTarget& src, const RenderTarget& dst, const BlitRegion& r) {
   if (r.src[0] == r.src[2] || r.src[1] == r.src[3] || r.dst[0] == r.dst[2] || r.dst[1] == r.dst[3]) return;
   const BlitAxis ax = MakeAxis(r.src[0], r.src[2], r.dst[0], r.dst[2], std::max(r.clip.x0, 0), std::min(r.clip.x1, dst.width));
   const BlitAxis ay = MakeAxis(r.src[1], r.src[3], r.dst[1], r.dst[3], std::max(r.clip.y0, 0), std::min(r.clip.y1, dst.height));
   if (ax.d0 >= ax.d1 || ay.d0 >= ay.d1) return;
-  // Where the destination's buffers are the source's, read from a copy taken first.
-  RenderTarget src = src_in;
-  std::vector<std::uint8_t> color_copy, stencil_copy;
-  std::vector<float> depth_copy;
-  bool aliased = false;
-  for (const ColorBuffer& cb : dst.color) aliased = aliased || (r.color && cb.Present() && cb.data == src.color[0].data);
-  if (aliased) {
-    color_copy = Snapshot(src.color[0].data, src.color[0].pitch * src.color[0].Bytes(), src.height);
-    src.color[0].data = color_copy.data();
-  }
-  if (r.depth && dst.depth == src.depth) {
-    depth_copy = Snapshot(src.depth, src.depth_pitch, src.height);
-    src.depth = depth_copy.data();
-  }
-  if (r.stencil && dst.stencil == src.stencil) {
-    stencil_copy = Snapshot(src.stencil, src.stencil_pitch, src.height);
-    src.stencil = stencil_copy.data();
-  }
   const bool all[4] = {true, true, true, true};
   for (int y = ay.d0; y < ay.d1; ++y) {
     const double sy = ay.At(y);

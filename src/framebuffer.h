@@ -83,8 +83,8 @@ struct BlitRegion {
 /// source at the corresponding point (scaled and mirrored by the two rectangles): with NEAREST the pixel holding
 /// that point, with LINEAR (colour only) the bilinear mix of the four nearest pixel centres, clamped to the read
 /// buffer's edge. A destination pixel whose point lies outside the read buffer is not written (the blit is
-/// clipped), nor is one outside r.clip. Write masks do not apply. Source and destination may be the same buffers:
-/// what is read is the source as it was before the blit. Throws std::bad_alloc.
+/// clipped), nor is one outside r.clip. Write masks do not apply. Where source and destination are one buffer the
+/// rectangles must not overlap (the caller refuses such a blit).
 void Blit(const RenderTarget& src, const RenderTarget& dst, const BlitRegion& r);
 
 /// OpenGL's float-to-normalized-fixed conversion for 8 bits: clamp to [0, 1], then round(f * 255).

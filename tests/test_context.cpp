@@ -247,7 +247,7 @@ TEST_CASE("buffers: mapping, flushing, copying and reading back", "[context]") {
   CHECK(gl.GetError() == NO_ERROR);
 }
 
-TEST_CASE("buffers: a draw reads what was written through a mapping", "[context]") {
+TEST_CASE("buffers: a draw reads what was written through a mapping, once it is unmapped", "[context]") {
   Context gl(8, 8);
   SolidShader shader;
   gl.UseProgram(shader);
@@ -260,10 +260,29 @@ TEST_CASE("buffers: a draw reads what was written through a mapping", "[context]
   void* p = gl.MapBufferRange(ARRAY_BUFFER, 0, 48, MAP_WRITE_BIT | MAP_INVALIDATE_RANGE_BIT);
   REQUIRE(p != nullptr);
   std::memcpy(p, full, sizeof full);
-  gl.DrawArrays(TRIANGLES, 0, 3);  // reading a mapped buffer is allowed (OpenGL says it may be an error)
+  gl.DrawArrays(TRIANGLES, 0, 3);  // reading a mapped buffer: INVALID_OPERATION, nothing drawn
+  CHECK(gl.GetError() == INVALID_OPERATION);
+  CHECK(CountLit(gl) == 0);
+  CHECK(gl.UnmapBuffer(ARRAY_BUFFER));
+  gl.DrawArrays(TRIANGLES, 0, 3);
   CHECK(gl.GetError() == NO_ERROR);
   CHECK(CountLit(gl) == 64);
-  CHECK(gl.UnmapBuffer(ARRAY_BUFFER));
+  // A mapped element buffer, or a mapped buffer behind a disabled array (not read: no error).
+  const std::uint32_t indices[3] = {0, 1, 2};
+  gl.BindBuffer(ELEMENT_ARRAY_BUFFER, gl.GenBuffer());
+  gl.BufferData(ELEMENT_ARRAY_BUFFER, sizeof indices, indices);
+  REQUIRE(gl.MapBufferRange(ELEMENT_ARRAY_BUFFER, 0, 4, MAP_READ_BIT) != nullptr);
+  gl.DrawElement(TRIANGLES, 3, UNSIGNED_INT, 0);
+  CHECK(gl.GetError() == INVALID_OPERATION);
+  gl.DrawArrays(TRIANGLES, 0, 3);
+  CHECK(gl.GetError() == NO_ERROR);  // the element buffer is not read
+  CHECK(gl.UnmapBuffer(ELEMENT_ARRAY_BUFFER));
+  gl.BindBuffer(ARRAY_BUFFER, gl.GenBuffer());
+  gl.BufferData(ARRAY_BUFFER, 64, nullptr);
+  gl.VertexAttributePointer(1, 4, FLOAT, false, 0, 0);
+  REQUIRE(gl.MapBufferRange(ARRAY_BUFFER, 0, 64, MAP_WRITE_BIT) != nullptr);
+  gl.DrawElement(TRIANGLES, 3, UNSIGNED_INT, 0);
+  CHECK(gl.GetError() == NO_ERROR);  // attribute 1 is disabled
 }
 
 TEST_CASE("buffers: the mapping and copying errors, as OpenGL gives them", "[context][errors]") {

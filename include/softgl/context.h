@@ -98,8 +98,9 @@ class Context {
   /// made). Returns null on error: offset or length negative, the range outside the store, an unknown access bit:
   /// INVALID_VALUE; length 0, the buffer already mapped, neither READ nor WRITE, READ with an INVALIDATE or
   /// UNSYNCHRONIZED bit, FLUSH_EXPLICIT without WRITE: INVALID_OPERATION. While mapped, BufferSubData and
-  /// GetBufferSubData on the mapped bytes and CopyBufferSubData on the buffer are INVALID_OPERATION; draws may read
-  /// it; BufferData and DeleteBuffer unmap it first. The pointer is valid until then.
+  /// GetBufferSubData on the mapped bytes, CopyBufferSubData on the buffer and draws that read it (an enabled
+  /// attribute array's buffer, or the element buffer of an indexed draw) are INVALID_OPERATION; BufferData and
+  /// DeleteBuffer unmap it first. The pointer is valid until then.
   void* MapBufferRange(Enum target, std::ptrdiff_t offset, std::ptrdiff_t length, Bitfield access);
   /// The whole store: access READ_ONLY, WRITE_ONLY or READ_WRITE (else INVALID_ENUM). An empty store:
   /// INVALID_OPERATION.
@@ -283,10 +284,10 @@ class Context {
   /// or LINEAR (bilinear, colour only) for a scaled copy. Each destination pixel whose centre lies in the
   /// destination rectangle takes the source at the matching point; pixels whose point lies outside the read
   /// buffer, and pixels outside the scissor box while the scissor test is enabled, are not written; write masks do
-  /// not apply. A buffer that either framebuffer lacks is skipped. The rectangles may overlap in one framebuffer
-  /// (the source is read as it was before the blit). Errors: other mask bits: INVALID_VALUE; bad filter:
-  /// INVALID_ENUM; LINEAR with depth or stencil, depth or stencil formats that differ (the context's
-  /// framebuffer counts as DEPTH24_STENCIL8): INVALID_OPERATION; an incomplete read or draw framebuffer:
+  /// not apply. A buffer that either framebuffer lacks is skipped. Errors (nothing is copied): other mask bits:
+  /// INVALID_VALUE; bad filter: INVALID_ENUM; LINEAR with depth or stencil, depth or stencil formats that differ
+  /// (the context's framebuffer counts as DEPTH24_STENCIL8), rectangles that overlap while one buffer is both
+  /// source and destination (undefined in OpenGL): INVALID_OPERATION; an incomplete read or draw framebuffer:
   /// INVALID_FRAMEBUFFER_OPERATION.
   void BlitFramebuffer(int src_x0, int src_y0, int src_x1, int src_y1, int dst_x0, int dst_y0, int dst_x1, int dst_y1,
                        Bitfield mask, Enum filter);
@@ -396,11 +397,12 @@ class Context {
   // ---- Drawing -----------------------------------------------------------------------------------------------
   /// Draws vertices [first, first + count) of the bound vertex array. mode: POINTS, LINES, LINE_STRIP, LINE_LOOP,
   /// TRIANGLES, TRIANGLE_STRIP, TRIANGLE_FAN (else INVALID_ENUM). first or count < 0: INVALID_VALUE. No vertex
-  /// array or no shader: INVALID_OPERATION. Attribute reads past the end of a buffer read (0, 0, 0, 1).
+  /// array or no shader, an enabled array's buffer mapped: INVALID_OPERATION. Attribute reads past the end of a
+  /// buffer read (0, 0, 0, 1).
   void DrawArrays(Enum mode, int first, int count);
   /// Draws count vertices whose indices of `type` (UNSIGNED_BYTE, UNSIGNED_SHORT, UNSIGNED_INT) are read from the
-  /// bound vertex array's element buffer at byte `offset`. No element buffer, or indices past its end:
-  /// INVALID_OPERATION (nothing is drawn); otherwise as DrawArrays.
+  /// bound vertex array's element buffer at byte `offset`. No element buffer, the element buffer mapped, or
+  /// indices past its end: INVALID_OPERATION (nothing is drawn); otherwise as DrawArrays.
   void DrawElement(Enum mode, int count, Enum type, std::size_t offset);
   /// DrawElement with `basevertex` added to every index before it is used (gl_VertexID included). An index whose
   /// sum falls outside 0 .. 2^32 - 1 (undefined in OpenGL) reads (0, 0, 0, 1) for every attribute.
