@@ -384,7 +384,13 @@ void RecordRestartRuns(const DrawCall& call, const FetchPlan& fetch, const DrawS
 
 void RecordDraw(const DrawCall& call, const FetchPlan& fetch, const DrawState& state, const DrawPacket& packet,
                 const RenderTarget& target, Frame& frame, WorkerPool& pool, Scratch& scratch) {
-  if (call.count <= 0 || call.instances <= 0 || state.program == nullptr || state.bounds.Empty()) return;
+  if (call.count <= 0 || call.instances <= 0 || state.program == nullptr) return;
+  if (state.bounds.Empty()) {  // nothing can be drawn; the primitives are still generated, and counted
+    if (state.primitives_generated)
+      *state.primitives_generated +=
+          PrimitiveCount(call.mode, call.count, call.restarts, call.restart_count) * std::uint64_t(call.instances);
+    return;
+  }
   if (call.count <= kDrawChunk) {
     // Whole instances together, as many as kDrawChunk vertices hold, in instance order.
     const int group = std::max(1, kDrawChunk / call.count);

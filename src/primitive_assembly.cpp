@@ -57,7 +57,33 @@ void AssembleRun(Enum mode, std::uint32_t b, int count, std::vector<std::uint32_
   }
 }
 
+// How many primitives AssembleRun makes of `count` vertices.
+std::uint64_t RunCount(Enum mode, std::int64_t count) {
+  if (count <= 0) return 0;
+  switch (mode) {
+    case POINTS: return std::uint64_t(count);
+    case LINES: return std::uint64_t(count / 2);
+    case LINE_STRIP: return count < 2 ? 0 : std::uint64_t(count - 1);
+    case LINE_LOOP: return count < 2 ? 0 : std::uint64_t(count);
+    case TRIANGLES: return std::uint64_t(count / 3);
+    case TRIANGLE_STRIP:
+    case TRIANGLE_FAN: return count < 3 ? 0 : std::uint64_t(count - 2);
+    default: return 0;
+  }
+}
+
 }  // namespace
+
+std::uint64_t PrimitiveCount(Enum mode, int count, const std::uint32_t* restarts, int restart_count) {
+  if (count <= 0) return 0;
+  std::uint64_t n = 0;
+  std::int64_t begin = 0;
+  for (int r = 0; r < restart_count; ++r) {
+    n += RunCount(mode, std::int64_t(restarts[r]) - begin);
+    begin = std::int64_t(restarts[r]) + 1;
+  }
+  return n + RunCount(mode, std::int64_t(count) - begin);
+}
 
 void AssemblePrimitives(Enum mode, int count, Primitives& out, bool first_vertex_convention) {
   AssemblePrimitives(mode, count, nullptr, 0, out, first_vertex_convention);

@@ -27,6 +27,9 @@ void AssemblePrimitives(Enum mode, int count, Primitives& out, bool first_vertex
 void AssemblePrimitives(Enum mode, int count, const std::uint32_t* restarts, int restart_count, Primitives& out,
                         bool first_vertex_convention = false);
 
+/// The number of primitives AssemblePrimitives makes, without making them (for any count, in constant memory).
+std::uint64_t PrimitiveCount(Enum mode, int count, const std::uint32_t* restarts = nullptr, int restart_count = 0);
+
 /// 1, 2 or 3 for a valid mode, 0 otherwise.
 int VerticesPerPrimitive(Enum mode);
 

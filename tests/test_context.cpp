@@ -1264,6 +1264,10 @@ TEST_CASE("queries: samples passed, primitives generated, time elapsed, and thei
     gl.BeginQuery(PRIMITIVES_GENERATED, q[2]);
     gl.DrawArraysInstanced(TRIANGLE_STRIP, 0, 4, 3);  // 2 triangles x 3 instances
     gl.DrawArrays(LINE_LOOP, 0, 5);                   // 5 lines
+    gl.Enable(SCISSOR_TEST);
+    gl.Scissor(0, 0, 0, 0);
+    gl.DrawArrays(TRIANGLES, 0, 7);  // 2 triangles, though nothing can be drawn
+    gl.Disable(SCISSOR_TEST);
     gl.EndQuery(PRIMITIVES_GENERATED);
     gl.BeginQuery(TIME_ELAPSED, q[3]);
     gl.DrawArrays(TRIANGLE_STRIP, 0, 4);
@@ -1279,7 +1283,7 @@ TEST_CASE("queries: samples passed, primitives generated, time elapsed, and thei
     CHECK(any == 0);
     std::int64_t prims = 0;
     gl.GetQueryObjecti64v(q[2], QUERY_RESULT, &prims);
-    CHECK(prims == 11);
+    CHECK(prims == 13);
     gl.GetQueryObjectui64v(q[3], QUERY_RESULT, &r);
     CHECK(r > 0);
     CHECK(gl.GetError() == NO_ERROR);

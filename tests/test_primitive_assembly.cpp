@@ -8,6 +8,7 @@
 using namespace softgl;
 using detail::AssemblePrimitives;
 using detail::Primitives;
+using detail::PrimitiveCount;
 
 namespace {
 std::vector<std::uint32_t> Assemble(Enum mode, int count) {
@@ -63,4 +64,22 @@ TEST_CASE("primitive restart assembles each run on its own", "[primitive_assembl
   CHECK(with_restarts(TRIANGLE_STRIP, 4, {0, 1, 2, 3}).empty());
   // Strip parity counts from each run's start: the second run's first triangle is not swapped.
   CHECK(with_restarts(TRIANGLE_STRIP, 8, {4}) == V{0, 1, 2, 2, 1, 3, 5, 6, 7});
+}
+
+TEST_CASE("PrimitiveCount says how many primitives assembly makes, restarts included", "[primitive_assembly]") {
+  const Enum modes[7] = {POINTS, LINES, LINE_STRIP, LINE_LOOP, TRIANGLES, TRIANGLE_STRIP, TRIANGLE_FAN};
+  const std::vector<std::uint32_t> restart_sets[4] = {{}, {0}, {3, 4, 9}, {1, 2, 5, 6, 11}};
+  for (Enum mode : modes)
+    for (int count = 0; count <= 13; ++count)
+      for (const auto& all : restart_sets) {
+        std::vector<std::uint32_t> restarts;
+        for (std::uint32_t r : all)
+          if (r < std::uint32_t(count)) restarts.push_back(r);
+        Primitives p;
+        AssemblePrimitives(mode, count, restarts.data(), int(restarts.size()), p);
+        INFO("mode " << mode << ", count " << count << ", restarts " << restarts.size());
+        CHECK(PrimitiveCount(mode, count, restarts.data(), int(restarts.size())) == std::uint64_t(p.Count()));
+      }
+  CHECK(PrimitiveCount(TRIANGLE_STRIP, 2000000000) == 1999999998u);  // no memory needed for any count
+  CHECK(PrimitiveCount(0x1234, 9) == 0u);
 }
