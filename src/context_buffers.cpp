@@ -1,0 +1,308 @@
+// context_buffers.cpp — buffer objects (data, mapping, copies, parameters) and vertex arrays (attribute pointers,
+// divisors, current attribute values).
+#include "context_state.h"
+
+#include <cstring>
+
+namespace softgl {
+
+// ---- Buffers -------------------------------------------------------------------------------------------------
+
+std::uint32_t Context::GenBuffer() {
+  return NewId(state_->buffers, state_->next_buffer, [] { return std::make_shared<Buffer>(); });
+}
+
+void Context::GenBuffers(int n, std::uint32_t* ids) {
+  GenMany(*state_, __func__, n, ids, [this] { return GenBuffer(); });
+}
+
+void Context::DeleteBuffer(std::uint32_t buffer) {
+  auto& s = *state_;
+  auto it = s.buffers.find(buffer);
+  if (it == s.buffers.end()) return;
+  Buffer* dead = it->second.get();
+  dead->Unmap();  // deleting a mapped buffer unmaps it
+  if (s.array_buffer.get() == dead) s.array_buffer.reset();
+  if (s.copy_read_buffer.get() == dead) s.copy_read_buffer.reset();
+  if (s.copy_write_buffer.get() == dead) s.copy_write_buffer.reset();
+  if (s.vao) {  // only the bound vertex array forgets it (OpenGL 4.6, section 5.1.2)
+    if (s.vao->element_buffer.get() == dead) s.vao->element_buffer.reset();
+    for (auto& a : s.vao->attrib)
+      if (a.buffer.get() == dead) a.buffer.reset();
+  }
+  s.buffers.erase(it);
+}
+
+bool Context::IsBuffer(std::uint32_t buffer) const { return state_->buffers.count(buffer) != 0; }
+
+void Context::BindBuffer(Enum target, std::uint32_t buffer) {
+  auto& s = *state_;
+  if (target != ARRAY_BUFFER && target != ELEMENT_ARRAY_BUFFER && target != COPY_READ_BUFFER &&
+      target != COPY_WRITE_BUFFER)
+    return s.SetError(INVALID_ENUM, __func__, "target must be ARRAY_BUFFER, ELEMENT_ARRAY_BUFFER, COPY_READ_BUFFER or COPY_WRITE_BUFFER");
+  std::shared_ptr<Buffer> object;
+  if (buffer != 0) {
+    auto it = s.buffers.find(buffer);
+    if (it == s.buffers.end()) return s.SetError(INVALID_OPERATION, __func__, "not a buffer id made by GenBuffer (or it was deleted)");
+    object = it->second;
+  }
+  auto* binding = s.BindingFor(target);
+  if (binding == nullptr) return s.SetError(INVALID_OPERATION, __func__, "ELEMENT_ARRAY_BUFFER needs a bound vertex array");  // element buffer with no vertex array bound
+  *binding = std::move(object);
+}
+
+void Context::BufferData(Enum target, std::ptrdiff_t size, const void* data, Enum usage) {
+  auto& s = *state_;
+  if (target != ARRAY_BUFFER && target != ELEMENT_ARRAY_BUFFER && target != COPY_READ_BUFFER &&
+      target != COPY_WRITE_BUFFER)
+    return s.SetError(INVALID_ENUM, __func__, "target must be ARRAY_BUFFER, ELEMENT_ARRAY_BUFFER, COPY_READ_BUFFER or COPY_WRITE_BUFFER");
+  if (!IsUsage(usage)) return s.SetError(INVALID_ENUM, __func__, "not a buffer usage");
+  if (size < 0) return s.SetError(INVALID_VALUE, __func__, "size is negative");
+  Buffer* buffer = s.BoundBuffer(__func__, target);
+  if (buffer == nullptr) return;
+  try {
+    std::vector<std::uint8_t> store(std::size_t(size), 0);
+    if (data != nullptr && size > 0) std::memcpy(store.data(), data, std::size_t(size));
+    buffer->Unmap();  // a new store unmaps the old one, as OpenGL does
+    buffer->data = std::move(store);
+    buffer->usage = usage;
+  } catch (const std::bad_alloc&) {
+    s.SetError(OUT_OF_MEMORY, __func__, "out of memory");
+  } catch (const std::length_error&) {
+    s.SetError(OUT_OF_MEMORY, __func__, "out of memory");
+  }
+}
+
+namespace {
+
+// Whether [offset, offset + size) lies inside a store of `store` bytes (offset and size already non-negative).
+bool InStore(std::size_t store, std::ptrdiff_t offset, std::ptrdiff_t size) {
+  return std::size_t(offset) <= store && std::size_t(size) <= store - std::size_t(offset);
+}
+
+}  // namespace
+
+void Context::BufferSubData(Enum target, std::ptrdiff_t offset, std::ptrdiff_t size, const void* data) {
+  auto& s = *state_;
+  Buffer* buffer = s.BoundBuffer(__func__, target);
+  if (buffer == nullptr) return;
+  if (offset < 0 || size < 0) return s.SetError(INVALID_VALUE, __func__, "offset or size is negative");
+  if (!InStore(buffer->data.size(), offset, size)) return s.SetError(INVALID_VALUE, __func__, "the range is outside the buffer's store");
+  if (buffer->MappedOverlaps(std::size_t(offset), std::size_t(size))) return s.SetError(INVALID_OPERATION, __func__, "the range is mapped");
+  if (data != nullptr && size > 0) std::memcpy(buffer->data.data() + offset, data, std::size_t(size));
+}
+
+namespace {
+
+void* MapRange(ContextState& s, const char* what, Enum target, std::ptrdiff_t offset, std::ptrdiff_t length,
+               Bitfield access) {
+  Buffer* buffer = s.BoundBuffer(what, target);
+  if (buffer == nullptr) return nullptr;
+  constexpr Bitfield kKnown = MAP_READ_BIT | MAP_WRITE_BIT | MAP_INVALIDATE_RANGE_BIT | MAP_INVALIDATE_BUFFER_BIT |
+                              MAP_FLUSH_EXPLICIT_BIT | MAP_UNSYNCHRONIZED_BIT;
+  if (offset < 0 || length < 0) return s.SetError(INVALID_VALUE, what, "offset or length is negative"), nullptr;
+  if (!InStore(buffer->data.size(), offset, length)) return s.SetError(INVALID_VALUE, what, "the range is outside the buffer's store"), nullptr;
+  if (access & ~kKnown) return s.SetError(INVALID_VALUE, what, "access has bits other than the MAP_*_BIT ones"), nullptr;
+  if (length == 0) return s.SetError(INVALID_OPERATION, what, "length is zero"), nullptr;
+  if (buffer->mapped) return s.SetError(INVALID_OPERATION, what, "the buffer is already mapped"), nullptr;
+  if (!(access & (MAP_READ_BIT | MAP_WRITE_BIT))) return s.SetError(INVALID_OPERATION, what, "access has neither MAP_READ_BIT nor MAP_WRITE_BIT"), nullptr;
+  if ((access & MAP_READ_BIT) && (access & (MAP_INVALIDATE_RANGE_BIT | MAP_INVALIDATE_BUFFER_BIT | MAP_UNSYNCHRONIZED_BIT)))
+    return s.SetError(INVALID_OPERATION, what, "MAP_READ_BIT with an INVALIDATE or UNSYNCHRONIZED bit"), nullptr;
+  if ((access & MAP_FLUSH_EXPLICIT_BIT) && !(access & MAP_WRITE_BIT)) return s.SetError(INVALID_OPERATION, what, "MAP_FLUSH_EXPLICIT_BIT without MAP_WRITE_BIT"), nullptr;
+  // Draws read their vertices when they are made, so the store holds everything earlier calls wrote: the caller's
+  // view of it is the store itself (invalidated bytes keep their old values, which OpenGL allows).
+  buffer->mapped = true;
+  buffer->access_flags = access;
+  buffer->map_offset = std::size_t(offset);
+  buffer->map_length = std::size_t(length);
+  return buffer->data.data() + offset;
+}
+
+}  // namespace
+
+void* Context::MapBufferRange(Enum target, std::ptrdiff_t offset, std::ptrdiff_t length, Bitfield access) {
+  return MapRange(*state_, __func__, target, offset, length, access);
+}
+
+void* Context::MapBuffer(Enum target, Enum access) {
+  auto& s = *state_;
+  const Bitfield bits = access == READ_ONLY ? MAP_READ_BIT : access == WRITE_ONLY ? MAP_WRITE_BIT
+                        : access == READ_WRITE ? MAP_READ_BIT | MAP_WRITE_BIT : 0;
+  if (bits == 0) return s.SetError(INVALID_ENUM, __func__, "access must be READ_ONLY, WRITE_ONLY or READ_WRITE"), nullptr;
+  Buffer* buffer = s.BoundBuffer(__func__, target);
+  if (buffer == nullptr) return nullptr;
+  if (buffer->data.empty()) return s.SetError(INVALID_OPERATION, __func__, "the buffer has no store"), nullptr;
+  return MapRange(s, __func__, target, 0, std::ptrdiff_t(buffer->data.size()), bits);
+}
+
+void Context::FlushMappedBufferRange(Enum target, std::ptrdiff_t offset, std::ptrdiff_t length) {
+  auto& s = *state_;
+  Buffer* buffer = s.BoundBuffer(__func__, target);
+  if (buffer == nullptr) return;
+  if (offset < 0 || length < 0) return s.SetError(INVALID_VALUE, __func__, "offset or length is negative");
+  if (!buffer->mapped || !(buffer->access_flags & MAP_FLUSH_EXPLICIT_BIT)) return s.SetError(INVALID_OPERATION, __func__, "the buffer is not mapped with MAP_FLUSH_EXPLICIT_BIT");
+  if (!InStore(buffer->map_length, offset, length)) return s.SetError(INVALID_VALUE, __func__, "the range is outside the mapped range");
+  // The mapping is the store: flushed bytes are already in place.
+}
+
+bool Context::UnmapBuffer(Enum target) {
+  auto& s = *state_;
+  Buffer* buffer = s.BoundBuffer(__func__, target);
+  if (buffer == nullptr) return false;
+  if (!buffer->mapped) return s.SetError(INVALID_OPERATION, __func__, "the buffer is not mapped"), false;
+  buffer->Unmap();
+  return true;
+}
+
+void Context::CopyBufferSubData(Enum read_target, Enum write_target, std::ptrdiff_t read_offset,
+                                std::ptrdiff_t write_offset, std::ptrdiff_t size) {
+  auto& s = *state_;
+  Buffer* src = s.BoundBuffer(__func__, read_target);
+  if (src == nullptr) return;
+  Buffer* dst = s.BoundBuffer(__func__, write_target);
+  if (dst == nullptr) return;
+  if (read_offset < 0 || write_offset < 0 || size < 0) return s.SetError(INVALID_VALUE, __func__, "an offset or the size is negative");
+  if (!InStore(src->data.size(), read_offset, size) || !InStore(dst->data.size(), write_offset, size))
+    return s.SetError(INVALID_VALUE, __func__, "a range is outside its buffer's store");
+  if (src == dst && read_offset < write_offset + size && write_offset < read_offset + size)
+    return s.SetError(INVALID_VALUE, __func__, "the ranges overlap within one buffer");
+  if (src->mapped || dst->mapped) return s.SetError(INVALID_OPERATION, __func__, "a buffer is mapped");
+  if (size > 0) std::memmove(dst->data.data() + write_offset, src->data.data() + read_offset, std::size_t(size));
+}
+
+void Context::GetBufferSubData(Enum target, std::ptrdiff_t offset, std::ptrdiff_t size, void* data) const {
+  auto& s = *state_;
+  Buffer* buffer = s.BoundBuffer(__func__, target);
+  if (buffer == nullptr) return;
+  if (offset < 0 || size < 0) return s.SetError(INVALID_VALUE, __func__, "offset or size is negative");
+  if (!InStore(buffer->data.size(), offset, size)) return s.SetError(INVALID_VALUE, __func__, "the range is outside the buffer's store");
+  if (buffer->MappedOverlaps(std::size_t(offset), std::size_t(size))) return s.SetError(INVALID_OPERATION, __func__, "the range is mapped");
+  if (data != nullptr && size > 0) std::memcpy(data, buffer->data.data() + offset, std::size_t(size));
+}
+
+namespace {
+
+// The value of buffer parameter `pname`, or false with the error set.
+bool BufferParameter(ContextState& s, const char* what, Enum target, Enum pname, std::int64_t& v) {
+  Buffer* buffer = s.BoundBuffer(what, target);
+  if (buffer == nullptr) return false;
+  const Bitfield flags = buffer->access_flags;
+  switch (pname) {
+    case BUFFER_SIZE: v = std::int64_t(buffer->data.size()); break;
+    case BUFFER_USAGE: v = buffer->usage; break;
+    case BUFFER_MAPPED: v = buffer->mapped; break;
+    case BUFFER_ACCESS_FLAGS: v = flags; break;
+    case BUFFER_MAP_OFFSET: v = std::int64_t(buffer->map_offset); break;
+    case BUFFER_MAP_LENGTH: v = std::int64_t(buffer->map_length); break;
+    case BUFFER_ACCESS:  // READ_WRITE when not mapped, as OpenGL's initial value
+      v = (flags & MAP_READ_BIT) && !(flags & MAP_WRITE_BIT) ? READ_ONLY
+          : (flags & MAP_WRITE_BIT) && !(flags & MAP_READ_BIT) ? WRITE_ONLY
+                                                                 : READ_WRITE;
+      break;
+    default: return s.SetError(INVALID_ENUM, what, "not a buffer parameter name"), false;
+  }
+  return true;
+}
+
+}  // namespace
+
+void Context::GetBufferParameteri64v(Enum target, Enum pname, std::int64_t* params) const {
+  std::int64_t v = 0;
+  if (BufferParameter(*state_, __func__, target, pname, v) && params != nullptr) *params = v;
+}
+
+void Context::GetBufferParameteriv(Enum target, Enum pname, int* params) const {
+  std::int64_t v = 0;
+  // Sizes beyond the int range read as the largest int (OpenGL's conversion of integer state to a smaller type).
+  if (BufferParameter(*state_, __func__, target, pname, v) && params != nullptr)
+    *params = int(std::clamp<std::int64_t>(v, INT32_MIN, INT32_MAX));
+}
+
+void Context::GetBufferPointerv(Enum target, Enum pname, void** params) const {
+  auto& s = *state_;
+  if (pname != BUFFER_MAP_POINTER) return s.SetError(INVALID_ENUM, __func__, "pname must be BUFFER_MAP_POINTER");
+  Buffer* buffer = s.BoundBuffer(__func__, target);
+  if (buffer == nullptr) return;
+  if (params != nullptr) *params = buffer->mapped ? buffer->data.data() + buffer->map_offset : nullptr;
+}
+
+// ---- Vertex arrays -------------------------------------------------------------------------------------------
+
+std::uint32_t Context::GenVertexArray() {
+  return NewId(state_->arrays, state_->next_array, [] { return std::make_unique<VertexArray>(); });
+}
+
+void Context::GenVertexArrays(int n, std::uint32_t* ids) {
+  GenMany(*state_, __func__, n, ids, [this] { return GenVertexArray(); });
+}
+
+void Context::DeleteVertexArray(std::uint32_t array) {
+  auto& s = *state_;
+  auto it = s.arrays.find(array);
+  if (it == s.arrays.end()) return;
+  if (s.vao == it->second.get()) {
+    s.vao = nullptr;
+    s.vao_id = 0;
+  }
+  s.arrays.erase(it);
+}
+
+bool Context::IsVertexArray(std::uint32_t array) const { return state_->arrays.count(array) != 0; }
+
+void Context::BindVertexArray(std::uint32_t array) {
+  auto& s = *state_;
+  if (array == 0) {
+    s.vao = nullptr;
+    s.vao_id = 0;
+    return;
+  }
+  auto it = s.arrays.find(array);
+  if (it == s.arrays.end()) return s.SetError(INVALID_OPERATION, __func__, "not a vertex array id made by GenVertexArray (or it was deleted)");
+  s.vao = it->second.get();
+  s.vao_id = array;
+}
+
+void Context::VertexAttributePointer(std::uint32_t index, int size, Enum type, bool normalized, int stride,
+                                     std::size_t offset) {
+  auto& s = *state_;
+  if (index >= std::uint32_t(kMaxVertexAttribs) || size < 1 || size > 4 || stride < 0)
+    return s.SetError(INVALID_VALUE, __func__, "a numeric argument is out of range");
+  if (detail::TypeSize(type) == 0) return s.SetError(INVALID_ENUM, __func__, "not an attribute type");
+  if (s.vao == nullptr) return s.SetError(INVALID_OPERATION, __func__, "no vertex array is bound");
+  if (!s.array_buffer && offset != 0) return s.SetError(INVALID_OPERATION, __func__, "no buffer bound to ARRAY_BUFFER (client-side arrays do not exist in a core profile)");
+  AttribBinding& a = s.vao->attrib[index];
+  a.buffer = s.array_buffer;
+  a.offset = offset;
+  a.size = size;
+  a.type = type;
+  a.normalized = normalized;
+  a.stride = stride;
+}
+
+void Context::EnableVertexAttribArray(std::uint32_t index) {
+  auto& s = *state_;
+  if (index >= std::uint32_t(kMaxVertexAttribs)) return s.SetError(INVALID_VALUE, __func__, "attribute index is kMaxVertexAttribs or more");
+  if (s.vao == nullptr) return s.SetError(INVALID_OPERATION, __func__, "no vertex array is bound");
+  s.vao->attrib[index].enabled = true;
+}
+
+void Context::DisableVertexAttribArray(std::uint32_t index) {
+  auto& s = *state_;
+  if (index >= std::uint32_t(kMaxVertexAttribs)) return s.SetError(INVALID_VALUE, __func__, "attribute index is kMaxVertexAttribs or more");
+  if (s.vao == nullptr) return s.SetError(INVALID_OPERATION, __func__, "no vertex array is bound");
+  s.vao->attrib[index].enabled = false;
+}
+
+void Context::VertexAttribDivisor(std::uint32_t index, std::uint32_t divisor) {
+  auto& s = *state_;
+  if (index >= std::uint32_t(kMaxVertexAttribs)) return s.SetError(INVALID_VALUE, __func__, "attribute index is kMaxVertexAttribs or more");
+  if (s.vao == nullptr) return s.SetError(INVALID_OPERATION, __func__, "no vertex array is bound");
+  s.vao->attrib[index].divisor = divisor;
+}
+
+void Context::VertexAttrib4f(std::uint32_t index, float x, float y, float z, float w) {
+  if (index >= std::uint32_t(kMaxVertexAttribs)) return state_->SetError(INVALID_VALUE, __func__, "attribute index is kMaxVertexAttribs or more");
+  state_->current_attrib[index] = glm::vec4(x, y, z, w);
+}
+
+}  // namespace softgl

@@ -1,0 +1,256 @@
+// context_draw.cpp — the draw calls: validation, index reading and primitive restart, and ContextState::Draw,
+// which resolves the bound objects into plain structs (FetchPlan, DrawState, DrawPacket) for the pipeline.
+#include "context_state.h"
+#include "vertex_fetch.h"
+#include "viewport.h"
+
+namespace softgl {
+
+// ---- Drawing -------------------------------------------------------------------------------------------------
+
+void ContextState::Draw(const detail::DrawCall& call) {
+  detail::FetchPlan plan;
+  for (int i = 0; i < kMaxVertexAttribs; ++i) {
+    const AttribBinding& a = vao->attrib[i];
+    detail::AttribSource& src = plan.attrib[i];
+    src.current = current_attrib[i];
+    src.enabled = a.enabled;
+    if (!a.enabled) continue;
+    src.data = a.buffer ? a.buffer->data.data() : nullptr;
+    src.size = a.buffer ? a.buffer->data.size() : 0;
+    src.offset = a.offset;
+    src.components = a.size;
+    src.type = a.type;
+    src.normalized = a.normalized;
+    src.divisor = a.divisor;
+    src.stride = a.stride ? std::size_t(a.stride) : std::size_t(a.size) * detail::TypeSize(a.type);
+  }
+
+  detail::RenderTarget target;
+  if (!DrawTarget(target)) return;
+
+  // The fragment stage's state, captured now: the shader's uniforms (a copy), the textures of every unit resolved
+  // once, the per-fragment operations.
+  detail::DrawPacket packet;
+  for (int u = 0; u < kMaxTextureUnits; ++u) {
+    if (units[u].tex_2d) {
+      packet.views[0][u] = detail::MakeView(*units[u].tex_2d);
+      packet.textures.unit_2d[u] = &packet.views[0][u];
+    }
+    if (units[u].cube) {
+      packet.views[1][u] = detail::MakeView(*units[u].cube);
+      packet.textures.unit_cube[u] = &packet.views[1][u];
+    }
+  }
+  packet.ops = ops;
+  for (int k = 0; k < 2; ++k)  // the active occlusion queries count this draw's fragments
+    if (active_query[k]) {
+      packet.occlusion[k] = queries.at(active_query[k])->counter;
+      packet.ops.occlusion[k] = packet.occlusion[k].get();
+    }
+  packet.nvar = program->VaryingFloats();
+  packet.interpolation = program->VaryingInterpolation();
+  packet.shader_depth = program->WritesDepth();
+
+  detail::DrawState ds;
+  ds.program = program;
+  ds.textures = &packet.textures;
+  ds.interpolation = packet.interpolation;
+  ds.viewport = detail::MakeViewportTransform(viewport[0], viewport[1], viewport[2], viewport[3], depth_near,
+                                              depth_far);
+  const detail::Rect fbr = ClearArea(target);  // draw target and scissor
+  ds.bounds = detail::Rect{std::max(ds.viewport.rect.x0, fbr.x0), std::max(ds.viewport.rect.y0, fbr.y0),
+                           std::min(ds.viewport.rect.x1, fbr.x1), std::min(ds.viewport.rect.y1, fbr.y1)};
+  ds.primitive = primitive;
+  if (active_query[2]) ds.primitives_generated = &queries.at(active_query[2])->count;
+  packet.bounds = ds.bounds;
+  if (!frame.Accepts(target)) Sync(__func__);
+  try {
+    packet.snapshot = program->Snapshot();
+    packet.program = packet.snapshot ? packet.snapshot.get() : program;
+    packet.early_depth = detail::EarlyDepthTestApplies(ops, packet.program->WritesDepth());
+    detail::RecordDraw(call, plan, ds, packet, target, frame, *pool, scratch);
+  } catch (const std::bad_alloc&) {
+    frame.Reset();
+    SetError(OUT_OF_MEMORY, __func__, "out of memory (recorded draws not yet rendered are dropped)");
+  } catch (const std::length_error&) {
+    frame.Reset();
+    SetError(OUT_OF_MEMORY, __func__, "out of memory (recorded draws not yet rendered are dropped)");
+  }
+  // A shader that cannot be copied is used as it is: render before the caller can change it.
+  if (!packet.snapshot) Sync(__func__);
+}
+
+namespace {
+
+// OpenGL 3.3 (2.9.3): reading a mapped buffer is INVALID_OPERATION. False, with the error set, when an enabled
+// attribute array's buffer (or, for indexed draws, the element buffer) is mapped. Needs a bound vertex array.
+bool CheckNotMapped(ContextState& s, const char* what, bool elements) {
+  bool mapped = elements && s.vao->element_buffer && s.vao->element_buffer->mapped;
+  for (const AttribBinding& a : s.vao->attrib) mapped = mapped || (a.enabled && a.buffer && a.buffer->mapped);
+  if (mapped) return s.SetError(INVALID_OPERATION, what, "a buffer the draw reads (an enabled attribute array's or the element buffer) is mapped"), false;
+  return true;
+}
+
+void DrawArraysChecked(ContextState& s, const char* what, Enum mode, int first, int count, int instances) {
+  if (detail::VerticesPerPrimitive(mode) == 0) return s.SetError(INVALID_ENUM, what, "mode is not a primitive mode");
+  if (first < 0 || count < 0) return s.SetError(INVALID_VALUE, what, "first or count is negative");
+  if (instances < 0) return s.SetError(INVALID_VALUE, what, "instancecount is negative");
+  if (s.vao == nullptr || s.program == nullptr) return s.SetError(INVALID_OPERATION, what, "needs a bound vertex array and a shader (UseProgram)");
+  if (!CheckNotMapped(s, what, false)) return;
+  if (instances == 0) return;
+  detail::DrawCall call;
+  call.mode = mode;
+  call.count = count;
+  call.first = std::uint32_t(first);
+  call.instances = instances;
+  s.Draw(call);
+}
+
+}  // namespace
+
+void Context::DrawArrays(Enum mode, int first, int count) { DrawArraysChecked(*state_, __func__, mode, first, count, 1); }
+
+void Context::DrawArraysInstanced(Enum mode, int first, int count, int instancecount) {
+  DrawArraysChecked(*state_, __func__, mode, first, count, instancecount);
+}
+
+namespace {
+
+// The checks DrawElement and its variants share (OpenGL 3.3, section 2.8.3): an error set, and false, when the
+// draw must not happen. `what` names the call in the error.
+bool CheckElements(ContextState& s, const char* what, Enum mode, Enum type) {
+  if (detail::VerticesPerPrimitive(mode) == 0) return s.SetError(INVALID_ENUM, what, "mode is not a primitive mode"), false;
+  if (type != UNSIGNED_BYTE && type != UNSIGNED_SHORT && type != UNSIGNED_INT) return s.SetError(INVALID_ENUM, what, "index type must be UNSIGNED_BYTE, UNSIGNED_SHORT or UNSIGNED_INT"), false;
+  return true;
+}
+bool CheckElementsBound(ContextState& s, const char* what) {
+  if (s.vao == nullptr || s.program == nullptr || !s.vao->element_buffer) return s.SetError(INVALID_OPERATION, what, "needs a bound vertex array with an element buffer, and a shader (UseProgram)"), false;
+  return CheckNotMapped(s, what, true);
+}
+bool CheckElementRange(ContextState& s, const char* what, int count, Enum type, std::size_t offset) {
+  const auto& store = s.vao->element_buffer->data;
+  const std::size_t bytes = std::size_t(count) * detail::TypeSize(type);
+  if (offset > store.size() || bytes > store.size() - offset) return s.SetError(INVALID_OPERATION, what, "the indices would be read past the end of the element buffer"), false;
+  return true;
+}
+
+// Draws count indices of `type` at byte `offset` of the bound element buffer, each plus `basevertex` (checked
+// already). An index whose sum with basevertex falls outside 0 .. 2^32 - 1 (undefined in OpenGL) becomes 2^32 - 1:
+// past the end of every buffer, so its attributes read (0, 0, 0, 1).
+void DrawIndexed(ContextState& s, const char* what, Enum mode, int count, Enum type, std::size_t offset,
+                 int basevertex, int instances = 1) {
+  if (count == 0 || instances == 0) return;
+  std::vector<std::uint32_t>& elements = s.scratch.elements;  // reused: no allocation (and page faults) per draw
+  try {
+    elements.resize(std::size_t(count));
+  } catch (const std::bad_alloc&) {
+    return s.SetError(OUT_OF_MEMORY, what, "out of memory");
+  }
+  detail::ReadIndices(type, s.vao->element_buffer->data.data() + offset, count, elements.data());
+  // Primitive restart: the positions of the restart index, compared before basevertex is added (OpenGL 4.6,
+  // section 10.3.6); PRIMITIVE_RESTART_FIXED_INDEX (2^N - 1 for N-bit indices) takes precedence. Each marker then
+  // takes its neighbour's value, so that it widens the range of indices shaded by nothing.
+  std::vector<std::uint32_t>& restarts = s.scratch.restarts;
+  restarts.clear();
+  if (s.primitive_restart || s.primitive_restart_fixed) {
+    const std::uint32_t marker = !s.primitive_restart_fixed ? s.restart_index
+                                 : type == UNSIGNED_BYTE    ? 0xFFu
+                                 : type == UNSIGNED_SHORT   ? 0xFFFFu
+                                                            : 0xFFFFFFFFu;
+    try {
+      for (int i = 0; i < count; ++i)
+        if (elements[std::size_t(i)] == marker) restarts.push_back(std::uint32_t(i));
+    } catch (const std::bad_alloc&) {
+      return s.SetError(OUT_OF_MEMORY, what, "out of memory");
+    }
+    if (restarts.size() == std::size_t(count)) return;  // nothing but restarts
+    for (std::uint32_t i : restarts) {  // the previous element (already replaced), or the first non-marker
+      if (i > 0) {
+        elements[i] = elements[i - 1];
+      } else {
+        std::size_t k = 0;
+        while (elements[k] == marker) ++k;
+        elements[0] = elements[k];
+      }
+    }
+  }
+  if (basevertex != 0)
+    for (std::uint32_t& e : elements) {
+      const std::int64_t v = std::int64_t(e) + basevertex;
+      e = (v < 0 || v > std::int64_t(UINT32_MAX)) ? UINT32_MAX : std::uint32_t(v);
+    }
+  detail::DrawCall call;
+  call.mode = mode;
+  call.count = count;
+  call.elements = elements.data();
+  call.instances = instances;
+  call.restarts = restarts.empty() ? nullptr : restarts.data();
+  call.restart_count = int(restarts.size());
+  s.Draw(call);
+}
+
+void DrawElementsChecked(ContextState& s, const char* what, Enum mode, int count, Enum type, std::size_t offset,
+                         int basevertex, int instances = 1) {
+  if (!CheckElements(s, what, mode, type)) return;
+  if (count < 0) return s.SetError(INVALID_VALUE, what, "count is negative");
+  if (instances < 0) return s.SetError(INVALID_VALUE, what, "instancecount is negative");
+  if (!CheckElementsBound(s, what) || !CheckElementRange(s, what, count, type, offset)) return;
+  DrawIndexed(s, what, mode, count, type, offset, basevertex, instances);
+}
+
+}  // namespace
+
+void Context::DrawElement(Enum mode, int count, Enum type, std::size_t offset) {
+  DrawElementsChecked(*state_, __func__, mode, count, type, offset, 0);
+}
+
+void Context::DrawElementsBaseVertex(Enum mode, int count, Enum type, std::size_t offset, int basevertex) {
+  DrawElementsChecked(*state_, __func__, mode, count, type, offset, basevertex);
+}
+
+void Context::DrawElementsInstanced(Enum mode, int count, Enum type, std::size_t offset, int instancecount) {
+  DrawElementsChecked(*state_, __func__, mode, count, type, offset, 0, instancecount);
+}
+
+void Context::DrawElementsInstancedBaseVertex(Enum mode, int count, Enum type, std::size_t offset, int instancecount,
+                                              int basevertex) {
+  DrawElementsChecked(*state_, __func__, mode, count, type, offset, basevertex, instancecount);
+}
+
+void Context::DrawRangeElements(Enum mode, std::uint32_t start, std::uint32_t end, int count, Enum type,
+                                std::size_t offset) {
+  auto& s = *state_;
+  if (!CheckElements(s, __func__, mode, type)) return;
+  if (count < 0) return s.SetError(INVALID_VALUE, __func__, "count is negative");
+  if (end < start) return s.SetError(INVALID_VALUE, __func__, "end is less than start");
+  if (!CheckElementsBound(s, __func__) || !CheckElementRange(s, __func__, count, type, offset)) return;
+  DrawIndexed(s, __func__, mode, count, type, offset, 0);
+}
+
+void Context::MultiDrawArrays(Enum mode, const int* first, const int* count, int drawcount) {
+  auto& s = *state_;
+  if (detail::VerticesPerPrimitive(mode) == 0) return s.SetError(INVALID_ENUM, __func__, "mode is not a primitive mode");
+  if (drawcount < 0) return s.SetError(INVALID_VALUE, __func__, "drawcount is negative");
+  if (drawcount > 0 && (first == nullptr || count == nullptr)) return s.SetError(INVALID_VALUE, __func__, "first or count is null");
+  for (int i = 0; i < drawcount; ++i)
+    if (first[i] < 0 || count[i] < 0) return s.SetError(INVALID_VALUE, __func__, "a first or count is negative");
+  if (s.vao == nullptr || s.program == nullptr) return s.SetError(INVALID_OPERATION, __func__, "needs a bound vertex array and a shader (UseProgram)");
+  if (!CheckNotMapped(s, __func__, false)) return;
+  for (int i = 0; i < drawcount; ++i) DrawArrays(mode, first[i], count[i]);
+}
+
+void Context::MultiDrawElements(Enum mode, const int* count, Enum type, const std::size_t* offsets, int drawcount) {
+  auto& s = *state_;
+  if (!CheckElements(s, __func__, mode, type)) return;
+  if (drawcount < 0) return s.SetError(INVALID_VALUE, __func__, "drawcount is negative");
+  if (drawcount > 0 && (count == nullptr || offsets == nullptr)) return s.SetError(INVALID_VALUE, __func__, "count or offsets is null");
+  for (int i = 0; i < drawcount; ++i)
+    if (count[i] < 0) return s.SetError(INVALID_VALUE, __func__, "a count is negative");
+  if (!CheckElementsBound(s, __func__)) return;
+  for (int i = 0; i < drawcount; ++i)
+    if (!CheckElementRange(s, __func__, count[i], type, offsets[i])) return;
+  for (int i = 0; i < drawcount; ++i) DrawIndexed(s, __func__, mode, count[i], type, offsets[i], 0);
+}
+
+}  // namespace softgl

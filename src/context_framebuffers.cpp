@@ -1,0 +1,762 @@
+// context_framebuffers.cpp — framebuffer objects and renderbuffers (attachments, completeness), the read buffer,
+// reading back (ReadPixels and its pack layout, CopyTexImage2D, GetTexImage), and BlitFramebuffer.
+#include "context_state.h"
+
+#include <cmath>
+#include <cstring>
+
+namespace softgl {
+
+// Section 9.4: why a framebuffer object cannot be drawn to, or FRAMEBUFFER_COMPLETE. Depth and stencil may be
+// separate images (OpenGL allows it; llvmpipe answers FRAMEBUFFER_UNSUPPORTED there).
+Enum FramebufferStatus(const FramebufferObject& f) {
+  bool any = false;
+  for (const Attachment& a : f.color) {
+    if (!a.Present()) continue;
+    any = true;
+    const detail::TextureLevel* l = a.Level();
+    if (!l->Defined() || detail::IsDepthFormat(l->format) || detail::HasStencil(l->format))
+      return FRAMEBUFFER_INCOMPLETE_ATTACHMENT;
+  }
+  if (f.depth.Present()) {
+    any = true;
+    const detail::TextureLevel* l = f.depth.Level();
+    if (!l->Defined() || !detail::IsDepthFormat(l->format)) return FRAMEBUFFER_INCOMPLETE_ATTACHMENT;
+  }
+  if (f.stencil.Present()) {
+    any = true;
+    const detail::TextureLevel* l = f.stencil.Level();
+    if (!l->Defined() || !detail::HasStencil(l->format)) return FRAMEBUFFER_INCOMPLETE_ATTACHMENT;
+  }
+  if (!any) return FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT;
+  for (Enum b : f.draw_buffers)
+    if (b != NONE && !f.color[b - COLOR_ATTACHMENT0].Present()) return FRAMEBUFFER_INCOMPLETE_DRAW_BUFFER;
+  return FRAMEBUFFER_COMPLETE;
+}
+
+// The buffers of a complete framebuffer object, drawn through its draw buffers; its size is the intersection of
+// its attachments'.
+detail::RenderTarget FramebufferTarget(const FramebufferObject& f) {
+  detail::RenderTarget t;
+  t.width = t.height = 1 << 30;
+  auto fit = [&](const Attachment& a) {
+    if (!a.Present()) return;
+    t.width = std::min(t.width, a.Level()->width);
+    t.height = std::min(t.height, a.Level()->height);
+  };
+  for (const Attachment& a : f.color) fit(a);
+  fit(f.depth);
+  fit(f.stencil);
+  for (int i = 0; i < kMaxColorOutputs; ++i) {
+    if (f.draw_buffers[i] == NONE) continue;
+    const Attachment& a = f.color[f.draw_buffers[i] - COLOR_ATTACHMENT0];
+    if (!a.Present()) continue;
+    detail::ColorBuffer& cb = t.color[i];
+    cb.data = const_cast<std::uint8_t*>(a.Level()->data.data());
+    cb.layout = a.Level()->layout;
+    cb.rgb_only = a.Level()->format == RGB8;
+    cb.pitch = a.Level()->width;
+  }
+  if (f.depth.Present()) {
+    t.depth = reinterpret_cast<float*>(const_cast<std::uint8_t*>(f.depth.Level()->data.data()));
+    t.depth_pitch = f.depth.Level()->width;
+  }
+  if (f.stencil.Present()) {
+    t.stencil = const_cast<std::uint8_t*>(f.stencil.Level()->stencil.data());
+    t.stencil_pitch = f.stencil.Level()->width;
+  }
+  return t;
+}
+
+// ---- Reading back --------------------------------------------------------------------------------------------
+
+namespace {
+
+// What ReadPixels and friends read: the context's framebuffer, or the framebuffer object bound for reading (its
+// read buffer as color[0], depth and stencil; nothing when it is incomplete). color[0] is absent when the read
+// buffer is NONE or names an empty attachment.
+detail::RenderTarget ReadTarget(ContextState& s) {
+  if (!s.read_fbo) {
+    detail::RenderTarget t = s.fb.Target();
+    if (s.default_read_buffer == NONE) t.color[0] = detail::ColorBuffer{};
+    return t;
+  }
+  if (FramebufferStatus(*s.read_fbo) != FRAMEBUFFER_COMPLETE) return {};
+  FramebufferObject reading = *s.read_fbo;  // reads the read buffer whatever the draw buffers say
+  reading.draw_buffers[0] = reading.read_buffer;
+  for (int i = 1; i < kMaxColorOutputs; ++i) reading.draw_buffers[i] = NONE;
+  return FramebufferTarget(reading);
+}
+}  // namespace
+
+Image Context::ReadPixels() const {
+  state_->Sync(__func__);
+  const detail::RenderTarget t = ReadTarget(*state_);
+  Image image;
+  if (!t.color[0].Present() || t.width <= 0 || t.height <= 0) return image;
+  image.width = t.width;
+  image.height = t.height;
+  image.rgba.resize(std::size_t(t.width) * std::size_t(t.height) * 4);
+  for (int y = 0; y < t.height; ++y)
+    for (int x = 0; x < t.width; ++x) {
+      const glm::vec4 c = t.color[0].Load(x, y);
+      std::uint8_t* dst = image.rgba.data() + (std::size_t(t.height - 1 - y) * std::size_t(t.width) + x) * 4;
+      for (int k = 0; k < 4; ++k) dst[k] = detail::FloatToUnorm8(c[k]);
+    }
+  return image;
+}
+
+void Context::ReadPixel(int x, int y, std::uint8_t rgba[4]) const {
+  state_->Sync(__func__);
+  const detail::RenderTarget t = ReadTarget(*state_);
+  std::memset(rgba, 0, 4);
+  if (!t.color[0].Present() || x < 0 || y < 0 || x >= t.width || y >= t.height) return;
+  const glm::vec4 c = t.color[0].Load(x, y);
+  for (int k = 0; k < 4; ++k) rgba[k] = detail::FloatToUnorm8(c[k]);
+}
+
+namespace {
+
+// How ReadPixels lays out one pixel: which RGBA channels, in order (-1 ends), or depth and/or stencil.
+struct PixelLayout {
+  int channels[4] = {-1, -1, -1, -1};
+  int count = 0;  // components per pixel (DEPTH_STENCIL with UNSIGNED_INT_24_8: one 32-bit word)
+  bool depth = false, stencil = false;
+};
+
+bool LayoutOf(Enum format, PixelLayout& l) {
+  auto set = [&](std::initializer_list<int> c) {
+    for (int k : c) l.channels[l.count++] = k;
+    return true;
+  };
+  switch (format) {
+    case RED: return set({0});
+    case GREEN: return set({1});
+    case BLUE: return set({2});
+    case RG: return set({0, 1});
+    case RGB: return set({0, 1, 2});
+    case BGR: return set({2, 1, 0});
+    case RGBA: return set({0, 1, 2, 3});
+    case BGRA: return set({2, 1, 0, 3});
+    case DEPTH_COMPONENT: l.depth = true; l.count = 1; return true;
+    case STENCIL_INDEX: l.stencil = true; l.count = 1; return true;
+    case DEPTH_STENCIL: l.depth = l.stencil = true; l.count = 1; return true;
+    default: return false;
+  }
+}
+
+// Writes normalized value v (clamped to [0, 1]) or, for stencil indices, the integer value as `type`.
+void PutComponent(Enum type, double v, bool integer, std::uint8_t* dst) {
+  switch (type) {
+    case UNSIGNED_BYTE: {
+      const auto b = std::uint8_t(integer ? v : std::lround(std::clamp(v, 0.0, 1.0) * 255.0));
+      *dst = b;
+      break;
+    }
+    case UNSIGNED_SHORT: {
+      const auto h = std::uint16_t(integer ? v : std::lround(std::clamp(v, 0.0, 1.0) * 65535.0));
+      std::memcpy(dst, &h, 2);
+      break;
+    }
+    case UNSIGNED_INT: {
+      const auto u = std::uint32_t(integer ? v : std::llround(std::clamp(v, 0.0, 1.0) * 4294967295.0));
+      std::memcpy(dst, &u, 4);
+      break;
+    }
+    default: {  // FLOAT
+      const auto f = float(v);
+      std::memcpy(dst, &f, 4);
+      break;
+    }
+  }
+}
+
+// OpenGL's pack layout: rows of PACK_ROW_LENGTH (or width) pixels, each row aligned to PACK_ALIGNMENT when a
+// component is smaller than the alignment, starting PACK_SKIP_ROWS rows and PACK_SKIP_PIXELS pixels in.
+struct PackLayout {
+  std::uint8_t* out;
+  std::size_t stride, pixel, component;
+  std::uint8_t* At(int i, int j) const { return out + std::size_t(j) * stride + std::size_t(i) * pixel; }
+};
+PackLayout Pack(const ContextState& s, int width, const PixelLayout& l, Enum type, void* pixels) {
+  PackLayout p;
+  p.component = type == UNSIGNED_BYTE ? 1 : type == UNSIGNED_SHORT ? 2 : 4;
+  p.pixel = p.component * std::size_t(l.count);
+  p.stride = std::size_t(s.pack_row_length > 0 ? s.pack_row_length : width) * p.pixel;
+  const std::size_t align = std::size_t(s.pack_alignment);
+  if (p.component < align) p.stride = (p.stride + align - 1) / align * align;
+  p.out = static_cast<std::uint8_t*>(pixels) + std::size_t(s.pack_skip_rows) * p.stride +
+          std::size_t(s.pack_skip_pixels) * p.pixel;
+  return p;
+}
+
+}  // namespace
+
+void Context::ReadPixels(int x, int y, int width, int height, Enum format, Enum type, void* pixels) const {
+  auto& s = *state_;
+  PixelLayout l;
+  if (!LayoutOf(format, l)) return s.SetError(INVALID_ENUM, __func__, "not a pixel format ReadPixels knows");
+  if (type != UNSIGNED_BYTE && type != UNSIGNED_SHORT && type != UNSIGNED_INT && type != FLOAT &&
+      type != UNSIGNED_INT_24_8)
+    return s.SetError(INVALID_ENUM, __func__, "type must be UNSIGNED_BYTE, UNSIGNED_SHORT, UNSIGNED_INT, FLOAT or UNSIGNED_INT_24_8");
+  if (width < 0 || height < 0) return s.SetError(INVALID_VALUE, __func__, "width or height is negative");
+  if ((format == DEPTH_STENCIL) != (type == UNSIGNED_INT_24_8)) return s.SetError(INVALID_OPERATION, __func__, "DEPTH_STENCIL goes with UNSIGNED_INT_24_8, and only it");
+  if (s.read_fbo && FramebufferStatus(*s.read_fbo) != FRAMEBUFFER_COMPLETE) return s.SetError(INVALID_FRAMEBUFFER_OPERATION, __func__, "the read framebuffer is not complete");
+  s.Sync(__func__);
+  const detail::RenderTarget t = ReadTarget(s);
+  if ((l.depth && !t.depth) || (l.stencil && !t.stencil) || (l.count > 0 && !l.depth && !l.stencil && !t.color[0].Present()))
+    return s.SetError(INVALID_OPERATION, __func__, "the read framebuffer has no buffer of that kind");
+  if (pixels == nullptr || width == 0 || height == 0) return;
+  const PackLayout pack = Pack(s, width, l, type, pixels);
+  const std::size_t component = pack.component;
+  // Only pixels inside the read buffer are written (the others are undefined in OpenGL: left as they are).
+  const int x0 = std::max(x, 0), y0 = std::max(y, 0);
+  const int x1 = int(std::min<std::int64_t>(std::int64_t(x) + width, t.width));
+  const int y1 = int(std::min<std::int64_t>(std::int64_t(y) + height, t.height));
+  for (int py = y0; py < y1; ++py)
+    for (int px = x0; px < x1; ++px) {
+      std::uint8_t* dst = pack.At(px - x, py - y);
+      if (format == DEPTH_STENCIL) {
+        const double d = std::clamp(double(t.Depth(px, py)), 0.0, 1.0);
+        const std::uint32_t word = std::uint32_t(std::llround(d * 16777215.0)) << 8 | t.Stencil(px, py);
+        std::memcpy(dst, &word, 4);
+      } else if (l.depth) {
+        PutComponent(type, double(t.Depth(px, py)), false, dst);
+      } else if (l.stencil) {
+        PutComponent(type, double(t.Stencil(px, py)), true, dst);
+      } else {
+        const glm::vec4 c = t.color[0].Load(px, py);
+        // A fixed-point buffer's b / 255 gives back b for UNSIGNED_BYTE; a float buffer's values are clamped only
+        // when converted to a normalized type.
+        for (int k = 0; k < l.count; ++k)
+          PutComponent(type, double(c[l.channels[k]]), false, dst + std::size_t(k) * component);
+      }
+    }
+}
+
+void Context::GetTexImage(Enum target, int level, Enum format, Enum type, void* pixels) const {
+  auto& s = *state_;
+  if (!IsTexImageTarget(target)) return s.SetError(INVALID_ENUM, __func__, "target must be TEXTURE_2D or a TEXTURE_CUBE_MAP_* face");
+  PixelLayout l;
+  if (!LayoutOf(format, l) || (l.stencil && !l.depth)) return s.SetError(INVALID_ENUM, __func__, "format must be a colour format, DEPTH_COMPONENT or DEPTH_STENCIL");
+  if (type != UNSIGNED_BYTE && type != UNSIGNED_SHORT && type != UNSIGNED_INT && type != FLOAT && type != UNSIGNED_INT_24_8)
+    return s.SetError(INVALID_ENUM, __func__, "type must be UNSIGNED_BYTE, UNSIGNED_SHORT, UNSIGNED_INT, FLOAT or UNSIGNED_INT_24_8");
+  if ((format == DEPTH_STENCIL) != (type == UNSIGNED_INT_24_8)) return s.SetError(INVALID_OPERATION, __func__, "DEPTH_STENCIL goes with UNSIGNED_INT_24_8, and only it");
+  if (level < 0 || level >= detail::kMaxLevels) return s.SetError(INVALID_VALUE, __func__, "level is negative or beyond the largest mipmap level");
+  int face = 0;
+  const detail::TextureObject* tex = s.Bound(target, &face);
+  if (!tex) return s.SetError(INVALID_OPERATION, __func__, "no texture is bound to that target of the active unit");
+  const detail::TextureLevel& lv = tex->levels[face][level];
+  if (!lv.Defined() || pixels == nullptr) return;  // an undefined level has no texels to return
+  if (detail::IsDepthFormat(lv.format) != l.depth) return s.SetError(INVALID_OPERATION, __func__, "DEPTH_COMPONENT for a colour texture, or the reverse");
+  if (l.stencil && lv.stencil.empty()) return s.SetError(INVALID_OPERATION, __func__, "DEPTH_STENCIL for a texture without stencil");
+  s.Sync(__func__);  // a texture being rendered into holds its texels once the recorded draws are rendered
+  const PackLayout pack = Pack(s, lv.width, l, type, pixels);
+  for (int j = 0; j < lv.height; ++j)
+    for (int i = 0; i < lv.width; ++i) {
+      const glm::vec4 c = lv.Texel(i, j);
+      std::uint8_t* dst = pack.At(i, j);
+      if (l.stencil) {
+        const double d = std::clamp(double(c.r), 0.0, 1.0);
+        const std::uint32_t word = std::uint32_t(std::llround(d * 16777215.0)) << 8 |
+                                   lv.stencil[std::size_t(j) * std::size_t(lv.width) + std::size_t(i)];
+        std::memcpy(dst, &word, 4);
+      } else if (l.depth) {
+        PutComponent(type, double(c.r), false, dst);
+      } else {
+        for (int k = 0; k < l.count; ++k)
+          PutComponent(type, double(c[l.channels[k]]), false, dst + std::size_t(k) * pack.component);
+      }
+    }
+}
+
+namespace {
+
+// The checks CopyTexImage2D and CopyTexSubImage2D share about the read framebuffer: complete, and holding the kind
+// of buffer the texture needs. False with the error set otherwise.
+bool CheckCopySource(ContextState& s, const char* what, bool depth) {
+  if (s.read_fbo && FramebufferStatus(*s.read_fbo) != FRAMEBUFFER_COMPLETE) return s.SetError(INVALID_FRAMEBUFFER_OPERATION, what, "the read framebuffer is not complete"), false;
+  const detail::RenderTarget t = ReadTarget(s);
+  if (depth ? !t.depth : !t.color[0].Present()) return s.SetError(INVALID_OPERATION, what, "the read framebuffer has no buffer of the texture's kind"), false;
+  return true;
+}
+
+// Copies the read framebuffer's rectangle (x, y, w, h) into level `lv` at (xo, yo); checked already. Pixels outside
+// the framebuffer (undefined in OpenGL) copy as zero.
+void CopyToLevel(ContextState& s, const char* what, detail::TextureLevel& lv, int xo, int yo, int x, int y, int w, int h) {
+  s.Sync(what);
+  const detail::RenderTarget t = ReadTarget(s);
+  const bool depth = detail::IsDepthFormat(lv.format);
+  std::vector<float> rect(std::size_t(w) * std::size_t(h) * (depth ? 1 : 4), 0.0f);  // read first: the
+  for (int j = 0; j < h; ++j)                                                          // source may be lv itself
+    for (int i = 0; i < w; ++i) {
+      const int px = x + i, py = y + j;
+      if (px < 0 || py < 0 || px >= t.width || py >= t.height) continue;
+      float* dst = rect.data() + (std::size_t(j) * std::size_t(w) + std::size_t(i)) * (depth ? 1 : 4);
+      if (depth) {
+        *dst = t.Depth(px, py);
+      } else {
+        const glm::vec4 c = t.color[0].Load(px, py);
+        for (int k = 0; k < 4; ++k) dst[k] = c[k];
+      }
+    }
+  detail::UploadPixels(lv, xo, yo, w, h, depth ? DEPTH_COMPONENT : RGBA, FLOAT, 4, rect.data());
+  if (lv.stencil.empty() || !t.stencil) return;  // a depth-stencil texture takes the stencil indices too
+  std::vector<std::uint8_t> indices(std::size_t(w) * std::size_t(h), 0);
+  for (int j = 0; j < h; ++j)
+    for (int i = 0; i < w; ++i) {
+      const int px = x + i, py = y + j;
+      if (px >= 0 && py >= 0 && px < t.width && py < t.height)
+        indices[std::size_t(j) * std::size_t(w) + std::size_t(i)] = t.Stencil(px, py);
+    }
+  for (int j = 0; j < h; ++j)
+    std::memcpy(lv.stencil.data() + std::size_t(yo + j) * std::size_t(lv.width) + std::size_t(xo),
+                indices.data() + std::size_t(j) * std::size_t(w), std::size_t(w));
+}
+
+}  // namespace
+
+void Context::CopyTexSubImage2D(Enum target, int level, int xoffset, int yoffset, int x, int y, int width,
+                                int height) {
+  auto& s = *state_;
+  if (!IsTexImageTarget(target)) return s.SetError(INVALID_ENUM, __func__, "target must be TEXTURE_2D or a TEXTURE_CUBE_MAP_* face");
+  if (level < 0 || level >= detail::kMaxLevels) return s.SetError(INVALID_VALUE, __func__, "level is negative or beyond the largest mipmap level");
+  int face = 0;
+  detail::TextureObject* tex = s.Bound(target, &face);
+  if (!tex || !tex->levels[face][level].Defined()) return s.SetError(INVALID_OPERATION, __func__, "no texture bound, or that level is not defined");
+  detail::TextureLevel& lv = tex->levels[face][level];
+  if (xoffset < 0 || yoffset < 0 || width < 0 || height < 0 || std::int64_t(xoffset) + width > lv.width ||
+      std::int64_t(yoffset) + height > lv.height)
+    return s.SetError(INVALID_VALUE, __func__, "the rectangle is outside the level");
+  if (!CheckCopySource(s, __func__, detail::IsDepthFormat(lv.format))) return;
+  try {
+    CopyToLevel(s, __func__, lv, xoffset, yoffset, x, y, width, height);
+  } catch (const std::bad_alloc&) {
+    s.SetError(OUT_OF_MEMORY, __func__, "out of memory");
+  }
+}
+
+void Context::CopyTexImage2D(Enum target, int level, Enum internal_format, int x, int y, int width, int height,
+                             int border) {
+  auto& s = *state_;
+  if (!IsTexImageTarget(target)) return s.SetError(INVALID_ENUM, __func__, "target must be TEXTURE_2D or a TEXTURE_CUBE_MAP_* face");
+  if (level < 0 || level >= detail::kMaxLevels || width < 0 || height < 0 || width > kMaxTextureSize ||
+      height > kMaxTextureSize || border != 0 || detail::FormatComponents(internal_format) == 0)
+    return s.SetError(INVALID_VALUE, __func__, "a numeric argument is out of range");
+  if (CubeFaceIndex(target) >= 0 && width != height) return s.SetError(INVALID_VALUE, __func__, "cube map faces must be square");
+  int face = 0;
+  detail::TextureObject* tex = s.Bound(target, &face);
+  if (!tex) return s.SetError(INVALID_OPERATION, __func__, "no texture is bound to that target of the active unit");
+  if (!CheckCopySource(s, __func__, detail::IsDepthFormat(internal_format))) return;
+  try {
+    s.Sync(__func__);  // the old level may be what recorded draws sample or render into
+    detail::TextureLevel next;
+    next.Allocate(internal_format, width, height);
+    CopyToLevel(s, __func__, next, 0, 0, x, y, width, height);
+    tex->levels[face][level] = std::move(next);
+  } catch (const std::bad_alloc&) {
+    s.SetError(OUT_OF_MEMORY, __func__, "out of memory");
+  }
+}
+
+float Context::ReadDepth(int x, int y) const {
+  state_->Sync(__func__);
+  const detail::RenderTarget t = ReadTarget(*state_);
+  if (!t.depth || x < 0 || y < 0 || x >= t.width || y >= t.height) return 0.0f;
+  return t.Depth(x, y);
+}
+
+std::uint8_t Context::ReadStencil(int x, int y) const {
+  state_->Sync(__func__);
+  const detail::RenderTarget t = ReadTarget(*state_);
+  if (!t.stencil || x < 0 || y < 0 || x >= t.width || y >= t.height) return 0;
+  return t.Stencil(x, y);
+}
+
+
+// ---- Framebuffer objects -------------------------------------------------------------------------------------
+
+std::uint32_t Context::GenFramebuffer() {
+  return NewId(state_->framebuffers, state_->next_framebuffer, [] { return std::make_unique<FramebufferObject>(); });
+}
+
+void Context::GenFramebuffers(int n, std::uint32_t* ids) {
+  GenMany(*state_, __func__, n, ids, [this] { return GenFramebuffer(); });
+}
+
+void Context::DeleteFramebuffer(std::uint32_t framebuffer) {
+  state_->Sync(__func__);
+  auto& s = *state_;
+  auto it = s.framebuffers.find(framebuffer);
+  if (it == s.framebuffers.end()) return;
+  if (s.draw_fbo == it->second.get()) s.draw_fbo = nullptr;
+  if (s.read_fbo == it->second.get()) s.read_fbo = nullptr;
+  s.framebuffers.erase(it);
+}
+
+bool Context::IsFramebuffer(std::uint32_t framebuffer) const { return state_->framebuffers.count(framebuffer) != 0; }
+
+void Context::BindFramebuffer(Enum target, std::uint32_t framebuffer) {
+  state_->Sync(__func__);
+  auto& s = *state_;
+  if (target != FRAMEBUFFER && target != DRAW_FRAMEBUFFER && target != READ_FRAMEBUFFER)
+    return s.SetError(INVALID_ENUM, __func__, "an enum argument is not one this call accepts");
+  FramebufferObject* f = nullptr;
+  if (framebuffer != 0) {
+    auto it = s.framebuffers.find(framebuffer);
+    if (it == s.framebuffers.end()) return s.SetError(INVALID_OPERATION, __func__, "not a framebuffer id made by GenFramebuffer (or it was deleted)");
+    f = it->second.get();
+  }
+  if (target != READ_FRAMEBUFFER) s.draw_fbo = f;
+  if (target != DRAW_FRAMEBUFFER) s.read_fbo = f;
+}
+
+namespace {
+
+// The attachment points an attachment enum names in f (two for DEPTH_STENCIL_ATTACHMENT), or none with
+// INVALID_ENUM recorded.
+int AttachmentSlots(ContextState& s, const char* what, FramebufferObject& f, Enum attachment, Attachment* slots[2]) {
+  if (attachment >= COLOR_ATTACHMENT0 && attachment < COLOR_ATTACHMENT0 + kMaxColorOutputs) {
+    slots[0] = &f.color[attachment - COLOR_ATTACHMENT0];
+    return 1;
+  }
+  switch (attachment) {
+    case DEPTH_ATTACHMENT: slots[0] = &f.depth; return 1;
+    case STENCIL_ATTACHMENT: slots[0] = &f.stencil; return 1;
+    case DEPTH_STENCIL_ATTACHMENT: slots[0] = &f.depth; slots[1] = &f.stencil; return 2;
+    default:
+      s.SetError(INVALID_ENUM, what, "attachment must be COLOR_ATTACHMENT0..3, DEPTH_ATTACHMENT, STENCIL_ATTACHMENT or DEPTH_STENCIL_ATTACHMENT");
+      return 0;
+  }
+}
+
+// The attachment points `attachment` names in the framebuffer object bound to `target` (two for
+// DEPTH_STENCIL_ATTACHMENT), or 0 with the error recorded: a bad target or attachment (INVALID_ENUM, checked
+// first), the context's own framebuffer bound (INVALID_OPERATION).
+int TargetAttachment(ContextState& s, const char* what, Enum target, Enum attachment, Attachment* slots[2]) {
+  if (target != FRAMEBUFFER && target != DRAW_FRAMEBUFFER && target != READ_FRAMEBUFFER)
+    return s.SetError(INVALID_ENUM, what, "target must be FRAMEBUFFER, DRAW_FRAMEBUFFER or READ_FRAMEBUFFER"), 0;
+  FramebufferObject probe;
+  if (AttachmentSlots(s, what, probe, attachment, slots) == 0) return 0;
+  FramebufferObject* f = target == READ_FRAMEBUFFER ? s.read_fbo : s.draw_fbo;
+  if (!f) return s.SetError(INVALID_OPERATION, what, "no framebuffer object is bound to target"), 0;
+  return AttachmentSlots(s, what, *f, attachment, slots);
+}
+
+}  // namespace
+
+void Context::FramebufferTexture2D(Enum target, Enum attachment, Enum textarget, std::uint32_t texture, int level) {
+  state_->Sync(__func__);
+  auto& s = *state_;
+  Attachment* slots[2] = {nullptr, nullptr};
+  const int n = TargetAttachment(s, __func__, target, attachment, slots);
+  if (n == 0) return;
+  if (texture == 0) {
+    for (int k = 0; k < n; ++k) *slots[k] = Attachment{};
+    return;
+  }
+  if (!IsTexImageTarget(textarget)) return s.SetError(INVALID_ENUM, __func__, "textarget must be TEXTURE_2D or a TEXTURE_CUBE_MAP_* face");
+  auto it = s.textures.find(texture);
+  if (it == s.textures.end()) return s.SetError(INVALID_OPERATION, __func__, "not a texture id made by GenTexture (or it was deleted)");
+  const Enum kind = textarget == TEXTURE_2D ? TEXTURE_2D : TEXTURE_CUBE_MAP;
+  if (it->second->target != kind) return s.SetError(INVALID_OPERATION, __func__, "textarget does not match the texture (2D or cube map)");
+  if (level < 0 || level >= detail::kMaxLevels) return s.SetError(INVALID_VALUE, __func__, "level is negative or beyond the largest mipmap level");
+  for (int k = 0; k < n; ++k) {
+    *slots[k] = Attachment{};
+    slots[k]->texture = it->second;
+    slots[k]->face = kind == TEXTURE_2D ? 0 : CubeFaceIndex(textarget);
+    slots[k]->level = level;
+  }
+}
+
+void Context::FramebufferRenderbuffer(Enum target, Enum attachment, Enum renderbuffer_target,
+                                      std::uint32_t renderbuffer) {
+  state_->Sync(__func__);
+  auto& s = *state_;
+  if (renderbuffer_target != RENDERBUFFER) return s.SetError(INVALID_ENUM, __func__, "renderbuffer_target must be RENDERBUFFER");
+  Attachment* slots[2] = {nullptr, nullptr};
+  const int n = TargetAttachment(s, __func__, target, attachment, slots);
+  if (n == 0) return;
+  std::shared_ptr<Renderbuffer> object;
+  if (renderbuffer != 0) {
+    auto it = s.renderbuffers.find(renderbuffer);
+    if (it == s.renderbuffers.end()) return s.SetError(INVALID_OPERATION, __func__, "not a renderbuffer id made by GenRenderbuffer (or it was deleted)");
+    object = it->second;
+  }
+  for (int k = 0; k < n; ++k) {
+    *slots[k] = Attachment{};
+    slots[k]->renderbuffer = object;
+  }
+}
+
+void Context::GetFramebufferAttachmentParameteriv(Enum target, Enum attachment, Enum pname, int* params) {
+  auto& s = *state_;
+  Attachment* slots[2] = {nullptr, nullptr};
+  const int n = TargetAttachment(s, __func__, target, attachment, slots);
+  if (n == 0) return;
+  const Attachment& a = *slots[0];
+  if (n == 2 && (a.texture != slots[1]->texture || a.renderbuffer != slots[1]->renderbuffer || a.level != slots[1]->level || a.face != slots[1]->face))
+    return s.SetError(INVALID_OPERATION, __func__, "DEPTH_STENCIL_ATTACHMENT asked while depth and stencil hold different images");
+  int v = 0;
+  switch (pname) {
+    case FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE: v = int(a.texture ? TEXTURE : a.renderbuffer ? RENDERBUFFER : NONE); break;
+    case FRAMEBUFFER_ATTACHMENT_OBJECT_NAME:
+      v = int(a.texture ? IdOf(s.textures, a.texture.get()) : IdOf(s.renderbuffers, a.renderbuffer.get()));
+      break;
+    case FRAMEBUFFER_ATTACHMENT_TEXTURE_LEVEL:
+    case FRAMEBUFFER_ATTACHMENT_TEXTURE_CUBE_MAP_FACE:
+      if (!a.texture) return s.SetError(a.Present() ? INVALID_ENUM : INVALID_OPERATION, __func__, "no texture is attached there");
+      v = pname == FRAMEBUFFER_ATTACHMENT_TEXTURE_LEVEL ? a.level
+          : a.texture->target == TEXTURE_CUBE_MAP     ? int(TEXTURE_CUBE_MAP_POSITIVE_X) + a.face
+                                                      : 0;
+      break;
+    default: return s.SetError(INVALID_ENUM, __func__, "pname must be FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, _OBJECT_NAME, _TEXTURE_LEVEL or _TEXTURE_CUBE_MAP_FACE");
+  }
+  if (params) *params = v;
+}
+
+// ---- Renderbuffers -------------------------------------------------------------------------------------------
+
+namespace {
+
+// The sized format RenderbufferStorage stores for `f` (an unsized base format takes its 8-bit or 24-bit size, as
+// Mesa does), or 0 when drawing cannot render to it.
+Enum SizedRenderbufferFormat(Enum f) {
+  switch (f) {
+    case RGBA: return RGBA8;
+    case RGB: return RGB8;
+    case RG: return RG8;
+    case RED: return R8;
+    case DEPTH_COMPONENT: return DEPTH_COMPONENT24;
+    case DEPTH_STENCIL: return DEPTH24_STENCIL8;
+    case STENCIL_INDEX: return STENCIL_INDEX8;
+    case RGBA8: case RGB8: case RG8: case R8: case RGBA32F: case R32F: case DEPTH_COMPONENT16:
+    case DEPTH_COMPONENT24: case DEPTH_COMPONENT32F: case DEPTH24_STENCIL8: case DEPTH32F_STENCIL8:
+    case STENCIL_INDEX8: return f;
+    default: return 0;
+  }
+}
+
+// Bits of a sized format's red, green, blue, alpha, depth and stencil, as OpenGL reports them.
+struct FormatBits {
+  int r = 0, g = 0, b = 0, a = 0, depth = 0, stencil = 0;
+};
+FormatBits BitsOf(Enum f) {
+  switch (f) {
+    case RGBA8: return {8, 8, 8, 8, 0, 0};
+    case RGB8: return {8, 8, 8, 0, 0, 0};
+    case RG8: return {8, 8, 0, 0, 0, 0};
+    case R8: return {8, 0, 0, 0, 0, 0};
+    case RGBA32F: return {32, 32, 32, 32, 0, 0};
+    case R32F: return {32, 0, 0, 0, 0, 0};
+    case DEPTH_COMPONENT16: return {0, 0, 0, 0, 16, 0};
+    case DEPTH_COMPONENT:
+    case DEPTH_COMPONENT24: return {0, 0, 0, 0, 24, 0};
+    case DEPTH_COMPONENT32F: return {0, 0, 0, 0, 32, 0};
+    case DEPTH24_STENCIL8: return {0, 0, 0, 0, 24, 8};
+    case DEPTH32F_STENCIL8: return {0, 0, 0, 0, 32, 8};
+    case STENCIL_INDEX8: return {0, 0, 0, 0, 0, 8};
+    default: return {};
+  }
+}
+
+Renderbuffer* BoundRenderbuffer(ContextState& s, const char* what, Enum target) {
+  if (target != RENDERBUFFER) return s.SetError(INVALID_ENUM, what, "target must be RENDERBUFFER"), nullptr;
+  if (!s.renderbuffer) return s.SetError(INVALID_OPERATION, what, "no renderbuffer is bound"), nullptr;
+  return s.renderbuffer.get();
+}
+
+}  // namespace
+
+std::uint32_t Context::GenRenderbuffer() {
+  return NewId(state_->renderbuffers, state_->next_renderbuffer, [] { return std::make_shared<Renderbuffer>(); });
+}
+
+void Context::GenRenderbuffers(int n, std::uint32_t* ids) {
+  GenMany(*state_, __func__, n, ids, [this] { return GenRenderbuffer(); });
+}
+
+void Context::DeleteRenderbuffer(std::uint32_t renderbuffer) {
+  state_->Sync(__func__);
+  auto& s = *state_;
+  auto it = s.renderbuffers.find(renderbuffer);
+  if (it == s.renderbuffers.end()) return;
+  const Renderbuffer* dead = it->second.get();
+  if (s.renderbuffer.get() == dead) s.renderbuffer.reset();
+  for (FramebufferObject* f : {s.draw_fbo, s.read_fbo}) {
+    if (!f) continue;
+    for (Attachment* a : {&f->color[0], &f->color[1], &f->color[2], &f->color[3], &f->depth, &f->stencil})
+      if (a->renderbuffer.get() == dead) *a = Attachment{};
+  }
+  s.renderbuffers.erase(it);
+}
+
+bool Context::IsRenderbuffer(std::uint32_t renderbuffer) const {
+  return state_->renderbuffers.count(renderbuffer) != 0;
+}
+
+void Context::BindRenderbuffer(Enum target, std::uint32_t renderbuffer) {
+  auto& s = *state_;
+  if (target != RENDERBUFFER) return s.SetError(INVALID_ENUM, __func__, "target must be RENDERBUFFER");
+  std::shared_ptr<Renderbuffer> object;
+  if (renderbuffer != 0) {
+    auto it = s.renderbuffers.find(renderbuffer);
+    if (it == s.renderbuffers.end()) return s.SetError(INVALID_OPERATION, __func__, "not a renderbuffer id made by GenRenderbuffer (or it was deleted)");
+    object = it->second;
+  }
+  s.renderbuffer = std::move(object);
+}
+
+void Context::RenderbufferStorage(Enum target, Enum internal_format, int width, int height) {
+  auto& s = *state_;
+  Renderbuffer* rb = BoundRenderbuffer(s, __func__, target);
+  if (!rb) return;
+  const Enum sized = SizedRenderbufferFormat(internal_format);
+  if (sized == 0) return s.SetError(INVALID_ENUM, __func__, "internal_format is not a colour, depth or stencil format drawing can render to");
+  if (width < 0 || height < 0 || width > kMaxFramebufferSize || height > kMaxFramebufferSize)
+    return s.SetError(INVALID_VALUE, __func__, "width or height is negative or above MAX_RENDERBUFFER_SIZE");
+  s.Sync(__func__);  // recorded draws may render into the old image
+  detail::TextureLevel next;
+  try {
+    next.Allocate(sized, width, height);
+  } catch (const std::bad_alloc&) {
+    return s.SetError(OUT_OF_MEMORY, __func__, "out of memory");
+  }
+  rb->image = std::move(next);
+  rb->internal_format = internal_format;
+}
+
+void Context::GetRenderbufferParameteriv(Enum target, Enum pname, int* params) {
+  auto& s = *state_;
+  const Renderbuffer* rb = BoundRenderbuffer(s, __func__, target);
+  if (!rb) return;
+  const FormatBits bits = BitsOf(rb->image.format);
+  int v = 0;
+  switch (pname) {
+    case RENDERBUFFER_WIDTH: v = rb->image.width; break;
+    case RENDERBUFFER_HEIGHT: v = rb->image.height; break;
+    case RENDERBUFFER_INTERNAL_FORMAT: v = int(rb->internal_format); break;
+    case RENDERBUFFER_RED_SIZE: v = bits.r; break;
+    case RENDERBUFFER_GREEN_SIZE: v = bits.g; break;
+    case RENDERBUFFER_BLUE_SIZE: v = bits.b; break;
+    case RENDERBUFFER_ALPHA_SIZE: v = bits.a; break;
+    case RENDERBUFFER_DEPTH_SIZE: v = bits.depth; break;
+    case RENDERBUFFER_STENCIL_SIZE: v = bits.stencil; break;
+    case RENDERBUFFER_SAMPLES: v = 0; break;
+    default: return s.SetError(INVALID_ENUM, __func__, "pname is not a renderbuffer parameter");
+  }
+  if (params) *params = v;
+}
+
+// ---- Read buffer and blits -----------------------------------------------------------------------------------
+
+void Context::ReadBuffer(Enum src) {
+  auto& s = *state_;
+  const bool attachment = src >= COLOR_ATTACHMENT0 && src < COLOR_ATTACHMENT0 + 32;
+  const bool window = src == FRONT || src == BACK || src == LEFT || src == FRONT_LEFT || src == BACK_LEFT ||
+                      src == FRONT_AND_BACK;
+  const bool right = src == RIGHT || src == FRONT_RIGHT || src == BACK_RIGHT;
+  if (src != NONE && !attachment && !window && !right) return s.SetError(INVALID_ENUM, __func__, "src must be NONE, a colour buffer of the context's framebuffer or COLOR_ATTACHMENTi");
+  if (s.read_fbo) {
+    if (window || right) return s.SetError(INVALID_OPERATION, __func__, "a framebuffer object is bound for reading: src must be NONE or COLOR_ATTACHMENTi");
+    if (attachment && src >= COLOR_ATTACHMENT0 + kMaxColorOutputs) return s.SetError(INVALID_OPERATION, __func__, "COLOR_ATTACHMENTi with i at or above MAX_COLOR_ATTACHMENTS");
+    s.read_fbo->read_buffer = src;
+    return;
+  }
+  if (attachment || right) return s.SetError(INVALID_OPERATION, __func__, "the context's framebuffer has one colour buffer (FRONT, BACK, LEFT ...), no attachments or right buffers");
+  s.default_read_buffer = src;
+}
+
+namespace {
+
+// The depth and stencil formats BlitFramebuffer compares (OpenGL requires them to match): the bits of the read or
+// draw framebuffer's depth buffer and stencil buffer, 0 where there is none. The context's framebuffer counts as
+// DEPTH24_STENCIL8 (its depth is stored as float, as every depth format is).
+FormatBits DepthStencilBits(const FramebufferObject* f) {
+  if (!f) return BitsOf(DEPTH24_STENCIL8);
+  FormatBits b;
+  if (f->depth.Present()) b.depth = BitsOf(f->depth.Level()->format).depth;
+  if (f->stencil.Present()) b.stencil = BitsOf(f->stencil.Level()->format).stencil;
+  if (b.depth == 32) b.r = 1;  // float depth: a kind of its own (r marks it)
+  return b;
+}
+
+}  // namespace
+
+void Context::BlitFramebuffer(int src_x0, int src_y0, int src_x1, int src_y1, int dst_x0, int dst_y0, int dst_x1,
+                              int dst_y1, Bitfield mask, Enum filter) {
+  auto& s = *state_;
+  if ((mask & ~(COLOR_BUFFER_BIT | DEPTH_BUFFER_BIT | STENCIL_BUFFER_BIT)) != 0)
+    return s.SetError(INVALID_VALUE, __func__, "mask has bits other than COLOR_BUFFER_BIT, DEPTH_BUFFER_BIT and STENCIL_BUFFER_BIT");
+  if (filter != NEAREST && filter != LINEAR) return s.SetError(INVALID_ENUM, __func__, "filter must be NEAREST or LINEAR");
+  if (filter == LINEAR && (mask & (DEPTH_BUFFER_BIT | STENCIL_BUFFER_BIT)) != 0)
+    return s.SetError(INVALID_OPERATION, __func__, "depth and stencil are blitted with NEAREST only");
+  if ((s.read_fbo && FramebufferStatus(*s.read_fbo) != FRAMEBUFFER_COMPLETE) ||
+      (s.draw_fbo && FramebufferStatus(*s.draw_fbo) != FRAMEBUFFER_COMPLETE))
+    return s.SetError(INVALID_FRAMEBUFFER_OPERATION, __func__, "the read or draw framebuffer is not complete");
+  s.Sync(__func__);
+  const detail::RenderTarget src = ReadTarget(s);
+  detail::RenderTarget dst;
+  s.DrawTarget(dst);
+  // A buffer missing from either framebuffer is skipped without an error (OpenGL 4.6, section 18.3.1).
+  const bool depth = (mask & DEPTH_BUFFER_BIT) != 0 && src.depth && dst.depth;
+  const bool stencil = (mask & STENCIL_BUFFER_BIT) != 0 && src.stencil && dst.stencil;
+  if (depth || stencil) {
+    const FormatBits a = DepthStencilBits(s.read_fbo), b = DepthStencilBits(s.draw_fbo);
+    const bool depth_differs = a.depth != b.depth || a.r != b.r;
+    if ((depth && depth_differs) || (stencil && (a.stencil != b.stencil || (a.depth && b.depth && depth_differs))))
+      return s.SetError(INVALID_OPERATION, __func__, "the read and draw framebuffers' depth or stencil formats differ");
+  }
+  const bool color = (mask & COLOR_BUFFER_BIT) != 0 && src.color[0].Present();
+  bool same = (depth && src.depth == dst.depth) || (stencil && src.stencil == dst.stencil);
+  for (const detail::ColorBuffer& cb : dst.color) same = same || (color && cb.Present() && cb.data == src.color[0].data);
+  // OpenGL leaves a copy between overlapping rectangles of one buffer undefined: it is refused, as OpenGL ES 3.0
+  // refuses any blit within one buffer.
+  auto overlaps = [](int a0, int a1, int b0, int b1) {
+    return std::max(std::min(a0, a1), std::min(b0, b1)) < std::min(std::max(a0, a1), std::max(b0, b1));
+  };
+  if (same && overlaps(src_x0, src_x1, dst_x0, dst_x1) && overlaps(src_y0, src_y1, dst_y0, dst_y1))
+    return s.SetError(INVALID_OPERATION, __func__, "the source and destination rectangles overlap in the same buffer (undefined in OpenGL)");
+  detail::BlitRegion r;
+  r.src[0] = src_x0, r.src[1] = src_y0, r.src[2] = src_x1, r.src[3] = src_y1;
+  r.dst[0] = dst_x0, r.dst[1] = dst_y0, r.dst[2] = dst_x1, r.dst[3] = dst_y1;
+  r.clip = s.ClearArea(dst);  // the draw buffers' area cut to the scissor box
+  r.color = color;
+  r.depth = depth;
+  r.stencil = stencil;
+  r.linear = filter == LINEAR;
+  try {
+    detail::Blit(src, dst, r);
+  } catch (const std::bad_alloc&) {
+    s.SetError(OUT_OF_MEMORY, __func__, "out of memory");
+  }
+}
+
+Enum Context::CheckFramebufferStatus(Enum target) {
+  auto& s = *state_;
+  if (target != FRAMEBUFFER && target != DRAW_FRAMEBUFFER && target != READ_FRAMEBUFFER) {
+    s.SetError(INVALID_ENUM, __func__, "an enum argument is not one this call accepts");
+    return 0;
+  }
+  const FramebufferObject* f = target == READ_FRAMEBUFFER ? s.read_fbo : s.draw_fbo;
+  return f ? FramebufferStatus(*f) : FRAMEBUFFER_COMPLETE;
+}
+
+void Context::DrawBuffers(int n, const Enum* bufs) {
+  state_->Sync(__func__);
+  auto& s = *state_;
+  if (n < 0 || n > kMaxColorOutputs) return s.SetError(INVALID_VALUE, __func__, "n must be 0 to kMaxColorOutputs");
+  if (!s.draw_fbo) return s.SetError(INVALID_OPERATION, __func__, "the context's own framebuffer has no draw buffers to choose: bind a framebuffer object");
+  Enum next[kMaxColorOutputs] = {NONE, NONE, NONE, NONE};
+  for (int i = 0; i < n; ++i) {
+    const Enum b = bufs[i];
+    if (b != NONE && (b < COLOR_ATTACHMENT0 || b >= COLOR_ATTACHMENT0 + kMaxColorOutputs))
+      return s.SetError(INVALID_ENUM, __func__, "an enum argument is not one this call accepts");
+    for (int k = 0; k < i; ++k)
+      if (b != NONE && next[k] == b) return s.SetError(INVALID_OPERATION, __func__, "an attachment appears twice");  // one attachment, one output
+    next[i] = b;
+  }
+  std::copy(next, next + kMaxColorOutputs, s.draw_fbo->draw_buffers);
+}
+
+}  // namespace softgl

@@ -1,0 +1,292 @@
+// context_queries.cpp — state queries (GetIntegerv and its kin, GetString) and query objects (occlusion,
+// primitives generated, time elapsed).
+#include "context_state.h"
+
+namespace softgl {
+
+// ---- State queries -------------------------------------------------------------------------------------------
+
+namespace {
+
+// One piece of state as OpenGL's Get* calls see it: up to 4 values of one kind. kNormalized values (colours and
+// depths in [0, 1] or [-1, 1]) map to integers linearly rather than by rounding (OpenGL 4.6, section 2.2.2).
+struct StateValue {
+  enum class Kind { kBool, kInt, kFloat, kNormalized } kind = Kind::kInt;
+  double v[4] = {0, 0, 0, 0};
+  int count = 0;
+};
+
+// The value of `pname`, or false when it is not a name the context keeps (the caller sets INVALID_ENUM).
+bool QueryState(ContextState& s, Enum pname, StateValue& out) {
+  using Kind = StateValue::Kind;
+  auto put = [&](Kind kind, std::initializer_list<double> values) {
+    out.kind = kind;
+    out.count = 0;
+    for (double d : values) out.v[out.count++] = d;
+    return true;
+  };
+  auto integer = [&](double v) { return put(Kind::kInt, {v}); };
+  auto boolean = [&](bool v) { return put(Kind::kBool, {v ? 1.0 : 0.0}); };
+  if (bool* flag = CapFlag(s, pname)) return boolean(*flag);
+  if (pname >= DRAW_BUFFER0 && pname < DRAW_BUFFER0 + kMaxColorOutputs) {
+    const int i = int(pname - DRAW_BUFFER0);
+    // The context's own framebuffer has one colour buffer, which output 0 writes (BACK, as a double-buffered
+    // OpenGL context would say; the others NONE).
+    return integer(s.draw_fbo ? s.draw_fbo->draw_buffers[i] : i == 0 ? Enum(0x0405) : NONE);
+  }
+  const detail::StencilFace& f = s.ops.front;
+  const detail::StencilFace& b = s.ops.back;
+  const detail::BlendState& blend = s.ops.blend;
+  switch (pname) {
+    case ARRAY_BUFFER_BINDING: return integer(IdOf(s.buffers, s.array_buffer.get()));
+    case ELEMENT_ARRAY_BUFFER_BINDING: return integer(s.vao ? IdOf(s.buffers, s.vao->element_buffer.get()) : 0);
+    case COPY_READ_BUFFER_BINDING: return integer(IdOf(s.buffers, s.copy_read_buffer.get()));
+    case COPY_WRITE_BUFFER_BINDING: return integer(IdOf(s.buffers, s.copy_write_buffer.get()));
+    case VERTEX_ARRAY_BINDING: return integer(s.vao_id);
+    case ACTIVE_TEXTURE: return integer(TEXTURE0 + Enum(s.active_unit));
+    case TEXTURE_BINDING_2D: return integer(IdOf(s.textures, s.units[s.active_unit].tex_2d.get()));
+    case TEXTURE_BINDING_CUBE_MAP: return integer(IdOf(s.textures, s.units[s.active_unit].cube.get()));
+    case DRAW_FRAMEBUFFER_BINDING: return integer(IdOf(s.framebuffers, s.draw_fbo));
+    case DRAW_BUFFER: return QueryState(s, DRAW_BUFFER0, out);
+    case READ_BUFFER: return integer(s.read_fbo ? s.read_fbo->read_buffer : s.default_read_buffer);
+    case RENDERBUFFER_BINDING: return integer(IdOf(s.renderbuffers, s.renderbuffer.get()));
+    case READ_FRAMEBUFFER_BINDING: return integer(IdOf(s.framebuffers, s.read_fbo));
+    case VIEWPORT: return put(Kind::kInt, {double(s.viewport[0]), double(s.viewport[1]), double(s.viewport[2]), double(s.viewport[3])});
+    case SCISSOR_BOX: return put(Kind::kInt, {double(s.scissor[0]), double(s.scissor[1]), double(s.scissor[2]), double(s.scissor[3])});
+    case DEPTH_RANGE: {  // rounded to floats, as Mesa keeps them (volatile: GCC 12 folds the round trip away)
+      const volatile float n = float(s.depth_near), f = float(s.depth_far);
+      return put(Kind::kNormalized, {n, f});
+    }
+    case CULL_FACE_MODE: return integer(s.primitive.cull_face);
+    case FRONT_FACE: return integer(s.primitive.front_face);
+    case POLYGON_MODE: return put(Kind::kInt, {double(s.primitive.polygon_mode), double(s.primitive.polygon_mode)});
+    case POINT_SIZE: return put(Kind::kFloat, {s.primitive.point_size});
+    case PROVOKING_VERTEX: return integer(s.primitive.provoking_first ? FIRST_VERTEX_CONVENTION : LAST_VERTEX_CONVENTION);
+    case POLYGON_OFFSET_FACTOR: return put(Kind::kFloat, {s.primitive.offset_factor});
+    case POLYGON_OFFSET_UNITS: return put(Kind::kFloat, {s.primitive.offset_units});
+    case PRIMITIVE_RESTART_INDEX: return integer(s.restart_index);
+    case DEPTH_FUNC: return integer(s.ops.depth_func);
+    case DEPTH_WRITEMASK: return boolean(s.ops.depth_write);
+    case DEPTH_CLEAR_VALUE: return put(Kind::kNormalized, {s.clear_depth});
+    case STENCIL_FUNC: return integer(f.func);
+    case STENCIL_REF: return integer(std::clamp(f.ref, 0, 255));  // clamped to the stencil buffer's range
+    case STENCIL_VALUE_MASK: return integer(f.value_mask);
+    case STENCIL_FAIL: return integer(f.sfail);
+    case STENCIL_PASS_DEPTH_FAIL: return integer(f.dpfail);
+    case STENCIL_PASS_DEPTH_PASS: return integer(f.dppass);
+    case STENCIL_WRITEMASK: return integer(f.write_mask);
+    case STENCIL_BACK_FUNC: return integer(b.func);
+    case STENCIL_BACK_REF: return integer(std::clamp(b.ref, 0, 255));
+    case STENCIL_BACK_VALUE_MASK: return integer(b.value_mask);
+    case STENCIL_BACK_FAIL: return integer(b.sfail);
+    case STENCIL_BACK_PASS_DEPTH_FAIL: return integer(b.dpfail);
+    case STENCIL_BACK_PASS_DEPTH_PASS: return integer(b.dppass);
+    case STENCIL_BACK_WRITEMASK: return integer(b.write_mask);
+    case STENCIL_CLEAR_VALUE: return integer(s.clear_stencil);
+    case BLEND_SRC_RGB: return integer(blend.src_rgb);
+    case BLEND_DST_RGB: return integer(blend.dst_rgb);
+    case BLEND_SRC_ALPHA: return integer(blend.src_alpha);
+    case BLEND_DST_ALPHA: return integer(blend.dst_alpha);
+    case BLEND_EQUATION_RGB: return integer(blend.eq_rgb);
+    case BLEND_EQUATION_ALPHA: return integer(blend.eq_alpha);
+    case BLEND_COLOR: return put(Kind::kNormalized, {blend.color.r, blend.color.g, blend.color.b, blend.color.a});
+    case COLOR_CLEAR_VALUE: return put(Kind::kNormalized, {s.clear_color[0], s.clear_color[1], s.clear_color[2], s.clear_color[3]});
+    case COLOR_WRITEMASK: {
+      const bool* m = s.ops.color_mask;
+      return put(Kind::kBool, {double(m[0]), double(m[1]), double(m[2]), double(m[3])});
+    }
+    case UNPACK_ALIGNMENT: return integer(s.unpack_alignment);
+    case PACK_ALIGNMENT: return integer(s.pack_alignment);
+    case PACK_ROW_LENGTH: return integer(s.pack_row_length);
+    case PACK_SKIP_ROWS: return integer(s.pack_skip_rows);
+    case PACK_SKIP_PIXELS: return integer(s.pack_skip_pixels);
+    // Limits.
+    case MAX_VERTEX_ATTRIBS: return integer(kMaxVertexAttribs);
+    case MAX_TEXTURE_SIZE:
+    case MAX_CUBE_MAP_TEXTURE_SIZE: return integer(kMaxTextureSize);
+    case MAX_TEXTURE_IMAGE_UNITS:
+    case MAX_VERTEX_TEXTURE_IMAGE_UNITS:
+    case MAX_COMBINED_TEXTURE_IMAGE_UNITS: return integer(kMaxTextureUnits);
+    case MAX_DRAW_BUFFERS:
+    case MAX_COLOR_ATTACHMENTS: return integer(kMaxColorOutputs);
+    case MAX_SAMPLES: return integer(1);  // no multisampling
+    case MAX_RENDERBUFFER_SIZE: return integer(kMaxFramebufferSize);
+    case MAX_VIEWPORT_DIMS: return put(Kind::kInt, {double(kMaxFramebufferSize), double(kMaxFramebufferSize)});
+    case MAX_VARYING_COMPONENTS: return integer(kMaxVaryingFloats);
+    case MAX_ELEMENTS_VERTICES:
+    case MAX_ELEMENTS_INDICES: return integer(detail::kDrawChunk);  // larger draws work, in pieces
+    case POINT_SIZE_RANGE: return put(Kind::kFloat, {1.0, double(detail::kMaxPointSize)});
+    case ALIASED_LINE_WIDTH_RANGE: return put(Kind::kFloat, {1.0, 1.0});
+    case SUBPIXEL_BITS: return integer(8);  // vertices snap to 1/256 pixel
+    case MAJOR_VERSION: return integer(3);
+    case MINOR_VERSION: return integer(3);
+    case NUM_EXTENSIONS: return integer(0);
+    case CONTEXT_PROFILE_MASK: return integer(1);  // CONTEXT_CORE_PROFILE_BIT
+    default: return false;
+  }
+}
+
+bool Query(ContextState& s, const char* what, Enum pname, StateValue& out) {
+  if (QueryState(s, pname, out)) return true;
+  s.SetError(INVALID_ENUM, what, "not a state name the Get calls know");
+  return false;
+}
+
+// OpenGL 4.6, section 2.2.2: a normalized value c (a colour or depth) maps linearly onto the integers,
+// clamp(c, -1, 1) * (2^31 - 1) truncated toward 0 (Mesa's conversion: 0 stays 0, 1 is the largest int); other
+// values round to the nearest integer.
+std::int64_t ToInteger(const StateValue& v, int i) {
+  const double d = v.v[i];
+  if (v.kind == StateValue::Kind::kNormalized) return std::int64_t(std::clamp(d, -1.0, 1.0) * 2147483647.0);
+  return std::llround(std::clamp(d, -9.2e18, 9.2e18));
+}
+
+}  // namespace
+
+void Context::GetIntegerv(Enum pname, int* data) const {
+  StateValue v;
+  if (!Query(*state_, __func__, pname, v) || data == nullptr) return;
+  for (int i = 0; i < v.count; ++i) data[i] = int(std::clamp<std::int64_t>(ToInteger(v, i), INT32_MIN, INT32_MAX));
+}
+
+void Context::GetInteger64v(Enum pname, std::int64_t* data) const {
+  StateValue v;
+  if (!Query(*state_, __func__, pname, v) || data == nullptr) return;
+  for (int i = 0; i < v.count; ++i) data[i] = ToInteger(v, i);
+}
+
+void Context::GetFloatv(Enum pname, float* data) const {
+  StateValue v;
+  if (!Query(*state_, __func__, pname, v) || data == nullptr) return;
+  for (int i = 0; i < v.count; ++i) data[i] = float(v.v[i]);
+}
+
+void Context::GetBooleanv(Enum pname, bool* data) const {
+  StateValue v;
+  if (!Query(*state_, __func__, pname, v) || data == nullptr) return;
+  for (int i = 0; i < v.count; ++i) data[i] = v.v[i] != 0.0;
+}
+
+const char* Context::GetString(Enum name) const {
+  switch (name) {
+    case VENDOR: return "softgl";
+    case RENDERER: return "softgl (software rasterizer)";
+    case VERSION: return "3.3 softgl " SOFTGL_VERSION_STRING;
+    case SHADING_LANGUAGE_VERSION: return "none (shaders are C++ classes)";
+    default: return state_->SetError(INVALID_ENUM, __func__, "name must be VENDOR, RENDERER, VERSION or SHADING_LANGUAGE_VERSION"), nullptr;
+  }
+}
+
+// ---- Query objects ---------------------------------------------------------------------------------------------
+
+std::uint32_t Context::GenQuery() {
+  return NewId(state_->queries, state_->next_query, [] { return std::make_unique<QueryObject>(); });
+}
+
+void Context::GenQueries(int n, std::uint32_t* ids) {
+  GenMany(*state_, __func__, n, ids, [this] { return GenQuery(); });
+}
+
+void Context::DeleteQuery(std::uint32_t id) {
+  auto& s = *state_;
+  auto it = s.queries.find(id);
+  if (it == s.queries.end()) return;
+  for (std::uint32_t& active : s.active_query)  // an active query ends as it is deleted
+    if (active == id) active = 0;
+  s.queries.erase(it);  // recorded draws keep its counter alive until they are rendered
+}
+
+bool Context::IsQuery(std::uint32_t id) const { return state_->queries.count(id) != 0; }
+
+void Context::BeginQuery(Enum target, std::uint32_t id) {
+  auto& s = *state_;
+  const int slot = QuerySlot(target);
+  if (slot < 0) return s.SetError(INVALID_ENUM, __func__, "target must be SAMPLES_PASSED, ANY_SAMPLES_PASSED, PRIMITIVES_GENERATED or TIME_ELAPSED");
+  if (s.active_query[slot]) return s.SetError(INVALID_OPERATION, __func__, "a query is already active on target");
+  if (slot < 2 && s.active_query[1 - slot]) return s.SetError(INVALID_OPERATION, __func__, "an occlusion query of the other kind is active (one occlusion query at a time)");
+  auto it = s.queries.find(id);
+  if (it == s.queries.end()) return s.SetError(INVALID_OPERATION, __func__, "not a query id made by GenQuery (or it was deleted)");
+  QueryObject& q = *it->second;
+  if (q.active) return s.SetError(INVALID_OPERATION, __func__, "the query is active on another target");
+  if (q.target != 0 && q.target != target) return s.SetError(INVALID_OPERATION, __func__, "the query was begun with another target");
+  q.target = target;
+  q.active = true;
+  s.active_query[slot] = id;
+  switch (slot) {
+    case 0:
+    case 1: q.counter = std::make_shared<detail::OcclusionCounter>(); break;  // draws of earlier runs keep theirs
+    case 2: q.count = 0; break;
+    default:  // the time of the work between BeginQuery and EndQuery, rendering included
+      s.Sync(__func__);
+      q.start = std::chrono::steady_clock::now();
+      break;
+  }
+}
+
+void Context::EndQuery(Enum target) {
+  auto& s = *state_;
+  const int slot = QuerySlot(target);
+  if (slot < 0) return s.SetError(INVALID_ENUM, __func__, "target must be SAMPLES_PASSED, ANY_SAMPLES_PASSED, PRIMITIVES_GENERATED or TIME_ELAPSED");
+  if (!s.active_query[slot]) return s.SetError(INVALID_OPERATION, __func__, "no query is active on target");
+  QueryObject& q = *s.queries.at(s.active_query[slot]);
+  s.active_query[slot] = 0;
+  q.active = false;
+  if (slot == 3) {
+    s.Sync(__func__);
+    q.elapsed_ns = std::uint64_t(
+        std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now() - q.start).count());
+  }
+}
+
+void Context::GetQueryiv(Enum target, Enum pname, int* params) const {
+  auto& s = *state_;
+  const int slot = QuerySlot(target);
+  if (slot < 0) return s.SetError(INVALID_ENUM, __func__, "target must be SAMPLES_PASSED, ANY_SAMPLES_PASSED, PRIMITIVES_GENERATED or TIME_ELAPSED");
+  if (pname != CURRENT_QUERY && pname != QUERY_COUNTER_BITS) return s.SetError(INVALID_ENUM, __func__, "pname must be CURRENT_QUERY or QUERY_COUNTER_BITS");
+  if (params != nullptr) *params = pname == CURRENT_QUERY ? int(s.active_query[slot]) : 64;
+}
+
+namespace {
+
+// QUERY_RESULT or QUERY_RESULT_AVAILABLE of query `id`, or false with the error set. Results are made available by
+// rendering what was recorded: asking for one renders the recorded draws first.
+bool QueryResult(ContextState& s, const char* what, std::uint32_t id, Enum pname, std::uint64_t& out) {
+  if (pname != QUERY_RESULT && pname != QUERY_RESULT_AVAILABLE) return s.SetError(INVALID_ENUM, what, "pname must be QUERY_RESULT or QUERY_RESULT_AVAILABLE"), false;
+  auto it = s.queries.find(id);
+  if (it == s.queries.end() || it->second->target == 0) return s.SetError(INVALID_OPERATION, what, "not a query that has been begun"), false;
+  const QueryObject& q = *it->second;
+  if (q.active) return s.SetError(INVALID_OPERATION, what, "the query is active"), false;
+  s.Sync(what);
+  if (pname == QUERY_RESULT_AVAILABLE) return out = 1, true;
+  switch (QuerySlot(q.target)) {
+    case 0: out = q.counter ? q.counter->passed.load() : 0; break;
+    case 1: out = q.counter && q.counter->passed.load() != 0; break;
+    case 2: out = q.count; break;
+    default: out = q.elapsed_ns; break;
+  }
+  return true;
+}
+
+}  // namespace
+
+void Context::GetQueryObjectiv(std::uint32_t id, Enum pname, int* params) {
+  std::uint64_t v = 0;
+  if (QueryResult(*state_, __func__, id, pname, v) && params) *params = int(std::min<std::uint64_t>(v, INT32_MAX));
+}
+
+void Context::GetQueryObjectuiv(std::uint32_t id, Enum pname, std::uint32_t* params) {
+  std::uint64_t v = 0;
+  if (QueryResult(*state_, __func__, id, pname, v) && params) *params = std::uint32_t(std::min<std::uint64_t>(v, UINT32_MAX));
+}
+
+void Context::GetQueryObjecti64v(std::uint32_t id, Enum pname, std::int64_t* params) {
+  std::uint64_t v = 0;
+  if (QueryResult(*state_, __func__, id, pname, v) && params) *params = std::int64_t(std::min<std::uint64_t>(v, INT64_MAX));
+}
+
+void Context::GetQueryObjectui64v(std::uint32_t id, Enum pname, std::uint64_t* params) {
+  std::uint64_t v = 0;
+  if (QueryResult(*state_, __func__, id, pname, v) && params) *params = v;
+}
+
+}  // namespace softgl

@@ -1,0 +1,292 @@
+// context_state.h — the API layer's shared state: the objects created through a Context (buffers, vertex arrays,
+// renderbuffers, framebuffer objects, queries), the helpers every API file needs, and ContextState, which the
+// Context owns. Only the context_*.cpp files include it; each holds one family of entry points.
+#pragma once
+
+#include <softgl/context.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdint>
+#include <memory>
+#include <new>
+#include <unordered_map>
+#include <vector>
+
+#include "fragment_ops.h"
+#include "framebuffer.h"
+#include "pipeline.h"
+#include "primitive_assembly.h"
+#include "texture.h"
+#include "tile_renderer.h"
+#include "worker_pool.h"
+
+namespace softgl {
+
+struct Buffer {
+  std::vector<std::uint8_t> data;
+  Enum usage = STATIC_DRAW;
+  // While mapped (MapBufferRange), bytes [map_offset, map_offset + map_length) are the caller's through the pointer
+  // it was given; the store is not reallocated until it is unmapped.
+  bool mapped = false;
+  Bitfield access_flags = 0;
+  std::size_t map_offset = 0, map_length = 0;
+  // Whether bytes [offset, offset + size) meet the mapped range.
+  bool MappedOverlaps(std::size_t offset, std::size_t size) const {
+    return mapped && offset < map_offset + map_length && map_offset < offset + size;
+  }
+  void Unmap() {
+    mapped = false;
+    access_flags = 0;
+    map_offset = map_length = 0;
+  }
+};
+
+struct AttribBinding {
+  bool enabled = false;
+  std::shared_ptr<Buffer> buffer;  // keeps a deleted buffer's store alive while referenced, as OpenGL does
+  std::size_t offset = 0;
+  int size = 4;
+  Enum type = FLOAT;
+  bool normalized = false;
+  int stride = 0;
+  std::uint32_t divisor = 0;  // VertexAttribDivisor
+};
+
+struct VertexArray {
+  AttribBinding attrib[kMaxVertexAttribs];
+  std::shared_ptr<Buffer> element_buffer;
+};
+
+inline bool IsUsage(Enum usage) { return usage >= 0x88E0 && usage <= 0x88EA && (usage & 3) != 3; }
+
+// A renderbuffer object (GenRenderbuffers): one image that drawing can render to and blits and reads can use.
+struct Renderbuffer {
+  detail::TextureLevel image;  // in its sized format (an unsized one resolved), with its stencil plane
+  Enum internal_format = RGBA;  // as RenderbufferStorage was given it (RENDERBUFFER_INTERNAL_FORMAT)
+};
+
+// What a framebuffer attachment point holds: a texture's level (of one cube face), a renderbuffer, or nothing.
+struct Attachment {
+  std::shared_ptr<detail::TextureObject> texture;  // keeps the storage alive, as OpenGL does
+  std::shared_ptr<Renderbuffer> renderbuffer;
+  int face = 0;
+  int level = 0;
+  bool Present() const { return texture || renderbuffer; }
+  const detail::TextureLevel* Level() const {
+    return texture ? &texture->levels[face][level] : renderbuffer ? &renderbuffer->image : nullptr;
+  }
+};
+
+struct FramebufferObject {
+  Attachment color[kMaxColorOutputs];
+  Attachment depth, stencil;  // DEPTH_STENCIL_ATTACHMENT sets both
+  Enum draw_buffers[kMaxColorOutputs] = {COLOR_ATTACHMENT0, NONE, NONE, NONE};
+  Enum read_buffer = COLOR_ATTACHMENT0;  // ReadBuffer: COLOR_ATTACHMENT0 + i or NONE
+};
+
+// A query object (GenQueries). Its target is fixed by its first BeginQuery.
+struct QueryObject {
+  Enum target = 0;
+  bool active = false;
+  std::shared_ptr<detail::OcclusionCounter> counter;  // SAMPLES_PASSED, ANY_SAMPLES_PASSED: tiles add to it
+  std::uint64_t count = 0;                            // PRIMITIVES_GENERATED, counted as draws are recorded
+  std::chrono::steady_clock::time_point start;        // TIME_ELAPSED
+  std::uint64_t elapsed_ns = 0;
+};
+
+// The slot of each query target: 0 SAMPLES_PASSED, 1 ANY_SAMPLES_PASSED, 2 PRIMITIVES_GENERATED, 3 TIME_ELAPSED.
+inline int QuerySlot(Enum target) {
+  switch (target) {
+    case SAMPLES_PASSED: return 0;
+    case ANY_SAMPLES_PASSED: return 1;
+    case PRIMITIVES_GENERATED: return 2;
+    case TIME_ELAPSED: return 3;
+    default: return -1;
+  }
+}
+
+struct TextureUnit {
+  std::shared_ptr<detail::TextureObject> tex_2d, cube;
+};
+
+inline int CubeFaceIndex(Enum target) {
+  return target >= TEXTURE_CUBE_MAP_POSITIVE_X && target <= TEXTURE_CUBE_MAP_NEGATIVE_Z
+             ? int(target - TEXTURE_CUBE_MAP_POSITIVE_X)
+             : -1;
+}
+
+inline bool IsTexImageTarget(Enum target) { return target == TEXTURE_2D || CubeFaceIndex(target) >= 0; }
+
+// Section 9.4: why a framebuffer object cannot be drawn to, or FRAMEBUFFER_COMPLETE (context_framebuffers.cpp).
+Enum FramebufferStatus(const FramebufferObject& f);
+// The buffers of a complete framebuffer object, drawn through its draw buffers; its size is the intersection of
+// its attachments'.
+detail::RenderTarget FramebufferTarget(const FramebufferObject& f);
+
+struct ContextState {
+  Enum error = NO_ERROR;
+  detail::Framebuffer fb;
+
+  std::unordered_map<std::uint32_t, std::shared_ptr<Buffer>> buffers;
+  std::uint32_t next_buffer = 1;
+  std::unordered_map<std::uint32_t, std::unique_ptr<VertexArray>> arrays;
+  std::uint32_t next_array = 1;
+
+  std::shared_ptr<Buffer> array_buffer;
+  std::shared_ptr<Buffer> copy_read_buffer, copy_write_buffer;
+  VertexArray* vao = nullptr;
+  std::uint32_t vao_id = 0;
+  glm::vec4 current_attrib[kMaxVertexAttribs];
+  const Program* program = nullptr;
+
+  std::unordered_map<std::uint32_t, std::shared_ptr<detail::TextureObject>> textures;
+  std::uint32_t next_texture = 1;
+  TextureUnit units[kMaxTextureUnits];
+  int active_unit = 0;
+  int unpack_alignment = 4;
+  int pack_alignment = 4, pack_row_length = 0, pack_skip_rows = 0, pack_skip_pixels = 0;
+  std::unordered_map<std::uint32_t, std::unique_ptr<FramebufferObject>> framebuffers;
+  std::uint32_t next_framebuffer = 1;
+  std::unordered_map<std::uint32_t, std::shared_ptr<Renderbuffer>> renderbuffers;
+  std::uint32_t next_renderbuffer = 1;
+  std::shared_ptr<Renderbuffer> renderbuffer;  // bound to RENDERBUFFER
+  Enum default_read_buffer = BACK;             // ReadBuffer while the context's own framebuffer is read: or NONE
+  std::unordered_map<std::uint32_t, std::unique_ptr<QueryObject>> queries;
+  std::uint32_t next_query = 1;
+  std::uint32_t active_query[4] = {0, 0, 0, 0};  // by QuerySlot: the id active on each target (0: none)
+  FramebufferObject* draw_fbo = nullptr;
+  FramebufferObject* read_fbo = nullptr;
+
+  int viewport[4] = {0, 0, 0, 0};
+  double depth_near = 0.0, depth_far = 1.0;
+  detail::PrimitiveState primitive;
+  bool scissor_enabled = false;
+  int scissor[4] = {0, 0, 0, 0};
+  bool primitive_restart = false, primitive_restart_fixed = false;
+  std::uint32_t restart_index = 0;  // PrimitiveRestartIndex
+  // The stencil masks start as the stencil buffer's 8 bits (OpenGL says all ones: the same for 8 bits, and what
+  // Mesa reports).
+  detail::FragmentOpsState ops = [] {
+    detail::FragmentOpsState o;
+    o.front.value_mask = o.front.write_mask = o.back.value_mask = o.back.write_mask = 0xFFu;
+    return o;
+  }();
+
+  float clear_color[4] = {0, 0, 0, 0};
+  double clear_depth = 1.0;  // clamped to [0, 1]
+  int clear_stencil = 0;  // as given; its low 8 bits are used
+
+  detail::Scratch scratch;
+  std::unique_ptr<detail::WorkerPool> pool;
+  detail::Frame frame;  // recorded clears and draws, not yet rendered
+
+  Context::DebugCallback debug_callback;
+
+  // Records `e` if no error is pending (OpenGL keeps the first), and reports every error to the debug callback.
+  void SetError(Enum e, const char* call, const char* message) {
+    if (error == NO_ERROR) error = e;
+    if (debug_callback) debug_callback(e, call, message);
+  }
+
+  std::shared_ptr<Buffer>* BindingFor(Enum target) {
+    if (target == ARRAY_BUFFER) return &array_buffer;
+    if (target == COPY_READ_BUFFER) return &copy_read_buffer;
+    if (target == COPY_WRITE_BUFFER) return &copy_write_buffer;
+    if (target == ELEMENT_ARRAY_BUFFER && vao) return &vao->element_buffer;
+    return nullptr;
+  }
+
+  // The buffer bound to `target`, or null with the error set: a target that is not a buffer target (INVALID_ENUM),
+  // nothing bound there (INVALID_OPERATION).
+  Buffer* BoundBuffer(const char* what, Enum target) {
+    if (target != ARRAY_BUFFER && target != ELEMENT_ARRAY_BUFFER && target != COPY_READ_BUFFER &&
+        target != COPY_WRITE_BUFFER)
+      return SetError(INVALID_ENUM, what, "target must be ARRAY_BUFFER, ELEMENT_ARRAY_BUFFER, COPY_READ_BUFFER or COPY_WRITE_BUFFER"), nullptr;
+    auto* binding = BindingFor(target);
+    if (binding == nullptr || !*binding) return SetError(INVALID_OPERATION, what, "no buffer is bound to target"), nullptr;
+    return binding->get();
+  }
+
+  // The draw target's area, cut to the scissor rectangle while the scissor test is enabled.
+  detail::Rect ClearArea(const detail::RenderTarget& target) const {
+    detail::Rect r = target.Bounds();
+    if (!scissor_enabled) return r;
+    const std::int64_t x1 = std::int64_t(scissor[0]) + scissor[2], y1 = std::int64_t(scissor[1]) + scissor[3];
+    r.x0 = std::max(r.x0, scissor[0]);
+    r.y0 = std::max(r.y0, scissor[1]);
+    r.x1 = int(std::min<std::int64_t>(r.x1, x1));
+    r.y1 = int(std::min<std::int64_t>(r.y1, y1));
+    return r;
+  }
+
+  // What drawing writes to: the context's framebuffer or the bound framebuffer object. False (with
+  // INVALID_FRAMEBUFFER_OPERATION recorded) when that object is incomplete.
+  bool DrawTarget(detail::RenderTarget& target) {
+    if (!draw_fbo) {
+      target = fb.Target();
+      return true;
+    }
+    if (FramebufferStatus(*draw_fbo) != FRAMEBUFFER_COMPLETE) {
+      SetError(INVALID_FRAMEBUFFER_OPERATION, __func__, "the framebuffer bound for drawing is not complete");
+      return false;
+    }
+    target = FramebufferTarget(*draw_fbo);
+    return true;
+  }
+
+  // The texture bound to `target` of the active unit (a cube face target selects the cube map), and the face.
+  detail::TextureObject* Bound(Enum target, int* face = nullptr) {
+    TextureUnit& u = units[active_unit];
+    if (face) *face = 0;
+    if (target == TEXTURE_2D) return u.tex_2d.get();
+    if (target == TEXTURE_CUBE_MAP) return u.cube.get();
+    const int f = CubeFaceIndex(target);
+    if (f < 0) return nullptr;
+    if (face) *face = f;
+    return u.cube.get();
+  }
+
+  void Draw(const detail::DrawCall& call);
+
+  // Renders what is recorded, so that the buffers hold it: before the buffers are read, before anything a
+  // recorded draw refers to (textures, framebuffer attachments) changes, and before drawing elsewhere.
+  void Sync(const char* call) {
+    try {
+      frame.Render(*pool, scratch.tiles);
+    } catch (const std::bad_alloc&) {
+      SetError(OUT_OF_MEMORY, call, "out of memory while rendering recorded draws (they are dropped)");
+    }
+  }
+};
+
+// ---- Object ids --------------------------------------------------------------------------------------------
+
+// A new id (never 0) for a new object in `table`.
+template <class Table, class Make>
+std::uint32_t NewId(Table& table, std::uint32_t& next, Make&& make) {
+  const std::uint32_t id = next++;
+  table[id] = make();
+  return id;
+}
+
+// The Gen*s(n, ids) form of a Gen* call.
+template <class Gen>
+void GenMany(ContextState& s, const char* call, int n, std::uint32_t* ids, Gen&& gen) {
+  if (n < 0) return s.SetError(INVALID_VALUE, call, "n is negative");
+  for (int i = 0; i < n; ++i) ids[i] = gen();
+}
+
+// The id under which `map` holds `object` (0 for none).
+template <class Map, class Ptr>
+std::uint32_t IdOf(const Map& map, const Ptr* object) {
+  if (object == nullptr) return 0;
+  for (const auto& [id, held] : map)
+    if (held.get() == object) return id;
+  return 0;
+}
+
+// The flag of an Enable capability, or null for a name that is not one (context.cpp).
+bool* CapFlag(ContextState& s, Enum cap);
+
+}  // namespace softgl

@@ -1,0 +1,300 @@
+// context_textures.cpp — texture objects: binding, TexImage2D and TexSubImage2D, image files, mipmaps, sampling
+// parameters and pixel unpacking.
+#include "context_state.h"
+#include "image_io.h"
+
+namespace softgl {
+
+// ---- Textures ------------------------------------------------------------------------------------------------
+
+std::uint32_t Context::GenTexture() {
+  return NewId(state_->textures, state_->next_texture, [] { return std::make_shared<detail::TextureObject>(); });
+}
+
+void Context::GenTextures(int n, std::uint32_t* ids) {
+  GenMany(*state_, __func__, n, ids, [this] { return GenTexture(); });
+}
+
+void Context::DeleteTexture(std::uint32_t texture) {
+  state_->Sync(__func__);
+  auto& s = *state_;
+  auto it = s.textures.find(texture);
+  if (it == s.textures.end()) return;
+  const detail::TextureObject* dead = it->second.get();
+  for (TextureUnit& u : s.units) {
+    if (u.tex_2d.get() == dead) u.tex_2d.reset();
+    if (u.cube.get() == dead) u.cube.reset();
+  }
+  for (FramebufferObject* f : {s.draw_fbo, s.read_fbo}) {
+    if (!f) continue;
+    for (Attachment& a : f->color)
+      if (a.texture.get() == dead) a = Attachment{};
+    if (f->depth.texture.get() == dead) f->depth = Attachment{};
+    if (f->stencil.texture.get() == dead) f->stencil = Attachment{};
+  }
+  s.textures.erase(it);
+}
+
+bool Context::IsTexture(std::uint32_t texture) const { return state_->textures.count(texture) != 0; }
+
+void Context::ActiveTexture(Enum unit) {
+  if (unit < TEXTURE0 || unit >= TEXTURE0 + kMaxTextureUnits) return state_->SetError(INVALID_ENUM, __func__, "unit must be TEXTURE0 + i with i below kMaxTextureUnits");
+  state_->active_unit = int(unit - TEXTURE0);
+}
+
+void Context::BindTexture(Enum target, std::uint32_t texture) {
+  auto& s = *state_;
+  if (target != TEXTURE_2D && target != TEXTURE_CUBE_MAP) return s.SetError(INVALID_ENUM, __func__, "target must be TEXTURE_2D or TEXTURE_CUBE_MAP");
+  std::shared_ptr<detail::TextureObject> object;
+  if (texture != 0) {
+    auto it = s.textures.find(texture);
+    if (it == s.textures.end()) return s.SetError(INVALID_OPERATION, __func__, "not a texture id made by GenTexture (or it was deleted)");
+    if (it->second->target != 0 && it->second->target != target) return s.SetError(INVALID_OPERATION, __func__, "the texture was first bound to the other target");
+    it->second->target = target;
+    object = it->second;
+  }
+  TextureUnit& u = s.units[s.active_unit];
+  (target == TEXTURE_2D ? u.tex_2d : u.cube) = std::move(object);
+}
+
+namespace {
+
+// TexImage2D's and TexSubImage2D's client data: RED, RG, RGB, RGBA or DEPTH_COMPONENT as UNSIGNED_BYTE or FLOAT,
+// or DEPTH_STENCIL as UNSIGNED_INT_24_8 or FLOAT_32_UNSIGNED_INT_24_8_REV. False with the error recorded otherwise.
+bool CheckTransfer(ContextState& s, const char* what, Enum format, Enum type) {
+  const bool packed = type == UNSIGNED_INT_24_8 || type == FLOAT_32_UNSIGNED_INT_24_8_REV;
+  if (detail::TransferComponents(format) == 0 || (type != UNSIGNED_BYTE && type != FLOAT && !packed))
+    return s.SetError(INVALID_ENUM, what, "format must be RED, RG, RGB, RGBA, DEPTH_COMPONENT or DEPTH_STENCIL and type UNSIGNED_BYTE, FLOAT, UNSIGNED_INT_24_8 or FLOAT_32_UNSIGNED_INT_24_8_REV"), false;
+  if ((format == DEPTH_STENCIL) != packed)
+    return s.SetError(INVALID_OPERATION, what, "DEPTH_STENCIL data goes with UNSIGNED_INT_24_8 or FLOAT_32_UNSIGNED_INT_24_8_REV, and only it"), false;
+  return true;
+}
+
+bool IsDepthTransfer(Enum format) { return format == DEPTH_COMPONENT || format == DEPTH_STENCIL; }
+
+}  // namespace
+
+void Context::TexImage2D(Enum target, int level, Enum internal_format, int width, int height, int border,
+                         Enum format, Enum type, const void* pixels) {
+  state_->Sync(__func__);
+  auto& s = *state_;
+  if (!IsTexImageTarget(target)) return s.SetError(INVALID_ENUM, __func__, "target must be TEXTURE_2D or a TEXTURE_CUBE_MAP_* face");
+  if (level < 0 || level >= detail::kMaxLevels || width < 0 || height < 0 || width > kMaxTextureSize ||
+      height > kMaxTextureSize || border != 0 || detail::FormatComponents(internal_format) == 0)
+    return s.SetError(INVALID_VALUE, __func__, "a numeric argument is out of range");
+  if (!CheckTransfer(s, __func__, format, type)) return;
+  if (detail::IsDepthFormat(internal_format) != IsDepthTransfer(format)) return s.SetError(INVALID_OPERATION, __func__, "depth data for a colour format, or the reverse");
+  if (CubeFaceIndex(target) >= 0 && width != height) return s.SetError(INVALID_VALUE, __func__, "cube map faces must be square");
+  int face = 0;
+  detail::TextureObject* tex = s.Bound(target, &face);
+  if (!tex) return s.SetError(INVALID_OPERATION, __func__, "no texture is bound to that target of the active unit");
+  detail::TextureLevel next;
+  try {
+    next.Allocate(internal_format, width, height);
+  } catch (const std::bad_alloc&) {
+    return s.SetError(OUT_OF_MEMORY, __func__, "out of memory");
+  }
+  detail::UploadPixels(next, 0, 0, width, height, format, type, s.unpack_alignment, pixels);
+  tex->levels[face][level] = std::move(next);
+}
+
+void Context::TexSubImage2D(Enum target, int level, int x, int y, int width, int height, Enum format, Enum type,
+                            const void* pixels) {
+  state_->Sync(__func__);
+  auto& s = *state_;
+  if (!IsTexImageTarget(target)) return s.SetError(INVALID_ENUM, __func__, "target must be TEXTURE_2D or a TEXTURE_CUBE_MAP_* face");
+  if (!CheckTransfer(s, __func__, format, type)) return;
+  if (level < 0 || level >= detail::kMaxLevels) return s.SetError(INVALID_VALUE, __func__, "level is negative or beyond the largest mipmap level");
+  int face = 0;
+  detail::TextureObject* tex = s.Bound(target, &face);
+  if (!tex || !tex->levels[face][level].Defined()) return s.SetError(INVALID_OPERATION, __func__, "no texture bound, or that level is not defined");
+  detail::TextureLevel& lv = tex->levels[face][level];
+  if (detail::IsDepthFormat(lv.format) != IsDepthTransfer(format)) return s.SetError(INVALID_OPERATION, __func__, "depth data for a colour texture, or the reverse");
+  if (x < 0 || y < 0 || width < 0 || height < 0 || std::int64_t(x) + width > lv.width ||
+      std::int64_t(y) + height > lv.height)
+    return s.SetError(INVALID_VALUE, __func__, "a numeric argument is out of range");
+  detail::UploadPixels(lv, x, y, width, height, format, type, s.unpack_alignment, pixels);
+}
+
+namespace {
+
+// Defines level 0 of the texture bound to target from a decoded image: 1 to 4 channels as R8, RG8, RGB8, RGBA8,
+// HDR as RGBA32F.
+bool TexImageFromLoaded(Context& gl, ContextState& s, Enum target, const detail::LoadedImage& img,
+                        const std::string& name, std::string* error) {
+  if (img.width > kMaxTextureSize || img.height > kMaxTextureSize || img.channels < 1 || img.channels > 4) {
+    s.SetError(INVALID_VALUE, __func__, "a numeric argument is out of range");
+    if (error) *error = name + ": larger than kMaxTextureSize, or an unsupported channel count";
+    return false;
+  }
+  static constexpr Enum kFormats[4] = {RED, RG, RGB, RGBA};
+  static constexpr Enum kInternal[4] = {R8, RG8, RGB8, RGBA8};
+  const Enum format = kFormats[img.channels - 1];
+  const Enum internal = img.hdr ? RGBA32F : kInternal[img.channels - 1];
+  const int saved_alignment = s.unpack_alignment;
+  s.unpack_alignment = 1;
+  const Enum before = s.error;
+  gl.TexImage2D(target, 0, internal, img.width, img.height, 0, format, img.hdr ? FLOAT : UNSIGNED_BYTE,
+                img.hdr ? static_cast<const void*>(img.floats.data()) : static_cast<const void*>(img.bytes.data()));
+  s.unpack_alignment = saved_alignment;
+  if (s.error != before) {
+    if (error) *error = name + ": the texture could not be defined";
+    return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+namespace {
+
+// TexImage2DFromFile and TexImage2DFromMemory: checks the target and binding, decodes with `decode`, defines level 0.
+template <class Decode>
+bool TexImageFromDecoded(Context& gl, ContextState& s, Enum target, const std::string& name, std::string* error,
+                         const char* call, Decode&& decode) {
+  auto refuse = [&](Enum code, const char* message) {
+    s.SetError(code, call, message);
+    if (error) *error = message;
+    return false;
+  };
+  if (!IsTexImageTarget(target)) return refuse(INVALID_ENUM, "target must be TEXTURE_2D or a TEXTURE_CUBE_MAP_* face");
+  if (!s.Bound(target)) return refuse(INVALID_OPERATION, "no texture is bound to that target of the active unit");
+  detail::LoadedImage img;
+  try {
+    if (!decode(img)) return false;
+  } catch (const std::bad_alloc&) {
+    s.SetError(OUT_OF_MEMORY, call, "out of memory");
+    if (error) *error = name + ": out of memory";
+    return false;
+  }
+  return TexImageFromLoaded(gl, s, target, img, name, error);
+}
+
+}  // namespace
+
+bool Context::TexImage2DFromFile(Enum target, const std::string& path, bool flip_vertically, std::string* error) {
+  return TexImageFromDecoded(*this, *state_, target, path, error, __func__, [&](detail::LoadedImage& img) {
+    return detail::LoadImageFile(path, flip_vertically, img, error);
+  });
+}
+
+bool Context::TexImage2DFromMemory(Enum target, const void* data, std::size_t size, bool flip_vertically,
+                                   std::string* error) {
+  const std::string name = "image in memory";
+  return TexImageFromDecoded(*this, *state_, target, name, error, __func__, [&](detail::LoadedImage& img) {
+    return detail::LoadImageMemory(data, size, name, flip_vertically, img, error);
+  });
+}
+
+void Context::GenerateMipmap(Enum target) {
+  state_->Sync(__func__);
+  auto& s = *state_;
+  if (target != TEXTURE_2D && target != TEXTURE_CUBE_MAP) return s.SetError(INVALID_ENUM, __func__, "target must be TEXTURE_2D or TEXTURE_CUBE_MAP");
+  detail::TextureObject* tex = s.Bound(target);
+  if (!tex) return s.SetError(INVALID_OPERATION, __func__, "no texture is bound to that target of the active unit");
+  const int base = tex->params.base_level;
+  if (base < 0 || base >= detail::kMaxLevels) return s.SetError(INVALID_OPERATION, __func__, "the base level is out of range");
+  for (int f = 0; f < tex->Faces(); ++f) {
+    const detail::TextureLevel& b = tex->levels[f][base];
+    const detail::TextureLevel& b0 = tex->levels[0][base];
+    if (!b.Defined() || b.width != b0.width || b.height != b0.height || b.format != b0.format)
+      return s.SetError(INVALID_OPERATION, __func__, "not allowed in the current state");
+  }
+  try {
+    detail::GenerateMipmaps(*tex);
+  } catch (const std::bad_alloc&) {
+    s.SetError(OUT_OF_MEMORY, __func__, "out of memory");
+  }
+}
+
+namespace {
+
+bool IsMinFilter(int v) {
+  return v == NEAREST || v == LINEAR || v == NEAREST_MIPMAP_NEAREST || v == LINEAR_MIPMAP_NEAREST ||
+         v == NEAREST_MIPMAP_LINEAR || v == LINEAR_MIPMAP_LINEAR;
+}
+bool IsWrap(int v) { return v == REPEAT || v == MIRRORED_REPEAT || v == CLAMP_TO_EDGE || v == CLAMP_TO_BORDER; }
+
+}  // namespace
+
+void Context::TexParameterfv(Enum target, Enum pname, const float* values) {
+  state_->Sync(__func__);
+  auto& s = *state_;
+  if (target != TEXTURE_2D && target != TEXTURE_CUBE_MAP) return s.SetError(INVALID_ENUM, __func__, "target must be TEXTURE_2D or TEXTURE_CUBE_MAP");
+  if (values == nullptr) return s.SetError(INVALID_VALUE, __func__, "values is null");
+  detail::TextureObject* tex = s.Bound(target);
+  if (!tex) return s.SetError(INVALID_OPERATION, __func__, "no texture is bound to that target of the active unit");
+  detail::SamplerParams& p = tex->params;
+  const float v = values[0];
+  const int iv = std::isfinite(v) ? int(std::clamp(v, -2e9f, 2e9f)) : -1;
+  switch (pname) {
+    case TEXTURE_MIN_FILTER:
+      if (!IsMinFilter(iv)) return s.SetError(INVALID_ENUM, __func__, "not a minification filter");
+      p.min_filter = Enum(iv);
+      break;
+    case TEXTURE_MAG_FILTER:
+      if (iv != NEAREST && iv != LINEAR) return s.SetError(INVALID_ENUM, __func__, "magnification filter must be NEAREST or LINEAR");
+      p.mag_filter = Enum(iv);
+      break;
+    case TEXTURE_WRAP_S:
+    case TEXTURE_WRAP_T:
+    case TEXTURE_WRAP_R:
+      if (!IsWrap(iv)) return s.SetError(INVALID_ENUM, __func__, "wrap mode must be REPEAT, MIRRORED_REPEAT, CLAMP_TO_EDGE or CLAMP_TO_BORDER");
+      (pname == TEXTURE_WRAP_S ? p.wrap_s : pname == TEXTURE_WRAP_T ? p.wrap_t : p.wrap_r) = Enum(iv);
+      break;
+    case TEXTURE_BASE_LEVEL:
+    case TEXTURE_MAX_LEVEL:
+      if (iv < 0) return s.SetError(INVALID_VALUE, __func__, "level is negative");
+      (pname == TEXTURE_BASE_LEVEL ? p.base_level : p.max_level) = iv;
+      break;
+    case TEXTURE_MIN_LOD:
+    case TEXTURE_MAX_LOD:
+    case TEXTURE_LOD_BIAS:
+      if (std::isnan(v)) return s.SetError(INVALID_VALUE, __func__, "value is NaN");
+      (pname == TEXTURE_MIN_LOD ? p.min_lod : pname == TEXTURE_MAX_LOD ? p.max_lod : p.lod_bias) = v;
+      break;
+    case TEXTURE_COMPARE_MODE:
+      if (iv != int(NONE) && iv != int(COMPARE_REF_TO_TEXTURE)) return s.SetError(INVALID_ENUM, __func__, "compare mode must be NONE or COMPARE_REF_TO_TEXTURE");
+      p.compare_mode = Enum(iv);
+      break;
+    case TEXTURE_COMPARE_FUNC:
+      if (iv < int(NEVER) || iv > int(ALWAYS)) return s.SetError(INVALID_ENUM, __func__, "not a comparison function");
+      p.compare_func = Enum(iv);
+      break;
+    case TEXTURE_BORDER_COLOR: p.border = glm::vec4(values[0], values[1], values[2], values[3]); break;
+    default: return s.SetError(INVALID_ENUM, __func__, "an enum argument is not one this call accepts");
+  }
+}
+
+void Context::TexParameteri(Enum target, Enum pname, int value) {
+  state_->Sync(__func__);
+  if (pname == TEXTURE_BORDER_COLOR) return state_->SetError(INVALID_ENUM, __func__, "TEXTURE_BORDER_COLOR takes four values: use TexParameterfv");  // four values: use TexParameterfv
+  const float v = float(value);
+  TexParameterfv(target, pname, &v);
+}
+
+void Context::TexParameterf(Enum target, Enum pname, float value) {
+  state_->Sync(__func__);
+  if (pname == TEXTURE_BORDER_COLOR) return state_->SetError(INVALID_ENUM, __func__, "TEXTURE_BORDER_COLOR takes four values: use TexParameterfv");
+  TexParameterfv(target, pname, &value);
+}
+
+void Context::PixelStore(Enum pname, int value) {
+  auto& s = *state_;
+  switch (pname) {
+    case UNPACK_ALIGNMENT:
+    case PACK_ALIGNMENT:
+      if (value != 1 && value != 2 && value != 4 && value != 8) return s.SetError(INVALID_VALUE, __func__, "alignment must be 1, 2, 4 or 8");
+      (pname == PACK_ALIGNMENT ? s.pack_alignment : s.unpack_alignment) = value;
+      return;
+    case PACK_ROW_LENGTH:
+    case PACK_SKIP_ROWS:
+    case PACK_SKIP_PIXELS:
+      if (value < 0) return s.SetError(INVALID_VALUE, __func__, "value is negative");
+      (pname == PACK_ROW_LENGTH ? s.pack_row_length : pname == PACK_SKIP_ROWS ? s.pack_skip_rows : s.pack_skip_pixels) = value;
+      return;
+    default: return s.SetError(INVALID_ENUM, __func__, "pname must be UNPACK_ALIGNMENT, PACK_ALIGNMENT, PACK_ROW_LENGTH, PACK_SKIP_ROWS or PACK_SKIP_PIXELS");
+  }
+}
+
+}  // namespace softgl
