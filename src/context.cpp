@@ -33,6 +33,8 @@ int Context::Threads() const { return state_->pool->Threads(); }
 
 void Context::Finish() { state_->Sync(__func__); }
 
+void Context::Flush() { state_->Sync(__func__); }
+
 void Context::DebugMessageCallback(DebugCallback callback) { state_->debug_callback = std::move(callback); }
 
 Enum Context::GetError() {

@@ -16,6 +16,10 @@ void Context::GenBuffers(int n, std::uint32_t* ids) {
   GenMany(*state_, __func__, n, ids, [this] { return GenBuffer(); });
 }
 
+void Context::DeleteBuffers(int n, const std::uint32_t* ids) {
+  DeleteMany(*state_, __func__, n, ids, [this](std::uint32_t id) { DeleteBuffer(id); });
+}
+
 void Context::DeleteBuffer(std::uint32_t buffer) {
   auto& s = *state_;
   auto it = s.buffers.find(buffer);
@@ -234,6 +238,10 @@ std::uint32_t Context::GenVertexArray() {
 
 void Context::GenVertexArrays(int n, std::uint32_t* ids) {
   GenMany(*state_, __func__, n, ids, [this] { return GenVertexArray(); });
+}
+
+void Context::DeleteVertexArrays(int n, const std::uint32_t* ids) {
+  DeleteMany(*state_, __func__, n, ids, [this](std::uint32_t id) { DeleteVertexArray(id); });
 }
 
 void Context::DeleteVertexArray(std::uint32_t array) {

@@ -218,14 +218,41 @@ void Context::DrawElementsInstancedBaseVertex(Enum mode, int count, Enum type, s
   DrawElementsChecked(*state_, __func__, mode, count, type, offset, basevertex, instancecount);
 }
 
+namespace {
+
+void DrawRangeChecked(ContextState& s, const char* what, Enum mode, std::uint32_t start, std::uint32_t end, int count,
+                      Enum type, std::size_t offset, int basevertex) {
+  if (!CheckElements(s, what, mode, type)) return;
+  if (count < 0) return s.SetError(INVALID_VALUE, what, "count is negative");
+  if (end < start) return s.SetError(INVALID_VALUE, what, "end is less than start");
+  if (!CheckElementsBound(s, what) || !CheckElementRange(s, what, count, type, offset)) return;
+  DrawIndexed(s, what, mode, count, type, offset, basevertex);
+}
+
+// MultiDrawElements and MultiDrawElementsBaseVertex: every draw checked before any is made.
+void MultiDrawChecked(ContextState& s, const char* what, Enum mode, const int* count, Enum type,
+                      const std::size_t* offsets, int drawcount, const int* basevertex) {
+  if (!CheckElements(s, what, mode, type)) return;
+  if (drawcount < 0) return s.SetError(INVALID_VALUE, what, "drawcount is negative");
+  if (drawcount > 0 && (count == nullptr || offsets == nullptr)) return s.SetError(INVALID_VALUE, what, "count or offsets is null");
+  for (int i = 0; i < drawcount; ++i)
+    if (count[i] < 0) return s.SetError(INVALID_VALUE, what, "a count is negative");
+  if (!CheckElementsBound(s, what)) return;
+  for (int i = 0; i < drawcount; ++i)
+    if (!CheckElementRange(s, what, count[i], type, offsets[i])) return;
+  for (int i = 0; i < drawcount; ++i) DrawIndexed(s, what, mode, count[i], type, offsets[i], basevertex ? basevertex[i] : 0);
+}
+
+}  // namespace
+
 void Context::DrawRangeElements(Enum mode, std::uint32_t start, std::uint32_t end, int count, Enum type,
                                 std::size_t offset) {
-  auto& s = *state_;
-  if (!CheckElements(s, __func__, mode, type)) return;
-  if (count < 0) return s.SetError(INVALID_VALUE, __func__, "count is negative");
-  if (end < start) return s.SetError(INVALID_VALUE, __func__, "end is less than start");
-  if (!CheckElementsBound(s, __func__) || !CheckElementRange(s, __func__, count, type, offset)) return;
-  DrawIndexed(s, __func__, mode, count, type, offset, 0);
+  DrawRangeChecked(*state_, __func__, mode, start, end, count, type, offset, 0);
+}
+
+void Context::DrawRangeElementsBaseVertex(Enum mode, std::uint32_t start, std::uint32_t end, int count, Enum type,
+                                          std::size_t offset, int basevertex) {
+  DrawRangeChecked(*state_, __func__, mode, start, end, count, type, offset, basevertex);
 }
 
 void Context::MultiDrawArrays(Enum mode, const int* first, const int* count, int drawcount) {
@@ -241,16 +268,13 @@ void Context::MultiDrawArrays(Enum mode, const int* first, const int* count, int
 }
 
 void Context::MultiDrawElements(Enum mode, const int* count, Enum type, const std::size_t* offsets, int drawcount) {
-  auto& s = *state_;
-  if (!CheckElements(s, __func__, mode, type)) return;
-  if (drawcount < 0) return s.SetError(INVALID_VALUE, __func__, "drawcount is negative");
-  if (drawcount > 0 && (count == nullptr || offsets == nullptr)) return s.SetError(INVALID_VALUE, __func__, "count or offsets is null");
-  for (int i = 0; i < drawcount; ++i)
-    if (count[i] < 0) return s.SetError(INVALID_VALUE, __func__, "a count is negative");
-  if (!CheckElementsBound(s, __func__)) return;
-  for (int i = 0; i < drawcount; ++i)
-    if (!CheckElementRange(s, __func__, count[i], type, offsets[i])) return;
-  for (int i = 0; i < drawcount; ++i) DrawIndexed(s, __func__, mode, count[i], type, offsets[i], 0);
+  MultiDrawChecked(*state_, __func__, mode, count, type, offsets, drawcount, nullptr);
+}
+
+void Context::MultiDrawElementsBaseVertex(Enum mode, const int* count, Enum type, const std::size_t* offsets,
+                                          int drawcount, const int* basevertex) {
+  if (drawcount > 0 && basevertex == nullptr) return state_->SetError(INVALID_VALUE, __func__, "basevertex is null");
+  MultiDrawChecked(*state_, __func__, mode, count, type, offsets, drawcount, basevertex);
 }
 
 }  // namespace softgl

@@ -384,6 +384,10 @@ void Context::GenFramebuffers(int n, std::uint32_t* ids) {
   GenMany(*state_, __func__, n, ids, [this] { return GenFramebuffer(); });
 }
 
+void Context::DeleteFramebuffers(int n, const std::uint32_t* ids) {
+  DeleteMany(*state_, __func__, n, ids, [this](std::uint32_t id) { DeleteFramebuffer(id); });
+}
+
 void Context::DeleteFramebuffer(std::uint32_t framebuffer) {
   state_->Sync(__func__);
   auto& s = *state_;
@@ -537,10 +541,15 @@ Enum SizedRenderbufferFormat(Enum f) {
   }
 }
 
-// Bits of a sized format's red, green, blue, alpha, depth and stencil, as OpenGL reports them.
-struct FormatBits {
-  int r = 0, g = 0, b = 0, a = 0, depth = 0, stencil = 0;
-};
+
+Renderbuffer* BoundRenderbuffer(ContextState& s, const char* what, Enum target) {
+  if (target != RENDERBUFFER) return s.SetError(INVALID_ENUM, what, "target must be RENDERBUFFER"), nullptr;
+  if (!s.renderbuffer) return s.SetError(INVALID_OPERATION, what, "no renderbuffer is bound"), nullptr;
+  return s.renderbuffer.get();
+}
+
+}  // namespace
+
 FormatBits BitsOf(Enum f) {
   switch (f) {
     case RGBA8: return {8, 8, 8, 8, 0, 0};
@@ -560,20 +569,16 @@ FormatBits BitsOf(Enum f) {
   }
 }
 
-Renderbuffer* BoundRenderbuffer(ContextState& s, const char* what, Enum target) {
-  if (target != RENDERBUFFER) return s.SetError(INVALID_ENUM, what, "target must be RENDERBUFFER"), nullptr;
-  if (!s.renderbuffer) return s.SetError(INVALID_OPERATION, what, "no renderbuffer is bound"), nullptr;
-  return s.renderbuffer.get();
-}
-
-}  // namespace
-
 std::uint32_t Context::GenRenderbuffer() {
   return NewId(state_->renderbuffers, state_->next_renderbuffer, [] { return std::make_shared<Renderbuffer>(); });
 }
 
 void Context::GenRenderbuffers(int n, std::uint32_t* ids) {
   GenMany(*state_, __func__, n, ids, [this] { return GenRenderbuffer(); });
+}
+
+void Context::DeleteRenderbuffers(int n, const std::uint32_t* ids) {
+  DeleteMany(*state_, __func__, n, ids, [this](std::uint32_t id) { DeleteRenderbuffer(id); });
 }
 
 void Context::DeleteRenderbuffer(std::uint32_t renderbuffer) {

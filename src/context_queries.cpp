@@ -161,6 +161,12 @@ void Context::GetFloatv(Enum pname, float* data) const {
   for (int i = 0; i < v.count; ++i) data[i] = float(v.v[i]);
 }
 
+void Context::GetDoublev(Enum pname, double* data) const {
+  StateValue v;
+  if (!Query(*state_, __func__, pname, v) || data == nullptr) return;
+  for (int i = 0; i < v.count; ++i) data[i] = v.v[i];
+}
+
 void Context::GetBooleanv(Enum pname, bool* data) const {
   StateValue v;
   if (!Query(*state_, __func__, pname, v) || data == nullptr) return;
@@ -185,6 +191,10 @@ std::uint32_t Context::GenQuery() {
 
 void Context::GenQueries(int n, std::uint32_t* ids) {
   GenMany(*state_, __func__, n, ids, [this] { return GenQuery(); });
+}
+
+void Context::DeleteQueries(int n, const std::uint32_t* ids) {
+  DeleteMany(*state_, __func__, n, ids, [this](std::uint32_t id) { DeleteQuery(id); });
 }
 
 void Context::DeleteQuery(std::uint32_t id) {

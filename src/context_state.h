@@ -277,6 +277,21 @@ void GenMany(ContextState& s, const char* call, int n, std::uint32_t* ids, Gen&&
   for (int i = 0; i < n; ++i) ids[i] = gen();
 }
 
+// The Delete*s(n, ids) form of a Delete* call.
+template <class Delete>
+void DeleteMany(ContextState& s, const char* call, int n, const std::uint32_t* ids, Delete&& del) {
+  if (n < 0) return s.SetError(INVALID_VALUE, call, "n is negative");
+  if (ids == nullptr) return;
+  for (int i = 0; i < n; ++i) del(ids[i]);
+}
+
+// Bits of a sized format's red, green, blue, alpha, depth and stencil, as OpenGL reports them
+// (context_framebuffers.cpp).
+struct FormatBits {
+  int r = 0, g = 0, b = 0, a = 0, depth = 0, stencil = 0;
+};
+FormatBits BitsOf(Enum internal_format);
+
 // The id under which `map` holds `object` (0 for none).
 template <class Map, class Ptr>
 std::uint32_t IdOf(const Map& map, const Ptr* object) {

@@ -15,6 +15,10 @@ void Context::GenTextures(int n, std::uint32_t* ids) {
   GenMany(*state_, __func__, n, ids, [this] { return GenTexture(); });
 }
 
+void Context::DeleteTextures(int n, const std::uint32_t* ids) {
+  DeleteMany(*state_, __func__, n, ids, [this](std::uint32_t id) { DeleteTexture(id); });
+}
+
 void Context::DeleteTexture(std::uint32_t texture) {
   state_->Sync(__func__);
   auto& s = *state_;
@@ -277,6 +281,97 @@ void Context::TexParameterf(Enum target, Enum pname, float value) {
   state_->Sync(__func__);
   if (pname == TEXTURE_BORDER_COLOR) return state_->SetError(INVALID_ENUM, __func__, "TEXTURE_BORDER_COLOR takes four values: use TexParameterfv");
   TexParameterfv(target, pname, &value);
+}
+
+void Context::TexParameteriv(Enum target, Enum pname, const int* values) {
+  if (values == nullptr) return state_->SetError(INVALID_VALUE, __func__, "values is null");
+  if (pname != TEXTURE_BORDER_COLOR) return TexParameteri(target, pname, values[0]);
+  float v[4];
+  for (int k = 0; k < 4; ++k) v[k] = float(std::max(double(values[k]) / 2147483647.0, -1.0));
+  TexParameterfv(target, pname, v);
+}
+
+namespace {
+
+// The sampling state `pname` of the texture bound to target, as up to four floats; false with the error set.
+bool TexParameterValues(ContextState& s, const char* what, Enum target, Enum pname, float out[4], int& n) {
+  if (target != TEXTURE_2D && target != TEXTURE_CUBE_MAP) return s.SetError(INVALID_ENUM, what, "target must be TEXTURE_2D or TEXTURE_CUBE_MAP"), false;
+  const detail::TextureObject* tex = s.Bound(target);
+  if (!tex) return s.SetError(INVALID_OPERATION, what, "no texture is bound to that target of the active unit"), false;
+  const detail::SamplerParams& p = tex->params;
+  n = 1;
+  switch (pname) {
+    case TEXTURE_MIN_FILTER: out[0] = float(p.min_filter); return true;
+    case TEXTURE_MAG_FILTER: out[0] = float(p.mag_filter); return true;
+    case TEXTURE_WRAP_S: out[0] = float(p.wrap_s); return true;
+    case TEXTURE_WRAP_T: out[0] = float(p.wrap_t); return true;
+    case TEXTURE_WRAP_R: out[0] = float(p.wrap_r); return true;
+    case TEXTURE_BASE_LEVEL: out[0] = float(p.base_level); return true;
+    case TEXTURE_MAX_LEVEL: out[0] = float(p.max_level); return true;
+    case TEXTURE_MIN_LOD: out[0] = p.min_lod; return true;
+    case TEXTURE_MAX_LOD: out[0] = p.max_lod; return true;
+    case TEXTURE_LOD_BIAS: out[0] = p.lod_bias; return true;
+    case TEXTURE_COMPARE_MODE: out[0] = float(p.compare_mode); return true;
+    case TEXTURE_COMPARE_FUNC: out[0] = float(p.compare_func); return true;
+    case TEXTURE_BORDER_COLOR:
+      n = 4;
+      for (int k = 0; k < 4; ++k) out[k] = p.border[k];
+      return true;
+    default: return s.SetError(INVALID_ENUM, what, "pname is not a texture parameter"), false;
+  }
+}
+
+// The value `pname` of level `level` of the texture bound to target (a 2D texture or a cube face); false with the
+// error set.
+bool TexLevelValue(ContextState& s, const char* what, Enum target, int level, Enum pname, int& out) {
+  if (!IsTexImageTarget(target)) return s.SetError(INVALID_ENUM, what, "target must be TEXTURE_2D or a TEXTURE_CUBE_MAP_* face"), false;
+  if (level < 0 || level >= detail::kMaxLevels) return s.SetError(INVALID_VALUE, what, "level is negative or beyond the largest mipmap level"), false;
+  int face = 0;
+  const detail::TextureObject* tex = s.Bound(target, &face);
+  if (!tex) return s.SetError(INVALID_OPERATION, what, "no texture is bound to that target of the active unit"), false;
+  const detail::TextureLevel& lv = tex->levels[face][level];
+  const FormatBits bits = BitsOf(lv.Defined() ? lv.format : 0);
+  switch (pname) {
+    case TEXTURE_WIDTH: out = lv.Defined() ? lv.width : 0; return true;
+    case TEXTURE_HEIGHT: out = lv.Defined() ? lv.height : 0; return true;
+    case TEXTURE_DEPTH: out = lv.Defined() ? 1 : 0; return true;
+    case TEXTURE_INTERNAL_FORMAT: out = int(lv.Defined() ? lv.format : RGBA); return true;
+    case TEXTURE_RED_SIZE: out = bits.r; return true;
+    case TEXTURE_GREEN_SIZE: out = bits.g; return true;
+    case TEXTURE_BLUE_SIZE: out = bits.b; return true;
+    case TEXTURE_ALPHA_SIZE: out = bits.a; return true;
+    case TEXTURE_DEPTH_SIZE: out = bits.depth; return true;
+    case TEXTURE_STENCIL_SIZE: out = bits.stencil; return true;
+    default: return s.SetError(INVALID_ENUM, what, "pname is not a texture level parameter"), false;
+  }
+}
+
+}  // namespace
+
+void Context::GetTexParameterfv(Enum target, Enum pname, float* params) const {
+  float v[4];
+  int n = 0;
+  if (!TexParameterValues(*state_, __func__, target, pname, v, n) || params == nullptr) return;
+  std::copy(v, v + n, params);
+}
+
+void Context::GetTexParameteriv(Enum target, Enum pname, int* params) const {
+  float v[4];
+  int n = 0;
+  if (!TexParameterValues(*state_, __func__, target, pname, v, n) || params == nullptr) return;
+  for (int k = 0; k < n; ++k)  // the border colour maps [-1, 1] onto the integers; the others round
+    params[k] = pname == TEXTURE_BORDER_COLOR ? int(std::clamp(double(v[k]), -1.0, 1.0) * 2147483647.0)
+                                              : int(std::lround(std::clamp(double(v[k]), -2147483648.0, 2147483647.0)));
+}
+
+void Context::GetTexLevelParameteriv(Enum target, int level, Enum pname, int* params) const {
+  int v = 0;
+  if (TexLevelValue(*state_, __func__, target, level, pname, v) && params) *params = v;
+}
+
+void Context::GetTexLevelParameterfv(Enum target, int level, Enum pname, float* params) const {
+  int v = 0;
+  if (TexLevelValue(*state_, __func__, target, level, pname, v) && params) *params = float(v);
 }
 
 void Context::PixelStore(Enum pname, int value) {

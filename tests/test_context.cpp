@@ -520,6 +520,21 @@ TEST_CASE("base vertex, range and multi-draw calls draw what their plain forms d
     CHECK(t.gl.GetError() == NO_ERROR);
     CHECK(t.Red() == want);
   }
+  SECTION("DrawRangeElementsBaseVertex and MultiDrawElementsBaseVertex: quad 0's indices, moved") {
+    QuadRow t;
+    t.gl.DrawRangeElementsBaseVertex(TRIANGLES, 0, 3, 6, UNSIGNED_SHORT, 0, 0);
+    t.gl.DrawRangeElementsBaseVertex(TRIANGLES, 0, 3, 6, UNSIGNED_SHORT, 0, 4);
+    const int count[] = {6, 6};
+    const std::size_t offsets[] = {0, 0};
+    const int base[] = {8, 12};
+    t.gl.MultiDrawElementsBaseVertex(TRIANGLES, count, UNSIGNED_SHORT, offsets, 2, base);
+    CHECK(t.gl.GetError() == NO_ERROR);
+    CHECK(t.Red() == want);
+    t.gl.MultiDrawElementsBaseVertex(TRIANGLES, count, UNSIGNED_SHORT, offsets, 2, nullptr);
+    CHECK(t.gl.GetError() == INVALID_VALUE);
+    t.gl.DrawRangeElementsBaseVertex(TRIANGLES, 4, 3, 6, UNSIGNED_SHORT, 0, 4);
+    CHECK(t.gl.GetError() == INVALID_VALUE);
+  }
   SECTION("MultiDrawArrays, against DrawArrays one draw at a time") {
     QuadRow t;
     MakeVertexArray(t.gl, SeparateTriangles());
@@ -1518,4 +1533,48 @@ TEST_CASE("the largest framebuffer, 16384 x 16384, works", "[context][slow]") {
   gl.ReadPixel(0, 0, px);
   CHECK(px[0] == 0);
   CHECK(gl.GetError() == NO_ERROR);
+}
+
+TEST_CASE("Delete*s, GetDoublev and Flush", "[context]") {
+  Context gl(4, 4);
+  std::uint32_t buffers[3], arrays[2], textures[2], framebuffers[2], renderbuffers[2], queries[2];
+  gl.GenBuffers(3, buffers);
+  gl.GenVertexArrays(2, arrays);
+  gl.GenTextures(2, textures);
+  gl.GenFramebuffers(2, framebuffers);
+  gl.GenRenderbuffers(2, renderbuffers);
+  gl.GenQueries(2, queries);
+  const std::uint32_t two[2] = {buffers[0], 999};  // an unknown id is ignored
+  gl.DeleteBuffers(2, two);
+  CHECK(!gl.IsBuffer(buffers[0]));
+  CHECK(gl.IsBuffer(buffers[1]));
+  gl.DeleteBuffers(2, buffers + 1);
+  gl.DeleteVertexArrays(2, arrays);
+  gl.DeleteTextures(2, textures);
+  gl.DeleteFramebuffers(2, framebuffers);
+  gl.DeleteRenderbuffers(2, renderbuffers);
+  gl.DeleteQueries(2, queries);
+  CHECK(gl.GetError() == NO_ERROR);
+  for (int k = 0; k < 2; ++k) {
+    CHECK(!gl.IsBuffer(buffers[k + 1]));
+    CHECK(!gl.IsVertexArray(arrays[k]));
+    CHECK(!gl.IsTexture(textures[k]));
+    CHECK(!gl.IsFramebuffer(framebuffers[k]));
+    CHECK(!gl.IsRenderbuffer(renderbuffers[k]));
+    CHECK(!gl.IsQuery(queries[k]));
+  }
+  gl.DeleteTextures(-1, textures);
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.DepthRange(0.25, 0.75);
+  double range[2] = {0, 0};
+  gl.GetDoublev(DEPTH_RANGE, range);
+  CHECK((range[0] == 0.25 && range[1] == 0.75));
+  gl.GetDoublev(0x1234, range);
+  CHECK(gl.GetError() == INVALID_ENUM);
+  gl.ClearColor(1, 0, 0, 1);
+  gl.Clear(COLOR_BUFFER_BIT);
+  gl.Flush();
+  std::uint8_t px[4];
+  gl.ReadPixel(0, 0, px);
+  CHECK(px[0] == 255);
 }

@@ -646,3 +646,65 @@ TEST_CASE("SampleQuad gives each lane exactly what Sample gives it", "[texture]"
   none.SampleQuad(0, z, z, z, 0.0f, got);
   for (const glm::vec4& g : got) CHECK(g == glm::vec4(0, 0, 0, 1));
 }
+
+TEST_CASE("texture parameters and level parameters read back", "[texture]") {
+  Context gl(4, 4);
+  float f[4] = {0, 0, 0, 0};
+  gl.GetTexParameterfv(TEXTURE_2D, TEXTURE_MIN_FILTER, f);
+  CHECK(gl.GetError() == INVALID_OPERATION);  // nothing bound
+  gl.BindTexture(TEXTURE_2D, gl.GenTexture());
+  int i[4] = {0, 0, 0, 0};
+  gl.GetTexParameteriv(TEXTURE_2D, TEXTURE_MIN_FILTER, i);
+  CHECK(i[0] == int(NEAREST_MIPMAP_LINEAR));  // OpenGL's initial value
+  gl.GetTexParameteriv(TEXTURE_2D, TEXTURE_WRAP_T, i);
+  CHECK(i[0] == int(REPEAT));
+  const int mag = int(NEAREST);
+  gl.TexParameteriv(TEXTURE_2D, TEXTURE_MAG_FILTER, &mag);
+  gl.GetTexParameteriv(TEXTURE_2D, TEXTURE_MAG_FILTER, i);
+  CHECK(i[0] == int(NEAREST));
+  gl.TexParameterf(TEXTURE_2D, TEXTURE_LOD_BIAS, 1.5f);
+  gl.GetTexParameterfv(TEXTURE_2D, TEXTURE_LOD_BIAS, f);
+  CHECK(f[0] == 1.5f);
+  gl.GetTexParameteriv(TEXTURE_2D, TEXTURE_LOD_BIAS, i);
+  CHECK(i[0] == 2);  // rounded
+  const int border[4] = {2147483647, 0, -2147483647, 1073741824};
+  gl.TexParameteriv(TEXTURE_2D, TEXTURE_BORDER_COLOR, border);
+  gl.GetTexParameterfv(TEXTURE_2D, TEXTURE_BORDER_COLOR, f);
+  CHECK((f[0] == 1.0f && f[1] == 0.0f && f[2] == -1.0f && std::fabs(f[3] - 0.5f) < 1e-6f));
+  gl.GetTexParameteriv(TEXTURE_2D, TEXTURE_BORDER_COLOR, i);
+  CHECK((i[0] == 2147483647 && i[1] == 0 && i[2] == -2147483647));
+  CHECK(gl.GetError() == NO_ERROR);
+  gl.GetTexParameteriv(TEXTURE_2D, 0x1234, i);
+  CHECK(gl.GetError() == INVALID_ENUM);
+  gl.GetTexParameteriv(TEXTURE_CUBE_MAP_POSITIVE_X, TEXTURE_MIN_FILTER, i);
+  CHECK(gl.GetError() == INVALID_ENUM);
+  // Level parameters.
+  gl.TexImage2D(TEXTURE_2D, 0, RGB8, 8, 4, 0, RGB, UNSIGNED_BYTE, nullptr);
+  gl.TexImage2D(TEXTURE_2D, 1, DEPTH24_STENCIL8, 4, 2, 0, DEPTH_STENCIL, UNSIGNED_INT_24_8, nullptr);
+  struct Expect {
+    int level;
+    Enum pname;
+    int value;
+  };
+  for (const Expect& e : {Expect{0, TEXTURE_WIDTH, 8}, Expect{0, TEXTURE_HEIGHT, 4}, Expect{0, TEXTURE_DEPTH, 1},
+                          Expect{0, TEXTURE_INTERNAL_FORMAT, int(RGB8)}, Expect{0, TEXTURE_RED_SIZE, 8},
+                          Expect{0, TEXTURE_ALPHA_SIZE, 0}, Expect{1, TEXTURE_WIDTH, 4},
+                          Expect{1, TEXTURE_DEPTH_SIZE, 24}, Expect{1, TEXTURE_STENCIL_SIZE, 8},
+                          Expect{1, TEXTURE_RED_SIZE, 0}, Expect{2, TEXTURE_WIDTH, 0},
+                          Expect{2, TEXTURE_INTERNAL_FORMAT, int(RGBA)}}) {
+    int v = -1;
+    gl.GetTexLevelParameteriv(TEXTURE_2D, e.level, e.pname, &v);
+    INFO("level " << e.level << " pname " << e.pname);
+    CHECK(v == e.value);
+  }
+  float w = 0;
+  gl.GetTexLevelParameterfv(TEXTURE_2D, 0, TEXTURE_WIDTH, &w);
+  CHECK(w == 8.0f);
+  CHECK(gl.GetError() == NO_ERROR);
+  gl.GetTexLevelParameteriv(TEXTURE_2D, -1, TEXTURE_WIDTH, i);
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.GetTexLevelParameteriv(TEXTURE_2D, 0, TEXTURE_MIN_FILTER, i);
+  CHECK(gl.GetError() == INVALID_ENUM);
+  gl.GetTexLevelParameteriv(TEXTURE_CUBE_MAP, 0, TEXTURE_WIDTH, i);
+  CHECK(gl.GetError() == INVALID_ENUM);
+}

@@ -61,6 +61,8 @@ class Context {
 
   /// glFinish: renders every recorded draw and clear, so that the buffers hold their results.
   void Finish();
+  /// glFlush: OpenGL lets commands start; softgl renders what is recorded now, as Finish does.
+  void Flush();
 
   // ---- Errors ------------------------------------------------------------------------------------------------
   /// Returns the first error recorded since the last call, and clears it (NO_ERROR when there was none).
@@ -79,6 +81,8 @@ class Context {
   /// Deletes a buffer; it is unbound from ARRAY_BUFFER and from the bound vertex array's element binding.
   /// Attribute bindings in other vertex arrays keep the storage alive, as OpenGL does. 0 and unknown ids are ignored.
   void DeleteBuffer(std::uint32_t buffer);
+  /// DeleteBuffer of each of ids[0 .. n). n < 0: INVALID_VALUE. (Each Delete*s call below is so.)
+  void DeleteBuffers(int n, const std::uint32_t* ids);
   bool IsBuffer(std::uint32_t buffer) const;
   /// Binds buffer (0 unbinds) to target ARRAY_BUFFER, ELEMENT_ARRAY_BUFFER, COPY_READ_BUFFER or
   /// COPY_WRITE_BUFFER. The ELEMENT_ARRAY_BUFFER binding is part of the bound vertex array (INVALID_OPERATION if
@@ -133,6 +137,7 @@ class Context {
   void GenVertexArrays(int n, std::uint32_t* ids);
   /// Deletes a vertex array; if it is bound, 0 becomes bound. 0 and unknown ids are ignored.
   void DeleteVertexArray(std::uint32_t array);
+  void DeleteVertexArrays(int n, const std::uint32_t* ids);
   bool IsVertexArray(std::uint32_t array) const;
   /// Binds a vertex array (0: none, as in an OpenGL core profile). Unknown id: INVALID_OPERATION.
   void BindVertexArray(std::uint32_t array);
@@ -168,6 +173,7 @@ class Context {
   /// Deletes a texture: it is unbound from every unit and detached from the bound framebuffer objects; a framebuffer
   /// object not bound keeps using its storage, as in OpenGL. 0 and unknown ids are ignored.
   void DeleteTexture(std::uint32_t texture);
+  void DeleteTextures(int n, const std::uint32_t* ids);
   bool IsTexture(std::uint32_t texture) const;
   /// Selects the texture unit that BindTexture, TexImage2D, TexParameter and GenerateMipmap act on: TEXTURE0 + i,
   /// i < kMaxTextureUnits (else INVALID_ENUM).
@@ -230,6 +236,20 @@ class Context {
   void TexParameterf(Enum target, Enum pname, float value);
   /// TEXTURE_BORDER_COLOR (four floats), or any single-valued name.
   void TexParameterfv(Enum target, Enum pname, const float* values);
+  /// As TexParameterfv; TEXTURE_BORDER_COLOR's integers map to [-1, 1] as OpenGL maps signed normalized values
+  /// (i / (2^31 - 1)).
+  void TexParameteriv(Enum target, Enum pname, const int* values);
+  /// The sampling state of the bound texture, by the names TexParameter takes (TEXTURE_BORDER_COLOR: four values;
+  /// as integers, mapped back from [-1, 1]). Bad target or name: INVALID_ENUM; nothing bound: INVALID_OPERATION.
+  void GetTexParameterfv(Enum target, Enum pname, float* params) const;
+  void GetTexParameteriv(Enum target, Enum pname, int* params) const;
+  /// One level of the bound texture (target TEXTURE_2D or a cube face): TEXTURE_WIDTH, TEXTURE_HEIGHT,
+  /// TEXTURE_DEPTH (1), TEXTURE_INTERNAL_FORMAT, TEXTURE_RED_SIZE, _GREEN_SIZE, _BLUE_SIZE, _ALPHA_SIZE,
+  /// TEXTURE_DEPTH_SIZE, TEXTURE_STENCIL_SIZE (the format's bits; all 0 for an undefined level, whose internal
+  /// format reads RGBA). Bad target or name: INVALID_ENUM; level out of range: INVALID_VALUE; nothing bound:
+  /// INVALID_OPERATION.
+  void GetTexLevelParameteriv(Enum target, int level, Enum pname, int* params) const;
+  void GetTexLevelParameterfv(Enum target, int level, Enum pname, float* params) const;
   /// UNPACK_ALIGNMENT (TexImage2D) and PACK_ALIGNMENT (ReadPixels): 1, 2, 4 (default) or 8, else INVALID_VALUE;
   /// PACK_ROW_LENGTH, PACK_SKIP_ROWS, PACK_SKIP_PIXELS: >= 0 (default 0), else INVALID_VALUE. Another name:
   /// INVALID_ENUM.
@@ -240,6 +260,7 @@ class Context {
   void GenFramebuffers(int n, std::uint32_t* ids);
   /// Deletes a framebuffer object; where it is bound, 0 (the context's own framebuffer) becomes bound.
   void DeleteFramebuffer(std::uint32_t framebuffer);
+  void DeleteFramebuffers(int n, const std::uint32_t* ids);
   bool IsFramebuffer(std::uint32_t framebuffer) const;
   /// Binds a framebuffer object (0: the context's own) to FRAMEBUFFER (both), DRAW_FRAMEBUFFER or READ_FRAMEBUFFER.
   void BindFramebuffer(Enum target, std::uint32_t framebuffer);
@@ -299,6 +320,7 @@ class Context {
   /// Deletes a renderbuffer: unbound from RENDERBUFFER and detached from the bound framebuffer objects (others keep
   /// using its storage, as in OpenGL). 0 and unknown ids are ignored.
   void DeleteRenderbuffer(std::uint32_t renderbuffer);
+  void DeleteRenderbuffers(int n, const std::uint32_t* ids);
   bool IsRenderbuffer(std::uint32_t renderbuffer) const;
   /// Binds a renderbuffer (0 unbinds) to RENDERBUFFER. Bad target: INVALID_ENUM; unknown id: INVALID_OPERATION.
   void BindRenderbuffer(Enum target, std::uint32_t renderbuffer);
@@ -410,6 +432,9 @@ class Context {
   /// DrawElement with the promise that the indices lie in [start, end] (not relied on: any index is read as
   /// DrawElement reads it). end < start: INVALID_VALUE.
   void DrawRangeElements(Enum mode, std::uint32_t start, std::uint32_t end, int count, Enum type, std::size_t offset);
+  /// DrawRangeElements with `basevertex` added to every index, as DrawElementsBaseVertex adds it.
+  void DrawRangeElementsBaseVertex(Enum mode, std::uint32_t start, std::uint32_t end, int count, Enum type,
+                                   std::size_t offset, int basevertex);
   /// DrawArrays `instancecount` times, in order, instance i with gl_InstanceID = i (VertexLanes::instance_id) and
   /// its divisor attributes at element i / divisor. instancecount < 0: INVALID_VALUE; 0 draws nothing.
   void DrawArraysInstanced(Enum mode, int first, int count, int instancecount);
@@ -425,6 +450,10 @@ class Context {
   /// INVALID_VALUE; a list that would read past the end of the element buffer: INVALID_OPERATION; on any error
   /// nothing is drawn.
   void MultiDrawElements(Enum mode, const int* count, Enum type, const std::size_t* offsets, int drawcount);
+  /// MultiDrawElements with basevertex[i] added to the indices of draw i. basevertex null (with drawcount > 0):
+  /// INVALID_VALUE.
+  void MultiDrawElementsBaseVertex(Enum mode, const int* count, Enum type, const std::size_t* offsets, int drawcount,
+                                   const int* basevertex);
 
   // ---- Query objects -------------------------------------------------------------------------------------------
   /// Creates a query object and returns its id (never 0).
@@ -432,6 +461,7 @@ class Context {
   void GenQueries(int n, std::uint32_t* ids);
   /// Deletes a query object (an active one ends first). 0 and unknown ids are ignored.
   void DeleteQuery(std::uint32_t id);
+  void DeleteQueries(int n, const std::uint32_t* ids);
   bool IsQuery(std::uint32_t id) const;
   /// Starts counting into query `id` for target: SAMPLES_PASSED (fragments that pass every per-fragment test),
   /// ANY_SAMPLES_PASSED (whether any did), PRIMITIVES_GENERATED (primitives assembled from the draws' vertices,
@@ -472,6 +502,7 @@ class Context {
   void GetIntegerv(Enum pname, int* data) const;
   void GetInteger64v(Enum pname, std::int64_t* data) const;
   void GetFloatv(Enum pname, float* data) const;
+  void GetDoublev(Enum pname, double* data) const;
   void GetBooleanv(Enum pname, bool* data) const;
   /// VENDOR, RENDERER, VERSION ("3.3 softgl" and softgl's version) or SHADING_LANGUAGE_VERSION; another name:
   /// INVALID_ENUM and null.

@@ -175,12 +175,18 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
             break;
           }
           case 1: gl.DrawElementsBaseVertex(mode, count, type, offset, in.Int(-64, 64)); break;
-          case 2: gl.DrawRangeElements(mode, in.Get<std::uint32_t>(), in.Get<std::uint32_t>(), count, type, offset); break;
+          case 2:
+            if (in.Byte() % 2) gl.DrawRangeElements(mode, in.Get<std::uint32_t>(), in.Get<std::uint32_t>(), count, type, offset);
+            else gl.DrawRangeElementsBaseVertex(mode, in.Get<std::uint32_t>(), in.Get<std::uint32_t>(), count, type, offset, in.Int(-64, 64));
+            break;
           default: {
             const int counts[3] = {count, draw_count(), draw_count()};
             const std::size_t offsets[3] = {offset, std::size_t(std::uint32_t(in.Int(0, 512))),
                                             std::size_t(std::uint32_t(in.Int(0, 512)))};
-            gl.MultiDrawElements(mode, counts, type, offsets, std::min(in.Int(-1, 3), 3));  // the arrays hold 3
+            const int base[3] = {in.Int(-64, 64), in.Int(-64, 64), in.Int(-64, 64)};
+            const int n = std::min(in.Int(-1, 3), 3);  // the arrays hold 3
+            if (in.Byte() % 2) gl.MultiDrawElements(mode, counts, type, offsets, n);
+            else gl.MultiDrawElementsBaseVertex(mode, counts, type, offsets, n, in.Byte() % 8 ? base : nullptr);
             break;
           }
         }
@@ -191,7 +197,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       case 14: gl.Viewport(in.Int(-64, 64), in.Int(-64, 64), in.Int(-2, 80), in.Int(-2, 80)); break;
       case 15: gl.Scissor(in.Int(-64, 64), in.Int(-64, 64), in.Int(-2, 80), in.Int(-2, 80)); break;
       case 16: gl.Clear(std::uint32_t(in.Get<std::uint16_t>()) | COLOR_BUFFER_BIT); break;
-      case 17: gl.DeleteBuffer(id()); break;
+      case 17: {
+        const std::uint32_t ids[2] = {id(), id()};
+        if (in.Byte() % 2) gl.DeleteBuffer(ids[0]);
+        else gl.DeleteBuffers(std::clamp(in.Int(-1, 2), -1, 2), ids);  // (Int may return any int: ids holds 2)
+        break;
+      }
       case 18: gl.DeleteVertexArray(id()); break;
       case 19: gl.GenTexture(); break;
       case 20: gl.ActiveTexture(TEXTURE0 + std::uint32_t(in.Int(0, 17))); break;
@@ -232,7 +243,23 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         }
         break;
       }
-      case 24: gl.TexParameteri(in.Enum(kTexTargets), in.Enum(kParams), int(in.Enum(kParamValues))); break;
+      case 24: {
+        int iv[4] = {int(in.Enum(kParamValues)), in.Int(-9, 9), in.Get<int>(), in.Get<int>()};
+        float fv[4];
+        switch (in.Byte() % 4) {
+          case 0: gl.TexParameteri(in.Enum(kTexTargets), in.Enum(kParams), iv[0]); break;
+          case 1: gl.TexParameteriv(in.Enum(kTexTargets), in.Byte() % 4 ? in.Enum(kParams) : TEXTURE_BORDER_COLOR, iv); break;
+          case 2:
+            gl.GetTexParameteriv(in.Enum(kTexTargets), in.Byte() % 4 ? in.Enum(kParams) : TEXTURE_BORDER_COLOR, iv);
+            gl.GetTexParameterfv(in.Enum(kTexTargets), in.Enum(kParams), fv);
+            break;
+          default:
+            gl.GetTexLevelParameteriv(in.Enum(kImageTargets), in.Int(-1, 16), std::uint32_t(in.Int(0x1000, 0x1004)), iv);
+            gl.GetTexLevelParameterfv(in.Enum(kImageTargets), in.Int(-1, 16), std::uint32_t(in.Int(0x8059, 0x8060)), fv);
+            break;
+        }
+        break;
+      }
       case 25: gl.TexParameterf(in.Enum(kTexTargets), in.Enum(kParams), in.Float()); break;
       case 26: gl.GenFramebuffer(); break;
       case 27: gl.BindFramebuffer(in.Enum(kFbTargets), id()); break;
