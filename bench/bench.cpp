@@ -1,7 +1,7 @@
 // bench — softgl against Mesa's llvmpipe (OSMesa, OpenGL 3.3 core) on the same scenes, same size, in one run.
 //
 //   bench [--threads N] [--frames N] [--png DIR] [--scene TEXT] [--softgl-only 1] [--scalar 0]
-//   (--png DIR: also write each scene's last softgl frame to DIR)
+//   (--png DIR: also write each scene's last frame to DIR, softgl's and llvmpipe's)
 //
 // llvmpipe runs with LP_NUM_THREADS = N (0 for --threads 1: rendering on the calling thread alone); softgl with
 // Context::Options::threads = N (the calling thread and N - 1 workers). Each scene is set up once per renderer
@@ -387,7 +387,7 @@ double MedianMs(int frames, const std::function<void()>& frame) {
 }
 
 // One frame of a scene: clear colour (and depth), one draw of `count` vertices (indexed or not), then wait for the
-// pixels. `png` names the file --png writes softgl's last frame to.
+// pixels. `png` names the file --png writes softgl's last frame to (and llvmpipe's, prefixed llvmpipe_).
 struct FrameSpec {
   bool depth;
   bool indexed;
@@ -410,7 +410,7 @@ double TimeSoftgl(int n, softgl::Context& gl, const FrameSpec& f) {
 }
 
 double TimeGl(int n, const FrameSpec& f) {
-  return MedianMs(n, [&] {
+  const double ms = MedianMs(n, [&] {
     glClear(GL_COLOR_BUFFER_BIT | (f.depth ? GL_DEPTH_BUFFER_BIT : 0));
     if (f.indexed) {
       glDrawElements(GL_TRIANGLES, GLsizei(f.count), GL_UNSIGNED_INT, nullptr);
@@ -419,6 +419,23 @@ double TimeGl(int n, const FrameSpec& f) {
     }
     glFinish();
   });
+  if (!g_png_dir.empty()) {  // llvmpipe's last frame beside softgl's, top row first
+    GLint vp[4];
+    glGetIntegerv(GL_VIEWPORT, vp);
+    softgl::Image img;
+    img.width = vp[2];
+    img.height = vp[3];
+    img.rgba.resize(std::size_t(img.width) * std::size_t(img.height) * 4);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, img.width, img.height, GL_RGBA, GL_UNSIGNED_BYTE, img.rgba.data());
+    const std::size_t row = std::size_t(img.width) * 4;
+    for (int y = 0; y < img.height / 2; ++y)
+      std::swap_ranges(img.rgba.begin() + std::ptrdiff_t(std::size_t(y) * row),
+                       img.rgba.begin() + std::ptrdiff_t(std::size_t(y + 1) * row),
+                       img.rgba.begin() + std::ptrdiff_t(std::size_t(img.height - 1 - y) * row));
+    softgl::WritePng(g_png_dir + "/llvmpipe_" + f.png, img);
+  }
+  return ms;
 }
 
 struct Scene {
@@ -549,34 +566,48 @@ int main(int argc, char** argv) {
   const FrameSpec fill_frame{false, false, 300, "bench_fill.png"};
   const FrameSpec overdraw_frame{false, false, 120, "bench_overdraw.png"};
   std::vector<Scene> scenes;
-  if (have_engine) {
-    scenes.push_back({"model: 2CylinderEngine, Blinn-Phong", 1280, 720, "Mtri/s", double(engine.indices.size() / 3),
-                      [&](int n) {
+  // A model drawn with the Blinn-Phong shader, one indexed draw with depth test and back-face culling.
+  auto add_phong_scene = [&](const char* name, int w, int h, const Geometry& g, const glm::mat4& vp,
+                             const glm::vec3& eye, const FrameSpec& frame) {
+    scenes.push_back({name, w, h, "Mtri/s", double(g.indices.size() / 3),
+                      [&g, &vp, &eye, &frame, w, h, &softgl_setup](int n) {
                         return WithShader<wide::PhongShader, scalar::PhongShader>([&](auto& shader) {
-                          softgl::Context gl(1280, 720, g_options);
-                          softgl_setup(gl, engine);
-                          shader.view_proj = engine_vp;
-                          shader.eye = engine_eye;
+                          softgl::Context gl(w, h, g_options);
+                          softgl_setup(gl, g);
+                          shader.view_proj = vp;
+                          shader.eye = eye;
                           gl.UseProgram(shader);
                           gl.Enable(softgl::DEPTH_TEST);
                           gl.Enable(softgl::CULL_FACE);
-                          return TimeSoftgl(n, gl, engine_frame);
+                          return TimeSoftgl(n, gl, frame);
                         });
                       },
-                      [&](int n) {
-                        return with_osmesa(1280, 720, [&] {
-                          gl_setup(engine);
+                      [&g, &vp, &eye, &frame, w, h, &with_osmesa, &gl_setup](int n) {
+                        return with_osmesa(w, h, [&] {
+                          gl_setup(g);
                           const GLuint p = Program(kPhongVs, kPhongFs);
-                          glUniformMatrix4fv(glGetUniformLocation(p, "vp"), 1, GL_FALSE, &engine_vp[0][0]);
+                          glUniformMatrix4fv(glGetUniformLocation(p, "vp"), 1, GL_FALSE, &vp[0][0]);
                           const glm::vec3 light = glm::normalize(glm::vec3(0.4f, 0.8f, 0.5f));
                           glUniform3fv(glGetUniformLocation(p, "light"), 1, &light[0]);
-                          glUniform3fv(glGetUniformLocation(p, "eye"), 1, &engine_eye[0]);
+                          glUniform3fv(glGetUniformLocation(p, "eye"), 1, &eye[0]);
                           glEnable(GL_DEPTH_TEST);
                           glEnable(GL_CULL_FACE);
-                          return TimeGl(n, engine_frame);
+                          return TimeGl(n, frame);
                         });
                       }});
-  }
+  };
+  if (have_engine)
+    add_phong_scene("model: 2CylinderEngine, Blinn-Phong", 1280, 720, engine, engine_vp, engine_eye, engine_frame);
+  // The subdivided Suzanne (251,904 triangles, assimp-testmodels' BLEND/SuzanneSubdiv_252.blend) at 1920x1080.
+  Geometry suzanne;
+  glm::mat4 suzanne_vp(1.0f);
+  const bool have_suzanne = all_data && LoadModel("/usr/share/assimp/models/BLEND/SuzanneSubdiv_252.blend", suzanne,
+                                                  suzanne_vp, 1920.0f / 1080.0f);
+  const glm::vec3 suzanne_eye = glm::vec3(glm::inverse(suzanne_vp) * glm::vec4(0, 0, -1, 1));
+  const FrameSpec suzanne_frame{true, true, int(suzanne.indices.size()), "bench_suzanne.png"};
+  if (have_suzanne)
+    add_phong_scene("model: SuzanneSubdiv_252, Blinn-Phong", 1920, 1080, suzanne, suzanne_vp, suzanne_eye,
+                    suzanne_frame);
   const std::string head_dir = "../shared/assets/african_head";
   Geometry head;
   const bool have_head = all_data && LoadTexturedModel(head_dir + "/african_head.obj", head);
