@@ -37,11 +37,22 @@ void ShadeVertices(const DrawCall& call, const FetchPlan& fetch, const Program& 
   } else {
     const auto [lo, hi] = std::minmax_element(call.elements, call.elements + count);
     const std::uint64_t range = std::uint64_t(*hi) - *lo + 1;
-    if (range <= std::uint64_t(count) * 2 + 64) {  // dense indices: shade the range once
-      to_shade.resize(std::size_t(range));
-      for (std::uint64_t i = 0; i < range; ++i) to_shade[i] = *lo + std::uint32_t(i);
-      for (int i = 0; i < count; ++i) map[i] = call.elements[i] - *lo;
-    } else {  // sparse indices: shade per element
+    if (range <= std::max<std::uint64_t>(std::uint64_t(count) * 8, std::uint64_t(1) << 16)) {
+      // Each distinct index shaded once, in the order of first use: a table over the index range gives each
+      // vertex its slot (a large mesh drawn in pieces has indices spread over the whole mesh in every piece).
+      constexpr std::uint32_t kUnseen = 0xFFFFFFFFu;
+      auto& slot = s.first_use;
+      slot.assign(std::size_t(range), kUnseen);
+      to_shade.reserve(std::size_t(count));
+      for (int i = 0; i < count; ++i) {
+        std::uint32_t& k = slot[call.elements[i] - *lo];
+        if (k == kUnseen) {
+          k = std::uint32_t(to_shade.size());
+          to_shade.push_back(call.elements[i]);
+        }
+        map[i] = k;
+      }
+    } else {  // indices spread far apart: shade per element
       to_shade.assign(call.elements, call.elements + count);
       for (int i = 0; i < count; ++i) map[i] = std::uint32_t(i);
     }

@@ -80,6 +80,7 @@ struct Scratch {
   std::vector<std::uint32_t> piece;          // the indices of one piece of a large draw
   std::vector<std::uint32_t> shade_indices;  // vertex index of each vertex to shade
   std::vector<std::uint32_t> element_to_shaded;
+  std::vector<std::uint32_t> first_use;      // per vertex of an indexed draw's index range: its shaded slot
   ShadedVertices shaded;
   Primitives primitives;
   std::vector<VertexScratch> vertex;  // per worker

@@ -1,6 +1,7 @@
 // Vertex fetch: every attribute type with and without normalization, strides, offsets, bounds, indices.
 #include <catch2/catch.hpp>
 
+#include <atomic>
 #include <cstring>
 #include <vector>
 
@@ -202,4 +203,43 @@ TEST_CASE("a disabled attribute's value reaches every vertex of a large draw", "
   for (std::size_t i = 0; i < img.rgba.size(); i += 4)
     magenta += img.rgba[i] == 255 && img.rgba[i + 1] == 0 && img.rgba[i + 2] == 255;
   CHECK(magenta == 3000);  // 3000 distinct pixels
+}
+
+TEST_CASE("an indexed draw fetches and shades each distinct index once", "[vertex_fetch]") {
+  // Counts vertex shader invocations (the count lives outside the shader: draws run on copies of it) and records
+  // which vertex each was.
+  struct Counting : softgl::Shader<Counting, testing::NoVaryings> {
+    std::atomic<int>* calls = nullptr;
+    std::vector<std::atomic<int>>* per_vertex = nullptr;
+    void Vertex(const VertexIn& in, VertexOut<testing::NoVaryings>& out) const {
+      ++*calls;
+      ++(*per_vertex)[std::size_t(in.vertex_id)];
+      out.position = in.attrib[0];
+    }
+    bool Fragment(const FragmentIn<testing::NoVaryings>&, FragmentOut& out) const {
+      out.color[0] = glm::vec4(1.0f);
+      return true;
+    }
+  };
+  std::atomic<int> calls{0};
+  std::vector<std::atomic<int>> per_vertex(300);
+  Counting shader;
+  shader.calls = &calls;
+  shader.per_vertex = &per_vertex;
+  Context gl(16, 16);
+  gl.UseProgram(shader);
+  std::vector<glm::vec4> positions(300);
+  for (int i = 0; i < 300; ++i) positions[std::size_t(i)] = glm::vec4(float(i % 17) / 8.0f - 1.0f, float(i / 17) / 8.0f - 1.0f, 0, 1);
+  testing::MakeVertexArray(gl, positions);
+  // 600 indices over every third vertex of 0 .. 297 (100 distinct), each used six times, out of order.
+  std::vector<std::uint32_t> indices;
+  for (int r = 0; r < 6; ++r)
+    for (int k = 0; k < 100; ++k) indices.push_back(std::uint32_t(3 * ((k * 37 + r * 11) % 100)));
+  gl.BindBuffer(ELEMENT_ARRAY_BUFFER, gl.GenBuffer());
+  gl.BufferData(ELEMENT_ARRAY_BUFFER, std::ptrdiff_t(indices.size() * 4), indices.data());
+  gl.DrawElement(TRIANGLES, int(indices.size()), UNSIGNED_INT, 0);
+  gl.Finish();
+  CHECK(gl.GetError() == NO_ERROR);
+  CHECK(calls == 100);
+  for (int i = 0; i < 300; ++i) CHECK(per_vertex[std::size_t(i)] == (i % 3 == 0 ? 1 : 0));
 }
