@@ -20,6 +20,7 @@
 namespace {
 
 constexpr const char* kUsage = R"(usage: softgl-render MODEL -o OUT.png [options]
+       softgl-render MODEL --info
 
 Renders any model file assimp reads (OBJ, glTF/GLB, FBX, COLLADA, PLY, STL, 3DS, ...) with a camera framing
 its bounding box and three-point lighting.
@@ -37,6 +38,8 @@ options:
   --wireframe             draw the triangle edges over the shaded model
   --supersample N         render N times larger and average down (1 to 4, default 1)
   --turntable N           write N frames going once around the model
+  --info                  print what the file holds (meshes, vertex and triangle counts, materials and their
+                          maps, bounding box, import time) and render nothing
   -q, --quiet             no progress bar
   -h, --help              this text
 )";
@@ -49,7 +52,7 @@ struct Options {
   std::optional<glm::vec3> eye, target;
   std::string shader = "auto";
   glm::vec3 background{0.16f, 0.17f, 0.2f};
-  bool wireframe = false, quiet = false;
+  bool wireframe = false, quiet = false, info = false;
   int supersample = 1, turntable = 0;
 };
 
@@ -91,6 +94,8 @@ std::string Parse(int argc, char** argv, Options& o) {
       o.quiet = true;
     } else if (a == "--wireframe") {
       o.wireframe = true;
+    } else if (a == "--info") {
+      o.info = true;
     } else if (a == "-o" || a == "--output") {
       if (!value(o.output)) return "-o needs a file name";
     } else if (a == "--size") {
@@ -137,7 +142,7 @@ std::string Parse(int argc, char** argv, Options& o) {
     }
   }
   if (o.model.empty()) return "no model file given";
-  if (o.output.empty()) return "no output file given (-o OUT.png)";
+  if (o.output.empty() && !o.info) return "no output file given (-o OUT.png)";
   if (std::int64_t(o.width) * o.supersample > softgl::kMaxFramebufferSize ||
       std::int64_t(o.height) * o.supersample > softgl::kMaxFramebufferSize)
     return "--size times --supersample is larger than " + std::to_string(softgl::kMaxFramebufferSize);
@@ -178,6 +183,47 @@ struct FlatShader : softgl::Shader<FlatShader, NoVaryings>, softgl::MaterialProg
   }
 };
 
+// --info: what Model::Load made of the file, on stdout.
+void PrintInfo(const std::string& path, const softgl::Model& model, double import_seconds) {
+  long long vertices = 0, triangles = 0;
+  for (const softgl::ModelMesh& m : model.meshes) {
+    vertices += m.vertex_count;
+    triangles += m.index_count / 3;
+  }
+  std::printf("file: %s\nimport: %.3f s\n", path.c_str(), import_seconds);
+  std::printf("meshes: %zu, %lld triangles, %lld vertices (triangle meshes: points and lines are not imported)\n",
+              model.meshes.size(), triangles, vertices);
+  for (std::size_t i = 0; i < model.meshes.size(); ++i) {
+    const softgl::ModelMesh& m = model.meshes[i];
+    std::printf("  mesh %zu: %d triangles, %d vertices, material %d\n", i, m.index_count / 3, m.vertex_count,
+                m.material);
+  }
+  std::printf("nodes: %zu; triangles drawn (each mesh once per node that uses it): %d\n", model.nodes.size(),
+              model.triangles_drawn);
+  std::printf("materials: %zu (textures loaded: %d)\n", model.materials.size(), model.textures_loaded);
+  for (std::size_t i = 0; i < model.materials.size(); ++i) {
+    const softgl::Material& m = model.materials[i];
+    std::string maps;
+    const std::pair<std::uint32_t, const char*> named[] = {
+        {m.base_color_texture, "base colour"}, {m.normal_texture, "normal"},
+        {m.metallic_roughness_texture, "metallic-roughness"}, {m.emissive_texture, "emissive"},
+        {m.occlusion_texture, "occlusion"}, {m.specular_texture, "specular"}};
+    for (const auto& [id, name] : named)
+      if (id != 0) maps += std::string(maps.empty() ? "" : ", ") + name;
+    const char* alpha = m.alpha_mode == softgl::Material::AlphaMode::kBlend  ? "blend"
+                        : m.alpha_mode == softgl::Material::AlphaMode::kMask ? "mask"
+                                                                             : "opaque";
+    std::printf("  material %zu \"%s\": %s, base colour (%.3g, %.3g, %.3g, %.3g), %s%s, maps: %s\n", i,
+                m.name.c_str(), m.pbr ? "metallic-roughness" : "Phong", m.base_color.r, m.base_color.g,
+                m.base_color.b, m.base_color.a, alpha, m.double_sided ? ", double-sided" : "",
+                maps.empty() ? "none" : maps.c_str());
+  }
+  const glm::vec3 lo = model.bounds.min, hi = model.bounds.max, size = hi - lo;
+  std::printf("bounds: min (%g, %g, %g), max (%g, %g, %g), size (%g, %g, %g)\n", lo.x, lo.y, lo.z, hi.x, hi.y, hi.z,
+              size.x, size.y, size.z);
+  for (const std::string& w : model.warnings) std::printf("warning: %s\n", w.c_str());
+}
+
 void Progress(int done, int total, double seconds) {
   constexpr int kWidth = 40;
   const int filled = total ? done * kWidth / total : kWidth;
@@ -200,7 +246,8 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "softgl-render: %s\n\n%s", err.c_str(), kUsage);
     return 2;
   }
-  const int w = o.width * o.supersample, h = o.height * o.supersample;
+  // --info renders nothing: a 1x1 context holds the model's objects.
+  const int w = o.info ? 1 : o.width * o.supersample, h = o.info ? 1 : o.height * o.supersample;
   softgl::Context gl(w, h);
   if (gl.GetError() != softgl::NO_ERROR) {
     std::fprintf(stderr, "softgl-render: cannot make a %dx%d framebuffer\n", w, h);
@@ -212,8 +259,12 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "softgl-render: %s\n", error.c_str());
     return 1;
   }
-  for (const std::string& warning : model.warnings) std::fprintf(stderr, "softgl-render: warning: %s\n", warning.c_str());
   const double load_seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  if (o.info) {
+    PrintInfo(o.model, model, load_seconds);
+    return 0;
+  }
+  for (const std::string& warning : model.warnings) std::fprintf(stderr, "softgl-render: warning: %s\n", warning.c_str());
 
   bool any_pbr = false;
   for (const softgl::Material& m : model.materials) any_pbr = any_pbr || m.pbr;

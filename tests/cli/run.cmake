@@ -1,5 +1,6 @@
 # Runs softgl-render with ARGS (a ;-list) and checks its exit status is EXPECTED; with FILES (a ;-list), also that
-# each file exists afterwards (and was not there before).
+# each file exists afterwards (and was not there before); with STDOUT (a ;-list of regular expressions), that its
+# standard output matches each.
 foreach(f IN LISTS FILES)
   file(REMOVE "${f}")
 endforeach()
@@ -10,6 +11,11 @@ endif()
 if(NOT EXPECTED EQUAL 0 AND NOT err MATCHES "softgl-render: ")
   message(FATAL_ERROR "softgl-render ${ARGS}: no error message on stderr\n${err}")
 endif()
+foreach(pattern IN LISTS STDOUT)
+  if(NOT out MATCHES "${pattern}")
+    message(FATAL_ERROR "softgl-render ${ARGS}: the output does not match '${pattern}'\n${out}")
+  endif()
+endforeach()
 foreach(f IN LISTS FILES)
   if(NOT EXISTS "${f}")
     message(FATAL_ERROR "softgl-render ${ARGS}: ${f} was not written")
