@@ -108,9 +108,12 @@ TEST_CASE("bad model files give a clear error", "[model][errors]") {
     for (int i = 0; i < 4096; ++i) f.put(char((i * 2654435761u) >> 13));
   }
   CHECK_FALSE(model.Load(gl, (dir / "random.xyz").string(), &error));
-  // Points only: no triangles to draw.
-  CHECK_FALSE(model.Load(gl, TestModel("OBJ/point_cloud.obj"), &error));
-  CHECK(error.find("no geometry") != std::string::npos);
+  {  // nothing to draw at all
+    std::ofstream f(dir / "empty.obj");
+    f << "# no vertices, no faces\no nothing\n";
+  }
+  CHECK_FALSE(model.Load(gl, (dir / "empty.obj").string(), &error));
+  CHECK(error.find("empty.obj") != std::string::npos);
   CHECK_FALSE(model.Load(gl, dir.string(), &error));  // a folder
   CHECK(gl.GetError() == NO_ERROR);
 }
@@ -201,4 +204,44 @@ TEST_CASE("image: a model per built-in shader", "[model][image]") {
   CheckGolden("model_duck_phong", scenes::ModelView(TestModel("Collada/duck.dae"), "phong", 320, 240, 30, 20));
   CheckGolden("model_box_pbr",
               scenes::ModelView(TestModel("glTF2/BoxTextured-glTF/BoxTextured.gltf"), "pbr", 320, 240, 35, 25));
+}
+
+TEST_CASE("point and line meshes are kept and drawn, unlit", "[model]") {
+  // An OBJ point cloud of vertices alone (no point elements: assimp's validation refuses it, the second reading
+  // takes it), and an OBJ with a point element and a polyline.
+  Context gl(64, 64);
+  Model model;
+  std::string error;
+  REQUIRE(model.Load(gl, TestModel("OBJ/point_cloud.obj"), &error));
+  REQUIRE(model.meshes.size() == 1);
+  CHECK(model.meshes[0].mode == POINTS);
+  CHECK(model.meshes[0].index_count == 3);
+  CHECK_FALSE(model.meshes[0].has_normals);
+  CHECK(model.points_drawn == 3);
+  CHECK(model.triangles_drawn == 0);
+  const std::filesystem::path dir = std::filesystem::path(SOFTGL_TEST_OUTPUT_DIR) / "models";
+  std::filesystem::create_directories(dir);
+  {
+    std::ofstream f(dir / "lines_and_points.obj");
+    f << "v -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\nl 1 2 3 4 1\np 3\n";
+  }
+  REQUIRE(model.Load(gl, (dir / "lines_and_points.obj").string(), &error));
+  CHECK(model.lines_drawn == 4);
+  CHECK(model.points_drawn == 1);
+  // Drawn with the Phong shader: no normals, so the material's colour as it is (assimp's default grey, 0.6).
+  PhongShader phong;
+  const Camera cam = Camera::Frame(model.bounds, 1.0f, 0.0f, 0.0f);
+  gl.ClearColor(0, 0, 0, 1);
+  gl.Clear(COLOR_BUFFER_BIT | DEPTH_BUFFER_BIT);
+  gl.PointSize(5.0f);
+  model.Draw(gl, phong, cam.Projection(1.0f) * cam.View());
+  const Image img = gl.ReadPixels();
+  int lit = 0, grey = 0;
+  for (std::size_t i = 0; i < img.rgba.size(); i += 4) {
+    lit += img.rgba[i] > 0;
+    grey += img.rgba[i] == 153 && img.rgba[i + 1] == 153 && img.rgba[i + 2] == 153;
+  }
+  CHECK(lit > 100);      // four edges of a square framed in 64 x 64, and a point
+  CHECK(grey == lit);    // every pixel the material's colour, unlit
+  CHECK(gl.GetError() == NO_ERROR);
 }

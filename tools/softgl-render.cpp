@@ -1,6 +1,6 @@
 // softgl-render — renders a model file to PNG: `softgl-render MODEL -o out.png [options]`.
 //
-// Exit status: 0 done; 1 the model cannot be loaded (missing file, unreadable format, no geometry); 2 bad command
+// Exit status: 0 done; 1 the model cannot be loaded (missing file, unreadable format, nothing to draw); 2 bad command
 // line; 3 the image cannot be written.
 #include <unistd.h>
 
@@ -36,6 +36,7 @@ options:
   --shader NAME           auto (default: pbr for metallic-roughness materials, else phong), pbr, phong, unlit
   --background R,G,B      background colour, components in [0, 1] (default 0.16,0.17,0.2)
   --wireframe             draw the triangle edges over the shaded model
+  --point-size PX         diameter of the points of point meshes (1 to 64, default 3)
   --supersample N         render N times larger and average down (1 to 4, default 1)
   --turntable N           write N frames going once around the model
   --info                  print what the file holds (meshes, vertex and triangle counts, materials and their
@@ -54,6 +55,7 @@ struct Options {
   glm::vec3 background{0.16f, 0.17f, 0.2f};
   bool wireframe = false, quiet = false, info = false;
   int supersample = 1, turntable = 0;
+  float point_size = 3.0f;
 };
 
 bool ParseFloats(const std::string& s, int n, float* out) {
@@ -129,6 +131,10 @@ std::string Parse(int argc, char** argv, Options& o) {
       float f[3];
       if (!value(v) || !ParseFloats(v, 3, f)) return "--background needs R,G,B";
       o.background = glm::clamp(glm::vec3(f[0], f[1], f[2]), 0.0f, 1.0f);
+    } else if (a == "--point-size") {
+      float f = 0.0f;
+      if (!value(v) || !ParseFloats(v, 1, &f) || f < 1.0f || f > 64.0f) return "--point-size is 1 to 64 pixels";
+      o.point_size = f;
     } else if (a == "--supersample") {
       if (!value(v) || !ParseInt(v, 1, 4, o.supersample)) return "--supersample is 1 to 4";
     } else if (a == "--turntable") {
@@ -188,18 +194,19 @@ void PrintInfo(const std::string& path, const softgl::Model& model, double impor
   long long vertices = 0, triangles = 0;
   for (const softgl::ModelMesh& m : model.meshes) {
     vertices += m.vertex_count;
-    triangles += m.index_count / 3;
+    if (m.mode == softgl::TRIANGLES) triangles += m.index_count / 3;
   }
   std::printf("file: %s\nimport: %.3f s\n", path.c_str(), import_seconds);
-  std::printf("meshes: %zu, %lld triangles, %lld vertices (triangle meshes: points and lines are not imported)\n",
-              model.meshes.size(), triangles, vertices);
+  std::printf("meshes: %zu, %lld triangles, %lld vertices\n", model.meshes.size(), triangles, vertices);
   for (std::size_t i = 0; i < model.meshes.size(); ++i) {
     const softgl::ModelMesh& m = model.meshes[i];
-    std::printf("  mesh %zu: %d triangles, %d vertices, material %d\n", i, m.index_count / 3, m.vertex_count,
-                m.material);
+    const int per = m.mode == softgl::POINTS ? 1 : m.mode == softgl::LINES ? 2 : 3;
+    const char* kind = per == 1 ? "points" : per == 2 ? "lines" : "triangles";
+    std::printf("  mesh %zu: %d %s, %d vertices, material %d%s\n", i, m.index_count / per, kind, m.vertex_count,
+                m.material, m.has_normals ? "" : ", no normals (drawn unlit)");
   }
-  std::printf("nodes: %zu; triangles drawn (each mesh once per node that uses it): %d\n", model.nodes.size(),
-              model.triangles_drawn);
+  std::printf("nodes: %zu; drawn (each mesh once per node that uses it): %d triangles, %d lines, %d points\n",
+              model.nodes.size(), model.triangles_drawn, model.lines_drawn, model.points_drawn);
   std::printf("materials: %zu (textures loaded: %d)\n", model.materials.size(), model.textures_loaded);
   for (std::size_t i = 0; i < model.materials.size(); ++i) {
     const softgl::Material& m = model.materials[i];
@@ -303,6 +310,7 @@ int main(int argc, char** argv) {
     gl.ClearColor(o.background.r, o.background.g, o.background.b, 1.0f);
     gl.Clear(softgl::COLOR_BUFFER_BIT | softgl::DEPTH_BUFFER_BIT);
     gl.Enable(softgl::DEPTH_TEST);
+    gl.PointSize(o.point_size * float(o.supersample));
     if (o.wireframe) {  // the shaded surface a little behind its edges
       gl.Enable(softgl::POLYGON_OFFSET_FILL);
       gl.PolygonOffset(1.0f, 1.0f);
@@ -339,9 +347,10 @@ int main(int argc, char** argv) {
   const double render_seconds = std::chrono::duration<double>(Clock::now() - render_start).count();
   if (!o.quiet)
     std::fprintf(stderr,
-                 "softgl-render: %s: %d triangles, %zu meshes, %zu materials, %d textures, shader %s; load %.2f s, "
-                 "render %d frame%s of %dx%d in %.2f s (%.1f ms/frame)\n",
-                 o.model.c_str(), model.triangles_drawn, model.meshes.size(), model.materials.size(),
+                 "softgl-render: %s: %d triangles, %d lines, %d points, %zu meshes, %zu materials, %d textures, "
+                 "shader %s; load %.2f s, render %d frame%s of %dx%d in %.2f s (%.1f ms/frame)\n",
+                 o.model.c_str(), model.triangles_drawn, model.lines_drawn, model.points_drawn, model.meshes.size(),
+                 model.materials.size(),
                  model.textures_loaded, shader_name.c_str(), load_seconds, frames, frames == 1 ? "" : "s", w, h,
                  render_seconds, 1000.0 * render_seconds / frames);
   return 0;

@@ -60,6 +60,8 @@ struct ModelMesh {
   int index_count = 0;
   int vertex_count = 0;
   int material = 0;
+  Enum mode = TRIANGLES;    // TRIANGLES, LINES (polylines and loops come as segments) or POINTS
+  bool has_normals = true;  // false: the file gives none (points and lines), and the built-in shaders draw it unlit
 };
 
 struct ModelNode {
@@ -84,19 +86,23 @@ class MaterialProgram {
   virtual void SetTransforms(const glm::mat4& model, const glm::mat4& view_proj) = 0;
   /// The mesh's material (its textures are bound to the MaterialUnit units by then).
   virtual void SetMaterial(const Material& material) = 0;
+  /// The mesh about to be drawn (after SetMaterial); by default ignored.
+  virtual void SetMesh(const ModelMesh& mesh) { (void)mesh; }
 };
 
 class Model {
  public:
   /// Loads `path` into `gl`: meshes triangulated, smooth normals generated where missing, tangents computed,
-  /// images (external files or embedded) loaded as mipmapped textures. Returns false, with a message in `error`,
-  /// for a missing file, a format assimp cannot read, a corrupt file or a scene without triangles; `gl` may
-  /// then hold objects already made (deleting them is the caller's choice: Context objects die with it).
+  /// images (external files or embedded) loaded as mipmapped textures; meshes of points or lines are kept as
+  /// they are (mode POINTS or LINES). Returns false, with a message in `error`, for a missing file, a format
+  /// assimp cannot read, a corrupt file or a scene with nothing to draw; `gl` may then hold objects already made
+  /// (deleting them is the caller's choice: Context objects die with it).
   bool Load(Context& gl, const std::string& path, std::string* error = nullptr);
 
   /// Draws every node, accumulating transforms from the root (times `world`): opaque and masked materials first,
   /// then blended ones with blending on and depth writes off; back faces culled unless a material is double
-  /// sided. Leaves the vertex array, culling, blending and depth mask as they were.
+  /// sided; point meshes at the context's PointSize. Leaves the vertex array, culling, blending and depth mask as
+  /// they were.
   void Draw(Context& gl, MaterialProgram& program, const glm::mat4& view_proj,
             const glm::mat4& world = glm::mat4(1.0f)) const;
 
@@ -105,6 +111,7 @@ class Model {
   std::vector<ModelNode> nodes;  // nodes[0] is the root
   Bounds bounds;                 // of all vertices drawn, node transforms applied
   int triangles_drawn = 0;       // instances counted
+  int lines_drawn = 0, points_drawn = 0;
   int textures_loaded = 0;
   std::vector<std::string> warnings;  // textures that could not be read (the material then goes without)
 };

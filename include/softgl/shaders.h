@@ -69,6 +69,7 @@ class SurfaceShader : public Shader<Derived, SurfaceVaryings>, public MaterialPr
   glm::mat3 normal_matrix{1.0f};
   Material material;
   Lighting lighting = Lighting::ThreePoint(glm::vec3(0.0f, 0.0f, 3.0f), glm::vec3(0.0f));
+  bool lit = true;  // false for a mesh without normals (points, lines): Phong and PBR draw it unlit
 
   const Program& GetProgram() const override { return *this; }
   void SetTransforms(const glm::mat4& m, const glm::mat4& vp) override {
@@ -77,6 +78,7 @@ class SurfaceShader : public Shader<Derived, SurfaceVaryings>, public MaterialPr
     normal_matrix = glm::transpose(glm::inverse(glm::mat3(m)));
   }
   void SetMaterial(const Material& m) override { material = m; }
+  void SetMesh(const ModelMesh& mesh) override { lit = mesh.has_normals; }
 
   void Vertex(const VertexLanes& in, VertexLanesOut<SurfaceVaryings>& out) const {
     const vec4 world = model * vec4(vec3(in.attrib[kAttribPosition]), 1.0f);
@@ -138,6 +140,10 @@ struct UnlitShader : SurfaceShader<UnlitShader> {
 struct PhongShader : SurfaceShader<PhongShader> {
   void Fragment(const In& in, Out& out) const {
     const vec4 base = BaseColor(in, out);
+    if (!lit) {
+      out.color[0] = vec4(vec3(base) + Emissive(in), base.w);
+      return;
+    }
     const vec3 n = Normal(in);
     const vec3 v = normalize(lighting.eye - in.varyings.world_pos);
     vec3 spec_color = material.specular;
@@ -167,6 +173,11 @@ struct PbrShader : SurfaceShader<PbrShader> {
   float environment_strength = 1.0f;
 
   static vec3 ToLinear(const vec3& c) { return pow(max(c, 0.0f), 2.2f); }
+  vec3 LinearEmissive(const In& in) const {
+    vec3 e = material.emissive;
+    if (material.emissive_texture) e *= ToLinear(vec3(in.Texture(kUnitEmissive, in.varyings.uv)));
+    return e;
+  }
 
   void Fragment(const In& in, Out& out) const {
     vec4 base = material.base_color * in.varyings.color;
@@ -185,6 +196,10 @@ struct PbrShader : SurfaceShader<PbrShader> {
     if (material.occlusion_texture) ao = in.Texture(kUnitOcclusion, in.varyings.uv).x;
     roughness = clamp(roughness, 0.04f, 1.0f);
     const vec3 albedo = vec3(base);
+    if (!lit) {  // the base colour as it is (encoded back), plus emission
+      out.color[0] = vec4(pow(clamp(albedo + LinearEmissive(in), 0.0f, 1.0f), 1.0f / 2.2f), base.w);
+      return;
+    }
     const vec3 n = Normal(in);
     const vec3 v = normalize(lighting.eye - in.varyings.world_pos);
     const Float ndv = max(dot(n, v), 1e-4f);
@@ -223,9 +238,7 @@ struct PbrShader : SurfaceShader<PbrShader> {
       ambient = (kd * albedo * irradiance + spec_env) * environment_strength;
     }
     color += ambient * ao;
-    vec3 emissive = material.emissive;
-    if (material.emissive_texture) emissive *= ToLinear(vec3(in.Texture(kUnitEmissive, in.varyings.uv)));
-    color += emissive;
+    color += LinearEmissive(in);
     out.color[0] = vec4(pow(clamp(color, 0.0f, 1.0f), 1.0f / 2.2f), base.w);
   }
 };

@@ -86,7 +86,9 @@ class Loader {
       for (int m : node.meshes) {
         const ModelMesh& mesh = model_.meshes[std::size_t(m)];
         if (mesh.index_count == 0) continue;
-        model_.triangles_drawn += mesh.index_count / 3;
+        if (mesh.mode == POINTS) model_.points_drawn += mesh.index_count;
+        else if (mesh.mode == LINES) model_.lines_drawn += mesh.index_count / 2;
+        else model_.triangles_drawn += mesh.index_count / 3;
         const auto& [lo, hi] = mesh_boxes[std::size_t(m)];
         for (int corner = 0; corner < 8; ++corner) {
           const glm::vec3 p((corner & 1) ? hi.x : lo.x, (corner & 2) ? hi.y : lo.y, (corner & 4) ? hi.z : lo.z);
@@ -207,6 +209,13 @@ class Loader {
   ModelMesh Upload(const aiMesh& mesh) {
     ModelMesh out;
     out.material = mesh.mMaterialIndex < model_.materials.size() ? int(mesh.mMaterialIndex) : 0;
+    // Sorted by primitive type on import, a mesh holds one kind: triangles, or else lines, or else points.
+    const unsigned per = (mesh.mPrimitiveTypes & aiPrimitiveType_TRIANGLE) ? 3
+                         : (mesh.mPrimitiveTypes & aiPrimitiveType_LINE)   ? 2
+                         : (mesh.mPrimitiveTypes & aiPrimitiveType_POINT)  ? 1
+                                                                           : 3;
+    out.mode = per == 1 || mesh.mNumFaces == 0 ? POINTS : per == 2 ? LINES : TRIANGLES;
+    out.has_normals = mesh.mNormals != nullptr && out.mode == TRIANGLES;  // points and lines have no surface to light
     std::vector<ModelVertex> vertices(mesh.mNumVertices);
     glm::vec3 lo(0.0f), hi(0.0f);
     bool any_finite = false;
@@ -235,12 +244,14 @@ class Loader {
     mesh_boxes.push_back({lo, hi});
     std::vector<std::uint32_t> indices;
     indices.reserve(std::size_t(mesh.mNumFaces) * 3);
-    for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
+    if (mesh.mNumFaces == 0 || mesh.mFaces == nullptr)  // vertices alone: a point each
+      for (unsigned i = 0; i < mesh.mNumVertices; ++i) indices.push_back(i);
+    for (unsigned f = 0; mesh.mFaces != nullptr && f < mesh.mNumFaces; ++f) {
       const aiFace& face = mesh.mFaces[f];
-      if (face.mNumIndices != 3) continue;  // points and lines are not drawn as surfaces
+      if (face.mNumIndices != per) continue;  // a primitive of another kind (not in a sorted mesh)
       bool valid = true;
-      for (unsigned k = 0; k < 3; ++k) valid = valid && face.mIndices[k] < mesh.mNumVertices;
-      if (valid) indices.insert(indices.end(), face.mIndices, face.mIndices + 3);
+      for (unsigned k = 0; k < per; ++k) valid = valid && face.mIndices[k] < mesh.mNumVertices;
+      if (valid) indices.insert(indices.end(), face.mIndices, face.mIndices + per);
     }
     out.vertex_count = int(vertices.size());
     out.index_count = int(indices.size());
@@ -317,15 +328,16 @@ bool Model::Load(Context& gl, const std::string& path, std::string* error) {
   if (!std::filesystem::is_regular_file(path, ec)) return fail("no such file");
   if (PlyHeaderUnterminated(path)) return fail("cannot read: a PLY header without end_header");
   Assimp::Importer importer;
-  importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
-  const aiScene* scene =
-      importer.ReadFile(path, aiProcess_Triangulate | aiProcess_GenSmoothNormals | aiProcess_CalcTangentSpace |
-                                  aiProcess_JoinIdenticalVertices | aiProcess_SortByPType | aiProcess_ValidateDataStructure);
+  constexpr unsigned kSteps = aiProcess_Triangulate | aiProcess_GenSmoothNormals | aiProcess_CalcTangentSpace |
+                              aiProcess_JoinIdenticalVertices | aiProcess_SortByPType;
+  const aiScene* scene = importer.ReadFile(path, kSteps | aiProcess_ValidateDataStructure);
   if (!scene) {
     const std::string why = importer.GetErrorString();
-    // Point and line meshes are dropped on import; a file of nothing else fails validation this way.
-    if (why.find("contains no faces") != std::string::npos) return fail("no geometry (no triangles to draw)");
-    return fail("cannot read: " + why);
+    if (why.find("contains no faces") == std::string::npos) return fail("cannot read: " + why);
+    // A point cloud without point elements (an OBJ of vertices alone) fails assimp's validation: read again
+    // without it; Upload checks every index and draws a mesh without faces as one point per vertex.
+    scene = importer.ReadFile(path, kSteps);
+    if (!scene) return fail("cannot read: " + std::string(importer.GetErrorString()));
   }
   if ((scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE) || !scene->mRootNode) return fail("incomplete scene");
   Loader loader(gl, *this, *scene, std::filesystem::path(path).parent_path());
@@ -334,7 +346,7 @@ bool Model::Load(Context& gl, const std::string& path, std::string* error) {
   loader.Nodes();
   if (nodes.empty()) return fail("no nodes");
   loader.Measure(loader.mesh_boxes);
-  if (triangles_drawn == 0) return fail("no geometry (no triangles to draw)");
+  if (triangles_drawn == 0 && lines_drawn == 0 && points_drawn == 0) return fail("no geometry (nothing to draw)");
   return true;
 }
 
@@ -368,9 +380,10 @@ void Model::Draw(Context& gl, MaterialProgram& program, const glm::mat4& view_pr
         if (mat.double_sided) gl.Disable(CULL_FACE);
         else gl.Enable(CULL_FACE);
         program.SetMaterial(mat);
+        program.SetMesh(mesh);
         program.SetTransforms(transform, view_proj);
         gl.BindVertexArray(mesh.vertex_array);
-        gl.DrawElement(TRIANGLES, mesh.index_count, UNSIGNED_INT, 0);
+        gl.DrawElement(mesh.mode, mesh.index_count, UNSIGNED_INT, 0);
       }
       for (int c : node.children) stack.push_back({c, transform * nodes[std::size_t(c)].transform});
     }
