@@ -39,6 +39,8 @@ options:
   --point-size PX         diameter of the points of point meshes (1 to 64, default 3)
   --supersample N         render N times larger and average down (1 to 4, default 1)
   --turntable N           write N frames going once around the model
+  --sheet COLSxROWS       one PNG of COLS x ROWS views going once around the model, left to right and top to
+                          bottom, each of --size (not with --turntable)
   --info                  print what the file holds (meshes, vertex and triangle counts, materials and their
                           maps, bounding box, import time) and render nothing
   -q, --quiet             no progress bar
@@ -55,6 +57,7 @@ struct Options {
   glm::vec3 background{0.16f, 0.17f, 0.2f};
   bool wireframe = false, quiet = false, info = false;
   int supersample = 1, turntable = 0;
+  int sheet_cols = 0, sheet_rows = 0;  // --sheet; 0: none
   float point_size = 3.0f;
 };
 
@@ -81,6 +84,12 @@ bool ParseInt(const std::string& s, int lo, int hi, int& out) {
   return true;
 }
 
+// "AxB" with both from 1 to hi.
+bool ParsePair(const std::string& s, int hi, int& a, int& b) {
+  const auto x = s.find('x');
+  return x != std::string::npos && ParseInt(s.substr(0, x), 1, hi, a) && ParseInt(s.substr(x + 1), 1, hi, b);
+}
+
 // Returns an error message, or empty when the options are good.
 std::string Parse(int argc, char** argv, Options& o) {
   for (int i = 1; i < argc; ++i) {
@@ -102,10 +111,7 @@ std::string Parse(int argc, char** argv, Options& o) {
       if (!value(o.output)) return "-o needs a file name";
     } else if (a == "--size") {
       if (!value(v)) return "--size needs WxH";
-      const auto x = v.find('x');
-      if (x == std::string::npos || !ParseInt(v.substr(0, x), 1, 8192, o.width) ||
-          !ParseInt(v.substr(x + 1), 1, 8192, o.height))
-        return "--size wants WxH with both from 1 to 8192, not '" + v + "'";
+      if (!ParsePair(v, 8192, o.width, o.height)) return "--size wants WxH with both from 1 to 8192, not '" + v + "'";
     } else if (a == "--azimuth" || a == "--elevation" || a == "--distance" || a == "--fov") {
       float f = 0.0f;
       if (!value(v) || !ParseFloats(v, 1, &f)) return a + " needs a number";
@@ -137,6 +143,10 @@ std::string Parse(int argc, char** argv, Options& o) {
       o.point_size = f;
     } else if (a == "--supersample") {
       if (!value(v) || !ParseInt(v, 1, 4, o.supersample)) return "--supersample is 1 to 4";
+    } else if (a == "--sheet") {
+      if (!value(v)) return "--sheet needs COLSxROWS";
+      if (!ParsePair(v, 64, o.sheet_cols, o.sheet_rows))
+        return "--sheet wants COLSxROWS with both from 1 to 64, not '" + v + "'";
     } else if (a == "--turntable") {
       if (!value(v) || !ParseInt(v, 1, 3600, o.turntable)) return "--turntable is 1 to 3600 frames";
     } else if (!a.empty() && a[0] == '-') {
@@ -149,6 +159,9 @@ std::string Parse(int argc, char** argv, Options& o) {
   }
   if (o.model.empty()) return "no model file given";
   if (o.output.empty() && !o.info) return "no output file given (-o OUT.png)";
+  if (o.sheet_cols > 0 && o.turntable > 0) return "--sheet and --turntable do not go together";
+  if (o.sheet_cols > 0 && (std::int64_t(o.width) * o.sheet_cols > 16384 || std::int64_t(o.height) * o.sheet_rows > 16384))
+    return "--sheet: the sheet would be larger than 16384 pixels a side";
   if (std::int64_t(o.width) * o.supersample > softgl::kMaxFramebufferSize ||
       std::int64_t(o.height) * o.supersample > softgl::kMaxFramebufferSize)
     return "--size times --supersample is larger than " + std::to_string(softgl::kMaxFramebufferSize);
@@ -283,12 +296,19 @@ int main(int argc, char** argv) {
   softgl::MaterialProgram* program = shader_name == "pbr" ? static_cast<softgl::MaterialProgram*>(&pbr)
                                      : shader_name == "phong" ? static_cast<softgl::MaterialProgram*>(&phong)
                                                               : static_cast<softgl::MaterialProgram*>(&unlit);
-  const int frames = std::max(1, o.turntable);
+  const int views = o.sheet_cols > 0 ? o.sheet_cols * o.sheet_rows : o.turntable;  // around the model
+  const int frames = std::max(1, views);
+  softgl::Image sheet;
+  if (o.sheet_cols > 0) {
+    sheet.width = o.width * o.sheet_cols;
+    sheet.height = o.height * o.sheet_rows;
+    sheet.rgba.assign(std::size_t(sheet.width) * std::size_t(sheet.height) * 4, 0);
+  }
   const bool progress = !o.quiet && isatty(fileno(stderr)) && frames > 1;
   const auto render_start = Clock::now();
   for (int frame = 0; frame < frames; ++frame) {
     const float aspect = float(w) / float(h);
-    const float azimuth = o.azimuth + (o.turntable ? 360.0f * float(frame) / float(frames) : 0.0f);
+    const float azimuth = o.azimuth + (views ? 360.0f * float(frame) / float(frames) : 0.0f);
     softgl::Camera cam = softgl::Camera::Frame(model.bounds, aspect, azimuth, o.elevation, o.fov);
     if (o.distance) {
       cam = softgl::Camera::Orbit(model.bounds.Center(), *o.distance, azimuth, o.elevation, o.fov);
@@ -327,6 +347,17 @@ int main(int argc, char** argv) {
       gl.DepthFunc(softgl::LESS);
     }
     const softgl::Image image = Downsample(gl.ReadPixels(), o.supersample);
+    if (o.sheet_cols > 0) {  // into its cell; the sheet is written after the last view
+      const int cx = frame % o.sheet_cols, cy = frame / o.sheet_cols;
+      const std::size_t row = std::size_t(image.width) * 4;
+      for (int y = 0; y < image.height; ++y)
+        std::memcpy(&sheet.rgba[(std::size_t(cy * image.height + y) * std::size_t(sheet.width) +
+                                 std::size_t(cx * image.width)) * 4],
+                    &image.rgba[std::size_t(y) * row], row);
+      if (progress) Progress(frame + 1, frames, std::chrono::duration<double>(Clock::now() - render_start).count());
+      if (frame + 1 < frames) continue;
+    }
+    const softgl::Image& written = o.sheet_cols > 0 ? sheet : image;
     std::string path = o.output;
     if (o.turntable) {
       char suffix[16];
@@ -335,13 +366,15 @@ int main(int argc, char** argv) {
       path = dot == std::string::npos || dot < path.find_last_of('/') + 1 ? path + suffix + ".png"
                                                                          : path.substr(0, dot) + suffix + path.substr(dot);
     }
-    if (!softgl::WritePng(path, image)) {
+    if (!softgl::WritePng(path, written)) {
       if (progress) std::fputc('\n', stderr);
       std::fprintf(stderr, "softgl-render: cannot write %s\n", path.c_str());
       return 3;
     }
-    if (progress) Progress(frame + 1, frames, std::chrono::duration<double>(Clock::now() - render_start).count());
-    else if (!o.quiet) std::printf("%s\n", path.c_str());
+    if (progress && o.sheet_cols == 0)
+      Progress(frame + 1, frames, std::chrono::duration<double>(Clock::now() - render_start).count());
+    else if (!progress && !o.quiet)
+      std::printf("%s\n", path.c_str());
   }
   if (progress) std::fputc('\n', stderr);
   const double render_seconds = std::chrono::duration<double>(Clock::now() - render_start).count();
