@@ -115,8 +115,10 @@ int PixelAt(double c, int size) {
 
 void Blit(const RenderTarget& src, const RenderTarget& dst, const BlitRegion& r) {
   if (r.src[0] == r.src[2] || r.src[1] == r.src[3] || r.dst[0] == r.dst[2] || r.dst[1] == r.dst[3]) return;
-  const BlitAxis ax = MakeAxis(r.src[0], r.src[2], r.dst[0], r.dst[2], std::max(r.clip.x0, 0), std::min(r.clip.x1, dst.width));
-  const BlitAxis ay = MakeAxis(r.src[1], r.src[3], r.dst[1], r.dst[3], std::max(r.clip.y0, 0), std::min(r.clip.y1, dst.height));
+  const BlitAxis ax =
+      MakeAxis(r.src[0], r.src[2], r.dst[0], r.dst[2], std::max(r.clip.x0, 0), std::min(r.clip.x1, dst.width));
+  const BlitAxis ay =
+      MakeAxis(r.src[1], r.src[3], r.dst[1], r.dst[3], std::max(r.clip.y0, 0), std::min(r.clip.y1, dst.height));
   if (ax.d0 >= ax.d1 || ay.d0 >= ay.d1) return;
   const bool all[4] = {true, true, true, true};
   for (int y = ay.d0; y < ay.d1; ++y) {

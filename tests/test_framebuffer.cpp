@@ -73,7 +73,8 @@ Buffers Gradient(int w, int h) {
   return b;
 }
 
-detail::BlitRegion Region(int sx0, int sy0, int sx1, int sy1, int dx0, int dy0, int dx1, int dy1, int clip_w, int clip_h) {
+detail::BlitRegion Region(int sx0, int sy0, int sx1, int sy1, int dx0, int dy0, int dx1, int dy1, int clip_w,
+                          int clip_h) {
   detail::BlitRegion r;
   r.src[0] = sx0, r.src[1] = sy0, r.src[2] = sx1, r.src[3] = sy1;
   r.dst[0] = dx0, r.dst[1] = dy0, r.dst[2] = dx1, r.dst[3] = dy1;
@@ -112,7 +113,8 @@ TEST_CASE("renderbuffer objects: storage, parameters and errors", "[framebuffer]
     Enum format;
     int r, g, b, a, d, s;
   };
-  for (const Expect& e : {Expect{RGBA8, 8, 8, 8, 8, 0, 0}, Expect{RGB8, 8, 8, 8, 0, 0, 0}, Expect{R32F, 32, 0, 0, 0, 0, 0},
+  for (const Expect& e : {Expect{RGBA8, 8, 8, 8, 8, 0, 0}, Expect{RGB8, 8, 8, 8, 0, 0, 0},
+                          Expect{R32F, 32, 0, 0, 0, 0, 0},
                           Expect{DEPTH_COMPONENT16, 0, 0, 0, 0, 16, 0}, Expect{DEPTH_COMPONENT, 0, 0, 0, 0, 24, 0},
                           Expect{DEPTH24_STENCIL8, 0, 0, 0, 0, 24, 8}, Expect{DEPTH32F_STENCIL8, 0, 0, 0, 0, 32, 8},
                           Expect{STENCIL_INDEX8, 0, 0, 0, 0, 0, 8}, Expect{DEPTH_STENCIL, 0, 0, 0, 0, 24, 8}}) {
@@ -375,7 +377,8 @@ TEST_CASE("Blit copies, scales, mirrors and clips as BlitFramebuffer says", "[fr
   }
 }
 
-TEST_CASE("BlitFramebuffer between framebuffer objects and the context's framebuffer, and its errors", "[framebuffer]") {
+TEST_CASE("BlitFramebuffer between framebuffer objects and the context's framebuffer, and its errors",
+          "[framebuffer]") {
   Context gl(8, 8);
   RenderbufferFbo f(gl, 4, 4, DEPTH24_STENCIL8);
   gl.ClearColor(1, 0, 0, 1);

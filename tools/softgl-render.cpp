@@ -160,7 +160,8 @@ std::string Parse(int argc, char** argv, Options& o) {
   if (o.model.empty()) return "no model file given";
   if (o.output.empty() && !o.info) return "no output file given (-o OUT.png)";
   if (o.sheet_cols > 0 && o.turntable > 0) return "--sheet and --turntable do not go together";
-  if (o.sheet_cols > 0 && (std::int64_t(o.width) * o.sheet_cols > 16384 || std::int64_t(o.height) * o.sheet_rows > 16384))
+  if (o.sheet_cols > 0 &&
+      (std::int64_t(o.width) * o.sheet_cols > 16384 || std::int64_t(o.height) * o.sheet_rows > 16384))
     return "--sheet: the sheet would be larger than 16384 pixels a side";
   if (std::int64_t(o.width) * o.supersample > softgl::kMaxFramebufferSize ||
       std::int64_t(o.height) * o.supersample > softgl::kMaxFramebufferSize)
@@ -284,7 +285,8 @@ int main(int argc, char** argv) {
     PrintInfo(o.model, model, load_seconds);
     return 0;
   }
-  for (const std::string& warning : model.warnings) std::fprintf(stderr, "softgl-render: warning: %s\n", warning.c_str());
+  for (const std::string& warning : model.warnings)
+    std::fprintf(stderr, "softgl-render: warning: %s\n", warning.c_str());
 
   bool any_pbr = false;
   for (const softgl::Material& m : model.materials) any_pbr = any_pbr || m.pbr;

@@ -515,9 +515,10 @@ class Context {
   /// glReadPixels: the rectangle (x, y, width, height) of the read framebuffer (y from the bottom, rows bottom
   /// first) into `pixels`, laid out by PACK_ALIGNMENT, PACK_ROW_LENGTH, PACK_SKIP_ROWS and PACK_SKIP_PIXELS
   /// (PixelStore). format: RED, GREEN, BLUE, RG, RGB, BGR, RGBA, BGRA (from the read buffer), DEPTH_COMPONENT,
-  /// STENCIL_INDEX, DEPTH_STENCIL; type: UNSIGNED_BYTE, UNSIGNED_SHORT, UNSIGNED_INT (normalized: round(clamp(v) * (2^N - 1)); stencil indices as they are), FLOAT (as stored), or
-  /// UNSIGNED_INT_24_8 with DEPTH_STENCIL (depth in the high 24 bits, stencil in the low 8). Pixels of the
-  /// rectangle outside the framebuffer are not written. Errors: bad format or type: INVALID_ENUM; negative size:
+  /// STENCIL_INDEX, DEPTH_STENCIL; type: UNSIGNED_BYTE, UNSIGNED_SHORT, UNSIGNED_INT (normalized:
+  /// round(clamp(v) * (2^N - 1)); stencil indices as they are), FLOAT (as stored), or UNSIGNED_INT_24_8 with
+  /// DEPTH_STENCIL (depth in the high 24 bits, stencil in the low 8). Pixels of the rectangle outside the
+  /// framebuffer are not written. Errors: bad format or type: INVALID_ENUM; negative size:
   /// INVALID_VALUE; DEPTH_STENCIL without UNSIGNED_INT_24_8 or the reverse, no buffer of the kind asked:
   /// INVALID_OPERATION; incomplete read framebuffer: INVALID_FRAMEBUFFER_OPERATION.
   void ReadPixels(int x, int y, int width, int height, Enum format, Enum type, void* pixels) const;
