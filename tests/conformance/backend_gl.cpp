@@ -111,6 +111,13 @@ GLuint Link(const char* fragment, std::string* error, const char* vertex = kVert
   return p;
 }
 
+// One new object name from a glGen* call.
+std::uint32_t GenOne(void (*gen)(GLsizei, GLuint*)) {
+  GLuint id = 0;
+  gen(1, &id);
+  return id;
+}
+
 class GlBackend final : public Backend {
  public:
   GlBackend(OSMesaContext ctx, int w, int h) : ctx_(ctx), w_(w), h_(h), buffer_(std::size_t(w) * h * 4) {}
@@ -362,18 +369,10 @@ class GlBackend final : public Backend {
     glUniform1i(glGetUniformLocation(programs_[3], "u_tex"), 0);
   }
 
-  std::uint32_t GenFramebuffer() override {
-    GLuint id = 0;
-    glGenFramebuffers(1, &id);
-    return id;
-  }
+  std::uint32_t GenFramebuffer() override { return GenOne(glGenFramebuffers); }
   void BindFramebuffer(Enum target, std::uint32_t framebuffer) override { glBindFramebuffer(target, framebuffer); }
   Enum CheckFramebufferStatus(Enum target) override { return glCheckFramebufferStatus(target); }
-  std::uint32_t GenRenderbuffer() override {
-    GLuint id = 0;
-    glGenRenderbuffers(1, &id);
-    return id;
-  }
+  std::uint32_t GenRenderbuffer() override { return GenOne(glGenRenderbuffers); }
   void BindRenderbuffer(std::uint32_t renderbuffer) override { glBindRenderbuffer(GL_RENDERBUFFER, renderbuffer); }
   void RenderbufferStorage(Enum internal_format, int width, int height) override {
     glRenderbufferStorage(GL_RENDERBUFFER, internal_format, width, height);
@@ -441,11 +440,7 @@ class GlBackend final : public Backend {
     glUseProgram(programs_[3]);
     glUniform1i(glGetUniformLocation(programs_[3], "u_tex"), 0);
   }
-  std::uint32_t GenQuery() override {
-    GLuint id = 0;
-    glGenQueries(1, &id);
-    return id;
-  }
+  std::uint32_t GenQuery() override { return GenOne(glGenQueries); }
   void BeginQuery(Enum target, std::uint32_t id) override { glBeginQuery(target, id); }
   void EndQuery(Enum target) override { glEndQuery(target); }
   std::uint64_t QueryResult(std::uint32_t id) override {

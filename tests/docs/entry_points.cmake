@@ -3,16 +3,24 @@
 # marked **yes** is declared (without its gl prefix) in include/softgl/context.h.
 # cmake -DGUIDE=docs/guide.md -DCONTEXT_H=include/softgl/context.h -DGLCOREARB=/usr/include/GL/glcorearb.h -P ...
 cmake_minimum_required(VERSION 3.25)
+
+# The text of `text` from `begin_marker` up to `end_marker` into `out`; both must be there (else `what` is named).
+function(text_between text begin_marker end_marker what out)
+  string(FIND "${text}" "${begin_marker}" begin)
+  string(FIND "${text}" "${end_marker}" end)
+  if(begin EQUAL -1 OR end EQUAL -1)
+    message(FATAL_ERROR "${what} not found")
+  endif()
+  math(EXPR length "${end} - ${begin}")
+  string(SUBSTRING "${text}" ${begin} ${length} section)
+  set(${out} "${section}" PARENT_SCOPE)
+endfunction()
+
 file(READ "${GLCOREARB}" header)
 set(expected "")
 foreach(version 1_0 1_1 1_2 1_3 1_4 1_5 2_0 2_1 3_0 3_1 3_2 3_3)
-  string(FIND "${header}" "#define GL_VERSION_${version} 1" begin)
-  string(FIND "${header}" "#endif /* GL_VERSION_${version} */" end)
-  if(begin EQUAL -1 OR end EQUAL -1)
-    message(FATAL_ERROR "GL_VERSION_${version} not found in ${GLCOREARB}")
-  endif()
-  math(EXPR length "${end} - ${begin}")
-  string(SUBSTRING "${header}" ${begin} ${length} section)
+  text_between("${header}" "#define GL_VERSION_${version} 1" "#endif /* GL_VERSION_${version} */"
+               "GL_VERSION_${version} in ${GLCOREARB}" section)
   string(REGEX MATCHALL "APIENTRY gl[A-Za-z0-9_]+ \\(" calls "${section}")
   foreach(call IN LISTS calls)
     string(REGEX REPLACE "APIENTRY (gl[A-Za-z0-9_]+) \\(" "\\1" name "${call}")
@@ -32,13 +40,8 @@ string(REGEX REPLACE "\n[ \t]*//[^\n]*" "" declarations "${declarations}")
 # The table's rows: the text between the markers, one row per line (it holds no semicolons, so that each row is
 # one element of a CMake list).
 file(READ "${GUIDE}" guide)
-string(FIND "${guide}" "<!-- entry points begin -->" begin)
-string(FIND "${guide}" "<!-- entry points end -->" end)
-if(begin EQUAL -1 OR end EQUAL -1)
-  message(FATAL_ERROR "the entry point table's markers are missing from ${GUIDE}")
-endif()
-math(EXPR length "${end} - ${begin}")
-string(SUBSTRING "${guide}" ${begin} ${length} table)
+text_between("${guide}" "<!-- entry points begin -->" "<!-- entry points end -->"
+             "the entry point table's markers in ${GUIDE}" table)
 string(FIND "${table}" ";" semicolon)
 if(NOT semicolon EQUAL -1)
   message(FATAL_ERROR "the entry point table must hold no semicolons (this check reads it as a CMake list)")
