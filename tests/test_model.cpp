@@ -245,3 +245,77 @@ TEST_CASE("point and line meshes are kept and drawn, unlit", "[model]") {
   CHECK(grey == lit);    // every pixel the material's colour, unlit
   CHECK(gl.GetError() == NO_ERROR);
 }
+
+TEST_CASE("Release deletes what Load made; CanRead goes by the extension", "[model]") {
+  Context gl(32, 32);
+  Model model;
+  std::string error;
+  REQUIRE(model.Load(gl, TestModel("glTF2/BoxTextured-glTF/BoxTextured.gltf"), &error));
+  REQUIRE(!model.meshes.empty());
+  const ModelMesh mesh = model.meshes[0];
+  const std::uint32_t texture = model.materials[std::size_t(mesh.material)].base_color_texture;
+  REQUIRE(texture != 0);
+  CHECK(gl.IsVertexArray(mesh.vertex_array));
+  CHECK(gl.IsBuffer(mesh.vertex_buffer));
+  CHECK(gl.IsBuffer(mesh.index_buffer));
+  CHECK(gl.IsTexture(texture));
+  model.Release(gl);
+  CHECK(gl.GetError() == NO_ERROR);
+  CHECK_FALSE(gl.IsVertexArray(mesh.vertex_array));
+  CHECK_FALSE(gl.IsBuffer(mesh.vertex_buffer));
+  CHECK_FALSE(gl.IsBuffer(mesh.index_buffer));
+  CHECK_FALSE(gl.IsTexture(texture));
+  CHECK(model.meshes.empty());
+  CHECK(model.materials.empty());
+  // Loaded again into the same context after the release: the same drawing.
+  REQUIRE(model.Load(gl, TestModel("glTF2/BoxTextured-glTF/BoxTextured.gltf"), &error));
+  CHECK(model.triangles_drawn == 12);
+
+  CHECK(Model::CanRead("duck.dae"));
+  CHECK(Model::CanRead("dir/Model.GLB"));
+  CHECK(Model::CanRead("x.obj"));
+  CHECK_FALSE(Model::CanRead("notes.txt"));
+  CHECK_FALSE(Model::CanRead("README"));
+  CHECK_FALSE(Model::CanRead("dir.obj/"));
+}
+
+TEST_CASE("sRGB transfer functions and the tone curves", "[model][shader]") {
+  const float inputs[] = {0.0f, 0.002f, 0.0031308f, 0.04045f, 0.1f, 0.5f, 0.8f, 1.0f};
+  for (float x : inputs) {
+    // The formulas of IEC 61966-2-1, in double.
+    const double to_linear = x <= 0.04045 ? x / 12.92 : std::pow((x + 0.055) / 1.055, 2.4);
+    const double to_srgb = x <= 0.0031308 ? x * 12.92 : 1.055 * std::pow(double(x), 1.0 / 2.4) - 0.055;
+    CHECK(SrgbToLinear(Float(x))[0] == Approx(to_linear).margin(1e-6));
+    CHECK(LinearToSrgb(Float(x))[0] == Approx(to_srgb).margin(1e-6));
+    CHECK(LinearToSrgb(SrgbToLinear(Float(x)))[0] == Approx(x).margin(1e-5));
+  }
+  auto neutral = [](glm::vec3 c) {
+    const vec3 m = ToneMapPbrNeutral(vec3(c));
+    return glm::vec3(m.x[0], m.y[0], m.z[0]);
+  };
+  auto aces = [](glm::vec3 c) {
+    const vec3 m = ToneMapAces(vec3(c));
+    return glm::vec3(m.x[0], m.y[0], m.z[0]);
+  };
+  // PBR Neutral: below the compression start only the small offset (0.04 where the smallest channel >= 0.08).
+  const glm::vec3 mid = neutral({0.5f, 0.3f, 0.2f});
+  CHECK(mid.x == Approx(0.46f));
+  CHECK(mid.y == Approx(0.26f));
+  CHECK(mid.z == Approx(0.16f));
+  CHECK(neutral({0.0f, 0.0f, 0.0f}) == glm::vec3(0.0f));
+  // Highlights roll off below 1, in order, and bright colours lose saturation.
+  float last = 0.0f;
+  for (float v : {0.9f, 1.0f, 2.0f, 4.0f, 16.0f, 1000.0f}) {
+    const float y = neutral(glm::vec3(v)).x;
+    CHECK(y > last);
+    CHECK(y <= 1.0f);
+    last = y;
+  }
+  const glm::vec3 hot = neutral({8.0f, 2.0f, 1.0f});
+  CHECK(hot.x <= 1.0f);
+  CHECK(hot.z / hot.x > 1.0f / 8.0f);
+  // ACES fit: 0 at 0, 2.54 / 3.16 at 1, 1 for very bright colours.
+  CHECK(aces(glm::vec3(0.0f)).x == Approx(0.0f).margin(1e-7));
+  CHECK(aces(glm::vec3(1.0f)).x == Approx(2.54f / 3.16f));
+  CHECK(aces(glm::vec3(1e4f)).x == Approx(1.0f).margin(1e-3));
+}

@@ -57,6 +57,7 @@ struct Material {
 
 struct ModelMesh {
   std::uint32_t vertex_array = 0;
+  std::uint32_t vertex_buffer = 0, index_buffer = 0;  // the vertex array's buffers
   int index_count = 0;
   int vertex_count = 0;
   int material = 0;
@@ -105,6 +106,15 @@ class Model {
   /// they were.
   void Draw(Context& gl, MaterialProgram& program, const glm::mat4& view_proj,
             const glm::mat4& world = glm::mat4(1.0f)) const;
+
+  /// Deletes the model's vertex arrays, buffers and textures from `gl` (the context it was loaded into) and
+  /// empties it: for a program that loads one model after another into one context. A failed Load has already
+  /// deleted what it made.
+  void Release(Context& gl);
+
+  /// Whether assimp has a reader for the file name's extension (case-insensitive): "duck.dae" yes, "notes.txt"
+  /// no. Says nothing about the content; Load is the judge of that.
+  static bool CanRead(const std::string& path);
 
   std::vector<ModelMesh> meshes;
   std::vector<Material> materials;

@@ -46,6 +46,42 @@ struct Lighting {
   }
 };
 
+/// How the built-in shaders bring their colour into the framebuffer's range [0, 1], after scaling it by
+/// 2^exposure.
+enum class ToneMap {
+  kClamp,       ///< none: colours above 1 are clipped (a bright highlight turns flat white)
+  kPbrNeutral,  ///< Khronos PBR Neutral: colours below about 0.8 kept as they are, highlights rolled off towards
+                ///< white, hue kept; the glTF viewers' choice for product shots
+  kAces,        ///< Krzysztof Narkowicz's fit of the ACES filmic curve: more contrast, saturated highlights whiten
+};
+
+/// sRGB's transfer functions (IEC 61966-2-1, as OpenGL's sRGB formats use them), per lane and channel; inputs
+/// are taken in [0, 1].
+inline Float SrgbToLinear(Float c) {
+  return select(c <= 0.04045f, c * (1.0f / 12.92f), pow(max(c + 0.055f, 0.0f) * (1.0f / 1.055f), 2.4f));
+}
+inline Float LinearToSrgb(Float c) {
+  return select(c <= 0.0031308f, c * 12.92f, pow(max(c, 0.0f), 1.0f / 2.4f) * 1.055f - 0.055f);
+}
+inline vec3 SrgbToLinear(const vec3& c) { return vec3(SrgbToLinear(c.x), SrgbToLinear(c.y), SrgbToLinear(c.z)); }
+inline vec3 LinearToSrgb(const vec3& c) { return vec3(LinearToSrgb(c.x), LinearToSrgb(c.y), LinearToSrgb(c.z)); }
+
+/// The tone curves of ToneMap, per lane, on colours >= 0; both give values in [0, 1].
+inline vec3 ToneMapPbrNeutral(vec3 c) {
+  constexpr float kStart = 0.8f - 0.04f, kDesaturation = 0.15f, kD = 1.0f - kStart;
+  const Float x = min(min(c.x, c.y), c.z);
+  const Float offset = select(x < 0.08f, x - 6.25f * x * x, Float(0.04f));
+  c = c - offset;
+  const Float peak = max(max(c.x, c.y), c.z);
+  const Float new_peak = 1.0f - kD * kD / (peak + kD - kStart);
+  const vec3 compressed = c * (new_peak / max(peak, 1e-6f));
+  const Float g = 1.0f - 1.0f / (kDesaturation * (peak - new_peak) + 1.0f);
+  return clamp(select(peak < kStart, c, mix(compressed, vec3(new_peak), g)), 0.0f, 1.0f);
+}
+inline vec3 ToneMapAces(const vec3& c) {
+  return clamp((c * (c * 2.51f + 0.03f)) / (c * (c * 2.43f + 0.59f) + 0.14f), 0.0f, 1.0f);
+}
+
 /// The varyings all built-in shaders share.
 struct SurfaceVaryings {
   vec3 world_pos;
@@ -70,6 +106,8 @@ class SurfaceShader : public Shader<Derived, SurfaceVaryings>, public MaterialPr
   Material material;
   Lighting lighting = Lighting::ThreePoint(glm::vec3(0.0f, 0.0f, 3.0f), glm::vec3(0.0f));
   bool lit = true;  // false for a mesh without normals (points, lines): Phong and PBR draw it unlit
+  ToneMap tone_map = ToneMap::kClamp;
+  float exposure = 0.0f;  // in stops: the colour is scaled by 2^exposure before tone mapping
 
   const Program& GetProgram() const override { return *this; }
   void SetTransforms(const glm::mat4& m, const glm::mat4& vp) override {
@@ -120,6 +158,18 @@ class SurfaceShader : public Shader<Derived, SurfaceVaryings>, public MaterialPr
     return n;
   }
 
+  /// A colour as the framebuffer gets it: scaled by 2^exposure, tone-mapped, then sRGB-encoded when `encode`
+  /// (PbrShader works in linear light; Unlit and Phong take the file's colours as they are, already encoded).
+  vec3 Display(vec3 c, bool encode) const {
+    if (tone_map == ToneMap::kClamp && exposure == 0.0f && !encode) return c;  // the store clamps
+    if (exposure != 0.0f) c = c * std::exp2(exposure);
+    c = max(c, 0.0f);
+    if (tone_map == ToneMap::kPbrNeutral) c = ToneMapPbrNeutral(c);
+    else if (tone_map == ToneMap::kAces) c = ToneMapAces(c);
+    c = clamp(c, 0.0f, 1.0f);
+    return encode ? LinearToSrgb(c) : c;
+  }
+
   vec3 Emissive(const In& in) const {
     vec3 e = material.emissive;
     if (material.emissive_texture) e *= vec3(in.Texture(kUnitEmissive, in.varyings.uv));
@@ -131,7 +181,7 @@ class SurfaceShader : public Shader<Derived, SurfaceVaryings>, public MaterialPr
 struct UnlitShader : SurfaceShader<UnlitShader> {
   void Fragment(const In& in, Out& out) const {
     const vec4 c = BaseColor(in, out);
-    out.color[0] = vec4(vec3(c) + Emissive(in), c.w);
+    out.color[0] = vec4(Display(vec3(c) + Emissive(in), false), c.w);
   }
 };
 
@@ -141,7 +191,7 @@ struct PhongShader : SurfaceShader<PhongShader> {
   void Fragment(const In& in, Out& out) const {
     const vec4 base = BaseColor(in, out);
     if (!lit) {
-      out.color[0] = vec4(vec3(base) + Emissive(in), base.w);
+      out.color[0] = vec4(Display(vec3(base) + Emissive(in), false), base.w);
       return;
     }
     const vec3 n = Normal(in);
@@ -160,19 +210,19 @@ struct PhongShader : SurfaceShader<PhongShader> {
       const Float spec = pow(max(dot(n, h), 0.0f), material.shininess);
       c += select(lit, l.color * (vec3(base) * ndl + spec_color * spec), vec3(0.0f));
     }
-    out.color[0] = vec4(c + Emissive(in), base.w);
+    out.color[0] = vec4(Display(c + Emissive(in), false), base.w);
   }
 };
 
 /// glTF 2.0 metallic-roughness: Cook-Torrance with the GGX distribution, Smith-Schlick geometry and Schlick
 /// Fresnel; base colour and emissive textures read as sRGB; ambient light from the cube map on kUnitEnvironment
 /// when `environment_levels` > 0 (diffuse from its last level, specular from the level matching the roughness),
-/// else the flat ambient colour; output gamma-encoded.
+/// else the flat ambient colour; shaded in linear light, then exposure, tone map (`tone_map`) and sRGB encoding.
 struct PbrShader : SurfaceShader<PbrShader> {
   float environment_levels = 0.0f;  // number of mip levels of the environment cube map; 0: none
   float environment_strength = 1.0f;
 
-  static vec3 ToLinear(const vec3& c) { return pow(max(c, 0.0f), 2.2f); }
+  static vec3 ToLinear(const vec3& c) { return SrgbToLinear(clamp(c, 0.0f, 1.0f)); }
   vec3 LinearEmissive(const In& in) const {
     vec3 e = material.emissive;
     if (material.emissive_texture) e *= ToLinear(vec3(in.Texture(kUnitEmissive, in.varyings.uv)));
@@ -197,7 +247,7 @@ struct PbrShader : SurfaceShader<PbrShader> {
     roughness = clamp(roughness, 0.04f, 1.0f);
     const vec3 albedo = vec3(base);
     if (!lit) {  // the base colour as it is (encoded back), plus emission
-      out.color[0] = vec4(pow(clamp(albedo + LinearEmissive(in), 0.0f, 1.0f), 1.0f / 2.2f), base.w);
+      out.color[0] = vec4(Display(albedo + LinearEmissive(in), true), base.w);
       return;
     }
     const vec3 n = Normal(in);
@@ -239,7 +289,7 @@ struct PbrShader : SurfaceShader<PbrShader> {
     }
     color += ambient * ao;
     color += LinearEmissive(in);
-    out.color[0] = vec4(pow(clamp(color, 0.0f, 1.0f), 1.0f / 2.2f), base.w);
+    out.color[0] = vec4(Display(color, true), base.w);
   }
 };
 

@@ -257,6 +257,8 @@ class Loader {
     out.index_count = int(indices.size());
     out.vertex_array = gl_.GenVertexArray();
     const std::uint32_t vbo = gl_.GenBuffer(), ebo = gl_.GenBuffer();
+    out.vertex_buffer = vbo;
+    out.index_buffer = ebo;
     gl_.BindVertexArray(out.vertex_array);
     gl_.BindBuffer(ARRAY_BUFFER, vbo);
     gl_.BufferData(ARRAY_BUFFER, std::ptrdiff_t(vertices.size() * sizeof(ModelVertex)), vertices.data());
@@ -344,10 +346,33 @@ bool Model::Load(Context& gl, const std::string& path, std::string* error) {
   loader.Materials();
   loader.Meshes();
   loader.Nodes();
-  if (nodes.empty()) return fail("no nodes");
-  loader.Measure(loader.mesh_boxes);
-  if (triangles_drawn == 0 && lines_drawn == 0 && points_drawn == 0) return fail("no geometry (nothing to draw)");
+  if (!nodes.empty()) loader.Measure(loader.mesh_boxes);
+  if (triangles_drawn == 0 && lines_drawn == 0 && points_drawn == 0) {  // what was made goes again
+    const std::string why = nodes.empty() ? "no nodes" : "no geometry (nothing to draw)";
+    Release(gl);
+    return fail(why);
+  }
   return true;
+}
+
+void Model::Release(Context& gl) {
+  std::vector<std::uint32_t> textures;
+  for (const Material& m : materials)
+    for (std::uint32_t id : {m.base_color_texture, m.normal_texture, m.metallic_roughness_texture, m.emissive_texture,
+                             m.occlusion_texture, m.specular_texture})
+      if (id != 0 && std::find(textures.begin(), textures.end(), id) == textures.end()) textures.push_back(id);
+  for (std::uint32_t id : textures) gl.DeleteTexture(id);
+  for (const ModelMesh& mesh : meshes) {
+    if (mesh.vertex_array) gl.DeleteVertexArray(mesh.vertex_array);
+    if (mesh.vertex_buffer) gl.DeleteBuffer(mesh.vertex_buffer);
+    if (mesh.index_buffer) gl.DeleteBuffer(mesh.index_buffer);
+  }
+  *this = Model{};
+}
+
+bool Model::CanRead(const std::string& path) {
+  const std::string ext = std::filesystem::path(path).extension().string();
+  return ext.size() > 1 && Assimp::Importer().IsExtensionSupported(ext);
 }
 
 void Model::Draw(Context& gl, MaterialProgram& program, const glm::mat4& view_proj, const glm::mat4& world) const {
