@@ -1,62 +1,55 @@
-// softgl-render — renders a model file to PNG: `softgl-render MODEL -o out.png [options]`.
+// softgl-render — renders model files to PNG: `softgl-render MODEL... -o OUT [options]`.
 //
-// Exit status: 0 done; 1 the model cannot be loaded (missing file, unreadable format, nothing to draw); 2 bad command
-// line; 3 the image cannot be written.
+// Exit status: 0 done; 1 a model cannot be loaded (missing file, unreadable format, nothing to draw) or, in a batch,
+// any model failed; 2 bad command line; 3 the image cannot be written.
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
+#include <fstream>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include <CLI/CLI.hpp>
 #include <softgl/model.h>
 #include <softgl/shaders.h>
 #include <softgl/softgl.h>
 
+#if defined(SOFTGL_RENDER_HAS_WEBP)
+#include <webp/encode.h>
+#include <webp/mux.h>
+#endif
+
 namespace {
 
-constexpr const char* kUsage = R"(usage: softgl-render MODEL -o OUT.png [options]
-       softgl-render MODEL --info
-
-Renders any model file assimp reads (OBJ, glTF/GLB, FBX, COLLADA, PLY, STL, 3DS, ...) with a camera framing
-its bounding box and three-point lighting.
-
-options:
-  -o, --output FILE       the PNG to write (with --turntable: FILE_000.png, FILE_001.png, ...)
-  --size WxH              image size in pixels (default 800x600)
-  --azimuth DEG           camera angle around the model, from the front (default 30)
-  --elevation DEG         camera angle above the horizon (default 20)
-  --distance D            camera distance from the centre (default: framing the bounding sphere)
-  --fov DEG               vertical field of view (default 40)
-  --look-at EX,EY,EZ,TX,TY,TZ   explicit camera position and target (overrides the orbit options)
-  --shader NAME           auto (default: pbr for metallic-roughness materials, else phong), pbr, phong, unlit
-  --background R,G,B      background colour, components in [0, 1] (default 0.16,0.17,0.2)
-  --wireframe             draw the triangle edges over the shaded model
-  --point-size PX         diameter of the points of point meshes (1 to 64, default 3)
-  --supersample N         render N times larger and average down (1 to 4, default 1)
-  --turntable N           write N frames going once around the model
-  --sheet COLSxROWS       one PNG of COLS x ROWS views going once around the model, left to right and top to
-                          bottom, each of --size (not with --turntable)
-  --info                  print what the file holds (meshes, vertex and triangle counts, materials and their
-                          maps, bounding box, import time) and render nothing
-  -q, --quiet             no progress bar
-  -h, --help              this text
-)";
+constexpr const char* kDescription =
+    "Renders model files that assimp reads (OBJ, glTF/GLB, FBX, COLLADA, PLY, STL, 3DS, ...)\n"
+    "with a camera framing each model's bounding box and three-point lighting.\n\n"
+    "  softgl-render MODEL -o OUT.png [options]\n"
+    "  softgl-render MODEL... -o DIR/ [options]   (several models, or directories of them: DIR/NAME.png each)\n"
+    "  softgl-render MODEL --info\n";
+constexpr const char* kFooter =
+    "Exit status: 0 done; 1 a model cannot be loaded, or in a batch any model failed;\n"
+    "2 bad command line; 3 the image cannot be written.";
 
 struct Options {
-  std::string model, output;
+  std::vector<std::string> models;
+  std::string output;
   int width = 800, height = 600;
   float azimuth = 30.0f, elevation = 20.0f, fov = 40.0f;
   std::optional<float> distance;
   std::optional<glm::vec3> eye, target;
-  std::string shader = "auto";
+  std::string shader = "auto", tonemap = "auto";
+  float exposure = 0.0f;
   glm::vec3 background{0.16f, 0.17f, 0.2f};
   bool wireframe = false, quiet = false, info = false;
-  int supersample = 1, turntable = 0;
+  int supersample = 1, turntable = 0, fps = 24;
   int sheet_cols = 0, sheet_rows = 0;  // --sheet; 0: none
   float point_size = 3.0f;
 };
@@ -90,84 +83,178 @@ bool ParsePair(const std::string& s, int hi, int& a, int& b) {
   return x != std::string::npos && ParseInt(s.substr(0, x), 1, hi, a) && ParseInt(s.substr(x + 1), 1, hi, b);
 }
 
-// Returns an error message, or empty when the options are good.
-std::string Parse(int argc, char** argv, Options& o) {
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    auto value = [&](std::string& v) {
-      if (i + 1 >= argc) return false;
-      v = argv[++i];
+// An option whose value `parse` checks and stores; `message` is the error when it returns false.
+template <class Parse>
+CLI::Option* AddChecked(CLI::App& app, const std::string& name, const std::string& type, const std::string& help,
+                        const std::string& message, Parse parse) {
+  return app
+      .add_option_function<std::string>(
+          name,
+          [name, message, parse](const std::string& v) {
+            if (!parse(v)) throw CLI::ValidationError(name, message + ", not '" + v + "'");
+          },
+          help)
+      ->type_name(type);
+}
+
+// The command line into `o`; the options' checks that involve several of them last. Throws CLI::ParseError (and
+// its --help and --version calls).
+void Parse(CLI::App& app, int argc, char** argv, Options& o) {
+  app.add_option("MODEL", o.models, "model files, or directories whose model files are all rendered")
+      ->required()
+      ->type_name("");
+  app.add_option("-o,--output", o.output,
+                 "the PNG to write; with --turntable N: FILE_000.png ... or\n"
+                 "one animated FILE.webp; with several models: a directory, DIR/")
+      ->type_name("OUT");
+  AddChecked(app, "--size", "WxH", "image size in pixels (default 800x600)", "wants WxH with both from 1 to 8192",
+             [&o](const std::string& v) { return ParsePair(v, 8192, o.width, o.height); });
+  auto number = [&app](const std::string& name, const std::string& help, const std::string& message, float lo,
+                       float hi, auto store) {
+    AddChecked(app, name, "DEG", help, message, [=](const std::string& v) {
+      float f = 0.0f;
+      if (!ParseFloats(v, 1, &f) || !(f >= lo && f <= hi)) return false;
+      store(f);
       return true;
-    };
-    std::string v;
-    if (a == "-h" || a == "--help") return "help";
-    if (a == "-q" || a == "--quiet") {
-      o.quiet = true;
-    } else if (a == "--wireframe") {
-      o.wireframe = true;
-    } else if (a == "--info") {
-      o.info = true;
-    } else if (a == "-o" || a == "--output") {
-      if (!value(o.output)) return "-o needs a file name";
-    } else if (a == "--size") {
-      if (!value(v)) return "--size needs WxH";
-      if (!ParsePair(v, 8192, o.width, o.height)) return "--size wants WxH with both from 1 to 8192, not '" + v + "'";
-    } else if (a == "--azimuth" || a == "--elevation" || a == "--distance" || a == "--fov") {
-      float f = 0.0f;
-      if (!value(v) || !ParseFloats(v, 1, &f)) return a + " needs a number";
-      if (a == "--azimuth") o.azimuth = f;
-      else if (a == "--elevation") o.elevation = f;
-      else if (a == "--fov") {
-        if (f <= 1.0f || f >= 179.0f) return "--fov wants degrees between 1 and 179";
-        o.fov = f;
-      } else {
-        if (f <= 0.0f) return "--distance must be positive";
-        o.distance = f;
-      }
-    } else if (a == "--look-at") {
-      float f[6];
-      if (!value(v) || !ParseFloats(v, 6, f)) return "--look-at needs EX,EY,EZ,TX,TY,TZ";
-      o.eye = glm::vec3(f[0], f[1], f[2]);
-      o.target = glm::vec3(f[3], f[4], f[5]);
-      if (*o.eye == *o.target) return "--look-at: the eye and the target are the same point";
-    } else if (a == "--shader") {
-      if (!value(o.shader) || (o.shader != "auto" && o.shader != "pbr" && o.shader != "phong" && o.shader != "unlit"))
-        return "--shader is one of auto, pbr, phong, unlit";
-    } else if (a == "--background") {
-      float f[3];
-      if (!value(v) || !ParseFloats(v, 3, f)) return "--background needs R,G,B";
-      o.background = glm::clamp(glm::vec3(f[0], f[1], f[2]), 0.0f, 1.0f);
-    } else if (a == "--point-size") {
-      float f = 0.0f;
-      if (!value(v) || !ParseFloats(v, 1, &f) || f < 1.0f || f > 64.0f) return "--point-size is 1 to 64 pixels";
-      o.point_size = f;
-    } else if (a == "--supersample") {
-      if (!value(v) || !ParseInt(v, 1, 4, o.supersample)) return "--supersample is 1 to 4";
-    } else if (a == "--sheet") {
-      if (!value(v)) return "--sheet needs COLSxROWS";
-      if (!ParsePair(v, 64, o.sheet_cols, o.sheet_rows))
-        return "--sheet wants COLSxROWS with both from 1 to 64, not '" + v + "'";
-    } else if (a == "--turntable") {
-      if (!value(v) || !ParseInt(v, 1, 3600, o.turntable)) return "--turntable is 1 to 3600 frames";
-    } else if (!a.empty() && a[0] == '-') {
-      return "unknown option " + a;
-    } else if (o.model.empty()) {
-      o.model = a;
-    } else {
-      return "one model at a time (got '" + o.model + "' and '" + a + "')";
-    }
-  }
-  if (o.model.empty()) return "no model file given";
-  if (o.output.empty() && !o.info) return "no output file given (-o OUT.png)";
-  if (o.sheet_cols > 0 && o.turntable > 0) return "--sheet and --turntable do not go together";
+    });
+  };
+  constexpr float kHuge = 1e30f;
+  number("--azimuth", "camera angle around the model, from the front (default 30)", "wants a number",
+         -kHuge, kHuge, [&o](float f) { o.azimuth = f; });
+  number("--elevation", "camera angle above the horizon (default 20)", "wants a number", -kHuge, kHuge,
+         [&o](float f) { o.elevation = f; });
+  number("--fov", "vertical field of view (default 40)", "wants degrees between 1 and 179", 1.0001f, 178.999f,
+         [&o](float f) { o.fov = f; });
+  AddChecked(app, "--distance", "D", "camera distance from the centre (default: framing the bounding sphere)",
+             "wants a positive number", [&o](const std::string& v) {
+               float f = 0.0f;
+               if (!ParseFloats(v, 1, &f) || f <= 0.0f) return false;
+               o.distance = f;
+               return true;
+             });
+  AddChecked(app, "--look-at", "EX,EY,EZ,TX,TY,TZ",
+             "explicit camera position and target (overrides the orbit options)",
+             "wants EX,EY,EZ,TX,TY,TZ with the eye apart from the target", [&o](const std::string& v) {
+               float f[6];
+               if (!ParseFloats(v, 6, f)) return false;
+               o.eye = glm::vec3(f[0], f[1], f[2]);
+               o.target = glm::vec3(f[3], f[4], f[5]);
+               return *o.eye != *o.target;
+             });
+  app.add_option("--shader", o.shader,
+                 "auto (default): pbr for metallic-roughness materials, else phong")
+      ->check(CLI::IsMember({"auto", "pbr", "phong", "unlit"}))
+      ->type_name("NAME");
+  app.add_option("--tonemap", o.tonemap,
+                 "how colours above 1 come into range: pbr-neutral (default\n"
+                 "with the pbr shader), aces, none (default otherwise)")
+      ->check(CLI::IsMember({"auto", "pbr-neutral", "aces", "none"}))
+      ->type_name("CURVE");
+  AddChecked(app, "--exposure", "EV", "exposure in stops: colours times 2^EV before tone mapping\n"
+             "(-16 to 16, default 0)", "wants a number from -16 to 16", [&o](const std::string& v) {
+               return ParseFloats(v, 1, &o.exposure) && o.exposure >= -16.0f && o.exposure <= 16.0f;
+             });
+  AddChecked(app, "--background", "R,G,B", "background colour, components in [0, 1] (default 0.16,0.17,0.2)",
+             "wants R,G,B", [&o](const std::string& v) {
+               float f[3];
+               if (!ParseFloats(v, 3, f)) return false;
+               o.background = glm::clamp(glm::vec3(f[0], f[1], f[2]), 0.0f, 1.0f);
+               return true;
+             });
+  app.add_flag("--wireframe", o.wireframe, "draw the triangle edges over the shaded model");
+  AddChecked(app, "--point-size", "PX", "diameter of the points of point meshes (1 to 64, default 3)",
+             "wants 1 to 64 pixels", [&o](const std::string& v) {
+               return ParseFloats(v, 1, &o.point_size) && o.point_size >= 1.0f && o.point_size <= 64.0f;
+             });
+  AddChecked(app, "--supersample", "N", "render N times larger and average down (1 to 4, default 1)",
+             "wants 1 to 4", [&o](const std::string& v) { return ParseInt(v, 1, 4, o.supersample); });
+  AddChecked(app, "--turntable", "N", "N frames going once around the model (1 to 3600)",
+             "wants 1 to 3600 frames", [&o](const std::string& v) { return ParseInt(v, 1, 3600, o.turntable); });
+  AddChecked(app, "--fps", "N", "frames per second of an animated WebP turntable (1 to 100, default 24)",
+             "wants 1 to 100", [&o](const std::string& v) { return ParseInt(v, 1, 100, o.fps); });
+  AddChecked(app, "--sheet", "COLSxROWS",
+             "one PNG of COLS x ROWS views going once around the model, left\n"
+             "to right and top to bottom, each of --size (not with --turntable)",
+             "wants COLSxROWS with both from 1 to 64",
+             [&o](const std::string& v) { return ParsePair(v, 64, o.sheet_cols, o.sheet_rows); });
+  app.add_flag("--info", o.info,
+               "print what the file holds (meshes, vertex and triangle counts,\n"
+               "materials and their maps, bounding box, import time); render nothing");
+  app.add_flag("-q,--quiet", o.quiet, "no progress bar, no summary");
+  app.set_help_flag("-h,--help", "this text");
+  app.set_version_flag("--version", "softgl-render " SOFTGL_RENDER_VERSION, "print the version");
+  app.parse(argc, argv);
+
+  if (o.output.empty() && !o.info) throw CLI::ValidationError("no output file given (-o OUT.png)");
+  if (o.sheet_cols > 0 && o.turntable > 0) throw CLI::ValidationError("--sheet and --turntable do not go together");
   if (o.sheet_cols > 0 &&
       (std::int64_t(o.width) * o.sheet_cols > 16384 || std::int64_t(o.height) * o.sheet_rows > 16384))
-    return "--sheet: the sheet would be larger than 16384 pixels a side";
+    throw CLI::ValidationError("--sheet: the sheet would be larger than 16384 pixels a side");
   if (std::int64_t(o.width) * o.supersample > softgl::kMaxFramebufferSize ||
       std::int64_t(o.height) * o.supersample > softgl::kMaxFramebufferSize)
-    return "--size times --supersample is larger than " + std::to_string(softgl::kMaxFramebufferSize);
-  return {};
+    throw CLI::ValidationError("--size times --supersample is larger than " +
+                               std::to_string(softgl::kMaxFramebufferSize));
 }
+
+// Whether `path` ends in .webp (any case).
+bool IsWebp(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  return ext == ".webp";
+}
+
+#if defined(SOFTGL_RENDER_HAS_WEBP)
+constexpr bool kHasWebp = true;
+
+// The frames as one looping animated WebP (lossy, quality 90) at `fps`, through libwebp's animation encoder. The
+// file is written whole or not at all.
+bool WriteAnimatedWebp(const std::string& path, const std::vector<softgl::Image>& frames, int fps) {
+  if (frames.empty()) return false;
+  const int w = frames[0].width, h = frames[0].height;
+  WebPAnimEncoderOptions options;
+  WebPConfig config;
+  if (!WebPAnimEncoderOptionsInit(&options) || !WebPConfigInit(&config)) return false;
+  options.anim_params.loop_count = 0;  // forever
+  config.quality = 90.0f;
+  WebPAnimEncoder* encoder = WebPAnimEncoderNew(w, h, &options);
+  if (!encoder) return false;
+  bool ok = true;
+  int timestamp = 0, index = 0;
+  for (const softgl::Image& frame : frames) {
+    WebPPicture picture;
+    if (!WebPPictureInit(&picture)) {
+      ok = false;
+      break;
+    }
+    picture.use_argb = 1;
+    picture.width = w;
+    picture.height = h;
+    ok = WebPPictureImportRGBA(&picture, frame.rgba.data(), w * 4) &&
+         WebPAnimEncoderAdd(encoder, &picture, timestamp, &config);
+    WebPPictureFree(&picture);
+    if (!ok) break;
+    timestamp = int(std::lround(1000.0 * ++index / fps));  // in milliseconds, without drift
+  }
+  WebPData data;
+  WebPDataInit(&data);
+  ok = ok && WebPAnimEncoderAdd(encoder, nullptr, timestamp, nullptr) && WebPAnimEncoderAssemble(encoder, &data);
+  WebPAnimEncoderDelete(encoder);
+  if (ok) {
+    std::ofstream out(path, std::ios::binary);
+    ok = out && out.write(reinterpret_cast<const char*>(data.bytes), std::streamsize(data.size)) && out.flush();
+    if (!ok) {
+      out.close();
+      std::error_code ec;
+      std::filesystem::remove(path, ec);
+    }
+  }
+  WebPDataClear(&data);
+  return ok;
+}
+#else
+constexpr bool kHasWebp = false;
+bool WriteAnimatedWebp(const std::string&, const std::vector<softgl::Image>&, int) { return false; }
+#endif
 
 // Averages factor x factor blocks.
 softgl::Image Downsample(const softgl::Image& big, int factor) {
@@ -253,140 +340,262 @@ void Progress(int done, int total, double seconds) {
   std::fflush(stderr);
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
-  using Clock = std::chrono::steady_clock;
-  const auto start = Clock::now();
-  Options o;
-  if (const std::string err = Parse(argc, argv, o); !err.empty()) {
-    if (err == "help") {
-      std::fputs(kUsage, stdout);
-      return 0;
+// The model files the arguments name: files as given; a directory's regular files that assimp has a reader for,
+// sorted by name (not its subdirectories). Arguments that name nothing are kept, for Load to report.
+std::vector<std::string> ModelFiles(const std::vector<std::string>& args, bool& any_directory) {
+  std::vector<std::string> files;
+  any_directory = false;
+  for (const std::string& a : args) {
+    std::error_code ec;
+    if (!std::filesystem::is_directory(a, ec)) {
+      files.push_back(a);
+      continue;
     }
-    std::fprintf(stderr, "softgl-render: %s\n\n%s", err.c_str(), kUsage);
-    return 2;
+    any_directory = true;
+    std::vector<std::string> found;
+    for (const auto& entry : std::filesystem::directory_iterator(a, ec))
+      if (entry.is_regular_file(ec) && softgl::Model::CanRead(entry.path().string()))
+        found.push_back(entry.path().string());
+    std::sort(found.begin(), found.end());
+    files.insert(files.end(), found.begin(), found.end());
   }
-  // --info renders nothing: a 1x1 context holds the model's objects.
-  const int w = o.info ? 1 : o.width * o.supersample, h = o.info ? 1 : o.height * o.supersample;
-  softgl::Context gl(w, h);
-  if (gl.GetError() != softgl::NO_ERROR) {
-    std::fprintf(stderr, "softgl-render: cannot make a %dx%d framebuffer\n", w, h);
-    return 2;
-  }
-  softgl::Model model;
-  std::string error;
-  if (!model.Load(gl, o.model, &error)) {
-    std::fprintf(stderr, "softgl-render: %s\n", error.c_str());
-    return 1;
-  }
-  const double load_seconds = std::chrono::duration<double>(Clock::now() - start).count();
-  if (o.info) {
-    PrintInfo(o.model, model, load_seconds);
-    return 0;
-  }
-  for (const std::string& warning : model.warnings)
-    std::fprintf(stderr, "softgl-render: warning: %s\n", warning.c_str());
+  return files;
+}
 
-  bool any_pbr = false;
-  for (const softgl::Material& m : model.materials) any_pbr = any_pbr || m.pbr;
-  const std::string shader_name = o.shader == "auto" ? (any_pbr ? "pbr" : "phong") : o.shader;
-  softgl::PbrShader pbr;
-  softgl::PhongShader phong;
-  softgl::UnlitShader unlit;
-  if (shader_name == "pbr") pbr.environment_levels = softgl::MakeStudioEnvironment(gl, 64);
-  softgl::MaterialProgram* program = shader_name == "pbr" ? static_cast<softgl::MaterialProgram*>(&pbr)
-                                     : shader_name == "phong" ? static_cast<softgl::MaterialProgram*>(&phong)
-                                                              : static_cast<softgl::MaterialProgram*>(&unlit);
-  const int views = o.sheet_cols > 0 ? o.sheet_cols * o.sheet_rows : o.turntable;  // around the model
-  const int frames = std::max(1, views);
-  softgl::Image sheet;
-  if (o.sheet_cols > 0) {
-    sheet.width = o.width * o.sheet_cols;
-    sheet.height = o.height * o.sheet_rows;
-    sheet.rgba.assign(std::size_t(sheet.width) * std::size_t(sheet.height) * 4, 0);
+// `path` with `suffix` before its extension (or at its end when it has none).
+std::string WithSuffix(const std::string& path, const std::string& suffix) {
+  const std::filesystem::path p(path);
+  return (p.parent_path() / (p.stem().string() + suffix + p.extension().string())).string();
+}
+
+enum Status { kOk = 0, kLoadFailed = 1, kWriteFailed = 3 };
+
+// Renders models, one after another, into one context (and its threads).
+class Renderer {
+ public:
+  Renderer(const Options& o, int w, int h) : o_(o), w_(w), h_(h), gl_(w, h) {}
+  bool Ready() { return gl_.GetError() == softgl::NO_ERROR; }
+
+  // Loads `file` and writes its image(s) to `output`: the PNG, the turntable's frames or WebP, or the sheet.
+  Status Render(const std::string& file, const std::string& output) {
+    using Clock = std::chrono::steady_clock;
+    const auto start = Clock::now();
+    softgl::Model model;
+    std::string error;
+    if (!model.Load(gl_, file, &error)) {
+      std::fprintf(stderr, "softgl-render: %s\n", error.c_str());
+      return kLoadFailed;
+    }
+    const double load_seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    if (o_.info) {
+      PrintInfo(file, model, load_seconds);
+      model.Release(gl_);
+      return kOk;
+    }
+    for (const std::string& warning : model.warnings)
+      std::fprintf(stderr, "softgl-render: warning: %s: %s\n", file.c_str(), warning.c_str());
+    const auto render_start = Clock::now();
+    std::string shader_name;
+    const Status status = Frames(model, output, shader_name);
+    const double render_seconds = std::chrono::duration<double>(Clock::now() - render_start).count();
+    const int frames = std::max(1, o_.sheet_cols > 0 ? o_.sheet_cols * o_.sheet_rows : o_.turntable);
+    if (status == kOk && !o_.quiet)
+      std::fprintf(stderr,
+                   "softgl-render: %s: %d triangles, %d lines, %d points, %zu meshes, %zu materials, %d textures, "
+                   "shader %s; load %.2f s, render %d frame%s of %dx%d in %.2f s (%.1f ms/frame)\n",
+                   file.c_str(), model.triangles_drawn, model.lines_drawn, model.points_drawn, model.meshes.size(),
+                   model.materials.size(), model.textures_loaded, shader_name.c_str(), load_seconds, frames,
+                   frames == 1 ? "" : "s", w_, h_, render_seconds, 1000.0 * render_seconds / frames);
+    model.Release(gl_);
+    return status;
   }
-  const bool progress = !o.quiet && isatty(fileno(stderr)) && frames > 1;
-  const auto render_start = Clock::now();
-  for (int frame = 0; frame < frames; ++frame) {
-    const float aspect = float(w) / float(h);
-    const float azimuth = o.azimuth + (views ? 360.0f * float(frame) / float(frames) : 0.0f);
-    softgl::Camera cam = softgl::Camera::Frame(model.bounds, aspect, azimuth, o.elevation, o.fov);
-    if (o.distance) {
-      cam = softgl::Camera::Orbit(model.bounds.Center(), *o.distance, azimuth, o.elevation, o.fov);
+
+ private:
+  Status Frames(const softgl::Model& model, const std::string& output, std::string& shader_name) {
+    using Clock = std::chrono::steady_clock;
+    bool any_pbr = false;
+    for (const softgl::Material& m : model.materials) any_pbr = any_pbr || m.pbr;
+    shader_name = o_.shader == "auto" ? (any_pbr ? "pbr" : "phong") : o_.shader;
+    if (shader_name == "pbr" && pbr_.environment_levels == 0.0f)
+      pbr_.environment_levels = softgl::MakeStudioEnvironment(gl_, 64);
+    softgl::MaterialProgram* program = shader_name == "pbr"     ? static_cast<softgl::MaterialProgram*>(&pbr_)
+                                       : shader_name == "phong" ? static_cast<softgl::MaterialProgram*>(&phong_)
+                                                                : static_cast<softgl::MaterialProgram*>(&unlit_);
+    const std::string curve = o_.tonemap == "auto" ? (shader_name == "pbr" ? "pbr-neutral" : "none") : o_.tonemap;
+    const softgl::ToneMap tone_map = curve == "pbr-neutral" ? softgl::ToneMap::kPbrNeutral
+                                     : curve == "aces"      ? softgl::ToneMap::kAces
+                                                            : softgl::ToneMap::kClamp;
+    pbr_.tone_map = phong_.tone_map = unlit_.tone_map = tone_map;
+    pbr_.exposure = phong_.exposure = unlit_.exposure = o_.exposure;
+
+    const bool webp = o_.turntable > 0 && IsWebp(output);
+    const int views = o_.sheet_cols > 0 ? o_.sheet_cols * o_.sheet_rows : o_.turntable;  // around the model
+    const int frames = std::max(1, views);
+    softgl::Image sheet;
+    if (o_.sheet_cols > 0) {
+      sheet.width = o_.width * o_.sheet_cols;
+      sheet.height = o_.height * o_.sheet_rows;
+      sheet.rgba.assign(std::size_t(sheet.width) * std::size_t(sheet.height) * 4, 0);
+    }
+    std::vector<softgl::Image> animation;
+    const bool progress = !o_.quiet && isatty(fileno(stderr)) && frames > 1;
+    const auto render_start = Clock::now();
+    auto failed = [&](const std::string& path) {
+      if (progress) std::fputc('\n', stderr);
+      std::fprintf(stderr, "softgl-render: cannot write %s\n", path.c_str());
+      return kWriteFailed;
+    };
+    for (int frame = 0; frame < frames; ++frame) {
+      const float azimuth = o_.azimuth + (views ? 360.0f * float(frame) / float(frames) : 0.0f);
+      const softgl::Image image = Draw(model, *program, azimuth);
+      if (progress) Progress(frame + 1, frames, std::chrono::duration<double>(Clock::now() - render_start).count());
+      if (o_.sheet_cols > 0) {  // into its cell; the sheet is written after the last view
+        const int cx = frame % o_.sheet_cols, cy = frame / o_.sheet_cols;
+        const std::size_t row = std::size_t(image.width) * 4;
+        for (int y = 0; y < image.height; ++y)
+          std::memcpy(&sheet.rgba[(std::size_t(cy * image.height + y) * std::size_t(sheet.width) +
+                                   std::size_t(cx * image.width)) * 4],
+                      &image.rgba[std::size_t(y) * row], row);
+        continue;
+      }
+      if (webp) {
+        animation.push_back(image);
+        continue;
+      }
+      char suffix[16];
+      std::snprintf(suffix, sizeof suffix, "_%03d", frame);
+      const std::string path = o_.turntable ? WithSuffix(output, suffix) : output;
+      if (!softgl::WritePng(path, image)) return failed(path);
+      if (!progress && !o_.quiet) std::printf("%s\n", path.c_str());
+    }
+    if (progress) std::fputc('\n', stderr);
+    if (o_.sheet_cols > 0) {
+      if (!softgl::WritePng(output, sheet)) return failed(output);
+      if (!o_.quiet) std::printf("%s\n", output.c_str());
+    }
+    if (webp) {
+      if (!WriteAnimatedWebp(output, animation, o_.fps)) return failed(output);
+      if (!o_.quiet) std::printf("%s\n", output.c_str());
+    }
+    return kOk;
+  }
+
+  // One view of the model from `azimuth`, downsampled.
+  softgl::Image Draw(const softgl::Model& model, softgl::MaterialProgram& program, float azimuth) {
+    const float aspect = float(w_) / float(h_);
+    softgl::Camera cam = softgl::Camera::Frame(model.bounds, aspect, azimuth, o_.elevation, o_.fov);
+    if (o_.distance) {
+      cam = softgl::Camera::Orbit(model.bounds.Center(), *o_.distance, azimuth, o_.elevation, o_.fov);
       const float r = model.bounds.Radius();
-      cam.near_plane = std::max(*o.distance - r * 1.5f, *o.distance * 0.01f);
-      cam.far_plane = *o.distance + r * 1.5f;
+      cam.near_plane = std::max(*o_.distance - r * 1.5f, *o_.distance * 0.01f);
+      cam.far_plane = *o_.distance + r * 1.5f;
     }
-    if (o.eye) {
-      cam.eye = *o.eye;
-      cam.target = *o.target;
+    if (o_.eye) {
+      cam.eye = *o_.eye;
+      cam.target = *o_.target;
       const float d = glm::length(cam.eye - model.bounds.Center());
       cam.near_plane = std::max(d - model.bounds.Radius() * 1.5f, d * 0.01f);
       cam.far_plane = d + model.bounds.Radius() * 1.5f;
     }
     const glm::mat4 view_proj = cam.Projection(aspect) * cam.View();
     const softgl::Lighting lighting = softgl::Lighting::ThreePoint(cam.eye, cam.target);
-    pbr.lighting = phong.lighting = unlit.lighting = lighting;
+    pbr_.lighting = phong_.lighting = unlit_.lighting = lighting;
 
-    gl.ClearColor(o.background.r, o.background.g, o.background.b, 1.0f);
-    gl.Clear(softgl::COLOR_BUFFER_BIT | softgl::DEPTH_BUFFER_BIT);
-    gl.Enable(softgl::DEPTH_TEST);
-    gl.PointSize(o.point_size * float(o.supersample));
-    if (o.wireframe) {  // the shaded surface a little behind its edges
-      gl.Enable(softgl::POLYGON_OFFSET_FILL);
-      gl.PolygonOffset(1.0f, 1.0f);
+    gl_.ClearColor(o_.background.r, o_.background.g, o_.background.b, 1.0f);
+    gl_.Clear(softgl::COLOR_BUFFER_BIT | softgl::DEPTH_BUFFER_BIT);
+    gl_.Enable(softgl::DEPTH_TEST);
+    gl_.PointSize(o_.point_size * float(o_.supersample));
+    if (o_.wireframe) {  // the shaded surface a little behind its edges
+      gl_.Enable(softgl::POLYGON_OFFSET_FILL);
+      gl_.PolygonOffset(1.0f, 1.0f);
     }
-    model.Draw(gl, *program, view_proj);
-    if (o.wireframe) {
-      gl.Disable(softgl::POLYGON_OFFSET_FILL);
-      gl.PolygonMode(softgl::FRONT_AND_BACK, softgl::LINE);
-      gl.DepthFunc(softgl::LEQUAL);
+    model.Draw(gl_, program, view_proj);
+    if (o_.wireframe) {
+      gl_.Disable(softgl::POLYGON_OFFSET_FILL);
+      gl_.PolygonMode(softgl::FRONT_AND_BACK, softgl::LINE);
+      gl_.DepthFunc(softgl::LEQUAL);
       FlatShader flat;
-      flat.color = glm::vec4(glm::vec3(o.background.r + o.background.g + o.background.b > 1.5f ? 0.1f : 0.9f), 1.0f);
-      model.Draw(gl, flat, view_proj);
-      gl.PolygonMode(softgl::FRONT_AND_BACK, softgl::FILL);
-      gl.DepthFunc(softgl::LESS);
+      const float sum = o_.background.r + o_.background.g + o_.background.b;
+      flat.color = glm::vec4(glm::vec3(sum > 1.5f ? 0.1f : 0.9f), 1.0f);
+      model.Draw(gl_, flat, view_proj);
+      gl_.PolygonMode(softgl::FRONT_AND_BACK, softgl::FILL);
+      gl_.DepthFunc(softgl::LESS);
     }
-    const softgl::Image image = Downsample(gl.ReadPixels(), o.supersample);
-    if (o.sheet_cols > 0) {  // into its cell; the sheet is written after the last view
-      const int cx = frame % o.sheet_cols, cy = frame / o.sheet_cols;
-      const std::size_t row = std::size_t(image.width) * 4;
-      for (int y = 0; y < image.height; ++y)
-        std::memcpy(&sheet.rgba[(std::size_t(cy * image.height + y) * std::size_t(sheet.width) +
-                                 std::size_t(cx * image.width)) * 4],
-                    &image.rgba[std::size_t(y) * row], row);
-      if (progress) Progress(frame + 1, frames, std::chrono::duration<double>(Clock::now() - render_start).count());
-      if (frame + 1 < frames) continue;
+    return Downsample(gl_.ReadPixels(), o_.supersample);
+  }
+
+  const Options& o_;
+  int w_, h_;
+  softgl::Context gl_;
+  softgl::PbrShader pbr_;
+  softgl::PhongShader phong_;
+  softgl::UnlitShader unlit_;
+};
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Options o;
+  CLI::App app(kDescription, "softgl-render");
+  app.footer(kFooter);
+  try {
+    Parse(app, argc, argv, o);
+  } catch (const CLI::CallForHelp&) {
+    std::fputs(app.help().c_str(), stdout);
+    return 0;
+  } catch (const CLI::CallForVersion& e) {
+    std::printf("%s\n", e.what());
+    return 0;
+  } catch (const CLI::ParseError& e) {
+    std::fprintf(stderr, "softgl-render: %s\nsoftgl-render --help lists the options\n", e.what());
+    return 2;
+  }
+  bool any_directory = false;
+  const std::vector<std::string> files = ModelFiles(o.models, any_directory);
+  const bool batch = files.size() > 1 || any_directory;
+  std::error_code ec;
+  if (batch && !o.info) {
+    if (o.output.back() != '/' && !std::filesystem::is_directory(o.output, ec)) {
+      std::fprintf(stderr, "softgl-render: with several models -o names a directory (DIR/), not '%s'\n",
+                   o.output.c_str());
+      return 2;
     }
-    const softgl::Image& written = o.sheet_cols > 0 ? sheet : image;
-    std::string path = o.output;
-    if (o.turntable) {
-      char suffix[16];
-      std::snprintf(suffix, sizeof suffix, "_%03d", frame);
-      const auto dot = path.rfind('.');
-      path = dot == std::string::npos || dot < path.find_last_of('/') + 1 ? path + suffix + ".png"
-                                                                         : path.substr(0, dot) + suffix + path.substr(dot);
-    }
-    if (!softgl::WritePng(path, written)) {
-      if (progress) std::fputc('\n', stderr);
-      std::fprintf(stderr, "softgl-render: cannot write %s\n", path.c_str());
+    std::filesystem::create_directories(o.output, ec);
+    if (!std::filesystem::is_directory(o.output, ec)) {
+      std::fprintf(stderr, "softgl-render: cannot make the directory %s\n", o.output.c_str());
       return 3;
     }
-    if (progress && o.sheet_cols == 0)
-      Progress(frame + 1, frames, std::chrono::duration<double>(Clock::now() - render_start).count());
-    else if (!progress && !o.quiet)
-      std::printf("%s\n", path.c_str());
   }
-  if (progress) std::fputc('\n', stderr);
-  const double render_seconds = std::chrono::duration<double>(Clock::now() - render_start).count();
-  if (!o.quiet)
-    std::fprintf(stderr,
-                 "softgl-render: %s: %d triangles, %d lines, %d points, %zu meshes, %zu materials, %d textures, "
-                 "shader %s; load %.2f s, render %d frame%s of %dx%d in %.2f s (%.1f ms/frame)\n",
-                 o.model.c_str(), model.triangles_drawn, model.lines_drawn, model.points_drawn, model.meshes.size(),
-                 model.materials.size(),
-                 model.textures_loaded, shader_name.c_str(), load_seconds, frames, frames == 1 ? "" : "s", w, h,
-                 render_seconds, 1000.0 * render_seconds / frames);
-  return 0;
+  if (files.empty()) {
+    std::fprintf(stderr, "softgl-render: no model files in %s\n", o.models.front().c_str());
+    return 1;
+  }
+  if (o.turntable > 0 && IsWebp(batch ? "" : o.output) && !kHasWebp) {
+    std::fprintf(stderr, "softgl-render: this build has no WebP output (libwebp was not found); write PNG frames\n");
+    return 2;
+  }
+  // --info renders nothing: a 1x1 context holds the models' objects.
+  const int w = o.info ? 1 : o.width * o.supersample, h = o.info ? 1 : o.height * o.supersample;
+  Renderer renderer(o, w, h);
+  if (!renderer.Ready()) {
+    std::fprintf(stderr, "softgl-render: cannot make a %dx%d framebuffer\n", w, h);
+    return 2;
+  }
+  if (!batch) return renderer.Render(files.front(), o.output);
+
+  // A batch: one image per model in the directory, named after the model (NAME.png, or NAME_2.png for the second
+  // model of that name); a model that fails is reported and the others still rendered.
+  int failures = 0;
+  std::vector<std::string> used;
+  for (const std::string& file : files) {
+    std::string name = std::filesystem::path(file).stem().string();
+    const int seen = int(std::count(used.begin(), used.end(), name));
+    used.push_back(name);
+    if (seen > 0) name += "_" + std::to_string(seen + 1);
+    const std::string output = (std::filesystem::path(o.output) / (name + ".png")).string();
+    if (renderer.Render(file, output) != kOk) ++failures;
+  }
+  std::fprintf(stderr, "softgl-render: %zu models: %zu done, %d failed\n", files.size(), files.size() - failures,
+               failures);
+  return failures > 0 ? 1 : 0;
 }

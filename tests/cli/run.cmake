@@ -1,7 +1,8 @@
 # Runs softgl-render with ARGS (a ;-list) and checks its exit status is EXPECTED; with FILES (a ;-list), also that
-# each file exists afterwards (and was not there before); with STDOUT (a ;-list of regular expressions), that its
-# standard output matches each.
-foreach(f IN LISTS FILES)
+# each file exists afterwards (and was not there before); with ABSENT, that none of those files exists afterwards;
+# with STDOUT or STDERR (;-lists of regular expressions), that the standard output or error matches each; with
+# MAGIC (a regular expression over hexadecimal digits), that the first 48 bytes of the first of FILES match it.
+foreach(f IN LISTS FILES ABSENT)
   file(REMOVE "${f}")
 endforeach()
 execute_process(COMMAND "${RENDER}" ${ARGS} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
@@ -16,8 +17,25 @@ foreach(pattern IN LISTS STDOUT)
     message(FATAL_ERROR "softgl-render ${ARGS}: the output does not match '${pattern}'\n${out}")
   endif()
 endforeach()
+foreach(pattern IN LISTS STDERR)
+  if(NOT err MATCHES "${pattern}")
+    message(FATAL_ERROR "softgl-render ${ARGS}: the error output does not match '${pattern}'\n${err}")
+  endif()
+endforeach()
 foreach(f IN LISTS FILES)
   if(NOT EXISTS "${f}")
     message(FATAL_ERROR "softgl-render ${ARGS}: ${f} was not written")
   endif()
 endforeach()
+foreach(f IN LISTS ABSENT)
+  if(EXISTS "${f}")
+    message(FATAL_ERROR "softgl-render ${ARGS}: ${f} was written")
+  endif()
+endforeach()
+if(MAGIC)
+  list(GET FILES 0 first)
+  file(READ "${first}" head LIMIT 48 HEX)
+  if(NOT head MATCHES "${MAGIC}")
+    message(FATAL_ERROR "softgl-render ${ARGS}: ${first} begins ${head}, not matching ${MAGIC}")
+  endif()
+endif()

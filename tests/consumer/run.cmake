@@ -6,6 +6,8 @@
 #   forced_old    the installed headers compiled by the compiler itself at -std=c++17 (as a build system other
 #                 than CMake could do; CMake always raises the level): the compile must stop with softgl's
 #                 one-line message, not with errors inside its templates
+#   pkgconfig     against the installed package through pkg-config alone (softgl-model.pc, which requires
+#                 softgl.pc): the compiler called with `pkg-config --cflags --libs softgl-model`, no CMake
 # Variables: MODE, SOFTGL_BINARY_DIR, SOFTGL_SOURCE_DIR, CONSUMER_SOURCE_DIR, WORK_DIR, CXX (the compiler).
 file(REMOVE_RECURSE "${WORK_DIR}")
 
@@ -26,7 +28,25 @@ else()
   endif()
 endif()
 
-if(MODE STREQUAL "forced_old")
+if(MODE STREQUAL "pkgconfig")
+  find_program(PKG_CONFIG pkg-config REQUIRED)
+  set(ENV{PKG_CONFIG_PATH} "${prefix}/lib/pkgconfig:${prefix}/lib64/pkgconfig")
+  file(GLOB pc_dirs "${prefix}/lib/*/pkgconfig")
+  foreach(d IN LISTS pc_dirs)
+    set(ENV{PKG_CONFIG_PATH} "${d}:$ENV{PKG_CONFIG_PATH}")
+  endforeach()
+  execute_process(COMMAND "${PKG_CONFIG}" --cflags --libs softgl-model RESULT_VARIABLE rc OUTPUT_VARIABLE flags
+                  ERROR_VARIABLE flags OUTPUT_STRIP_TRAILING_WHITESPACE)
+  if(rc)
+    message(FATAL_ERROR "pkg-config --cflags --libs softgl-model failed: ${flags}")
+  endif()
+  if(NOT flags MATCHES "-I${prefix}/[^ ]*include" OR NOT flags MATCHES "-lsoftgl_model" OR NOT flags MATCHES "-lsoftgl( |$)")
+    message(FATAL_ERROR "pkg-config gave flags that do not name the installed package: ${flags}")
+  endif()
+  separate_arguments(flag_list UNIX_COMMAND "${flags}")
+  file(MAKE_DIRECTORY "${WORK_DIR}/build")
+  run("compile" "${CXX}" "${CONSUMER_SOURCE_DIR}/main.cpp" -o "${WORK_DIR}/build/app" ${flag_list})
+elseif(MODE STREQUAL "forced_old")
   execute_process(COMMAND "${CXX}" -std=c++17 "-I${prefix}/include" -c "${CONSUMER_SOURCE_DIR}/main.cpp"
                           -o "${WORK_DIR}/main.o" RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE out)
   string(REGEX MATCHALL "error:" errors "${out}")
@@ -42,9 +62,10 @@ if(MODE STREQUAL "forced_old")
   return()
 endif()
 
-run("configure" ${CMAKE_COMMAND} -S "${source}" -B "${WORK_DIR}/build" ${configure_args})
-
-run("build" ${CMAKE_COMMAND} --build "${WORK_DIR}/build" -j 2)
+if(NOT MODE STREQUAL "pkgconfig")
+  run("configure" ${CMAKE_COMMAND} -S "${source}" -B "${WORK_DIR}/build" ${configure_args})
+  run("build" ${CMAKE_COMMAND} --build "${WORK_DIR}/build" -j 2)
+endif()
 execute_process(COMMAND "${WORK_DIR}/build/app" RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE out)
 message(STATUS "${out}")
 if(rc)
