@@ -35,10 +35,9 @@ for target in "${targets[@]}"; do
   corpus="$dir/$target/corpus" findings="$dir/$target/findings" log="$dir/$target/last-run.log"
   mkdir -p "$corpus" "$findings"
   before=$(find "$findings" -type f | wc -l)
-  leaks=1
-  [ "$target" = fuzz_model ] && leaks=0  # assimp keeps allocations that LeakSanitizer reports
   echo "== $target: ${seconds} s, corpus $corpus ($(find "$corpus" -type f | wc -l) inputs)"
-  ASAN_OPTIONS=detect_leaks=$leaks "$bin" -fork="$jobs" -ignore_crashes=1 -ignore_timeouts=1 -ignore_ooms=1 \
+  ASAN_OPTIONS=detect_leaks=1 LSAN_OPTIONS=suppressions=$PWD/tests/fuzz/lsan.supp "$bin" -fork="$jobs" \
+    -ignore_crashes=1 -ignore_timeouts=1 -ignore_ooms=1 \
     -max_total_time="$seconds" -timeout=20 -rss_limit_mb=4096 -artifact_prefix="$findings/" \
     "$corpus" "tests/fuzz/corpus/$target" > "$log" 2>&1 || true
   last=$(grep -E "^#[0-9]+: cov:" "$log" | tail -1)

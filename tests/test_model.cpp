@@ -319,3 +319,36 @@ TEST_CASE("sRGB transfer functions and the tone curves", "[model][shader]") {
   CHECK(aces(glm::vec3(1.0f)).x == Approx(2.54f / 3.16f));
   CHECK(aces(glm::vec3(1e4f)).x == Approx(1.0f).margin(1e-3));
 }
+
+TEST_CASE("imports within limits: a time limit and a memory budget stop the import, a crash-free file loads", "[model]") {
+  Context gl(32, 32);
+  const std::string engine = TestModel("glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb");
+  Model plain, limited;
+  std::string error;
+  REQUIRE(plain.Load(gl, engine, &error));
+  LoadOptions generous;
+  generous.timeout_seconds = 120.0;
+  generous.memory_budget = std::size_t(8) << 30;
+  REQUIRE(limited.Load(gl, engine, generous, &error));
+  CHECK(limited.triangles_drawn == plain.triangles_drawn);
+  CHECK(limited.meshes.size() == plain.meshes.size());
+
+  // The engine's import (121,496 triangles) takes far more than a microsecond and a megabyte.
+  LoadOptions quick;
+  quick.timeout_seconds = 1e-6;
+  CHECK_FALSE(limited.Load(gl, engine, quick, &error));
+  CHECK(error.find("time limit of 1e-06 s") != std::string::npos);
+  CHECK(limited.meshes.empty());
+#if !defined(__SANITIZE_ADDRESS__)  // AddressSanitizer's allocator takes its memory beyond any budget
+  LoadOptions small;
+  small.memory_budget = std::size_t(1) << 20;
+  CHECK_FALSE(limited.Load(gl, engine, small, &error));
+  CHECK(error.find("memory budget of 1 MiB") != std::string::npos);
+#endif
+  // A file assimp refuses is refused with its own reason, limits or not.
+  const std::filesystem::path dir = std::filesystem::path(SOFTGL_TEST_OUTPUT_DIR) / "models";
+  std::filesystem::create_directories(dir);
+  { std::ofstream(dir / "broken.glb") << "glTF this is not a binary glTF file"; }
+  CHECK_FALSE(limited.Load(gl, (dir / "broken.glb").string(), generous, &error));
+  CHECK(error.find("cannot read") != std::string::npos);
+}

@@ -52,6 +52,8 @@ struct Options {
   int supersample = 1, turntable = 0, fps = 24;
   int sheet_cols = 0, sheet_rows = 0;  // --sheet; 0: none
   float point_size = 3.0f;
+  double timeout = 30.0;   // seconds an import may take; 0: no limit
+  int import_memory = 4096;  // MiB an import may take; 0: no limit
 };
 
 bool ParseFloats(const std::string& s, int n, float* out) {
@@ -177,6 +179,16 @@ void Parse(CLI::App& app, int argc, char** argv, Options& o) {
              "to right and top to bottom, each of --size (not with --turntable)",
              "wants COLSxROWS with both from 1 to 64",
              [&o](const std::string& v) { return ParsePair(v, 64, o.sheet_cols, o.sheet_rows); });
+  AddChecked(app, "--timeout", "SECONDS", "the most time one model's import may take (default 30; 0: no limit)",
+             "wants seconds from 0 to 86400", [&o](const std::string& v) {
+               float f = 0.0f;
+               if (!ParseFloats(v, 1, &f) || f < 0.0f || f > 86400.0f) return false;
+               o.timeout = f;
+               return true;
+             });
+  AddChecked(app, "--max-import-memory", "MIB",
+             "the most memory one model's import may take (default 4096; 0: no limit)",
+             "wants MiB from 0 to 1048576", [&o](const std::string& v) { return ParseInt(v, 0, 1 << 20, o.import_memory); });
   app.add_flag("--info", o.info,
                "print what the file holds (meshes, vertex and triangle counts,\n"
                "materials and their maps, bounding box, import time); render nothing");
@@ -382,7 +394,10 @@ class Renderer {
     const auto start = Clock::now();
     softgl::Model model;
     std::string error;
-    if (!model.Load(gl_, file, &error)) {
+    softgl::LoadOptions limits;
+    limits.timeout_seconds = o_.timeout;
+    limits.memory_budget = std::size_t(o_.import_memory) << 20;
+    if (!model.Load(gl_, file, limits, &error)) {
       std::fprintf(stderr, "softgl-render: %s\n", error.c_str());
       return kLoadFailed;
     }

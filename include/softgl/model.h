@@ -8,6 +8,7 @@
 
 #include <softgl/config.h>
 
+#include <cstddef>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -91,6 +92,17 @@ class MaterialProgram {
   virtual void SetMesh(const ModelMesh& mesh) { (void)mesh; }
 };
 
+/// Limits on one import (assimp's reading of a file), for files from untrusted or unknown sources: some malformed
+/// files keep an importer busy for minutes or make it allocate without end, and none of that can be stopped from
+/// inside. With a limit set, Model::Load first imports the file in a child process (fork) that it stops at the
+/// limit; only a file whose import finished there within the limits is imported again in the calling process
+/// (so an import's work is done twice). A crash inside the importer ends only the child, and Load reports it.
+/// POSIX systems only; elsewhere the limits are not applied.
+struct LoadOptions {
+  double timeout_seconds = 0.0;    ///< the most wall-clock time the import may take; 0: no limit
+  std::size_t memory_budget = 0;   ///< the most memory (bytes of address space) it may add; 0: no limit
+};
+
 class Model {
  public:
   /// Loads `path` into `gl`: meshes triangulated, smooth normals generated where missing, tangents computed,
@@ -99,6 +111,8 @@ class Model {
   /// assimp cannot read, a corrupt file or a scene with nothing to draw; `gl` may then hold objects already made
   /// (deleting them is the caller's choice: Context objects die with it).
   bool Load(Context& gl, const std::string& path, std::string* error = nullptr);
+  /// The same within `options`' limits; past one, false with a message naming the limit.
+  bool Load(Context& gl, const std::string& path, const LoadOptions& options, std::string* error = nullptr);
 
   /// Draws every node, accumulating transforms from the root (times `world`): opaque and masked materials first,
   /// then blended ones with blending on and depth writes off; back faces culled unless a material is double

@@ -1,14 +1,25 @@
 // model.cpp — loading models through assimp into softgl objects, drawing their node hierarchy, the camera helper.
 #include <softgl/model.h>
 
+#if defined(__unix__)
+#include <signal.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+#endif
+
 #include <algorithm>
+#include <cerrno>
+#include <chrono>
 #include <cmath>
 #include <cstddef>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <map>
 #include <string_view>
+#include <thread>
 #include <utility>
 
 #include <assimp/GltfMaterial.h>
@@ -318,9 +329,92 @@ bool PlyHeaderUnterminated(const std::string& path) {
   return matched != kEnd.size();  // the word at the very end of the file ends the header too
 }
 
+// The import: assimp's reading of the file with softgl's post-processing steps. Null, with the reason in `why`, when
+// assimp cannot read it.
+const aiScene* Import(Assimp::Importer& importer, const std::string& path, std::string& why) {
+  constexpr unsigned kSteps = aiProcess_Triangulate | aiProcess_GenSmoothNormals | aiProcess_CalcTangentSpace |
+                              aiProcess_JoinIdenticalVertices | aiProcess_SortByPType;
+  const aiScene* scene = importer.ReadFile(path, kSteps | aiProcess_ValidateDataStructure);
+  if (!scene) {
+    why = importer.GetErrorString();
+    if (why.find("contains no faces") == std::string::npos) return nullptr;
+    // A point cloud without point elements (an OBJ of vertices alone) fails assimp's validation: read again
+    // without it; Upload checks every index and draws a mesh without faces as one point per vertex.
+    scene = importer.ReadFile(path, kSteps);
+    if (!scene) why = importer.GetErrorString();
+  }
+  return scene;
+}
+
+// The import of `path` tried in a child process within the limits. Empty when it finished there (read or
+// refused: the calling process then imports the file itself), else why it was stopped.
+std::string TryImport(const std::string& path, const LoadOptions& options) {
+#if defined(__unix__)
+  constexpr int kOutOfMemory = 3;
+  const pid_t child = fork();
+  if (child < 0) return "cannot start the import process";
+  if (child == 0) {
+    // The child: the import alone, then _exit (no exit handlers of the parent's run in it).
+    if (options.memory_budget > 0) {
+      long pages = 0;
+      if (std::ifstream statm("/proc/self/statm"); !(statm >> pages)) pages = 0;
+      const rlim_t now = rlim_t(pages) * rlim_t(sysconf(_SC_PAGESIZE));
+      const rlimit limit{now + options.memory_budget, now + options.memory_budget};
+      setrlimit(RLIMIT_AS, &limit);
+    }
+    int status = 0;
+    try {
+      Assimp::Importer importer;
+      std::string why;
+      if (!Import(importer, path, why) && why.find("bad_alloc") != std::string::npos) status = kOutOfMemory;
+    } catch (const std::bad_alloc&) {
+      status = kOutOfMemory;
+    } catch (...) {
+    }
+    _exit(status);
+  }
+  // The parent: waits for the child until the deadline, polling with growing pauses of at most 10 ms.
+  using Clock = std::chrono::steady_clock;
+  const auto deadline = Clock::now() + std::chrono::duration<double>(options.timeout_seconds);
+  auto pause = std::chrono::microseconds(50);
+  int status = 0;
+  for (;;) {
+    const pid_t done = waitpid(child, &status, WNOHANG);
+    if (done == child) break;
+    if (done < 0 && errno != EINTR) return "lost the import process";
+    if (options.timeout_seconds > 0.0 && Clock::now() >= deadline) {
+      kill(child, SIGKILL);
+      while (waitpid(child, &status, 0) < 0 && errno == EINTR) {
+      }
+      char limit[64];
+      std::snprintf(limit, sizeof limit, "%g", options.timeout_seconds);
+      return std::string("import stopped: it took longer than the time limit of ") + limit + " s";
+    }
+    std::this_thread::sleep_for(pause);
+    pause = std::min(pause * 2, std::chrono::microseconds(10000));
+  }
+  if (WIFEXITED(status) && WEXITSTATUS(status) == 0) return {};
+  const std::string budget = std::to_string(options.memory_budget >> 20) + " MiB";
+  if (WIFEXITED(status) && WEXITSTATUS(status) == kOutOfMemory)
+    return "import stopped: it needed more than the memory budget of " + budget;
+  if (WIFSIGNALED(status))
+    return "import failed: the importer crashed (signal " + std::to_string(WTERMSIG(status)) + ")";
+  return "import failed: the importer stopped with status " + std::to_string(WEXITSTATUS(status)) +
+         (options.memory_budget > 0 ? " (out of memory within the budget of " + budget + "?)" : std::string());
+#else
+  (void)path;
+  (void)options;
+  return {};
+#endif
+}
+
 }  // namespace
 
 bool Model::Load(Context& gl, const std::string& path, std::string* error) {
+  return Load(gl, path, LoadOptions{}, error);
+}
+
+bool Model::Load(Context& gl, const std::string& path, const LoadOptions& options, std::string* error) {
   *this = Model{};
   auto fail = [&](const std::string& message) {
     if (error) *error = path + ": " + message;
@@ -329,18 +423,12 @@ bool Model::Load(Context& gl, const std::string& path, std::string* error) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec)) return fail("no such file");
   if (PlyHeaderUnterminated(path)) return fail("cannot read: a PLY header without end_header");
+  if (options.timeout_seconds > 0.0 || options.memory_budget > 0)
+    if (const std::string stopped = TryImport(path, options); !stopped.empty()) return fail(stopped);
   Assimp::Importer importer;
-  constexpr unsigned kSteps = aiProcess_Triangulate | aiProcess_GenSmoothNormals | aiProcess_CalcTangentSpace |
-                              aiProcess_JoinIdenticalVertices | aiProcess_SortByPType;
-  const aiScene* scene = importer.ReadFile(path, kSteps | aiProcess_ValidateDataStructure);
-  if (!scene) {
-    const std::string why = importer.GetErrorString();
-    if (why.find("contains no faces") == std::string::npos) return fail("cannot read: " + why);
-    // A point cloud without point elements (an OBJ of vertices alone) fails assimp's validation: read again
-    // without it; Upload checks every index and draws a mesh without faces as one point per vertex.
-    scene = importer.ReadFile(path, kSteps);
-    if (!scene) return fail("cannot read: " + std::string(importer.GetErrorString()));
-  }
+  std::string why;
+  const aiScene* scene = Import(importer, path, why);
+  if (!scene) return fail("cannot read: " + why);
   if ((scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE) || !scene->mRootNode) return fail("incomplete scene");
   Loader loader(gl, *this, *scene, std::filesystem::path(path).parent_path());
   loader.Materials();
