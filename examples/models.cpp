@@ -1,4 +1,5 @@
-// models — models from Debian's assimp-testmodels with each built-in shader: writes model_*.png.
+// models — models from Debian's assimp-testmodels with each built-in shader, then two files of points and lines
+// alone (written here: a PLY point cloud and an OBJ polyline), drawn unlit: writes model_*.png.
 #include <cstdio>
 #include <string>
 
@@ -31,6 +32,28 @@ int main(int argc, char** argv) {
       return 1;
     }
     if (int rc = example::Save(dir, s.name, image)) return rc;
+  }
+  // Files without surfaces: their meshes are kept as points and lines and drawn in their colours.
+  const std::string cloud = dir + "/galaxy_points.ply", knot = dir + "/torus_knot_lines.obj";
+  if (!scenes::WritePointCloudPly(cloud) || !scenes::WriteTorusKnotObj(knot)) {
+    std::fprintf(stderr, "error: cannot write %s or %s\n", cloud.c_str(), knot.c_str());
+    return 1;
+  }
+  struct Wire {
+    std::string file;
+    const char* name;
+    float azimuth, elevation, point_size;
+  };
+  const Wire wires[] = {{cloud, "model_point_cloud.png", 20.0f, 35.0f, 2.0f},
+                        {knot, "model_wireframe_lines.png", 0.0f, 60.0f, 1.0f}};
+  for (const Wire& w : wires) {
+    std::string error;
+    const softgl::Image image = scenes::ModelView(w.file, "phong", 640, 480, w.azimuth, w.elevation, &error, w.point_size);
+    if (image.rgba.empty()) {
+      std::fprintf(stderr, "error: %s\n", error.c_str());
+      return 1;
+    }
+    if (int rc = example::Save(dir, w.name, image)) return rc;
   }
   return 0;
 }

@@ -62,7 +62,13 @@ softgl::Image Instancing(int width, int height);
 /// three-point lit, drawn with the built-in shader named "unlit", "phong" or "pbr". An empty image, with the
 /// reason in `error`, when the model cannot be loaded.
 softgl::Image ModelView(const std::string& path, const std::string& shader, int width, int height, float azimuth,
-                        float elevation, std::string* error = nullptr);
+                        float elevation, std::string* error = nullptr, float point_size = 1.0f);
+
+/// Model files of points and lines alone, written for the models example and its golden images: a PLY point cloud
+/// of 20,000 coloured points (a spiral galaxy: vertices with colours, no faces) and an OBJ of one closed polyline
+/// (a (3, 7) torus knot of 720 segments, `l` elements only). False when the file cannot be written.
+bool WritePointCloudPly(const std::string& path);
+bool WriteTorusKnotObj(const std::string& path);
 
 /// The folder of Debian's assimp-testmodels.
 inline constexpr const char* kTestModels = "/usr/share/assimp/models";

@@ -206,6 +206,22 @@ TEST_CASE("image: a model per built-in shader", "[model][image]") {
               scenes::ModelView(TestModel("glTF2/BoxTextured-glTF/BoxTextured.gltf"), "pbr", 320, 240, 35, 25));
 }
 
+TEST_CASE("image: a point cloud file and a wireframe-only file", "[model][image]") {
+  const std::filesystem::path dir = std::filesystem::path(SOFTGL_TEST_OUTPUT_DIR) / "models";
+  std::filesystem::create_directories(dir);
+  const std::string cloud = (dir / "galaxy_points.ply").string(), knot = (dir / "torus_knot_lines.obj").string();
+  REQUIRE(scenes::WritePointCloudPly(cloud));
+  REQUIRE(scenes::WriteTorusKnotObj(knot));
+  std::string error;
+  const Image points = scenes::ModelView(cloud, "phong", 320, 240, 20, 35, &error, 2.0f);
+  INFO(error);
+  REQUIRE(!points.rgba.empty());
+  CheckGolden("model_point_cloud", points);
+  const Image lines = scenes::ModelView(knot, "phong", 320, 240, 0, 60, &error, 1.0f);
+  REQUIRE(!lines.rgba.empty());
+  CheckGolden("model_wireframe_lines", lines);
+}
+
 TEST_CASE("point and line meshes are kept and drawn, unlit", "[model]") {
   // An OBJ point cloud of vertices alone (no point elements: assimp's validation refuses it, the second reading
   // takes it), and an OBJ with a point element and a polyline.
