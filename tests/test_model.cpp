@@ -2,9 +2,11 @@
 // errors for bad files, the camera helper, and one golden image per built-in shader.
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
 
 #include <softgl/model.h>
 #include <softgl/shaders.h>
@@ -262,7 +264,7 @@ TEST_CASE("point and line meshes are kept and drawn, unlit", "[model]") {
   CHECK(gl.GetError() == NO_ERROR);
 }
 
-TEST_CASE("Release deletes what Load made; CanRead goes by the extension", "[model]") {
+TEST_CASE("Release deletes what Load made, and CanRead goes by the extension", "[model]") {
   Context gl(32, 32);
   Model model;
   std::string error;
@@ -367,4 +369,69 @@ TEST_CASE("imports within limits: a time limit and a memory budget stop the impo
   { std::ofstream(dir / "broken.glb") << "glTF this is not a binary glTF file"; }
   CHECK_FALSE(limited.Load(gl, (dir / "broken.glb").string(), generous, &error));
   CHECK(error.find("cannot read") != std::string::npos);
+}
+
+namespace {
+
+// A Radiance HDR file of flat RGBE pixels, w x h, from `radiance(x, y)` (rows from the top).
+template <class Radiance>
+void WriteHdr(const std::string& path, int w, int h, Radiance radiance) {
+  std::ofstream f(path, std::ios::binary);
+  f << "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y " << h << " +X " << w << "\n";
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const float v = radiance(x, y);  // grey
+      int e = 0;
+      const float m = std::frexp(v, &e);  // v = m 2^e, m in [0.5, 1)
+      const unsigned char mantissa = v > 0.0f ? static_cast<unsigned char>(m * 256.0f) : 0;
+      const unsigned char exponent = v > 0.0f ? static_cast<unsigned char>(e + 128) : 0;
+      f << mantissa << mantissa << mantissa << exponent;
+    }
+}
+
+// The texel at the centre of a cube map face on `unit`, level 0.
+glm::vec4 FaceCentre(Context& gl, int unit, Enum face) {
+  gl.ActiveTexture(TEXTURE0 + Enum(unit));
+  int size = 0;
+  gl.GetTexLevelParameteriv(face, 0, TEXTURE_WIDTH, &size);
+  std::vector<float> texels(std::size_t(size) * std::size_t(size) * 4);
+  gl.GetTexImage(face, 0, RGBA, FLOAT, texels.data());
+  gl.ActiveTexture(TEXTURE0);
+  const std::size_t centre = (std::size_t(size / 2) * std::size_t(size) + std::size_t(size / 2)) * 4;
+  return {texels[centre], texels[centre + 1], texels[centre + 2], texels[centre + 3]};
+}
+
+}  // namespace
+
+TEST_CASE("an HDR environment: radiance cube map and diffuse irradiance", "[model]") {
+  const std::filesystem::path dir = std::filesystem::path(SOFTGL_TEST_OUTPUT_DIR) / "models";
+  std::filesystem::create_directories(dir);
+  Context gl(8, 8);
+  std::string error;
+  // Uniform radiance 0.5: the cube map holds 0.5, and the irradiance (1/pi of the cosine-weighted integral over
+  // a hemisphere) is 0.5 too, within the coarse sum's error.
+  const std::string uniform = (dir / "uniform.hdr").string();
+  WriteHdr(uniform, 64, 32, [](int, int) { return 0.5f; });
+  const float levels = LoadEnvironment(gl, uniform, 32, &error);
+  INFO(error);
+  CHECK(levels == 6.0f);  // 32, 16, 8, 4, 2, 1
+  for (Enum face = TEXTURE_CUBE_MAP_POSITIVE_X; face <= TEXTURE_CUBE_MAP_NEGATIVE_Z; ++face) {
+    CHECK(FaceCentre(gl, kUnitEnvironment, face).x == Approx(0.5f).epsilon(1e-4));
+    CHECK(FaceCentre(gl, kUnitIrradiance, face).x == Approx(0.5f).epsilon(0.03));
+  }
+  // Light from above only (the top half of the panorama, radiance 1): the irradiance for a normal n is then
+  // (1 + n.y) / 2: 1 straight up, 0 straight down. The texel read on the +x face lies half a texel (of 16) below
+  // the horizon, n.y = -0.0625 / |(1, 0.0625, 0.0625)|.
+  const std::string sky = (dir / "sky_above.hdr").string();
+  WriteHdr(sky, 64, 32, [](int, int y) { return y < 16 ? 1.0f : 0.0f; });
+  REQUIRE(LoadEnvironment(gl, sky, 32, &error) > 0.0f);
+  CHECK(FaceCentre(gl, kUnitIrradiance, TEXTURE_CUBE_MAP_POSITIVE_Y).x == Approx(1.0f).epsilon(0.03));
+  CHECK(FaceCentre(gl, kUnitIrradiance, TEXTURE_CUBE_MAP_NEGATIVE_Y).x == Approx(0.0f).margin(0.01));
+  const float side_y = -0.0625f / std::sqrt(1.0f + 2.0f * 0.0625f * 0.0625f);
+  CHECK(FaceCentre(gl, kUnitIrradiance, TEXTURE_CUBE_MAP_POSITIVE_X).x == Approx((1.0f + side_y) / 2.0f).epsilon(0.02));
+  CHECK(FaceCentre(gl, kUnitEnvironment, TEXTURE_CUBE_MAP_POSITIVE_Y).x == Approx(1.0f));
+  CHECK(FaceCentre(gl, kUnitEnvironment, TEXTURE_CUBE_MAP_NEGATIVE_Y).x == Approx(0.0f));
+  // A missing or corrupt file: 0 and a message.
+  CHECK(LoadEnvironment(gl, (dir / "no-such.hdr").string(), 32, &error) == 0.0f);
+  CHECK_FALSE(error.empty());
 }

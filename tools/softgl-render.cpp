@@ -48,6 +48,8 @@ struct Options {
   std::string shader = "auto", tonemap = "auto";
   float exposure = 0.0f;
   glm::vec3 background{0.16f, 0.17f, 0.2f};
+  bool background_env = false;  // --background env: the environment image behind the model
+  std::string env;              // --env FILE.hdr
   bool wireframe = false, quiet = false, info = false;
   int supersample = 1, turntable = 0, fps = 24;
   int sheet_cols = 0, sheet_rows = 0;  // --sheet; 0: none
@@ -156,8 +158,15 @@ void Parse(CLI::App& app, int argc, char** argv, Options& o) {
              "(-16 to 16, default 0)", "wants a number from -16 to 16", [&o](const std::string& v) {
                return ParseFloats(v, 1, &o.exposure) && o.exposure >= -16.0f && o.exposure <= 16.0f;
              });
-  AddChecked(app, "--background", "R,G,B", "background colour, components in [0, 1] (default 0.16,0.17,0.2)",
-             "wants R,G,B", [&o](const std::string& v) {
+  app.add_option("--env", o.env,
+                 "an equirectangular HDR image (.hdr) that lights the PBR shader's\n"
+                 "materials instead of the studio environment and the lamps")
+      ->type_name("FILE");
+  AddChecked(app, "--background", "R,G,B|env",
+             "background colour, components in [0, 1] (default 0.16,0.17,0.2),\n"
+             "or env: the --env image", "wants R,G,B or env", [&o](const std::string& v) {
+               o.background_env = v == "env";
+               if (o.background_env) return true;
                float f[3];
                if (!ParseFloats(v, 3, f)) return false;
                o.background = glm::clamp(glm::vec3(f[0], f[1], f[2]), 0.0f, 1.0f);
@@ -198,6 +207,7 @@ void Parse(CLI::App& app, int argc, char** argv, Options& o) {
   app.parse(argc, argv);
 
   if (o.output.empty() && !o.info) throw CLI::ValidationError("no output file given (-o OUT.png)");
+  if (o.background_env && o.env.empty()) throw CLI::ValidationError("--background env needs --env FILE.hdr");
   if (o.sheet_cols > 0 && o.turntable > 0) throw CLI::ValidationError("--sheet and --turntable do not go together");
   if (o.sheet_cols > 0 &&
       (std::int64_t(o.width) * o.sheet_cols > 16384 || std::int64_t(o.height) * o.sheet_rows > 16384))
@@ -302,6 +312,29 @@ struct FlatShader : softgl::Shader<FlatShader, NoVaryings>, softgl::MaterialProg
   }
 };
 
+// The environment seen behind the model: a triangle over the whole viewport at the far plane, each fragment's
+// view direction looked up in the environment cube map, shown with the model's exposure and tone curve.
+struct SkyVaryings {
+  softgl::vec2 ndc;
+};
+struct SkyShader : softgl::Shader<SkyShader, SkyVaryings> {
+  glm::mat4 inverse_view_proj{1.0f};
+  glm::vec3 eye{0.0f};
+  softgl::ToneMap tone_map = softgl::ToneMap::kClamp;
+  float exposure = 0.0f;
+  void Vertex(const softgl::VertexLanes& in, softgl::VertexLanesOut<SkyVaryings>& out) const {
+    const softgl::vec2 p(in.attrib[0]);
+    out.position = softgl::vec4(p.x, p.y, softgl::Float(1.0f), softgl::Float(1.0f));
+    out.varyings.ndc = p;
+  }
+  void Fragment(const softgl::FragmentLanes<SkyVaryings>& in, softgl::FragmentLanesOut& out) const {
+    const softgl::vec4 far = inverse_view_proj * softgl::vec4(in.varyings.ndc.x, in.varyings.ndc.y, 1.0f, 1.0f);
+    const softgl::vec3 dir = softgl::vec3(far) / far.w - eye;
+    const softgl::vec3 radiance(in.TextureCubeLod(softgl::kUnitEnvironment, dir, 0.0f));
+    out.color[0] = softgl::vec4(softgl::DisplayColor(radiance, tone_map, exposure, true), 1.0f);
+  }
+};
+
 // --info: what Model::Load made of the file, on stdout.
 void PrintInfo(const std::string& path, const softgl::Model& model, double import_seconds) {
   long long vertices = 0, triangles = 0;
@@ -388,6 +421,27 @@ class Renderer {
   Renderer(const Options& o, int w, int h) : o_(o), w_(w), h_(h), gl_(w, h) {}
   bool Ready() { return gl_.GetError() == softgl::NO_ERROR; }
 
+  // The --env image as the PBR shader's environment (and the triangle that shows it behind the model); false
+  // with a message when it cannot be read.
+  bool LoadEnvironment(const std::string& path) {
+    std::string error;
+    pbr_.environment_levels = softgl::LoadEnvironment(gl_, path, 128, &error);
+    if (pbr_.environment_levels == 0.0f) {
+      std::fprintf(stderr, "softgl-render: %s\n", error.empty() ? (path + ": cannot read").c_str() : error.c_str());
+      return false;
+    }
+    pbr_.environment_hdr = true;
+    const float corners[] = {-1.0f, -1.0f, 3.0f, -1.0f, -1.0f, 3.0f};  // one triangle over the viewport
+    sky_vao_ = gl_.GenVertexArray();
+    gl_.BindVertexArray(sky_vao_);
+    gl_.BindBuffer(softgl::ARRAY_BUFFER, gl_.GenBuffer());
+    gl_.BufferData(softgl::ARRAY_BUFFER, sizeof corners, corners);
+    gl_.VertexAttributePointer(0, 2, softgl::FLOAT, false, 0, 0);
+    gl_.EnableVertexAttribArray(0);
+    gl_.BindVertexArray(0);
+    return true;
+  }
+
   // Loads `file` and writes its image(s) to `output`: the PNG, the turntable's frames or WebP, or the sheet.
   Status Render(const std::string& file, const std::string& output) {
     using Clock = std::chrono::steady_clock;
@@ -431,7 +485,7 @@ class Renderer {
     bool any_pbr = false;
     for (const softgl::Material& m : model.materials) any_pbr = any_pbr || m.pbr;
     shader_name = o_.shader == "auto" ? (any_pbr ? "pbr" : "phong") : o_.shader;
-    if (shader_name == "pbr" && pbr_.environment_levels == 0.0f)
+    if (shader_name == "pbr" && pbr_.environment_levels == 0.0f && o_.env.empty())
       pbr_.environment_levels = softgl::MakeStudioEnvironment(gl_, 64);
     softgl::MaterialProgram* program = shader_name == "pbr"     ? static_cast<softgl::MaterialProgram*>(&pbr_)
                                        : shader_name == "phong" ? static_cast<softgl::MaterialProgram*>(&phong_)
@@ -515,9 +569,21 @@ class Renderer {
     const glm::mat4 view_proj = cam.Projection(aspect) * cam.View();
     const softgl::Lighting lighting = softgl::Lighting::ThreePoint(cam.eye, cam.target);
     pbr_.lighting = phong_.lighting = unlit_.lighting = lighting;
+    if (!o_.env.empty()) pbr_.lighting.count = 0;  // the environment is the PBR materials' only light
 
     gl_.ClearColor(o_.background.r, o_.background.g, o_.background.b, 1.0f);
     gl_.Clear(softgl::COLOR_BUFFER_BIT | softgl::DEPTH_BUFFER_BIT);
+    if (o_.background_env) {
+      SkyShader sky;
+      sky.inverse_view_proj = glm::inverse(view_proj);
+      sky.eye = cam.eye;
+      sky.tone_map = pbr_.tone_map;
+      sky.exposure = pbr_.exposure;
+      gl_.BindVertexArray(sky_vao_);
+      gl_.UseProgram(sky);
+      gl_.DrawArrays(softgl::TRIANGLES, 0, 3);
+      gl_.BindVertexArray(0);
+    }
     gl_.Enable(softgl::DEPTH_TEST);
     gl_.PointSize(o_.point_size * float(o_.supersample));
     if (o_.wireframe) {  // the shaded surface a little behind its edges
@@ -545,6 +611,7 @@ class Renderer {
   softgl::PbrShader pbr_;
   softgl::PhongShader phong_;
   softgl::UnlitShader unlit_;
+  std::uint32_t sky_vao_ = 0;
 };
 
 }  // namespace
@@ -596,6 +663,7 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "softgl-render: cannot make a %dx%d framebuffer\n", w, h);
     return 2;
   }
+  if (!o.env.empty() && !o.info && !renderer.LoadEnvironment(o.env)) return 1;
   if (!batch) return renderer.Render(files.front(), o.output);
 
   // A batch: one image per model in the directory, named after the model (NAME.png, or NAME_2.png for the second

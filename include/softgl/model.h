@@ -36,6 +36,7 @@ enum MaterialUnit : int {
   kUnitOcclusion = 4,  // r
   kUnitSpecular = 5,   // Phong specular intensity
   kUnitEnvironment = 6,  // not a material's: a cube map for image-based ambient light (PbrShader)
+  kUnitIrradiance = 7,   // not a material's: a cube map of diffuse irradiance (PbrShader, with LoadEnvironment)
 };
 
 struct Material {

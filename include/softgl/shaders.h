@@ -82,6 +82,17 @@ inline vec3 ToneMapAces(const vec3& c) {
   return clamp((c * (c * 2.51f + 0.03f)) / (c * (c * 2.43f + 0.59f) + 0.14f), 0.0f, 1.0f);
 }
 
+/// A colour as the framebuffer gets it: scaled by 2^exposure, tone-mapped, clamped to [0, 1], then sRGB-encoded
+/// when `encode` (for colours in linear light).
+inline vec3 DisplayColor(vec3 c, ToneMap tone_map, float exposure, bool encode) {
+  if (exposure != 0.0f) c = c * std::exp2(exposure);
+  c = max(c, 0.0f);
+  if (tone_map == ToneMap::kPbrNeutral) c = ToneMapPbrNeutral(c);
+  else if (tone_map == ToneMap::kAces) c = ToneMapAces(c);
+  c = clamp(c, 0.0f, 1.0f);
+  return encode ? LinearToSrgb(c) : c;
+}
+
 /// The varyings all built-in shaders share.
 struct SurfaceVaryings {
   vec3 world_pos;
@@ -160,14 +171,9 @@ class SurfaceShader : public Shader<Derived, SurfaceVaryings>, public MaterialPr
 
   /// A colour as the framebuffer gets it: scaled by 2^exposure, tone-mapped, then sRGB-encoded when `encode`
   /// (PbrShader works in linear light; Unlit and Phong take the file's colours as they are, already encoded).
-  vec3 Display(vec3 c, bool encode) const {
+  vec3 Display(const vec3& c, bool encode) const {
     if (tone_map == ToneMap::kClamp && exposure == 0.0f && !encode) return c;  // the store clamps
-    if (exposure != 0.0f) c = c * std::exp2(exposure);
-    c = max(c, 0.0f);
-    if (tone_map == ToneMap::kPbrNeutral) c = ToneMapPbrNeutral(c);
-    else if (tone_map == ToneMap::kAces) c = ToneMapAces(c);
-    c = clamp(c, 0.0f, 1.0f);
-    return encode ? LinearToSrgb(c) : c;
+    return DisplayColor(c, tone_map, exposure, encode);
   }
 
   vec3 Emissive(const In& in) const {
@@ -221,6 +227,9 @@ struct PhongShader : SurfaceShader<PhongShader> {
 struct PbrShader : SurfaceShader<PbrShader> {
   float environment_levels = 0.0f;  // number of mip levels of the environment cube map; 0: none
   float environment_strength = 1.0f;
+  /// The environment holds linear radiance (LoadEnvironment's HDR cube maps) rather than sRGB colours, and
+  /// diffuse light comes from the irradiance cube map on kUnitIrradiance.
+  bool environment_hdr = false;
 
   static vec3 ToLinear(const vec3& c) { return SrgbToLinear(clamp(c, 0.0f, 1.0f)); }
   vec3 LinearEmissive(const In& in) const {
@@ -276,8 +285,10 @@ struct PbrShader : SurfaceShader<PbrShader> {
     if (environment_levels > 0.0f) {
       const float last = environment_levels - 1.0f;
       const vec3 r = reflect(-v, n);
-      const vec3 irradiance = ToLinear(vec3(in.TextureCubeLod(kUnitEnvironment, n, last)));
-      const vec3 prefiltered = ToLinear(vec3(in.TextureCubeLod(kUnitEnvironment, r, roughness * last)));
+      const vec3 irradiance = environment_hdr ? vec3(in.TextureCubeLod(kUnitIrradiance, n, 0.0f))
+                                              : ToLinear(vec3(in.TextureCubeLod(kUnitEnvironment, n, last)));
+      const vec4 reflected = in.TextureCubeLod(kUnitEnvironment, r, roughness * last);
+      const vec3 prefiltered = environment_hdr ? vec3(reflected) : ToLinear(vec3(reflected));
       // Analytic approximation of the split-sum environment BRDF.
       const Float rr_x = roughness * -1.0f + 1.0f, rr_y = roughness * -0.0275f + 0.0425f;
       const Float rr_z = roughness * -0.572f + 1.04f, rr_w = roughness * 0.022f + -0.04f;
@@ -297,5 +308,13 @@ struct PbrShader : SurfaceShader<PbrShader> {
 /// to a dim floor, made in `gl` and bound to kUnitEnvironment. Returns the number of levels (for
 /// PbrShader::environment_levels).
 float MakeStudioEnvironment(Context& gl, int size = 64);
+
+/// An environment from an equirectangular HDR image (Radiance .hdr, or any image stb_image reads; longitude 0 at
+/// -z, the top row up): a float cube map of size x size per face with box-filtered mip levels (the glossy
+/// reflections) bound to kUnitEnvironment, and a 16 x 16 cube map of its diffuse irradiance (cosine-weighted over
+/// the hemisphere, divided by pi) bound to kUnitIrradiance, both holding linear radiance. Set the PbrShader's
+/// environment_levels to the result and environment_hdr to true. Returns 0, with a message in `error`, when the
+/// image cannot be read.
+float LoadEnvironment(Context& gl, const std::string& path, int size = 128, std::string* error = nullptr);
 
 }  // namespace softgl
