@@ -17,6 +17,7 @@
 #include <vector>
 
 #include <CLI/CLI.hpp>
+#include <glm/gtc/matrix_transform.hpp>
 #include <softgl/model.h>
 #include <softgl/shaders.h>
 #include <softgl/softgl.h>
@@ -50,7 +51,7 @@ struct Options {
   glm::vec3 background{0.16f, 0.17f, 0.2f};
   bool background_env = false;  // --background env: the environment image behind the model
   std::string env;              // --env FILE.hdr
-  bool wireframe = false, quiet = false, info = false;
+  bool wireframe = false, quiet = false, info = false, shadow = false;
   int supersample = 1, turntable = 0, fps = 24;
   int sheet_cols = 0, sheet_rows = 0;  // --sheet; 0: none
   float point_size = 3.0f;
@@ -173,6 +174,7 @@ void Parse(CLI::App& app, int argc, char** argv, Options& o) {
                return true;
              });
   app.add_flag("--wireframe", o.wireframe, "draw the triangle edges over the shaded model");
+  app.add_flag("--shadow", o.shadow, "a ground plane under the model with its shadow from the key light");
   AddChecked(app, "--point-size", "PX", "diameter of the points of point meshes (1 to 64, default 3)",
              "wants 1 to 64 pixels", [&o](const std::string& v) {
                return ParseFloats(v, 1, &o.point_size) && o.point_size >= 1.0f && o.point_size <= 64.0f;
@@ -332,6 +334,39 @@ struct SkyShader : softgl::Shader<SkyShader, SkyVaryings> {
     const softgl::vec3 dir = softgl::vec3(far) / far.w - eye;
     const softgl::vec3 radiance(in.TextureCubeLod(softgl::kUnitEnvironment, dir, 0.0f));
     out.color[0] = softgl::vec4(softgl::DisplayColor(radiance, tone_map, exposure, true), 1.0f);
+  }
+};
+
+// The ground under the model (--shadow): a disc of neutral grey lit by the key light, shadowed through the shadow
+// map on unit 0 (3 x 3 comparison taps, each a bilinear 2 x 2 comparison), fading out towards its rim.
+struct GroundVaryings {
+  softgl::vec3 world;
+  softgl::vec4 light_pos;
+};
+struct GroundShader : softgl::Shader<GroundShader, GroundVaryings> {
+  glm::mat4 view_proj{1.0f}, light_vp{1.0f};
+  glm::vec3 centre{0.0f};
+  float radius = 1.0f, texel = 1.0f / 2048.0f, key = 1.0f;  // key: the key light's n.l on the ground
+  softgl::ToneMap tone_map = softgl::ToneMap::kClamp;
+  float exposure = 0.0f;
+  void Vertex(const softgl::VertexLanes& in, softgl::VertexLanesOut<GroundVaryings>& out) const {
+    const softgl::vec4 world(softgl::vec3(in.attrib[0]), 1.0f);
+    out.position = view_proj * world;
+    out.varyings.world = softgl::vec3(world);
+    out.varyings.light_pos = light_vp * world;
+  }
+  void Fragment(const softgl::FragmentLanes<GroundVaryings>& in, softgl::FragmentLanesOut& out) const {
+    using softgl::Float;
+    const softgl::vec3 p = softgl::vec3(in.varyings.light_pos) / in.varyings.light_pos.w * 0.5f + 0.5f;
+    Float lit = 0.0f;
+    for (int dy = -1; dy <= 1; ++dy)
+      for (int dx = -1; dx <= 1; ++dx)
+        lit += in.TextureShadow(0, softgl::vec3(softgl::vec2(p) + glm::vec2(dx, dy) * texel, p.z));
+    lit = lit * (1.0f / 9.0f);
+    const Float dx = in.varyings.world.x - centre.x, dz = in.varyings.world.z - centre.z;
+    const Float fade = 1.0f - softgl::smoothstep(0.55f * radius, radius, softgl::sqrt(dx * dx + dz * dz));
+    const softgl::vec3 color = softgl::vec3(0.42f, 0.42f, 0.4f) * (0.35f + 0.65f * key * lit);
+    out.color[0] = softgl::vec4(softgl::DisplayColor(color, tone_map, exposure, false), fade);
   }
 };
 
@@ -585,6 +620,7 @@ class Renderer {
       gl_.BindVertexArray(0);
     }
     gl_.Enable(softgl::DEPTH_TEST);
+    if (o_.shadow) Ground(model, view_proj, lighting.lights[0].direction);
     gl_.PointSize(o_.point_size * float(o_.supersample));
     if (o_.wireframe) {  // the shaded surface a little behind its edges
       gl_.Enable(softgl::POLYGON_OFFSET_FILL);
@@ -605,6 +641,84 @@ class Renderer {
     return Downsample(gl_.ReadPixels(), o_.supersample);
   }
 
+  // --shadow: the model's depth from the key light (direction `to_light`) into the shadow map, then the ground
+  // under its bounding box, blended over the background.
+  void Ground(const softgl::Model& model, const glm::mat4& view_proj, const glm::vec3& to_light) {
+    constexpr int kShadowSize = 2048;
+    const glm::vec3 centre = model.bounds.Center();
+    const float r = std::max(model.bounds.Radius(), 1e-6f);
+    const float ground_y = model.bounds.min.y - 1e-3f * r;
+    const float extent = 1.4f * r;  // the disc's radius: inside the camera's far plane (1.5 r past the centre)
+    if (!shadow_fbo_) {
+      shadow_tex_ = gl_.GenTexture();
+      gl_.BindTexture(softgl::TEXTURE_2D, shadow_tex_);
+      gl_.TexImage2D(softgl::TEXTURE_2D, 0, softgl::DEPTH_COMPONENT, kShadowSize, kShadowSize, 0,
+                     softgl::DEPTH_COMPONENT, softgl::FLOAT, nullptr);
+      gl_.TexParameteri(softgl::TEXTURE_2D, softgl::TEXTURE_MIN_FILTER, softgl::LINEAR);
+      gl_.TexParameteri(softgl::TEXTURE_2D, softgl::TEXTURE_MAG_FILTER, softgl::LINEAR);
+      gl_.TexParameteri(softgl::TEXTURE_2D, softgl::TEXTURE_WRAP_S, softgl::CLAMP_TO_BORDER);
+      gl_.TexParameteri(softgl::TEXTURE_2D, softgl::TEXTURE_WRAP_T, softgl::CLAMP_TO_BORDER);
+      const float far_border[4] = {1, 1, 1, 1};
+      gl_.TexParameterfv(softgl::TEXTURE_2D, softgl::TEXTURE_BORDER_COLOR, far_border);
+      gl_.TexParameteri(softgl::TEXTURE_2D, softgl::TEXTURE_COMPARE_MODE, softgl::COMPARE_REF_TO_TEXTURE);
+      gl_.TexParameteri(softgl::TEXTURE_2D, softgl::TEXTURE_COMPARE_FUNC, softgl::LEQUAL);
+      shadow_fbo_ = gl_.GenFramebuffer();
+      gl_.BindFramebuffer(softgl::FRAMEBUFFER, shadow_fbo_);
+      gl_.FramebufferTexture2D(softgl::FRAMEBUFFER, softgl::DEPTH_ATTACHMENT, softgl::TEXTURE_2D, shadow_tex_, 0);
+      const softgl::Enum no_color = softgl::NONE;
+      gl_.DrawBuffers(1, &no_color);
+      ground_vao_ = gl_.GenVertexArray();  // its buffer is filled for each model
+      gl_.BindVertexArray(ground_vao_);
+      ground_vbo_ = gl_.GenBuffer();
+      gl_.BindBuffer(softgl::ARRAY_BUFFER, ground_vbo_);
+      gl_.VertexAttributePointer(0, 3, softgl::FLOAT, false, 0, 0);
+      gl_.EnableVertexAttribArray(0);
+      gl_.BindVertexArray(0);
+    }
+    // The light's orthographic view of the bounding sphere, from 3 radii away.
+    const glm::vec3 l = glm::normalize(to_light);
+    const glm::vec3 up = std::abs(l.y) > 0.99f ? glm::vec3(0, 0, 1) : glm::vec3(0, 1, 0);
+    const glm::mat4 light_vp = glm::ortho(-r, r, -r, r, r, 9.0f * r) * glm::lookAt(centre + l * 3.0f * r, centre, up);
+    gl_.BindFramebuffer(softgl::FRAMEBUFFER, shadow_fbo_);
+    gl_.Viewport(0, 0, kShadowSize, kShadowSize);
+    gl_.Clear(softgl::DEPTH_BUFFER_BIT);
+    gl_.Enable(softgl::POLYGON_OFFSET_FILL);  // keeps the contact from shadowing itself (acne)
+    gl_.PolygonOffset(2.0f, 4.0f);
+    FlatShader depth;
+    model.Draw(gl_, depth, light_vp);
+    gl_.Disable(softgl::POLYGON_OFFSET_FILL);
+    gl_.BindFramebuffer(softgl::FRAMEBUFFER, 0);
+    gl_.Viewport(0, 0, w_, h_);
+
+    // The ground: a square of two triangles around the disc, in world space.
+    const float corners[] = {-1, -1, 1, -1, 1, 1, -1, -1, 1, 1, -1, 1};
+    std::vector<float> world;
+    for (int i = 0; i < 6; ++i)
+      world.insert(world.end(), {centre.x + corners[2 * i] * extent, ground_y, centre.z + corners[2 * i + 1] * extent});
+    gl_.BindBuffer(softgl::ARRAY_BUFFER, ground_vbo_);
+    gl_.BufferData(softgl::ARRAY_BUFFER, std::ptrdiff_t(world.size() * sizeof(float)), world.data());
+    GroundShader ground;
+    ground.view_proj = view_proj;
+    ground.light_vp = light_vp;
+    ground.centre = centre;
+    ground.radius = extent;
+    ground.texel = 1.0f / float(kShadowSize);
+    ground.key = std::max(l.y, 0.0f);
+    ground.tone_map = phong_.tone_map;  // the same curve and exposure in every shader
+    ground.exposure = phong_.exposure;
+    gl_.ActiveTexture(softgl::TEXTURE0);
+    gl_.BindTexture(softgl::TEXTURE_2D, shadow_tex_);
+    gl_.Enable(softgl::BLEND);
+    gl_.BlendFunc(softgl::SRC_ALPHA, softgl::ONE_MINUS_SRC_ALPHA);
+    gl_.DepthMask(false);  // the model is drawn after: the ground never hides it
+    gl_.BindVertexArray(ground_vao_);
+    gl_.UseProgram(ground);
+    gl_.DrawArrays(softgl::TRIANGLES, 0, 6);
+    gl_.BindVertexArray(0);
+    gl_.DepthMask(true);
+    gl_.Disable(softgl::BLEND);
+  }
+
   const Options& o_;
   int w_, h_;
   softgl::Context gl_;
@@ -612,6 +726,7 @@ class Renderer {
   softgl::PhongShader phong_;
   softgl::UnlitShader unlit_;
   std::uint32_t sky_vao_ = 0;
+  std::uint32_t shadow_tex_ = 0, shadow_fbo_ = 0, ground_vao_ = 0, ground_vbo_ = 0;
 };
 
 }  // namespace
