@@ -389,13 +389,13 @@ void WriteHdr(const std::string& path, int w, int h, Radiance radiance) {
     }
 }
 
-// The texel at the centre of a cube map face on `unit`, level 0.
-glm::vec4 FaceCentre(Context& gl, int unit, Enum face) {
+// The texel at the centre of a cube map face on `unit`.
+glm::vec4 FaceCentre(Context& gl, int unit, Enum face, int level = 0) {
   gl.ActiveTexture(TEXTURE0 + Enum(unit));
   int size = 0;
-  gl.GetTexLevelParameteriv(face, 0, TEXTURE_WIDTH, &size);
+  gl.GetTexLevelParameteriv(face, level, TEXTURE_WIDTH, &size);
   std::vector<float> texels(std::size_t(size) * std::size_t(size) * 4);
-  gl.GetTexImage(face, 0, RGBA, FLOAT, texels.data());
+  gl.GetTexImage(face, level, RGBA, FLOAT, texels.data());
   gl.ActiveTexture(TEXTURE0);
   const std::size_t centre = (std::size_t(size / 2) * std::size_t(size) + std::size_t(size / 2)) * 4;
   return {texels[centre], texels[centre + 1], texels[centre + 2], texels[centre + 3]};
@@ -416,14 +416,15 @@ TEST_CASE("an HDR environment: radiance cube map and diffuse irradiance", "[mode
   INFO(error);
   CHECK(levels == 6.0f);  // 32, 16, 8, 4, 2, 1
   for (Enum face = TEXTURE_CUBE_MAP_POSITIVE_X; face <= TEXTURE_CUBE_MAP_NEGATIVE_Z; ++face) {
-    CHECK(FaceCentre(gl, kUnitEnvironment, face).x == Approx(0.5f).epsilon(1e-4));
+    for (int level = 0; level < 6; ++level)  // the prefiltered levels are weighted means: 0.5 too
+      CHECK(FaceCentre(gl, kUnitEnvironment, face, level).x == Approx(0.5f).epsilon(1e-4));
     CHECK(FaceCentre(gl, kUnitIrradiance, face).x == Approx(0.5f).epsilon(0.03));
   }
   // Light from above only (the top half of the panorama, radiance 1): the irradiance for a normal n is then
   // (1 + n.y) / 2: 1 straight up, 0 straight down. The texel read on the +x face lies half a texel (of 16) below
   // the horizon, n.y = -0.0625 / |(1, 0.0625, 0.0625)|.
   const std::string sky = (dir / "sky_above.hdr").string();
-  WriteHdr(sky, 64, 32, [](int, int y) { return y < 16 ? 1.0f : 0.0f; });
+  WriteHdr(sky, 256, 128, [](int, int y) { return y < 64 ? 1.0f : 0.0f; });
   REQUIRE(LoadEnvironment(gl, sky, 32, &error) > 0.0f);
   CHECK(FaceCentre(gl, kUnitIrradiance, TEXTURE_CUBE_MAP_POSITIVE_Y).x == Approx(1.0f).epsilon(0.03));
   CHECK(FaceCentre(gl, kUnitIrradiance, TEXTURE_CUBE_MAP_NEGATIVE_Y).x == Approx(0.0f).margin(0.01));
@@ -431,6 +432,16 @@ TEST_CASE("an HDR environment: radiance cube map and diffuse irradiance", "[mode
   CHECK(FaceCentre(gl, kUnitIrradiance, TEXTURE_CUBE_MAP_POSITIVE_X).x == Approx((1.0f + side_y) / 2.0f).epsilon(0.02));
   CHECK(FaceCentre(gl, kUnitEnvironment, TEXTURE_CUBE_MAP_POSITIVE_Y).x == Approx(1.0f));
   CHECK(FaceCentre(gl, kUnitEnvironment, TEXTURE_CUBE_MAP_NEGATIVE_Y).x == Approx(0.0f));
+  // A direction just below the horizon (the texel right of and below the +x face's centre) sees no sky as a
+  // mirror (level 0), and some of it once prefiltered for roughness (levels 1 to 5, roughness 0.2 to 1), less
+  // than half: the GGX lobe around it reaches above the horizon.
+  CHECK(FaceCentre(gl, kUnitEnvironment, TEXTURE_CUBE_MAP_POSITIVE_X, 0).x == 0.0f);
+  for (int level = 1; level < 6; ++level) {
+    INFO("level " << level);
+    const float v = FaceCentre(gl, kUnitEnvironment, TEXTURE_CUBE_MAP_POSITIVE_X, level).x;
+    CHECK(v > 0.0f);
+    CHECK(v < 0.5f);
+  }
   // A missing or corrupt file: 0 and a message.
   CHECK(LoadEnvironment(gl, (dir / "no-such.hdr").string(), 32, &error) == 0.0f);
   CHECK_FALSE(error.empty());

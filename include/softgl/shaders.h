@@ -310,8 +310,9 @@ struct PbrShader : SurfaceShader<PbrShader> {
 float MakeStudioEnvironment(Context& gl, int size = 64);
 
 /// An environment from an equirectangular HDR image (Radiance .hdr, or any image stb_image reads; longitude 0 at
-/// -z, the top row up): a float cube map of size x size per face with box-filtered mip levels (the glossy
-/// reflections) bound to kUnitEnvironment, and a 16 x 16 cube map of its diffuse irradiance (cosine-weighted over
+/// -z, the top row up): a float cube map of size x size per face bound to kUnitEnvironment whose level L is
+/// prefiltered for roughness L / (levels - 1) with the GGX distribution (the level PbrShader reads for that
+/// roughness; level 0 the image itself), and a 16 x 16 cube map of its diffuse irradiance (cosine-weighted over
 /// the hemisphere, divided by pi) bound to kUnitIrradiance, both holding linear radiance. Set the PbrShader's
 /// environment_levels to the result and environment_hdr to true. Returns 0, with a message in `error`, when the
 /// image cannot be read.

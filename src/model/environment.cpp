@@ -17,6 +17,8 @@ glm::vec3 CubeDirection(int face, int i, int j, int size) {
   return glm::normalize(dirs[face]);
 }
 
+constexpr float kPi = 3.14159265f;
+
 // An equirectangular image of linear RGB, rows from the top (+y) down, longitude 0 at -z.
 struct Panorama {
   int width = 0, height = 0;
@@ -29,13 +31,35 @@ struct Panorama {
   }
   // Bilinear, wrapping around in longitude.
   glm::vec3 Sample(const glm::vec3& d) const {
-    const float u = 0.5f + std::atan2(d.x, -d.z) / (2.0f * 3.14159265f);
-    const float v = std::acos(std::clamp(d.y, -1.0f, 1.0f)) / 3.14159265f;
+    const float u = 0.5f + std::atan2(d.x, -d.z) / (2.0f * kPi);
+    const float v = std::acos(std::clamp(d.y, -1.0f, 1.0f)) / kPi;
     const float x = u * float(width) - 0.5f, y = v * float(height) - 0.5f;
     const int x0 = int(std::floor(x)), y0 = int(std::floor(y));
     const float fx = x - float(x0), fy = y - float(y0);
     return glm::mix(glm::mix(At(x0, y0), At(x0 + 1, y0), fx), glm::mix(At(x0, y0 + 1), At(x0 + 1, y0 + 1), fx), fy);
   }
+  // Every texel as a direction, its radiance and its solid angle, (2 pi / W)(pi / H) sin(polar angle), with the
+  // index of its row.
+  struct Texel {
+    glm::vec3 direction, radiance;
+    float solid;
+    int row;
+  };
+  std::vector<Texel> Texels() const {
+    std::vector<Texel> out;
+    out.reserve(texels.size());
+    for (int y = 0; y < height; ++y) {
+      const float polar = (float(y) + 0.5f) / float(height) * kPi;
+      const float solid = (2.0f * kPi / float(width)) * (kPi / float(height)) * std::sin(polar);
+      for (int x = 0; x < width; ++x) {
+        const float azimuth = ((float(x) + 0.5f) / float(width) - 0.5f) * 2.0f * kPi;
+        const glm::vec3 d(std::sin(polar) * std::sin(azimuth), std::cos(polar), -std::sin(polar) * std::cos(azimuth));
+        out.push_back({d, At(x, y), solid, y});
+      }
+    }
+    return out;
+  }
+
   // Averages of factor x factor blocks.
   Panorama Shrunk(int factor) const {
     Panorama out;
@@ -57,7 +81,7 @@ struct Panorama {
 // Uploads one cube map (bound to TEXTURE_CUBE_MAP) face by face from `texel(face, i, j)` (RGB) in the internal
 // format `format`, edges clamped.
 template <class Texel>
-void UploadCube(Context& gl, int size, Enum format, Texel texel) {
+void UploadCube(Context& gl, int size, Enum format, Texel texel, int level = 0) {
   std::vector<float> data(std::size_t(size) * std::size_t(size) * 4);
   for (int face = 0; face < 6; ++face) {
     for (int j = 0; j < size; ++j)
@@ -69,7 +93,7 @@ void UploadCube(Context& gl, int size, Enum format, Texel texel) {
         p[2] = c.b;
         p[3] = 1.0f;
       }
-    gl.TexImage2D(TEXTURE_CUBE_MAP_POSITIVE_X + Enum(face), 0, format, size, size, 0, RGBA, FLOAT, data.data());
+    gl.TexImage2D(TEXTURE_CUBE_MAP_POSITIVE_X + Enum(face), level, format, size, size, 0, RGBA, FLOAT, data.data());
   }
   gl.TexParameteri(TEXTURE_CUBE_MAP, TEXTURE_WRAP_S, CLAMP_TO_EDGE);
   gl.TexParameteri(TEXTURE_CUBE_MAP, TEXTURE_WRAP_T, CLAMP_TO_EDGE);
@@ -109,36 +133,59 @@ float LoadEnvironment(Context& gl, const std::string& path, int size, std::strin
     pano.texels[i] = finite ? glm::max(c, 0.0f) : glm::vec3(0.0f);  // no NaN or infinite light
   }
 
-  // The radiance cube map: each texel looks its direction up in the panorama (shrunk first so that a texel
-  // covers about one panorama texel), then box-filtered levels.
-  const Panorama source = pano.Shrunk(std::max(1, w / (4 * size)));
+  // The radiance cube map. Level 0 looks each texel's direction up in the panorama (shrunk first so that a
+  // texel covers about one panorama texel). Level L is prefiltered for roughness L / (levels - 1), the level
+  // PbrShader reads for that roughness: with the view along the normal (the split-sum approximation), each texel
+  // is the GGX-weighted mean of the panorama around its direction n, weight D(h) max(n.w, 0) dw for a direction w
+  // with h = normalize(n + w), over a panorama of about twice the level's resolution. Only rows within the lobe's
+  // angle (where D falls below 1/1000 of its peak) are summed.
+  const int last = int(LevelCount(size)) - 1;
   gl.ActiveTexture(TEXTURE0 + Enum(kUnitEnvironment));
   gl.BindTexture(TEXTURE_CUBE_MAP, gl.GenTexture());
+  const Panorama source = pano.Shrunk(std::max(1, w / (4 * size)));
   UploadCube(gl, size, RGBA32F, [&](int face, int i, int j) { return source.Sample(CubeDirection(face, i, j, size)); });
-  gl.GenerateMipmap(TEXTURE_CUBE_MAP);
+  for (int level = 1; level <= last; ++level) {
+    const int s = std::max(1, size >> level);
+    const Panorama lower = pano.Shrunk(std::max(1, w / std::max(32, 4 * s)));
+    const std::vector<Panorama::Texel> samples = lower.Texels();
+    const float roughness = float(level) / float(last), a = roughness * roughness, a2 = std::max(a * a, 1e-8f);
+    // tan of the half-vector angle where D(h) is 1/1000 of D(n): a sqrt(sqrt(1000) - 1); the lobe's angle around
+    // n is twice that.
+    const float lobe = std::min(kPi, 2.0f * std::atan(a * std::sqrt(std::sqrt(1000.0f) - 1.0f)));
+    const float cos_lobe = std::cos(std::min(lobe, kPi / 2.0f)), row_angle = kPi / float(lower.height);
+    UploadCube(gl, s, RGBA32F, [&](int face, int i, int j) {
+      const glm::vec3 n = CubeDirection(face, i, j, s);
+      const float polar = std::acos(std::clamp(n.y, -1.0f, 1.0f));
+      const int row0 = std::max(0, int((polar - lobe) / row_angle) - 1);
+      const int row1 = std::min(lower.height - 1, int((polar + lobe) / row_angle) + 1);
+      glm::vec3 sum(0.0f);
+      float weight = 0.0f;
+      for (auto it = samples.begin() + std::ptrdiff_t(row0) * lower.width;
+           it != samples.end() && it->row <= row1; ++it) {
+        const float ndl = glm::dot(n, it->direction);
+        if (ndl < cos_lobe) continue;
+        const glm::vec3 h = glm::normalize(n + it->direction);
+        const float ndh = glm::dot(n, h), d = ndh * ndh * (a2 - 1.0f) + 1.0f;
+        const float wgt = a2 / (d * d) * ndl * it->solid;  // D(h) up to its constant factor
+        sum += it->radiance * wgt;
+        weight += wgt;
+      }
+      return weight > 0.0f ? sum / weight : source.Sample(n);
+    }, level);
+  }
   gl.TexParameteri(TEXTURE_CUBE_MAP, TEXTURE_MIN_FILTER, LINEAR_MIPMAP_LINEAR);
 
-  // Irradiance: E(n) = 1/pi * integral of L(w) max(n.w, 0) dw, summed over a 64 x 32 panorama (each texel's solid
-  // angle (2 pi / W)(pi / H) sin(polar angle)).
-  const Panorama coarse = pano.Shrunk(std::max(1, w / 64));
-  std::vector<std::pair<glm::vec3, glm::vec3>> samples;  // direction, radiance times solid angle
-  for (int y = 0; y < coarse.height; ++y) {
-    const float polar = (float(y) + 0.5f) / float(coarse.height) * 3.14159265f;
-    const float solid = (2.0f * 3.14159265f / float(coarse.width)) * (3.14159265f / float(coarse.height)) * std::sin(polar);
-    for (int x = 0; x < coarse.width; ++x) {
-      const float azimuth = ((float(x) + 0.5f) / float(coarse.width) - 0.5f) * 2.0f * 3.14159265f;
-      const glm::vec3 d(std::sin(polar) * std::sin(azimuth), std::cos(polar), -std::sin(polar) * std::cos(azimuth));
-      samples.push_back({d, coarse.At(x, y) * solid});
-    }
-  }
+  // Irradiance: E(n) = 1/pi * integral of L(w) max(n.w, 0) dw, summed over a 64 x 32 panorama.
+  const std::vector<Panorama::Texel> coarse = pano.Shrunk(std::max(1, w / 64)).Texels();
   constexpr int kIrradianceSize = 16;
   gl.ActiveTexture(TEXTURE0 + Enum(kUnitIrradiance));
   gl.BindTexture(TEXTURE_CUBE_MAP, gl.GenTexture());
   UploadCube(gl, kIrradianceSize, RGBA32F, [&](int face, int i, int j) {
     const glm::vec3 n = CubeDirection(face, i, j, kIrradianceSize);
     glm::vec3 sum(0.0f);
-    for (const auto& [d, l] : samples) sum += l * std::max(glm::dot(n, d), 0.0f);
-    return sum / 3.14159265f;
+    for (const Panorama::Texel& sample : coarse)
+      sum += sample.radiance * (sample.solid * std::max(glm::dot(n, sample.direction), 0.0f));
+    return sum / kPi;
   });
   gl.TexParameteri(TEXTURE_CUBE_MAP, TEXTURE_MIN_FILTER, LINEAR);
   gl.ActiveTexture(TEXTURE0);
