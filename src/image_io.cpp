@@ -13,6 +13,7 @@
 
 #include <cstdint>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <vector>
@@ -25,7 +26,19 @@ bool WritePng(const std::string& path, const Image& image) {
   if (image.width <= 0 || image.height <= 0 ||
       image.rgba.size() != std::size_t(image.width) * std::size_t(image.height) * 4)
     return false;
-  return stbi_write_png(path.c_str(), image.width, image.height, 4, image.rgba.data(), image.width * 4) != 0;
+  // Encoded in memory, then written; a write that fails (a full disk, say) leaves no partial file behind.
+  int size = 0;
+  unsigned char* png = stbi_write_png_to_mem(image.rgba.data(), image.width * 4, image.width, image.height, 4, &size);
+  if (png == nullptr) return false;
+  bool ok = false;
+  {
+    std::ofstream out(path, std::ios::binary | std::ios::trunc);
+    ok = out && out.write(reinterpret_cast<const char*>(png), std::streamsize(size)) && out.flush();
+  }
+  STBIW_FREE(png);
+  std::error_code ec;
+  if (!ok && std::filesystem::is_regular_file(path, ec)) std::filesystem::remove(path, ec);
+  return ok;
 }
 
 bool ReadImage(const std::string& path, Image& image, std::string* error) {

@@ -6,6 +6,7 @@
 // golden images instead (then look at them before committing).
 #include <catch2/catch.hpp>
 
+#include <cstdint>
 #include <cstdlib>
 #include <filesystem>
 #include <functional>
@@ -82,4 +83,27 @@ TEST_CASE("image: instancing", "[image]") { CompareWithGolden("instancing", scen
 
 TEST_CASE("image: environment map", "[image]") {
   CompareWithGolden("environment_map", scenes::EnvironmentMap(640, 480));
+}
+
+TEST_CASE("WritePng writes a file whole or reports failure", "[image][files]") {
+  softgl::Image image;
+  image.width = 3;
+  image.height = 2;
+  image.rgba.assign(3 * 2 * 4, 0);
+  for (std::size_t i = 0; i < image.rgba.size(); ++i) image.rgba[i] = std::uint8_t(i * 10);
+  const std::string path = std::string(SOFTGL_TEST_OUTPUT_DIR) + "/write_png_round_trip.png";
+  std::filesystem::create_directories(SOFTGL_TEST_OUTPUT_DIR);
+  REQUIRE(softgl::WritePng(path, image));
+  softgl::Image back;
+  REQUIRE(softgl::ReadImage(path, back));
+  CHECK(back.width == 3);
+  CHECK(back.height == 2);
+  CHECK(back.rgba == image.rgba);
+  // No such directory, an empty image, and a device where every write fails (Linux's /dev/full): false.
+  CHECK_FALSE(softgl::WritePng(std::string(SOFTGL_TEST_OUTPUT_DIR) + "/no-such-dir/x.png", image));
+  CHECK_FALSE(softgl::WritePng(path, softgl::Image{}));
+  if (std::filesystem::exists("/dev/full")) {
+    CHECK_FALSE(softgl::WritePng("/dev/full", image));
+    CHECK(std::filesystem::is_character_file("/dev/full"));  // a device is never removed
+  }
 }

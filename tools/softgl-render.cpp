@@ -269,7 +269,7 @@ bool WriteAnimatedWebp(const std::string& path, const std::vector<softgl::Image>
     if (!ok) {
       out.close();
       std::error_code ec;
-      std::filesystem::remove(path, ec);
+      if (std::filesystem::is_regular_file(path, ec)) std::filesystem::remove(path, ec);
     }
   }
   WebPDataClear(&data);
@@ -544,7 +544,7 @@ class Renderer {
     std::vector<softgl::Image> animation;
     const bool progress = !o_.quiet && isatty(fileno(stderr)) && frames > 1;
     const auto render_start = Clock::now();
-    auto failed = [&](const std::string& path) {
+    auto failed = [&](const std::string& path) {  // the writers leave no partial file behind
       if (progress) std::fputc('\n', stderr);
       std::fprintf(stderr, "softgl-render: cannot write %s\n", path.c_str());
       return kWriteFailed;

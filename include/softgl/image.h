@@ -21,8 +21,8 @@ struct Image {
   const std::uint8_t* At(int x, int y) const { return rgba.data() + (std::size_t(y) * width + x) * 4; }
 };
 
-/// Writes `image` to a PNG file. Returns false (and writes nothing useful) if the image is empty or the file
-/// cannot be written.
+/// Writes `image` to a PNG file. Returns false if the image is empty or the file cannot be written whole (a
+/// partly written file is removed).
 bool WritePng(const std::string& path, const Image& image);
 
 /// Reads a PNG (or any format stb_image decodes) into an RGBA8 image. Returns false, with a message in `error`
