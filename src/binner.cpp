@@ -83,21 +83,28 @@ void BinnedBatch::Finish(const TileGrid& grid) {
     const BinnedPrimitive& p = prims_[prim];
     return std::uint32_t(kHeaderFloats + (p.shared ? 0 : int(p.kind) * (4 + nvar_)));
   };
-  tile_start_.assign(std::size_t(grid.Count()) + 1, 0);
-  for (std::uint64_t n : notes_) tile_start_[std::size_t(n >> 32) + 1] += size_of(std::uint32_t(n));
+  // Lists for the tiles from the first to the last one noted (grid order).
+  int lo = grid.Count(), hi = -1;
+  for (std::uint64_t n : notes_) {
+    lo = std::min(lo, int(n >> 32));
+    hi = std::max(hi, int(n >> 32));
+  }
+  tile_lo_ = hi >= lo ? lo : 0;
+  tile_start_.assign(hi >= lo ? std::size_t(hi - lo) + 2 : 0, 0);
+  for (std::uint64_t n : notes_) tile_start_[std::size_t(int(n >> 32) - lo) + 1] += size_of(std::uint32_t(n));
   for (std::size_t t = 1; t < tile_start_.size(); ++t) tile_start_[t] += tile_start_[t - 1];
-  if (tile_data_.size() < tile_start_.back()) tile_data_.resize(tile_start_.back());
+  if (!tile_start_.empty() && tile_data_.size() < tile_start_.back()) tile_data_.resize(tile_start_.back());
   std::vector<std::uint32_t>& fill = fill_;
-  fill.assign(tile_start_.begin(), tile_start_.end() - 1);
+  fill.assign(tile_start_.begin(), tile_start_.empty() ? tile_start_.end() : tile_start_.end() - 1);
   for (std::uint64_t n : notes_) {
     const auto prim = std::uint32_t(n);
-    float* dst = tile_data_.data() + fill[std::size_t(n >> 32)];
+    float* dst = tile_data_.data() + fill[std::size_t(int(n >> 32) - lo)];
     const BinnedPrimitive& p = prims_[prim];
     std::memcpy(dst, static_cast<const void*>(&p), sizeof p);
     if (!p.shared)
       std::memcpy(dst + kHeaderFloats, vertices_.data() + p.first_float,
                   sizeof(float) * std::size_t(int(p.kind) * (4 + nvar_)));
-    fill[std::size_t(n >> 32)] += size_of(prim);
+    fill[std::size_t(int(n >> 32) - lo)] += size_of(prim);
   }
   notes_.clear();
   vertices_.clear();

@@ -9,6 +9,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <utility>
 #include <vector>
 
 #include "types.h"
@@ -61,8 +62,9 @@ class BinnedBatch {
   /// being `kind` runs of 4 + nvar floats (window position, then varyings).
   template <class Fn>
   void ForEachInTile(int tile, const Rect& tile_rect, Fn&& fn) const {
-    const float* p = tile_data_.data() + tile_start_[std::size_t(tile)];
-    const float* end = tile_data_.data() + tile_start_[std::size_t(tile) + 1];
+    const auto [begin, finish] = List(tile);
+    const float* p = tile_data_.data() + begin;
+    const float* end = tile_data_.data() + finish;
     std::size_t g = 0;  // next large primitive
     for (;;) {
       BinnedPrimitive prim;
@@ -86,7 +88,7 @@ class BinnedBatch {
   /// Whether ForEachInTile(tile, tile_rect, ...) may call its function at all: the tile's list is not empty, or a
   /// large primitive's box overlaps the tile.
   bool Touches(int tile, const Rect& tile_rect) const {
-    if (tile_start_[std::size_t(tile)] != tile_start_[std::size_t(tile) + 1]) return true;
+    if (const auto [begin, finish] = List(tile); begin != finish) return true;
     for (const Large& l : large_)
       if (Overlap(l.box, tile_rect)) return true;
     return false;
@@ -110,6 +112,12 @@ class BinnedBatch {
   static bool Overlap(const Rect& a, const Rect& b) {
     return a.x0 < b.x1 && b.x0 < a.x1 && a.y0 < b.y1 && b.y0 < a.y1;
   }
+  // Where the list of `tile` starts and ends in tile_data_; empty for a tile outside the range that has lists.
+  std::pair<std::uint32_t, std::uint32_t> List(int tile) const {
+    const int i = tile - tile_lo_;
+    if (i < 0 || std::size_t(i) + 1 >= tile_start_.size()) return {0u, 0u};
+    return {tile_start_[std::size_t(i)], tile_start_[std::size_t(i) + 1]};
+  }
   std::vector<Large> large_;                // primitives over more than kListedTiles tiles, in order
   Rect box_;                                // the union of the primitives' boxes
   int nvar_ = 0;
@@ -118,7 +126,10 @@ class BinnedBatch {
   std::vector<float> vertices_;
   std::vector<float> shared_;               // the vertices of primitives over more than kInlineTiles tiles
   std::vector<std::uint64_t> notes_;        // tile << 32 | primitive, in submission order
-  std::vector<std::uint32_t> tile_start_;   // [tiles + 1]: where each tile's list starts in tile_data_
+  int tile_lo_ = 0;                         // the first tile with a list (in grid order)
+  std::vector<std::uint32_t> tile_start_;   // where each tile's list starts in tile_data_, from tile_lo_ to the
+                                            // last tile with a list, plus its end: only the tiles the batch
+                                            // touches cost anything to build (a small draw builds one or two)
   std::vector<float> tile_data_;
   std::vector<std::uint32_t> fill_;         // Finish's write position per tile
 };

@@ -132,7 +132,8 @@ Unorm8Blend::Unorm8Blend(const FragmentOpsState& state, bool rgb_only) {
 
 FragmentOpsPlan PlanFragmentOps(const FragmentOpsState& state, const RenderTarget& target) {
   FragmentOpsPlan plan;
-  for (int o = 0; o < kMaxColorOutputs; ++o) plan.blend[o] = Unorm8Blend(state, target.color[o].rgb_only);
+  const Unorm8Blend rgba(state, false), rgb(state, true);  // the two kinds of buffer, made once
+  for (int o = 0; o < kMaxColorOutputs; ++o) plan.blend[o] = target.color[o].rgb_only ? rgb : rgba;
   plan.wide_target = (!target.color[0].Present() || target.color[0].Rgba8()) && !target.color[1].Present() &&
                      !target.color[2].Present() && !target.color[3].Present();
   return plan;
