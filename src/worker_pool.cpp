@@ -23,6 +23,11 @@ WorkerPool::WorkerPool(int threads) : threads_(std::clamp(threads, 1, 256)) {
   } catch (...) {  // fewer threads than asked for (the system refused more): run with those there are
     threads_ = int(workers_.size()) + 1;
   }
+  // Returns once every worker is waiting for work: from then on the workers run only inside Run, so a caller
+  // that forks between Runs (Model::Load's bounded import) never forks while one of them is starting up inside
+  // the allocator, which AddressSanitizer's allocator does not survive in the child.
+  std::unique_lock<std::mutex> lock(mutex_);
+  done_.wait(lock, [this] { return waiting_ == int(workers_.size()); });
 }
 
 WorkerPool::~WorkerPool() {
@@ -49,6 +54,11 @@ void WorkerPool::Drain(int worker) {
 
 void WorkerPool::Work(int worker) {
   std::uint64_t seen = 0;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    ++waiting_;
+  }
+  done_.notify_all();
   for (;;) {
     {
       std::unique_lock<std::mutex> lock(mutex_);

@@ -44,6 +44,7 @@ class WorkerPool {
   std::uint64_t generation_ = 0;
   bool stop_ = false;
   int busy_ = 0;  // workers still inside the current generation
+  int waiting_ = 0;  // workers that have started (the constructor waits for all of them)
   // The current run.
   const std::function<void(int, int)>* fn_ = nullptr;
   int jobs_ = 0;

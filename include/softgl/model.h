@@ -98,7 +98,9 @@ class MaterialProgram {
 /// inside. With a limit set, Model::Load first imports the file in a child process (fork) that it stops at the
 /// limit; only a file whose import finished there within the limits is imported again in the calling process
 /// (so an import's work is done twice). A crash inside the importer ends only the child, and Load reports it.
-/// POSIX systems only; elsewhere the limits are not applied.
+/// POSIX systems only; elsewhere the limits are not applied. softgl's own threads are idle between draws, so the
+/// fork is safe for them; in a program built with AddressSanitizer, no other thread may be allocating at that
+/// moment (its allocator, unlike glibc's, leaves a lock held in the child).
 struct LoadOptions {
   double timeout_seconds = 0.0;    ///< the most wall-clock time the import may take; 0: no limit
   std::size_t memory_budget = 0;   ///< the most memory (bytes of address space) it may add; 0: no limit
