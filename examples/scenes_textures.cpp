@@ -4,6 +4,7 @@
 #include <vector>
 
 #include <glm/gtc/matrix_transform.hpp>
+#include <softgl/shaders.h>
 
 #include "scene_kit.h"
 #include "scenes.h"
@@ -188,23 +189,9 @@ softgl::Image ShadowMap(int width, int height) {
   const glm::mat4 light_vp = glm::ortho(-4.0f, 4.0f, -4.0f, 4.0f, 0.5f, 16.0f) *
                              glm::lookAt(light_dir * 8.0f, glm::vec3(0.0f), glm::vec3(0, 1, 0));
 
-  // Pass 1: depth from the light into a depth texture (no colour buffer).
-  const std::uint32_t shadow_tex = gl.GenTexture(), fbo = gl.GenFramebuffer();
-  gl.BindTexture(softgl::TEXTURE_2D, shadow_tex);
-  gl.TexImage2D(softgl::TEXTURE_2D, 0, softgl::DEPTH_COMPONENT, kShadowSize, kShadowSize, 0, softgl::DEPTH_COMPONENT,
-                softgl::FLOAT, nullptr);
-  gl.TexParameteri(softgl::TEXTURE_2D, softgl::TEXTURE_MIN_FILTER, softgl::LINEAR);
-  gl.TexParameteri(softgl::TEXTURE_2D, softgl::TEXTURE_MAG_FILTER, softgl::LINEAR);
-  gl.TexParameteri(softgl::TEXTURE_2D, softgl::TEXTURE_WRAP_S, softgl::CLAMP_TO_BORDER);
-  gl.TexParameteri(softgl::TEXTURE_2D, softgl::TEXTURE_WRAP_T, softgl::CLAMP_TO_BORDER);
-  const float far_border[4] = {1, 1, 1, 1};
-  gl.TexParameterfv(softgl::TEXTURE_2D, softgl::TEXTURE_BORDER_COLOR, far_border);
-  gl.TexParameteri(softgl::TEXTURE_2D, softgl::TEXTURE_COMPARE_MODE, softgl::COMPARE_REF_TO_TEXTURE);
-  gl.TexParameteri(softgl::TEXTURE_2D, softgl::TEXTURE_COMPARE_FUNC, softgl::LEQUAL);
-  gl.BindFramebuffer(softgl::FRAMEBUFFER, fbo);
-  gl.FramebufferTexture2D(softgl::FRAMEBUFFER, softgl::DEPTH_ATTACHMENT, softgl::TEXTURE_2D, shadow_tex, 0);
-  const softgl::Enum no_color = softgl::NONE;
-  gl.DrawBuffers(1, &no_color);
+  // Pass 1: depth from the light into a depth texture (no colour buffer): softgl::MakeShadowMap makes both with
+  // the usual settings (LINEAR comparison filtering, a border of depth 1, LEQUAL compare) and binds them.
+  const softgl::ShadowMap shadow = softgl::MakeShadowMap(gl, kShadowSize);
   gl.Viewport(0, 0, kShadowSize, kShadowSize);
   gl.Enable(softgl::DEPTH_TEST);
   gl.Clear(softgl::DEPTH_BUFFER_BIT);
@@ -221,6 +208,7 @@ softgl::Image ShadowMap(int width, int height) {
 
   // Pass 2: the camera's view, lit and shadowed.
   gl.BindFramebuffer(softgl::FRAMEBUFFER, 0);
+  gl.BindTexture(softgl::TEXTURE_2D, shadow.texture);  // on unit 0, where ShadowedShader reads it
   gl.Viewport(0, 0, width, height);
   gl.ClearColor(0.16f, 0.18f, 0.22f, 1.0f);
   gl.Clear(softgl::COLOR_BUFFER_BIT | softgl::DEPTH_BUFFER_BIT);

@@ -446,3 +446,21 @@ TEST_CASE("an HDR environment: radiance cube map and diffuse irradiance", "[mode
   CHECK(LoadEnvironment(gl, (dir / "no-such.hdr").string(), 32, &error) == 0.0f);
   CHECK_FALSE(error.empty());
 }
+
+TEST_CASE("MakeShadowMap: a complete depth-only framebuffer and a comparing depth texture", "[model]") {
+  Context gl(8, 8);
+  const ShadowMap map = MakeShadowMap(gl, 64);
+  CHECK(map.size == 64);
+  CHECK(gl.IsTexture(map.texture));
+  CHECK(gl.CheckFramebufferStatus(FRAMEBUFFER) == FRAMEBUFFER_COMPLETE);
+  int mode = 0, func = 0, wrap = 0, width = 0;
+  gl.GetTexParameteriv(TEXTURE_2D, TEXTURE_COMPARE_MODE, &mode);
+  gl.GetTexParameteriv(TEXTURE_2D, TEXTURE_COMPARE_FUNC, &func);
+  gl.GetTexParameteriv(TEXTURE_2D, TEXTURE_WRAP_S, &wrap);
+  gl.GetTexLevelParameteriv(TEXTURE_2D, 0, TEXTURE_WIDTH, &width);
+  CHECK(Enum(mode) == COMPARE_REF_TO_TEXTURE);
+  CHECK(Enum(func) == LEQUAL);
+  CHECK(Enum(wrap) == CLAMP_TO_BORDER);
+  CHECK(width == 64);
+  CHECK(gl.GetError() == NO_ERROR);
+}

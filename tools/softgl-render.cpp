@@ -649,24 +649,8 @@ class Renderer {
     const float r = std::max(model.bounds.Radius(), 1e-6f);
     const float ground_y = model.bounds.min.y - 1e-3f * r;
     const float extent = 1.4f * r;  // the disc's radius: inside the camera's far plane (1.5 r past the centre)
-    if (!shadow_fbo_) {
-      shadow_tex_ = gl_.GenTexture();
-      gl_.BindTexture(softgl::TEXTURE_2D, shadow_tex_);
-      gl_.TexImage2D(softgl::TEXTURE_2D, 0, softgl::DEPTH_COMPONENT, kShadowSize, kShadowSize, 0,
-                     softgl::DEPTH_COMPONENT, softgl::FLOAT, nullptr);
-      gl_.TexParameteri(softgl::TEXTURE_2D, softgl::TEXTURE_MIN_FILTER, softgl::LINEAR);
-      gl_.TexParameteri(softgl::TEXTURE_2D, softgl::TEXTURE_MAG_FILTER, softgl::LINEAR);
-      gl_.TexParameteri(softgl::TEXTURE_2D, softgl::TEXTURE_WRAP_S, softgl::CLAMP_TO_BORDER);
-      gl_.TexParameteri(softgl::TEXTURE_2D, softgl::TEXTURE_WRAP_T, softgl::CLAMP_TO_BORDER);
-      const float far_border[4] = {1, 1, 1, 1};
-      gl_.TexParameterfv(softgl::TEXTURE_2D, softgl::TEXTURE_BORDER_COLOR, far_border);
-      gl_.TexParameteri(softgl::TEXTURE_2D, softgl::TEXTURE_COMPARE_MODE, softgl::COMPARE_REF_TO_TEXTURE);
-      gl_.TexParameteri(softgl::TEXTURE_2D, softgl::TEXTURE_COMPARE_FUNC, softgl::LEQUAL);
-      shadow_fbo_ = gl_.GenFramebuffer();
-      gl_.BindFramebuffer(softgl::FRAMEBUFFER, shadow_fbo_);
-      gl_.FramebufferTexture2D(softgl::FRAMEBUFFER, softgl::DEPTH_ATTACHMENT, softgl::TEXTURE_2D, shadow_tex_, 0);
-      const softgl::Enum no_color = softgl::NONE;
-      gl_.DrawBuffers(1, &no_color);
+    if (!shadow_.framebuffer) {
+      shadow_ = softgl::MakeShadowMap(gl_, kShadowSize);
       ground_vao_ = gl_.GenVertexArray();  // its buffer is filled for each model
       gl_.BindVertexArray(ground_vao_);
       ground_vbo_ = gl_.GenBuffer();
@@ -679,7 +663,7 @@ class Renderer {
     const glm::vec3 l = glm::normalize(to_light);
     const glm::vec3 up = std::abs(l.y) > 0.99f ? glm::vec3(0, 0, 1) : glm::vec3(0, 1, 0);
     const glm::mat4 light_vp = glm::ortho(-r, r, -r, r, r, 9.0f * r) * glm::lookAt(centre + l * 3.0f * r, centre, up);
-    gl_.BindFramebuffer(softgl::FRAMEBUFFER, shadow_fbo_);
+    gl_.BindFramebuffer(softgl::FRAMEBUFFER, shadow_.framebuffer);
     gl_.Viewport(0, 0, kShadowSize, kShadowSize);
     gl_.Clear(softgl::DEPTH_BUFFER_BIT);
     gl_.Enable(softgl::POLYGON_OFFSET_FILL);  // keeps the contact from shadowing itself (acne)
@@ -707,7 +691,7 @@ class Renderer {
     ground.tone_map = phong_.tone_map;  // the same curve and exposure in every shader
     ground.exposure = phong_.exposure;
     gl_.ActiveTexture(softgl::TEXTURE0);
-    gl_.BindTexture(softgl::TEXTURE_2D, shadow_tex_);
+    gl_.BindTexture(softgl::TEXTURE_2D, shadow_.texture);
     gl_.Enable(softgl::BLEND);
     gl_.BlendFunc(softgl::SRC_ALPHA, softgl::ONE_MINUS_SRC_ALPHA);
     gl_.DepthMask(false);  // the model is drawn after: the ground never hides it
@@ -726,7 +710,8 @@ class Renderer {
   softgl::PhongShader phong_;
   softgl::UnlitShader unlit_;
   std::uint32_t sky_vao_ = 0;
-  std::uint32_t shadow_tex_ = 0, shadow_fbo_ = 0, ground_vao_ = 0, ground_vbo_ = 0;
+  softgl::ShadowMap shadow_;
+  std::uint32_t ground_vao_ = 0, ground_vbo_ = 0;
 };
 
 }  // namespace

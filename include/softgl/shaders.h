@@ -309,6 +309,16 @@ struct PbrShader : SurfaceShader<PbrShader> {
 /// PbrShader::environment_levels).
 float MakeStudioEnvironment(Context& gl, int size = 64);
 
+/// A depth-only render target for shadow mapping: a size x size DEPTH_COMPONENT (float) texture, filtered LINEAR,
+/// clamped to a border of depth 1 (nothing outside the map shadows anything), compared with LEQUAL so that
+/// TextureShadow reads it, and attached as the depth buffer of a new framebuffer that has no colour buffer. Both
+/// are left bound (the texture to TEXTURE_2D on the active unit, the framebuffer to FRAMEBUFFER).
+struct ShadowMap {
+  std::uint32_t texture = 0, framebuffer = 0;
+  int size = 0;
+};
+ShadowMap MakeShadowMap(Context& gl, int size);
+
 /// An environment from an equirectangular HDR image (Radiance .hdr, or any image stb_image reads; longitude 0 at
 /// -z, the top row up): a float cube map of size x size per face bound to kUnitEnvironment whose level L is
 /// prefiltered for roughness L / (levels - 1) with the GGX distribution (the level PbrShader reads for that
