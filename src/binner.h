@@ -29,23 +29,20 @@ struct TileGrid {
 
 enum class PrimitiveKind : std::uint8_t { kPoint = 1, kLine = 2, kTriangle = 3 };
 
-/// One primitive ready for the rasterizer; its vertices are `kind` WindowVertex values of 4 + nvar floats each,
-/// stored from BinnedBatch::vertices[first_float].
-struct BinnedPrimitive {  // 20 bytes: stored inline in the tile lists
+/// One primitive ready for the rasterizer; its vertices are `kind` runs of 4 + nvar floats each (window position,
+/// then varyings), stored from BinnedBatch's vertex floats at `first_float`.
+struct BinnedPrimitive {
   PrimitiveKind kind = PrimitiveKind::kTriangle;
   bool front_facing = true;
-  bool shared = false;  // its vertices are stored once for all its tiles (a primitive over many tiles)
   float depth_offset = 0.0f;  // polygon offset
   float point_size = 1.0f;
   std::uint32_t first_float = 0;
-  std::uint32_t index = 0;  // submission order within the batch
 };
 
-/// The output of binning one batch of primitives. Primitives are appended in submission order, then Finish()
-/// copies each into the contiguous list of every tile it may touch (a primitive record followed by its vertices),
-/// so that a tile reads its primitives from consecutive memory. A primitive over more than kInlineTiles tiles
-/// keeps one copy of its vertices that its records point to; one over more than kListedTiles tiles is in no tile
-/// list at all but in the batch's list of large primitives, which every tile walks beside its own list, in
+/// The output of binning one batch of primitives. Primitives and their vertices are appended in submission order
+/// and stored once; Finish() then lists, for every tile a primitive may touch, the primitive's index (4 bytes per
+/// tile, nothing copied), each tile's list in submission order. A primitive over more than kListedTiles tiles is in
+/// no tile list but in the batch's list of large primitives, which every tile walks beside its own list, in
 /// submission order. So a batch's memory is bounded by its primitives, whatever the framebuffer's size.
 class BinnedBatch {
  public:
@@ -53,8 +50,12 @@ class BinnedBatch {
   void Reset(int nvar);
 
   /// Appends a primitive whose fragments all lie in `box` (pixels, half-open, already inside the draw's bounds)
-  /// and notes it for every tile that box overlaps.
-  void Add(const BinnedPrimitive& prim, const WindowVertex* v, const Rect& box, const TileGrid& grid);
+  /// and notes it for every tile that box overlaps; its `kind` vertices are read from `v`.
+  void Add(const BinnedPrimitive& prim, const VertexView* v, const Rect& box, const TileGrid& grid);
+  void Add(const BinnedPrimitive& prim, const WindowVertex* v, const Rect& box, const TileGrid& grid) {
+    const VertexView views[3] = {v[0], int(prim.kind) > 1 ? v[1] : v[0], int(prim.kind) > 2 ? v[2] : v[0]};
+    Add(prim, views, box, grid);
+  }
   /// Builds the per-tile lists; call once, after the last Add.
   void Finish(const TileGrid& grid);
 
@@ -63,26 +64,20 @@ class BinnedBatch {
   template <class Fn>
   void ForEachInTile(int tile, const Rect& tile_rect, Fn&& fn) const {
     const auto [begin, finish] = List(tile);
-    const float* p = tile_data_.data() + begin;
-    const float* end = tile_data_.data() + finish;
+    const std::uint32_t* p = tile_prims_.data() + begin;
+    const std::uint32_t* end = tile_prims_.data() + finish;
     std::size_t g = 0;  // next large primitive
     for (;;) {
-      BinnedPrimitive prim;
-      if (p < end) std::memcpy(static_cast<void*>(&prim), p, sizeof prim);
-      const std::uint32_t listed = p < end ? prim.index : ~0u;
-      if (g < large_.size() && large_[g].prim.index < listed) {  // a large primitive comes first
+      const std::uint32_t listed = p < end ? *p : ~0u;
+      if (g < large_.size() && large_[g].index < listed) {  // a large primitive comes first
         const Large& l = large_[g++];
-        if (Overlap(l.box, tile_rect)) fn(l.prim, shared_.data() + l.prim.first_float);
+        const BinnedPrimitive& prim = prims_[l.index];
+        if (Overlap(l.box, tile_rect)) fn(prim, vertices_.data() + prim.first_float);
         continue;
       }
       if (p >= end) break;
-      p += kHeaderFloats;
-      if (prim.shared) {
-        fn(prim, shared_.data() + prim.first_float);
-      } else {
-        fn(prim, p);
-        p += int(prim.kind) * (4 + nvar_);
-      }
+      const BinnedPrimitive& prim = prims_[*p++];
+      fn(prim, vertices_.data() + prim.first_float);
     }
   }
   /// Whether ForEachInTile(tile, tile_rect, ...) may call its function at all: the tile's list is not empty, or a
@@ -97,22 +92,25 @@ class BinnedBatch {
   const Rect& Box() const { return box_; }
   /// Copies vertex k of the run at `vertices` into a WindowVertex.
   void Vertex(const float* vertices, int k, WindowVertex& out) const;
+  /// Vertex k of the run at `vertices`, read in place.
+  VertexView View(const float* vertices, int k) const {
+    const float* src = vertices + std::size_t(k) * std::size_t(4 + nvar_);
+    return VertexView(glm::vec4(src[0], src[1], src[2], src[3]), src + 4);
+  }
 
   /// Memory held, in bytes (what the context's recording budget counts).
   std::size_t Bytes() const;
 
  private:
-  static constexpr int kHeaderFloats = int(sizeof(BinnedPrimitive) / sizeof(float));
-  static constexpr std::uint32_t kInlineTiles = 4;
   static constexpr std::uint32_t kListedTiles = 64;
   struct Large {
-    BinnedPrimitive prim;  // shared, in shared_
+    std::uint32_t index;  // in prims_
     Rect box;
   };
   static bool Overlap(const Rect& a, const Rect& b) {
     return a.x0 < b.x1 && b.x0 < a.x1 && a.y0 < b.y1 && b.y0 < a.y1;
   }
-  // Where the list of `tile` starts and ends in tile_data_; empty for a tile outside the range that has lists.
+  // Where the list of `tile` starts and ends in tile_prims_; empty for a tile outside the range that has lists.
   std::pair<std::uint32_t, std::uint32_t> List(int tile) const {
     const int i = tile - tile_lo_;
     if (i < 0 || std::size_t(i) + 1 >= tile_start_.size()) return {0u, 0u};
@@ -122,21 +120,19 @@ class BinnedBatch {
   Rect box_;                                // the union of the primitives' boxes
   int nvar_ = 0;
   std::vector<BinnedPrimitive> prims_;      // in submission order
-  std::vector<std::uint32_t> prim_tiles_;   // how many tiles each primitive touches
-  std::vector<float> vertices_;
-  std::vector<float> shared_;               // the vertices of primitives over more than kInlineTiles tiles
+  std::vector<float> vertices_;             // every primitive's vertices, in submission order
   std::vector<std::uint64_t> notes_;        // tile << 32 | primitive, in submission order
   int tile_lo_ = 0;                         // the first tile with a list (in grid order)
-  std::vector<std::uint32_t> tile_start_;   // where each tile's list starts in tile_data_, from tile_lo_ to the
+  std::vector<std::uint32_t> tile_start_;   // where each tile's list starts in tile_prims_, from tile_lo_ to the
                                             // last tile with a list, plus its end: only the tiles the batch
                                             // touches cost anything to build (a small draw builds one or two)
-  std::vector<float> tile_data_;
+  std::vector<std::uint32_t> tile_prims_;   // the tiles' lists of primitive indices, one after another
   std::vector<std::uint32_t> fill_;         // Finish's write position per tile
 };
 
 /// The pixel box a primitive's fragments can fall in, from its window positions: the rounded-out bounding box
-/// (one pixel of margin for the fill rule's snapping), or for a point its square, cut to `bounds`.
-Rect TriangleBox(const WindowVertex& a, const WindowVertex& b, const WindowVertex& c, const Rect& bounds);
+/// (one pixel of margin for the fill rule's snapping), or for a point its square, cut to `bounds`. (A filled
+/// triangle's box is rasterizer.h's TriangleCentreBox.)
 Rect LineBox(const WindowVertex& a, const WindowVertex& b, const Rect& bounds);
 Rect PointBox(const WindowVertex& v, float size, const Rect& bounds);
 

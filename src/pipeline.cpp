@@ -8,7 +8,7 @@
 #include "clipper.h"
 #include "culling.h"
 #include "binner.h"
-#include "rasterizer.h"  // PolygonOffset, CoversNoPixelCentre
+#include "rasterizer.h"  // PolygonOffset, TriangleCentreBox
 #include "simd.h"
 
 namespace softgl::detail {
@@ -172,12 +172,19 @@ class PrimitiveRunner {
       for (int k = 0; k < 3; ++k) win_[k].win = sv_.window[idx[k]];
       if (!Facing(count)) return;
       // A filled triangle that covers no pixel centre draws nothing: not binned at all.
-      if (state_.primitive.polygon_mode == FILL && CoversNoPixelCentre(win_[0].win, win_[1].win, win_[2].win))
+      const bool fill = state_.primitive.polygon_mode == FILL;
+      const Rect box = fill ? TriangleCentreBox(win_[0].win, win_[1].win, win_[2].win, state_.bounds) : Rect{};
+      if (fill && box.Empty()) return;
+      const float* var = sv_.window_varyings.data();
+      const std::size_t nvar = std::size_t(sv_.nvar);
+      if (fill && flat_count_ == 0) {  // binned from where the varyings are
+        VertexView view[3];
+        for (int k = 0; k < 3; ++k) view[k] = VertexView(win_[k].win, var + std::size_t(idx[k]) * nvar);
+        BinTriangle(view, box);
         return;
+      }
       for (int k = 0; k < 3; ++k)
-        if (sv_.nvar > 0)
-          std::memcpy(win_[k].var, sv_.window_varyings.data() + std::size_t(idx[k]) * std::size_t(sv_.nvar),
-                      sizeof(float) * std::size_t(sv_.nvar));
+        if (nvar > 0) std::memcpy(win_[k].var, var + std::size_t(idx[k]) * nvar, sizeof(float) * nvar);
     } else {
       ToClipVertex(sv_, i0, clip_[0]);
       ToClipVertex(sv_, i1, clip_[1]);
@@ -218,6 +225,17 @@ class PrimitiveRunner {
     AddPoint(win_[0], PointSizeOf(i), front_facing);
   }
 
+  // A filled triangle whose pixel centres lie in `box` (TriangleCentreBox), with the facing in front_.
+  void BinTriangle(const VertexView* v, const Rect& box) {
+    BinnedPrimitive p;
+    p.kind = PrimitiveKind::kTriangle;
+    p.front_facing = front_;
+    if (state_.primitive.offset_fill)
+      p.depth_offset = PolygonOffset(v[0].win, v[1].win, v[2].win, state_.primitive.offset_factor,
+                                     state_.primitive.offset_units);
+    bins_.Add(p, v, box, grid_);
+  }
+
   // The surviving polygon win_[0 .. count) of triangle (i0, i1, i2), filled, as lines or as points.
   void Emit(std::uint32_t i0, std::uint32_t i1, std::uint32_t i2, std::uint32_t provoking, int count) {
     const bool front = front_;
@@ -225,7 +243,9 @@ class PrimitiveRunner {
                         : state_.primitive.polygon_mode == POINT ? state_.primitive.offset_point
                                                        : state_.primitive.offset_fill;
     depth_offset_ =
-        offset ? PolygonOffset(win_[0], win_[1], win_[2], state_.primitive.offset_factor, state_.primitive.offset_units) : 0.0f;
+        offset ? PolygonOffset(win_[0].win, win_[1].win, win_[2].win, state_.primitive.offset_factor,
+                             state_.primitive.offset_units)
+               : 0.0f;
     switch (state_.primitive.polygon_mode) {
       case LINE:  // the triangle's own edges, each clipped as a line
         Line(i0, i1, provoking, front);
@@ -236,20 +256,13 @@ class PrimitiveRunner {
         for (std::uint32_t i : {i0, i1, i2}) Point(i, provoking, front);
         break;
       default:
-        for (int k = 1; k + 1 < count; ++k) {
+        for (int k = 1; k + 1 < count; ++k) {  // the fan's triangles (0, k, k+1), in order
+          const VertexView fan[3] = {win_[0], win_[k], win_[k + 1]};
           BinnedPrimitive p;
           p.kind = PrimitiveKind::kTriangle;
           p.front_facing = front;
           p.depth_offset = depth_offset_;
-          const Rect box = TriangleBox(win_[0], win_[k], win_[k + 1], state_.bounds);
-          if (k == 1) {
-            bins_.Add(p, win_, box, grid_);
-          } else {  // the fan's triangle (0, k, k+1), stored in order
-            fan_[0] = win_[0];
-            fan_[1] = win_[k];
-            fan_[2] = win_[k + 1];
-            bins_.Add(p, fan_, box, grid_);
-          }
+          bins_.Add(p, fan, TriangleCentreBox(fan[0].win, fan[1].win, fan[2].win, state_.bounds), grid_);
         }
         break;
     }
@@ -282,7 +295,6 @@ class PrimitiveRunner {
   int flat_[kMaxVaryingFloats];  // the varyings that are flat
   int flat_count_ = 0;
   WindowVertex win_[kMaxPolygonVertices];
-  WindowVertex fan_[3];
 };
 
 }  // namespace

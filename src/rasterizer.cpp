@@ -24,7 +24,6 @@ namespace {
 constexpr std::int64_t kOne = std::int64_t(1) << kSubpixelBits;
 constexpr std::int64_t kHalf = kOne / 2;
 
-std::int64_t FloorDiv(std::int64_t a, std::int64_t b) { return a >= 0 ? a / b : -((-a + b - 1) / b); }
 
 // std::llrint (to nearest, ties to even, in the default rounding mode), without the library call.
 inline std::int64_t RoundToInt64(double x) {
@@ -55,14 +54,26 @@ int AddSquare(BlockBuffer& blocks, const BlockSink& sink, bool front_facing, int
   return b;
 }
 
+// The block of the buffer that may hold quads of earlier primitives when a primitive starts: the last one, in the
+// buffer's current epoch. The primitive's own quads never share a place, so only that block needs the check.
+struct OpenBlock {
+  int block = -1, epoch = -1;
+  explicit OpenBlock(const BlockBuffer& blocks) : block(blocks.count - 1), epoch(blocks.epoch) {}
+  OpenBlock() = default;  // a primitive that checks every block
+  bool MayHoldOthers(const BlockBuffer& blocks, int b) const {
+    return epoch < 0 || (b == block && blocks.epoch == epoch);
+  }
+};
+
 // A place for quad (qx, qy) with coverage `mask` (bit = lane of the quad): the current block while it has room, holds
 // no quad at that place and has this facing; else a new block (the buffer flushed first when full). Returns the
 // block and sets `slot` to the quad's place in it.
 inline int AddQuad(BlockBuffer& blocks, const BlockSink& sink, bool front_facing, int nvar, int qx, int qy,
-                   unsigned mask, int& slot) {
+                   unsigned mask, int& slot, const OpenBlock& open = OpenBlock()) {
   int b = blocks.count - 1;
   bool fresh = b < 0 || blocks.quads[b] == 4 || blocks.front_facing != front_facing;
-  for (int q = 0; !fresh && q < blocks.quads[b]; ++q) fresh = blocks.qx[b][q] == qx && blocks.qy[b][q] == qy;
+  if (!fresh && open.MayHoldOthers(blocks, b))
+    for (int q = 0; !fresh && q < blocks.quads[b]; ++q) fresh = blocks.qx[b][q] == qx && blocks.qy[b][q] == qy;
   if (fresh) {
     if (blocks.count == BlockBuffer::kCapacity || (blocks.count > 0 && blocks.front_facing != front_facing)) {
       sink.Flush(blocks);
@@ -218,7 +229,7 @@ BlockFn ChooseVaryingsOfBlock() {
 // edge has |c00| <= 7 (|sx| + |sy|)), so W lanes are tested per instruction.
 struct RegionEdges {
   int count = 0;
-  std::int32_t c00[3], sx[3], sy[3];
+  std::int32_t c00[3] = {}, sx[3] = {}, sy[3] = {};  // the edges past `count` stay 0: inside everywhere
   int row0 = 0, row1 = 3;  // the quad rows to test (the others are left out of the result)
 };
 // Each lane's pixel in the region (x, y), in RegionCoverage's order.
@@ -239,13 +250,25 @@ constexpr const std::int32_t* kRegionY = kRegionLanes.y;
 template <int W>
 SOFTGL_WIDE std::uint64_t RegionCoverage(const RegionEdges& edges) {
   using I = typename V<W>::I;
+  constexpr int kChunks = 16 / W;  // vectors to a quad row of 16 lanes
+  // Each crossing edge's values at the lanes of quad row row0; a quad row further adds 2 sy.
+  // All three edges (those past `count` are 0), so that the loops have a fixed length.
+  I value[3][kChunks];
+  for (int e = 0; e < 3; ++e)
+    for (int c = 0; c < kChunks; ++c) {
+      const I ix = LoadVec<I>(kRegionX + c * W), iy = LoadVec<I>(kRegionY + c * W);
+      value[e][c] = (edges.c00[e] + 2 * edges.row0 * edges.sy[e]) + ix * edges.sx[e] + iy * edges.sy[e];
+    }
   std::uint64_t bits = 0;
-  // Only the lanes of quad rows row0 .. row1 (16 lanes a row).
-  for (int l0 = edges.row0 * 16; l0 < edges.row1 * 16 + 16; l0 += W) {
-    const I ix = LoadVec<I>(kRegionX + l0), iy = LoadVec<I>(kRegionY + l0);
-    I outside = I{};  // sign bit set where some edge is negative
-    for (int e = 0; e < edges.count; ++e) outside |= edges.c00[e] + ix * edges.sx[e] + iy * edges.sy[e];
-    bits |= std::uint64_t(MaskToBits<W>(~outside, 0)) << l0;
+  for (int row = edges.row0; row <= edges.row1; ++row) {
+    for (int c = 0; c < kChunks; ++c) {
+      I outside = I{};  // sign bit set where some edge is negative
+      for (int e = 0; e < 3; ++e) {
+        outside |= value[e][c];
+        value[e][c] += 2 * edges.sy[e];
+      }
+      bits |= std::uint64_t(MaskToBits<W>(~outside >> 31, 0)) << (row * 16 + c * W);  // >> 31: a lane mask
+    }
   }
   return bits;
 }
@@ -263,14 +286,21 @@ CoverageFn ChooseRegionCoverage() {
   return RegionCoverageBase;
 }
 
-// The lanes (in RegionCoverage's order) of the region's pixels with ix in [x0, x1) and iy in [y0, y1).
-std::uint64_t RegionRect(int x0, int x1, int y0, int y1) {
-  std::uint64_t bits = 0;
-  for (int l = 0; l < 64; ++l) {
-    const int q = l >> 2, ix = (q & 3) * 2 + (l & 1), iy = (q >> 2) * 2 + ((l >> 1) & 1);
-    if (ix >= x0 && ix < x1 && iy >= y0 && iy < y1) bits |= std::uint64_t(1) << l;
+// The lanes (in RegionCoverage's order) of the region's pixels with ix in [x0, x1) and iy in [y0, y1), 0 <= x0, y0
+// and x1, y1 <= 8: from tables of the lanes left of each column and below each row.
+struct RegionMasks {
+  std::uint64_t left[9], below[9];  // lanes with ix < k, with iy < k
+  constexpr RegionMasks() : left(), below() {
+    for (int k = 0; k <= 8; ++k)
+      for (int l = 0; l < 64; ++l) {
+        if (kRegionX[l] < k) left[k] |= std::uint64_t(1) << l;
+        if (kRegionY[l] < k) below[k] |= std::uint64_t(1) << l;
+      }
   }
-  return bits;
+};
+constexpr RegionMasks kRegionMasks;
+std::uint64_t RegionRect(int x0, int x1, int y0, int y1) {
+  return (kRegionMasks.left[x1] & ~kRegionMasks.left[x0]) & (kRegionMasks.below[y1] & ~kRegionMasks.below[y0]);
 }
 
 // A triangle's planes in the buffer's table, entered when its first quad goes in (and again after each flush):
@@ -308,16 +338,16 @@ bool Perspective(const RasterTarget& t, int i) {
 
 }  // namespace
 
-float PolygonOffset(const WindowVertex& a, const WindowVertex& b, const WindowVertex& c, float factor, float units) {
-  const float dx1 = b.win.x - a.win.x, dy1 = b.win.y - a.win.y, dz1 = b.win.z - a.win.z;
-  const float dx2 = c.win.x - a.win.x, dy2 = c.win.y - a.win.y, dz2 = c.win.z - a.win.z;
+float PolygonOffset(const glm::vec4& a, const glm::vec4& b, const glm::vec4& c, float factor, float units) {
+  const float dx1 = b.x - a.x, dy1 = b.y - a.y, dz1 = b.z - a.z;
+  const float dx2 = c.x - a.x, dy2 = c.y - a.y, dz2 = c.z - a.z;
   const float det = dx1 * dy2 - dx2 * dy1;
   float m = 0.0f;
   if (det != 0.0f) {
     const float dzdx = (dz1 * dy2 - dz2 * dy1) / det, dzdy = (dz2 * dx1 - dz1 * dx2) / det;
     m = std::max(std::fabs(dzdx), std::fabs(dzdy));
   }
-  const float zmax = std::max({std::fabs(a.win.z), std::fabs(b.win.z), std::fabs(c.win.z)});
+  const float zmax = std::max({std::fabs(a.z), std::fabs(b.z), std::fabs(c.z)});
   int e = 0;
   std::frexp(zmax, &e);  // zmax = f * 2^e with f in [0.5, 1): the IEEE exponent is e - 1
   const float r = zmax > 0.0f ? std::ldexp(1.0f, e - 1 - 23) : std::ldexp(1.0f, -126);
@@ -343,23 +373,27 @@ std::int64_t SnappedArea(const std::int64_t X[3], const std::int64_t Y[3]) {
   return (X[1] - X[0]) * (Y[2] - Y[0]) - (X[2] - X[0]) * (Y[1] - Y[0]);
 }
 
-// The first and last pixel whose centre lies in [lo, hi] (snapped units) along one axis.
-std::int64_t FirstCentre(std::int64_t lo) { return -FloorDiv(-(lo - kHalf), kOne); }
-std::int64_t LastCentre(std::int64_t hi) { return FloorDiv(hi - kHalf, kOne); }
+// The first and last pixel whose centre lies in [lo, hi] (snapped units) along one axis: ceil((lo - 1/2) / kOne)
+// and floor((hi - 1/2) / kOne), by arithmetic shifts (which round towards minus infinity).
+std::int64_t FirstCentre(std::int64_t lo) { return -((kHalf - lo) >> kSubpixelBits); }
+std::int64_t LastCentre(std::int64_t hi) { return (hi - kHalf) >> kSubpixelBits; }
 
 }  // namespace
 
-bool CoversNoPixelCentre(const glm::vec4& a, const glm::vec4& b, const glm::vec4& c) {
+Rect TriangleCentreBox(const glm::vec4& a, const glm::vec4& b, const glm::vec4& c, const Rect& bounds) {
   const glm::vec4* const p[3] = {&a, &b, &c};
   std::int64_t X[3], Y[3];
-  if (!Snap(p, X, Y) || SnappedArea(X, Y) == 0) return true;
-  return FirstCentre(std::min({X[0], X[1], X[2]})) > LastCentre(std::max({X[0], X[1], X[2]})) ||
-         FirstCentre(std::min({Y[0], Y[1], Y[2]})) > LastCentre(std::max({Y[0], Y[1], Y[2]}));
+  if (!Snap(p, X, Y) || SnappedArea(X, Y) == 0) return Rect{};
+  const Rect r{int(std::max<std::int64_t>(FirstCentre(std::min({X[0], X[1], X[2]})), bounds.x0)),
+               int(std::max<std::int64_t>(FirstCentre(std::min({Y[0], Y[1], Y[2]})), bounds.y0)),
+               int(std::min<std::int64_t>(LastCentre(std::max({X[0], X[1], X[2]})) + 1, bounds.x1)),
+               int(std::min<std::int64_t>(LastCentre(std::max({Y[0], Y[1], Y[2]})) + 1, bounds.y1))};
+  return r.Empty() ? Rect{} : r;
 }
 
-void RasterizeTriangle(const WindowVertex& v0, const WindowVertex& v1, const WindowVertex& v2, bool front_facing,
+void RasterizeTriangle(const VertexView& v0, const VertexView& v1, const VertexView& v2, bool front_facing,
                        const RasterTarget& target, BlockBuffer& blocks, const BlockSink& sink) {
-  const WindowVertex* v[3] = {&v0, &v1, &v2};
+  const VertexView* v[3] = {&v0, &v1, &v2};
   std::int64_t X[3], Y[3];
   const glm::vec4* const pos[3] = {&v0.win, &v1.win, &v2.win};
   if (!Snap(pos, X, Y)) return;
@@ -461,8 +495,11 @@ void RasterizeTriangle(const WindowVertex& v0, const WindowVertex& v1, const Win
     corner_max[e] = std::max<std::int64_t>(dx, 0) + std::max<std::int64_t>(dy, 0);
   }
   PlanesEntry entry;
-  for (std::int64_t ry = py0 & ~std::int64_t(kRegion - 1); ry <= py1; ry += kRegion) {
-    for (std::int64_t rx = px0 & ~std::int64_t(kRegion - 1); rx <= px1; rx += kRegion) {
+  // Regions start at the first quad of the box (quads are at even pixels; a block takes quads anywhere), so that a
+  // triangle of at most 8x8 pixel centres is one region wherever it lies.
+  const OpenBlock open(blocks);
+  for (std::int64_t ry = py0 & ~std::int64_t(1); ry <= py1; ry += kRegion) {
+    for (std::int64_t rx = px0 & ~std::int64_t(1); rx <= px1; rx += kRegion) {
       bool skip = false, whole = true;
       std::int64_t corner[3], corner_lo[3];
       for (int e = 0; e < 3 && !skip; ++e) {
@@ -504,7 +541,8 @@ void RasterizeTriangle(const WindowVertex& v0, const WindowVertex& v1, const Win
           const unsigned mask = unsigned(cover >> (4 * q)) & 0xFu;
           cover &= ~(std::uint64_t(0xF) << (4 * q));
           int slot;
-          const int b = AddQuad(blocks, sink, front_facing, nvar, int(rx) + (q & 3) * 2, int(ry) + (q >> 2) * 2, mask, slot);
+          const int b = AddQuad(blocks, sink, front_facing, nvar, int(rx) + (q & 3) * 2, int(ry) + (q >> 2) * 2, mask, slot,
+                                open);
           FragCoordQuad(planes, blocks, b, slot);
           blocks.quad_planes[b][slot] = entry.For(blocks, planes, varying_planes);
         }
@@ -531,7 +569,7 @@ void RasterizeTriangle(const WindowVertex& v0, const WindowVertex& v1, const Win
             mask &= BoundsMask(bounds, int(qx), int(qy));
           if (!mask) continue;
           int slot;
-          const int b = AddQuad(blocks, sink, front_facing, nvar, int(qx), int(qy), mask, slot);
+          const int b = AddQuad(blocks, sink, front_facing, nvar, int(qx), int(qy), mask, slot, open);
           FragCoordQuad(planes, blocks, b, slot);
           blocks.quad_planes[b][slot] = entry.For(blocks, planes, varying_planes);
         }

@@ -32,14 +32,15 @@ struct RasterTarget {
 /// OpenGL's polygon offset for the plane through a, b, c: m * factor + r * units, with m the larger of
 /// |dz/dx| and |dz/dy| and r the smallest resolvable difference of the 32-bit float depth buffer at the largest
 /// depth of the polygon, 2^(e - 23) (OpenGL 4.6, section 14.6.5).
-float PolygonOffset(const WindowVertex& a, const WindowVertex& b, const WindowVertex& c, float factor, float units);
+float PolygonOffset(const glm::vec4& a, const glm::vec4& b, const glm::vec4& c, float factor, float units);
 
-/// Whether RasterizeTriangle draws nothing of the filled triangle a, b, c (window positions) whatever its bounds:
-/// no area once snapped, or no pixel centre inside its snapped bounding box, or beyond the rasterizer's range. The
-/// front end drops such triangles before binning them (at 1280x720 a third of a detailed model's triangles).
-bool CoversNoPixelCentre(const glm::vec4& a, const glm::vec4& b, const glm::vec4& c);
+/// The pixels whose centres RasterizeTriangle may cover of the filled triangle a, b, c (window positions) inside
+/// `bounds`: the centres inside its snapped bounding box, cut to `bounds` (half-open). Empty when the snapped
+/// triangle has no area, lies beyond the rasterizer's range or holds no pixel centre. The front end bins a triangle
+/// by this box, and drops it when the box is empty (at 1280x720 a third of a detailed model's triangles).
+Rect TriangleCentreBox(const glm::vec4& a, const glm::vec4& b, const glm::vec4& c, const Rect& bounds);
 
-void RasterizeTriangle(const WindowVertex& v0, const WindowVertex& v1, const WindowVertex& v2, bool front_facing,
+void RasterizeTriangle(const VertexView& v0, const VertexView& v1, const VertexView& v2, bool front_facing,
                        const RasterTarget& target, BlockBuffer& blocks, const BlockSink& sink);
 
 void RasterizeLine(const WindowVertex& a, const WindowVertex& b, bool front_facing, const RasterTarget& target,

@@ -180,13 +180,17 @@ void Frame::RenderTile(int tile, TileScratch& scratch) const {
     blocks.count = 0;
     for (const BinnedBatch* batch : draw.batches) {
       batch->ForEachInTile(tile, rect, [&](const BinnedPrimitive& p, const float* vertices) {
-        for (int k = 0; k < int(p.kind); ++k) batch->Vertex(vertices, k, v[k]);
         rt.depth_offset = p.depth_offset;
-        switch (p.kind) {
-          case PrimitiveKind::kTriangle: RasterizeTriangle(v[0], v[1], v[2], p.front_facing, rt, blocks, sink); break;
-          case PrimitiveKind::kLine: RasterizeLine(v[0], v[1], p.front_facing, rt, blocks, sink); break;
-          case PrimitiveKind::kPoint: RasterizePoint(v[0], p.point_size, p.front_facing, rt, blocks, sink); break;
+        if (p.kind == PrimitiveKind::kTriangle) {  // read in place
+          RasterizeTriangle(batch->View(vertices, 0), batch->View(vertices, 1), batch->View(vertices, 2),
+                            p.front_facing, rt, blocks, sink);
+          return;
         }
+        for (int k = 0; k < int(p.kind); ++k) batch->Vertex(vertices, k, v[k]);
+        if (p.kind == PrimitiveKind::kLine)
+          RasterizeLine(v[0], v[1], p.front_facing, rt, blocks, sink);
+        else
+          RasterizePoint(v[0], p.point_size, p.front_facing, rt, blocks, sink);
       });
     }
     sink.Flush(blocks);

@@ -46,6 +46,15 @@ struct WindowVertex {
   float var[kMaxVaryingFloats];    // varyings divided by w_clip, ready for perspective-correct interpolation
 };
 
+/// A window vertex read where it is stored (a tile's list, a WindowVertex): its position and its varyings.
+struct VertexView {
+  glm::vec4 win;
+  const float* var = nullptr;
+  VertexView() = default;
+  VertexView(const glm::vec4& position, const float* varyings) : win(position), var(varyings) {}
+  VertexView(const WindowVertex& v) : win(v.win), var(v.var) {}  // implicit: a WindowVertex is read as it stands
+};
+
 /// Half-open pixel rectangle [x0, x1) x [y0, y1) in window coordinates.
 struct Rect {
   int x0 = 0, y0 = 0, x1 = 0, y1 = 0;

@@ -160,10 +160,11 @@ TEST_CASE("degenerate triangles produce nothing", "[rasterizer]") {
   for (int v : r.counter.hits) CHECK(v == 0);
 }
 
-TEST_CASE("a triangle the front end drops as covering no pixel centre draws nothing", "[rasterizer]") {
+TEST_CASE("a triangle's centre box holds every pixel it draws, and is empty when it draws nothing", "[rasterizer]") {
   // Random small triangles around pixel centres and edges (subpixel slivers to a few pixels, both windings),
-  // plus out-of-range and zero-area ones: every triangle CoversNoPixelCentre reports must rasterize to nothing;
-  // and the test sees both kinds, so a predicate that dropped drawn triangles would fail it.
+  // plus out-of-range and zero-area ones: every pixel drawn lies in TriangleCentreBox, and a triangle whose box is
+  // empty (the front end drops it) draws nothing; the test sees both kinds, so a box that dropped drawn
+  // triangles, or one that missed drawn pixels, would fail it.
   std::mt19937 rng(11);
   std::uniform_real_distribution<float> place(2.0f, 6.0f), size(-1.5f, 1.5f);
   int dropped = 0, drawn = 0;
@@ -173,22 +174,30 @@ TEST_CASE("a triangle the front end drops as covering no pixel centre draws noth
     const glm::vec2 b = a + scale * glm::vec2(size(rng), size(rng)), c = a + scale * glm::vec2(size(rng), size(rng));
     Raster r(8, 8);
     r.Tri(a, b, c);
-    int hits = 0;
-    for (int v : r.counter.hits) hits += v;
-    const bool none = CoversNoPixelCentre(glm::vec4(a, 0.5f, 1.0f), glm::vec4(b, 0.5f, 1.0f), glm::vec4(c, 0.5f, 1.0f));
-    if (none) {
-      INFO("triangle " << a.x << "," << a.y << " " << b.x << "," << b.y << " " << c.x << "," << c.y);
-      REQUIRE(hits == 0);
-      ++dropped;
-    }
+    const Rect box = TriangleCentreBox(glm::vec4(a, 0.5f, 1.0f), glm::vec4(b, 0.5f, 1.0f),
+                                       glm::vec4(c, 0.5f, 1.0f), r.target.bounds);
+    INFO("triangle " << a.x << "," << a.y << " " << b.x << "," << b.y << " " << c.x << "," << c.y);
+    int hits = 0, outside = 0;
+    for (int y = 0; y < 8; ++y)
+      for (int x = 0; x < 8; ++x)
+        if (r.counter.At(x, y)) {
+          ++hits;
+          outside += x < box.x0 || x >= box.x1 || y < box.y0 || y >= box.y1;
+        }
+    REQUIRE(outside == 0);
+    dropped += box.Empty();
     drawn += hits > 0;
   }
   CHECK(dropped > 1000);
   CHECK(drawn > 1000);
+  const Rect all{-100, -100, 100, 100};
   const glm::vec4 p(1.5f, 1.5f, 0.5f, 1.0f);
-  CHECK(CoversNoPixelCentre(p, p, glm::vec4(3.5f, 3.5f, 0.5f, 1.0f)));                    // no area
-  CHECK(CoversNoPixelCentre(p, glm::vec4(2e7f, 1.5f, 0.5f, 1.0f), glm::vec4(1.5f, 9.f, 0.5f, 1.0f)));  // beyond range
-  CHECK(!CoversNoPixelCentre(p, glm::vec4(1.5f, 0.5f, 0.5f, 1.0f), glm::vec4(0.5f, 1.5f, 0.5f, 1.0f)));
+  CHECK(TriangleCentreBox(p, p, glm::vec4(3.5f, 3.5f, 0.5f, 1.0f), all).Empty());  // no area
+  CHECK(TriangleCentreBox(p, glm::vec4(2e7f, 1.5f, 0.5f, 1.0f), glm::vec4(1.5f, 9.f, 0.5f, 1.0f), all).Empty());
+  const Rect one = TriangleCentreBox(p, glm::vec4(1.5f, 0.5f, 0.5f, 1.0f), glm::vec4(0.5f, 1.5f, 0.5f, 1.0f), all);
+  CHECK((one.x0 == 0 && one.x1 == 2 && one.y0 == 0 && one.y1 == 2));  // centres (0.5 .. 1.5) both ways
+  CHECK(TriangleCentreBox(p, glm::vec4(1.5f, 0.5f, 0.5f, 1.0f), glm::vec4(0.5f, 1.5f, 0.5f, 1.0f),
+                          Rect{5, 5, 9, 9}).Empty());  // outside the bounds
 }
 
 TEST_CASE("lines: one fragment per major-axis step, last pixel left out", "[rasterizer]") {
