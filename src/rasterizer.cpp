@@ -153,28 +153,26 @@ SOFTGL_WIDE void VaryingLanes(const TrianglePlanes& p, BlockBuffer& blocks, int 
   }
 }
 
-// One quad of block b: its four lanes' gl_FragCoord.
-inline void FragCoordQuad(const TrianglePlanes& p, BlockBuffer& blocks, int b, int slot) {
-  using F = typename V<4>::F;
-  const F x = float(blocks.qx[b][slot]) + F{0.0f, 1.0f, 0.0f, 1.0f};
-  const F y = float(blocks.qy[b][slot]) + F{0.0f, 0.0f, 1.0f, 1.0f};
-  FragCoordLanes<4>(p, blocks, b, 4 * slot, x, y);
-}
-
-// A block that is the 4x4 square at (bx, by) (AddSquare), W lanes at a time.
+// gl_FragCoord of the quads of block b that refer to planes (the others have theirs): all 16 lanes at once when
+// the four quads share them (W lanes at a time), else quad by quad.
 template <int W>
-SOFTGL_WIDE void FragCoordSquare(const TrianglePlanes& p, BlockBuffer& blocks, int b) {
+SOFTGL_WIDE void FragCoordOfBlock(BlockBuffer& blocks, int b) {
   using F = typename V<W>::F;
-  const float bx = float(blocks.qx[b][0]), by = float(blocks.qy[b][0]);
-  for (int l0 = 0; l0 < kLanes; l0 += W) {
-    F x, y;
-    for (int l = 0; l < W; ++l) {  // constants: lane l's place in the square
-      const int lane = l0 + l, q = lane >> 2;
-      x[l] = float((q & 1) * 2 + (lane & 1));
-      y[l] = float((q >> 1) * 2 + ((lane >> 1) & 1));
+  const TrianglePlanes* const* qp = blocks.quad_planes[b];
+  if (qp[0] && qp[1] == qp[0] && qp[2] == qp[0] && qp[3] == qp[0]) {
+    alignas(64) float x[kLanes], y[kLanes];
+    for (int l = 0; l < kLanes; ++l) {
+      x[l] = float(blocks.qx[b][l >> 2] + (l & 1));
+      y[l] = float(blocks.qy[b][l >> 2] + ((l >> 1) & 1));
     }
-    FragCoordLanes<W>(p, blocks, b, l0, bx + x, by + y);
+    for (int l0 = 0; l0 < kLanes; l0 += W) FragCoordLanes<W>(*qp[0], blocks, b, l0, LoadVec<F>(x + l0), LoadVec<F>(y + l0));
+    return;
   }
+  using F4 = typename V<4>::F;
+  for (int q = 0; q < 4; ++q)
+    if (qp[q])
+      FragCoordLanes<4>(*qp[q], blocks, b, 4 * q, float(blocks.qx[b][q]) + F4{0.0f, 1.0f, 0.0f, 1.0f},
+                        float(blocks.qy[b][q]) + F4{0.0f, 0.0f, 1.0f, 1.0f});
 }
 
 // The varyings of the live quads of a block that refer to planes: all 16 lanes at once when all four quads share
@@ -193,26 +191,21 @@ SOFTGL_WIDE void VaryingsOfBlock(BlockBuffer& blocks, int b) {
     if (qp[q] && qp[q]->nvar > 0 && ((live >> (4 * q)) & 0xFu)) VaryingLanes<4>(*qp[q], blocks, b, 4 * q);
 }
 
-using SquareFn = void (*)(const TrianglePlanes&, BlockBuffer&, int);
 using BlockFn = void (*)(BlockBuffer&, int);
-void FragCoordSquareBase(const TrianglePlanes& p, BlockBuffer& blocks, int b) { FragCoordSquare<4>(p, blocks, b); }
+void FragCoordOfBlockBase(BlockBuffer& blocks, int b) { FragCoordOfBlock<4>(blocks, b); }
 void VaryingsOfBlockBase(BlockBuffer& blocks, int b) { VaryingsOfBlock<4>(blocks, b); }
 #if defined(SOFTGL_HAS_DISPATCH)
-SOFTGL_TARGET_AVX2 void FragCoordSquareAvx2(const TrianglePlanes& p, BlockBuffer& blocks, int b) {
-  FragCoordSquare<8>(p, blocks, b);
-}
-SOFTGL_TARGET_AVX512 void FragCoordSquareAvx512(const TrianglePlanes& p, BlockBuffer& blocks, int b) {
-  FragCoordSquare<16>(p, blocks, b);
-}
+SOFTGL_TARGET_AVX2 void FragCoordOfBlockAvx2(BlockBuffer& blocks, int b) { FragCoordOfBlock<8>(blocks, b); }
+SOFTGL_TARGET_AVX512 void FragCoordOfBlockAvx512(BlockBuffer& blocks, int b) { FragCoordOfBlock<16>(blocks, b); }
 SOFTGL_TARGET_AVX2 void VaryingsOfBlockAvx2(BlockBuffer& blocks, int b) { VaryingsOfBlock<8>(blocks, b); }
 SOFTGL_TARGET_AVX512 void VaryingsOfBlockAvx512(BlockBuffer& blocks, int b) { VaryingsOfBlock<16>(blocks, b); }
 #endif
-SquareFn ChooseFragCoordSquare() {
+BlockFn ChooseFragCoordOfBlock() {
 #if defined(SOFTGL_HAS_DISPATCH)
-  if (CpuSimdLevel() == SimdLevel::kAvx512) return FragCoordSquareAvx512;
-  if (CpuSimdLevel() == SimdLevel::kAvx2) return FragCoordSquareAvx2;
+  if (CpuSimdLevel() == SimdLevel::kAvx512) return FragCoordOfBlockAvx512;
+  if (CpuSimdLevel() == SimdLevel::kAvx2) return FragCoordOfBlockAvx2;
 #endif
-  return FragCoordSquareBase;
+  return FragCoordOfBlockBase;
 }
 BlockFn ChooseVaryingsOfBlock() {
 #if defined(SOFTGL_HAS_DISPATCH)
@@ -479,7 +472,6 @@ void RasterizeTriangle(const VertexView& v0, const VertexView& v1, const VertexV
     return A[e] * (px * kOne + kHalf) + B[e] * (py * kOne + kHalf) + C[e];
   };
   const Rect& bounds = target.bounds;
-  static const SquareFn frag_coord_square = ChooseFragCoordSquare();
   static const CoverageFn region_coverage = ChooseRegionCoverage();
   // Edges no steeper than 2^26 (a side of at most 1024 pixels in x and y) keep a region's edge values in 32 bits.
   bool narrow = true;
@@ -511,10 +503,9 @@ void RasterizeTriangle(const VertexView& v0, const VertexView& v1, const VertexV
       }
       if (skip) continue;
       if (whole && rx >= bounds.x0 && rx + kRegion <= bounds.x1 && ry >= bounds.y0 && ry + kRegion <= bounds.y1) {
-        // Covered whole, inside the bounds: four full blocks, interpolated at the processor's width.
+        // Covered whole, inside the bounds: four full blocks.
         for (int sq = 0; sq < 4; ++sq) {
           const int b = AddSquare(blocks, sink, front_facing, nvar, int(rx) + (sq & 1) * 4, int(ry) + (sq >> 1) * 4);
-          frag_coord_square(planes, blocks, b);
           const TrianglePlanes* stored = entry.For(blocks, planes, varying_planes);
           for (int q = 0; q < 4; ++q) blocks.quad_planes[b][q] = stored;
         }
@@ -543,7 +534,6 @@ void RasterizeTriangle(const VertexView& v0, const VertexView& v1, const VertexV
           int slot;
           const int b = AddQuad(blocks, sink, front_facing, nvar, int(rx) + (q & 3) * 2, int(ry) + (q >> 2) * 2, mask, slot,
                                 open);
-          FragCoordQuad(planes, blocks, b, slot);
           blocks.quad_planes[b][slot] = entry.For(blocks, planes, varying_planes);
         }
         continue;
@@ -570,7 +560,6 @@ void RasterizeTriangle(const VertexView& v0, const VertexView& v1, const VertexV
           if (!mask) continue;
           int slot;
           const int b = AddQuad(blocks, sink, front_facing, nvar, int(qx), int(qy), mask, slot, open);
-          FragCoordQuad(planes, blocks, b, slot);
           blocks.quad_planes[b][slot] = entry.For(blocks, planes, varying_planes);
         }
       }
@@ -685,6 +674,11 @@ void RasterizePoint(const WindowVertex& v, float size, bool front_facing, const 
 }  // namespace softgl::detail
 
 namespace softgl::detail {
+
+void InterpolateFragCoords(BlockBuffer& blocks) {
+  static const BlockFn frag_coord_of_block = ChooseFragCoordOfBlock();
+  for (int b = 0; b < blocks.count; ++b) frag_coord_of_block(blocks, b);
+}
 
 void InterpolateVaryings(BlockBuffer& blocks) {
   static const BlockFn varyings_of_block = ChooseVaryingsOfBlock();

@@ -116,14 +116,19 @@ struct BlockBuffer {
       qx[b][q] = qx[b][0];
       qy[b][q] = qy[b][0];
       quad_planes[b][q] = quad_planes[b][0];
-      for (int c = 0; c < 4; ++c)
-        for (int k = 0; k < 4; ++k) frag_coord[b][c][q * 4 + k] = frag_coord[b][c][k];
+      if (!quad_planes[b][0])  // (from planes, gl_FragCoord is interpolated after this, for every quad)
+        for (int c = 0; c < 4; ++c)
+          for (int k = 0; k < 4; ++k) frag_coord[b][c][q * 4 + k] = frag_coord[b][c][k];
       float* v = Varyings(b);
       for (int i = 0; i < nvar; ++i)
         for (int k = 0; k < 4; ++k) v[i * kLanes + q * 4 + k] = v[i * kLanes + k];
     }
   }
 };
+
+/// gl_FragCoord of the quads that refer to a triangle's planes (rasterizer.cpp): the rasterizer leaves them for
+/// this pass, which takes a block's four quads at once where they share planes.
+void InterpolateFragCoords(BlockBuffer& blocks);
 
 /// Where the rasterizer sends a full (or final) BlockBuffer: the fragment stage and per-fragment operations.
 struct BlockSink {
@@ -132,6 +137,7 @@ struct BlockSink {
   void Flush(BlockBuffer& blocks) const {
     if (blocks.count > 0) {
       blocks.CloseLast();
+      InterpolateFragCoords(blocks);
       flush(user, blocks);
     }
     blocks.count = 0;
