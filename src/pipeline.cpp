@@ -86,7 +86,7 @@ void ShadeVertices(const DrawCall& call, const FetchPlan& fetch, const Program& 
   const int jobs = (n + kVertexJob - 1) / kVertexJob;
   pool.Run(jobs, [&](int job, int worker) {
     VertexScratch& vs = s.vertex[std::size_t(worker)];
-    vs.attribs.resize(std::size_t(kVertexBatch) * kMaxVertexAttribs);
+    vs.attribs.resize(std::size_t(kVertexBatch) * kMaxVertexAttribs * 4);
     vs.vertex_ids.resize(kVertexBatch);
     const int end = std::min(n, (job + 1) * kVertexJob);
     for (int base = job * kVertexJob, m = 0; base < end; base += m) {
@@ -95,11 +95,13 @@ void ShadeVertices(const DrawCall& call, const FetchPlan& fetch, const Program& 
       m = std::min({kVertexBatch, end - base, unique - k0});
       const std::uint32_t instance = call.instance + std::uint32_t(base / unique);
       // Disabled attributes read constant values: written into the scratch by the job's first batch only.
-      FetchVertices(fetch, to_shade.data() + k0, m, instance, vs.attribs.data(), base == job * kVertexJob);
+      FetchVertices(fetch, to_shade.data() + k0, m, instance, vs.attribs.data(), kVertexBatch,
+                    base == job * kVertexJob);
       for (int i = 0; i < m; ++i) vs.vertex_ids[i] = int(to_shade[std::size_t(k0 + i)]);
       VertexBatch batch;
       batch.count = m;
       batch.attribs = vs.attribs.data();
+      batch.stride = kVertexBatch;
       batch.enabled = enabled;
       batch.simd = simd;
       batch.vertex_ids = vs.vertex_ids.data();

@@ -68,7 +68,7 @@ struct DrawCall {
 
 /// Memory one worker thread reuses while shading vertices.
 struct VertexScratch {
-  std::vector<glm::vec4> attribs;
+  std::vector<float> attribs;  // rows of lanes (VertexBatch::attribs)
   std::vector<int> vertex_ids;
 };
 

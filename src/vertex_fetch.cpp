@@ -113,22 +113,57 @@ glm::vec4 FetchAttribute(const AttribSource& src, std::uint32_t index) {
 }
 
 void FetchVertices(const FetchPlan& plan, const std::uint32_t* indices, int count, std::uint32_t instance,
-                   glm::vec4* out, bool fill_disabled) {
+                   float* out, int stride, bool fill_disabled) {
+  if (count <= 0) return;
+  const int padded = (count + 15) & ~15;
+  const std::size_t row = std::size_t(stride);
   for (int a = 0; a < kMaxVertexAttribs; ++a) {
     const AttribSource& src = plan.attrib[a];
-    glm::vec4* dst = out + a;
+    float* x = out + std::size_t(a) * 4 * row;
+    float *y = x + row, *z = y + row, *w = z + row;
     if (!src.enabled) {
-      if (fill_disabled)
-        for (int i = 0; i < count; ++i) dst[std::size_t(i) * kMaxVertexAttribs] = src.current;
+      if (fill_disabled) {
+        x[0] = src.current.x;
+        y[0] = src.current.y;
+        z[0] = src.current.z;
+        w[0] = src.current.w;
+      }
       continue;
     }
     const Resolved r = Resolve(src);
+    auto put = [&](int i, const glm::vec4& v) {
+      x[i] = v.x;
+      y[i] = v.y;
+      z[i] = v.z;
+      w[i] = v.w;
+    };
     if (src.divisor != 0) {  // one element for the whole instance
       const glm::vec4 v = Read(src, r, instance / src.divisor);
-      for (int i = 0; i < count; ++i) dst[std::size_t(i) * kMaxVertexAttribs] = v;
+      for (int i = 0; i < padded; ++i) put(i, v);
       continue;
     }
-    for (int i = 0; i < count; ++i) dst[std::size_t(i) * kMaxVertexAttribs] = Read(src, r, indices[i]);
+    if (src.type == FLOAT && r.last >= 0) {  // the common case: floats straight into the rows
+      const int n = src.components;
+      for (int i = 0; i < count; ++i) {
+        if ((long long)indices[i] > r.last) {
+          put(i, glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
+          continue;
+        }
+        const std::uint8_t* p = r.base + r.stride * std::size_t(indices[i]);
+        float c[4] = {0.0f, 0.0f, 0.0f, 1.0f};
+        std::memcpy(c, p, 4);
+        if (n > 1) std::memcpy(c + 1, p + 4, 4);
+        if (n > 2) std::memcpy(c + 2, p + 8, 4);
+        if (n > 3) std::memcpy(c + 3, p + 12, 4);
+        x[i] = c[0];
+        y[i] = c[1];
+        z[i] = c[2];
+        w[i] = c[3];
+      }
+    } else {
+      for (int i = 0; i < count; ++i) put(i, Read(src, r, indices[i]));
+    }
+    for (int i = count; i < padded; ++i) put(i, glm::vec4(x[count - 1], y[count - 1], z[count - 1], w[count - 1]));
   }
 }
 

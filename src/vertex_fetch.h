@@ -36,12 +36,14 @@ std::size_t TypeSize(Enum type);
 /// (even partly) outside the buffer reads as (0, 0, 0, 1).
 glm::vec4 FetchAttribute(const AttribSource& src, std::uint32_t index);
 
-/// Fetches all attributes of `count` vertices of instance `instance` into out[count][kMaxVertexAttribs]: an
-/// attribute with divisor d > 0 reads element instance / d for every vertex (OpenGL 3.3, section 2.8.2), the
-/// others the vertex's index. With `fill_disabled` false the slots of disabled attributes are left as they are: for
-/// a caller whose `out` already holds this plan's current values there (from an earlier call with the same plan).
+/// Fetches all attributes of `count` vertices of instance `instance` into rows of lanes, as VertexBatch::attribs
+/// lays them out: component c of attribute a of vertex i at out[(a * 4 + c) * stride + i], each enabled attribute's
+/// rows padded up to a multiple of 16 (stride at least that) with the last vertex's value. An attribute with divisor
+/// d > 0 reads element instance / d for every vertex (OpenGL 3.3, section 2.8.2), the others the vertex's index. A
+/// disabled attribute's current value goes to element 0 of its rows, only with `fill_disabled` (a caller whose `out`
+/// already holds this plan's current values there passes false).
 void FetchVertices(const FetchPlan& plan, const std::uint32_t* indices, int count, std::uint32_t instance,
-                   glm::vec4* out, bool fill_disabled = true);
+                   float* out, int stride, bool fill_disabled = true);
 
 /// Reads `count` indices of `type` (UNSIGNED_BYTE/SHORT/INT) from `data`. The caller has checked the range.
 void ReadIndices(Enum type, const std::uint8_t* data, int count, std::uint32_t* out);

@@ -132,24 +132,40 @@ TEST_CASE("indices of each type are read", "[vertex_fetch]") {
   CHECK((out[0] == 1 && out[1] == 70000 && out[2] == 4000000000u));
 }
 
+namespace {
+// Rows of lanes as FetchVertices writes them (stride 16), read back one vertex at a time.
+struct Rows {
+  static constexpr int kStride = 16;
+  std::vector<float> data = std::vector<float>(std::size_t(kMaxVertexAttribs) * 4 * kStride, -1.0f);
+  glm::vec4 At(int vertex, int attrib) const {
+    const float* row = data.data() + std::size_t(attrib) * 4 * kStride + vertex;
+    return glm::vec4(row[0], row[kStride], row[2 * kStride], row[3 * kStride]);
+  }
+};
+}  // namespace
+
 TEST_CASE("FetchVertices: enabled attributes per vertex, disabled ones their current value", "[vertex_fetch]") {
   const std::vector<float> positions = {1, 2, 3, 4, 5, 6, 7, 8, 9};
   detail::FetchPlan plan;
   plan.attrib[0] = Source(positions, 3, FLOAT, false);
   plan.attrib[0].stride = 12;
   plan.attrib[5].current = glm::vec4(0.25f, 0.5f, 0.75f, 1.0f);  // disabled
-  std::vector<glm::vec4> out(3 * kMaxVertexAttribs, glm::vec4(-1.0f));
+  Rows out;
   const std::uint32_t indices[3] = {2, 0, 1};
-  detail::FetchVertices(plan, indices, 3, 0, out.data());
-  CHECK(out[0] == glm::vec4(7, 8, 9, 1));
-  CHECK(out[kMaxVertexAttribs] == glm::vec4(1, 2, 3, 1));
-  CHECK(out[2 * kMaxVertexAttribs + 5] == glm::vec4(0.25f, 0.5f, 0.75f, 1.0f));
-  CHECK(out[kMaxVertexAttribs + 7] == glm::vec4(0, 0, 0, 1));  // never set: the default current value
-  // Again without filling the disabled slots: they keep what the first call wrote, the enabled ones change.
+  detail::FetchVertices(plan, indices, 3, 0, out.data.data(), Rows::kStride);
+  CHECK(out.At(0, 0) == glm::vec4(7, 8, 9, 1));
+  CHECK(out.At(1, 0) == glm::vec4(1, 2, 3, 1));
+  CHECK(out.At(2, 0) == glm::vec4(4, 5, 6, 1));
+  for (int v = 3; v < 16; ++v) CHECK(out.At(v, 0) == glm::vec4(4, 5, 6, 1));  // padding: the last vertex
+  CHECK(out.At(0, 5) == glm::vec4(0.25f, 0.5f, 0.75f, 1.0f));  // a disabled attribute: element 0
+  CHECK(out.At(0, 7) == glm::vec4(0, 0, 0, 1));  // never set: the default current value
+  CHECK(out.At(1, 7) == glm::vec4(-1.0f));  // only element 0 of a disabled attribute is written
+  // Again without filling the disabled rows: they keep what the first call wrote, the enabled ones change.
+  out.data[std::size_t(5) * 4 * Rows::kStride] = 9.0f;
   const std::uint32_t again[3] = {0, 1, 2};
-  detail::FetchVertices(plan, again, 3, 0, out.data(), false);
-  CHECK(out[0] == glm::vec4(1, 2, 3, 1));
-  CHECK(out[5] == glm::vec4(0.25f, 0.5f, 0.75f, 1.0f));
+  detail::FetchVertices(plan, again, 3, 0, out.data.data(), Rows::kStride, false);
+  CHECK(out.At(0, 0) == glm::vec4(1, 2, 3, 1));
+  CHECK(out.At(0, 5) == glm::vec4(9.0f, 0.5f, 0.75f, 1.0f));
 }
 
 TEST_CASE("FetchVertices: an attribute with a divisor reads element instance / divisor for every vertex",
@@ -162,16 +178,16 @@ TEST_CASE("FetchVertices: an attribute with a divisor reads element instance / d
   plan.attrib[1] = Source(offsets, 2, FLOAT, false);
   plan.attrib[1].stride = 8;
   plan.attrib[1].divisor = 2;
-  std::vector<glm::vec4> out(3 * kMaxVertexAttribs);
+  Rows out;
   const std::uint32_t indices[3] = {2, 0, 1};
   for (std::uint32_t instance : {0u, 1u, 2u, 3u, 4u}) {
-    detail::FetchVertices(plan, indices, 3, instance, out.data());
+    detail::FetchVertices(plan, indices, 3, instance, out.data.data(), Rows::kStride);
     // Instances 0 and 1 read element 0, 2 and 3 element 1, 4 element 2: past the end, (0, 0, 0, 1).
     const glm::vec4 want = instance < 2   ? glm::vec4(10, 20, 0, 1)
                            : instance < 4 ? glm::vec4(30, 40, 0, 1)
                                           : glm::vec4(0, 0, 0, 1);
-    for (int v = 0; v < 3; ++v) CHECK(out[std::size_t(v) * kMaxVertexAttribs + 1] == want);
-    CHECK(out[0] == glm::vec4(7, 8, 9, 1));  // the per-vertex attribute is unchanged by the instance
+    for (int v = 0; v < 3; ++v) CHECK(out.At(v, 1) == want);
+    CHECK(out.At(0, 0) == glm::vec4(7, 8, 9, 1));  // the per-vertex attribute is unchanged by the instance
   }
 }
 

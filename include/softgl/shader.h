@@ -125,7 +125,7 @@ inline void Derivatives(Textures::Lanes& c, const vec3& dx, const vec3& dy) {
 inline vec4 Rgba(const float (&out)[4][kLanes]) {
   return vec4(Float::Load(out[0]), Float::Load(out[1]), Float::Load(out[2]), Float::Load(out[3]));
 }
-// Moving 16 vertices between the pipeline's one-vertex-after-another arrays and lanes, four vertices at a time
+// Moving 16 vertices' outputs from lanes to the pipeline's one-vertex-after-another arrays, four vertices at a time
 // through 4x4 transposes of 128-bit vectors (never one lane at a time).
 using lanes_detail::F4;
 inline void Transpose4(F4& a, F4& b, F4& c, F4& d) {
@@ -135,14 +135,6 @@ inline void Transpose4(F4& a, F4& b, F4& c, F4& d) {
   b = __builtin_shufflevector(t0, t1, 2, 3, 6, 7);
   c = __builtin_shufflevector(t2, t3, 0, 1, 4, 5);
   d = __builtin_shufflevector(t2, t3, 2, 3, 6, 7);
-}
-inline void Join(const F4 (&q)[4], Float& out) {
-#if SOFTGL_PART_LANES == 8
-  out.v.p[0] = __builtin_shufflevector(q[0], q[1], 0, 1, 2, 3, 4, 5, 6, 7);
-  out.v.p[1] = __builtin_shufflevector(q[2], q[3], 0, 1, 2, 3, 4, 5, 6, 7);
-#else
-  for (int k = 0; k < 4; ++k) out.v.p[k] = q[k];
-#endif
 }
 inline void Split(const Float& in, F4 (&q)[4]) {
 #if SOFTGL_PART_LANES == 8
@@ -155,21 +147,7 @@ inline void Split(const Float& in, F4 (&q)[4]) {
   for (int k = 0; k < 4; ++k) q[k] = in.v.p[k];
 #endif
 }
-// vec4 lanes from the glm::vec4 at src[l * stride] of vertices l = 0 .. 15 (lanes from n on repeat vertex n - 1).
-inline void LoadVertices(const glm::vec4* src, std::size_t stride, int n, vec4& out) {
-  F4 col[4][4];  // [component][group of four vertices]
-  for (int g = 0; g < 4; ++g) {
-    F4 r[4];
-    for (int k = 0; k < 4; ++k) std::memcpy(&r[k], src + std::size_t(g * 4 + k < n ? g * 4 + k : n - 1) * stride, 16);
-    Transpose4(r[0], r[1], r[2], r[3]);
-    for (int c = 0; c < 4; ++c) col[c][g] = r[c];
-  }
-  Join(col[0], out.x);
-  Join(col[1], out.y);
-  Join(col[2], out.z);
-  Join(col[3], out.w);
-}
-// The other way: rows[k] lanes to dst[l * stride + k] for vertices l < n and rows k < count.
+// Rows of lanes out to vertices: rows[k] lanes to dst[l * stride + k] for vertices l < n and rows k < count.
 inline void StoreVertices(const Float* rows, int count, float* dst, std::size_t stride, int n) {
   int k = 0;
   for (; k + 4 <= count; k += 4) {
@@ -196,11 +174,10 @@ struct VertexLanes;
 template <class Varyings>
 struct FragmentLanes;
 namespace shader_detail {
-// The vertex stage's inputs are filled out of line (a template, so that a header can define it without `inline`,
-// which `noinline` contradicts); the fragment stage's are inlined into the block loop of each instruction set (out
-// of line, they were copied with baseline instructions through the stack, 9% of a texturing scene's time).
+// The stages' inputs are filled inline, in the loop of each instruction set (out of line, they were copied with
+// baseline instructions through the stack: 9% of a texturing scene's time for the fragment stage).
 template <class Batch>
-[[gnu::noinline]] void FillVertexLanes(const Batch& batch, int base, int n, VertexLanes& in);
+void FillVertexLanes(const Batch& batch, int base, int n, VertexLanes& in);
 template <class Varyings>
 void FillFragmentLanes(const BlockBatch& batch, int b, FragmentLanes<Varyings>& in);
 
@@ -413,7 +390,11 @@ struct FragmentIn {
 /// A batch of vertices handed to the vertex stage. Filled by the pipeline.
 struct VertexBatch {
   int count = 0;
-  const glm::vec4* attribs = nullptr;  ///< [count][kMaxVertexAttribs]
+  /// Component c of attribute a of vertex i at attribs[(a * 4 + c) * stride + i]: rows of lanes, each row padded
+  /// to a multiple of 16 with the last vertex's value. A disabled attribute's rows hold its current value in
+  /// element 0 only.
+  const float* attribs = nullptr;
+  int stride = 0;                      ///< floats per row of `attribs` (a multiple of 16, at least count)
   std::uint32_t enabled = 0xFFFFu;     ///< attributes read from arrays (bit i); the others hold their current value
   const int* vertex_ids = nullptr;     ///< [count]
   int instance_id = 0;                 ///< gl_InstanceID of every vertex of the batch
@@ -446,10 +427,14 @@ void FillVertexLanes(const Batch& batch, int base, int n, VertexLanes& in) {
   in.textures = batch.textures;
   // Attributes to lanes: vertex l's attribute a into lane l; lanes past the batch repeat its last vertex. A
   // disabled attribute holds its current value in every vertex: written in the batch's first call only.
-  const glm::vec4* first = batch.attribs + std::size_t(base) * kMaxVertexAttribs;
   for (int a = 0; a < kMaxVertexAttribs; ++a) {
-    if ((batch.enabled >> a) & 1u) LoadVertices(first + a, kMaxVertexAttribs, n, in.attrib[a]);
-    else if (base == 0) in.attrib[a] = vec4(first[a]);
+    const float* row = batch.attribs + std::size_t(a) * 4 * std::size_t(batch.stride);
+    Float* dst = &in.attrib[a].x;
+    if ((batch.enabled >> a) & 1u) {
+      for (int c = 0; c < 4; ++c) dst[c] = Float::Load(row + std::size_t(c) * std::size_t(batch.stride) + base);
+    } else if (base == 0) {
+      for (int c = 0; c < 4; ++c) dst[c] = Float(row[std::size_t(c) * std::size_t(batch.stride)]);
+    }
   }
   std::int32_t ids[kLanes];
   for (int l = 0; l < kLanes; ++l) ids[l] = batch.vertex_ids[base + (l < n ? l : n - 1)];
@@ -601,12 +586,15 @@ class Shader : public Program {
       VerticesBase(batch);
     } else {
       const Derived& self = static_cast<const Derived&>(*this);
+      glm::vec4 attrib[kMaxVertexAttribs];
       for (int i = 0; i < batch.count; ++i) {
+        for (int a = 0; a < kMaxVertexAttribs; ++a) {  // vertex i's attributes from the rows
+          const float* row = batch.attribs + std::size_t(a) * 4 * std::size_t(batch.stride);
+          const std::size_t k = ((batch.enabled >> a) & 1u) ? std::size_t(i) : 0;
+          for (int c = 0; c < 4; ++c) attrib[a][c] = row[std::size_t(c) * std::size_t(batch.stride) + k];
+        }
         VertexOut<Varyings> out;
-        self.Vertex(
-            VertexIn{batch.attribs + std::size_t(i) * kMaxVertexAttribs, batch.vertex_ids[i], batch.textures,
-                     batch.instance_id},
-            out);
+        self.Vertex(VertexIn{attrib, batch.vertex_ids[i], batch.textures, batch.instance_id}, out);
         batch.positions[i] = out.position;
         batch.point_sizes[i] = out.point_size;
         if constexpr (SoftglForm::Floats() > 0)
