@@ -473,6 +473,41 @@ void RasterizeTriangle(const VertexView& v0, const VertexView& v1, const VertexV
   };
   const Rect& bounds = target.bounds;
   static const CoverageFn region_coverage = ChooseRegionCoverage();
+  PlanesEntry entry;
+  const OpenBlock open(blocks);
+  // The quads of a region's coverage (RegionCoverage's order), each with its lanes.
+  auto emit_region = [&](int rx, int ry, std::uint64_t cover) {
+    while (cover) {
+      const int q = __builtin_ctzll(cover) >> 2;
+      const unsigned mask = unsigned(cover >> (4 * q)) & 0xFu;
+      cover &= ~(std::uint64_t(0xF) << (4 * q));
+      int slot;
+      const int b = AddQuad(blocks, sink, front_facing, nvar, rx + (q & 3) * 2, ry + (q >> 2) * 2, mask, slot, open);
+      blocks.quad_planes[b][slot] = entry.For(blocks, planes, varying_planes);
+    }
+  };
+  // Regions start at the first quad of the box (quads are at even pixels; a block takes quads anywhere), so that a
+  // triangle of at most 8x8 pixel centres is one region wherever it lies.
+  const std::int64_t qx_first = px0 & ~std::int64_t(1), qy_first = py0 & ~std::int64_t(1);
+  if (LastCentre(maxX) - (FirstCentre(minX) & ~std::int64_t(1)) < kRegion &&
+      LastCentre(maxY) - (FirstCentre(minY) & ~std::int64_t(1)) < kRegion) {
+    // A small triangle (most of a detailed model's): all its centres in one region even before the bounds cut
+    // it, so its vertices lie within a few pixels and every edge's values there fit 32 bits. One coverage test of
+    // the three edges, cut to the box; no corner tests.
+    RegionEdges edges;
+    edges.count = 3;
+    for (int e = 0; e < 3; ++e) {
+      edges.c00[e] = std::int32_t(edge_at(e, qx_first, qy_first));
+      edges.sx[e] = std::int32_t(step_x[e]);
+      edges.sy[e] = std::int32_t(step_y[e]);
+    }
+    edges.row0 = 0;
+    edges.row1 = int(py1 - qy_first) >> 1;
+    const std::uint64_t cover = region_coverage(edges) & RegionRect(int(px0 - qx_first), int(px1 - qx_first) + 1,
+                                                                    int(py0 - qy_first), int(py1 - qy_first) + 1);
+    emit_region(int(qx_first), int(qy_first), cover);
+    return;
+  }
   // Edges no steeper than 2^26 (a side of at most 1024 pixels in x and y) keep a region's edge values in 32 bits.
   bool narrow = true;
   for (int e = 0; e < 3; ++e) {
@@ -486,12 +521,8 @@ void RasterizeTriangle(const VertexView& v0, const VertexView& v1, const VertexV
     corner_min[e] = std::min<std::int64_t>(dx, 0) + std::min<std::int64_t>(dy, 0);
     corner_max[e] = std::max<std::int64_t>(dx, 0) + std::max<std::int64_t>(dy, 0);
   }
-  PlanesEntry entry;
-  // Regions start at the first quad of the box (quads are at even pixels; a block takes quads anywhere), so that a
-  // triangle of at most 8x8 pixel centres is one region wherever it lies.
-  const OpenBlock open(blocks);
-  for (std::int64_t ry = py0 & ~std::int64_t(1); ry <= py1; ry += kRegion) {
-    for (std::int64_t rx = px0 & ~std::int64_t(1); rx <= px1; rx += kRegion) {
+  for (std::int64_t ry = qy_first; ry <= py1; ry += kRegion) {
+    for (std::int64_t rx = qx_first; rx <= px1; rx += kRegion) {
       bool skip = false, whole = true;
       std::int64_t corner[3], corner_lo[3];
       for (int e = 0; e < 3 && !skip; ++e) {
@@ -527,15 +558,7 @@ void RasterizeTriangle(const VertexView& v0, const VertexView& v1, const VertexV
         if (rx < bounds.x0 || rx + kRegion > bounds.x1 || ry < bounds.y0 || ry + kRegion > bounds.y1)
           cover &= RegionRect(int(std::max<std::int64_t>(bounds.x0 - rx, 0)), int(std::min<std::int64_t>(bounds.x1 - rx, kRegion)),
                               int(std::max<std::int64_t>(bounds.y0 - ry, 0)), int(std::min<std::int64_t>(bounds.y1 - ry, kRegion)));
-        while (cover) {
-          const int q = __builtin_ctzll(cover) >> 2;
-          const unsigned mask = unsigned(cover >> (4 * q)) & 0xFu;
-          cover &= ~(std::uint64_t(0xF) << (4 * q));
-          int slot;
-          const int b = AddQuad(blocks, sink, front_facing, nvar, int(rx) + (q & 3) * 2, int(ry) + (q >> 2) * 2, mask, slot,
-                                open);
-          blocks.quad_planes[b][slot] = entry.For(blocks, planes, varying_planes);
-        }
+        emit_region(int(rx), int(ry), cover);
         continue;
       }
       const std::int64_t qy0 = std::max(ry, py0 & ~std::int64_t(1)), qy1 = std::min(ry + kRegion - 1, py1);
