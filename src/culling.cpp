@@ -1,6 +1,9 @@
 // culling.cpp — OpenGL's facing rule (section 14.6.1 of the 4.6 specification).
 #include "culling.h"
 
+#include "simd.h"
+#include "wide.h"
+
 namespace softgl::detail {
 
 float SignedArea(const WindowVertex* v, int count) {
@@ -23,6 +26,92 @@ bool IsCulled(bool front_facing, Enum cull_face) {
     case FRONT: return front_facing;
     default: return !front_facing;
   }
+}
+
+namespace {
+
+template <int W>
+SOFTGL_WIDE std::uint32_t DrawsNothingLanes(const TriangleGroup& g, const CullState& st, int l0) {
+  using F = typename V<W>::F;
+  using I = typename V<W>::I;
+  F x[3], y[3];
+  for (int k = 0; k < 3; ++k) {
+    x[k] = LoadVec<F>(g.x[k] + l0);
+    y[k] = LoadVec<F>(g.y[k] + l0);
+  }
+  // SignedArea of a triangle: 0 + (a.x b.y - b.x a.y), a and b the edges from vertex 0.
+  const F ax = x[1] - x[0], ay = y[1] - y[0], bx = x[2] - x[0], by = y[2] - y[0];
+  const F area = ax * by - bx * ay;
+  const I front = st.front_face == CW ? I(area < 0.0f) : I(area > 0.0f);
+  I nothing = area == 0.0f;
+  if (st.cull_enabled) {
+    switch (st.cull_face) {
+      case FRONT_AND_BACK: nothing = nothing | ~I{}; break;
+      case FRONT: nothing = nothing | front; break;
+      default: nothing = nothing | ~front; break;
+    }
+  }
+  // Snapped to 1/256 pixel, rounded to nearest even: x * 256 is exact in float, and adding then subtracting
+  // 1.5 * 2^23 rounds it to an integer as llrint does, for |x * 256| < 2^22.
+  constexpr float kRound = 12582912.0f;  // 1.5 * 2^23
+  I exact = ~I{}, X[3], Y[3];
+  for (int k = 0; k < 3; ++k) {
+    const F sx = x[k] * 256.0f, sy = y[k] * 256.0f;
+    exact = exact & I(sx < 4194304.0f) & I(sx > -4194304.0f) & I(sy < 4194304.0f) & I(sy > -4194304.0f);
+    X[k] = __builtin_convertvector((sx + kRound) - kRound, I);
+    Y[k] = __builtin_convertvector((sy + kRound) - kRound, I);
+  }
+  auto min3 = [](I a, I b, I c) SOFTGL_WIDE_LAMBDA {
+    const I m = a < b ? a : b;
+    return m < c ? m : c;
+  };
+  auto max3 = [](I a, I b, I c) SOFTGL_WIDE_LAMBDA {
+    const I m = a > b ? a : b;
+    return m > c ? m : c;
+  };
+  // TriangleCentreBox's first and last centres, cut to the bounds.
+  I first_x = -((128 - min3(X[0], X[1], X[2])) >> 8), last_x = (max3(X[0], X[1], X[2]) - 128) >> 8;
+  I first_y = -((128 - min3(Y[0], Y[1], Y[2])) >> 8), last_y = (max3(Y[0], Y[1], Y[2]) - 128) >> 8;
+  const I bx0 = I{} + st.bounds.x0, bx1 = I{} + (st.bounds.x1 - 1), by0 = I{} + st.bounds.y0,
+          by1 = I{} + (st.bounds.y1 - 1);
+  first_x = first_x > bx0 ? first_x : bx0;
+  last_x = last_x < bx1 ? last_x : bx1;
+  first_y = first_y > by0 ? first_y : by0;
+  last_y = last_y < by1 ? last_y : by1;
+  nothing = nothing | (exact & ((first_x > last_x) | (first_y > last_y)));
+  return MaskToBits<W>(nothing, l0);
+}
+
+template <int W>
+SOFTGL_WIDE std::uint32_t DrawsNothingGroup(const TriangleGroup& g, const CullState& st) {
+  std::uint32_t bits = 0;
+  for (int l0 = 0; l0 < TriangleGroup::kSize; l0 += W) bits |= DrawsNothingLanes<W>(g, st, l0);
+  return g.count >= 32 ? bits : bits & ((std::uint32_t(1) << g.count) - 1);
+}
+
+using GroupFn = std::uint32_t (*)(const TriangleGroup&, const CullState&);
+std::uint32_t DrawsNothingBase(const TriangleGroup& g, const CullState& st) { return DrawsNothingGroup<4>(g, st); }
+#if defined(SOFTGL_HAS_DISPATCH)
+SOFTGL_TARGET_AVX2 std::uint32_t DrawsNothingAvx2(const TriangleGroup& g, const CullState& st) {
+  return DrawsNothingGroup<8>(g, st);
+}
+SOFTGL_TARGET_AVX512 std::uint32_t DrawsNothingAvx512(const TriangleGroup& g, const CullState& st) {
+  return DrawsNothingGroup<16>(g, st);
+}
+#endif
+GroupFn ChooseDrawsNothing() {
+#if defined(SOFTGL_HAS_DISPATCH)
+  if (CpuSimdLevel() == SimdLevel::kAvx512) return DrawsNothingAvx512;
+  if (CpuSimdLevel() == SimdLevel::kAvx2) return DrawsNothingAvx2;
+#endif
+  return DrawsNothingBase;
+}
+
+}  // namespace
+
+std::uint32_t DrawsNothing(const TriangleGroup& group, const CullState& state) {
+  static const GroupFn fn = ChooseDrawsNothing();
+  return fn(group, state);
 }
 
 }  // namespace softgl::detail

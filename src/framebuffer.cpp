@@ -57,9 +57,13 @@ void RenderTarget::ClearColor(const Rect& r, const glm::vec4& value, const bool 
       std::memcpy(&keep, keep_bytes, 4);
       for (int y = r.y0; y < r.y1; ++y) {
         std::uint8_t* row = cb.At(r.x0, y);
+        if (keep == 0) {  // every channel written: a fill of whole words
+          for (int x = 0; x < r.x1 - r.x0; ++x) std::memcpy(row + 4 * x, &word, 4);
+          continue;
+        }
         for (int x = 0; x < r.x1 - r.x0; ++x) {
-          std::uint32_t old = 0;
-          if (keep) std::memcpy(&old, row + 4 * x, 4);
+          std::uint32_t old;
+          std::memcpy(&old, row + 4 * x, 4);
           const std::uint32_t out = (old & keep) | (word & ~keep);
           std::memcpy(row + 4 * x, &out, 4);
         }
@@ -72,18 +76,22 @@ void RenderTarget::ClearColor(const Rect& r, const glm::vec4& value, const bool 
 }
 
 void RenderTarget::ClearDepth(const Rect& r, float value) const {
-  if (!depth) return;
-  for (int y = r.y0; y < r.y1; ++y)
-    for (int x = r.x0; x < r.x1; ++x) Depth(x, y) = value;
+  if (!depth || r.Empty()) return;
+  for (int y = r.y0; y < r.y1; ++y) std::fill_n(&Depth(r.x0, y), r.x1 - r.x0, value);
 }
 
 void RenderTarget::ClearStencil(const Rect& r, std::uint8_t value, std::uint8_t write_mask) const {
-  if (!stencil) return;
-  for (int y = r.y0; y < r.y1; ++y)
+  if (!stencil || r.Empty()) return;
+  for (int y = r.y0; y < r.y1; ++y) {
+    if (write_mask == 0xFF) {  // every bit written: a fill of the row
+      std::memset(&Stencil(r.x0, y), value, std::size_t(r.x1 - r.x0));
+      continue;
+    }
     for (int x = r.x0; x < r.x1; ++x) {
       std::uint8_t& s = Stencil(x, y);
       s = std::uint8_t((s & ~write_mask) | (value & write_mask));
     }
+  }
 }
 
 namespace {

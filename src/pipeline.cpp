@@ -142,12 +142,34 @@ void ToClipVertex(const ShadedVertices& sv, std::uint32_t i, ClipVertex& out) {
 class PrimitiveRunner {
  public:
   PrimitiveRunner(const DrawState& state, const ShadedVertices& sv, BinnedBatch& bins, const TileGrid& grid)
-      : state_(state), sv_(sv), bins_(bins), grid_(grid), planes_(GuardBandPlanes(state.viewport)) {
+      : state_(state), sv_(sv), bins_(bins), grid_(grid), planes_(GuardBandPlanes(state.viewport)),
+        cull_{state.primitive.cull_enabled, state.primitive.cull_face, state.primitive.front_face, state.bounds} {
     for (int k = 0; state.interpolation && k < sv.nvar; ++k)
       if (state.interpolation[k] == Interpolation::kFlat) flat_[flat_count_++] = k;
   }
 
   void Point(std::uint32_t i) { Point(i, i, true); }
+
+  // Bit t set for each filled triangle v[t] (vertices 0 to 2) that certainly draws nothing: inside the guard band,
+  // and culled, of no area or covering no pixel centre (DrawsNothing, many triangles per instruction). Triangle()
+  // would drop each of them the same way; the others go through it.
+  std::uint32_t DrawsNothing(const std::uint32_t (*v)[4], int n) const {
+    if (state_.primitive.polygon_mode != FILL) return 0;
+    TriangleGroup group;
+    group.count = n;
+    std::uint32_t inside = 0;
+    const unsigned* codes = sv_.clip_codes.data();
+    for (int t = 0; t < n; ++t) {
+      if ((codes[v[t][0]] | codes[v[t][1]] | codes[v[t][2]]) != 0) continue;
+      inside |= 1u << t;
+      for (int k = 0; k < 3; ++k) {
+        const glm::vec4& w = sv_.window[v[t][k]];
+        group.x[k][t] = w.x;
+        group.y[k][t] = w.y;
+      }
+    }
+    return inside ? detail::DrawsNothing(group, cull_) & inside : 0;
+  }
 
   // A line between shaded vertices i0 and i1 whose flat varyings come from vertex `provoking`.
   void Line(std::uint32_t i0, std::uint32_t i1, std::uint32_t provoking, bool front_facing = true) {
@@ -290,6 +312,7 @@ class PrimitiveRunner {
   BinnedBatch& bins_;
   const TileGrid& grid_;
   ClipPlanes planes_;
+  CullState cull_;
   float depth_offset_ = 0.0f;
   bool front_ = true;  // facing of the polygon in win_
   ClipVertex clip_[4];
@@ -333,19 +356,29 @@ void RecordChunk(const DrawCall& call, const FetchPlan& fetch, const DrawState& 
     // primitive).
     std::size_t q = per_instance ? std::size_t(job) * kBinJob % per_instance : 0;
     std::uint32_t shift = per_instance ? std::uint32_t(std::size_t(job) * kBinJob / per_instance) * unique : 0;
-    for (std::size_t p = std::size_t(job) * kBinJob; p < end; ++p, ++q) {
-      if (q == per_instance) {
-        q = 0;
-        shift += unique;
+    // In groups of up to 16 primitives: the triangles of a group that certainly draw nothing are found together.
+    std::uint32_t v[TriangleGroup::kSize][4];  // each primitive's vertices, then its provoking vertex
+    for (std::size_t p = std::size_t(job) * kBinJob; p < end;) {
+      int n = 0;
+      for (; n < TriangleGroup::kSize && p < end; ++n, ++p, ++q) {
+        if (q == per_instance) {
+          q = 0;
+          shift += unique;
+        }
+        const std::size_t i = q * std::size_t(per);
+        // The provoking vertex: the first of the primitive or its last (OpenGL 4.6, table 13.2; assembly put it there).
+        const std::size_t provoking = i + (first ? 0 : std::size_t(per - 1));
+        for (int k = 0; k < per; ++k) v[n][k] = map[idx[i + std::size_t(k)]] + shift;
+        v[n][3] = map[idx[provoking]] + shift;
       }
-      const std::size_t i = q * std::size_t(per);
-      // The provoking vertex: the first of the primitive or its last (OpenGL 4.6, table 13.2; assembly put it there).
-      const std::size_t provoking = i + (first ? 0 : std::size_t(per - 1));
-      auto at = [&](std::size_t k) { return map[idx[k]] + shift; };
-      switch (per) {
-        case 1: runner->Point(at(i)); break;
-        case 2: runner->Line(at(i), at(i + 1), at(provoking)); break;
-        default: runner->Triangle(at(i), at(i + 1), at(i + 2), at(provoking)); break;
+      const std::uint32_t nothing = per == 3 ? runner->DrawsNothing(v, n) : 0;
+      for (int t = 0; t < n; ++t) {
+        if ((nothing >> t) & 1u) continue;
+        switch (per) {
+          case 1: runner->Point(v[t][0]); break;
+          case 2: runner->Line(v[t][0], v[t][1], v[t][3]); break;
+          default: runner->Triangle(v[t][0], v[t][1], v[t][2], v[t][3]); break;
+        }
       }
     }
     bins.Finish(grid);
