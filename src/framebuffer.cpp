@@ -55,13 +55,18 @@ void RenderTarget::ClearColor(const Rect& r, const glm::vec4& value, const bool 
       std::uint32_t word, keep;
       std::memcpy(&word, px, 4);
       std::memcpy(&keep, keep_bytes, 4);
+      std::uint8_t run[64];  // 16 pixels
+      for (int k = 0; k < 16; ++k) std::memcpy(run + 4 * k, &word, 4);
+      const int width = r.x1 - r.x0;
       for (int y = r.y0; y < r.y1; ++y) {
         std::uint8_t* row = cb.At(r.x0, y);
-        if (keep == 0) {  // every channel written: a fill of whole words
-          for (int x = 0; x < r.x1 - r.x0; ++x) std::memcpy(row + 4 * x, &word, 4);
+        if (keep == 0) {  // every channel written: copies of 16 pixels, then the rest
+          int x = 0;
+          for (; x + 16 <= width; x += 16) std::memcpy(row + 4 * x, run, 64);
+          std::memcpy(row + 4 * x, run, std::size_t(4 * (width - x)));
           continue;
         }
-        for (int x = 0; x < r.x1 - r.x0; ++x) {
+        for (int x = 0; x < width; ++x) {
           std::uint32_t old;
           std::memcpy(&old, row + 4 * x, 4);
           const std::uint32_t out = (old & keep) | (word & ~keep);
