@@ -146,8 +146,7 @@ SOFTGL_WIDE void VaryingLanes(const TrianglePlanes& p, BlockBuffer& blocks, int 
   const F w = 1.0f / LoadVec<F>(&blocks.frag_coord[b][3][l0]);
   float* var = blocks.Varyings(b) + l0;
   for (int i = 0; i < p.nvar; ++i) {
-    const Plane& pl = p.var[i];
-    F v = (pl.a0 + pl.dx * rx) + pl.dy * ry;
+    F v = (p.a0[i] + p.dx[i] * rx) + p.dy[i] * ry;
     if (p.perspective[i]) v = v * w;
     StoreVec(var + i * kLanes, v);
   }
@@ -312,7 +311,9 @@ struct PlanesEntry {
       slot.oow = p.oow;
       slot.nvar = p.nvar;
       if (planes) {
-        std::memcpy(slot.var, planes->var, sizeof(Plane) * std::size_t(p.nvar));
+        std::memcpy(slot.a0, planes->a0, sizeof(float) * std::size_t(p.nvar));
+        std::memcpy(slot.dx, planes->dx, sizeof(float) * std::size_t(p.nvar));
+        std::memcpy(slot.dy, planes->dy, sizeof(float) * std::size_t(p.nvar));
         std::memcpy(slot.perspective, planes->perspective, sizeof(bool) * std::size_t(p.nvar));
       } else {
         fill(slot);
@@ -446,13 +447,24 @@ void RasterizeTriangle(const VertexView& v0, const VertexView& v1, const VertexV
   planes.z = make_plane(v[0]->win.z, v[1]->win.z, v[2]->win.z);
   planes.z.a0 += target.depth_offset;
   planes.oow = make_plane(v[0]->win.w, v[1]->win.w, v[2]->win.w);
+  // The varyings' planes four at a time, each lane make_plane's operations in its order.
   auto varying_planes = [&](TrianglePlanes& p) {
+    using F4 = V<4>::F;
+    alignas(16) float a[3][kMaxVaryingFloats + 4];
+    for (int k = 0; k < 3; ++k) {
+      std::memcpy(a[k], v[k]->var, sizeof(float) * std::size_t(nvar));
+      std::memset(a[k] + nvar, 0, sizeof(float) * 4);  // the last group's unused lanes
+    }
+    for (int i = 0; i < nvar; i += 4) {
+      const F4 a0 = LoadVec<F4>(a[0] + i), da1 = LoadVec<F4>(a[1] + i) - a0, da2 = LoadVec<F4>(a[2] + i) - a0;
+      StoreVec(p.a0 + i, a0);
+      StoreVec(p.dx + i, (da1 * dy2 - da2 * dy1) * inv_det);
+      StoreVec(p.dy + i, (da2 * dx1 - da1 * dx2) * inv_det);
+    }
     for (int i = 0; i < nvar; ++i) {
       p.perspective[i] = Perspective(target, i);
       if (target.interpolation && target.interpolation[i] == Interpolation::kFlat)
-        p.var[i] = Plane{v[0]->var[i], 0.0f, 0.0f};  // every vertex carries the provoking vertex's value
-      else
-        p.var[i] = make_plane(v[0]->var[i], v[1]->var[i], v[2]->var[i]);
+        p.dx[i] = p.dy[i] = 0.0f;  // every vertex carries the provoking vertex's value
     }
   };
 

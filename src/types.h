@@ -71,7 +71,8 @@ struct TrianglePlanes {
   float x0 = 0.0f, y0 = 0.0f;
   Plane z, oow;
   int nvar = 0;
-  Plane var[kMaxVaryingFloats];
+  // The varyings' planes, a0 + dx * x + dy * y for varying i, as rows (computed and read four or more at a time).
+  alignas(16) float a0[kMaxVaryingFloats], dx[kMaxVaryingFloats], dy[kMaxVaryingFloats];
   bool perspective[kMaxVaryingFloats];  // smooth: divided by w (the others are taken as they are)
 };
 
