@@ -38,9 +38,12 @@ void BinnedBatch::Add(const BinnedPrimitive& prim, const VertexView* v, const Re
   const auto index = std::uint32_t(prims_.size());
   BinnedPrimitive p = prim;
   p.first_float = std::uint32_t(vertices_.size());
-  for (int k = 0; k < int(prim.kind); ++k) {  // appended, not resized and overwritten
-    vertices_.insert(vertices_.end(), &v[k].win.x, &v[k].win.x + 4);
-    vertices_.insert(vertices_.end(), v[k].var, v[k].var + nvar_);
+  const std::size_t stride = 4 + std::size_t(nvar_);
+  vertices_.resize(vertices_.size() + std::size_t(prim.kind) * stride);
+  float* dst = vertices_.data() + p.first_float;
+  for (int k = 0; k < int(prim.kind); ++k, dst += stride) {
+    std::memcpy(dst, &v[k].win, sizeof(float) * 4);
+    std::memcpy(dst + 4, v[k].var, sizeof(float) * std::size_t(nvar_));
   }
   prims_.push_back(p);
   box_ = box_.Empty() ? box : Rect{std::min(box_.x0, box.x0), std::min(box_.y0, box.y0), std::max(box_.x1, box.x1),
