@@ -5,7 +5,7 @@
 # Needs the Release build with the bench (./scripts/bench.sh builds it) and perf.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-bench=build/release/bench/bench
+bench=${BENCH:-build/release/bench/bench}  # BENCH=path profiles another build (an older commit's, say)
 [ -x "$bench" ] || { echo "build first: ./scripts/bench.sh" >&2; exit 1; }
 data=$(mktemp)
 trap 'rm -f "$data"' EXIT
@@ -18,10 +18,10 @@ for scene in "model: 2Cyl" "african_head" "small triangles" "fill rate" "overdra
   perf report -i "$data" --no-children --stdio --sort sym 2>/dev/null | python3 -c '
 import re, sys
 rules = [
-  ("front end", r"FetchAttribute|FetchVertices|ShadeVertices|Vertices(Avx512|Avx2|Base)|VertexLanes|Resolve|ClipCodes|ClipTriangle|ClipLine|ToWindow|SignedArea|AssemblePrimitives|RecordChunk|RecordDraw|PrimitiveRunner|ReadIndices|Intersect|IsFrontFacing|IsCulled|PolygonOffset"),
+  ("front end", r"FetchAttribute|FetchVertices|ShadeVertices|Vertices(Avx512|Avx2|Base)|VertexLanes|Resolve|ClipCodes|ClipTriangle|ClipLine|ToWindow|SignedArea|AssemblePrimitives|AssembleRun|RecordChunk|RecordDraw|RecordPiece|PrimitiveRunner|ReadIndices|Intersect|IsFrontFacing|IsCulled|PolygonOffset|CoversNoPixelCentre|TriangleCentreBox|DrawsNothing"),
   ("binning", r"BinnedBatch::Add|BinnedBatch::Finish|TriangleBox|LineBox|PointBox|::Box\("),
   ("clears", r"RenderTarget::Clear"),
-  ("rasterization", r"Rasterize|RenderTile|BinnedBatch::Vertex|FragmentStage|RegionCoverage|FragCoord|VaryingsOfBlock|InterpolateVaryings|AddSquare|AddQuad|EmitQuad|BlockSink"),
+  ("rasterization", r"Rasterize|RenderTile|BinnedBatch::Vertex|BinnedBatch::View|FragmentStage|RegionCoverage|FragCoord|VaryingsOfBlock|InterpolateVaryings|InterpolateFragCoords|AddSquare|AddQuad|EmitQuad|BlockSink"),
   ("early depth test", r"EarlyDepth|EarlyBlock"),
   ("fragment shader and texture sampling", r"ShadeBlocks|Blocks(Avx512|Avx2|Base)|BlockLanes|FragmentLanes|Textures::|SampleRepeat|FilterLevel|SampleFace|Fetch\(|Lambda|powf|__pow|expf|logf|sqrt"),
   ("fragment operations", r"ApplyFragmentOps|BlockOps|Unorm8Blender|ColorBuffer::|FloatToUnorm8|detail::Blend"),
