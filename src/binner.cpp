@@ -25,12 +25,14 @@ Rect TileGrid::TileRect(int tile) const {
 void BinnedBatch::Reset(int nvar) {
   nvar_ = nvar;
   prims_.clear();
+  prim_tiles_.clear();
   vertices_.clear();
+  shared_.clear();
   large_.clear();
   notes_.clear();
   tile_start_.clear();
   box_ = Rect{};
-  // tile_prims_ keeps its size: Finish overwrites what it uses (tile_start_ bounds it), without zeroing it first.
+  // tile_data_ keeps its size: Finish overwrites what it uses (tile_start_ bounds it), without zeroing it first.
 }
 
 void BinnedBatch::Add(const BinnedPrimitive& prim, const VertexView* v, const Rect& box, const TileGrid& grid) {
@@ -38,10 +40,11 @@ void BinnedBatch::Add(const BinnedPrimitive& prim, const VertexView* v, const Re
   const auto index = std::uint32_t(prims_.size());
   BinnedPrimitive p = prim;
   p.first_float = std::uint32_t(vertices_.size());
-  const std::size_t stride = 4 + std::size_t(nvar_);
-  vertices_.resize(vertices_.size() + std::size_t(prim.kind) * stride);
+  p.index = index;
+  const int n = int(prim.kind), stride = 4 + nvar_;
+  vertices_.resize(vertices_.size() + std::size_t(n) * std::size_t(stride));
   float* dst = vertices_.data() + p.first_float;
-  for (int k = 0; k < int(prim.kind); ++k, dst += stride) {
+  for (int k = 0; k < n; ++k, dst += stride) {
     std::memcpy(dst, &v[k].win, sizeof(float) * 4);
     std::memcpy(dst + 4, v[k].var, sizeof(float) * std::size_t(nvar_));
   }
@@ -50,8 +53,10 @@ void BinnedBatch::Add(const BinnedPrimitive& prim, const VertexView* v, const Re
                                    std::max(box_.y1, box.y1)};
   const int tx0 = box.x0 / kTileSize, tx1 = (box.x1 - 1) / kTileSize;
   const int ty0 = box.y0 / kTileSize, ty1 = (box.y1 - 1) / kTileSize;
-  if (std::uint32_t((tx1 - tx0 + 1) * (ty1 - ty0 + 1)) > kListedTiles) {  // listed apart, not in the tiles' lists
-    large_.push_back(Large{index, box});
+  const auto tiles = std::uint32_t((tx1 - tx0 + 1) * (ty1 - ty0 + 1));
+  prim_tiles_.push_back(tiles);
+  if (tiles > kListedTiles) {  // in the list of large primitives, not in the tiles' lists
+    large_.push_back(Large{p, box});
     return;
   }
   for (int ty = ty0; ty <= ty1; ++ty)
@@ -59,8 +64,26 @@ void BinnedBatch::Add(const BinnedPrimitive& prim, const VertexView* v, const Re
 }
 
 void BinnedBatch::Finish(const TileGrid& grid) {
-  // A stable counting sort of the notes by tile: each tile's list keeps submission order. Lists for the tiles
-  // from the first to the last one noted (grid order).
+  // A stable counting sort of the notes by tile, moving the data: each tile's list keeps submission order.
+  static_assert(sizeof(BinnedPrimitive) % sizeof(float) == 0);
+  static_assert(sizeof(BinnedPrimitive) == 20);
+  // Primitives over many tiles: their vertices once, in shared_.
+  std::size_t next_large = 0;
+  for (std::size_t i = 0; i < prims_.size(); ++i) {
+    if (prim_tiles_[i] <= kInlineTiles) continue;
+    BinnedPrimitive& p = prims_[i];
+    const std::size_t n = std::size_t(int(p.kind) * (4 + nvar_));
+    const auto at = std::uint32_t(shared_.size());
+    shared_.insert(shared_.end(), vertices_.begin() + p.first_float, vertices_.begin() + p.first_float + n);
+    p.first_float = at;
+    p.shared = true;
+    if (prim_tiles_[i] > kListedTiles) large_[next_large++].prim = p;  // large_ is in the same order
+  }
+  auto size_of = [&](std::uint32_t prim) {
+    const BinnedPrimitive& p = prims_[prim];
+    return std::uint32_t(kHeaderFloats + (p.shared ? 0 : int(p.kind) * (4 + nvar_)));
+  };
+  // Lists for the tiles from the first to the last one noted (grid order).
   int lo = grid.Count(), hi = -1;
   for (std::uint64_t n : notes_) {
     lo = std::min(lo, int(n >> 32));
@@ -68,13 +91,23 @@ void BinnedBatch::Finish(const TileGrid& grid) {
   }
   tile_lo_ = hi >= lo ? lo : 0;
   tile_start_.assign(hi >= lo ? std::size_t(hi - lo) + 2 : 0, 0);
-  for (std::uint64_t n : notes_) ++tile_start_[std::size_t(int(n >> 32) - lo) + 1];
+  for (std::uint64_t n : notes_) tile_start_[std::size_t(int(n >> 32) - lo) + 1] += size_of(std::uint32_t(n));
   for (std::size_t t = 1; t < tile_start_.size(); ++t) tile_start_[t] += tile_start_[t - 1];
-  if (!tile_start_.empty() && tile_prims_.size() < tile_start_.back()) tile_prims_.resize(tile_start_.back());
+  if (!tile_start_.empty() && tile_data_.size() < tile_start_.back()) tile_data_.resize(tile_start_.back());
   std::vector<std::uint32_t>& fill = fill_;
   fill.assign(tile_start_.begin(), tile_start_.empty() ? tile_start_.end() : tile_start_.end() - 1);
-  for (std::uint64_t n : notes_) tile_prims_[fill[std::size_t(int(n >> 32) - lo)]++] = std::uint32_t(n);
+  for (std::uint64_t n : notes_) {
+    const auto prim = std::uint32_t(n);
+    float* dst = tile_data_.data() + fill[std::size_t(int(n >> 32) - lo)];
+    const BinnedPrimitive& p = prims_[prim];
+    std::memcpy(dst, static_cast<const void*>(&p), sizeof p);
+    if (!p.shared)
+      std::memcpy(dst + kHeaderFloats, vertices_.data() + p.first_float,
+                  sizeof(float) * std::size_t(int(p.kind) * (4 + nvar_)));
+    fill[std::size_t(int(n >> 32) - lo)] += size_of(prim);
+  }
   notes_.clear();
+  vertices_.clear();
 }
 
 void BinnedBatch::Vertex(const float* vertices, int k, WindowVertex& out) const {
@@ -84,9 +117,10 @@ void BinnedBatch::Vertex(const float* vertices, int k, WindowVertex& out) const 
 }
 
 std::size_t BinnedBatch::Bytes() const {
-  return prims_.capacity() * sizeof(BinnedPrimitive) + vertices_.capacity() * sizeof(float) +
-         large_.capacity() * sizeof(Large) + notes_.capacity() * sizeof(std::uint64_t) +
-         (tile_start_.capacity() + tile_prims_.capacity() + fill_.capacity()) * sizeof(std::uint32_t);
+  return prims_.capacity() * sizeof(BinnedPrimitive) + prim_tiles_.capacity() * sizeof(std::uint32_t) +
+         (vertices_.capacity() + shared_.capacity()) * sizeof(float) + large_.capacity() * sizeof(Large) +
+         notes_.capacity() * sizeof(std::uint64_t) + tile_start_.capacity() * sizeof(std::uint32_t) +
+         tile_data_.capacity() * sizeof(float);
 }
 
 namespace {

@@ -30,19 +30,22 @@ struct TileGrid {
 enum class PrimitiveKind : std::uint8_t { kPoint = 1, kLine = 2, kTriangle = 3 };
 
 /// One primitive ready for the rasterizer; its vertices are `kind` runs of 4 + nvar floats each (window position,
-/// then varyings), stored from BinnedBatch's vertex floats at `first_float`.
-struct BinnedPrimitive {
+/// then varyings), stored from BinnedBatch::vertices[first_float].
+struct BinnedPrimitive {  // 20 bytes: stored inline in the tile lists
   PrimitiveKind kind = PrimitiveKind::kTriangle;
   bool front_facing = true;
+  bool shared = false;  // its vertices are stored once for all its tiles (a primitive over many tiles)
   float depth_offset = 0.0f;  // polygon offset
   float point_size = 1.0f;
   std::uint32_t first_float = 0;
+  std::uint32_t index = 0;  // submission order within the batch
 };
 
-/// The output of binning one batch of primitives. Primitives and their vertices are appended in submission order
-/// and stored once; Finish() then lists, for every tile a primitive may touch, the primitive's index (4 bytes per
-/// tile, nothing copied), each tile's list in submission order. A primitive over more than kListedTiles tiles is in
-/// no tile list but in the batch's list of large primitives, which every tile walks beside its own list, in
+/// The output of binning one batch of primitives. Primitives are appended in submission order, then Finish()
+/// copies each into the contiguous list of every tile it may touch (a primitive record followed by its vertices),
+/// so that a tile reads its primitives from consecutive memory. A primitive over more than kInlineTiles tiles
+/// keeps one copy of its vertices that its records point to; one over more than kListedTiles tiles is in no tile
+/// list at all but in the batch's list of large primitives, which every tile walks beside its own list, in
 /// submission order. So a batch's memory is bounded by its primitives, whatever the framebuffer's size.
 class BinnedBatch {
  public:
@@ -64,20 +67,26 @@ class BinnedBatch {
   template <class Fn>
   void ForEachInTile(int tile, const Rect& tile_rect, Fn&& fn) const {
     const auto [begin, finish] = List(tile);
-    const std::uint32_t* p = tile_prims_.data() + begin;
-    const std::uint32_t* end = tile_prims_.data() + finish;
+    const float* p = tile_data_.data() + begin;
+    const float* end = tile_data_.data() + finish;
     std::size_t g = 0;  // next large primitive
     for (;;) {
-      const std::uint32_t listed = p < end ? *p : ~0u;
-      if (g < large_.size() && large_[g].index < listed) {  // a large primitive comes first
+      BinnedPrimitive prim;
+      if (p < end) std::memcpy(static_cast<void*>(&prim), p, sizeof prim);
+      const std::uint32_t listed = p < end ? prim.index : ~0u;
+      if (g < large_.size() && large_[g].prim.index < listed) {  // a large primitive comes first
         const Large& l = large_[g++];
-        const BinnedPrimitive& prim = prims_[l.index];
-        if (Overlap(l.box, tile_rect)) fn(prim, vertices_.data() + prim.first_float);
+        if (Overlap(l.box, tile_rect)) fn(l.prim, shared_.data() + l.prim.first_float);
         continue;
       }
       if (p >= end) break;
-      const BinnedPrimitive& prim = prims_[*p++];
-      fn(prim, vertices_.data() + prim.first_float);
+      p += kHeaderFloats;
+      if (prim.shared) {
+        fn(prim, shared_.data() + prim.first_float);
+      } else {
+        fn(prim, p);
+        p += int(prim.kind) * (4 + nvar_);
+      }
     }
   }
   /// Whether ForEachInTile(tile, tile_rect, ...) may call its function at all: the tile's list is not empty, or a
@@ -102,15 +111,17 @@ class BinnedBatch {
   std::size_t Bytes() const;
 
  private:
+  static constexpr int kHeaderFloats = int(sizeof(BinnedPrimitive) / sizeof(float));
+  static constexpr std::uint32_t kInlineTiles = 4;
   static constexpr std::uint32_t kListedTiles = 64;
   struct Large {
-    std::uint32_t index;  // in prims_
+    BinnedPrimitive prim;  // shared, in shared_
     Rect box;
   };
   static bool Overlap(const Rect& a, const Rect& b) {
     return a.x0 < b.x1 && b.x0 < a.x1 && a.y0 < b.y1 && b.y0 < a.y1;
   }
-  // Where the list of `tile` starts and ends in tile_prims_; empty for a tile outside the range that has lists.
+  // Where the list of `tile` starts and ends in tile_data_; empty for a tile outside the range that has lists.
   std::pair<std::uint32_t, std::uint32_t> List(int tile) const {
     const int i = tile - tile_lo_;
     if (i < 0 || std::size_t(i) + 1 >= tile_start_.size()) return {0u, 0u};
@@ -120,13 +131,15 @@ class BinnedBatch {
   Rect box_;                                // the union of the primitives' boxes
   int nvar_ = 0;
   std::vector<BinnedPrimitive> prims_;      // in submission order
-  std::vector<float> vertices_;             // every primitive's vertices, in submission order
+  std::vector<std::uint32_t> prim_tiles_;   // how many tiles each primitive touches
+  std::vector<float> vertices_;
+  std::vector<float> shared_;               // the vertices of primitives over more than kInlineTiles tiles
   std::vector<std::uint64_t> notes_;        // tile << 32 | primitive, in submission order
   int tile_lo_ = 0;                         // the first tile with a list (in grid order)
-  std::vector<std::uint32_t> tile_start_;   // where each tile's list starts in tile_prims_, from tile_lo_ to the
+  std::vector<std::uint32_t> tile_start_;   // where each tile's list starts in tile_data_, from tile_lo_ to the
                                             // last tile with a list, plus its end: only the tiles the batch
                                             // touches cost anything to build (a small draw builds one or two)
-  std::vector<std::uint32_t> tile_prims_;   // the tiles' lists of primitive indices, one after another
+  std::vector<float> tile_data_;
   std::vector<std::uint32_t> fill_;         // Finish's write position per tile
 };
 
