@@ -168,14 +168,14 @@ void FetchVertices(const FetchPlan& plan, const std::uint32_t* indices, int coun
 }
 
 void ReadIndices(Enum type, const std::uint8_t* data, int count, std::uint32_t* out) {
-  const std::size_t size = TypeSize(type);
-  for (int i = 0; i < count; ++i) {
-    const std::uint8_t* p = data + size * std::size_t(i);
-    switch (type) {
-      case UNSIGNED_BYTE: out[i] = Load<std::uint8_t>(p); break;
-      case UNSIGNED_SHORT: out[i] = Load<std::uint16_t>(p); break;
-      default: out[i] = Load<std::uint32_t>(p); break;
-    }
+  auto read = [&](auto zero) {  // one loop per index type (the type decided once, not per index)
+    using T = decltype(zero);
+    for (int i = 0; i < count; ++i) out[i] = Load<T>(data + sizeof(T) * std::size_t(i));
+  };
+  switch (type) {
+    case UNSIGNED_BYTE: read(std::uint8_t{}); break;
+    case UNSIGNED_SHORT: read(std::uint16_t{}); break;
+    default: read(std::uint32_t{}); break;
   }
 }
 
