@@ -43,15 +43,20 @@ void ShadeVertices(const DrawCall& call, const FetchPlan& fetch, const Program& 
       constexpr std::uint32_t kUnseen = 0xFFFFFFFFu;
       auto& slot = s.first_use;
       slot.assign(std::size_t(range), kUnseen);
-      to_shade.reserve(std::size_t(count));
+      to_shade.resize(std::size_t(count));
+      std::uint32_t unique = 0;
+      const std::uint32_t low = *lo;
+      std::uint32_t* shade = to_shade.data();
       for (int i = 0; i < count; ++i) {
-        std::uint32_t& k = slot[call.elements[i] - *lo];
+        const std::uint32_t e = call.elements[i];
+        std::uint32_t& k = slot[e - low];
         if (k == kUnseen) {
-          k = std::uint32_t(to_shade.size());
-          to_shade.push_back(call.elements[i]);
+          k = unique;
+          shade[unique++] = e;
         }
         map[i] = k;
       }
+      to_shade.resize(unique);
     } else {  // indices spread far apart: shade per element
       to_shade.assign(call.elements, call.elements + count);
       for (int i = 0; i < count; ++i) map[i] = std::uint32_t(i);
@@ -498,7 +503,12 @@ void RecordDraw(const DrawCall& call, const FetchPlan& fetch, const DrawState& s
     piece.clear();
     if (call.mode == TRIANGLE_FAN) piece.push_back(element(0));
     const std::int64_t room = kDrawChunk - std::int64_t(piece.size());
-    for (std::int64_t k = s; k < std::min(count, s + room); ++k) piece.push_back(element(k));
+    const std::int64_t stop = std::min(count, s + room);
+    if (call.elements) {
+      piece.insert(piece.end(), call.elements + s, call.elements + stop);
+    } else {
+      for (std::int64_t k = s; k < stop; ++k) piece.push_back(call.first + std::uint32_t(k));
+    }
     DrawCall sub;
     sub.instance = call.instance;
     sub.mode = piece_mode;

@@ -1,6 +1,9 @@
 // primitive_assembly.cpp — OpenGL's primitive modes as index lists.
 #include "primitive_assembly.h"
 
+#include <cstddef>
+#include <numeric>
+
 namespace softgl::detail {
 
 int VerticesPerPrimitive(Enum mode) {
@@ -22,21 +25,19 @@ namespace {
 void AssembleRun(Enum mode, std::uint32_t b, int count, std::vector<std::uint32_t>& idx, bool first_vertex_convention) {
   if (count <= 0) return;
   const std::uint32_t n = b + std::uint32_t(count);  // one past the run's last position
+  if (mode == POINTS || mode == LINES || mode == TRIANGLES) {  // lists: the run's positions, whole primitives only
+    const int per = mode == POINTS ? 1 : mode == LINES ? 2 : 3;
+    const std::size_t at = idx.size();
+    idx.resize(at + std::size_t(count / per * per));
+    std::iota(idx.begin() + std::ptrdiff_t(at), idx.end(), b);
+    return;
+  }
   switch (mode) {
-    case POINTS:
-      for (std::uint32_t i = b; i < n; ++i) idx.push_back(i);
-      break;
-    case LINES:
-      for (std::uint32_t i = b; i + 1 < n; i += 2) idx.insert(idx.end(), {i, i + 1});
-      break;
     case LINE_STRIP:
     case LINE_LOOP:
       if (count < 2) break;
       for (std::uint32_t i = b; i + 1 < n; ++i) idx.insert(idx.end(), {i, i + 1});
       if (mode == LINE_LOOP) idx.insert(idx.end(), {n - 1, b});
-      break;
-    case TRIANGLES:
-      for (std::uint32_t i = b; i + 2 < n; i += 3) idx.insert(idx.end(), {i, i + 1, i + 2});
       break;
     case TRIANGLE_STRIP:
       if (count < 3) break;
