@@ -56,28 +56,28 @@ SOFTGL_WIDE std::uint32_t DrawsNothingLanes(const TriangleGroup& g, const CullSt
   constexpr float kRound = 12582912.0f;  // 1.5 * 2^23
   I exact = ~I{}, X[3], Y[3];
   for (int k = 0; k < 3; ++k) {
-    const F sx = x[k] * 256.0f, sy = y[k] * 256.0f;
-    exact = exact & I(sx < 4194304.0f) & I(sx > -4194304.0f) & I(sy < 4194304.0f) & I(sy > -4194304.0f);
+    F sx = x[k] * 256.0f, sy = y[k] * 256.0f;
+    const I in_range = I(sx < 4194304.0f) & I(sx > -4194304.0f) & I(sy < 4194304.0f) & I(sy > -4194304.0f);
+    exact = exact & in_range;
+    sx = F(I(sx) & in_range);  // 0 in the lanes out of range (or NaN), which are not marked: no conversion overflows
+    sy = F(I(sy) & in_range);
     X[k] = __builtin_convertvector((sx + kRound) - kRound, I);
     Y[k] = __builtin_convertvector((sy + kRound) - kRound, I);
   }
-  auto min3 = [](I a, I b, I c) SOFTGL_WIDE_LAMBDA {
-    const I m = a < b ? a : b;
-    return m < c ? m : c;
-  };
-  auto max3 = [](I a, I b, I c) SOFTGL_WIDE_LAMBDA {
-    const I m = a > b ? a : b;
-    return m > c ? m : c;
-  };
+  // Lane-wise minimum and maximum, by masks (a comparison gives all bits set where it holds).
+  auto min = [](I a, I b) SOFTGL_WIDE_LAMBDA { return (a & (a < b)) | (b & ~(a < b)); };
+  auto max = [](I a, I b) SOFTGL_WIDE_LAMBDA { return (a & (a > b)) | (b & ~(a > b)); };
+  auto min3 = [&](I a, I b, I c) SOFTGL_WIDE_LAMBDA { return min(min(a, b), c); };
+  auto max3 = [&](I a, I b, I c) SOFTGL_WIDE_LAMBDA { return max(max(a, b), c); };
   // TriangleCentreBox's first and last centres, cut to the bounds.
   I first_x = -((128 - min3(X[0], X[1], X[2])) >> 8), last_x = (max3(X[0], X[1], X[2]) - 128) >> 8;
   I first_y = -((128 - min3(Y[0], Y[1], Y[2])) >> 8), last_y = (max3(Y[0], Y[1], Y[2]) - 128) >> 8;
   const I bx0 = I{} + st.bounds.x0, bx1 = I{} + (st.bounds.x1 - 1), by0 = I{} + st.bounds.y0,
           by1 = I{} + (st.bounds.y1 - 1);
-  first_x = first_x > bx0 ? first_x : bx0;
-  last_x = last_x < bx1 ? last_x : bx1;
-  first_y = first_y > by0 ? first_y : by0;
-  last_y = last_y < by1 ? last_y : by1;
+  first_x = max(first_x, bx0);
+  last_x = min(last_x, bx1);
+  first_y = max(first_y, by0);
+  last_y = min(last_y, by1);
   nothing = nothing | (exact & ((first_x > last_x) | (first_y > last_y)));
   return MaskToBits<W>(nothing, l0);
 }
