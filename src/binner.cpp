@@ -46,7 +46,7 @@ void BinnedBatch::Add(const BinnedPrimitive& prim, const VertexView* v, const Re
   float* dst = vertices_.data() + p.first_float;
   for (int k = 0; k < n; ++k, dst += stride) {
     std::memcpy(dst, &v[k].win, sizeof(float) * 4);
-    std::memcpy(dst + 4, v[k].var, sizeof(float) * std::size_t(nvar_));
+    if (nvar_ > 0) std::memcpy(dst + 4, v[k].var, sizeof(float) * std::size_t(nvar_));  // (var may be null)
   }
   prims_.push_back(p);
   box_ = box_.Empty() ? box : Rect{std::min(box_.x0, box.x0), std::min(box_.y0, box.y0), std::max(box_.x1, box.x1),

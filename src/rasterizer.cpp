@@ -452,7 +452,7 @@ void RasterizeTriangle(const VertexView& v0, const VertexView& v1, const VertexV
     using F4 = V<4>::F;
     alignas(16) float a[3][kMaxVaryingFloats + 4];
     for (int k = 0; k < 3; ++k) {
-      std::memcpy(a[k], v[k]->var, sizeof(float) * std::size_t(nvar));
+      if (nvar > 0) std::memcpy(a[k], v[k]->var, sizeof(float) * std::size_t(nvar));  // (var may be null)
       std::memset(a[k] + nvar, 0, sizeof(float) * 4);  // the last group's unused lanes
     }
     for (int i = 0; i < nvar; i += 4) {
