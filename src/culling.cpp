@@ -99,18 +99,11 @@ SOFTGL_TARGET_AVX512 std::uint32_t DrawsNothingAvx512(const TriangleGroup& g, co
   return DrawsNothingGroup<16>(g, st);
 }
 #endif
-GroupFn ChooseDrawsNothing() {
-#if defined(SOFTGL_HAS_DISPATCH)
-  if (CpuSimdLevel() == SimdLevel::kAvx512) return DrawsNothingAvx512;
-  if (CpuSimdLevel() == SimdLevel::kAvx2) return DrawsNothingAvx2;
-#endif
-  return DrawsNothingBase;
-}
 
 }  // namespace
 
 std::uint32_t DrawsNothing(const TriangleGroup& group, const CullState& state) {
-  static const GroupFn fn = ChooseDrawsNothing();
+  static const GroupFn fn = SOFTGL_CHOOSE(DrawsNothing);
   return fn(group, state);
 }
 

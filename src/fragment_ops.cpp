@@ -497,13 +497,6 @@ void BlockOpsBase(const BlockOpsContext& ctx, int b) { BlockOps<4>(ctx, b); }
 SOFTGL_TARGET_AVX2 void BlockOpsAvx2(const BlockOpsContext& ctx, int b) { BlockOps<8>(ctx, b); }
 SOFTGL_TARGET_AVX512 void BlockOpsAvx512(const BlockOpsContext& ctx, int b) { BlockOps<16>(ctx, b); }
 #endif
-BlockOpsFn ChooseBlockOps() {
-#if defined(SOFTGL_HAS_DISPATCH)
-  if (CpuSimdLevel() == SimdLevel::kAvx512) return BlockOpsAvx512;
-  if (CpuSimdLevel() == SimdLevel::kAvx2) return BlockOpsAvx2;
-#endif
-  return BlockOpsBase;
-}
 
 // The early test on block b, W lanes at a time; returns its live lanes.
 template <int W>
@@ -531,19 +524,12 @@ SOFTGL_TARGET_AVX512 std::uint32_t EarlyBlockAvx512(Enum f, BlockBuffer& bb, con
   return EarlyBlock<16>(f, bb, t, b);
 }
 #endif
-EarlyBlockFn ChooseEarlyBlock() {
-#if defined(SOFTGL_HAS_DISPATCH)
-  if (CpuSimdLevel() == SimdLevel::kAvx512) return EarlyBlockAvx512;
-  if (CpuSimdLevel() == SimdLevel::kAvx2) return EarlyBlockAvx2;
-#endif
-  return EarlyBlockBase;
-}
 
 }  // namespace
 
 int EarlyDepthTest(const FragmentOpsState& state, BlockBuffer& blocks, const RenderTarget& target) {
   int live = 0;
-  static const EarlyBlockFn early = ChooseEarlyBlock();
+  static const EarlyBlockFn early = SOFTGL_CHOOSE(EarlyBlock);
   for (int b = 0; b < blocks.count; ++b) {
     if (target.depth && blocks.live[b]) {
       if (Inside(target, blocks, b)) {
@@ -579,7 +565,7 @@ void ApplyFragmentOps(const FragmentOpsState& state, const FragmentOpsPlan& plan
   ctx.blend = &plan.blend[0];
   std::uint64_t passed = 0;
   ctx.passed = state.occlusion[0] || state.occlusion[1] ? &passed : nullptr;
-  static const BlockOpsFn block_ops = ChooseBlockOps();
+  static const BlockOpsFn block_ops = SOFTGL_CHOOSE(BlockOps);
   for (int b = 0; b < blocks.count; ++b) {
     if (!blocks.live[b]) continue;
     if (plan.wide_target && Inside(target, blocks, b)) block_ops(ctx, b);

@@ -199,20 +199,6 @@ SOFTGL_TARGET_AVX512 void FragCoordOfBlockAvx512(BlockBuffer& blocks, int b) { F
 SOFTGL_TARGET_AVX2 void VaryingsOfBlockAvx2(BlockBuffer& blocks, int b) { VaryingsOfBlock<8>(blocks, b); }
 SOFTGL_TARGET_AVX512 void VaryingsOfBlockAvx512(BlockBuffer& blocks, int b) { VaryingsOfBlock<16>(blocks, b); }
 #endif
-BlockFn ChooseFragCoordOfBlock() {
-#if defined(SOFTGL_HAS_DISPATCH)
-  if (CpuSimdLevel() == SimdLevel::kAvx512) return FragCoordOfBlockAvx512;
-  if (CpuSimdLevel() == SimdLevel::kAvx2) return FragCoordOfBlockAvx2;
-#endif
-  return FragCoordOfBlockBase;
-}
-BlockFn ChooseVaryingsOfBlock() {
-#if defined(SOFTGL_HAS_DISPATCH)
-  if (CpuSimdLevel() == SimdLevel::kAvx512) return VaryingsOfBlockAvx512;
-  if (CpuSimdLevel() == SimdLevel::kAvx2) return VaryingsOfBlockAvx2;
-#endif
-  return VaryingsOfBlockBase;
-}
 
 // Coverage of one 8x8 region by a triangle, 64 bits in quad order: bit 4q + k is lane k (x % 2 + 2 (y % 2)) of the
 // region's quad q = (y / 2) * 4 + x / 2. Edge e's function at the region's pixel (ix, iy) is
@@ -270,13 +256,6 @@ std::uint64_t RegionCoverageBase(const RegionEdges& e) { return RegionCoverage<4
 SOFTGL_TARGET_AVX2 std::uint64_t RegionCoverageAvx2(const RegionEdges& e) { return RegionCoverage<8>(e); }
 SOFTGL_TARGET_AVX512 std::uint64_t RegionCoverageAvx512(const RegionEdges& e) { return RegionCoverage<16>(e); }
 #endif
-CoverageFn ChooseRegionCoverage() {
-#if defined(SOFTGL_HAS_DISPATCH)
-  if (CpuSimdLevel() == SimdLevel::kAvx512) return RegionCoverageAvx512;
-  if (CpuSimdLevel() == SimdLevel::kAvx2) return RegionCoverageAvx2;
-#endif
-  return RegionCoverageBase;
-}
 
 // The lanes (in RegionCoverage's order) of the region's pixels with ix in [x0, x1) and iy in [y0, y1), 0 <= x0, y0
 // and x1, y1 <= 8: from tables of the lanes left of each column and below each row.
@@ -484,7 +463,7 @@ void RasterizeTriangle(const VertexView& v0, const VertexView& v1, const VertexV
     return A[e] * (px * kOne + kHalf) + B[e] * (py * kOne + kHalf) + C[e];
   };
   const Rect& bounds = target.bounds;
-  static const CoverageFn region_coverage = ChooseRegionCoverage();
+  static const CoverageFn region_coverage = SOFTGL_CHOOSE(RegionCoverage);
   PlanesEntry entry;
   const OpenBlock open(blocks);
   // The quads of a region's coverage (RegionCoverage's order), each with its lanes.
@@ -711,12 +690,12 @@ void RasterizePoint(const WindowVertex& v, float size, bool front_facing, const 
 namespace softgl::detail {
 
 void InterpolateFragCoords(BlockBuffer& blocks) {
-  static const BlockFn frag_coord_of_block = ChooseFragCoordOfBlock();
+  static const BlockFn frag_coord_of_block = SOFTGL_CHOOSE(FragCoordOfBlock);
   for (int b = 0; b < blocks.count; ++b) frag_coord_of_block(blocks, b);
 }
 
 void InterpolateVaryings(BlockBuffer& blocks) {
-  static const BlockFn varyings_of_block = ChooseVaryingsOfBlock();
+  static const BlockFn varyings_of_block = SOFTGL_CHOOSE(VaryingsOfBlock);
   for (int b = 0; b < blocks.count; ++b)
     if (blocks.live[b]) varyings_of_block(blocks, b);
 }

@@ -4,6 +4,8 @@
 // so the choice changes speed, never results.
 #pragma once
 
+#include <softgl/lanes.h>  // SOFTGL_HAS_DISPATCH
+
 namespace softgl::detail {
 
 enum class SimdLevel : int {
@@ -16,4 +18,24 @@ enum class SimdLevel : int {
 /// the narrower paths on a wide processor). Read once.
 SimdLevel CpuSimdLevel();
 
+/// Of the three compiled forms of a wide function, the one for the processor (CpuSimdLevel).
+template <class Fn>
+Fn ForSimdLevel(Fn base, Fn avx2, Fn avx512) {
+  switch (CpuSimdLevel()) {
+    case SimdLevel::kAvx512: return avx512;
+    case SimdLevel::kAvx2: return avx2;
+    default: return base;
+  }
+}
+
 }  // namespace softgl::detail
+
+// The form of wide function NAME that the processor runs: NAMEAvx512, NAMEAvx2 or NAMEBase (the wider two exist
+// where SOFTGL_HAS_DISPATCH is defined, compiled with SOFTGL_TARGET_AVX512 and SOFTGL_TARGET_AVX2). A template's
+// arguments follow the name: SOFTGL_CHOOSE(Fn, <4>).
+#if defined(SOFTGL_HAS_DISPATCH)
+#define SOFTGL_CHOOSE(name, ...) \
+  ::softgl::detail::ForSimdLevel(name##Base __VA_ARGS__, name##Avx2 __VA_ARGS__, name##Avx512 __VA_ARGS__)
+#else
+#define SOFTGL_CHOOSE(name, ...) (name##Base __VA_ARGS__)
+#endif

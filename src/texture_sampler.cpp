@@ -416,19 +416,12 @@ SOFTGL_TARGET_AVX512 void SampleRepeatLanesAvx512(const TextureView& v, const Te
 }
 #endif
 
-template <int Bytes>
-SampleRepeatLanesFn ChooseSampleRepeatLanes() {
-#if defined(SOFTGL_HAS_DISPATCH)
-  if (detail::CpuSimdLevel() == detail::SimdLevel::kAvx512) return SampleRepeatLanesAvx512<Bytes>;
-  if (detail::CpuSimdLevel() == detail::SimdLevel::kAvx2) return SampleRepeatLanesAvx2<Bytes>;
-#endif
-  return SampleRepeatLanesBase<Bytes>;
-}
 
 // The vector path for an 8-bit view (null for other layouts).
 SampleRepeatLanesFn SampleRepeatLanesFor(TexelLayout layout) {
-  static const SampleRepeatLanesFn by_bytes[3] = {ChooseSampleRepeatLanes<1>(), ChooseSampleRepeatLanes<2>(),
-                                                  ChooseSampleRepeatLanes<4>()};
+  static const SampleRepeatLanesFn by_bytes[3] = {SOFTGL_CHOOSE(SampleRepeatLanes, <1>),
+                                                  SOFTGL_CHOOSE(SampleRepeatLanes, <2>),
+                                                  SOFTGL_CHOOSE(SampleRepeatLanes, <4>)};
   switch (layout) {
     case TexelLayout::kUnorm8x1: return by_bytes[0];
     case TexelLayout::kUnorm8x2: return by_bytes[1];
