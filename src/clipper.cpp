@@ -6,6 +6,9 @@
 #include <cstring>
 #include <utility>
 
+#include "simd.h"
+#include "wide.h"
+
 namespace softgl::detail {
 
 namespace {
@@ -67,6 +70,55 @@ unsigned ClipCodes(const glm::vec4& p, const ClipPlanes& planes) {
   for (int i = 0; i < kPlaneCount; ++i)
     if (Distance(i, p, planes) < 0.0f) codes |= 1u << i;
   return codes;
+}
+
+namespace {
+
+// ClipCodes of positions p[0 .. W - 1], W per instruction: the same distances, in the same float operations.
+template <int W>
+SOFTGL_WIDE void ClipCodesLanes(const glm::vec4* p, const ClipPlanes& planes, unsigned* codes) {
+  using F = typename V<W>::F;
+  using I = typename V<W>::I;
+  F xyzw[4];
+  LoadComponents<W>(p, xyzw);
+  const F x = xyzw[0], y = xyzw[1], z = xyzw[2], w = xyzw[3];
+  // Infinite or NaN: every exponent bit set.
+  const I exponent = I{} + 0x7F800000;
+  const I non_finite = ((I(x) & exponent) == exponent) | ((I(y) & exponent) == exponent) |
+                       ((I(z) & exponent) == exponent) | ((I(w) & exponent) == exponent);
+  const F gx = planes.guard_x * w, gy = planes.guard_y * w;
+  const I c = (I(x + gx < 0.0f) & std::int32_t(kClipLeft)) | (I(gx - x < 0.0f) & std::int32_t(kClipRight)) |
+              (I(y + gy < 0.0f) & std::int32_t(kClipBottom)) | (I(gy - y < 0.0f) & std::int32_t(kClipTop)) |
+              (I(z + w < 0.0f) & std::int32_t(kClipNear)) | (I(w - z < 0.0f) & std::int32_t(kClipFar)) |
+              (I(w - kMinW < 0.0f) & std::int32_t(kClipW));
+  StoreVec(codes, (non_finite & std::int32_t(kClipNonFinite)) | (~non_finite & c));
+}
+
+template <int W>
+SOFTGL_WIDE void ClipCodesOf(const glm::vec4* p, int n, const ClipPlanes& planes, unsigned* codes) {
+  int i = 0;
+  for (; i + W <= n; i += W) ClipCodesLanes<W>(p + i, planes, codes + i);
+  for (; i < n; ++i) codes[i] = ClipCodes(p[i], planes);
+}
+
+using ClipCodesFn = void (*)(const glm::vec4*, int, const ClipPlanes&, unsigned*);
+SOFTGL_TARGET_BASE void ClipCodesOfBase(const glm::vec4* p, int n, const ClipPlanes& planes, unsigned* codes) {
+  ClipCodesOf<4>(p, n, planes, codes);
+}
+#if defined(SOFTGL_HAS_DISPATCH)
+SOFTGL_TARGET_AVX2 void ClipCodesOfAvx2(const glm::vec4* p, int n, const ClipPlanes& planes, unsigned* codes) {
+  ClipCodesOf<8>(p, n, planes, codes);
+}
+SOFTGL_TARGET_AVX512 void ClipCodesOfAvx512(const glm::vec4* p, int n, const ClipPlanes& planes, unsigned* codes) {
+  ClipCodesOf<16>(p, n, planes, codes);
+}
+#endif
+
+}  // namespace
+
+void ClipCodesOfVertices(const glm::vec4* positions, int count, const ClipPlanes& planes, unsigned* codes) {
+  static const ClipCodesFn fn = SOFTGL_CHOOSE(ClipCodesOf);
+  fn(positions, count, planes, codes);
 }
 
 void ClipTriangle(const ClipVertex& a, const ClipVertex& b, const ClipVertex& c, int nvar,

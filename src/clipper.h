@@ -40,6 +40,9 @@ struct ClipPolygon {
 /// Bitmask of the planes that `p` is outside of (kClipNonFinite for NaN or infinite coordinates).
 unsigned ClipCodes(const glm::vec4& p, const ClipPlanes& planes);
 
+/// codes[i] = ClipCodes(positions[i], planes) for i < count, several positions per instruction.
+void ClipCodesOfVertices(const glm::vec4* positions, int count, const ClipPlanes& planes, unsigned* codes);
+
 /// Clips triangle (a, b, c) and writes the resulting convex polygon (0 or 3..kMaxPolygonVertices vertices) to out.
 void ClipTriangle(const ClipVertex& a, const ClipVertex& b, const ClipVertex& c, int nvar,
                   const ClipPlanes& planes, ClipPolygon& out);

@@ -116,24 +116,21 @@ void ShadeVertices(const DrawCall& call, const FetchPlan& fetch, const Program& 
       batch.varyings = out.varyings.data() + std::size_t(base) * out.nvar;
       batch.textures = textures;
       program.ShadeVertices(batch);
-      // Clip codes, and the window position of each vertex inside the guard band (the divide and viewport
-      // transform of ToWindow, done once per vertex rather than once per primitive using it).
-      for (int i = base; i < base + m; ++i) {
-        const glm::vec4& p = out.position[std::size_t(i)];
-        if (noperspective) {
-          float* v = out.varyings.data() + std::size_t(i) * out.nvar;
+      // Clip codes, and the window position of each vertex (the divide and viewport transform of ToWindow, done
+      // once per vertex rather than once per primitive using it), several vertices per instruction; the varyings
+      // divided by w for the vertices inside the guard band.
+      ClipCodesOfVertices(&out.position[std::size_t(base)], m, planes, &out.clip_codes[std::size_t(base)]);
+      WindowPositions(&out.position[std::size_t(base)], m, viewport, &out.window[std::size_t(base)]);
+      for (int i = base; out.nvar > 0 && i < base + m; ++i) {
+        const float w = out.position[std::size_t(i)].w;
+        float* __restrict v = out.varyings.data() + std::size_t(i) * out.nvar;
+        if (noperspective)
           for (int k = 0; k < out.nvar; ++k)
-            if (interpolation[k] == Interpolation::kNoPerspective) v[k] *= p.w;
-        }
-        out.clip_codes[std::size_t(i)] = ClipCodes(p, planes);
+            if (interpolation[k] == Interpolation::kNoPerspective) v[k] *= w;
         if (out.clip_codes[std::size_t(i)] != 0) continue;
-        const float oow = 1.0f / p.w;
-        out.window[std::size_t(i)] = glm::vec4(p.x * oow * viewport.scale.x + viewport.translate.x,
-                                               p.y * oow * viewport.scale.y + viewport.translate.y,
-                                               p.z * oow * viewport.scale.z + viewport.translate.z, oow);
-        const float* v = out.varyings.data() + std::size_t(i) * out.nvar;
-        float* w = out.window_varyings.data() + std::size_t(i) * out.nvar;
-        for (int k = 0; k < out.nvar; ++k) w[k] = v[k] * oow;
+        const float oow = out.window[std::size_t(i)].w;
+        float* __restrict win = out.window_varyings.data() + std::size_t(i) * out.nvar;
+        for (int k = 0; k < out.nvar; ++k) win[k] = v[k] * oow;
       }
     }
   });

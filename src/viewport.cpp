@@ -3,6 +3,9 @@
 
 #include <algorithm>
 
+#include "simd.h"
+#include "wide.h"
+
 namespace softgl::detail {
 
 ViewportTransform MakeViewportTransform(int x, int y, int width, int height, double n, double f) {
@@ -27,6 +30,56 @@ void ToWindow(const ClipVertex& in, int nvar, const ViewportTransform& vp, Windo
   out.win.z = in.pos.z * oow * vp.scale.z + vp.translate.z;
   out.win.w = oow;
   for (int i = 0; i < nvar; ++i) out.var[i] = in.var[i] * oow;
+}
+
+namespace {
+
+// ToWindow's position for p[0 .. W - 1], W per instruction: the same float operations in the same order.
+template <int W>
+SOFTGL_WIDE void WindowPositionLanes(const glm::vec4* p, const ViewportTransform& vp, glm::vec4* win) {
+  using F = typename V<W>::F;
+  F c[4];
+  LoadComponents<W>(p, c);
+  F x = c[0], y = c[1], z = c[2];
+  const F w = c[3];
+  const F oow = 1.0f / w;
+  x = x * oow * vp.scale.x + vp.translate.x;
+  y = y * oow * vp.scale.y + vp.translate.y;
+  z = z * oow * vp.scale.z + vp.translate.z;
+  for (int l = 0; l < W; ++l) win[l] = glm::vec4(x[l], y[l], z[l], oow[l]);
+}
+
+template <int W>
+SOFTGL_WIDE void WindowPositionsOf(const glm::vec4* p, int n, const ViewportTransform& vp, glm::vec4* win) {
+  int i = 0;
+  for (; i + W <= n; i += W) WindowPositionLanes<W>(p + i, vp, win + i);
+  if (i < n) {  // the last few through a padded copy
+    glm::vec4 in[W], out[W];
+    for (int l = 0; l < W; ++l) in[l] = p[std::min(i + l, n - 1)];
+    WindowPositionLanes<W>(in, vp, out);
+    for (int l = 0; i + l < n; ++l) win[i + l] = out[l];
+  }
+}
+
+using WindowPositionsFn = void (*)(const glm::vec4*, int, const ViewportTransform&, glm::vec4*);
+SOFTGL_TARGET_BASE void WindowPositionsOfBase(const glm::vec4* p, int n, const ViewportTransform& vp, glm::vec4* win) {
+  WindowPositionsOf<4>(p, n, vp, win);
+}
+#if defined(SOFTGL_HAS_DISPATCH)
+SOFTGL_TARGET_AVX2 void WindowPositionsOfAvx2(const glm::vec4* p, int n, const ViewportTransform& vp, glm::vec4* win) {
+  WindowPositionsOf<8>(p, n, vp, win);
+}
+SOFTGL_TARGET_AVX512 void WindowPositionsOfAvx512(const glm::vec4* p, int n, const ViewportTransform& vp,
+                                                  glm::vec4* win) {
+  WindowPositionsOf<16>(p, n, vp, win);
+}
+#endif
+
+}  // namespace
+
+void WindowPositions(const glm::vec4* clip, int count, const ViewportTransform& vp, glm::vec4* window) {
+  static const WindowPositionsFn fn = SOFTGL_CHOOSE(WindowPositionsOf);
+  fn(clip, count, vp, window);
 }
 
 }  // namespace softgl::detail

@@ -24,4 +24,8 @@ ClipPlanes GuardBandPlanes(const ViewportTransform& vp);
 /// Perspective divide then viewport mapping; varyings are divided by w for perspective-correct interpolation.
 void ToWindow(const ClipVertex& in, int nvar, const ViewportTransform& vp, WindowVertex& out);
 
+/// ToWindow's position (x, y, z in window space, then 1/w) of clip[i] for i < count, several per instruction.
+/// Positions with w = 0 or non-finite coordinates give non-finite results (callers use only the unclipped ones).
+void WindowPositions(const glm::vec4* clip, int count, const ViewportTransform& vp, glm::vec4* window);
+
 }  // namespace softgl::detail

@@ -94,6 +94,16 @@ __attribute__((target("avx512f,avx512dq"))) inline std::uint32_t MaskToBits<16>(
 }
 #endif
 
+/// The components of p[0 .. W - 1] as four vectors: c[0] the x of each, c[1] the y, c[2] the z, c[3] the w.
+template <int W>
+SOFTGL_WIDE void LoadComponents(const glm::vec4* p, typename V<W>::F (&c)[4]) {
+  for (int k = 0; k < 4; ++k) {
+    typename V<W>::F v{};
+    for (int l = 0; l < W; ++l) v[l] = p[l][k];
+    c[k] = v;
+  }
+}
+
 /// As std::floor, for |x| < 2^31 (callers keep x in range).
 template <int W>
 SOFTGL_WIDE typename V<W>::F FloorVec(typename V<W>::F x) {

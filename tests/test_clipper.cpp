@@ -2,7 +2,10 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <cstdint>
+#include <iterator>
 #include <limits>
+#include <vector>
 
 #include "clipper.h"
 
@@ -125,4 +128,38 @@ TEST_CASE("lines are clipped to the view volume", "[clipper]") {
   CHECK(b.var[0] == Approx(3.0f));
   CHECK_FALSE(ClipLine(V(2, 0, 0, 1), V(3, 0, 0, 1), 1, ClipPlanes{}, a, b));
   CHECK_FALSE(ClipLine(V(2, 0, 0, 1), V(0, 3, 0, 1), 1, ClipPlanes{}, a, b));  // passes outside the corner
+}
+
+TEST_CASE("clip codes of many vertices at once equal the one-vertex codes", "[clipper]") {
+  // Positions on and near every plane, beyond the guard band, at w = 0 and below kMinW, and with NaN or infinite
+  // coordinates in each component; counts that leave a remainder for every vector width.
+  const float inf = std::numeric_limits<float>::infinity(), nan = std::numeric_limits<float>::quiet_NaN();
+  const float values[] = {0.0f, -0.0f, 0.5f, -0.5f, 1.0f, -1.0f, 1.0000001f, -1.0000001f, 2.0f, -3.0f, 1e-7f,
+                          1e-6f, 3e4f, -3e4f, 1e30f, -1e30f, inf, -inf, nan};
+  std::vector<glm::vec4> p;
+  std::uint32_t seed = 7;
+  auto pick = [&] {
+    seed = seed * 1664525u + 1013904223u;
+    return values[(seed >> 8) % std::size(values)];
+  };
+  for (int i = 0; i < 4000; ++i) p.push_back(glm::vec4(pick(), pick(), pick(), pick()));
+  const ClipPlanes planes[] = {ClipPlanes{}, ClipPlanes{1.5f, 2.0f}};
+  for (const ClipPlanes& pl : planes) {
+    for (int count : {0, 1, 3, 7, 15, 17, 31, 4000}) {
+      std::vector<unsigned> codes(std::size_t(count) + 1, 0xDEADu);
+      ClipCodesOfVertices(p.data(), count, pl, codes.data());
+      int mismatches = 0;
+      for (int i = 0; i < count; ++i) mismatches += codes[std::size_t(i)] != ClipCodes(p[std::size_t(i)], pl);
+      CHECK(mismatches == 0);
+      CHECK(codes[std::size_t(count)] == 0xDEADu);  // nothing written past the end
+    }
+  }
+  // The known cases.
+  unsigned c[4];
+  const glm::vec4 known[4] = {{0, 0, 0, 1}, {2, 0, -2, 1}, {0, 0, 0, 0}, {0, nan, 0, 1}};
+  ClipCodesOfVertices(known, 4, ClipPlanes{}, c);
+  CHECK(c[0] == 0u);
+  CHECK(c[1] == (kClipRight | kClipNear));
+  CHECK(c[2] == kClipW);
+  CHECK(c[3] == kClipNonFinite);
 }
