@@ -31,9 +31,10 @@ bool IsCulled(bool front_facing, Enum cull_face) {
 namespace {
 
 template <int W>
-SOFTGL_WIDE std::uint32_t DrawsNothingLanes(const TriangleGroup& g, const CullState& st, int l0) {
+SOFTGL_WIDE void JudgeLanes(const TriangleGroup& g, const CullState& st, int l0, GroupVerdict& out) {
   using F = typename V<W>::F;
   using I = typename V<W>::I;
+  using U = typename V<W>::U;
   F x[3], y[3];
   for (int k = 0; k < 3; ++k) {
     x[k] = LoadVec<F>(g.x[k] + l0);
@@ -79,32 +80,54 @@ SOFTGL_WIDE std::uint32_t DrawsNothingLanes(const TriangleGroup& g, const CullSt
   first_y = max(first_y, by0);
   last_y = min(last_y, by1);
   nothing = nothing | (exact & ((first_x > last_x) | (first_y > last_y)));
-  return MaskToBits<W>(nothing, l0);
+  // The snapped area (SnappedArea), in 32 bits where the edges are shorter than 2^15 subpixels (128 pixels): each
+  // product is then below 2^30 in magnitude. Computed unsigned, so that longer edges wrap harmlessly.
+  const I dx1 = X[1] - X[0], dy1 = Y[1] - Y[0], dx2 = X[2] - X[0], dy2 = Y[2] - Y[0];
+  auto short_edge = [](I d) SOFTGL_WIDE_LAMBDA { return I(d < 32768) & I(d > -32768); };
+  const I small = exact & short_edge(dx1) & short_edge(dy1) & short_edge(dx2) & short_edge(dy2);
+  const U snapped_area = U(dx1) * U(dy2) - U(dx2) * U(dy1);
+  nothing = nothing | (small & I(snapped_area == 0u));
+  const I known = small & ~nothing;
+  out.nothing |= MaskToBits<W>(nothing, l0);
+  out.known |= MaskToBits<W>(known, l0);
+  out.front |= MaskToBits<W>(front, l0);
+  StoreVec(out.x0 + l0, first_x);
+  StoreVec(out.y0 + l0, first_y);
+  StoreVec(out.x1 + l0, last_x + 1);
+  StoreVec(out.y1 + l0, last_y + 1);
 }
 
 template <int W>
-SOFTGL_WIDE std::uint32_t DrawsNothingGroup(const TriangleGroup& g, const CullState& st) {
-  std::uint32_t bits = 0;
-  for (int l0 = 0; l0 < TriangleGroup::kSize; l0 += W) bits |= DrawsNothingLanes<W>(g, st, l0);
-  return g.count >= 32 ? bits : bits & ((std::uint32_t(1) << g.count) - 1);
+SOFTGL_WIDE void JudgeGroup(const TriangleGroup& g, const CullState& st, GroupVerdict& out) {
+  out.nothing = out.known = out.front = 0;
+  for (int l0 = 0; l0 < TriangleGroup::kSize; l0 += W) JudgeLanes<W>(g, st, l0, out);
+  const std::uint32_t used = g.count >= 32 ? ~0u : (std::uint32_t(1) << g.count) - 1;
+  out.nothing &= used;
+  out.known &= used;
 }
 
-using GroupFn = std::uint32_t (*)(const TriangleGroup&, const CullState&);
-std::uint32_t DrawsNothingBase(const TriangleGroup& g, const CullState& st) { return DrawsNothingGroup<4>(g, st); }
+using JudgeFn = void (*)(const TriangleGroup&, const CullState&, GroupVerdict&);
+void JudgeGroupBase(const TriangleGroup& g, const CullState& st, GroupVerdict& out) { JudgeGroup<4>(g, st, out); }
 #if defined(SOFTGL_HAS_DISPATCH)
-SOFTGL_TARGET_AVX2 std::uint32_t DrawsNothingAvx2(const TriangleGroup& g, const CullState& st) {
-  return DrawsNothingGroup<8>(g, st);
+SOFTGL_TARGET_AVX2 void JudgeGroupAvx2(const TriangleGroup& g, const CullState& st, GroupVerdict& out) {
+  JudgeGroup<8>(g, st, out);
 }
-SOFTGL_TARGET_AVX512 std::uint32_t DrawsNothingAvx512(const TriangleGroup& g, const CullState& st) {
-  return DrawsNothingGroup<16>(g, st);
+SOFTGL_TARGET_AVX512 void JudgeGroupAvx512(const TriangleGroup& g, const CullState& st, GroupVerdict& out) {
+  JudgeGroup<16>(g, st, out);
 }
 #endif
 
 }  // namespace
 
+void JudgeTriangles(const TriangleGroup& group, const CullState& state, GroupVerdict& verdict) {
+  static const JudgeFn fn = SOFTGL_CHOOSE(JudgeGroup);
+  fn(group, state, verdict);
+}
+
 std::uint32_t DrawsNothing(const TriangleGroup& group, const CullState& state) {
-  static const GroupFn fn = SOFTGL_CHOOSE(DrawsNothing);
-  return fn(group, state);
+  GroupVerdict verdict;
+  JudgeTriangles(group, state, verdict);
+  return verdict.nothing;
 }
 
 }  // namespace softgl::detail

@@ -34,11 +34,27 @@ struct CullState {
   Rect bounds;  // the draw's bounds (viewport, framebuffer, scissor)
 };
 
-/// Bit t set for each triangle t of the group that certainly draws nothing, decided 4, 8 or 16 triangles per
-/// instruction with the scalar path's own arithmetic: a zero or culled SignedArea (the same float operations), or
-/// no pixel centre inside `bounds` in the box of its vertices snapped to 1/256 pixel (as TriangleCentreBox
-/// snaps: exact here for coordinates below 16384 pixels, and a triangle beyond that is left unmarked). A triangle
-/// left unmarked goes through the scalar path, which decides the same way.
+/// What the scalar path decides for the triangles of a group, found 4, 8 or 16 triangles per instruction with its
+/// own arithmetic.
+struct GroupVerdict {
+  /// Bit t: triangle t certainly draws nothing. Its SignedArea (the same float operations) is zero or culled; or
+  /// its vertices snapped to 1/256 pixel (as TriangleCentreBox snaps: exact here for coordinates below 16384
+  /// pixels; a triangle beyond that is left unmarked) have no pixel centre inside `bounds` in their box, or, for a
+  /// triangle less than 128 pixels across, no area.
+  std::uint32_t nothing = 0;
+  /// Bit t: triangle t is not marked, is less than 128 pixels across and has its coordinates in the exact range;
+  /// then bit t of `front` is its facing (IsFrontFacing of its SignedArea), and x0..y1[t] its TriangleCentreBox.
+  std::uint32_t known = 0;
+  std::uint32_t front = 0;
+  std::int32_t x0[TriangleGroup::kSize], y0[TriangleGroup::kSize], x1[TriangleGroup::kSize], y1[TriangleGroup::kSize];
+  Rect Box(int t) const { return Rect{x0[t], y0[t], x1[t], y1[t]}; }
+};
+
+/// The verdict on each triangle of the group. A triangle left unmarked and unknown goes through the scalar path,
+/// which decides the same way.
+void JudgeTriangles(const TriangleGroup& group, const CullState& state, GroupVerdict& verdict);
+
+/// JudgeTriangles' `nothing`: bit t set for each triangle t of the group that certainly draws nothing.
 std::uint32_t DrawsNothing(const TriangleGroup& group, const CullState& state);
 
 }  // namespace softgl::detail

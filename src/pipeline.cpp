@@ -152,11 +152,13 @@ class PrimitiveRunner {
 
   void Point(std::uint32_t i) { Point(i, i, true); }
 
-  // Bit t set for each filled triangle v[t] (vertices 0 to 2) that certainly draws nothing: inside the guard band,
-  // and culled, of no area or covering no pixel centre (DrawsNothing, many triangles per instruction). Triangle()
-  // would drop each of them the same way; the others go through it.
-  std::uint32_t DrawsNothing(const std::uint32_t (*v)[4], int n) const {
-    if (state_.primitive.polygon_mode != FILL) return 0;
+  // The verdict on the filled triangles v[t] (vertices 0 to 2), t < n, that lie inside the guard band, many
+  // triangles per instruction (JudgeTriangles): bit t of `nothing` for those that certainly draw nothing (culled,
+  // of no area or covering no pixel centre); bit t of `known` for those whose facing and pixel box are decided
+  // there, to be binned by Known(). Triangle() would decide each of them the same way; the others go through it.
+  void Judge(const std::uint32_t (*v)[4], int n, GroupVerdict& verdict) const {
+    verdict.nothing = verdict.known = 0;
+    if (state_.primitive.polygon_mode != FILL) return;
     TriangleGroup group;
     group.count = n;
     std::uint32_t inside = 0;
@@ -170,7 +172,22 @@ class PrimitiveRunner {
         group.y[k][t] = w.y;
       }
     }
-    return inside ? detail::DrawsNothing(group, cull_) & inside : 0;
+    if (!inside) return;
+    JudgeTriangles(group, cull_, verdict);
+    verdict.nothing &= inside;
+    verdict.known &= flat_count_ == 0 ? inside : 0u;  // flat varyings take Triangle()'s copy
+  }
+
+  // A filled triangle inside the guard band, without flat varyings, whose facing and TriangleCentreBox (not empty)
+  // Judge() found.
+  void Known(std::uint32_t i0, std::uint32_t i1, std::uint32_t i2, bool front_facing, const Rect& box) {
+    const float* var = sv_.window_varyings.data();
+    const std::size_t nvar = std::size_t(sv_.nvar);
+    const VertexView view[3] = {VertexView(sv_.window[i0], var + std::size_t(i0) * nvar),
+                                VertexView(sv_.window[i1], var + std::size_t(i1) * nvar),
+                                VertexView(sv_.window[i2], var + std::size_t(i2) * nvar)};
+    front_ = front_facing;
+    BinTriangle(view, box);
   }
 
   // A line between shaded vertices i0 and i1 whose flat varyings come from vertex `provoking`.
@@ -358,8 +375,10 @@ void RecordChunk(const DrawCall& call, const FetchPlan& fetch, const DrawState& 
     // primitive).
     std::size_t q = per_instance ? std::size_t(job) * kBinJob % per_instance : 0;
     std::uint32_t shift = per_instance ? std::uint32_t(std::size_t(job) * kBinJob / per_instance) * unique : 0;
-    // In groups of up to 16 primitives: the triangles of a group that certainly draw nothing are found together.
+    // In groups of up to 16 primitives: the triangles of a group that certainly draw nothing, and the facing and
+    // pixel box of most others, are found together.
     std::uint32_t v[TriangleGroup::kSize][4];  // each primitive's vertices, then its provoking vertex
+    GroupVerdict verdict;
     for (std::size_t p = std::size_t(job) * kBinJob; p < end;) {
       int n = 0;
       for (; n < TriangleGroup::kSize && p < end; ++n, ++p, ++q) {
@@ -373,9 +392,13 @@ void RecordChunk(const DrawCall& call, const FetchPlan& fetch, const DrawState& 
         for (int k = 0; k < per; ++k) v[n][k] = map[idx[i + std::size_t(k)]] + shift;
         v[n][3] = map[idx[provoking]] + shift;
       }
-      const std::uint32_t nothing = per == 3 ? runner->DrawsNothing(v, n) : 0;
+      if (per == 3) runner->Judge(v, n, verdict);
       for (int t = 0; t < n; ++t) {
-        if ((nothing >> t) & 1u) continue;
+        if ((verdict.nothing >> t) & 1u) continue;
+        if ((verdict.known >> t) & 1u) {
+          runner->Known(v[t][0], v[t][1], v[t][2], (verdict.front >> t) & 1u, verdict.Box(t));
+          continue;
+        }
         switch (per) {
           case 1: runner->Point(v[t][0]); break;
           case 2: runner->Line(v[t][0], v[t][1], v[t][3]); break;

@@ -78,15 +78,17 @@ TEST_CASE("gl_FrontFacing reaches the fragment stage", "[culling]") {
   CHECK_FALSE(shader.samples.at({3, 3}).front_facing);  // clockwise
 }
 
-TEST_CASE("a group of triangles: those marked as drawing nothing are those the scalar path drops", "[culling]") {
+TEST_CASE("a group of triangles: those marked as drawing nothing are those the scalar path drops, and the known "
+          "ones have the scalar path's facing and box", "[culling]") {
   // Random triangles from slivers to hundreds of pixels, both windings, some far out (beyond 16384 pixels the
   // group leaves the box test to the scalar path), under every cull state and a bounds rectangle. A marked
   // triangle must be one the scalar path drops (culled, no area, or TriangleCentreBox empty); and the group must
-  // find nearly all of those, or the test would pass with a group that marks nothing.
+  // find nearly all of those, or the test would pass with a group that marks nothing. A triangle marked known must
+  // be drawn, with the facing and TriangleCentreBox of the scalar path; and nearly all small drawn ones are known.
   std::mt19937 rng(3);
   std::uniform_real_distribution<float> unit(0.0f, 1.0f);
   const Enum faces[] = {BACK, FRONT, FRONT_AND_BACK};
-  int marked = 0, dropped = 0;
+  int marked = 0, dropped = 0, known = 0, small_drawn = 0;
   for (int round = 0; round < 600; ++round) {
     CullState st;
     st.cull_enabled = round % 4 != 0;
@@ -108,10 +110,17 @@ TEST_CASE("a group of triangles: those marked as drawing nothing are those the s
       if (t % 5 == 4) {  // a degenerate one: vertex 2 on vertex 1
         g.x[2][t] = g.x[1][t];
         g.y[2][t] = g.y[1][t];
+      } else if (t % 7 == 6) {  // of some area in float, none once snapped: vertex 2 within 1/1024 of vertex 1
+        g.x[2][t] = g.x[1][t] + 1.0f / 1024.0f;
+        g.y[2][t] = g.y[1][t] - 1.0f / 2048.0f;
       }
     }
     const std::uint32_t bits = DrawsNothing(g, st);
     CHECK((bits >> g.count) == 0u);
+    GroupVerdict verdict;
+    JudgeTriangles(g, st, verdict);
+    CHECK(verdict.nothing == bits);
+    CHECK((verdict.known >> g.count) == 0u);
     for (int t = 0; t < g.count; ++t) {
       const WindowVertex v[3] = {W(g.x[0][t], g.y[0][t]), W(g.x[1][t], g.y[1][t]), W(g.x[2][t], g.y[2][t])};
       const float area = SignedArea(v, 3);
@@ -122,8 +131,18 @@ TEST_CASE("a group of triangles: those marked as drawing nothing are those the s
       REQUIRE((!mark || nothing));
       marked += mark;
       dropped += nothing;
+      if ((verdict.known >> t) & 1u) {
+        REQUIRE(!nothing);
+        CHECK(bool((verdict.front >> t) & 1u) == IsFrontFacing(area, st.front_face));
+        const Rect box = TriangleCentreBox(v[0].win, v[1].win, v[2].win, st.bounds), got = verdict.Box(t);
+        CHECK((got.x0 == box.x0 && got.y0 == box.y0 && got.x1 == box.x1 && got.y1 == box.y1));
+        ++known;
+      }
+      small_drawn += !nothing && size < 100.0f && far == 0.0f;
     }
   }
   CHECK(marked > 1000);
   CHECK(marked >= dropped * 9 / 10);
+  CHECK(small_drawn > 200);
+  CHECK(known >= small_drawn);
 }
