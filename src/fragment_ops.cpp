@@ -527,8 +527,8 @@ SOFTGL_TARGET_AVX512 std::uint32_t EarlyBlockAvx512(Enum f, BlockBuffer& bb, con
 
 }  // namespace
 
-int EarlyDepthTest(const FragmentOpsState& state, BlockBuffer& blocks, const RenderTarget& target) {
-  int live = 0;
+bool EarlyDepthTest(const FragmentOpsState& state, BlockBuffer& blocks, const RenderTarget& target) {
+  std::uint32_t live = 0;
   static const EarlyBlockFn early = SOFTGL_CHOOSE(EarlyBlock);
   for (int b = 0; b < blocks.count; ++b) {
     if (target.depth && blocks.live[b]) {
@@ -545,9 +545,9 @@ int EarlyDepthTest(const FragmentOpsState& state, BlockBuffer& blocks, const Ren
         }
       }
     }
-    live += __builtin_popcount(blocks.live[b]);
+    live |= blocks.live[b];
   }
-  return live;
+  return live != 0;
 }
 
 void ApplyFragmentOps(const FragmentOpsState& state, const FragmentOpsPlan& plan, const BlockBuffer& blocks,

@@ -126,8 +126,8 @@ bool EarlyDepthTestApplies(const FragmentOpsState& state, bool shader_writes_dep
 
 /// The early depth test: clears the live bit of every lane whose interpolated depth (frag_coord.z, clamped as the
 /// late test clamps it) fails against the depth buffer. Writes nothing; the late test runs as usual after the
-/// shader. Returns the number of live lanes left.
-int EarlyDepthTest(const FragmentOpsState& state, BlockBuffer& blocks, const RenderTarget& target);
+/// shader. Returns whether any lane is left live.
+bool EarlyDepthTest(const FragmentOpsState& state, BlockBuffer& blocks, const RenderTarget& target);
 
 /// Runs the per-fragment operations for every live lane of `blocks` (after the fragment shader has written its
 /// colours, and its depth when `shader_depth`, and cleared discarded lanes) into the buffers of `target`.

@@ -57,7 +57,7 @@ struct FragmentStage {
 
   static void Run(void* user, BlockBuffer& blocks) {
     const auto* self = static_cast<const FragmentStage*>(user);
-    if (self->draw->early_depth && EarlyDepthTest(self->draw->ops, blocks, *self->target) == 0) return;
+    if (self->draw->early_depth && !EarlyDepthTest(self->draw->ops, blocks, *self->target)) return;
     InterpolateVaryings(blocks);
     BlockBatch batch;
     batch.count = blocks.count;
