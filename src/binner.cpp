@@ -26,7 +26,7 @@ void BinnedBatch::Reset(int nvar) {
   nvar_ = nvar;
   prims_.clear();
   prim_tiles_.clear();
-  vertices_.clear();
+  vertices_used_ = 0;
   shared_.clear();
   large_.clear();
   notes_.clear();
@@ -39,11 +39,14 @@ void BinnedBatch::Add(const BinnedPrimitive& prim, const VertexView* v, const Re
   if (box.Empty()) return;
   const auto index = std::uint32_t(prims_.size());
   BinnedPrimitive p = prim;
-  p.first_float = std::uint32_t(vertices_.size());
+  p.first_float = vertices_used_;
   p.index = index;
-  const int n = int(prim.kind), stride = 4 + nvar_;
-  vertices_.resize(vertices_.size() + std::size_t(n) * std::size_t(stride));
-  float* dst = vertices_.data() + p.first_float;
+  const int n = int(prim.kind);
+  const std::size_t stride = 4 + std::size_t(nvar_), need = std::size_t(n) * stride;
+  if (vertices_used_ + need > vertices_.size())  // grows by doubling; not cleared between batches
+    vertices_.resize(std::max(vertices_.size() * 2, vertices_used_ + need));
+  float* dst = vertices_.data() + vertices_used_;
+  vertices_used_ += std::uint32_t(need);
   for (int k = 0; k < n; ++k, dst += stride) {
     std::memcpy(dst, &v[k].win, sizeof(float) * 4);
     if (nvar_ > 0) std::memcpy(dst + 4, v[k].var, sizeof(float) * std::size_t(nvar_));  // (var may be null)
@@ -51,8 +54,15 @@ void BinnedBatch::Add(const BinnedPrimitive& prim, const VertexView* v, const Re
   prims_.push_back(p);
   box_ = box_.Empty() ? box : Rect{std::min(box_.x0, box.x0), std::min(box_.y0, box.y0), std::max(box_.x1, box.x1),
                                    std::max(box_.y1, box.y1)};
-  const int tx0 = box.x0 / kTileSize, tx1 = (box.x1 - 1) / kTileSize;
-  const int ty0 = box.y0 / kTileSize, ty1 = (box.y1 - 1) / kTileSize;
+  // The box lies inside the framebuffer: its coordinates are not negative.
+  const auto tile_of = [](int pixel) { return int(unsigned(pixel) / unsigned(kTileSize)); };
+  const int tx0 = tile_of(box.x0), tx1 = tile_of(box.x1 - 1);
+  const int ty0 = tile_of(box.y0), ty1 = tile_of(box.y1 - 1);
+  if (tx0 == tx1 && ty0 == ty1) {  // one tile, as most are
+    prim_tiles_.push_back(1);
+    notes_.push_back(std::uint64_t(ty0 * grid.cols + tx0) << 32 | index);
+    return;
+  }
   const auto tiles = std::uint32_t((tx1 - tx0 + 1) * (ty1 - ty0 + 1));
   prim_tiles_.push_back(tiles);
   if (tiles > kListedTiles) {  // in the list of large primitives, not in the tiles' lists
@@ -107,7 +117,7 @@ void BinnedBatch::Finish(const TileGrid& grid) {
     fill[std::size_t(int(n >> 32) - lo)] += size_of(prim);
   }
   notes_.clear();
-  vertices_.clear();
+  vertices_used_ = 0;
 }
 
 void BinnedBatch::Vertex(const float* vertices, int k, WindowVertex& out) const {

@@ -132,7 +132,8 @@ class BinnedBatch {
   int nvar_ = 0;
   std::vector<BinnedPrimitive> prims_;      // in submission order
   std::vector<std::uint32_t> prim_tiles_;   // how many tiles each primitive touches
-  std::vector<float> vertices_;
+  std::vector<float> vertices_;             // the primitives' vertices, vertices_used_ floats of it
+  std::uint32_t vertices_used_ = 0;
   std::vector<float> shared_;               // the vertices of primitives over more than kInlineTiles tiles
   std::vector<std::uint64_t> notes_;        // tile << 32 | primitive, in submission order
   int tile_lo_ = 0;                         // the first tile with a list (in grid order)
