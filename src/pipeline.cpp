@@ -26,10 +26,11 @@ void ShadeVertices(const DrawCall& call, const FetchPlan& fetch, const Program& 
   const int count = call.count;
   auto& to_shade = s.shade_indices;
   auto& map = s.element_to_shaded;
-  to_shade.clear();
-  map.resize(std::size_t(count));
+  // Both only grow (growing fills with zeros, which every draw would otherwise pay for again).
+  if (to_shade.size() < std::size_t(count)) to_shade.resize(std::size_t(count));
+  if (map.size() < std::size_t(count)) map.resize(std::size_t(count));
+  int unique = count;  // the vertices to shade: to_shade[0 .. unique)
   if (call.elements == nullptr) {
-    to_shade.resize(std::size_t(count));
     for (int i = 0; i < count; ++i) {
       to_shade[i] = call.first + std::uint32_t(i);
       map[i] = std::uint32_t(i);
@@ -40,32 +41,32 @@ void ShadeVertices(const DrawCall& call, const FetchPlan& fetch, const Program& 
     if (range <= std::max<std::uint64_t>(std::uint64_t(count) * 8, std::uint64_t(1) << 16)) {
       // Each distinct index shaded once, in the order of first use: a table over the index range gives each
       // vertex its slot (a large mesh drawn in pieces has indices spread over the whole mesh in every piece).
+      // The table holds kUnseen between draws: only the entries a draw set are reset after it.
       constexpr std::uint32_t kUnseen = 0xFFFFFFFFu;
       auto& slot = s.first_use;
-      slot.assign(std::size_t(range), kUnseen);
-      to_shade.resize(std::size_t(count));
-      std::uint32_t unique = 0;
+      if (slot.size() < range) slot.resize(std::size_t(range), kUnseen);
+      std::uint32_t seen = 0;
       const std::uint32_t low = *lo;
       std::uint32_t* shade = to_shade.data();
       for (int i = 0; i < count; ++i) {
         const std::uint32_t e = call.elements[i];
         std::uint32_t& k = slot[e - low];
         if (k == kUnseen) {
-          k = unique;
-          shade[unique++] = e;
+          k = seen;
+          shade[seen++] = e;
         }
         map[i] = k;
       }
-      to_shade.resize(unique);
+      for (std::uint32_t j = 0; j < seen; ++j) slot[shade[j] - low] = kUnseen;
+      unique = int(seen);
     } else {  // indices spread far apart: shade per element
-      to_shade.assign(call.elements, call.elements + count);
+      std::copy(call.elements, call.elements + count, to_shade.begin());
       for (int i = 0; i < count; ++i) map[i] = std::uint32_t(i);
     }
   }
 
   // An instanced piece shades the vertices once per instance: shaded vertex j is vertex to_shade[j % unique] of
   // instance call.instance + j / unique.
-  const int unique = int(to_shade.size());
   const int n = unique * call.instances;
   ShadedVertices& out = s.shaded;
   out.count = n;
