@@ -300,8 +300,11 @@ bool EarlyDepthTestApplies(const FragmentOpsState& state, bool shader_writes_dep
 
 namespace {
 
-// Whether a block's quads lie inside the target, so that whole quads of it can be read and written.
+// Whether a block's quads lie inside the target, so that whole quads of it can be read and written. Always, when
+// the target's width and height are even: a quad starts at even coordinates, at a pixel inside the target (its
+// unused places repeat its first quad's).
 bool Inside(const RenderTarget& t, const BlockBuffer& bb, int b) {
+  if (((t.width | t.height) & 1) == 0) return true;
   for (int q = 0; q < 4; ++q)
     if (bb.qx[b][q] + 2 > t.width || bb.qy[b][q] + 2 > t.height) return false;
   return true;
