@@ -498,9 +498,9 @@ void RecordDraw(const DrawCall& call, const FetchPlan& fetch, const DrawState& s
   if (call.restart_count > 0) return RecordRestartRuns(call, fetch, state, packet, target, frame, pool, scratch);
 
   // A large draw goes through in pieces of at most kDrawChunk vertices, so that memory stays bounded whatever the
-  // count. Each piece is an explicit element list of the draw's own vertex indices (gl_VertexID is kept); strips
-  // overlap by the vertices their primitives share, with an even step so that strip triangles keep their winding;
-  // fans repeat vertex 0; a loop's closing segment is drawn last as a line.
+  // count. Each piece is an explicit element list of the draw's own vertex indices (gl_VertexID is kept), or for
+  // DrawArrays a range of them; strips overlap by the vertices their primitives share, with an even step so that
+  // strip triangles keep their winding; fans repeat vertex 0; a loop's closing segment is drawn last as a line.
   auto element = [&](std::int64_t k) { return call.elements ? call.elements[k] : call.first + std::uint32_t(k); };
   const std::int64_t count = call.count;
   Enum piece_mode = call.mode;
@@ -525,16 +525,19 @@ void RecordDraw(const DrawCall& call, const FetchPlan& fetch, const DrawState& s
     if (call.mode == TRIANGLE_FAN) piece.push_back(element(0));
     const std::int64_t room = kDrawChunk - std::int64_t(piece.size());
     const std::int64_t stop = std::min(count, s + room);
-    if (call.elements) {
-      piece.insert(piece.end(), call.elements + s, call.elements + stop);
-    } else {
-      for (std::int64_t k = s; k < stop; ++k) piece.push_back(call.first + std::uint32_t(k));
-    }
     DrawCall sub;
     sub.instance = call.instance;
     sub.mode = piece_mode;
-    sub.count = int(piece.size());
-    sub.elements = piece.data();
+    if (!call.elements && piece.empty()) {  // consecutive vertices: a DrawArrays piece of its own
+      sub.first = call.first + std::uint32_t(s);
+      sub.count = int(stop - s);
+    } else {
+      if (call.elements) piece.insert(piece.end(), call.elements + s, call.elements + stop);
+      else
+        for (std::int64_t k = s; k < stop; ++k) piece.push_back(call.first + std::uint32_t(k));
+      sub.count = int(piece.size());
+      sub.elements = piece.data();
+    }
     RecordPiece(sub, fetch, state, packet, target, frame, pool, scratch);
     if (s + room >= count) break;
   }

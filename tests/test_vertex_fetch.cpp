@@ -258,4 +258,45 @@ TEST_CASE("an indexed draw fetches and shades each distinct index once", "[verte
   CHECK(gl.GetError() == NO_ERROR);
   CHECK(calls == 100);
   for (int i = 0; i < 300; ++i) CHECK(per_vertex[std::size_t(i)] == (i % 3 == 0 ? 1 : 0));
+  // Again, then with every index moved by one: the table of first uses starts empty for each draw.
+  gl.DrawElement(TRIANGLES, int(indices.size()), UNSIGNED_INT, 0);
+  for (std::uint32_t& i : indices) ++i;
+  gl.BufferData(ELEMENT_ARRAY_BUFFER, std::ptrdiff_t(indices.size() * 4), indices.data());
+  gl.DrawElement(TRIANGLES, int(indices.size()), UNSIGNED_INT, 0);
+  gl.Finish();
+  CHECK(calls == 300);
+  for (int i = 0; i < 300; ++i) CHECK(per_vertex[std::size_t(i)] == (i % 3 == 0 ? 2 : i % 3 == 1 ? 1 : 0));
+}
+
+TEST_CASE("a DrawArrays larger than a piece shades each of its vertices once, with its own gl_VertexID",
+          "[vertex_fetch]") {
+  struct Counting : softgl::Shader<Counting, testing::NoVaryings> {
+    std::vector<std::atomic<int>>* per_vertex = nullptr;
+    void Vertex(const VertexIn& in, VertexOut<testing::NoVaryings>& out) const {
+      ++(*per_vertex)[std::size_t(in.vertex_id)];
+      out.position = glm::vec4(2.0f, 2.0f, 0.0f, 1.0f);  // outside: only the shading is counted
+    }
+    bool Fragment(const FragmentIn<testing::NoVaryings>&, FragmentOut& out) const {
+      out.color[0] = glm::vec4(1.0f);
+      return true;
+    }
+  };
+  constexpr int kFirst = 7, kCount = 120000;  // more than two pieces
+  std::vector<std::atomic<int>> per_vertex(kFirst + kCount + 8);
+  Counting shader;
+  shader.per_vertex = &per_vertex;
+  Context gl(8, 8);
+  gl.UseProgram(shader);
+  testing::MakeVertexArray(gl, std::vector<glm::vec4>(std::size_t(kFirst + kCount + 8), glm::vec4(0.0f)));
+  for (Enum mode : {TRIANGLES, POINTS}) {
+    gl.DrawArrays(mode, kFirst, kCount);
+    gl.Finish();
+    CHECK(gl.GetError() == NO_ERROR);
+    int wrong = 0;
+    for (int i = 0; i < kFirst + kCount + 8; ++i) {
+      const bool drawn = i >= kFirst && i < kFirst + kCount;
+      wrong += per_vertex[std::size_t(i)].exchange(0) != (drawn ? 1 : 0);
+    }
+    CHECK(wrong == 0);
+  }
 }
