@@ -144,8 +144,10 @@ void ToClipVertex(const ShadedVertices& sv, std::uint32_t i, ClipVertex& out) {
 
 class PrimitiveRunner {
  public:
-  PrimitiveRunner(const DrawState& state, const ShadedVertices& sv, BinnedBatch& bins, const TileGrid& grid)
-      : state_(state), sv_(sv), bins_(bins), grid_(grid), planes_(GuardBandPlanes(state.viewport)),
+  PrimitiveRunner(const DrawState& state, const ShadedVertices& sv, BinnedBatch& bins, const TileGrid& grid,
+                  PrimitiveScratch& mem)
+      : state_(state), sv_(sv), bins_(bins), grid_(grid), clip_(mem.clip), poly_(mem.poly), win_(mem.win),
+        planes_(GuardBandPlanes(state.viewport)),
         cull_{state.primitive.cull_enabled, state.primitive.cull_face, state.primitive.front_face, state.bounds} {
     for (int k = 0; state.interpolation && k < sv.nvar; ++k)
       if (state.interpolation[k] == Interpolation::kFlat) flat_[flat_count_++] = k;
@@ -331,15 +333,15 @@ class PrimitiveRunner {
   const ShadedVertices& sv_;
   BinnedBatch& bins_;
   const TileGrid& grid_;
+  ClipVertex (&clip_)[4];  // the worker's PrimitiveScratch
+  ClipPolygon& poly_;
+  WindowVertex (&win_)[kMaxPolygonVertices];
   ClipPlanes planes_;
   CullState cull_;
   float depth_offset_ = 0.0f;
   bool front_ = true;  // facing of the polygon in win_
-  ClipVertex clip_[4];
-  ClipPolygon poly_;
   int flat_[kMaxVaryingFloats];  // the varyings that are flat
   int flat_count_ = 0;
-  WindowVertex win_[kMaxPolygonVertices];
 };
 
 }  // namespace
@@ -368,9 +370,11 @@ void RecordChunk(const DrawCall& call, const FetchPlan& fetch, const DrawState& 
   const auto& idx = prims.indices;
   const TileGrid& grid = frame.Grid();
   const bool first = state.primitive.provoking_first;
-  pool.Run(jobs, [&](int job, int) {
+  while (scratch.primitive.size() < std::size_t(pool.Threads()))
+    scratch.primitive.push_back(std::make_unique<PrimitiveScratch>());
+  pool.Run(jobs, [&](int job, int worker) {
     BinnedBatch& bins = *packet.batches[first_batch + std::size_t(job)];
-    auto runner = std::make_unique<PrimitiveRunner>(state, scratch.shaded, bins, grid);
+    PrimitiveRunner runner(state, scratch.shaded, bins, grid, *scratch.primitive[std::size_t(worker)]);
     const std::size_t end = std::min(count, std::size_t(job + 1) * kBinJob);
     // Primitive p is primitive q of instance g: q and the instance's shift advance with p (no division per
     // primitive).
@@ -393,17 +397,17 @@ void RecordChunk(const DrawCall& call, const FetchPlan& fetch, const DrawState& 
         for (int k = 0; k < per; ++k) v[n][k] = map[idx[i + std::size_t(k)]] + shift;
         v[n][3] = map[idx[provoking]] + shift;
       }
-      if (per == 3) runner->Judge(v, n, verdict);
+      if (per == 3) runner.Judge(v, n, verdict);
       for (int t = 0; t < n; ++t) {
         if ((verdict.nothing >> t) & 1u) continue;
         if ((verdict.known >> t) & 1u) {
-          runner->Known(v[t][0], v[t][1], v[t][2], (verdict.front >> t) & 1u, verdict.Box(t));
+          runner.Known(v[t][0], v[t][1], v[t][2], (verdict.front >> t) & 1u, verdict.Box(t));
           continue;
         }
         switch (per) {
-          case 1: runner->Point(v[t][0]); break;
-          case 2: runner->Line(v[t][0], v[t][1], v[t][3]); break;
-          default: runner->Triangle(v[t][0], v[t][1], v[t][2], v[t][3]); break;
+          case 1: runner.Point(v[t][0]); break;
+          case 2: runner.Line(v[t][0], v[t][1], v[t][3]); break;
+          default: runner.Triangle(v[t][0], v[t][1], v[t][2], v[t][3]); break;
         }
       }
     }

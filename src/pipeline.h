@@ -72,6 +72,13 @@ struct VertexScratch {
   std::vector<int> vertex_ids;
 };
 
+/// Memory one worker thread reuses while clipping and binning primitives.
+struct PrimitiveScratch {
+  ClipVertex clip[4];
+  ClipPolygon poly;
+  WindowVertex win[kMaxPolygonVertices];
+};
+
 /// Per-context memory reused from draw to draw, so that drawing allocates only when a draw is bigger than any
 /// before it.
 struct Scratch {
@@ -84,6 +91,7 @@ struct Scratch {
   ShadedVertices shaded;
   Primitives primitives;
   std::vector<VertexScratch> vertex;  // per worker
+  std::vector<std::unique_ptr<PrimitiveScratch>> primitive;  // per worker
   std::vector<TileScratch> tiles;     // per worker
 };
 
