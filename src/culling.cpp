@@ -100,7 +100,7 @@ SOFTGL_WIDE void JudgeLanes(const TriangleGroup& g, const CullState& st, int l0,
 template <int W>
 SOFTGL_WIDE void JudgeGroup(const TriangleGroup& g, const CullState& st, GroupVerdict& out) {
   out.nothing = out.known = out.front = 0;
-  for (int l0 = 0; l0 < TriangleGroup::kSize; l0 += W) JudgeLanes<W>(g, st, l0, out);
+  for (int l0 = 0; l0 < g.count; l0 += W) JudgeLanes<W>(g, st, l0, out);  // the vectors holding triangles
   const std::uint32_t used = g.count >= 32 ? ~0u : (std::uint32_t(1) << g.count) - 1;
   out.nothing &= used;
   out.known &= used;
