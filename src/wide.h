@@ -94,13 +94,40 @@ __attribute__((target("avx512f,avx512dq"))) inline std::uint32_t MaskToBits<16>(
 }
 #endif
 
-/// The components of p[0 .. W - 1] as four vectors: c[0] the x of each, c[1] the y, c[2] the z, c[3] the w.
+/// The components of p[0 .. W - 1] as four vectors: c[0] the x of each, c[1] the y, c[2] the z, c[3] the w. With 4
+/// and 8 lanes, 4x4 transposes by shuffles (within each 128-bit half for 8); with 16, lane by lane.
 template <int W>
 SOFTGL_WIDE void LoadComponents(const glm::vec4* p, typename V<W>::F (&c)[4]) {
-  for (int k = 0; k < 4; ++k) {
-    typename V<W>::F v{};
-    for (int l = 0; l < W; ++l) v[l] = p[l][k];
-    c[k] = v;
+  using F = typename V<W>::F;
+  if constexpr (W == 4) {
+    const F r0 = LoadVec<F>(&p[0]), r1 = LoadVec<F>(&p[1]), r2 = LoadVec<F>(&p[2]), r3 = LoadVec<F>(&p[3]);
+    const F t0 = __builtin_shufflevector(r0, r1, 0, 4, 1, 5), t1 = __builtin_shufflevector(r2, r3, 0, 4, 1, 5);
+    const F t2 = __builtin_shufflevector(r0, r1, 2, 6, 3, 7), t3 = __builtin_shufflevector(r2, r3, 2, 6, 3, 7);
+    c[0] = __builtin_shufflevector(t0, t1, 0, 1, 4, 5);
+    c[1] = __builtin_shufflevector(t0, t1, 2, 3, 6, 7);
+    c[2] = __builtin_shufflevector(t2, t3, 0, 1, 4, 5);
+    c[3] = __builtin_shufflevector(t2, t3, 2, 3, 6, 7);
+  } else if constexpr (W == 8) {
+    // Pairs of positions: a = (p0, p1), b = (p2, p3), d = (p4, p5), e = (p6, p7); then (p0, p4), (p1, p5), ...
+    const F a = LoadVec<F>(&p[0]), b = LoadVec<F>(&p[2]), d = LoadVec<F>(&p[4]), e = LoadVec<F>(&p[6]);
+    const F r04 = __builtin_shufflevector(a, d, 0, 1, 2, 3, 8, 9, 10, 11);
+    const F r15 = __builtin_shufflevector(a, d, 4, 5, 6, 7, 12, 13, 14, 15);
+    const F r26 = __builtin_shufflevector(b, e, 0, 1, 2, 3, 8, 9, 10, 11);
+    const F r37 = __builtin_shufflevector(b, e, 4, 5, 6, 7, 12, 13, 14, 15);
+    const F t0 = __builtin_shufflevector(r04, r15, 0, 8, 1, 9, 4, 12, 5, 13);
+    const F t1 = __builtin_shufflevector(r26, r37, 0, 8, 1, 9, 4, 12, 5, 13);
+    const F t2 = __builtin_shufflevector(r04, r15, 2, 10, 3, 11, 6, 14, 7, 15);
+    const F t3 = __builtin_shufflevector(r26, r37, 2, 10, 3, 11, 6, 14, 7, 15);
+    c[0] = __builtin_shufflevector(t0, t1, 0, 1, 8, 9, 4, 5, 12, 13);
+    c[1] = __builtin_shufflevector(t0, t1, 2, 3, 10, 11, 6, 7, 14, 15);
+    c[2] = __builtin_shufflevector(t2, t3, 0, 1, 8, 9, 4, 5, 12, 13);
+    c[3] = __builtin_shufflevector(t2, t3, 2, 3, 10, 11, 6, 7, 14, 15);
+  } else {
+    for (int k = 0; k < 4; ++k) {
+      F v{};
+      for (int l = 0; l < W; ++l) v[l] = p[l][k];
+      c[k] = v;
+    }
   }
 }
 
