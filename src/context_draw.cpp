@@ -31,16 +31,12 @@ void ContextState::Draw(const detail::DrawCall& call) {
 
   // The fragment stage's state, captured now: the shader's uniforms (a copy), the textures of every unit resolved
   // once, the per-fragment operations.
-  detail::DrawPacket packet;
+  // (The context's own packet, reused from draw to draw: every field is set here, the views of the bound units
+  // only, and what it holds is released at the end.)
+  detail::DrawPacket& packet = draw_packet;
   for (int u = 0; u < kMaxTextureUnits; ++u) {
-    if (units[u].tex_2d) {
-      packet.views[0][u] = detail::MakeView(*units[u].tex_2d);
-      packet.textures.unit_2d[u] = &packet.views[0][u];
-    }
-    if (units[u].cube) {
-      packet.views[1][u] = detail::MakeView(*units[u].cube);
-      packet.textures.unit_cube[u] = &packet.views[1][u];
-    }
+    packet.textures.unit_2d[u] = units[u].tex_2d ? &(packet.views[0][u] = detail::MakeView(*units[u].tex_2d)) : nullptr;
+    packet.textures.unit_cube[u] = units[u].cube ? &(packet.views[1][u] = detail::MakeView(*units[u].cube)) : nullptr;
   }
   packet.ops = ops;
   for (int k = 0; k < 2; ++k)  // the active occlusion queries count this draw's fragments
@@ -78,7 +74,10 @@ void ContextState::Draw(const detail::DrawCall& call) {
     SetError(OUT_OF_MEMORY, __func__, "out of memory (recorded draws not yet rendered are dropped)");
   }
   // A shader that cannot be copied is used as it is: render before the caller can change it.
-  if (!packet.snapshot) Sync(__func__);
+  const bool copied = packet.snapshot != nullptr;
+  packet.snapshot.reset();
+  for (auto& o : packet.occlusion) o.reset();
+  if (!copied) Sync(__func__);
 }
 
 namespace {

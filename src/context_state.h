@@ -180,6 +180,7 @@ struct ContextState {
   detail::Scratch scratch;
   std::unique_ptr<detail::WorkerPool> pool;
   detail::Frame frame;  // recorded clears and draws, not yet rendered
+  detail::DrawPacket draw_packet;  // Draw's prototype of the packets it records
 
   Context::DebugCallback debug_callback;
 

@@ -29,6 +29,7 @@ struct StencilFace {
   Enum dpfail = KEEP;                      // stencil passes, depth fails
   Enum dppass = KEEP;                      // both pass (or depth test disabled)
   std::uint32_t write_mask = 0xFFFFFFFFu;  // StencilMask
+  bool operator==(const StencilFace&) const = default;
 };
 
 struct BlendState {
@@ -36,6 +37,7 @@ struct BlendState {
   Enum eq_rgb = FUNC_ADD, eq_alpha = FUNC_ADD;
   Enum src_rgb = ONE, dst_rgb = ZERO, src_alpha = ONE, dst_alpha = ZERO;
   glm::vec4 color{0.0f};  // BlendColor
+  bool operator==(const BlendState&) const = default;
 };
 
 /// Fragments that passed every test while an occlusion query (SAMPLES_PASSED, ANY_SAMPLES_PASSED) was active;
@@ -53,6 +55,7 @@ struct FragmentOpsState {
   bool depth_write = true;
   BlendState blend;
   bool color_mask[4] = {true, true, true, true};
+  bool operator==(const FragmentOpsState&) const = default;
 };
 
 /// Whether `a` passes comparison `func` against `b` (a func b): the depth test compares incoming to stored, the

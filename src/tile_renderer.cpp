@@ -20,11 +20,10 @@ DrawPacket& DrawPacket::operator=(const DrawPacket& other) {
   shader_depth = other.shader_depth;
   early_depth = other.early_depth;
   for (int k = 0; k < 2; ++k) occlusion[k] = other.occlusion[k];
-  for (int k = 0; k < 2; ++k)
-    for (int u = 0; u < kMaxTextureUnits; ++u) views[k][u] = other.views[k][u];
+  // Only the views of the units in use: the others are never read.
   for (int u = 0; u < kMaxTextureUnits; ++u) {
-    textures.unit_2d[u] = other.textures.unit_2d[u] ? &views[0][u] : nullptr;
-    textures.unit_cube[u] = other.textures.unit_cube[u] ? &views[1][u] : nullptr;
+    textures.unit_2d[u] = other.textures.unit_2d[u] ? &(views[0][u] = other.views[0][u]) : nullptr;
+    textures.unit_cube[u] = other.textures.unit_cube[u] ? &(views[1][u] = other.views[1][u]) : nullptr;
   }
   batches.clear();
   return *this;
@@ -53,7 +52,7 @@ struct FragmentStage {
   const RenderTarget* target;
   int outputs;  // colour outputs the target keeps
   int simd;
-  FragmentOpsPlan plan;
+  const FragmentOpsPlan* plan;
 
   static void Run(void* user, BlockBuffer& blocks) {
     const auto* self = static_cast<const FragmentStage*>(user);
@@ -70,7 +69,7 @@ struct FragmentStage {
     batch.out = blocks.out;
     batch.textures = &self->draw->textures;
     self->draw->program->ShadeBlocks(batch);
-    ApplyFragmentOps(self->draw->ops, self->plan, blocks, self->draw->shader_depth, *self->target);
+    ApplyFragmentOps(self->draw->ops, *self->plan, blocks, self->draw->shader_depth, *self->target);
   }
 };
 
@@ -98,7 +97,7 @@ void Frame::AddClear(const RenderTarget& target, const ClearPacket& clear) {
 }
 
 void Frame::ListLastDraw() {
-  const DrawPacket& draw = *draws_.back();
+  const DrawPacket& draw = *draws_[draws_used_ - 1];
   const auto index = std::uint32_t(commands_.size() - 1);
   Rect box;  // the union of the batches' boxes: only the tiles under it can have anything
   for (const BinnedBatch* b : draw.batches) {
@@ -123,10 +122,12 @@ void Frame::ListLastDraw() {
 
 DrawPacket& Frame::AddDraw(const RenderTarget& target, const DrawPacket& proto) {
   Begin(target);
-  draws_.push_back(std::make_unique<DrawPacket>(proto));
+  if (draws_used_ == draws_.size()) draws_.push_back(std::make_unique<DrawPacket>());
+  DrawPacket& packet = *draws_[draws_used_++];
+  packet = proto;
   bytes_ += sizeof(DrawPacket);
-  commands_.push_back(Command{true, draws_.size() - 1});
-  return *draws_.back();
+  commands_.push_back(Command{true, draws_used_ - 1});
+  return packet;
 }
 
 BinnedBatch& Frame::NewBatch(int nvar) {
@@ -139,7 +140,17 @@ BinnedBatch& Frame::NewBatch(int nvar) {
 void Frame::Reset() {
   commands_.clear();
   for (auto& list : tile_commands_) list.clear();
-  draws_.clear();
+  // Keep the packets (and their lists of batches) for the next frame, but not what they refer to: the shader
+  // copies and query counters go now.
+  for (std::size_t i = 0; i < draws_used_; ++i) {
+    DrawPacket& d = *draws_[i];
+    d.snapshot.reset();
+    d.program = nullptr;
+    for (auto& o : d.occlusion) o.reset();
+    d.batches.clear();
+  }
+  draws_used_ = 0;
+  if (draws_.size() > kKeptDraws) draws_.resize(kKeptDraws);
   clears_.clear();
   // Keep the batches' memory for the next frame, but not an unusually large amount of it.
   for (std::size_t i = 0; i < batches_.size(); ++i) {
@@ -158,6 +169,8 @@ void Frame::RenderTile(int tile, TileScratch& scratch) const {
     if (target_.color[o].Present()) outputs = o + 1;
   const int simd = int(CpuSimdLevel());
   WindowVertex v[3];
+  FragmentOpsPlan plan;  // for the operations at `planned`
+  const FragmentOpsState* planned = nullptr;
   for (const std::uint32_t ci : tile_commands_[std::size_t(tile)]) {
     const Command& c = commands_[ci];
     if (!c.draw) {
@@ -175,7 +188,11 @@ void Frame::RenderTile(int tile, TileScratch& scratch) const {
     rt.nvar = draw.nvar;
     rt.interpolation = draw.interpolation;
     if (rt.bounds.Empty()) continue;
-    FragmentStage stage{&draw, &target_, outputs, simd, PlanFragmentOps(draw.ops, target_)};
+    if (!planned || !(draw.ops == *planned)) {  // consecutive draws mostly share their operations
+      plan = PlanFragmentOps(draw.ops, target_);
+      planned = &draw.ops;
+    }
+    FragmentStage stage{&draw, &target_, outputs, simd, &plan};
     const BlockSink sink{&FragmentStage::Run, &stage};
     blocks.count = 0;
     for (const BinnedBatch* batch : draw.batches) {

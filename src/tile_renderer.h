@@ -95,7 +95,9 @@ class Frame {
   TileGrid grid_;
   std::vector<Command> commands_;
   std::vector<std::vector<std::uint32_t>> tile_commands_;  // per tile: the commands touching it, in order
-  std::vector<std::unique_ptr<DrawPacket>> draws_;
+  std::vector<std::unique_ptr<DrawPacket>> draws_;  // draws_used_ of them recorded, the others kept for reuse
+  std::size_t draws_used_ = 0;
+  static constexpr std::size_t kKeptDraws = 4096;  // packets kept from frame to frame, at most
   std::vector<ClearPacket> clears_;
   std::vector<std::unique_ptr<BinnedBatch>> batches_;
   std::size_t batches_used_ = 0;

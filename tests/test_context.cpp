@@ -1578,3 +1578,30 @@ TEST_CASE("Delete*s, GetDoublev and Flush", "[context]") {
   gl.ReadPixel(0, 0, px);
   CHECK(px[0] == 255);
 }
+
+namespace {
+
+// SolidShader with a member whose use count tells how many copies of the shader are alive.
+struct HeldShader : softgl::Shader<HeldShader, testing::NoVaryings> {
+  std::shared_ptr<int> held = std::make_shared<int>(0);
+  void Vertex(const VertexIn& in, VertexOut<testing::NoVaryings>& out) const { out.position = in.attrib[0]; }
+  bool Fragment(const FragmentIn<testing::NoVaryings>&, FragmentOut& out) const {
+    out.color[0] = glm::vec4(1.0f);
+    return true;
+  }
+};
+
+}  // namespace
+
+TEST_CASE("the copies of a shader taken at draws live until the frame is rendered", "[context]") {
+  Context gl(8, 8);
+  HeldShader shader;
+  gl.UseProgram(shader);
+  MakeVertexArray(gl, {{-1, -1, 0, 1}, {1, -1, 0, 1}, {-1, 1, 0, 1}});
+  for (int frame = 0; frame < 3; ++frame) {  // the context reuses its draw records from frame to frame
+    for (int k = 0; k < 5; ++k) gl.DrawArrays(TRIANGLES, 0, 3);
+    CHECK(shader.held.use_count() == 6);  // one copy per recorded draw
+    CHECK(CountLit(gl) > 0);
+    CHECK(shader.held.use_count() == 1);  // all released by the rendering
+  }
+}
