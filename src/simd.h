@@ -19,6 +19,12 @@ enum class SimdLevel : int {
 SimdLevel CpuSimdLevel();
 
 /// Of the three compiled forms of a wide function, the one for the processor (CpuSimdLevel).
+///
+/// A unit's AVX-512 form may run 8 lanes rather than 16. GCC 12 compiles a comparison of 16-lane (64-byte) vectors
+/// inside an always-inlined helper lane by lane (a compare, a set and an insert per lane) before the helper is
+/// inlined into the AVX-512 function; 32-byte vectors are compiled whole. Where a unit compares in its helpers
+/// (clip codes, the triangle-group verdict, the per-fragment operations), its AVX-512 form takes 8 lanes, with
+/// the AVX-512 instruction set. The generated code was checked function by function (instruction counts).
 template <class Fn>
 Fn ForSimdLevel(Fn base, Fn avx2, Fn avx512) {
   switch (CpuSimdLevel()) {

@@ -69,9 +69,10 @@ SOFTGL_TARGET_BASE void WindowPositionsOfBase(const glm::vec4* p, int n, const V
 SOFTGL_TARGET_AVX2 void WindowPositionsOfAvx2(const glm::vec4* p, int n, const ViewportTransform& vp, glm::vec4* win) {
   WindowPositionsOf<8>(p, n, vp, win);
 }
+// 8 lanes on AVX-512 too: with 16, LoadComponents gathers the positions lane by lane.
 SOFTGL_TARGET_AVX512 void WindowPositionsOfAvx512(const glm::vec4* p, int n, const ViewportTransform& vp,
                                                   glm::vec4* win) {
-  WindowPositionsOf<16>(p, n, vp, win);
+  WindowPositionsOf<8>(p, n, vp, win);
 }
 #endif
 
