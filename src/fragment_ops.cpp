@@ -524,8 +524,9 @@ std::uint32_t EarlyBlockBase(Enum f, BlockBuffer& bb, const RenderTarget& t, int
 SOFTGL_TARGET_AVX2 std::uint32_t EarlyBlockAvx2(Enum f, BlockBuffer& bb, const RenderTarget& t, int b) {
   return EarlyBlock<8>(f, bb, t, b);
 }
+// 8 lanes on AVX-512 too, with its instruction set: measured faster than 16 on the bench scenes (docs/performance.md).
 SOFTGL_TARGET_AVX512 std::uint32_t EarlyBlockAvx512(Enum f, BlockBuffer& bb, const RenderTarget& t, int b) {
-  return EarlyBlock<16>(f, bb, t, b);
+  return EarlyBlock<8>(f, bb, t, b);
 }
 #endif
 

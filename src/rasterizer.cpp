@@ -195,9 +195,10 @@ void FragCoordOfBlockBase(BlockBuffer& blocks, int b) { FragCoordOfBlock<4>(bloc
 void VaryingsOfBlockBase(BlockBuffer& blocks, int b) { VaryingsOfBlock<4>(blocks, b); }
 #if defined(SOFTGL_HAS_DISPATCH)
 SOFTGL_TARGET_AVX2 void FragCoordOfBlockAvx2(BlockBuffer& blocks, int b) { FragCoordOfBlock<8>(blocks, b); }
-SOFTGL_TARGET_AVX512 void FragCoordOfBlockAvx512(BlockBuffer& blocks, int b) { FragCoordOfBlock<16>(blocks, b); }
+// 8 lanes on AVX-512 too, with its instruction set: measured faster than 16 on the bench scenes (docs/performance.md).
+SOFTGL_TARGET_AVX512 void FragCoordOfBlockAvx512(BlockBuffer& blocks, int b) { FragCoordOfBlock<8>(blocks, b); }
 SOFTGL_TARGET_AVX2 void VaryingsOfBlockAvx2(BlockBuffer& blocks, int b) { VaryingsOfBlock<8>(blocks, b); }
-SOFTGL_TARGET_AVX512 void VaryingsOfBlockAvx512(BlockBuffer& blocks, int b) { VaryingsOfBlock<16>(blocks, b); }
+SOFTGL_TARGET_AVX512 void VaryingsOfBlockAvx512(BlockBuffer& blocks, int b) { VaryingsOfBlock<8>(blocks, b); }
 #endif
 
 // Coverage of one 8x8 region by a triangle, 64 bits in quad order: bit 4q + k is lane k (x % 2 + 2 (y % 2)) of the
@@ -254,7 +255,8 @@ using CoverageFn = std::uint64_t (*)(const RegionEdges&);
 std::uint64_t RegionCoverageBase(const RegionEdges& e) { return RegionCoverage<4>(e); }
 #if defined(SOFTGL_HAS_DISPATCH)
 SOFTGL_TARGET_AVX2 std::uint64_t RegionCoverageAvx2(const RegionEdges& e) { return RegionCoverage<8>(e); }
-SOFTGL_TARGET_AVX512 std::uint64_t RegionCoverageAvx512(const RegionEdges& e) { return RegionCoverage<16>(e); }
+// 8 lanes on AVX-512 too, with its instruction set: measured faster than 16 on the bench scenes (docs/performance.md).
+SOFTGL_TARGET_AVX512 std::uint64_t RegionCoverageAvx512(const RegionEdges& e) { return RegionCoverage<8>(e); }
 #endif
 
 // The lanes (in RegionCoverage's order) of the region's pixels with ix in [x0, x1) and iy in [y0, y1), 0 <= x0, y0

@@ -25,6 +25,9 @@ SimdLevel CpuSimdLevel();
 /// inlined into the AVX-512 function; 32-byte vectors are compiled whole. Where a unit compares in its helpers
 /// (clip codes, the triangle-group verdict, the per-fragment operations), its AVX-512 form takes 8 lanes, with
 /// the AVX-512 instruction set. The generated code was checked function by function (instruction counts).
+/// The rasterizer's wide units and the early depth test take 8 lanes there too: measured, they ran faster than
+/// with 16 on every bench scene but blended fill (docs/performance.md). The texture sampler keeps 16 (its gathers
+/// gain from them).
 template <class Fn>
 Fn ForSimdLevel(Fn base, Fn avx2, Fn avx512) {
   switch (CpuSimdLevel()) {
