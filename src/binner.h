@@ -9,6 +9,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -62,31 +63,63 @@ class BinnedBatch {
   /// Builds the per-tile lists; call once, after the last Add.
   void Finish(const TileGrid& grid);
 
+  /// Where a walk of one tile's primitives stands (ForEachInTile below), kept between calls for the same tile.
+  struct Cursor {
+    bool started = false;
+    std::uint32_t at = 0, end = 0;  // in tile_data_
+    std::size_t large = 0;          // next in large_
+  };
   /// Walks the primitives of `tile` in order: fn(const BinnedPrimitive&, const float* vertices), the vertices
   /// being `kind` runs of 4 + nvar floats (window position, then varyings).
   template <class Fn>
   void ForEachInTile(int tile, const Rect& tile_rect, Fn&& fn) const {
-    const auto [begin, finish] = List(tile);
-    const float* p = tile_data_.data() + begin;
-    const float* end = tile_data_.data() + finish;
-    std::size_t g = 0;  // next large primitive
+    Cursor cursor;
+    ForEachInTile(tile, tile_rect, cursor, 0, ~0u, fn);
+  }
+  /// The same walk, of the primitives with indices lo .. hi only, going on from `cursor` and leaving it after
+  /// them: consecutive calls for increasing ranges walk the tile once (the draws sharing a batch).
+  template <class Fn>
+  void ForEachInTile(int tile, const Rect& tile_rect, Cursor& cursor, std::uint32_t lo, std::uint32_t hi,
+                     Fn&& fn) const {
+    if (!cursor.started) {
+      std::tie(cursor.at, cursor.end) = List(tile);
+      cursor.started = true;
+    }
+    const float* base = tile_data_.data();
     for (;;) {
       BinnedPrimitive prim;
-      if (p < end) std::memcpy(static_cast<void*>(&prim), p, sizeof prim);
-      const std::uint32_t listed = p < end ? prim.index : ~0u;
-      if (g < large_.size() && large_[g].prim.index < listed) {  // a large primitive comes first
-        const Large& l = large_[g++];
-        if (Overlap(l.box, tile_rect)) fn(l.prim, shared_.data() + l.prim.first_float);
+      const bool listed = cursor.at < cursor.end;
+      if (listed) std::memcpy(static_cast<void*>(&prim), base + cursor.at, sizeof prim);
+      const std::uint32_t next = listed ? prim.index : ~0u;
+      if (cursor.large < large_.size() && large_[cursor.large].prim.index < next) {  // a large primitive first
+        const Large& l = large_[cursor.large];
+        if (l.prim.index >= hi) return;
+        ++cursor.large;
+        if (l.prim.index >= lo && Overlap(l.box, tile_rect)) fn(l.prim, shared_.data() + l.prim.first_float);
         continue;
       }
-      if (p >= end) break;
-      p += kHeaderFloats;
-      if (prim.shared) {
-        fn(prim, shared_.data() + prim.first_float);
-      } else {
-        fn(prim, p);
-        p += int(prim.kind) * (4 + nvar_);
-      }
+      if (!listed || next >= hi) return;
+      const float* p = base + cursor.at + kHeaderFloats;
+      cursor.at += kHeaderFloats + (prim.shared ? 0u : std::uint32_t(int(prim.kind) * (4 + nvar_)));
+      if (next < lo) continue;
+      fn(prim, prim.shared ? shared_.data() + prim.first_float : p);
+    }
+  }
+  /// How far the batch is filled: what TilesSince() walks from.
+  struct Mark {
+    std::size_t notes = 0, large = 0;
+    std::uint32_t primitives = 0;
+  };
+  Mark Position() const { return Mark{notes_.size(), large_.size(), std::uint32_t(prims_.size())}; }
+  /// Calls fn(tile) for each tile the primitives added since `mark` touch (a tile may come more than once);
+  /// before Finish().
+  template <class Fn>
+  void TilesSince(const Mark& mark, const TileGrid& grid, Fn&& fn) const {
+    for (std::size_t n = mark.notes; n < notes_.size(); ++n) fn(int(notes_[n] >> 32));
+    for (std::size_t g = mark.large; g < large_.size(); ++g) {
+      const Rect& b = large_[g].box;
+      for (int ty = b.y0 / kTileSize; ty <= (b.y1 - 1) / kTileSize; ++ty)
+        for (int tx = b.x0 / kTileSize; tx <= (b.x1 - 1) / kTileSize; ++tx) fn(ty * grid.cols + tx);
     }
   }
   /// Whether ForEachInTile(tile, tile_rect, ...) may call its function at all: the tile's list is not empty, or a
@@ -97,6 +130,7 @@ class BinnedBatch {
       if (Overlap(l.box, tile_rect)) return true;
     return false;
   }
+  int Nvar() const { return nvar_; }
   /// The union of the boxes of the primitives added (pixels; empty when none was).
   const Rect& Box() const { return box_; }
   /// Copies vertex k of the run at `vertices` into a WindowVertex.

@@ -9,7 +9,7 @@ namespace softgl {
 // ---- Drawing -------------------------------------------------------------------------------------------------
 
 void ContextState::Draw(const detail::DrawCall& call) {
-  detail::FetchPlan plan;
+  detail::FetchPlan& plan = fetch_plan;  // every field a fetch reads is set here
   for (int i = 0; i < kMaxVertexAttribs; ++i) {
     const AttribBinding& a = vao->attrib[i];
     detail::AttribSource& src = plan.attrib[i];
@@ -34,10 +34,12 @@ void ContextState::Draw(const detail::DrawCall& call) {
   // (The context's own packet, reused from draw to draw: every field is set here, the views of the bound units
   // only, and what it holds is released at the end.)
   detail::DrawPacket& packet = draw_packet;
+  detail::DrawTextures& tex = draw_textures;
   for (int u = 0; u < kMaxTextureUnits; ++u) {
-    packet.textures.unit_2d[u] = units[u].tex_2d ? &(packet.views[0][u] = detail::MakeView(*units[u].tex_2d)) : nullptr;
-    packet.textures.unit_cube[u] = units[u].cube ? &(packet.views[1][u] = detail::MakeView(*units[u].cube)) : nullptr;
+    tex.textures.unit_2d[u] = units[u].tex_2d ? &(tex.views[0][u] = detail::MakeView(*units[u].tex_2d)) : nullptr;
+    tex.textures.unit_cube[u] = units[u].cube ? &(tex.views[1][u] = detail::MakeView(*units[u].cube)) : nullptr;
   }
+  packet.textures = &tex.textures;
   packet.ops = ops;
   for (int k = 0; k < 2; ++k)  // the active occlusion queries count this draw's fragments
     if (active_query[k]) {
@@ -50,7 +52,7 @@ void ContextState::Draw(const detail::DrawCall& call) {
 
   detail::DrawState ds;
   ds.program = program;
-  ds.textures = &packet.textures;
+  ds.textures = &tex.textures;
   ds.interpolation = packet.interpolation;
   ds.viewport = detail::MakeViewportTransform(viewport[0], viewport[1], viewport[2], viewport[3], depth_near,
                                               depth_far);

@@ -180,7 +180,9 @@ struct ContextState {
   detail::Scratch scratch;
   std::unique_ptr<detail::WorkerPool> pool;
   detail::Frame frame;  // recorded clears and draws, not yet rendered
+  detail::FetchPlan fetch_plan;  // Draw's resolution of the vertex array (a disabled attribute: its current value)
   detail::DrawPacket draw_packet;  // Draw's prototype of the packets it records
+  detail::DrawTextures draw_textures;  // the prototype's textures: the bound units resolved at the last draw
 
   Context::DebugCallback debug_callback;
 

@@ -364,8 +364,12 @@ void RecordChunk(const DrawCall& call, const FetchPlan& fetch, const DrawState& 
   if (state.primitives_generated) *state.primitives_generated += count;
   const std::uint32_t unique = std::uint32_t(scratch.shaded.count / call.instances);
   const int jobs = int((count + kBinJob - 1) / kBinJob);
-  const std::size_t first_batch = packet.batches.size();
-  for (int j = 0; j < jobs; ++j) packet.batches.push_back(&frame.NewBatch(scratch.shaded.nvar));
+  if (jobs == 0) return;
+  // A draw of one job's primitives goes into a batch shared with the small draws before it; a larger one into
+  // batches of its own, one per job.
+  const bool shared = jobs == 1;
+  BinnedBatch* shared_batch = shared ? &frame.SharedBatch(scratch.shaded.nvar) : nullptr;
+  if (!shared) frame.NewBatches(jobs, scratch.shaded.nvar);
   const auto& map = scratch.element_to_shaded;
   const auto& idx = prims.indices;
   const TileGrid& grid = frame.Grid();
@@ -373,7 +377,7 @@ void RecordChunk(const DrawCall& call, const FetchPlan& fetch, const DrawState& 
   while (scratch.primitive.size() < std::size_t(pool.Threads()))
     scratch.primitive.push_back(std::make_unique<PrimitiveScratch>());
   pool.Run(jobs, [&](int job, int worker) {
-    BinnedBatch& bins = *packet.batches[first_batch + std::size_t(job)];
+    BinnedBatch& bins = shared ? *shared_batch : frame.Batch(packet, job);
     PrimitiveRunner runner(state, scratch.shaded, bins, grid, *scratch.primitive[std::size_t(worker)]);
     const std::size_t end = std::min(count, std::size_t(job + 1) * kBinJob);
     // Primitive p is primitive q of instance g: q and the instance's shift advance with p (no division per
@@ -411,9 +415,13 @@ void RecordChunk(const DrawCall& call, const FetchPlan& fetch, const DrawState& 
         }
       }
     }
-    bins.Finish(grid);
+    if (!shared) bins.Finish(grid);
   });
-  for (int j = 0; j < jobs; ++j) frame.AddBytes(packet.batches[first_batch + std::size_t(j)]->Bytes());
+  if (shared) {
+    frame.EndShared();
+    return;
+  }
+  for (int j = 0; j < jobs; ++j) frame.AddBytes(frame.Batch(packet, j).Bytes());
 }
 
 // Records one piece of a draw as its own command (a copy of the prototype packet), rendering the frame first

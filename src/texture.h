@@ -101,6 +101,7 @@ struct TextureView {
   // comparison.
   enum class Fast : unsigned char { kNone, kRepeatLinear, kRepeatTrilinear };
   Fast fast = Fast::kNone;
+  bool operator==(const TextureView&) const = default;
 };
 
 /// Resolves a texture for sampling (OpenGL 4.6, section 8.17, texture completeness).

@@ -9,24 +9,24 @@
 
 namespace softgl::detail {
 
-DrawPacket& DrawPacket::operator=(const DrawPacket& other) {
-  if (this == &other) return *this;
-  snapshot = other.snapshot;
-  program = other.program;
-  ops = other.ops;
-  bounds = other.bounds;
-  nvar = other.nvar;
-  interpolation = other.interpolation;
-  shader_depth = other.shader_depth;
-  early_depth = other.early_depth;
-  for (int k = 0; k < 2; ++k) occlusion[k] = other.occlusion[k];
-  // Only the views of the units in use: the others are never read.
-  for (int u = 0; u < kMaxTextureUnits; ++u) {
-    textures.unit_2d[u] = other.textures.unit_2d[u] ? &(views[0][u] = other.views[0][u]) : nullptr;
-    textures.unit_cube[u] = other.textures.unit_cube[u] ? &(views[1][u] = other.views[1][u]) : nullptr;
+bool DrawTextures::Any(const Textures& t) {
+  for (int u = 0; u < kMaxTextureUnits; ++u)
+    if (t.unit_2d[u] || t.unit_cube[u]) return true;
+  return false;
+}
+
+bool DrawTextures::Same(const Textures& t) const {
+  const auto same = [](const TextureView* a, const TextureView* b) { return a ? b && *a == *b : !b; };
+  for (int u = 0; u < kMaxTextureUnits; ++u)
+    if (!same(textures.unit_2d[u], t.unit_2d[u]) || !same(textures.unit_cube[u], t.unit_cube[u])) return false;
+  return true;
+}
+
+void DrawTextures::CopyFrom(const Textures& t) {
+  for (int u = 0; u < kMaxTextureUnits; ++u) {  // only the views of the units in use: the others are never read
+    textures.unit_2d[u] = t.unit_2d[u] ? &(views[0][u] = *t.unit_2d[u]) : nullptr;
+    textures.unit_cube[u] = t.unit_cube[u] ? &(views[1][u] = *t.unit_cube[u]) : nullptr;
   }
-  batches.clear();
-  return *this;
 }
 
 namespace {
@@ -67,7 +67,7 @@ struct FragmentStage {
     batch.frag_coord = &blocks.frag_coord[0][0][0];
     batch.live = blocks.live;
     batch.out = blocks.out;
-    batch.textures = &self->draw->textures;
+    batch.textures = self->draw->textures;
     self->draw->program->ShadeBlocks(batch);
     ApplyFragmentOps(self->draw->ops, *self->plan, blocks, self->draw->shader_depth, *self->target);
   }
@@ -90,18 +90,26 @@ void Frame::AddClear(const RenderTarget& target, const ClearPacket& clear) {
   commands_.push_back(Command{false, clears_.size() - 1});
   const auto index = std::uint32_t(commands_.size() - 1);
   for (int t = 0; t < grid_.Count(); ++t)
-    if (!Intersect(clear.area, grid_.TileRect(t)).Empty()) {
-      tile_commands_[std::size_t(t)].push_back(index);
-      bytes_ += sizeof(index);
-    }
+    if (!Intersect(clear.area, grid_.TileRect(t)).Empty()) List(t, index);
+}
+
+void Frame::List(int tile, std::uint32_t index) {
+  std::vector<std::uint32_t>& list = tile_commands_[std::size_t(tile)];
+  if (!list.empty() && list.back() == index) return;
+  list.push_back(index);
+  bytes_ += sizeof(index);
 }
 
 void Frame::ListLastDraw() {
-  const DrawPacket& draw = *draws_[draws_used_ - 1];
+  const DrawPacket& draw = draws_[draws_used_ - 1];
   const auto index = std::uint32_t(commands_.size() - 1);
+  if (draw.shared) {  // the tiles its own primitives were noted in
+    batches_[draw.first_batch]->TilesSince(open_mark_, grid_, [&](int t) { List(t, index); });
+    return;
+  }
   Rect box;  // the union of the batches' boxes: only the tiles under it can have anything
-  for (const BinnedBatch* b : draw.batches) {
-    const Rect& r = b->Box();
+  for (std::uint32_t k = 0; k < draw.batch_count; ++k) {
+    const Rect& r = batches_[draw.first_batch + k]->Box();
     if (r.Empty()) continue;
     box = box.Empty() ? r : Rect{std::min(box.x0, r.x0), std::min(box.y0, r.y0), std::max(box.x1, r.x1),
                                  std::max(box.y1, r.y1)};
@@ -113,44 +121,101 @@ void Frame::ListLastDraw() {
     for (int tx = tx0; tx <= tx1; ++tx) {
       const int t = ty * grid_.cols + tx;
       const Rect rect = grid_.TileRect(t);
-      if (std::any_of(draw.batches.begin(), draw.batches.end(), [&](const BinnedBatch* b) { return b->Touches(t, rect); })) {
-        tile_commands_[std::size_t(t)].push_back(index);
-        bytes_ += sizeof(index);
-      }
+      for (std::uint32_t k = 0; k < draw.batch_count; ++k)
+        if (batches_[draw.first_batch + k]->Touches(t, rect)) {
+          List(t, index);
+          break;
+        }
     }
 }
 
 DrawPacket& Frame::AddDraw(const RenderTarget& target, const DrawPacket& proto) {
   Begin(target);
-  if (draws_used_ == draws_.size()) draws_.push_back(std::make_unique<DrawPacket>());
-  DrawPacket& packet = *draws_[draws_used_++];
+  if (draws_used_ == draws_.size()) draws_.emplace_back();
+  DrawPacket& packet = draws_[draws_used_++];
   packet = proto;
+  packet.shared = false;
+  packet.first_batch = packet.batch_count = 0;
+  packet.prim_lo = packet.prim_hi = 0;
+  // The textures: none, the same as the draw before, or a copy of the bound units' views.
+  static const Textures kNoTextures;
+  if (!proto.textures || !DrawTextures::Any(*proto.textures)) {
+    packet.textures = &kNoTextures;
+  } else if (textures_used_ > 0 && textures_[textures_used_ - 1]->Same(*proto.textures)) {
+    packet.textures = &textures_[textures_used_ - 1]->textures;
+  } else {
+    if (textures_used_ == textures_.size()) textures_.push_back(std::make_unique<DrawTextures>());
+    DrawTextures& copy = *textures_[textures_used_++];
+    copy.CopyFrom(*proto.textures);
+    packet.textures = &copy.textures;
+    bytes_ += sizeof(DrawTextures);
+  }
   bytes_ += sizeof(DrawPacket);
   commands_.push_back(Command{true, draws_used_ - 1});
   return packet;
 }
 
-BinnedBatch& Frame::NewBatch(int nvar) {
-  if (batches_used_ == batches_.size()) batches_.push_back(std::make_unique<BinnedBatch>());
-  BinnedBatch& b = *batches_[batches_used_++];
-  b.Reset(nvar);
-  return b;
+void Frame::NewBatches(int count, int nvar) {
+  DrawPacket& draw = draws_[draws_used_ - 1];
+  draw.first_batch = std::uint32_t(batches_used_);
+  draw.batch_count = std::uint32_t(count);
+  for (int k = 0; k < count; ++k) {
+    if (batches_used_ == batches_.size()) batches_.push_back(std::make_unique<BinnedBatch>());
+    batches_[batches_used_++]->Reset(nvar);
+  }
+}
+
+BinnedBatch& Frame::SharedBatch(int nvar) {
+  DrawPacket& draw = draws_[draws_used_ - 1];
+  const std::size_t command = commands_.size() - 1;
+  // Draws share a batch only as consecutive commands: a tile walks it once, from draw to draw.
+  if (open_ != kNone && (open_command_ + 1 != command || batches_[open_]->Nvar() != nvar ||
+                         batches_[open_]->Position().primitives >= kSharedPrimitives))
+    CloseShared();
+  if (open_ == kNone) {
+    NewBatches(1, nvar);
+    open_ = draw.first_batch;
+  }
+  BinnedBatch& batch = *batches_[open_];
+  open_command_ = command;
+  open_mark_ = batch.Position();
+  draw.shared = true;
+  draw.first_batch = open_;
+  draw.batch_count = 1;
+  draw.prim_lo = open_mark_.primitives;
+  return batch;
+}
+
+void Frame::EndShared() {
+  DrawPacket& draw = draws_[draws_used_ - 1];
+  draw.prim_hi = batches_[open_]->Position().primitives;
+}
+
+void Frame::CloseShared() {
+  if (open_ == kNone) return;
+  BinnedBatch& batch = *batches_[open_];
+  batch.Finish(grid_);
+  bytes_ += batch.Bytes();
+  open_ = kNone;
 }
 
 void Frame::Reset() {
   commands_.clear();
   for (auto& list : tile_commands_) list.clear();
-  // Keep the packets (and their lists of batches) for the next frame, but not what they refer to: the shader
-  // copies and query counters go now.
+  // Keep the packets for the next frame, but not what they refer to: the shader copies and query counters go now.
   for (std::size_t i = 0; i < draws_used_; ++i) {
-    DrawPacket& d = *draws_[i];
+    DrawPacket& d = draws_[i];
     d.snapshot.reset();
     d.program = nullptr;
     for (auto& o : d.occlusion) o.reset();
-    d.batches.clear();
   }
   draws_used_ = 0;
-  if (draws_.size() > kKeptDraws) draws_.resize(kKeptDraws);
+  if (draws_.size() > kKeptDraws) {
+    draws_.resize(kKeptDraws);
+    draws_.shrink_to_fit();
+  }
+  textures_used_ = 0;
+  if (textures_.size() > kKeptDraws) textures_.resize(kKeptDraws);
   clears_.clear();
   // Keep the batches' memory for the next frame, but not an unusually large amount of it.
   for (std::size_t i = 0; i < batches_.size(); ++i) {
@@ -158,6 +223,7 @@ void Frame::Reset() {
     if (batches_[i]->Bytes() > (std::size_t(8) << 20)) batches_[i] = std::make_unique<BinnedBatch>();
   }
   batches_used_ = 0;
+  open_ = kNone;
   bytes_ = 0;
 }
 
@@ -171,8 +237,18 @@ void Frame::RenderTile(int tile, TileScratch& scratch) const {
   WindowVertex v[3];
   FragmentOpsPlan plan;  // for the operations at `planned`
   const FragmentOpsState* planned = nullptr;
-  for (const std::uint32_t ci : tile_commands_[std::size_t(tile)]) {
-    const Command& c = commands_[ci];
+  const BinnedBatch* shared = nullptr;  // the shared batch `cursor` walks
+  BinnedBatch::Cursor cursor;
+  const std::vector<std::uint32_t>& list = tile_commands_[std::size_t(tile)];
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    const Command& c = commands_[list[i]];
+    if (i + 2 < list.size()) {  // a tile's draws lie apart in draws_: fetch the next one's record early
+      const Command& next = commands_[list[i + 2]];
+      if (next.draw) {
+        const char* at = reinterpret_cast<const char*>(&draws_[next.index]);
+        for (std::size_t b = 0; b < sizeof(DrawPacket); b += 64) __builtin_prefetch(at + b);
+      }
+    }
     if (!c.draw) {
       const ClearPacket& clear = clears_[c.index];
       const Rect r = Intersect(clear.area, rect);
@@ -182,7 +258,7 @@ void Frame::RenderTile(int tile, TileScratch& scratch) const {
       if (clear.stencil) target_.ClearStencil(r, clear.stencil_value, clear.stencil_mask);
       continue;
     }
-    const DrawPacket& draw = *draws_[c.index];
+    const DrawPacket& draw = draws_[c.index];
     RasterTarget rt;
     rt.bounds = Intersect(draw.bounds, rect);
     rt.nvar = draw.nvar;
@@ -195,20 +271,33 @@ void Frame::RenderTile(int tile, TileScratch& scratch) const {
     FragmentStage stage{&draw, &target_, outputs, simd, &plan};
     const BlockSink sink{&FragmentStage::Run, &stage};
     blocks.count = 0;
-    for (const BinnedBatch* batch : draw.batches) {
-      batch->ForEachInTile(tile, rect, [&](const BinnedPrimitive& p, const float* vertices) {
+    const auto rasterize = [&](const BinnedBatch& batch) {
+      return [&](const BinnedPrimitive& p, const float* vertices) {
         rt.depth_offset = p.depth_offset;
         if (p.kind == PrimitiveKind::kTriangle) {  // read in place
-          RasterizeTriangle(batch->View(vertices, 0), batch->View(vertices, 1), batch->View(vertices, 2),
+          RasterizeTriangle(batch.View(vertices, 0), batch.View(vertices, 1), batch.View(vertices, 2),
                             p.front_facing, rt, blocks, sink);
           return;
         }
-        for (int k = 0; k < int(p.kind); ++k) batch->Vertex(vertices, k, v[k]);
+        for (int k = 0; k < int(p.kind); ++k) batch.Vertex(vertices, k, v[k]);
         if (p.kind == PrimitiveKind::kLine)
           RasterizeLine(v[0], v[1], p.front_facing, rt, blocks, sink);
         else
           RasterizePoint(v[0], p.point_size, p.front_facing, rt, blocks, sink);
-      });
+      };
+    };
+    if (draw.shared) {  // its part of a batch shared with the draws before it, walked on from where they left it
+      const BinnedBatch& batch = *batches_[draw.first_batch];
+      if (&batch != shared) {
+        shared = &batch;
+        cursor = BinnedBatch::Cursor{};
+      }
+      batch.ForEachInTile(tile, rect, cursor, draw.prim_lo, draw.prim_hi, rasterize(batch));
+    } else {
+      for (std::uint32_t k = 0; k < draw.batch_count; ++k) {
+        const BinnedBatch& batch = *batches_[draw.first_batch + k];
+        batch.ForEachInTile(tile, rect, rasterize(batch));
+      }
     }
     sink.Flush(blocks);
   }
@@ -218,6 +307,7 @@ void Frame::Render(WorkerPool& pool, std::vector<TileScratch>& scratch) {
   if (Empty()) return;
   if (scratch.size() < std::size_t(pool.Threads())) scratch.resize(std::size_t(pool.Threads()));
   try {
+    CloseShared();
     pool.Run(grid_.Count(), [&](int tile, int worker) { RenderTile(tile, scratch[std::size_t(worker)]); });
   } catch (...) {
     Reset();

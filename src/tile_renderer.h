@@ -22,25 +22,37 @@
 
 namespace softgl::detail {
 
-/// A draw as the back end needs it, captured when the draw is recorded.
+/// The textures of the bound units resolved for draws: a copy of each bound unit's view, and the Textures the
+/// shader samples through, pointing at them.
+struct DrawTextures {
+  TextureView views[2][kMaxTextureUnits];  // [2D, cube][unit]
+  Textures textures;                       // points into views (null for a unit with nothing bound)
+  /// Whether any unit has a texture bound.
+  static bool Any(const Textures& t);
+  /// Whether `t` binds the same units to the same views as this.
+  bool Same(const Textures& t) const;
+  /// Copies the views of `t`'s bound units, pointing textures at the copies.
+  void CopyFrom(const Textures& t);
+};
+
+/// A draw as the back end needs it, captured when the draw is recorded. Small, and kept in one array: a frame of
+/// many small draws reads them one after another.
 struct DrawPacket {
   std::shared_ptr<const Program> snapshot;  // copy of the shader taken at draw time (null: `program` is live)
   const Program* program = nullptr;
+  const Textures* textures = nullptr;  // the frame's copy of the bound units (the prototype: the context's own)
   FragmentOpsState ops;
   Rect bounds;  // viewport, target and scissor
   int nvar = 0;
   const Interpolation* interpolation = nullptr;  // the program's varying qualifiers (null: all smooth)
   bool shader_depth = false;  // the program writes gl_FragDepth
   bool early_depth = false;  // EarlyDepthTestApplies
-  TextureView views[2][kMaxTextureUnits];  // [2D, cube][unit]
-  Textures textures;                       // points into views
-  std::vector<BinnedBatch*> batches;
+  // The draw's batches: the frame's batches first_batch .. first_batch + batch_count. A shared batch (one, holding
+  // the primitives of consecutive small draws) has the draw's primitives at indices prim_lo .. prim_hi.
+  bool shared = false;
+  std::uint32_t first_batch = 0, batch_count = 0;
+  std::uint32_t prim_lo = 0, prim_hi = 0;
   std::shared_ptr<OcclusionCounter> occlusion[2];  // keeps ops.occlusion's counters alive until rendered
-
-  DrawPacket() = default;
-  DrawPacket(const DrawPacket& other) { *this = other; }
-  /// Copies everything but the batches, pointing textures at this packet's own views.
-  DrawPacket& operator=(const DrawPacket& other);
 };
 
 /// Clear(mask) as recorded: the area (target and scissor) and the values, masks applied.
@@ -66,10 +78,17 @@ class Frame {
   const TileGrid& Grid() const { return grid_; }
 
   void AddClear(const RenderTarget& target, const ClearPacket& clear);
-  /// A new draw command, a copy of `proto`; fill its batches with NewBatch().
+  /// A new draw command, a copy of `proto` (with a copy of its textures); give it batches with NewBatches() or
+  /// SharedBatch().
   DrawPacket& AddDraw(const RenderTarget& target, const DrawPacket& proto);
-  /// An empty batch owned by the frame (reused from frame to frame).
-  BinnedBatch& NewBatch(int nvar);
+  /// Gives the last draw added `count` empty batches of its own (reused from frame to frame); fill each with
+  /// Batch(k), then Finish it.
+  void NewBatches(int count, int nvar);
+  BinnedBatch& Batch(const DrawPacket& draw, int k) { return *batches_[draw.first_batch + std::uint32_t(k)]; }
+  /// The batch the last draw added appends its primitives to when it has few: one shared with the draws before
+  /// it while they are consecutive commands with the same varyings. Call EndShared() once the draw is binned.
+  BinnedBatch& SharedBatch(int nvar);
+  void EndShared();
   /// Lists the last draw added in the tiles its batches touch, once its batches are filled: a tile renders only
   /// the commands listed in it.
   void ListLastDraw();
@@ -86,6 +105,8 @@ class Frame {
  private:
   void Begin(const RenderTarget& target);
   void RenderTile(int tile, TileScratch& scratch) const;
+  void CloseShared();
+  void List(int tile, std::uint32_t index);
 
   struct Command {
     bool draw;
@@ -95,12 +116,21 @@ class Frame {
   TileGrid grid_;
   std::vector<Command> commands_;
   std::vector<std::vector<std::uint32_t>> tile_commands_;  // per tile: the commands touching it, in order
-  std::vector<std::unique_ptr<DrawPacket>> draws_;  // draws_used_ of them recorded, the others kept for reuse
+  std::vector<DrawPacket> draws_;  // draws_used_ of them recorded, the others kept for reuse
   std::size_t draws_used_ = 0;
-  static constexpr std::size_t kKeptDraws = 4096;  // packets kept from frame to frame, at most
+  static constexpr std::size_t kKeptDraws = 16384;  // packets kept from frame to frame, at most
+  std::vector<std::unique_ptr<DrawTextures>> textures_;  // textures_used_ of them recorded, the others kept
+  std::size_t textures_used_ = 0;
   std::vector<ClearPacket> clears_;
   std::vector<std::unique_ptr<BinnedBatch>> batches_;
   std::size_t batches_used_ = 0;
+  // The open shared batch: its index in batches_, the last command that used it, and where the last draw's part
+  // of it began.
+  static constexpr std::uint32_t kNone = ~0u;
+  static constexpr std::uint32_t kSharedPrimitives = 4096;  // a shared batch is closed once it holds this many
+  std::uint32_t open_ = kNone;
+  std::size_t open_command_ = 0;
+  BinnedBatch::Mark open_mark_;
   std::size_t bytes_ = 0;
 };
 

@@ -76,6 +76,7 @@ void WorkerPool::Work(int worker) {
 
 void WorkerPool::Run(int jobs, const std::function<void(int, int)>& fn) {
   if (jobs <= 0) return;
+  if (jobs == 1) return fn(0, 0);  // one job: the caller's, without waking anyone
   fn_ = &fn;
   jobs_ = jobs;
   next_ = 0;

@@ -57,6 +57,58 @@ TEST_CASE("binning: tiles see their primitives in submission order, small, mediu
   CHECK(Visits(batch, grid, 255) == std::vector<float>{1, 5, 6});
 }
 
+TEST_CASE("binning: a shared batch is walked by ranges of primitives, each range once, in order", "[binner]") {
+  // Draws that share a batch each walk their own range of its primitives, going on from where the draw before
+  // left the walk: the ranges together visit what one walk visits.
+  const TileGrid grid = TileGrid::For(1024, 1024);
+  BinnedBatch batch;
+  batch.Reset(0);
+  const BinnedBatch::Mark start = batch.Position();
+  AddTriangle(batch, grid, Rect{10, 10, 20, 20}, 1.0f);       // 0: small, tile 0
+  AddTriangle(batch, grid, Rect{0, 0, 1024, 1024}, 2.0f);     // 1: large
+  const BinnedBatch::Mark second = batch.Position();
+  AddTriangle(batch, grid, Rect{0, 0, 300, 100}, 3.0f);       // 2: medium, vertices shared
+  AddTriangle(batch, grid, Rect{30, 30, 40, 40}, 4.0f);       // 3: small, tile 0
+  // The tiles a range's primitives were noted in, asked right after it (large ones: every tile their box overlaps).
+  std::vector<int> tiles;
+  batch.TilesSince(second, grid, [&](int t) { tiles.push_back(t); });
+  CHECK(tiles.size() == 11);  // primitive 2's 5 x 2 tiles, then primitive 3's
+  CHECK(tiles.back() == 0);
+  tiles.clear();
+  const BinnedBatch::Mark third = batch.Position();
+  AddTriangle(batch, grid, Rect{0, 0, 1024, 1024}, 5.0f);     // 4: large
+  AddTriangle(batch, grid, Rect{1000, 1000, 1024, 1024}, 6.0f);  // 5: small, the last tile
+  batch.TilesSince(third, grid, [&](int t) { tiles.push_back(t); });
+  CHECK(tiles.size() == 257);  // primitive 5's tile, then the large primitive 4's 256
+  CHECK(tiles.front() == 255);
+  CHECK(start.primitives == 0);
+  CHECK(second.primitives == 2);
+  CHECK(third.primitives == 4);
+  batch.Finish(grid);
+
+  for (int tile : {0, 1, 4, 17, 255}) {
+    const Rect rect = grid.TileRect(tile);
+    std::vector<float> ranged;
+    BinnedBatch::Cursor cursor;
+    const std::uint32_t bounds[] = {0, 2, 4, 6};
+    for (int r = 0; r < 3; ++r) {
+      const auto before = ranged.size();
+      batch.ForEachInTile(tile, rect, cursor, bounds[r], bounds[r + 1], [&](const BinnedPrimitive& p, const float* v) {
+        CHECK(p.index >= bounds[r]);
+        CHECK(p.index < bounds[r + 1]);
+        ranged.push_back(v[2]);
+      });
+      for (auto i = before; i < ranged.size(); ++i) CHECK(ranged[i] > float(bounds[r]));  // tags are index + 1
+    }
+    CHECK(ranged == Visits(batch, grid, tile));
+  }
+  // A range that starts past primitives no draw of this tile claims skips them.
+  BinnedBatch::Cursor cursor;
+  std::vector<float> late;
+  batch.ForEachInTile(0, grid.TileRect(0), cursor, 3, 6, [&](const BinnedPrimitive&, const float* v) { late.push_back(v[2]); });
+  CHECK(late == std::vector<float>{4, 5});
+}
+
 TEST_CASE("binning: a large primitive is visited only by the tiles its box overlaps", "[binner]") {
   const TileGrid grid = TileGrid::For(1024, 1024);
   BinnedBatch batch;

@@ -1605,3 +1605,92 @@ TEST_CASE("the copies of a shader taken at draws live until the frame is rendere
     CHECK(shader.held.use_count() == 1);  // all released by the rendering
   }
 }
+
+TEST_CASE("many small draws in one frame render what they render one frame each, at any thread count", "[context]") {
+  // Consecutive small draws share their binned batch; each tile walks it draw by draw. Overlapping triangles,
+  // lines and points in many colours, blended and not, with a larger draw, a clear, a scissor and a shader with
+  // varyings in between, recorded as one frame, at 1 and at 3 threads, against the same draws each padded with
+  // more than a thousand primitives that draw nothing (clipped away): draws that large bin into batches of their
+  // own.
+  std::vector<glm::vec4> positions, values;
+  std::uint32_t seed = 12345;
+  auto random = [&] {
+    seed = seed * 1664525u + 1013904223u;
+    return float(seed >> 8) / float(1u << 24);
+  };
+  for (int i = 0; i < 3 * 400; ++i) {  // 400 triangles of 0.05 to 0.3 in NDC, some across tile edges
+    if (i % 3 == 0) {
+      const float x = random() * 2.0f - 1.0f, y = random() * 2.0f - 1.0f, size = 0.05f + 0.25f * random();
+      positions.insert(positions.end(), {{x, y, 0, 1}, {x + size, y, 0, 1}, {x, y + size, 0, 1}});
+    }
+    values.push_back({random(), random(), random(), 1});
+  }
+  for (int i = 0; i < 3 * 1500; ++i) positions.push_back({random() * 2 - 1, random() * 2 - 1, 0, 1});  // tiny
+  values.resize(positions.size(), glm::vec4(0.5f));
+  positions.insert(positions.end(), {{-1, -1, 0, 1}, {3, -1, 0, 1}, {-1, 3, 0, 1}});  // the whole target
+  positions.push_back({5, 5, 0, 1});  // outside the view volume
+  values.resize(positions.size(), glm::vec4(0.25f));
+  const auto outside = std::uint32_t(positions.size() - 1);
+
+  auto render = [&](int threads, bool padded) {
+    Context gl(200, 150, Context::Options{threads});
+    SolidShader solid;
+    testing::CaptureShader varying;
+    MakeVertexArray(gl, positions, values);
+    gl.BindBuffer(ELEMENT_ARRAY_BUFFER, gl.GenBuffer());
+    std::vector<std::uint32_t> indices;
+    auto draw = [&](Enum mode, int first, int count) {
+      if (!padded) return gl.DrawArrays(mode, first, count);
+      indices.clear();
+      const int per = mode == TRIANGLES ? 3 : mode == LINES ? 2 : 1;  // a partial primitive's vertices are left out
+      for (int k = 0; k < count - count % per; ++k) indices.push_back(std::uint32_t(first + k));
+      indices.insert(indices.end(), 3 * 1100, outside);
+      gl.BufferData(ELEMENT_ARRAY_BUFFER, std::ptrdiff_t(indices.size() * 4), indices.data());
+      gl.DrawElement(mode, int(indices.size()), UNSIGNED_INT, 0);
+    };
+    gl.ClearColor(0.1f, 0.2f, 0.3f, 1.0f);
+    gl.Clear(COLOR_BUFFER_BIT);
+    gl.UseProgram(solid);
+    for (int d = 0; d < 300; ++d) {
+      solid.color = glm::vec4(random(), random(), random(), 0.5f);
+      if (d == 100) {
+        gl.Enable(BLEND);
+        gl.BlendFunc(SRC_ALPHA, ONE_MINUS_SRC_ALPHA);
+      }
+      if (d == 150) {  // a draw of 1,500 triangles: batches of its own
+        gl.DrawArrays(TRIANGLES, 1200, 3 * 1500);
+      }
+      if (d == 160) {
+        gl.Enable(SCISSOR_TEST);
+        gl.Scissor(30, 20, 100, 90);
+        gl.Clear(COLOR_BUFFER_BIT);
+      }
+      if (d == 200) gl.Disable(SCISSOR_TEST);
+      if (d == 220) gl.UseProgram(varying);  // four floats of varyings
+      if (d == 240) gl.UseProgram(solid);
+      if (d == 260) {
+        draw(TRIANGLES, 1200 + 3 * 1500, 3);  // one triangle over every tile
+      }
+      const int first = 3 * ((d * 7) % 395);
+      const Enum mode = d % 10 == 3 ? LINES : d % 10 == 7 ? POINTS : TRIANGLES;
+      draw(mode, first, 3 + 3 * (d % 3));
+    }
+    CHECK(gl.GetError() == NO_ERROR);
+    return gl.ReadPixels();
+  };
+  const std::uint32_t start = seed;
+  const Image one_frame = render(1, false);
+  seed = start;
+  const Image padded = render(1, true);
+  seed = start;
+  const Image threaded = render(3, false);
+  CHECK(one_frame.rgba == padded.rgba);
+  CHECK(one_frame.rgba == threaded.rgba);
+  std::set<std::uint32_t> colours;  // the scene is not trivially uniform
+  for (std::size_t i = 0; i < one_frame.rgba.size(); i += 4) {
+    std::uint32_t c;
+    std::memcpy(&c, &one_frame.rgba[i], 4);
+    colours.insert(c);
+  }
+  CHECK(colours.size() > 100);
+}
