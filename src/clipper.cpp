@@ -98,7 +98,13 @@ template <int W>
 SOFTGL_WIDE void ClipCodesOf(const glm::vec4* p, int n, const ClipPlanes& planes, unsigned* codes) {
   int i = 0;
   for (; i + W <= n; i += W) ClipCodesLanes<W>(p + i, planes, codes + i);
-  for (; i < n; ++i) codes[i] = ClipCodes(p[i], planes);
+  if (i < n) {  // the last few through a padded copy (a small draw has only these)
+    glm::vec4 in[W];
+    unsigned out[W];
+    for (int l = 0; l < W; ++l) in[l] = p[std::min(i + l, n - 1)];
+    ClipCodesLanes<W>(in, planes, out);
+    for (int l = 0; i + l < n; ++l) codes[i + l] = out[l];
+  }
 }
 
 using ClipCodesFn = void (*)(const glm::vec4*, int, const ClipPlanes&, unsigned*);

@@ -43,7 +43,7 @@ void WorkerPool::Drain(int worker) {
   for (int job = next_.fetch_add(1); job < jobs_; job = next_.fetch_add(1)) {
     if (failed_.load(std::memory_order_relaxed)) continue;
     try {
-      (*fn_)(job, worker);
+      fn_(job, worker);
     } catch (...) {
       std::lock_guard<std::mutex> lock(mutex_);
       if (!error_) error_ = std::current_exception();
@@ -74,10 +74,10 @@ void WorkerPool::Work(int worker) {
   }
 }
 
-void WorkerPool::Run(int jobs, const std::function<void(int, int)>& fn) {
+void WorkerPool::Run(int jobs, JobFn fn) {
   if (jobs <= 0) return;
   if (jobs == 1) return fn(0, 0);  // one job: the caller's, without waking anyone
-  fn_ = &fn;
+  fn_ = fn;
   jobs_ = jobs;
   next_ = 0;
   failed_ = false;
@@ -94,7 +94,7 @@ void WorkerPool::Run(int jobs, const std::function<void(int, int)>& fn) {
     std::unique_lock<std::mutex> lock(mutex_);
     done_.wait(lock, [&] { return busy_ == 0; });
   }
-  fn_ = nullptr;
+  fn_ = JobFn();
   if (error_) std::rethrow_exception(error_);
 }
 

@@ -8,7 +8,7 @@
 
 #include <atomic>
 #include <condition_variable>
-#include <functional>
+#include <type_traits>
 #include <mutex>
 #include <thread>
 #include <vector>
@@ -18,6 +18,23 @@ namespace softgl::detail {
 /// The thread count a context uses when none is asked for: SOFTGL_THREADS from the environment when it holds a
 /// number from 1 to 256, else the number of hardware threads (at least 1).
 int DefaultThreadCount();
+
+/// A reference to a callable fn(job, worker), which must outlive it: what Run takes. Unlike std::function it
+/// never allocates (a draw runs two pools' worth of jobs, and small draws are many).
+class JobFn {
+ public:
+  JobFn() = default;
+  template <class F>
+    requires(!std::is_same_v<std::remove_cvref_t<F>, JobFn>)
+  JobFn(F&& fn)  // implicit, as std::function is: Run(jobs, [&](int job, int worker) { ... })
+      : object_(const_cast<void*>(static_cast<const void*>(&fn))),
+        call_([](void* object, int job, int worker) { (*static_cast<std::remove_reference_t<F>*>(object))(job, worker); }) {}
+  void operator()(int job, int worker) const { call_(object_, job, worker); }
+
+ private:
+  void* object_ = nullptr;
+  void (*call_)(void*, int, int) = nullptr;
+};
 
 class WorkerPool {
  public:
@@ -31,7 +48,7 @@ class WorkerPool {
 
   /// Runs fn(job, worker) for every job; an exception thrown by fn is caught and rethrown here (the first one)
   /// after every job has finished or been skipped.
-  void Run(int jobs, const std::function<void(int job, int worker)>& fn);
+  void Run(int jobs, JobFn fn);
 
  private:
   void Work(int worker);
@@ -46,7 +63,7 @@ class WorkerPool {
   int busy_ = 0;  // workers still inside the current generation
   int waiting_ = 0;  // workers that have started (the constructor waits for all of them)
   // The current run.
-  const std::function<void(int, int)>* fn_ = nullptr;
+  JobFn fn_;
   int jobs_ = 0;
   std::atomic<int> next_{0};
   std::atomic<bool> failed_{false};
