@@ -308,7 +308,25 @@ void Frame::Render(WorkerPool& pool, std::vector<TileScratch>& scratch) {
   if (scratch.size() < std::size_t(pool.Threads())) scratch.resize(std::size_t(pool.Threads()));
   try {
     CloseShared();
-    pool.Run(grid_.Count(), [&](int tile, int worker) { RenderTile(tile, scratch[std::size_t(worker)]); });
+    // Each thread renders a band of tiles of its own first, the same band from frame to frame (so that a tile's
+    // pixels tend to be in the cache of the thread that rendered them last), then takes what is left of the
+    // others' bands from their far ends. A tile is claimed once, by whichever thread gets to it first.
+    const int tiles = grid_.Count(), threads = pool.Threads();
+    if (claimed_count_ < tiles) {
+      claimed_ = std::make_unique<std::atomic<bool>[]>(std::size_t(tiles));
+      claimed_count_ = tiles;
+    }
+    for (int t = 0; t < tiles; ++t) claimed_[std::size_t(t)].store(false, std::memory_order_relaxed);
+    pool.Run(threads, [&](int, int worker) {
+      auto take = [&](int t) {
+        if (!claimed_[std::size_t(t)].exchange(true, std::memory_order_relaxed))
+          RenderTile(t, scratch[std::size_t(worker)]);
+      };
+      const int begin = int(std::int64_t(tiles) * worker / threads);
+      const int end = int(std::int64_t(tiles) * (worker + 1) / threads);
+      for (int t = begin; t < end; ++t) take(t);
+      for (int t = tiles - 1; t >= 0; --t) take(t);
+    });
   } catch (...) {
     Reset();
     throw;

@@ -7,6 +7,7 @@
 // Finish, a framebuffer switch, a texture change, or when the recorded data outgrows a memory budget.
 #pragma once
 
+#include <atomic>
 #include <cstddef>
 #include <memory>
 #include <vector>
@@ -132,6 +133,8 @@ class Frame {
   std::size_t open_command_ = 0;
   BinnedBatch::Mark open_mark_;
   std::size_t bytes_ = 0;
+  std::unique_ptr<std::atomic<bool>[]> claimed_;  // Render's tiles taken, claimed_count_ of them
+  int claimed_count_ = 0;
 };
 
 }  // namespace softgl::detail
