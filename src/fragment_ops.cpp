@@ -128,6 +128,8 @@ Unorm8Blend::Unorm8Blend(const FragmentOpsState& state, bool rgb_only) {
   }
   packed = blend && b.eq_rgb == b.eq_alpha &&
            (b.eq_rgb == FUNC_ADD || b.eq_rgb == FUNC_SUBTRACT || b.eq_rgb == FUNC_REVERSE_SUBTRACT);
+  alpha_over = packed && b.eq_rgb == FUNC_ADD && b.src_rgb == SRC_ALPHA && b.src_alpha == SRC_ALPHA &&
+               b.dst_rgb == ONE_MINUS_SRC_ALPHA && b.dst_alpha == ONE_MINUS_SRC_ALPHA;
 }
 
 FragmentOpsPlan PlanFragmentOps(const FragmentOpsState& state, const RenderTarget& target) {
@@ -239,6 +241,17 @@ SOFTGL_WIDE typename V<W>::U Blend8Lanes(const Unorm8Blend& b, const typename V<
       const U low = U{} + 0x00FF00FFu;
       const H s_rb = pack(s[0], s[2]), s_ga = pack(s[1], s[3]);
       const H d_rb = H(pixels & low), d_ga = H((pixels >> 8) & low);
+      if (b.alpha_over) {
+        // The most common blend, without choosing factors: a and 255 - a in every channel. s a + d (255 - a) is
+        // at most 65025, so the equation needs no clamping; the rest is the general path's arithmetic.
+        const H sf = pack(s[3], s[3]), df = H(low) - sf;
+        auto div255 = [](H x) SOFTGL_WIDE_LAMBDA {
+          const H t = x + 128;
+          return (t + (t >> 8)) >> 8;
+        };
+        const H r_rb = div255(s_rb * sf + d_rb * df), r_ga = div255(s_ga * sf + d_ga * df);
+        return (pixels & b.keep) | ((U(r_rb) | (U(r_ga) << 8)) & ~b.keep);
+      }
       const H sf_rb = pack(factor(b.src[0], 0), factor(b.src[2], 2));
       const H sf_ga = pack(factor(b.src[1], 1), factor(b.src[3], 3));
       const H df_rb = pack(factor(b.dst[0], 0), factor(b.dst[2], 2));

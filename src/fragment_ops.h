@@ -109,6 +109,7 @@ struct Unorm8Blend {
   int constant[4] = {0, 0, 0, 0};  // the constant colour in 8 bits
   std::uint32_t keep = 0;          // bytes of the stored pixel the colour mask keeps
   bool packed = false;             // blending by one equation, FUNC_ADD or a subtraction, in all four channels
+  bool alpha_over = false;         // packed, FUNC_ADD, SRC_ALPHA and ONE_MINUS_SRC_ALPHA in all four channels
 
   Unorm8Blend() = default;
   Unorm8Blend(const FragmentOpsState& state, bool rgb_only);

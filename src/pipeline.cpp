@@ -36,8 +36,12 @@ void ShadeVertices(const DrawCall& call, const FetchPlan& fetch, const Program& 
       map[i] = std::uint32_t(i);
     }
   } else {
-    const auto [lo, hi] = std::minmax_element(call.elements, call.elements + count);
-    const std::uint64_t range = std::uint64_t(*hi) - *lo + 1;
+    std::uint32_t lo = call.elements[0], hi = lo;  // values, not positions: a loop the compiler vectorizes
+    for (int i = 1; i < count; ++i) {
+      lo = std::min(lo, call.elements[i]);
+      hi = std::max(hi, call.elements[i]);
+    }
+    const std::uint64_t range = std::uint64_t(hi) - lo + 1;
     if (range <= std::max<std::uint64_t>(std::uint64_t(count) * 8, std::uint64_t(1) << 16)) {
       // Each distinct index shaded once, in the order of first use: a table over the index range gives each
       // vertex its slot (a large mesh drawn in pieces has indices spread over the whole mesh in every piece).
@@ -46,7 +50,7 @@ void ShadeVertices(const DrawCall& call, const FetchPlan& fetch, const Program& 
       auto& slot = s.first_use;
       if (slot.size() < range) slot.resize(std::size_t(range), kUnseen);
       std::uint32_t seen = 0;
-      const std::uint32_t low = *lo;
+      const std::uint32_t low = lo;
       std::uint32_t* shade = to_shade.data();
       for (int i = 0; i < count; ++i) {
         const std::uint32_t e = call.elements[i];

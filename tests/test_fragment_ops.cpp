@@ -570,7 +570,8 @@ TEST_CASE("blending into 8-bit buffers is OpenGL's formula on the 8-bit operands
           "[fragment_ops][blend]") {
   // Four blocks of four quads into an 8x8 RGBA8 target: the wide path (one 8-bit colour buffer, blocks inside the target),
   // and again with a second colour buffer present, which takes the lane-by-lane path for both. Every factor pair
-  // and equation, random colours (out of range and NaN included), random colour masks.
+  // and equation, alpha by the same pair or the swapped one, random colours (out of range and NaN included),
+  // random colour masks.
   const Enum factors[] = {ZERO, ONE, SRC_COLOR, ONE_MINUS_SRC_COLOR, DST_COLOR, ONE_MINUS_DST_COLOR, SRC_ALPHA,
                           ONE_MINUS_SRC_ALPHA, DST_ALPHA, ONE_MINUS_DST_ALPHA, CONSTANT_COLOR,
                           ONE_MINUS_CONSTANT_COLOR, CONSTANT_ALPHA, ONE_MINUS_CONSTANT_ALPHA, SRC_ALPHA_SATURATE};
@@ -594,55 +595,58 @@ TEST_CASE("blending into 8-bit buffers is OpenGL's formula on the 8-bit operands
     for (Enum src : factors)
       for (Enum dst : factors)
         for (Enum eq : equations)
-          for (const bool same_equation : {false, true}) {  // one equation for all four channels, or two
-            detail::FragmentOpsState state;
-            state.blend.enabled = true;
-            state.blend.src_rgb = src;
-            state.blend.dst_rgb = dst;
-            state.blend.src_alpha = dst;  // alpha uses the other pair, and the same or another equation
-            state.blend.dst_alpha = src;
-            state.blend.eq_rgb = eq;
-            state.blend.eq_alpha = same_equation ? eq : equations[(int(next()) % 5)];
-            state.blend.color = glm::vec4(0.3f, 1.2f, -0.1f, 0.55f);
-            for (int c = 0; c < 4; ++c) state.color_mask[c] = (next() % 5) != 0;
-            for (auto& v : pixels) v = std::uint8_t(next());
-            const std::vector<std::uint8_t> before = pixels;
-            blocks->count = 4;
-            for (int b = 0; b < 4; ++b) {  // block b: the quads of rows 2b and 2b + 1, in a scrambled order
-              blocks->quads[b] = 4;
-              for (int q = 0; q < 4; ++q) {
-                blocks->qx[b][q] = ((q + b) % 4) * 2;
-                blocks->qy[b][q] = 2 * b;
-              }
-              blocks->live[b] = 0xFFFFu;
-              for (int o = 0; o < 2; ++o)
-                for (int c = 0; c < 4; ++c)
-                  for (int l = 0; l < softgl::kLanes; ++l)
-                    blocks->out[b].color[o][c].v.Set(l, float(int(next() % 1400) - 200) / 1000.0f);  // [-0.2, 1.2)
-            }
-            blocks->out[1].color[0][1].v.Set(5, std::numeric_limits<float>::quiet_NaN());
-            detail::ApplyFragmentOps(state, detail::PlanFragmentOps(state, target), *blocks, false, target);
-            for (int b = 0; b < 4; ++b)
-              for (int l = 0; l < softgl::kLanes; ++l) {
-                const int x = blocks->X(b, l), y = blocks->Y(b, l);
-                const std::size_t i = (std::size_t(y) * kSize + std::size_t(x)) * 4;
-                std::uint8_t s8[4];
-                for (int c = 0; c < 4; ++c) s8[c] = FloatToUnorm8(blocks->out[b].color[0][c][l]);  // NaN reads 0
-                for (int c = 0; c < 4; ++c) {
-                  const std::uint8_t want =
-                      state.color_mask[c] ? ReferenceBlend8(state.blend, c, s8, &before[i])
-                                          : before[i + std::size_t(c)];
-                  if (pixels[i + std::size_t(c)] != want) {
-                    INFO("src 0x" << std::hex << src << " dst 0x" << dst << " eq 0x" << eq << std::dec << " channel "
-                                  << c << " two buffers " << two_buffers);
-                    CHECK(int(pixels[i + std::size_t(c)]) == int(want));
-                  }
-                  ++checked;
+          for (const bool same_equation : {false, true})  // one equation for all four channels, or two
+            // Alpha by the same pair (SRC_ALPHA, ONE_MINUS_SRC_ALPHA and FUNC_ADD take a path of their own) or by
+            // the swapped one.
+            for (const bool same_pair : {false, true}) {
+              detail::FragmentOpsState state;
+              state.blend.enabled = true;
+              state.blend.src_rgb = src;
+              state.blend.dst_rgb = dst;
+              state.blend.src_alpha = same_pair ? src : dst;
+              state.blend.dst_alpha = same_pair ? dst : src;
+              state.blend.eq_rgb = eq;
+              state.blend.eq_alpha = same_equation ? eq : equations[(int(next()) % 5)];
+              state.blend.color = glm::vec4(0.3f, 1.2f, -0.1f, 0.55f);
+              for (int c = 0; c < 4; ++c) state.color_mask[c] = (next() % 5) != 0;
+              for (auto& v : pixels) v = std::uint8_t(next());
+              const std::vector<std::uint8_t> before = pixels;
+              blocks->count = 4;
+              for (int b = 0; b < 4; ++b) {  // block b: the quads of rows 2b and 2b + 1, in a scrambled order
+                blocks->quads[b] = 4;
+                for (int q = 0; q < 4; ++q) {
+                  blocks->qx[b][q] = ((q + b) % 4) * 2;
+                  blocks->qy[b][q] = 2 * b;
                 }
+                blocks->live[b] = 0xFFFFu;
+                for (int o = 0; o < 2; ++o)
+                  for (int c = 0; c < 4; ++c)
+                    for (int l = 0; l < softgl::kLanes; ++l)
+                      blocks->out[b].color[o][c].v.Set(l, float(int(next() % 1400) - 200) / 1000.0f);  // [-0.2, 1.2)
               }
-          }
+              blocks->out[1].color[0][1].v.Set(5, std::numeric_limits<float>::quiet_NaN());
+              detail::ApplyFragmentOps(state, detail::PlanFragmentOps(state, target), *blocks, false, target);
+              for (int b = 0; b < 4; ++b)
+                for (int l = 0; l < softgl::kLanes; ++l) {
+                  const int x = blocks->X(b, l), y = blocks->Y(b, l);
+                  const std::size_t i = (std::size_t(y) * kSize + std::size_t(x)) * 4;
+                  std::uint8_t s8[4];
+                  for (int c = 0; c < 4; ++c) s8[c] = FloatToUnorm8(blocks->out[b].color[0][c][l]);  // NaN reads 0
+                  for (int c = 0; c < 4; ++c) {
+                    const std::uint8_t want =
+                        state.color_mask[c] ? ReferenceBlend8(state.blend, c, s8, &before[i])
+                                            : before[i + std::size_t(c)];
+                    if (pixels[i + std::size_t(c)] != want) {
+                      INFO("src 0x" << std::hex << src << " dst 0x" << dst << " eq 0x" << eq << std::dec << " channel "
+                                    << c << " two buffers " << two_buffers);
+                      CHECK(int(pixels[i + std::size_t(c)]) == int(want));
+                    }
+                    ++checked;
+                  }
+                }
+            }
   }
-  CHECK(checked == 2 * 15 * 15 * 5 * 2 * 64 * 4);
+  CHECK(checked == 2 * 15 * 15 * 5 * 2 * 2 * 64 * 4);
 }
 
 namespace {
