@@ -105,6 +105,20 @@ class BinnedBatch {
       fn(prim, prim.shared ? shared_.data() + prim.first_float : p);
     }
   }
+  /// Prefetches, for a walk of `tile` soon, the batch itself (stage 0), where its list starts (1), or the list's
+  /// first records (2): a tile walks many batches, each list a cache miss away. Each stage reads what the one
+  /// before it fetched.
+  void Prefetch(int stage, int tile) const {
+    if (stage == 0) {
+      const char* self = reinterpret_cast<const char*>(this);
+      for (std::size_t b = 0; b < sizeof *this; b += 64) __builtin_prefetch(self + b);
+      return;
+    }
+    const int i = tile - tile_lo_;
+    if (i < 0 || std::size_t(i) + 1 >= tile_start_.size()) return;
+    if (stage == 1) __builtin_prefetch(&tile_start_[std::size_t(i)]);
+    else __builtin_prefetch(tile_data_.data() + tile_start_[std::size_t(i)]);
+  }
   /// How far the batch is filled: what TilesSince() walks from.
   struct Mark {
     std::size_t notes = 0, large = 0;

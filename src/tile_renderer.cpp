@@ -294,8 +294,12 @@ void Frame::RenderTile(int tile, TileScratch& scratch) const {
       }
       batch.ForEachInTile(tile, rect, cursor, draw.prim_lo, draw.prim_hi, rasterize(batch));
     } else {
-      for (std::uint32_t k = 0; k < draw.batch_count; ++k) {
-        const BinnedBatch& batch = *batches_[draw.first_batch + k];
+      const auto* own = &batches_[draw.first_batch];
+      const std::uint32_t n = draw.batch_count;
+      for (std::uint32_t k = 0; k < n; ++k) {
+        for (std::uint32_t stage = 0; stage < 3; ++stage)  // the batches ahead, nearer ones further along
+          if (k + 3 - stage < n) own[k + 3 - stage]->Prefetch(int(stage), tile);
+        const BinnedBatch& batch = *own[k];
         batch.ForEachInTile(tile, rect, rasterize(batch));
       }
     }
