@@ -64,7 +64,13 @@ void ContextState::Draw(const detail::DrawCall& call) {
   packet.bounds = ds.bounds;
   if (!frame.Accepts(target)) Sync(__func__);
   try {
-    packet.snapshot = program->Snapshot();
+    if (last_snapshot && program->SnapshotIs(*last_snapshot)) {
+      packet.snapshot = last_snapshot;
+    } else {
+      last_snapshot.reset();
+      packet.snapshot = program->Snapshot();
+      last_snapshot = packet.snapshot;
+    }
     packet.program = packet.snapshot ? packet.snapshot.get() : program;
     packet.early_depth = detail::EarlyDepthTestApplies(ops, packet.program->WritesDepth());
     detail::RecordDraw(call, plan, ds, packet, target, frame, *pool, scratch);

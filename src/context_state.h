@@ -183,6 +183,8 @@ struct ContextState {
   detail::FetchPlan fetch_plan;  // Draw's resolution of the vertex array (a disabled attribute: its current value)
   detail::DrawPacket draw_packet;  // Draw's prototype of the packets it records
   detail::DrawTextures draw_textures;  // the prototype's textures: the bound units resolved at the last draw
+  // The last shader copy taken (Snapshot), used again by the draws after it while the shader is unchanged.
+  std::shared_ptr<const Program> last_snapshot;
 
   Context::DebugCallback debug_callback;
 
@@ -257,6 +259,7 @@ struct ContextState {
   void Sync(const char* call) {
     try {
       frame.Render(*pool, scratch.tiles);
+      last_snapshot.reset();  // the next frame's draws take a copy of their own
     } catch (const std::bad_alloc&) {
       SetError(OUT_OF_MEMORY, call, "out of memory while rendering recorded draws (they are dropped)");
     }

@@ -73,6 +73,15 @@ struct FragmentStage {
   }
 };
 
+// Whether draws a and b render their fragments with the same state: the same shader object (a copy used
+// again), textures, operations and bounds. Their primitives can then be rendered as one draw's.
+bool SameState(const DrawPacket& a, const DrawPacket& b) {
+  return a.program == b.program && a.textures == b.textures && a.ops == b.ops && a.bounds.x0 == b.bounds.x0 &&
+         a.bounds.y0 == b.bounds.y0 && a.bounds.x1 == b.bounds.x1 && a.bounds.y1 == b.bounds.y1 &&
+         a.nvar == b.nvar && a.interpolation == b.interpolation && a.shader_depth == b.shader_depth &&
+         a.early_depth == b.early_depth;
+}
+
 }  // namespace
 
 bool Frame::Accepts(const RenderTarget& target) const { return Empty() || SameBuffers(target, target_); }
@@ -172,6 +181,18 @@ BinnedBatch& Frame::SharedBatch(int nvar) {
   if (open_ != kNone && (open_command_ + 1 != command || batches_[open_]->Nvar() != nvar ||
                          batches_[open_]->Position().primitives >= kSharedPrimitives))
     CloseShared();
+  if (open_ != kNone && SameState(draws_[commands_[open_command_].index], draw)) {
+    // The draw before takes this draw's primitives as its own, and this draw's record goes: the two render as
+    // one draw of both primitive sequences, in order, which is what they are.
+    draw.snapshot.reset();
+    for (auto& o : draw.occlusion) o.reset();
+    --draws_used_;
+    commands_.pop_back();
+    bytes_ -= sizeof(DrawPacket);
+    BinnedBatch& batch = *batches_[open_];
+    open_mark_ = batch.Position();
+    return batch;
+  }
   if (open_ == kNone) {
     NewBatches(1, nvar);
     open_ = draw.first_batch;

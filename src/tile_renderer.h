@@ -88,6 +88,9 @@ class Frame {
   BinnedBatch& Batch(const DrawPacket& draw, int k) { return *batches_[draw.first_batch + std::uint32_t(k)]; }
   /// The batch the last draw added appends its primitives to when it has few: one shared with the draws before
   /// it while they are consecutive commands with the same varyings. Call EndShared() once the draw is binned.
+  /// When the draw before renders with the same state (SameState: the same shader copy, textures, operations
+  /// and bounds), the last draw is merged into it: its record and command are removed, and the draw before
+  /// becomes the last draw added, its primitives extended by the ones appended now.
   BinnedBatch& SharedBatch(int nvar);
   void EndShared();
   /// Lists the last draw added in the tiles its batches touch, once its batches are filled: a tile renders only

@@ -1584,6 +1584,7 @@ namespace {
 // SolidShader with a member whose use count tells how many copies of the shader are alive.
 struct HeldShader : softgl::Shader<HeldShader, testing::NoVaryings> {
   std::shared_ptr<int> held = std::make_shared<int>(0);
+  int uniform = 0;
   void Vertex(const VertexIn& in, VertexOut<testing::NoVaryings>& out) const { out.position = in.attrib[0]; }
   bool Fragment(const FragmentIn<testing::NoVaryings>&, FragmentOut& out) const {
     out.color[0] = glm::vec4(1.0f);
@@ -1599,11 +1600,51 @@ TEST_CASE("the copies of a shader taken at draws live until the frame is rendere
   gl.UseProgram(shader);
   MakeVertexArray(gl, {{-1, -1, 0, 1}, {1, -1, 0, 1}, {-1, 1, 0, 1}});
   for (int frame = 0; frame < 3; ++frame) {  // the context reuses its draw records from frame to frame
-    for (int k = 0; k < 5; ++k) gl.DrawArrays(TRIANGLES, 0, 3);
-    CHECK(shader.held.use_count() == 6);  // one copy per recorded draw
+    for (int k = 0; k < 5; ++k) {
+      shader.uniform = k / 2;  // changed before draws 0, 2 and 4
+      gl.DrawArrays(TRIANGLES, 0, 3);
+    }
+    CHECK(shader.held.use_count() == 4);  // one copy per change: draws of an unchanged shader use it again
     CHECK(CountLit(gl) > 0);
     CHECK(shader.held.use_count() == 1);  // all released by the rendering
   }
+}
+
+namespace {
+
+// Colour from a uniform held in a std::vector, changed in place between draws.
+struct VectorUniformShader : softgl::Shader<VectorUniformShader, testing::NoVaryings> {
+  std::vector<float> red{0.0f};
+  void Vertex(const VertexIn& in, VertexOut<testing::NoVaryings>& out) const { out.position = in.attrib[0]; }
+  bool Fragment(const FragmentIn<testing::NoVaryings>&, FragmentOut& out) const {
+    out.color[0] = glm::vec4(red[0], 0.0f, 0.0f, 1.0f);
+    return true;
+  }
+};
+
+}  // namespace
+
+TEST_CASE("a shader changed between draws renders each draw as it was, also where only owned memory changed",
+          "[context]") {
+  // Draws of an unchanged shader share one copy (and render as one draw); a change anywhere in the shader, also
+  // inside memory a member owns, gives the next draw a copy of its own.
+  Context gl(8, 8);
+  VectorUniformShader shader;
+  gl.UseProgram(shader);
+  MakeVertexArray(gl, {{-1, -1, 0, 1}, {0, -1, 0, 1}, {-1, 1, 0, 1}, {0, -1, 0, 1}, {1, -1, 0, 1}, {0, 1, 0, 1},
+                       {-1, 1, 0, 1}, {0, -1, 0, 1}, {0, 1, 0, 1}});
+  shader.red[0] = 0.2f;
+  gl.DrawArrays(TRIANGLES, 0, 3);  // the lower left corner
+  gl.DrawArrays(TRIANGLES, 6, 3);  // the middle: the same state, so merged into the draw before
+  shader.red[0] = 0.6f;
+  gl.DrawArrays(TRIANGLES, 3, 3);  // the lower right corner
+  std::uint8_t left[4], middle[4], right[4];
+  gl.ReadPixel(0, 0, left);
+  gl.ReadPixel(3, 5, middle);
+  gl.ReadPixel(7, 0, right);
+  CHECK(int(left[0]) == 51);
+  CHECK(int(middle[0]) == 51);
+  CHECK(int(right[0]) == 153);
 }
 
 TEST_CASE("many small draws in one frame render what they render one frame each, at any thread count", "[context]") {

@@ -40,6 +40,7 @@
 #include <cstdint>
 #include <cstring>
 #include <memory>
+#include <new>
 #include <typeinfo>
 #include <type_traits>
 
@@ -473,6 +474,12 @@ class Program {
   /// shaded later, when the context renders its recorded draws, and the shader may have changed by then. Null
   /// when the shader cannot be copied: the context then renders each draw before the call returns.
   virtual std::shared_ptr<const Program> Snapshot() const { return nullptr; }
+  /// Whether `copy`, a Snapshot() of this shader taken earlier, is what Snapshot() would give now, so that the
+  /// context may use it again: false unless it is known to be (the default).
+  virtual bool SnapshotIs(const Program& copy) const {
+    (void)copy;
+    return false;
+  }
   /// Whether the fragment stage writes gl_FragDepth. When it does not, the depth test may run before the shader
   /// (early depth test), where that cannot change the result.
   virtual bool WritesDepth() const { return true; }
@@ -535,6 +542,20 @@ class Shader : public Program {
     }
   };
 
+  // A copy of the shader whose storage holds the source's bytes before the copy is constructed in it, so that the
+  // bytes no member covers (padding) are the source's too, and SnapshotIs can compare the two objects whole.
+  struct SoftglCopy {
+    alignas(Derived) unsigned char bytes[sizeof(Derived)];
+    const Derived* object;
+    explicit SoftglCopy(const Derived& source) {
+      std::memcpy(bytes, static_cast<const void*>(&source), sizeof(Derived));
+      object = ::new (static_cast<void*>(bytes)) Derived(source);
+    }
+    SoftglCopy(const SoftglCopy&) = delete;
+    SoftglCopy& operator=(const SoftglCopy&) = delete;
+    ~SoftglCopy() { object->~Derived(); }
+  };
+
   // The qualifiers of the varyings, read once from a value-initialized struct (Flat<> and NoPerspective<> mark
   // their floats).
   struct Qualifiers {
@@ -571,9 +592,26 @@ class Shader : public Program {
   std::shared_ptr<const Program> Snapshot() const override {
     if constexpr (std::is_copy_constructible_v<Derived>) {
       // Only a shader whose class is Derived itself is copied (a class derived from it again would be sliced).
-      if (typeid(*this) == typeid(Derived)) return std::make_shared<Derived>(static_cast<const Derived&>(*this));
+      if (typeid(*this) == typeid(Derived)) {
+        const auto copy = std::make_shared<SoftglCopy>(static_cast<const Derived&>(*this));
+        return std::shared_ptr<const Program>(copy, copy->object);
+      }
     }
     return nullptr;
+  }
+
+  // A copy equal to this object byte for byte (its padding too: see SoftglCopy): every member copied then gives
+  // the same bytes as its source now, which a member that owns memory (std::vector, std::string, ...) never does,
+  // since the copy's memory is its own. Such a copy behaves as a fresh one would, and the draws that use it need
+  // no copy of their own.
+  bool SnapshotIs(const Program& copy) const override {
+    if constexpr (std::is_copy_constructible_v<Derived>) {
+      if (typeid(*this) != typeid(Derived) || typeid(copy) != typeid(Derived)) return false;
+      const void* a = static_cast<const Derived*>(this);
+      const void* b = &static_cast<const Derived&>(copy);
+      return std::memcmp(a, b, sizeof(Derived)) == 0;
+    }
+    return false;
   }
 
   void ShadeVertices(const VertexBatch& batch) const final {
