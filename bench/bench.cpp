@@ -697,65 +697,49 @@ int main(int argc, char** argv) {
                         return TimeGl(n, small_frame);
                       });
                     }});
-  // The per-draw cost: the first 10,000 of those triangles, one draw call each (a scene of many small objects).
+  // The per-draw cost: the first 10,000 of those triangles, one draw call each (a scene of many small objects);
+  // then the same draws with the shader's colour changed before each, as a scene of many objects changes a uniform
+  // per object (no two consecutive draws can then share a shader copy or render as one).
   constexpr int kDraws = 10000;
-  scenes.push_back({"many draws: 10,000 draw calls of one small triangle each", 1280, 720, "Mdraw/s", double(kDraws),
-                    [&](int n) {
-                      return WithShader<wide::FlatShader, scalar::FlatShader>([&](auto& shader) {
-                        softgl::Context gl(1280, 720, g_options);
-                        small_softgl(gl, shader);
-                        return MedianMs(n, [&] {
-                          gl.Clear(softgl::COLOR_BUFFER_BIT | softgl::DEPTH_BUFFER_BIT);
-                          for (int i = 0; i < kDraws; ++i) gl.DrawArrays(softgl::TRIANGLES, 3 * i, 3);
-                          gl.Finish();
-                        });
-                      });
-                    },
-                    [&](int n) {
-                      return with_osmesa(1280, 720, [&] {
-                        small_gl();
-                        return MedianMs(n, [&] {
-                          glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-                          for (int i = 0; i < kDraws; ++i) glDrawArrays(GL_TRIANGLES, 3 * i, 3);
-                          glFinish();
-                        });
-                      });
-                    }});
-  // The same draws with the shader's colour changed before each, as a scene of many objects changes a uniform
-  // per object: no two consecutive draws can then share a shader copy or render as one.
   auto draw_colour = [](int i) { return glm::vec4(float(i % 7) / 6.0f, float(i % 5) / 4.0f, 0.5f, 1.0f); };
-  scenes.push_back({"many draws, a uniform changed before each", 1280, 720, "Mdraw/s", double(kDraws),
-                    [&](int n) {
-                      return WithShader<wide::FlatShader, scalar::FlatShader>([&](auto& shader) {
-                        softgl::Context gl(1280, 720, g_options);
-                        small_softgl(gl, shader);
-                        return MedianMs(n, [&] {
-                          gl.Clear(softgl::COLOR_BUFFER_BIT | softgl::DEPTH_BUFFER_BIT);
-                          for (int i = 0; i < kDraws; ++i) {
-                            shader.color = draw_colour(i);
-                            gl.DrawArrays(softgl::TRIANGLES, 3 * i, 3);
-                          }
-                          gl.Finish();
+  auto add_draws_scene = [&](const char* name, bool change_uniform) {
+    scenes.push_back({name, 1280, 720, "Mdraw/s", double(kDraws),
+                      [&, change_uniform](int n) {
+                        return WithShader<wide::FlatShader, scalar::FlatShader>([&](auto& shader) {
+                          softgl::Context gl(1280, 720, g_options);
+                          small_softgl(gl, shader);
+                          return MedianMs(n, [&] {
+                            gl.Clear(softgl::COLOR_BUFFER_BIT | softgl::DEPTH_BUFFER_BIT);
+                            for (int i = 0; i < kDraws; ++i) {
+                              if (change_uniform) shader.color = draw_colour(i);
+                              gl.DrawArrays(softgl::TRIANGLES, 3 * i, 3);
+                            }
+                            gl.Finish();
+                          });
                         });
-                      });
-                    },
-                    [&](int n) {
-                      return with_osmesa(1280, 720, [&] {
-                        small_gl();
-                        GLint program = 0;
-                        glGetIntegerv(GL_CURRENT_PROGRAM, &program);
-                        const GLint colour = glGetUniformLocation(GLuint(program), "color");
-                        return MedianMs(n, [&] {
-                          glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-                          for (int i = 0; i < kDraws; ++i) {
-                            const glm::vec4 c = draw_colour(i);
-                            glUniform4f(colour, c.r, c.g, c.b, c.a);
-                            glDrawArrays(GL_TRIANGLES, 3 * i, 3);
-                          }
-                          glFinish();
+                      },
+                      [&, change_uniform](int n) {
+                        return with_osmesa(1280, 720, [&] {
+                          small_gl();
+                          GLint program = 0;
+                          glGetIntegerv(GL_CURRENT_PROGRAM, &program);
+                          const GLint colour = glGetUniformLocation(GLuint(program), "color");
+                          return MedianMs(n, [&] {
+                            glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+                            for (int i = 0; i < kDraws; ++i) {
+                              if (change_uniform) {
+                                const glm::vec4 c = draw_colour(i);
+                                glUniform4f(colour, c.r, c.g, c.b, c.a);
+                              }
+                              glDrawArrays(GL_TRIANGLES, 3 * i, 3);
+                            }
+                            glFinish();
+                          });
                         });
-                      });
-                    }});
+                      }});
+  };
+  add_draws_scene("many draws: 10,000 draw calls of one small triangle each", false);
+  add_draws_scene("many draws, a uniform changed before each", true);
   scenes.push_back({"fill rate: 50 blended full-screen quads", 1920, 1080, "Mpixel/s", 50.0 * 1920 * 1080,
                     [&](int n) {
                       return WithShader<wide::FlatShader, scalar::FlatShader>([&](auto& shader) {
