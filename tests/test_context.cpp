@@ -1635,7 +1635,7 @@ TEST_CASE("a shader changed between draws renders each draw as it was, also wher
                        {-1, 1, 0, 1}, {0, -1, 0, 1}, {0, 1, 0, 1}});
   shader.red[0] = 0.2f;
   gl.DrawArrays(TRIANGLES, 0, 3);  // the lower left corner
-  gl.DrawArrays(TRIANGLES, 6, 3);  // the middle: the same state, so merged into the draw before
+  gl.DrawArrays(TRIANGLES, 6, 3);  // the middle, with the shader unchanged
   shader.red[0] = 0.6f;
   gl.DrawArrays(TRIANGLES, 3, 3);  // the lower right corner
   std::uint8_t left[4], middle[4], right[4];
@@ -1645,6 +1645,31 @@ TEST_CASE("a shader changed between draws renders each draw as it was, also wher
   CHECK(int(left[0]) == 51);
   CHECK(int(middle[0]) == 51);
   CHECK(int(right[0]) == 153);
+}
+
+TEST_CASE("draws in a row with the same shader copy keep their own scissor and operations", "[context]") {
+  // Consecutive draws of an unchanged shader render as one draw only where their state is the same: a scissor or
+  // a colour mask changed between them still applies to the draw after the change only.
+  Context gl(8, 8);
+  testing::SolidShader shader;  // white; no member that owns memory, so the draws share one copy
+  gl.UseProgram(shader);
+  MakeVertexArray(gl, {{-1, -1, 0, 1}, {3, -1, 0, 1}, {-1, 3, 0, 1}});
+  gl.Enable(SCISSOR_TEST);
+  gl.Scissor(0, 0, 4, 8);
+  gl.DrawArrays(TRIANGLES, 0, 3);  // the left half
+  gl.Scissor(4, 0, 4, 8);
+  gl.DrawArrays(TRIANGLES, 0, 3);  // the right half
+  CHECK(CountLit(gl) == 64);
+  gl.Disable(SCISSOR_TEST);
+  gl.ClearColor(0, 0, 0, 1);
+  gl.Clear(COLOR_BUFFER_BIT);
+  gl.ColorMask(false, true, true, true);
+  gl.DrawArrays(TRIANGLES, 0, 3);  // red masked: nothing changes
+  gl.ColorMask(true, true, true, true);
+  gl.DrawArrays(TRIANGLES, 0, 3);  // red written
+  std::uint8_t px[4];
+  gl.ReadPixel(5, 5, px);
+  CHECK(int(px[0]) == 255);
 }
 
 TEST_CASE("many small draws in one frame render what they render one frame each, at any thread count", "[context]") {
