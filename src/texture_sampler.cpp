@@ -256,12 +256,55 @@ SOFTGL_INLINE typename V<W>::F FloorF(typename V<W>::F x) {
 template <int W, std::size_t... L>
 SOFTGL_WIDE typename V<W>::D LoadPairs(const std::uint8_t* base, const typename V<W>::I& off,
                                        std::index_sequence<L...>) {
-  auto load = [base](std::int32_t o) {
+  // The offsets go through memory: a load each costs less than taking each lane out of a vector register, which
+  // the compiler otherwise does (the empty asm tells it the array may have changed).
+  alignas(64) std::int32_t o[W];
+  std::memcpy(o, &off, sizeof o);
+  asm("" : "+m"(o));
+  auto load = [base](std::int32_t at) {
     std::uint64_t x;
-    std::memcpy(&x, base + o, 8);
+    std::memcpy(&x, base + at, 8);
     return x;
   };
-  return typename V<W>::D{load(off[L])...};
+  return typename V<W>::D{load(o[L])...};
+}
+
+// Byte c of each lane, alone at the bottom of the lane.
+template <int W>
+inline typename V<W>::U ByteToBottom(typename V<W>::U x, int c) {
+  return (x >> (8 * c)) & 0xFFu;
+}
+#if defined(SOFTGL_HAS_DISPATCH) && !defined(__clang__)
+// One byte shuffle (pshufb) in place of the shift and the mask; the same pattern in each 128-bit part. (Compiled for
+// the instruction sets that have it, as MaskToBits in wide.h.)
+inline __m128i ByteToBottomPattern(int c) {
+  return _mm_setr_epi32(int(0x80808000u + unsigned(c)), int(0x80808004u + unsigned(c)),
+                        int(0x80808008u + unsigned(c)), int(0x8080800Cu + unsigned(c)));
+}
+template <>
+__attribute__((target("avx2"))) inline V<8>::U ByteToBottom<8>(V<8>::U x, int c) {
+  return V<8>::U(_mm256_shuffle_epi8(__m256i(x), _mm256_broadcastsi128_si256(ByteToBottomPattern(c))));
+}
+template <>
+__attribute__((target("avx512f,avx512bw"))) inline V<16>::U ByteToBottom<16>(V<16>::U x, int c) {
+  return V<16>::U(_mm512_shuffle_epi8(__m512i(x), _mm512_broadcast_i32x4(ByteToBottomPattern(c))));
+}
+#endif
+
+// Byte C of each lane's texel, as a float; 0 (alpha 255) for a channel the layout lacks.
+template <int W, int Bytes, int C>
+SOFTGL_INLINE typename V<W>::F Channel(typename V<W>::U x) {
+  using F = typename V<W>::F;
+  using I = typename V<W>::I;
+  if constexpr (C >= Bytes) {
+    return F{} + (C == 3 ? 255.0f : 0.0f);
+  } else if constexpr (C == 0) {
+    return __builtin_convertvector(I(x & 0xFFu), F);  // as signed: one instruction on every set
+  } else if constexpr (C == 3) {
+    return __builtin_convertvector(I(x >> 24), F);
+  } else {
+    return __builtin_convertvector(I(ByteToBottom<W>(x, C)), F);
+  }
 }
 
 // Bilinear samples of 8-bit level `lv` (RGBA8 and RGB8, RG8 or R8: Bytes 4, 2 or 1 a texel) for the lanes of
@@ -305,15 +348,15 @@ SOFTGL_INLINE void BilinearUnorm8(const TextureLevel& lv, typename V<W>::F s, ty
     t10[l] = w0;
     t11[l] = w1;
   }
-  for (int c = 0; c < 4; ++c) {
-    const int shift = 8 * c;
-    auto channel = [shift, c](U x) SOFTGL_WIDE_LAMBDA {
-      if (c >= Bytes) return F{} + (c == 3 ? 255.0f : 0.0f);  // a channel the layout lacks
-      return __builtin_convertvector(I((x >> shift) & 0xFFu), F);  // as signed: one instruction on every set
-    };
-    const F sum = w00 * channel(t00) + w10 * channel(t10) + w01 * channel(t01) + w11 * channel(t11);
+  auto channel_sum = [&](auto c) SOFTGL_WIDE_LAMBDA {
+    const F sum = w00 * Channel<W, Bytes, c>(t00) + w10 * Channel<W, Bytes, c>(t10) +
+                  w01 * Channel<W, Bytes, c>(t01) + w11 * Channel<W, Bytes, c>(t11);
     out[c] = mask ? sum : out[c];
-  }
+  };
+  channel_sum(std::integral_constant<int, 0>());
+  channel_sum(std::integral_constant<int, 1>());
+  channel_sum(std::integral_constant<int, 2>());
+  channel_sum(std::integral_constant<int, 3>());
 }
 
 // Lambda() for W lanes; false for lanes whose rho^2 is not a normal positive float.
