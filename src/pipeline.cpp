@@ -17,7 +17,8 @@ namespace {
 
 constexpr int kVertexBatch = 64;
 constexpr int kVertexJob = 16 * kVertexBatch;
-constexpr int kBinJob = 1024;  // primitives clipped and binned per job
+constexpr std::size_t kBinJob = 1024;     // primitives clipped and binned per job, at least
+constexpr std::size_t kBinJobMax = 4096;  // and at most
 
 // Stage 1-2: fetch and shade every vertex the draw references, once each where indices repeat.
 void ShadeVertices(const DrawCall& call, const FetchPlan& fetch, const Program& program, const Textures* textures,
@@ -353,7 +354,7 @@ class PrimitiveRunner {
 namespace {
 
 // One draw small enough to hold all its shaded vertices at once: shaded, then its primitives clipped and binned
-// in jobs of kBinJob primitives, each job into its own batch, the batches kept in primitive order.
+// in jobs of kBinJob to kBinJobMax primitives, each job into its own batch, the batches kept in primitive order.
 void RecordChunk(const DrawCall& call, const FetchPlan& fetch, const DrawState& state, DrawPacket& packet,
                  Frame& frame, WorkerPool& pool, Scratch& scratch) {
   ShadeVertices(call, fetch, *state.program, state.textures, state.interpolation, state.viewport, pool, scratch);
@@ -367,7 +368,12 @@ void RecordChunk(const DrawCall& call, const FetchPlan& fetch, const DrawState& 
   const std::size_t count = per_instance * std::size_t(call.instances);
   if (state.primitives_generated) *state.primitives_generated += count;
   const std::uint32_t unique = std::uint32_t(scratch.shaded.count / call.instances);
-  const int jobs = int((count + kBinJob - 1) / kBinJob);
+  // Every tile walks every batch of the draw, so fewer, larger batches render faster; but each thread should still
+  // have about two jobs to bin.
+  const std::size_t threads = std::size_t(pool.Threads());
+  const std::size_t job_size =
+      count <= kBinJob ? kBinJob : std::clamp((count + 2 * threads - 1) / (2 * threads), kBinJob, kBinJobMax);
+  const int jobs = int((count + job_size - 1) / job_size);
   if (jobs == 0) return;
   // A draw of one job's primitives goes into a batch shared with the small draws before it; a larger one into
   // batches of its own, one per job.
@@ -383,16 +389,16 @@ void RecordChunk(const DrawCall& call, const FetchPlan& fetch, const DrawState& 
   pool.Run(jobs, [&](int job, int worker) {
     BinnedBatch& bins = shared ? *shared_batch : frame.Batch(packet, job);
     PrimitiveRunner runner(state, scratch.shaded, bins, grid, *scratch.primitive[std::size_t(worker)]);
-    const std::size_t end = std::min(count, std::size_t(job + 1) * kBinJob);
+    const std::size_t end = std::min(count, std::size_t(job + 1) * job_size);
     // Primitive p is primitive q of instance g: q and the instance's shift advance with p (no division per
     // primitive).
-    std::size_t q = per_instance ? std::size_t(job) * kBinJob % per_instance : 0;
-    std::uint32_t shift = per_instance ? std::uint32_t(std::size_t(job) * kBinJob / per_instance) * unique : 0;
+    std::size_t q = per_instance ? std::size_t(job) * job_size % per_instance : 0;
+    std::uint32_t shift = per_instance ? std::uint32_t(std::size_t(job) * job_size / per_instance) * unique : 0;
     // In groups of up to 16 primitives: the triangles of a group that certainly draw nothing, and the facing and
     // pixel box of most others, are found together.
     std::uint32_t v[TriangleGroup::kSize][4];  // each primitive's vertices, then its provoking vertex
     GroupVerdict verdict;
-    for (std::size_t p = std::size_t(job) * kBinJob; p < end;) {
+    for (std::size_t p = std::size_t(job) * job_size; p < end;) {
       int n = 0;
       for (; n < TriangleGroup::kSize && p < end; ++n, ++p, ++q) {
         if (q == per_instance) {
