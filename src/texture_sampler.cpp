@@ -259,7 +259,7 @@ SOFTGL_WIDE typename V<W>::D LoadPairs(const std::uint8_t* base, const typename 
   // The offsets go through memory: a load each costs less than taking each lane out of a vector register, which
   // the compiler otherwise does (the empty asm tells it the array may have changed).
   alignas(64) std::int32_t o[W];
-  std::memcpy(o, &off, sizeof o);
+  detail::StoreVec(o, off);
   asm("" : "+m"(o));
   auto load = [base](std::int32_t at) {
     std::uint64_t x;
