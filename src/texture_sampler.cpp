@@ -308,8 +308,9 @@ SOFTGL_INLINE typename V<W>::F Channel(typename V<W>::U x) {
 }
 
 // Bilinear samples of 8-bit level `lv` (RGBA8 and RGB8, RG8 or R8: Bytes 4, 2 or 1 a texel) for the lanes of
-// `mask`, in byte units, written into r, g, b, a; channels the layout lacks read 0 (alpha 255), as Raw() has them.
-template <int W, int Bytes>
+// `mask` (for every lane if All), in byte units, written into r, g, b, a; channels the layout lacks read 0 (alpha
+// 255), as Raw() has them.
+template <int W, int Bytes, bool All = false>
 SOFTGL_INLINE void BilinearUnorm8(const TextureLevel& lv, typename V<W>::F s, typename V<W>::F t,
                                  typename V<W>::I mask, typename V<W>::F out[4]) {
   using F = typename V<W>::F;
@@ -334,13 +335,14 @@ SOFTGL_INLINE void BilinearUnorm8(const TextureLevel& lv, typename V<W>::F s, ty
   // there, and are discarded below); the level's padding covers a read at its last texel.
   using D = typename V<W>::D;
   const std::uint8_t* base = lv.data.data();
-  const I o0 = ((r0 + c0) & mask) * Bytes, o1 = ((r1 + c0) & mask) * Bytes;
+  const I o0 = (All ? r0 + c0 : (r0 + c0) & mask) * Bytes, o1 = (All ? r1 + c0 : (r1 + c0) & mask) * Bytes;
   const D p0 = LoadPairs<W>(base, o0, std::make_index_sequence<W>()),
           p1 = LoadPairs<W>(base, o1, std::make_index_sequence<W>());
   U t00 = __builtin_convertvector(p0, U), t01 = __builtin_convertvector(p1, U);
   U t10 = __builtin_convertvector(p0 >> (8 * Bytes), U), t11 = __builtin_convertvector(p1 >> (8 * Bytes), U);
   // On the last column the right-hand texel wraps to the row's first (REPEAT).
-  for (std::uint32_t wrap = detail::MaskToBits<W>((c0 == mi) & mask, 0); wrap != 0; wrap &= wrap - 1) {
+  for (std::uint32_t wrap = detail::MaskToBits<W>(All ? c0 == mi : (c0 == mi) & mask, 0); wrap != 0;
+       wrap &= wrap - 1) {
     const int l = __builtin_ctz(wrap);
     std::uint32_t w0, w1;
     std::memcpy(&w0, base + std::size_t(r0[l]) * Bytes, 4);
@@ -351,7 +353,8 @@ SOFTGL_INLINE void BilinearUnorm8(const TextureLevel& lv, typename V<W>::F s, ty
   auto channel_sum = [&](auto c) SOFTGL_WIDE_LAMBDA {
     const F sum = w00 * Channel<W, Bytes, c>(t00) + w10 * Channel<W, Bytes, c>(t10) +
                   w01 * Channel<W, Bytes, c>(t01) + w11 * Channel<W, Bytes, c>(t11);
-    out[c] = mask ? sum : out[c];
+    if constexpr (All) out[c] = sum;
+    else out[c] = mask ? sum : out[c];
   };
   channel_sum(std::integral_constant<int, 0>());
   channel_sum(std::integral_constant<int, 1>());
@@ -415,7 +418,14 @@ SOFTGL_INLINE void SampleRepeatLanes(const TextureView& view, const Textures::La
     // (The masks stay results of comparisons: GCC 12 turns a select on a mask it cannot see is one into a branch
     // per lane.)
     I pending = normal;
-    for (std::uint32_t bits = normal_bits; bits != 0; bits = detail::MaskToBits<W>(pending, 0)) {
+    if (normal_bits == (1u << W) - 1 && detail::MaskToBits<W>(level_a != level_a[0], 0) == 0) {
+      // The usual block: every lane on the vector path, on the same first level (so a second level, where any
+      // lane needs one, exists for all).
+      BilinearUnorm8<W, Bytes, true>(levels[level_a[0]], s, t, normal, ra);
+      if (detail::MaskToBits<W>(two, 0) != 0) BilinearUnorm8<W, Bytes, true>(levels[level_a[0] + 1], s, t, normal, rb);
+      pending = I{};
+    }
+    for (std::uint32_t bits = detail::MaskToBits<W>(pending, 0); bits != 0; bits = detail::MaskToBits<W>(pending, 0)) {
       const int L = level_a[__builtin_ctz(bits)];
       const I mask = pending & (level_a == L);
       BilinearUnorm8<W, Bytes>(levels[L], s, t, mask, ra);
