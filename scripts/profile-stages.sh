@@ -12,14 +12,14 @@ trap 'rm -f "$data"' EXIT
 echo "| scene | front end | binning | clears | rasterization | early depth test | fragment shader and texture sampling | fragment operations | memory copies, fills, page faults | bench set-up (% of samples, left out) |"
 echo "|---|---|---|---|---|---|---|---|---|---|"
 for scene in "model: 2Cyl" "african_head" "small triangles" "fill rate" "overdraw"; do
-  frames=6
-  case "$scene" in model*|african*) frames=60 ;; esac  # short frames: more of them, so set-up weighs little
+  frames=20
+  case "$scene" in model*|african*) frames=200 ;; esac  # short frames: more of them, so set-up weighs little
   perf record -q -o "$data" "$bench" --scene "$scene" --frames "$frames" --softgl-only 1 --scalar 0 --threads 1 >/dev/null 2>&1
   perf report -i "$data" --no-children --stdio --sort sym 2>/dev/null | python3 -c '
 import re, sys
 rules = [
-  ("front end", r"FetchAttribute|FetchVertices|ShadeVertices|Vertices(Avx512|Avx2|Base)|VertexLanes|Resolve|ClipCodes|ClipTriangle|ClipLine|ToWindow|SignedArea|AssemblePrimitives|AssembleRun|RecordChunk|RecordDraw|RecordPiece|PrimitiveRunner|ReadIndices|Intersect|IsFrontFacing|IsCulled|PolygonOffset|CoversNoPixelCentre|TriangleCentreBox|DrawsNothing"),
-  ("binning", r"BinnedBatch::Add|BinnedBatch::Finish|TriangleBox|LineBox|PointBox|::Box\("),
+  ("front end", r"FetchAttribute|FetchVertices|ShadeVertices|Vertices(Avx512|Avx2|Base)|VertexLanes|Resolve|ClipCodes|ClipTriangle|ClipLine|ToWindow|SignedArea|AssemblePrimitives|AssembleRun|RecordChunk|RecordDraw|RecordPiece|PrimitiveRunner|ReadIndices|Intersect|IsFrontFacing|IsCulled|PolygonOffset|CoversNoPixelCentre|TriangleCentreBox|DrawsNothing|WindowPositions|JudgeGroup|JudgeTriangles|ContextState::Draw|Context::Draw|MakeView|Snapshot|MakeViewportTransform|WorkerPool"),
+  ("binning", r"BinnedBatch::Add|BinnedBatch::Finish|TriangleBox|LineBox|PointBox|::Box\(|SharedBatch|NewBatches|ListLastDraw|Frame::AddDraw|Frame::List"),
   ("clears", r"RenderTarget::Clear"),
   ("rasterization", r"Rasterize|RenderTile|BinnedBatch::Vertex|BinnedBatch::View|FragmentStage|RegionCoverage|FragCoord|VaryingsOfBlock|InterpolateVaryings|InterpolateFragCoords|AddSquare|AddQuad|EmitQuad|BlockSink"),
   ("early depth test", r"EarlyDepth|EarlyBlock"),
