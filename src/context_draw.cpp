@@ -10,12 +10,14 @@ namespace softgl {
 
 void ContextState::Draw(const detail::DrawCall& call) {
   detail::FetchPlan& plan = fetch_plan;  // every field a fetch reads is set here
+  std::copy(std::begin(current_attrib), std::end(current_attrib), plan.current);
+  plan.enabled = 0;
   for (int i = 0; i < kMaxVertexAttribs; ++i) {
     const AttribBinding& a = vao->attrib[i];
     detail::AttribSource& src = plan.attrib[i];
-    src.current = current_attrib[i];
     src.enabled = a.enabled;
     if (!a.enabled) continue;
+    plan.enabled |= 1u << i;
     src.data = a.buffer ? a.buffer->data.data() : nullptr;
     src.size = a.buffer ? a.buffer->data.size() : 0;
     src.offset = a.offset;

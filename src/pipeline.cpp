@@ -84,9 +84,6 @@ void ShadeVertices(const DrawCall& call, const FetchPlan& fetch, const Program& 
   out.window_varyings.resize(std::size_t(n) * std::size_t(out.nvar));
   const ClipPlanes planes = GuardBandPlanes(viewport);
   if (s.vertex.size() < std::size_t(pool.Threads())) s.vertex.resize(std::size_t(pool.Threads()));
-  std::uint32_t enabled = 0;
-  for (int a = 0; a < kMaxVertexAttribs; ++a)
-    if (fetch.attrib[a].enabled) enabled |= 1u << a;
   const int simd = int(CpuSimdLevel());
   // Noperspective varyings are multiplied by the clip-space w here, so that clipping (linear in clip space) and
   // the divide by w give each window vertex the varying's own value, which the rasterizer interpolates linearly.
@@ -105,15 +102,14 @@ void ShadeVertices(const DrawCall& call, const FetchPlan& fetch, const Program& 
       const int k0 = base % unique;
       m = std::min({kVertexBatch, end - base, unique - k0});
       const std::uint32_t instance = call.instance + std::uint32_t(base / unique);
-      // Disabled attributes read constant values: written into the scratch by the job's first batch only.
-      FetchVertices(fetch, to_shade.data() + k0, m, instance, vs.attribs.data(), kVertexBatch,
-                    base == job * kVertexJob);
+      FetchVertices(fetch, to_shade.data() + k0, m, instance, vs.attribs.data(), kVertexBatch);
       for (int i = 0; i < m; ++i) vs.vertex_ids[i] = int(to_shade[std::size_t(k0 + i)]);
       VertexBatch batch;
       batch.count = m;
       batch.attribs = vs.attribs.data();
       batch.stride = kVertexBatch;
-      batch.enabled = enabled;
+      batch.enabled = fetch.enabled;
+      batch.current = fetch.current;
       batch.simd = simd;
       batch.vertex_ids = vs.vertex_ids.data();
       batch.instance_id = int(instance);

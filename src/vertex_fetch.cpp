@@ -2,6 +2,7 @@
 #include "vertex_fetch.h"
 
 #include <algorithm>
+#include <bit>
 #include <cstring>
 #include <limits>
 
@@ -107,29 +108,18 @@ glm::vec4 Read(const AttribSource& src, const Resolved& r, std::uint32_t index) 
 
 }  // namespace
 
-glm::vec4 FetchAttribute(const AttribSource& src, std::uint32_t index) {
-  if (!src.enabled) return src.current;
-  return Read(src, Resolve(src), index);
-}
+glm::vec4 FetchAttribute(const AttribSource& src, std::uint32_t index) { return Read(src, Resolve(src), index); }
 
 void FetchVertices(const FetchPlan& plan, const std::uint32_t* indices, int count, std::uint32_t instance,
-                   float* out, int stride, bool fill_disabled) {
+                   float* out, int stride) {
   if (count <= 0) return;
   const int padded = (count + 15) & ~15;
   const std::size_t row = std::size_t(stride);
-  for (int a = 0; a < kMaxVertexAttribs; ++a) {
+  for (std::uint32_t bits = plan.enabled; bits != 0; bits &= bits - 1) {
+    const int a = std::countr_zero(bits);
     const AttribSource& src = plan.attrib[a];
     float* x = out + std::size_t(a) * 4 * row;
     float *y = x + row, *z = y + row, *w = z + row;
-    if (!src.enabled) {
-      if (fill_disabled) {
-        x[0] = src.current.x;
-        y[0] = src.current.y;
-        z[0] = src.current.z;
-        w[0] = src.current.w;
-      }
-      continue;
-    }
     const Resolved r = Resolve(src);
     auto put = [&](int i, const glm::vec4& v) {
       x[i] = v.x;

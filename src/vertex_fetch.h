@@ -22,28 +22,32 @@ struct AttribSource {
   Enum type = FLOAT;
   bool normalized = false;
   std::uint32_t divisor = 0;           // VertexAttribDivisor: 0 reads per vertex, d > 0 element instance / d
-  glm::vec4 current{0.0f, 0.0f, 0.0f, 1.0f};  // value read while disabled
 };
 
 struct FetchPlan {
   AttribSource attrib[kMaxVertexAttribs];
+  std::uint32_t enabled = 0;  // bit a: attrib[a].enabled (the only attributes FetchVertices reads)
+  glm::vec4 current[kMaxVertexAttribs];  // the value a disabled attribute reads (VertexAttrib4f), (0, 0, 0, 1) at first
+  FetchPlan() {
+    for (glm::vec4& c : current) c = glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
+  }
 };
 
 /// Size in bytes of one component of an attribute or index type; 0 for an unknown type.
 std::size_t TypeSize(Enum type);
 
-/// Reads attribute `src` of vertex `index`. Missing components come from (0, 0, 0, 1); an element that lies
-/// (even partly) outside the buffer reads as (0, 0, 0, 1).
+/// Reads attribute `src` of vertex `index` (an enabled attribute). Missing components come from (0, 0, 0, 1); an
+/// element that lies (even partly) outside the buffer reads as (0, 0, 0, 1).
 glm::vec4 FetchAttribute(const AttribSource& src, std::uint32_t index);
 
 /// Fetches all attributes of `count` vertices of instance `instance` into rows of lanes, as VertexBatch::attribs
 /// lays them out: component c of attribute a of vertex i at out[(a * 4 + c) * stride + i], each enabled attribute's
 /// rows padded up to a multiple of 16 (stride at least that) with the last vertex's value. An attribute with divisor
-/// d > 0 reads element instance / d for every vertex (OpenGL 3.3, section 2.8.2), the others the vertex's index. A
-/// disabled attribute's current value goes to element 0 of its rows, only with `fill_disabled` (a caller whose `out`
-/// already holds this plan's current values there passes false).
+/// d > 0 reads element instance / d for every vertex (OpenGL 3.3, section 2.8.2), the others the vertex's index.
+/// Only the enabled attributes (plan.enabled) are written: a disabled one's value is plan.current, which the vertex
+/// stage reads from there (VertexBatch::current).
 void FetchVertices(const FetchPlan& plan, const std::uint32_t* indices, int count, std::uint32_t instance,
-                   float* out, int stride, bool fill_disabled = true);
+                   float* out, int stride);
 
 /// Reads `count` indices of `type` (UNSIGNED_BYTE/SHORT/INT) from `data`. The caller has checked the range.
 void ReadIndices(Enum type, const std::uint8_t* data, int count, std::uint32_t* out);

@@ -391,12 +391,12 @@ struct FragmentIn {
 /// A batch of vertices handed to the vertex stage. Filled by the pipeline.
 struct VertexBatch {
   int count = 0;
-  /// Component c of attribute a of vertex i at attribs[(a * 4 + c) * stride + i]: rows of lanes, each row padded
-  /// to a multiple of 16 with the last vertex's value. A disabled attribute's rows hold its current value in
-  /// element 0 only.
+  /// Component c of enabled attribute a of vertex i at attribs[(a * 4 + c) * stride + i]: rows of lanes, each row
+  /// padded to a multiple of 16 with the last vertex's value. A disabled attribute's rows are not read.
   const float* attribs = nullptr;
   int stride = 0;                      ///< floats per row of `attribs` (a multiple of 16, at least count)
-  std::uint32_t enabled = 0xFFFFu;     ///< attributes read from arrays (bit i); the others hold their current value
+  std::uint32_t enabled = 0xFFFFu;     ///< attributes read from arrays (bit i); the others read `current`
+  const glm::vec4* current = nullptr;  ///< [kMaxVertexAttribs] the value of each disabled attribute
   const int* vertex_ids = nullptr;     ///< [count]
   int instance_id = 0;                 ///< gl_InstanceID of every vertex of the batch
   glm::vec4* positions = nullptr;      ///< out: [count] clip-space positions
@@ -427,14 +427,18 @@ template <class Batch>
 void FillVertexLanes(const Batch& batch, int base, int n, VertexLanes& in) {
   in.textures = batch.textures;
   // Attributes to lanes: vertex l's attribute a into lane l; lanes past the batch repeat its last vertex. A
-  // disabled attribute holds its current value in every vertex: written in the batch's first call only.
+  // disabled attribute holds its current value in every vertex. (Unrolled, so that the compiler drops the writes
+  // of attributes the shader never reads.)
+#if defined(__GNUC__)
+#pragma GCC unroll 16
+#endif
   for (int a = 0; a < kMaxVertexAttribs; ++a) {
     const float* row = batch.attribs + std::size_t(a) * 4 * std::size_t(batch.stride);
     Float* dst = &in.attrib[a].x;
     if ((batch.enabled >> a) & 1u) {
       for (int c = 0; c < 4; ++c) dst[c] = Float::Load(row + std::size_t(c) * std::size_t(batch.stride) + base);
-    } else if (base == 0) {
-      for (int c = 0; c < 4; ++c) dst[c] = Float(row[std::size_t(c) * std::size_t(batch.stride)]);
+    } else {
+      for (int c = 0; c < 4; ++c) dst[c] = Float(batch.current[a][c]);
     }
   }
   std::int32_t ids[kLanes];
@@ -627,9 +631,11 @@ class Shader : public Program {
       glm::vec4 attrib[kMaxVertexAttribs];
       for (int i = 0; i < batch.count; ++i) {
         for (int a = 0; a < kMaxVertexAttribs; ++a) {  // vertex i's attributes from the rows
-          const float* row = batch.attribs + std::size_t(a) * 4 * std::size_t(batch.stride);
-          const std::size_t k = ((batch.enabled >> a) & 1u) ? std::size_t(i) : 0;
-          for (int c = 0; c < 4; ++c) attrib[a][c] = row[std::size_t(c) * std::size_t(batch.stride) + k];
+          const float* row = batch.attribs + std::size_t(a) * 4 * std::size_t(batch.stride) + i;
+          if ((batch.enabled >> a) & 1u)
+            for (int c = 0; c < 4; ++c) attrib[a][c] = row[std::size_t(c) * std::size_t(batch.stride)];
+          else
+            attrib[a] = batch.current[a];
         }
         VertexOut<Varyings> out;
         self.Vertex(VertexIn{attrib, batch.vertex_ids[i], batch.textures, batch.instance_id}, out);
@@ -658,7 +664,7 @@ class Shader : public Program {
   // ---- The wide form, compiled three times ----
   void VertexLanesRun(const VertexBatch& batch) const {
     const Derived& self = static_cast<const Derived&>(*this);
-    VertexLanes in;  // (kept from one group of 16 to the next: disabled attributes are written once)
+    VertexLanes in;
     for (int base = 0; base < batch.count; base += kLanes) {
       const int n = batch.count - base < kLanes ? batch.count - base : kLanes;
       shader_detail::FillVertexLanes(batch, base, n, in);
