@@ -291,14 +291,14 @@ void Context::EnableVertexAttribArray(std::uint32_t index) {
   auto& s = *state_;
   if (index >= std::uint32_t(kMaxVertexAttribs)) return s.SetError(INVALID_VALUE, __func__, "attribute index is kMaxVertexAttribs or more");
   if (s.vao == nullptr) return s.SetError(INVALID_OPERATION, __func__, "no vertex array is bound");
-  s.vao->attrib[index].enabled = true;
+  s.vao->enabled |= 1u << index;
 }
 
 void Context::DisableVertexAttribArray(std::uint32_t index) {
   auto& s = *state_;
   if (index >= std::uint32_t(kMaxVertexAttribs)) return s.SetError(INVALID_VALUE, __func__, "attribute index is kMaxVertexAttribs or more");
   if (s.vao == nullptr) return s.SetError(INVALID_OPERATION, __func__, "no vertex array is bound");
-  s.vao->attrib[index].enabled = false;
+  s.vao->enabled &= ~(1u << index);
 }
 
 void Context::VertexAttribDivisor(std::uint32_t index, std::uint32_t divisor) {

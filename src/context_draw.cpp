@@ -4,6 +4,8 @@
 #include "vertex_fetch.h"
 #include "viewport.h"
 
+#include <bit>
+
 namespace softgl {
 
 // ---- Drawing -------------------------------------------------------------------------------------------------
@@ -11,13 +13,11 @@ namespace softgl {
 void ContextState::Draw(const detail::DrawCall& call) {
   detail::FetchPlan& plan = fetch_plan;  // every field a fetch reads is set here
   std::copy(std::begin(current_attrib), std::end(current_attrib), plan.current);
-  plan.enabled = 0;
-  for (int i = 0; i < kMaxVertexAttribs; ++i) {
+  plan.enabled = vao->enabled;
+  for (std::uint32_t bits = vao->enabled; bits != 0; bits &= bits - 1) {  // (the disabled ones are not read)
+    const int i = std::countr_zero(bits);
     const AttribBinding& a = vao->attrib[i];
     detail::AttribSource& src = plan.attrib[i];
-    src.enabled = a.enabled;
-    if (!a.enabled) continue;
-    plan.enabled |= 1u << i;
     src.data = a.buffer ? a.buffer->data.data() : nullptr;
     src.size = a.buffer ? a.buffer->data.size() : 0;
     src.offset = a.offset;
@@ -37,7 +37,7 @@ void ContextState::Draw(const detail::DrawCall& call) {
   // only, and what it holds is released at the end.)
   detail::DrawPacket& packet = draw_packet;
   detail::DrawTextures& tex = draw_textures;
-  for (int u = 0; u < kMaxTextureUnits; ++u) {
+  for (int u = 0; u < units_used; ++u) {  // (the units past those stay null)
     tex.textures.unit_2d[u] = units[u].tex_2d ? &(tex.views[0][u] = detail::MakeView(*units[u].tex_2d)) : nullptr;
     tex.textures.unit_cube[u] = units[u].cube ? &(tex.views[1][u] = detail::MakeView(*units[u].cube)) : nullptr;
   }
@@ -96,7 +96,10 @@ namespace {
 // attribute array's buffer (or, for indexed draws, the element buffer) is mapped. Needs a bound vertex array.
 bool CheckNotMapped(ContextState& s, const char* what, bool elements) {
   bool mapped = elements && s.vao->element_buffer && s.vao->element_buffer->mapped;
-  for (const AttribBinding& a : s.vao->attrib) mapped = mapped || (a.enabled && a.buffer && a.buffer->mapped);
+  for (std::uint32_t bits = s.vao->enabled; bits != 0; bits &= bits - 1) {
+    const AttribBinding& a = s.vao->attrib[std::countr_zero(bits)];
+    mapped = mapped || (a.buffer && a.buffer->mapped);
+  }
   if (mapped) return s.SetError(INVALID_OPERATION, what, "a buffer the draw reads (an enabled attribute array's or the element buffer) is mapped"), false;
   return true;
 }

@@ -43,7 +43,6 @@ struct Buffer {
 };
 
 struct AttribBinding {
-  bool enabled = false;
   std::shared_ptr<Buffer> buffer;  // keeps a deleted buffer's store alive while referenced, as OpenGL does
   std::size_t offset = 0;
   int size = 4;
@@ -55,6 +54,7 @@ struct AttribBinding {
 
 struct VertexArray {
   AttribBinding attrib[kMaxVertexAttribs];
+  std::uint32_t enabled = 0;  // bit i: attribute array i enabled (EnableVertexAttribArray)
   std::shared_ptr<Buffer> element_buffer;
 };
 
@@ -143,6 +143,7 @@ struct ContextState {
   std::unordered_map<std::uint32_t, std::shared_ptr<detail::TextureObject>> textures;
   std::uint32_t next_texture = 1;
   TextureUnit units[kMaxTextureUnits];
+  int units_used = 0;  // units from here on have never had a texture bound (BindTexture raises it)
   int active_unit = 0;
   int unpack_alignment = 4;
   int pack_alignment = 4, pack_row_length = 0, pack_skip_rows = 0, pack_skip_pixels = 0;

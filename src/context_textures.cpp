@@ -59,6 +59,7 @@ void Context::BindTexture(Enum target, std::uint32_t texture) {
   }
   TextureUnit& u = s.units[s.active_unit];
   (target == TEXTURE_2D ? u.tex_2d : u.cube) = std::move(object);
+  s.units_used = std::max(s.units_used, s.active_unit + 1);
 }
 
 namespace {

@@ -153,7 +153,12 @@ void FetchVertices(const FetchPlan& plan, const std::uint32_t* indices, int coun
     } else {
       for (int i = 0; i < count; ++i) put(i, Read(src, r, indices[i]));
     }
-    for (int i = count; i < padded; ++i) put(i, glm::vec4(x[count - 1], y[count - 1], z[count - 1], w[count - 1]));
+    for (float* r : {x, y, z, w}) {  // the last group of 16, whole (a loop the compiler vectorizes)
+      float* g = r + (padded - 16);
+      const float last = r[count - 1];
+      const int keep = count - (padded - 16);
+      for (int i = 0; i < 16; ++i) g[i] = i < keep ? g[i] : last;
+    }
   }
 }
 

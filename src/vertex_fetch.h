@@ -13,7 +13,6 @@ namespace softgl::detail {
 
 /// Where one attribute comes from, resolved from the vertex array and buffer objects at draw time.
 struct AttribSource {
-  bool enabled = false;
   const std::uint8_t* data = nullptr;  // start of the buffer's store
   std::size_t size = 0;                // bytes in the store
   std::size_t offset = 0;              // byte offset of element 0

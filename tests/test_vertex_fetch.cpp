@@ -18,7 +18,6 @@ template <class T>
 AttribSource Source(const std::vector<T>& data, int components, Enum type, bool normalized, std::size_t stride = 0,
                     std::size_t offset = 0) {
   AttribSource s;
-  s.enabled = true;
   s.data = reinterpret_cast<const std::uint8_t*>(data.data());
   s.size = data.size() * sizeof(T);
   s.offset = offset;
@@ -143,7 +142,6 @@ TEST_CASE("FetchVertices: enabled attributes per vertex, disabled ones left alon
   plan.attrib[0].stride = 12;
   plan.enabled = 1u;
   plan.attrib[5] = Source(positions, 3, FLOAT, false);  // described but disabled: not read
-  plan.attrib[5].enabled = false;
   plan.current[5] = glm::vec4(0.25f, 0.5f, 0.75f, 1.0f);
   CHECK(detail::FetchPlan{}.current[7] == glm::vec4(0, 0, 0, 1));  // the default current value
   Rows out;
