@@ -159,12 +159,38 @@ SOFTGL_WIDE void FragCoordOfBlock(BlockBuffer& blocks, int b) {
   using F = typename V<W>::F;
   const TrianglePlanes* const* qp = blocks.quad_planes[b];
   if (qp[0] && qp[1] == qp[0] && qp[2] == qp[0] && qp[3] == qp[0]) {
-    alignas(64) float x[kLanes], y[kLanes];
-    for (int l = 0; l < kLanes; ++l) {
-      x[l] = float(blocks.qx[b][l >> 2] + (l & 1));
-      y[l] = float(blocks.qy[b][l >> 2] + ((l >> 1) & 1));
+    if constexpr (W == 4 || W == 8) {
+      // Lane l is pixel (l & 1, (l >> 1) & 1) of quad l >> 2: each quad's origin spread over its four lanes.
+      using I4 = typename V<4>::I;
+      const I4 qx = LoadVec<I4>(blocks.qx[b]), qy = LoadVec<I4>(blocks.qy[b]);
+      auto spread = [](I4 o, auto q) SOFTGL_WIDE_LAMBDA {  // the origins of quads q and (W = 8) q + 1
+        if constexpr (W == 4) return __builtin_shufflevector(o, o, q(), q(), q(), q());
+        else return __builtin_shufflevector(o, o, q(), q(), q(), q(), q() + 1, q() + 1, q() + 1, q() + 1);
+      };
+      using I = typename V<W>::I;
+      I dx, dy;
+      for (int l = 0; l < W; ++l) {
+        dx[l] = l & 1;
+        dy[l] = (l >> 1) & 1;
+      }
+      auto lanes = [&](auto q) SOFTGL_WIDE_LAMBDA {
+        FragCoordLanes<W>(*qp[0], blocks, b, 4 * q(), __builtin_convertvector(spread(qx, q) + dx, F),
+                          __builtin_convertvector(spread(qy, q) + dy, F));
+      };
+      lanes(std::integral_constant<int, 0>());
+      lanes(std::integral_constant<int, W / 4>());
+      if constexpr (W == 4) {
+        lanes(std::integral_constant<int, 2>());
+        lanes(std::integral_constant<int, 3>());
+      }
+    } else {
+      alignas(64) float x[kLanes], y[kLanes];
+      for (int l = 0; l < kLanes; ++l) {
+        x[l] = float(blocks.qx[b][l >> 2] + (l & 1));
+        y[l] = float(blocks.qy[b][l >> 2] + ((l >> 1) & 1));
+      }
+      for (int l0 = 0; l0 < kLanes; l0 += W) FragCoordLanes<W>(*qp[0], blocks, b, l0, LoadVec<F>(x + l0), LoadVec<F>(y + l0));
     }
-    for (int l0 = 0; l0 < kLanes; l0 += W) FragCoordLanes<W>(*qp[0], blocks, b, l0, LoadVec<F>(x + l0), LoadVec<F>(y + l0));
     return;
   }
   using F4 = typename V<4>::F;
