@@ -73,6 +73,8 @@ SOFTGL_WIDE void JudgeLanes(const TriangleGroup& g, const CullState& st, int l0,
   // TriangleCentreBox's first and last centres, cut to the bounds.
   I first_x = -((128 - min3(X[0], X[1], X[2])) >> 8), last_x = (max3(X[0], X[1], X[2]) - 128) >> 8;
   I first_y = -((128 - min3(Y[0], Y[1], Y[2])) >> 8), last_y = (max3(Y[0], Y[1], Y[2]) - 128) >> 8;
+  // At most 2 x 2 centres before the cut: the vertices lie within 3 pixels of each other.
+  const I tiny = exact & I(last_x - first_x <= 1) & I(last_y - first_y <= 1);
   const I bx0 = I{} + st.bounds.x0, bx1 = I{} + (st.bounds.x1 - 1), by0 = I{} + st.bounds.y0,
           by1 = I{} + (st.bounds.y1 - 1);
   first_x = max(first_x, bx0);
@@ -87,6 +89,31 @@ SOFTGL_WIDE void JudgeLanes(const TriangleGroup& g, const CullState& st, int l0,
   const I small = exact & short_edge(dx1) & short_edge(dy1) & short_edge(dx2) & short_edge(dy2);
   const U snapped_area = U(dx1) * U(dy2) - U(dx2) * U(dy1);
   nothing = nothing | (small & I(snapped_area == 0u));
+  // A tiny triangle draws nothing when none of the (at most four) centres in its box is inside: the rasterizer's
+  // edge test (RasterizeTriangle), each edge's value at the centre in subpixels, the vertices in counter-clockwise
+  // order. A clockwise triangle's edges are the reverses of the counter-clockwise order's, whose values are the
+  // negated values of these. Every value is below 2^21 in magnitude.
+  {
+    const I ccw = I(snapped_area) > 0;
+    I covered{};
+    for (int k = 0; k < 4; ++k) {
+      const I cx = first_x + (k & 1), cy = first_y + (k >> 1);
+      const I px = cx * 256 + 128, py = cy * 256 + 128;
+      I inside = I(cx <= last_x) & I(cy <= last_y);
+      for (int e = 0; e < 3; ++e) {
+        const int f = e == 2 ? 0 : e + 1;
+        I ex = X[f] - X[e], ey = Y[f] - Y[e];
+        I value = ex * (py - Y[e]) - ey * (px - X[e]);
+        value = ccw ? value : -value;
+        ex = ccw ? ex : -ex;
+        ey = ccw ? ey : -ey;
+        const I owns_ties = I(ey < 0) | (I(ey == 0) & I(ex > 0));  // left and bottom edges
+        inside &= I(value > 0) | (I(value == 0) & owns_ties);
+      }
+      covered |= inside;
+    }
+    nothing = nothing | (tiny & ~covered);
+  }
   const I known = small & ~nothing;
   out.nothing |= MaskToBits<W>(nothing, l0);
   out.known |= MaskToBits<W>(known, l0);

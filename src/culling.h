@@ -40,7 +40,8 @@ struct GroupVerdict {
   /// Bit t: triangle t certainly draws nothing. Its SignedArea (the same float operations) is zero or culled; or
   /// its vertices snapped to 1/256 pixel (as TriangleCentreBox snaps: exact here for coordinates below 16384
   /// pixels; a triangle beyond that is left unmarked) have no pixel centre inside `bounds` in their box, or, for a
-  /// triangle less than 128 pixels across, no area.
+  /// triangle less than 128 pixels across, no area; or, for one whose box holds at most 2 x 2 centres, none of
+  /// them passes the rasterizer's edge test (RasterizeTriangle's, tie rule included).
   std::uint32_t nothing = 0;
   /// Bit t: triangle t is not marked, is less than 128 pixels across and has its coordinates in the exact range;
   /// then bit t of `front` is its facing (IsFrontFacing of its SignedArea), and x0..y1[t] its TriangleCentreBox.

@@ -1,6 +1,8 @@
 // Facing and culling: window-space signed area, both windings, each cull mode; and through the API.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <memory>
 #include <random>
 
 #include "culling.h"
@@ -82,13 +84,25 @@ TEST_CASE("a group of triangles: those marked as drawing nothing are those the s
           "ones have the scalar path's facing and box", "[culling]") {
   // Random triangles from slivers to hundreds of pixels, both windings, some far out (beyond 16384 pixels the
   // group leaves the box test to the scalar path), under every cull state and a bounds rectangle. A marked
-  // triangle must be one the scalar path drops (culled, no area, or TriangleCentreBox empty); and the group must
-  // find nearly all of those, or the test would pass with a group that marks nothing. A triangle marked known must
-  // be drawn, with the facing and TriangleCentreBox of the scalar path; and nearly all small drawn ones are known.
+  // triangle must be one the scalar path drops (culled, no area, TriangleCentreBox empty, or no centre covered by
+  // the rasterizer); and the group must find nearly all of those, or the test would pass with a group that marks
+  // nothing. A triangle marked known must be drawn, with the facing and TriangleCentreBox of the scalar path; and
+  // nearly all small drawn ones are known.
   std::mt19937 rng(3);
   std::uniform_real_distribution<float> unit(0.0f, 1.0f);
   const Enum faces[] = {BACK, FRONT, FRONT_AND_BACK};
-  int marked = 0, dropped = 0, known = 0, small_drawn = 0;
+  int marked = 0, dropped = 0, known = 0, small_drawn = 0, uncovered = 0, marked_uncovered = 0;
+  testing::CoverageCounter counter(300, 200);
+  auto covers_nothing = [&](const WindowVertex v[3], const Rect& bounds) {  // the rasterizer's verdict
+    std::fill(counter.hits.begin(), counter.hits.end(), 0);
+    auto blocks = std::make_unique<BlockBuffer>();
+    RasterTarget target;
+    target.bounds = bounds;
+    const BlockSink sink = counter.Sink();
+    RasterizeTriangle(v[0], v[1], v[2], true, target, *blocks, sink);
+    sink.Flush(*blocks);
+    return std::all_of(counter.hits.begin(), counter.hits.end(), [](int h) { return h == 0; });
+  };
   for (int round = 0; round < 600; ++round) {
     CullState st;
     st.cull_enabled = round % 4 != 0;
@@ -125,14 +139,17 @@ TEST_CASE("a group of triangles: those marked as drawing nothing are those the s
       const WindowVertex v[3] = {W(g.x[0][t], g.y[0][t]), W(g.x[1][t], g.y[1][t]), W(g.x[2][t], g.y[2][t])};
       const float area = SignedArea(v, 3);
       const bool culled = area == 0.0f || (st.cull_enabled && IsCulled(IsFrontFacing(area, st.front_face), st.cull_face));
-      const bool nothing = culled || TriangleCentreBox(v[0].win, v[1].win, v[2].win, st.bounds).Empty();
+      const bool empty_box = culled || TriangleCentreBox(v[0].win, v[1].win, v[2].win, st.bounds).Empty();
+      const bool nothing = empty_box || (far == 0.0f && covers_nothing(v, st.bounds));
+      uncovered += nothing && !empty_box;
+      marked_uncovered += nothing && !empty_box && ((bits >> t) & 1u);
       const bool mark = (bits >> t) & 1u;
       INFO("round " << round << " triangle " << t);
       REQUIRE((!mark || nothing));
       marked += mark;
       dropped += nothing;
-      if ((verdict.known >> t) & 1u) {
-        REQUIRE(!nothing);
+      if ((verdict.known >> t) & 1u) {  // (a sliver that covers no centre may be known)
+        REQUIRE(!empty_box);
         CHECK(bool((verdict.front >> t) & 1u) == IsFrontFacing(area, st.front_face));
         const Rect box = TriangleCentreBox(v[0].win, v[1].win, v[2].win, st.bounds), got = verdict.Box(t);
         CHECK((got.x0 == box.x0 && got.y0 == box.y0 && got.x1 == box.x1 && got.y1 == box.y1));
@@ -143,6 +160,52 @@ TEST_CASE("a group of triangles: those marked as drawing nothing are those the s
   }
   CHECK(marked > 1000);
   CHECK(marked >= dropped * 9 / 10);
-  CHECK(small_drawn > 200);
+  // Triangles with centres in their box and none covered: the tiny ones among them are marked.
+  CHECK(uncovered > 100);
+  CHECK(marked_uncovered >= uncovered / 2);
+  CHECK(small_drawn > 150);
   CHECK(known >= small_drawn);
+}
+
+TEST_CASE("a group of triangles: a tiny triangle is marked exactly when the rasterizer covers none of its centres, "
+          "ties included", "[culling]") {
+  // Vertices on a quarter-pixel grid around the centre (10.5, 10.5), so that many edges pass exactly through
+  // pixel centres, where the tie rule decides; both windings; boxes of at most 2 x 2 centres.
+  std::mt19937 rng(7);
+  std::uniform_int_distribution<int> step(-5, 5);
+  testing::CoverageCounter counter(24, 24);
+  CullState st;
+  st.bounds = Rect{0, 0, 24, 24};
+  int marked = 0, covered = 0, tiny = 0;
+  for (int round = 0; round < 400; ++round) {
+    TriangleGroup g;
+    g.count = TriangleGroup::kSize;
+    for (int t = 0; t < g.count; ++t)
+      for (int k = 0; k < 3; ++k) {
+        g.x[k][t] = 10.5f + float(step(rng)) / 4.0f;
+        g.y[k][t] = 10.5f + float(step(rng)) / 4.0f;
+      }
+    const std::uint32_t bits = DrawsNothing(g, st);
+    for (int t = 0; t < g.count; ++t) {
+      const WindowVertex v[3] = {W(g.x[0][t], g.y[0][t]), W(g.x[1][t], g.y[1][t]), W(g.x[2][t], g.y[2][t])};
+      const Rect box = TriangleCentreBox(v[0].win, v[1].win, v[2].win, st.bounds);
+      if (box.x1 - box.x0 > 2 || box.y1 - box.y0 > 2) continue;  // not tiny: the group need not decide
+      ++tiny;
+      std::fill(counter.hits.begin(), counter.hits.end(), 0);
+      auto blocks = std::make_unique<BlockBuffer>();
+      RasterTarget target;
+      target.bounds = st.bounds;
+      const BlockSink sink = counter.Sink();
+      RasterizeTriangle(v[0], v[1], v[2], true, target, *blocks, sink);
+      sink.Flush(*blocks);
+      const bool draws = std::any_of(counter.hits.begin(), counter.hits.end(), [](int h) { return h != 0; });
+      INFO("round " << round << " triangle " << t);
+      CHECK(((bits >> t) & 1u) == (draws ? 0u : 1u));
+      marked += (bits >> t) & 1u;
+      covered += draws;
+    }
+  }
+  CHECK(tiny > 3000);
+  CHECK(marked > 500);
+  CHECK(covered > 500);
 }
