@@ -93,22 +93,28 @@ SOFTGL_WIDE void JudgeLanes(const TriangleGroup& g, const CullState& st, int l0,
   // edge test (RasterizeTriangle), each edge's value at the centre in subpixels, the vertices in counter-clockwise
   // order. A clockwise triangle's edges are the reverses of the counter-clockwise order's, whose values are the
   // negated values of these. Every value is below 2^21 in magnitude.
-  {
+  if (const I test = tiny & ~nothing; MaskToBits<W>(test, 0) != 0) {
     const I ccw = I(snapped_area) > 0;
+    const I px = first_x * 256 + 128, py = first_y * 256 + 128;  // the box's first centre
+    I value[3], step_x[3], step_y[3], owns_ties[3];
+    for (int e = 0; e < 3; ++e) {
+      const int f = e == 2 ? 0 : e + 1;
+      const I ex = ccw ? X[f] - X[e] : X[e] - X[f], ey = ccw ? Y[f] - Y[e] : Y[e] - Y[f];
+      value[e] = ex * (py - (ccw ? Y[e] : Y[f])) - ey * (px - (ccw ? X[e] : X[f]));
+      step_x[e] = ey * -256;  // to the next centre in x, in y
+      step_y[e] = ex * 256;
+      owns_ties[e] = I(ey < 0) | (I(ey == 0) & I(ex > 0));  // left and bottom edges
+    }
+    // The other centres only where some lane's box has them.
+    const bool two_x = MaskToBits<W>(test & I(last_x > first_x), 0) != 0;
+    const bool two_y = MaskToBits<W>(test & I(last_y > first_y), 0) != 0;
     I covered{};
     for (int k = 0; k < 4; ++k) {
-      const I cx = first_x + (k & 1), cy = first_y + (k >> 1);
-      const I px = cx * 256 + 128, py = cy * 256 + 128;
-      I inside = I(cx <= last_x) & I(cy <= last_y);
+      if (((k & 1) && !two_x) || ((k >> 1) && !two_y)) continue;
+      I inside = I(first_x + (k & 1) <= last_x) & I(first_y + (k >> 1) <= last_y);
       for (int e = 0; e < 3; ++e) {
-        const int f = e == 2 ? 0 : e + 1;
-        I ex = X[f] - X[e], ey = Y[f] - Y[e];
-        I value = ex * (py - Y[e]) - ey * (px - X[e]);
-        value = ccw ? value : -value;
-        ex = ccw ? ex : -ex;
-        ey = ccw ? ey : -ey;
-        const I owns_ties = I(ey < 0) | (I(ey == 0) & I(ex > 0));  // left and bottom edges
-        inside &= I(value > 0) | (I(value == 0) & owns_ties);
+        const I v = value[e] + (k & 1 ? step_x[e] : I{}) + (k >> 1 ? step_y[e] : I{});
+        inside &= I(v > 0) | (I(v == 0) & owns_ties[e]);
       }
       covered |= inside;
     }

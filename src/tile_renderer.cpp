@@ -2,6 +2,7 @@
 #include "tile_renderer.h"
 
 #include <algorithm>
+#include <cstdint>
 #include <cstring>
 
 #include "rasterizer.h"
@@ -10,9 +11,10 @@
 namespace softgl::detail {
 
 bool DrawTextures::Any(const Textures& t) {
+  std::uintptr_t any = 0;  // (no early exit: a loop the compiler vectorizes)
   for (int u = 0; u < kMaxTextureUnits; ++u)
-    if (t.unit_2d[u] || t.unit_cube[u]) return true;
-  return false;
+    any |= reinterpret_cast<std::uintptr_t>(t.unit_2d[u]) | reinterpret_cast<std::uintptr_t>(t.unit_cube[u]);
+  return any != 0;
 }
 
 bool DrawTextures::Same(const Textures& t) const {
