@@ -75,6 +75,7 @@ bool* CapFlag(ContextState& s, Enum cap) {
     case DEPTH_TEST: return &s.ops.depth_test;
     case PROGRAM_POINT_SIZE: return &s.primitive.program_point_size;
     case SCISSOR_TEST: return &s.scissor_enabled;
+    case FRAMEBUFFER_SRGB: return &s.framebuffer_srgb;
     case STENCIL_TEST: return &s.ops.stencil_test;
     case BLEND: return &s.ops.blend.enabled;
     case POLYGON_OFFSET_FILL: return &s.primitive.offset_fill;

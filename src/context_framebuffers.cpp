@@ -36,7 +36,7 @@ Enum FramebufferStatus(const FramebufferObject& f) {
 
 // The buffers of a complete framebuffer object, drawn through its draw buffers; its size is the intersection of
 // its attachments'.
-detail::RenderTarget FramebufferTarget(const FramebufferObject& f) {
+detail::RenderTarget FramebufferTarget(const FramebufferObject& f, bool srgb) {
   detail::RenderTarget t;
   t.width = t.height = 1 << 30;
   auto fit = [&](const Attachment& a) {
@@ -54,7 +54,8 @@ detail::RenderTarget FramebufferTarget(const FramebufferObject& f) {
     detail::ColorBuffer& cb = t.color[i];
     cb.data = const_cast<std::uint8_t*>(a.Level()->data.data());
     cb.layout = a.Level()->layout;
-    cb.rgb_only = a.Level()->format == RGB8;
+    cb.rgb_only = detail::NoStoredAlpha(a.Level()->format);
+    cb.srgb = srgb && a.Level()->srgb;
     cb.pitch = a.Level()->width;
   }
   if (f.depth.Present()) {
@@ -74,8 +75,9 @@ namespace {
 
 // What ReadPixels and friends read: the context's framebuffer, or the framebuffer object bound for reading (its
 // read buffer as color[0], depth and stencil; nothing when it is incomplete). color[0] is absent when the read
-// buffer is NONE or names an empty attachment.
-detail::RenderTarget ReadTarget(ContextState& s) {
+// buffer is NONE or names an empty attachment. With `srgb` an sRGB read buffer decodes (BlitFramebuffer while
+// FRAMEBUFFER_SRGB is enabled); ReadPixels and the copies return the stored values.
+detail::RenderTarget ReadTarget(ContextState& s, bool srgb = false) {
   if (!s.read_fbo) {
     detail::RenderTarget t = s.fb.Target();
     if (s.default_read_buffer == NONE) t.color[0] = detail::ColorBuffer{};
@@ -85,7 +87,7 @@ detail::RenderTarget ReadTarget(ContextState& s) {
   FramebufferObject reading = *s.read_fbo;  // reads the read buffer whatever the draw buffers say
   reading.draw_buffers[0] = reading.read_buffer;
   for (int i = 1; i < kMaxColorOutputs; ++i) reading.draw_buffers[i] = NONE;
-  return FramebufferTarget(reading);
+  return FramebufferTarget(reading, srgb);
 }
 }  // namespace
 
@@ -514,7 +516,11 @@ void Context::GetFramebufferAttachmentParameteriv(Enum target, Enum attachment, 
           : a.texture->target == TEXTURE_CUBE_MAP     ? int(TEXTURE_CUBE_MAP_POSITIVE_X) + a.face
                                                       : 0;
       break;
-    default: return s.SetError(INVALID_ENUM, __func__, "pname must be FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, _OBJECT_NAME, _TEXTURE_LEVEL or _TEXTURE_CUBE_MAP_FACE");
+    case FRAMEBUFFER_ATTACHMENT_COLOR_ENCODING:
+      if (!a.Present()) return s.SetError(INVALID_OPERATION, __func__, "nothing is attached there");
+      v = int(a.Level()->srgb ? SRGB : LINEAR);
+      break;
+    default: return s.SetError(INVALID_ENUM, __func__, "pname must be FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, _OBJECT_NAME, _TEXTURE_LEVEL, _TEXTURE_CUBE_MAP_FACE or _COLOR_ENCODING");
   }
   if (params) *params = v;
 }
@@ -534,7 +540,7 @@ Enum SizedRenderbufferFormat(Enum f) {
     case DEPTH_COMPONENT: return DEPTH_COMPONENT24;
     case DEPTH_STENCIL: return DEPTH24_STENCIL8;
     case STENCIL_INDEX: return STENCIL_INDEX8;
-    case RGBA8: case RGB8: case RG8: case R8: case RGBA32F: case R32F: case DEPTH_COMPONENT16:
+    case RGBA8: case RGB8: case RG8: case R8: case SRGB8_ALPHA8: case SRGB8: case RGBA32F: case R32F: case DEPTH_COMPONENT16:
     case DEPTH_COMPONENT24: case DEPTH_COMPONENT32F: case DEPTH24_STENCIL8: case DEPTH32F_STENCIL8:
     case STENCIL_INDEX8: return f;
     default: return 0;
@@ -552,8 +558,10 @@ Renderbuffer* BoundRenderbuffer(ContextState& s, const char* what, Enum target) 
 
 FormatBits BitsOf(Enum f) {
   switch (f) {
-    case RGBA8: return {8, 8, 8, 8, 0, 0};
-    case RGB8: return {8, 8, 8, 0, 0, 0};
+    case RGBA8:
+    case SRGB8_ALPHA8: return {8, 8, 8, 8, 0, 0};
+    case RGB8:
+    case SRGB8: return {8, 8, 8, 0, 0, 0};
     case RG8: return {8, 8, 0, 0, 0, 0};
     case R8: return {8, 0, 0, 0, 0, 0};
     case RGBA32F: return {32, 32, 32, 32, 0, 0};
@@ -700,7 +708,7 @@ void Context::BlitFramebuffer(int src_x0, int src_y0, int src_x1, int src_y1, in
       (s.draw_fbo && FramebufferStatus(*s.draw_fbo) != FRAMEBUFFER_COMPLETE))
     return s.SetError(INVALID_FRAMEBUFFER_OPERATION, __func__, "the read or draw framebuffer is not complete");
   s.Sync(__func__);
-  const detail::RenderTarget src = ReadTarget(s);
+  const detail::RenderTarget src = ReadTarget(s, s.framebuffer_srgb);
   detail::RenderTarget dst;
   s.DrawTarget(dst);
   // A buffer missing from either framebuffer is skipped without an error (OpenGL 4.6, section 18.3.1).

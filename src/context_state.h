@@ -121,8 +121,8 @@ inline bool IsTexImageTarget(Enum target) { return target == TEXTURE_2D || CubeF
 // Section 9.4: why a framebuffer object cannot be drawn to, or FRAMEBUFFER_COMPLETE (context_framebuffers.cpp).
 Enum FramebufferStatus(const FramebufferObject& f);
 // The buffers of a complete framebuffer object, drawn through its draw buffers; its size is the intersection of
-// its attachments'.
-detail::RenderTarget FramebufferTarget(const FramebufferObject& f);
+// its attachments'. With `srgb` (FRAMEBUFFER_SRGB enabled) its sRGB colour buffers convert (ColorBuffer::srgb).
+detail::RenderTarget FramebufferTarget(const FramebufferObject& f, bool srgb = false);
 
 struct ContextState {
   Enum error = NO_ERROR;
@@ -163,6 +163,7 @@ struct ContextState {
   double depth_near = 0.0, depth_far = 1.0;
   detail::PrimitiveState primitive;
   bool scissor_enabled = false;
+  bool framebuffer_srgb = false;  // FRAMEBUFFER_SRGB
   int scissor[4] = {0, 0, 0, 0};
   bool primitive_restart = false, primitive_restart_fixed = false;
   std::uint32_t restart_index = 0;  // PrimitiveRestartIndex
@@ -237,7 +238,7 @@ struct ContextState {
       SetError(INVALID_FRAMEBUFFER_OPERATION, __func__, "the framebuffer bound for drawing is not complete");
       return false;
     }
-    target = FramebufferTarget(*draw_fbo);
+    target = FramebufferTarget(*draw_fbo, framebuffer_srgb);
     return true;
   }
 

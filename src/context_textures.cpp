@@ -123,19 +123,19 @@ void Context::TexSubImage2D(Enum target, int level, int x, int y, int width, int
 
 namespace {
 
-// Defines level 0 of the texture bound to target from a decoded image: 1 to 4 channels as R8, RG8, RGB8, RGBA8,
-// HDR as RGBA32F.
+// Defines level 0 of the texture bound to target from a decoded image: 1 to 4 channels as R8, RG8, RGB8, RGBA8
+// (with `srgb` 3 and 4 channels as SRGB8, SRGB8_ALPHA8), HDR as RGBA32F.
 bool TexImageFromLoaded(Context& gl, ContextState& s, Enum target, const detail::LoadedImage& img,
-                        const std::string& name, std::string* error) {
+                        const std::string& name, std::string* error, bool srgb) {
   if (img.width > kMaxTextureSize || img.height > kMaxTextureSize || img.channels < 1 || img.channels > 4) {
     s.SetError(INVALID_VALUE, __func__, "a numeric argument is out of range");
     if (error) *error = name + ": larger than kMaxTextureSize, or an unsupported channel count";
     return false;
   }
   static constexpr Enum kFormats[4] = {RED, RG, RGB, RGBA};
-  static constexpr Enum kInternal[4] = {R8, RG8, RGB8, RGBA8};
+  static constexpr Enum kInternal[2][4] = {{R8, RG8, RGB8, RGBA8}, {R8, RG8, SRGB8, SRGB8_ALPHA8}};
   const Enum format = kFormats[img.channels - 1];
-  const Enum internal = img.hdr ? RGBA32F : kInternal[img.channels - 1];
+  const Enum internal = img.hdr ? RGBA32F : kInternal[srgb ? 1 : 0][img.channels - 1];
   const int saved_alignment = s.unpack_alignment;
   s.unpack_alignment = 1;
   const Enum before = s.error;
@@ -156,13 +156,14 @@ namespace {
 // TexImage2DFromFile and TexImage2DFromMemory: checks the target and binding, decodes with `decode`, defines level 0.
 template <class Decode>
 bool TexImageFromDecoded(Context& gl, ContextState& s, Enum target, const std::string& name, std::string* error,
-                         const char* call, Decode&& decode) {
+                         Enum encoding, const char* call, Decode&& decode) {
   auto refuse = [&](Enum code, const char* message) {
     s.SetError(code, call, message);
     if (error) *error = message;
     return false;
   };
   if (!IsTexImageTarget(target)) return refuse(INVALID_ENUM, "target must be TEXTURE_2D or a TEXTURE_CUBE_MAP_* face");
+  if (encoding != LINEAR && encoding != SRGB) return refuse(INVALID_ENUM, "encoding must be LINEAR or SRGB");
   if (!s.Bound(target)) return refuse(INVALID_OPERATION, "no texture is bound to that target of the active unit");
   detail::LoadedImage img;
   try {
@@ -172,21 +173,22 @@ bool TexImageFromDecoded(Context& gl, ContextState& s, Enum target, const std::s
     if (error) *error = name + ": out of memory";
     return false;
   }
-  return TexImageFromLoaded(gl, s, target, img, name, error);
+  return TexImageFromLoaded(gl, s, target, img, name, error, encoding == SRGB);
 }
 
 }  // namespace
 
-bool Context::TexImage2DFromFile(Enum target, const std::string& path, bool flip_vertically, std::string* error) {
-  return TexImageFromDecoded(*this, *state_, target, path, error, __func__, [&](detail::LoadedImage& img) {
+bool Context::TexImage2DFromFile(Enum target, const std::string& path, bool flip_vertically, std::string* error,
+                                 Enum encoding) {
+  return TexImageFromDecoded(*this, *state_, target, path, error, encoding, __func__, [&](detail::LoadedImage& img) {
     return detail::LoadImageFile(path, flip_vertically, img, error);
   });
 }
 
 bool Context::TexImage2DFromMemory(Enum target, const void* data, std::size_t size, bool flip_vertically,
-                                   std::string* error) {
+                                   std::string* error, Enum encoding) {
   const std::string name = "image in memory";
-  return TexImageFromDecoded(*this, *state_, target, name, error, __func__, [&](detail::LoadedImage& img) {
+  return TexImageFromDecoded(*this, *state_, target, name, error, encoding, __func__, [&](detail::LoadedImage& img) {
     return detail::LoadImageMemory(data, size, name, flip_vertically, img, error);
   });
 }

@@ -486,6 +486,20 @@ void LaneOps(const BlockOpsContext& ctx, const Unorm8Blend* per_buffer, int b) {
       if (!cb.Present()) continue;
       glm::vec4 color(bb.Color(b, o, 0)[lane], bb.Color(b, o, 1)[lane], bb.Color(b, o, 2)[lane],
                       bb.Color(b, o, 3)[lane]);
+      if (cb.srgb) {
+        // An sRGB buffer under FRAMEBUFFER_SRGB: the colour clamped as for any fixed-point buffer, blended in float
+        // with the stored colour decoded to linear (and the constant colour clamped), encoded again on store.
+        color = glm::clamp(color, 0.0f, 1.0f);
+        for (int c = 0; c < 4; ++c)
+          if (std::isnan(color[c])) color[c] = 0.0f;
+        if (st.blend.enabled) {
+          BlendState linear = st.blend;
+          linear.color = glm::clamp(linear.color, 0.0f, 1.0f);
+          color = Blend(linear, color, cb.Load(x, y));
+        }
+        cb.Store(x, y, color, st.color_mask);
+        continue;
+      }
       if (cb.Normalized()) {
         // 8-bit channels: the exact integer blend on the pixel's bytes (channels the format lacks read 0 or 1).
         std::uint8_t* p = cb.At(x, y);

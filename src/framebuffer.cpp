@@ -17,6 +17,8 @@ std::uint8_t FloatToUnorm8(float f) {
 glm::vec4 ColorBuffer::Load(int x, int y) const {
   glm::vec4 raw = RawTexel(layout, At(x, y));
   if (rgb_only) raw.a = 255.0f;
+  if (srgb) return glm::vec4(SrgbDecode8(std::uint8_t(raw.r)), SrgbDecode8(std::uint8_t(raw.g)),
+                             SrgbDecode8(std::uint8_t(raw.b)), raw.a / 255.0f);
   return raw / StorageScale(layout);
 }
 
@@ -28,7 +30,7 @@ void ColorBuffer::Store(int x, int y, const glm::vec4& c, const bool mask[4]) co
     case TexelLayout::kUnorm8x1: {
       const int n = layout == TexelLayout::kUnorm8x4 ? (rgb_only ? 3 : 4) : layout == TexelLayout::kUnorm8x2 ? 2 : 1;
       for (int k = 0; k < n; ++k)
-        if (mask[k]) p[k] = FloatToUnorm8(c[k]);
+        if (mask[k]) p[k] = srgb && k < 3 ? SrgbEncode8(c[k]) : FloatToUnorm8(c[k]);
       return;
     }
     case TexelLayout::kFloat32x4:
@@ -49,7 +51,7 @@ void RenderTarget::ClearColor(const Rect& r, const glm::vec4& value, const bool 
       // The pixel is converted once, then stored row by row as 32-bit words through the mask.
       std::uint8_t px[4], keep_bytes[4];
       for (int k = 0; k < 4; ++k) {
-        px[k] = FloatToUnorm8(value[k]);
+        px[k] = cb.srgb && k < 3 ? SrgbEncode8(value[k]) : FloatToUnorm8(value[k]);
         keep_bytes[k] = mask[k] && !(k == 3 && cb.rgb_only) ? 0x00 : 0xFF;
       }
       std::uint32_t word, keep;

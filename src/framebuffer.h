@@ -17,16 +17,21 @@ namespace softgl::detail {
 struct ColorBuffer {
   std::uint8_t* data = nullptr;
   TexelLayout layout = TexelLayout::kNone;
-  bool rgb_only = false;  // RGB8: alpha is not stored (reads 1)
+  bool rgb_only = false;  // RGB8, SRGB8: alpha is not stored (reads 1)
   int pitch = 0;          // texels from one row to the next
+  // An sRGB buffer (SRGB8_ALPHA8, SRGB8) while FRAMEBUFFER_SRGB is enabled: Store encodes the colour channels from
+  // linear, Load decodes them (OpenGL 4.6, section 17.3.7). Else an sRGB buffer's bytes are taken as they are.
+  bool srgb = false;
   bool Present() const { return data != nullptr; }
-  bool Rgba8() const { return layout == TexelLayout::kUnorm8x4 && !rgb_only; }
+  bool Rgba8() const { return layout == TexelLayout::kUnorm8x4 && !rgb_only && !srgb; }
   int Bytes() const { return BytesPerTexel(layout); }
   std::size_t Index(int x, int y) const { return std::size_t(y) * std::size_t(pitch) + std::size_t(x); }
   std::uint8_t* At(int x, int y) const { return data + Index(x, y) * std::size_t(Bytes()); }
-  /// The pixel as RGBA floats (fixed point divided by 255; channels the format lacks read (0, 0, 0, 1)).
+  /// The pixel as RGBA floats (fixed point divided by 255, sRGB decoded when `srgb`; channels the format lacks read
+  /// (0, 0, 0, 1)).
   glm::vec4 Load(int x, int y) const;
-  /// Stores `c` through `mask` with the format's conversion (clamp and round for fixed point).
+  /// Stores `c` through `mask` with the format's conversion (clamp and round for fixed point, sRGB encoded when
+  /// `srgb`).
   void Store(int x, int y, const glm::vec4& c, const bool mask[4]) const;
   /// Whether stored values are fixed point (clamped to [0, 1] before blending).
   bool Normalized() const { return IsUnorm8(layout); }

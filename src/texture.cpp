@@ -20,8 +20,10 @@ int FormatComponents(Enum f) {
     case DEPTH24_STENCIL8:
     case DEPTH32F_STENCIL8: return 1;
     case RG8: return 2;
-    case RGB8: return 3;
+    case RGB8:
+    case SRGB8: return 3;
     case RGBA8:
+    case SRGB8_ALPHA8:
     case RGBA32F: return 4;
     default: return 0;
   }
@@ -34,12 +36,14 @@ bool IsDepthFormat(Enum f) {
 
 bool HasStencil(Enum f) { return f == DEPTH24_STENCIL8 || f == DEPTH32F_STENCIL8 || f == STENCIL_INDEX8; }
 
-bool IsNormalizedFormat(Enum f) { return f == R8 || f == RG8 || f == RGB8 || f == RGBA8; }
+bool IsNormalizedFormat(Enum f) { return f == R8 || f == RG8 || f == RGB8 || f == RGBA8 || IsSrgbFormat(f); }
 
 TexelLayout LayoutOf(Enum f) {
   switch (f) {
     case RGBA8:
-    case RGB8: return TexelLayout::kUnorm8x4;
+    case RGB8:
+    case SRGB8_ALPHA8:
+    case SRGB8: return TexelLayout::kUnorm8x4;
     case RG8: return TexelLayout::kUnorm8x2;
     case R8: return TexelLayout::kUnorm8x1;
     case RGBA32F: return TexelLayout::kFloat32x4;
@@ -96,7 +100,46 @@ glm::vec4 RawTexel(TexelLayout layout, const std::uint8_t* p) {
   }
 }
 
+namespace {
+// The 256 decoded values, and the 255 linear values at which the encoded byte steps from k to k + 1 (where the sRGB
+// value is (k + 1/2) / 255), computed in double.
+struct SrgbTables {
+  float decode[256];
+  double step[255];
+  SrgbTables() {
+    for (int k = 0; k < 256; ++k) {
+      const double c = k / 255.0;
+      decode[k] = float(c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4));
+    }
+    for (int k = 0; k < 255; ++k) {
+      const double c = (k + 0.5) / 255.0;
+      step[k] = c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
+    }
+  }
+};
+const SrgbTables& Srgb() {
+  static const SrgbTables tables;
+  return tables;
+}
+}  // namespace
+
+float SrgbDecode8(std::uint8_t k) { return Srgb().decode[k]; }
+
+std::uint8_t SrgbEncode8(float linear) {
+  if (!(linear > 0.0f)) return 0;  // also NaN
+  if (linear >= 1.0f) return 255;
+  const double* step = Srgb().step;
+  return std::uint8_t(std::upper_bound(step, step + 255, double(linear)) - step);
+}
+
 glm::vec4 TextureLevel::Raw(int i, int j) const { return RawTexel(layout, At(i, j)); }
+
+glm::vec4 TextureLevel::Sampled(int i, int j) const {
+  glm::vec4 t = RawTexel(layout, At(i, j));
+  if (srgb)
+    for (int c = 0; c < 3; ++c) t[c] = SrgbDecodeSample(t[c]);
+  return t;
+}
 
 glm::vec4 TextureLevel::Texel(int i, int j) const { return Raw(i, j) / StorageScale(layout); }
 
@@ -111,16 +154,17 @@ void TextureLevel::Allocate(Enum internal_format, int w, int h) {
   height = h;
   layout = l;
   bytes = b;
-  if (internal_format == RGB8)  // alpha reads 1
+  srgb = IsSrgbFormat(internal_format);
+  if (NoStoredAlpha(internal_format))  // alpha reads 1
     for (std::size_t k = 3; k < data.size() - kGatherPad; k += 4) data[k] = 255;
 }
 
-void StoreTexel(TextureLevel& level, int i, int j, const glm::vec4& in) {
+void StoreTexel(TextureLevel& level, int i, int j, const glm::vec4& in, bool encode) {
   std::uint8_t* p = level.At(i, j);
   switch (level.layout) {
     case TexelLayout::kUnorm8x4:
-      for (int c = 0; c < 4; ++c) p[c] = FloatToUnorm8(in[c]);
-      if (level.format == RGB8) p[3] = 255;
+      for (int c = 0; c < 4; ++c) p[c] = encode && level.srgb && c < 3 ? SrgbEncode8(in[c]) : FloatToUnorm8(in[c]);
+      if (NoStoredAlpha(level.format)) p[3] = 255;
       break;
     case TexelLayout::kUnorm8x2:
       p[0] = FloatToUnorm8(in[0]);
@@ -175,7 +219,7 @@ void UploadPixels(TextureLevel& level, int x, int y, int w, int h, Enum format, 
       if (type != FLOAT && IsUnorm8(level.layout)) {  // bytes into bytes: no conversion
         std::uint8_t* dst = level.At(x + i, y + j);
         for (int c = 0; c < level.bytes; ++c) dst[c] = c < n ? p[c] : (c == 3 ? 255 : 0);
-        if (level.format == RGB8) dst[3] = 255;
+        if (NoStoredAlpha(level.format)) dst[3] = 255;
         continue;
       }
       glm::vec4 in(0.0f, 0.0f, 0.0f, 1.0f);
@@ -211,9 +255,10 @@ void GenerateMipmaps(TextureObject& texture) {
           for (int dj = 0; dj < 2; ++dj)
             for (int di = 0; di < 2; ++di) {
               const float wgt = (di ? a : 1.0f - a) * (dj ? b : 1.0f - b);
-              sum += wgt * src.Texel(std::clamp(i0 + di, 0, src.width - 1), std::clamp(j0 + dj, 0, src.height - 1));
+              sum += wgt * (src.Sampled(std::clamp(i0 + di, 0, src.width - 1), std::clamp(j0 + dj, 0, src.height - 1)) /
+                            StorageScale(src.layout));
             }
-          StoreTexel(dst, i, j, sum);
+          StoreTexel(dst, i, j, sum, true);
         }
     }
   }
@@ -229,6 +274,7 @@ TextureView MakeView(const TextureObject& texture) {
   if (!base.Defined()) return view;
   view.depth = IsDepthFormat(base.format);
   view.layout = base.layout;
+  view.srgb = base.srgb;
   view.scale = StorageScale(base.layout);
   // The border colour in storage units; a fixed-point texture takes it clamped to [0, 1], as it takes texels.
   view.border_raw = IsUnorm8(base.layout) ? glm::clamp(p.border, 0.0f, 1.0f) * 255.0f : p.border;

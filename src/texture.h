@@ -1,7 +1,8 @@
 // texture.h — texture objects: levels and faces, texel formats, uploads, mipmap generation and completeness.
 //
-// Each level keeps its texels in its own format: RGBA8 four bytes a texel (RGB8 too, alpha stored as 255), RG8
-// two, R8 one, RGBA32F sixteen, R32F and the depth formats one float. Fixed-point texels are bytes k meaning k / 255.
+// Each level keeps its texels in its own format: RGBA8 four bytes a texel (RGB8 too, alpha stored as 255; SRGB8_ALPHA8
+// and SRGB8 the same way, their colour bytes sRGB-encoded), RG8 two, R8 one, RGBA32F sixteen, R32F and the depth
+// formats one float. Fixed-point texels are bytes k meaning k / 255.
 // Formats with stencil (DEPTH24_STENCIL8, DEPTH32F_STENCIL8, and STENCIL_INDEX8 for renderbuffers) keep their
 // stencil indices in a plane of their own, one byte a texel.
 #pragma once
@@ -38,6 +39,31 @@ glm::vec4 RawTexel(TexelLayout layout, const std::uint8_t* p);
 inline bool IsUnorm8(TexelLayout l) {
   return l == TexelLayout::kUnorm8x4 || l == TexelLayout::kUnorm8x2 || l == TexelLayout::kUnorm8x1;
 }
+/// SRGB8 and SRGB8_ALPHA8: colour channels stored sRGB-encoded (OpenGL 4.6, section 8.24).
+inline bool IsSrgbFormat(Enum f) { return f == SRGB8 || f == SRGB8_ALPHA8; }
+/// RGB8 and SRGB8: four bytes a texel, alpha not stored (kept 255, reads 1).
+inline bool NoStoredAlpha(Enum f) { return f == RGB8 || f == SRGB8; }
+
+/// sRGB's transfer functions as OpenGL applies them to 8-bit channels: an encoded byte k decodes to the linear
+/// value of k / 255 (section 8.24's formula, to the nearest float); a linear value in [0, 1] (clamped, NaN as 0)
+/// encodes to the byte nearest 255 times its sRGB value (section 17.3.7's formula), found exactly from the 255
+/// linear values where the rounded byte steps up.
+float SrgbDecode8(std::uint8_t k);
+std::uint8_t SrgbEncode8(float linear);
+/// How sampling decodes an sRGB texel's colour byte k (0..255, as a float) into storage units (255 times linear):
+/// k / 12.92 up to byte 10 (the formula's linear segment); above it a polynomial of degree 6 in k, a Chebyshev fit
+/// of section 8.24's formula over bytes 11..255, within 2.4e-3 of 255 times it (9.3e-6 in linear), evaluated by
+/// Horner's rule in float without fused operations. The one-lane and the vector sampling paths evaluate it alike,
+/// so they give the same floats; a dozen vector operations cost less than a gather from a table.
+inline constexpr float kSrgbDecodePoly[7] = {0.23888184130191803f,   0.03252549096941948f,   0.0020256806164979935f,
+                                             1.0746752195700537e-05f, -2.431343304465372e-08f, 4.7493366878148535e-11f,
+                                             -4.3113197744932413e-14f};
+inline constexpr float kSrgbToeScale = 1.0f / 12.92f;
+inline float SrgbDecodeSample(float k) {
+  float p = kSrgbDecodePoly[6];
+  for (int i = 5; i >= 0; --i) p = p * k + kSrgbDecodePoly[i];
+  return k <= 10.0f ? k * kSrgbToeScale : p;
+}
 
 struct TextureLevel {
   Enum format = 0;  // internal format; 0: not defined
@@ -49,6 +75,7 @@ struct TextureLevel {
   std::vector<std::uint8_t> data;
   static constexpr std::size_t kGatherPad = 7;
   std::vector<std::uint8_t> stencil;  // [height][width] stencil indices for a format with stencil, else empty
+  bool srgb = false;                  // IsSrgbFormat(format)
   bool Defined() const { return format != 0 && width > 0 && height > 0; }
   std::uint8_t* At(int i, int j) {
     return data.data() + (std::size_t(j) * std::size_t(width) + std::size_t(i)) * std::size_t(bytes);
@@ -59,7 +86,10 @@ struct TextureLevel {
   /// Texel (i, j) as RGBA in storage units: byte values 0..255 for fixed-point layouts, the floats otherwise;
   /// channels the format lacks read (0, 0, 0, 1) in the same units.
   glm::vec4 Raw(int i, int j) const;
-  /// Texel (i, j) as RGBA floats (fixed point divided by 255).
+  /// Texel (i, j) as sampling filters it: Raw, with an sRGB format's colour decoded to linear by SrgbDecodeSample
+  /// (still in storage units, 255 times the linear value).
+  glm::vec4 Sampled(int i, int j) const;
+  /// Texel (i, j) as RGBA floats (fixed point divided by 255), as stored (sRGB colours not decoded).
   glm::vec4 Texel(int i, int j) const;
   /// Allocates width x height texels of `internal_format`, zero (alpha 1 where the format has no alpha; stencil
   /// 0). Throws std::bad_alloc.
@@ -94,6 +124,7 @@ struct TextureView {
   int base = 0;        // level_base
   int q = 0;           // the last level mipmapped filtering may use
   TexelLayout layout = TexelLayout::kNone;
+  bool srgb = false;   // an sRGB format: colours decoded before filtering
   float scale = 1.0f;  // StorageScale(layout)
   glm::vec4 border_raw{0.0f};  // the border colour in storage units
   // The common case, which sampling takes without re-deciding per sample: a 2D colour texture with REPEAT in s
@@ -113,7 +144,7 @@ int FormatComponents(Enum internal_format);
 bool IsDepthFormat(Enum internal_format);
 /// DEPTH24_STENCIL8, DEPTH32F_STENCIL8, STENCIL_INDEX8.
 bool HasStencil(Enum internal_format);
-bool IsNormalizedFormat(Enum internal_format);  // fixed point: RGBA8, RGB8, RG8, R8
+bool IsNormalizedFormat(Enum internal_format);  // fixed point: RGBA8, RGB8, RG8, R8, SRGB8_ALPHA8, SRGB8
 /// Channels of a pixel transfer format (RED 1, RG 2, RGB 3, RGBA 4, DEPTH_COMPONENT 1, DEPTH_STENCIL 1: one packed
 /// value), 0 if unknown.
 int TransferComponents(Enum format);
@@ -125,11 +156,14 @@ int TransferComponents(Enum format);
 void UploadPixels(TextureLevel& level, int x, int y, int w, int h, Enum format, Enum type, int alignment,
                   const void* pixels);
 
-/// Writes RGBA value `v` (in [0, 1] for fixed point: clamped and rounded; floats as they are) into texel (i, j).
-void StoreTexel(TextureLevel& level, int i, int j, const glm::vec4& v);
+/// Writes RGBA value `v` (in [0, 1] for fixed point: clamped and rounded; floats as they are) into texel (i, j);
+/// with `encode`, an sRGB level's colour is taken as linear and encoded (else stored as it is, as pixel transfers
+/// store it).
+void StoreTexel(TextureLevel& level, int i, int j, const glm::vec4& v, bool encode = false);
 
 /// Fills levels base+1 .. the 1 x 1 level of each face from the base level: each texel is the bilinear sample of
-/// the level above at its centre (the 2 x 2 box average for even sizes), in the base level's format.
+/// the level above at its centre (the 2 x 2 box average for even sizes), in the base level's format; an sRGB
+/// level's colours are averaged in linear light (decoded, then encoded again).
 void GenerateMipmaps(TextureObject& texture);
 
 }  // namespace softgl::detail

@@ -76,12 +76,12 @@ struct DepthCompare {
   float ref = 0.0f;
 };
 
-// One texel in storage units, wrapped (the border colour outside the level under CLAMP_TO_BORDER), compared when
+// One texel in storage units (an sRGB texture's colour decoded to linear), wrapped (the border colour outside the level under CLAMP_TO_BORDER), compared when
 // depth comparison is on.
 glm::vec4 Fetch(const TextureView& view, const TextureLevel& level, long i, long j, const DepthCompare& cmp) {
   const SamplerParams& p = view.texture->params;
   const int wi = Wrap(p.wrap_s, i, level.width), wj = Wrap(p.wrap_t, j, level.height);
-  const glm::vec4 t = (wi >= 0 && wj >= 0) ? level.Raw(wi, wj) : view.border_raw;
+  const glm::vec4 t = (wi >= 0 && wj >= 0) ? level.Sampled(wi, wj) : view.border_raw;
   if (cmp.on) return glm::vec4(detail::Compare(cmp.func, cmp.ref, t.r) ? 1.0f : 0.0f);
   return t;
 }
@@ -118,7 +118,7 @@ SOFTGL_INLINE glm::vec4 BilinearRepeatPow2(const TextureLevel& level, glm::vec2 
   const Bilerp w = Weights(TexelCoord(st.x, level.width), TexelCoord(st.y, level.height));
   const long mi = level.width - 1, mj = level.height - 1;
   const int c0 = int(w.i0 & mi), c1 = int((w.i0 + 1) & mi), r0 = int(w.j0 & mj), r1 = int((w.j0 + 1) & mj);
-  return Sum(w, level.Raw(c0, r0), level.Raw(c1, r0), level.Raw(c0, r1), level.Raw(c1, r1));
+  return Sum(w, level.Sampled(c0, r0), level.Sampled(c1, r0), level.Sampled(c0, r1), level.Sampled(c1, r1));
 }
 
 // The fast path's level choice (what SampleFace decides for these filters), in storage units.
@@ -291,12 +291,24 @@ __attribute__((target("avx512f,avx512bw"))) inline V<16>::U ByteToBottom<16>(V<1
 }
 #endif
 
-// Byte C of each lane's texel, as a float; 0 (alpha 255) for a channel the layout lacks.
-template <int W, int Bytes, int C>
+// detail::SrgbDecodeSample for W lanes, the same operations in the same order.
+template <int W>
+SOFTGL_INLINE typename V<W>::F DecodeSrgb(typename V<W>::F k) {
+  using F = typename V<W>::F;
+  F p = F{} + detail::kSrgbDecodePoly[6];
+  for (int i = 5; i >= 0; --i) p = p * k + detail::kSrgbDecodePoly[i];
+  return k <= 10.0f ? k * detail::kSrgbToeScale : p;
+}
+
+// Byte C of each lane's texel, as a float; 0 (alpha 255) for a channel the layout lacks. With Srgb the colour
+// bytes are decoded (255 times linear), as TextureLevel::Sampled has them.
+template <int W, int Bytes, int C, bool Srgb>
 SOFTGL_INLINE typename V<W>::F Channel(typename V<W>::U x) {
   using F = typename V<W>::F;
   using I = typename V<W>::I;
-  if constexpr (C >= Bytes) {
+  if constexpr (Srgb && C < 3) {
+    return DecodeSrgb<W>(Channel<W, Bytes, C, false>(x));
+  } else if constexpr (C >= Bytes) {
     return F{} + (C == 3 ? 255.0f : 0.0f);
   } else if constexpr (C == 0) {
     return __builtin_convertvector(I(x & 0xFFu), F);  // as signed: one instruction on every set
@@ -310,7 +322,7 @@ SOFTGL_INLINE typename V<W>::F Channel(typename V<W>::U x) {
 // Bilinear samples of 8-bit level `lv` (RGBA8 and RGB8, RG8 or R8: Bytes 4, 2 or 1 a texel) for the lanes of
 // `mask` (for every lane if All), in byte units, written into r, g, b, a; channels the layout lacks read 0 (alpha
 // 255), as Raw() has them.
-template <int W, int Bytes, bool All = false>
+template <int W, int Bytes, bool Srgb, bool All = false>
 SOFTGL_INLINE void BilinearUnorm8(const TextureLevel& lv, typename V<W>::F s, typename V<W>::F t,
                                  typename V<W>::I mask, typename V<W>::F out[4]) {
   using F = typename V<W>::F;
@@ -351,8 +363,8 @@ SOFTGL_INLINE void BilinearUnorm8(const TextureLevel& lv, typename V<W>::F s, ty
     t11[l] = w1;
   }
   auto channel_sum = [&](auto c) SOFTGL_WIDE_LAMBDA {
-    const F sum = w00 * Channel<W, Bytes, c>(t00) + w10 * Channel<W, Bytes, c>(t10) +
-                  w01 * Channel<W, Bytes, c>(t01) + w11 * Channel<W, Bytes, c>(t11);
+    const F sum = w00 * Channel<W, Bytes, c, Srgb>(t00) + w10 * Channel<W, Bytes, c, Srgb>(t10) +
+                  w01 * Channel<W, Bytes, c, Srgb>(t01) + w11 * Channel<W, Bytes, c, Srgb>(t11);
     if constexpr (All) out[c] = sum;
     else out[c] = mask ? sum : out[c];
   };
@@ -393,7 +405,7 @@ SOFTGL_INLINE typename V<W>::I LambdaLanes(const TextureView& view, const Textur
   return normal;
 }
 
-template <int W, int Bytes>
+template <int W, int Bytes, bool Srgb>
 SOFTGL_INLINE void SampleRepeatLanes(const TextureView& view, const Textures::Lanes& c, float bias,
                                      float out[4][16]) {
   using F = typename V<W>::F;
@@ -421,16 +433,17 @@ SOFTGL_INLINE void SampleRepeatLanes(const TextureView& view, const Textures::La
     if (normal_bits == (1u << W) - 1 && detail::MaskToBits<W>(level_a != level_a[0], 0) == 0) {
       // The usual block: every lane on the vector path, on the same first level (so a second level, where any
       // lane needs one, exists for all).
-      BilinearUnorm8<W, Bytes, true>(levels[level_a[0]], s, t, normal, ra);
-      if (detail::MaskToBits<W>(two, 0) != 0) BilinearUnorm8<W, Bytes, true>(levels[level_a[0] + 1], s, t, normal, rb);
+      BilinearUnorm8<W, Bytes, Srgb, true>(levels[level_a[0]], s, t, normal, ra);
+      if (detail::MaskToBits<W>(two, 0) != 0)
+        BilinearUnorm8<W, Bytes, Srgb, true>(levels[level_a[0] + 1], s, t, normal, rb);
       pending = I{};
     }
     for (std::uint32_t bits = detail::MaskToBits<W>(pending, 0); bits != 0; bits = detail::MaskToBits<W>(pending, 0)) {
       const int L = level_a[__builtin_ctz(bits)];
       const I mask = pending & (level_a == L);
-      BilinearUnorm8<W, Bytes>(levels[L], s, t, mask, ra);
+      BilinearUnorm8<W, Bytes, Srgb>(levels[L], s, t, mask, ra);
       const I second = mask & two;
-      if (detail::MaskToBits<W>(second, 0) != 0) BilinearUnorm8<W, Bytes>(levels[L + 1], s, t, second, rb);
+      if (detail::MaskToBits<W>(second, 0) != 0) BilinearUnorm8<W, Bytes, Srgb>(levels[L + 1], s, t, second, rb);
       pending &= ~mask;
     }
     for (int ch = 0; ch < 4; ++ch) {
@@ -451,34 +464,34 @@ SOFTGL_INLINE void SampleRepeatLanes(const TextureView& view, const Textures::La
 
 using SampleRepeatLanesFn = void (*)(const TextureView&, const Textures::Lanes&, float, float[4][16]);
 
-// Each layout's form, for each instruction set.
-template <int Bytes>
+// Each layout's form (an sRGB one for four bytes), for each instruction set.
+template <int Bytes, bool Srgb>
 void SampleRepeatLanesBase(const TextureView& v, const Textures::Lanes& c, float bias, float out[4][16]) {
-  SampleRepeatLanes<4, Bytes>(v, c, bias, out);
+  SampleRepeatLanes<4, Bytes, Srgb>(v, c, bias, out);
 }
 #if defined(SOFTGL_HAS_DISPATCH)
-template <int Bytes>
+template <int Bytes, bool Srgb>
 SOFTGL_TARGET_AVX2 void SampleRepeatLanesAvx2(const TextureView& v, const Textures::Lanes& c, float bias,
                                               float out[4][16]) {
-  SampleRepeatLanes<8, Bytes>(v, c, bias, out);
+  SampleRepeatLanes<8, Bytes, Srgb>(v, c, bias, out);
 }
-template <int Bytes>
+template <int Bytes, bool Srgb>
 SOFTGL_TARGET_AVX512 void SampleRepeatLanesAvx512(const TextureView& v, const Textures::Lanes& c, float bias,
                                                   float out[4][16]) {
-  SampleRepeatLanes<16, Bytes>(v, c, bias, out);
+  SampleRepeatLanes<16, Bytes, Srgb>(v, c, bias, out);
 }
 #endif
 
 
 // The vector path for an 8-bit view (null for other layouts).
-SampleRepeatLanesFn SampleRepeatLanesFor(TexelLayout layout) {
-  static const SampleRepeatLanesFn by_bytes[3] = {SOFTGL_CHOOSE(SampleRepeatLanes, <1>),
-                                                  SOFTGL_CHOOSE(SampleRepeatLanes, <2>),
-                                                  SOFTGL_CHOOSE(SampleRepeatLanes, <4>)};
-  switch (layout) {
+SampleRepeatLanesFn SampleRepeatLanesFor(const TextureView& view) {
+  static const SampleRepeatLanesFn by_bytes[4] = {
+      SOFTGL_CHOOSE(SampleRepeatLanes, <1, false>), SOFTGL_CHOOSE(SampleRepeatLanes, <2, false>),
+      SOFTGL_CHOOSE(SampleRepeatLanes, <4, false>), SOFTGL_CHOOSE(SampleRepeatLanes, <4, true>)};
+  switch (view.layout) {
     case TexelLayout::kUnorm8x1: return by_bytes[0];
     case TexelLayout::kUnorm8x2: return by_bytes[1];
-    case TexelLayout::kUnorm8x4: return by_bytes[2];
+    case TexelLayout::kUnorm8x4: return by_bytes[view.srgb ? 3 : 2];
     default: return nullptr;
   }
 }
@@ -501,7 +514,7 @@ void Textures::SampleQuad(int unit, const glm::vec2 uv[4], const glm::vec2 duv_d
 void Textures::SampleLanes(int unit, const Lanes& c, float bias, float out[4][16]) const {
   const TextureView* v = Usable(unit_2d, unit);
   if (v && v->fast != TextureView::Fast::kNone) {
-    if (const SampleRepeatLanesFn sample = SampleRepeatLanesFor(v->layout)) return sample(*v, c, bias, out);
+    if (const SampleRepeatLanesFn sample = SampleRepeatLanesFor(*v)) return sample(*v, c, bias, out);
   }
   for (int l = 0; l < 16; ++l) {
     const glm::vec4 r = Sample(unit, glm::vec2(c.s[l], c.t[l]), glm::vec2(c.ds_dx[l], c.dt_dx[l]),

@@ -39,7 +39,8 @@ bool SameBuffers(const RenderTarget& a, const RenderTarget& b) {
     return false;
   for (int i = 0; i < kMaxColorOutputs; ++i) {
     const ColorBuffer &x = a.color[i], &y = b.color[i];
-    if (x.data != y.data || x.layout != y.layout || x.rgb_only != y.rgb_only || x.pitch != y.pitch) return false;
+    if (x.data != y.data || x.layout != y.layout || x.rgb_only != y.rgb_only || x.srgb != y.srgb || x.pitch != y.pitch)
+      return false;
   }
   return true;
 }

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "helpers.h"
+#include "framebuffer.h"
 #include "texture.h"
 
 using namespace softgl;
@@ -564,8 +565,8 @@ struct FastAndGeneral {
   TextureView fast_view, general_view;
   Textures fast, general;
 
-  FastAndGeneral(int w, int h, std::uint32_t s) : seed(s) {
-    texture = MakeTexture(w, h, [&](int, int) { return glm::vec4(Next(), Next(), Next(), Next()); });
+  FastAndGeneral(int w, int h, std::uint32_t s, Enum format = RGBA32F) : seed(s) {
+    texture = MakeTexture(w, h, [&](int, int) { return glm::vec4(Next(), Next(), Next(), Next()); }, format);
     detail::GenerateMipmaps(texture);
     texture.params.wrap_s = texture.params.wrap_t = REPEAT;
     texture.params.mag_filter = LINEAR;
@@ -592,8 +593,9 @@ TEST_CASE("the fast REPEAT path samples exactly as the general one", "[texture]"
   // A 64 x 32 mipmapped texture of arbitrary texels, sampled at random places with random derivatives (both
   // magnified and minified, lambda past the last level too) through the fast path and the general one: the results
   // must be the same floats.
-  FastAndGeneral f(64, 32, 99);
+  for (const Enum format : {RGBA32F, RGBA8, SRGB8_ALPHA8})
   for (Enum min_filter : {LINEAR_MIPMAP_LINEAR, LINEAR}) {
+    FastAndGeneral f(64, 32, 99, format);
     f.Use(min_filter);
     REQUIRE(f.fast_view.fast != TextureView::Fast::kNone);
     int differing = 0;
@@ -604,7 +606,7 @@ TEST_CASE("the fast REPEAT path samples exactly as the general one", "[texture]"
       const float bias = f.Next() - 0.5f;
       differing += f.fast.Sample(0, uv, dx, dy, bias) != f.general.Sample(0, uv, dx, dy, bias);
     }
-    INFO("min filter 0x" << std::hex << min_filter);
+    INFO("format 0x" << std::hex << format << ", min filter 0x" << min_filter);
     CHECK(differing == 0);
   }
 }
@@ -707,4 +709,199 @@ TEST_CASE("texture parameters and level parameters read back", "[texture]") {
   CHECK(gl.GetError() == INVALID_ENUM);
   gl.GetTexLevelParameteriv(TEXTURE_CUBE_MAP, 0, TEXTURE_WIDTH, i);
   CHECK(gl.GetError() == INVALID_ENUM);
+}
+
+TEST_CASE("sRGB conversions: the decode table, an exact encode, and their round trip", "[texture][srgb]") {
+  CHECK(detail::SrgbDecode8(0) == 0.0f);
+  CHECK(detail::SrgbDecode8(255) == 1.0f);
+  // Section 8.24's formula at two bytes, one on each side of its linear segment.
+  CHECK(detail::SrgbDecode8(10) == Approx(10.0 / 255.0 / 12.92).epsilon(1e-6));
+  CHECK(detail::SrgbDecode8(128) == Approx(0.2158605).epsilon(1e-6));
+  for (int k = 0; k < 256; ++k) {
+    INFO("byte " << k);
+    CHECK(detail::SrgbEncode8(detail::SrgbDecode8(std::uint8_t(k))) == k);  // decoding loses nothing
+    if (k > 0) CHECK(detail::SrgbDecode8(std::uint8_t(k)) > detail::SrgbDecode8(std::uint8_t(k - 1)));
+  }
+  // The encode is the nearest byte to 255 times section 17.3.7's value: checked on a dense sweep, away from the
+  // half-way points where float and double could disagree.
+  int checked = 0;
+  for (int i = 0; i <= 100000; ++i) {
+    const double l = i / 100000.0;
+    const double c = l < 0.0031308 ? 12.92 * l : 1.055 * std::pow(l, 1.0 / 2.4) - 0.055;
+    const double scaled = c * 255.0;
+    if (std::fabs(scaled - std::floor(scaled) - 0.5) < 1e-4) continue;
+    CHECK(int(detail::SrgbEncode8(float(l))) == int(std::lround(scaled)));
+    ++checked;
+  }
+  CHECK(checked > 99000);
+  CHECK(detail::SrgbEncode8(0.5f) == 188);  // a linear half is sRGB 0.735
+  CHECK(detail::SrgbEncode8(-1.0f) == 0);
+  CHECK(detail::SrgbEncode8(std::numeric_limits<float>::quiet_NaN()) == 0);
+  CHECK(detail::SrgbEncode8(2.0f) == 255);
+}
+
+TEST_CASE("sRGB textures decode before filtering; their mipmaps average in linear light", "[texture][srgb]") {
+  Context gl(4, 4);
+  const std::uint32_t tex = gl.GenTexture();
+  gl.BindTexture(TEXTURE_2D, tex);
+  // A 2 x 2 level: black and white columns, alpha 0 and 255 (alpha is linear).
+  const std::uint8_t texels[16] = {0, 0, 0, 0, 255, 255, 255, 255, 0, 0, 0, 0, 255, 255, 255, 255};
+  gl.PixelStore(UNPACK_ALIGNMENT, 1);
+  gl.TexImage2D(TEXTURE_2D, 0, SRGB8_ALPHA8, 2, 2, 0, RGBA, UNSIGNED_BYTE, texels);
+  REQUIRE(gl.GetError() == NO_ERROR);
+  int format = 0;
+  gl.GetTexLevelParameteriv(TEXTURE_2D, 0, TEXTURE_INTERNAL_FORMAT, &format);
+  CHECK(format == int(SRGB8_ALPHA8));
+  gl.GenerateMipmap(TEXTURE_2D);
+  // The texels come back as stored: no conversion on the way out.
+  std::uint8_t level0[16] = {}, level1[4] = {};
+  gl.GetTexImage(TEXTURE_2D, 0, RGBA, UNSIGNED_BYTE, level0);
+  CHECK(std::memcmp(level0, texels, 16) == 0);
+  gl.GetTexImage(TEXTURE_2D, 1, RGBA, UNSIGNED_BYTE, level1);
+  // Black and white average to a linear half, which encodes to 188 (an average of the bytes would give 128);
+  // alpha averages as it is.
+  CHECK(int(level1[0]) == 188);
+  CHECK(int(level1[2]) == 188);
+  CHECK(int(level1[3]) == 128);
+
+  // LINEAR between the two columns: a linear half (0.5), not the decoded average byte 128 (0.216).
+  TextureObject t = MakeTexture(2, 1, [](int i, int) { return glm::vec4(float(i), float(i), float(i), 1.0f); }, SRGB8_ALPHA8);
+  t.params.mag_filter = LINEAR;
+  t.params.wrap_s = t.params.wrap_t = CLAMP_TO_EDGE;
+  const Sampler s(t);
+  CHECK(s.view.srgb);
+  CHECK(s.At(0.5f, 0.5f).r == Approx(0.5f).margin(1e-5));
+  CHECK(s.At(0.25f, 0.5f).g == 0.0f);
+  CHECK(s.At(0.75f, 0.5f).b == Approx(1.0f).margin(1e-5));
+  // A middle grey byte samples as its decoded value.
+  TextureObject grey = MakeTexture(1, 1, [](int, int) { return glm::vec4(128.0f / 255.0f, 0.0f, 1.0f, 0.5f); }, SRGB8);
+  const Sampler g(grey);
+  const glm::vec4 v = g.At(0.5f, 0.5f);
+  CHECK(v.r == Approx(detail::SrgbDecode8(128)).margin(1e-5));
+  CHECK(v.a == 1.0f);  // SRGB8 has no alpha
+  // Sampling's decode (a polynomial, the same on every path) is within 1e-5 of the formula for every byte, and
+  // exact on its linear segment.
+  detail::TextureLevel all;
+  all.Allocate(SRGB8_ALPHA8, 256, 1);
+  for (int k = 0; k < 256; ++k) all.At(k, 0)[0] = std::uint8_t(k);
+  for (int k = 0; k < 256; ++k) {
+    INFO("byte " << k);
+    const float decoded = all.Sampled(k, 0).r / 255.0f;
+    CHECK(decoded == Approx(detail::SrgbDecode8(std::uint8_t(k))).margin(1e-5));
+    if (k <= 10) CHECK(decoded == Approx(float(k) / 255.0f / 12.92f).epsilon(1e-6));
+  }
+}
+
+TEST_CASE("FRAMEBUFFER_SRGB: an sRGB attachment encodes clears and fragments, and blends in linear light",
+          "[framebuffer][srgb]") {
+  Context gl(4, 4);
+  const std::uint32_t tex = gl.GenTexture(), fbo = gl.GenFramebuffer();
+  gl.BindTexture(TEXTURE_2D, tex);
+  gl.TexImage2D(TEXTURE_2D, 0, SRGB8_ALPHA8, 4, 4, 0, RGBA, UNSIGNED_BYTE, nullptr);
+  gl.BindFramebuffer(FRAMEBUFFER, fbo);
+  gl.FramebufferTexture2D(FRAMEBUFFER, COLOR_ATTACHMENT0, TEXTURE_2D, tex, 0);
+  REQUIRE(gl.CheckFramebufferStatus(FRAMEBUFFER) == FRAMEBUFFER_COMPLETE);
+  int encoding = 0;
+  gl.GetFramebufferAttachmentParameteriv(FRAMEBUFFER, COLOR_ATTACHMENT0, FRAMEBUFFER_ATTACHMENT_COLOR_ENCODING,
+                                         &encoding);
+  CHECK(encoding == int(SRGB));
+  CHECK_FALSE(gl.IsEnabled(FRAMEBUFFER_SRGB));
+  std::uint8_t px[4];
+
+  // Disabled (the default): values are stored as they are.
+  gl.ClearColor(0.5f, 0.5f, 0.5f, 0.5f);
+  gl.Clear(COLOR_BUFFER_BIT);
+  gl.ReadPixel(0, 0, px);
+  CHECK(int(px[0]) == 128);
+
+  // Enabled: the clear colour is encoded, alpha is not.
+  gl.Enable(FRAMEBUFFER_SRGB);
+  CHECK(gl.IsEnabled(FRAMEBUFFER_SRGB));
+  gl.Clear(COLOR_BUFFER_BIT);
+  gl.ReadPixel(0, 0, px);  // ReadPixels returns the stored bytes
+  CHECK((int(px[0]) == 188 && int(px[1]) == 188 && int(px[2]) == 188 && int(px[3]) == 128));
+
+  // A fragment of 0.5 is encoded; blended 50% over black, the linear quarter 0.25 encodes to 137 (blending the
+  // stored bytes would give 64).
+  testing::SolidShader solid;
+  solid.color = glm::vec4(0.5f, 0.0f, 1.0f, 1.0f);
+  gl.UseProgram(solid);
+  const std::uint32_t vao =
+      testing::MakeVertexArray(gl, {{-1, -1, 0, 1}, {1, -1, 0, 1}, {-1, 1, 0, 1}, {1, 1, 0, 1}});
+  gl.DrawArrays(TRIANGLE_STRIP, 0, 4);
+  gl.ReadPixel(1, 1, px);
+  CHECK((int(px[0]) == 188 && int(px[1]) == 0 && int(px[2]) == 255 && int(px[3]) == 255));
+  gl.ClearColor(0, 0, 0, 0);
+  gl.Clear(COLOR_BUFFER_BIT);
+  solid.color = glm::vec4(0.5f, 0.5f, 0.5f, 0.5f);
+  gl.Enable(BLEND);
+  gl.BlendFunc(SRC_ALPHA, ONE_MINUS_SRC_ALPHA);
+  gl.DrawArrays(TRIANGLE_STRIP, 0, 4);
+  gl.ReadPixel(2, 2, px);
+  CHECK((int(px[0]) == 137 && int(px[3]) == 64));
+  // Again over that: 0.5 * 0.5 + 0.5 * 0.25 = 0.375 linear, from the stored 137 decoded.
+  gl.DrawArrays(TRIANGLE_STRIP, 0, 4);
+  gl.ReadPixel(2, 2, px);
+  CHECK(int(px[0]) == int(detail::SrgbEncode8(0.5f * 0.5f + 0.5f * detail::SrgbDecode8(137))));
+  gl.Disable(BLEND);
+
+  // Blit from the sRGB texture into a linear RGBA8 renderbuffer: decoded while FRAMEBUFFER_SRGB is enabled, the
+  // bytes as they are when it is not.
+  const std::uint32_t rb = gl.GenRenderbuffer(), dst = gl.GenFramebuffer();
+  gl.BindRenderbuffer(RENDERBUFFER, rb);
+  gl.RenderbufferStorage(RENDERBUFFER, RGBA8, 4, 4);
+  gl.BindFramebuffer(DRAW_FRAMEBUFFER, dst);
+  gl.FramebufferRenderbuffer(DRAW_FRAMEBUFFER, COLOR_ATTACHMENT0, RENDERBUFFER, rb);
+  gl.BindFramebuffer(READ_FRAMEBUFFER, fbo);
+  gl.BlitFramebuffer(0, 0, 4, 4, 0, 0, 4, 4, COLOR_BUFFER_BIT, NEAREST);
+  gl.BindFramebuffer(READ_FRAMEBUFFER, dst);
+  gl.ReadPixel(0, 0, px);
+  const int stored = int(detail::SrgbEncode8(0.5f * 0.5f + 0.5f * detail::SrgbDecode8(137)));
+  CHECK(int(px[0]) == int(detail::FloatToUnorm8(detail::SrgbDecode8(std::uint8_t(stored)))));
+  gl.Disable(FRAMEBUFFER_SRGB);
+  gl.BindFramebuffer(READ_FRAMEBUFFER, fbo);
+  gl.BlitFramebuffer(0, 0, 4, 4, 0, 0, 4, 4, COLOR_BUFFER_BIT, NEAREST);
+  gl.BindFramebuffer(READ_FRAMEBUFFER, dst);
+  gl.ReadPixel(0, 0, px);
+  CHECK(int(px[0]) == stored);
+  CHECK(gl.GetError() == NO_ERROR);
+
+  // A linear attachment reports LINEAR, and FRAMEBUFFER_SRGB leaves it alone.
+  gl.BindFramebuffer(FRAMEBUFFER, dst);
+  gl.GetFramebufferAttachmentParameteriv(FRAMEBUFFER, COLOR_ATTACHMENT0, FRAMEBUFFER_ATTACHMENT_COLOR_ENCODING,
+                                         &encoding);
+  CHECK(encoding == int(LINEAR));
+  gl.Enable(FRAMEBUFFER_SRGB);
+  gl.ClearColor(0.5f, 0.5f, 0.5f, 1.0f);
+  gl.Clear(COLOR_BUFFER_BIT);
+  gl.ReadPixel(0, 0, px);
+  CHECK(int(px[0]) == 128);
+  gl.GetFramebufferAttachmentParameteriv(FRAMEBUFFER, COLOR_ATTACHMENT0 + 1, FRAMEBUFFER_ATTACHMENT_COLOR_ENCODING,
+                                         &encoding);
+  CHECK(gl.GetError() == INVALID_OPERATION);  // nothing attached there
+  (void)vao;
+}
+
+TEST_CASE("image files load as sRGB textures when asked", "[texture][files][srgb]") {
+  const std::string path = (std::filesystem::temp_directory_path() / "softgl_srgb_test.png").string();
+  Image image;
+  image.width = 2;
+  image.height = 1;
+  image.rgba = {128, 0, 0, 255, 255, 255, 255, 128};
+  REQUIRE(WritePng(path, image));
+  Context gl(2, 2);
+  gl.BindTexture(TEXTURE_2D, gl.GenTexture());
+  int format = 0;
+  CHECK(gl.TexImage2DFromFile(TEXTURE_2D, path, false, nullptr, SRGB));
+  gl.GetTexLevelParameteriv(TEXTURE_2D, 0, TEXTURE_INTERNAL_FORMAT, &format);
+  CHECK(format == int(SRGB8_ALPHA8));
+  CHECK(gl.TexImage2DFromFile(TEXTURE_2D, path, false));
+  gl.GetTexLevelParameteriv(TEXTURE_2D, 0, TEXTURE_INTERNAL_FORMAT, &format);
+  CHECK(format == int(RGBA8));
+  CHECK(gl.GetError() == NO_ERROR);
+  std::string error;
+  CHECK_FALSE(gl.TexImage2DFromFile(TEXTURE_2D, path, false, &error, RGBA));
+  CHECK(gl.GetError() == INVALID_ENUM);
+  CHECK(error.find("LINEAR or SRGB") != std::string::npos);
+  std::filesystem::remove(path);
 }

@@ -446,7 +446,9 @@ TEST_CASE("textures sampled 16 lanes at a time give the floats of one lane at a 
                         {RGB8, 32, 32, LINEAR_MIPMAP_LINEAR, REPEAT},  {RG8, 16, 16, LINEAR_MIPMAP_NEAREST, MIRRORED_REPEAT},
                         {R8, 30, 20, LINEAR, CLAMP_TO_EDGE},            {RGBA32F, 16, 8, NEAREST_MIPMAP_LINEAR, REPEAT},
                         {RGBA8, 48, 16, LINEAR_MIPMAP_LINEAR, REPEAT},  {R8, 32, 16, LINEAR_MIPMAP_LINEAR, REPEAT},
-                        {RG8, 16, 16, LINEAR, REPEAT},                 {RG8, 8, 32, LINEAR_MIPMAP_LINEAR, REPEAT}};
+                        {RG8, 16, 16, LINEAR, REPEAT},                 {RG8, 8, 32, LINEAR_MIPMAP_LINEAR, REPEAT},
+                        {SRGB8_ALPHA8, 64, 32, LINEAR_MIPMAP_LINEAR, REPEAT}, {SRGB8, 32, 32, LINEAR, REPEAT},
+                        {SRGB8_ALPHA8, 24, 16, LINEAR_MIPMAP_LINEAR, CLAMP_TO_EDGE}};
   std::mt19937 rng(5);
   std::uniform_real_distribution<float> coord(-2.0f, 2.0f), deriv(-0.3f, 0.3f);
   for (const Case& c : cases) {

@@ -199,13 +199,17 @@ class Context {
                      const void* pixels);
   /// Loads an image file (PNG, JPEG, TGA, BMP, HDR, through stb_image) into level 0 of the texture bound to
   /// target (TEXTURE_2D or a cube face): 1 to 4 channels become R8, RG8, RGB8, RGBA8; HDR becomes RGBA32F.
-  /// Image files store the top row first; flip_vertically puts the bottom row at t = 0, OpenGL's convention.
-  /// Returns false with a message in `error` for a missing or corrupt file (the texture is unchanged, no GL error),
-  /// or an image too large (INVALID_VALUE).
-  bool TexImage2DFromFile(Enum target, const std::string& path, bool flip_vertically, std::string* error = nullptr);
+  /// `encoding` SRGB marks colour images as sRGB-encoded (3 channels SRGB8, 4 SRGB8_ALPHA8: sampling decodes them
+  /// to linear before filtering), as colour maps and photographs are; LINEAR (the default) keeps them as they are,
+  /// for data such as normal maps. Image files store the top row first; flip_vertically puts the bottom row at
+  /// t = 0, OpenGL's convention. Returns false with a message in `error` for a missing or corrupt file (the texture
+  /// is unchanged, no GL error), or an image too large (INVALID_VALUE); `encoding` neither LINEAR nor SRGB:
+  /// INVALID_ENUM.
+  bool TexImage2DFromFile(Enum target, const std::string& path, bool flip_vertically, std::string* error = nullptr,
+                          Enum encoding = LINEAR);
   /// As TexImage2DFromFile, for an encoded image (PNG, JPEG, ...) already in memory, such as one embedded in a model.
   bool TexImage2DFromMemory(Enum target, const void* data, std::size_t size, bool flip_vertically,
-                            std::string* error = nullptr);
+                            std::string* error = nullptr, Enum encoding = LINEAR);
   /// Copies the rectangle (x, y, width, height) of the read framebuffer (its COLOR_ATTACHMENT0 or colour buffer, or
   /// its depth buffer for a depth texture) into level `level` of the bound texture at (xoffset, yoffset), converted
   /// to the level's format; pixels outside the framebuffer (undefined in OpenGL) copy as zero. Errors: bad target:
@@ -343,8 +347,9 @@ class Context {
   /// Maps NDC depth [-1, 1] to [n, f]; both clamped to [0, 1].
   void DepthRange(double n, double f);
   /// cap: CULL_FACE, DEPTH_TEST, STENCIL_TEST, SCISSOR_TEST, BLEND, POLYGON_OFFSET_FILL, POLYGON_OFFSET_LINE,
-  /// POLYGON_OFFSET_POINT, PROGRAM_POINT_SIZE, PRIMITIVE_RESTART or PRIMITIVE_RESTART_FIXED_INDEX; otherwise
-  /// INVALID_ENUM. All start disabled.
+  /// POLYGON_OFFSET_POINT, PROGRAM_POINT_SIZE, PRIMITIVE_RESTART, PRIMITIVE_RESTART_FIXED_INDEX or FRAMEBUFFER_SRGB
+  /// (draws, clears and blits into SRGB8_ALPHA8 and SRGB8 attachments encode linear colours, blending decodes the
+  /// stored colour first); otherwise INVALID_ENUM. All start disabled.
   void Enable(Enum cap);
   void Disable(Enum cap);
   bool IsEnabled(Enum cap);

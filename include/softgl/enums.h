@@ -95,6 +95,7 @@ inline constexpr Enum POLYGON_OFFSET_LINE = 0x2A02;
 inline constexpr Enum POLYGON_OFFSET_FILL = 0x8037;
 inline constexpr Enum PRIMITIVE_RESTART = 0x8F9D;              // with PrimitiveRestartIndex
 inline constexpr Enum PRIMITIVE_RESTART_FIXED_INDEX = 0x8D69;  // 2^N - 1 for N-bit indices
+inline constexpr Enum FRAMEBUFFER_SRGB = 0x8DB9;  // sRGB encoding on store (and decoding for blending) into sRGB buffers
 
 // Faces, winding and polygon modes.
 inline constexpr Enum FRONT = 0x0404;
@@ -180,6 +181,9 @@ inline constexpr Enum RGB8 = 0x8051;
 inline constexpr Enum RGBA8 = 0x8058;
 inline constexpr Enum R32F = 0x822E;
 inline constexpr Enum RGBA32F = 0x8814;
+inline constexpr Enum SRGB = 0x8C40;          // FRAMEBUFFER_ATTACHMENT_COLOR_ENCODING's value for sRGB buffers
+inline constexpr Enum SRGB8 = 0x8C41;         // sRGB-encoded RGB, 8 bits a channel (alpha reads 1)
+inline constexpr Enum SRGB8_ALPHA8 = 0x8C43;  // sRGB-encoded RGB with linear alpha, 8 bits a channel
 inline constexpr Enum DEPTH_COMPONENT16 = 0x81A5;  // all depth formats are stored as 32-bit floats
 inline constexpr Enum DEPTH_COMPONENT24 = 0x81A6;
 inline constexpr Enum DEPTH_COMPONENT32F = 0x8CAC;
@@ -246,6 +250,7 @@ inline constexpr Enum FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE = 0x8CD0;  // GetFrameb
 inline constexpr Enum FRAMEBUFFER_ATTACHMENT_OBJECT_NAME = 0x8CD1;
 inline constexpr Enum FRAMEBUFFER_ATTACHMENT_TEXTURE_LEVEL = 0x8CD2;
 inline constexpr Enum FRAMEBUFFER_ATTACHMENT_TEXTURE_CUBE_MAP_FACE = 0x8CD3;
+inline constexpr Enum FRAMEBUFFER_ATTACHMENT_COLOR_ENCODING = 0x8210;  // LINEAR or SRGB
 inline constexpr Enum TEXTURE = 0x1702;  // an attachment's object type (or NONE, RENDERBUFFER)
 
 // Renderbuffers.

@@ -33,8 +33,10 @@ enum class Program {
   kShadow,   // colour = texture(depth texture on unit 2 with comparison, vec3(extra.xy, extra.z)) in red
 };
 
-/// A 2D RGBA8 texture for unit 0: the levels given (level 0 first), or level 0 and GenerateMipmap.
+/// A 2D RGBA8 (or `internal_format`) texture for unit 0: the levels given (level 0 first), or level 0 and
+/// GenerateMipmap.
 struct TextureDesc {
+  Enum internal_format = softgl::RGBA8;  // RGBA8 or SRGB8_ALPHA8
   struct Level {
     int width = 0, height = 0;
     std::vector<std::uint8_t> rgba;  // rows bottom first

@@ -300,7 +300,7 @@ class GlBackend final : public Backend {
     glBindTexture(GL_TEXTURE_2D, tex);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
     for (std::size_t l = 0; l < d.levels.size(); ++l)
-      glTexImage2D(GL_TEXTURE_2D, GLint(l), GL_RGBA8, d.levels[l].width, d.levels[l].height, 0, GL_RGBA,
+      glTexImage2D(GL_TEXTURE_2D, GLint(l), GLint(d.internal_format), d.levels[l].width, d.levels[l].height, 0, GL_RGBA,
                    GL_UNSIGNED_BYTE, d.levels[l].rgba.data());
     if (d.generate_mipmap) glGenerateMipmap(GL_TEXTURE_2D);
     else glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, GLint(d.levels.size()) - 1);

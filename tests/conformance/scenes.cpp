@@ -645,6 +645,61 @@ void TextureGeneratedMipmaps(Backend& b) {
   RecedingPlane(b, 0, 0, kSize, kSize, 6.0f);
 }
 
+// The pattern as an SRGB8_ALPHA8 texture with its levels given, drawn trilinear on a receding floor (texels decoded
+// to linear before filtering), and level 0 magnified with NEAREST above it (the decoding alone). The default
+// framebuffer is linear, so what is compared is the filtered linear colour. (GenerateMipmap's filter is the
+// implementation's choice: llvmpipe's sRGB levels differ from softgl's by up to 3, so they are not compared here.)
+void SrgbTexture(Backend& b) {
+  ClearBlack(b);
+  TextureDesc d = PatternTexture(true);
+  d.internal_format = SRGB8_ALPHA8;
+  d.min_filter = LINEAR_MIPMAP_LINEAR;
+  b.SetTexture(d);
+  RecedingPlane(b, 0, 0, kSize, kSize / 2, 6.0f);
+  d.min_filter = NEAREST;  // one texel each, magnified: the decode table alone
+  d.mag_filter = NEAREST;
+  b.SetTexture(d);
+  b.Draw(TRIANGLES, QuadWith({Win(0, 64), Win(128, 64), Win(128, 128), Win(0, 128)}, Uv({0, 0}, {1, 0}, {1, 0.5f}, {0, 0.5f})),
+         Program::kTexture);
+}
+
+// Drawing into an SRGB8_ALPHA8 texture with FRAMEBUFFER_SRGB enabled: a clear (encoded), colour gradients
+// (encoded on store) and two blended gradients (the stored colour decoded, blended in linear, encoded again), then
+// the same drawn with FRAMEBUFFER_SRGB disabled on the right half (the bytes as they are). The blended triangles do
+// not overlap: two blends of one pixel would add two roundings. The object stays bound, so what is compared is its
+// stored bytes. softgl converts exactly; llvmpipe's conversions approximate, so a third of the converted pixels
+// differ by 1 and about one in 10,000 by 2: the texture check's tolerance.
+void SrgbFramebuffer(Backend& b) {
+  b.BindFramebuffer(FRAMEBUFFER, b.GenFramebuffer());
+  b.AttachNewTexture(FRAMEBUFFER, COLOR_ATTACHMENT0, SRGB8_ALPHA8, kSize, kSize);
+  if (b.CheckFramebufferStatus(FRAMEBUFFER) != FRAMEBUFFER_COMPLETE) return;  // left black: the check fails
+  for (const bool on : {true, false}) {
+    const float x0 = on ? 0.0f : 64.0f;
+    if (on) b.Enable(FRAMEBUFFER_SRGB);
+    else b.Disable(FRAMEBUFFER_SRGB);
+    b.Scissor(int(x0), 0, 64, kSize);
+    b.Enable(SCISSOR_TEST);
+    b.ClearColor(0.2f, 0.5f, 0.05f, 1.0f);
+    b.Clear(COLOR_BUFFER_BIT);
+    b.Disable(SCISSOR_TEST);
+    const glm::vec4 corner[4] = {Win(x0 + 4, 4), Win(x0 + 60, 4), Win(x0 + 60, 60), Win(x0 + 4, 60)};
+    const glm::vec4 color[4] = {{0, 0, 0, 1}, {1, 0, 0, 1}, {1, 1, 1, 1}, {0, 0, 1, 1}};
+    std::vector<Vertex> gradient;
+    for (int k : {0, 1, 3, 1, 2, 3}) gradient.push_back({corner[k], color[k], glm::vec4(0)});
+    b.Draw(TRIANGLES, gradient);
+    b.Enable(BLEND);
+    b.BlendFuncSeparate(SRC_ALPHA, ONE_MINUS_SRC_ALPHA, ONE, ONE_MINUS_SRC_ALPHA);
+    b.Draw(TRIANGLES, {{Win(x0 + 2, 2), {1, 1, 0, 0.25f}}, {Win(x0 + 62, 10), {0, 1, 1, 0.5f}},
+                       {Win(x0 + 30, 62), {1, 0, 1, 1.0f}}});
+    b.BlendColor(0.6f, 0.3f, 0.9f, 0.5f);
+    b.BlendFuncSeparate(CONSTANT_COLOR, ONE_MINUS_SRC_COLOR, ONE, ZERO);
+    b.Draw(TRIANGLES, {{Win(x0 + 4, 66), {0.1f, 0.8f, 0.3f, 1}}, {Win(x0 + 60, 70), {0.9f, 0.2f, 0.5f, 1}},
+                       {Win(x0 + 32, 124), {0.4f, 0.4f, 0.9f, 1}}});
+    b.Disable(BLEND);
+  }
+  b.Disable(FRAMEBUFFER_SRGB);
+}
+
 void RenderToTexture(Backend& b) {
   // Pass 1: a 64 x 64 texture with coloured triangles and a depth test.
   b.BeginRenderToTexture(64, 64);
@@ -898,6 +953,8 @@ const std::vector<SceneInfo>& Scenes() {
       {"texture_wraps", kSize, kSize, Check::kTexture, TextureWraps},
       {"texture_generated_mipmaps", kSize, kSize, Check::kTexture, TextureGeneratedMipmaps},
       {"render_to_texture", kSize, kSize, Check::kTexture, RenderToTexture},
+      {"srgb_texture", kSize, kSize, Check::kTexture, SrgbTexture},
+      {"srgb_framebuffer", kSize, kSize, Check::kTexture, SrgbFramebuffer},
       {"copy_tex_image", kSize, kSize, Check::kColor, CopyTexImage},
       {"stencil_renderbuffer", kSize, kSize, Check::kExactWithDepthStencil, StencilRenderbuffer},
       {"stencil_index8", kSize, kSize, Check::kExactWithStencil, StencilIndex8},

@@ -17,7 +17,7 @@ enum class Check {
   kExactWithDepthStencil,  // colour and stencil identical, depth within the 24-bit depth buffer's resolution
   kColor,             // colour within +-1 per channel
   kCoverage,          // the same pixels drawn (against a black background); colours reported, not compared
-  kTexture,           // colour within +-1 on at least 99.5% of the pixels (texture filtering)
+  kTexture,           // colour within +-1 on at least 99.5% of the pixels (texture filtering, sRGB conversion)
 };
 
 /// The largest colour difference a check allows (kCoverage: any).
