@@ -42,6 +42,12 @@ softgl::Image Decals(int width, int height);
 /// trilinear (LINEAR_MIPMAP_LINEAR), where the level of detail follows the screen-space derivatives.
 softgl::Image TexturedCube(int width, int height);
 
+/// sRGB done right and wrong: left, an sRGB texture (decoded before filtering) lit and blended in linear light into
+/// an sRGB framebuffer (FRAMEBUFFER_SRGB); right, the same scene with the encoded colours taken as linear. The
+/// distant floor keeps its brightness on the left and darkens on the right, the sphere's light falls off softly on
+/// the left, and where the red and green panels overlap the left stays bright.
+softgl::Image Srgb(int width, int height);
+
 /// Shadow mapping: depth from the light into a depth texture through a framebuffer object, then the lit pass
 /// samples it with depth comparison, 3 x 3 taps of 2 x 2 percentage-closer filtering.
 softgl::Image ShadowMap(int width, int height);

@@ -126,6 +126,100 @@ softgl::Image TexturedCube(int width, int height) {
 
 namespace {
 
+// The scene of Srgb(), drawn into the rectangle (x, 0, width, height) of whatever is bound: a textured floor (the
+// pattern on unit 0), a white sphere lit by one light, and two overlapping translucent panels. `linear` gives the
+// colours it sets as linear values (the sRGB half), else as the encoded values they are on screen.
+void SrgbScene(softgl::Context& gl, int x, int width, int height, bool linear) {
+  auto to_linear = [&](glm::vec4 c) {
+    if (!linear) return c;
+    for (int k = 0; k < 3; ++k) c[k] = c[k] <= 0.04045f ? c[k] / 12.92f : std::pow((c[k] + 0.055f) / 1.055f, 2.4f);
+    return c;
+  };
+  gl.Viewport(x, 0, width, height);
+  gl.Scissor(x, 0, width, height);
+  gl.Enable(softgl::SCISSOR_TEST);
+  const glm::mat4 vp = Projection(width, height, 50.0f, 0.1f, 100.0f) *
+                       glm::lookAt(glm::vec3(0.0f, 1.5f, 4.2f), glm::vec3(0.0f, 0.7f, -3.0f), glm::vec3(0, 1, 0));
+  const std::uint8_t white[4] = {255, 255, 255, 255};
+  const Mesh floor = MakeQuad(40.0f, white), sphere = MakeSphere(48, 24, 0.6f), panel = MakeQuad(0.4f, white);
+  const glm::vec4 sky = to_linear(glm::vec4(0.62f, 0.75f, 0.9f, 1.0f));
+  gl.ClearColor(sky.r, sky.g, sky.b, sky.a);
+  gl.Clear(softgl::COLOR_BUFFER_BIT | softgl::DEPTH_BUFFER_BIT);
+  gl.Enable(softgl::DEPTH_TEST);
+  TexturedShader textured;
+  textured.mvp = vp;
+  textured.uv_scale = 16.0f;
+  gl.UseProgram(textured);
+  UploadLitMesh(gl, floor);
+  DrawMesh(gl, floor);
+  LitShader lit;
+  lit.ambient = 0.02f;
+  lit.light_dir = glm::normalize(glm::vec3(0.9f, 0.6f, 0.4f));
+  lit.model = glm::translate(kIdentity, glm::vec3(-0.45f, 0.6f, 0.2f));
+  lit.mvp = vp * lit.model;
+  gl.UseProgram(lit);
+  UploadLitMesh(gl, sphere);
+  DrawMesh(gl, sphere);
+  FlatShader flat;
+  gl.UseProgram(flat);
+  UploadLitMesh(gl, panel);
+  gl.Enable(softgl::BLEND);
+  gl.BlendFunc(softgl::SRC_ALPHA, softgl::ONE_MINUS_SRC_ALPHA);
+  gl.DepthMask(false);
+  const glm::vec4 colors[2] = {{0.1f, 0.9f, 0.15f, 0.5f}, {0.95f, 0.1f, 0.1f, 0.5f}};
+  for (int i = 0; i < 2; ++i) {
+    flat.color = to_linear(colors[i]);
+    flat.mvp = vp * glm::translate(kIdentity, glm::vec3(0.25f + 0.4f * float(i), 1.15f + 0.3f * float(i), 0.0f + 0.3f * float(i))) *
+               glm::rotate(kIdentity, glm::radians(90.0f), glm::vec3(1, 0, 0));
+    DrawMesh(gl, panel);
+  }
+  gl.DepthMask(true);
+  gl.Disable(softgl::BLEND);
+  gl.Disable(softgl::DEPTH_TEST);
+  gl.Disable(softgl::SCISSOR_TEST);
+}
+
+}  // namespace
+
+softgl::Image Srgb(int width, int height) {
+  softgl::Context gl(width, height);
+  const int half = width / 2;
+  const std::vector<std::uint8_t> px = PatternTexels(256);
+  const std::uint32_t srgb_tex = gl.GenTexture(), plain_tex = gl.GenTexture();
+  for (const std::uint32_t tex : {srgb_tex, plain_tex}) {
+    gl.BindTexture(softgl::TEXTURE_2D, tex);
+    gl.TexImage2D(softgl::TEXTURE_2D, 0, tex == srgb_tex ? softgl::SRGB8_ALPHA8 : softgl::RGBA8, 256, 256, 0,
+                  softgl::RGBA, softgl::UNSIGNED_BYTE, px.data());
+    gl.GenerateMipmap(softgl::TEXTURE_2D);
+    gl.TexParameteri(softgl::TEXTURE_2D, softgl::TEXTURE_MIN_FILTER, softgl::LINEAR_MIPMAP_LINEAR);
+  }
+  // Left half: in linear light. The pattern is an sRGB texture (decoded before filtering), and the scene is drawn
+  // into an SRGB8_ALPHA8 colour texture with FRAMEBUFFER_SRGB enabled (lighting and blending in linear light, the
+  // result encoded on store); its bytes are then copied to the screen as they are.
+  const std::uint32_t fbo = gl.GenFramebuffer(), color = gl.GenTexture(), depth = gl.GenRenderbuffer();
+  gl.BindTexture(softgl::TEXTURE_2D, color);
+  gl.TexImage2D(softgl::TEXTURE_2D, 0, softgl::SRGB8_ALPHA8, half, height, 0, softgl::RGBA, softgl::UNSIGNED_BYTE,
+                nullptr);
+  gl.BindRenderbuffer(softgl::RENDERBUFFER, depth);
+  gl.RenderbufferStorage(softgl::RENDERBUFFER, softgl::DEPTH_COMPONENT24, half, height);
+  gl.BindFramebuffer(softgl::FRAMEBUFFER, fbo);
+  gl.FramebufferTexture2D(softgl::FRAMEBUFFER, softgl::COLOR_ATTACHMENT0, softgl::TEXTURE_2D, color, 0);
+  gl.FramebufferRenderbuffer(softgl::FRAMEBUFFER, softgl::DEPTH_ATTACHMENT, softgl::RENDERBUFFER, depth);
+  gl.BindTexture(softgl::TEXTURE_2D, srgb_tex);
+  gl.Enable(softgl::FRAMEBUFFER_SRGB);
+  SrgbScene(gl, 0, half, height, true);
+  gl.Disable(softgl::FRAMEBUFFER_SRGB);
+  gl.BindFramebuffer(softgl::DRAW_FRAMEBUFFER, 0);
+  gl.BlitFramebuffer(0, 0, half, height, 0, 0, half, height, softgl::COLOR_BUFFER_BIT, softgl::NEAREST);
+  // Right half: the same scene the naive way, the encoded colours lit, filtered and blended as if linear.
+  gl.BindFramebuffer(softgl::FRAMEBUFFER, 0);
+  gl.BindTexture(softgl::TEXTURE_2D, plain_tex);
+  SrgbScene(gl, half, width - half, height, false);
+  return gl.ReadPixels();
+}
+
+namespace {
+
 struct DepthOnlyShader : softgl::Shader<DepthOnlyShader, FlatVaryings> {
   glm::mat4 mvp{1.0f};
   void Vertex(const VertexLanes& in, VertexLanesOut<FlatVaryings>& out) const {

@@ -75,6 +75,8 @@ TEST_CASE("image: decals", "[image]") { CompareWithGolden("decals", scenes::Deca
 
 TEST_CASE("image: textured cube", "[image]") { CompareWithGolden("textured_cube", scenes::TexturedCube(640, 480)); }
 
+TEST_CASE("image: sRGB", "[image][srgb]") { CompareWithGolden("srgb", scenes::Srgb(640, 480)); }
+
 TEST_CASE("image: shadow map", "[image]") { CompareWithGolden("shadow_map", scenes::ShadowMap(640, 480)); }
 
 TEST_CASE("image: post-processing", "[image]") { CompareWithGolden("post_process", scenes::PostProcess(640, 480)); }

@@ -58,6 +58,7 @@ TEST_CASE("every example scene is the same image with 1, 2, 3 and 8 threads", "[
       {"transparency", [] { return scenes::Transparency(320, 240); }},
       {"decals", [] { return scenes::Decals(320, 240); }},
       {"textured_cube", [] { return scenes::TexturedCube(333, 211); }},
+      {"srgb", [] { return scenes::Srgb(322, 240); }},
       {"shadow_map", [] { return scenes::ShadowMap(320, 240); }},
       {"post_process", [] { return scenes::PostProcess(320, 240); }},
       {"environment_map", [] { return scenes::EnvironmentMap(320, 240); }},
