@@ -52,7 +52,8 @@ struct Material {
   AlphaMode alpha_mode = AlphaMode::kOpaque;
   float alpha_cutoff = 0.5f;
   bool double_sided = false;
-  // Texture ids in the Context (0: none).
+  // Texture ids in the Context (0: none). The colour maps (base colour, emissive) are sRGB textures (SRGB8 or
+  // SRGB8_ALPHA8: they sample decoded to linear); the others hold their values as they are.
   std::uint32_t base_color_texture = 0, normal_texture = 0, metallic_roughness_texture = 0, emissive_texture = 0,
                 occlusion_texture = 0, specular_texture = 0;
 };

@@ -141,11 +141,15 @@ class SurfaceShader : public Shader<Derived, SurfaceVaryings>, public MaterialPr
   }
 
  protected:
-  /// Base colour (factor x vertex colour x texture); lanes below the alpha cutoff of a masked material are
-  /// discarded.
+  /// Base colour (factor x vertex colour x texture) as the file gives it, sRGB-encoded, for the shaders that
+  /// shade encoded colours (Unlit, Phong); lanes below the alpha cutoff of a masked material are discarded. The
+  /// model library loads colour maps as sRGB textures, which sample decoded to linear: the sample is encoded again.
   vec4 BaseColor(const In& in, Out& out) const {
     vec4 color = material.base_color * in.varyings.color;
-    if (material.base_color_texture) color *= in.Texture(kUnitBaseColor, in.varyings.uv);
+    if (material.base_color_texture) {
+      const vec4 t = in.Texture(kUnitBaseColor, in.varyings.uv);
+      color *= vec4(LinearToSrgb(vec3(t)), t.w);
+    }
     if (material.alpha_mode == Material::AlphaMode::kMask) out.Discard(color.w < material.alpha_cutoff);
     if (material.alpha_mode == Material::AlphaMode::kOpaque) color.w = 1.0f;
     return color;
@@ -176,9 +180,10 @@ class SurfaceShader : public Shader<Derived, SurfaceVaryings>, public MaterialPr
     return DisplayColor(c, tone_map, exposure, encode);
   }
 
+  /// Emission as the file gives it, sRGB-encoded (the emissive map's sample encoded again, as in BaseColor).
   vec3 Emissive(const In& in) const {
     vec3 e = material.emissive;
-    if (material.emissive_texture) e *= vec3(in.Texture(kUnitEmissive, in.varyings.uv));
+    if (material.emissive_texture) e *= LinearToSrgb(vec3(in.Texture(kUnitEmissive, in.varyings.uv)));
     return e;
   }
 };
@@ -232,9 +237,9 @@ struct PbrShader : SurfaceShader<PbrShader> {
   bool environment_hdr = false;
 
   static vec3 ToLinear(const vec3& c) { return SrgbToLinear(clamp(c, 0.0f, 1.0f)); }
-  vec3 LinearEmissive(const In& in) const {
+  vec3 LinearEmissive(const In& in) const {  // the emissive map is an sRGB texture: it samples linear
     vec3 e = material.emissive;
-    if (material.emissive_texture) e *= ToLinear(vec3(in.Texture(kUnitEmissive, in.varyings.uv)));
+    if (material.emissive_texture) e *= vec3(in.Texture(kUnitEmissive, in.varyings.uv));
     return e;
   }
 
@@ -242,7 +247,7 @@ struct PbrShader : SurfaceShader<PbrShader> {
     vec4 base = material.base_color * in.varyings.color;
     if (material.base_color_texture) {
       const vec4 t = in.Texture(kUnitBaseColor, in.varyings.uv);
-      base *= vec4(ToLinear(vec3(t)), t.w);
+      base *= t;  // an sRGB texture: decoded to linear before filtering
     }
     if (material.alpha_mode == Material::AlphaMode::kMask) out.Discard(base.w < material.alpha_cutoff);
     if (material.alpha_mode == Material::AlphaMode::kOpaque) base.w = 1.0f;

@@ -151,40 +151,45 @@ class Loader {
     if (m.Get(AI_MATKEY_TWOSIDED, two_sided) == AI_SUCCESS) out.double_sided = two_sided != 0;
     out.base_color = glm::clamp(out.base_color, 0.0f, 1.0f);
 
-    out.base_color_texture = Texture(m, {aiTextureType_BASE_COLOR, aiTextureType_DIFFUSE});
+    // Colour maps (base colour, emission) hold sRGB-encoded colours, as glTF says and image files have them: they
+    // load as sRGB textures. The others hold data (normals, factors, occlusion) and load as they are.
+    out.base_color_texture = Texture(m, {aiTextureType_BASE_COLOR, aiTextureType_DIFFUSE}, true);
     out.normal_texture = Texture(m, {aiTextureType_NORMALS, aiTextureType_NORMAL_CAMERA});
     out.metallic_roughness_texture = Texture(m, {aiTextureType_METALNESS, aiTextureType_UNKNOWN});
     if (out.metallic_roughness_texture) out.pbr = true;
-    out.emissive_texture = Texture(m, {aiTextureType_EMISSIVE, aiTextureType_EMISSION_COLOR});
+    out.emissive_texture = Texture(m, {aiTextureType_EMISSIVE, aiTextureType_EMISSION_COLOR}, true);
     if (out.emissive_texture && out.emissive == glm::vec3(0.0f)) out.emissive = glm::vec3(1.0f);
     out.occlusion_texture = Texture(m, {aiTextureType_LIGHTMAP, aiTextureType_AMBIENT_OCCLUSION});
     out.specular_texture = Texture(m, {aiTextureType_SPECULAR});
     return out;
   }
 
-  // The first texture of the given types, loaded once per path: a file beside the model, or embedded in it.
-  std::uint32_t Texture(const aiMaterial& m, std::initializer_list<aiTextureType> types) {
+  // The first texture of the given types, loaded once per path and encoding: a file beside the model, or embedded
+  // in it; `srgb` loads its colours as sRGB-encoded.
+  std::uint32_t Texture(const aiMaterial& m, std::initializer_list<aiTextureType> types, bool srgb = false) {
     for (aiTextureType type : types) {
       aiString path;
       if (m.GetTextureCount(type) == 0 || m.GetTexture(type, 0, &path) != AI_SUCCESS) continue;
       const std::string key = path.C_Str();
       if (key.empty()) continue;
-      if (auto it = cache_.find(key); it != cache_.end()) return it->second;
-      const std::uint32_t id = LoadTexture(key);
-      cache_[key] = id;
+      const std::string cache_key = (srgb ? "srgb:" : "linear:") + key;
+      if (auto it = cache_.find(cache_key); it != cache_.end()) return it->second;
+      const std::uint32_t id = LoadTexture(key, srgb);
+      cache_[cache_key] = id;
       return id;
     }
     return 0;
   }
 
-  std::uint32_t LoadTexture(const std::string& key) {
+  std::uint32_t LoadTexture(const std::string& key, bool srgb) {
+    const Enum encoding = srgb ? SRGB : LINEAR;
     const std::uint32_t id = gl_.GenTexture();
     gl_.BindTexture(TEXTURE_2D, id);
     std::string error;
     bool ok = false;
     if (const aiTexture* embedded = scene_.GetEmbeddedTexture(key.c_str())) {
       if (embedded->mHeight == 0) {  // a compressed image (PNG, JPEG, ...) of mWidth bytes
-        ok = gl_.TexImage2DFromMemory(TEXTURE_2D, embedded->pcData, embedded->mWidth, true, &error);
+        ok = gl_.TexImage2DFromMemory(TEXTURE_2D, embedded->pcData, embedded->mWidth, true, &error, encoding);
       } else if (embedded->mWidth <= unsigned(kMaxTextureSize) && embedded->mHeight <= unsigned(kMaxTextureSize)) {
         std::vector<std::uint8_t> rgba;  // aiTexel is BGRA, rows top first
         const unsigned w = embedded->mWidth, h = embedded->mHeight;
@@ -194,7 +199,7 @@ class Loader {
             const aiTexel& t = embedded->pcData[std::size_t(h - 1 - y) * w + x];
             rgba.insert(rgba.end(), {t.r, t.g, t.b, t.a});
           }
-        gl_.TexImage2D(TEXTURE_2D, 0, RGBA8, int(w), int(h), 0, RGBA, UNSIGNED_BYTE, rgba.data());
+        gl_.TexImage2D(TEXTURE_2D, 0, srgb ? SRGB8_ALPHA8 : RGBA8, int(w), int(h), 0, RGBA, UNSIGNED_BYTE, rgba.data());
         ok = gl_.GetError() == NO_ERROR;
       }
     } else {
@@ -203,7 +208,7 @@ class Loader {
       std::filesystem::path file = dir_ / relative;
       std::error_code ec;
       if (!std::filesystem::exists(file, ec)) file = dir_ / std::filesystem::path(relative).filename();
-      ok = gl_.TexImage2DFromFile(TEXTURE_2D, file.string(), true, &error);
+      ok = gl_.TexImage2DFromFile(TEXTURE_2D, file.string(), true, &error, encoding);
     }
     if (!ok) {
       model_.warnings.push_back(error.empty() ? key + ": cannot load texture" : error);
