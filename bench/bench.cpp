@@ -762,34 +762,39 @@ int main(int argc, char** argv) {
                         return TimeGl(n, fill_frame);
                       });
                     }});
-  scenes.push_back({"textured overdraw: 20 quads, trilinear, 1024^2", 1920, 1080, "Mpixel/s", 20.0 * 1920 * 1080,
-                    [&](int n) {
-                      return WithShader<wide::TextureShader, scalar::TextureShader>([&](auto& shader) {
-                        softgl::Context gl(1920, 1080, g_options);
-                        softgl_setup(gl, tex_quads);
-                        gl.BindTexture(softgl::TEXTURE_2D, gl.GenTexture());
-                        gl.TexImage2D(softgl::TEXTURE_2D, 0, softgl::RGBA8, 1024, 1024, 0, softgl::RGBA,
-                                      softgl::UNSIGNED_BYTE, texture.data());
-                        gl.GenerateMipmap(softgl::TEXTURE_2D);
-                        gl.TexParameteri(softgl::TEXTURE_2D, softgl::TEXTURE_MIN_FILTER, softgl::LINEAR_MIPMAP_LINEAR);
-                        gl.UseProgram(shader);
-                        return TimeSoftgl(n, gl, overdraw_frame);
-                      });
-                    },
-                    [&](int n) {
-                      return with_osmesa(1920, 1080, [&] {
-                        gl_setup(tex_quads);
-                        GLuint tex;
-                        glGenTextures(1, &tex);
-                        glBindTexture(GL_TEXTURE_2D, tex);
-                        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 1024, 1024, 0, GL_RGBA, GL_UNSIGNED_BYTE,
-                                     texture.data());
-                        glGenerateMipmap(GL_TEXTURE_2D);
-                        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
-                        Program(kTexVs, kTexFs);
-                        return TimeGl(n, overdraw_frame);
-                      });
-                    }});
+  // Textured overdraw with an RGBA8 texture, and the same with an sRGB one (texels decoded before filtering).
+  for (const bool srgb : {false, true}) {
+    scenes.push_back({srgb ? "textured overdraw, sRGB texture: 20 quads, trilinear, 1024^2"
+                           : "textured overdraw: 20 quads, trilinear, 1024^2",
+                      1920, 1080, "Mpixel/s", 20.0 * 1920 * 1080,
+                      [&, srgb](int n) {
+                        return WithShader<wide::TextureShader, scalar::TextureShader>([&](auto& shader) {
+                          softgl::Context gl(1920, 1080, g_options);
+                          softgl_setup(gl, tex_quads);
+                          gl.BindTexture(softgl::TEXTURE_2D, gl.GenTexture());
+                          gl.TexImage2D(softgl::TEXTURE_2D, 0, srgb ? softgl::SRGB8_ALPHA8 : softgl::RGBA8, 1024, 1024, 0,
+                                        softgl::RGBA, softgl::UNSIGNED_BYTE, texture.data());
+                          gl.GenerateMipmap(softgl::TEXTURE_2D);
+                          gl.TexParameteri(softgl::TEXTURE_2D, softgl::TEXTURE_MIN_FILTER, softgl::LINEAR_MIPMAP_LINEAR);
+                          gl.UseProgram(shader);
+                          return TimeSoftgl(n, gl, overdraw_frame);
+                        });
+                      },
+                      [&, srgb](int n) {
+                        return with_osmesa(1920, 1080, [&] {
+                          gl_setup(tex_quads);
+                          GLuint tex;
+                          glGenTextures(1, &tex);
+                          glBindTexture(GL_TEXTURE_2D, tex);
+                          glTexImage2D(GL_TEXTURE_2D, 0, srgb ? GL_SRGB8_ALPHA8 : GL_RGBA8, 1024, 1024, 0, GL_RGBA,
+                                       GL_UNSIGNED_BYTE, texture.data());
+                          glGenerateMipmap(GL_TEXTURE_2D);
+                          glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+                          Program(kTexVs, kTexFs);
+                          return TimeGl(n, overdraw_frame);
+                        });
+                      }});
+  }
 
   if (!rss_child.empty()) {  // the memory-measuring child: the model scene once, then the peak
     if (!have_engine) return 1;
