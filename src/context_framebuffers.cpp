@@ -540,7 +540,8 @@ Enum SizedRenderbufferFormat(Enum f) {
     case DEPTH_COMPONENT: return DEPTH_COMPONENT24;
     case DEPTH_STENCIL: return DEPTH24_STENCIL8;
     case STENCIL_INDEX: return STENCIL_INDEX8;
-    case RGBA8: case RGB8: case RG8: case R8: case SRGB8_ALPHA8: case SRGB8: case RGBA32F: case R32F: case DEPTH_COMPONENT16:
+    case RGBA8: case RGB8: case RG8: case R8: case SRGB8_ALPHA8: case SRGB8: case RGBA32F: case RG32F: case R32F:
+    case RGBA16F: case RG16F: case R16F: case R11F_G11F_B10F: case DEPTH_COMPONENT16:
     case DEPTH_COMPONENT24: case DEPTH_COMPONENT32F: case DEPTH24_STENCIL8: case DEPTH32F_STENCIL8:
     case STENCIL_INDEX8: return f;
     default: return 0;
@@ -565,7 +566,12 @@ FormatBits BitsOf(Enum f) {
     case RG8: return {8, 8, 0, 0, 0, 0};
     case R8: return {8, 0, 0, 0, 0, 0};
     case RGBA32F: return {32, 32, 32, 32, 0, 0};
+    case RG32F: return {32, 32, 0, 0, 0, 0};
     case R32F: return {32, 0, 0, 0, 0, 0};
+    case RGBA16F: return {16, 16, 16, 16, 0, 0};
+    case RG16F: return {16, 16, 0, 0, 0, 0};
+    case R16F: return {16, 0, 0, 0, 0, 0};
+    case R11F_G11F_B10F: return {11, 11, 10, 0, 0, 0};
     case DEPTH_COMPONENT16: return {0, 0, 0, 0, 16, 0};
     case DEPTH_COMPONENT:
     case DEPTH_COMPONENT24: return {0, 0, 0, 0, 24, 0};

@@ -40,7 +40,13 @@ void ColorBuffer::Store(int x, int y, const glm::vec4& c, const bool mask[4]) co
     case TexelLayout::kFloat32x1:
       if (mask[0]) std::memcpy(p, &c[0], 4);
       return;
-    default: return;
+    default: {  // the other float layouts: the masked channels replaced, the texel encoded again
+      glm::vec4 v = RawTexel(layout, p);
+      for (int k = 0; k < 4; ++k)
+        if (mask[k]) v[k] = c[k];
+      StoreSmallFloatTexel(layout, p, v);
+      return;
+    }
   }
 }
 

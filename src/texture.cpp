@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <limits>
 
 #include "framebuffer.h"
 
@@ -12,6 +13,7 @@ namespace softgl::detail {
 int FormatComponents(Enum f) {
   switch (f) {
     case R8:
+    case R16F:
     case R32F:
     case DEPTH_COMPONENT:
     case DEPTH_COMPONENT16:
@@ -19,11 +21,15 @@ int FormatComponents(Enum f) {
     case DEPTH_COMPONENT32F:
     case DEPTH24_STENCIL8:
     case DEPTH32F_STENCIL8: return 1;
-    case RG8: return 2;
+    case RG8:
+    case RG16F:
+    case RG32F: return 2;
     case RGB8:
-    case SRGB8: return 3;
+    case SRGB8:
+    case R11F_G11F_B10F: return 3;
     case RGBA8:
     case SRGB8_ALPHA8:
+    case RGBA16F:
     case RGBA32F: return 4;
     default: return 0;
   }
@@ -47,6 +53,11 @@ TexelLayout LayoutOf(Enum f) {
     case RG8: return TexelLayout::kUnorm8x2;
     case R8: return TexelLayout::kUnorm8x1;
     case RGBA32F: return TexelLayout::kFloat32x4;
+    case RG32F: return TexelLayout::kFloat32x2;
+    case RGBA16F: return TexelLayout::kFloat16x4;
+    case RG16F: return TexelLayout::kFloat16x2;
+    case R16F: return TexelLayout::kFloat16x1;
+    case R11F_G11F_B10F: return TexelLayout::kFloat11x11x10;
     case R32F:
     case DEPTH_COMPONENT:
     case DEPTH_COMPONENT16:
@@ -64,7 +75,12 @@ int BytesPerTexel(TexelLayout l) {
     case TexelLayout::kUnorm8x2: return 2;
     case TexelLayout::kUnorm8x1: return 1;
     case TexelLayout::kFloat32x4: return 16;
-    case TexelLayout::kFloat32x1: return 4;
+    case TexelLayout::kFloat32x2:
+    case TexelLayout::kFloat16x4: return 8;
+    case TexelLayout::kFloat32x1:
+    case TexelLayout::kFloat16x2:
+    case TexelLayout::kFloat11x11x10: return 4;
+    case TexelLayout::kFloat16x1: return 2;
     default: return 0;
   }
 }
@@ -81,8 +97,100 @@ int TransferComponents(Enum format) {
   }
 }
 
+namespace {
+
+// |f| (not NaN) as a float of 5 exponent bits (bias 15) and m mantissa bits, without its sign: rounded to nearest,
+// ties to even (nearbyint in the default rounding mode), too large to infinity.
+std::uint32_t EncodeMagnitude(float a, int m) {
+  const std::uint32_t inf = 31u << m;
+  if (std::isinf(a)) return inf;
+  if (a == 0.0f) return 0;
+  int e = 0;
+  std::frexp(a, &e);  // a = f * 2^e, f in [0.5, 1): a = 1.x * 2^(e - 1)
+  int exponent = e - 1;
+  if (exponent < -14) return std::uint32_t(std::nearbyint(std::ldexp(double(a), 14 + m)));  // subnormal (or the
+                                                                                            // smallest normal)
+  double q = std::nearbyint(std::ldexp(double(a), m - exponent));  // in [2^m, 2^(m + 1)]
+  if (q == double(2u << m)) {
+    q /= 2.0;
+    ++exponent;
+  }
+  if (exponent > 15) return inf;
+  return std::uint32_t(exponent + 15) << m | (std::uint32_t(q) - (1u << m));
+}
+
+float DecodeMagnitude(std::uint32_t v, int m) {
+  const std::uint32_t exponent = (v >> m) & 31u, mantissa = v & ((1u << m) - 1u);
+  if (exponent == 31) return mantissa ? std::numeric_limits<float>::quiet_NaN() : std::numeric_limits<float>::infinity();
+  if (exponent == 0) return float(std::ldexp(double(mantissa), -14 - m));
+  return float(std::ldexp(double(mantissa + (1u << m)), int(exponent) - 15 - m));
+}
+
+std::uint16_t Half(const std::uint8_t* p) {
+  std::uint16_t h;
+  std::memcpy(&h, p, 2);
+  return h;
+}
+
+}  // namespace
+
+// Half floats by their bits: they are converted for every fragment written to a half-float target.
+std::uint16_t FloatToHalf(float f) {
+  std::uint32_t x;
+  std::memcpy(&x, &f, 4);
+  const std::uint32_t sign = (x >> 16) & 0x8000u, a = x & 0x7FFFFFFFu;
+  if (a > 0x7F800000u) return std::uint16_t(sign | 0x7E00u);  // NaN
+  if (a >= 0x38800000u) {  // 2^-14 and up: a normal half, or too large
+    std::uint32_t r = a - 0x38000000u;  // the exponent rebased from 127 to 15
+    r = (r + 0xFFFu + ((r >> 13) & 1u)) >> 13;  // 13 mantissa bits dropped, to nearest, ties to even
+    return std::uint16_t(sign | std::min(r, 0x7C00u));  // past the largest finite: infinity
+  }
+  // A subnormal half (or 0): |f| in units of 2^-24, rounded to an integer by adding 2^23 (to nearest, ties to
+  // even, in the default rounding mode; exact below 2^23).
+  float units = 0.0f;
+  std::memcpy(&units, &a, 4);
+  units = units * 16777216.0f + 8388608.0f;
+  std::uint32_t u;
+  std::memcpy(&u, &units, 4);
+  return std::uint16_t(sign | (u & 0x7FFu));  // at most 1024: the smallest normal half when it rounds up
+}
+
+float HalfToFloat(std::uint16_t h) {
+  const std::uint32_t sign = std::uint32_t(h & 0x8000u) << 16, e = (h >> 10) & 31u, m = h & 0x3FFu;
+  if (e == 0) {
+    const float v = float(m) * (1.0f / 16777216.0f);
+    return sign ? -v : v;
+  }
+  const std::uint32_t bits = sign | (e == 31 ? 0x7F800000u : (e + 112u) << 23) | m << 13;
+  float f;
+  std::memcpy(&f, &bits, 4);
+  return f;
+}
+
+std::uint32_t FloatToUnsignedSmall(float f, int m) {
+  if (std::isnan(f)) return (31u << m) | 1u;
+  return f > 0.0f ? EncodeMagnitude(f, m) : 0u;
+}
+
+float UnsignedSmallToFloat(std::uint32_t v, int m) { return DecodeMagnitude(v, m); }
+
 glm::vec4 RawTexel(TexelLayout layout, const std::uint8_t* p) {
   switch (layout) {
+    case TexelLayout::kFloat32x2: {
+      float v[2];
+      std::memcpy(v, p, 8);
+      return glm::vec4(v[0], v[1], 0.0f, 1.0f);
+    }
+    case TexelLayout::kFloat16x4:
+      return glm::vec4(HalfToFloat(Half(p)), HalfToFloat(Half(p + 2)), HalfToFloat(Half(p + 4)), HalfToFloat(Half(p + 6)));
+    case TexelLayout::kFloat16x2: return glm::vec4(HalfToFloat(Half(p)), HalfToFloat(Half(p + 2)), 0.0f, 1.0f);
+    case TexelLayout::kFloat16x1: return glm::vec4(HalfToFloat(Half(p)), 0.0f, 0.0f, 1.0f);
+    case TexelLayout::kFloat11x11x10: {
+      std::uint32_t w;
+      std::memcpy(&w, p, 4);
+      return glm::vec4(UnsignedSmallToFloat(w & 0x7FFu, 6), UnsignedSmallToFloat((w >> 11) & 0x7FFu, 6),
+                       UnsignedSmallToFloat(w >> 22, 5), 1.0f);
+    }
     case TexelLayout::kUnorm8x4: return glm::vec4(float(p[0]), float(p[1]), float(p[2]), float(p[3]));
     case TexelLayout::kUnorm8x2: return glm::vec4(float(p[0]), float(p[1]), 0.0f, 255.0f);
     case TexelLayout::kUnorm8x1: return glm::vec4(float(p[0]), 0.0f, 0.0f, 255.0f);
@@ -132,6 +240,27 @@ std::uint8_t SrgbEncode8(float linear) {
   return std::uint8_t(std::upper_bound(step, step + 255, double(linear)) - step);
 }
 
+void StoreSmallFloatTexel(TexelLayout layout, std::uint8_t* p, const glm::vec4& in) {
+  switch (layout) {
+    case TexelLayout::kFloat32x2: std::memcpy(p, &in.x, 8); break;
+    case TexelLayout::kFloat16x4:
+    case TexelLayout::kFloat16x2:
+    case TexelLayout::kFloat16x1:
+      for (int c = 0; c < BytesPerTexel(layout) / 2; ++c) {
+        const std::uint16_t h = FloatToHalf(in[c]);
+        std::memcpy(p + 2 * c, &h, 2);
+      }
+      break;
+    case TexelLayout::kFloat11x11x10: {
+      const std::uint32_t w = FloatToUnsignedSmall(in[0], 6) | FloatToUnsignedSmall(in[1], 6) << 11 |
+                              FloatToUnsignedSmall(in[2], 5) << 22;
+      std::memcpy(p, &w, 4);
+      break;
+    }
+    default: break;
+  }
+}
+
 glm::vec4 TextureLevel::Raw(int i, int j) const { return RawTexel(layout, At(i, j)); }
 
 glm::vec4 TextureLevel::Sampled(int i, int j) const {
@@ -172,6 +301,11 @@ void StoreTexel(TextureLevel& level, int i, int j, const glm::vec4& in, bool enc
       break;
     case TexelLayout::kUnorm8x1: p[0] = FloatToUnorm8(in[0]); break;
     case TexelLayout::kFloat32x4: std::memcpy(p, &in.x, 16); break;
+    case TexelLayout::kFloat32x2:
+    case TexelLayout::kFloat16x4:
+    case TexelLayout::kFloat16x2:
+    case TexelLayout::kFloat16x1:
+    case TexelLayout::kFloat11x11x10: StoreSmallFloatTexel(level.layout, p, in); break;
     case TexelLayout::kFloat32x1: {
       float v = in[0];
       if (IsDepthFormat(level.format)) v = std::isnan(v) ? 0.0f : std::clamp(v, 0.0f, 1.0f);  // depth holds [0, 1]

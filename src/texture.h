@@ -2,7 +2,8 @@
 //
 // Each level keeps its texels in its own format: RGBA8 four bytes a texel (RGB8 too, alpha stored as 255; SRGB8_ALPHA8
 // and SRGB8 the same way, their colour bytes sRGB-encoded), RG8 two, R8 one, RGBA32F sixteen, R32F and the depth
-// formats one float. Fixed-point texels are bytes k meaning k / 255.
+// formats one float; RG32F two floats; RGBA16F, RG16F and R16F half floats (IEEE binary16), four, two or one;
+// R11F_G11F_B10F one 32-bit word of three unsigned small floats. Fixed-point texels are bytes k meaning k / 255.
 // Formats with stencil (DEPTH24_STENCIL8, DEPTH32F_STENCIL8, and STENCIL_INDEX8 for renderbuffers) keep their
 // stencil indices in a plane of their own, one byte a texel.
 #pragma once
@@ -27,7 +28,12 @@ enum class TexelLayout : std::uint8_t {
   kUnorm8x2,   // RG8
   kUnorm8x1,   // R8
   kFloat32x4,  // RGBA32F
+  kFloat32x2,  // RG32F
   kFloat32x1,  // R32F, DEPTH_COMPONENT*, the depth of DEPTH*_STENCIL8
+  kFloat16x4,  // RGBA16F
+  kFloat16x2,  // RG16F
+  kFloat16x1,  // R16F
+  kFloat11x11x10,  // R11F_G11F_B10F: red in bits 0-10, green 11-21, blue 22-31
 };
 
 /// The layout of an internal format (kNone if softgl does not support it), and its bytes per texel.
@@ -39,6 +45,14 @@ glm::vec4 RawTexel(TexelLayout layout, const std::uint8_t* p);
 inline bool IsUnorm8(TexelLayout l) {
   return l == TexelLayout::kUnorm8x4 || l == TexelLayout::kUnorm8x2 || l == TexelLayout::kUnorm8x1;
 }
+/// OpenGL's small floats (4.6, section 2.3.4): IEEE binary16 (sign, 5 exponent bits, 10 mantissa bits) and the
+/// unsigned 11- and 10-bit floats (5 exponent bits, 6 or 5 mantissa bits, no sign). From float: rounded to nearest
+/// (ties to even), too large to infinity, NaN to NaN; the unsigned forms take negative values (and -0) as 0.
+std::uint16_t FloatToHalf(float f);
+float HalfToFloat(std::uint16_t h);
+std::uint32_t FloatToUnsignedSmall(float f, int mantissa_bits);
+float UnsignedSmallToFloat(std::uint32_t v, int mantissa_bits);
+
 /// SRGB8 and SRGB8_ALPHA8: colour channels stored sRGB-encoded (OpenGL 4.6, section 8.24).
 inline bool IsSrgbFormat(Enum f) { return f == SRGB8 || f == SRGB8_ALPHA8; }
 /// RGB8 and SRGB8: four bytes a texel, alpha not stored (kept 255, reads 1).
@@ -155,6 +169,10 @@ int TransferComponents(Enum format);
 /// format drops the stencil. Null pixels leave the level as it is.
 void UploadPixels(TextureLevel& level, int x, int y, int w, int h, Enum format, Enum type, int alignment,
                   const void* pixels);
+
+/// Writes RGBA value `v` into a texel of RG32F, RGBA16F, RG16F, R16F or R11F_G11F_B10F at p (the channels the
+/// layout has, converted as FloatToHalf and FloatToUnsignedSmall say); other layouts are left alone.
+void StoreSmallFloatTexel(TexelLayout layout, std::uint8_t* p, const glm::vec4& v);
 
 /// Writes RGBA value `v` (in [0, 1] for fixed point: clamped and rounded; floats as they are) into texel (i, j);
 /// with `encode`, an sRGB level's colour is taken as linear and encoded (else stored as it is, as pixel transfers

@@ -905,3 +905,123 @@ TEST_CASE("image files load as sRGB textures when asked", "[texture][files][srgb
   CHECK(error.find("LINEAR or SRGB") != std::string::npos);
   std::filesystem::remove(path);
 }
+
+#if defined(__x86_64__) && defined(__GNUC__)
+#include <immintrin.h>
+namespace {
+__attribute__((target("f16c"))) std::uint16_t HardwareHalf(float f) {
+  return std::uint16_t(_cvtss_sh(f, _MM_FROUND_TO_NEAREST_INT));
+}
+}  // namespace
+#endif
+
+TEST_CASE("half floats and the unsigned 11- and 10-bit floats convert as IEEE rounding says", "[texture][float]") {
+  // Every half decodes and encodes back to itself (NaNs to a NaN).
+  for (std::uint32_t h = 0; h < 65536; ++h) {
+    const float f = detail::HalfToFloat(std::uint16_t(h));
+    if (std::isnan(f)) {
+      CHECK(((h & 0x7C00u) == 0x7C00u && (h & 0x3FFu) != 0));
+      continue;
+    }
+    if (detail::FloatToHalf(f) != h) FAIL("half 0x" << std::hex << h);
+  }
+  CHECK(detail::HalfToFloat(0x3C00) == 1.0f);
+  CHECK(detail::HalfToFloat(0x7BFF) == 65504.0f);
+  CHECK(detail::HalfToFloat(0x0001) == std::ldexp(1.0f, -24));
+  CHECK(detail::FloatToHalf(65519.0f) == 0x7BFF);   // below the half-way point to 65536: the largest finite
+  CHECK(detail::FloatToHalf(65520.0f) == 0x7C00);   // the half-way point rounds to even: infinity
+  CHECK(detail::FloatToHalf(1.0f + std::ldexp(1.0f, -11)) == 0x3C00);  // a tie: to the even mantissa
+  CHECK(detail::FloatToHalf(1.0f + 3 * std::ldexp(1.0f, -11)) == 0x3C02);
+  CHECK(detail::FloatToHalf(-2.0f) == 0xC000);
+  CHECK(detail::FloatToHalf(std::ldexp(1.0f, -26)) == 0x0000);  // a quarter of the smallest subnormal: 0
+  CHECK(detail::FloatToHalf(-std::numeric_limits<float>::infinity()) == 0xFC00);
+#if defined(__x86_64__) && defined(__GNUC__)
+  if (__builtin_cpu_supports("f16c")) {  // against the processor's own conversion, on a sweep of floats
+    std::uint32_t seed = 12345;
+    int differing = 0;
+    for (int i = 0; i < 200000; ++i) {
+      seed = seed * 1664525u + 1013904223u;
+      const float f = std::ldexp(float(seed >> 8) / float(1u << 24) - 0.5f, int(seed % 44) - 28);
+      differing += detail::FloatToHalf(f) != HardwareHalf(f);
+    }
+    CHECK(differing == 0);
+  }
+#endif
+  // The unsigned forms: every code round-trips; negative values and -0 give 0; too large gives infinity.
+  for (const int m : {6, 5}) {
+    INFO("mantissa bits " << m);
+    for (std::uint32_t v = 0; v < (32u << m); ++v) {
+      const float f = detail::UnsignedSmallToFloat(v, m);
+      if (std::isnan(f)) continue;
+      if (detail::FloatToUnsignedSmall(f, m) != v) FAIL("code " << v);
+    }
+    CHECK(detail::FloatToUnsignedSmall(-3.0f, m) == 0u);
+    CHECK(detail::FloatToUnsignedSmall(-0.0f, m) == 0u);
+    CHECK(detail::UnsignedSmallToFloat(detail::FloatToUnsignedSmall(1e9f, m), m) == std::numeric_limits<float>::infinity());
+    CHECK(std::isnan(detail::UnsignedSmallToFloat(detail::FloatToUnsignedSmall(std::nanf(""), m), m)));
+  }
+  CHECK(detail::UnsignedSmallToFloat((30u << 6) | 63u, 6) == 65024.0f);  // the largest 11-bit value
+  CHECK(detail::UnsignedSmallToFloat((30u << 5) | 31u, 5) == 64512.0f);  // and 10-bit
+}
+
+TEST_CASE("float render targets keep values outside [0, 1] and blend in float", "[framebuffer][float]") {
+  struct Case {
+    Enum format;
+    int channels;
+    bool negative;  // keeps negative values
+  };
+  for (const Case c : {Case{RGBA16F, 4, true}, Case{RG16F, 2, true}, Case{R16F, 1, true}, Case{RG32F, 2, true},
+                       Case{R11F_G11F_B10F, 3, false}, Case{RGBA32F, 4, true}}) {
+    INFO("format 0x" << std::hex << c.format);
+    Context gl(4, 4);
+    const std::uint32_t tex = gl.GenTexture(), fbo = gl.GenFramebuffer();
+    gl.BindTexture(TEXTURE_2D, tex);
+    gl.TexImage2D(TEXTURE_2D, 0, c.format, 4, 4, 0, RGBA, FLOAT, nullptr);
+    gl.BindFramebuffer(FRAMEBUFFER, fbo);
+    gl.FramebufferTexture2D(FRAMEBUFFER, COLOR_ATTACHMENT0, TEXTURE_2D, tex, 0);
+    REQUIRE(gl.CheckFramebufferStatus(FRAMEBUFFER) == FRAMEBUFFER_COMPLETE);
+    int bits = 0;
+    gl.GetTexLevelParameteriv(TEXTURE_2D, 0, TEXTURE_RED_SIZE, &bits);
+    CHECK(bits == (c.format == RGBA32F || c.format == RG32F ? 32 : c.format == R11F_G11F_B10F ? 11 : 16));
+    gl.ClearColor(2.5f, -0.75f, 0.5f, 3.0f);
+    gl.Clear(COLOR_BUFFER_BIT);
+    testing::SolidShader solid;
+    solid.color = glm::vec4(1.25f, 4.0f, -0.25f, 0.5f);
+    gl.UseProgram(solid);
+    testing::MakeVertexArray(gl, {{-1, -1, 0, 1}, {1, -1, 0, 1}, {-1, 1, 0, 1}, {1, 1, 0, 1}});
+    gl.Enable(BLEND);
+    gl.BlendFunc(ONE, ONE);
+    gl.DrawArrays(TRIANGLE_STRIP, 0, 4);
+    gl.DrawArrays(TRIANGLE_STRIP, 0, 4);
+    float px[4] = {};
+    gl.ReadPixels(1, 1, 1, 1, RGBA, FLOAT, px);
+    const auto stored = [&](float v) { return c.negative ? v : std::max(v, 0.0f); };
+    // Exactly representable sums in every format: the clear, then the colour added twice (each step stored).
+    const glm::vec4 want(2.5f + 2 * 1.25f, stored(stored(-0.75f) + 4.0f) + 4.0f, stored(stored(0.5f - 0.25f) - 0.25f),
+                         3.0f + 2 * 0.5f);
+    for (int k = 0; k < 4; ++k) {
+      INFO("channel " << k);
+      const float expect = k < c.channels ? want[k] : (k == 3 ? 1.0f : 0.0f);
+      CHECK(px[k] == expect);
+    }
+    // Sampled back: a LINEAR sample between two texels of different values.
+    gl.BindFramebuffer(FRAMEBUFFER, 0);
+    gl.BindTexture(TEXTURE_2D, tex);
+    const float texels[8] = {0.0f, -8.0f, 0.0f, 1.0f, 10.0f, 8.0f, 6.0f, 1.0f};
+    gl.TexImage2D(TEXTURE_2D, 0, c.format, 2, 1, 0, RGBA, FLOAT, texels);
+    gl.TexParameteri(TEXTURE_2D, TEXTURE_MIN_FILTER, LINEAR);
+    gl.TexParameteri(TEXTURE_2D, TEXTURE_WRAP_S, CLAMP_TO_EDGE);
+    CHECK(gl.GetError() == NO_ERROR);
+  }
+  // The texel values of each format, sampled halfway: the mean of what each stores.
+  for (const Enum format : {RGBA16F, R11F_G11F_B10F}) {
+    TextureObject t = MakeTexture(2, 1, [](int i, int) { return i ? glm::vec4(10.0f, 8.0f, 6.0f, 1.0f) : glm::vec4(0.0f, -8.0f, 0.0f, 1.0f); }, format);
+    t.params.mag_filter = LINEAR;
+    t.params.wrap_s = t.params.wrap_t = CLAMP_TO_EDGE;
+    const Sampler s(t);
+    const glm::vec4 v = s.At(0.5f, 0.5f);
+    CHECK(v.r == 5.0f);
+    CHECK(v.g == (format == RGBA16F ? 0.0f : 4.0f));  // the unsigned format stored -8 as 0
+    CHECK(v.b == 3.0f);
+  }
+}

@@ -700,6 +700,47 @@ void SrgbFramebuffer(Backend& b) {
   b.Disable(FRAMEBUFFER_SRGB);
 }
 
+// Float render targets: in each quadrant, a framebuffer object with a colour texture of one float format
+// (RGBA16F, R11F_G11F_B10F, RG16F, RGBA32F) takes a clear with values past [0, 1] (negative ones too), three
+// gradients added over it (ONE, ONE: sums up to 4), then a quad subtracted (FUNC_REVERSE_SUBTRACT) that brings the
+// sums back into [0, 1] only where they went past 1 unclamped; the quadrant is then blitted into the context's
+// framebuffer (NEAREST), which clamps and converts to 8 bits.
+void FloatTargets(Backend& b) {
+  ClearBlack(b);
+  const Enum formats[4] = {RGBA16F, R11F_G11F_B10F, RG16F, RGBA32F};
+  for (int q = 0; q < 4; ++q) {
+    const int x0 = (q % 2) * 64, y0 = (q / 2) * 64;
+    b.BindFramebuffer(FRAMEBUFFER, b.GenFramebuffer());
+    b.AttachNewTexture(FRAMEBUFFER, COLOR_ATTACHMENT0, formats[q], kSize, kSize);
+    if (b.CheckFramebufferStatus(FRAMEBUFFER) != FRAMEBUFFER_COMPLETE) continue;  // left black: the check fails
+    b.ClearColor(1.5f, -0.5f, 0.25f, 2.0f);
+    b.Clear(COLOR_BUFFER_BIT);
+    b.Enable(BLEND);
+    b.BlendFunc(ONE, ONE);
+    for (int k = 0; k < 3; ++k) {
+      const float a = float(k) * 6.0f;
+      const glm::vec4 corner[4] = {Win(x0 + 2 + a, y0 + 2), Win(x0 + 50 + a, y0 + 4), Win(x0 + 46 + a, y0 + 60),
+                                   Win(x0 + 4 + a, y0 + 56)};
+      const glm::vec4 color[4] = {{0.1f, 0.9f, 1.3f, 1}, {1.2f, 0.2f, 0.7f, 1}, {0.6f, 1.1f, 0.05f, 1}, {0.9f, 0.45f, 0.3f, 1}};
+      // R11F_G11F_B10F keeps 6 and 5 mantissa bits, and OpenGL leaves the rounding to them open (llvmpipe's differs
+      // from softgl's nearest): its quads are flat, in colours whose sums it holds exactly.
+      const glm::vec4 flat[3] = {{0.25f, 0.75f, 1.25f, 1}, {1.0f, 0.125f, 0.5f, 1}, {0.5f, 1.5f, 0.0625f, 1}};
+      std::vector<Vertex> v;
+      for (int i : {0, 1, 3, 1, 2, 3}) v.push_back({corner[i], formats[q] == R11F_G11F_B10F ? flat[k] : color[i], glm::vec4(0)});
+      b.Draw(TRIANGLES, v);
+    }
+    b.BlendEquationSeparate(FUNC_REVERSE_SUBTRACT, FUNC_ADD);  // dst - src
+    b.BlendFunc(ONE, ONE);
+    b.Draw(TRIANGLES, Quad(Win(x0 + 8, y0 + 8), Win(x0 + 60, y0 + 8), Win(x0 + 60, y0 + 40), Win(x0 + 8, y0 + 40),
+                           glm::vec4(1.25f, 1.0f, 0.75f, 0.5f)));
+    b.BlendEquationSeparate(FUNC_ADD, FUNC_ADD);
+    b.Disable(BLEND);
+    b.BindFramebuffer(DRAW_FRAMEBUFFER, 0);
+    b.BlitFramebuffer(x0, y0, x0 + 64, y0 + 64, x0, y0, x0 + 64, y0 + 64, COLOR_BUFFER_BIT, NEAREST);
+    b.BindFramebuffer(FRAMEBUFFER, 0);
+  }
+}
+
 void RenderToTexture(Backend& b) {
   // Pass 1: a 64 x 64 texture with coloured triangles and a depth test.
   b.BeginRenderToTexture(64, 64);
@@ -955,6 +996,7 @@ const std::vector<SceneInfo>& Scenes() {
       {"render_to_texture", kSize, kSize, Check::kTexture, RenderToTexture},
       {"srgb_texture", kSize, kSize, Check::kTexture, SrgbTexture},
       {"srgb_framebuffer", kSize, kSize, Check::kTexture, SrgbFramebuffer},
+      {"float_targets", kSize, kSize, Check::kColor, FloatTargets},
       {"copy_tex_image", kSize, kSize, Check::kColor, CopyTexImage},
       {"stencil_renderbuffer", kSize, kSize, Check::kExactWithDepthStencil, StencilRenderbuffer},
       {"stencil_index8", kSize, kSize, Check::kExactWithStencil, StencilIndex8},
