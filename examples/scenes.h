@@ -52,7 +52,7 @@ softgl::Image Srgb(int width, int height);
 /// samples it with depth comparison, 3 x 3 taps of 2 x 2 percentage-closer filtering.
 softgl::Image ShadowMap(int width, int height);
 
-/// Post-processing: the scene rendered into a floating-point (HDR) texture, then one full-screen pass tone maps it;
+/// Post-processing: the scene rendered into a half-float (RGBA16F, HDR) texture, then one full-screen pass tone maps it;
 /// right of the middle it is blurred first.
 softgl::Image PostProcess(int width, int height);
 

@@ -352,10 +352,10 @@ struct PostShader : softgl::Shader<PostShader, ScreenVaryings> {
 
 softgl::Image PostProcess(int width, int height) {
   softgl::Context gl(width, height);
-  // Pass 1: the scene into a floating-point texture, with light brighter than 1 (HDR).
+  // Pass 1: the scene into a half-float (RGBA16F: 8 bytes a pixel) texture, with light brighter than 1 (HDR).
   const std::uint32_t scene_tex = gl.GenTexture(), depth_tex = gl.GenTexture(), fbo = gl.GenFramebuffer();
   gl.BindTexture(softgl::TEXTURE_2D, scene_tex);
-  gl.TexImage2D(softgl::TEXTURE_2D, 0, softgl::RGBA32F, width, height, 0, softgl::RGBA, softgl::FLOAT, nullptr);
+  gl.TexImage2D(softgl::TEXTURE_2D, 0, softgl::RGBA16F, width, height, 0, softgl::RGBA, softgl::FLOAT, nullptr);
   gl.TexParameteri(softgl::TEXTURE_2D, softgl::TEXTURE_MIN_FILTER, softgl::LINEAR);
   gl.TexParameteri(softgl::TEXTURE_2D, softgl::TEXTURE_WRAP_S, softgl::CLAMP_TO_EDGE);
   gl.TexParameteri(softgl::TEXTURE_2D, softgl::TEXTURE_WRAP_T, softgl::CLAMP_TO_EDGE);
