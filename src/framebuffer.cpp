@@ -180,7 +180,7 @@ bool Framebuffer::Allocate(int w, int h) {
   stencil.clear();
   const std::size_t n = std::size_t(w) * std::size_t(h);
   try {
-    color.assign(n * 4, 0);
+    color.assign(n * std::size_t(BytesPerTexel(layout)), 0);
     depth.assign(n, 1.0f);
     stencil.assign(n, 0);
   } catch (const std::bad_alloc&) {
@@ -200,7 +200,7 @@ RenderTarget Framebuffer::Target() {
   t.height = height;
   if (width > 0 && height > 0) {
     t.color[0].data = color.data();
-    t.color[0].layout = TexelLayout::kUnorm8x4;
+    t.color[0].layout = layout;
     t.color[0].pitch = width;
     t.depth = depth.data();
     t.depth_pitch = width;

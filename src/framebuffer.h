@@ -62,7 +62,8 @@ struct RenderTarget {
 struct Framebuffer {
   int width = 0;
   int height = 0;
-  std::vector<std::uint8_t> color;  // [height][width][4]
+  TexelLayout layout = TexelLayout::kUnorm8x4;  // of the colour buffer: kUnorm8x4 (RGBA8) or kUnorm565 (RGB565)
+  std::vector<std::uint8_t> color;  // [height][width][bytes of the layout]
   std::vector<float> depth;         // [height][width]
   std::vector<std::uint8_t> stencil;
 

@@ -26,9 +26,12 @@ int FormatComponents(Enum f) {
     case RG32F: return 2;
     case RGB8:
     case SRGB8:
-    case R11F_G11F_B10F: return 3;
+    case R11F_G11F_B10F:
+    case RGB565: return 3;
     case RGBA8:
     case SRGB8_ALPHA8:
+    case RGBA4:
+    case RGB5_A1:
     case RGBA16F:
     case RGBA32F: return 4;
     default: return 0;
@@ -42,7 +45,9 @@ bool IsDepthFormat(Enum f) {
 
 bool HasStencil(Enum f) { return f == DEPTH24_STENCIL8 || f == DEPTH32F_STENCIL8 || f == STENCIL_INDEX8; }
 
-bool IsNormalizedFormat(Enum f) { return f == R8 || f == RG8 || f == RGB8 || f == RGBA8 || IsSrgbFormat(f); }
+bool IsNormalizedFormat(Enum f) {
+  return f == R8 || f == RG8 || f == RGB8 || f == RGBA8 || IsSrgbFormat(f) || f == RGB565 || f == RGBA4 || f == RGB5_A1;
+}
 
 TexelLayout LayoutOf(Enum f) {
   switch (f) {
@@ -58,6 +63,9 @@ TexelLayout LayoutOf(Enum f) {
     case RG16F: return TexelLayout::kFloat16x2;
     case R16F: return TexelLayout::kFloat16x1;
     case R11F_G11F_B10F: return TexelLayout::kFloat11x11x10;
+    case RGB565: return TexelLayout::kUnorm565;
+    case RGBA4: return TexelLayout::kUnorm4444;
+    case RGB5_A1: return TexelLayout::kUnorm5551;
     case R32F:
     case DEPTH_COMPONENT:
     case DEPTH_COMPONENT16:
@@ -80,7 +88,10 @@ int BytesPerTexel(TexelLayout l) {
     case TexelLayout::kFloat32x1:
     case TexelLayout::kFloat16x2:
     case TexelLayout::kFloat11x11x10: return 4;
-    case TexelLayout::kFloat16x1: return 2;
+    case TexelLayout::kFloat16x1:
+    case TexelLayout::kUnorm565:
+    case TexelLayout::kUnorm4444:
+    case TexelLayout::kUnorm5551: return 2;
     default: return 0;
   }
 }
@@ -174,7 +185,36 @@ std::uint32_t FloatToUnsignedSmall(float f, int m) {
 
 float UnsignedSmallToFloat(std::uint32_t v, int m) { return DecodeMagnitude(v, m); }
 
+namespace {
+
+// The channels of a 16-bit layout: bits and lowest bit of red, green, blue, alpha (0 bits: absent, reads 1 for
+// alpha).
+struct Packed16 {
+  int bits[4], shift[4];
+};
+Packed16 PackingOf(TexelLayout l) {
+  switch (l) {
+    case TexelLayout::kUnorm565: return {{5, 6, 5, 0}, {11, 5, 0, 0}};
+    case TexelLayout::kUnorm4444: return {{4, 4, 4, 4}, {12, 8, 4, 0}};
+    default: return {{5, 5, 5, 1}, {11, 6, 1, 0}};  // kUnorm5551
+  }
+}
+
+}  // namespace
+
 glm::vec4 RawTexel(TexelLayout layout, const std::uint8_t* p) {
+  if (IsPacked16(layout)) {
+    const Packed16 k = PackingOf(layout);
+    std::uint16_t w;
+    std::memcpy(&w, p, 2);
+    glm::vec4 v(1.0f);
+    for (int c = 0; c < 4; ++c)
+      if (k.bits[c]) {
+        const unsigned max = (1u << k.bits[c]) - 1u;
+        v[c] = float((w >> k.shift[c]) & max) / float(max);
+      }
+    return v;
+  }
   switch (layout) {
     case TexelLayout::kFloat32x2: {
       float v[2];
@@ -257,6 +297,21 @@ void StoreSmallFloatTexel(TexelLayout layout, std::uint8_t* p, const glm::vec4& 
       std::memcpy(p, &w, 4);
       break;
     }
+    case TexelLayout::kUnorm565:
+    case TexelLayout::kUnorm4444:
+    case TexelLayout::kUnorm5551: {  // OpenGL's fixed-point conversion: clamped to [0, 1], round(c * (2^bits - 1))
+      const Packed16 k = PackingOf(layout);
+      std::uint32_t w = 0;
+      for (int c = 0; c < 4; ++c) {
+        if (!k.bits[c]) continue;
+        const float max = float((1u << k.bits[c]) - 1u);
+        const float v = in[c] > 0.0f ? std::min(in[c], 1.0f) : 0.0f;  // NaN as 0
+        w |= std::uint32_t(std::lrint(v * max)) << k.shift[c];
+      }
+      const std::uint16_t h = std::uint16_t(w);
+      std::memcpy(p, &h, 2);
+      break;
+    }
     default: break;
   }
 }
@@ -305,7 +360,10 @@ void StoreTexel(TextureLevel& level, int i, int j, const glm::vec4& in, bool enc
     case TexelLayout::kFloat16x4:
     case TexelLayout::kFloat16x2:
     case TexelLayout::kFloat16x1:
-    case TexelLayout::kFloat11x11x10: StoreSmallFloatTexel(level.layout, p, in); break;
+    case TexelLayout::kFloat11x11x10:
+    case TexelLayout::kUnorm565:
+    case TexelLayout::kUnorm4444:
+    case TexelLayout::kUnorm5551: StoreSmallFloatTexel(level.layout, p, in); break;
     case TexelLayout::kFloat32x1: {
       float v = in[0];
       if (IsDepthFormat(level.format)) v = std::isnan(v) ? 0.0f : std::clamp(v, 0.0f, 1.0f);  // depth holds [0, 1]
@@ -411,7 +469,9 @@ TextureView MakeView(const TextureObject& texture) {
   view.srgb = base.srgb;
   view.scale = StorageScale(base.layout);
   // The border colour in storage units; a fixed-point texture takes it clamped to [0, 1], as it takes texels.
-  view.border_raw = IsUnorm8(base.layout) ? glm::clamp(p.border, 0.0f, 1.0f) * 255.0f : p.border;
+  view.border_raw = IsUnorm8(base.layout)    ? glm::clamp(p.border, 0.0f, 1.0f) * 255.0f
+                    : IsPacked16(base.layout) ? glm::clamp(p.border, 0.0f, 1.0f)
+                                              : p.border;
   // q: the last level of the chain, level_base + floor(log2(max size)), but at most level_max.
   int levels = 0;
   for (int size = std::max(base.width, base.height); size > 1; size >>= 1) ++levels;

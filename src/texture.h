@@ -3,7 +3,8 @@
 // Each level keeps its texels in its own format: RGBA8 four bytes a texel (RGB8 too, alpha stored as 255; SRGB8_ALPHA8
 // and SRGB8 the same way, their colour bytes sRGB-encoded), RG8 two, R8 one, RGBA32F sixteen, R32F and the depth
 // formats one float; RG32F two floats; RGBA16F, RG16F and R16F half floats (IEEE binary16), four, two or one;
-// R11F_G11F_B10F one 32-bit word of three unsigned small floats. Fixed-point texels are bytes k meaning k / 255.
+// R11F_G11F_B10F one 32-bit word of three unsigned small floats; RGB565, RGBA4 and RGB5_A1 one 16-bit word.
+// 8-bit fixed-point texels are bytes k meaning k / 255; the 16-bit words hold k / (2^bits - 1) a channel.
 // Formats with stencil (DEPTH24_STENCIL8, DEPTH32F_STENCIL8, and STENCIL_INDEX8 for renderbuffers) keep their
 // stencil indices in a plane of their own, one byte a texel.
 #pragma once
@@ -34,6 +35,9 @@ enum class TexelLayout : std::uint8_t {
   kFloat16x2,  // RG16F
   kFloat16x1,  // R16F
   kFloat11x11x10,  // R11F_G11F_B10F: red in bits 0-10, green 11-21, blue 22-31
+  kUnorm565,   // RGB565: red in bits 11-15, green 5-10, blue 0-4 (OpenGL's UNSIGNED_SHORT_5_6_5 order)
+  kUnorm4444,  // RGBA4: red 12-15, green 8-11, blue 4-7, alpha 0-3
+  kUnorm5551,  // RGB5_A1: red 11-15, green 6-10, blue 1-5, alpha 0
 };
 
 /// The layout of an internal format (kNone if softgl does not support it), and its bytes per texel.
@@ -44,6 +48,11 @@ int BytesPerTexel(TexelLayout layout);
 glm::vec4 RawTexel(TexelLayout layout, const std::uint8_t* p);
 inline bool IsUnorm8(TexelLayout l) {
   return l == TexelLayout::kUnorm8x4 || l == TexelLayout::kUnorm8x2 || l == TexelLayout::kUnorm8x1;
+}
+/// The 16-bit fixed-point layouts (RGB565, RGBA4, RGB5_A1): read as floats in [0, 1] (storage scale 1), stored
+/// clamped and rounded to each channel's bits.
+inline bool IsPacked16(TexelLayout l) {
+  return l == TexelLayout::kUnorm565 || l == TexelLayout::kUnorm4444 || l == TexelLayout::kUnorm5551;
 }
 /// OpenGL's small floats (4.6, section 2.3.4): IEEE binary16 (sign, 5 exponent bits, 10 mantissa bits) and the
 /// unsigned 11- and 10-bit floats (5 exponent bits, 6 or 5 mantissa bits, no sign). From float: rounded to nearest
@@ -171,7 +180,8 @@ void UploadPixels(TextureLevel& level, int x, int y, int w, int h, Enum format, 
                   const void* pixels);
 
 /// Writes RGBA value `v` into a texel of RG32F, RGBA16F, RG16F, R16F or R11F_G11F_B10F at p (the channels the
-/// layout has, converted as FloatToHalf and FloatToUnsignedSmall say); other layouts are left alone.
+/// layout has, converted as FloatToHalf and FloatToUnsignedSmall say), or of RGB565, RGBA4 or RGB5_A1 (clamped to
+/// [0, 1], NaN as 0, round(c * (2^bits - 1))); other layouts are left alone.
 void StoreSmallFloatTexel(TexelLayout layout, std::uint8_t* p, const glm::vec4& v);
 
 /// Writes RGBA value `v` (in [0, 1] for fixed point: clamped and rounded; floats as they are) into texel (i, j);

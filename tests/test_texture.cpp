@@ -1025,3 +1025,80 @@ TEST_CASE("float render targets keep values outside [0, 1] and blend in float", 
     CHECK(v.b == 3.0f);
   }
 }
+
+TEST_CASE("16-bit formats: RGB565, RGBA4 and RGB5_A1 textures and targets, and a 16-bit context", "[framebuffer][packed]") {
+  struct Case {
+    Enum format;
+    int bits[4];  // 0: no such channel (alpha reads 1)
+  };
+  for (const Case c : {Case{RGB565, {5, 6, 5, 0}}, Case{RGBA4, {4, 4, 4, 4}}, Case{RGB5_A1, {5, 5, 5, 1}}}) {
+    INFO("format 0x" << std::hex << c.format);
+    // Stored: clamped to [0, 1] and rounded to each channel's bits; read back as k / (2^bits - 1).
+    detail::TextureLevel level;
+    level.Allocate(c.format, 2, 1);
+    CHECK(level.data.size() == 2 * 2 + detail::TextureLevel::kGatherPad);
+    const glm::vec4 in(0.45f, 1.7f, -0.2f, 0.31f);  // no ties between two steps
+    detail::StoreTexel(level, 0, 0, in);
+    const glm::vec4 got = level.Texel(0, 0);
+    for (int k = 0; k < 4; ++k) {
+      INFO("channel " << k);
+      if (!c.bits[k]) {
+        CHECK(got[k] == 1.0f);
+        continue;
+      }
+      const float max = float((1 << c.bits[k]) - 1);
+      CHECK(got[k] == std::round(std::clamp(in[k], 0.0f, 1.0f) * max) / max);
+    }
+    // As a render target: a clear, a blended draw (in float, the colour clamped first), per-channel masks.
+    Context gl(4, 4);
+    const std::uint32_t rb = gl.GenRenderbuffer(), fbo = gl.GenFramebuffer();
+    gl.BindRenderbuffer(RENDERBUFFER, rb);
+    gl.RenderbufferStorage(RENDERBUFFER, c.format, 4, 4);
+    int red_bits = 0;
+    gl.GetRenderbufferParameteriv(RENDERBUFFER, RENDERBUFFER_RED_SIZE, &red_bits);
+    CHECK(red_bits == c.bits[0]);
+    gl.BindFramebuffer(FRAMEBUFFER, fbo);
+    gl.FramebufferRenderbuffer(FRAMEBUFFER, COLOR_ATTACHMENT0, RENDERBUFFER, rb);
+    REQUIRE(gl.CheckFramebufferStatus(FRAMEBUFFER) == FRAMEBUFFER_COMPLETE);
+    gl.ClearColor(1.0f, 0.0f, 1.0f, 1.0f);
+    gl.Clear(COLOR_BUFFER_BIT);
+    testing::SolidShader solid;
+    solid.color = glm::vec4(2.0f, 1.0f, 0.0f, 0.5f);  // red clamped to 1
+    gl.UseProgram(solid);
+    testing::MakeVertexArray(gl, {{-1, -1, 0, 1}, {1, -1, 0, 1}, {-1, 1, 0, 1}, {1, 1, 0, 1}});
+    gl.Enable(BLEND);
+    gl.BlendFunc(SRC_ALPHA, ONE_MINUS_SRC_ALPHA);
+    gl.ColorMask(true, true, false, true);
+    gl.DrawArrays(TRIANGLE_STRIP, 0, 4);
+    float px[4] = {};
+    gl.ReadPixels(2, 2, 1, 1, RGBA, FLOAT, px);
+    auto quantized = [](float v, int bits) {
+      const float max = float((1 << bits) - 1);
+      return std::round(v * max) / max;
+    };
+    CHECK(px[0] == 1.0f);                                  // 0.5 * 1 + 0.5 * 1
+    CHECK(px[1] == quantized(0.5f, c.bits[1]));            // 0.5 * 1 + 0.5 * 0
+    CHECK(px[2] == 1.0f);                                  // masked: the clear's
+    CHECK(px[3] == (c.bits[3] ? quantized(0.5f * 0.5f + 0.5f * 1.0f, c.bits[3]) : 1.0f));
+    CHECK(gl.GetError() == NO_ERROR);
+  }
+  // The context's own colour buffer in RGB565: 5, 6 and 5 bits, alpha 1.
+  Context::Options options;
+  options.color_format = RGB565;
+  Context small(8, 8, options);
+  small.ClearColor(0.5f, 0.5f, 0.5f, 0.0f);
+  small.Clear(COLOR_BUFFER_BIT);
+  std::uint8_t px[4];
+  small.ReadPixel(3, 3, px);
+  CHECK(int(px[0]) == int(std::lround(std::round(0.5f * 31.0f) / 31.0f * 255.0f)));  // 16 / 31 of 255: 132
+  CHECK(int(px[1]) == int(std::lround(std::round(0.5f * 63.0f) / 63.0f * 255.0f)));  // 32 / 63: 130
+  CHECK(int(px[3]) == 255);
+  CHECK(small.GetError() == NO_ERROR);
+  options.color_format = RGBA4;
+  Context refused(8, 8, options);
+  CHECK(refused.GetError() == INVALID_ENUM);
+  refused.ClearColor(0.5f, 0.5f, 0.5f, 0.5f);
+  refused.Clear(COLOR_BUFFER_BIT);
+  refused.ReadPixel(3, 3, px);
+  CHECK(int(px[3]) == 128);  // RGBA8 after all
+}

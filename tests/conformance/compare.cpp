@@ -79,6 +79,7 @@ const char* CheckName(Check c) {
     case Check::kExactWithDepthStencil: return "identical, depth, stencil";
     case Check::kCoverage: return "coverage";
     case Check::kTexture: return "+-1 on 99.5%";
+    case Check::kStep4: return "+-17 (a 4-bit step)";
     default: return "+-1";
   }
 }

@@ -741,6 +741,46 @@ void FloatTargets(Backend& b) {
   }
 }
 
+// 16-bit targets: in three quadrants, a framebuffer object with an RGB565, RGBA4 or RGB5_A1 colour texture takes
+// a clear and colour gradients (with `blend`, a gradient blended over them, SRC_ALPHA, ONE_MINUS_SRC_ALPHA), then
+// is blitted into the context's framebuffer; the fourth quadrant draws the same into RGB565 with a colour mask.
+// softgl converts to each channel's bits as OpenGL says, round(c * (2^bits - 1)); llvmpipe's conversion is one
+// step of the channel apart from that in 2,316 of the 16,384 pixels without blending (8 of 255 for 5 bits, 17
+// for 4; mostly higher), and its blends differ by a step too: the scenes allow one 4-bit step.
+void Packed16(Backend& b, bool blend) {
+  ClearBlack(b);
+  const Enum formats[4] = {RGB565, RGBA4, RGB5_A1, RGB565};
+  for (int q = 0; q < 4; ++q) {
+    const float x0 = float((q % 2) * 64), y0 = float((q / 2) * 64);
+    b.BindFramebuffer(FRAMEBUFFER, b.GenFramebuffer());
+    b.AttachNewTexture(FRAMEBUFFER, COLOR_ATTACHMENT0, formats[q], kSize, kSize);
+    if (b.CheckFramebufferStatus(FRAMEBUFFER) != FRAMEBUFFER_COMPLETE) continue;  // left black: the check fails
+    b.ClearColor(0.2f, 0.6f, 0.9f, 0.4f);
+    b.Clear(COLOR_BUFFER_BIT);
+    if (q == 3) b.ColorMask(true, false, true, true);
+    const glm::vec4 corner[4] = {Win(x0 + 4, y0 + 4), Win(x0 + 56, y0 + 8), Win(x0 + 60, y0 + 44), Win(x0 + 8, y0 + 40)};
+    const glm::vec4 color[4] = {{0, 0, 0, 1}, {1, 0.2f, 0, 1}, {1, 1, 1, 1}, {0, 0.5f, 1, 1}};
+    std::vector<Vertex> v;
+    for (int i : {0, 1, 3, 1, 2, 3}) v.push_back({corner[i], color[i], glm::vec4(0)});
+    b.Draw(TRIANGLES, v);
+    if (blend) {
+      b.Enable(BLEND);
+      b.BlendFunc(SRC_ALPHA, ONE_MINUS_SRC_ALPHA);
+      b.Draw(TRIANGLES, {{Win(x0 + 2, y0 + 30), {1, 1, 0, 0.2f}}, {Win(x0 + 62, y0 + 36), {0, 1, 1, 0.9f}},
+                         {Win(x0 + 28, y0 + 62), {1, 0, 1, 0.5f}}});
+      b.Disable(BLEND);
+    }
+    b.ColorMask(true, true, true, true);
+    b.BindFramebuffer(DRAW_FRAMEBUFFER, 0);
+    const int bx = int(x0), by = int(y0);
+    b.BlitFramebuffer(bx, by, bx + 64, by + 64, bx, by, bx + 64, by + 64, COLOR_BUFFER_BIT, NEAREST);
+    b.BindFramebuffer(FRAMEBUFFER, 0);
+  }
+}
+
+void Packed16Targets(Backend& b) { Packed16(b, false); }
+void Packed16Blending(Backend& b) { Packed16(b, true); }
+
 void RenderToTexture(Backend& b) {
   // Pass 1: a 64 x 64 texture with coloured triangles and a depth test.
   b.BeginRenderToTexture(64, 64);
@@ -997,6 +1037,8 @@ const std::vector<SceneInfo>& Scenes() {
       {"srgb_texture", kSize, kSize, Check::kTexture, SrgbTexture},
       {"srgb_framebuffer", kSize, kSize, Check::kTexture, SrgbFramebuffer},
       {"float_targets", kSize, kSize, Check::kColor, FloatTargets},
+      {"packed16_targets", kSize, kSize, Check::kStep4, Packed16Targets},
+      {"packed16_blending", kSize, kSize, Check::kStep4, Packed16Blending},
       {"copy_tex_image", kSize, kSize, Check::kColor, CopyTexImage},
       {"stencil_renderbuffer", kSize, kSize, Check::kExactWithDepthStencil, StencilRenderbuffer},
       {"stencil_index8", kSize, kSize, Check::kExactWithStencil, StencilIndex8},
