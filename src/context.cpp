@@ -19,8 +19,10 @@ Context::Context(int width, int height, const Options& options) : state_(std::ma
   }
   if (options.color_format == RGB565) {
     state_->fb.layout = detail::TexelLayout::kUnorm565;
+  } else if (options.color_format == SRGB8_ALPHA8) {
+    state_->fb.srgb = true;
   } else if (options.color_format != RGBA8) {
-    state_->SetError(INVALID_ENUM, __func__, "Options::color_format must be RGBA8 or RGB565");
+    state_->SetError(INVALID_ENUM, __func__, "Options::color_format must be RGBA8, SRGB8_ALPHA8 or RGB565");
   }
   if (!state_->fb.Allocate(width, height)) {
     state_->SetError(OUT_OF_MEMORY, __func__, "out of memory");

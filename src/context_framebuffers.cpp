@@ -79,7 +79,7 @@ namespace {
 // FRAMEBUFFER_SRGB is enabled); ReadPixels and the copies return the stored values.
 detail::RenderTarget ReadTarget(ContextState& s, bool srgb = false) {
   if (!s.read_fbo) {
-    detail::RenderTarget t = s.fb.Target();
+    detail::RenderTarget t = s.fb.Target(srgb);
     if (s.default_read_buffer == NONE) t.color[0] = detail::ColorBuffer{};
     return t;
   }

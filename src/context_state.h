@@ -231,7 +231,7 @@ struct ContextState {
   // INVALID_FRAMEBUFFER_OPERATION recorded) when that object is incomplete.
   bool DrawTarget(detail::RenderTarget& target) {
     if (!draw_fbo) {
-      target = fb.Target();
+      target = fb.Target(framebuffer_srgb);
       return true;
     }
     if (FramebufferStatus(*draw_fbo) != FRAMEBUFFER_COMPLETE) {

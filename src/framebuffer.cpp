@@ -194,13 +194,14 @@ bool Framebuffer::Allocate(int w, int h) {
   return true;
 }
 
-RenderTarget Framebuffer::Target() {
+RenderTarget Framebuffer::Target(bool srgb_enabled) {
   RenderTarget t;
   t.width = width;
   t.height = height;
   if (width > 0 && height > 0) {
     t.color[0].data = color.data();
     t.color[0].layout = layout;
+    t.color[0].srgb = srgb && srgb_enabled;
     t.color[0].pitch = width;
     t.depth = depth.data();
     t.depth_pitch = width;

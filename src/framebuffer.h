@@ -63,6 +63,7 @@ struct Framebuffer {
   int width = 0;
   int height = 0;
   TexelLayout layout = TexelLayout::kUnorm8x4;  // of the colour buffer: kUnorm8x4 (RGBA8) or kUnorm565 (RGB565)
+  bool srgb = false;  // the colour buffer is SRGB8_ALPHA8: it converts while FRAMEBUFFER_SRGB is enabled
   std::vector<std::uint8_t> color;  // [height][width][bytes of the layout]
   std::vector<float> depth;         // [height][width]
   std::vector<std::uint8_t> stencil;
@@ -71,7 +72,8 @@ struct Framebuffer {
   /// if the memory cannot be had.
   bool Allocate(int w, int h);
   std::size_t Index(int x, int y) const { return std::size_t(y) * std::size_t(width) + std::size_t(x); }
-  RenderTarget Target();
+  /// The buffers as a render target; `srgb_enabled`: FRAMEBUFFER_SRGB (an sRGB colour buffer then converts).
+  RenderTarget Target(bool srgb_enabled = false);
 };
 
 /// One BlitFramebuffer, checked: rectangles (x0, y0, x1, y1) of the source and the destination (either may be

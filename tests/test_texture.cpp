@@ -880,6 +880,20 @@ TEST_CASE("FRAMEBUFFER_SRGB: an sRGB attachment encodes clears and fragments, an
                                          &encoding);
   CHECK(gl.GetError() == INVALID_OPERATION);  // nothing attached there
   (void)vao;
+
+  // A context whose own colour buffer is SRGB8_ALPHA8: the same rules.
+  Context::Options options;
+  options.color_format = SRGB8_ALPHA8;
+  Context srgb(4, 4, options);
+  CHECK(srgb.GetError() == NO_ERROR);
+  srgb.ClearColor(0.5f, 0.25f, 0.5f, 0.5f);
+  srgb.Clear(COLOR_BUFFER_BIT);
+  srgb.ReadPixel(0, 0, px);
+  CHECK((int(px[0]) == 128 && int(px[1]) == 64 && int(px[3]) == 128));  // FRAMEBUFFER_SRGB off: as they are
+  srgb.Enable(FRAMEBUFFER_SRGB);
+  srgb.Clear(COLOR_BUFFER_BIT);
+  srgb.ReadPixel(0, 0, px);
+  CHECK((int(px[0]) == 188 && int(px[1]) == int(detail::SrgbEncode8(0.25f)) && int(px[3]) == 128));
 }
 
 TEST_CASE("image files load as sRGB textures when asked", "[texture][files][srgb]") {

@@ -47,9 +47,11 @@ class Context {
     /// Threads that render, the calling thread included; 0 (the default) takes SOFTGL_THREADS from the
     /// environment when it is set to a number from 1 to 256, else the machine's hardware thread count.
     int threads = 0;
-    /// The context's colour buffer: RGBA8 (4 bytes a pixel, the default) or RGB565 (2 bytes a pixel, for small
-    /// memory: red and blue kept to 5 bits, green to 6, no alpha; drawing into it takes the per-pixel path of the
-    /// fragment operations). Anything else: RGBA8, and INVALID_ENUM recorded.
+    /// The context's colour buffer: RGBA8 (4 bytes a pixel, the default); SRGB8_ALPHA8 (the same bytes, sRGB-encoded:
+    /// while FRAMEBUFFER_SRGB is enabled, drawing, clears and blits encode linear colours into it, and blending
+    /// decodes first); or RGB565 (2 bytes a pixel, for small memory: red and blue kept to 5 bits, green to 6, no
+    /// alpha). Any but RGBA8 takes the per-pixel path of the fragment operations. Anything else: RGBA8, and
+    /// INVALID_ENUM recorded.
     Enum color_format = RGBA8;
   };
   Context(int width, int height, const Options& options);
