@@ -1,6 +1,7 @@
-// framebuffer.h — where fragments go: the context's own framebuffer (RGBA8 colour, 32-bit float depth, 8-bit
-// stencil) and RenderTarget, the view of whatever is bound for drawing (that framebuffer, or a framebuffer object's
-// texture attachments) that the per-fragment operations write through. Row 0 is the bottom row, as in OpenGL.
+// framebuffer.h — where fragments go: the context's own framebuffer (RGBA8, SRGB8_ALPHA8 or RGB565 colour, 32-bit
+// float depth, 8-bit stencil) and RenderTarget, the view of whatever is bound for drawing (that framebuffer, or a
+// framebuffer object's texture attachments) that the per-fragment operations write through. Row 0 is the bottom
+// row, as in OpenGL.
 #pragma once
 
 #include <cstdint>
