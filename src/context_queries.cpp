@@ -110,6 +110,7 @@ bool QueryState(ContextState& s, Enum pname, StateValue& out) {
     case MAX_DRAW_BUFFERS:
     case MAX_COLOR_ATTACHMENTS: return integer(kMaxColorOutputs);
     case MAX_SAMPLES: return integer(1);  // no multisampling
+    case MAX_TEXTURE_MAX_ANISOTROPY: return put(Kind::kFloat, {double(detail::kMaxAnisotropy)});
     case MAX_RENDERBUFFER_SIZE: return integer(kMaxFramebufferSize);
     case MAX_VIEWPORT_DIMS: return put(Kind::kInt, {double(kMaxFramebufferSize), double(kMaxFramebufferSize)});
     case MAX_VARYING_COMPONENTS: return integer(kMaxVaryingFloats);

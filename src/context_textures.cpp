@@ -260,6 +260,10 @@ void Context::TexParameterfv(Enum target, Enum pname, const float* values) {
       if (std::isnan(v)) return s.SetError(INVALID_VALUE, __func__, "value is NaN");
       (pname == TEXTURE_MIN_LOD ? p.min_lod : pname == TEXTURE_MAX_LOD ? p.max_lod : p.lod_bias) = v;
       break;
+    case TEXTURE_MAX_ANISOTROPY:
+      if (!(v >= 1.0f)) return s.SetError(INVALID_VALUE, __func__, "TEXTURE_MAX_ANISOTROPY is below 1 (or NaN)");
+      p.max_anisotropy = v;
+      break;
     case TEXTURE_COMPARE_MODE:
       if (iv != int(NONE) && iv != int(COMPARE_REF_TO_TEXTURE)) return s.SetError(INVALID_ENUM, __func__, "compare mode must be NONE or COMPARE_REF_TO_TEXTURE");
       p.compare_mode = Enum(iv);
@@ -314,6 +318,7 @@ bool TexParameterValues(ContextState& s, const char* what, Enum target, Enum pna
     case TEXTURE_MIN_LOD: out[0] = p.min_lod; return true;
     case TEXTURE_MAX_LOD: out[0] = p.max_lod; return true;
     case TEXTURE_LOD_BIAS: out[0] = p.lod_bias; return true;
+    case TEXTURE_MAX_ANISOTROPY: out[0] = p.max_anisotropy; return true;
     case TEXTURE_COMPARE_MODE: out[0] = float(p.compare_mode); return true;
     case TEXTURE_COMPARE_FUNC: out[0] = float(p.compare_func); return true;
     case TEXTURE_BORDER_COLOR:

@@ -467,6 +467,7 @@ TextureView MakeView(const TextureObject& texture) {
   view.depth = IsDepthFormat(base.format);
   view.layout = base.layout;
   view.srgb = base.srgb;
+  view.anisotropy = std::min(p.max_anisotropy, kMaxAnisotropy);
   view.scale = StorageScale(base.layout);
   // The border colour in storage units; a fixed-point texture takes it clamped to [0, 1], as it takes texels.
   view.border_raw = IsUnorm8(base.layout)    ? glm::clamp(p.border, 0.0f, 1.0f) * 255.0f
@@ -490,7 +491,7 @@ TextureView MakeView(const TextureObject& texture) {
   if (texture.target == TEXTURE_CUBE_MAP && base.width != base.height) return view;
   view.complete = true;
   const bool pow2 = (base.width & (base.width - 1)) == 0 && (base.height & (base.height - 1)) == 0;
-  if (texture.target == TEXTURE_2D && !view.depth && pow2 && p.wrap_s == REPEAT && p.wrap_t == REPEAT &&
+  if (texture.target == TEXTURE_2D && !view.depth && view.anisotropy <= 1.0f && pow2 && p.wrap_s == REPEAT && p.wrap_t == REPEAT &&
       p.mag_filter == LINEAR && p.compare_mode == NONE) {
     if (p.min_filter == LINEAR) view.fast = TextureView::Fast::kRepeatLinear;
     if (p.min_filter == LINEAR_MIPMAP_LINEAR) view.fast = TextureView::Fast::kRepeatTrilinear;

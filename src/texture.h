@@ -21,6 +21,7 @@
 namespace softgl::detail {
 
 inline constexpr int kMaxLevels = 15;  // 16384 x 16384 down to 1 x 1
+inline constexpr float kMaxAnisotropy = 16.0f;  // MAX_TEXTURE_MAX_ANISOTROPY
 
 /// How a level stores a texel.
 enum class TexelLayout : std::uint8_t {
@@ -129,6 +130,7 @@ struct SamplerParams {
   glm::vec4 border{0.0f};
   int base_level = 0, max_level = 1000;
   float min_lod = -1000.0f, max_lod = 1000.0f, lod_bias = 0.0f;
+  float max_anisotropy = 1.0f;  // TEXTURE_MAX_ANISOTROPY, >= 1 (sampling takes at most kMaxAnisotropy)
   Enum compare_mode = NONE, compare_func = LEQUAL;
 };
 
@@ -148,6 +150,7 @@ struct TextureView {
   int q = 0;           // the last level mipmapped filtering may use
   TexelLayout layout = TexelLayout::kNone;
   bool srgb = false;   // an sRGB format: colours decoded before filtering
+  float anisotropy = 1.0f;  // TEXTURE_MAX_ANISOTROPY cut to kMaxAnisotropy; above 1 the 2D samples are anisotropic
   float scale = 1.0f;  // StorageScale(layout)
   glm::vec4 border_raw{0.0f};  // the border colour in storage units
   // The common case, which sampling takes without re-deciding per sample: a 2D colour texture with REPEAT in s

@@ -156,16 +156,18 @@ SOFTGL_INLINE float PiecewiseLog2(float x) {
 // piecewise-linear log2 above (at most 0.043 levels from the exact value): the approximation Mesa's llvmpipe
 // makes, which keeps trilinear filtering within +-1 of it where the exact logarithm differs by up to 4
 // (docs/conformance.md).
-SOFTGL_INLINE float Lambda(const TextureView& view, glm::vec2 dx, glm::vec2 dy, float shader_bias) {
-  const TextureLevel& base = view.texture->levels[0][view.base];
-  const glm::vec2 size(float(base.width), float(base.height));
-  const glm::vec2 tx = dx * size, ty = dy * size;
-  const float rho2 = std::max(glm::dot(tx, tx), glm::dot(ty, ty));
+SOFTGL_INLINE float LambdaOfRho2(const TextureView& view, float rho2, float shader_bias) {
   const SamplerParams& p = view.texture->params;
   const float bias = std::clamp(p.lod_bias + shader_bias, -16.0f, 16.0f);
   float lambda = 0.5f * PiecewiseLog2(rho2) + bias;
   if (std::isnan(lambda)) lambda = 0.0f;
   return std::clamp(lambda, p.min_lod, p.max_lod);
+}
+SOFTGL_INLINE float Lambda(const TextureView& view, glm::vec2 dx, glm::vec2 dy, float shader_bias) {
+  const TextureLevel& base = view.texture->levels[0][view.base];
+  const glm::vec2 size(float(base.width), float(base.height));
+  const glm::vec2 tx = dx * size, ty = dy * size;
+  return LambdaOfRho2(view, std::max(glm::dot(tx, tx), glm::dot(ty, ty)), shader_bias);
 }
 
 // Minification or magnification at level of detail lambda, on one face (section 8.14.2 to 8.14.3), in storage
@@ -496,11 +498,34 @@ SampleRepeatLanesFn SampleRepeatLanesFor(const TextureView& view) {
   }
 }
 
+// Anisotropic filtering (TEXTURE_MAX_ANISOTROPY, OpenGL 4.6 section 8.14.1, as EXT_texture_filter_anisotropic
+// describes it): the footprint's longer axis Pmax and shorter Pmin (texel-space lengths of the two derivatives)
+// give N = min(ceil(Pmax / Pmin), the anisotropy) probes; each is an ordinary sample at lambda = log2(Pmax / N)
+// (the piecewise log2 of Lambda), placed at uv + (i / (N + 1) - 1/2) times the longer derivative, i = 1 .. N, and
+// their mean is the result. N = 1 is the isotropic sample.
+glm::vec4 SampleAnisotropic(const TextureView& view, glm::vec2 uv, glm::vec2 dx, glm::vec2 dy, float shader_bias) {
+  const TextureLevel& base = view.texture->levels[0][view.base];
+  const glm::vec2 size(float(base.width), float(base.height));
+  const glm::vec2 tx = dx * size, ty = dy * size;
+  const float px2 = glm::dot(tx, tx), py2 = glm::dot(ty, ty);
+  const float max2 = std::max(px2, py2), min2 = std::min(px2, py2);
+  const glm::vec2 major = px2 >= py2 ? dx : dy;
+  const float ratio = min2 > 0.0f ? std::sqrt(max2 / min2) : view.anisotropy;  // NaN: 1 below
+  const int n = ratio > 1.0f ? int(std::min(std::ceil(ratio), view.anisotropy)) : 1;
+  const float lambda = LambdaOfRho2(view, max2 / float(n * n), shader_bias);
+  if (n == 1) return SampleFace(view, 0, uv, lambda, DepthCompare{});
+  glm::vec4 sum(0.0f);
+  for (int i = 1; i <= n; ++i)
+    sum += SampleFace(view, 0, uv + major * (float(i) / float(n + 1) - 0.5f), lambda, DepthCompare{});
+  return sum / float(n);
+}
+
 }  // namespace
 
 glm::vec4 Textures::Sample(int unit, glm::vec2 uv, glm::vec2 duv_dx, glm::vec2 duv_dy, float bias) const {
   const TextureView* v = Usable(unit_2d, unit);
   if (!v) return kMissing;
+  if (v->anisotropy > 1.0f && !v->depth) return SampleAnisotropic(*v, uv, duv_dx, duv_dy, bias) / v->scale;
   const float lambda = Lambda(*v, duv_dx, duv_dy, bias);
   if (v->fast != TextureView::Fast::kNone) return SampleRepeat(*v, uv, lambda) / v->scale;
   return SampleFace(*v, 0, uv, lambda, DepthCompare{}) / v->scale;

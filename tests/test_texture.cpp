@@ -1116,3 +1116,52 @@ TEST_CASE("16-bit formats: RGB565, RGBA4 and RGB5_A1 textures and targets, and a
   refused.ReadPixel(3, 3, px);
   CHECK(int(px[3]) == 128);  // RGBA8 after all
 }
+
+TEST_CASE("anisotropic filtering: N probes along the footprint's longer axis, at the level of Pmax / N",
+          "[texture][anisotropic]") {
+  // A 64 x 64 mipmapped texture of arbitrary texels; a footprint 8 texels long in s and 1 in t.
+  TextureObject t = MakeTexture(64, 64, [](int i, int j) {
+    return glm::vec4(float((i * 7 + j * 3) % 11) / 10.0f, float((i + 2 * j) % 5) / 4.0f, float(i % 3), 1.0f);
+  });
+  detail::GenerateMipmaps(t);
+  t.params.min_filter = LINEAR_MIPMAP_LINEAR;
+  t.params.mag_filter = LINEAR;
+  const glm::vec2 uv(0.37f, 0.61f), dx(8.0f / 64.0f, 0.0f), dy(0.0f, 1.0f / 64.0f);
+  auto probes = [&](const Sampler& s, int n, float lod) {  // the mean of n level-`lod` samples along dx
+    glm::vec4 sum(0.0f);
+    for (int i = 1; i <= n; ++i)
+      sum += s.textures.SampleLod(0, uv + dx * (float(i) / float(n + 1) - 0.5f), lod);
+    return sum / float(n);
+  };
+  t.params.max_anisotropy = 16.0f;  // N = 8: each probe at level 0
+  Sampler s16(t);
+  CHECK(s16.view.fast == TextureView::Fast::kNone);
+  CHECK(s16.textures.Sample(0, uv, dx, dy) == probes(s16, 8, 0.0f));
+  t.params.max_anisotropy = 4.0f;  // N = 4: level log2(8 / 4) = 1
+  Sampler s4(t);
+  CHECK(s4.textures.Sample(0, uv, dx, dy) == probes(s4, 4, 1.0f));
+  t.params.max_anisotropy = 100.0f;  // taken as 16
+  Sampler s100(t);
+  CHECK(s100.view.anisotropy == 16.0f);
+  // The footprint along t: the probes follow dy.
+  const glm::vec2 long_dy(0.0f, 4.0f / 64.0f), short_dx(1.0f / 64.0f, 0.0f);
+  glm::vec4 sum(0.0f);
+  for (int i = 1; i <= 4; ++i) sum += s16.textures.SampleLod(0, uv + long_dy * (float(i) / 5.0f - 0.5f), 0.0f);
+  CHECK(s16.textures.Sample(0, uv, short_dx, long_dy) == sum / 4.0f);
+  // A round footprint is the ordinary trilinear sample.
+  t.params.max_anisotropy = 1.0f;
+  Sampler plain(t);
+  CHECK(s16.textures.Sample(0, uv, dx * 0.25f, glm::vec2(0.0f, 2.0f / 64.0f)) ==
+        plain.textures.Sample(0, uv, dx * 0.25f, glm::vec2(0.0f, 2.0f / 64.0f)));
+  // The parameter: at least 1, read back as given; the limit is 16.
+  Context gl(4, 4);
+  gl.BindTexture(TEXTURE_2D, gl.GenTexture());
+  gl.TexParameterf(TEXTURE_2D, TEXTURE_MAX_ANISOTROPY, 8.0f);
+  float v = 0.0f;
+  gl.GetTexParameterfv(TEXTURE_2D, TEXTURE_MAX_ANISOTROPY, &v);
+  CHECK(v == 8.0f);
+  gl.TexParameterf(TEXTURE_2D, TEXTURE_MAX_ANISOTROPY, 0.5f);
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.GetFloatv(MAX_TEXTURE_MAX_ANISOTROPY, &v);
+  CHECK(v == 16.0f);
+}

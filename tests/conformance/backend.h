@@ -46,6 +46,7 @@ struct TextureDesc {
   Enum min_filter = softgl::LINEAR_MIPMAP_LINEAR, mag_filter = softgl::LINEAR;
   Enum wrap_s = softgl::REPEAT, wrap_t = softgl::REPEAT;
   glm::vec4 border{0.0f};
+  float max_anisotropy = 1.0f;  // TEXTURE_MAX_ANISOTROPY
 };
 
 struct Uniforms {

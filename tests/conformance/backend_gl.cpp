@@ -309,6 +309,7 @@ class GlBackend final : public Backend {
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GLint(d.wrap_s));
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GLint(d.wrap_t));
     glTexParameterfv(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, &d.border[0]);
+    if (d.max_anisotropy != 1.0f) glTexParameterf(GL_TEXTURE_2D, 0x84FE, d.max_anisotropy);  // TEXTURE_MAX_ANISOTROPY
     glUseProgram(programs_[3]);
     glUniform1i(glGetUniformLocation(programs_[3], "u_tex"), 0);
   }

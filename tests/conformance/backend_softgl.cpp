@@ -285,6 +285,7 @@ class SoftglBackend final : public Backend {
     gl_.TexParameteri(softgl::TEXTURE_2D, softgl::TEXTURE_WRAP_S, int(d.wrap_s));
     gl_.TexParameteri(softgl::TEXTURE_2D, softgl::TEXTURE_WRAP_T, int(d.wrap_t));
     gl_.TexParameterfv(softgl::TEXTURE_2D, softgl::TEXTURE_BORDER_COLOR, &d.border[0]);
+    if (d.max_anisotropy != 1.0f) gl_.TexParameterf(softgl::TEXTURE_2D, softgl::TEXTURE_MAX_ANISOTROPY, d.max_anisotropy);
   }
 
   void SetCubeTexture(int size, const std::vector<std::uint8_t> faces[6]) override {

@@ -645,6 +645,20 @@ void TextureGeneratedMipmaps(Backend& b) {
   RecedingPlane(b, 0, 0, kSize, kSize, 6.0f);
 }
 
+// Anisotropic filtering: the receding floor of texture_filters with TEXTURE_MAX_ANISOTROPY 16 (left) and 4
+// (right), trilinear, the levels given. OpenGL leaves the anisotropic filter to the implementation: llvmpipe's
+// differs from softgl's (N probes along the longer axis of the footprint, as EXT_texture_filter_anisotropic
+// describes), by up to 176 where the floor recedes most, so the scene checks coverage and reports the colours.
+void TextureAnisotropic(Backend& b) {
+  ClearBlack(b);
+  for (int i = 0; i < 2; ++i) {
+    TextureDesc d = PatternTexture(true);
+    d.max_anisotropy = i == 0 ? 16.0f : 4.0f;
+    b.SetTexture(d);
+    RecedingPlane(b, i * 64, 0, 64, kSize, 4.0f);
+  }
+}
+
 // The pattern as an SRGB8_ALPHA8 texture with its levels given, drawn trilinear on a receding floor (texels decoded
 // to linear before filtering), and level 0 magnified with NEAREST above it (the decoding alone). The default
 // framebuffer is linear, so what is compared is the filtered linear colour. (GenerateMipmap's filter is the
@@ -1034,6 +1048,7 @@ const std::vector<SceneInfo>& Scenes() {
       {"texture_wraps", kSize, kSize, Check::kTexture, TextureWraps},
       {"texture_generated_mipmaps", kSize, kSize, Check::kTexture, TextureGeneratedMipmaps},
       {"render_to_texture", kSize, kSize, Check::kTexture, RenderToTexture},
+      {"texture_anisotropic", kSize, kSize, Check::kCoverage, TextureAnisotropic},
       {"srgb_texture", kSize, kSize, Check::kTexture, SrgbTexture},
       {"srgb_framebuffer", kSize, kSize, Check::kTexture, SrgbFramebuffer},
       {"float_targets", kSize, kSize, Check::kColor, FloatTargets},
