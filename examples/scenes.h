@@ -38,8 +38,9 @@ softgl::Image Transparency(int width, int height);
 /// with PolygonOffset(-1, -1) (right) they sit cleanly on top.
 softgl::Image Decals(int width, int height);
 
-/// A receding floor and a cube with a mipmapped texture: left half NEAREST (moire in the distance), right half
-/// trilinear (LINEAR_MIPMAP_LINEAR), where the level of detail follows the screen-space derivatives.
+/// A receding floor and a cube with a mipmapped texture: the floor's left third NEAREST (moire in the distance), the
+/// middle trilinear (LINEAR_MIPMAP_LINEAR, the level of detail following the screen-space derivatives), the right
+/// trilinear with 16x anisotropic filtering (sharper at grazing angles).
 softgl::Image TexturedCube(int width, int height);
 
 /// sRGB done right and wrong: left, an sRGB texture (decoded before filtering) lit and blended in linear light into
