@@ -189,8 +189,9 @@ class Context {
   /// object: texture calls with nothing bound record INVALID_OPERATION.
   void BindTexture(Enum target, std::uint32_t texture);
   /// Defines level `level` of the bound texture: target TEXTURE_2D or a TEXTURE_CUBE_MAP_* face; internal_format
-  /// RGBA8, RGB8, RG8, R8, RGBA32F, R32F, DEPTH_COMPONENT (also DEPTH_COMPONENT16/24/32F: all depth is stored as
-  /// float), DEPTH24_STENCIL8 or DEPTH32F_STENCIL8 (depth, sampled as a depth texture, and a stencil index each);
+  /// RGBA8, RGB8, RG8, R8, SRGB8_ALPHA8, SRGB8 (decoded to linear when sampled), RGB565, RGBA4, RGB5_A1, RGBA32F,
+  /// RG32F, R32F, RGBA16F, RG16F, R16F, R11F_G11F_B10F, DEPTH_COMPONENT (also DEPTH_COMPONENT16/24/32F: all depth
+  /// is stored as float), DEPTH24_STENCIL8 or DEPTH32F_STENCIL8 (depth, sampled as a depth texture, and a stencil index each);
   /// pixels of `format` RED, RG, RGB, RGBA or DEPTH_COMPONENT and `type` UNSIGNED_BYTE or FLOAT, or DEPTH_STENCIL
   /// with UNSIGNED_INT_24_8 or FLOAT_32_UNSIGNED_INT_24_8_REV, rows bottom first, each row aligned to
   /// UNPACK_ALIGNMENT; null pixels leave the level zero. Errors: bad target, format or type: INVALID_ENUM;
@@ -240,8 +241,9 @@ class Context {
   /// LINEAR_MIPMAP_NEAREST, NEAREST_MIPMAP_LINEAR (default), LINEAR_MIPMAP_LINEAR), TEXTURE_MAG_FILTER (NEAREST,
   /// LINEAR (default)), TEXTURE_WRAP_S/T/R (REPEAT (default), MIRRORED_REPEAT, CLAMP_TO_EDGE, CLAMP_TO_BORDER),
   /// TEXTURE_BASE_LEVEL, TEXTURE_MAX_LEVEL, TEXTURE_MIN_LOD, TEXTURE_MAX_LOD, TEXTURE_LOD_BIAS,
+  /// TEXTURE_MAX_ANISOTROPY (1, the default, to 16: anisotropic filtering of 2D textures),
   /// TEXTURE_COMPARE_MODE (NONE, COMPARE_REF_TO_TEXTURE), TEXTURE_COMPARE_FUNC (the eight comparisons).
-  /// Bad name or value: INVALID_ENUM; negative base or max level: INVALID_VALUE.
+  /// Bad name or value: INVALID_ENUM; negative base or max level, TEXTURE_MAX_ANISOTROPY below 1: INVALID_VALUE.
   void TexParameteri(Enum target, Enum pname, int value);
   void TexParameterf(Enum target, Enum pname, float value);
   /// TEXTURE_BORDER_COLOR (four floats), or any single-valued name.
@@ -334,7 +336,8 @@ class Context {
   bool IsRenderbuffer(std::uint32_t renderbuffer) const;
   /// Binds a renderbuffer (0 unbinds) to RENDERBUFFER. Bad target: INVALID_ENUM; unknown id: INVALID_OPERATION.
   void BindRenderbuffer(Enum target, std::uint32_t renderbuffer);
-  /// Gives the bound renderbuffer width x height pixels of internal_format: RGBA8, RGB8, RG8, R8, RGBA32F, R32F,
+  /// Gives the bound renderbuffer width x height pixels of internal_format: RGBA8, RGB8, RG8, R8, SRGB8_ALPHA8,
+  /// SRGB8, RGB565, RGBA4, RGB5_A1, RGBA32F, RG32F, R32F, RGBA16F, RG16F, R16F, R11F_G11F_B10F,
   /// DEPTH_COMPONENT16/24/32F, DEPTH24_STENCIL8, DEPTH32F_STENCIL8, STENCIL_INDEX8, or the unsized RGBA, RGB, RG,
   /// RED, DEPTH_COMPONENT, DEPTH_STENCIL, STENCIL_INDEX (stored as RGBA8, ..., DEPTH24_STENCIL8, STENCIL_INDEX8).
   /// Contents start zero. Errors: target not RENDERBUFFER, another format: INVALID_ENUM; size negative or above
