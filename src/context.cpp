@@ -24,6 +24,10 @@ Context::Context(int width, int height, const Options& options) : state_(std::ma
   } else if (options.color_format != RGBA8) {
     state_->SetError(INVALID_ENUM, __func__, "Options::color_format must be RGBA8, SRGB8_ALPHA8 or RGB565");
   }
+  if (options.samples < 0 || options.samples > detail::kMaxSamples)
+    state_->SetError(INVALID_VALUE, __func__, "Options::samples must be 0 to 8");
+  else
+    state_->fb.samples = detail::SupportedSamples(options.samples <= 1 ? 0 : options.samples);
   if (!state_->fb.Allocate(width, height)) {
     state_->SetError(OUT_OF_MEMORY, __func__, "out of memory");
     width = height = 0;
@@ -90,6 +94,10 @@ bool* CapFlag(ContextState& s, Enum cap) {
     case POLYGON_OFFSET_POINT: return &s.primitive.offset_point;
     case PRIMITIVE_RESTART: return &s.primitive_restart;
     case PRIMITIVE_RESTART_FIXED_INDEX: return &s.primitive_restart_fixed;
+    case MULTISAMPLE: return &s.ops.multisample.multisample;
+    case SAMPLE_ALPHA_TO_COVERAGE: return &s.ops.multisample.alpha_to_coverage;
+    case SAMPLE_COVERAGE: return &s.ops.multisample.sample_coverage;
+    case SAMPLE_MASK: return &s.ops.multisample.sample_mask;
     default: return nullptr;
   }
 }
@@ -116,6 +124,28 @@ bool Context::IsEnabled(Enum cap) {
 }
 
 void Context::PrimitiveRestartIndex(std::uint32_t index) { state_->restart_index = index; }
+
+void Context::SampleCoverage(float value, bool invert) {
+  state_->ops.multisample.coverage_value = value >= 0.0f ? std::min(value, 1.0f) : 0.0f;  // NaN as 0
+  state_->ops.multisample.coverage_invert = invert;
+}
+
+void Context::SampleMaski(std::uint32_t index, Bitfield mask) {
+  if (index >= 1) return state_->SetError(INVALID_VALUE, __func__, "index must be below MAX_SAMPLE_MASK_WORDS (1)");
+  state_->ops.multisample.mask = mask;
+}
+
+void Context::GetMultisamplefv(Enum pname, std::uint32_t index, float* val) {
+  auto& s = *state_;
+  if (pname != SAMPLE_POSITION) return s.SetError(INVALID_ENUM, __func__, "pname must be SAMPLE_POSITION");
+  const int samples = s.draw_fbo ? FramebufferTarget(*s.draw_fbo).samples : s.fb.samples;
+  if (index >= std::uint32_t(samples)) return s.SetError(INVALID_VALUE, __func__, "index is not below the draw framebuffer's sample count");
+  const std::uint8_t* p = detail::SamplePositions(samples)[index];
+  if (val) {
+    val[0] = float(p[0]) / 16.0f;
+    val[1] = float(p[1]) / 16.0f;
+  }
+}
 
 void Context::CullFace(Enum mode) {
   if (mode != FRONT && mode != BACK && mode != FRONT_AND_BACK) return state_->SetError(INVALID_ENUM, __func__, "mode must be FRONT, BACK or FRONT_AND_BACK");

@@ -29,6 +29,12 @@ Enum FramebufferStatus(const FramebufferObject& f) {
     if (!l->Defined() || !detail::HasStencil(l->format)) return FRAMEBUFFER_INCOMPLETE_ATTACHMENT;
   }
   if (!any) return FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT;
+  int samples = 0;  // every image must have as many samples (section 9.4.2)
+  for (const Attachment* a : {&f.color[0], &f.color[1], &f.color[2], &f.color[3], &f.depth, &f.stencil}) {
+    if (!a->Present()) continue;
+    if (samples != 0 && a->Level()->samples != samples) return FRAMEBUFFER_INCOMPLETE_MULTISAMPLE;
+    samples = a->Level()->samples;
+  }
   for (Enum b : f.draw_buffers)
     if (b != NONE && !f.color[b - COLOR_ATTACHMENT0].Present()) return FRAMEBUFFER_INCOMPLETE_DRAW_BUFFER;
   return FRAMEBUFFER_COMPLETE;
@@ -47,6 +53,8 @@ detail::RenderTarget FramebufferTarget(const FramebufferObject& f, bool srgb) {
   for (const Attachment& a : f.color) fit(a);
   fit(f.depth);
   fit(f.stencil);
+  for (const Attachment* a : {&f.color[0], &f.color[1], &f.color[2], &f.color[3], &f.depth, &f.stencil})
+    if (a->Present()) t.samples = a->Level()->samples;
   for (int i = 0; i < kMaxColorOutputs; ++i) {
     if (f.draw_buffers[i] == NONE) continue;
     const Attachment& a = f.color[f.draw_buffers[i] - COLOR_ATTACHMENT0];
@@ -57,14 +65,17 @@ detail::RenderTarget FramebufferTarget(const FramebufferObject& f, bool srgb) {
     cb.rgb_only = detail::NoStoredAlpha(a.Level()->format);
     cb.srgb = srgb && a.Level()->srgb;
     cb.pitch = a.Level()->width;
+    cb.plane = std::size_t(a.Level()->width) * std::size_t(a.Level()->height);
   }
   if (f.depth.Present()) {
     t.depth = reinterpret_cast<float*>(const_cast<std::uint8_t*>(f.depth.Level()->data.data()));
     t.depth_pitch = f.depth.Level()->width;
+    t.depth_plane = std::size_t(f.depth.Level()->width) * std::size_t(f.depth.Level()->height);
   }
   if (f.stencil.Present()) {
     t.stencil = const_cast<std::uint8_t*>(f.stencil.Level()->stencil.data());
     t.stencil_pitch = f.stencil.Level()->width;
+    t.stencil_plane = std::size_t(f.stencil.Level()->width) * std::size_t(f.stencil.Level()->height);
   }
   return t;
 }
@@ -76,10 +87,13 @@ namespace {
 // What ReadPixels and friends read: the context's framebuffer, or the framebuffer object bound for reading (its
 // read buffer as color[0], depth and stencil; nothing when it is incomplete). color[0] is absent when the read
 // buffer is NONE or names an empty attachment. With `srgb` an sRGB read buffer decodes (BlitFramebuffer while
-// FRAMEBUFFER_SRGB is enabled); ReadPixels and the copies return the stored values.
-detail::RenderTarget ReadTarget(ContextState& s, bool srgb = false) {
+// FRAMEBUFFER_SRGB is enabled); ReadPixels and the copies return the stored values. A multisampled context
+// framebuffer reads as its resolved image (brought up to date once the recorded commands are rendered), unless
+// `samples` asks for the samples themselves (BlitFramebuffer); a multisampled framebuffer object reads as its
+// samples.
+detail::RenderTarget ReadTarget(ContextState& s, bool srgb = false, bool samples = false) {
   if (!s.read_fbo) {
-    detail::RenderTarget t = s.fb.Target(srgb);
+    detail::RenderTarget t = s.fb.samples > 1 && s.frame.Empty() && !samples ? s.fb.ReadTarget(srgb) : s.fb.Target(srgb);
     if (s.default_read_buffer == NONE) t.color[0] = detail::ColorBuffer{};
     return t;
   }
@@ -89,6 +103,12 @@ detail::RenderTarget ReadTarget(ContextState& s, bool srgb = false) {
   for (int i = 1; i < kMaxColorOutputs; ++i) reading.draw_buffers[i] = NONE;
   return FramebufferTarget(reading, srgb);
 }
+// The sample count of the (complete) framebuffer object bound for reading; 1 when none is bound.
+int ReadFboSamples(ContextState& s) {
+  if (!s.read_fbo) return 1;
+  return ReadTarget(s).samples;
+}
+
 }  // namespace
 
 Image Context::ReadPixels() const {
@@ -101,7 +121,7 @@ Image Context::ReadPixels() const {
   image.rgba.resize(std::size_t(t.width) * std::size_t(t.height) * 4);
   for (int y = 0; y < t.height; ++y)
     for (int x = 0; x < t.width; ++x) {
-      const glm::vec4 c = t.color[0].Load(x, y);
+      const glm::vec4 c = detail::LoadResolved(t.color[0], t.samples, x, y);
       std::uint8_t* dst = image.rgba.data() + (std::size_t(t.height - 1 - y) * std::size_t(t.width) + x) * 4;
       for (int k = 0; k < 4; ++k) dst[k] = detail::FloatToUnorm8(c[k]);
     }
@@ -113,7 +133,7 @@ void Context::ReadPixel(int x, int y, std::uint8_t rgba[4]) const {
   const detail::RenderTarget t = ReadTarget(*state_);
   std::memset(rgba, 0, 4);
   if (!t.color[0].Present() || x < 0 || y < 0 || x >= t.width || y >= t.height) return;
-  const glm::vec4 c = t.color[0].Load(x, y);
+  const glm::vec4 c = detail::LoadResolved(t.color[0], t.samples, x, y);
   for (int k = 0; k < 4; ++k) rgba[k] = detail::FloatToUnorm8(c[k]);
 }
 
@@ -204,6 +224,7 @@ void Context::ReadPixels(int x, int y, int width, int height, Enum format, Enum 
   if (width < 0 || height < 0) return s.SetError(INVALID_VALUE, __func__, "width or height is negative");
   if ((format == DEPTH_STENCIL) != (type == UNSIGNED_INT_24_8)) return s.SetError(INVALID_OPERATION, __func__, "DEPTH_STENCIL goes with UNSIGNED_INT_24_8, and only it");
   if (s.read_fbo && FramebufferStatus(*s.read_fbo) != FRAMEBUFFER_COMPLETE) return s.SetError(INVALID_FRAMEBUFFER_OPERATION, __func__, "the read framebuffer is not complete");
+  if (ReadFboSamples(s) > 1) return s.SetError(INVALID_OPERATION, __func__, "the read framebuffer object is multisampled: resolve it with BlitFramebuffer first");
   s.Sync(__func__);
   const detail::RenderTarget t = ReadTarget(s);
   if ((l.depth && !t.depth) || (l.stencil && !t.stencil) || (l.count > 0 && !l.depth && !l.stencil && !t.color[0].Present()))
@@ -278,6 +299,7 @@ namespace {
 // of buffer the texture needs. False with the error set otherwise.
 bool CheckCopySource(ContextState& s, const char* what, bool depth) {
   if (s.read_fbo && FramebufferStatus(*s.read_fbo) != FRAMEBUFFER_COMPLETE) return s.SetError(INVALID_FRAMEBUFFER_OPERATION, what, "the read framebuffer is not complete"), false;
+  if (ReadFboSamples(s) > 1) return s.SetError(INVALID_OPERATION, what, "the read framebuffer object is multisampled: resolve it with BlitFramebuffer first"), false;
   const detail::RenderTarget t = ReadTarget(s);
   if (depth ? !t.depth : !t.color[0].Present()) return s.SetError(INVALID_OPERATION, what, "the read framebuffer has no buffer of the texture's kind"), false;
   return true;
@@ -629,23 +651,38 @@ void Context::BindRenderbuffer(Enum target, std::uint32_t renderbuffer) {
   s.renderbuffer = std::move(object);
 }
 
-void Context::RenderbufferStorage(Enum target, Enum internal_format, int width, int height) {
-  auto& s = *state_;
-  Renderbuffer* rb = BoundRenderbuffer(s, __func__, target);
+namespace {
+
+// RenderbufferStorage(Multisample): `samples` as given (0 for RenderbufferStorage).
+void Storage(ContextState& s, const char* what, Enum target, int samples, Enum internal_format, int width, int height) {
+  Renderbuffer* rb = BoundRenderbuffer(s, what, target);
   if (!rb) return;
   const Enum sized = SizedRenderbufferFormat(internal_format);
-  if (sized == 0) return s.SetError(INVALID_ENUM, __func__, "internal_format is not a colour, depth or stencil format drawing can render to");
+  if (sized == 0) return s.SetError(INVALID_ENUM, what, "internal_format is not a colour, depth or stencil format drawing can render to");
   if (width < 0 || height < 0 || width > kMaxFramebufferSize || height > kMaxFramebufferSize)
-    return s.SetError(INVALID_VALUE, __func__, "width or height is negative or above MAX_RENDERBUFFER_SIZE");
-  s.Sync(__func__);  // recorded draws may render into the old image
+    return s.SetError(INVALID_VALUE, what, "width or height is negative or above MAX_RENDERBUFFER_SIZE");
+  if (samples < 0) return s.SetError(INVALID_VALUE, what, "samples is negative");
+  if (samples > detail::kMaxSamples) return s.SetError(INVALID_OPERATION, what, "samples is above MAX_SAMPLES");
+  s.Sync(what);  // recorded draws may render into the old image
   detail::TextureLevel next;
   try {
-    next.Allocate(sized, width, height);
+    next.Allocate(sized, width, height, detail::SupportedSamples(samples));
   } catch (const std::bad_alloc&) {
-    return s.SetError(OUT_OF_MEMORY, __func__, "out of memory");
+    return s.SetError(OUT_OF_MEMORY, what, "out of memory");
   }
   rb->image = std::move(next);
   rb->internal_format = internal_format;
+  rb->samples = samples > 0 ? rb->image.samples : 0;
+}
+
+}  // namespace
+
+void Context::RenderbufferStorage(Enum target, Enum internal_format, int width, int height) {
+  Storage(*state_, __func__, target, 0, internal_format, width, height);
+}
+
+void Context::RenderbufferStorageMultisample(Enum target, int samples, Enum internal_format, int width, int height) {
+  Storage(*state_, __func__, target, samples, internal_format, width, height);
 }
 
 void Context::GetRenderbufferParameteriv(Enum target, Enum pname, int* params) {
@@ -664,7 +701,7 @@ void Context::GetRenderbufferParameteriv(Enum target, Enum pname, int* params) {
     case RENDERBUFFER_ALPHA_SIZE: v = bits.a; break;
     case RENDERBUFFER_DEPTH_SIZE: v = bits.depth; break;
     case RENDERBUFFER_STENCIL_SIZE: v = bits.stencil; break;
-    case RENDERBUFFER_SAMPLES: v = 0; break;
+    case RENDERBUFFER_SAMPLES: v = rb->samples; break;
     default: return s.SetError(INVALID_ENUM, __func__, "pname is not a renderbuffer parameter");
   }
   if (params) *params = v;
@@ -717,9 +754,16 @@ void Context::BlitFramebuffer(int src_x0, int src_y0, int src_x1, int src_y1, in
       (s.draw_fbo && FramebufferStatus(*s.draw_fbo) != FRAMEBUFFER_COMPLETE))
     return s.SetError(INVALID_FRAMEBUFFER_OPERATION, __func__, "the read or draw framebuffer is not complete");
   s.Sync(__func__);
-  const detail::RenderTarget src = ReadTarget(s, s.framebuffer_srgb);
+  const detail::RenderTarget src = ReadTarget(s, s.framebuffer_srgb, true);
   detail::RenderTarget dst;
   s.DrawTarget(dst);
+  // Multisampled buffers are copied sample by sample or resolved, never scaled (OpenGL 4.6, section 18.3.1).
+  if (src.samples > 1 && dst.samples > 1 && src.samples != dst.samples)
+    return s.SetError(INVALID_OPERATION, __func__, "the read and draw framebuffers have different sample counts");
+  if ((src.samples > 1 || dst.samples > 1) &&
+      (std::abs(std::int64_t(src_x1) - src_x0) != std::abs(std::int64_t(dst_x1) - dst_x0) ||
+       std::abs(std::int64_t(src_y1) - src_y0) != std::abs(std::int64_t(dst_y1) - dst_y0)))
+    return s.SetError(INVALID_OPERATION, __func__, "a blit from or to a multisampled framebuffer cannot scale: the rectangles must be the same size");
   // A buffer missing from either framebuffer is skipped without an error (OpenGL 4.6, section 18.3.1).
   const bool depth = (mask & DEPTH_BUFFER_BIT) != 0 && src.depth && dst.depth;
   const bool stencil = (mask & STENCIL_BUFFER_BIT) != 0 && src.stencil && dst.stencil;

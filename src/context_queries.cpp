@@ -109,7 +109,18 @@ bool QueryState(ContextState& s, Enum pname, StateValue& out) {
     case MAX_COMBINED_TEXTURE_IMAGE_UNITS: return integer(kMaxTextureUnits);
     case MAX_DRAW_BUFFERS:
     case MAX_COLOR_ATTACHMENTS: return integer(kMaxColorOutputs);
-    case MAX_SAMPLES: return integer(1);  // no multisampling
+    case MAX_SAMPLES: return integer(detail::kMaxSamples);
+    case MAX_SAMPLE_MASK_WORDS: return integer(1);
+    case SAMPLE_COVERAGE_VALUE: return put(Kind::kFloat, {s.ops.multisample.coverage_value});
+    case SAMPLE_COVERAGE_INVERT: return boolean(s.ops.multisample.coverage_invert);
+    case SAMPLE_MASK_VALUE: return integer(s.ops.multisample.mask);
+    case SAMPLES:
+    case SAMPLE_BUFFERS: {  // of the draw framebuffer (an incomplete one reports 0)
+      int samples = s.fb.samples;
+      if (s.draw_fbo)
+        samples = FramebufferStatus(*s.draw_fbo) == FRAMEBUFFER_COMPLETE ? FramebufferTarget(*s.draw_fbo).samples : 1;
+      return integer(pname == SAMPLES ? (samples > 1 ? samples : 0) : (samples > 1 ? 1 : 0));
+    }
     case MAX_TEXTURE_MAX_ANISOTROPY: return put(Kind::kFloat, {double(detail::kMaxAnisotropy)});
     case MAX_RENDERBUFFER_SIZE: return integer(kMaxFramebufferSize);
     case MAX_VIEWPORT_DIMS: return put(Kind::kInt, {double(kMaxFramebufferSize), double(kMaxFramebufferSize)});

@@ -64,6 +64,7 @@ inline bool IsUsage(Enum usage) { return usage >= 0x88E0 && usage <= 0x88EA && (
 struct Renderbuffer {
   detail::TextureLevel image;  // in its sized format (an unsized one resolved), with its stencil plane
   Enum internal_format = RGBA;  // as RenderbufferStorage was given it (RENDERBUFFER_INTERNAL_FORMAT)
+  int samples = 0;              // RENDERBUFFER_SAMPLES: 0, or the count image has (2, 4 or 8)
 };
 
 // What a framebuffer attachment point holds: a texture's level (of one cube face), a renderbuffer, or nothing.
@@ -232,6 +233,7 @@ struct ContextState {
   bool DrawTarget(detail::RenderTarget& target) {
     if (!draw_fbo) {
       target = fb.Target(framebuffer_srgb);
+      fb.resolve_pending = fb.samples > 1;  // what is drawn now changes the resolved image
       return true;
     }
     if (FramebufferStatus(*draw_fbo) != FRAMEBUFFER_COMPLETE) {

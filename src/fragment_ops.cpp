@@ -303,6 +303,19 @@ void BlendUnorm8(const BlendState& state, const glm::vec4& src, const std::uint8
   Blend8(Unorm8Blend(s, false), src, dst, out);
 }
 
+std::uint32_t CoverageMask(const MultisampleState& state, int samples) {
+  const int n = int(state.coverage_value * float(samples));  // value in [0, 1]: truncated, as Mesa does
+  const std::uint32_t all = (std::uint32_t(1) << samples) - 1, first = (std::uint32_t(1) << n) - 1;
+  return state.coverage_invert ? all & ~first : first;
+}
+
+std::uint32_t AlphaToCoverageMask(float alpha, int samples) {
+  std::uint32_t mask = 0;
+  for (int s = 0; s < samples; ++s)
+    if (alpha * float(samples) > float(s)) mask |= 1u << s;  // (NaN keeps none)
+  return mask;
+}
+
 bool EarlyDepthTestApplies(const FragmentOpsState& state, bool shader_writes_depth) {
   const Enum f = state.depth_func;
   return !shader_writes_depth && state.depth_test && !state.stencil_test &&

@@ -46,6 +46,27 @@ struct OcclusionCounter {
   std::atomic<std::uint64_t> passed{0};
 };
 
+/// Multisampling's state (OpenGL 4.6, sections 14.3.1 and 17.3.1): whether triangles cover each sample at its own
+/// position (MULTISAMPLE), and what narrows a fragment's samples after the shader.
+struct MultisampleState {
+  bool multisample = true;
+  bool alpha_to_coverage = false;
+  bool sample_coverage = false;
+  float coverage_value = 1.0f;  // SampleCoverage, clamped to [0, 1]
+  bool coverage_invert = false;
+  bool sample_mask = false;
+  std::uint32_t mask = ~0u;  // SampleMaski's word 0
+  bool operator==(const MultisampleState&) const = default;
+};
+
+/// The samples (bit s for sample s of `samples`) that SAMPLE_COVERAGE's value keeps: the first
+/// floor(value * samples), or the others when inverted (OpenGL leaves which to the implementation; Mesa's choice).
+std::uint32_t CoverageMask(const MultisampleState& state, int samples);
+/// The samples SAMPLE_ALPHA_TO_COVERAGE keeps for `alpha`: sample s where alpha > s / samples, so 0 (or NaN) keeps
+/// none and any alpha above (samples - 1) / samples all (OpenGL leaves the mapping to the implementation; this is
+/// llvmpipe's).
+std::uint32_t AlphaToCoverageMask(float alpha, int samples);
+
 struct FragmentOpsState {
   OcclusionCounter* occlusion[2] = {nullptr, nullptr};  // the active occlusion queries' counters (null: none)
   bool stencil_test = false;
@@ -55,6 +76,7 @@ struct FragmentOpsState {
   bool depth_write = true;
   BlendState blend;
   bool color_mask[4] = {true, true, true, true};
+  MultisampleState multisample;
   bool operator==(const FragmentOpsState&) const = default;
 };
 

@@ -50,7 +50,45 @@ void ColorBuffer::Store(int x, int y, const glm::vec4& c, const bool mask[4]) co
   }
 }
 
+int SupportedSamples(int requested) {
+  return requested <= 0 ? 1 : requested <= 2 ? 2 : requested <= 4 ? 4 : 8;
+}
+
+RenderTarget RenderTarget::Sample(int s) const {
+  RenderTarget t = *this;
+  t.samples = 1;
+  for (ColorBuffer& cb : t.color)
+    if (cb.Present()) cb.data += cb.plane * std::size_t(s) * std::size_t(cb.Bytes());
+  if (depth) t.depth += depth_plane * std::size_t(s);
+  if (stencil) t.stencil += stencil_plane * std::size_t(s);
+  return t;
+}
+
+glm::vec4 LoadResolved(const ColorBuffer& cb, int samples, int x, int y) {
+  if (IsUnorm8(cb.layout) && !cb.srgb) {  // bytes: their average rounded half up, exactly
+    glm::vec4 out = cb.Load(x, y);
+    const int n = cb.layout == TexelLayout::kUnorm8x4 ? (cb.rgb_only ? 3 : 4) : cb.layout == TexelLayout::kUnorm8x2 ? 2 : 1;
+    for (int k = 0; k < n; ++k) {
+      int sum = 0;
+      for (int s = 0; s < samples; ++s) sum += cb.data[(cb.plane * std::size_t(s) + cb.Index(x, y)) * std::size_t(cb.Bytes()) + std::size_t(k)];
+      out[k] = float((sum * 2 + samples) / (2 * samples)) / 255.0f;
+    }
+    return out;
+  }
+  glm::vec4 sum(0.0f);
+  ColorBuffer plane = cb;
+  for (int s = 0; s < samples; ++s) {
+    plane.data = cb.data + cb.plane * std::size_t(s) * std::size_t(cb.Bytes());
+    sum += plane.Load(x, y);
+  }
+  return sum / float(samples);
+}
+
 void RenderTarget::ClearColor(const Rect& r, const glm::vec4& value, const bool mask[4]) const {
+  if (samples > 1) {
+    for (int s = 0; s < samples; ++s) Sample(s).ClearColor(r, value, mask);
+    return;
+  }
   for (const ColorBuffer& cb : color) {
     if (!cb.Present() || r.Empty()) continue;
     if (cb.layout == TexelLayout::kUnorm8x4) {
@@ -90,11 +128,19 @@ void RenderTarget::ClearColor(const Rect& r, const glm::vec4& value, const bool 
 
 void RenderTarget::ClearDepth(const Rect& r, float value) const {
   if (!depth || r.Empty()) return;
+  if (samples > 1) {
+    for (int s = 0; s < samples; ++s) Sample(s).ClearDepth(r, value);
+    return;
+  }
   for (int y = r.y0; y < r.y1; ++y) std::fill_n(&Depth(r.x0, y), r.x1 - r.x0, value);
 }
 
 void RenderTarget::ClearStencil(const Rect& r, std::uint8_t value, std::uint8_t write_mask) const {
   if (!stencil || r.Empty()) return;
+  if (samples > 1) {
+    for (int s = 0; s < samples; ++s) Sample(s).ClearStencil(r, value, write_mask);
+    return;
+  }
   for (int y = r.y0; y < r.y1; ++y) {
     if (write_mask == 0xFF) {  // every bit written: a fill of the row
       std::memset(&Stencil(r.x0, y), value, std::size_t(r.x1 - r.x0));
@@ -134,8 +180,68 @@ int PixelAt(double c, int size) {
 
 }  // namespace
 
+namespace {
+
+// out[i] = the average of in[i + s * plane] over the S planes, rounded half up.
+template <int S>
+void AverageBytes(const std::uint8_t* in, std::size_t plane, std::uint8_t* out, int n) {
+  constexpr int kShift = S == 2 ? 1 : S == 4 ? 2 : 3;
+  for (int i = 0; i < n; ++i) {
+    unsigned sum = S / 2;
+    for (int s = 0; s < S; ++s) sum += in[std::size_t(s) * plane + std::size_t(i)];
+    out[i] = std::uint8_t(sum >> kShift);
+  }
+}
+
+// Resolves rows [y0, y1) x columns [x0, x1) of a multisampled source into the same pixels of dst (an unmirrored
+// blit of equal rectangles, offset by (dx, dy)): bytes of RGBA8 into RGBA8 averaged in integers (rounded half
+// up), depth and stencil copied from sample 0, other colour formats through LoadResolved. False, doing nothing,
+// when a colour buffer of dst is neither RGBA8 nor absent (the caller's general path handles it).
+bool ResolveRows(const RenderTarget& src, const RenderTarget& dst, const BlitRegion& r, int x0, int x1, int y0, int y1,
+                 int dx, int dy) {
+  const ColorBuffer& from = src.color[0];
+  if (r.color && (!from.Rgba8()))
+    return false;
+  for (const ColorBuffer& cb : dst.color)
+    if (r.color && cb.Present() && !cb.Rgba8()) return false;
+  const int n = x1 - x0;
+  const std::size_t plane_bytes = from.plane * 4;
+  for (int y = y0; y < y1; ++y) {
+    if (r.color) {
+      const std::uint8_t* in = from.At(x0 - dx, y - dy);
+      for (const ColorBuffer& cb : dst.color) {
+        if (!cb.Present()) continue;
+        std::uint8_t* out = cb.At(x0, y);
+        switch (src.samples) {
+          case 2: AverageBytes<2>(in, plane_bytes, out, 4 * n); break;
+          case 4: AverageBytes<4>(in, plane_bytes, out, 4 * n); break;
+          default: AverageBytes<8>(in, plane_bytes, out, 4 * n); break;
+        }
+      }
+    }
+    if (r.depth) std::memcpy(&dst.Depth(x0, y), &src.Depth(x0 - dx, y - dy), sizeof(float) * std::size_t(n));
+    if (r.stencil) std::memcpy(&dst.Stencil(x0, y), &src.Stencil(x0 - dx, y - dy), std::size_t(n));
+  }
+  return true;
+}
+
+}  // namespace
+
 void Blit(const RenderTarget& src, const RenderTarget& dst, const BlitRegion& r) {
   if (r.src[0] == r.src[2] || r.src[1] == r.src[3] || r.dst[0] == r.dst[2] || r.dst[1] == r.dst[3]) return;
+  if (dst.samples > 1) {  // sample by sample from a source of as many, else the same value into each
+    for (int s = 0; s < dst.samples; ++s) Blit(src.samples == dst.samples ? src.Sample(s) : src, dst.Sample(s), r);
+    return;
+  }
+  if (src.samples > 1 && r.src[2] - r.src[0] == r.dst[2] - r.dst[0] && r.src[3] - r.src[1] == r.dst[3] - r.dst[1] &&
+      r.src[2] > r.src[0] && r.src[3] > r.src[1]) {
+    // A resolve of the same rectangle unmirrored: rows at a time, clipped to both buffers.
+    const int dx = r.dst[0] - r.src[0], dy = r.dst[1] - r.src[1];
+    const int x0 = std::max({r.dst[0], r.clip.x0, 0, dx}), x1 = std::min({r.dst[2], r.clip.x1, dst.width, src.width + dx});
+    const int y0 = std::max({r.dst[1], r.clip.y0, 0, dy}), y1 = std::min({r.dst[3], r.clip.y1, dst.height, src.height + dy});
+    if (x0 >= x1 || y0 >= y1) return;
+    if (ResolveRows(src, dst, r, x0, x1, y0, y1, dx, dy)) return;
+  }
   const BlitAxis ax =
       MakeAxis(r.src[0], r.src[2], r.dst[0], r.dst[2], std::max(r.clip.x0, 0), std::min(r.clip.x1, dst.width));
   const BlitAxis ay =
@@ -161,6 +267,8 @@ void Blit(const RenderTarget& src, const RenderTarget& dst, const BlitRegion& r)
           const ColorBuffer& cb = src.color[0];
           c = (1.0f - b) * ((1.0f - a) * cb.Load(ic, jc) + a * cb.Load(i1, jc)) +
               b * ((1.0f - a) * cb.Load(ic, j1) + a * cb.Load(i1, j1));
+        } else if (src.samples > 1) {
+          c = LoadResolved(src.color[0], src.samples, px, py);
         } else {
           c = src.color[0].Load(px, py);
         }
@@ -178,15 +286,23 @@ bool Framebuffer::Allocate(int w, int h) {
   color.clear();
   depth.clear();
   stencil.clear();
-  const std::size_t n = std::size_t(w) * std::size_t(h);
+  resolved = {};
+  resolve_pending = false;
+  const std::size_t n = std::size_t(w) * std::size_t(h), ns = n * std::size_t(samples);
   try {
-    color.assign(n * std::size_t(BytesPerTexel(layout)), 0);
-    depth.assign(n, 1.0f);
-    stencil.assign(n, 0);
+    color.assign(ns * std::size_t(BytesPerTexel(layout)), 0);
+    depth.assign(ns, 1.0f);
+    stencil.assign(ns, 0);
+    if (samples > 1) {
+      resolved.color.assign(n * std::size_t(BytesPerTexel(layout)), 0);
+      resolved.depth.assign(n, 1.0f);
+      resolved.stencil.assign(n, 0);
+    }
   } catch (const std::bad_alloc&) {
     color = {};
     depth = {};
     stencil = {};
+    resolved = {};
     return false;
   }
   width = w;
@@ -207,8 +323,31 @@ RenderTarget Framebuffer::Target(bool srgb_enabled) {
     t.depth_pitch = width;
     t.stencil = stencil.data();
     t.stencil_pitch = width;
+    t.samples = samples;
+    t.color[0].plane = t.depth_plane = t.stencil_plane = std::size_t(width) * std::size_t(height);
   }
   return t;
+}
+
+RenderTarget Framebuffer::ReadTarget(bool srgb_enabled) {
+  RenderTarget t = Target(srgb_enabled);
+  if (samples <= 1 || width <= 0 || height <= 0) return t;
+  RenderTarget out = t.Sample(0);
+  out.color[0].data = resolved.color.data();
+  out.depth = resolved.depth.data();
+  out.stencil = resolved.stencil.data();
+  if (resolve_pending) {
+    BlitRegion all;
+    all.src[2] = all.dst[2] = width;
+    all.src[3] = all.dst[3] = height;
+    all.clip = Rect{0, 0, width, height};
+    all.color = all.depth = all.stencil = true;
+    RenderTarget raw = t, into = out;
+    raw.color[0].srgb = into.color[0].srgb = false;  // the bytes averaged as stored
+    Blit(raw, into, all);
+    resolve_pending = false;
+  }
+  return out;
 }
 
 }  // namespace softgl::detail

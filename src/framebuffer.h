@@ -23,6 +23,7 @@ struct ColorBuffer {
   // An sRGB buffer (SRGB8_ALPHA8, SRGB8) while FRAMEBUFFER_SRGB is enabled: Store encodes the colour channels from
   // linear, Load decodes them (OpenGL 4.6, section 17.3.7). Else an sRGB buffer's bytes are taken as they are.
   bool srgb = false;
+  std::size_t plane = 0;  // texels from one sample's plane to the next (a multisampled buffer)
   bool Present() const { return data != nullptr; }
   bool Rgba8() const { return layout == TexelLayout::kUnorm8x4 && !rgb_only && !srgb; }
   int Bytes() const { return BytesPerTexel(layout); }
@@ -38,9 +39,18 @@ struct ColorBuffer {
   bool Normalized() const { return IsUnorm8(layout); }
 };
 
+/// The sample count a buffer asked for `requested` samples gets: 0 gives 1 (single-sampled); 1 and 2 give 2, 3 and
+/// 4 give 4, 5 to 8 give 8 (the smallest supported count not below the request, as OpenGL requires).
+int SupportedSamples(int requested);
+
 /// The buffers drawing writes to; color[i] receives fragment output i (draw buffers already applied).
+/// A multisampled target keeps each buffer as `samples` planes of width x height, one per sample, one after
+/// another; Sample(s) is the single-sampled view of plane s.
 struct RenderTarget {
   int width = 0, height = 0;
+  int samples = 1;                  // 1, 2, 4 or 8
+  std::size_t depth_plane = 0;      // depth values from one sample's plane to the next
+  std::size_t stencil_plane = 0;    // stencil values from one sample's plane to the next
   ColorBuffer color[kMaxColorOutputs];
   float* depth = nullptr;           // null: no depth buffer (the depth test then always passes)
   int depth_pitch = 0;              // depth values from one row to the next
@@ -52,30 +62,47 @@ struct RenderTarget {
     return stencil[std::size_t(y) * std::size_t(stencil_pitch) + std::size_t(x)];
   }
 
-  /// Clears rectangle r (inside the target) of every colour buffer through `mask`.
+  /// Plane s of every buffer, as a single-sampled target.
+  RenderTarget Sample(int s) const;
+
+  /// Clears rectangle r (inside the target) of every colour buffer through `mask` (every sample).
   void ClearColor(const Rect& r, const glm::vec4& value, const bool mask[4]) const;
   void ClearDepth(const Rect& r, float value) const;
   /// Clears the stencil bits of write_mask in rectangle r.
   void ClearStencil(const Rect& r, std::uint8_t value, std::uint8_t write_mask) const;
 };
 
-/// The context's own framebuffer.
+/// The context's own framebuffer. With samples > 1 the buffers drawing writes hold `samples` planes, and
+/// `resolved` the single-sampled image reads see, made by Resolve.
 struct Framebuffer {
   int width = 0;
   int height = 0;
+  int samples = 1;
   TexelLayout layout = TexelLayout::kUnorm8x4;  // of the colour buffer: kUnorm8x4 (RGBA8) or kUnorm565 (RGB565)
   bool srgb = false;  // the colour buffer is SRGB8_ALPHA8: it converts while FRAMEBUFFER_SRGB is enabled
   std::vector<std::uint8_t> color;  // [height][width][bytes of the layout]
   std::vector<float> depth;         // [height][width]
   std::vector<std::uint8_t> stencil;
+  struct Resolved {
+    std::vector<std::uint8_t> color;
+    std::vector<float> depth;
+    std::vector<std::uint8_t> stencil;
+  } resolved;  // samples > 1: the image as read (colour the samples' average, depth and stencil sample 0's)
+  bool resolve_pending = false;  // drawing may have changed the samples since the last Resolve
 
-  /// Allocates width x height pixels (colour 0, depth 1, stencil 0). Returns false, leaving a 0 x 0 framebuffer,
-  /// if the memory cannot be had.
+  /// Allocates width x height pixels of `samples` samples each (colour 0, depth 1, stencil 0). Returns false,
+  /// leaving a 0 x 0 framebuffer, if the memory cannot be had.
   bool Allocate(int w, int h);
   std::size_t Index(int x, int y) const { return std::size_t(y) * std::size_t(width) + std::size_t(x); }
   /// The buffers as a render target; `srgb_enabled`: FRAMEBUFFER_SRGB (an sRGB colour buffer then converts).
   RenderTarget Target(bool srgb_enabled = false);
+  /// The single-sampled image reads take: Target itself when samples is 1, else `resolved`, brought up to date
+  /// first when resolve_pending.
+  RenderTarget ReadTarget(bool srgb_enabled = false);
 };
+
+/// Averages the samples of pixel (x, y) of a multisampled colour buffer (as Load reads them).
+glm::vec4 LoadResolved(const ColorBuffer& cb, int samples, int x, int y);
 
 /// One BlitFramebuffer, checked: rectangles (x0, y0, x1, y1) of the source and the destination (either may be
 /// reversed, which mirrors the image), the destination pixels that may be written, and which buffers go.
@@ -88,7 +115,9 @@ struct BlitRegion {
 };
 
 /// Copies src's color[0] into each of dst's colour buffers, and depth and stencil, as BlitFramebuffer does
-/// (OpenGL 4.6, section 18.3.1): each destination pixel whose centre lies in the destination rectangle takes the
+/// (OpenGL 4.6, section 18.3.1). A multisampled source is resolved (colour averaged, depth and stencil of sample 0;
+/// the caller has checked that the rectangles are the same size), a multisampled destination takes the value in
+/// every sample (or, from a source of as many samples, sample by sample): each destination pixel whose centre lies in the destination rectangle takes the
 /// source at the corresponding point (scaled and mirrored by the two rectangles): with NEAREST the pixel holding
 /// that point, with LINEAR (colour only) the bilinear mix of the four nearest pixel centres, clamped to the read
 /// buffer's edge. A destination pixel whose point lies outside the read buffer is not written (the blit is

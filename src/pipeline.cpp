@@ -162,7 +162,8 @@ class PrimitiveRunner {
   // there, to be binned by Known(). Triangle() would decide each of them the same way; the others go through it.
   void Judge(const std::uint32_t (*v)[4], int n, GroupVerdict& verdict) const {
     verdict.nothing = verdict.known = 0;
-    if (state_.primitive.polygon_mode != FILL) return;
+    // (The group test knows pixel centres only: triangles covering samples go one by one.)
+    if (state_.primitive.polygon_mode != FILL || state_.samples > 1) return;
     TriangleGroup group;
     group.count = n;
     std::uint32_t inside = 0;
@@ -220,7 +221,8 @@ class PrimitiveRunner {
       if (!Facing(count)) return;
       // A filled triangle that covers no pixel centre draws nothing: not binned at all.
       const bool fill = state_.primitive.polygon_mode == FILL;
-      const Rect box = fill ? TriangleCentreBox(win_[0].win, win_[1].win, win_[2].win, state_.bounds) : Rect{};
+      const Rect box =
+          fill ? TriangleCentreBox(win_[0].win, win_[1].win, win_[2].win, state_.bounds, state_.samples) : Rect{};
       if (fill && box.Empty()) return;
       const float* var = sv_.window_varyings.data();
       const std::size_t nvar = std::size_t(sv_.nvar);
@@ -309,7 +311,8 @@ class PrimitiveRunner {
           p.kind = PrimitiveKind::kTriangle;
           p.front_facing = front;
           p.depth_offset = depth_offset_;
-          bins_.Add(p, fan, TriangleCentreBox(fan[0].win, fan[1].win, fan[2].win, state_.bounds), grid_);
+          bins_.Add(p, fan, TriangleCentreBox(fan[0].win, fan[1].win, fan[2].win, state_.bounds, state_.samples),
+                    grid_);
         }
         break;
     }

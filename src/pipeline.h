@@ -50,6 +50,7 @@ struct DrawState {
   const Textures* textures = nullptr;  // what the vertex stage samples
   const Interpolation* interpolation = nullptr;  // the program's varying qualifiers (null: all smooth)
   std::uint64_t* primitives_generated = nullptr;  // counts the assembled primitives (PRIMITIVES_GENERATED query)
+  int samples = 1;  // samples whose coverage triangles compute (RasterTarget::samples)
 };
 
 /// The vertices a draw reads: either `count` consecutive vertices from `first`, or `count` element indices.

@@ -19,6 +19,20 @@
 
 namespace softgl::detail {
 
+const std::uint8_t (*SamplePositions(int samples))[2] {
+  // In 1/16 pixel, y up from the pixel's bottom edge.
+  static constexpr std::uint8_t kCentre[1][2] = {{8, 8}};
+  static constexpr std::uint8_t k2[2][2] = {{12, 12}, {4, 4}};
+  static constexpr std::uint8_t k4[4][2] = {{6, 2}, {14, 6}, {2, 10}, {10, 14}};
+  static constexpr std::uint8_t k8[8][2] = {{9, 5}, {7, 11}, {13, 9}, {5, 3}, {3, 13}, {1, 7}, {11, 15}, {15, 1}};
+  switch (samples) {
+    case 2: return k2;
+    case 4: return k4;
+    case 8: return k8;
+    default: return kCentre;
+  }
+}
+
 namespace {
 
 constexpr std::int64_t kOne = std::int64_t(1) << kSubpixelBits;
@@ -50,8 +64,16 @@ int AddSquare(BlockBuffer& blocks, const BlockSink& sink, bool front_facing, int
     blocks.qy[b][q] = by + (q >> 1) * 2;
   }
   blocks.live[b] = 0xFFFFu;
+  for (int s = 0; s < blocks.samples; ++s) blocks.sample_live[b][s] = 0xFFFFu;
   for (int q = 0; q < 4; ++q) blocks.quad_planes[b][q] = nullptr;
   return b;
+}
+
+// A multisampled target's quad in slot `slot` of block b: every sample of the lanes in `mask` covered.
+inline void SetSampleLanes(BlockBuffer& blocks, int b, int slot, unsigned mask) {
+  const std::uint32_t clear = ~(std::uint32_t(0xF) << (4 * slot));
+  for (int s = 0; s < blocks.samples; ++s)
+    blocks.sample_live[b][s] = (blocks.sample_live[b][s] & clear) | (std::uint32_t(mask) << (4 * slot));
 }
 
 // The block of the buffer that may hold quads of earlier primitives when a primitive starts: the last one, in the
@@ -69,7 +91,7 @@ struct OpenBlock {
 // no quad at that place and has this facing; else a new block (the buffer flushed first when full). Returns the
 // block and sets `slot` to the quad's place in it.
 inline int AddQuad(BlockBuffer& blocks, const BlockSink& sink, bool front_facing, int nvar, int qx, int qy,
-                   unsigned mask, int& slot, const OpenBlock& open = OpenBlock()) {
+                   unsigned mask, int& slot, const OpenBlock& open = OpenBlock(), bool all_samples = true) {
   int b = blocks.count - 1;
   bool fresh = b < 0 || blocks.quads[b] == 4 || blocks.front_facing != front_facing;
   if (!fresh && open.MayHoldOthers(blocks, b))
@@ -91,6 +113,7 @@ inline int AddQuad(BlockBuffer& blocks, const BlockSink& sink, bool front_facing
   blocks.qy[b][slot] = qy;
   blocks.quad_planes[b][slot] = nullptr;
   blocks.live[b] |= std::uint32_t(mask) << (4 * slot);
+  if (blocks.samples > 1 && all_samples) SetSampleLanes(blocks, b, slot, mask);
   return b;
 }
 
@@ -285,6 +308,50 @@ SOFTGL_TARGET_AVX2 std::uint64_t RegionCoverageAvx2(const RegionEdges& e) { retu
 SOFTGL_TARGET_AVX512 std::uint64_t RegionCoverageAvx512(const RegionEdges& e) { return RegionCoverage<8>(e); }
 #endif
 
+// RegionCoverage for several samples at once, every edge tested (a small triangle's: all values fit 32 bits):
+// edge e at sample s of the region's pixel (ix, iy) is c00[e] + delta[s][e] + ix sx[e] + iy sy[e]; bits[s] the
+// lanes inside at sample s, in RegionCoverage's order, quad rows row0 to row1.
+struct SampleEdges {  // (left uninitialized: every field is set before use, the deltas of `samples` samples)
+  int samples;
+  std::int32_t c00[3], sx[3], sy[3];
+  std::int32_t delta[kMaxSamples][3];
+  int row0, row1;
+  bool left_half;  // only the region's left four columns are needed (the others' bits are left 0)
+};
+template <int W>
+SOFTGL_WIDE void SampleRegionCoverage(const SampleEdges& edges, std::uint64_t bits[kMaxSamples]) {
+  using I = typename V<W>::I;
+  constexpr int kChunks = 16 / W;
+  I value[3][kChunks];
+  for (int e = 0; e < 3; ++e)
+    for (int c = 0; c < kChunks; ++c) {
+      const I ix = LoadVec<I>(kRegionX + c * W), iy = LoadVec<I>(kRegionY + c * W);
+      value[e][c] = (edges.c00[e] + 2 * edges.row0 * edges.sy[e]) + ix * edges.sx[e] + iy * edges.sy[e];
+    }
+  for (int s = 0; s < edges.samples; ++s) bits[s] = 0;
+  const int chunks = edges.left_half && W == 8 ? 1 : kChunks;  // (W = 8: a chunk is two quads, four columns)
+  for (int row = edges.row0; row <= edges.row1; ++row) {
+    for (int c = 0; c < chunks; ++c) {
+      for (int s = 0; s < edges.samples; ++s) {
+        const I outside = (value[0][c] + edges.delta[s][0]) | (value[1][c] + edges.delta[s][1]) |
+                          (value[2][c] + edges.delta[s][2]);
+        bits[s] |= std::uint64_t(MaskToBits<W>(~outside >> 31, 0)) << (row * 16 + c * W);
+      }
+      for (int e = 0; e < 3; ++e) value[e][c] += 2 * edges.sy[e];
+    }
+  }
+}
+using SampleCoverageFn = void (*)(const SampleEdges&, std::uint64_t*);
+void SampleRegionCoverageBase(const SampleEdges& e, std::uint64_t* bits) { SampleRegionCoverage<4>(e, bits); }
+#if defined(SOFTGL_HAS_DISPATCH)
+SOFTGL_TARGET_AVX2 void SampleRegionCoverageAvx2(const SampleEdges& e, std::uint64_t* bits) {
+  SampleRegionCoverage<8>(e, bits);
+}
+SOFTGL_TARGET_AVX512 void SampleRegionCoverageAvx512(const SampleEdges& e, std::uint64_t* bits) {
+  SampleRegionCoverage<8>(e, bits);
+}
+#endif
+
 // The lanes (in RegionCoverage's order) of the region's pixels with ix in [x0, x1) and iy in [y0, y1), 0 <= x0, y0
 // and x1, y1 <= 8: from tables of the lanes left of each column and below each row.
 struct RegionMasks {
@@ -378,17 +445,157 @@ std::int64_t SnappedArea(const std::int64_t X[3], const std::int64_t Y[3]) {
 // and floor((hi - 1/2) / kOne), by arithmetic shifts (which round towards minus infinity).
 std::int64_t FirstCentre(std::int64_t lo) { return -((kHalf - lo) >> kSubpixelBits); }
 std::int64_t LastCentre(std::int64_t hi) { return (hi - kHalf) >> kSubpixelBits; }
+// The same for points at offset o (snapped units) into each pixel: the first pixel i with i + o >= lo, the last
+// with i + o <= hi.
+std::int64_t FirstAt(std::int64_t lo, std::int64_t o) { return -((o - lo) >> kSubpixelBits); }
+std::int64_t LastAt(std::int64_t hi, std::int64_t o) { return (hi - o) >> kSubpixelBits; }
+
+// The smallest and largest offsets (snapped units) of a pixel's sample positions in x and y.
+struct SampleSpan {
+  std::int64_t x0 = kHalf, x1 = kHalf, y0 = kHalf, y1 = kHalf;
+  explicit SampleSpan(int samples) {
+    if (samples <= 1) return;
+    const auto* pos = SamplePositions(samples);
+    x0 = y0 = kOne;
+    x1 = y1 = 0;
+    for (int s = 0; s < samples; ++s) {
+      const std::int64_t x = pos[s][0] * (kOne / 16), y = pos[s][1] * (kOne / 16);
+      x0 = std::min(x0, x);
+      x1 = std::max(x1, x);
+      y0 = std::min(y0, y);
+      y1 = std::max(y1, y);
+    }
+  }
+};
+
+// The samples of a triangle whose edge functions are A x + B y + C (snapped units, tie rule folded into C; > =
+// 0 inside) over the pixels of `box` (every one inside `bounds`), 8x8 regions at a time: `emit(qx, qy, mask,
+// sample_masks)` for each quad with some sample covered, mask its lanes with any, sample_masks[s] its lanes with
+// sample s. Each sample's test is the exact integer test of a pixel centre, at the sample's position.
+// `small`: the triangle's samples all lie in one region (from the box's first quad) even before the bounds cut it,
+// so that its vertices lie within a few pixels and all its edge values there fit 32 bits.
+// A region every sample of every pixel of which is covered goes to `square(bx, by)` as four 4x4 squares instead.
+template <class Emit, class Square>
+void RasterizeSamples(const std::int64_t A[3], const std::int64_t B[3], const std::int64_t C[3], const Rect& box,
+                      int samples, bool small, Emit&& emit, Square&& square) {
+  constexpr int kRegion = 8;
+  static const SampleCoverageFn sample_coverage = SOFTGL_CHOOSE(SampleRegionCoverage);
+  const auto* pos = SamplePositions(samples);
+  auto emit_region = [&](std::int64_t rx, std::int64_t ry, std::uint64_t any, const std::uint64_t* cover) {
+    while (any) {
+      const int q = __builtin_ctzll(any) >> 2;
+      const unsigned mask = unsigned(any >> (4 * q)) & 0xFu;
+      any &= ~(std::uint64_t(0xF) << (4 * q));
+      std::uint32_t lanes[kMaxSamples];
+      for (int s = 0; s < samples; ++s) lanes[s] = std::uint32_t(cover[s] >> (4 * q)) & 0xFu;
+      emit(int(rx) + (q & 3) * 2, int(ry) + (q >> 2) * 2, mask, lanes);
+    }
+  };
+  if (small) {
+    const std::int64_t rx = box.x0 & ~1, ry = box.y0 & ~1;
+    SampleEdges edges;
+    edges.samples = samples;
+    for (int e = 0; e < 3; ++e) {
+      edges.c00[e] = std::int32_t(A[e] * rx * kOne + B[e] * ry * kOne + C[e]);
+      edges.sx[e] = std::int32_t(A[e] * kOne);
+      edges.sy[e] = std::int32_t(B[e] * kOne);
+      for (int s = 0; s < samples; ++s)
+        edges.delta[s][e] = std::int32_t(A[e] * (pos[s][0] * (kOne / 16)) + B[e] * (pos[s][1] * (kOne / 16)));
+    }
+    edges.row0 = 0;
+    edges.row1 = int(box.y1 - 1 - ry) >> 1;
+    edges.left_half = box.x1 - rx <= 4;
+    std::uint64_t cover[kMaxSamples], any = 0;
+    sample_coverage(edges, cover);
+    const std::uint64_t cut = RegionRect(int(box.x0 - rx), int(box.x1 - rx), int(box.y0 - ry), int(box.y1 - ry));
+    for (int s = 0; s < samples; ++s) any |= cover[s] &= cut;
+    emit_region(rx, ry, any, cover);
+    return;
+  }
+  // Edge e at sample s of pixel (px, py) is A (px kOne + ox_s) + B (py kOne + oy_s) + C: its value at the
+  // region's first pixel, base, plus delta[s][e] for the sample, plus steps. Over a region an edge lies between
+  // base + lo[e] and base + hi[e] at every sample: the region is skipped when some edge is below 0 there, and
+  // an edge at or above 0 there is left out of the test.
+  std::int64_t step_x[3], step_y[3], lo[3], hi[3], delta[kMaxSamples][3];
+  bool narrow = true;
+  for (int e = 0; e < 3; ++e) {
+    step_x[e] = A[e] * kOne;
+    step_y[e] = B[e] * kOne;
+    constexpr std::int64_t kLimit = std::int64_t(1) << 26;
+    narrow = narrow && step_x[e] <= kLimit && step_x[e] >= -kLimit && step_y[e] <= kLimit && step_y[e] >= -kLimit;
+    const std::int64_t dx = step_x[e] * (kRegion - 1), dy = step_y[e] * (kRegion - 1);
+    std::int64_t dmin = INT64_MAX, dmax = INT64_MIN;
+    for (int s = 0; s < samples; ++s) {
+      delta[s][e] = A[e] * (pos[s][0] * (kOne / 16)) + B[e] * (pos[s][1] * (kOne / 16));
+      dmin = std::min(dmin, delta[s][e]);
+      dmax = std::max(dmax, delta[s][e]);
+    }
+    lo[e] = std::min<std::int64_t>(dx, 0) + std::min<std::int64_t>(dy, 0) + dmin;
+    hi[e] = std::max<std::int64_t>(dx, 0) + std::max<std::int64_t>(dy, 0) + dmax;
+  }
+  // (A crossing edge's values there lie within hi - lo <= 8 (|sx| + |sy|) of 0: 32 bits while narrow.)
+  const std::int64_t qx_first = box.x0 & ~1, qy_first = box.y0 & ~1;
+  for (std::int64_t ry = qy_first; ry < box.y1; ry += kRegion) {
+    for (std::int64_t rx = qx_first; rx < box.x1; rx += kRegion) {
+      bool skip = false, whole = true;
+      std::int64_t base[3];
+      for (int e = 0; e < 3 && !skip; ++e) {
+        base[e] = A[e] * rx * kOne + B[e] * ry * kOne + C[e];
+        skip = base[e] + hi[e] < 0;
+        whole = whole && base[e] + lo[e] >= 0;
+      }
+      if (skip) continue;
+      const bool inside = rx >= box.x0 && rx + kRegion <= box.x1 && ry >= box.y0 && ry + kRegion <= box.y1;
+      if (whole && inside) {
+        for (int sq = 0; sq < 4; ++sq) square(int(rx) + (sq & 1) * 4, int(ry) + (sq >> 1) * 4);
+        continue;
+      }
+      const std::uint64_t cut = RegionRect(int(std::max<std::int64_t>(box.x0 - rx, 0)),
+                                           int(std::min<std::int64_t>(box.x1 - rx, kRegion)),
+                                           int(std::max<std::int64_t>(box.y0 - ry, 0)),
+                                           int(std::min<std::int64_t>(box.y1 - ry, kRegion)));
+      std::uint64_t cover[kMaxSamples], any = 0;
+      if (narrow) {
+        SampleEdges edges;
+        edges.samples = samples;
+        for (int e = 0; e < 3; ++e) {
+          const bool test = base[e] + lo[e] < 0;  // else inside at every sample: 0 everywhere
+          edges.c00[e] = test ? std::int32_t(base[e]) : 0;
+          edges.sx[e] = test ? std::int32_t(step_x[e]) : 0;
+          edges.sy[e] = test ? std::int32_t(step_y[e]) : 0;
+          for (int s = 0; s < samples; ++s) edges.delta[s][e] = test ? std::int32_t(delta[s][e]) : 0;
+        }
+        edges.row0 = int((std::max<std::int64_t>(ry, box.y0) - ry) >> 1);  // the quad rows of the box
+        edges.row1 = int((std::min<std::int64_t>(ry + kRegion, box.y1) - 1 - ry) >> 1);
+        edges.left_half = box.x1 - rx <= 4;
+        sample_coverage(edges, cover);
+      } else {  // steep edges: each lane in 64 bits
+        for (int s = 0; s < samples; ++s) {
+          cover[s] = 0;
+          for (int l = 0; l < 64; ++l) {
+            bool in = true;
+            for (int e = 0; e < 3; ++e) in = in && base[e] + delta[s][e] + kRegionX[l] * step_x[e] + kRegionY[l] * step_y[e] >= 0;
+            if (in) cover[s] |= std::uint64_t(1) << l;
+          }
+        }
+      }
+      for (int s = 0; s < samples; ++s) any |= cover[s] &= cut;
+      emit_region(rx, ry, any, cover);
+    }
+  }
+}
 
 }  // namespace
 
-Rect TriangleCentreBox(const glm::vec4& a, const glm::vec4& b, const glm::vec4& c, const Rect& bounds) {
+Rect TriangleCentreBox(const glm::vec4& a, const glm::vec4& b, const glm::vec4& c, const Rect& bounds, int samples) {
   const glm::vec4* const p[3] = {&a, &b, &c};
   std::int64_t X[3], Y[3];
   if (!Snap(p, X, Y) || SnappedArea(X, Y) == 0) return Rect{};
-  const Rect r{int(std::max<std::int64_t>(FirstCentre(std::min({X[0], X[1], X[2]})), bounds.x0)),
-               int(std::max<std::int64_t>(FirstCentre(std::min({Y[0], Y[1], Y[2]})), bounds.y0)),
-               int(std::min<std::int64_t>(LastCentre(std::max({X[0], X[1], X[2]})) + 1, bounds.x1)),
-               int(std::min<std::int64_t>(LastCentre(std::max({Y[0], Y[1], Y[2]})) + 1, bounds.y1))};
+  const SampleSpan span(samples);
+  const Rect r{int(std::max<std::int64_t>(FirstAt(std::min({X[0], X[1], X[2]}), span.x1), bounds.x0)),
+               int(std::max<std::int64_t>(FirstAt(std::min({Y[0], Y[1], Y[2]}), span.y1), bounds.y0)),
+               int(std::min<std::int64_t>(LastAt(std::max({X[0], X[1], X[2]}), span.x0) + 1, bounds.x1)),
+               int(std::min<std::int64_t>(LastAt(std::max({Y[0], Y[1], Y[2]}), span.y0) + 1, bounds.y1))};
   return r.Empty() ? Rect{} : r;
 }
 
@@ -420,13 +627,14 @@ void RasterizeTriangle(const VertexView& v0, const VertexView& v1, const VertexV
     C[i] = -A[i] * X[i] - B[i] * Y[i] - (owns_ties ? 0 : 1);
   }
 
-  // Pixel range whose centres lie in the snapped bounding box, clipped to the target bounds.
+  // Pixel range whose centres (samples) lie in the snapped bounding box, clipped to the target bounds.
   const std::int64_t minX = std::min({X[0], X[1], X[2]}), maxX = std::max({X[0], X[1], X[2]});
   const std::int64_t minY = std::min({Y[0], Y[1], Y[2]}), maxY = std::max({Y[0], Y[1], Y[2]});
-  const std::int64_t px0 = std::max<std::int64_t>(FirstCentre(minX), target.bounds.x0);
-  const std::int64_t px1 = std::min<std::int64_t>(LastCentre(maxX), target.bounds.x1 - 1);
-  const std::int64_t py0 = std::max<std::int64_t>(FirstCentre(minY), target.bounds.y0);
-  const std::int64_t py1 = std::min<std::int64_t>(LastCentre(maxY), target.bounds.y1 - 1);
+  const SampleSpan span(target.samples);
+  const std::int64_t px0 = std::max<std::int64_t>(FirstAt(minX, span.x1), target.bounds.x0);
+  const std::int64_t px1 = std::min<std::int64_t>(LastAt(maxX, span.x0), target.bounds.x1 - 1);
+  const std::int64_t py0 = std::max<std::int64_t>(FirstAt(minY, span.y1), target.bounds.y0);
+  const std::int64_t py1 = std::min<std::int64_t>(LastAt(maxY, span.y0), target.bounds.y1 - 1);
   if (px0 > px1 || py0 > py1) return;
 
   // Interpolation planes from the unsnapped float positions, relative to vertex 0.
@@ -508,6 +716,25 @@ void RasterizeTriangle(const VertexView& v0, const VertexView& v1, const VertexV
   // Regions start at the first quad of the box (quads are at even pixels; a block takes quads anywhere), so that a
   // triangle of at most 8x8 pixel centres is one region wherever it lies.
   const std::int64_t qx_first = px0 & ~std::int64_t(1), qy_first = py0 & ~std::int64_t(1);
+  if (target.samples > 1) {
+    const bool small = LastAt(maxX, span.x0) - (FirstAt(minX, span.x1) & ~std::int64_t(1)) < kRegion &&
+                       LastAt(maxY, span.y0) - (FirstAt(minY, span.y1) & ~std::int64_t(1)) < kRegion;
+    RasterizeSamples(A, B, C, Rect{int(px0), int(py0), int(px1) + 1, int(py1) + 1}, target.samples, small,
+                     [&](int qx, int qy, unsigned mask, const std::uint32_t* sample_masks) {
+                       int slot;
+                       const int b = AddQuad(blocks, sink, front_facing, nvar, qx, qy, mask, slot, open, false);
+                       blocks.quad_planes[b][slot] = entry.For(blocks, planes, varying_planes);
+                       const std::uint32_t clear = ~(std::uint32_t(0xF) << (4 * slot));
+                       for (int s = 0; s < blocks.samples; ++s)
+                         blocks.sample_live[b][s] = (blocks.sample_live[b][s] & clear) | (sample_masks[s] << (4 * slot));
+                     },
+                     [&](int bx, int by) {
+                       const int b = AddSquare(blocks, sink, front_facing, nvar, bx, by);
+                       const TrianglePlanes* stored = entry.For(blocks, planes, varying_planes);
+                       for (int q = 0; q < 4; ++q) blocks.quad_planes[b][q] = stored;
+                     });
+    return;
+  }
   if (LastCentre(maxX) - (FirstCentre(minX) & ~std::int64_t(1)) < kRegion &&
       LastCentre(maxY) - (FirstCentre(minY) & ~std::int64_t(1)) < kRegion) {
     // A small triangle (most of a detailed model's): all its centres in one region even before the bounds cut
@@ -676,6 +903,7 @@ void RasterizeLine(const WindowVertex& a, const WindowVertex& b, bool front_faci
     if (last_block >= 0 && last_block == blocks.count - 1 && last_slot == blocks.quads[last_block] - 1 &&
         blocks.qx[last_block][last_slot] == qx && blocks.qy[last_block][last_slot] == qy) {
       blocks.live[last_block] |= 1u << (4 * last_slot + int(lane));
+      for (int s = 0; s < blocks.samples; ++s) blocks.sample_live[last_block][s] |= 1u << (4 * last_slot + int(lane));
       continue;
     }
     last_block = EmitQuad(blocks, sink, front_facing, nvar, qx, qy, 1u << lane, eval);

@@ -27,6 +27,10 @@ struct RasterTarget {
   int nvar = 0;
   float depth_offset = 0.0f;  // polygon offset added to every fragment's depth
   const Interpolation* interpolation = nullptr;  // per varying (null: all smooth)
+  // Samples whose coverage triangles compute (a multisampled target with MULTISAMPLE enabled): each at its own
+  // position (SamplePositions), with the same edge functions and tie rule as a pixel centre; a pixel is emitted
+  // when some sample is covered, and its lanes' sample masks say which. 1: the pixel centre alone.
+  int samples = 1;
 };
 
 /// OpenGL's polygon offset for the plane through a, b, c: m * factor + r * units, with m the larger of
@@ -37,8 +41,10 @@ float PolygonOffset(const glm::vec4& a, const glm::vec4& b, const glm::vec4& c, 
 /// The pixels whose centres RasterizeTriangle may cover of the filled triangle a, b, c (window positions) inside
 /// `bounds`: the centres inside its snapped bounding box, cut to `bounds` (half-open). Empty when the snapped
 /// triangle has no area, lies beyond the rasterizer's range or holds no pixel centre. The front end bins a triangle
-/// by this box, and drops it when the box is empty (at 1280x720 a third of a detailed model's triangles).
-Rect TriangleCentreBox(const glm::vec4& a, const glm::vec4& b, const glm::vec4& c, const Rect& bounds);
+/// by this box, and drops it when the box is empty (at 1280x720 a third of a detailed model's triangles). With
+/// `samples` > 1, the pixels with some sample position (SamplePositions) inside the snapped bounding box.
+Rect TriangleCentreBox(const glm::vec4& a, const glm::vec4& b, const glm::vec4& c, const Rect& bounds,
+                       int samples = 1);
 
 void RasterizeTriangle(const VertexView& v0, const VertexView& v1, const VertexView& v2, bool front_facing,
                        const RasterTarget& target, BlockBuffer& blocks, const BlockSink& sink);

@@ -327,17 +327,19 @@ glm::vec4 TextureLevel::Sampled(int i, int j) const {
 
 glm::vec4 TextureLevel::Texel(int i, int j) const { return Raw(i, j) / StorageScale(layout); }
 
-void TextureLevel::Allocate(Enum internal_format, int w, int h) {
+void TextureLevel::Allocate(Enum internal_format, int w, int h, int sample_count) {
   const TexelLayout l = LayoutOf(internal_format);
   const int b = BytesPerTexel(l);
-  data.assign(std::size_t(w) * std::size_t(h) * std::size_t(b) + kGatherPad, 0);
-  if (HasStencil(internal_format)) stencil.assign(std::size_t(w) * std::size_t(h), 0);
+  const std::size_t texels = std::size_t(w) * std::size_t(h) * std::size_t(sample_count);
+  data.assign(texels * std::size_t(b) + kGatherPad, 0);
+  if (HasStencil(internal_format)) stencil.assign(texels, 0);
   else stencil.clear();
   format = internal_format;
   width = w;
   height = h;
   layout = l;
   bytes = b;
+  samples = sample_count;
   srgb = IsSrgbFormat(internal_format);
   if (NoStoredAlpha(internal_format))  // alpha reads 1
     for (std::size_t k = 3; k < data.size() - kGatherPad; k += 4) data[k] = 255;

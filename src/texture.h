@@ -100,6 +100,9 @@ struct TextureLevel {
   static constexpr std::size_t kGatherPad = 7;
   std::vector<std::uint8_t> stencil;  // [height][width] stencil indices for a format with stencil, else empty
   bool srgb = false;                  // IsSrgbFormat(format)
+  // A multisampled image (a renderbuffer of RenderbufferStorageMultisample): `samples` planes of width x height
+  // texels one after another (and as many stencil planes); 1 for every texture level.
+  int samples = 1;
   bool Defined() const { return format != 0 && width > 0 && height > 0; }
   std::uint8_t* At(int i, int j) {
     return data.data() + (std::size_t(j) * std::size_t(width) + std::size_t(i)) * std::size_t(bytes);
@@ -115,9 +118,9 @@ struct TextureLevel {
   glm::vec4 Sampled(int i, int j) const;
   /// Texel (i, j) as RGBA floats (fixed point divided by 255), as stored (sRGB colours not decoded).
   glm::vec4 Texel(int i, int j) const;
-  /// Allocates width x height texels of `internal_format`, zero (alpha 1 where the format has no alpha; stencil
-  /// 0). Throws std::bad_alloc.
-  void Allocate(Enum internal_format, int w, int h);
+  /// Allocates width x height texels of `internal_format` (`samples` of each), zero (alpha 1 where the format has
+  /// no alpha; stencil 0). Throws std::bad_alloc.
+  void Allocate(Enum internal_format, int w, int h, int samples = 1);
 };
 
 /// The number storage units are divided by to give the value: 255 for fixed-point layouts, 1 for float ones.

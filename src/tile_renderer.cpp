@@ -34,7 +34,7 @@ void DrawTextures::CopyFrom(const Textures& t) {
 namespace {
 
 bool SameBuffers(const RenderTarget& a, const RenderTarget& b) {
-  if (a.width != b.width || a.height != b.height || a.depth != b.depth || a.depth_pitch != b.depth_pitch ||
+  if (a.width != b.width || a.height != b.height || a.samples != b.samples || a.depth != b.depth || a.depth_pitch != b.depth_pitch ||
       a.stencil != b.stencil || a.stencil_pitch != b.stencil_pitch)
     return false;
   for (int i = 0; i < kMaxColorOutputs; ++i) {
@@ -49,6 +49,44 @@ Rect Intersect(const Rect& a, const Rect& b) {
   return Rect{std::max(a.x0, b.x0), std::max(a.y0, b.y0), std::min(a.x1, b.x1), std::min(a.y1, b.y1)};
 }
 
+// The depth of each sample of a batch's lanes, at its position on the triangle's plane (a line's or point's
+// fragments have one depth; with MULTISAMPLE disabled, `at_samples` false, every sample takes the centre's), and the batch's live lanes and gl_FragCoord.z as the rasterizer left them: Use(s)
+// puts sample s's depths into gl_FragCoord.z, Restore puts the pixel centre's back.
+struct SampleDepths {
+  alignas(64) float z[BlockBuffer::kCapacity][kMaxSamples][kLanes];
+  alignas(64) float centre[BlockBuffer::kCapacity][kLanes];
+  std::uint32_t live[BlockBuffer::kCapacity];
+  int count = 0;
+
+  // A sample's depth is the centre's plus the plane's change from the centre to the sample.
+  SampleDepths(const BlockBuffer& blocks, int samples, bool at_samples) : count(blocks.count) {
+    const auto* pos = SamplePositions(samples);
+    float ox[kMaxSamples], oy[kMaxSamples];
+    for (int s = 0; s < samples; ++s) {
+      ox[s] = float(pos[s][0]) / 16.0f - 0.5f;
+      oy[s] = float(pos[s][1]) / 16.0f - 0.5f;
+    }
+    for (int b = 0; b < count; ++b) {
+      live[b] = blocks.live[b];
+      std::copy_n(blocks.frag_coord[b][2], kLanes, centre[b]);
+      for (int q = 0; q < 4; ++q) {
+        const TrianglePlanes* p = blocks.quad_planes[b][q];
+        const bool flat = !p || !at_samples || !((live[b] >> (4 * q)) & 0xFu);
+        for (int s = 0; s < samples; ++s) {
+          const float delta = flat ? 0.0f : p->z.dx * ox[s] + p->z.dy * oy[s];
+          for (int k = 0; k < 4; ++k) z[b][s][q * 4 + k] = centre[b][q * 4 + k] + delta;
+        }
+      }
+    }
+  }
+  void Use(BlockBuffer& blocks, int s) const {
+    for (int b = 0; b < count; ++b) std::copy_n(z[b][s], kLanes, blocks.frag_coord[b][2]);
+  }
+  void Restore(BlockBuffer& blocks) const {
+    for (int b = 0; b < count; ++b) std::copy_n(centre[b], kLanes, blocks.frag_coord[b][2]);
+  }
+};
+
 // The fragment shader, then the per-fragment operations, on a full batch of blocks.
 struct FragmentStage {
   const DrawPacket* draw;
@@ -59,8 +97,69 @@ struct FragmentStage {
 
   static void Run(void* user, BlockBuffer& blocks) {
     const auto* self = static_cast<const FragmentStage*>(user);
+    if (self->target->samples > 1) return self->RunSamples(blocks);
     if (self->draw->early_depth && !EarlyDepthTest(self->draw->ops, blocks, *self->target)) return;
     InterpolateVaryings(blocks);
+    self->Shade(blocks);
+    ApplyFragmentOps(self->draw->ops, *self->plan, blocks, self->draw->shader_depth, *self->target);
+  }
+
+  // Into a multisampled target: the depth test (early and late) and the operations after the shader run on each
+  // sample, through the single-sampled view of its plane, with the lanes that have that sample covered and the
+  // depth interpolated at its position; the shader runs once per pixel.
+  void RunSamples(BlockBuffer& blocks) const {
+    const int samples = target->samples;
+    const FragmentOpsState& ops = draw->ops;
+    SampleDepths depths(blocks, samples, ops.multisample.multisample);
+    if (draw->early_depth) {
+      bool any = false;
+      for (int s = 0; s < samples; ++s) {
+        depths.Use(blocks, s);
+        for (int b = 0; b < blocks.count; ++b) blocks.live[b] = depths.live[b] & blocks.sample_live[b][s];
+        EarlyDepthTest(ops, blocks, target->Sample(s));
+        for (int b = 0; b < blocks.count; ++b) blocks.sample_live[b][s] &= blocks.live[b];
+      }
+      depths.Restore(blocks);
+      for (int b = 0; b < blocks.count; ++b) {
+        std::uint32_t live = 0;
+        for (int s = 0; s < samples; ++s) live |= blocks.sample_live[b][s];
+        blocks.live[b] = depths.live[b] & live;
+        any = any || blocks.live[b] != 0;
+      }
+      if (!any) return;
+    }
+    InterpolateVaryings(blocks);
+    Shade(blocks);
+    // SAMPLE_ALPHA_TO_COVERAGE, SAMPLE_COVERAGE and SAMPLE_MASK narrow each lane's samples (while MULTISAMPLE is
+    // enabled: section 17.3.1).
+    const MultisampleState& ms = ops.multisample;
+    std::uint32_t keep = (std::uint32_t(1) << samples) - 1;
+    if (ms.multisample && ms.sample_coverage) keep &= CoverageMask(ms, samples);
+    if (ms.multisample && ms.sample_mask) keep &= ms.mask;
+    for (int b = 0; b < blocks.count && ms.multisample; ++b) {
+      for (int s = 0; s < samples; ++s)
+        if (!((keep >> s) & 1u)) blocks.sample_live[b][s] = 0;
+      if (!ms.alpha_to_coverage) continue;
+      const float* alpha = blocks.Color(b, 0, 3);
+      for (int lane = 0; lane < kLanes; ++lane) {
+        if (!((blocks.live[b] >> lane) & 1u)) continue;
+        const std::uint32_t m = AlphaToCoverageMask(alpha[lane], samples);
+        for (int s = 0; s < samples; ++s)
+          if (!((m >> s) & 1u)) blocks.sample_live[b][s] &= ~(1u << lane);
+      }
+    }
+    std::uint32_t shaded[BlockBuffer::kCapacity];
+    std::copy(blocks.live, blocks.live + blocks.count, shaded);
+    for (int s = 0; s < samples; ++s) {
+      depths.Use(blocks, s);
+      for (int b = 0; b < blocks.count; ++b) blocks.live[b] = shaded[b] & blocks.sample_live[b][s];
+      ApplyFragmentOps(ops, *plan, blocks, draw->shader_depth, target->Sample(s));
+    }
+    depths.Restore(blocks);
+  }
+
+  void Shade(BlockBuffer& blocks) const {
+    const FragmentStage* self = this;
     BlockBatch batch;
     batch.count = blocks.count;
     batch.outputs = self->outputs;
@@ -72,7 +171,6 @@ struct FragmentStage {
     batch.out = blocks.out;
     batch.textures = self->draw->textures;
     self->draw->program->ShadeBlocks(batch);
-    ApplyFragmentOps(self->draw->ops, *self->plan, blocks, self->draw->shader_depth, *self->target);
   }
 };
 
@@ -287,6 +385,7 @@ void Frame::RenderTile(int tile, TileScratch& scratch) const {
     rt.bounds = Intersect(draw.bounds, rect);
     rt.nvar = draw.nvar;
     rt.interpolation = draw.interpolation;
+    rt.samples = target_.samples > 1 && draw.ops.multisample.multisample ? target_.samples : 1;
     if (rt.bounds.Empty()) continue;
     if (!planned || !(draw.ops == *planned)) {  // consecutive draws mostly share their operations
       plan = PlanFragmentOps(draw.ops, target_);
@@ -295,6 +394,7 @@ void Frame::RenderTile(int tile, TileScratch& scratch) const {
     FragmentStage stage{&draw, &target_, outputs, simd, &plan};
     const BlockSink sink{&FragmentStage::Run, &stage};
     blocks.count = 0;
+    blocks.samples = target_.samples;
     const auto rasterize = [&](const BinnedBatch& batch) {
       return [&](const BinnedPrimitive& p, const float* vertices) {
         rt.depth_offset = p.depth_offset;

@@ -19,6 +19,13 @@
 
 namespace softgl::detail {
 
+/// Most samples a pixel has (MAX_SAMPLES): multisampled buffers have 2, 4 or 8.
+inline constexpr int kMaxSamples = 8;
+/// The standard sample positions (those of Direct3D and Vulkan, which llvmpipe uses) of a pixel with `samples`
+/// samples (2, 4 or 8; any other count: the centre), in 1/16 pixel from the pixel's lower left corner, x then y:
+/// sample s of pixel (i, j) lies at (i + x / 16, j + y / 16). Defined with the rasterizer.
+const std::uint8_t (*SamplePositions(int samples))[2];
+
 /// Output of the vertex stage for one draw: one entry per shaded vertex.
 struct ShadedVertices {
   int count = 0;
@@ -90,6 +97,11 @@ struct BlockBuffer {
   int qx[kCapacity][4];   // quad origins (even coordinates)
   int qy[kCapacity][4];
   std::uint32_t live[kCapacity];  // coverage bits; cleared by the early depth test and discard
+  // A multisampled target's coverage: `samples` (its sample count; 1: none) and, for sample s of block b, the
+  // lanes whose pixel has sample s covered (a lane is live while some sample is). The rasterizer gives every
+  // quad it emits all samples of its live lanes unless it computes them itself (a multisampled triangle).
+  int samples = 1;
+  std::uint32_t sample_live[kCapacity][kMaxSamples];
   // A triangle's quads have their varyings interpolated after the early depth test, from its planes: each quad
   // refers to its triangle's planes here (null: the varyings are already there, as for lines and points). One entry
   // per triangle with a quad in the buffer, so never more than the buffer has quads.

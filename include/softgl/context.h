@@ -53,6 +53,13 @@ class Context {
     /// alpha). Any but RGBA8 takes the per-pixel path of the fragment operations. Anything else: RGBA8, and
     /// INVALID_ENUM recorded.
     Enum color_format = RGBA8;
+    /// Samples per pixel of the context's framebuffer: 0 (the default) or 1 for one, 2, 4 or 8 for a multisampled
+    /// framebuffer (3 gives 4, 5 to 7 give 8). Drawing then covers, tests and stores each sample (the fragment
+    /// shader still runs once per pixel), and every read (ReadPixels, the copies, blits from it) sees the resolved
+    /// image: colour the average of the samples, depth and stencil those of sample 0. A multisampled framebuffer
+    /// takes `samples` times the memory of a single-sampled one, plus one resolved image. Below 0 or above 8:
+    /// single-sampled, and INVALID_VALUE recorded.
+    int samples = 0;
   };
   Context(int width, int height, const Options& options);
   /// Recorded draws not yet rendered are dropped.
@@ -312,7 +319,9 @@ class Context {
   void ReadBuffer(Enum src);
   /// Copies the rectangle (src_x0, src_y0) - (src_x1, src_y1) of the read framebuffer into the rectangle
   /// (dst_x0, dst_y0) - (dst_x1, dst_y1) of the draw framebuffer (lower bounds inclusive, upper exclusive),
-  /// scaling to fit and mirroring where a rectangle is reversed. mask: COLOR_BUFFER_BIT (the read buffer into
+  /// scaling to fit and mirroring where a rectangle is reversed. A multisampled read framebuffer is resolved
+  /// (colour averaged over the samples, depth and stencil from sample 0); a multisampled draw framebuffer takes
+  /// the value in every sample, or sample by sample from a read framebuffer of as many samples. mask: COLOR_BUFFER_BIT (the read buffer into
   /// every draw buffer, converted to each one's format), DEPTH_BUFFER_BIT, STENCIL_BUFFER_BIT. filter: NEAREST,
   /// or LINEAR (bilinear, colour only) for a scaled copy. Each destination pixel whose centre lies in the
   /// destination rectangle takes the source at the matching point; pixels whose point lies outside the read
@@ -320,7 +329,8 @@ class Context {
   /// not apply. A buffer that either framebuffer lacks is skipped. Errors (nothing is copied): other mask bits:
   /// INVALID_VALUE; bad filter: INVALID_ENUM; LINEAR with depth or stencil, depth or stencil formats that differ
   /// (the context's framebuffer counts as DEPTH24_STENCIL8), rectangles that overlap while one buffer is both
-  /// source and destination (undefined in OpenGL): INVALID_OPERATION; an incomplete read or draw framebuffer:
+  /// source and destination (undefined in OpenGL), either framebuffer multisampled and rectangles of different
+  /// sizes, both multisampled with different sample counts: INVALID_OPERATION; an incomplete read or draw framebuffer:
   /// INVALID_FRAMEBUFFER_OPERATION.
   void BlitFramebuffer(int src_x0, int src_y0, int src_x1, int src_y1, int dst_x0, int dst_y0, int dst_x1, int dst_y1,
                        Bitfield mask, Enum filter);
@@ -344,9 +354,16 @@ class Context {
   /// MAX_RENDERBUFFER_SIZE (kMaxFramebufferSize): INVALID_VALUE; nothing bound: INVALID_OPERATION; no memory:
   /// OUT_OF_MEMORY.
   void RenderbufferStorage(Enum target, Enum internal_format, int width, int height);
+  /// RenderbufferStorage with `samples` samples per pixel: 0 is single-sampled; 1 to 8 give the smallest count of
+  /// 2, 4 and 8 not below it (RENDERBUFFER_SAMPLES reports it). A multisampled renderbuffer is drawn into sample by
+  /// sample, resolved by BlitFramebuffer into a single-sampled framebuffer, and cannot be read otherwise
+  /// (ReadPixels and CopyTex(Sub)Image2D from it record INVALID_OPERATION). All attachments of a framebuffer
+  /// object must have the same sample count, else it is FRAMEBUFFER_INCOMPLETE_MULTISAMPLE. Errors as
+  /// RenderbufferStorage, and samples < 0: INVALID_VALUE; samples above MAX_SAMPLES (8): INVALID_OPERATION.
+  void RenderbufferStorageMultisample(Enum target, int samples, Enum internal_format, int width, int height);
   /// RENDERBUFFER_WIDTH, _HEIGHT, _INTERNAL_FORMAT (as given, RGBA before any storage), _RED_SIZE, _GREEN_SIZE,
-  /// _BLUE_SIZE, _ALPHA_SIZE, _DEPTH_SIZE, _STENCIL_SIZE (the format's bits, as OpenGL reports them), _SAMPLES (0)
-  /// of the bound renderbuffer. Errors: bad target or pname: INVALID_ENUM; nothing bound: INVALID_OPERATION.
+  /// _BLUE_SIZE, _ALPHA_SIZE, _DEPTH_SIZE, _STENCIL_SIZE (the format's bits, as OpenGL reports them), _SAMPLES (0,
+  /// or the multisampled renderbuffer's count) of the bound renderbuffer. Errors: bad target or pname: INVALID_ENUM; nothing bound: INVALID_OPERATION.
   void GetRenderbufferParameteriv(Enum target, Enum pname, int* params);
 
   // ---- Fixed-function state ----------------------------------------------------------------------------------
@@ -358,7 +375,10 @@ class Context {
   /// cap: CULL_FACE, DEPTH_TEST, STENCIL_TEST, SCISSOR_TEST, BLEND, POLYGON_OFFSET_FILL, POLYGON_OFFSET_LINE,
   /// POLYGON_OFFSET_POINT, PROGRAM_POINT_SIZE, PRIMITIVE_RESTART, PRIMITIVE_RESTART_FIXED_INDEX or FRAMEBUFFER_SRGB
   /// (draws, clears and blits into SRGB8_ALPHA8 and SRGB8 attachments encode linear colours, blending decodes the
-  /// stored colour first); otherwise INVALID_ENUM. All start disabled.
+  /// stored colour first), MULTISAMPLE (enabled by default: into a multisampled framebuffer, triangles cover each
+  /// sample at its own position; disabled, a pixel's coverage at its centre goes to all its samples),
+  /// SAMPLE_ALPHA_TO_COVERAGE, SAMPLE_COVERAGE, SAMPLE_MASK (see SampleCoverage, SampleMaski); otherwise
+  /// INVALID_ENUM. All but MULTISAMPLE start disabled.
   void Enable(Enum cap);
   void Disable(Enum cap);
   bool IsEnabled(Enum cap);
@@ -421,6 +441,23 @@ class Context {
   void BlendColor(float r, float g, float b, float a);
   /// Which colour channels drawing and Clear write (default all).
   void ColorMask(bool r, bool g, bool b, bool a);
+
+  // ---- Multisampling -----------------------------------------------------------------------------------------
+  // Into a multisampled framebuffer with MULTISAMPLE enabled, the samples a fragment covers are narrowed after
+  // the fragment shader, in OpenGL's order (section 17.3.1), by: SAMPLE_ALPHA_TO_COVERAGE (output 0's alpha keeps
+  // sample s where alpha > s / samples: 0 keeps none, 1 all; llvmpipe's mapping), SAMPLE_COVERAGE (the first
+  // floor(value * samples) samples, or the others when inverted; Mesa's choice) and SAMPLE_MASK (bit s keeps
+  // sample s). Each kept sample then goes through the stencil and depth tests, blending and the write on its own.
+  // Into a single-sampled framebuffer, or with MULTISAMPLE disabled, they do nothing.
+  /// SampleCoverage's value (clamped to [0, 1]; default 1) and whether its mask is inverted (default false).
+  void SampleCoverage(float value, bool invert);
+  /// Word `index` of the sample mask (default all ones): bit s for sample s. index >= MAX_SAMPLE_MASK_WORDS (1):
+  /// INVALID_VALUE.
+  void SampleMaski(std::uint32_t index, Bitfield mask);
+  /// SAMPLE_POSITION of sample `index` of the draw framebuffer: x and y in [0, 1) from the pixel's lower left
+  /// corner (the standard positions; the centre for a single-sampled framebuffer). Bad pname: INVALID_ENUM; index
+  /// not below its sample count: INVALID_VALUE.
+  void GetMultisamplefv(Enum pname, std::uint32_t index, float* val);
 
   // ---- Clearing ----------------------------------------------------------------------------------------------
   void ClearColor(float r, float g, float b, float a);

@@ -378,6 +378,11 @@ class GlBackend final : public Backend {
   void RenderbufferStorage(Enum internal_format, int width, int height) override {
     glRenderbufferStorage(GL_RENDERBUFFER, internal_format, width, height);
   }
+  void RenderbufferStorageMultisample(int samples, Enum internal_format, int width, int height) override {
+    glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, internal_format, width, height);
+  }
+  void SampleMask(std::uint32_t mask) override { glSampleMaski(0, mask); }
+  void SampleCoverage(float value, bool invert) override { glSampleCoverage(value, invert ? GL_TRUE : GL_FALSE); }
   void FramebufferRenderbuffer(Enum target, Enum attachment, std::uint32_t renderbuffer) override {
     glFramebufferRenderbuffer(target, attachment, GL_RENDERBUFFER, renderbuffer);
   }

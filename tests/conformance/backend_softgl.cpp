@@ -345,6 +345,11 @@ class SoftglBackend final : public Backend {
   void RenderbufferStorage(Enum internal_format, int width, int height) override {
     gl_.RenderbufferStorage(softgl::RENDERBUFFER, internal_format, width, height);
   }
+  void RenderbufferStorageMultisample(int samples, Enum internal_format, int width, int height) override {
+    gl_.RenderbufferStorageMultisample(softgl::RENDERBUFFER, samples, internal_format, width, height);
+  }
+  void SampleMask(std::uint32_t mask) override { gl_.SampleMaski(0, mask); }
+  void SampleCoverage(float value, bool invert) override { gl_.SampleCoverage(value, invert); }
   void FramebufferRenderbuffer(Enum target, Enum attachment, std::uint32_t renderbuffer) override {
     gl_.FramebufferRenderbuffer(target, attachment, softgl::RENDERBUFFER, renderbuffer);
   }

@@ -918,6 +918,156 @@ void BlitNearest(Backend& b) {
   b.BindFramebuffer(READ_FRAMEBUFFER, 0);
 }
 
+// ---- Multisampling ------------------------------------------------------------------------------------------------
+
+// A 64 x 64 framebuffer object of 4 samples a pixel (RGBA8 and DEPTH24_STENCIL8) bound for drawing, its viewport
+// set; returns its id.
+std::uint32_t MultisampleTarget(Backend& b) {
+  const std::uint32_t fbo = b.GenFramebuffer();
+  b.BindFramebuffer(FRAMEBUFFER, fbo);
+  for (Enum attachment : {COLOR_ATTACHMENT0, DEPTH_STENCIL_ATTACHMENT}) {
+    const std::uint32_t rb = b.GenRenderbuffer();
+    b.BindRenderbuffer(rb);
+    b.RenderbufferStorageMultisample(4, attachment == DEPTH_STENCIL_ATTACHMENT ? DEPTH24_STENCIL8 : RGBA8, 64, 64);
+    b.FramebufferRenderbuffer(FRAMEBUFFER, attachment, rb);
+  }
+  b.Viewport(0, 0, 64, 64);
+  return fbo;
+}
+
+// Back to the context's framebuffer and its viewport.
+void EndMultisample(Backend& b) {
+  b.BindFramebuffer(FRAMEBUFFER, 0);
+  b.Viewport(0, 0, kSize, kSize);
+}
+
+// Resolves the 64 x 64 framebuffer object `fbo` into the context's framebuffer at (x, y), and draws into `fbo`
+// again.
+void ResolveInto(Backend& b, std::uint32_t fbo, int x, int y) {
+  b.BindFramebuffer(READ_FRAMEBUFFER, fbo);
+  b.BindFramebuffer(DRAW_FRAMEBUFFER, 0);
+  b.BlitFramebuffer(0, 0, 64, 64, x, y, x + 64, y + 64, COLOR_BUFFER_BIT, NEAREST);
+  b.BindFramebuffer(FRAMEBUFFER, fbo);
+}
+
+// Random triangles, each its own colour, with vertices on the 1/256 grid and a third of them on the 1/16 grid of
+// the sample positions (edges through samples test the tie rule at samples), in a 64 x 64 viewport.
+std::vector<Vertex> SampleTriangles(unsigned seed, int count) {
+  Jitter j(seed);
+  std::vector<Vertex> v;
+  for (int i = 0; i < count; ++i) {
+    const float cx = j.Sub(1, 63), cy = j.Sub(1, 63), r = j.Uniform(0.4f, 5.0f);
+    const glm::vec4 c = Palette(unsigned(i) + seed);
+    for (int k = 0; k < 3; ++k) {
+      const float grid = (i + k) % 3 == 0 ? 16.0f : 256.0f;
+      const float x = std::round((cx + j.Uniform(-r, r)) * grid) / grid, y = std::round((cy + j.Uniform(-r, r)) * grid) / grid;
+      v.push_back({Win(2 * x, 2 * y), c});
+    }
+  }
+  return v;
+}
+
+// Per-sample coverage: the same triangles drawn four times into a 4-sample framebuffer object, each time into one
+// sample alone (SAMPLE_MASK), then resolved into a quadrant of its own. A quadrant's pixel is a quarter of the
+// colour of the last triangle covering that sample, so any sample covered differently shows.
+void MultisampleCoverage(Backend& b) {
+  ClearBlack(b);
+  const std::uint32_t fbo = MultisampleTarget(b);
+  const std::vector<Vertex> v = SampleTriangles(5, 260);
+  b.Enable(SAMPLE_MASK);
+  for (int s = 0; s < 4; ++s) {
+    b.ClearColor(0, 0, 0, 1);
+    b.Clear(COLOR_BUFFER_BIT);
+    b.SampleMask(1u << s);
+    b.Draw(TRIANGLES, v);
+    ResolveInto(b, fbo, (s & 1) * 64, (s >> 1) * 64);
+  }
+  b.Disable(SAMPLE_MASK);
+  EndMultisample(b);
+}
+
+// A resolved scene: depth-tested triangles crossing each other (depth per sample), a stencil mask drawn at
+// samples, and blended triangles over them, in a 4-sample framebuffer object resolved into the bottom half;
+// the top half has the same with MULTISAMPLE disabled (each pixel's centre coverage into all its samples).
+void MultisampleResolve(Backend& b) {
+  ClearBlack(b);
+  const std::uint32_t fbo = MultisampleTarget(b);
+  for (int half = 0; half < 2; ++half) {
+    if (half == 1) b.Disable(MULTISAMPLE);
+    for (int part = 0; part < 2; ++part) {
+      b.ClearColor(0.1f, 0.2f, 0.3f, 1);
+      b.ClearDepth(1.0);
+      b.ClearStencil(0);
+      b.Clear(COLOR_BUFFER_BIT | DEPTH_BUFFER_BIT | STENCIL_BUFFER_BIT);
+      Jitter j(31u + unsigned(part));
+      std::vector<Vertex> v;
+      for (int i = 0; i < 40; ++i) {
+        const glm::vec4 c = Palette(unsigned(i) * 7u + 3u);
+        const float cx = j.Sub(4, 60), cy = j.Sub(4, 60);
+        for (int k = 0; k < 3; ++k)
+          v.push_back({Win(2 * (cx + j.Uniform(-14, 14)), 2 * (cy + j.Uniform(-14, 14)), j.Uniform(-0.9f, 0.9f)), c});
+      }
+      if (part == 0) {
+        b.Enable(DEPTH_TEST);
+        b.Draw(TRIANGLES, v);
+        b.Disable(DEPTH_TEST);
+      } else {
+        b.Enable(STENCIL_TEST);
+        b.StencilFunc(ALWAYS, 1, 0xFF);
+        b.StencilOp(KEEP, KEEP, REPLACE);
+        b.ColorMask(false, false, false, false);
+        b.Draw(TRIANGLES, {{Win(2 * 3.3f, 2 * 5.1f), glm::vec4(1)}, {Win(2 * 60.7f, 2 * 20.2f), glm::vec4(1)},
+                           {Win(2 * 20.4f, 2 * 61.9f), glm::vec4(1)}});
+        b.ColorMask(true, true, true, true);
+        b.StencilFunc(EQUAL, 1, 0xFF);
+        b.Draw(TRIANGLES, v);
+        b.Disable(STENCIL_TEST);
+        b.Enable(BLEND);
+        b.BlendFunc(SRC_ALPHA, ONE_MINUS_SRC_ALPHA);
+        const glm::vec4 glass(0.9f, 0.8f, 0.2f, 0.5f);
+        b.Draw(TRIANGLES, {{Win(2 * 0.6f, 2 * 40.3f), glass}, {Win(2 * 63.2f, 2 * 31.7f), glass},
+                           {Win(2 * 30.1f, 2 * 63.4f), glass}});
+        b.Disable(BLEND);
+      }
+      ResolveInto(b, fbo, part * 64, half * 64);
+    }
+  }
+  b.Enable(MULTISAMPLE);
+  EndMultisample(b);
+}
+
+// SAMPLE_COVERAGE (half, and a third inverted), SAMPLE_ALPHA_TO_COVERAGE over an alpha gradient, and SAMPLE_MASK
+// with two samples, one quadrant each, resolved.
+void MultisampleCoverageOps(Backend& b) {
+  ClearBlack(b);
+  const std::uint32_t fbo = MultisampleTarget(b);
+  const std::vector<Vertex> tris = SampleTriangles(9, 60);
+  for (int q = 0; q < 4; ++q) {
+    b.ClearColor(0, 0, 0, 1);
+    b.Clear(COLOR_BUFFER_BIT);
+    switch (q) {
+      case 0: b.Enable(SAMPLE_COVERAGE); b.SampleCoverage(0.5f, false); break;
+      case 1: b.Enable(SAMPLE_COVERAGE); b.SampleCoverage(0.3f, true); break;
+      case 2: b.Enable(SAMPLE_ALPHA_TO_COVERAGE); break;
+      default: b.Enable(SAMPLE_MASK); b.SampleMask(0x9u); break;
+    }
+    if (q == 2) {  // alpha from 0 at the left to 1 at the right, in steps between the thresholds s / 4
+      std::vector<Vertex> ramp;
+      for (int k = 0; k < 8; ++k) {
+        const float x0 = float(k) * 8.0f, x1 = x0 + 8.0f, a = (float(k) + 0.5f) / 8.0f;
+        for (const Vertex& v : Rect(2 * x0, 0, 2 * x1, 2 * 64, 0, glm::vec4(1, 0.5f, 0.25f, a))) ramp.push_back(v);
+      }
+      b.Draw(TRIANGLES, ramp);
+    }
+    b.Draw(TRIANGLES, tris);
+    b.Disable(SAMPLE_COVERAGE);
+    b.Disable(SAMPLE_ALPHA_TO_COVERAGE);
+    b.Disable(SAMPLE_MASK);
+    ResolveInto(b, fbo, (q & 1) * 64, (q >> 1) * 64);
+  }
+  EndMultisample(b);
+}
+
 // LINEAR blits of colour: 2x up, 1.5x up mirrored in y, and 2x down, from the framebuffer object's colour into the
 // context's framebuffer. Colour within 1 (filtering).
 void BlitLinear(Backend& b) {
@@ -1060,6 +1210,9 @@ const std::vector<SceneInfo>& Scenes() {
       {"stencil_texture", kSize, kSize, Check::kExactWithDepthStencil, StencilTexture},
       {"blit_nearest", kSize, kSize, Check::kExactWithDepthStencil, BlitNearest},
       {"blit_linear", kSize, kSize, Check::kColor, BlitLinear},
+      {"msaa_coverage", kSize, kSize, Check::kColor, MultisampleCoverage},
+      {"msaa_resolve", kSize, kSize, Check::kColor, MultisampleResolve},
+      {"msaa_coverage_ops", kSize, kSize, Check::kColor, MultisampleCoverageOps},
       {"cube_map", kSize, kSize, Check::kTexture, CubeMap},
       {"shadow_compare", kSize, kSize, Check::kTexture, ShadowCompare},
       {"model", 256, 256, Check::kColor, Model},

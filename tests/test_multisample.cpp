@@ -1,0 +1,397 @@
+// test_multisample.cpp — multisampling: per-sample coverage in the rasterizer, per-sample tests and writes, the
+// coverage operations, resolves, the multisampled context framebuffer, and the calls' errors.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cstdint>
+#include <random>
+#include <vector>
+
+#include <softgl/softgl.h>
+
+#include "helpers.h"
+#include "rasterizer.h"
+#include "types.h"
+
+using namespace softgl;
+using namespace testing;
+
+namespace {
+
+// Every sample mask the rasterizer emits, by pixel: bit s for sample s; and how often each pixel was emitted.
+struct SampleRecorder {
+  int width, height, samples;
+  std::vector<std::uint32_t> mask;
+  std::vector<int> emitted;
+  SampleRecorder(int w, int h, int n)
+      : width(w), height(h), samples(n), mask(std::size_t(w * h), 0), emitted(std::size_t(w * h), 0) {}
+  static void Flush(void* user, detail::BlockBuffer& blocks) {
+    auto* self = static_cast<SampleRecorder*>(user);
+    for (int b = 0; b < blocks.count; ++b)
+      for (int lane = 0; lane < kLanes; ++lane) {
+        if (!((blocks.live[b] >> lane) & 1u)) continue;
+        const std::size_t i = std::size_t(blocks.Y(b, lane) * self->width + blocks.X(b, lane));
+        ++self->emitted[i];
+        for (int s = 0; s < self->samples; ++s)
+          if ((blocks.sample_live[b][s] >> lane) & 1u) self->mask[i] |= 1u << s;
+      }
+  }
+};
+
+// The reference: whether the point (px, py), in 1/256 pixel, is inside the triangle of snapped vertices X, Y, by
+// OpenGL's rule for points on an edge (a left or bottom edge of the counter-clockwise triangle owns them).
+bool Inside(std::int64_t px, std::int64_t py, std::int64_t X[3], std::int64_t Y[3]) {
+  const std::int64_t area = (X[1] - X[0]) * (Y[2] - Y[0]) - (X[2] - X[0]) * (Y[1] - Y[0]);
+  if (area == 0) return false;
+  int order[3] = {0, 1, 2};
+  if (area < 0) std::swap(order[1], order[2]);
+  for (int e = 0; e < 3; ++e) {
+    const int i = order[e], j = order[(e + 1) % 3];
+    const std::int64_t dx = X[j] - X[i], dy = Y[j] - Y[i];
+    const std::int64_t value = dx * (py - Y[i]) - dy * (px - X[i]);
+    const bool owns = dy < 0 || (dy == 0 && dx > 0);
+    if (value < 0 || (value == 0 && !owns)) return false;
+  }
+  return true;
+}
+
+Context::Options Samples(int n) {
+  Context::Options o;
+  o.samples = n;
+  o.threads = 1;
+  return o;
+}
+
+int Red(Context& gl, int x, int y) {
+  std::uint8_t p[4];
+  gl.ReadPixel(x, y, p);
+  return p[0];
+}
+
+// A framebuffer object with a multisampled RGBA8 colour and DEPTH24_STENCIL8 renderbuffer, and a single-sampled
+// one to resolve into; Resolve() blits and returns the resolved pixel's bytes.
+struct MultisampleFbo {
+  Context& gl;
+  std::uint32_t ms = 0, single = 0;
+  int width, height;
+  MultisampleFbo(Context& context, int samples, int w, int h) : gl(context), width(w), height(h) {
+    const std::uint32_t rb[3] = {gl.GenRenderbuffer(), gl.GenRenderbuffer(), gl.GenRenderbuffer()};
+    ms = gl.GenFramebuffer();
+    gl.BindFramebuffer(FRAMEBUFFER, ms);
+    gl.BindRenderbuffer(RENDERBUFFER, rb[0]);
+    gl.RenderbufferStorageMultisample(RENDERBUFFER, samples, RGBA8, w, h);
+    gl.FramebufferRenderbuffer(FRAMEBUFFER, COLOR_ATTACHMENT0, RENDERBUFFER, rb[0]);
+    gl.BindRenderbuffer(RENDERBUFFER, rb[1]);
+    gl.RenderbufferStorageMultisample(RENDERBUFFER, samples, DEPTH24_STENCIL8, w, h);
+    gl.FramebufferRenderbuffer(FRAMEBUFFER, DEPTH_STENCIL_ATTACHMENT, RENDERBUFFER, rb[1]);
+    single = gl.GenFramebuffer();
+    gl.BindFramebuffer(FRAMEBUFFER, single);
+    gl.BindRenderbuffer(RENDERBUFFER, rb[2]);
+    gl.RenderbufferStorage(RENDERBUFFER, RGBA8, w, h);
+    gl.FramebufferRenderbuffer(FRAMEBUFFER, COLOR_ATTACHMENT0, RENDERBUFFER, rb[2]);
+    gl.BindFramebuffer(FRAMEBUFFER, ms);
+    gl.Viewport(0, 0, w, h);
+  }
+  // Clears the multisampled buffers: colour opaque black, depth 1, stencil 0.
+  void Clear(Bitfield mask) {
+    gl.BindFramebuffer(FRAMEBUFFER, ms);
+    gl.ClearColor(0, 0, 0, 1);
+    gl.ClearDepth(1.0);
+    gl.ClearStencil(0);
+    gl.Clear(mask);
+  }
+  void Resolve() {
+    gl.BindFramebuffer(READ_FRAMEBUFFER, ms);
+    gl.BindFramebuffer(DRAW_FRAMEBUFFER, single);
+    gl.BlitFramebuffer(0, 0, width, height, 0, 0, width, height, COLOR_BUFFER_BIT, NEAREST);
+    gl.BindFramebuffer(FRAMEBUFFER, single);
+  }
+  int Red(int x, int y) { return ::Red(gl, x, y); }
+};
+
+// A 16 x 16 context drawing into a 4-sample framebuffer object with a solid shader.
+struct Fixture {
+  Context gl{16, 16};
+  MultisampleFbo fbo{gl, 4, 16, 16};
+  SolidShader shader;
+};
+
+void DrawWindowTriangle(Context& gl, SolidShader& shader, glm::vec2 a, glm::vec2 b, glm::vec2 c, int w, int h,
+                        float za = 0.0f, float zb = 0.0f, float zc = 0.0f) {
+  MakeVertexArray(gl, {WindowToClip(a.x, a.y, w, h, za), WindowToClip(b.x, b.y, w, h, zb), WindowToClip(c.x, c.y, w, h, zc)});
+  gl.UseProgram(shader);
+  gl.DrawArrays(TRIANGLES, 0, 3);
+}
+
+}  // namespace
+
+TEST_CASE("multisample rasterizer: each sample's coverage is the exact edge test at its position", "[multisample]") {
+  std::mt19937 rng(1234);
+  for (int samples : {2, 4, 8}) {
+    const auto* pos = detail::SamplePositions(samples);
+    for (int trial = 0; trial < 300; ++trial) {
+      constexpr int W = 40, H = 40;
+      // Vertices on the 1/16 grid half the time, so that edges pass exactly through sample positions.
+      std::uniform_int_distribution<int> coord(-16 * 256, (W + 4) * 256);
+      std::int64_t X[3], Y[3];
+      detail::WindowVertex v[3];
+      for (int k = 0; k < 3; ++k) {
+        X[k] = coord(rng);
+        Y[k] = coord(rng);
+        if (trial % 2) {
+          X[k] &= ~15;
+          Y[k] &= ~15;
+        }
+        if (trial % 5 == 0 && k > 0) {  // small triangles too
+          X[k] = X[0] + (coord(rng) % 700);
+          Y[k] = Y[0] + (coord(rng) % 700);
+        }
+        v[k].win = glm::vec4(float(X[k]) / 256.0f, float(Y[k]) / 256.0f, 0.5f, 1.0f);
+      }
+      SampleRecorder rec(W, H, samples);
+      detail::RasterTarget target;
+      target.bounds = detail::Rect{0, 0, W, H};
+      target.samples = samples;
+      auto blocks = std::make_unique<detail::BlockBuffer>();
+      blocks->samples = samples;
+      const detail::BlockSink sink{&SampleRecorder::Flush, &rec};
+      detail::RasterizeTriangle(v[0], v[1], v[2], true, target, *blocks, sink);
+      sink.Flush(*blocks);
+      const detail::Rect box = detail::TriangleCentreBox(v[0].win, v[1].win, v[2].win, target.bounds, samples);
+      int wrong = 0, twice = 0, outside_box = 0;
+      for (int y = 0; y < H; ++y)
+        for (int x = 0; x < W; ++x) {
+          std::uint32_t expect = 0;
+          for (int s = 0; s < samples; ++s)
+            if (Inside(std::int64_t(x) * 256 + pos[s][0] * 16, std::int64_t(y) * 256 + pos[s][1] * 16, X, Y))
+              expect |= 1u << s;
+          const std::size_t i = std::size_t(y * W + x);
+          if (rec.mask[i] != expect) ++wrong;
+          if (rec.emitted[i] > 1) ++twice;
+          if (expect && (x < box.x0 || x >= box.x1 || y < box.y0 || y >= box.y1)) ++outside_box;
+        }
+      INFO("samples " << samples << ", trial " << trial);
+      REQUIRE(wrong == 0);
+      REQUIRE(twice == 0);
+      REQUIRE(outside_box == 0);
+    }
+  }
+}
+
+TEST_CASE_METHOD(Fixture, "multisample: an edge through a pixel resolves to the share of its samples covered",
+                 "[multisample]") {
+  fbo.Clear(COLOR_BUFFER_BIT);
+  // Covers x < 8.5: column 8 has the samples at x offsets 0.375 and 0.125 inside (two of four).
+  DrawWindowTriangle(gl, shader, {-10, -10}, {8.5f, -10}, {8.5f, 40}, 16, 16);
+  fbo.Resolve();
+  CHECK(fbo.Red(7, 8) == 255);
+  CHECK(std::abs(fbo.Red(8, 8) - 128) <= 1);
+  CHECK(fbo.Red(9, 8) == 0);
+  CHECK(gl.GetError() == NO_ERROR);
+
+  SECTION("with MULTISAMPLE disabled a pixel is covered at its centre, in all samples") {
+    gl.BindFramebuffer(FRAMEBUFFER, fbo.ms);
+    gl.Disable(MULTISAMPLE);
+    gl.Clear(COLOR_BUFFER_BIT);
+    DrawWindowTriangle(gl, shader, {-10, -10}, {8.6f, -10}, {8.6f, 40}, 16, 16);  // the centre 8.5 inside
+    fbo.Resolve();
+    CHECK(fbo.Red(8, 8) == 255);
+    CHECK(fbo.Red(9, 8) == 0);
+  }
+}
+
+TEST_CASE("multisample: the fragment shader runs once per pixel", "[multisample]") {
+  Context gl(16, 16, Samples(4));
+  CaptureShader shader;
+  MakeVertexArray(gl, {WindowToClip(0.3f, 0.2f, 16, 16), WindowToClip(15.6f, 3.1f, 16, 16), WindowToClip(4.2f, 15.3f, 16, 16)},
+                  {glm::vec4(0), glm::vec4(0), glm::vec4(0)});
+  gl.UseProgram(shader);
+  gl.DrawArrays(TRIANGLES, 0, 3);
+  gl.Finish();
+  REQUIRE(!shader.samples.empty());
+  for (const auto& [pixel, sample] : shader.samples) {
+    CHECK(sample.hits == 1);
+    CHECK(sample.frag_coord.x == float(pixel.first) + 0.5f);  // gl_FragCoord at the pixel centre
+  }
+}
+
+TEST_CASE_METHOD(Fixture, "multisample: depth is tested per sample at each sample's depth", "[multisample]") {
+  fbo.Clear(COLOR_BUFFER_BIT | DEPTH_BUFFER_BIT);
+  gl.Enable(DEPTH_TEST);
+  // A wall at depth 0 (window 0.5) everywhere, then a plane rising in x through it at x = 8.5: its left half in
+  // front. Column 8's samples left of 8.5 pass, those right of it fail.
+  DrawWindowTriangle(gl, shader, {-40, -40}, {60, -40}, {-40, 60}, 16, 16);
+  DrawWindowTriangle(gl, shader, {-40, 60}, {60, -40}, {60, 60}, 16, 16);
+  shader.color = glm::vec4(0, 0, 0, 1);
+  const float slope = 0.05f;  // clip z per pixel
+  auto z = [&](float x) { return (x - 8.5f) * slope; };
+  MakeVertexArray(gl, {WindowToClip(-8, -8, 16, 16, z(-8)), WindowToClip(24, -8, 16, 16, z(24)),
+                       WindowToClip(-8, 24, 16, 16, z(-8)), WindowToClip(24, 24, 16, 16, z(24))});
+  gl.UseProgram(shader);
+  gl.DrawArrays(TRIANGLE_STRIP, 0, 4);
+  fbo.Resolve();
+  CHECK(fbo.Red(7, 5) == 0);
+  CHECK(std::abs(fbo.Red(8, 5) - 128) <= 1);
+  CHECK(fbo.Red(9, 5) == 255);
+}
+
+TEST_CASE("multisample: SAMPLE_COVERAGE, SAMPLE_MASK and SAMPLE_ALPHA_TO_COVERAGE keep samples", "[multisample]") {
+  Context gl(8, 8);
+  MultisampleFbo fbo(gl, 4, 8, 8);
+  SolidShader shader;
+  auto fill = [&]() {
+    gl.BindFramebuffer(FRAMEBUFFER, fbo.ms);
+    gl.ClearColor(0, 0, 0, 0);
+    gl.Clear(COLOR_BUFFER_BIT);
+    DrawWindowTriangle(gl, shader, {-20, -20}, {40, -20}, {-20, 40}, 8, 8);
+    fbo.Resolve();
+    return fbo.Red(2, 2);
+  };
+  CHECK(fill() == 255);
+  gl.Enable(SAMPLE_COVERAGE);
+  gl.SampleCoverage(0.5f, false);  // two of four
+  CHECK(std::abs(fill() - 128) <= 1);
+  gl.SampleCoverage(0.3f, true);  // floor(1.2) = 1 sample, inverted: three of four
+  CHECK(std::abs(fill() - 191) <= 1);
+  gl.Disable(SAMPLE_COVERAGE);
+  gl.Enable(SAMPLE_MASK);
+  gl.SampleMaski(0, 0x1);
+  CHECK(std::abs(fill() - 64) <= 1);
+  gl.SampleMaski(0, 0x0);
+  CHECK(fill() == 0);
+  gl.Disable(SAMPLE_MASK);
+  gl.Enable(SAMPLE_ALPHA_TO_COVERAGE);
+  shader.color = glm::vec4(1, 1, 1, 0.74f);  // samples 0 to 2: alpha > s / 4
+  CHECK(std::abs(fill() - 191) <= 1);
+  shader.color = glm::vec4(1, 1, 1, 0.1f);  // sample 0 only: alpha > 0 / 4
+  CHECK(std::abs(fill() - 64) <= 1);
+  shader.color = glm::vec4(1, 1, 1, 0.0f);
+  CHECK(fill() == 0);
+  shader.color = glm::vec4(1, 1, 1, 0.76f);  // all: alpha > 3 / 4
+  CHECK(fill() == 255);
+  gl.Disable(MULTISAMPLE);  // the coverage operations act only while MULTISAMPLE is enabled
+  shader.color = glm::vec4(1, 1, 1, 0.1f);
+  CHECK(fill() == 255);
+  gl.Enable(MULTISAMPLE);
+  CHECK(gl.GetError() == NO_ERROR);
+  // Into a single-sampled framebuffer the coverage operations do nothing.
+  gl.BindFramebuffer(FRAMEBUFFER, fbo.single);
+  gl.Clear(COLOR_BUFFER_BIT);
+  DrawWindowTriangle(gl, shader, {-20, -20}, {40, -20}, {-20, 40}, 8, 8);
+  CHECK(fbo.Red(2, 2) == 255);
+}
+
+TEST_CASE_METHOD(Fixture, "multisample: stencil is kept per sample", "[multisample]") {
+  fbo.Clear(COLOR_BUFFER_BIT | STENCIL_BUFFER_BIT);
+  gl.Enable(STENCIL_TEST);
+  gl.StencilFunc(ALWAYS, 1, 0xFF);
+  gl.StencilOp(KEEP, KEEP, REPLACE);
+  gl.ColorMask(false, false, false, false);
+  DrawWindowTriangle(gl, shader, {-10, -10}, {8.5f, -10}, {8.5f, 40}, 16, 16);  // marks x < 8.5
+  gl.ColorMask(true, true, true, true);
+  gl.StencilFunc(EQUAL, 1, 0xFF);
+  DrawWindowTriangle(gl, shader, {-40, -40}, {60, -40}, {-40, 60}, 16, 16);
+  DrawWindowTriangle(gl, shader, {-40, 60}, {60, -40}, {60, 60}, 16, 16);
+  fbo.Resolve();
+  CHECK(fbo.Red(7, 3) == 255);
+  CHECK(std::abs(fbo.Red(8, 3) - 128) <= 1);
+  CHECK(fbo.Red(9, 3) == 0);
+}
+
+TEST_CASE("multisample: lines and points cover every sample of their pixels", "[multisample]") {
+  Context gl(16, 16, Samples(4));
+  gl.ClearColor(0, 0, 0, 1);
+  gl.Clear(COLOR_BUFFER_BIT);
+  SolidShader shader;
+  MakeVertexArray(gl, {WindowToClip(0.5f, 4.5f, 16, 16), WindowToClip(15.5f, 4.5f, 16, 16), WindowToClip(3.5f, 10.5f, 16, 16)});
+  gl.UseProgram(shader);
+  gl.DrawArrays(LINES, 0, 2);
+  gl.DrawArrays(POINTS, 2, 1);
+  CHECK(Red(gl, 6, 4) == 255);
+  CHECK(Red(gl, 3, 10) == 255);
+  CHECK(Red(gl, 6, 5) == 0);
+}
+
+TEST_CASE("multisample: the context's framebuffer reads resolved", "[multisample]") {
+  Context gl(16, 16, Samples(4));
+  CHECK(gl.GetError() == NO_ERROR);
+  int v = -1;
+  gl.GetIntegerv(SAMPLES, &v);
+  CHECK(v == 4);
+  gl.GetIntegerv(SAMPLE_BUFFERS, &v);
+  CHECK(v == 1);
+  gl.ClearColor(0, 0, 1, 1);
+  gl.Clear(COLOR_BUFFER_BIT);
+  SolidShader shader;
+  DrawWindowTriangle(gl, shader, {-10, -10}, {8.5f, -10}, {8.5f, 40}, 16, 16);
+  std::uint8_t px[4];
+  gl.ReadPixels(8, 8, 1, 1, RGBA, UNSIGNED_BYTE, px);
+  CHECK(std::abs(int(px[0]) - 128) <= 1);
+  CHECK(std::abs(int(px[2]) - 255) <= 1);
+  const Image image = gl.ReadPixels();
+  CHECK(std::abs(int(image.rgba[(std::size_t(15 - 8) * 16 + 8) * 4]) - 128) <= 1);
+  // A draw after a read is resolved again at the next read.
+  gl.Enable(DEPTH_TEST);
+  DrawWindowTriangle(gl, shader, {-10, -10}, {40, -10}, {-10, 40}, 16, 16);
+  gl.ReadPixels(8, 8, 1, 1, RGBA, UNSIGNED_BYTE, px);
+  CHECK(px[0] == 255);
+  CHECK(gl.ReadDepth(8, 8) == 0.5f);
+
+  SECTION("sample counts round up; outside 0 to 8 is refused") {
+    Context three(4, 4, Samples(3));
+    three.GetIntegerv(SAMPLES, &v);
+    CHECK(v == 4);
+    Context nine(4, 4, Samples(9));
+    CHECK(nine.GetError() == INVALID_VALUE);
+    nine.GetIntegerv(SAMPLES, &v);
+    CHECK(v == 0);
+  }
+}
+
+TEST_CASE("multisample: renderbuffers, completeness, blits and reads follow OpenGL", "[multisample]") {
+  Context gl(8, 8);
+  int v = 0;
+  gl.GetIntegerv(MAX_SAMPLES, &v);
+  CHECK(v == 8);
+  const std::uint32_t rb = gl.GenRenderbuffer(), rb2 = gl.GenRenderbuffer();
+  gl.BindRenderbuffer(RENDERBUFFER, rb);
+  gl.RenderbufferStorageMultisample(RENDERBUFFER, 3, RGBA8, 8, 8);
+  gl.GetRenderbufferParameteriv(RENDERBUFFER, RENDERBUFFER_SAMPLES, &v);
+  CHECK(v == 4);
+  gl.RenderbufferStorageMultisample(RENDERBUFFER, 9, RGBA8, 8, 8);
+  CHECK(gl.GetError() == INVALID_OPERATION);
+  gl.RenderbufferStorageMultisample(RENDERBUFFER, -1, RGBA8, 8, 8);
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.RenderbufferStorage(RENDERBUFFER, RGBA8, 8, 8);
+  gl.GetRenderbufferParameteriv(RENDERBUFFER, RENDERBUFFER_SAMPLES, &v);
+  CHECK(v == 0);
+  gl.RenderbufferStorageMultisample(RENDERBUFFER, 4, RGBA8, 8, 8);
+  gl.BindRenderbuffer(RENDERBUFFER, rb2);
+  gl.RenderbufferStorageMultisample(RENDERBUFFER, 2, DEPTH_COMPONENT24, 8, 8);
+  const std::uint32_t fbo = gl.GenFramebuffer();
+  gl.BindFramebuffer(FRAMEBUFFER, fbo);
+  gl.FramebufferRenderbuffer(FRAMEBUFFER, COLOR_ATTACHMENT0, RENDERBUFFER, rb);
+  gl.FramebufferRenderbuffer(FRAMEBUFFER, DEPTH_ATTACHMENT, RENDERBUFFER, rb2);
+  CHECK(gl.CheckFramebufferStatus(FRAMEBUFFER) == FRAMEBUFFER_INCOMPLETE_MULTISAMPLE);
+  gl.RenderbufferStorageMultisample(RENDERBUFFER, 4, DEPTH_COMPONENT24, 8, 8);
+  CHECK(gl.CheckFramebufferStatus(FRAMEBUFFER) == FRAMEBUFFER_COMPLETE);
+  gl.GetIntegerv(SAMPLES, &v);
+  CHECK(v == 4);
+  float p[2];
+  gl.GetMultisamplefv(SAMPLE_POSITION, 1, p);
+  CHECK(p[0] == 0.875f);
+  CHECK(p[1] == 0.375f);
+  gl.GetMultisamplefv(SAMPLE_POSITION, 4, p);
+  CHECK(gl.GetError() == INVALID_VALUE);
+  std::uint8_t px[4];
+  gl.ReadPixels(0, 0, 1, 1, RGBA, UNSIGNED_BYTE, px);
+  CHECK(gl.GetError() == INVALID_OPERATION);
+  gl.BindFramebuffer(DRAW_FRAMEBUFFER, 0);
+  gl.BlitFramebuffer(0, 0, 8, 8, 0, 0, 4, 4, COLOR_BUFFER_BIT, NEAREST);  // scaling
+  CHECK(gl.GetError() == INVALID_OPERATION);
+  gl.BlitFramebuffer(0, 0, 8, 8, 0, 0, 8, 8, COLOR_BUFFER_BIT, NEAREST);
+  CHECK(gl.GetError() == NO_ERROR);
+  gl.SampleMaski(1, 0);
+  CHECK(gl.GetError() == INVALID_VALUE);
+  CHECK(gl.IsEnabled(MULTISAMPLE));
+}
