@@ -53,6 +53,7 @@ struct Options {
   std::string env;              // --env FILE.hdr
   bool wireframe = false, quiet = false, info = false, shadow = false;
   int supersample = 1, turntable = 0, fps = 24;
+  int msaa = 4;  // samples per pixel (1: none)
   int sheet_cols = 0, sheet_rows = 0;  // --sheet; 0: none
   float point_size = 3.0f;
   double timeout = 30.0;   // seconds an import may take; 0: no limit
@@ -178,6 +179,10 @@ void Parse(CLI::App& app, int argc, char** argv, Options& o) {
   AddChecked(app, "--point-size", "PX", "diameter of the points of point meshes (1 to 64, default 3)",
              "wants 1 to 64 pixels", [&o](const std::string& v) {
                return ParseFloats(v, 1, &o.point_size) && o.point_size >= 1.0f && o.point_size <= 64.0f;
+             });
+  AddChecked(app, "--msaa", "N", "multisampling: N samples a pixel, 1 (off), 2, 4 (default) or 8",
+             "wants 1, 2, 4 or 8", [&o](const std::string& v) {
+               return ParseInt(v, 1, 8, o.msaa) && (o.msaa == 1 || o.msaa == 2 || o.msaa == 4 || o.msaa == 8);
              });
   AddChecked(app, "--supersample", "N", "render N times larger and average down (1 to 4, default 1)",
              "wants 1 to 4", [&o](const std::string& v) { return ParseInt(v, 1, 4, o.supersample); });
@@ -450,10 +455,17 @@ std::string WithSuffix(const std::string& path, const std::string& suffix) {
 
 enum Status { kOk = 0, kLoadFailed = 1, kWriteFailed = 3 };
 
+// The context's framebuffer: --msaa samples a pixel (--info draws nothing: one sample).
+softgl::Context::Options ContextOptions(const Options& o) {
+  softgl::Context::Options options;
+  options.samples = o.info || o.msaa <= 1 ? 0 : o.msaa;
+  return options;
+}
+
 // Renders models, one after another, into one context (and its threads).
 class Renderer {
  public:
-  Renderer(const Options& o, int w, int h) : o_(o), w_(w), h_(h), gl_(w, h) {}
+  Renderer(const Options& o, int w, int h) : o_(o), w_(w), h_(h), gl_(w, h, ContextOptions(o)) {}
   bool Ready() { return gl_.GetError() == softgl::NO_ERROR; }
 
   // The --env image as the PBR shader's environment (and the triangle that shows it behind the model); false
