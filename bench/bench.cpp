@@ -393,6 +393,7 @@ struct FrameSpec {
   bool indexed;
   int count;
   const char* png;
+  int samples = 0;  // > 1: into a multisampled framebuffer, resolved every frame
 };
 
 double TimeSoftgl(int n, softgl::Context& gl, const FrameSpec& f) {
@@ -404,12 +405,31 @@ double TimeSoftgl(int n, softgl::Context& gl, const FrameSpec& f) {
       gl.DrawArrays(softgl::TRIANGLES, 0, f.count);
     }
     gl.Finish();
+    if (f.samples > 1) {  // a read resolves the multisampled framebuffer
+      std::uint8_t px[4];
+      gl.ReadPixel(0, 0, px);
+    }
   });
   if (!g_png_dir.empty()) softgl::WritePng(g_png_dir + "/" + f.png, gl.ReadPixels());
   return ms;
 }
 
 double TimeGl(int n, const FrameSpec& f) {
+  GLint vp[4];
+  glGetIntegerv(GL_VIEWPORT, vp);
+  GLuint fbo = 0;
+  if (f.samples > 1) {  // a framebuffer object of that many samples, resolved into the context's by a blit
+    GLuint rb[2];
+    glGenRenderbuffers(2, rb);
+    glGenFramebuffers(1, &fbo);
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+    glBindRenderbuffer(GL_RENDERBUFFER, rb[0]);
+    glRenderbufferStorageMultisample(GL_RENDERBUFFER, f.samples, GL_RGBA8, vp[2], vp[3]);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, rb[0]);
+    glBindRenderbuffer(GL_RENDERBUFFER, rb[1]);
+    glRenderbufferStorageMultisample(GL_RENDERBUFFER, f.samples, GL_DEPTH24_STENCIL8, vp[2], vp[3]);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, rb[1]);
+  }
   const double ms = MedianMs(n, [&] {
     glClear(GL_COLOR_BUFFER_BIT | (f.depth ? GL_DEPTH_BUFFER_BIT : 0));
     if (f.indexed) {
@@ -417,11 +437,15 @@ double TimeGl(int n, const FrameSpec& f) {
     } else {
       glDrawArrays(GL_TRIANGLES, 0, GLsizei(f.count));
     }
+    if (fbo) {
+      glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+      glBlitFramebuffer(0, 0, vp[2], vp[3], 0, 0, vp[2], vp[3], GL_COLOR_BUFFER_BIT, GL_NEAREST);
+      glBindFramebuffer(GL_DRAW_FRAMEBUFFER, fbo);
+    }
     glFinish();
   });
+  if (fbo) glBindFramebuffer(GL_FRAMEBUFFER, 0);
   if (!g_png_dir.empty()) {  // llvmpipe's last frame beside softgl's, top row first
-    GLint vp[4];
-    glGetIntegerv(GL_VIEWPORT, vp);
     softgl::Image img;
     img.width = vp[2];
     img.height = vp[3];
@@ -572,7 +596,9 @@ int main(int argc, char** argv) {
     scenes.push_back({name, w, h, "Mtri/s", double(g.indices.size() / 3),
                       [&g, &vp, &eye, &frame, w, h, &softgl_setup](int n) {
                         return WithShader<wide::PhongShader, scalar::PhongShader>([&](auto& shader) {
-                          softgl::Context gl(w, h, g_options);
+                          softgl::Context::Options options = g_options;
+                          options.samples = frame.samples;
+                          softgl::Context gl(w, h, options);
                           softgl_setup(gl, g);
                           shader.view_proj = vp;
                           shader.eye = eye;
@@ -596,8 +622,14 @@ int main(int argc, char** argv) {
                         });
                       }});
   };
-  if (have_engine)
+  FrameSpec engine_msaa_frame = engine_frame;
+  engine_msaa_frame.samples = 4;
+  engine_msaa_frame.png = "bench_engine_msaa.png";
+  if (have_engine) {
     add_phong_scene("model: 2CylinderEngine, Blinn-Phong", 1280, 720, engine, engine_vp, engine_eye, engine_frame);
+    add_phong_scene("model: 2CylinderEngine, Blinn-Phong, 4x MSAA", 1280, 720, engine, engine_vp, engine_eye,
+                    engine_msaa_frame);
+  }
   // The subdivided Suzanne (251,904 triangles, assimp-testmodels' BLEND/SuzanneSubdiv_252.blend) at 1920x1080.
   Geometry suzanne;
   glm::mat4 suzanne_vp(1.0f);

@@ -49,6 +49,11 @@ softgl::Image TexturedCube(int width, int height);
 /// the left, and where the red and green panels overlap the left stays bright.
 softgl::Image Srgb(int width, int height);
 
+/// Multisampling: the same scene (a lit torus and thin spokes) with 1, 2, 4 and 8 samples a pixel, left to right,
+/// each rendered at half size into a multisampled framebuffer object, resolved by BlitFramebuffer and magnified 2x
+/// so that the pixels show: staircase edges on the left, smoother with every doubling of the samples.
+softgl::Image Multisample(int width, int height);
+
 /// Shadow mapping: depth from the light into a depth texture through a framebuffer object, then the lit pass
 /// samples it with depth comparison, 3 x 3 taps of 2 x 2 percentage-closer filtering.
 softgl::Image ShadowMap(int width, int height);

@@ -1,4 +1,5 @@
-// scenes_fragment_ops.cpp — example scenes for the per-fragment operations: stencil, blending, polygon offset.
+// scenes_fragment_ops.cpp — example scenes for the per-fragment operations: stencil, blending, polygon offset,
+// multisampling.
 #include <cmath>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -289,6 +290,80 @@ softgl::Image Decals(int width, int height) {
     gl.DrawArrays(softgl::TRIANGLE_FAN, 0, 4);
     gl.Disable(softgl::POLYGON_OFFSET_FILL);
   }
+  return gl.ReadPixels();
+}
+
+namespace {
+
+// The multisample example's scene, drawn into the bound framebuffer (width x height): a lit torus and a fan of
+// thin spokes in front of it, seen at a slant, so that edges of every slope and sliver triangles show.
+void SpokesScene(softgl::Context& gl, int width, int height) {
+  static const Mesh torus = MakeTorus(32, 16, 0.62f, 0.22f);
+  gl.Viewport(0, 0, width, height);
+  gl.ClearColor(0.93f, 0.93f, 0.9f, 1.0f);
+  gl.Clear(softgl::COLOR_BUFFER_BIT | softgl::DEPTH_BUFFER_BIT);
+  gl.Enable(softgl::DEPTH_TEST);
+  const glm::mat4 proj = Projection(width, height, 40.0f, 0.1f, 10.0f);
+  const glm::mat4 view = glm::lookAt(glm::vec3(0.0f, 1.6f, 4.6f), glm::vec3(0.0f), glm::vec3(0, 1, 0));
+  LitShader lit;
+  lit.model = glm::rotate(kIdentity, 1.1f, glm::vec3(1.0f, 0.2f, 0.0f));
+  lit.mvp = proj * view * lit.model;
+  UploadLitMesh(gl, torus);
+  gl.UseProgram(lit);
+  DrawMesh(gl, torus);
+  // Spokes: 24 triangles from the centre, each 4 degrees wide, in the plane z = 0.3.
+  std::vector<glm::vec4> spokes;
+  for (int i = 0; i < 24; ++i) {
+    const float a = float(i) * 2.0f * kPi / 24.0f, w = 0.035f;
+    spokes.push_back(glm::vec4(0.0f, 0.0f, 0.3f, 1.0f));
+    spokes.push_back(glm::vec4(1.0f * std::cos(a - w), 1.0f * std::sin(a - w), 0.3f, 1.0f));
+    spokes.push_back(glm::vec4(1.0f * std::cos(a + w), 1.0f * std::sin(a + w), 0.3f, 1.0f));
+  }
+  const std::uint32_t vao = gl.GenVertexArray(), vbo = gl.GenBuffer();
+  gl.BindVertexArray(vao);
+  gl.BindBuffer(softgl::ARRAY_BUFFER, vbo);
+  gl.BufferData(softgl::ARRAY_BUFFER, std::ptrdiff_t(spokes.size() * sizeof(glm::vec4)), spokes.data());
+  gl.VertexAttributePointer(0, 4, softgl::FLOAT, false, 0, 0);
+  gl.EnableVertexAttribArray(0);
+  FlatShader flat;
+  flat.mvp = proj * view * glm::rotate(kIdentity, -0.5f, glm::vec3(1.0f, 0.0f, 0.0f));
+  flat.color = glm::vec4(0.12f, 0.2f, 0.45f, 1.0f);
+  gl.UseProgram(flat);
+  gl.DrawArrays(softgl::TRIANGLES, 0, int(spokes.size()));
+  gl.Disable(softgl::DEPTH_TEST);
+}
+
+}  // namespace
+
+softgl::Image Multisample(int width, int height) {
+  softgl::Context gl(width, height);
+  // Four panels, left to right 1, 2, 4 and 8 samples a pixel, each rendered at half the panel's size into a
+  // framebuffer object, resolved into a single-sampled one by a blit, then magnified 2x (NEAREST) into the panel.
+  const int panel = width / 4, w = panel / 2, h = height / 2;
+  const std::uint32_t resolved = gl.GenFramebuffer(), resolved_color = gl.GenRenderbuffer();
+  gl.BindRenderbuffer(softgl::RENDERBUFFER, resolved_color);
+  gl.RenderbufferStorage(softgl::RENDERBUFFER, softgl::RGBA8, w, h);
+  gl.BindFramebuffer(softgl::FRAMEBUFFER, resolved);
+  gl.FramebufferRenderbuffer(softgl::FRAMEBUFFER, softgl::COLOR_ATTACHMENT0, softgl::RENDERBUFFER, resolved_color);
+  const int counts[4] = {0, 2, 4, 8};
+  for (int p = 0; p < 4; ++p) {
+    const std::uint32_t fbo = gl.GenFramebuffer(), color = gl.GenRenderbuffer(), depth = gl.GenRenderbuffer();
+    gl.BindFramebuffer(softgl::FRAMEBUFFER, fbo);
+    gl.BindRenderbuffer(softgl::RENDERBUFFER, color);
+    gl.RenderbufferStorageMultisample(softgl::RENDERBUFFER, counts[p], softgl::RGBA8, w, h);
+    gl.FramebufferRenderbuffer(softgl::FRAMEBUFFER, softgl::COLOR_ATTACHMENT0, softgl::RENDERBUFFER, color);
+    gl.BindRenderbuffer(softgl::RENDERBUFFER, depth);
+    gl.RenderbufferStorageMultisample(softgl::RENDERBUFFER, counts[p], softgl::DEPTH_COMPONENT24, w, h);
+    gl.FramebufferRenderbuffer(softgl::FRAMEBUFFER, softgl::DEPTH_ATTACHMENT, softgl::RENDERBUFFER, depth);
+    SpokesScene(gl, w, h);
+    gl.BindFramebuffer(softgl::READ_FRAMEBUFFER, fbo);
+    gl.BindFramebuffer(softgl::DRAW_FRAMEBUFFER, resolved);
+    gl.BlitFramebuffer(0, 0, w, h, 0, 0, w, h, softgl::COLOR_BUFFER_BIT, softgl::NEAREST);  // the resolve
+    gl.BindFramebuffer(softgl::READ_FRAMEBUFFER, resolved);
+    gl.BindFramebuffer(softgl::DRAW_FRAMEBUFFER, 0);
+    gl.BlitFramebuffer(0, 0, w, h, p * panel, 0, p * panel + 2 * w, 2 * h, softgl::COLOR_BUFFER_BIT, softgl::NEAREST);
+  }
+  gl.BindFramebuffer(softgl::FRAMEBUFFER, 0);
   return gl.ReadPixels();
 }
 

@@ -77,6 +77,10 @@ TEST_CASE("image: textured cube", "[image]") { CompareWithGolden("textured_cube"
 
 TEST_CASE("image: sRGB", "[image][srgb]") { CompareWithGolden("srgb", scenes::Srgb(640, 480)); }
 
+TEST_CASE("image: multisample", "[image][multisample]") {
+  CompareWithGolden("multisample", scenes::Multisample(640, 320));
+}
+
 TEST_CASE("image: shadow map", "[image]") { CompareWithGolden("shadow_map", scenes::ShadowMap(640, 480)); }
 
 TEST_CASE("image: post-processing", "[image]") { CompareWithGolden("post_process", scenes::PostProcess(640, 480)); }

@@ -59,6 +59,7 @@ TEST_CASE("every example scene is the same image with 1, 2, 3 and 8 threads", "[
       {"decals", [] { return scenes::Decals(320, 240); }},
       {"textured_cube", [] { return scenes::TexturedCube(333, 211); }},
       {"srgb", [] { return scenes::Srgb(322, 240); }},
+      {"multisample", [] { return scenes::Multisample(324, 170); }},
       {"shadow_map", [] { return scenes::ShadowMap(320, 240); }},
       {"post_process", [] { return scenes::PostProcess(320, 240); }},
       {"environment_map", [] { return scenes::EnvironmentMap(320, 240); }},
