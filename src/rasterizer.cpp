@@ -401,7 +401,7 @@ struct PlanesEntry {
 
 // Whether varying i is divided by w (smooth), or taken as it is (noperspective, flat).
 bool Perspective(const RasterTarget& t, int i) {
-  return !t.interpolation || t.interpolation[i] == Interpolation::kSmooth;
+  return !t.interpolation || t.interpolation[i] == Interpolation::kSmooth || t.interpolation[i] == Interpolation::kCentroid;
 }
 
 }  // namespace
@@ -948,6 +948,23 @@ namespace softgl::detail {
 void InterpolateFragCoords(BlockBuffer& blocks) {
   static const BlockFn frag_coord_of_block = SOFTGL_CHOOSE(FragCoordOfBlock);
   for (int b = 0; b < blocks.count; ++b) frag_coord_of_block(blocks, b);
+}
+
+void InterpolateCentroids(BlockBuffer& blocks, const std::int8_t (*centroid)[kLanes], const Interpolation* modes) {
+  const auto* pos = SamplePositions(blocks.samples);
+  for (int b = 0; b < blocks.count; ++b) {
+    float* var = blocks.Varyings(b);
+    for (int lane = 0; lane < kLanes; ++lane) {
+      const int s = centroid[b][lane];
+      const TrianglePlanes* p = blocks.quad_planes[b][lane >> 2];
+      if (s < 0 || !p || !((blocks.live[b] >> lane) & 1u)) continue;
+      const float rx = (float(blocks.X(b, lane)) + float(pos[s][0]) / 16.0f) - p->x0;
+      const float ry = (float(blocks.Y(b, lane)) + float(pos[s][1]) / 16.0f) - p->y0;
+      const float w = 1.0f / ((p->oow.a0 + p->oow.dx * rx) + p->oow.dy * ry);
+      for (int i = 0; i < p->nvar; ++i)
+        if (modes[i] == Interpolation::kCentroid) var[i * kLanes + lane] = ((p->a0[i] + p->dx[i] * rx) + p->dy[i] * ry) * w;
+    }
+  }
 }
 
 void InterpolateVaryings(BlockBuffer& blocks) {

@@ -59,4 +59,9 @@ void RasterizePoint(const WindowVertex& v, float size, bool front_facing, const 
 /// for this, so that quads the early depth test drops are never interpolated).
 void InterpolateVaryings(BlockBuffer& blocks);
 
+/// After InterpolateVaryings, into a multisampled target: the centroid varyings (`modes`, the draw's qualifiers) of
+/// each live lane with centroid[b][lane] = s >= 0 taken again at sample s (the lane's first covered sample, where
+/// not all are covered) instead of the pixel centre. Lanes of lines and points keep the centre's.
+void InterpolateCentroids(BlockBuffer& blocks, const std::int8_t (*centroid)[kLanes], const Interpolation* modes);
+
 }  // namespace softgl::detail

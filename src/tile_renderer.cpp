@@ -94,6 +94,7 @@ struct FragmentStage {
   int outputs;  // colour outputs the target keeps
   int simd;
   const FragmentOpsPlan* plan;
+  bool has_centroid;  // the draw has Centroid<> varyings
 
   static void Run(void* user, BlockBuffer& blocks) {
     const auto* self = static_cast<const FragmentStage*>(user);
@@ -111,6 +112,17 @@ struct FragmentStage {
     const int samples = target->samples;
     const FragmentOpsState& ops = draw->ops;
     SampleDepths depths(blocks, samples, ops.multisample.multisample);
+    // Centroid varyings: each lane's first covered sample where the rasterizer did not cover them all.
+    std::int8_t centroid[BlockBuffer::kCapacity][kLanes];
+    if (has_centroid && ops.multisample.multisample) {
+      const std::uint32_t all = (std::uint32_t(1) << samples) - 1;
+      for (int b = 0; b < blocks.count; ++b)
+        for (int lane = 0; lane < kLanes; ++lane) {
+          std::uint32_t covered = 0;
+          for (int s = 0; s < samples; ++s) covered |= ((blocks.sample_live[b][s] >> lane) & 1u) << s;
+          centroid[b][lane] = std::int8_t(covered == all || covered == 0 ? -1 : __builtin_ctz(covered));
+        }
+    }
     if (draw->early_depth) {
       bool any = false;
       for (int s = 0; s < samples; ++s) {
@@ -129,6 +141,7 @@ struct FragmentStage {
       if (!any) return;
     }
     InterpolateVaryings(blocks);
+    if (has_centroid && ops.multisample.multisample) InterpolateCentroids(blocks, centroid, draw->interpolation);
     Shade(blocks);
     // SAMPLE_ALPHA_TO_COVERAGE, SAMPLE_COVERAGE and SAMPLE_MASK narrow each lane's samples (while MULTISAMPLE is
     // enabled: section 17.3.1).
@@ -391,7 +404,10 @@ void Frame::RenderTile(int tile, TileScratch& scratch) const {
       plan = PlanFragmentOps(draw.ops, target_);
       planned = &draw.ops;
     }
-    FragmentStage stage{&draw, &target_, outputs, simd, &plan};
+    bool has_centroid = false;
+    for (int i = 0; draw.interpolation && i < draw.nvar; ++i)
+      has_centroid = has_centroid || draw.interpolation[i] == Interpolation::kCentroid;
+    FragmentStage stage{&draw, &target_, outputs, simd, &plan, has_centroid};
     const BlockSink sink{&FragmentStage::Run, &stage};
     blocks.count = 0;
     blocks.samples = target_.samples;

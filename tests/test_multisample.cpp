@@ -395,3 +395,69 @@ TEST_CASE("multisample: renderbuffers, completeness, blits and reads follow Open
   CHECK(gl.GetError() == INVALID_VALUE);
   CHECK(gl.IsEnabled(MULTISAMPLE));
 }
+
+namespace {
+
+struct CentroidVaryings {
+  softgl::Centroid<glm::vec4> at_sample;
+  glm::vec4 at_centre;
+};
+
+// Attribute 1 (the window position) into both varyings; records each pixel's values.
+struct CentroidShader : softgl::Shader<CentroidShader, CentroidVaryings> {
+  std::shared_ptr<std::map<std::pair<int, int>, std::pair<glm::vec4, glm::vec4>>> seen =
+      std::make_shared<std::map<std::pair<int, int>, std::pair<glm::vec4, glm::vec4>>>();
+  std::shared_ptr<std::mutex> mutex = std::make_shared<std::mutex>();
+  void Vertex(const softgl::VertexIn& in, softgl::VertexOut<CentroidVaryings>& out) const {
+    out.position = in.attrib[0];
+    out.varyings.at_sample = in.attrib[1];
+    out.varyings.at_centre = in.attrib[1];
+  }
+  bool Fragment(const softgl::FragmentIn<CentroidVaryings>& in, softgl::FragmentOut& out) const {
+    std::lock_guard<std::mutex> lock(*mutex);
+    (*seen)[{int(in.frag_coord.x), int(in.frag_coord.y)}] = {in.varyings.at_sample, in.varyings.at_centre};
+    out.color[0] = glm::vec4(1.0f);
+    return true;
+  }
+};
+
+}  // namespace
+
+TEST_CASE("multisample: Centroid<> varyings are taken at the first covered sample of a partly covered pixel",
+          "[multisample]") {
+  REQUIRE(CentroidShader().VaryingInterpolation()[0] == Interpolation::kCentroid);
+  REQUIRE(CentroidShader().VaryingInterpolation()[4] == Interpolation::kSmooth);
+  for (int samples : {0, 4, 8}) {
+    Context gl(16, 16, Samples(samples));
+    CentroidShader shader;
+    // A triangle whose right edge is x = 8.3 (w = 1: the window position interpolates linearly).
+    const glm::vec2 p[3] = {{-10, -10}, {8.3f, -10}, {8.3f, 40}};
+    std::vector<glm::vec4> pos, value;
+    for (const glm::vec2& v : p) {
+      pos.push_back(WindowToClip(v.x, v.y, 16, 16));
+      value.push_back(glm::vec4(v, 0, 1));
+    }
+    MakeVertexArray(gl, pos, value);
+    gl.UseProgram(shader);
+    gl.DrawArrays(TRIANGLES, 0, 3);
+    gl.Finish();
+    const auto* positions = detail::SamplePositions(samples);
+    for (const auto& [pixel, values] : *shader.seen) {
+      const auto& [at_sample, at_centre] = values;
+      INFO(samples << " samples, pixel " << pixel.first << ", " << pixel.second);
+      CHECK(std::abs(at_centre.x - (float(pixel.first) + 0.5f)) < 1e-3f);
+      CHECK(std::abs(at_centre.y - (float(pixel.second) + 0.5f)) < 1e-3f);
+      if (samples == 0 || pixel.first != 8) {  // covered whole (or single-sampled): the centre
+        CHECK(at_sample == at_centre);
+        continue;
+      }
+      // Column 8: the samples left of x = 8.3 are covered; the first of them in sample order.
+      int first = -1;
+      for (int s = 0; s < samples && first < 0; ++s)
+        if (float(positions[s][0]) / 16.0f < 0.3f) first = s;
+      REQUIRE(first >= 0);
+      CHECK(std::abs(at_sample.x - (8.0f + float(positions[first][0]) / 16.0f)) < 1e-3f);
+      CHECK(std::abs(at_sample.y - (float(pixel.second) + float(positions[first][1]) / 16.0f)) < 1e-3f);
+    }
+  }
+}

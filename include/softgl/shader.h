@@ -64,6 +64,7 @@ enum class Interpolation : std::uint8_t {
   kSmooth = 0,         ///< perspective-correct (the default)
   kNoPerspective = 1,  ///< linear in window space
   kFlat = 2,           ///< the provoking vertex's value for the whole primitive (see Context::ProvokingVertex)
+  kCentroid = 3,       ///< perspective-correct, at the first covered sample of a partly covered pixel (multisampling)
 };
 
 namespace shader_detail {
@@ -71,6 +72,7 @@ namespace shader_detail {
 // how softgl reads the qualifiers of a varyings struct (once per shader class): no user value can carry them.
 inline constexpr std::uint32_t kFlatBits = 0x7FA5F1A7u;
 inline constexpr std::uint32_t kNoPerspectiveBits = 0x7FA5A0E5u;
+inline constexpr std::uint32_t kCentroidBits = 0x7FA5CE27u;
 template <class T>
 void Mark(T* object, std::uint32_t bits) {
   static_assert(sizeof(T) % sizeof(float) == 0, "interpolation qualifiers take float types");
@@ -79,30 +81,36 @@ void Mark(T* object, std::uint32_t bits) {
 }
 }  // namespace shader_detail
 
+namespace shader_detail {
+// A member of a varyings struct with an interpolation qualifier: a T whose default construction marks its floats
+// with `Bits`, and which otherwise is a T.
+template <class T, std::uint32_t Bits>
+struct Qualified : T {
+  Qualified() { Mark(static_cast<T*>(this), Bits); }
+  Qualified(const T& v) : T(v) {}
+  using T::T;
+  Qualified& operator=(const T& v) {
+    T::operator=(v);
+    return *this;
+  }
+};
+}  // namespace shader_detail
+
 /// A varying that is not interpolated: every fragment of a primitive reads the provoking vertex's value (GLSL's
 /// `flat`). T is a vector or lane type: Flat<Float>, Flat<vec3> (wide shaders), Flat<glm::vec3> (scalar form).
 template <class T>
-struct Flat : T {
-  Flat() { shader_detail::Mark(static_cast<T*>(this), shader_detail::kFlatBits); }
-  Flat(const T& v) : T(v) {}
-  using T::T;
-  Flat& operator=(const T& v) {
-    T::operator=(v);
-    return *this;
-  }
-};
+using Flat = shader_detail::Qualified<T, shader_detail::kFlatBits>;
 
 /// A varying interpolated linearly in window space, without perspective correction (GLSL's `noperspective`).
 template <class T>
-struct NoPerspective : T {
-  NoPerspective() { shader_detail::Mark(static_cast<T*>(this), shader_detail::kNoPerspectiveBits); }
-  NoPerspective(const T& v) : T(v) {}
-  using T::T;
-  NoPerspective& operator=(const T& v) {
-    T::operator=(v);
-    return *this;
-  }
-};
+using NoPerspective = shader_detail::Qualified<T, shader_detail::kNoPerspectiveBits>;
+
+/// A perspective-correct varying taken, in a pixel a triangle covers only partly in a multisampled framebuffer, at
+/// the first sample (in sample order) the triangle covers rather than at the pixel centre, which may lie outside
+/// it (GLSL's `centroid`): a texture coordinate then never reaches past the triangle's edge. Elsewhere it is a
+/// smooth varying. Its derivatives across such a pixel's quad are less exact, as OpenGL allows.
+template <class T>
+using Centroid = shader_detail::Qualified<T, shader_detail::kCentroidBits>;
 
 // ---- The wide form: 16 lanes per call ------------------------------------------------------------------------------
 
@@ -560,8 +568,8 @@ class Shader : public Program {
     ~SoftglCopy() { object->~Derived(); }
   };
 
-  // The qualifiers of the varyings, read once from a value-initialized struct (Flat<> and NoPerspective<> mark
-  // their floats).
+  // The qualifiers of the varyings, read once from a value-initialized struct (Flat<>, NoPerspective<> and
+  // Centroid<> mark their floats).
   struct Qualifiers {
     Interpolation mode[kMaxVaryingFloats] = {};
     bool any = false;
@@ -574,6 +582,7 @@ class Shader : public Program {
           std::memcpy(&bits, bytes + std::size_t(k) * SoftglForm::FloatBytes(), sizeof bits);
           if (bits == shader_detail::kFlatBits) mode[k] = Interpolation::kFlat;
           if (bits == shader_detail::kNoPerspectiveBits) mode[k] = Interpolation::kNoPerspective;
+          if (bits == shader_detail::kCentroidBits) mode[k] = Interpolation::kCentroid;
           any = any || mode[k] != Interpolation::kSmooth;
         }
       }
