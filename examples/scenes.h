@@ -71,8 +71,8 @@ softgl::Image EnvironmentMap(int width, int height);
 softgl::Image Instancing(int width, int height);
 
 /// The model in `path` (any format assimp reads), framed by its bounding box from (azimuth, elevation) degrees,
-/// three-point lit, drawn with the built-in shader named "unlit", "phong" or "pbr". An empty image, with the
-/// reason in `error`, when the model cannot be loaded.
+/// three-point lit, drawn with the built-in shader named "unlit", "phong" or "pbr", into a framebuffer of 4 samples
+/// a pixel. An empty image, with the reason in `error`, when the model cannot be loaded.
 softgl::Image ModelView(const std::string& path, const std::string& shader, int width, int height, float azimuth,
                         float elevation, std::string* error = nullptr, float point_size = 1.0f);
 

@@ -11,7 +11,9 @@ namespace scenes {
 
 softgl::Image ModelView(const std::string& path, const std::string& shader, int width, int height, float azimuth,
                         float elevation, std::string* error, float point_size) {
-  softgl::Context gl(width, height);
+  softgl::Context::Options options;
+  options.samples = 4;  // multisampled: the model's silhouette and creases without staircases
+  softgl::Context gl(width, height, options);
   softgl::Model model;
   if (!model.Load(gl, path, error)) return {};
   const float aspect = float(width) / float(height);
