@@ -58,6 +58,27 @@ struct Sampler {
   }
 };
 
+
+// The pixel a 4 x 4 context whose own colour buffer is `format` (Options::color_format) reads back after a clear to
+// `clear`, with FRAMEBUFFER_SRGB enabled when `srgb`; the context's first error goes to `error`.
+struct Cleared {
+  int rgba[4] = {0, 0, 0, 0};
+  Enum error = NO_ERROR;
+};
+Cleared ClearContext(Enum format, const glm::vec4& clear, bool srgb = false) {
+  Context::Options options;
+  options.color_format = format;
+  Context gl(4, 4, options);
+  Cleared out;
+  out.error = gl.GetError();
+  if (srgb) gl.Enable(FRAMEBUFFER_SRGB);
+  gl.ClearColor(clear.r, clear.g, clear.b, clear.a);
+  gl.Clear(COLOR_BUFFER_BIT);
+  std::uint8_t px[4];
+  gl.ReadPixel(3, 3, px);
+  for (int k = 0; k < 4; ++k) out.rgba[k] = px[k];
+  return out;
+}
 }  // namespace
 
 TEST_CASE("wrap modes pick OpenGL's texels", "[texture]") {
@@ -882,18 +903,11 @@ TEST_CASE("FRAMEBUFFER_SRGB: an sRGB attachment encodes clears and fragments, an
   (void)vao;
 
   // A context whose own colour buffer is SRGB8_ALPHA8: the same rules.
-  Context::Options options;
-  options.color_format = SRGB8_ALPHA8;
-  Context srgb(4, 4, options);
-  CHECK(srgb.GetError() == NO_ERROR);
-  srgb.ClearColor(0.5f, 0.25f, 0.5f, 0.5f);
-  srgb.Clear(COLOR_BUFFER_BIT);
-  srgb.ReadPixel(0, 0, px);
-  CHECK((int(px[0]) == 128 && int(px[1]) == 64 && int(px[3]) == 128));  // FRAMEBUFFER_SRGB off: as they are
-  srgb.Enable(FRAMEBUFFER_SRGB);
-  srgb.Clear(COLOR_BUFFER_BIT);
-  srgb.ReadPixel(0, 0, px);
-  CHECK((int(px[0]) == 188 && int(px[1]) == int(detail::SrgbEncode8(0.25f)) && int(px[3]) == 128));
+  const glm::vec4 value(0.5f, 0.25f, 0.5f, 0.5f);
+  const Cleared plain = ClearContext(SRGB8_ALPHA8, value), encoded = ClearContext(SRGB8_ALPHA8, value, true);
+  CHECK(plain.error == NO_ERROR);
+  CHECK((plain.rgba[0] == 128 && plain.rgba[1] == 64 && plain.rgba[3] == 128));  // FRAMEBUFFER_SRGB off: as they are
+  CHECK((encoded.rgba[0] == 188 && encoded.rgba[1] == int(detail::SrgbEncode8(0.25f)) && encoded.rgba[3] == 128));
 }
 
 TEST_CASE("image files load as sRGB textures when asked", "[texture][files][srgb]") {
@@ -1097,24 +1111,14 @@ TEST_CASE("16-bit formats: RGB565, RGBA4 and RGB5_A1 textures and targets, and a
     CHECK(gl.GetError() == NO_ERROR);
   }
   // The context's own colour buffer in RGB565: 5, 6 and 5 bits, alpha 1.
-  Context::Options options;
-  options.color_format = RGB565;
-  Context small(8, 8, options);
-  small.ClearColor(0.5f, 0.5f, 0.5f, 0.0f);
-  small.Clear(COLOR_BUFFER_BIT);
-  std::uint8_t px[4];
-  small.ReadPixel(3, 3, px);
-  CHECK(int(px[0]) == int(std::lround(std::round(0.5f * 31.0f) / 31.0f * 255.0f)));  // 16 / 31 of 255: 132
-  CHECK(int(px[1]) == int(std::lround(std::round(0.5f * 63.0f) / 63.0f * 255.0f)));  // 32 / 63: 130
-  CHECK(int(px[3]) == 255);
-  CHECK(small.GetError() == NO_ERROR);
-  options.color_format = RGBA4;
-  Context refused(8, 8, options);
-  CHECK(refused.GetError() == INVALID_ENUM);
-  refused.ClearColor(0.5f, 0.5f, 0.5f, 0.5f);
-  refused.Clear(COLOR_BUFFER_BIT);
-  refused.ReadPixel(3, 3, px);
-  CHECK(int(px[3]) == 128);  // RGBA8 after all
+  const Cleared small = ClearContext(RGB565, glm::vec4(0.5f, 0.5f, 0.5f, 0.0f));
+  CHECK(small.rgba[0] == int(std::lround(std::round(0.5f * 31.0f) / 31.0f * 255.0f)));  // 16 / 31 of 255: 132
+  CHECK(small.rgba[1] == int(std::lround(std::round(0.5f * 63.0f) / 63.0f * 255.0f)));  // 32 / 63: 130
+  CHECK(small.rgba[3] == 255);
+  CHECK(small.error == NO_ERROR);
+  const Cleared refused = ClearContext(RGBA4, glm::vec4(0.5f));
+  CHECK(refused.error == INVALID_ENUM);
+  CHECK(refused.rgba[3] == 128);  // RGBA8 after all
 }
 
 TEST_CASE("anisotropic filtering: N probes along the footprint's longer axis, at the level of Pmax / N",
