@@ -37,10 +37,11 @@ void ContextState::Draw(const detail::DrawCall& call) {
   // only, and what it holds is released at the end.)
   detail::DrawPacket& packet = draw_packet;
   detail::DrawTextures& tex = draw_textures;
-  for (int u = 0; u < units_used; ++u) {  // (the units past those stay null)
-    tex.textures.unit_2d[u] = units[u].tex_2d ? &(tex.views[0][u] = detail::MakeView(*units[u].tex_2d)) : nullptr;
-    tex.textures.unit_cube[u] = units[u].cube ? &(tex.views[1][u] = detail::MakeView(*units[u].cube)) : nullptr;
-  }
+  for (int u = 0; u < units_used; ++u)  // (the units past those stay null)
+    for (int k = 0; k < detail::kTextureKinds; ++k) {
+      const detail::TextureObject* t = units[u].bound[k].get();
+      (tex.textures.*detail::kKindUnits[k])[u] = t ? &(tex.views[k][u] = detail::MakeView(*t)) : nullptr;
+    }
   packet.textures = &tex.textures;
   packet.ops = ops;
   for (int k = 0; k < 2; ++k)  // the active occlusion queries count this draw's fragments

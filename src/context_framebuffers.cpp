@@ -15,18 +15,20 @@ Enum FramebufferStatus(const FramebufferObject& f) {
     if (!a.Present()) continue;
     any = true;
     const detail::TextureLevel* l = a.Level();
-    if (!l->Defined() || detail::IsDepthFormat(l->format) || detail::HasStencil(l->format))
+    if (!l->Defined() || detail::IsDepthFormat(l->format) || detail::HasStencil(l->format) || a.layer >= l->depth)
       return FRAMEBUFFER_INCOMPLETE_ATTACHMENT;
   }
   if (f.depth.Present()) {
     any = true;
     const detail::TextureLevel* l = f.depth.Level();
-    if (!l->Defined() || !detail::IsDepthFormat(l->format)) return FRAMEBUFFER_INCOMPLETE_ATTACHMENT;
+    if (!l->Defined() || !detail::IsDepthFormat(l->format) || f.depth.layer >= l->depth)
+      return FRAMEBUFFER_INCOMPLETE_ATTACHMENT;
   }
   if (f.stencil.Present()) {
     any = true;
     const detail::TextureLevel* l = f.stencil.Level();
-    if (!l->Defined() || !detail::HasStencil(l->format)) return FRAMEBUFFER_INCOMPLETE_ATTACHMENT;
+    if (!l->Defined() || !detail::HasStencil(l->format) || f.stencil.layer >= l->depth)
+      return FRAMEBUFFER_INCOMPLETE_ATTACHMENT;
   }
   if (!any) return FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT;
   int samples = 0;  // every image must have as many samples (section 9.4.2)
@@ -60,7 +62,7 @@ detail::RenderTarget FramebufferTarget(const FramebufferObject& f, bool srgb) {
     const Attachment& a = f.color[f.draw_buffers[i] - COLOR_ATTACHMENT0];
     if (!a.Present()) continue;
     detail::ColorBuffer& cb = t.color[i];
-    cb.data = const_cast<std::uint8_t*>(a.Level()->data.data());
+    cb.data = const_cast<std::uint8_t*>(a.Level()->data.data()) + a.PlaneOffset() * std::size_t(a.Level()->bytes);
     cb.layout = a.Level()->layout;
     cb.rgb_only = detail::NoStoredAlpha(a.Level()->format);
     cb.srgb = srgb && a.Level()->srgb;
@@ -68,12 +70,12 @@ detail::RenderTarget FramebufferTarget(const FramebufferObject& f, bool srgb) {
     cb.plane = std::size_t(a.Level()->width) * std::size_t(a.Level()->height);
   }
   if (f.depth.Present()) {
-    t.depth = reinterpret_cast<float*>(const_cast<std::uint8_t*>(f.depth.Level()->data.data()));
+    t.depth = reinterpret_cast<float*>(const_cast<std::uint8_t*>(f.depth.Level()->data.data())) + f.depth.PlaneOffset();
     t.depth_pitch = f.depth.Level()->width;
     t.depth_plane = std::size_t(f.depth.Level()->width) * std::size_t(f.depth.Level()->height);
   }
   if (f.stencil.Present()) {
-    t.stencil = const_cast<std::uint8_t*>(f.stencil.Level()->stencil.data());
+    t.stencil = const_cast<std::uint8_t*>(f.stencil.Level()->stencil.data()) + f.stencil.PlaneOffset();
     t.stencil_pitch = f.stencil.Level()->width;
     t.stencil_plane = std::size_t(f.stencil.Level()->width) * std::size_t(f.stencil.Level()->height);
   }
@@ -473,16 +475,24 @@ int TargetAttachment(ContextState& s, const char* what, Enum target, Enum attach
 
 }  // namespace
 
+namespace {
+// The attachment points FramebufferTexture2D and FramebufferTextureLayer set (see TargetAttachment), after
+// detaching them when `texture` is 0; 0 when there is nothing more to do.
+int TextureSlots(ContextState& s, const char* what, Enum target, Enum attachment, std::uint32_t texture,
+                 Attachment* slots[2]) {
+  const int n = TargetAttachment(s, what, target, attachment, slots);
+  if (n == 0 || texture != 0) return n;
+  for (int k = 0; k < n; ++k) *slots[k] = Attachment{};
+  return 0;
+}
+}  // namespace
+
 void Context::FramebufferTexture2D(Enum target, Enum attachment, Enum textarget, std::uint32_t texture, int level) {
   state_->Sync(__func__);
   auto& s = *state_;
   Attachment* slots[2] = {nullptr, nullptr};
-  const int n = TargetAttachment(s, __func__, target, attachment, slots);
+  const int n = TextureSlots(s, __func__, target, attachment, texture, slots);
   if (n == 0) return;
-  if (texture == 0) {
-    for (int k = 0; k < n; ++k) *slots[k] = Attachment{};
-    return;
-  }
   if (!IsTexImageTarget(textarget)) return s.SetError(INVALID_ENUM, __func__, "textarget must be TEXTURE_2D or a TEXTURE_CUBE_MAP_* face");
   auto it = s.textures.find(texture);
   if (it == s.textures.end()) return s.SetError(INVALID_OPERATION, __func__, "not a texture id made by GenTexture (or it was deleted)");
@@ -494,6 +504,27 @@ void Context::FramebufferTexture2D(Enum target, Enum attachment, Enum textarget,
     slots[k]->texture = it->second;
     slots[k]->face = kind == TEXTURE_2D ? 0 : CubeFaceIndex(textarget);
     slots[k]->level = level;
+  }
+}
+
+void Context::FramebufferTextureLayer(Enum target, Enum attachment, std::uint32_t texture, int level, int layer) {
+  state_->Sync(__func__);
+  auto& s = *state_;
+  Attachment* slots[2] = {nullptr, nullptr};
+  const int n = TextureSlots(s, __func__, target, attachment, texture, slots);
+  if (n == 0) return;
+  auto it = s.textures.find(texture);
+  if (it == s.textures.end()) return s.SetError(INVALID_OPERATION, __func__, "not a texture id made by GenTexture (or it was deleted)");
+  const Enum kind = it->second->target;
+  if (kind != TEXTURE_2D_ARRAY && kind != TEXTURE_3D) return s.SetError(INVALID_OPERATION, __func__, "the texture is not a TEXTURE_2D_ARRAY or TEXTURE_3D");
+  if (level < 0 || level >= detail::kMaxLevels) return s.SetError(INVALID_VALUE, __func__, "level is negative or beyond the largest mipmap level");
+  if (layer < 0 || layer >= (kind == TEXTURE_3D ? kMax3DTextureSize : kMaxArrayTextureLayers))
+    return s.SetError(INVALID_VALUE, __func__, "layer is negative or beyond the most layers a texture has");
+  for (int k = 0; k < n; ++k) {
+    *slots[k] = Attachment{};
+    slots[k]->texture = it->second;
+    slots[k]->level = level;
+    slots[k]->layer = layer;
   }
 }
 
@@ -523,7 +554,8 @@ void Context::GetFramebufferAttachmentParameteriv(Enum target, Enum attachment, 
   const int n = TargetAttachment(s, __func__, target, attachment, slots);
   if (n == 0) return;
   const Attachment& a = *slots[0];
-  if (n == 2 && (a.texture != slots[1]->texture || a.renderbuffer != slots[1]->renderbuffer || a.level != slots[1]->level || a.face != slots[1]->face))
+  if (n == 2 && (a.texture != slots[1]->texture || a.renderbuffer != slots[1]->renderbuffer || a.level != slots[1]->level || a.face != slots[1]->face ||
+                 a.layer != slots[1]->layer))
     return s.SetError(INVALID_OPERATION, __func__, "DEPTH_STENCIL_ATTACHMENT asked while depth and stencil hold different images");
   int v = 0;
   switch (pname) {
@@ -533,16 +565,18 @@ void Context::GetFramebufferAttachmentParameteriv(Enum target, Enum attachment, 
       break;
     case FRAMEBUFFER_ATTACHMENT_TEXTURE_LEVEL:
     case FRAMEBUFFER_ATTACHMENT_TEXTURE_CUBE_MAP_FACE:
+    case FRAMEBUFFER_ATTACHMENT_TEXTURE_LAYER:
       if (!a.texture) return s.SetError(a.Present() ? INVALID_ENUM : INVALID_OPERATION, __func__, "no texture is attached there");
-      v = pname == FRAMEBUFFER_ATTACHMENT_TEXTURE_LEVEL ? a.level
-          : a.texture->target == TEXTURE_CUBE_MAP     ? int(TEXTURE_CUBE_MAP_POSITIVE_X) + a.face
-                                                      : 0;
+      v = pname == FRAMEBUFFER_ATTACHMENT_TEXTURE_LEVEL  ? a.level
+          : pname == FRAMEBUFFER_ATTACHMENT_TEXTURE_LAYER ? a.layer
+          : a.texture->target == TEXTURE_CUBE_MAP        ? int(TEXTURE_CUBE_MAP_POSITIVE_X) + a.face
+                                                         : 0;
       break;
     case FRAMEBUFFER_ATTACHMENT_COLOR_ENCODING:
       if (!a.Present()) return s.SetError(INVALID_OPERATION, __func__, "nothing is attached there");
       v = int(a.Level()->srgb ? SRGB : LINEAR);
       break;
-    default: return s.SetError(INVALID_ENUM, __func__, "pname must be FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, _OBJECT_NAME, _TEXTURE_LEVEL, _TEXTURE_CUBE_MAP_FACE or _COLOR_ENCODING");
+    default: return s.SetError(INVALID_ENUM, __func__, "pname must be FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, _OBJECT_NAME, _TEXTURE_LEVEL, _TEXTURE_CUBE_MAP_FACE, _TEXTURE_LAYER or _COLOR_ENCODING");
   }
   if (params) *params = v;
 }

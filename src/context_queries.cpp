@@ -44,8 +44,10 @@ bool QueryState(ContextState& s, Enum pname, StateValue& out) {
     case COPY_WRITE_BUFFER_BINDING: return integer(IdOf(s.buffers, s.copy_write_buffer.get()));
     case VERTEX_ARRAY_BINDING: return integer(s.vao_id);
     case ACTIVE_TEXTURE: return integer(TEXTURE0 + Enum(s.active_unit));
-    case TEXTURE_BINDING_2D: return integer(IdOf(s.textures, s.units[s.active_unit].tex_2d.get()));
-    case TEXTURE_BINDING_CUBE_MAP: return integer(IdOf(s.textures, s.units[s.active_unit].cube.get()));
+    case TEXTURE_BINDING_2D: return integer(IdOf(s.textures, s.Bound(TEXTURE_2D)));
+    case TEXTURE_BINDING_CUBE_MAP: return integer(IdOf(s.textures, s.Bound(TEXTURE_CUBE_MAP)));
+    case TEXTURE_BINDING_2D_ARRAY: return integer(IdOf(s.textures, s.Bound(TEXTURE_2D_ARRAY)));
+    case TEXTURE_BINDING_3D: return integer(IdOf(s.textures, s.Bound(TEXTURE_3D)));
     case DRAW_FRAMEBUFFER_BINDING: return integer(IdOf(s.framebuffers, s.draw_fbo));
     case DRAW_BUFFER: return QueryState(s, DRAW_BUFFER0, out);
     case READ_BUFFER: return integer(s.read_fbo ? s.read_fbo->read_buffer : s.default_read_buffer);
@@ -104,6 +106,8 @@ bool QueryState(ContextState& s, Enum pname, StateValue& out) {
     case MAX_VERTEX_ATTRIBS: return integer(kMaxVertexAttribs);
     case MAX_TEXTURE_SIZE:
     case MAX_CUBE_MAP_TEXTURE_SIZE: return integer(kMaxTextureSize);
+    case MAX_3D_TEXTURE_SIZE: return integer(kMax3DTextureSize);
+    case MAX_ARRAY_TEXTURE_LAYERS: return integer(kMaxArrayTextureLayers);
     case MAX_TEXTURE_IMAGE_UNITS:
     case MAX_VERTEX_TEXTURE_IMAGE_UNITS:
     case MAX_COMBINED_TEXTURE_IMAGE_UNITS: return integer(kMaxTextureUnits);

@@ -73,7 +73,13 @@ struct Attachment {
   std::shared_ptr<Renderbuffer> renderbuffer;
   int face = 0;
   int level = 0;
+  int layer = 0;  // FramebufferTextureLayer: the layer (or 3D slice) drawn to
   bool Present() const { return texture || renderbuffer; }
+  /// Where the attached image starts in its level's planes, in texels (its layer's plane).
+  std::size_t PlaneOffset() const {
+    const detail::TextureLevel* l = Level();
+    return l ? std::size_t(layer) * std::size_t(l->width) * std::size_t(l->height) : 0;
+  }
   const detail::TextureLevel* Level() const {
     return texture ? &texture->levels[face][level] : renderbuffer ? &renderbuffer->image : nullptr;
   }
@@ -108,7 +114,7 @@ inline int QuerySlot(Enum target) {
 }
 
 struct TextureUnit {
-  std::shared_ptr<detail::TextureObject> tex_2d, cube;
+  std::shared_ptr<detail::TextureObject> bound[detail::kTextureKinds];  // by detail::TextureKind
 };
 
 inline int CubeFaceIndex(Enum target) {
@@ -248,12 +254,11 @@ struct ContextState {
   detail::TextureObject* Bound(Enum target, int* face = nullptr) {
     TextureUnit& u = units[active_unit];
     if (face) *face = 0;
-    if (target == TEXTURE_2D) return u.tex_2d.get();
-    if (target == TEXTURE_CUBE_MAP) return u.cube.get();
+    if (const int kind = detail::TextureKind(target); kind >= 0) return u.bound[kind].get();
     const int f = CubeFaceIndex(target);
     if (f < 0) return nullptr;
     if (face) *face = f;
-    return u.cube.get();
+    return u.bound[1].get();
   }
 
   void Draw(const detail::DrawCall& call);

@@ -25,10 +25,9 @@ void Context::DeleteTexture(std::uint32_t texture) {
   auto it = s.textures.find(texture);
   if (it == s.textures.end()) return;
   const detail::TextureObject* dead = it->second.get();
-  for (TextureUnit& u : s.units) {
-    if (u.tex_2d.get() == dead) u.tex_2d.reset();
-    if (u.cube.get() == dead) u.cube.reset();
-  }
+  for (TextureUnit& u : s.units)
+    for (auto& bound : u.bound)
+      if (bound.get() == dead) bound.reset();
   for (FramebufferObject* f : {s.draw_fbo, s.read_fbo}) {
     if (!f) continue;
     for (Attachment& a : f->color)
@@ -48,7 +47,8 @@ void Context::ActiveTexture(Enum unit) {
 
 void Context::BindTexture(Enum target, std::uint32_t texture) {
   auto& s = *state_;
-  if (target != TEXTURE_2D && target != TEXTURE_CUBE_MAP) return s.SetError(INVALID_ENUM, __func__, "target must be TEXTURE_2D or TEXTURE_CUBE_MAP");
+  const int kind = detail::TextureKind(target);
+  if (kind < 0) return s.SetError(INVALID_ENUM, __func__, "target must be TEXTURE_2D, TEXTURE_CUBE_MAP, TEXTURE_2D_ARRAY or TEXTURE_3D");
   std::shared_ptr<detail::TextureObject> object;
   if (texture != 0) {
     auto it = s.textures.find(texture);
@@ -58,7 +58,7 @@ void Context::BindTexture(Enum target, std::uint32_t texture) {
     object = it->second;
   }
   TextureUnit& u = s.units[s.active_unit];
-  (target == TEXTURE_2D ? u.tex_2d : u.cube) = std::move(object);
+  u.bound[kind] = std::move(object);
   s.units_used = std::max(s.units_used, s.active_unit + 1);
 }
 
@@ -119,6 +119,51 @@ void Context::TexSubImage2D(Enum target, int level, int x, int y, int width, int
       std::int64_t(y) + height > lv.height)
     return s.SetError(INVALID_VALUE, __func__, "a numeric argument is out of range");
   detail::UploadPixels(lv, x, y, width, height, format, type, s.unpack_alignment, pixels);
+}
+
+void Context::TexImage3D(Enum target, int level, Enum internal_format, int width, int height, int depth, int border,
+                         Enum format, Enum type, const void* pixels) {
+  state_->Sync(__func__);
+  auto& s = *state_;
+  if (target != TEXTURE_2D_ARRAY && target != TEXTURE_3D) return s.SetError(INVALID_ENUM, __func__, "target must be TEXTURE_2D_ARRAY or TEXTURE_3D");
+  const bool volume = target == TEXTURE_3D;
+  const int max_size = volume ? kMax3DTextureSize : kMaxTextureSize;
+  const int max_depth = volume ? kMax3DTextureSize : kMaxArrayTextureLayers;
+  if (level < 0 || level >= detail::kMaxLevels || width < 0 || height < 0 || depth < 0 || width > max_size ||
+      height > max_size || depth > max_depth || border != 0 || detail::FormatComponents(internal_format) == 0)
+    return s.SetError(INVALID_VALUE, __func__, "a numeric argument is out of range");
+  if (!CheckTransfer(s, __func__, format, type)) return;
+  if (detail::IsDepthFormat(internal_format) != IsDepthTransfer(format)) return s.SetError(INVALID_OPERATION, __func__, "depth data for a colour format, or the reverse");
+  if (volume && detail::IsDepthFormat(internal_format)) return s.SetError(INVALID_OPERATION, __func__, "a 3D texture cannot have a depth format");
+  detail::TextureObject* tex = s.Bound(target);
+  if (!tex) return s.SetError(INVALID_OPERATION, __func__, "no texture is bound to that target of the active unit");
+  detail::TextureLevel next;
+  try {
+    next.Allocate(internal_format, width, height, 1, depth);
+  } catch (const std::bad_alloc&) {
+    return s.SetError(OUT_OF_MEMORY, __func__, "out of memory (or more than a 16384 x 16384 RGBA32F level's bytes)");
+  }
+  if (width > 0 && height > 0 && depth > 0)
+    detail::UploadImages(next, 0, 0, 0, width, height, depth, format, type, s.unpack_alignment, pixels);
+  if (depth == 0) next = detail::TextureLevel{};  // (no texels: the level is not defined)
+  tex->levels[0][level] = std::move(next);
+}
+
+void Context::TexSubImage3D(Enum target, int level, int x, int y, int z, int width, int height, int depth,
+                            Enum format, Enum type, const void* pixels) {
+  state_->Sync(__func__);
+  auto& s = *state_;
+  if (target != TEXTURE_2D_ARRAY && target != TEXTURE_3D) return s.SetError(INVALID_ENUM, __func__, "target must be TEXTURE_2D_ARRAY or TEXTURE_3D");
+  if (!CheckTransfer(s, __func__, format, type)) return;
+  if (level < 0 || level >= detail::kMaxLevels) return s.SetError(INVALID_VALUE, __func__, "level is negative or beyond the largest mipmap level");
+  detail::TextureObject* tex = s.Bound(target);
+  if (!tex || !tex->levels[0][level].Defined()) return s.SetError(INVALID_OPERATION, __func__, "no texture bound, or that level is not defined");
+  detail::TextureLevel& lv = tex->levels[0][level];
+  if (detail::IsDepthFormat(lv.format) != IsDepthTransfer(format)) return s.SetError(INVALID_OPERATION, __func__, "depth data for a colour texture, or the reverse");
+  if (x < 0 || y < 0 || z < 0 || width < 0 || height < 0 || depth < 0 || std::int64_t(x) + width > lv.width ||
+      std::int64_t(y) + height > lv.height || std::int64_t(z) + depth > lv.depth)
+    return s.SetError(INVALID_VALUE, __func__, "a numeric argument is out of range");
+  detail::UploadImages(lv, x, y, z, width, height, depth, format, type, s.unpack_alignment, pixels);
 }
 
 namespace {
@@ -196,7 +241,7 @@ bool Context::TexImage2DFromMemory(Enum target, const void* data, std::size_t si
 void Context::GenerateMipmap(Enum target) {
   state_->Sync(__func__);
   auto& s = *state_;
-  if (target != TEXTURE_2D && target != TEXTURE_CUBE_MAP) return s.SetError(INVALID_ENUM, __func__, "target must be TEXTURE_2D or TEXTURE_CUBE_MAP");
+  if (detail::TextureKind(target) < 0) return s.SetError(INVALID_ENUM, __func__, "target must be TEXTURE_2D, TEXTURE_CUBE_MAP, TEXTURE_2D_ARRAY or TEXTURE_3D");
   detail::TextureObject* tex = s.Bound(target);
   if (!tex) return s.SetError(INVALID_OPERATION, __func__, "no texture is bound to that target of the active unit");
   const int base = tex->params.base_level;
@@ -227,7 +272,7 @@ bool IsWrap(int v) { return v == REPEAT || v == MIRRORED_REPEAT || v == CLAMP_TO
 void Context::TexParameterfv(Enum target, Enum pname, const float* values) {
   state_->Sync(__func__);
   auto& s = *state_;
-  if (target != TEXTURE_2D && target != TEXTURE_CUBE_MAP) return s.SetError(INVALID_ENUM, __func__, "target must be TEXTURE_2D or TEXTURE_CUBE_MAP");
+  if (detail::TextureKind(target) < 0) return s.SetError(INVALID_ENUM, __func__, "target must be TEXTURE_2D, TEXTURE_CUBE_MAP, TEXTURE_2D_ARRAY or TEXTURE_3D");
   if (values == nullptr) return s.SetError(INVALID_VALUE, __func__, "values is null");
   detail::TextureObject* tex = s.Bound(target);
   if (!tex) return s.SetError(INVALID_OPERATION, __func__, "no texture is bound to that target of the active unit");
@@ -302,7 +347,7 @@ namespace {
 
 // The sampling state `pname` of the texture bound to target, as up to four floats; false with the error set.
 bool TexParameterValues(ContextState& s, const char* what, Enum target, Enum pname, float out[4], int& n) {
-  if (target != TEXTURE_2D && target != TEXTURE_CUBE_MAP) return s.SetError(INVALID_ENUM, what, "target must be TEXTURE_2D or TEXTURE_CUBE_MAP"), false;
+  if (detail::TextureKind(target) < 0) return s.SetError(INVALID_ENUM, what, "target must be TEXTURE_2D, TEXTURE_CUBE_MAP, TEXTURE_2D_ARRAY or TEXTURE_3D"), false;
   const detail::TextureObject* tex = s.Bound(target);
   if (!tex) return s.SetError(INVALID_OPERATION, what, "no texture is bound to that target of the active unit"), false;
   const detail::SamplerParams& p = tex->params;
@@ -329,10 +374,12 @@ bool TexParameterValues(ContextState& s, const char* what, Enum target, Enum pna
   }
 }
 
-// The value `pname` of level `level` of the texture bound to target (a 2D texture or a cube face); false with the
+// The value `pname` of level `level` of the texture bound to target (a 2D texture, a cube face, a 2D array or a 3D
+// texture); false with the
 // error set.
 bool TexLevelValue(ContextState& s, const char* what, Enum target, int level, Enum pname, int& out) {
-  if (!IsTexImageTarget(target)) return s.SetError(INVALID_ENUM, what, "target must be TEXTURE_2D or a TEXTURE_CUBE_MAP_* face"), false;
+  if (!IsTexImageTarget(target) && target != TEXTURE_2D_ARRAY && target != TEXTURE_3D)
+    return s.SetError(INVALID_ENUM, what, "target must be TEXTURE_2D, a TEXTURE_CUBE_MAP_* face, TEXTURE_2D_ARRAY or TEXTURE_3D"), false;
   if (level < 0 || level >= detail::kMaxLevels) return s.SetError(INVALID_VALUE, what, "level is negative or beyond the largest mipmap level"), false;
   int face = 0;
   const detail::TextureObject* tex = s.Bound(target, &face);
@@ -342,7 +389,7 @@ bool TexLevelValue(ContextState& s, const char* what, Enum target, int level, En
   switch (pname) {
     case TEXTURE_WIDTH: out = lv.Defined() ? lv.width : 0; return true;
     case TEXTURE_HEIGHT: out = lv.Defined() ? lv.height : 0; return true;
-    case TEXTURE_DEPTH: out = lv.Defined() ? 1 : 0; return true;
+    case TEXTURE_DEPTH: out = lv.Defined() ? lv.depth : 0; return true;
     case TEXTURE_INTERNAL_FORMAT: out = int(lv.Defined() ? lv.format : RGBA); return true;
     case TEXTURE_RED_SIZE: out = bits.r; return true;
     case TEXTURE_GREEN_SIZE: out = bits.g; return true;

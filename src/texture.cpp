@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <new>
 
 #include "framebuffer.h"
 
@@ -327,10 +328,13 @@ glm::vec4 TextureLevel::Sampled(int i, int j) const {
 
 glm::vec4 TextureLevel::Texel(int i, int j) const { return Raw(i, j) / StorageScale(layout); }
 
-void TextureLevel::Allocate(Enum internal_format, int w, int h, int sample_count) {
+void TextureLevel::Allocate(Enum internal_format, int w, int h, int sample_count, int d) {
   const TexelLayout l = LayoutOf(internal_format);
   const int b = BytesPerTexel(l);
-  const std::size_t texels = std::size_t(w) * std::size_t(h) * std::size_t(sample_count);
+  const std::uint64_t count = std::uint64_t(std::max(w, 0)) * std::uint64_t(std::max(h, 0)) *
+                              std::uint64_t(std::max(sample_count, 1)) * std::uint64_t(std::max(d, 1));
+  if (count * std::uint64_t(b) > kMaxLevelBytes) throw std::bad_alloc();
+  const std::size_t texels = std::size_t(count);
   data.assign(texels * std::size_t(b) + kGatherPad, 0);
   if (HasStencil(internal_format)) stencil.assign(texels, 0);
   else stencil.clear();
@@ -340,6 +344,7 @@ void TextureLevel::Allocate(Enum internal_format, int w, int h, int sample_count
   layout = l;
   bytes = b;
   samples = sample_count;
+  depth = std::max(d, 1);
   srgb = IsSrgbFormat(internal_format);
   if (NoStoredAlpha(internal_format))  // alpha reads 1
     for (std::size_t k = 3; k < data.size() - kGatherPad; k += 4) data[k] = 255;
@@ -376,13 +381,34 @@ void StoreTexel(TextureLevel& level, int i, int j, const glm::vec4& in, bool enc
   }
 }
 
+namespace {
+// The bytes of one client pixel of `format` and `type`.
+std::size_t TransferPixelBytes(Enum format, Enum type) {
+  if (format == DEPTH_STENCIL) return type == FLOAT_32_UNSIGNED_INT_24_8_REV ? 8 : 4;
+  return std::size_t(TransferComponents(format)) * (type == FLOAT ? 4 : 1);
+}
+// The bytes of one client row of w pixels, aligned.
+std::size_t TransferRowBytes(int w, Enum format, Enum type, int alignment) {
+  const std::size_t row = std::size_t(w) * TransferPixelBytes(format, type);
+  return (row + std::size_t(alignment) - 1) / std::size_t(alignment) * std::size_t(alignment);
+}
+}  // namespace
+
+void UploadImages(TextureLevel& level, int x, int y, int z, int w, int h, int d, Enum format, Enum type,
+                  int alignment, const void* pixels) {
+  if (pixels == nullptr || w <= 0 || h <= 0) return;
+  const std::size_t image = TransferRowBytes(w, format, type, alignment) * std::size_t(h);
+  for (int k = 0; k < d; ++k)
+    UploadPixels(level, x, (z + k) * level.height + y, w, h, format, type, alignment,
+                 static_cast<const std::uint8_t*>(pixels) + std::size_t(k) * image);
+}
+
 void UploadPixels(TextureLevel& level, int x, int y, int w, int h, Enum format, Enum type, int alignment,
                   const void* pixels) {
   if (pixels == nullptr || w <= 0 || h <= 0) return;
   if (format == DEPTH_STENCIL) {  // one packed value a pixel: 4 bytes (24_8) or 8 (float, then 24_8 with stencil low)
-    const std::size_t size = type == FLOAT_32_UNSIGNED_INT_24_8_REV ? 8 : 4;
-    std::size_t row = std::size_t(w) * size;
-    row = (row + std::size_t(alignment) - 1) / std::size_t(alignment) * std::size_t(alignment);
+    const std::size_t size = TransferPixelBytes(format, type);
+    const std::size_t row = TransferRowBytes(w, format, type, alignment);
     const auto* bytes = static_cast<const std::uint8_t*>(pixels);
     for (int j = 0; j < h; ++j)
       for (int i = 0; i < w; ++i) {
@@ -404,8 +430,7 @@ void UploadPixels(TextureLevel& level, int x, int y, int w, int h, Enum format, 
   }
   const int n = TransferComponents(format);
   const std::size_t csize = type == FLOAT ? 4 : 1;
-  std::size_t row = std::size_t(w) * std::size_t(n) * csize;
-  row = (row + std::size_t(alignment) - 1) / std::size_t(alignment) * std::size_t(alignment);
+  const std::size_t row = TransferRowBytes(w, format, type, alignment);
   const auto* bytes = static_cast<const std::uint8_t*>(pixels);
   for (int j = 0; j < h; ++j)
     for (int i = 0; i < w; ++i) {
@@ -429,31 +454,46 @@ void UploadPixels(TextureLevel& level, int x, int y, int w, int h, Enum format, 
 
 void GenerateMipmaps(TextureObject& texture) {
   const int base = std::clamp(texture.params.base_level, 0, kMaxLevels - 1);
+  const bool volume = texture.target == TEXTURE_3D;
   for (int face = 0; face < texture.Faces(); ++face) {
     for (int l = base + 1; l < kMaxLevels; ++l) {
       const TextureLevel& src = texture.levels[face][l - 1];
-      if (src.width == 1 && src.height == 1) {
+      if (src.width == 1 && src.height == 1 && (!volume || src.depth == 1)) {
         for (int k = l; k < kMaxLevels; ++k) texture.levels[face][k] = TextureLevel{};
         break;
       }
       TextureLevel& dst = texture.levels[face][l];
-      dst.Allocate(src.format, std::max(1, src.width / 2), std::max(1, src.height / 2));
-      for (int j = 0; j < dst.height; ++j)
-        for (int i = 0; i < dst.width; ++i) {
-          // Bilinear sample of src at this texel's centre, clamped to the edge.
-          const float u = (float(i) + 0.5f) * float(src.width) / float(dst.width) - 0.5f;
-          const float v = (float(j) + 0.5f) * float(src.height) / float(dst.height) - 0.5f;
-          const int i0 = int(std::floor(u)), j0 = int(std::floor(v));
-          const float a = u - float(i0), b = v - float(j0);
-          glm::vec4 sum(0.0f);
-          for (int dj = 0; dj < 2; ++dj)
-            for (int di = 0; di < 2; ++di) {
-              const float wgt = (di ? a : 1.0f - a) * (dj ? b : 1.0f - b);
-              sum += wgt * (src.Sampled(std::clamp(i0 + di, 0, src.width - 1), std::clamp(j0 + dj, 0, src.height - 1)) /
-                            StorageScale(src.layout));
+      dst.Allocate(src.format, std::max(1, src.width / 2), std::max(1, src.height / 2), 1,
+                   volume ? std::max(1, src.depth / 2) : src.depth);
+      for (int k = 0; k < dst.depth; ++k) {
+        // A 3D level's slice k lies between two slices of the level above (one when that has a single slice); an
+        // array's layer k is layer k above.
+        const float w = volume ? (float(k) + 0.5f) * float(src.depth) / float(dst.depth) - 0.5f : float(k);
+        const int k0 = int(std::floor(w));
+        const float c = w - float(k0);
+        const int slices = volume && c > 0.0f ? 2 : 1;
+        for (int j = 0; j < dst.height; ++j)
+          for (int i = 0; i < dst.width; ++i) {
+            // Bilinear (trilinear) sample of src at this texel's centre, clamped to the edge.
+            const float u = (float(i) + 0.5f) * float(src.width) / float(dst.width) - 0.5f;
+            const float v = (float(j) + 0.5f) * float(src.height) / float(dst.height) - 0.5f;
+            const int i0 = int(std::floor(u)), j0 = int(std::floor(v));
+            const float a = u - float(i0), b = v - float(j0);
+            glm::vec4 sum(0.0f);
+            for (int dk = 0; dk < slices; ++dk) {
+              const float wk = slices == 1 ? 1.0f : (dk ? c : 1.0f - c);
+              const int row0 = std::clamp(k0 + dk, 0, src.depth - 1) * src.height;
+              for (int dj = 0; dj < 2; ++dj)
+                for (int di = 0; di < 2; ++di) {
+                  const float wgt = (di ? a : 1.0f - a) * (dj ? b : 1.0f - b) * wk;
+                  sum += wgt * (src.Sampled(std::clamp(i0 + di, 0, src.width - 1),
+                                            row0 + std::clamp(j0 + dj, 0, src.height - 1)) /
+                                StorageScale(src.layout));
+                }
             }
-          StoreTexel(dst, i, j, sum, true);
-        }
+            StoreTexel(dst, i, k * dst.height + j, sum, true);
+          }
+      }
     }
   }
 }
@@ -477,7 +517,8 @@ TextureView MakeView(const TextureObject& texture) {
                                               : p.border;
   // q: the last level of the chain, level_base + floor(log2(max size)), but at most level_max.
   int levels = 0;
-  for (int size = std::max(base.width, base.height); size > 1; size >>= 1) ++levels;
+  const bool volume = texture.target == TEXTURE_3D;
+  for (int size = std::max({base.width, base.height, volume ? base.depth : 1}); size > 1; size >>= 1) ++levels;
   view.q = std::min({p.base_level + levels, p.max_level, kMaxLevels - 1});
   const bool mipmapped = p.min_filter != NEAREST && p.min_filter != LINEAR;
   const int last = mipmapped ? view.q : p.base_level;
@@ -486,7 +527,8 @@ TextureView MakeView(const TextureObject& texture) {
       const TextureLevel& lv = texture.levels[face][l];
       const int shift = l - p.base_level;
       if (lv.format != base.format || lv.width != std::max(1, base.width >> shift) ||
-          lv.height != std::max(1, base.height >> shift))
+          lv.height != std::max(1, base.height >> shift) ||
+          lv.depth != (volume ? std::max(1, base.depth >> shift) : base.depth))
         return view;
     }
   }

@@ -103,6 +103,10 @@ struct TextureLevel {
   // A multisampled image (a renderbuffer of RenderbufferStorageMultisample): `samples` planes of width x height
   // texels one after another (and as many stencil planes); 1 for every texture level.
   int samples = 1;
+  // The layers of a TEXTURE_2D_ARRAY level or the slices of a TEXTURE_3D one, `depth` planes of width x height
+  // texels one after another (1 otherwise). Texel (i, j) of plane k is At(i, k * height + j): plane by plane, the
+  // rows continue upwards.
+  int depth = 1;
   bool Defined() const { return format != 0 && width > 0 && height > 0; }
   std::uint8_t* At(int i, int j) {
     return data.data() + (std::size_t(j) * std::size_t(width) + std::size_t(i)) * std::size_t(bytes);
@@ -118,9 +122,12 @@ struct TextureLevel {
   glm::vec4 Sampled(int i, int j) const;
   /// Texel (i, j) as RGBA floats (fixed point divided by 255), as stored (sRGB colours not decoded).
   glm::vec4 Texel(int i, int j) const;
-  /// Allocates width x height texels of `internal_format` (`samples` of each), zero (alpha 1 where the format has
-  /// no alpha; stencil 0). Throws std::bad_alloc.
-  void Allocate(Enum internal_format, int w, int h, int samples = 1);
+  /// Allocates width x height (x d planes) texels of `internal_format` (`samples` of each), zero (alpha 1 where
+  /// the format has no alpha; stencil 0). Throws std::bad_alloc, also for more than kMaxLevelBytes.
+  void Allocate(Enum internal_format, int w, int h, int samples = 1, int d = 1);
+  /// The largest level softgl allocates: a 16384 x 16384 RGBA32F level. A 3D or array level beyond it (2048^3
+  /// RGBA32F texels would be 128 GiB) records OUT_OF_MEMORY without trying.
+  static constexpr std::uint64_t kMaxLevelBytes = std::uint64_t(1) << 32;
 };
 
 /// The number storage units are divided by to give the value: 255 for fixed-point layouts, 1 for float ones.
@@ -138,11 +145,29 @@ struct SamplerParams {
 };
 
 struct TextureObject {
-  Enum target = 0;  // TEXTURE_2D or TEXTURE_CUBE_MAP, fixed by the first bind
-  TextureLevel levels[6][kMaxLevels];  // [face][level]; a 2D texture uses face 0
+  Enum target = 0;  // TEXTURE_2D, TEXTURE_CUBE_MAP, TEXTURE_2D_ARRAY or TEXTURE_3D, fixed by the first bind
+  TextureLevel levels[6][kMaxLevels];  // [face][level]; all but a cube map use face 0
   SamplerParams params;
   int Faces() const { return target == TEXTURE_CUBE_MAP ? 6 : 1; }
+  /// Levels with planes: the layers of a 2D array (as many at every level) or the slices of a 3D texture (halved
+  /// with each level, as width and height are).
+  bool Layered() const { return target == TEXTURE_2D_ARRAY || target == TEXTURE_3D; }
 };
+
+/// The texture targets a unit binds, in this order: TEXTURE_2D, TEXTURE_CUBE_MAP, TEXTURE_2D_ARRAY, TEXTURE_3D.
+inline constexpr int kTextureKinds = 4;
+inline constexpr Enum kTextureKindTarget[kTextureKinds] = {TEXTURE_2D, TEXTURE_CUBE_MAP, TEXTURE_2D_ARRAY,
+                                                           TEXTURE_3D};
+/// The index of a texture target in kTextureKindTarget, -1 for another enum.
+inline int TextureKind(Enum target) {
+  for (int k = 0; k < kTextureKinds; ++k)
+    if (kTextureKindTarget[k] == target) return k;
+  return -1;
+}
+/// The unit array of Textures that holds each kind's views.
+using UnitViews = const TextureView* (Textures::*)[kMaxTextureUnits];
+inline constexpr UnitViews kKindUnits[kTextureKinds] = {&Textures::unit_2d, &Textures::unit_cube,
+                                                        &Textures::unit_2d_array, &Textures::unit_3d};
 
 /// A texture as one draw samples it: completeness and the levels in use resolved once.
 struct TextureView {
@@ -185,6 +210,11 @@ int TransferComponents(Enum format);
 void UploadPixels(TextureLevel& level, int x, int y, int w, int h, Enum format, Enum type, int alignment,
                   const void* pixels);
 
+/// UploadPixels for `d` images of w x h one after another in `pixels` (each h rows as UploadPixels lays them out),
+/// written into planes z .. z + d - 1 of a layered level at (x, y).
+void UploadImages(TextureLevel& level, int x, int y, int z, int w, int h, int d, Enum format, Enum type,
+                  int alignment, const void* pixels);
+
 /// Writes RGBA value `v` into a texel of RG32F, RGBA16F, RG16F, R16F or R11F_G11F_B10F at p (the channels the
 /// layout has, converted as FloatToHalf and FloatToUnsignedSmall say), or of RGB565, RGBA4 or RGB5_A1 (clamped to
 /// [0, 1], NaN as 0, round(c * (2^bits - 1))); other layouts are left alone.
@@ -197,7 +227,9 @@ void StoreTexel(TextureLevel& level, int i, int j, const glm::vec4& v, bool enco
 
 /// Fills levels base+1 .. the 1 x 1 level of each face from the base level: each texel is the bilinear sample of
 /// the level above at its centre (the 2 x 2 box average for even sizes), in the base level's format; an sRGB
-/// level's colours are averaged in linear light (decoded, then encoded again).
+/// level's colours are averaged in linear light (decoded, then encoded again). A 2D array's layers are filtered
+/// each on its own, all kept at every level; a 3D texture's texels are trilinear samples (the 2 x 2 x 2 average)
+/// down to 1 x 1 x 1.
 void GenerateMipmaps(TextureObject& texture);
 
 }  // namespace softgl::detail

@@ -78,10 +78,12 @@ struct DepthCompare {
 
 // One texel in storage units (an sRGB texture's colour decoded to linear), wrapped (the border colour outside the level under CLAMP_TO_BORDER), compared when
 // depth comparison is on.
-glm::vec4 Fetch(const TextureView& view, const TextureLevel& level, long i, long j, const DepthCompare& cmp) {
+// `layer` is the plane of a layered level (a 2D array's layer, a 3D texture's slice), already wrapped.
+glm::vec4 Fetch(const TextureView& view, const TextureLevel& level, long i, long j, const DepthCompare& cmp,
+                int layer = 0) {
   const SamplerParams& p = view.texture->params;
   const int wi = Wrap(p.wrap_s, i, level.width), wj = Wrap(p.wrap_t, j, level.height);
-  const glm::vec4 t = (wi >= 0 && wj >= 0) ? level.Sampled(wi, wj) : view.border_raw;
+  const glm::vec4 t = (wi >= 0 && wj >= 0) ? level.Sampled(wi, layer * level.height + wj) : view.border_raw;
   if (cmp.on) return glm::vec4(detail::Compare(cmp.func, cmp.ref, t.r) ? 1.0f : 0.0f);
   return t;
 }
@@ -105,12 +107,26 @@ SOFTGL_INLINE glm::vec4 Sum(const Bilerp& w, const glm::vec4& t00, const glm::ve
 
 // One level, NEAREST or LINEAR (section 8.14.2): texel centres at +0.5.
 SOFTGL_INLINE glm::vec4 FilterLevel(const TextureView& view, const TextureLevel& level, Enum filter, glm::vec2 st,
-                                    const DepthCompare& cmp) {
+                                    const DepthCompare& cmp, int layer = 0) {
   const float u = TexelCoord(st.x, level.width), v = TexelCoord(st.y, level.height);
-  if (filter == NEAREST) return Fetch(view, level, long(std::floor(u)), long(std::floor(v)), cmp);
+  if (filter == NEAREST) return Fetch(view, level, long(std::floor(u)), long(std::floor(v)), cmp, layer);
   const Bilerp w = Weights(u, v);
-  return Sum(w, Fetch(view, level, w.i0, w.j0, cmp), Fetch(view, level, w.i0 + 1, w.j0, cmp),
-             Fetch(view, level, w.i0, w.j0 + 1, cmp), Fetch(view, level, w.i0 + 1, w.j0 + 1, cmp));
+  return Sum(w, Fetch(view, level, w.i0, w.j0, cmp, layer), Fetch(view, level, w.i0 + 1, w.j0, cmp, layer),
+             Fetch(view, level, w.i0, w.j0 + 1, cmp, layer), Fetch(view, level, w.i0 + 1, w.j0 + 1, cmp, layer));
+}
+
+// One level of a 3D texture, NEAREST or LINEAR (section 8.14.2): the slices wrapped by TEXTURE_WRAP_R, LINEAR the
+// two slices' bilinear samples weighted by the fraction of w.
+SOFTGL_INLINE glm::vec4 FilterVolume(const TextureView& view, const TextureLevel& level, Enum filter, glm::vec3 str) {
+  const Enum wrap_r = view.texture->params.wrap_r;
+  const float w = TexelCoord(str.z, level.depth);
+  auto slice = [&](long k) {
+    const int wk = Wrap(wrap_r, k, level.depth);
+    return wk >= 0 ? FilterLevel(view, level, filter, glm::vec2(str), DepthCompare{}, wk) : view.border_raw;
+  };
+  if (filter == NEAREST) return slice(long(std::floor(w)));
+  const float fw = w - 0.5f, flw = std::floor(fw), c = fw - flw;
+  return (1.0f - c) * slice(long(flw)) + c * slice(long(flw) + 1);
 }
 
 // LINEAR for REPEAT on a power-of-two level: the same arithmetic, the wrap a mask, no border texel.
@@ -169,39 +185,65 @@ SOFTGL_INLINE float Lambda(const TextureView& view, glm::vec2 dx, glm::vec2 dy, 
   const glm::vec2 tx = dx * size, ty = dy * size;
   return LambdaOfRho2(view, std::max(glm::dot(tx, tx), glm::dot(ty, ty)), shader_bias);
 }
-
-// Minification or magnification at level of detail lambda, on one face (section 8.14.2 to 8.14.3), in storage
-// units.
-SOFTGL_INLINE glm::vec4 SampleFace(const TextureView& view, int face, glm::vec2 st, float lambda,
-                                   const DepthCompare& cmp) {
+// A 3D texture's: the derivatives of (u, v, w) in texels.
+SOFTGL_INLINE float LambdaVolume(const TextureView& view, glm::vec3 dx, glm::vec3 dy, float shader_bias) {
+  const TextureLevel& base = view.texture->levels[0][view.base];
+  const glm::vec3 size(float(base.width), float(base.height), float(base.depth));
+  const glm::vec3 tx = dx * size, ty = dy * size;
+  return LambdaOfRho2(view, std::max(glm::dot(tx, tx), glm::dot(ty, ty)), shader_bias);
+}
+// textureLod's lambda: lod plus TEXTURE_LOD_BIAS, clamped to [min_lod, max_lod]; NaN as 0.
+SOFTGL_INLINE float ExplicitLambda(const TextureView& view, float lod) {
   const SamplerParams& p = view.texture->params;
-  const auto& levels = view.texture->levels[face];
+  const float lambda = std::clamp(lod + std::clamp(p.lod_bias, -16.0f, 16.0f), p.min_lod, p.max_lod);
+  return std::isnan(lambda) ? 0.0f : lambda;
+}
+
+// Minification or magnification at level of detail lambda (section 8.14.2 to 8.14.3), in storage units:
+// filter(d, f) filters level d with NEAREST or LINEAR f.
+template <class Filter>
+SOFTGL_INLINE glm::vec4 SampleMip(const TextureView& view, float lambda, Filter&& filter) {
+  const SamplerParams& p = view.texture->params;
   const bool nearest_mip = p.min_filter == NEAREST_MIPMAP_NEAREST || p.min_filter == LINEAR_MIPMAP_NEAREST;
   const float c = (p.mag_filter == LINEAR && nearest_mip) ? 0.5f : 0.0f;
-  if (lambda <= c) return FilterLevel(view, levels[view.base], p.mag_filter, st, cmp);
-  const Enum filter = (p.min_filter == LINEAR || p.min_filter == LINEAR_MIPMAP_NEAREST ||
-                       p.min_filter == LINEAR_MIPMAP_LINEAR)
-                          ? LINEAR
-                          : NEAREST;
+  if (lambda <= c) return filter(view.base, p.mag_filter);
+  const Enum f = (p.min_filter == LINEAR || p.min_filter == LINEAR_MIPMAP_NEAREST ||
+                  p.min_filter == LINEAR_MIPMAP_LINEAR)
+                     ? LINEAR
+                     : NEAREST;
   switch (p.min_filter) {
     case NEAREST:
-    case LINEAR: return FilterLevel(view, levels[view.base], filter, st, cmp);
+    case LINEAR: return filter(view.base, f);
     case NEAREST_MIPMAP_NEAREST:
     case LINEAR_MIPMAP_NEAREST: {
       const int d = lambda <= 0.5f ? view.base
                                    : int(std::min<float>(float(view.base) + std::ceil(lambda + 0.5f) - 1.0f,
                                                          float(view.q)));
-      return FilterLevel(view, levels[d], filter, st, cmp);
+      return filter(d, f);
     }
     default: {  // *_MIPMAP_LINEAR
-      if (float(view.base) + lambda >= float(view.q)) return FilterLevel(view, levels[view.q], filter, st, cmp);
+      if (float(view.base) + lambda >= float(view.q)) return filter(view.q, f);
       const float fl = std::floor(lambda);
       const int d1 = view.base + int(fl);
-      const float f = lambda - fl;
-      return (1.0f - f) * FilterLevel(view, levels[d1], filter, st, cmp) +
-             f * FilterLevel(view, levels[d1 + 1], filter, st, cmp);
+      const float t = lambda - fl;
+      return (1.0f - t) * filter(d1, f) + t * filter(d1 + 1, f);
     }
   }
+}
+
+// SampleMip on one face of a 2D texture or cube map, or one layer of a 2D array.
+SOFTGL_INLINE glm::vec4 SampleFace(const TextureView& view, int face, glm::vec2 st, float lambda,
+                                   const DepthCompare& cmp, int layer = 0) {
+  const auto& levels = view.texture->levels[face];
+  return SampleMip(view, lambda,
+                   [&](int d, Enum f) SOFTGL_WIDE_LAMBDA { return FilterLevel(view, levels[d], f, st, cmp, layer); });
+}
+
+// The layer of a 2D array that r selects: floor(r + 0.5) clamped to the layers (section 8.14.2); NaN takes 0.
+int ArrayLayer(const TextureView& view, float r) {
+  const int layers = view.texture->levels[0][view.base].depth;
+  const float l = std::floor(r + 0.5f);
+  return std::isnan(l) ? 0 : int(std::clamp(l, 0.0f, float(layers - 1)));
 }
 
 const TextureView* Usable(const TextureView* const* units, int unit) {
@@ -503,7 +545,8 @@ SampleRepeatLanesFn SampleRepeatLanesFor(const TextureView& view) {
 // give N = min(ceil(Pmax / Pmin), the anisotropy) probes; each is an ordinary sample at lambda = log2(Pmax / N)
 // (the piecewise log2 of Lambda), placed at uv + (i / (N + 1) - 1/2) times the longer derivative, i = 1 .. N, and
 // their mean is the result. N = 1 is the isotropic sample.
-glm::vec4 SampleAnisotropic(const TextureView& view, glm::vec2 uv, glm::vec2 dx, glm::vec2 dy, float shader_bias) {
+glm::vec4 SampleAnisotropic(const TextureView& view, glm::vec2 uv, glm::vec2 dx, glm::vec2 dy, float shader_bias,
+                            int layer = 0) {
   const TextureLevel& base = view.texture->levels[0][view.base];
   const glm::vec2 size(float(base.width), float(base.height));
   const glm::vec2 tx = dx * size, ty = dy * size;
@@ -513,10 +556,10 @@ glm::vec4 SampleAnisotropic(const TextureView& view, glm::vec2 uv, glm::vec2 dx,
   const float ratio = min2 > 0.0f ? std::sqrt(max2 / min2) : view.anisotropy;  // NaN: 1 below
   const int n = ratio > 1.0f ? int(std::min(std::ceil(ratio), view.anisotropy)) : 1;
   const float lambda = LambdaOfRho2(view, max2 / float(n * n), shader_bias);
-  if (n == 1) return SampleFace(view, 0, uv, lambda, DepthCompare{});
+  if (n == 1) return SampleFace(view, 0, uv, lambda, DepthCompare{}, layer);
   glm::vec4 sum(0.0f);
   for (int i = 1; i <= n; ++i)
-    sum += SampleFace(view, 0, uv + major * (float(i) / float(n + 1) - 0.5f), lambda, DepthCompare{});
+    sum += SampleFace(view, 0, uv + major * (float(i) / float(n + 1) - 0.5f), lambda, DepthCompare{}, layer);
   return sum / float(n);
 }
 
@@ -551,9 +594,7 @@ void Textures::SampleLanes(int unit, const Lanes& c, float bias, float out[4][16
 glm::vec4 Textures::SampleLod(int unit, glm::vec2 uv, float lod) const {
   const TextureView* v = Usable(unit_2d, unit);
   if (!v) return kMissing;
-  const SamplerParams& p = v->texture->params;
-  const float lambda = std::clamp(lod + std::clamp(p.lod_bias, -16.0f, 16.0f), p.min_lod, p.max_lod);
-  return SampleFace(*v, 0, uv, std::isnan(lambda) ? 0.0f : lambda, DepthCompare{}) / v->scale;
+  return SampleFace(*v, 0, uv, ExplicitLambda(*v, lod), DepthCompare{}) / v->scale;
 }
 
 void Textures::SampleLodLanes(int unit, const Lanes& c, const float lod[16], float out[4][16]) const {
@@ -590,9 +631,7 @@ glm::vec4 Textures::SampleCubeLod(int unit, glm::vec3 dir, float lod) const {
   const int face = CubeFace(dir);
   glm::vec2 st(0.5f);
   FaceCoords(face, dir, st);
-  const SamplerParams& p = v->texture->params;
-  const float lambda = std::clamp(lod + std::clamp(p.lod_bias, -16.0f, 16.0f), p.min_lod, p.max_lod);
-  return SampleFace(*v, face, st, std::isnan(lambda) ? 0.0f : lambda, DepthCompare{}) / v->scale;
+  return SampleFace(*v, face, st, ExplicitLambda(*v, lod), DepthCompare{}) / v->scale;
 }
 
 void Textures::SampleCubeLodLanes(int unit, const Lanes& c, const float lod[16], float out[4][16]) const {
@@ -602,20 +641,121 @@ void Textures::SampleCubeLodLanes(int unit, const Lanes& c, const float lod[16],
   }
 }
 
-float Textures::SampleShadow(int unit, glm::vec2 uv, float ref, glm::vec2 duv_dx, glm::vec2 duv_dy) const {
-  const TextureView* v = Usable(unit_2d, unit);
+namespace {
+// SampleShadow on a 2D texture or one layer of a 2D array.
+float ShadowOf(const TextureView* v, glm::vec2 uv, int layer_or_minus, float r, float ref, glm::vec2 duv_dx,
+               glm::vec2 duv_dy) {
   if (!v || !v->depth || v->texture->params.compare_mode != COMPARE_REF_TO_TEXTURE) return 0.0f;
   DepthCompare cmp;
   cmp.on = true;
   cmp.func = v->texture->params.compare_func;
   cmp.ref = std::isnan(ref) ? 0.0f : std::clamp(ref, 0.0f, 1.0f);  // depth textures hold [0, 1]
-  return SampleFace(*v, 0, uv, Lambda(*v, duv_dx, duv_dy, 0.0f), cmp).r;
+  const int layer = layer_or_minus < 0 ? ArrayLayer(*v, r) : 0;
+  return SampleFace(*v, 0, uv, Lambda(*v, duv_dx, duv_dy, 0.0f), cmp, layer).r;
+}
+}  // namespace
+
+float Textures::SampleShadow(int unit, glm::vec2 uv, float ref, glm::vec2 duv_dx, glm::vec2 duv_dy) const {
+  return ShadowOf(Usable(unit_2d, unit), uv, 0, 0.0f, ref, duv_dx, duv_dy);
 }
 
 void Textures::SampleShadowLanes(int unit, const Lanes& c, float out[16]) const {
   for (int l = 0; l < 16; ++l)
     out[l] = SampleShadow(unit, glm::vec2(c.s[l], c.t[l]), c.r[l], glm::vec2(c.ds_dx[l], c.dt_dx[l]),
                           glm::vec2(c.ds_dy[l], c.dt_dy[l]));
+}
+
+glm::vec4 Textures::SampleArray(int unit, glm::vec3 uvl, glm::vec2 duv_dx, glm::vec2 duv_dy, float bias) const {
+  const TextureView* v = Usable(unit_2d_array, unit);
+  if (!v) return kMissing;
+  const int layer = ArrayLayer(*v, uvl.z);
+  const glm::vec2 uv(uvl);
+  if (v->anisotropy > 1.0f && !v->depth) return SampleAnisotropic(*v, uv, duv_dx, duv_dy, bias, layer) / v->scale;
+  return SampleFace(*v, 0, uv, Lambda(*v, duv_dx, duv_dy, bias), DepthCompare{}, layer) / v->scale;
+}
+
+glm::vec4 Textures::SampleArrayLod(int unit, glm::vec3 uvl, float lod) const {
+  const TextureView* v = Usable(unit_2d_array, unit);
+  if (!v) return kMissing;
+  return SampleFace(*v, 0, glm::vec2(uvl), ExplicitLambda(*v, lod), DepthCompare{}, ArrayLayer(*v, uvl.z)) /
+         v->scale;
+}
+
+float Textures::SampleArrayShadow(int unit, glm::vec3 uvl, float ref, glm::vec2 duv_dx, glm::vec2 duv_dy) const {
+  return ShadowOf(Usable(unit_2d_array, unit), glm::vec2(uvl), -1, uvl.z, ref, duv_dx, duv_dy);
+}
+
+glm::vec4 Textures::Sample3D(int unit, glm::vec3 str, glm::vec3 dstr_dx, glm::vec3 dstr_dy, float bias) const {
+  const TextureView* v = Usable(unit_3d, unit);
+  if (!v) return kMissing;
+  const auto& levels = v->texture->levels[0];
+  return SampleMip(*v, LambdaVolume(*v, dstr_dx, dstr_dy, bias),
+                   [&](int d, Enum f) { return FilterVolume(*v, levels[d], f, str); }) /
+         v->scale;
+}
+
+glm::vec4 Textures::Sample3DLod(int unit, glm::vec3 str, float lod) const {
+  const TextureView* v = Usable(unit_3d, unit);
+  if (!v) return kMissing;
+  const auto& levels = v->texture->levels[0];
+  return SampleMip(*v, ExplicitLambda(*v, lod), [&](int d, Enum f) { return FilterVolume(*v, levels[d], f, str); }) /
+         v->scale;
+}
+
+namespace {
+// Each lane of `c` through a one-lane call: fn(lane) gives its RGBA.
+template <class Fn>
+void EachLane(float out[4][16], Fn&& fn) {
+  for (int l = 0; l < 16; ++l) {
+    const glm::vec4 r = fn(l);
+    for (int ch = 0; ch < 4; ++ch) out[ch][l] = r[ch];
+  }
+}
+}  // namespace
+
+void Textures::SampleArrayLanes(int unit, const Lanes& c, float bias, float out[4][16]) const {
+  EachLane(out, [&](int l) {
+    return SampleArray(unit, glm::vec3(c.s[l], c.t[l], c.r[l]), glm::vec2(c.ds_dx[l], c.dt_dx[l]),
+                       glm::vec2(c.ds_dy[l], c.dt_dy[l]), bias);
+  });
+}
+
+void Textures::SampleArrayLodLanes(int unit, const Lanes& c, const float lod[16], float out[4][16]) const {
+  EachLane(out, [&](int l) { return SampleArrayLod(unit, glm::vec3(c.s[l], c.t[l], c.r[l]), lod[l]); });
+}
+
+void Textures::SampleArrayShadowLanes(int unit, const Lanes& c, const float ref[16], float out[16]) const {
+  for (int l = 0; l < 16; ++l)
+    out[l] = SampleArrayShadow(unit, glm::vec3(c.s[l], c.t[l], c.r[l]), ref[l], glm::vec2(c.ds_dx[l], c.dt_dx[l]),
+                               glm::vec2(c.ds_dy[l], c.dt_dy[l]));
+}
+
+void Textures::Sample3DLanes(int unit, const Lanes& c, float bias, float out[4][16]) const {
+  EachLane(out, [&](int l) {
+    return Sample3D(unit, glm::vec3(c.s[l], c.t[l], c.r[l]), glm::vec3(c.ds_dx[l], c.dt_dx[l], c.dr_dx[l]),
+                    glm::vec3(c.ds_dy[l], c.dt_dy[l], c.dr_dy[l]), bias);
+  });
+}
+
+void Textures::Sample3DLodLanes(int unit, const Lanes& c, const float lod[16], float out[4][16]) const {
+  EachLane(out, [&](int l) { return Sample3DLod(unit, glm::vec3(c.s[l], c.t[l], c.r[l]), lod[l]); });
+}
+
+namespace {
+// Width, height and layers (or slices) of a level of the view's texture; zero where there is none.
+glm::ivec3 LevelSize(const TextureView* v, int level) {
+  if (!v || level < 0 || v->base + level >= detail::kMaxLevels) return glm::ivec3(0);
+  const TextureLevel& lv = v->texture->levels[0][v->base + level];
+  return lv.Defined() ? glm::ivec3(lv.width, lv.height, lv.depth) : glm::ivec3(0);
+}
+}  // namespace
+
+glm::ivec3 Textures::SizeArray(int unit, int level) const {
+  return unit < 0 || unit >= kMaxTextureUnits ? glm::ivec3(0) : LevelSize(unit_2d_array[unit], level);
+}
+
+glm::ivec3 Textures::Size3D(int unit, int level) const {
+  return unit < 0 || unit >= kMaxTextureUnits ? glm::ivec3(0) : LevelSize(unit_3d[unit], level);
 }
 
 glm::ivec2 Textures::Size(int unit, int level) const {

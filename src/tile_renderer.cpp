@@ -12,23 +12,25 @@ namespace softgl::detail {
 
 bool DrawTextures::Any(const Textures& t) {
   std::uintptr_t any = 0;  // (no early exit: a loop the compiler vectorizes)
-  for (int u = 0; u < kMaxTextureUnits; ++u)
-    any |= reinterpret_cast<std::uintptr_t>(t.unit_2d[u]) | reinterpret_cast<std::uintptr_t>(t.unit_cube[u]);
+  for (UnitViews kind : kKindUnits)
+    for (int u = 0; u < kMaxTextureUnits; ++u) any |= reinterpret_cast<std::uintptr_t>((t.*kind)[u]);
   return any != 0;
 }
 
 bool DrawTextures::Same(const Textures& t) const {
   const auto same = [](const TextureView* a, const TextureView* b) { return a ? b && *a == *b : !b; };
-  for (int u = 0; u < kMaxTextureUnits; ++u)
-    if (!same(textures.unit_2d[u], t.unit_2d[u]) || !same(textures.unit_cube[u], t.unit_cube[u])) return false;
+  for (UnitViews kind : kKindUnits)
+    for (int u = 0; u < kMaxTextureUnits; ++u)
+      if (!same((textures.*kind)[u], (t.*kind)[u])) return false;
   return true;
 }
 
 void DrawTextures::CopyFrom(const Textures& t) {
-  for (int u = 0; u < kMaxTextureUnits; ++u) {  // only the views of the units in use: the others are never read
-    textures.unit_2d[u] = t.unit_2d[u] ? &(views[0][u] = *t.unit_2d[u]) : nullptr;
-    textures.unit_cube[u] = t.unit_cube[u] ? &(views[1][u] = *t.unit_cube[u]) : nullptr;
-  }
+  for (int k = 0; k < kTextureKinds; ++k)  // only the views of the units in use: the others are never read
+    for (int u = 0; u < kMaxTextureUnits; ++u) {
+      const TextureView* v = (t.*kKindUnits[k])[u];
+      (textures.*kKindUnits[k])[u] = v ? &(views[k][u] = *v) : nullptr;
+    }
 }
 
 namespace {

@@ -26,8 +26,8 @@ namespace softgl::detail {
 /// The textures of the bound units resolved for draws: a copy of each bound unit's view, and the Textures the
 /// shader samples through, pointing at them.
 struct DrawTextures {
-  TextureView views[2][kMaxTextureUnits];  // [2D, cube][unit]
-  Textures textures;                       // points into views (null for a unit with nothing bound)
+  TextureView views[kTextureKinds][kMaxTextureUnits];  // [TextureKind][unit]
+  Textures textures;  // points into views (null for a unit with nothing bound)
   /// Whether any unit has a texture bound.
   static bool Any(const Textures& t);
   /// Whether `t` binds the same units to the same views as this.

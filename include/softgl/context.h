@@ -191,7 +191,8 @@ class Context {
   /// Selects the texture unit that BindTexture, TexImage2D, TexParameter and GenerateMipmap act on: TEXTURE0 + i,
   /// i < kMaxTextureUnits (else INVALID_ENUM).
   void ActiveTexture(Enum unit);
-  /// Binds texture (0 unbinds) to TEXTURE_2D or TEXTURE_CUBE_MAP of the active unit. Bad target: INVALID_ENUM;
+  /// Binds texture (0 unbinds) to TEXTURE_2D, TEXTURE_CUBE_MAP, TEXTURE_2D_ARRAY or TEXTURE_3D of the active unit
+  /// (each unit holds one texture of each target). Bad target: INVALID_ENUM;
   /// unknown id, or a texture first bound to the other target: INVALID_OPERATION. There is no default texture
   /// object: texture calls with nothing bound record INVALID_OPERATION.
   void BindTexture(Enum target, std::uint32_t texture);
@@ -211,6 +212,19 @@ class Context {
   /// defined: INVALID_OPERATION.
   void TexSubImage2D(Enum target, int level, int x, int y, int width, int height, Enum format, Enum type,
                      const void* pixels);
+  /// Defines level `level` of the bound TEXTURE_2D_ARRAY (depth layers, all kept at every mipmap level) or
+  /// TEXTURE_3D (depth slices, halved with each level as width and height are): the internal formats, pixel
+  /// formats and types of TexImage2D; `pixels` holds `depth` images of height rows one after another (layer or
+  /// slice 0 first). Errors as TexImage2D's, and: target neither: INVALID_ENUM; a size beyond kMaxTextureSize
+  /// (width and height of an array), kMaxArrayTextureLayers (layers) or kMax3DTextureSize (each size of a 3D
+  /// texture): INVALID_VALUE; a depth format for TEXTURE_3D: INVALID_OPERATION; more texels than one level may
+  /// hold (kMaxTextureSize squared of RGBA32F) or no memory: OUT_OF_MEMORY.
+  void TexImage3D(Enum target, int level, Enum internal_format, int width, int height, int depth, int border,
+                  Enum format, Enum type, const void* pixels);
+  /// Replaces the box (x, y, z, width, height, depth) of a defined level of the bound TEXTURE_2D_ARRAY or
+  /// TEXTURE_3D. Outside the level: INVALID_VALUE; level not defined: INVALID_OPERATION.
+  void TexSubImage3D(Enum target, int level, int x, int y, int z, int width, int height, int depth, Enum format,
+                     Enum type, const void* pixels);
   /// Loads an image file (PNG, JPEG, TGA, BMP, HDR, through stb_image) into level 0 of the texture bound to
   /// target (TEXTURE_2D or a cube face): 1 to 4 channels become R8, RG8, RGB8, RGBA8; HDR becomes RGBA32F.
   /// `encoding` SRGB marks colour images as sRGB-encoded (3 channels SRGB8, 4 SRGB8_ALPHA8: sampling decodes them
@@ -242,9 +256,11 @@ class Context {
   /// texture or the reverse, DEPTH_STENCIL for a texture without stencil or with another type: INVALID_OPERATION.
   void GetTexImage(Enum target, int level, Enum format, Enum type, void* pixels) const;
   /// Builds levels base+1 .. 1x1 of the bound texture from its base level (each texel the bilinear sample of the
-  /// level above at its centre: the 2x2 average for even sizes). Base level undefined: INVALID_OPERATION.
+  /// level above at its centre: the 2x2 average for even sizes; a 2D array layer by layer, a 3D texture down to
+  /// 1x1x1 by 2x2x2 averages). Base level undefined: INVALID_OPERATION.
   void GenerateMipmap(Enum target);
-  /// Sampling state of the bound texture: TEXTURE_MIN_FILTER (NEAREST, LINEAR, NEAREST_MIPMAP_NEAREST,
+  /// Sampling state of the texture bound to target (TEXTURE_2D, TEXTURE_CUBE_MAP, TEXTURE_2D_ARRAY or
+  /// TEXTURE_3D): TEXTURE_MIN_FILTER (NEAREST, LINEAR, NEAREST_MIPMAP_NEAREST,
   /// LINEAR_MIPMAP_NEAREST, NEAREST_MIPMAP_LINEAR (default), LINEAR_MIPMAP_LINEAR), TEXTURE_MAG_FILTER (NEAREST,
   /// LINEAR (default)), TEXTURE_WRAP_S/T/R (REPEAT (default), MIRRORED_REPEAT, CLAMP_TO_EDGE, CLAMP_TO_BORDER),
   /// TEXTURE_BASE_LEVEL, TEXTURE_MAX_LEVEL, TEXTURE_MIN_LOD, TEXTURE_MAX_LOD, TEXTURE_LOD_BIAS,
@@ -262,8 +278,8 @@ class Context {
   /// as integers, mapped back from [-1, 1]). Bad target or name: INVALID_ENUM; nothing bound: INVALID_OPERATION.
   void GetTexParameterfv(Enum target, Enum pname, float* params) const;
   void GetTexParameteriv(Enum target, Enum pname, int* params) const;
-  /// One level of the bound texture (target TEXTURE_2D or a cube face): TEXTURE_WIDTH, TEXTURE_HEIGHT,
-  /// TEXTURE_DEPTH (1), TEXTURE_INTERNAL_FORMAT, TEXTURE_RED_SIZE, _GREEN_SIZE, _BLUE_SIZE, _ALPHA_SIZE,
+  /// One level of the bound texture (target TEXTURE_2D, a cube face, TEXTURE_2D_ARRAY or TEXTURE_3D):
+  /// TEXTURE_WIDTH, TEXTURE_HEIGHT, TEXTURE_DEPTH (layers or slices; 1 for 2D), TEXTURE_INTERNAL_FORMAT, TEXTURE_RED_SIZE, _GREEN_SIZE, _BLUE_SIZE, _ALPHA_SIZE,
   /// TEXTURE_DEPTH_SIZE, TEXTURE_STENCIL_SIZE (the format's bits; all 0 for an undefined level, whose internal
   /// format reads RGBA). Bad target or name: INVALID_ENUM; level out of range: INVALID_VALUE; nothing bound:
   /// INVALID_OPERATION.
@@ -290,13 +306,19 @@ class Context {
   /// Errors: bad target or attachment: INVALID_ENUM; framebuffer 0 bound, unknown texture, textarget not the
   /// texture's: INVALID_OPERATION; level out of range: INVALID_VALUE.
   void FramebufferTexture2D(Enum target, Enum attachment, Enum textarget, std::uint32_t texture, int level);
+  /// Attaches one layer of level `level` of a TEXTURE_2D_ARRAY (or one slice of a TEXTURE_3D) as
+  /// FramebufferTexture2D attaches a 2D level: drawing renders into that layer alone. A layer the level does not
+  /// have leaves the framebuffer FRAMEBUFFER_INCOMPLETE_ATTACHMENT. Errors: bad target or attachment:
+  /// INVALID_ENUM; framebuffer 0 bound, unknown texture, a texture of another target: INVALID_OPERATION; level
+  /// out of range, negative layer or one beyond kMaxArrayTextureLayers (kMax3DTextureSize): INVALID_VALUE.
+  void FramebufferTextureLayer(Enum target, Enum attachment, std::uint32_t texture, int level, int layer);
   /// Attaches a renderbuffer (renderbuffer_target RENDERBUFFER; 0 detaches) to an attachment point as
   /// FramebufferTexture2D does. Errors: bad target, attachment or renderbuffer_target: INVALID_ENUM; framebuffer 0
   /// bound, unknown renderbuffer: INVALID_OPERATION.
   void FramebufferRenderbuffer(Enum target, Enum attachment, Enum renderbuffer_target, std::uint32_t renderbuffer);
   /// What an attachment point holds: FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE (NONE, TEXTURE or RENDERBUFFER),
-  /// _OBJECT_NAME, _TEXTURE_LEVEL, _TEXTURE_CUBE_MAP_FACE (0 for a 2D texture). Errors: bad target, attachment or
-  /// pname, a texture name asked of a renderbuffer: INVALID_ENUM; framebuffer 0 bound, a texture name asked of an
+  /// _OBJECT_NAME, _TEXTURE_LEVEL, _TEXTURE_CUBE_MAP_FACE (0 but for a cube map), _TEXTURE_LAYER (0 but for
+  /// FramebufferTextureLayer). Errors: bad target, attachment or pname, a texture name asked of a renderbuffer: INVALID_ENUM; framebuffer 0 bound, a texture name asked of an
   /// empty point, DEPTH_STENCIL_ATTACHMENT while depth and stencil hold different images: INVALID_OPERATION.
   void GetFramebufferAttachmentParameteriv(Enum target, Enum attachment, Enum pname, int* params);
   /// FRAMEBUFFER_COMPLETE, or why not: INCOMPLETE_ATTACHMENT (an attachment's image is not defined or has no size,

@@ -190,12 +190,21 @@ void FillVertexLanes(const Batch& batch, int base, int n, VertexLanes& in);
 template <class Varyings>
 void FillFragmentLanes(const BlockBatch& batch, int b, FragmentLanes<Varyings>& in);
 
-// textureLod for 2D (cube = false) or cube maps.
-inline vec4 Lod(const Textures* textures, int unit, const Textures::Lanes& c, const Float& lod, bool cube) {
+// textureLod through one of Textures' *LodLanes calls.
+using LodLanesFn = void (Textures::*)(int, const Textures::Lanes&, const float*, float (*)[16]) const;
+inline vec4 Lod(const Textures* textures, int unit, const Textures::Lanes& c, const Float& lod, LodLanesFn fn) {
   float l[kLanes], out[4][kLanes];
   lod.Store(l);
-  if (cube) textures->SampleCubeLodLanes(unit, c, l, out);
-  else textures->SampleLodLanes(unit, c, l, out);
+  (textures->*fn)(unit, c, l, out);
+  return Rgba(out);
+}
+// texture() through one of Textures' *Lanes calls, with the derivatives of the coordinates c holds.
+using SampleLanesFn = void (Textures::*)(int, const Textures::Lanes&, float, float (*)[16]) const;
+inline vec4 Sample(const Textures* textures, int unit, Textures::Lanes& c, const vec3& dx, const vec3& dy, float bias,
+                   SampleLanesFn fn) {
+  Derivatives(c, dx, dy);
+  float out[4][kLanes];
+  (textures->*fn)(unit, c, bias, out);
   return Rgba(out);
 }
 }  // namespace shader_detail
@@ -211,11 +220,22 @@ struct VertexLanes {
 
   /// textureLod(sampler2D, uv, lod) (the vertex stage has no derivatives).
   vec4 TextureLod(int unit, const vec2& uv, Float lod) const {
-    return shader_detail::Lod(textures, unit, shader_detail::Coords(uv.x, uv.y), lod, false);
+    return shader_detail::Lod(textures, unit, shader_detail::Coords(uv.x, uv.y), lod, &Textures::SampleLodLanes);
   }
   /// textureLod(samplerCube, dir, lod).
   vec4 TextureCubeLod(int unit, const vec3& dir, Float lod) const {
-    return shader_detail::Lod(textures, unit, shader_detail::Coords(dir.x, dir.y, dir.z), lod, true);
+    return shader_detail::Lod(textures, unit, shader_detail::Coords(dir.x, dir.y, dir.z), lod,
+                              &Textures::SampleCubeLodLanes);
+  }
+  /// textureLod(sampler2DArray, vec3(uv, layer), lod).
+  vec4 TextureArrayLod(int unit, const vec3& uv_layer, Float lod) const {
+    return shader_detail::Lod(textures, unit, shader_detail::Coords(uv_layer.x, uv_layer.y, uv_layer.z), lod,
+                              &Textures::SampleArrayLodLanes);
+  }
+  /// textureLod(sampler3D, str, lod).
+  vec4 Texture3DLod(int unit, const vec3& str, Float lod) const {
+    return shader_detail::Lod(textures, unit, shader_detail::Coords(str.x, str.y, str.z), lod,
+                              &Textures::Sample3DLodLanes);
   }
 };
 
@@ -252,7 +272,7 @@ struct FragmentLanes {
   }
   /// textureLod(sampler2D, uv, lod).
   vec4 TextureLod(int unit, const vec2& uv, Float lod) const {
-    return shader_detail::Lod(textures, unit, shader_detail::Coords(uv.x, uv.y), lod, false);
+    return shader_detail::Lod(textures, unit, shader_detail::Coords(uv.x, uv.y), lod, &Textures::SampleLodLanes);
   }
   /// texture(samplerCube, dir).
   vec4 TextureCube(int unit, const vec3& dir, float bias = 0.0f) const {
@@ -264,7 +284,41 @@ struct FragmentLanes {
   }
   /// textureLod(samplerCube, dir, lod).
   vec4 TextureCubeLod(int unit, const vec3& dir, Float lod) const {
-    return shader_detail::Lod(textures, unit, shader_detail::Coords(dir.x, dir.y, dir.z), lod, true);
+    return shader_detail::Lod(textures, unit, shader_detail::Coords(dir.x, dir.y, dir.z), lod,
+                              &Textures::SampleCubeLodLanes);
+  }
+  /// texture(sampler2DArray, vec3(uv, layer)): the layer floor(layer + 0.5), clamped to the texture's layers; the
+  /// level of detail from uv's derivatives.
+  vec4 TextureArray(int unit, const vec3& uv_layer, float bias = 0.0f) const {
+    Textures::Lanes c = shader_detail::Coords(uv_layer.x, uv_layer.y, uv_layer.z);
+    const vec2 uv(uv_layer.x, uv_layer.y);
+    return shader_detail::Sample(textures, unit, c, vec3(dFdx(uv), 0.0f), vec3(dFdy(uv), 0.0f), bias,
+                                 &Textures::SampleArrayLanes);
+  }
+  /// textureLod(sampler2DArray, vec3(uv, layer), lod).
+  vec4 TextureArrayLod(int unit, const vec3& uv_layer, Float lod) const {
+    return shader_detail::Lod(textures, unit, shader_detail::Coords(uv_layer.x, uv_layer.y, uv_layer.z), lod,
+                              &Textures::SampleArrayLodLanes);
+  }
+  /// texture(sampler2DArrayShadow, vec4(uv, layer, ref)): TextureShadow on one layer of a depth texture array.
+  Float TextureArrayShadow(int unit, const vec4& uv_layer_ref) const {
+    Textures::Lanes c = shader_detail::Coords(uv_layer_ref.x, uv_layer_ref.y, uv_layer_ref.z);
+    const vec2 uv(uv_layer_ref.x, uv_layer_ref.y);
+    shader_detail::Derivatives(c, vec3(dFdx(uv), 0.0f), vec3(dFdy(uv), 0.0f));
+    float ref[kLanes], out[kLanes];
+    uv_layer_ref.w.Store(ref);
+    textures->SampleArrayShadowLanes(unit, c, ref, out);
+    return Float::Load(out);
+  }
+  /// texture(sampler3D, str): the level of detail from the derivatives of all three coordinates.
+  vec4 Texture3D(int unit, const vec3& str, float bias = 0.0f) const {
+    Textures::Lanes c = shader_detail::Coords(str.x, str.y, str.z);
+    return shader_detail::Sample(textures, unit, c, dFdx(str), dFdy(str), bias, &Textures::Sample3DLanes);
+  }
+  /// textureLod(sampler3D, str, lod).
+  vec4 Texture3DLod(int unit, const vec3& str, Float lod) const {
+    return shader_detail::Lod(textures, unit, shader_detail::Coords(str.x, str.y, str.z), lod,
+                              &Textures::Sample3DLodLanes);
   }
   /// texture(sampler2DShadow, vec3(uv, ref)): percentage-closer filtering of the comparison (see
   /// Textures::SampleShadow).
@@ -278,6 +332,10 @@ struct FragmentLanes {
   }
   /// textureSize(sampler2D, level).
   glm::ivec2 TextureSize(int unit, int level = 0) const { return textures->Size(unit, level); }
+  /// textureSize(sampler2DArray, level): width, height, layers.
+  glm::ivec3 TextureSizeArray(int unit, int level = 0) const { return textures->SizeArray(unit, level); }
+  /// textureSize(sampler3D, level).
+  glm::ivec3 TextureSize3D(int unit, int level = 0) const { return textures->Size3D(unit, level); }
 };
 
 /// What a wide fragment stage writes for its 16 fragments.
@@ -378,6 +436,15 @@ struct FragmentIn {
   /// texture(samplerCube, dir) with dir a varying.
   glm::vec4 TextureCube(int unit, glm::vec3 Varyings::*dir, float bias = 0.0f) const {
     return textures->SampleCube(unit, varyings.*dir, dFdx(dir), dFdy(dir), bias);
+  }
+  /// texture(sampler2DArray, vec3(uv, layer)) with (uv, layer) a varying; the level of detail from uv alone.
+  glm::vec4 TextureArray(int unit, glm::vec3 Varyings::*uv_layer, float bias = 0.0f) const {
+    return textures->SampleArray(unit, varyings.*uv_layer, glm::vec2(dFdx(uv_layer)), glm::vec2(dFdy(uv_layer)),
+                                 bias);
+  }
+  /// texture(sampler3D, str) with str a varying.
+  glm::vec4 Texture3D(int unit, glm::vec3 Varyings::*str, float bias = 0.0f) const {
+    return textures->Sample3D(unit, varyings.*str, dFdx(str), dFdy(str), bias);
   }
 
   /// Screen-space derivative of a varying along x (GLSL dFdx, within the 2x2 quad).

@@ -1,7 +1,7 @@
 // softgl/texture.h — textures as the shader stages see them: sampling by texture unit.
 //
-// A draw hands its shader a `Textures`: for each of the kMaxTextureUnits units, the TEXTURE_2D and
-// TEXTURE_CUBE_MAP textures bound to it and their sampling state. Filtering, wrapping and the level of detail
+// A draw hands its shader a `Textures`: for each of the kMaxTextureUnits units, the TEXTURE_2D, TEXTURE_CUBE_MAP,
+// TEXTURE_2D_ARRAY and TEXTURE_3D textures bound to it and their sampling state. Filtering, wrapping and the level of detail
 // follow the OpenGL 4.6 specification (section 8.14): texel centres at +0.5, wrap applied per texel, lambda from
 // the screen-space derivatives of the texture coordinates. Sampling a unit with no texture, or an incomplete one,
 // returns (0, 0, 0, 1), as OpenGL does.
@@ -21,6 +21,10 @@ namespace softgl {
 inline constexpr int kMaxTextureUnits = 16;
 /// Largest texture width or height (GL_MAX_TEXTURE_SIZE).
 inline constexpr int kMaxTextureSize = 16384;
+/// Largest width, height or depth of a 3D texture (GL_MAX_3D_TEXTURE_SIZE).
+inline constexpr int kMax3DTextureSize = 2048;
+/// Most layers of a 2D array texture (GL_MAX_ARRAY_TEXTURE_LAYERS).
+inline constexpr int kMaxArrayTextureLayers = 2048;
 
 namespace detail {
 struct TextureView;  // a bound texture resolved for one draw; defined in src/
@@ -48,6 +52,24 @@ class Textures {
   /// textureSize(sampler2D, level): the size of a level of unit's 2D texture, (0, 0) if there is none.
   glm::ivec2 Size(int unit, int level = 0) const;
 
+  /// texture(sampler2DArray, vec3(uv, layer)): Sample on one layer of unit's TEXTURE_2D_ARRAY, the layer
+  /// floor(layer + 0.5) clamped to the texture's layers (OpenGL 4.6, section 8.14.2). The level of detail comes
+  /// from uv alone.
+  glm::vec4 SampleArray(int unit, glm::vec3 uv_layer, glm::vec2 duv_dx, glm::vec2 duv_dy, float bias = 0.0f) const;
+  /// textureLod(sampler2DArray, vec3(uv, layer), lod).
+  glm::vec4 SampleArrayLod(int unit, glm::vec3 uv_layer, float lod) const;
+  /// texture(sampler2DArrayShadow, vec4(uv, layer, ref)): SampleShadow on the layer of a depth texture array.
+  float SampleArrayShadow(int unit, glm::vec3 uv_layer, float ref, glm::vec2 duv_dx, glm::vec2 duv_dy) const;
+  /// texture(sampler3D, str): filtered sample of unit's TEXTURE_3D: LINEAR interpolates between 8 texels (two
+  /// slices, wrapped by TEXTURE_WRAP_R), and the level of detail comes from the derivatives of all of (s, t, r).
+  glm::vec4 Sample3D(int unit, glm::vec3 str, glm::vec3 dstr_dx, glm::vec3 dstr_dy, float bias = 0.0f) const;
+  /// textureLod(sampler3D, str, lod).
+  glm::vec4 Sample3DLod(int unit, glm::vec3 str, float lod) const;
+  /// textureSize(sampler2DArray, level): width, height and layers; (0, 0, 0) if there is none.
+  glm::ivec3 SizeArray(int unit, int level = 0) const;
+  /// textureSize(sampler3D, level): width, height and depth; (0, 0, 0) if there is none.
+  glm::ivec3 Size3D(int unit, int level = 0) const;
+
   /// Coordinates and their screen-space derivatives for 16 lanes (a wide shader's block of fragments).
   struct Lanes {
     float s[16], t[16], r[16];  ///< (s, t), and r: a cube map direction's z, or a shadow lookup's reference
@@ -61,9 +83,17 @@ class Textures {
   void SampleCubeLanes(int unit, const Lanes& c, float bias, float out[4][16]) const;       ///< SampleCube (s, t, r)
   void SampleCubeLodLanes(int unit, const Lanes& c, const float lod[16], float out[4][16]) const;
   void SampleShadowLanes(int unit, const Lanes& c, float out[16]) const;  ///< SampleShadow, r the reference
+  void SampleArrayLanes(int unit, const Lanes& c, float bias, float out[4][16]) const;  ///< SampleArray, r the layer
+  void SampleArrayLodLanes(int unit, const Lanes& c, const float lod[16], float out[4][16]) const;
+  /// SampleArrayShadow: r the layer, ref the references.
+  void SampleArrayShadowLanes(int unit, const Lanes& c, const float ref[16], float out[16]) const;
+  void Sample3DLanes(int unit, const Lanes& c, float bias, float out[4][16]) const;  ///< Sample3D
+  void Sample3DLodLanes(int unit, const Lanes& c, const float lod[16], float out[4][16]) const;
 
   const detail::TextureView* unit_2d[kMaxTextureUnits] = {};
   const detail::TextureView* unit_cube[kMaxTextureUnits] = {};
+  const detail::TextureView* unit_2d_array[kMaxTextureUnits] = {};
+  const detail::TextureView* unit_3d[kMaxTextureUnits] = {};
 };
 
 }  // namespace softgl

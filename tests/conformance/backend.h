@@ -31,6 +31,22 @@ enum class Program {
   kTexture,  // colour = texture(unit 0, extra.xy): implicit derivatives, so the LOD comes from the quad
   kCube,     // colour = texture(cube map on unit 1, extra.xyz)
   kShadow,   // colour = texture(depth texture on unit 2 with comparison, vec3(extra.xy, extra.z)) in red
+  kArray,    // colour = texture(2D array on unit 3, extra.xyz): layer extra.z
+  kVolume,   // colour = texture(3D texture on unit 4, extra.xyz)
+  kArrayShadow,  // colour = texture(depth array on unit 5 with comparison, extra): layer extra.z, reference extra.w
+};
+
+/// A TEXTURE_2D_ARRAY or TEXTURE_3D defined by TexImage3D: RGBA8 from `rgba` (unit 3 for an array, 4 for 3D), or
+/// an array of DEPTH_COMPONENT32F from `depth` compared by `compare_func` (unit 5).
+struct LayeredDesc {
+  Enum target = softgl::TEXTURE_2D_ARRAY;
+  int width = 0, height = 0, depth_or_layers = 0;
+  std::vector<std::uint8_t> rgba;  // RGBA8 texels, plane after plane, rows bottom first
+  std::vector<float> depth;        // or depth values (then a depth array)
+  bool generate_mipmap = false;
+  Enum min_filter = softgl::LINEAR, mag_filter = softgl::LINEAR;
+  Enum wrap_s = softgl::REPEAT, wrap_t = softgl::REPEAT, wrap_r = softgl::REPEAT;
+  Enum compare_func = softgl::LEQUAL;
 };
 
 /// A 2D RGBA8 (or `internal_format`) texture for unit 0: the levels given (level 0 first), or level 0 and
@@ -180,6 +196,8 @@ class Backend {
   /// Defines the depth texture of unit 2 (size x size floats), TEXTURE_COMPARE_MODE = COMPARE_REF_TO_TEXTURE with
   /// `func`, filters `filter` (NEAREST or LINEAR), CLAMP_TO_EDGE.
   virtual void SetShadowTexture(int size, const std::vector<float>& depth, Enum func, Enum filter) = 0;
+  /// Defines the array or 3D texture `desc` describes on its unit (replacing any before).
+  virtual void SetLayeredTexture(const LayeredDesc& desc) = 0;
   /// Directs drawing into a new width x height RGBA8 texture with a depth texture (viewport set to it).
   virtual void BeginRenderToTexture(int width, int height) = 0;
   /// Back to the default framebuffer (viewport restored); the texture drawn becomes unit 0's, LINEAR filtered.

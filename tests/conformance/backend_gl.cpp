@@ -86,6 +86,27 @@ out vec4 o_color;
 void main() { o_color = vec4(texture(u_shadow, v_extra.xyz), 0.0, 0.0, 1.0); }
 )";
 
+constexpr const char* kArrayFragment = R"(#version 330 core
+in vec4 v_extra;
+uniform sampler2DArray u_array;
+out vec4 o_color;
+void main() { o_color = texture(u_array, v_extra.xyz); }
+)";
+
+constexpr const char* kVolumeFragment = R"(#version 330 core
+in vec4 v_extra;
+uniform sampler3D u_volume;
+out vec4 o_color;
+void main() { o_color = texture(u_volume, v_extra.xyz); }
+)";
+
+constexpr const char* kArrayShadowFragment = R"(#version 330 core
+in vec4 v_extra;
+uniform sampler2DArrayShadow u_shadow_array;
+out vec4 o_color;
+void main() { o_color = vec4(texture(u_shadow_array, v_extra), 0.0, 0.0, 1.0); }
+)";
+
 GLuint Compile(GLenum type, const char* source, std::string* error) {
   const GLuint s = glCreateShader(type);
   glShaderSource(s, 1, &source, nullptr);
@@ -134,11 +155,20 @@ class GlBackend final : public Backend {
     programs_[3] = Link(kTextureFragment, error);
     programs_[4] = Link(kCubeFragment, error);
     programs_[5] = Link(kShadowFragment, error);
+    programs_[6] = Link(kArrayFragment, error);
+    programs_[7] = Link(kVolumeFragment, error);
+    programs_[8] = Link(kArrayShadowFragment, error);
     instanced_ = Link(kColorFragment, error, kInstancedVertexShader);
     glUseProgram(programs_[4]);
     glUniform1i(glGetUniformLocation(programs_[4], "u_cube"), 1);
     glUseProgram(programs_[5]);
     glUniform1i(glGetUniformLocation(programs_[5], "u_shadow"), 2);
+    glUseProgram(programs_[6]);
+    glUniform1i(glGetUniformLocation(programs_[6], "u_array"), 3);
+    glUseProgram(programs_[7]);
+    glUniform1i(glGetUniformLocation(programs_[7], "u_volume"), 4);
+    glUseProgram(programs_[8]);
+    glUniform1i(glGetUniformLocation(programs_[8], "u_shadow_array"), 5);
     if (!error->empty()) return false;
     glGenVertexArrays(1, &vao_);
     glBindVertexArray(vao_);
@@ -345,6 +375,33 @@ class GlBackend final : public Backend {
     glActiveTexture(GL_TEXTURE0);
   }
 
+  void SetLayeredTexture(const LayeredDesc& d) override {
+    GLuint tex = 0;
+    glGenTextures(1, &tex);
+    const bool depth = !d.depth.empty();
+    const GLenum target = GLenum(d.target);
+    glActiveTexture(GL_TEXTURE0 + (depth ? 5 : d.target == softgl::TEXTURE_3D ? 4 : 3));
+    glBindTexture(target, tex);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    if (depth)
+      glTexImage3D(target, 0, GL_DEPTH_COMPONENT32F, d.width, d.height, d.depth_or_layers, 0, GL_DEPTH_COMPONENT,
+                   GL_FLOAT, d.depth.data());
+    else
+      glTexImage3D(target, 0, GL_RGBA8, d.width, d.height, d.depth_or_layers, 0, GL_RGBA, GL_UNSIGNED_BYTE,
+                   d.rgba.data());
+    if (d.generate_mipmap) glGenerateMipmap(target);
+    glTexParameteri(target, GL_TEXTURE_MIN_FILTER, GLint(d.min_filter));
+    glTexParameteri(target, GL_TEXTURE_MAG_FILTER, GLint(d.mag_filter));
+    glTexParameteri(target, GL_TEXTURE_WRAP_S, GLint(d.wrap_s));
+    glTexParameteri(target, GL_TEXTURE_WRAP_T, GLint(d.wrap_t));
+    glTexParameteri(target, GL_TEXTURE_WRAP_R, GLint(d.wrap_r));
+    if (depth) {
+      glTexParameteri(target, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+      glTexParameteri(target, GL_TEXTURE_COMPARE_FUNC, GLint(d.compare_func));
+    }
+    glActiveTexture(GL_TEXTURE0);
+  }
+
   void BeginRenderToTexture(int width, int height) override {
     GLuint depth = 0, fbo = 0;
     glGenTextures(1, &rtt_color_);
@@ -487,7 +544,7 @@ class GlBackend final : public Backend {
   OSMesaContext ctx_;
   int w_, h_;
   std::vector<std::uint8_t> buffer_;
-  GLuint programs_[6] = {};
+  GLuint programs_[9] = {};
   GLuint instanced_ = 0;
   GLuint rtt_color_ = 0;
   GLuint vao_ = 0, vbo_ = 0, ebo_ = 0;

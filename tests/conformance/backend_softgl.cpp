@@ -106,6 +106,32 @@ struct ShadowShader : softgl::Shader<ShadowShader, ShadowVaryings> {
   }
 };
 
+struct LayerVaryings {
+  glm::vec4 coord;
+};
+
+// kArray, kVolume and kArrayShadow: texture(unit 3, 4 or 5, extra).
+struct LayeredShader : softgl::Shader<LayeredShader, LayerVaryings> {
+  softgl::Enum target = softgl::TEXTURE_2D_ARRAY;
+  bool shadow = false;
+  void Vertex(const softgl::VertexIn& in, softgl::VertexOut<LayerVaryings>& out) const {
+    out.position = in.attrib[0];
+    out.varyings.coord = in.attrib[2];
+  }
+  bool Fragment(const softgl::FragmentIn<LayerVaryings>& in, softgl::FragmentOut& out) const {
+    const glm::vec4 c = in.varyings.coord;
+    const glm::vec2 dx(in.dFdx(&LayerVaryings::coord)), dy(in.dFdy(&LayerVaryings::coord));
+    if (shadow)
+      out.color[0] = glm::vec4(in.textures->SampleArrayShadow(5, glm::vec3(c), c.w, dx, dy), 0.0f, 0.0f, 1.0f);
+    else if (target == softgl::TEXTURE_3D)
+      out.color[0] = in.textures->Sample3D(4, glm::vec3(c), glm::vec3(in.dFdx(&LayerVaryings::coord)),
+                                           glm::vec3(in.dFdy(&LayerVaryings::coord)));
+    else
+      out.color[0] = in.textures->SampleArray(3, glm::vec3(c), dx, dy);
+    return true;
+  }
+};
+
 // The instanced program, in the wide form (gl_InstanceID is an Int lane).
 struct InstancedVaryings {
   softgl::vec4 color;
@@ -125,6 +151,8 @@ struct InstancedShader : softgl::Shader<InstancedShader, InstancedVaryings> {
 class SoftglBackend final : public Backend {
  public:
   SoftglBackend(int w, int h) : gl_(w, h) {
+    volume_.target = softgl::TEXTURE_3D;
+    array_shadow_.shadow = true;
     vao_ = gl_.GenVertexArray();
     vbo_ = gl_.GenBuffer();
     ebo_ = gl_.GenBuffer();
@@ -175,6 +203,9 @@ class SoftglBackend final : public Backend {
       case Program::kTexture: gl_.UseProgram(texture_); break;
       case Program::kCube: gl_.UseProgram(cube_); break;
       case Program::kShadow: gl_.UseProgram(shadow_); break;
+      case Program::kArray: gl_.UseProgram(array_); break;
+      case Program::kVolume: gl_.UseProgram(volume_); break;
+      case Program::kArrayShadow: gl_.UseProgram(array_shadow_); break;
     }
     if (indices.empty()) {
       gl_.DrawArrays(mode, 0, int(vertices.size()));
@@ -316,6 +347,30 @@ class SoftglBackend final : public Backend {
     gl_.ActiveTexture(softgl::TEXTURE0);
   }
 
+  void SetLayeredTexture(const LayeredDesc& d) override {
+    const bool depth = !d.depth.empty();
+    gl_.ActiveTexture(softgl::TEXTURE0 + (depth ? 5 : d.target == softgl::TEXTURE_3D ? 4 : 3));
+    gl_.BindTexture(d.target, gl_.GenTexture());
+    gl_.PixelStore(softgl::UNPACK_ALIGNMENT, 1);
+    if (depth)
+      gl_.TexImage3D(d.target, 0, softgl::DEPTH_COMPONENT32F, d.width, d.height, d.depth_or_layers, 0,
+                     softgl::DEPTH_COMPONENT, softgl::FLOAT, d.depth.data());
+    else
+      gl_.TexImage3D(d.target, 0, softgl::RGBA8, d.width, d.height, d.depth_or_layers, 0, softgl::RGBA,
+                     softgl::UNSIGNED_BYTE, d.rgba.data());
+    if (d.generate_mipmap) gl_.GenerateMipmap(d.target);
+    gl_.TexParameteri(d.target, softgl::TEXTURE_MIN_FILTER, int(d.min_filter));
+    gl_.TexParameteri(d.target, softgl::TEXTURE_MAG_FILTER, int(d.mag_filter));
+    gl_.TexParameteri(d.target, softgl::TEXTURE_WRAP_S, int(d.wrap_s));
+    gl_.TexParameteri(d.target, softgl::TEXTURE_WRAP_T, int(d.wrap_t));
+    gl_.TexParameteri(d.target, softgl::TEXTURE_WRAP_R, int(d.wrap_r));
+    if (depth) {
+      gl_.TexParameteri(d.target, softgl::TEXTURE_COMPARE_MODE, softgl::COMPARE_REF_TO_TEXTURE);
+      gl_.TexParameteri(d.target, softgl::TEXTURE_COMPARE_FUNC, int(d.compare_func));
+    }
+    gl_.ActiveTexture(softgl::TEXTURE0);
+  }
+
   void BeginRenderToTexture(int width, int height) override {
     rtt_color_ = gl_.GenTexture();
     const std::uint32_t depth = gl_.GenTexture(), fbo = gl_.GenFramebuffer();
@@ -449,6 +504,7 @@ class SoftglBackend final : public Backend {
   TextureShader texture_;
   CubeShader cube_;
   ShadowShader shadow_;
+  LayeredShader array_, volume_, array_shadow_;
   std::uint32_t rtt_color_ = 0;
 };
 

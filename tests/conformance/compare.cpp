@@ -112,7 +112,7 @@ TEST_CASE("conformance scenes match Mesa", "[conformance]") {
                   << " differing pixels, largest channel difference " << v.max_diff << ", over tolerance " << v.over
                   << ", depth beyond resolution " << v.depth_over << ", stencil differing " << v.stencil_diff
                   << ", coverage differing " << v.coverage_diff);
-      if (!v.Pass()) {
+      if (!v.Pass() || std::getenv("SOFTGL_CONFORMANCE_WRITE")) {  // the images of failures, or of every scene
         const std::string dir = SOFTGL_TEST_OUTPUT_DIR "/conformance";
         std::filesystem::create_directories(dir);
         softgl::WritePng(dir + "/" + s.name + "_softgl.png", ToImage(ours));

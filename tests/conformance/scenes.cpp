@@ -1125,6 +1125,138 @@ void ShadowCompare(Backend& b) {
   }
 }
 
+// RGBA8 texels of a w x h x d texture: a checker of 4-texel cells, each plane its own colours, with a gradient
+// within it, so that layers, slices and mipmap levels all look different.
+std::vector<std::uint8_t> LayeredPattern(int w, int h, int d) {
+  std::vector<std::uint8_t> rgba;
+  for (int k = 0; k < d; ++k)
+    for (int j = 0; j < h; ++j)
+      for (int i = 0; i < w; ++i) {
+        const bool check = ((i / 4) + (j / 4) + k) % 2 == 0;
+        rgba.insert(rgba.end(), {std::uint8_t(check ? 40 + 50 * (k % 5) : 230 - 30 * (k % 7)),
+                                 std::uint8_t(i * 255 / std::max(w - 1, 1)), std::uint8_t(60 * (k % 4) + j * 3),
+                                 255});
+      }
+  return rgba;
+}
+
+// A mipmapped 2D array of 5 layers on receding planes: layers chosen by constant coordinates (below 0, between
+// layers on either side of .5, beyond the last: rounded and clamped), and one plane whose layer coordinate varies
+// across it; then the same array NEAREST with CLAMP_TO_EDGE on a quad beyond [0, 1].
+void TextureArray(Backend& b) {
+  ClearBlack(b);
+  LayeredDesc d;
+  d.width = d.height = 16;
+  d.depth_or_layers = 5;
+  d.rgba = LayeredPattern(16, 16, 5);
+  d.generate_mipmap = true;
+  d.min_filter = LINEAR_MIPMAP_LINEAR;
+  b.SetLayeredTexture(d);
+  const float layers[5] = {-1.0f, 0.3f, 1.6f, 2.2f, 9.0f};
+  const glm::mat4 mvp = glm::perspective(glm::radians(60.0f), 25.0f / 64.0f, 0.3f, 60.0f) *
+                        glm::lookAt(glm::vec3(0, 1, 1), glm::vec3(0, 0, -8), glm::vec3(0, 1, 0));
+  for (int q = 0; q < 5; ++q) {
+    b.Viewport(q * 25, 64, 25, 64);
+    const float l = layers[q];
+    b.Draw(TRIANGLES,
+           QuadWith(Floor(mvp, -6, 6, 1, -40),
+                    {glm::vec4(0, 0, l, 0), glm::vec4(3, 0, l, 0), glm::vec4(3, 10, l, 0), glm::vec4(0, 10, l, 0)}),
+           Program::kArray);
+  }
+  b.Viewport(0, 0, kSize, kSize);
+  // The layer coordinate from 0.1 at the left to 3.9 at the right: bands of layers 0 to 4 (the band edges, where
+  // an interpolated coordinate lies within rounding of n + 0.5, may go either way: the texture check's share).
+  b.Draw(TRIANGLES,
+         QuadWith({Win(0, 0), Win(64, 0), Win(64, 64), Win(0, 64)},
+                  {glm::vec4(0, 0, 0.1f, 0), glm::vec4(2, 0, 3.9f, 0), glm::vec4(2, 2, 3.9f, 0),
+                   glm::vec4(0, 2, 0.1f, 0)}),
+         Program::kArray);
+  d.generate_mipmap = false;
+  d.min_filter = d.mag_filter = NEAREST;
+  d.wrap_s = d.wrap_t = CLAMP_TO_EDGE;
+  b.SetLayeredTexture(d);
+  b.Draw(TRIANGLES,
+         QuadWith({Win(64, 0), Win(128, 0), Win(128, 64), Win(64, 64)},
+                  {glm::vec4(-0.3f, -0.2f, 3, 0), glm::vec4(1.4f, -0.2f, 3, 0), glm::vec4(1.4f, 1.3f, 3, 0),
+                   glm::vec4(-0.3f, 1.3f, 3, 0)}),
+         Program::kArray);
+}
+
+// A mipmapped 16 x 16 x 8 3D texture: trilinear filtering on a receding plane whose r runs through the slices (the
+// level of detail takes r's derivatives too), REPEAT and CLAMP_TO_EDGE in r, and NEAREST slices.
+void Texture3D(Backend& b) {
+  ClearBlack(b);
+  LayeredDesc d;
+  d.target = TEXTURE_3D;
+  d.width = d.height = 16;
+  d.depth_or_layers = 8;
+  d.rgba = LayeredPattern(16, 16, 8);
+  d.generate_mipmap = true;
+  d.min_filter = LINEAR_MIPMAP_LINEAR;
+  b.SetLayeredTexture(d);
+  const glm::mat4 mvp = glm::perspective(glm::radians(60.0f), 1.0f, 0.3f, 60.0f) *
+                        glm::lookAt(glm::vec3(0, 1, 1), glm::vec3(0, 0, -8), glm::vec3(0, 1, 0));
+  b.Viewport(0, 64, 64, 64);
+  b.Draw(TRIANGLES,
+         QuadWith(Floor(mvp, -6, 6, 1, -40),
+                  {glm::vec4(0, 0, 0, 0), glm::vec4(2, 0, 0, 0), glm::vec4(2, 6, 3, 0), glm::vec4(0, 6, 3, 0)}),
+         Program::kVolume);
+  // r along x only: the level of detail from r's derivative where s and t change slowly.
+  b.Viewport(64, 64, 64, 64);
+  b.Draw(TRIANGLES,
+         QuadWith({Win(0, 0), Win(128, 0), Win(128, 128), Win(0, 128)},
+                  {glm::vec4(0.2f, 0.2f, 0, 0), glm::vec4(0.3f, 0.2f, 6, 0), glm::vec4(0.3f, 0.3f, 6, 0),
+                   glm::vec4(0.2f, 0.3f, 0, 0)}),
+         Program::kVolume);
+  b.Viewport(0, 0, kSize, kSize);
+  d.generate_mipmap = false;
+  d.min_filter = LINEAR;
+  d.wrap_r = CLAMP_TO_EDGE;
+  b.SetLayeredTexture(d);
+  b.Draw(TRIANGLES,
+         QuadWith({Win(0, 0), Win(64, 0), Win(64, 64), Win(0, 64)},
+                  {glm::vec4(0, 0, -0.3f, 0), glm::vec4(1, 0, 1.3f, 0), glm::vec4(1, 1, 1.3f, 0),
+                   glm::vec4(0, 1, -0.3f, 0)}),
+         Program::kVolume);
+  d.min_filter = d.mag_filter = NEAREST;
+  d.wrap_r = REPEAT;
+  b.SetLayeredTexture(d);
+  b.Draw(TRIANGLES,
+         QuadWith({Win(64, 0), Win(128, 0), Win(128, 64), Win(64, 64)},
+                  {glm::vec4(0, 0, 0.03f, 0), glm::vec4(1, 0, 1.97f, 0), glm::vec4(1, 1, 1.97f, 0),
+                   glm::vec4(0, 1, 0.03f, 0)}),
+         Program::kVolume);
+}
+
+// A depth array of 3 layers (ramps of different slopes) compared against a reference across quads, each quad on
+// its own layer, NEAREST and LINEAR: a cascaded shadow map's lookups. (The quads are 41 pixels wide, 0.3 pixel off
+// the grid: no pixel centre falls on a texel edge, where the interpolated coordinate may round to either texel.)
+void ShadowArray(Backend& b) {
+  ClearBlack(b);
+  LayeredDesc d;
+  d.width = d.height = 16;
+  d.depth_or_layers = 3;
+  for (int k = 0; k < 3; ++k)
+    for (int j = 0; j < 16; ++j)
+      for (int i = 0; i < 16; ++i)
+        d.depth.push_back(((i / 4 + j / 4 + k) % 2 ? 0.3f : 0.7f) + 0.01f * float(i % 4) + 0.05f * float(k));
+  d.min_filter = d.mag_filter = NEAREST;
+  d.wrap_s = d.wrap_t = CLAMP_TO_EDGE;
+  for (int pass = 0; pass < 2; ++pass) {
+    if (pass == 1) d.min_filter = d.mag_filter = LINEAR;
+    d.compare_func = pass == 0 ? LEQUAL : GREATER;
+    b.SetLayeredTexture(d);
+    for (int k = 0; k < 3; ++k) {
+      const float x0 = float(k) * 42 + 0.3f, y0 = float(pass) * 64;
+      b.Draw(TRIANGLES,
+             QuadWith({Win(x0, y0), Win(x0 + 41, y0), Win(x0 + 41, y0 + 64), Win(x0, y0 + 64)},
+                      {glm::vec4(0, 0, float(k), 0.15f), glm::vec4(1, 0, float(k), 0.85f),
+                       glm::vec4(1, 1, float(k), 0.85f), glm::vec4(0, 1, float(k), 0.15f)}),
+             Program::kArrayShadow);
+    }
+  }
+}
+
 // ---- A real model ------------------------------------------------------------------------------------------------
 
 void Model(Backend& b) {
@@ -1215,6 +1347,9 @@ const std::vector<SceneInfo>& Scenes() {
       {"msaa_coverage_ops", kSize, kSize, Check::kColor, MultisampleCoverageOps},
       {"cube_map", kSize, kSize, Check::kTexture, CubeMap},
       {"shadow_compare", kSize, kSize, Check::kTexture, ShadowCompare},
+      {"texture_array", kSize, kSize, Check::kTexture, TextureArray},
+      {"texture_3d", kSize, kSize, Check::kTexture, Texture3D},
+      {"shadow_array", kSize, kSize, Check::kTexture, ShadowArray},
       {"model", 256, 256, Check::kColor, Model},
   };
   return scenes;

@@ -1,0 +1,428 @@
+// Texture arrays and 3D textures: uploads plane by plane, the layer rule, filtering between slices, the level of
+// detail of a volume, mipmaps, rendering into one layer (colour and depth), the wide calls against the one-lane
+// ones, and the errors of TexImage3D, TexSubImage3D and FramebufferTextureLayer.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include "helpers.h"
+#include "texture.h"
+
+using namespace softgl;
+using detail::TextureObject;
+using detail::TextureView;
+
+namespace {
+
+// A layered texture made directly: w x h x d texels of RGBA32F, texel (i, j, k) = f(i, j, k), NEAREST.
+template <class F>
+TextureObject MakeLayered(Enum target, int w, int h, int d, F f) {
+  TextureObject t;
+  t.target = target;
+  auto& l = t.levels[0][0];
+  l.Allocate(RGBA32F, w, h, 1, d);
+  for (int k = 0; k < d; ++k)
+    for (int j = 0; j < h; ++j)
+      for (int i = 0; i < w; ++i) detail::StoreTexel(l, i, k * h + j, f(i, j, k));
+  t.params.min_filter = t.params.mag_filter = NEAREST;
+  return t;
+}
+
+// Units 0 of every kind pointing at one view.
+struct Bound {
+  TextureView view;
+  Textures tx;
+  explicit Bound(const TextureObject& t) {
+    view = detail::MakeView(t);
+    tx.unit_2d_array[0] = &view;
+    tx.unit_3d[0] = &view;
+  }
+};
+
+// A full-screen pass whose fragment stage writes texture(unit 0, vec3(uv, layer)) of a 2D array, or of a 3D
+// texture with `volume`: uv from the window position over [0, 1], the third coordinate a uniform.
+struct ArrayVaryings {
+  glm::vec4 uv;
+};
+struct ShowLayer : softgl::Shader<ShowLayer, ArrayVaryings> {
+  float r = 0.0f;
+  bool volume = false;
+  void Vertex(const VertexIn& in, VertexOut<ArrayVaryings>& out) const {
+    out.position = in.attrib[0];
+    out.varyings.uv = in.attrib[0] * 0.5f + 0.5f;
+  }
+  bool Fragment(const FragmentIn<ArrayVaryings>& in, FragmentOut& out) const {
+    const glm::vec3 c(glm::vec2(in.varyings.uv), r);
+    out.color[0] = volume ? in.textures->Sample3D(0, c, {}, {}) : in.textures->SampleArray(0, c, {}, {});
+    return true;
+  }
+};
+
+}  // namespace
+
+TEST_CASE("2D arrays: each layer samples on its own; the layer is floor(r + 0.5), clamped", "[texture][layers]") {
+  // 2 x 2 x 3: texel (i, j, k) = 100 k + i + 2 j.
+  TextureObject t = MakeLayered(TEXTURE_2D_ARRAY, 2, 2, 3, [](int i, int j, int k) {
+    return glm::vec4(float(100 * k + i + 2 * j), 0.0f, 0.0f, 1.0f);
+  });
+  Bound b(t);
+  REQUIRE(b.view.complete);
+  auto at = [&](float s, float tt, float r) { return b.tx.SampleArray(0, {s, tt, r}, {}, {}).r; };
+  CHECK(at(0.25f, 0.25f, 0.0f) == 0.0f);
+  CHECK(at(0.75f, 0.75f, 1.0f) == 103.0f);
+  CHECK(at(0.75f, 0.25f, 1.49f) == 101.0f);  // rounds down below .5
+  CHECK(at(0.75f, 0.25f, 1.5f) == 201.0f);   // and up at it
+  CHECK(at(0.25f, 0.75f, -7.0f) == 2.0f);    // clamped to layer 0
+  CHECK(at(0.25f, 0.75f, 9.0f) == 202.0f);   // and to the last
+  CHECK(at(0.25f, 0.25f, std::nanf("")) == 0.0f);
+  // LINEAR filters within the layer only: half way between texel columns of layer 2.
+  t.params.mag_filter = LINEAR;
+  t.params.wrap_s = t.params.wrap_t = CLAMP_TO_EDGE;
+  b.view = detail::MakeView(t);
+  CHECK(at(0.5f, 0.25f, 2.0f) == Approx(200.5f));
+  // Nothing of another kind answers: the 2D unit is empty, and a 2D array is not a 3D texture's unit.
+  CHECK(b.tx.Sample(0, {0.5f, 0.5f}, {}, {}) == glm::vec4(0, 0, 0, 1));
+  CHECK(b.tx.SizeArray(0) == glm::ivec3(2, 2, 3));
+  CHECK(b.tx.SizeArray(1) == glm::ivec3(0));
+}
+
+TEST_CASE("3D textures: LINEAR blends two slices, TEXTURE_WRAP_R wraps them, lambda counts r", "[texture][layers]") {
+  // 2 x 2 x 4: texel (i, j, k) = 10 k + i.
+  TextureObject t = MakeLayered(TEXTURE_3D, 2, 2, 4, [](int i, int, int k) {
+    return glm::vec4(float(10 * k + i), 0.0f, 0.0f, 1.0f);
+  });
+  Bound b(t);
+  REQUIRE(b.view.complete);
+  auto at = [&](float s, float r) { return b.tx.Sample3D(0, {s, 0.25f, r}, {}, {}).r; };
+  CHECK(at(0.25f, 0.125f) == 0.0f);
+  CHECK(at(0.75f, 0.625f) == 21.0f);
+  CHECK(at(0.25f, 1.125f) == 0.0f);  // REPEAT in r
+  t.params.wrap_r = CLAMP_TO_EDGE;
+  b.view = detail::MakeView(t);
+  CHECK(at(0.25f, 1.125f) == 30.0f);
+  t.params.mag_filter = LINEAR;
+  b.view = detail::MakeView(t);
+  CHECK(at(0.25f, 0.25f) == Approx(5.0f));    // half way between slices 0 and 1
+  CHECK(at(0.5f, 0.3125f) == Approx(8.0f));   // and between columns: (0.75 * 0 + 0.25 * 10) + 0.5
+  t.params.wrap_r = CLAMP_TO_BORDER;
+  t.params.border = glm::vec4(-40.0f, 0.0f, 0.0f, 1.0f);
+  b.view = detail::MakeView(t);
+  CHECK(at(0.25f, 1.0f) == Approx(-5.0f));    // half slice 3 (30), half the border (-40)
+  CHECK(b.tx.Size3D(0) == glm::ivec3(2, 2, 4));
+
+  // The level of detail: a derivative along r alone minifies a volume (rho = 4 texels of r a pixel: lambda 2).
+  TextureObject m;
+  m.target = TEXTURE_3D;
+  for (int l = 0; l < 4; ++l) {
+    const int n = 8 >> l;
+    m.levels[0][l].Allocate(RGBA32F, n, n, 1, n);
+    for (int k = 0; k < n * n; ++k)
+      for (int i = 0; i < n; ++i) detail::StoreTexel(m.levels[0][l], i, k, glm::vec4(float(l), 0, 0, 1));
+  }
+  m.params.min_filter = NEAREST_MIPMAP_NEAREST;
+  m.params.mag_filter = NEAREST;
+  Bound mb(m);
+  REQUIRE(mb.view.complete);
+  CHECK(mb.tx.Sample3D(0, glm::vec3(0.5f), {0, 0, 0.5f}, {0, 0, 0}).r == 2.0f);
+  CHECK(mb.tx.Sample3D(0, glm::vec3(0.5f), {0, 0, 0.125f}, {0, 0, 0}).r == 0.0f);
+  CHECK(mb.tx.Sample3DLod(0, glm::vec3(0.5f), 3.0f).r == 3.0f);
+  // A level whose depth does not halve makes the texture incomplete.
+  m.levels[0][2].Allocate(RGBA32F, 2, 2, 1, 1);
+  CHECK_FALSE(detail::MakeView(m).complete);
+}
+
+TEST_CASE("TexImage3D lays out images plane by plane; GenerateMipmap keeps layers, halves slices",
+          "[texture][layers]") {
+  Context gl(4, 4);
+  const std::uint32_t arr = gl.GenTexture(), vol = gl.GenTexture();
+  gl.BindTexture(TEXTURE_2D_ARRAY, arr);
+  // 3 x 2 x 2 RGB bytes with UNPACK_ALIGNMENT 4: rows of 9 bytes padded to 12.
+  std::vector<std::uint8_t> px(12 * 2 * 2, 0);
+  for (int k = 0; k < 2; ++k)
+    for (int j = 0; j < 2; ++j)
+      for (int i = 0; i < 3; ++i) px[std::size_t(k * 24 + j * 12 + i * 3)] = std::uint8_t(100 * k + 10 * j + i);
+  gl.TexImage3D(TEXTURE_2D_ARRAY, 0, RGBA8, 3, 2, 2, 0, RGB, UNSIGNED_BYTE, px.data());
+  REQUIRE(gl.GetError() == NO_ERROR);
+  int v = 0;
+  gl.GetTexLevelParameteriv(TEXTURE_2D_ARRAY, 0, TEXTURE_DEPTH, &v);
+  CHECK(v == 2);
+  gl.GetIntegerv(TEXTURE_BINDING_2D_ARRAY, &v);
+  CHECK(v == int(arr));
+  gl.GetIntegerv(MAX_ARRAY_TEXTURE_LAYERS, &v);
+  CHECK(v == kMaxArrayTextureLayers);
+  // Replace texel (1, 1) of layer 1.
+  const std::uint8_t one[4] = {7, 0, 0, 0};
+  gl.PixelStore(UNPACK_ALIGNMENT, 1);
+  gl.TexSubImage3D(TEXTURE_2D_ARRAY, 0, 1, 1, 1, 1, 1, 1, RGB, UNSIGNED_BYTE, one);
+  CHECK(gl.GetError() == NO_ERROR);
+  // Read the layers back through a draw: each layer's texels where the draw samples them.
+  gl.TexParameteri(TEXTURE_2D_ARRAY, TEXTURE_MIN_FILTER, NEAREST);
+  gl.TexParameteri(TEXTURE_2D_ARRAY, TEXTURE_MAG_FILTER, NEAREST);
+  ShowLayer show;
+  gl.UseProgram(show);
+  testing::MakeVertexArray(gl, {{-1, -1, 0, 1}, {1, -1, 0, 1}, {-1, 1, 0, 1}, {1, 1, 0, 1}});
+  auto texel = [&](float layer, float s, float t) {
+    show.r = layer;
+    gl.DrawArrays(TRIANGLE_STRIP, 0, 4);
+    std::uint8_t out[4];
+    gl.ReadPixel(int(s * 4), int(t * 4), out);  // the pixel whose centre samples (s, t)'s texel
+    return int(out[0]);
+  };
+  CHECK(texel(0, 0.0f, 0.0f) == 0);
+  CHECK(texel(0, 0.75f, 0.75f) == 12);
+  CHECK(texel(1, 0.5f, 0.0f) == 101);
+  CHECK(texel(1, 0.5f, 0.75f) == 7);
+  CHECK(gl.GetError() == NO_ERROR);
+
+  // GenerateMipmap: an array keeps its 2 layers at 1 x 1; a 4 x 4 x 2 volume goes 2 x 2 x 1, then 1 x 1 x 1.
+  gl.GenerateMipmap(TEXTURE_2D_ARRAY);
+  gl.GetTexLevelParameteriv(TEXTURE_2D_ARRAY, 1, TEXTURE_DEPTH, &v);
+  CHECK(v == 2);
+  gl.BindTexture(TEXTURE_3D, vol);
+  std::vector<float> texels(4 * 4 * 2 * 4, 0.0f);
+  for (int k = 0; k < 2; ++k)
+    for (int n = 0; n < 16; ++n) texels[std::size_t((k * 16 + n) * 4)] = k ? 1.0f : 0.5f;
+  gl.TexImage3D(TEXTURE_3D, 0, RGBA32F, 4, 4, 2, 0, RGBA, FLOAT, texels.data());
+  gl.GenerateMipmap(TEXTURE_3D);
+  CHECK(gl.GetError() == NO_ERROR);
+  const int sizes[4][3] = {{4, 4, 2}, {2, 2, 1}, {1, 1, 1}, {0, 0, 0}};
+  for (int l = 0; l < 4; ++l) {
+    int w = -1, h = -1, d = -1;
+    gl.GetTexLevelParameteriv(TEXTURE_3D, l, TEXTURE_WIDTH, &w);
+    gl.GetTexLevelParameteriv(TEXTURE_3D, l, TEXTURE_HEIGHT, &h);
+    gl.GetTexLevelParameteriv(TEXTURE_3D, l, TEXTURE_DEPTH, &d);
+    CHECK(glm::ivec3(w, h, d) == glm::ivec3(sizes[l][0], sizes[l][1], sizes[l][2]));
+  }
+  // Level 1's texels average both slices: 0.75.
+  gl.TexParameteri(TEXTURE_3D, TEXTURE_MIN_FILTER, NEAREST_MIPMAP_NEAREST);
+  show.volume = true;
+  gl.BindTexture(TEXTURE_2D_ARRAY, 0);
+  struct Lod1 : softgl::Shader<Lod1, testing::NoVaryings> {
+    mutable glm::vec4 got{-1.0f};
+    void Vertex(const VertexIn& in, VertexOut<testing::NoVaryings>& out) const {
+      out.position = glm::vec4(2, 2, 2, 1);
+      got = in.textures->Sample3DLod(0, glm::vec3(0.5f), 1.0f);
+    }
+    bool Fragment(const FragmentIn<testing::NoVaryings>&, FragmentOut&) const { return false; }
+  } lod1;
+  gl.UseProgram(lod1);
+  gl.DrawArrays(POINTS, 0, 1);
+  gl.Finish();
+  CHECK(lod1.got.r == Approx(0.75f));
+  CHECK(gl.GetError() == NO_ERROR);
+}
+
+TEST_CASE("FramebufferTextureLayer draws into one layer, of colour and of depth", "[texture][layers][framebuffer]") {
+  Context gl(4, 4);
+  const std::uint32_t color = gl.GenTexture(), depth = gl.GenTexture(), fbo = gl.GenFramebuffer();
+  gl.BindTexture(TEXTURE_2D_ARRAY, color);
+  gl.TexImage3D(TEXTURE_2D_ARRAY, 0, RGBA8, 4, 4, 3, 0, RGBA, UNSIGNED_BYTE, nullptr);
+  gl.BindTexture(TEXTURE_2D_ARRAY, depth);
+  gl.TexImage3D(TEXTURE_2D_ARRAY, 0, DEPTH_COMPONENT32F, 4, 4, 3, 0, DEPTH_COMPONENT, FLOAT, nullptr);
+  gl.BindFramebuffer(FRAMEBUFFER, fbo);
+  testing::SolidShader solid;
+  gl.UseProgram(solid);
+  testing::MakeVertexArray(gl, {{-1, -1, 0, 1}, {1, -1, 0, 1}, {-1, 1, 0, 1}, {1, 1, 0, 1}});
+  gl.Enable(DEPTH_TEST);
+  // Layer k: cleared to depth 1, then a quad of colour k at depth (k + 1) / 4 (window z of clip z (k + 1) / 2 - 1).
+  for (int k = 0; k < 3; ++k) {
+    gl.FramebufferTextureLayer(FRAMEBUFFER, COLOR_ATTACHMENT0, color, 0, k);
+    gl.FramebufferTextureLayer(FRAMEBUFFER, DEPTH_ATTACHMENT, depth, 0, k);
+    REQUIRE(gl.CheckFramebufferStatus(FRAMEBUFFER) == FRAMEBUFFER_COMPLETE);
+    gl.ClearColor(0, 0, 0, 0);
+    gl.Clear(COLOR_BUFFER_BIT | DEPTH_BUFFER_BIT);
+    solid.color = glm::vec4(float(k + 1) * 0.25f, 0.0f, 0.0f, 1.0f);
+    const float z = float(k + 1) * 0.5f - 1.0f;
+    testing::MakeVertexArray(gl, {{-1, -1, z, 1}, {1, -1, z, 1}, {-1, 1, z, 1}, {1, 1, z, 1}});
+    gl.DrawArrays(TRIANGLE_STRIP, 0, 4);
+  }
+  int v = -1;
+  gl.GetFramebufferAttachmentParameteriv(FRAMEBUFFER, COLOR_ATTACHMENT0, FRAMEBUFFER_ATTACHMENT_TEXTURE_LAYER, &v);
+  CHECK(v == 2);
+  // Reading reads the attached layer.
+  std::uint8_t px[4];
+  gl.ReadPixel(2, 2, px);
+  CHECK(int(px[0]) == 191);
+  gl.FramebufferTextureLayer(FRAMEBUFFER, COLOR_ATTACHMENT0, color, 0, 0);
+  gl.ReadPixel(2, 2, px);
+  CHECK(int(px[0]) == 64);
+  // A layer the level does not have: incomplete.
+  gl.FramebufferTextureLayer(FRAMEBUFFER, COLOR_ATTACHMENT0, color, 0, 3);
+  CHECK(gl.CheckFramebufferStatus(FRAMEBUFFER) == FRAMEBUFFER_INCOMPLETE_ATTACHMENT);
+  CHECK(gl.GetError() == NO_ERROR);
+
+  // Each depth layer holds its own quad's depth: a shadow lookup per layer against 0.4 passes only where the
+  // stored depth (0.25, 0.5, 0.75) is at least 0.4... with LEQUAL: ref <= stored.
+  gl.BindFramebuffer(FRAMEBUFFER, 0);
+  gl.TexParameteri(TEXTURE_2D_ARRAY, TEXTURE_COMPARE_MODE, COMPARE_REF_TO_TEXTURE);
+  gl.TexParameteri(TEXTURE_2D_ARRAY, TEXTURE_MIN_FILTER, NEAREST);
+  gl.TexParameteri(TEXTURE_2D_ARRAY, TEXTURE_MAG_FILTER, NEAREST);
+  struct Probe : softgl::Shader<Probe, testing::NoVaryings> {
+    mutable float got[3] = {-1, -1, -1};
+    void Vertex(const VertexIn& in, VertexOut<testing::NoVaryings>& out) const {
+      out.position = glm::vec4(2, 2, 2, 1);
+      for (int k = 0; k < 3; ++k) got[k] = in.textures->SampleArrayShadow(0, {0.5f, 0.5f, float(k)}, 0.4f, {}, {});
+    }
+    bool Fragment(const FragmentIn<testing::NoVaryings>&, FragmentOut&) const { return false; }
+  } probe;
+  gl.UseProgram(probe);
+  gl.DrawArrays(POINTS, 0, 1);
+  gl.Finish();
+  CHECK(probe.got[0] == 0.0f);
+  CHECK(probe.got[1] == 1.0f);
+  CHECK(probe.got[2] == 1.0f);
+  CHECK(gl.GetError() == NO_ERROR);
+}
+
+namespace {
+// The same lookups written wide and one lane at a time: a 2D array (its layer from x) and a 3D texture (r from
+// y), both LINEAR_MIPMAP_LINEAR with mipmaps, so that the level of detail and both filters take part.
+struct WideUv {
+  softgl::vec3 a, b;
+};
+struct ScalarUv {
+  glm::vec3 a, b;
+};
+struct WideLayers : softgl::Shader<WideLayers, WideUv> {
+  void Vertex(const softgl::VertexLanes& in, softgl::VertexLanesOut<WideUv>& out) const {
+    out.position = in.attrib[0];
+    const softgl::vec2 uv(in.attrib[1].x, in.attrib[1].y);
+    out.varyings.a = softgl::vec3(uv * 3.0f, uv.x * 4.0f);
+    out.varyings.b = softgl::vec3(uv * 2.0f, uv.y * 1.5f);
+  }
+  void Fragment(const softgl::FragmentLanes<WideUv>& in, softgl::FragmentLanesOut& out) const {
+    const softgl::vec4 a = in.TextureArray(0, in.varyings.a);
+    const softgl::vec4 b = in.Texture3D(1, in.varyings.b);
+    out.color[0] = softgl::vec4(a.x, b.y, a.z * 0.5f + b.z * 0.5f, 1.0f);
+  }
+};
+struct ScalarLayers : softgl::Shader<ScalarLayers, ScalarUv> {
+  void Vertex(const VertexIn& in, VertexOut<ScalarUv>& out) const {
+    out.position = in.attrib[0];
+    const glm::vec2 uv(in.attrib[1]);
+    out.varyings.a = glm::vec3(uv * 3.0f, uv.x * 4.0f);
+    out.varyings.b = glm::vec3(uv * 2.0f, uv.y * 1.5f);
+  }
+  bool Fragment(const FragmentIn<ScalarUv>& in, FragmentOut& out) const {
+    const glm::vec4 a = in.TextureArray(0, &ScalarUv::a);
+    const glm::vec4 b = in.Texture3D(1, &ScalarUv::b);
+    out.color[0] = glm::vec4(a.x, b.y, a.z * 0.5f + b.z * 0.5f, 1.0f);
+    return true;
+  }
+};
+}  // namespace
+
+TEST_CASE("the wide array and 3D calls give the one-lane calls' bytes", "[texture][layers][wide]") {
+  auto render = [](const Program& program) {
+    Context gl(48, 40);
+    std::vector<std::uint8_t> noise(16 * 16 * 8 * 4);
+    std::uint32_t x = 12345;
+    for (auto& b : noise) b = std::uint8_t((x = x * 1664525u + 1013904223u) >> 24);
+    const std::uint32_t arr = gl.GenTexture(), vol = gl.GenTexture();
+    gl.ActiveTexture(TEXTURE0);
+    gl.BindTexture(TEXTURE_2D_ARRAY, arr);
+    gl.TexImage3D(TEXTURE_2D_ARRAY, 0, RGBA8, 16, 16, 5, 0, RGBA, UNSIGNED_BYTE, noise.data());
+    gl.GenerateMipmap(TEXTURE_2D_ARRAY);
+    gl.TexParameteri(TEXTURE_2D_ARRAY, TEXTURE_MIN_FILTER, LINEAR_MIPMAP_LINEAR);
+    gl.ActiveTexture(TEXTURE0 + 1);
+    gl.BindTexture(TEXTURE_3D, vol);
+    gl.TexImage3D(TEXTURE_3D, 0, RGBA8, 16, 16, 8, 0, RGBA, UNSIGNED_BYTE, noise.data());
+    gl.GenerateMipmap(TEXTURE_3D);
+    gl.TexParameteri(TEXTURE_3D, TEXTURE_MIN_FILTER, LINEAR_MIPMAP_LINEAR);
+    gl.UseProgram(program);
+    // A quad in perspective: w grows upwards, so the level of detail changes over it.
+    testing::MakeVertexArray(gl, {{-1, -1, 0, 1}, {1, -1, 0, 1}, {-3, 3, 0, 3}, {3, 3, 0, 3}},
+                             {{0, 0, 0, 1}, {1, 0, 0, 1}, {0, 3, 0, 3}, {3, 3, 0, 3}});
+    gl.DrawArrays(TRIANGLE_STRIP, 0, 4);
+    CHECK(gl.GetError() == NO_ERROR);
+    return gl.ReadPixels().rgba;
+  };
+  WideLayers wide;
+  ScalarLayers scalar;
+  const std::vector<std::uint8_t> a = render(wide), b = render(scalar);
+  REQUIRE(a.size() == b.size());
+  int differing = 0, coloured = 0;
+  for (std::size_t i = 0; i < a.size(); i += 4) {
+    differing += a[i] != b[i] || a[i + 1] != b[i + 1] || a[i + 2] != b[i + 2];
+    coloured += a[i] != 0 || a[i + 1] != 0;
+  }
+  CHECK(differing == 0);
+  CHECK(coloured > 48 * 40 / 2);
+}
+
+TEST_CASE("TexImage3D, TexSubImage3D and FramebufferTextureLayer reject bad input", "[texture][layers][errors]") {
+  Context gl(4, 4);
+  const std::uint32_t arr = gl.GenTexture(), vol = gl.GenTexture(), flat = gl.GenTexture();
+  gl.TexImage3D(TEXTURE_2D_ARRAY, 0, RGBA8, 1, 1, 1, 0, RGBA, UNSIGNED_BYTE, nullptr);
+  CHECK(gl.GetError() == INVALID_OPERATION);  // nothing bound
+  gl.BindTexture(TEXTURE_2D_ARRAY, arr);
+  gl.BindTexture(TEXTURE_3D, vol);
+  gl.BindTexture(TEXTURE_2D, flat);
+  gl.BindTexture(TEXTURE_3D, arr);
+  CHECK(gl.GetError() == INVALID_OPERATION);  // first bound to the other target
+  gl.TexImage3D(TEXTURE_2D, 0, RGBA8, 1, 1, 1, 0, RGBA, UNSIGNED_BYTE, nullptr);
+  CHECK(gl.GetError() == INVALID_ENUM);
+  gl.TexImage3D(TEXTURE_2D_ARRAY, 0, RGBA8, 1, 1, kMaxArrayTextureLayers + 1, 0, RGBA, UNSIGNED_BYTE, nullptr);
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.TexImage3D(TEXTURE_3D, 0, RGBA8, kMax3DTextureSize + 1, 1, 1, 0, RGBA, UNSIGNED_BYTE, nullptr);
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.TexImage3D(TEXTURE_3D, 0, RGBA8, 1, 1, -1, 0, RGBA, UNSIGNED_BYTE, nullptr);
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.TexImage3D(TEXTURE_3D, 0, RGBA8, 1, 1, 1, 1, RGBA, UNSIGNED_BYTE, nullptr);
+  CHECK(gl.GetError() == INVALID_VALUE);  // border
+  gl.TexImage3D(TEXTURE_3D, 0, DEPTH_COMPONENT32F, 1, 1, 1, 0, DEPTH_COMPONENT, FLOAT, nullptr);
+  CHECK(gl.GetError() == INVALID_OPERATION);
+  // 2048^3 RGBA32F texels (128 GiB) and 16384 x 16384 x 2048 bytes: refused without allocating.
+  gl.TexImage3D(TEXTURE_3D, 0, RGBA32F, kMax3DTextureSize, kMax3DTextureSize, kMax3DTextureSize, 0, RGBA, FLOAT,
+                nullptr);
+  CHECK(gl.GetError() == OUT_OF_MEMORY);
+  gl.TexImage3D(TEXTURE_2D_ARRAY, 0, R8, kMaxTextureSize, kMaxTextureSize, kMaxArrayTextureLayers, 0, RED,
+                UNSIGNED_BYTE, nullptr);
+  CHECK(gl.GetError() == OUT_OF_MEMORY);
+  int v = -1;
+  gl.GetTexLevelParameteriv(TEXTURE_3D, 0, TEXTURE_WIDTH, &v);
+  CHECK(v == 0);  // nothing defined by the refused calls
+  // TexSubImage3D: undefined level, then a box outside the level.
+  const std::uint8_t px[4] = {1, 2, 3, 4};
+  gl.TexSubImage3D(TEXTURE_3D, 0, 0, 0, 0, 1, 1, 1, RGBA, UNSIGNED_BYTE, px);
+  CHECK(gl.GetError() == INVALID_OPERATION);
+  gl.TexImage3D(TEXTURE_3D, 0, RGBA8, 2, 2, 2, 0, RGBA, UNSIGNED_BYTE, nullptr);
+  gl.TexSubImage3D(TEXTURE_3D, 0, 0, 0, 2, 1, 1, 1, RGBA, UNSIGNED_BYTE, px);
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.TexSubImage3D(TEXTURE_3D, 0, 0, 0, -1, 1, 1, 1, RGBA, UNSIGNED_BYTE, px);
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.TexSubImage3D(TEXTURE_3D, 0, 1, 1, 1, 1, 1, 1, RGBA, UNSIGNED_BYTE, px);
+  CHECK(gl.GetError() == NO_ERROR);
+  // FramebufferTextureLayer.
+  gl.FramebufferTextureLayer(FRAMEBUFFER, COLOR_ATTACHMENT0, vol, 0, 0);
+  CHECK(gl.GetError() == INVALID_OPERATION);  // framebuffer 0
+  const std::uint32_t fbo = gl.GenFramebuffer();
+  gl.BindFramebuffer(FRAMEBUFFER, fbo);
+  gl.FramebufferTextureLayer(FRAMEBUFFER, COLOR_ATTACHMENT0, flat, 0, 0);
+  CHECK(gl.GetError() == INVALID_OPERATION);  // a 2D texture
+  gl.FramebufferTextureLayer(FRAMEBUFFER, COLOR_ATTACHMENT0, 999, 0, 0);
+  CHECK(gl.GetError() == INVALID_OPERATION);
+  gl.FramebufferTextureLayer(FRAMEBUFFER, COLOR_ATTACHMENT0, vol, 0, -1);
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.FramebufferTextureLayer(FRAMEBUFFER, COLOR_ATTACHMENT0, vol, 0, kMax3DTextureSize);
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.FramebufferTextureLayer(FRAMEBUFFER, COLOR_ATTACHMENT0, vol, detail::kMaxLevels, 0);
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.FramebufferTextureLayer(FRAMEBUFFER, 0x1234, vol, 0, 0);
+  CHECK(gl.GetError() == INVALID_ENUM);
+  gl.FramebufferTexture2D(FRAMEBUFFER, COLOR_ATTACHMENT0, TEXTURE_2D, vol, 0);
+  CHECK(gl.GetError() == INVALID_OPERATION);  // a 3D texture through the 2D call
+  gl.FramebufferTextureLayer(FRAMEBUFFER, COLOR_ATTACHMENT0, vol, 0, 1);
+  CHECK(gl.CheckFramebufferStatus(FRAMEBUFFER) == FRAMEBUFFER_COMPLETE);
+  gl.FramebufferTextureLayer(FRAMEBUFFER, COLOR_ATTACHMENT0, vol, 0, 2);  // the level has 2 slices
+  CHECK(gl.CheckFramebufferStatus(FRAMEBUFFER) == FRAMEBUFFER_INCOMPLETE_ATTACHMENT);
+  gl.FramebufferTextureLayer(FRAMEBUFFER, COLOR_ATTACHMENT0, 0, 0, 0);
+  CHECK(gl.CheckFramebufferStatus(FRAMEBUFFER) == FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT);
+  // Deleting a bound array texture unbinds it.
+  gl.DeleteTexture(arr);
+  gl.GetIntegerv(TEXTURE_BINDING_2D_ARRAY, &v);
+  CHECK(v == 0);
+  CHECK(gl.GetError() == NO_ERROR);
+}
