@@ -58,6 +58,12 @@ softgl::Image Multisample(int width, int height);
 /// samples it with depth comparison, 3 x 3 taps of 2 x 2 percentage-closer filtering.
 softgl::Image ShadowMap(int width, int height);
 
+/// Cascaded shadow maps: three shadow maps, one for each stretch of the view's depth (near, middle, far), rendered
+/// into the layers of one depth texture array through FramebufferTextureLayer; the lit pass picks each fragment's
+/// cascade by its depth and compares in that layer. Left: the shadowed scene, two rows of pillars running 50 units
+/// away; right: the same, each cascade tinted (red near, green middle, blue far).
+softgl::Image CascadedShadows(int width, int height);
+
 /// Post-processing: the scene rendered into a half-float (RGBA16F, HDR) texture, then one full-screen pass tone maps it;
 /// right of the middle it is blurred first.
 softgl::Image PostProcess(int width, int height);

@@ -1,5 +1,6 @@
 // scenes_textures.cpp — example scenes for textures: mipmapped filtering, shadow mapping, post-processing through
 // a framebuffer object, environment mapping with a cube map.
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -324,6 +325,166 @@ softgl::Image ShadowMap(int width, int height) {
     lit.mvp = vp * o.model;
     gl.BindVertexArray(o.vao);
     DrawMesh(gl, *o.mesh);
+  }
+  return gl.ReadPixels();
+}
+
+namespace {
+
+constexpr int kCascades = 3;
+
+struct CascadeVaryings {
+  vec3 normal;
+  vec3 color;
+  vec3 world;
+  Float view_depth;  // distance along the camera's view direction
+};
+
+// Diffuse lighting shadowed by a cascade of three shadow maps, the layers of a depth texture array on unit 0: each
+// fragment takes the first cascade whose far split lies beyond it (the nearest cascade, the finest texels), 2 x 2
+// percentage-closer filtering in that layer. With `tint` each cascade colours the surfaces it shadows.
+struct CascadeShader : softgl::Shader<CascadeShader, CascadeVaryings> {
+  glm::mat4 mvp{1.0f}, model{1.0f}, view{1.0f};
+  glm::mat4 light_vp[kCascades];
+  float split[kCascades] = {};
+  glm::vec3 light_dir{0, 1, 0};
+  bool tint = false;
+  void Vertex(const VertexLanes& in, VertexLanesOut<CascadeVaryings>& out) const {
+    const vec4 world = model * vec4(vec3(in.attrib[0]), 1.0f);
+    out.position = mvp * vec4(vec3(in.attrib[0]), 1.0f);
+    out.varyings.normal = glm::mat3(model) * vec3(in.attrib[1]);
+    out.varyings.color = vec3(in.attrib[2]);
+    out.varyings.world = vec3(world);
+    out.varyings.view_depth = -(view * world).z;
+  }
+  void Fragment(const FragmentLanes<CascadeVaryings>& in, FragmentLanesOut& out) const {
+    const vec4 world(in.varyings.world, 1.0f);
+    // The cascade: 0, 1 or 2 as the depth passes the splits; its light-space position by a select per lane.
+    const Float d = in.varyings.view_depth;
+    const softgl::Bool second = d > split[0], third = d > split[1];
+    const Float layer = select(third, Float(2.0f), select(second, Float(1.0f), Float(0.0f)));
+    const vec4 p0 = light_vp[0] * world, p1 = light_vp[1] * world, p2 = light_vp[2] * world;
+    vec3 p;
+    for (int c = 0; c < 3; ++c)
+      p[c] = select(third, p2[c], select(second, p1[c], p0[c])) * 0.5f + 0.5f;
+    const Float lit = in.TextureArrayShadow(0, vec4(vec2(p.x, p.y), layer, p.z));
+    const Float diffuse = max(dot(normalize(in.varyings.normal), light_dir), 0.0f);
+    vec3 color = in.varyings.color;
+    if (tint) {
+      const vec3 hue = select(third, vec3(glm::vec3(0.55f, 0.65f, 1.0f)),
+                              select(second, vec3(glm::vec3(0.6f, 1.0f, 0.6f)), vec3(glm::vec3(1.0f, 0.6f, 0.55f))));
+      color = color * hue;
+    }
+    out.color[0] = vec4(color * (0.25f + 0.75f * diffuse * lit), 1.0f);
+  }
+};
+
+// The light's view-projection that holds the part of the camera's view between depths near and far: an
+// orthographic box around the sphere through that slice's corners, stretched back towards the light so that
+// casters outside the slice still cast into it, its centre snapped to whole texels of a size x size map (the
+// shadows then stay put as the camera moves).
+glm::mat4 CascadeMatrix(const glm::mat4& view, float fovy, float aspect, float near_d, float far_d,
+                        const glm::vec3& light_dir, int size) {
+  const glm::mat4 inv = glm::inverse(glm::perspective(fovy, aspect, near_d, far_d) * view);
+  glm::vec3 corners[8];
+  glm::vec3 centre(0.0f);
+  for (int k = 0; k < 8; ++k) {
+    const glm::vec4 c = inv * glm::vec4(k & 1 ? 1.0f : -1.0f, k & 2 ? 1.0f : -1.0f, k & 4 ? 1.0f : -1.0f, 1.0f);
+    corners[k] = glm::vec3(c) / c.w;
+    centre += corners[k] / 8.0f;
+  }
+  float radius = 0.0f;
+  for (const glm::vec3& c : corners) radius = std::max(radius, glm::length(c - centre));
+  radius = std::ceil(radius * 16.0f) / 16.0f;
+  const glm::mat4 light_view = glm::lookAt(glm::vec3(0.0f), -light_dir, glm::vec3(0, 1, 0));
+  glm::vec3 c = glm::vec3(light_view * glm::vec4(centre, 1.0f));
+  const float texel = 2.0f * radius / float(size);
+  c.x = std::floor(c.x / texel) * texel;
+  c.y = std::floor(c.y / texel) * texel;
+  return glm::ortho(c.x - radius, c.x + radius, c.y - radius, c.y + radius, -c.z - radius - 30.0f, -c.z + radius) *
+         light_view;
+}
+
+}  // namespace
+
+softgl::Image CascadedShadows(int width, int height) {
+  softgl::Context gl(width, height);
+  constexpr int kShadowSize = 1024;
+  const std::uint8_t ground[4] = {205, 200, 185, 255};
+  const Mesh floor = MakeQuad(60.0f, ground), cube = MakeCube(), torus = MakeTorus(40, 20, 0.55f, 0.22f);
+  const std::uint32_t floor_vao = UploadLitMesh(gl, floor), cube_vao = UploadLitMesh(gl, cube),
+                      torus_vao = UploadLitMesh(gl, torus);
+  struct Object {
+    std::uint32_t vao;
+    const Mesh* mesh;
+    glm::mat4 model;
+  };
+  // Two rows of pillars running away from the camera, and a torus on each near pillar.
+  std::vector<Object> objects = {{floor_vao, &floor, kIdentity}};
+  for (int i = 0; i < 12; ++i) {
+    const float z = 1.0f - 4.5f * float(i);
+    for (float x : {-2.2f, 2.2f})
+      objects.push_back({cube_vao, &cube, glm::scale(glm::translate(kIdentity, glm::vec3(x, 1.2f, z)),
+                                                     glm::vec3(0.5f, 2.4f, 0.5f))});
+    if (i < 4)
+      objects.push_back({torus_vao, &torus, glm::rotate(glm::translate(kIdentity, glm::vec3(0.0f, 0.9f, z - 2.0f)),
+                                                        0.6f * float(i), glm::vec3(0, 1, 0))});
+  }
+  const glm::vec3 light_dir = glm::normalize(glm::vec3(-0.8f, 0.9f, -0.35f));
+  const float fovy = glm::radians(50.0f), aspect = float(width / 2) / float(height), near_d = 0.1f;
+  const float splits[kCascades + 1] = {near_d, 6.0f, 18.0f, 55.0f};
+  const glm::mat4 view = glm::lookAt(glm::vec3(0.3f, 2.2f, 5.0f), glm::vec3(0.0f, 0.6f, -10.0f), glm::vec3(0, 1, 0));
+
+  // Pass 1: each cascade's depth into its layer of one DEPTH_COMPONENT32F 2D array, through FramebufferTextureLayer.
+  const std::uint32_t maps = gl.GenTexture(), fbo = gl.GenFramebuffer();
+  gl.BindTexture(softgl::TEXTURE_2D_ARRAY, maps);
+  gl.TexImage3D(softgl::TEXTURE_2D_ARRAY, 0, softgl::DEPTH_COMPONENT32F, kShadowSize, kShadowSize, kCascades, 0,
+                softgl::DEPTH_COMPONENT, softgl::FLOAT, nullptr);
+  gl.TexParameteri(softgl::TEXTURE_2D_ARRAY, softgl::TEXTURE_MIN_FILTER, softgl::LINEAR);
+  gl.TexParameteri(softgl::TEXTURE_2D_ARRAY, softgl::TEXTURE_MAG_FILTER, softgl::LINEAR);
+  gl.TexParameteri(softgl::TEXTURE_2D_ARRAY, softgl::TEXTURE_WRAP_S, softgl::CLAMP_TO_EDGE);
+  gl.TexParameteri(softgl::TEXTURE_2D_ARRAY, softgl::TEXTURE_WRAP_T, softgl::CLAMP_TO_EDGE);
+  gl.TexParameteri(softgl::TEXTURE_2D_ARRAY, softgl::TEXTURE_COMPARE_MODE, softgl::COMPARE_REF_TO_TEXTURE);
+  gl.BindFramebuffer(softgl::FRAMEBUFFER, fbo);
+  const softgl::Enum no_color = softgl::NONE;
+  gl.DrawBuffers(1, &no_color);
+  gl.Viewport(0, 0, kShadowSize, kShadowSize);
+  gl.Enable(softgl::DEPTH_TEST);
+  gl.Enable(softgl::POLYGON_OFFSET_FILL);  // keeps lit surfaces from shadowing themselves (acne)
+  gl.PolygonOffset(2.0f, 4.0f);
+  CascadeShader lit;
+  DepthOnlyShader depth_shader;
+  gl.UseProgram(depth_shader);
+  for (int c = 0; c < kCascades; ++c) {
+    lit.light_vp[c] = CascadeMatrix(view, fovy, aspect, splits[c], splits[c + 1], light_dir, kShadowSize);
+    lit.split[c] = splits[c + 1];
+    gl.FramebufferTextureLayer(softgl::FRAMEBUFFER, softgl::DEPTH_ATTACHMENT, maps, 0, c);
+    gl.Clear(softgl::DEPTH_BUFFER_BIT);
+    for (const Object& o : objects) {
+      depth_shader.mvp = lit.light_vp[c] * o.model;
+      gl.BindVertexArray(o.vao);
+      DrawMesh(gl, *o.mesh);
+    }
+  }
+  gl.Disable(softgl::POLYGON_OFFSET_FILL);
+
+  // Pass 2: the camera's view twice, side by side: lit and shadowed, and with each cascade tinted.
+  gl.BindFramebuffer(softgl::FRAMEBUFFER, 0);
+  gl.ClearColor(0.62f, 0.72f, 0.85f, 1.0f);
+  gl.Clear(softgl::COLOR_BUFFER_BIT | softgl::DEPTH_BUFFER_BIT);
+  const glm::mat4 vp = glm::perspective(fovy, aspect, near_d, splits[kCascades]) * view;
+  lit.view = view;
+  lit.light_dir = light_dir;
+  gl.UseProgram(lit);
+  for (int half = 0; half < 2; ++half) {
+    gl.Viewport(half * (width / 2), 0, width / 2, height);
+    lit.tint = half == 1;
+    for (const Object& o : objects) {
+      lit.model = o.model;
+      lit.mvp = vp * o.model;
+      gl.BindVertexArray(o.vao);
+      DrawMesh(gl, *o.mesh);
+    }
   }
   return gl.ReadPixels();
 }

@@ -28,6 +28,8 @@ struct FuzzShader : softgl::Shader<FuzzShader, Vary> {
     out.color[0] = in.varyings.a + in.Texture(0, &Vary::uv) + in.TextureCube(1, &Vary::dir);
     out.color[1] = in.textures->SampleLod(2, in.varyings.uv, in.varyings.a.w);
     out.color[2] = glm::vec4(in.textures->SampleShadow(3, in.varyings.uv, in.varyings.a.x, {}, {}));
+    out.color[3] = in.TextureArray(4, &Vary::dir) + in.Texture3D(5, &Vary::dir) +
+                   glm::vec4(in.textures->SampleArrayShadow(6, in.varyings.dir, in.varyings.a.x, {}, {}));
     out.depth = in.varyings.a.z;
     return in.varyings.a.w > -0.5f;
   }
@@ -43,7 +45,7 @@ constexpr std::uint32_t kModes[] = {POINTS, LINES, LINE_LOOP, LINE_STRIP, TRIANG
 constexpr std::uint32_t kTypes[] = {BYTE, UNSIGNED_BYTE, SHORT, UNSIGNED_SHORT, INT, UNSIGNED_INT, FLOAT};
 constexpr std::uint32_t kIndexTypes[] = {UNSIGNED_BYTE, UNSIGNED_SHORT, UNSIGNED_INT};
 constexpr std::uint32_t kBufferTargets[] = {ARRAY_BUFFER, ELEMENT_ARRAY_BUFFER, COPY_READ_BUFFER, COPY_WRITE_BUFFER};
-constexpr std::uint32_t kTexTargets[] = {TEXTURE_2D, TEXTURE_CUBE_MAP};
+constexpr std::uint32_t kTexTargets[] = {TEXTURE_2D, TEXTURE_CUBE_MAP, TEXTURE_2D_ARRAY, TEXTURE_3D};
 constexpr std::uint32_t kImageTargets[] = {TEXTURE_2D,
                                            TEXTURE_CUBE_MAP_POSITIVE_X, TEXTURE_CUBE_MAP_NEGATIVE_X,
                                            TEXTURE_CUBE_MAP_POSITIVE_Y, TEXTURE_CUBE_MAP_NEGATIVE_Y,
@@ -94,7 +96,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   };
   for (int step = 0; step < 200 && !in.Empty(); ++step) {
     const auto id = [&] { return std::uint32_t(in.Byte() % 8); };
-    switch (in.Byte() % 42) {
+    switch (in.Byte() % 43) {
       case 0: gl.GenBuffer(); break;
       case 1: gl.BindBuffer(in.Enum(kBufferTargets), id()); break;
       case 2: {
@@ -333,6 +335,29 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                              in.Byte() % 2 ? NEAREST : LINEAR);
         }
         break;
+      case 41: {  // texture arrays and 3D textures: sizes mostly small, sometimes wild (products beyond any memory)
+        constexpr std::uint32_t kLayered[] = {TEXTURE_2D_ARRAY, TEXTURE_3D, TEXTURE_2D};
+        const auto size = [&] { return in.Amount(0, 8, 64, kMaxTextureSize); };
+        const int w = size(), h = size(), d = size();
+        const bool small = w >= 0 && h >= 0 && d >= 0 && w <= 64 && h <= 64 && d <= 64;
+        if (small) scratch.assign(std::size_t(w) * std::size_t(h) * std::size_t(d) * 16 + 64, in.Byte());
+        const void* pixels = small && in.Byte() % 4 ? scratch.data() : nullptr;
+        switch (in.Byte() % 3) {
+          case 0:
+            gl.TexImage3D(in.Enum(kLayered), in.Int(-1, 5), in.Enum(kInternal), w, h, d, in.Byte() < 8,
+                          in.Enum(kFormats), in.Enum(kPixelTypes), pixels);
+            break;
+          case 1:
+            gl.TexSubImage3D(in.Enum(kLayered), in.Int(-1, 5), in.Int(-2, 8), in.Int(-2, 8), in.Int(-2, 8), w, h, d,
+                             in.Enum(kFormats), in.Enum(kPixelTypes), pixels);
+            break;
+          default:
+            gl.FramebufferTextureLayer(in.Enum(kFbTargets), in.Enum(kAttachments), id(), in.Int(-1, 4),
+                                       in.Int(-1, 9));
+            break;
+        }
+        break;
+      }
       default: {
         std::uint8_t px[4];
         gl.ReadPixel(in.Int(-2, 50), in.Int(-2, 50), px);
