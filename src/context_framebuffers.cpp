@@ -493,16 +493,16 @@ void Context::FramebufferTexture2D(Enum target, Enum attachment, Enum textarget,
   Attachment* slots[2] = {nullptr, nullptr};
   const int n = TextureSlots(s, __func__, target, attachment, texture, slots);
   if (n == 0) return;
-  if (!IsTexImageTarget(textarget)) return s.SetError(INVALID_ENUM, __func__, "textarget must be TEXTURE_2D or a TEXTURE_CUBE_MAP_* face");
+  if (!IsTexImageTarget(textarget) && textarget != TEXTURE_2D_MULTISAMPLE) return s.SetError(INVALID_ENUM, __func__, "textarget must be TEXTURE_2D, a TEXTURE_CUBE_MAP_* face or TEXTURE_2D_MULTISAMPLE");
   auto it = s.textures.find(texture);
   if (it == s.textures.end()) return s.SetError(INVALID_OPERATION, __func__, "not a texture id made by GenTexture (or it was deleted)");
-  const Enum kind = textarget == TEXTURE_2D ? TEXTURE_2D : TEXTURE_CUBE_MAP;
-  if (it->second->target != kind) return s.SetError(INVALID_OPERATION, __func__, "textarget does not match the texture (2D or cube map)");
-  if (level < 0 || level >= detail::kMaxLevels) return s.SetError(INVALID_VALUE, __func__, "level is negative or beyond the largest mipmap level");
+  const Enum kind = CubeFaceIndex(textarget) >= 0 ? TEXTURE_CUBE_MAP : textarget;
+  if (it->second->target != kind) return s.SetError(INVALID_OPERATION, __func__, "textarget does not match the texture (2D, cube map or 2D multisample)");
+  if (level < 0 || level >= detail::kMaxLevels || (kind == TEXTURE_2D_MULTISAMPLE && level != 0)) return s.SetError(INVALID_VALUE, __func__, "level is negative or beyond the largest mipmap level (a multisample texture has level 0 alone)");
   for (int k = 0; k < n; ++k) {
     *slots[k] = Attachment{};
     slots[k]->texture = it->second;
-    slots[k]->face = kind == TEXTURE_2D ? 0 : CubeFaceIndex(textarget);
+    slots[k]->face = kind == TEXTURE_CUBE_MAP ? CubeFaceIndex(textarget) : 0;
     slots[k]->level = level;
   }
 }
@@ -710,6 +710,28 @@ void Storage(ContextState& s, const char* what, Enum target, int samples, Enum i
 }
 
 }  // namespace
+
+void Context::TexImage2DMultisample(Enum target, int samples, Enum internal_format, int width, int height,
+                                    bool fixed_sample_locations) {
+  auto& s = *state_;
+  (void)fixed_sample_locations;  // the standard positions, whatever is asked
+  if (target != TEXTURE_2D_MULTISAMPLE) return s.SetError(INVALID_ENUM, __func__, "target must be TEXTURE_2D_MULTISAMPLE");
+  const Enum sized = SizedRenderbufferFormat(internal_format);
+  if (sized == 0) return s.SetError(INVALID_ENUM, __func__, "internal_format is not a colour, depth or stencil format drawing can render to");
+  if (samples < 1 || width < 0 || height < 0 || width > kMaxTextureSize || height > kMaxTextureSize)
+    return s.SetError(INVALID_VALUE, __func__, "samples below 1, or width or height negative or above MAX_TEXTURE_SIZE");
+  if (samples > detail::kMaxSamples) return s.SetError(INVALID_OPERATION, __func__, "samples is above MAX_COLOR_TEXTURE_SAMPLES");
+  detail::TextureObject* tex = s.Bound(target);
+  if (!tex) return s.SetError(INVALID_OPERATION, __func__, "no texture is bound to TEXTURE_2D_MULTISAMPLE of the active unit");
+  s.Sync(__func__);  // recorded draws may render into or sample the old image
+  detail::TextureLevel next;
+  try {
+    next.Allocate(sized, width, height, detail::SupportedSamples(samples));
+  } catch (const std::bad_alloc&) {
+    return s.SetError(OUT_OF_MEMORY, __func__, "out of memory");
+  }
+  tex->levels[0][0] = std::move(next);
+}
 
 void Context::RenderbufferStorage(Enum target, Enum internal_format, int width, int height) {
   Storage(*state_, __func__, target, 0, internal_format, width, height);

@@ -48,6 +48,7 @@ bool QueryState(ContextState& s, Enum pname, StateValue& out) {
     case TEXTURE_BINDING_CUBE_MAP: return integer(IdOf(s.textures, s.Bound(TEXTURE_CUBE_MAP)));
     case TEXTURE_BINDING_2D_ARRAY: return integer(IdOf(s.textures, s.Bound(TEXTURE_2D_ARRAY)));
     case TEXTURE_BINDING_3D: return integer(IdOf(s.textures, s.Bound(TEXTURE_3D)));
+    case TEXTURE_BINDING_2D_MULTISAMPLE: return integer(IdOf(s.textures, s.Bound(TEXTURE_2D_MULTISAMPLE)));
     case DRAW_FRAMEBUFFER_BINDING: return integer(IdOf(s.framebuffers, s.draw_fbo));
     case DRAW_BUFFER: return QueryState(s, DRAW_BUFFER0, out);
     case READ_BUFFER: return integer(s.read_fbo ? s.read_fbo->read_buffer : s.default_read_buffer);
@@ -113,7 +114,9 @@ bool QueryState(ContextState& s, Enum pname, StateValue& out) {
     case MAX_COMBINED_TEXTURE_IMAGE_UNITS: return integer(kMaxTextureUnits);
     case MAX_DRAW_BUFFERS:
     case MAX_COLOR_ATTACHMENTS: return integer(kMaxColorOutputs);
-    case MAX_SAMPLES: return integer(detail::kMaxSamples);
+    case MAX_SAMPLES:
+    case MAX_COLOR_TEXTURE_SAMPLES:
+    case MAX_DEPTH_TEXTURE_SAMPLES: return integer(detail::kMaxSamples);
     case MAX_SAMPLE_MASK_WORDS: return integer(1);
     case SAMPLE_COVERAGE_VALUE: return put(Kind::kFloat, {s.ops.multisample.coverage_value});
     case SAMPLE_COVERAGE_INVERT: return boolean(s.ops.multisample.coverage_invert);

@@ -241,7 +241,7 @@ bool Context::TexImage2DFromMemory(Enum target, const void* data, std::size_t si
 void Context::GenerateMipmap(Enum target) {
   state_->Sync(__func__);
   auto& s = *state_;
-  if (detail::TextureKind(target) < 0) return s.SetError(INVALID_ENUM, __func__, "target must be TEXTURE_2D, TEXTURE_CUBE_MAP, TEXTURE_2D_ARRAY or TEXTURE_3D");
+  if (detail::TextureKind(target) < 0 || target == TEXTURE_2D_MULTISAMPLE) return s.SetError(INVALID_ENUM, __func__, "target must be TEXTURE_2D, TEXTURE_CUBE_MAP, TEXTURE_2D_ARRAY or TEXTURE_3D (a multisample texture has no levels or sampling state)");
   detail::TextureObject* tex = s.Bound(target);
   if (!tex) return s.SetError(INVALID_OPERATION, __func__, "no texture is bound to that target of the active unit");
   const int base = tex->params.base_level;
@@ -272,7 +272,7 @@ bool IsWrap(int v) { return v == REPEAT || v == MIRRORED_REPEAT || v == CLAMP_TO
 void Context::TexParameterfv(Enum target, Enum pname, const float* values) {
   state_->Sync(__func__);
   auto& s = *state_;
-  if (detail::TextureKind(target) < 0) return s.SetError(INVALID_ENUM, __func__, "target must be TEXTURE_2D, TEXTURE_CUBE_MAP, TEXTURE_2D_ARRAY or TEXTURE_3D");
+  if (detail::TextureKind(target) < 0 || target == TEXTURE_2D_MULTISAMPLE) return s.SetError(INVALID_ENUM, __func__, "target must be TEXTURE_2D, TEXTURE_CUBE_MAP, TEXTURE_2D_ARRAY or TEXTURE_3D (a multisample texture has no levels or sampling state)");
   if (values == nullptr) return s.SetError(INVALID_VALUE, __func__, "values is null");
   detail::TextureObject* tex = s.Bound(target);
   if (!tex) return s.SetError(INVALID_OPERATION, __func__, "no texture is bound to that target of the active unit");
@@ -347,7 +347,7 @@ namespace {
 
 // The sampling state `pname` of the texture bound to target, as up to four floats; false with the error set.
 bool TexParameterValues(ContextState& s, const char* what, Enum target, Enum pname, float out[4], int& n) {
-  if (detail::TextureKind(target) < 0) return s.SetError(INVALID_ENUM, what, "target must be TEXTURE_2D, TEXTURE_CUBE_MAP, TEXTURE_2D_ARRAY or TEXTURE_3D"), false;
+  if (detail::TextureKind(target) < 0 || target == TEXTURE_2D_MULTISAMPLE) return s.SetError(INVALID_ENUM, what, "target must be TEXTURE_2D, TEXTURE_CUBE_MAP, TEXTURE_2D_ARRAY or TEXTURE_3D (a multisample texture has no sampling state)"), false;
   const detail::TextureObject* tex = s.Bound(target);
   if (!tex) return s.SetError(INVALID_OPERATION, what, "no texture is bound to that target of the active unit"), false;
   const detail::SamplerParams& p = tex->params;
@@ -378,8 +378,8 @@ bool TexParameterValues(ContextState& s, const char* what, Enum target, Enum pna
 // texture); false with the
 // error set.
 bool TexLevelValue(ContextState& s, const char* what, Enum target, int level, Enum pname, int& out) {
-  if (!IsTexImageTarget(target) && target != TEXTURE_2D_ARRAY && target != TEXTURE_3D)
-    return s.SetError(INVALID_ENUM, what, "target must be TEXTURE_2D, a TEXTURE_CUBE_MAP_* face, TEXTURE_2D_ARRAY or TEXTURE_3D"), false;
+  if (!IsTexImageTarget(target) && target != TEXTURE_2D_ARRAY && target != TEXTURE_3D && target != TEXTURE_2D_MULTISAMPLE)
+    return s.SetError(INVALID_ENUM, what, "target must be TEXTURE_2D, a TEXTURE_CUBE_MAP_* face, TEXTURE_2D_ARRAY, TEXTURE_3D or TEXTURE_2D_MULTISAMPLE"), false;
   if (level < 0 || level >= detail::kMaxLevels) return s.SetError(INVALID_VALUE, what, "level is negative or beyond the largest mipmap level"), false;
   int face = 0;
   const detail::TextureObject* tex = s.Bound(target, &face);
@@ -390,6 +390,8 @@ bool TexLevelValue(ContextState& s, const char* what, Enum target, int level, En
     case TEXTURE_WIDTH: out = lv.Defined() ? lv.width : 0; return true;
     case TEXTURE_HEIGHT: out = lv.Defined() ? lv.height : 0; return true;
     case TEXTURE_DEPTH: out = lv.Defined() ? lv.depth : 0; return true;
+    case TEXTURE_SAMPLES: out = lv.Defined() && tex->target == TEXTURE_2D_MULTISAMPLE ? lv.samples : 0; return true;
+    case TEXTURE_FIXED_SAMPLE_LOCATIONS: out = 1; return true;  // the standard positions, always
     case TEXTURE_INTERNAL_FORMAT: out = int(lv.Defined() ? lv.format : RGBA); return true;
     case TEXTURE_RED_SIZE: out = bits.r; return true;
     case TEXTURE_GREEN_SIZE: out = bits.g; return true;

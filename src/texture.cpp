@@ -504,6 +504,16 @@ TextureView MakeView(const TextureObject& texture) {
   const SamplerParams& p = texture.params;
   view.base = p.base_level;
   if (p.base_level < 0 || p.base_level >= kMaxLevels || p.base_level > p.max_level) return view;
+  if (texture.target == TEXTURE_2D_MULTISAMPLE) {  // one image, fetched by sample: no levels, no filtering
+    const TextureLevel& image = texture.levels[0][0];
+    view.base = view.q = 0;
+    view.complete = image.Defined();
+    view.layout = image.layout;
+    view.srgb = image.srgb;
+    view.depth = IsDepthFormat(image.format);
+    view.scale = StorageScale(image.layout);
+    return view;
+  }
   const TextureLevel& base = texture.levels[0][p.base_level];
   if (!base.Defined()) return view;
   view.depth = IsDepthFormat(base.format);

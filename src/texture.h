@@ -145,7 +145,8 @@ struct SamplerParams {
 };
 
 struct TextureObject {
-  Enum target = 0;  // TEXTURE_2D, TEXTURE_CUBE_MAP, TEXTURE_2D_ARRAY or TEXTURE_3D, fixed by the first bind
+  Enum target = 0;  // TEXTURE_2D, TEXTURE_CUBE_MAP, TEXTURE_2D_ARRAY, TEXTURE_3D or TEXTURE_2D_MULTISAMPLE (its
+                    // one image is level 0, with `samples` planes), fixed by the first bind
   TextureLevel levels[6][kMaxLevels];  // [face][level]; all but a cube map use face 0
   SamplerParams params;
   int Faces() const { return target == TEXTURE_CUBE_MAP ? 6 : 1; }
@@ -154,10 +155,11 @@ struct TextureObject {
   bool Layered() const { return target == TEXTURE_2D_ARRAY || target == TEXTURE_3D; }
 };
 
-/// The texture targets a unit binds, in this order: TEXTURE_2D, TEXTURE_CUBE_MAP, TEXTURE_2D_ARRAY, TEXTURE_3D.
-inline constexpr int kTextureKinds = 4;
+/// The texture targets a unit binds, in this order: TEXTURE_2D, TEXTURE_CUBE_MAP, TEXTURE_2D_ARRAY, TEXTURE_3D,
+/// TEXTURE_2D_MULTISAMPLE.
+inline constexpr int kTextureKinds = 5;
 inline constexpr Enum kTextureKindTarget[kTextureKinds] = {TEXTURE_2D, TEXTURE_CUBE_MAP, TEXTURE_2D_ARRAY,
-                                                           TEXTURE_3D};
+                                                           TEXTURE_3D, TEXTURE_2D_MULTISAMPLE};
 /// The index of a texture target in kTextureKindTarget, -1 for another enum.
 inline int TextureKind(Enum target) {
   for (int k = 0; k < kTextureKinds; ++k)
@@ -167,7 +169,8 @@ inline int TextureKind(Enum target) {
 /// The unit array of Textures that holds each kind's views.
 using UnitViews = const TextureView* (Textures::*)[kMaxTextureUnits];
 inline constexpr UnitViews kKindUnits[kTextureKinds] = {&Textures::unit_2d, &Textures::unit_cube,
-                                                        &Textures::unit_2d_array, &Textures::unit_3d};
+                                                        &Textures::unit_2d_array, &Textures::unit_3d,
+                                                        &Textures::unit_2d_ms};
 
 /// A texture as one draw samples it: completeness and the levels in use resolved once.
 struct TextureView {

@@ -758,6 +758,48 @@ glm::ivec3 Textures::Size3D(int unit, int level) const {
   return unit < 0 || unit >= kMaxTextureUnits ? glm::ivec3(0) : LevelSize(unit_3d[unit], level);
 }
 
+namespace {
+// Texel (x, y) of plane `plane` of a level, as sampling reads it (an sRGB colour decoded), divided by the scale;
+// zero outside it.
+glm::vec4 TexelOf(const TextureView& v, const TextureLevel& lv, glm::ivec2 p, int plane, int planes) {
+  if (!lv.Defined() || p.x < 0 || p.y < 0 || p.x >= lv.width || p.y >= lv.height || plane < 0 || plane >= planes)
+    return glm::vec4(0.0f);
+  return lv.Sampled(p.x, plane * lv.height + p.y) / v.scale;
+}
+}  // namespace
+
+glm::vec4 Textures::Fetch(int unit, glm::ivec2 texel, int level) const {
+  const TextureView* v = Usable(unit_2d, unit);
+  if (!v || level < 0 || v->base + level >= detail::kMaxLevels) return glm::vec4(0.0f);
+  return TexelOf(*v, v->texture->levels[0][v->base + level], texel, 0, 1);
+}
+
+glm::vec4 Textures::FetchSample(int unit, glm::ivec2 texel, int sample) const {
+  const TextureView* v = Usable(unit_2d_ms, unit);
+  if (!v) return glm::vec4(0.0f);
+  const TextureLevel& lv = v->texture->levels[0][0];
+  return TexelOf(*v, lv, texel, sample, lv.samples);
+}
+
+glm::ivec2 Textures::SizeMultisample(int unit) const {
+  const TextureView* v = Usable(unit_2d_ms, unit);
+  return v ? glm::ivec2(v->texture->levels[0][0].width, v->texture->levels[0][0].height) : glm::ivec2(0);
+}
+
+int Textures::Samples(int unit) const {
+  const TextureView* v = Usable(unit_2d_ms, unit);
+  return v ? v->texture->levels[0][0].samples : 0;
+}
+
+void Textures::FetchLanes(int unit, const int x[16], const int y[16], const int level[16], float out[4][16]) const {
+  EachLane(out, [&](int l) { return Fetch(unit, glm::ivec2(x[l], y[l]), level[l]); });
+}
+
+void Textures::FetchSampleLanes(int unit, const int x[16], const int y[16], const int sample[16],
+                                float out[4][16]) const {
+  EachLane(out, [&](int l) { return FetchSample(unit, glm::ivec2(x[l], y[l]), sample[l]); });
+}
+
 glm::ivec2 Textures::Size(int unit, int level) const {
   if (unit < 0 || unit >= kMaxTextureUnits || !unit_2d[unit]) return glm::ivec2(0);
   const TextureView& v = *unit_2d[unit];

@@ -461,3 +461,141 @@ TEST_CASE("multisample: Centroid<> varyings are taken at the first covered sampl
     }
   }
 }
+
+namespace {
+// A full-screen pass writing texelFetch(sampler2DMS on unit 0, gl_FragCoord.xy, sample), written wide.
+struct NoVary {};
+struct FetchSampleShader : Shader<FetchSampleShader, NoVary> {
+  int sample = 0;
+  void Vertex(const VertexLanes& in, VertexLanesOut<NoVary>& out) const { out.position = in.attrib[0]; }
+  void Fragment(const FragmentLanes<NoVary>& in, FragmentLanesOut& out) const {
+    out.color[0] = in.TexelFetchMS(0, Int(in.frag_coord.x), Int(in.frag_coord.y), Int(sample));
+  }
+};
+}  // namespace
+
+TEST_CASE("TEXTURE_2D_MULTISAMPLE: drawn into, fetched sample by sample, resolved by a blit", "[multisample]") {
+  Context gl(8, 8, Samples(1));
+  const std::uint32_t tex = gl.GenTexture(), fbo = gl.GenFramebuffer();
+  gl.BindTexture(TEXTURE_2D_MULTISAMPLE, tex);
+  gl.TexImage2DMultisample(TEXTURE_2D_MULTISAMPLE, 3, RGBA8, 8, 8, true);  // 3 rounds up to 4
+  REQUIRE(gl.GetError() == NO_ERROR);
+  int v = 0;
+  gl.GetTexLevelParameteriv(TEXTURE_2D_MULTISAMPLE, 0, TEXTURE_SAMPLES, &v);
+  CHECK(v == 4);
+  gl.GetIntegerv(TEXTURE_BINDING_2D_MULTISAMPLE, &v);
+  CHECK(v == int(tex));
+  gl.BindFramebuffer(FRAMEBUFFER, fbo);
+  gl.FramebufferTexture2D(FRAMEBUFFER, COLOR_ATTACHMENT0, TEXTURE_2D_MULTISAMPLE, tex, 0);
+  REQUIRE(gl.CheckFramebufferStatus(FRAMEBUFFER) == FRAMEBUFFER_COMPLETE);
+  gl.ClearColor(0, 0, 1, 1);
+  gl.Clear(COLOR_BUFFER_BIT);
+  // Red left of x = 3.5: in pixel column 3 the samples left of its centre, 0 (at x 0.375) and 2 (0.125), are
+  // covered; 1 (0.875) and 3 (0.625) are not.
+  SolidShader red;
+  red.color = glm::vec4(1, 0, 0, 1);
+  gl.UseProgram(red);
+  const float x = 3.5f / 4.0f - 1.0f;
+  MakeVertexArray(gl, {{-1, -1, 0, 1}, {x, -1, 0, 1}, {-1, 1, 0, 1}, {x, 1, 0, 1}});
+  gl.DrawArrays(TRIANGLE_STRIP, 0, 4);
+
+  // Each sample through a wide fragment shader into the context's framebuffer.
+  gl.BindFramebuffer(FRAMEBUFFER, 0);
+  FetchSampleShader fetch;
+  gl.UseProgram(fetch);
+  MakeVertexArray(gl, {{-1, -1, 0, 1}, {1, -1, 0, 1}, {-1, 1, 0, 1}, {1, 1, 0, 1}});
+  const int want_red[4] = {255, 0, 255, 0};
+  for (int s = 0; s < 4; ++s) {
+    fetch.sample = s;
+    gl.DrawArrays(TRIANGLE_STRIP, 0, 4);
+    CHECK(Red(gl, 3, 4) == want_red[s]);
+    CHECK(Red(gl, 2, 4) == 255);
+    CHECK(Red(gl, 4, 4) == 0);
+  }
+  fetch.sample = 4;  // a sample the texture does not have: zero
+  gl.DrawArrays(TRIANGLE_STRIP, 0, 4);
+  std::uint8_t px[4];
+  gl.ReadPixel(3, 4, px);
+  CHECK((px[0] == 0 && px[2] == 0 && px[3] == 0));
+
+  // Resolved by a blit: column 3 is half red, half blue, rounded half up.
+  gl.BindFramebuffer(READ_FRAMEBUFFER, fbo);
+  gl.BindFramebuffer(DRAW_FRAMEBUFFER, 0);
+  gl.BlitFramebuffer(0, 0, 8, 8, 0, 0, 8, 8, COLOR_BUFFER_BIT, NEAREST);
+  gl.BindFramebuffer(FRAMEBUFFER, 0);
+  gl.ReadPixel(3, 4, px);
+  CHECK((px[0] == 128 && px[2] == 128));
+  CHECK(gl.GetError() == NO_ERROR);
+}
+
+TEST_CASE("TEXTURE_2D_MULTISAMPLE and texelFetch reject bad input with OpenGL's errors", "[multisample][errors]") {
+  Context gl(8, 8);
+  const std::uint32_t tex = gl.GenTexture(), flat = gl.GenTexture(), fbo = gl.GenFramebuffer(),
+                      rb = gl.GenRenderbuffer();
+  gl.TexImage2DMultisample(TEXTURE_2D_MULTISAMPLE, 4, RGBA8, 8, 8, true);
+  CHECK(gl.GetError() == INVALID_OPERATION);  // nothing bound
+  gl.BindTexture(TEXTURE_2D_MULTISAMPLE, tex);
+  gl.TexImage2DMultisample(TEXTURE_2D, 4, RGBA8, 8, 8, true);
+  CHECK(gl.GetError() == INVALID_ENUM);
+  gl.TexImage2DMultisample(TEXTURE_2D_MULTISAMPLE, 4, 0x1234, 8, 8, true);
+  CHECK(gl.GetError() == INVALID_ENUM);
+  gl.TexImage2DMultisample(TEXTURE_2D_MULTISAMPLE, 0, RGBA8, 8, 8, true);
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.TexImage2DMultisample(TEXTURE_2D_MULTISAMPLE, 4, RGBA8, kMaxTextureSize + 1, 8, true);
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.TexImage2DMultisample(TEXTURE_2D_MULTISAMPLE, 9, RGBA8, 8, 8, true);
+  CHECK(gl.GetError() == INVALID_OPERATION);
+  gl.TexImage2DMultisample(TEXTURE_2D_MULTISAMPLE, 2, RGBA8, 8, 8, false);
+  CHECK(gl.GetError() == NO_ERROR);
+  gl.TexParameteri(TEXTURE_2D_MULTISAMPLE, TEXTURE_MIN_FILTER, NEAREST);
+  CHECK(gl.GetError() == INVALID_ENUM);
+  gl.GenerateMipmap(TEXTURE_2D_MULTISAMPLE);
+  CHECK(gl.GetError() == INVALID_ENUM);
+  gl.TexImage2D(TEXTURE_2D_MULTISAMPLE, 0, RGBA8, 8, 8, 0, RGBA, UNSIGNED_BYTE, nullptr);
+  CHECK(gl.GetError() == INVALID_ENUM);
+  gl.BindFramebuffer(FRAMEBUFFER, fbo);
+  gl.FramebufferTexture2D(FRAMEBUFFER, COLOR_ATTACHMENT0, TEXTURE_2D_MULTISAMPLE, tex, 1);
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.FramebufferTexture2D(FRAMEBUFFER, COLOR_ATTACHMENT0, TEXTURE_2D, tex, 0);
+  CHECK(gl.GetError() == INVALID_OPERATION);
+  gl.BindTexture(TEXTURE_2D, flat);
+  gl.FramebufferTexture2D(FRAMEBUFFER, COLOR_ATTACHMENT0, TEXTURE_2D_MULTISAMPLE, flat, 0);
+  CHECK(gl.GetError() == INVALID_OPERATION);
+  // A 2-sample texture beside a 4-sample renderbuffer: FRAMEBUFFER_INCOMPLETE_MULTISAMPLE.
+  gl.FramebufferTexture2D(FRAMEBUFFER, COLOR_ATTACHMENT0, TEXTURE_2D_MULTISAMPLE, tex, 0);
+  CHECK(gl.CheckFramebufferStatus(FRAMEBUFFER) == FRAMEBUFFER_COMPLETE);
+  gl.BindRenderbuffer(RENDERBUFFER, rb);
+  gl.RenderbufferStorageMultisample(RENDERBUFFER, 4, DEPTH24_STENCIL8, 8, 8);
+  gl.FramebufferRenderbuffer(FRAMEBUFFER, DEPTH_STENCIL_ATTACHMENT, RENDERBUFFER, rb);
+  CHECK(gl.CheckFramebufferStatus(FRAMEBUFFER) == FRAMEBUFFER_INCOMPLETE_MULTISAMPLE);
+  int v = 0;
+  gl.GetIntegerv(MAX_COLOR_TEXTURE_SAMPLES, &v);
+  CHECK(v == 8);
+  CHECK(gl.GetError() == NO_ERROR);
+
+  // texelFetch of a 2D texture: level 1 of a 4 x 4 texture whose level 1 is defined; zero outside.
+  gl.BindTexture(TEXTURE_2D, flat);
+  const std::uint8_t l0[16 * 4] = {}, l1[4 * 4] = {10, 0, 0, 255, 20, 0, 0, 255, 30, 0, 0, 255, 40, 0, 0, 255};
+  gl.TexImage2D(TEXTURE_2D, 0, RGBA8, 4, 4, 0, RGBA, UNSIGNED_BYTE, l0);
+  gl.TexImage2D(TEXTURE_2D, 1, RGBA8, 2, 2, 0, RGBA, UNSIGNED_BYTE, l1);
+  gl.TexParameteri(TEXTURE_2D, TEXTURE_MAX_LEVEL, 1);
+  struct Probe : Shader<Probe, NoVaryings> {
+    mutable glm::vec4 got[3];
+    void Vertex(const VertexIn& in, VertexOut<NoVaryings>& out) const {
+      out.position = glm::vec4(2, 2, 2, 1);
+      got[0] = in.textures->Fetch(0, {1, 1}, 1);
+      got[1] = in.textures->Fetch(0, {2, 0}, 1);
+      got[2] = in.textures->Fetch(0, {0, 0}, 2);
+    }
+    bool Fragment(const FragmentIn<NoVaryings>&, FragmentOut&) const { return false; }
+  } probe;
+  gl.UseProgram(probe);
+  gl.BindFramebuffer(FRAMEBUFFER, 0);
+  MakeVertexArray(gl, {{0, 0, 0, 1}});
+  gl.DrawArrays(POINTS, 0, 1);
+  gl.Finish();
+  CHECK(probe.got[0].r == Approx(40.0f / 255.0f));
+  CHECK(probe.got[1] == glm::vec4(0.0f));
+  CHECK(probe.got[2] == glm::vec4(0.0f));
+  CHECK(gl.GetError() == NO_ERROR);
+}

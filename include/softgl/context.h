@@ -191,7 +191,8 @@ class Context {
   /// Selects the texture unit that BindTexture, TexImage2D, TexParameter and GenerateMipmap act on: TEXTURE0 + i,
   /// i < kMaxTextureUnits (else INVALID_ENUM).
   void ActiveTexture(Enum unit);
-  /// Binds texture (0 unbinds) to TEXTURE_2D, TEXTURE_CUBE_MAP, TEXTURE_2D_ARRAY or TEXTURE_3D of the active unit
+  /// Binds texture (0 unbinds) to TEXTURE_2D, TEXTURE_CUBE_MAP, TEXTURE_2D_ARRAY, TEXTURE_3D or
+  /// TEXTURE_2D_MULTISAMPLE of the active unit
   /// (each unit holds one texture of each target). Bad target: INVALID_ENUM;
   /// unknown id, or a texture first bound to the other target: INVALID_OPERATION. There is no default texture
   /// object: texture calls with nothing bound record INVALID_OPERATION.
@@ -278,8 +279,9 @@ class Context {
   /// as integers, mapped back from [-1, 1]). Bad target or name: INVALID_ENUM; nothing bound: INVALID_OPERATION.
   void GetTexParameterfv(Enum target, Enum pname, float* params) const;
   void GetTexParameteriv(Enum target, Enum pname, int* params) const;
-  /// One level of the bound texture (target TEXTURE_2D, a cube face, TEXTURE_2D_ARRAY or TEXTURE_3D):
-  /// TEXTURE_WIDTH, TEXTURE_HEIGHT, TEXTURE_DEPTH (layers or slices; 1 for 2D), TEXTURE_INTERNAL_FORMAT, TEXTURE_RED_SIZE, _GREEN_SIZE, _BLUE_SIZE, _ALPHA_SIZE,
+  /// One level of the bound texture (target TEXTURE_2D, a cube face, TEXTURE_2D_ARRAY, TEXTURE_3D or
+  /// TEXTURE_2D_MULTISAMPLE): TEXTURE_WIDTH, TEXTURE_HEIGHT, TEXTURE_DEPTH (layers or slices; 1 for 2D),
+  /// TEXTURE_SAMPLES (0 but for a multisample texture), TEXTURE_FIXED_SAMPLE_LOCATIONS (1), TEXTURE_INTERNAL_FORMAT, TEXTURE_RED_SIZE, _GREEN_SIZE, _BLUE_SIZE, _ALPHA_SIZE,
   /// TEXTURE_DEPTH_SIZE, TEXTURE_STENCIL_SIZE (the format's bits; all 0 for an undefined level, whose internal
   /// format reads RGBA). Bad target or name: INVALID_ENUM; level out of range: INVALID_VALUE; nothing bound:
   /// INVALID_OPERATION.
@@ -299,7 +301,8 @@ class Context {
   bool IsFramebuffer(std::uint32_t framebuffer) const;
   /// Binds a framebuffer object (0: the context's own) to FRAMEBUFFER (both), DRAW_FRAMEBUFFER or READ_FRAMEBUFFER.
   void BindFramebuffer(Enum target, std::uint32_t framebuffer);
-  /// Attaches level `level` of a 2D texture (textarget TEXTURE_2D) or cube face (TEXTURE_CUBE_MAP_*) to
+  /// Attaches level `level` of a 2D texture (textarget TEXTURE_2D), a cube face (TEXTURE_CUBE_MAP_*) or the image
+  /// of a TEXTURE_2D_MULTISAMPLE texture (level 0) to
   /// COLOR_ATTACHMENT0 .. COLOR_ATTACHMENT0 + 3, DEPTH_ATTACHMENT, STENCIL_ATTACHMENT or DEPTH_STENCIL_ATTACHMENT
   /// (both of the last two) of the framebuffer bound to target; texture 0 detaches. A DEPTH24_STENCIL8 or
   /// DEPTH32F_STENCIL8 texture at DEPTH_STENCIL_ATTACHMENT gives rendering into a texture a stencil buffer.
@@ -383,6 +386,18 @@ class Context {
   /// object must have the same sample count, else it is FRAMEBUFFER_INCOMPLETE_MULTISAMPLE. Errors as
   /// RenderbufferStorage, and samples < 0: INVALID_VALUE; samples above MAX_SAMPLES (8): INVALID_OPERATION.
   void RenderbufferStorageMultisample(Enum target, int samples, Enum internal_format, int width, int height);
+  /// Defines the image of the TEXTURE_2D_MULTISAMPLE texture bound to the active unit: width x height of
+  /// `internal_format` (as RenderbufferStorage takes it) with `samples` samples a pixel, rounded up as
+  /// RenderbufferStorageMultisample rounds them (all zero). Drawn into through FramebufferTexture2D(...,
+  /// TEXTURE_2D_MULTISAMPLE, texture, 0) and resolved by BlitFramebuffer as a multisampled renderbuffer is, it can
+  /// also be read sample by sample in a shader (texelFetch: Textures::FetchSample, FragmentLanes::TexelFetchMS).
+  /// The samples sit at the standard positions whatever fixed_sample_locations says. It has no levels and no
+  /// sampling state: TexParameter and GenerateMipmap on it record INVALID_ENUM. Errors: target not
+  /// TEXTURE_2D_MULTISAMPLE, a format drawing cannot render to: INVALID_ENUM; samples below 1, a size negative or
+  /// above MAX_TEXTURE_SIZE: INVALID_VALUE; samples above MAX_COLOR_TEXTURE_SAMPLES (8), nothing bound:
+  /// INVALID_OPERATION; no memory: OUT_OF_MEMORY.
+  void TexImage2DMultisample(Enum target, int samples, Enum internal_format, int width, int height,
+                             bool fixed_sample_locations);
   /// RENDERBUFFER_WIDTH, _HEIGHT, _INTERNAL_FORMAT (as given, RGBA before any storage), _RED_SIZE, _GREEN_SIZE,
   /// _BLUE_SIZE, _ALPHA_SIZE, _DEPTH_SIZE, _STENCIL_SIZE (the format's bits, as OpenGL reports them), _SAMPLES (0,
   /// or the multisampled renderbuffer's count) of the bound renderbuffer. Errors: bad target or pname: INVALID_ENUM; nothing bound: INVALID_OPERATION.

@@ -198,6 +198,17 @@ inline vec4 Lod(const Textures* textures, int unit, const Textures::Lanes& c, co
   (textures->*fn)(unit, c, l, out);
   return Rgba(out);
 }
+// texelFetch through Textures::FetchLanes or FetchSampleLanes.
+using FetchLanesFn = void (Textures::*)(int, const int*, const int*, const int*, float (*)[16]) const;
+inline vec4 Fetch(const Textures* textures, int unit, const Int& x, const Int& y, const Int& which, FetchLanesFn fn) {
+  alignas(64) std::int32_t xs[kLanes], ys[kLanes], ws[kLanes];
+  x.Store(xs);
+  y.Store(ys);
+  which.Store(ws);
+  float out[4][kLanes];
+  (textures->*fn)(unit, xs, ys, ws, out);
+  return Rgba(out);
+}
 // texture() through one of Textures' *Lanes calls, with the derivatives of the coordinates c holds.
 using SampleLanesFn = void (Textures::*)(int, const Textures::Lanes&, float, float (*)[16]) const;
 inline vec4 Sample(const Textures* textures, int unit, Textures::Lanes& c, const vec3& dx, const vec3& dy, float bias,
@@ -332,6 +343,17 @@ struct FragmentLanes {
   }
   /// textureSize(sampler2D, level).
   glm::ivec2 TextureSize(int unit, int level = 0) const { return textures->Size(unit, level); }
+  /// texelFetch(sampler2D, ivec2(x, y), level): one texel of a level, unfiltered ((0, 0, 0, 0) outside it).
+  vec4 TexelFetch(int unit, const Int& x, const Int& y, const Int& level = Int(0)) const {
+    return shader_detail::Fetch(textures, unit, x, y, level, &Textures::FetchLanes);
+  }
+  /// texelFetch(sampler2DMS, ivec2(x, y), sample): one sample of a TEXTURE_2D_MULTISAMPLE texture.
+  vec4 TexelFetchMS(int unit, const Int& x, const Int& y, const Int& sample) const {
+    return shader_detail::Fetch(textures, unit, x, y, sample, &Textures::FetchSampleLanes);
+  }
+  /// textureSize(sampler2DMS) and textureSamples(sampler2DMS).
+  glm::ivec2 TextureSizeMS(int unit) const { return textures->SizeMultisample(unit); }
+  int TextureSamples(int unit) const { return textures->Samples(unit); }
   /// textureSize(sampler2DArray, level): width, height, layers.
   glm::ivec3 TextureSizeArray(int unit, int level = 0) const { return textures->SizeArray(unit, level); }
   /// textureSize(sampler3D, level).

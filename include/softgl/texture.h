@@ -1,7 +1,7 @@
 // softgl/texture.h — textures as the shader stages see them: sampling by texture unit.
 //
 // A draw hands its shader a `Textures`: for each of the kMaxTextureUnits units, the TEXTURE_2D, TEXTURE_CUBE_MAP,
-// TEXTURE_2D_ARRAY and TEXTURE_3D textures bound to it and their sampling state. Filtering, wrapping and the level of detail
+// TEXTURE_2D_ARRAY, TEXTURE_3D and TEXTURE_2D_MULTISAMPLE textures bound to it and their sampling state. Filtering, wrapping and the level of detail
 // follow the OpenGL 4.6 specification (section 8.14): texel centres at +0.5, wrap applied per texel, lambda from
 // the screen-space derivatives of the texture coordinates. Sampling a unit with no texture, or an incomplete one,
 // returns (0, 0, 0, 1), as OpenGL does.
@@ -70,6 +70,16 @@ class Textures {
   /// textureSize(sampler3D, level): width, height and depth; (0, 0, 0) if there is none.
   glm::ivec3 Size3D(int unit, int level = 0) const;
 
+  /// texelFetch(sampler2D, texel, level): texel (x, y) of a level of unit's 2D texture, unfiltered (an sRGB colour
+  /// decoded); (0, 0, 0, 0) outside the level, for a level the texture does not have, or an incomplete texture.
+  glm::vec4 Fetch(int unit, glm::ivec2 texel, int level = 0) const;
+  /// texelFetch(sampler2DMS, texel, sample): one sample of unit's TEXTURE_2D_MULTISAMPLE texture;
+  /// (0, 0, 0, 0) outside the image or for a sample it does not have.
+  glm::vec4 FetchSample(int unit, glm::ivec2 texel, int sample) const;
+  /// textureSize(sampler2DMS) and textureSamples(sampler2DMS): (0, 0) and 0 when there is none.
+  glm::ivec2 SizeMultisample(int unit) const;
+  int Samples(int unit) const;
+
   /// Coordinates and their screen-space derivatives for 16 lanes (a wide shader's block of fragments).
   struct Lanes {
     float s[16], t[16], r[16];  ///< (s, t), and r: a cube map direction's z, or a shadow lookup's reference
@@ -89,11 +99,15 @@ class Textures {
   void SampleArrayShadowLanes(int unit, const Lanes& c, const float ref[16], float out[16]) const;
   void Sample3DLanes(int unit, const Lanes& c, float bias, float out[4][16]) const;  ///< Sample3D
   void Sample3DLodLanes(int unit, const Lanes& c, const float lod[16], float out[4][16]) const;
+  /// Fetch and FetchSample, lane by lane: texel (x[l], y[l]) at level (or sample) which[l].
+  void FetchLanes(int unit, const int x[16], const int y[16], const int level[16], float out[4][16]) const;
+  void FetchSampleLanes(int unit, const int x[16], const int y[16], const int sample[16], float out[4][16]) const;
 
   const detail::TextureView* unit_2d[kMaxTextureUnits] = {};
   const detail::TextureView* unit_cube[kMaxTextureUnits] = {};
   const detail::TextureView* unit_2d_array[kMaxTextureUnits] = {};
   const detail::TextureView* unit_3d[kMaxTextureUnits] = {};
+  const detail::TextureView* unit_2d_ms[kMaxTextureUnits] = {};
 };
 
 }  // namespace softgl

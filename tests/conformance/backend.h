@@ -34,6 +34,8 @@ enum class Program {
   kArray,    // colour = texture(2D array on unit 3, extra.xyz): layer extra.z
   kVolume,   // colour = texture(3D texture on unit 4, extra.xyz)
   kArrayShadow,  // colour = texture(depth array on unit 5 with comparison, extra): layer extra.z, reference extra.w
+  kFetchSample,  // colour = texelFetch(2D multisample texture on unit 6, ivec2(gl_FragCoord.xy) - ivec2(extra.xy),
+                 // int(extra.z))
 };
 
 /// A TEXTURE_2D_ARRAY or TEXTURE_3D defined by TexImage3D: RGBA8 from `rgba` (unit 3 for an array, 4 for 3D), or
@@ -174,6 +176,10 @@ class Backend {
   /// DEPTH_COMPONENT / FLOAT; depth-stencil: DEPTH_STENCIL with its packed type), attached to `attachment` of the
   /// framebuffer bound to `target` by FramebufferTexture2D.
   virtual void AttachNewTexture(Enum target, Enum attachment, Enum internal_format, int width, int height) = 0;
+  /// A new TEXTURE_2D_MULTISAMPLE texture (TexImage2DMultisample, fixed sample locations) on unit 6, attached to
+  /// `attachment` of the framebuffer bound to `target`.
+  virtual void AttachNewMultisampleTexture(Enum target, Enum attachment, int samples, Enum internal_format,
+                                           int width, int height) = 0;
   /// glGetIntegerv, glGetFloatv and glGetBooleanv of `count` values.
   virtual std::vector<std::int64_t> GetIntegers(Enum pname, int count) = 0;
   virtual std::vector<float> GetFloats(Enum pname, int count) = 0;

@@ -107,6 +107,13 @@ out vec4 o_color;
 void main() { o_color = vec4(texture(u_shadow_array, v_extra), 0.0, 0.0, 1.0); }
 )";
 
+constexpr const char* kFetchSampleFragment = R"(#version 330 core
+in vec4 v_extra;
+uniform sampler2DMS u_ms;
+out vec4 o_color;
+void main() { o_color = texelFetch(u_ms, ivec2(gl_FragCoord.xy) - ivec2(v_extra.xy), int(v_extra.z)); }
+)";
+
 GLuint Compile(GLenum type, const char* source, std::string* error) {
   const GLuint s = glCreateShader(type);
   glShaderSource(s, 1, &source, nullptr);
@@ -158,6 +165,7 @@ class GlBackend final : public Backend {
     programs_[6] = Link(kArrayFragment, error);
     programs_[7] = Link(kVolumeFragment, error);
     programs_[8] = Link(kArrayShadowFragment, error);
+    programs_[9] = Link(kFetchSampleFragment, error);
     instanced_ = Link(kColorFragment, error, kInstancedVertexShader);
     glUseProgram(programs_[4]);
     glUniform1i(glGetUniformLocation(programs_[4], "u_cube"), 1);
@@ -169,6 +177,8 @@ class GlBackend final : public Backend {
     glUniform1i(glGetUniformLocation(programs_[7], "u_volume"), 4);
     glUseProgram(programs_[8]);
     glUniform1i(glGetUniformLocation(programs_[8], "u_shadow_array"), 5);
+    glUseProgram(programs_[9]);
+    glUniform1i(glGetUniformLocation(programs_[9], "u_ms"), 6);
     if (!error->empty()) return false;
     glGenVertexArrays(1, &vao_);
     glBindVertexArray(vao_);
@@ -452,6 +462,17 @@ class GlBackend final : public Backend {
                        Enum filter) override {
     glBlitFramebuffer(sx0, sy0, sx1, sy1, dx0, dy0, dx1, dy1, mask, filter);
   }
+  void AttachNewMultisampleTexture(Enum target, Enum attachment, int samples, Enum internal_format, int width,
+                                   int height) override {
+    GLuint tex = 0;
+    glGenTextures(1, &tex);
+    glActiveTexture(GL_TEXTURE6);
+    glBindTexture(GL_TEXTURE_2D_MULTISAMPLE, tex);
+    glTexImage2DMultisample(GL_TEXTURE_2D_MULTISAMPLE, samples, internal_format, width, height, GL_TRUE);
+    glActiveTexture(GL_TEXTURE0);
+    glFramebufferTexture2D(target, attachment, GL_TEXTURE_2D_MULTISAMPLE, tex, 0);
+  }
+
   void AttachNewTexture(Enum target, Enum attachment, Enum internal_format, int width, int height) override {
     GLuint tex = 0;
     glGenTextures(1, &tex);
@@ -544,7 +565,7 @@ class GlBackend final : public Backend {
   OSMesaContext ctx_;
   int w_, h_;
   std::vector<std::uint8_t> buffer_;
-  GLuint programs_[9] = {};
+  GLuint programs_[10] = {};
   GLuint instanced_ = 0;
   GLuint rtt_color_ = 0;
   GLuint vao_ = 0, vbo_ = 0, ebo_ = 0;

@@ -132,6 +132,22 @@ struct LayeredShader : softgl::Shader<LayeredShader, LayerVaryings> {
   }
 };
 
+// kFetchSample, in the wide form: texelFetch of the multisample texture on unit 6.
+struct FetchSampleVaryings {
+  softgl::vec4 extra;
+};
+struct FetchSampleShader : softgl::Shader<FetchSampleShader, FetchSampleVaryings> {
+  void Vertex(const softgl::VertexLanes& in, softgl::VertexLanesOut<FetchSampleVaryings>& out) const {
+    out.position = in.attrib[0];
+    out.varyings.extra = in.attrib[2];
+  }
+  void Fragment(const softgl::FragmentLanes<FetchSampleVaryings>& in, softgl::FragmentLanesOut& out) const {
+    using softgl::Int;
+    const softgl::vec4& e = in.varyings.extra;
+    out.color[0] = in.TexelFetchMS(6, Int(in.frag_coord.x) - Int(e.x), Int(in.frag_coord.y) - Int(e.y), Int(e.z));
+  }
+};
+
 // The instanced program, in the wide form (gl_InstanceID is an Int lane).
 struct InstancedVaryings {
   softgl::vec4 color;
@@ -206,6 +222,7 @@ class SoftglBackend final : public Backend {
       case Program::kArray: gl_.UseProgram(array_); break;
       case Program::kVolume: gl_.UseProgram(volume_); break;
       case Program::kArrayShadow: gl_.UseProgram(array_shadow_); break;
+      case Program::kFetchSample: gl_.UseProgram(fetch_sample_); break;
     }
     if (indices.empty()) {
       gl_.DrawArrays(mode, 0, int(vertices.size()));
@@ -414,6 +431,16 @@ class SoftglBackend final : public Backend {
                        Enum filter) override {
     gl_.BlitFramebuffer(sx0, sy0, sx1, sy1, dx0, dy0, dx1, dy1, mask, filter);
   }
+  void AttachNewMultisampleTexture(Enum target, Enum attachment, int samples, Enum internal_format, int width,
+                                   int height) override {
+    const std::uint32_t tex = gl_.GenTexture();
+    gl_.ActiveTexture(softgl::TEXTURE0 + 6);
+    gl_.BindTexture(softgl::TEXTURE_2D_MULTISAMPLE, tex);
+    gl_.TexImage2DMultisample(softgl::TEXTURE_2D_MULTISAMPLE, samples, internal_format, width, height, true);
+    gl_.ActiveTexture(softgl::TEXTURE0);
+    gl_.FramebufferTexture2D(target, attachment, softgl::TEXTURE_2D_MULTISAMPLE, tex, 0);
+  }
+
   void AttachNewTexture(Enum target, Enum attachment, Enum internal_format, int width, int height) override {
     const std::uint32_t tex = gl_.GenTexture();
     gl_.BindTexture(softgl::TEXTURE_2D, tex);
@@ -505,6 +532,7 @@ class SoftglBackend final : public Backend {
   CubeShader cube_;
   ShadowShader shadow_;
   LayeredShader array_, volume_, array_shadow_;
+  FetchSampleShader fetch_sample_;
   std::uint32_t rtt_color_ = 0;
 };
 

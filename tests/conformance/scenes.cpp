@@ -1038,6 +1038,36 @@ void MultisampleResolve(Backend& b) {
 
 // SAMPLE_COVERAGE (half, and a third inverted), SAMPLE_ALPHA_TO_COVERAGE over an alpha gradient, and SAMPLE_MASK
 // with two samples, one quadrant each, resolved.
+// Random triangles drawn into a 4-sample TEXTURE_2D_MULTISAMPLE colour attachment (with a 4-sample depth and
+// stencil renderbuffer, depth-tested), then each sample read by texelFetch into its own quadrant: every sample's
+// colour, not a resolve of them, is compared.
+void MultisampleTexture(Backend& b) {
+  ClearBlack(b);
+  const std::uint32_t fbo = b.GenFramebuffer();
+  b.BindFramebuffer(FRAMEBUFFER, fbo);
+  b.AttachNewMultisampleTexture(FRAMEBUFFER, COLOR_ATTACHMENT0, 4, RGBA8, 64, 64);
+  const std::uint32_t rb = b.GenRenderbuffer();
+  b.BindRenderbuffer(rb);
+  b.RenderbufferStorageMultisample(4, DEPTH24_STENCIL8, 64, 64);
+  b.FramebufferRenderbuffer(FRAMEBUFFER, DEPTH_STENCIL_ATTACHMENT, rb);
+  b.Viewport(0, 0, 64, 64);
+  b.ClearColor(0.1f, 0.1f, 0.2f, 1);
+  b.ClearDepth(1.0);
+  b.Clear(COLOR_BUFFER_BIT | DEPTH_BUFFER_BIT);
+  b.Enable(DEPTH_TEST);
+  std::vector<Vertex> tris = SampleTriangles(7, 120);
+  for (std::size_t i = 0; i < tris.size(); ++i) tris[i].pos.z = float(int(i / 3) % 7) / 7.0f - 0.5f;
+  b.Draw(TRIANGLES, tris);
+  b.Disable(DEPTH_TEST);
+  EndMultisample(b);
+  for (int s = 0; s < 4; ++s) {
+    const float x0 = float(s & 1) * 64, y0 = float(s >> 1) * 64;
+    b.Draw(TRIANGLES, QuadWith({Win(x0, y0), Win(x0 + 64, y0), Win(x0 + 64, y0 + 64), Win(x0, y0 + 64)},
+                               {glm::vec4(x0, y0, float(s), 0), glm::vec4(x0, y0, float(s), 0),
+                                glm::vec4(x0, y0, float(s), 0), glm::vec4(x0, y0, float(s), 0)}),
+           Program::kFetchSample);
+  }
+}
 void MultisampleCoverageOps(Backend& b) {
   ClearBlack(b);
   const std::uint32_t fbo = MultisampleTarget(b);
@@ -1345,6 +1375,7 @@ const std::vector<SceneInfo>& Scenes() {
       {"msaa_coverage", kSize, kSize, Check::kColor, MultisampleCoverage},
       {"msaa_resolve", kSize, kSize, Check::kColor, MultisampleResolve},
       {"msaa_coverage_ops", kSize, kSize, Check::kColor, MultisampleCoverageOps},
+      {"msaa_texture", kSize, kSize, Check::kExact, MultisampleTexture},
       {"cube_map", kSize, kSize, Check::kTexture, CubeMap},
       {"shadow_compare", kSize, kSize, Check::kTexture, ShadowCompare},
       {"texture_array", kSize, kSize, Check::kTexture, TextureArray},

@@ -1,6 +1,7 @@
 // fuzz_api — random sequences of API calls with random arguments on one context. Every call must validate, record
 // OpenGL's error or act, and never crash or touch memory it should not.
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <vector>
 
@@ -28,8 +29,12 @@ struct FuzzShader : softgl::Shader<FuzzShader, Vary> {
     out.color[0] = in.varyings.a + in.Texture(0, &Vary::uv) + in.TextureCube(1, &Vary::dir);
     out.color[1] = in.textures->SampleLod(2, in.varyings.uv, in.varyings.a.w);
     out.color[2] = glm::vec4(in.textures->SampleShadow(3, in.varyings.uv, in.varyings.a.x, {}, {}));
+    const auto small = [](float v) { return std::isfinite(v) ? int(std::clamp(v, -4.0f, 12.0f)) : 0; };
+    const glm::ivec2 texel(small(in.frag_coord.x - 2.0f), small(in.frag_coord.y - 2.0f));
     out.color[3] = in.TextureArray(4, &Vary::dir) + in.Texture3D(5, &Vary::dir) +
-                   glm::vec4(in.textures->SampleArrayShadow(6, in.varyings.dir, in.varyings.a.x, {}, {}));
+                   glm::vec4(in.textures->SampleArrayShadow(6, in.varyings.dir, in.varyings.a.x, {}, {})) +
+                   in.textures->FetchSample(7, texel, small(in.varyings.a.y * 9.0f) - 1) +
+                   in.textures->Fetch(0, texel, small(in.varyings.a.z * 4.0f) - 1);
     out.depth = in.varyings.a.z;
     return in.varyings.a.w > -0.5f;
   }
@@ -45,11 +50,13 @@ constexpr std::uint32_t kModes[] = {POINTS, LINES, LINE_LOOP, LINE_STRIP, TRIANG
 constexpr std::uint32_t kTypes[] = {BYTE, UNSIGNED_BYTE, SHORT, UNSIGNED_SHORT, INT, UNSIGNED_INT, FLOAT};
 constexpr std::uint32_t kIndexTypes[] = {UNSIGNED_BYTE, UNSIGNED_SHORT, UNSIGNED_INT};
 constexpr std::uint32_t kBufferTargets[] = {ARRAY_BUFFER, ELEMENT_ARRAY_BUFFER, COPY_READ_BUFFER, COPY_WRITE_BUFFER};
-constexpr std::uint32_t kTexTargets[] = {TEXTURE_2D, TEXTURE_CUBE_MAP, TEXTURE_2D_ARRAY, TEXTURE_3D};
+constexpr std::uint32_t kTexTargets[] = {TEXTURE_2D, TEXTURE_CUBE_MAP, TEXTURE_2D_ARRAY, TEXTURE_3D,
+                                         TEXTURE_2D_MULTISAMPLE};
 constexpr std::uint32_t kImageTargets[] = {TEXTURE_2D,
                                            TEXTURE_CUBE_MAP_POSITIVE_X, TEXTURE_CUBE_MAP_NEGATIVE_X,
                                            TEXTURE_CUBE_MAP_POSITIVE_Y, TEXTURE_CUBE_MAP_NEGATIVE_Y,
-                                           TEXTURE_CUBE_MAP_POSITIVE_Z, TEXTURE_CUBE_MAP_NEGATIVE_Z};
+                                           TEXTURE_CUBE_MAP_POSITIVE_Z, TEXTURE_CUBE_MAP_NEGATIVE_Z,
+                                           TEXTURE_2D_MULTISAMPLE};
 constexpr std::uint32_t kInternal[] = {RGBA8, RGB8, RG8, R8, RGBA32F, R32F, DEPTH_COMPONENT, DEPTH24_STENCIL8,
                                        DEPTH32F_STENCIL8};
 constexpr std::uint32_t kFormats[] = {RED, RG, RGB, RGBA, DEPTH_COMPONENT, DEPTH_STENCIL};
@@ -342,7 +349,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         const bool small = w >= 0 && h >= 0 && d >= 0 && w <= 64 && h <= 64 && d <= 64;
         if (small) scratch.assign(std::size_t(w) * std::size_t(h) * std::size_t(d) * 16 + 64, in.Byte());
         const void* pixels = small && in.Byte() % 4 ? scratch.data() : nullptr;
-        switch (in.Byte() % 3) {
+        switch (in.Byte() % 4) {
+          case 3:
+            gl.TexImage2DMultisample(in.Byte() % 8 ? TEXTURE_2D_MULTISAMPLE : TEXTURE_2D, in.Int(-1, 10),
+                                     in.Enum(kInternal), w, h, in.Byte() % 2);
+            break;
           case 0:
             gl.TexImage3D(in.Enum(kLayered), in.Int(-1, 5), in.Enum(kInternal), w, h, d, in.Byte() < 8,
                           in.Enum(kFormats), in.Enum(kPixelTypes), pixels);
