@@ -64,12 +64,14 @@ void Context::BindTexture(Enum target, std::uint32_t texture) {
 
 namespace {
 
-// TexImage2D's and TexSubImage2D's client data: RED, RG, RGB, RGBA or DEPTH_COMPONENT as UNSIGNED_BYTE or FLOAT,
+// TexImage2D's and TexSubImage2D's client data: RED, RG, RGB, RGBA or DEPTH_COMPONENT as UNSIGNED_BYTE,
+// UNSIGNED_SHORT (k / 65535), HALF_FLOAT or FLOAT,
 // or DEPTH_STENCIL as UNSIGNED_INT_24_8 or FLOAT_32_UNSIGNED_INT_24_8_REV. False with the error recorded otherwise.
 bool CheckTransfer(ContextState& s, const char* what, Enum format, Enum type) {
   const bool packed = type == UNSIGNED_INT_24_8 || type == FLOAT_32_UNSIGNED_INT_24_8_REV;
-  if (detail::TransferComponents(format) == 0 || (type != UNSIGNED_BYTE && type != FLOAT && !packed))
-    return s.SetError(INVALID_ENUM, what, "format must be RED, RG, RGB, RGBA, DEPTH_COMPONENT or DEPTH_STENCIL and type UNSIGNED_BYTE, FLOAT, UNSIGNED_INT_24_8 or FLOAT_32_UNSIGNED_INT_24_8_REV"), false;
+  if (detail::TransferComponents(format) == 0 ||
+      (type != UNSIGNED_BYTE && type != UNSIGNED_SHORT && type != HALF_FLOAT && type != FLOAT && !packed))
+    return s.SetError(INVALID_ENUM, what, "format must be RED, RG, RGB, RGBA, DEPTH_COMPONENT or DEPTH_STENCIL and type UNSIGNED_BYTE, UNSIGNED_SHORT, HALF_FLOAT, FLOAT, UNSIGNED_INT_24_8 or FLOAT_32_UNSIGNED_INT_24_8_REV"), false;
   if ((format == DEPTH_STENCIL) != packed)
     return s.SetError(INVALID_OPERATION, what, "DEPTH_STENCIL data goes with UNSIGNED_INT_24_8 or FLOAT_32_UNSIGNED_INT_24_8_REV, and only it"), false;
   return true;

@@ -14,6 +14,7 @@ namespace softgl::detail {
 int FormatComponents(Enum f) {
   switch (f) {
     case R8:
+    case R16:
     case R16F:
     case R32F:
     case DEPTH_COMPONENT:
@@ -23,6 +24,7 @@ int FormatComponents(Enum f) {
     case DEPTH24_STENCIL8:
     case DEPTH32F_STENCIL8: return 1;
     case RG8:
+    case RG16:
     case RG16F:
     case RG32F: return 2;
     case RGB8:
@@ -33,6 +35,7 @@ int FormatComponents(Enum f) {
     case SRGB8_ALPHA8:
     case RGBA4:
     case RGB5_A1:
+    case RGBA16:
     case RGBA16F:
     case RGBA32F: return 4;
     default: return 0;
@@ -67,6 +70,9 @@ TexelLayout LayoutOf(Enum f) {
     case RGB565: return TexelLayout::kUnorm565;
     case RGBA4: return TexelLayout::kUnorm4444;
     case RGB5_A1: return TexelLayout::kUnorm5551;
+    case RGBA16: return TexelLayout::kUnorm16x4;
+    case RG16: return TexelLayout::kUnorm16x2;
+    case R16: return TexelLayout::kUnorm16x1;
     case R32F:
     case DEPTH_COMPONENT:
     case DEPTH_COMPONENT16:
@@ -85,10 +91,13 @@ int BytesPerTexel(TexelLayout l) {
     case TexelLayout::kUnorm8x1: return 1;
     case TexelLayout::kFloat32x4: return 16;
     case TexelLayout::kFloat32x2:
+    case TexelLayout::kUnorm16x4:
     case TexelLayout::kFloat16x4: return 8;
     case TexelLayout::kFloat32x1:
     case TexelLayout::kFloat16x2:
+    case TexelLayout::kUnorm16x2:
     case TexelLayout::kFloat11x11x10: return 4;
+    case TexelLayout::kUnorm16x1:
     case TexelLayout::kFloat16x1:
     case TexelLayout::kUnorm565:
     case TexelLayout::kUnorm4444:
@@ -216,6 +225,11 @@ glm::vec4 RawTexel(TexelLayout layout, const std::uint8_t* p) {
       }
     return v;
   }
+  if (IsUnorm16(layout)) {
+    glm::vec4 v(0.0f, 0.0f, 0.0f, 1.0f);
+    for (int c = 0; c < BytesPerTexel(layout) / 2; ++c) v[c] = float(Half(p + 2 * c)) / 65535.0f;
+    return v;
+  }
   switch (layout) {
     case TexelLayout::kFloat32x2: {
       float v[2];
@@ -298,6 +312,15 @@ void StoreSmallFloatTexel(TexelLayout layout, std::uint8_t* p, const glm::vec4& 
       std::memcpy(p, &w, 4);
       break;
     }
+    case TexelLayout::kUnorm16x4:
+    case TexelLayout::kUnorm16x2:
+    case TexelLayout::kUnorm16x1:
+      for (int c = 0; c < BytesPerTexel(layout) / 2; ++c) {  // clamped to [0, 1] (NaN as 0), round(c * 65535)
+        const float v = in[c] > 0.0f ? std::min(in[c], 1.0f) : 0.0f;
+        const auto k = std::uint16_t(std::lrint(v * 65535.0f));
+        std::memcpy(p + 2 * c, &k, 2);
+      }
+      break;
     case TexelLayout::kUnorm565:
     case TexelLayout::kUnorm4444:
     case TexelLayout::kUnorm5551: {  // OpenGL's fixed-point conversion: clamped to [0, 1], round(c * (2^bits - 1))
@@ -370,7 +393,10 @@ void StoreTexel(TextureLevel& level, int i, int j, const glm::vec4& in, bool enc
     case TexelLayout::kFloat11x11x10:
     case TexelLayout::kUnorm565:
     case TexelLayout::kUnorm4444:
-    case TexelLayout::kUnorm5551: StoreSmallFloatTexel(level.layout, p, in); break;
+    case TexelLayout::kUnorm5551:
+    case TexelLayout::kUnorm16x4:
+    case TexelLayout::kUnorm16x2:
+    case TexelLayout::kUnorm16x1: StoreSmallFloatTexel(level.layout, p, in); break;
     case TexelLayout::kFloat32x1: {
       float v = in[0];
       if (IsDepthFormat(level.format)) v = std::isnan(v) ? 0.0f : std::clamp(v, 0.0f, 1.0f);  // depth holds [0, 1]
@@ -385,7 +411,7 @@ namespace {
 // The bytes of one client pixel of `format` and `type`.
 std::size_t TransferPixelBytes(Enum format, Enum type) {
   if (format == DEPTH_STENCIL) return type == FLOAT_32_UNSIGNED_INT_24_8_REV ? 8 : 4;
-  return std::size_t(TransferComponents(format)) * (type == FLOAT ? 4 : 1);
+  return std::size_t(TransferComponents(format)) * (type == FLOAT ? 4 : type == UNSIGNED_BYTE ? 1 : 2);
 }
 // The bytes of one client row of w pixels, aligned.
 std::size_t TransferRowBytes(int w, Enum format, Enum type, int alignment) {
@@ -429,13 +455,13 @@ void UploadPixels(TextureLevel& level, int x, int y, int w, int h, Enum format, 
     return;
   }
   const int n = TransferComponents(format);
-  const std::size_t csize = type == FLOAT ? 4 : 1;
+  const std::size_t csize = TransferPixelBytes(format, type) / std::size_t(n);
   const std::size_t row = TransferRowBytes(w, format, type, alignment);
   const auto* bytes = static_cast<const std::uint8_t*>(pixels);
   for (int j = 0; j < h; ++j)
     for (int i = 0; i < w; ++i) {
       const std::uint8_t* p = bytes + std::size_t(j) * row + std::size_t(i) * std::size_t(n) * csize;
-      if (type != FLOAT && IsUnorm8(level.layout)) {  // bytes into bytes: no conversion
+      if (type == UNSIGNED_BYTE && IsUnorm8(level.layout)) {  // bytes into bytes: no conversion
         std::uint8_t* dst = level.At(x + i, y + j);
         for (int c = 0; c < level.bytes; ++c) dst[c] = c < n ? p[c] : (c == 3 ? 255 : 0);
         if (NoStoredAlpha(level.format)) dst[3] = 255;
@@ -444,6 +470,8 @@ void UploadPixels(TextureLevel& level, int x, int y, int w, int h, Enum format, 
       glm::vec4 in(0.0f, 0.0f, 0.0f, 1.0f);
       for (int c = 0; c < n; ++c) {
         if (type == FLOAT) std::memcpy(&in[c], p + 4 * c, 4);
+        else if (type == UNSIGNED_SHORT) in[c] = float(Half(p + 2 * c)) / 65535.0f;
+        else if (type == HALF_FLOAT) in[c] = HalfToFloat(Half(p + 2 * c));
         else in[c] = float(p[c]) / 255.0f;
       }
       for (int c = 0; c < 4; ++c)
@@ -523,7 +551,7 @@ TextureView MakeView(const TextureObject& texture) {
   view.scale = StorageScale(base.layout);
   // The border colour in storage units; a fixed-point texture takes it clamped to [0, 1], as it takes texels.
   view.border_raw = IsUnorm8(base.layout)    ? glm::clamp(p.border, 0.0f, 1.0f) * 255.0f
-                    : IsPacked16(base.layout) ? glm::clamp(p.border, 0.0f, 1.0f)
+                    : IsWideFixedPoint(base.layout) ? glm::clamp(p.border, 0.0f, 1.0f)
                                               : p.border;
   // q: the last level of the chain, level_base + floor(log2(max size)), but at most level_max.
   int levels = 0;

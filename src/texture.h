@@ -3,7 +3,8 @@
 // Each level keeps its texels in its own format: RGBA8 four bytes a texel (RGB8 too, alpha stored as 255; SRGB8_ALPHA8
 // and SRGB8 the same way, their colour bytes sRGB-encoded), RG8 two, R8 one, RGBA32F sixteen, R32F and the depth
 // formats one float; RG32F two floats; RGBA16F, RG16F and R16F half floats (IEEE binary16), four, two or one;
-// R11F_G11F_B10F one 32-bit word of three unsigned small floats; RGB565, RGBA4 and RGB5_A1 one 16-bit word.
+// R11F_G11F_B10F one 32-bit word of three unsigned small floats; RGB565, RGBA4 and RGB5_A1 one 16-bit word;
+// RGBA16, RG16 and R16 a 16-bit word a channel.
 // 8-bit fixed-point texels are bytes k meaning k / 255; the 16-bit words hold k / (2^bits - 1) a channel.
 // Formats with stencil (DEPTH24_STENCIL8, DEPTH32F_STENCIL8, and STENCIL_INDEX8 for renderbuffers) keep their
 // stencil indices in a plane of their own, one byte a texel.
@@ -39,6 +40,9 @@ enum class TexelLayout : std::uint8_t {
   kUnorm565,   // RGB565: red in bits 11-15, green 5-10, blue 0-4 (OpenGL's UNSIGNED_SHORT_5_6_5 order)
   kUnorm4444,  // RGBA4: red 12-15, green 8-11, blue 4-7, alpha 0-3
   kUnorm5551,  // RGB5_A1: red 11-15, green 6-10, blue 1-5, alpha 0
+  kUnorm16x4,  // RGBA16: four 16-bit words k, each k / 65535
+  kUnorm16x2,  // RG16
+  kUnorm16x1,  // R16
 };
 
 /// The layout of an internal format (kNone if softgl does not support it), and its bytes per texel.
@@ -55,6 +59,13 @@ inline bool IsUnorm8(TexelLayout l) {
 inline bool IsPacked16(TexelLayout l) {
   return l == TexelLayout::kUnorm565 || l == TexelLayout::kUnorm4444 || l == TexelLayout::kUnorm5551;
 }
+/// RGBA16, RG16, R16: 16 bits a channel, read as floats in [0, 1] (storage scale 1), stored clamped and rounded.
+inline bool IsUnorm16(TexelLayout l) {
+  return l == TexelLayout::kUnorm16x4 || l == TexelLayout::kUnorm16x2 || l == TexelLayout::kUnorm16x1;
+}
+/// The fixed-point layouts that are not 8-bit: their values clamp to [0, 1] as 8-bit ones do, but they are read
+/// and blended as floats.
+inline bool IsWideFixedPoint(TexelLayout l) { return IsPacked16(l) || IsUnorm16(l); }
 /// OpenGL's small floats (4.6, section 2.3.4): IEEE binary16 (sign, 5 exponent bits, 10 mantissa bits) and the
 /// unsigned 11- and 10-bit floats (5 exponent bits, 6 or 5 mantissa bits, no sign). From float: rounded to nearest
 /// (ties to even), too large to infinity, NaN to NaN; the unsigned forms take negative values (and -0) as 0.
@@ -206,7 +217,8 @@ bool IsNormalizedFormat(Enum internal_format);  // fixed point: RGBA8, RGB8, RG8
 /// value), 0 if unknown.
 int TransferComponents(Enum format);
 
-/// Converts client pixels (format, type UNSIGNED_BYTE or FLOAT, rows aligned to `alignment`; or DEPTH_STENCIL
+/// Converts client pixels (format, type UNSIGNED_BYTE, UNSIGNED_SHORT (k / 65535), HALF_FLOAT or FLOAT, rows
+/// aligned to `alignment`; or DEPTH_STENCIL
 /// with UNSIGNED_INT_24_8 or FLOAT_32_UNSIGNED_INT_24_8_REV) into the level's format, writing rect (x, y, w, h) of
 /// `level` (already allocated). Depth data leaves a level's stencil as it is; depth-stencil data into a depth
 /// format drops the stencil. Null pixels leave the level as it is.

@@ -1169,3 +1169,75 @@ TEST_CASE("anisotropic filtering: N probes along the footprint's longer axis, at
   gl.GetFloatv(MAX_TEXTURE_MAX_ANISOTROPY, &v);
   CHECK(v == 16.0f);
 }
+
+TEST_CASE("16-bit normalized formats and the UNSIGNED_SHORT and HALF_FLOAT uploads", "[texture][packed]") {
+  Context gl(4, 4);
+  const std::uint32_t tex = gl.GenTexture();
+  gl.BindTexture(TEXTURE_2D, tex);
+  gl.PixelStore(UNPACK_ALIGNMENT, 1);
+  gl.PixelStore(PACK_ALIGNMENT, 1);
+  // R16 from UNSIGNED_SHORT: every value comes back exactly (k / 65535, stored as round(v * 65535)).
+  const std::uint16_t shorts[4] = {0, 1, 32768, 65535};
+  gl.TexImage2D(TEXTURE_2D, 0, R16, 4, 1, 0, RED, UNSIGNED_SHORT, shorts);
+  std::uint16_t back[4] = {9, 9, 9, 9};
+  gl.GetTexImage(TEXTURE_2D, 0, RED, UNSIGNED_SHORT, back);
+  for (int i = 0; i < 4; ++i) CHECK(back[i] == shorts[i]);
+  int bits = 0;
+  gl.GetTexLevelParameteriv(TEXTURE_2D, 0, TEXTURE_RED_SIZE, &bits);
+  CHECK(bits == 16);
+  // RGBA16 from floats: clamped to [0, 1], rounded to 16 bits; sampled as k / 65535.
+  const float floats[4] = {0.25f, 1.5f, -1.0f, 0.1f};
+  gl.TexImage2D(TEXTURE_2D, 0, RGBA16, 1, 1, 0, RGBA, FLOAT, floats);
+  gl.GetTexImage(TEXTURE_2D, 0, RGBA, UNSIGNED_SHORT, back);
+  CHECK(back[0] == 16384);
+  CHECK(back[1] == 65535);
+  CHECK(back[2] == 0);
+  CHECK(back[3] == 6554);  // 6553.5 rounds to even
+  // RGBA16F from HALF_FLOAT: the halves kept bit for bit (1, -2, 65504, the smallest subnormal).
+  const std::uint16_t halves[4] = {0x3C00, 0xC000, 0x7BFF, 0x0001};
+  gl.TexImage2D(TEXTURE_2D, 0, RGBA16F, 1, 1, 0, RGBA, HALF_FLOAT, halves);
+  float got[4] = {};
+  gl.GetTexImage(TEXTURE_2D, 0, RGBA, FLOAT, got);
+  CHECK(got[0] == 1.0f);
+  CHECK(got[1] == -2.0f);
+  CHECK(got[2] == 65504.0f);
+  CHECK(got[3] == std::ldexp(1.0f, -24));
+  // RGBA8 from UNSIGNED_SHORT: 65535 is 255, 32768 (0.50001) is 128.
+  const std::uint16_t rgba[4] = {65535, 32768, 0, 65535};
+  gl.TexImage2D(TEXTURE_2D, 0, RGBA8, 1, 1, 0, RGBA, UNSIGNED_SHORT, rgba);
+  std::uint8_t bytes[4] = {};
+  gl.GetTexImage(TEXTURE_2D, 0, RGBA, UNSIGNED_BYTE, bytes);
+  CHECK((bytes[0] == 255 && bytes[1] == 128 && bytes[2] == 0 && bytes[3] == 255));
+  CHECK(gl.GetError() == NO_ERROR);
+  gl.TexImage2D(TEXTURE_2D, 0, RGBA16, 1, 1, 0, RGBA, 0x1234, rgba);
+  CHECK(gl.GetError() == INVALID_ENUM);
+  gl.TexImage2D(TEXTURE_2D, 0, DEPTH24_STENCIL8, 1, 1, 0, DEPTH_STENCIL, HALF_FLOAT, rgba);
+  CHECK(gl.GetError() == INVALID_OPERATION);
+
+  // RGBA16 as a render target: a clear, then an additive blend, in float, clamped and rounded to 16 bits.
+  const std::uint32_t target = gl.GenTexture(), fbo = gl.GenFramebuffer();
+  gl.BindTexture(TEXTURE_2D, target);
+  gl.TexImage2D(TEXTURE_2D, 0, RGBA16, 4, 4, 0, RGBA, UNSIGNED_SHORT, nullptr);
+  gl.BindFramebuffer(FRAMEBUFFER, fbo);
+  gl.FramebufferTexture2D(FRAMEBUFFER, COLOR_ATTACHMENT0, TEXTURE_2D, target, 0);
+  REQUIRE(gl.CheckFramebufferStatus(FRAMEBUFFER) == FRAMEBUFFER_COMPLETE);
+  gl.ClearColor(0.25f, 0.5f, 1.5f, -1.0f);
+  gl.Clear(COLOR_BUFFER_BIT);
+  testing::SolidShader solid;
+  solid.color = glm::vec4(0.0001f, 0.25f, 0.0f, 0.5f);
+  gl.UseProgram(solid);
+  testing::MakeVertexArray(gl, {{-1, -1, 0, 1}, {1, -1, 0, 1}, {-1, 1, 0, 1}, {1, 1, 0, 1}});
+  gl.Enable(BLEND);
+  gl.BlendFunc(ONE, ONE);
+  gl.DrawArrays(TRIANGLE_STRIP, 0, 4);
+  gl.BindFramebuffer(FRAMEBUFFER, 0);
+  std::vector<std::uint16_t> px(4 * 4 * 4);
+  gl.GetTexImage(TEXTURE_2D, 0, RGBA, UNSIGNED_SHORT, px.data());
+  // Red: (16384 / 65535 + 0.0001) * 65535 = 16390.55 -> 16391: finer than 8 bits could hold. Green:
+  // 32768 + 0.25 * 65535 = 49151.75 -> 49152.
+  CHECK(px[0] == 16391);
+  CHECK(px[1] == 49152);
+  CHECK(px[2] == 65535);
+  CHECK(px[3] == 32768);
+  CHECK(gl.GetError() == NO_ERROR);
+}

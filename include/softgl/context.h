@@ -198,10 +198,12 @@ class Context {
   /// object: texture calls with nothing bound record INVALID_OPERATION.
   void BindTexture(Enum target, std::uint32_t texture);
   /// Defines level `level` of the bound texture: target TEXTURE_2D or a TEXTURE_CUBE_MAP_* face; internal_format
-  /// RGBA8, RGB8, RG8, R8, SRGB8_ALPHA8, SRGB8 (decoded to linear when sampled), RGB565, RGBA4, RGB5_A1, RGBA32F,
+  /// RGBA8, RGB8, RG8, R8, SRGB8_ALPHA8, SRGB8 (decoded to linear when sampled), RGB565, RGBA4, RGB5_A1, RGBA16,
+  /// RG16, R16 (16-bit normalized), RGBA32F,
   /// RG32F, R32F, RGBA16F, RG16F, R16F, R11F_G11F_B10F, DEPTH_COMPONENT (also DEPTH_COMPONENT16/24/32F: all depth
   /// is stored as float), DEPTH24_STENCIL8 or DEPTH32F_STENCIL8 (depth, sampled as a depth texture, and a stencil index each);
-  /// pixels of `format` RED, RG, RGB, RGBA or DEPTH_COMPONENT and `type` UNSIGNED_BYTE or FLOAT, or DEPTH_STENCIL
+  /// pixels of `format` RED, RG, RGB, RGBA or DEPTH_COMPONENT and `type` UNSIGNED_BYTE, UNSIGNED_SHORT (k / 65535),
+  /// HALF_FLOAT (IEEE binary16) or FLOAT, or DEPTH_STENCIL
   /// with UNSIGNED_INT_24_8 or FLOAT_32_UNSIGNED_INT_24_8_REV, rows bottom first, each row aligned to
   /// UNPACK_ALIGNMENT; null pixels leave the level zero. Errors: bad target, format or type: INVALID_ENUM;
   /// unsupported internal format, negative or too large size, level out of range, border != 0, a non-square cube

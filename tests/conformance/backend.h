@@ -54,10 +54,12 @@ struct LayeredDesc {
 /// A 2D RGBA8 (or `internal_format`) texture for unit 0: the levels given (level 0 first), or level 0 and
 /// GenerateMipmap.
 struct TextureDesc {
-  Enum internal_format = softgl::RGBA8;  // RGBA8 or SRGB8_ALPHA8
+  Enum internal_format = softgl::RGBA8;  // RGBA8 or SRGB8_ALPHA8, or any with `type` UNSIGNED_SHORT or HALF_FLOAT
+  Enum type = softgl::UNSIGNED_BYTE;     // UNSIGNED_BYTE: `rgba`; UNSIGNED_SHORT or HALF_FLOAT: `shorts`
   struct Level {
     int width = 0, height = 0;
-    std::vector<std::uint8_t> rgba;  // rows bottom first
+    std::vector<std::uint8_t> rgba;     // rows bottom first
+    std::vector<std::uint16_t> shorts;  // the same, 16 bits a channel
   };
   std::vector<Level> levels;
   bool generate_mipmap = false;

@@ -341,7 +341,9 @@ class GlBackend final : public Backend {
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
     for (std::size_t l = 0; l < d.levels.size(); ++l)
       glTexImage2D(GL_TEXTURE_2D, GLint(l), GLint(d.internal_format), d.levels[l].width, d.levels[l].height, 0, GL_RGBA,
-                   GL_UNSIGNED_BYTE, d.levels[l].rgba.data());
+                   GLenum(d.type),
+                   d.type == softgl::UNSIGNED_BYTE ? static_cast<const void*>(d.levels[l].rgba.data())
+                                                   : static_cast<const void*>(d.levels[l].shorts.data()));
     if (d.generate_mipmap) glGenerateMipmap(GL_TEXTURE_2D);
     else glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, GLint(d.levels.size()) - 1);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GLint(d.min_filter));

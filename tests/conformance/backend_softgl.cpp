@@ -325,7 +325,8 @@ class SoftglBackend final : public Backend {
     gl_.PixelStore(softgl::UNPACK_ALIGNMENT, 1);
     for (std::size_t l = 0; l < d.levels.size(); ++l)
       gl_.TexImage2D(softgl::TEXTURE_2D, int(l), d.internal_format, d.levels[l].width, d.levels[l].height, 0, softgl::RGBA,
-                     softgl::UNSIGNED_BYTE, d.levels[l].rgba.data());
+                     d.type, d.type == softgl::UNSIGNED_BYTE ? static_cast<const void*>(d.levels[l].rgba.data())
+                                                             : static_cast<const void*>(d.levels[l].shorts.data()));
     if (d.generate_mipmap) gl_.GenerateMipmap(softgl::TEXTURE_2D);
     else gl_.TexParameteri(softgl::TEXTURE_2D, softgl::TEXTURE_MAX_LEVEL, int(d.levels.size()) - 1);
     gl_.TexParameteri(softgl::TEXTURE_2D, softgl::TEXTURE_MIN_FILTER, int(d.min_filter));

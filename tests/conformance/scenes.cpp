@@ -12,6 +12,7 @@
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 #include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/packing.hpp>
 
 namespace conformance {
 
@@ -719,9 +720,10 @@ void SrgbFramebuffer(Backend& b) {
 // gradients added over it (ONE, ONE: sums up to 4), then a quad subtracted (FUNC_REVERSE_SUBTRACT) that brings the
 // sums back into [0, 1] only where they went past 1 unclamped; the quadrant is then blitted into the context's
 // framebuffer (NEAREST), which clamps and converts to 8 bits.
-void FloatTargets(Backend& b) {
+// Four framebuffer objects, one a quadrant, each with a colour texture of formats[q]: a clear to values outside
+// [0, 1], three overlapping quads added by blending, a reverse-subtracted one, then blitted to the window.
+void BlendedTargets(Backend& b, const Enum formats[4]) {
   ClearBlack(b);
-  const Enum formats[4] = {RGBA16F, R11F_G11F_B10F, RG16F, RGBA32F};
   for (int q = 0; q < 4; ++q) {
     const int x0 = (q % 2) * 64, y0 = (q / 2) * 64;
     b.BindFramebuffer(FRAMEBUFFER, b.GenFramebuffer());
@@ -752,6 +754,48 @@ void FloatTargets(Backend& b) {
     b.BindFramebuffer(DRAW_FRAMEBUFFER, 0);
     b.BlitFramebuffer(x0, y0, x0 + 64, y0 + 64, x0, y0, x0 + 64, y0 + 64, COLOR_BUFFER_BIT, NEAREST);
     b.BindFramebuffer(FRAMEBUFFER, 0);
+  }
+}
+
+void FloatTargets(Backend& b) {
+  const Enum formats[4] = {RGBA16F, R11F_G11F_B10F, RG16F, RGBA32F};
+  BlendedTargets(b, formats);
+}
+
+// 16-bit normalized render targets: the same drawing into RGBA16, RG16, R16 and RGBA16, values clamped to [0, 1]
+// and kept to 16 bits.
+void Unorm16Targets(Backend& b) {
+  const Enum formats[4] = {RGBA16, RG16, R16, RGBA16};
+  BlendedTargets(b, formats);
+}
+
+// Textures of 16 bits a channel: RGBA16, RG16 and R16 from UNSIGNED_SHORT data, and RGBA16F from HALF_FLOAT data,
+// gradients finer than 8 bits hold (steps of 1/4096) and a checker, magnified with LINEAR filtering.
+void Texture16Bit(Backend& b) {
+  ClearBlack(b);
+  const Enum formats[4] = {RGBA16, RG16, R16, RGBA16F};
+  for (int q = 0; q < 4; ++q) {
+    TextureDesc d;
+    d.internal_format = formats[q];
+    d.type = formats[q] == RGBA16F ? HALF_FLOAT : UNSIGNED_SHORT;
+    d.min_filter = d.mag_filter = LINEAR;
+    d.wrap_s = d.wrap_t = CLAMP_TO_EDGE;
+    TextureDesc::Level l;
+    l.width = l.height = 8;
+    for (int j = 0; j < 8; ++j)
+      for (int i = 0; i < 8; ++i) {
+        const float v[4] = {float(i * 16 + j) / 4096.0f + 0.3f, float(j * 9 + 3) / 80.0f, (i + j) % 2 ? 0.8f : 0.1f,
+                            1.0f};
+        for (float c : v)
+          l.shorts.push_back(d.type == HALF_FLOAT ? glm::packHalf1x16(c * 1.5f)
+                                                  : std::uint16_t(std::lround(c * 65535.0f)));
+      }
+    d.levels.push_back(std::move(l));
+    b.SetTexture(d);
+    const float x0 = float(q % 2) * 64, y0 = float(q / 2) * 64;
+    b.Draw(TRIANGLES, QuadWith({Win(x0, y0), Win(x0 + 64, y0), Win(x0 + 64, y0 + 64), Win(x0, y0 + 64)},
+                               Uv({0, 0}, {1, 0}, {1, 1}, {0, 1})),
+           Program::kTexture);
   }
 }
 
@@ -1364,6 +1408,8 @@ const std::vector<SceneInfo>& Scenes() {
       {"srgb_texture", kSize, kSize, Check::kTexture, SrgbTexture},
       {"srgb_framebuffer", kSize, kSize, Check::kTexture, SrgbFramebuffer},
       {"float_targets", kSize, kSize, Check::kColor, FloatTargets},
+      {"unorm16_targets", kSize, kSize, Check::kColor, Unorm16Targets},
+      {"texture_16bit", kSize, kSize, Check::kTexture, Texture16Bit},
       {"packed16_targets", kSize, kSize, Check::kStep4, Packed16Targets},
       {"packed16_blending", kSize, kSize, Check::kStep4, Packed16Blending},
       {"copy_tex_image", kSize, kSize, Check::kColor, CopyTexImage},
