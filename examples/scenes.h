@@ -54,6 +54,11 @@ softgl::Image Srgb(int width, int height);
 /// so that the pixels show: staircase edges on the left, smoother with every doubling of the samples.
 softgl::Image Multisample(int width, int height);
 
+/// Colour formats for small memory: a lit torus in RGBA8 (4 bytes a pixel), RGB565, RGB5_A1 and RGBA4 (2 bytes
+/// a pixel), left to right, each with a DEPTH_COMPONENT16 depth buffer: the smooth shading keeps 256 steps a
+/// channel on the left, 32 or 64 in the middle panels, and shows bands of 16 on the right.
+softgl::Image SmallFormats(int width, int height);
+
 /// Shadow mapping: depth from the light into a depth texture through a framebuffer object, then the lit pass
 /// samples it with depth comparison, 3 x 3 taps of 2 x 2 percentage-closer filtering.
 softgl::Image ShadowMap(int width, int height);

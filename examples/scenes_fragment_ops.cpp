@@ -367,4 +367,41 @@ softgl::Image Multisample(int width, int height) {
   return gl.ReadPixels();
 }
 
+softgl::Image SmallFormats(int width, int height) {
+  softgl::Context gl(width, height);
+  // Four panels, left to right RGBA8, RGB565, RGB5_A1 and RGBA4 colour (with a DEPTH_COMPONENT16 depth buffer),
+  // each drawn into a framebuffer object of those renderbuffers and copied into the panel by a blit.
+  static const Mesh torus = MakeTorus(48, 24, 0.62f, 0.26f);
+  const int panel = width / 4;
+  const softgl::Enum formats[4] = {softgl::RGBA8, softgl::RGB565, softgl::RGB5_A1, softgl::RGBA4};
+  UploadLitMesh(gl, torus);
+  for (int p = 0; p < 4; ++p) {
+    const std::uint32_t fbo = gl.GenFramebuffer(), color = gl.GenRenderbuffer(), depth = gl.GenRenderbuffer();
+    gl.BindFramebuffer(softgl::FRAMEBUFFER, fbo);
+    gl.BindRenderbuffer(softgl::RENDERBUFFER, color);
+    gl.RenderbufferStorage(softgl::RENDERBUFFER, formats[p], panel, height);
+    gl.FramebufferRenderbuffer(softgl::FRAMEBUFFER, softgl::COLOR_ATTACHMENT0, softgl::RENDERBUFFER, color);
+    gl.BindRenderbuffer(softgl::RENDERBUFFER, depth);
+    gl.RenderbufferStorage(softgl::RENDERBUFFER, softgl::DEPTH_COMPONENT16, panel, height);
+    gl.FramebufferRenderbuffer(softgl::FRAMEBUFFER, softgl::DEPTH_ATTACHMENT, softgl::RENDERBUFFER, depth);
+    gl.Viewport(0, 0, panel, height);
+    gl.ClearColor(0.08f, 0.1f, 0.16f, 1.0f);
+    gl.Clear(softgl::COLOR_BUFFER_BIT | softgl::DEPTH_BUFFER_BIT);
+    gl.Enable(softgl::DEPTH_TEST);
+    LitShader lit;
+    lit.ambient = 0.08f;
+    lit.model = glm::rotate(kIdentity, 1.0f, glm::vec3(1.0f, 0.3f, 0.0f));
+    lit.mvp = Projection(panel, height, 38.0f, 0.1f, 10.0f) *
+              glm::lookAt(glm::vec3(0.0f, 0.4f, 3.4f), glm::vec3(0.0f), glm::vec3(0, 1, 0)) * lit.model;
+    gl.UseProgram(lit);
+    DrawMesh(gl, torus);
+    gl.Disable(softgl::DEPTH_TEST);
+    gl.BindFramebuffer(softgl::DRAW_FRAMEBUFFER, 0);
+    gl.BlitFramebuffer(0, 0, panel, height, p * panel, 0, (p + 1) * panel, height, softgl::COLOR_BUFFER_BIT,
+                       softgl::NEAREST);
+  }
+  gl.BindFramebuffer(softgl::FRAMEBUFFER, 0);
+  return gl.ReadPixels();
+}
+
 }  // namespace scenes

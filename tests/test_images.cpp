@@ -83,6 +83,10 @@ TEST_CASE("image: multisample", "[image][multisample]") {
 
 TEST_CASE("image: shadow map", "[image]") { CompareWithGolden("shadow_map", scenes::ShadowMap(640, 480)); }
 
+TEST_CASE("image: small formats", "[image][packed]") {
+  CompareWithGolden("small_formats", scenes::SmallFormats(800, 240));
+}
+
 TEST_CASE("image: cascaded shadows", "[image][layers]") {
   CompareWithGolden("cascaded_shadows", scenes::CascadedShadows(960, 360));
 }

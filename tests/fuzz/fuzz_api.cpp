@@ -58,9 +58,10 @@ constexpr std::uint32_t kImageTargets[] = {TEXTURE_2D,
                                            TEXTURE_CUBE_MAP_POSITIVE_Z, TEXTURE_CUBE_MAP_NEGATIVE_Z,
                                            TEXTURE_2D_MULTISAMPLE};
 constexpr std::uint32_t kInternal[] = {RGBA8, RGB8, RG8, R8, RGBA32F, R32F, DEPTH_COMPONENT, DEPTH24_STENCIL8,
-                                       DEPTH32F_STENCIL8};
+                                       DEPTH32F_STENCIL8, RGBA16, R16, RGBA16F};
 constexpr std::uint32_t kFormats[] = {RED, RG, RGB, RGBA, DEPTH_COMPONENT, DEPTH_STENCIL};
-constexpr std::uint32_t kPixelTypes[] = {UNSIGNED_BYTE, FLOAT, UNSIGNED_INT_24_8, FLOAT_32_UNSIGNED_INT_24_8_REV};
+constexpr std::uint32_t kPixelTypes[] = {UNSIGNED_BYTE, FLOAT, UNSIGNED_INT_24_8, FLOAT_32_UNSIGNED_INT_24_8_REV,
+                                         UNSIGNED_SHORT, HALF_FLOAT};
 constexpr std::uint32_t kParams[] = {TEXTURE_MIN_FILTER, TEXTURE_MAG_FILTER, TEXTURE_WRAP_S, TEXTURE_WRAP_T,
                                      TEXTURE_BASE_LEVEL, TEXTURE_MAX_LEVEL, TEXTURE_MIN_LOD, TEXTURE_MAX_LOD,
                                      TEXTURE_LOD_BIAS, TEXTURE_COMPARE_MODE, TEXTURE_COMPARE_FUNC};
