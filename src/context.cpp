@@ -96,6 +96,7 @@ bool* CapFlag(ContextState& s, Enum cap) {
     case PRIMITIVE_RESTART_FIXED_INDEX: return &s.primitive_restart_fixed;
     case MULTISAMPLE: return &s.ops.multisample.multisample;
     case SAMPLE_ALPHA_TO_COVERAGE: return &s.ops.multisample.alpha_to_coverage;
+    case SAMPLE_ALPHA_TO_ONE: return &s.ops.multisample.alpha_to_one;
     case SAMPLE_COVERAGE: return &s.ops.multisample.sample_coverage;
     case SAMPLE_MASK: return &s.ops.multisample.sample_mask;
     default: return nullptr;

@@ -51,6 +51,7 @@ struct OcclusionCounter {
 struct MultisampleState {
   bool multisample = true;
   bool alpha_to_coverage = false;
+  bool alpha_to_one = false;
   bool sample_coverage = false;
   float coverage_value = 1.0f;  // SampleCoverage, clamped to [0, 1]
   bool coverage_invert = false;

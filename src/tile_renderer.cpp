@@ -145,8 +145,8 @@ struct FragmentStage {
     InterpolateVaryings(blocks);
     if (has_centroid && ops.multisample.multisample) InterpolateCentroids(blocks, centroid, draw->interpolation);
     Shade(blocks);
-    // SAMPLE_ALPHA_TO_COVERAGE, SAMPLE_COVERAGE and SAMPLE_MASK narrow each lane's samples (while MULTISAMPLE is
-    // enabled: section 17.3.1).
+    // SAMPLE_ALPHA_TO_COVERAGE, SAMPLE_COVERAGE and SAMPLE_MASK narrow each lane's samples, and SAMPLE_ALPHA_TO_ONE
+    // then sets every output's alpha to 1 (while MULTISAMPLE is enabled: section 17.3.1).
     const MultisampleState& ms = ops.multisample;
     std::uint32_t keep = (std::uint32_t(1) << samples) - 1;
     if (ms.multisample && ms.sample_coverage) keep &= CoverageMask(ms, samples);
@@ -163,6 +163,9 @@ struct FragmentStage {
           if (!((m >> s) & 1u)) blocks.sample_live[b][s] &= ~(1u << lane);
       }
     }
+    if (ms.multisample && ms.alpha_to_one)  // (after alpha to coverage has read the alpha)
+      for (int b = 0; b < blocks.count; ++b)
+        for (int o = 0; o < outputs; ++o) blocks.out[b].color[o].w = Float(1.0f);
     std::uint32_t shaded[BlockBuffer::kCapacity];
     std::copy(blocks.live, blocks.live + blocks.count, shaded);
     for (int s = 0; s < samples; ++s) {

@@ -235,7 +235,8 @@ TEST_CASE_METHOD(Fixture, "multisample: depth is tested per sample at each sampl
   CHECK(fbo.Red(9, 5) == 255);
 }
 
-TEST_CASE("multisample: SAMPLE_COVERAGE, SAMPLE_MASK and SAMPLE_ALPHA_TO_COVERAGE keep samples", "[multisample]") {
+TEST_CASE("multisample: SAMPLE_COVERAGE, SAMPLE_MASK and SAMPLE_ALPHA_TO_COVERAGE keep samples; SAMPLE_ALPHA_TO_ONE",
+          "[multisample]") {
   Context gl(8, 8);
   MultisampleFbo fbo(gl, 4, 8, 8);
   SolidShader shader;
@@ -269,6 +270,24 @@ TEST_CASE("multisample: SAMPLE_COVERAGE, SAMPLE_MASK and SAMPLE_ALPHA_TO_COVERAG
   CHECK(fill() == 0);
   shader.color = glm::vec4(1, 1, 1, 0.76f);  // all: alpha > 3 / 4
   CHECK(fill() == 255);
+  // SAMPLE_ALPHA_TO_ONE: the coverage still comes from the shader's alpha (three samples of 0.74), then the samples
+  // store alpha 1: resolved, 3 x 255 over 4 (not 3 x 189 over 4 = 142).
+  auto alpha = [&] {
+    std::uint8_t px[4];
+    gl.ReadPixel(2, 2, px);
+    return int(px[3]);
+  };
+  shader.color = glm::vec4(1, 1, 1, 0.74f);
+  CHECK(std::abs(fill() - 191) <= 1);
+  CHECK(std::abs(alpha() - 142) <= 1);
+  gl.Enable(SAMPLE_ALPHA_TO_ONE);
+  CHECK(std::abs(fill() - 191) <= 1);
+  CHECK(std::abs(alpha() - 191) <= 1);
+  gl.Disable(SAMPLE_ALPHA_TO_COVERAGE);
+  CHECK(fill() == 255);
+  CHECK(alpha() == 255);
+  gl.Disable(SAMPLE_ALPHA_TO_ONE);
+  gl.Enable(SAMPLE_ALPHA_TO_COVERAGE);
   gl.Disable(MULTISAMPLE);  // the coverage operations act only while MULTISAMPLE is enabled
   shader.color = glm::vec4(1, 1, 1, 0.1f);
   CHECK(fill() == 255);

@@ -416,7 +416,7 @@ class Context {
   /// (draws, clears and blits into SRGB8_ALPHA8 and SRGB8 attachments encode linear colours, blending decodes the
   /// stored colour first), MULTISAMPLE (enabled by default: into a multisampled framebuffer, triangles cover each
   /// sample at its own position; disabled, a pixel's coverage at its centre goes to all its samples),
-  /// SAMPLE_ALPHA_TO_COVERAGE, SAMPLE_COVERAGE, SAMPLE_MASK (see SampleCoverage, SampleMaski); otherwise
+  /// SAMPLE_ALPHA_TO_COVERAGE, SAMPLE_ALPHA_TO_ONE, SAMPLE_COVERAGE, SAMPLE_MASK (see SampleCoverage, SampleMaski); otherwise
   /// INVALID_ENUM. All but MULTISAMPLE start disabled.
   void Enable(Enum cap);
   void Disable(Enum cap);
@@ -486,7 +486,8 @@ class Context {
   // the fragment shader, in OpenGL's order (section 17.3.1), by: SAMPLE_ALPHA_TO_COVERAGE (output 0's alpha keeps
   // sample s where alpha > s / samples: 0 keeps none, 1 all; llvmpipe's mapping), SAMPLE_COVERAGE (the first
   // floor(value * samples) samples, or the others when inverted; Mesa's choice) and SAMPLE_MASK (bit s keeps
-  // sample s). Each kept sample then goes through the stencil and depth tests, blending and the write on its own.
+  // sample s). SAMPLE_ALPHA_TO_ONE then sets the alpha of every colour output to 1. Each kept sample then goes
+  // through the stencil and depth tests, blending and the write on its own.
   // Into a single-sampled framebuffer, or with MULTISAMPLE disabled, they do nothing.
   /// SampleCoverage's value (clamped to [0, 1]; default 1) and whether its mask is inverted (default false).
   void SampleCoverage(float value, bool invert);

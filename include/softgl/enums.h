@@ -99,6 +99,7 @@ inline constexpr Enum PRIMITIVE_RESTART_FIXED_INDEX = 0x8D69;  // 2^N - 1 for N-
 inline constexpr Enum FRAMEBUFFER_SRGB = 0x8DB9;  // sRGB encoding on store (and decoding for blending) into sRGB buffers
 inline constexpr Enum MULTISAMPLE = 0x809D;               // per-sample coverage into multisampled buffers (on by default)
 inline constexpr Enum SAMPLE_ALPHA_TO_COVERAGE = 0x809E;  // output 0's alpha picks the samples covered
+inline constexpr Enum SAMPLE_ALPHA_TO_ONE = 0x809F;       // then every output's alpha becomes 1
 inline constexpr Enum SAMPLE_COVERAGE = 0x80A0;           // SampleCoverage's mask
 inline constexpr Enum SAMPLE_MASK = 0x8E51;               // SampleMaski's mask
 
