@@ -283,10 +283,10 @@ class Context {
   void GetTexParameteriv(Enum target, Enum pname, int* params) const;
   /// One level of the bound texture (target TEXTURE_2D, a cube face, TEXTURE_2D_ARRAY, TEXTURE_3D or
   /// TEXTURE_2D_MULTISAMPLE): TEXTURE_WIDTH, TEXTURE_HEIGHT, TEXTURE_DEPTH (layers or slices; 1 for 2D),
-  /// TEXTURE_SAMPLES (0 but for a multisample texture), TEXTURE_FIXED_SAMPLE_LOCATIONS (1), TEXTURE_INTERNAL_FORMAT, TEXTURE_RED_SIZE, _GREEN_SIZE, _BLUE_SIZE, _ALPHA_SIZE,
-  /// TEXTURE_DEPTH_SIZE, TEXTURE_STENCIL_SIZE (the format's bits; all 0 for an undefined level, whose internal
-  /// format reads RGBA). Bad target or name: INVALID_ENUM; level out of range: INVALID_VALUE; nothing bound:
-  /// INVALID_OPERATION.
+  /// TEXTURE_SAMPLES (0 but for a multisample texture), TEXTURE_FIXED_SAMPLE_LOCATIONS (1),
+  /// TEXTURE_INTERNAL_FORMAT, TEXTURE_RED_SIZE, _GREEN_SIZE, _BLUE_SIZE, _ALPHA_SIZE, TEXTURE_DEPTH_SIZE,
+  /// TEXTURE_STENCIL_SIZE (the format's bits; all 0 for an undefined level, whose internal format reads RGBA).
+  /// Bad target or name: INVALID_ENUM; level out of range: INVALID_VALUE; nothing bound: INVALID_OPERATION.
   void GetTexLevelParameteriv(Enum target, int level, Enum pname, int* params) const;
   void GetTexLevelParameterfv(Enum target, int level, Enum pname, float* params) const;
   /// UNPACK_ALIGNMENT (TexImage2D) and PACK_ALIGNMENT (ReadPixels): 1, 2, 4 (default) or 8, else INVALID_VALUE;
@@ -323,8 +323,9 @@ class Context {
   void FramebufferRenderbuffer(Enum target, Enum attachment, Enum renderbuffer_target, std::uint32_t renderbuffer);
   /// What an attachment point holds: FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE (NONE, TEXTURE or RENDERBUFFER),
   /// _OBJECT_NAME, _TEXTURE_LEVEL, _TEXTURE_CUBE_MAP_FACE (0 but for a cube map), _TEXTURE_LAYER (0 but for
-  /// FramebufferTextureLayer). Errors: bad target, attachment or pname, a texture name asked of a renderbuffer: INVALID_ENUM; framebuffer 0 bound, a texture name asked of an
-  /// empty point, DEPTH_STENCIL_ATTACHMENT while depth and stencil hold different images: INVALID_OPERATION.
+  /// FramebufferTextureLayer). Errors: bad target, attachment or pname, a texture name asked of a renderbuffer:
+  /// INVALID_ENUM; framebuffer 0 bound, a texture name asked of an empty point, DEPTH_STENCIL_ATTACHMENT while
+  /// depth and stencil hold different images: INVALID_OPERATION.
   void GetFramebufferAttachmentParameteriv(Enum target, Enum attachment, Enum pname, int* params);
   /// FRAMEBUFFER_COMPLETE, or why not: INCOMPLETE_ATTACHMENT (an attachment's image is not defined or has no size,
   /// or its format cannot be rendered to that point: colour formats at colour points, depth formats at
@@ -416,8 +417,8 @@ class Context {
   /// (draws, clears and blits into SRGB8_ALPHA8 and SRGB8 attachments encode linear colours, blending decodes the
   /// stored colour first), MULTISAMPLE (enabled by default: into a multisampled framebuffer, triangles cover each
   /// sample at its own position; disabled, a pixel's coverage at its centre goes to all its samples),
-  /// SAMPLE_ALPHA_TO_COVERAGE, SAMPLE_ALPHA_TO_ONE, SAMPLE_COVERAGE, SAMPLE_MASK (see SampleCoverage, SampleMaski); otherwise
-  /// INVALID_ENUM. All but MULTISAMPLE start disabled.
+  /// SAMPLE_ALPHA_TO_COVERAGE, SAMPLE_ALPHA_TO_ONE, SAMPLE_COVERAGE, SAMPLE_MASK (see SampleCoverage,
+  /// SampleMaski); otherwise INVALID_ENUM. All but MULTISAMPLE start disabled.
   void Enable(Enum cap);
   void Disable(Enum cap);
   bool IsEnabled(Enum cap);

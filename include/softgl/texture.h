@@ -1,10 +1,10 @@
 // softgl/texture.h — textures as the shader stages see them: sampling by texture unit.
 //
 // A draw hands its shader a `Textures`: for each of the kMaxTextureUnits units, the TEXTURE_2D, TEXTURE_CUBE_MAP,
-// TEXTURE_2D_ARRAY, TEXTURE_3D and TEXTURE_2D_MULTISAMPLE textures bound to it and their sampling state. Filtering, wrapping and the level of detail
-// follow the OpenGL 4.6 specification (section 8.14): texel centres at +0.5, wrap applied per texel, lambda from
-// the screen-space derivatives of the texture coordinates. Sampling a unit with no texture, or an incomplete one,
-// returns (0, 0, 0, 1), as OpenGL does.
+// TEXTURE_2D_ARRAY, TEXTURE_3D and TEXTURE_2D_MULTISAMPLE textures bound to it and their sampling state.
+// Filtering, wrapping and the level of detail follow the OpenGL 4.6 specification (section 8.14): texel centres at
+// +0.5, wrap applied per texel, lambda from the screen-space derivatives of the texture coordinates. Sampling a
+// unit with no texture, or an incomplete one, returns (0, 0, 0, 1), as OpenGL does.
 //
 // In a fragment shader use FragmentLanes::Texture(unit, uv) (wide shaders: derivatives taken across the block) or
 // FragmentIn::Texture(unit, &Varyings::uv) (derivatives across the 2x2 quad), or pass derivatives yourself; the
@@ -99,7 +99,7 @@ class Textures {
   void SampleArrayShadowLanes(int unit, const Lanes& c, const float ref[16], float out[16]) const;
   void Sample3DLanes(int unit, const Lanes& c, float bias, float out[4][16]) const;  ///< Sample3D
   void Sample3DLodLanes(int unit, const Lanes& c, const float lod[16], float out[4][16]) const;
-  /// Fetch and FetchSample, lane by lane: texel (x[l], y[l]) at level (or sample) which[l].
+  /// Fetch and FetchSample, lane by lane: texel (x[l], y[l]) at level[l] (or sample[l]).
   void FetchLanes(int unit, const int x[16], const int y[16], const int level[16], float out[4][16]) const;
   void FetchSampleLanes(int unit, const int x[16], const int y[16], const int sample[16], float out[4][16]) const;
 
