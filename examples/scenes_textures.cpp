@@ -268,18 +268,33 @@ struct ShadowedShader : softgl::Shader<ShadowedShader, ShadowVaryings> {
 
 }  // namespace
 
+namespace {
+
+// The meshes of the two shadow scenes, uploaded in this order: a ground quad of half size `half`, a cube, a torus.
+struct ShadowProps {
+  Mesh floor, cube, torus;
+  std::uint32_t floor_vao, cube_vao, torus_vao;
+  ShadowProps(softgl::Context& gl, float half, const std::uint8_t ground[4])
+      : floor(MakeQuad(half, ground)), cube(MakeCube()), torus(MakeTorus(40, 20, 0.55f, 0.22f)),
+        floor_vao(UploadLitMesh(gl, floor)), cube_vao(UploadLitMesh(gl, cube)), torus_vao(UploadLitMesh(gl, torus)) {}
+};
+
+// A mesh placed in the world.
+struct Object {
+  std::uint32_t vao;
+  const Mesh* mesh;
+  glm::mat4 model;
+};
+
+}  // namespace
+
 softgl::Image ShadowMap(int width, int height) {
   softgl::Context gl(width, height);
   constexpr int kShadowSize = 1024;
   const std::uint8_t ground[4] = {200, 200, 190, 255};
-  const Mesh floor = MakeQuad(5.0f, ground), cube = MakeCube(), torus = MakeTorus(40, 20, 0.55f, 0.22f);
-  const std::uint32_t floor_vao = UploadLitMesh(gl, floor), cube_vao = UploadLitMesh(gl, cube),
-                      torus_vao = UploadLitMesh(gl, torus);
-  struct Object {
-    std::uint32_t vao;
-    const Mesh* mesh;
-    glm::mat4 model;
-  };
+  const ShadowProps props(gl, 5.0f, ground);
+  const Mesh &floor = props.floor, &cube = props.cube, &torus = props.torus;
+  const std::uint32_t floor_vao = props.floor_vao, cube_vao = props.cube_vao, torus_vao = props.torus_vao;
   const Object objects[] = {
       {floor_vao, &floor, kIdentity},
       {cube_vao, &cube, glm::rotate(glm::translate(kIdentity, glm::vec3(-0.9f, 0.5f, 0.3f)), 0.5f, glm::vec3(0, 1, 0))},
@@ -411,14 +426,9 @@ softgl::Image CascadedShadows(int width, int height) {
   softgl::Context gl(width, height);
   constexpr int kShadowSize = 1024;
   const std::uint8_t ground[4] = {205, 200, 185, 255};
-  const Mesh floor = MakeQuad(60.0f, ground), cube = MakeCube(), torus = MakeTorus(40, 20, 0.55f, 0.22f);
-  const std::uint32_t floor_vao = UploadLitMesh(gl, floor), cube_vao = UploadLitMesh(gl, cube),
-                      torus_vao = UploadLitMesh(gl, torus);
-  struct Object {
-    std::uint32_t vao;
-    const Mesh* mesh;
-    glm::mat4 model;
-  };
+  const ShadowProps props(gl, 60.0f, ground);
+  const Mesh &floor = props.floor, &cube = props.cube, &torus = props.torus;
+  const std::uint32_t floor_vao = props.floor_vao, cube_vao = props.cube_vao, torus_vao = props.torus_vao;
   // Two rows of pillars running away from the camera, and a torus on each near pillar.
   std::vector<Object> objects = {{floor_vao, &floor, kIdentity}};
   for (int i = 0; i < 12; ++i) {
