@@ -286,6 +286,17 @@ struct Object {
   glm::mat4 model;
 };
 
+// Draws each object with `shader` (bound already), its model and mvp = vp * model set first.
+template <class Shader, class Objects>
+void DrawObjects(softgl::Context& gl, Shader& shader, const glm::mat4& vp, const Objects& objects) {
+  for (const Object& o : objects) {
+    shader.model = o.model;
+    shader.mvp = vp * o.model;
+    gl.BindVertexArray(o.vao);
+    DrawMesh(gl, *o.mesh);
+  }
+}
+
 }  // namespace
 
 softgl::Image ShadowMap(int width, int height) {
@@ -335,12 +346,7 @@ softgl::Image ShadowMap(int width, int height) {
   lit.light_dir = light_dir;
   lit.texel = 1.0f / float(kShadowSize);
   gl.UseProgram(lit);
-  for (const Object& o : objects) {
-    lit.model = o.model;
-    lit.mvp = vp * o.model;
-    gl.BindVertexArray(o.vao);
-    DrawMesh(gl, *o.mesh);
-  }
+  DrawObjects(gl, lit, vp, objects);
   return gl.ReadPixels();
 }
 
@@ -489,12 +495,7 @@ softgl::Image CascadedShadows(int width, int height) {
   for (int half = 0; half < 2; ++half) {
     gl.Viewport(half * (width / 2), 0, width / 2, height);
     lit.tint = half == 1;
-    for (const Object& o : objects) {
-      lit.model = o.model;
-      lit.mvp = vp * o.model;
-      gl.BindVertexArray(o.vao);
-      DrawMesh(gl, *o.mesh);
-    }
+    DrawObjects(gl, lit, vp, objects);
   }
   return gl.ReadPixels();
 }
