@@ -336,17 +336,27 @@ bool Inside(const RenderTarget& t, const BlockBuffer& bb, int b) {
   return true;
 }
 
-// The values of block b's lanes l0 .. l0 + W - 1 (quads l0 / 4 on), each quad two rows of two values, from or to
-// `base` with `pitch` values between rows.
+// Where block b's quads start in a buffer of `pitch` values between rows: qy * pitch + qx, computed once per block
+// for all the loads and stores (and sample planes) that share the pitch.
+struct QuadPlaces {
+  std::size_t at[4];
+  std::size_t pitch;
+  QuadPlaces(const BlockBuffer& bb, int b, int row_pitch) : pitch(std::size_t(row_pitch)) {
+    for (int q = 0; q < 4; ++q) at[q] = std::size_t(bb.qy[b][q]) * pitch + std::size_t(bb.qx[b][q]);
+  }
+};
+
+// The values of a block's lanes l0 .. l0 + W - 1 (quads l0 / 4 on), each quad two rows of two values, from or to
+// `base` at the quads' places.
 template <class T, int W, class Vec>
-SOFTGL_WIDE Vec LoadQuads(const T* base, std::size_t pitch, const BlockBuffer& bb, int b, int l0) {
+SOFTGL_WIDE Vec LoadQuads(const T* base, const QuadPlaces& places, int l0) {
+  const std::size_t pitch = places.pitch;
   if constexpr (sizeof(T) == 4) {
     // 32-bit values: each quad row is one 64-bit word, gathered into the vector in registers (a vector read back
     // from small stores would stall the processor).
     typename V<W>::Q rows;
     for (int k = 0; k < W / 4; ++k) {
-      const int q = l0 / 4 + k;
-      const T* p = base + std::size_t(bb.qy[b][q]) * pitch + std::size_t(bb.qx[b][q]);
+      const T* p = base + places.at[l0 / 4 + k];
       std::uint64_t lo, hi;
       std::memcpy(&lo, p, 8);
       std::memcpy(&hi, p + pitch, 8);
@@ -359,24 +369,24 @@ SOFTGL_WIDE Vec LoadQuads(const T* base, std::size_t pitch, const BlockBuffer& b
   } else {
     T lanes[W];
     for (int k = 0; k < W / 4; ++k) {
-      const int q = l0 / 4 + k;
-      const T* p = base + std::size_t(bb.qy[b][q]) * pitch + std::size_t(bb.qx[b][q]);
+      const T* p = base + places.at[l0 / 4 + k];
       std::memcpy(lanes + 4 * k, p, 2 * sizeof(T));
       std::memcpy(lanes + 4 * k + 2, p + pitch, 2 * sizeof(T));
     }
     return LoadVec<Vec>(lanes);
   }
 }
-// Quads without a live lane are not written back: they change nothing, and a block's unused quads repeat its
-// first quad's place.
+// Quads without a live lane (in `live`, the block's) are not written back: they change nothing, and a block's unused
+// quads repeat its first quad's place.
 template <class T, int W, class Vec>
-SOFTGL_WIDE void StoreQuads(T* base, std::size_t pitch, const BlockBuffer& bb, int b, int l0, const Vec& v) {
+SOFTGL_WIDE void StoreQuads(T* base, const QuadPlaces& places, std::uint32_t live, int l0, const Vec& v) {
+  const std::size_t pitch = places.pitch;
   T lanes[W];
   StoreVec(lanes, v);
   for (int k = 0; k < W / 4; ++k) {
     const int q = l0 / 4 + k;
-    if (!((bb.live[b] >> (4 * q)) & 0xFu)) continue;
-    T* p = base + std::size_t(bb.qy[b][q]) * pitch + std::size_t(bb.qx[b][q]);
+    if (!((live >> (4 * q)) & 0xFu)) continue;
+    T* p = base + places.at[q];
     std::memcpy(p, lanes + 4 * k, 2 * sizeof(T));
     std::memcpy(p + pitch, lanes + 4 * k + 2, 2 * sizeof(T));
   }
@@ -413,10 +423,22 @@ struct BlockOpsContext {
   bool stencil_test, depth_test, any_color;
   const StencilFace* face;
   std::uint64_t* passed;  // counts the lanes that pass every test, while an occlusion query is active (else null)
+  // A multisampled target: its samples' depths (null: single-sampled, the depth in gl_FragCoord.z).
+  const SampleDepths* depths;
+  int samples;  // planes: 1 when single-sampled
 };
 
+// The lanes of block b that go through the operations of sample plane s, and their depths there.
+inline std::uint32_t PlaneLanes(const BlockOpsContext& ctx, int b, int s) {
+  return ctx.depths ? ctx.blocks->live[b] & ctx.blocks->sample_live[b][s] : ctx.blocks->live[b];
+}
+inline const float* PlaneDepths(const BlockOpsContext& ctx, int b, int s) {
+  if (ctx.shader_depth) return ctx.blocks->Depth(b);
+  return ctx.depths ? ctx.depths->z[b][s] : ctx.blocks->frag_coord[b][2];
+}
+
 // The per-fragment operations on block b (inside the target, colour buffer 0 RGBA8 or none, no other colour
-// buffer), W lanes at a time.
+// buffer), W lanes at a time, on every sample plane the lanes cover; the colour converted to bytes once.
 template <int W>
 SOFTGL_WIDE void BlockOps(const BlockOpsContext& ctx, int b) {
   using F = typename V<W>::F;
@@ -425,64 +447,81 @@ SOFTGL_WIDE void BlockOps(const BlockOpsContext& ctx, int b) {
   const BlockBuffer& bb = *ctx.blocks;
   const RenderTarget& t = *ctx.target;
   const FragmentOpsState& st = *ctx.state;
+  const bool colour = ctx.any_color && t.color[0].Present();
+  constexpr std::uint32_t kChunk = (1u << W) - 1u;
+  const std::uint32_t live = bb.live[b];
+  const QuadPlaces depth_at(bb, b, t.depth_pitch);
+  const QuadPlaces stencil_at = t.stencil_pitch == t.depth_pitch ? depth_at : QuadPlaces(bb, b, t.stencil_pitch);
+  const QuadPlaces colour_at = t.color[0].pitch == t.depth_pitch ? depth_at : QuadPlaces(bb, b, t.color[0].pitch);
   for (int l0 = 0; l0 < kLanes; l0 += W) {
-    if (!((bb.live[b] >> l0) & ((1u << W) - 1u))) continue;
-    I go = BitsToMask<W>(bb.live[b], l0);
-    I sten{};
-    if (ctx.stencil_test) {
-      sten = __builtin_convertvector(
-          (LoadQuads<std::uint8_t, W, typename V<W>::B>(t.stencil, std::size_t(t.stencil_pitch), bb, b, l0)), I);
-      const StencilFace& f = *ctx.face;
-      const std::int32_t m = std::int32_t(f.value_mask & 0xFFu);
-      const I pass = Compare(f.func, I{} + (std::clamp(f.ref, 0, 255) & m), sten & m);
-      sten = StencilOpLanes<W>(f, f.sfail, sten, go & ~pass);
-      go &= pass;
-    }
-    if (ctx.depth_test) {
-      const F z = ctx.shader_depth ? LoadVec<F>(bb.Depth(b) + l0) : LoadVec<F>(&bb.frag_coord[b][2][l0]);
-      F zc = z > 0.0f ? z : F{} + 0.0f;  // clamped to [0, 1]; NaN fails below
-      zc = zc < 1.0f ? zc : F{} + 1.0f;
-      const F stored = LoadQuads<float, W, F>(t.depth, std::size_t(t.depth_pitch), bb, b, l0);
-      const I pass = Compare(st.depth_func, zc, stored) & (z == z);
-      if (ctx.stencil_test) {
-        sten = StencilOpLanes<W>(*ctx.face, ctx.face->dpfail, sten, go & ~pass);
-        sten = StencilOpLanes<W>(*ctx.face, ctx.face->dppass, sten, go & pass);
-      }
-      go &= pass;
-      if (st.depth_write) StoreQuads<float, W, F>(t.depth, std::size_t(t.depth_pitch), bb, b, l0, go ? zc : stored);
-    } else if (ctx.stencil_test) {
-      sten = StencilOpLanes<W>(*ctx.face, ctx.face->dppass, sten, go);
-    }
-    if (ctx.stencil_test)
-      StoreQuads<std::uint8_t, W, typename V<W>::B>(t.stencil, std::size_t(t.stencil_pitch), bb, b, l0,
-                                                     __builtin_convertvector(sten, typename V<W>::B));
-    if (ctx.passed) *ctx.passed += std::uint64_t(__builtin_popcount(MaskToBits<W>(go, 0)));
-    if (!ctx.any_color || !t.color[0].Present()) continue;
-    const ColorBuffer& cb = t.color[0];
-    auto* cp = reinterpret_cast<std::uint32_t*>(cb.data);
-    const U pixels = LoadQuads<std::uint32_t, W, U>(cp, std::size_t(cb.pitch), bb, b, l0);
+    if (!((live >> l0) & kChunk)) continue;
     F color[4];
-    for (int c = 0; c < 4; ++c) color[c] = LoadVec<F>(bb.Color(b, 0, c) + l0);
-    const U result = Blend8Lanes<W>(*ctx.blend, color, pixels);
-    StoreQuads<std::uint32_t, W, U>(cp, std::size_t(cb.pitch), bb, b, l0, go ? result : pixels);
+    U packed{};  // without blending: the colour's bytes through the colour mask
+    if (colour) {
+      for (int c = 0; c < 4; ++c) color[c] = LoadVec<F>(bb.Color(b, 0, c) + l0);
+      if (!ctx.blend->blend) packed = Blend8Lanes<W>(*ctx.blend, color, U{});
+    }
+    for (int s = 0; s < ctx.samples; ++s) {
+      const std::uint32_t lanes = PlaneLanes(ctx, b, s);
+      if (!((lanes >> l0) & kChunk)) continue;
+      I go = BitsToMask<W>(lanes, l0);
+      I sten{};
+      std::uint8_t* stencil = t.stencil ? t.stencil + t.stencil_plane * std::size_t(s) : nullptr;
+      if (ctx.stencil_test) {
+        sten = __builtin_convertvector(
+            (LoadQuads<std::uint8_t, W, typename V<W>::B>(stencil, stencil_at, l0)), I);
+        const StencilFace& f = *ctx.face;
+        const std::int32_t m = std::int32_t(f.value_mask & 0xFFu);
+        const I pass = Compare(f.func, I{} + (std::clamp(f.ref, 0, 255) & m), sten & m);
+        sten = StencilOpLanes<W>(f, f.sfail, sten, go & ~pass);
+        go &= pass;
+      }
+      if (ctx.depth_test) {
+        float* depth = t.depth + t.depth_plane * std::size_t(s);
+        const F z = LoadVec<F>(PlaneDepths(ctx, b, s) + l0);
+        F zc = z > 0.0f ? z : F{} + 0.0f;  // clamped to [0, 1]; NaN fails below
+        zc = zc < 1.0f ? zc : F{} + 1.0f;
+        const F stored = LoadQuads<float, W, F>(depth, depth_at, l0);
+        const I pass = Compare(st.depth_func, zc, stored) & (z == z);
+        if (ctx.stencil_test) {
+          sten = StencilOpLanes<W>(*ctx.face, ctx.face->dpfail, sten, go & ~pass);
+          sten = StencilOpLanes<W>(*ctx.face, ctx.face->dppass, sten, go & pass);
+        }
+        go &= pass;
+        if (st.depth_write) StoreQuads<float, W, F>(depth, depth_at, live, l0, go ? zc : stored);
+      } else if (ctx.stencil_test) {
+        sten = StencilOpLanes<W>(*ctx.face, ctx.face->dppass, sten, go);
+      }
+      if (ctx.stencil_test)
+        StoreQuads<std::uint8_t, W, typename V<W>::B>(stencil, stencil_at, live, l0,
+                                                       __builtin_convertvector(sten, typename V<W>::B));
+      if (ctx.passed) *ctx.passed += std::uint64_t(__builtin_popcount(MaskToBits<W>(go, 0)));
+      if (!colour) continue;
+      const ColorBuffer& cb = t.color[0];
+      auto* cp = reinterpret_cast<std::uint32_t*>(cb.data) + cb.plane * std::size_t(s);
+      const U pixels = LoadQuads<std::uint32_t, W, U>(cp, colour_at, l0);
+      const U result = ctx.blend->blend ? Blend8Lanes<W>(*ctx.blend, color, pixels) : (pixels & ctx.blend->keep) | packed;
+      StoreQuads<std::uint32_t, W, U>(cp, colour_at, live, l0, go ? result : pixels);
+    }
   }
 }
 
-// The same for any block, lane by lane.
-void LaneOps(const BlockOpsContext& ctx, const Unorm8Blend* per_buffer, int b) {
+// The same for any block, lane by lane: the lanes in `lanes`, with their depths at `z`, into target `t` (a
+// single-sampled target or one sample's plane).
+void LaneOps(const BlockOpsContext& ctx, const Unorm8Blend* per_buffer, int b, const RenderTarget& t,
+             std::uint32_t lanes, const float* z_lanes) {
   const BlockBuffer& bb = *ctx.blocks;
-  const RenderTarget& t = *ctx.target;
   const FragmentOpsState& st = *ctx.state;
   const StencilFace& face = *ctx.face;
   for (int lane = 0; lane < kLanes; ++lane) {
-    if (!((bb.live[b] >> lane) & 1u)) continue;
+    if (!((lanes >> lane) & 1u)) continue;
     const int x = bb.X(b, lane), y = bb.Y(b, lane);
     if (ctx.stencil_test && !StencilTest(face, t.Stencil(x, y))) {
       t.Stencil(x, y) = StencilUpdate(face, face.sfail, t.Stencil(x, y));
       continue;
     }
     if (ctx.depth_test) {
-      const float depth = ctx.shader_depth ? bb.Depth(b)[lane] : bb.frag_coord[b][2][lane];
+      const float depth = z_lanes[lane];
       // Depth is clamped to [0, 1] before the test (the depth buffer holds [0, 1]); NaN fails.
       const float z = std::clamp(depth, 0.0f, 1.0f);
       if (std::isnan(depth) || !DepthTest(st.depth_func, z, t.Depth(x, y))) {
@@ -544,51 +583,77 @@ SOFTGL_TARGET_AVX2 void BlockOpsAvx2(const BlockOpsContext& ctx, int b) { BlockO
 SOFTGL_TARGET_AVX512 void BlockOpsAvx512(const BlockOpsContext& ctx, int b) { BlockOps<8>(ctx, b); }
 #endif
 
-// The early test on block b, W lanes at a time; returns its live lanes.
+// The early test on block b, W lanes at a time; returns its live lanes. Into a multisampled target (`depths`
+// given), each sample's covered lanes against its plane: a lane's sample that fails is no longer covered.
 template <int W>
-SOFTGL_WIDE std::uint32_t EarlyBlock(Enum func, BlockBuffer& bb, const RenderTarget& t, int b) {
+SOFTGL_WIDE std::uint32_t EarlyBlock(Enum func, BlockBuffer& bb, const RenderTarget& t, int b, const SampleDepths* depths) {
   using F = typename V<W>::F;
   using I = typename V<W>::I;
-  std::uint32_t keep = 0;
-  for (int l0 = 0; l0 < kLanes; l0 += W) {
-    const F z = LoadVec<F>(&bb.frag_coord[b][2][l0]);
-    F zc = z > 0.0f ? z : F{} + 0.0f;
-    zc = zc < 1.0f ? zc : F{} + 1.0f;
-    const F stored = LoadQuads<float, W, F>(t.depth, std::size_t(t.depth_pitch), bb, b, l0);
-    const I pass = Compare(func, zc, stored) & (z == z);
-    keep |= MaskToBits<W>(pass, l0);
-  }
-  return bb.live[b] &= keep;
+  constexpr std::uint32_t kChunk = (1u << W) - 1u;
+  const QuadPlaces depth_at(bb, b, t.depth_pitch);
+  auto test = [&](const float* z_lanes, const float* plane, std::uint32_t lanes) SOFTGL_WIDE_LAMBDA {
+    std::uint32_t keep = 0;
+    for (int l0 = 0; l0 < kLanes; l0 += W) {
+      if (!((lanes >> l0) & kChunk)) continue;
+      const F z = LoadVec<F>(z_lanes + l0);
+      F zc = z > 0.0f ? z : F{} + 0.0f;
+      zc = zc < 1.0f ? zc : F{} + 1.0f;
+      const F stored = LoadQuads<float, W, F>(plane, depth_at, l0);
+      const I pass = Compare(func, zc, stored) & (z == z);
+      keep |= MaskToBits<W>(pass, l0);
+    }
+    return lanes & keep;
+  };
+  if (!depths) return bb.live[b] = test(bb.frag_coord[b][2], t.depth, bb.live[b]);
+  std::uint32_t any = 0;
+  for (int s = 0; s < t.samples; ++s)
+    any |= bb.sample_live[b][s] = test(depths->z[b][s], t.depth + t.depth_plane * std::size_t(s), bb.live[b] & bb.sample_live[b][s]);
+  return bb.live[b] &= any;
 }
-using EarlyBlockFn = std::uint32_t (*)(Enum, BlockBuffer&, const RenderTarget&, int);
-std::uint32_t EarlyBlockBase(Enum f, BlockBuffer& bb, const RenderTarget& t, int b) { return EarlyBlock<4>(f, bb, t, b); }
+using EarlyBlockFn = std::uint32_t (*)(Enum, BlockBuffer&, const RenderTarget&, int, const SampleDepths*);
+std::uint32_t EarlyBlockBase(Enum f, BlockBuffer& bb, const RenderTarget& t, int b, const SampleDepths* d) {
+  return EarlyBlock<4>(f, bb, t, b, d);
+}
 #if defined(SOFTGL_HAS_DISPATCH)
-SOFTGL_TARGET_AVX2 std::uint32_t EarlyBlockAvx2(Enum f, BlockBuffer& bb, const RenderTarget& t, int b) {
-  return EarlyBlock<8>(f, bb, t, b);
+SOFTGL_TARGET_AVX2 std::uint32_t EarlyBlockAvx2(Enum f, BlockBuffer& bb, const RenderTarget& t, int b, const SampleDepths* d) {
+  return EarlyBlock<8>(f, bb, t, b, d);
 }
 // 8 lanes on AVX-512 too, with its instruction set: measured faster than 16 on the bench scenes (docs/performance.md).
-SOFTGL_TARGET_AVX512 std::uint32_t EarlyBlockAvx512(Enum f, BlockBuffer& bb, const RenderTarget& t, int b) {
-  return EarlyBlock<8>(f, bb, t, b);
+SOFTGL_TARGET_AVX512 std::uint32_t EarlyBlockAvx512(Enum f, BlockBuffer& bb, const RenderTarget& t, int b,
+                                                    const SampleDepths* d) {
+  return EarlyBlock<8>(f, bb, t, b, d);
 }
 #endif
 
-}  // namespace
-
-bool EarlyDepthTest(const FragmentOpsState& state, BlockBuffer& blocks, const RenderTarget& target) {
+// The early test of every block, into a single-sampled target or (`depths` given) a multisampled one.
+bool EarlyTest(const FragmentOpsState& state, BlockBuffer& blocks, const RenderTarget& target, const SampleDepths* depths) {
   std::uint32_t live = 0;
   static const EarlyBlockFn early = SOFTGL_CHOOSE(EarlyBlock);
   for (int b = 0; b < blocks.count; ++b) {
     if (target.depth && blocks.live[b]) {
       if (Inside(target, blocks, b)) {
-        early(state.depth_func, blocks, target, b);
+        early(state.depth_func, blocks, target, b, depths);
       } else {
+        // As the late test: depth clamped to [0, 1], NaN fails.
+        auto passes = [&](float depth, const float* plane, int lane) {
+          const float stored = plane[std::size_t(blocks.Y(b, lane)) * std::size_t(target.depth_pitch) + std::size_t(blocks.X(b, lane))];
+          return !std::isnan(depth) && DepthTest(state.depth_func, std::clamp(depth, 0.0f, 1.0f), stored);
+        };
+        std::uint32_t any = 0;
         for (int lane = 0; lane < kLanes; ++lane) {
           if (!((blocks.live[b] >> lane) & 1u)) continue;  // a live lane lies inside the target
-          const float depth = blocks.frag_coord[b][2][lane];
-          const float stored = target.Depth(blocks.X(b, lane), blocks.Y(b, lane));
-          // As the late test: depth clamped to [0, 1], NaN fails.
-          if (std::isnan(depth) || !DepthTest(state.depth_func, std::clamp(depth, 0.0f, 1.0f), stored))
-            blocks.live[b] &= ~(1u << lane);
+          if (!depths) {
+            if (!passes(blocks.frag_coord[b][2][lane], target.depth, lane)) blocks.live[b] &= ~(1u << lane);
+            continue;
+          }
+          for (int s = 0; s < target.samples; ++s)
+            if (((blocks.sample_live[b][s] >> lane) & 1u) &&
+                !passes(depths->z[b][s][lane], target.depth + target.depth_plane * std::size_t(s), lane))
+              blocks.sample_live[b][s] &= ~(1u << lane);
+        }
+        if (depths) {
+          for (int s = 0; s < target.samples; ++s) any |= blocks.sample_live[b][s] &= blocks.live[b];
+          blocks.live[b] &= any;
         }
       }
     }
@@ -597,8 +662,9 @@ bool EarlyDepthTest(const FragmentOpsState& state, BlockBuffer& blocks, const Re
   return live != 0;
 }
 
-void ApplyFragmentOps(const FragmentOpsState& state, const FragmentOpsPlan& plan, const BlockBuffer& blocks,
-                      bool shader_depth, const RenderTarget& target) {
+// The operations of every block, into a single-sampled target or (`depths` given) a multisampled one.
+void BlockOpsAll(const FragmentOpsState& state, const FragmentOpsPlan& plan, const BlockBuffer& blocks,
+                 bool shader_depth, const RenderTarget& target, const SampleDepths* depths) {
   // Without a depth or stencil buffer the test passes and nothing is written (OpenGL 4.6, 17.3.5 and 17.3.6).
   BlockOpsContext ctx;
   ctx.state = &state;
@@ -610,16 +676,51 @@ void ApplyFragmentOps(const FragmentOpsState& state, const FragmentOpsPlan& plan
   ctx.any_color = state.color_mask[0] || state.color_mask[1] || state.color_mask[2] || state.color_mask[3];
   ctx.face = blocks.front_facing ? &state.front : &state.back;
   ctx.blend = &plan.blend[0];
+  ctx.depths = depths;
+  ctx.samples = depths ? target.samples : 1;
   std::uint64_t passed = 0;
   ctx.passed = state.occlusion[0] || state.occlusion[1] ? &passed : nullptr;
   static const BlockOpsFn block_ops = SOFTGL_CHOOSE(BlockOps);
+  RenderTarget planes[kMaxSamples];  // each sample's plane, for the lane-by-lane path (made when it is first needed)
+  bool have_planes = false;
   for (int b = 0; b < blocks.count; ++b) {
     if (!blocks.live[b]) continue;
-    if (plan.wide_target && Inside(target, blocks, b)) block_ops(ctx, b);
-    else LaneOps(ctx, plan.blend, b);
+    if (plan.wide_target && Inside(target, blocks, b)) {
+      block_ops(ctx, b);
+      continue;
+    }
+    if (!depths) {
+      LaneOps(ctx, plan.blend, b, target, blocks.live[b], PlaneDepths(ctx, b, 0));
+      continue;
+    }
+    if (!have_planes)
+      for (int s = 0; s < target.samples; ++s) planes[s] = target.Sample(s);
+    have_planes = true;
+    for (int s = 0; s < target.samples; ++s) LaneOps(ctx, plan.blend, b, planes[s], PlaneLanes(ctx, b, s), PlaneDepths(ctx, b, s));
   }
   for (OcclusionCounter* c : state.occlusion)
     if (c && passed) c->passed.fetch_add(passed, std::memory_order_relaxed);
+}
+
+}  // namespace
+
+bool EarlyDepthTest(const FragmentOpsState& state, BlockBuffer& blocks, const RenderTarget& target) {
+  return EarlyTest(state, blocks, target, nullptr);
+}
+
+bool EarlyDepthTestSamples(const FragmentOpsState& state, BlockBuffer& blocks, const RenderTarget& target,
+                           const SampleDepths& depths) {
+  return EarlyTest(state, blocks, target, &depths);
+}
+
+void ApplyFragmentOps(const FragmentOpsState& state, const FragmentOpsPlan& plan, const BlockBuffer& blocks,
+                      bool shader_depth, const RenderTarget& target) {
+  BlockOpsAll(state, plan, blocks, shader_depth, target, nullptr);
+}
+
+void ApplyFragmentOpsSamples(const FragmentOpsState& state, const FragmentOpsPlan& plan, const BlockBuffer& blocks,
+                             bool shader_depth, const RenderTarget& target, const SampleDepths& depths) {
+  BlockOpsAll(state, plan, blocks, shader_depth, target, &depths);
 }
 
 }  // namespace softgl::detail

@@ -161,4 +161,22 @@ bool EarlyDepthTest(const FragmentOpsState& state, BlockBuffer& blocks, const Re
 void ApplyFragmentOps(const FragmentOpsState& state, const FragmentOpsPlan& plan, const BlockBuffer& blocks,
                       bool shader_depth, const RenderTarget& target);
 
+/// A multisampled batch's fragment depths at its samples: z[b][s][lane] is the depth of block b's lane at sample s,
+/// on its triangle's depth plane at the sample's position (the fragment stage fills it from the planes).
+struct SampleDepths {
+  alignas(64) float z[BlockBuffer::kCapacity][kMaxSamples][kLanes];
+};
+
+/// The early depth test into a multisampled target: each sample a lane covers (blocks.sample_live) tested at its
+/// depth against its plane; a sample that fails is no longer covered, and a lane stays live while some sample is.
+/// Returns whether any lane is left live.
+bool EarlyDepthTestSamples(const FragmentOpsState& state, BlockBuffer& blocks, const RenderTarget& target,
+                           const SampleDepths& depths);
+
+/// The per-fragment operations into a multisampled target: each live lane's colour goes through the operations of
+/// every sample it covers (blocks.sample_live), into that sample's plane, with the depth at that sample (the
+/// shader's depth at all of them when `shader_depth`). The colour is converted once for all the samples.
+void ApplyFragmentOpsSamples(const FragmentOpsState& state, const FragmentOpsPlan& plan, const BlockBuffer& blocks,
+                             bool shader_depth, const RenderTarget& target, const SampleDepths& depths);
+
 }  // namespace softgl::detail

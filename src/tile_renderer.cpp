@@ -7,6 +7,7 @@
 
 #include "rasterizer.h"
 #include "simd.h"
+#include "wide.h"
 
 namespace softgl::detail {
 
@@ -51,43 +52,30 @@ Rect Intersect(const Rect& a, const Rect& b) {
   return Rect{std::max(a.x0, b.x0), std::max(a.y0, b.y0), std::min(a.x1, b.x1), std::min(a.y1, b.y1)};
 }
 
-// The depth of each sample of a batch's lanes, at its position on the triangle's plane (a line's or point's
-// fragments have one depth; with MULTISAMPLE disabled, `at_samples` false, every sample takes the centre's), and the batch's live lanes and gl_FragCoord.z as the rasterizer left them: Use(s)
-// puts sample s's depths into gl_FragCoord.z, Restore puts the pixel centre's back.
-struct SampleDepths {
-  alignas(64) float z[BlockBuffer::kCapacity][kMaxSamples][kLanes];
-  alignas(64) float centre[BlockBuffer::kCapacity][kLanes];
-  std::uint32_t live[BlockBuffer::kCapacity];
-  int count = 0;
-
-  // A sample's depth is the centre's plus the plane's change from the centre to the sample.
-  SampleDepths(const BlockBuffer& blocks, int samples, bool at_samples) : count(blocks.count) {
-    const auto* pos = SamplePositions(samples);
-    float ox[kMaxSamples], oy[kMaxSamples];
-    for (int s = 0; s < samples; ++s) {
-      ox[s] = float(pos[s][0]) / 16.0f - 0.5f;
-      oy[s] = float(pos[s][1]) / 16.0f - 0.5f;
-    }
-    for (int b = 0; b < count; ++b) {
-      live[b] = blocks.live[b];
-      std::copy_n(blocks.frag_coord[b][2], kLanes, centre[b]);
-      for (int q = 0; q < 4; ++q) {
-        const TrianglePlanes* p = blocks.quad_planes[b][q];
-        const bool flat = !p || !at_samples || !((live[b] >> (4 * q)) & 0xFu);
-        for (int s = 0; s < samples; ++s) {
-          const float delta = flat ? 0.0f : p->z.dx * ox[s] + p->z.dy * oy[s];
-          for (int k = 0; k < 4; ++k) z[b][s][q * 4 + k] = centre[b][q * 4 + k] + delta;
-        }
+// The depth of each sample of a batch's lanes: the pixel centre's plus the change of the triangle's depth plane from
+// the centre to the sample (a line's or point's fragments have one depth; with MULTISAMPLE disabled, `at_samples`
+// false, every sample takes the centre's).
+void FillSampleDepths(const BlockBuffer& blocks, int samples, bool at_samples, SampleDepths& depths) {
+  const auto* pos = SamplePositions(samples);
+  float ox[kMaxSamples], oy[kMaxSamples];
+  for (int s = 0; s < samples; ++s) {
+    ox[s] = float(pos[s][0]) / 16.0f - 0.5f;
+    oy[s] = float(pos[s][1]) / 16.0f - 0.5f;
+  }
+  using F4 = V<4>::F;
+  for (int b = 0; b < blocks.count; ++b) {
+    for (int q = 0; q < 4; ++q) {
+      const TrianglePlanes* p = blocks.quad_planes[b][q];
+      const F4 centre = LoadVec<F4>(&blocks.frag_coord[b][2][4 * q]);
+      if (!p || !at_samples || !((blocks.live[b] >> (4 * q)) & 0xFu)) {
+        for (int s = 0; s < samples; ++s) StoreVec(&depths.z[b][s][4 * q], centre);
+        continue;
       }
+      const float dx = p->z.dx, dy = p->z.dy;  // (read once: the stores could alias them)
+      for (int s = 0; s < samples; ++s) StoreVec(&depths.z[b][s][4 * q], centre + (dx * ox[s] + dy * oy[s]));
     }
   }
-  void Use(BlockBuffer& blocks, int s) const {
-    for (int b = 0; b < count; ++b) std::copy_n(z[b][s], kLanes, blocks.frag_coord[b][2]);
-  }
-  void Restore(BlockBuffer& blocks) const {
-    for (int b = 0; b < count; ++b) std::copy_n(centre[b], kLanes, blocks.frag_coord[b][2]);
-  }
-};
+}
 
 // The fragment shader, then the per-fragment operations, on a full batch of blocks.
 struct FragmentStage {
@@ -108,12 +96,13 @@ struct FragmentStage {
   }
 
   // Into a multisampled target: the depth test (early and late) and the operations after the shader run on each
-  // sample, through the single-sampled view of its plane, with the lanes that have that sample covered and the
-  // depth interpolated at its position; the shader runs once per pixel.
+  // sample a lane covers, in that sample's plane, with the depth interpolated at its position; the shader runs once
+  // per pixel.
   void RunSamples(BlockBuffer& blocks) const {
     const int samples = target->samples;
     const FragmentOpsState& ops = draw->ops;
-    SampleDepths depths(blocks, samples, ops.multisample.multisample);
+    SampleDepths depths;
+    FillSampleDepths(blocks, samples, ops.multisample.multisample, depths);
     // Centroid varyings: each lane's first covered sample where the rasterizer did not cover them all.
     std::int8_t centroid[BlockBuffer::kCapacity][kLanes];
     if (has_centroid && ops.multisample.multisample) {
@@ -125,23 +114,7 @@ struct FragmentStage {
           centroid[b][lane] = std::int8_t(covered == all || covered == 0 ? -1 : __builtin_ctz(covered));
         }
     }
-    if (draw->early_depth) {
-      bool any = false;
-      for (int s = 0; s < samples; ++s) {
-        depths.Use(blocks, s);
-        for (int b = 0; b < blocks.count; ++b) blocks.live[b] = depths.live[b] & blocks.sample_live[b][s];
-        EarlyDepthTest(ops, blocks, target->Sample(s));
-        for (int b = 0; b < blocks.count; ++b) blocks.sample_live[b][s] &= blocks.live[b];
-      }
-      depths.Restore(blocks);
-      for (int b = 0; b < blocks.count; ++b) {
-        std::uint32_t live = 0;
-        for (int s = 0; s < samples; ++s) live |= blocks.sample_live[b][s];
-        blocks.live[b] = depths.live[b] & live;
-        any = any || blocks.live[b] != 0;
-      }
-      if (!any) return;
-    }
+    if (draw->early_depth && !EarlyDepthTestSamples(ops, blocks, *target, depths)) return;
     InterpolateVaryings(blocks);
     if (has_centroid && ops.multisample.multisample) InterpolateCentroids(blocks, centroid, draw->interpolation);
     Shade(blocks);
@@ -166,14 +139,7 @@ struct FragmentStage {
     if (ms.multisample && ms.alpha_to_one)  // (after alpha to coverage has read the alpha)
       for (int b = 0; b < blocks.count; ++b)
         for (int o = 0; o < outputs; ++o) blocks.out[b].color[o].w = Float(1.0f);
-    std::uint32_t shaded[BlockBuffer::kCapacity];
-    std::copy(blocks.live, blocks.live + blocks.count, shaded);
-    for (int s = 0; s < samples; ++s) {
-      depths.Use(blocks, s);
-      for (int b = 0; b < blocks.count; ++b) blocks.live[b] = shaded[b] & blocks.sample_live[b][s];
-      ApplyFragmentOps(ops, *plan, blocks, draw->shader_depth, target->Sample(s));
-    }
-    depths.Restore(blocks);
+    ApplyFragmentOpsSamples(ops, *plan, blocks, draw->shader_depth, *target, depths);
   }
 
   void Shade(BlockBuffer& blocks) const {
