@@ -70,11 +70,11 @@ SOFTGL_WIDE void JudgeLanes(const TriangleGroup& g, const CullState& st, int l0,
   auto max = [](I a, I b) SOFTGL_WIDE_LAMBDA { return (a & (a > b)) | (b & ~(a > b)); };
   auto min3 = [&](I a, I b, I c) SOFTGL_WIDE_LAMBDA { return min(min(a, b), c); };
   auto max3 = [&](I a, I b, I c) SOFTGL_WIDE_LAMBDA { return max(max(a, b), c); };
-  // TriangleCentreBox's first and last centres, cut to the bounds.
-  I first_x = -((128 - min3(X[0], X[1], X[2])) >> 8), last_x = (max3(X[0], X[1], X[2]) - 128) >> 8;
-  I first_y = -((128 - min3(Y[0], Y[1], Y[2])) >> 8), last_y = (max3(Y[0], Y[1], Y[2]) - 128) >> 8;
+  // TriangleCentreBox's first and last centres (pixels with some sample inside), cut to the bounds.
+  I first_x = -((st.span_x1 - min3(X[0], X[1], X[2])) >> 8), last_x = (max3(X[0], X[1], X[2]) - st.span_x0) >> 8;
+  I first_y = -((st.span_y1 - min3(Y[0], Y[1], Y[2])) >> 8), last_y = (max3(Y[0], Y[1], Y[2]) - st.span_y0) >> 8;
   // At most 2 x 2 centres before the cut: the vertices lie within 3 pixels of each other.
-  const I tiny = exact & I(last_x - first_x <= 1) & I(last_y - first_y <= 1);
+  const I tiny = exact & I(last_x - first_x <= 1) & I(last_y - first_y <= 1) & (st.centres ? ~I{} : I{});
   const I bx0 = I{} + st.bounds.x0, bx1 = I{} + (st.bounds.x1 - 1), by0 = I{} + st.bounds.y0,
           by1 = I{} + (st.bounds.y1 - 1);
   first_x = max(first_x, bx0);

@@ -450,23 +450,28 @@ std::int64_t LastCentre(std::int64_t hi) { return (hi - kHalf) >> kSubpixelBits;
 std::int64_t FirstAt(std::int64_t lo, std::int64_t o) { return -((o - lo) >> kSubpixelBits); }
 std::int64_t LastAt(std::int64_t hi, std::int64_t o) { return (hi - o) >> kSubpixelBits; }
 
-// The smallest and largest offsets (snapped units) of a pixel's sample positions in x and y.
-struct SampleSpan {
-  std::int64_t x0 = kHalf, x1 = kHalf, y0 = kHalf, y1 = kHalf;
-  explicit SampleSpan(int samples) {
-    if (samples <= 1) return;
-    const auto* pos = SamplePositions(samples);
-    x0 = y0 = kOne;
-    x1 = y1 = 0;
-    for (int s = 0; s < samples; ++s) {
-      const std::int64_t x = pos[s][0] * (kOne / 16), y = pos[s][1] * (kOne / 16);
-      x0 = std::min(x0, x);
-      x1 = std::max(x1, x);
-      y0 = std::min(y0, y);
-      y1 = std::max(y1, y);
-    }
+}  // namespace
+
+SampleSpan::SampleSpan(int samples) {
+  if (samples <= 1) return;
+  const auto* pos = SamplePositions(samples);
+  x0 = y0 = kOne;
+  x1 = y1 = 0;
+  for (int s = 0; s < samples; ++s) {
+    const std::int64_t x = pos[s][0] * (kOne / 16), y = pos[s][1] * (kOne / 16);
+    x0 = std::min(x0, x);
+    x1 = std::max(x1, x);
+    y0 = std::min(y0, y);
+    y1 = std::max(y1, y);
   }
-};
+}
+
+const SampleSpan& SampleSpan::Of(int samples) {
+  static const SampleSpan kSpans[4] = {SampleSpan(1), SampleSpan(2), SampleSpan(4), SampleSpan(8)};
+  return kSpans[samples <= 1 ? 0 : samples == 2 ? 1 : samples == 4 ? 2 : 3];
+}
+
+namespace {
 
 // The samples of a triangle whose edge functions are A x + B y + C (snapped units, tie rule folded into C; > =
 // 0 inside) over the pixels of `box` (every one inside `bounds`), 8x8 regions at a time: `emit(qx, qy, mask,
@@ -591,7 +596,7 @@ Rect TriangleCentreBox(const glm::vec4& a, const glm::vec4& b, const glm::vec4& 
   const glm::vec4* const p[3] = {&a, &b, &c};
   std::int64_t X[3], Y[3];
   if (!Snap(p, X, Y) || SnappedArea(X, Y) == 0) return Rect{};
-  const SampleSpan span(samples);
+  const SampleSpan& span = SampleSpan::Of(samples);
   const Rect r{int(std::max<std::int64_t>(FirstAt(std::min({X[0], X[1], X[2]}), span.x1), bounds.x0)),
                int(std::max<std::int64_t>(FirstAt(std::min({Y[0], Y[1], Y[2]}), span.y1), bounds.y0)),
                int(std::min<std::int64_t>(LastAt(std::max({X[0], X[1], X[2]}), span.x0) + 1, bounds.x1)),
@@ -630,7 +635,7 @@ void RasterizeTriangle(const VertexView& v0, const VertexView& v1, const VertexV
   // Pixel range whose centres (samples) lie in the snapped bounding box, clipped to the target bounds.
   const std::int64_t minX = std::min({X[0], X[1], X[2]}), maxX = std::max({X[0], X[1], X[2]});
   const std::int64_t minY = std::min({Y[0], Y[1], Y[2]}), maxY = std::max({Y[0], Y[1], Y[2]});
-  const SampleSpan span(target.samples);
+  const SampleSpan& span = SampleSpan::Of(target.samples);
   const std::int64_t px0 = std::max<std::int64_t>(FirstAt(minX, span.x1), target.bounds.x0);
   const std::int64_t px1 = std::min<std::int64_t>(LastAt(maxX, span.x0), target.bounds.x1 - 1);
   const std::int64_t py0 = std::max<std::int64_t>(FirstAt(minY, span.y1), target.bounds.y0);

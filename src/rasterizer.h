@@ -33,6 +33,16 @@ struct RasterTarget {
   int samples = 1;
 };
 
+/// The smallest and largest offsets of a pixel's sample positions (SamplePositions) in x and y, in subpixels
+/// (1 / 2^kSubpixelBits pixel) from its bottom-left corner: the centre's for one sample.
+struct SampleSpan {
+  std::int64_t x0 = 128, x1 = 128, y0 = 128, y1 = 128;
+  explicit SampleSpan(int samples);
+  /// The span of each supported count (1, 2, 4, 8), made once.
+  static const SampleSpan& Of(int samples);
+};
+static_assert(kSubpixelBits == 8, "SampleSpan's default is the centre in 1/256 pixel");
+
 /// OpenGL's polygon offset for the plane through a, b, c: m * factor + r * units, with m the larger of
 /// |dz/dx| and |dz/dy| and r the smallest resolvable difference of the 32-bit float depth buffer at the largest
 /// depth of the polygon, 2^(e - 23) (OpenGL 4.6, section 14.6.5).
