@@ -10,7 +10,7 @@
 // Prints the median ms/frame per renderer and softgl's time over llvmpipe's (below 1: softgl is faster); with N > 1
 // threads, also softgl's speedup over itself on one thread, measured in the same run right after.
 //
-//   --scene TEXT       only the scenes whose name contains TEXT
+//   --scene TEXT       only the scenes whose name contains TEXT (ending in $: whose name ends in TEXT)
 //   --softgl-only 1    skip llvmpipe (for profiling softgl alone)
 //   --scalar 0         skip the runs with each scene's shader in the scalar form (by default they follow each
 //                      scene, and the last columns give their time and the wide form's gain over them)
@@ -836,7 +836,14 @@ int main(int argc, char** argv) {
   }
   // Peak memory of the model scene: each renderer in a process of its own that loads the model and nothing else.
   double rss_softgl = -1.0, rss_gl = -1.0;
-  if (have_engine && (only.empty() || std::string(scenes[0].name).find(only) != std::string::npos)) {
+  // Whether a scene's name matches --scene.
+  auto chosen = [&only](const std::string& name) {
+    if (only.empty()) return true;
+    if (only.back() != '$') return name.find(only) != std::string::npos;
+    const std::string tail = only.substr(0, only.size() - 1);
+    return name.size() >= tail.size() && name.compare(name.size() - tail.size(), tail.size(), tail) == 0;
+  };
+  if (have_engine && chosen(scenes[0].name)) {
     rss_softgl = ModelScenePeakMiB(argv[0], "softgl", threads);
     if (!softgl_only) rss_gl = ModelScenePeakMiB(argv[0], "llvmpipe", threads);
   }
@@ -845,7 +852,7 @@ int main(int argc, char** argv) {
               "softgl speedup over 1 thread | scalar-shader ms/frame | wide gain |\n");
   std::printf("|---|---|---|---|---|---|---|---|---|---|\n");
   for (const Scene& s : scenes) {
-    if (!only.empty() && std::string(s.name).find(only) == std::string::npos) continue;
+    if (!chosen(s.name)) continue;
     const double a = s.softgl_ms(frames), b = softgl_only ? 0.0 : s.gl_ms(frames);
     // softgl's own scaling, measured in this run: the scene again on one thread, right after.
     double one = a;
