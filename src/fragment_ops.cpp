@@ -466,7 +466,7 @@ SOFTGL_WIDE void BlockOps(const BlockOpsContext& ctx, int b) {
       if (!((lanes >> l0) & kChunk)) continue;
       I go = BitsToMask<W>(lanes, l0);
       I sten{};
-      std::uint8_t* stencil = t.stencil ? t.stencil + t.stencil_plane * std::size_t(s) : nullptr;
+      std::uint8_t* stencil = ctx.stencil_test ? t.stencil + t.stencil_plane * std::size_t(s) : nullptr;
       if (ctx.stencil_test) {
         sten = __builtin_convertvector(
             (LoadQuads<std::uint8_t, W, typename V<W>::B>(stencil, stencil_at, l0)), I);

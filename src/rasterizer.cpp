@@ -107,6 +107,7 @@ inline int AddQuad(BlockBuffer& blocks, const BlockSink& sink, bool front_facing
     b = blocks.count++;
     blocks.quads[b] = 0;
     blocks.live[b] = 0;
+    for (int s = 0; s < blocks.samples; ++s) blocks.sample_live[b][s] = 0;
   }
   slot = blocks.quads[b]++;
   blocks.qx[b][slot] = qx;
@@ -308,49 +309,59 @@ SOFTGL_TARGET_AVX2 std::uint64_t RegionCoverageAvx2(const RegionEdges& e) { retu
 SOFTGL_TARGET_AVX512 std::uint64_t RegionCoverageAvx512(const RegionEdges& e) { return RegionCoverage<8>(e); }
 #endif
 
-// RegionCoverage for several samples at once, every edge tested (a small triangle's: all values fit 32 bits):
+// RegionCoverage for S samples at once, every edge tested (a small triangle's: all values fit 32 bits):
 // edge e at sample s of the region's pixel (ix, iy) is c00[e] + delta[s][e] + ix sx[e] + iy sy[e]; bits[s] the
 // lanes inside at sample s, in RegionCoverage's order, quad rows row0 to row1.
-struct SampleEdges {  // (left uninitialized: every field is set before use, the deltas of `samples` samples)
-  int samples;
+struct SampleEdges {  // (left uninitialized: every field is set before use, the deltas of the S samples)
   std::int32_t c00[3], sx[3], sy[3];
   std::int32_t delta[kMaxSamples][3];
   int row0, row1;
   bool left_half;  // only the region's left four columns are needed (the others' bits are left 0)
 };
-template <int W>
+template <int W, int S>
 SOFTGL_WIDE void SampleRegionCoverage(const SampleEdges& edges, std::uint64_t bits[kMaxSamples]) {
   using I = typename V<W>::I;
   constexpr int kChunks = 16 / W;
+  const int chunks = edges.left_half && W == 8 ? 1 : kChunks;  // (W = 8: a chunk is two quads, four columns)
   I value[3][kChunks];
   for (int e = 0; e < 3; ++e)
-    for (int c = 0; c < kChunks; ++c) {
+    for (int c = 0; c < chunks; ++c) {
       const I ix = LoadVec<I>(kRegionX + c * W), iy = LoadVec<I>(kRegionY + c * W);
       value[e][c] = (edges.c00[e] + 2 * edges.row0 * edges.sy[e]) + ix * edges.sx[e] + iy * edges.sy[e];
     }
-  for (int s = 0; s < edges.samples; ++s) bits[s] = 0;
-  const int chunks = edges.left_half && W == 8 ? 1 : kChunks;  // (W = 8: a chunk is two quads, four columns)
+  std::uint64_t out[S] = {};
   for (int row = edges.row0; row <= edges.row1; ++row) {
     for (int c = 0; c < chunks; ++c) {
-      for (int s = 0; s < edges.samples; ++s) {
+      for (int s = 0; s < S; ++s) {
         const I outside = (value[0][c] + edges.delta[s][0]) | (value[1][c] + edges.delta[s][1]) |
                           (value[2][c] + edges.delta[s][2]);
-        bits[s] |= std::uint64_t(MaskToBits<W>(~outside >> 31, 0)) << (row * 16 + c * W);
+        out[s] |= std::uint64_t(MaskToBits<W>(~outside >> 31, 0)) << (row * 16 + c * W);
       }
       for (int e = 0; e < 3; ++e) value[e][c] += 2 * edges.sy[e];
     }
   }
+  for (int s = 0; s < S; ++s) bits[s] = out[s];
 }
 using SampleCoverageFn = void (*)(const SampleEdges&, std::uint64_t*);
-void SampleRegionCoverageBase(const SampleEdges& e, std::uint64_t* bits) { SampleRegionCoverage<4>(e, bits); }
+template <int S>
+void SampleRegionCoverageBase(const SampleEdges& e, std::uint64_t* bits) { SampleRegionCoverage<4, S>(e, bits); }
 #if defined(SOFTGL_HAS_DISPATCH)
+template <int S>
 SOFTGL_TARGET_AVX2 void SampleRegionCoverageAvx2(const SampleEdges& e, std::uint64_t* bits) {
-  SampleRegionCoverage<8>(e, bits);
+  SampleRegionCoverage<8, S>(e, bits);
 }
+template <int S>
 SOFTGL_TARGET_AVX512 void SampleRegionCoverageAvx512(const SampleEdges& e, std::uint64_t* bits) {
-  SampleRegionCoverage<8>(e, bits);
+  SampleRegionCoverage<8, S>(e, bits);
 }
 #endif
+// The kernel for `samples` (2, 4 or 8), chosen once per count.
+SampleCoverageFn SampleCoverageFor(int samples) {
+  static const SampleCoverageFn k2 = SOFTGL_CHOOSE(SampleRegionCoverage, <2>);
+  static const SampleCoverageFn k4 = SOFTGL_CHOOSE(SampleRegionCoverage, <4>);
+  static const SampleCoverageFn k8 = SOFTGL_CHOOSE(SampleRegionCoverage, <8>);
+  return samples == 2 ? k2 : samples == 4 ? k4 : k8;
+}
 
 // The lanes (in RegionCoverage's order) of the region's pixels with ix in [x0, x1) and iy in [y0, y1), 0 <= x0, y0
 // and x1, y1 <= 8: from tables of the lanes left of each column and below each row.
@@ -475,8 +486,8 @@ namespace {
 
 // The samples of a triangle whose edge functions are A x + B y + C (snapped units, tie rule folded into C; > =
 // 0 inside) over the pixels of `box` (every one inside `bounds`), 8x8 regions at a time: `emit(qx, qy, mask,
-// sample_masks)` for each quad with some sample covered, mask its lanes with any, sample_masks[s] its lanes with
-// sample s. Each sample's test is the exact integer test of a pixel centre, at the sample's position.
+// cover, shift)` for each quad with some sample covered, mask its lanes with any, bits shift to shift + 3 of
+// cover[s] its lanes with sample s. Each sample's test is the exact integer test of a pixel centre, at the sample's position.
 // `small`: the triangle's samples all lie in one region (from the box's first quad) even before the bounds cut it,
 // so that its vertices lie within a few pixels and all its edge values there fit 32 bits.
 // A region every sample of every pixel of which is covered goes to `square(bx, by)` as four 4x4 squares instead.
@@ -484,22 +495,19 @@ template <class Emit, class Square>
 void RasterizeSamples(const std::int64_t A[3], const std::int64_t B[3], const std::int64_t C[3], const Rect& box,
                       int samples, bool small, Emit&& emit, Square&& square) {
   constexpr int kRegion = 8;
-  static const SampleCoverageFn sample_coverage = SOFTGL_CHOOSE(SampleRegionCoverage);
+  const SampleCoverageFn sample_coverage = SampleCoverageFor(samples);
   const auto* pos = SamplePositions(samples);
   auto emit_region = [&](std::int64_t rx, std::int64_t ry, std::uint64_t any, const std::uint64_t* cover) {
     while (any) {
       const int q = __builtin_ctzll(any) >> 2;
       const unsigned mask = unsigned(any >> (4 * q)) & 0xFu;
       any &= ~(std::uint64_t(0xF) << (4 * q));
-      std::uint32_t lanes[kMaxSamples];
-      for (int s = 0; s < samples; ++s) lanes[s] = std::uint32_t(cover[s] >> (4 * q)) & 0xFu;
-      emit(int(rx) + (q & 3) * 2, int(ry) + (q >> 2) * 2, mask, lanes);
+      emit(int(rx) + (q & 3) * 2, int(ry) + (q >> 2) * 2, mask, cover, 4 * q);
     }
   };
   if (small) {
     const std::int64_t rx = box.x0 & ~1, ry = box.y0 & ~1;
     SampleEdges edges;
-    edges.samples = samples;
     for (int e = 0; e < 3; ++e) {
       edges.c00[e] = std::int32_t(A[e] * rx * kOne + B[e] * ry * kOne + C[e]);
       edges.sx[e] = std::int32_t(A[e] * kOne);
@@ -538,15 +546,26 @@ void RasterizeSamples(const std::int64_t A[3], const std::int64_t B[3], const st
     lo[e] = std::min<std::int64_t>(dx, 0) + std::min<std::int64_t>(dy, 0) + dmin;
     hi[e] = std::max<std::int64_t>(dx, 0) + std::max<std::int64_t>(dy, 0) + dmax;
   }
-  // (A crossing edge's values there lie within hi - lo <= 8 (|sx| + |sy|) of 0: 32 bits while narrow.)
+  // (A crossing edge's values there lie within hi - lo <= 8 (|sx| + |sy|) of 0: 32 bits while narrow.) The
+  // samples' deltas go to the kernel once; an edge left out of a region's test gets value kInside and no steps
+  // there (kInside + delta > 0: |delta| <= |sx| + |sy| <= 2^27 while narrow).
+  constexpr std::int32_t kInside = std::int32_t(1) << 30;
+  SampleEdges edges;
+  for (int s = 0; s < samples && narrow; ++s)
+    for (int e = 0; e < 3; ++e) edges.delta[s][e] = std::int32_t(delta[s][e]);
   const std::int64_t qx_first = box.x0 & ~1, qy_first = box.y0 & ~1;
+  std::int64_t row_base[3];  // each edge at the first pixel of the row's first region, stepped region by region
+  for (int e = 0; e < 3; ++e) row_base[e] = A[e] * qx_first * kOne + B[e] * qy_first * kOne + C[e];
   for (std::int64_t ry = qy_first; ry < box.y1; ry += kRegion) {
-    for (std::int64_t rx = qx_first; rx < box.x1; rx += kRegion) {
+    std::int64_t base[3] = {row_base[0], row_base[1], row_base[2]};
+    for (int e = 0; e < 3; ++e) row_base[e] += step_y[e] * kRegion;
+    auto next_region = [&] {
+      for (int e = 0; e < 3; ++e) base[e] += step_x[e] * kRegion;
+    };
+    for (std::int64_t rx = qx_first; rx < box.x1; rx += kRegion, next_region()) {
       bool skip = false, whole = true;
-      std::int64_t base[3];
-      for (int e = 0; e < 3 && !skip; ++e) {
-        base[e] = A[e] * rx * kOne + B[e] * ry * kOne + C[e];
-        skip = base[e] + hi[e] < 0;
+      for (int e = 0; e < 3; ++e) {
+        skip = skip || base[e] + hi[e] < 0;
         whole = whole && base[e] + lo[e] >= 0;
       }
       if (skip) continue;
@@ -561,14 +580,11 @@ void RasterizeSamples(const std::int64_t A[3], const std::int64_t B[3], const st
                                            int(std::min<std::int64_t>(box.y1 - ry, kRegion)));
       std::uint64_t cover[kMaxSamples], any = 0;
       if (narrow) {
-        SampleEdges edges;
-        edges.samples = samples;
         for (int e = 0; e < 3; ++e) {
-          const bool test = base[e] + lo[e] < 0;  // else inside at every sample: 0 everywhere
-          edges.c00[e] = test ? std::int32_t(base[e]) : 0;
+          const bool test = base[e] + lo[e] < 0;  // else inside at every sample
+          edges.c00[e] = test ? std::int32_t(base[e]) : kInside;
           edges.sx[e] = test ? std::int32_t(step_x[e]) : 0;
           edges.sy[e] = test ? std::int32_t(step_y[e]) : 0;
-          for (int s = 0; s < samples; ++s) edges.delta[s][e] = test ? std::int32_t(delta[s][e]) : 0;
         }
         edges.row0 = int((std::max<std::int64_t>(ry, box.y0) - ry) >> 1);  // the quad rows of the box
         edges.row1 = int((std::min<std::int64_t>(ry + kRegion, box.y1) - 1 - ry) >> 1);
@@ -725,13 +741,13 @@ void RasterizeTriangle(const VertexView& v0, const VertexView& v1, const VertexV
     const bool small = LastAt(maxX, span.x0) - (FirstAt(minX, span.x1) & ~std::int64_t(1)) < kRegion &&
                        LastAt(maxY, span.y0) - (FirstAt(minY, span.y1) & ~std::int64_t(1)) < kRegion;
     RasterizeSamples(A, B, C, Rect{int(px0), int(py0), int(px1) + 1, int(py1) + 1}, target.samples, small,
-                     [&](int qx, int qy, unsigned mask, const std::uint32_t* sample_masks) {
+                     [&](int qx, int qy, unsigned mask, const std::uint64_t* cover, int shift) {
                        int slot;
                        const int b = AddQuad(blocks, sink, front_facing, nvar, qx, qy, mask, slot, open, false);
                        blocks.quad_planes[b][slot] = entry.For(blocks, planes, varying_planes);
-                       const std::uint32_t clear = ~(std::uint32_t(0xF) << (4 * slot));
+                       // (a new slot's sample bits are 0)
                        for (int s = 0; s < blocks.samples; ++s)
-                         blocks.sample_live[b][s] = (blocks.sample_live[b][s] & clear) | (sample_masks[s] << (4 * slot));
+                         blocks.sample_live[b][s] |= (std::uint32_t(cover[s] >> shift) & 0xFu) << (4 * slot);
                      },
                      [&](int bx, int by) {
                        const int b = AddSquare(blocks, sink, front_facing, nvar, bx, by);

@@ -55,10 +55,11 @@ Rect Intersect(const Rect& a, const Rect& b) {
 // The depth of each sample of a batch's lanes: the pixel centre's plus the change of the triangle's depth plane from
 // the centre to the sample (a line's or point's fragments have one depth; with MULTISAMPLE disabled, `at_samples`
 // false, every sample takes the centre's).
-void FillSampleDepths(const BlockBuffer& blocks, int samples, bool at_samples, SampleDepths& depths) {
-  const auto* pos = SamplePositions(samples);
-  float ox[kMaxSamples], oy[kMaxSamples];
-  for (int s = 0; s < samples; ++s) {
+template <int S>
+void FillSampleDepths(const BlockBuffer& blocks, bool at_samples, SampleDepths& depths) {
+  const auto* pos = SamplePositions(S);
+  float ox[S], oy[S];
+  for (int s = 0; s < S; ++s) {
     ox[s] = float(pos[s][0]) / 16.0f - 0.5f;
     oy[s] = float(pos[s][1]) / 16.0f - 0.5f;
   }
@@ -67,13 +68,18 @@ void FillSampleDepths(const BlockBuffer& blocks, int samples, bool at_samples, S
     for (int q = 0; q < 4; ++q) {
       const TrianglePlanes* p = blocks.quad_planes[b][q];
       const F4 centre = LoadVec<F4>(&blocks.frag_coord[b][2][4 * q]);
-      if (!p || !at_samples || !((blocks.live[b] >> (4 * q)) & 0xFu)) {
-        for (int s = 0; s < samples; ++s) StoreVec(&depths.z[b][s][4 * q], centre);
-        continue;
-      }
-      const float dx = p->z.dx, dy = p->z.dy;  // (read once: the stores could alias them)
-      for (int s = 0; s < samples; ++s) StoreVec(&depths.z[b][s][4 * q], centre + (dx * ox[s] + dy * oy[s]));
+      float delta[S] = {};
+      if (p && at_samples && ((blocks.live[b] >> (4 * q)) & 0xFu))
+        for (int s = 0; s < S; ++s) delta[s] = p->z.dx * ox[s] + p->z.dy * oy[s];
+      for (int s = 0; s < S; ++s) StoreVec(&depths.z[b][s][4 * q], centre + delta[s]);
     }
+  }
+}
+void FillSampleDepths(const BlockBuffer& blocks, int samples, bool at_samples, SampleDepths& depths) {
+  switch (samples) {
+    case 2: return FillSampleDepths<2>(blocks, at_samples, depths);
+    case 4: return FillSampleDepths<4>(blocks, at_samples, depths);
+    default: return FillSampleDepths<8>(blocks, at_samples, depths);
   }
 }
 
