@@ -438,8 +438,9 @@ inline const float* PlaneDepths(const BlockOpsContext& ctx, int b, int s) {
 }
 
 // The per-fragment operations on block b (inside the target, colour buffer 0 RGBA8 or none, no other colour
-// buffer), W lanes at a time, on every sample plane the lanes cover; the colour converted to bytes once.
-template <int W>
+// buffer), W lanes at a time, on every sample plane the lanes cover (kSamples: ctx.depths given); the colour
+// converted to bytes once.
+template <int W, bool kSamples>
 SOFTGL_WIDE void BlockOps(const BlockOpsContext& ctx, int b) {
   using F = typename V<W>::F;
   using I = typename V<W>::I;
@@ -461,8 +462,8 @@ SOFTGL_WIDE void BlockOps(const BlockOpsContext& ctx, int b) {
       for (int c = 0; c < 4; ++c) color[c] = LoadVec<F>(bb.Color(b, 0, c) + l0);
       if (!ctx.blend->blend) packed = Blend8Lanes<W>(*ctx.blend, color, U{});
     }
-    for (int s = 0; s < ctx.samples; ++s) {
-      const std::uint32_t lanes = PlaneLanes(ctx, b, s);
+    for (int s = 0; s < (kSamples ? ctx.samples : 1); ++s) {
+      const std::uint32_t lanes = kSamples ? live & bb.sample_live[b][s] : live;
       if (!((lanes >> l0) & kChunk)) continue;
       I go = BitsToMask<W>(lanes, l0);
       I sten{};
@@ -478,7 +479,7 @@ SOFTGL_WIDE void BlockOps(const BlockOpsContext& ctx, int b) {
       }
       if (ctx.depth_test) {
         float* depth = t.depth + t.depth_plane * std::size_t(s);
-        const F z = LoadVec<F>(PlaneDepths(ctx, b, s) + l0);
+        const F z = LoadVec<F>((ctx.shader_depth ? bb.Depth(b) : kSamples ? ctx.depths->z[b][s] : bb.frag_coord[b][2]) + l0);
         F zc = z > 0.0f ? z : F{} + 0.0f;  // clamped to [0, 1]; NaN fails below
         zc = zc < 1.0f ? zc : F{} + 1.0f;
         const F stored = LoadQuads<float, W, F>(depth, depth_at, l0);
@@ -576,52 +577,76 @@ void LaneOps(const BlockOpsContext& ctx, const Unorm8Blend* per_buffer, int b, c
 }
 
 using BlockOpsFn = void (*)(const BlockOpsContext&, int);
-void BlockOpsBase(const BlockOpsContext& ctx, int b) { BlockOps<4>(ctx, b); }
+template <bool kSamples>
+void BlockOpsBase(const BlockOpsContext& ctx, int b) { BlockOps<4, kSamples>(ctx, b); }
 #if defined(SOFTGL_HAS_DISPATCH)
-SOFTGL_TARGET_AVX2 void BlockOpsAvx2(const BlockOpsContext& ctx, int b) { BlockOps<8>(ctx, b); }
+template <bool kSamples>
+SOFTGL_TARGET_AVX2 void BlockOpsAvx2(const BlockOpsContext& ctx, int b) { BlockOps<8, kSamples>(ctx, b); }
 // 8 lanes on AVX-512 too: GCC 12 compiles this unit's 16-lane comparisons lane by lane (see simd.h).
-SOFTGL_TARGET_AVX512 void BlockOpsAvx512(const BlockOpsContext& ctx, int b) { BlockOps<8>(ctx, b); }
+template <bool kSamples>
+SOFTGL_TARGET_AVX512 void BlockOpsAvx512(const BlockOpsContext& ctx, int b) { BlockOps<8, kSamples>(ctx, b); }
 #endif
 
-// The early test on block b, W lanes at a time; returns its live lanes. Into a multisampled target (`depths`
-// given), each sample's covered lanes against its plane: a lane's sample that fails is no longer covered.
+// The early test on block b, W lanes at a time; returns its live lanes.
 template <int W>
-SOFTGL_WIDE std::uint32_t EarlyBlock(Enum func, BlockBuffer& bb, const RenderTarget& t, int b, const SampleDepths* depths) {
+SOFTGL_WIDE std::uint32_t EarlyBlock(Enum func, BlockBuffer& bb, const RenderTarget& t, int b) {
+  using F = typename V<W>::F;
+  using I = typename V<W>::I;
+  const QuadPlaces depth_at(bb, b, t.depth_pitch);
+  std::uint32_t keep = 0;
+  for (int l0 = 0; l0 < kLanes; l0 += W) {
+    const F z = LoadVec<F>(&bb.frag_coord[b][2][l0]);
+    F zc = z > 0.0f ? z : F{} + 0.0f;
+    zc = zc < 1.0f ? zc : F{} + 1.0f;
+    const F stored = LoadQuads<float, W, F>(t.depth, depth_at, l0);
+    const I pass = Compare(func, zc, stored) & (z == z);
+    keep |= MaskToBits<W>(pass, l0);
+  }
+  return bb.live[b] &= keep;
+}
+// The same into a multisampled target: each sample's covered lanes at its depth against its plane; a lane's sample
+// that fails is no longer covered.
+template <int W>
+SOFTGL_WIDE std::uint32_t EarlyBlockSamples(Enum func, BlockBuffer& bb, const RenderTarget& t, int b,
+                                            const SampleDepths* depths) {
   using F = typename V<W>::F;
   using I = typename V<W>::I;
   constexpr std::uint32_t kChunk = (1u << W) - 1u;
   const QuadPlaces depth_at(bb, b, t.depth_pitch);
-  auto test = [&](const float* z_lanes, const float* plane, std::uint32_t lanes) SOFTGL_WIDE_LAMBDA {
+  std::uint32_t any = 0;
+  for (int s = 0; s < t.samples; ++s) {
+    const std::uint32_t lanes = bb.live[b] & bb.sample_live[b][s];
+    const float* plane = t.depth + t.depth_plane * std::size_t(s);
     std::uint32_t keep = 0;
     for (int l0 = 0; l0 < kLanes; l0 += W) {
       if (!((lanes >> l0) & kChunk)) continue;
-      const F z = LoadVec<F>(z_lanes + l0);
+      const F z = LoadVec<F>(depths->z[b][s] + l0);
       F zc = z > 0.0f ? z : F{} + 0.0f;
       zc = zc < 1.0f ? zc : F{} + 1.0f;
       const F stored = LoadQuads<float, W, F>(plane, depth_at, l0);
       const I pass = Compare(func, zc, stored) & (z == z);
       keep |= MaskToBits<W>(pass, l0);
     }
-    return lanes & keep;
-  };
-  if (!depths) return bb.live[b] = test(bb.frag_coord[b][2], t.depth, bb.live[b]);
-  std::uint32_t any = 0;
-  for (int s = 0; s < t.samples; ++s)
-    any |= bb.sample_live[b][s] = test(depths->z[b][s], t.depth + t.depth_plane * std::size_t(s), bb.live[b] & bb.sample_live[b][s]);
+    any |= bb.sample_live[b][s] = lanes & keep;
+  }
   return bb.live[b] &= any;
 }
 using EarlyBlockFn = std::uint32_t (*)(Enum, BlockBuffer&, const RenderTarget&, int, const SampleDepths*);
+template <int W>
+SOFTGL_WIDE std::uint32_t EarlyBlockEither(Enum f, BlockBuffer& bb, const RenderTarget& t, int b, const SampleDepths* d) {
+  return d ? EarlyBlockSamples<W>(f, bb, t, b, d) : EarlyBlock<W>(f, bb, t, b);
+}
 std::uint32_t EarlyBlockBase(Enum f, BlockBuffer& bb, const RenderTarget& t, int b, const SampleDepths* d) {
-  return EarlyBlock<4>(f, bb, t, b, d);
+  return EarlyBlockEither<4>(f, bb, t, b, d);
 }
 #if defined(SOFTGL_HAS_DISPATCH)
 SOFTGL_TARGET_AVX2 std::uint32_t EarlyBlockAvx2(Enum f, BlockBuffer& bb, const RenderTarget& t, int b, const SampleDepths* d) {
-  return EarlyBlock<8>(f, bb, t, b, d);
+  return EarlyBlockEither<8>(f, bb, t, b, d);
 }
 // 8 lanes on AVX-512 too, with its instruction set: measured faster than 16 on the bench scenes (docs/performance.md).
 SOFTGL_TARGET_AVX512 std::uint32_t EarlyBlockAvx512(Enum f, BlockBuffer& bb, const RenderTarget& t, int b,
                                                     const SampleDepths* d) {
-  return EarlyBlock<8>(f, bb, t, b, d);
+  return EarlyBlockEither<8>(f, bb, t, b, d);
 }
 #endif
 
@@ -680,23 +705,18 @@ void BlockOpsAll(const FragmentOpsState& state, const FragmentOpsPlan& plan, con
   ctx.samples = depths ? target.samples : 1;
   std::uint64_t passed = 0;
   ctx.passed = state.occlusion[0] || state.occlusion[1] ? &passed : nullptr;
-  static const BlockOpsFn block_ops = SOFTGL_CHOOSE(BlockOps);
-  RenderTarget planes[kMaxSamples];  // each sample's plane, for the lane-by-lane path (made when it is first needed)
-  bool have_planes = false;
+  static const BlockOpsFn block_ops = SOFTGL_CHOOSE(BlockOps, <false>);
+  static const BlockOpsFn block_ops_samples = SOFTGL_CHOOSE(BlockOps, <true>);
   for (int b = 0; b < blocks.count; ++b) {
     if (!blocks.live[b]) continue;
     if (plan.wide_target && Inside(target, blocks, b)) {
-      block_ops(ctx, b);
-      continue;
-    }
-    if (!depths) {
+      (depths ? block_ops_samples : block_ops)(ctx, b);
+    } else if (!depths) {
       LaneOps(ctx, plan.blend, b, target, blocks.live[b], PlaneDepths(ctx, b, 0));
-      continue;
+    } else {
+      for (int s = 0; s < target.samples; ++s)
+        LaneOps(ctx, plan.blend, b, target.Sample(s), PlaneLanes(ctx, b, s), PlaneDepths(ctx, b, s));
     }
-    if (!have_planes)
-      for (int s = 0; s < target.samples; ++s) planes[s] = target.Sample(s);
-    have_planes = true;
-    for (int s = 0; s < target.samples; ++s) LaneOps(ctx, plan.blend, b, planes[s], PlaneLanes(ctx, b, s), PlaneDepths(ctx, b, s));
   }
   for (OcclusionCounter* c : state.occlusion)
     if (c && passed) c->passed.fetch_add(passed, std::memory_order_relaxed);

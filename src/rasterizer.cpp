@@ -107,7 +107,7 @@ inline int AddQuad(BlockBuffer& blocks, const BlockSink& sink, bool front_facing
     b = blocks.count++;
     blocks.quads[b] = 0;
     blocks.live[b] = 0;
-    for (int s = 0; s < blocks.samples; ++s) blocks.sample_live[b][s] = 0;
+    if (blocks.samples > 1) std::fill_n(blocks.sample_live[b], blocks.samples, 0u);
   }
   slot = blocks.quads[b]++;
   blocks.qx[b][slot] = qx;
