@@ -74,12 +74,12 @@ struct MultisampleFbo {
   Context& gl;
   std::uint32_t ms = 0, single = 0;
   int width, height;
-  MultisampleFbo(Context& context, int samples, int w, int h) : gl(context), width(w), height(h) {
+  MultisampleFbo(Context& context, int samples, int w, int h, Enum colour = RGBA8) : gl(context), width(w), height(h) {
     const std::uint32_t rb[3] = {gl.GenRenderbuffer(), gl.GenRenderbuffer(), gl.GenRenderbuffer()};
     ms = gl.GenFramebuffer();
     gl.BindFramebuffer(FRAMEBUFFER, ms);
     gl.BindRenderbuffer(RENDERBUFFER, rb[0]);
-    gl.RenderbufferStorageMultisample(RENDERBUFFER, samples, RGBA8, w, h);
+    gl.RenderbufferStorageMultisample(RENDERBUFFER, samples, colour, w, h);
     gl.FramebufferRenderbuffer(FRAMEBUFFER, COLOR_ATTACHMENT0, RENDERBUFFER, rb[0]);
     gl.BindRenderbuffer(RENDERBUFFER, rb[1]);
     gl.RenderbufferStorageMultisample(RENDERBUFFER, samples, DEPTH24_STENCIL8, w, h);
@@ -315,6 +315,60 @@ TEST_CASE_METHOD(Fixture, "multisample: stencil is kept per sample", "[multisamp
   CHECK(fbo.Red(7, 3) == 255);
   CHECK(std::abs(fbo.Red(8, 3) - 128) <= 1);
   CHECK(fbo.Red(9, 3) == 0);
+}
+
+TEST_CASE("multisample: the lane-by-lane operations (a float target, an odd size) match the vector path's",
+          "[multisample]") {
+  // Overlapping random triangles of random depths and colours, depth-tested, each pass counting into the stencil
+  // per sample; then a cover pass of stencil EQUAL 2. An RGBA8 target of even size takes every block through the
+  // vector operations; RGBA16F takes them lane by lane, and an odd-sized RGBA8 target its edge blocks. The
+  // colours are multiples of 1/255 (exact in both formats), so the resolves (averages rounded to bytes) agree
+  // within 1.
+  auto render = [](Enum format, int w, int h) {
+    Context gl(w, h);
+    MultisampleFbo fbo(gl, 4, w, h, format);
+    fbo.Clear(COLOR_BUFFER_BIT | DEPTH_BUFFER_BIT | STENCIL_BUFFER_BIT);
+    SolidShader shader;
+    gl.Enable(DEPTH_TEST);
+    gl.Enable(STENCIL_TEST);
+    gl.StencilFunc(ALWAYS, 0, 0xFF);
+    gl.StencilOp(KEEP, KEEP, INCR);
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<float> pos(-4.0f, 40.0f), depth(-0.5f, 0.9f);
+    std::uniform_int_distribution<int> byte(0, 255);
+    for (int t = 0; t < 40; ++t) {
+      shader.color = glm::vec4(float(byte(rng)), float(byte(rng)), float(byte(rng)), 255.0f) / 255.0f;
+      DrawWindowTriangle(gl, shader, {pos(rng), pos(rng)}, {pos(rng), pos(rng)}, {pos(rng), pos(rng)}, w, h, depth(rng),
+                         depth(rng), depth(rng));
+    }
+    gl.Disable(DEPTH_TEST);
+    gl.StencilFunc(EQUAL, 2, 0xFF);
+    gl.StencilOp(KEEP, KEEP, KEEP);
+    shader.color = glm::vec4(0.0f, 0.0f, 1.0f, 1.0f);
+    DrawWindowTriangle(gl, shader, {-40, -40}, {90, -40}, {-40, 90}, w, h);
+    DrawWindowTriangle(gl, shader, {-40, 90}, {90, -40}, {90, 90}, w, h);
+    fbo.Resolve();
+    std::vector<std::uint8_t> px(std::size_t(w * h) * 4);
+    gl.ReadPixels(0, 0, w, h, RGBA, UNSIGNED_BYTE, px.data());
+    return px;
+  };
+  const std::vector<std::uint8_t> vector_path = render(RGBA8, 32, 32), lanes = render(RGBA16F, 32, 32);
+  const std::vector<std::uint8_t> odd = render(RGBA8, 31, 31);
+  int differ = 0, blue = 0, edged = 0;
+  for (int y = 0; y < 31; ++y)
+    for (int x = 0; x < 31; ++x) {
+      const std::size_t i = std::size_t(y * 32 + x) * 4, j = std::size_t(y * 31 + x) * 4;
+      for (int c = 0; c < 4; ++c) {
+        differ += std::abs(int(vector_path[i + c]) - int(lanes[i + c])) > 1;
+        differ += std::abs(int(vector_path[i + c]) - int(odd[j + c])) > 1;
+      }
+      blue += vector_path[i + 2] == 255 && vector_path[i] == 0;
+      edged += vector_path[i + 2] != 255 && vector_path[i + 2] > 0 && vector_path[i] > 0;
+    }
+  INFO(blue << " pixels blue, " << edged << " mixed");
+  CHECK(differ == 0);
+  CHECK(blue > 20);    // the stencil pass drew where exactly two triangles passed
+  CHECK(edged > 20);   // and the resolve mixed samples
 }
 
 TEST_CASE("multisample: lines and points cover every sample of their pixels", "[multisample]") {
