@@ -24,6 +24,11 @@ Context::Context(int width, int height, const Options& options) : state_(std::ma
   } else if (options.color_format != RGBA8) {
     state_->SetError(INVALID_ENUM, __func__, "Options::color_format must be RGBA8, SRGB8_ALPHA8 or RGB565");
   }
+  if (options.depth_format == DEPTH_COMPONENT16) {
+    state_->fb.depth16 = true;
+  } else if (options.depth_format != DEPTH_COMPONENT32F) {
+    state_->SetError(INVALID_ENUM, __func__, "Options::depth_format must be DEPTH_COMPONENT32F or DEPTH_COMPONENT16");
+  }
   if (options.samples < 0 || options.samples > detail::kMaxSamples)
     state_->SetError(INVALID_VALUE, __func__, "Options::samples must be 0 to 8");
   else

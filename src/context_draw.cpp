@@ -64,6 +64,7 @@ void ContextState::Draw(const detail::DrawCall& call) {
                            std::min(ds.viewport.rect.x1, fbr.x1), std::min(ds.viewport.rect.y1, fbr.y1)};
   ds.primitive = primitive;
   ds.samples = target.samples > 1 && ops.multisample.multisample ? target.samples : 1;
+  ds.depth16 = target.depth16 != nullptr;
   if (active_query[2]) ds.primitives_generated = &queries.at(active_query[2])->count;
   packet.bounds = ds.bounds;
   if (!frame.Accepts(target)) Sync(__func__);

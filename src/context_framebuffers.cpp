@@ -70,7 +70,11 @@ detail::RenderTarget FramebufferTarget(const FramebufferObject& f, bool srgb) {
     cb.plane = std::size_t(a.Level()->width) * std::size_t(a.Level()->height);
   }
   if (f.depth.Present()) {
-    t.depth = reinterpret_cast<float*>(const_cast<std::uint8_t*>(f.depth.Level()->data.data())) + f.depth.PlaneOffset();
+    std::uint8_t* data = const_cast<std::uint8_t*>(f.depth.Level()->data.data());
+    if (f.depth.Level()->layout == detail::TexelLayout::kUnorm16x1)  // DEPTH_COMPONENT16
+      t.depth16 = reinterpret_cast<std::uint16_t*>(data) + f.depth.PlaneOffset();
+    else
+      t.depth = reinterpret_cast<float*>(data) + f.depth.PlaneOffset();
     t.depth_pitch = f.depth.Level()->width;
     t.depth_plane = std::size_t(f.depth.Level()->width) * std::size_t(f.depth.Level()->height);
   }
@@ -229,7 +233,7 @@ void Context::ReadPixels(int x, int y, int width, int height, Enum format, Enum 
   if (ReadFboSamples(s) > 1) return s.SetError(INVALID_OPERATION, __func__, "the read framebuffer object is multisampled: resolve it with BlitFramebuffer first");
   s.Sync(__func__);
   const detail::RenderTarget t = ReadTarget(s);
-  if ((l.depth && !t.depth) || (l.stencil && !t.stencil) || (l.count > 0 && !l.depth && !l.stencil && !t.color[0].Present()))
+  if ((l.depth && !t.HasDepth()) || (l.stencil && !t.stencil) || (l.count > 0 && !l.depth && !l.stencil && !t.color[0].Present()))
     return s.SetError(INVALID_OPERATION, __func__, "the read framebuffer has no buffer of that kind");
   if (pixels == nullptr || width == 0 || height == 0) return;
   const PackLayout pack = Pack(s, width, l, type, pixels);
@@ -242,11 +246,11 @@ void Context::ReadPixels(int x, int y, int width, int height, Enum format, Enum 
     for (int px = x0; px < x1; ++px) {
       std::uint8_t* dst = pack.At(px - x, py - y);
       if (format == DEPTH_STENCIL) {
-        const double d = std::clamp(double(t.Depth(px, py)), 0.0, 1.0);
+        const double d = std::clamp(double(t.DepthAt(px, py)), 0.0, 1.0);
         const std::uint32_t word = std::uint32_t(std::llround(d * 16777215.0)) << 8 | t.Stencil(px, py);
         std::memcpy(dst, &word, 4);
       } else if (l.depth) {
-        PutComponent(type, double(t.Depth(px, py)), false, dst);
+        PutComponent(type, double(t.DepthAt(px, py)), false, dst);
       } else if (l.stencil) {
         PutComponent(type, double(t.Stencil(px, py)), true, dst);
       } else {
@@ -303,7 +307,7 @@ bool CheckCopySource(ContextState& s, const char* what, bool depth) {
   if (s.read_fbo && FramebufferStatus(*s.read_fbo) != FRAMEBUFFER_COMPLETE) return s.SetError(INVALID_FRAMEBUFFER_OPERATION, what, "the read framebuffer is not complete"), false;
   if (ReadFboSamples(s) > 1) return s.SetError(INVALID_OPERATION, what, "the read framebuffer object is multisampled: resolve it with BlitFramebuffer first"), false;
   const detail::RenderTarget t = ReadTarget(s);
-  if (depth ? !t.depth : !t.color[0].Present()) return s.SetError(INVALID_OPERATION, what, "the read framebuffer has no buffer of the texture's kind"), false;
+  if (depth ? !t.HasDepth() : !t.color[0].Present()) return s.SetError(INVALID_OPERATION, what, "the read framebuffer has no buffer of the texture's kind"), false;
   return true;
 }
 
@@ -320,7 +324,7 @@ void CopyToLevel(ContextState& s, const char* what, detail::TextureLevel& lv, in
       if (px < 0 || py < 0 || px >= t.width || py >= t.height) continue;
       float* dst = rect.data() + (std::size_t(j) * std::size_t(w) + std::size_t(i)) * (depth ? 1 : 4);
       if (depth) {
-        *dst = t.Depth(px, py);
+        *dst = t.DepthAt(px, py);
       } else {
         const glm::vec4 c = t.color[0].Load(px, py);
         for (int k = 0; k < 4; ++k) dst[k] = c[k];
@@ -388,8 +392,8 @@ void Context::CopyTexImage2D(Enum target, int level, Enum internal_format, int x
 float Context::ReadDepth(int x, int y) const {
   state_->Sync(__func__);
   const detail::RenderTarget t = ReadTarget(*state_);
-  if (!t.depth || x < 0 || y < 0 || x >= t.width || y >= t.height) return 0.0f;
-  return t.Depth(x, y);
+  if (!t.HasDepth() || x < 0 || y < 0 || x >= t.width || y >= t.height) return 0.0f;
+  return t.DepthAt(x, y);
 }
 
 std::uint8_t Context::ReadStencil(int x, int y) const {
@@ -790,9 +794,14 @@ namespace {
 
 // The depth and stencil formats BlitFramebuffer compares (OpenGL requires them to match): the bits of the read or
 // draw framebuffer's depth buffer and stencil buffer, 0 where there is none. The context's framebuffer counts as
-// DEPTH24_STENCIL8 (its depth is stored as float, as every depth format is).
-FormatBits DepthStencilBits(const FramebufferObject* f) {
-  if (!f) return BitsOf(DEPTH24_STENCIL8);
+// DEPTH24_STENCIL8 (its depth is stored as float, as DEPTH_COMPONENT24's is), or with 16-bit depth
+// (Options::depth_format) as DEPTH_COMPONENT16 with 8 stencil bits.
+FormatBits DepthStencilBits(const FramebufferObject* f, bool default_depth16) {
+  if (!f) {
+    FormatBits b = BitsOf(DEPTH24_STENCIL8);
+    if (default_depth16) b.depth = 16;
+    return b;
+  }
   FormatBits b;
   if (f->depth.Present()) b.depth = BitsOf(f->depth.Level()->format).depth;
   if (f->stencil.Present()) b.stencil = BitsOf(f->stencil.Level()->format).stencil;
@@ -825,16 +834,16 @@ void Context::BlitFramebuffer(int src_x0, int src_y0, int src_x1, int src_y1, in
        std::abs(std::int64_t(src_y1) - src_y0) != std::abs(std::int64_t(dst_y1) - dst_y0)))
     return s.SetError(INVALID_OPERATION, __func__, "a blit from or to a multisampled framebuffer cannot scale: the rectangles must be the same size");
   // A buffer missing from either framebuffer is skipped without an error (OpenGL 4.6, section 18.3.1).
-  const bool depth = (mask & DEPTH_BUFFER_BIT) != 0 && src.depth && dst.depth;
+  const bool depth = (mask & DEPTH_BUFFER_BIT) != 0 && src.HasDepth() && dst.HasDepth();
   const bool stencil = (mask & STENCIL_BUFFER_BIT) != 0 && src.stencil && dst.stencil;
   if (depth || stencil) {
-    const FormatBits a = DepthStencilBits(s.read_fbo), b = DepthStencilBits(s.draw_fbo);
+    const FormatBits a = DepthStencilBits(s.read_fbo, s.fb.depth16), b = DepthStencilBits(s.draw_fbo, s.fb.depth16);
     const bool depth_differs = a.depth != b.depth || a.r != b.r;
     if ((depth && depth_differs) || (stencil && (a.stencil != b.stencil || (a.depth && b.depth && depth_differs))))
       return s.SetError(INVALID_OPERATION, __func__, "the read and draw framebuffers' depth or stencil formats differ");
   }
   const bool color = (mask & COLOR_BUFFER_BIT) != 0 && src.color[0].Present();
-  bool same = (depth && src.depth == dst.depth) || (stencil && src.stencil == dst.stencil);
+  bool same = (depth && src.depth == dst.depth && src.depth16 == dst.depth16) || (stencil && src.stencil == dst.stencil);
   for (const detail::ColorBuffer& cb : dst.color) same = same || (color && cb.Present() && cb.data == src.color[0].data);
   // OpenGL leaves a copy between overlapping rectangles of one buffer undefined: it is refused, as OpenGL ES 3.0
   // refuses any blit within one buffer.

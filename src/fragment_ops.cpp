@@ -137,7 +137,7 @@ FragmentOpsPlan PlanFragmentOps(const FragmentOpsState& state, const RenderTarge
   const Unorm8Blend rgba(state, false), rgb(state, true);  // the two kinds of buffer, made once
   for (int o = 0; o < kMaxColorOutputs; ++o) plan.blend[o] = target.color[o].rgb_only ? rgb : rgba;
   plan.wide_target = (!target.color[0].Present() || target.color[0].Rgba8()) && !target.color[1].Present() &&
-                     !target.color[2].Present() && !target.color[3].Present();
+                     !target.color[2].Present() && !target.color[3].Present() && !target.depth16;
   return plan;
 }
 
@@ -523,13 +523,14 @@ void LaneOps(const BlockOpsContext& ctx, const Unorm8Blend* per_buffer, int b, c
     }
     if (ctx.depth_test) {
       const float depth = z_lanes[lane];
-      // Depth is clamped to [0, 1] before the test (the depth buffer holds [0, 1]); NaN fails.
-      const float z = std::clamp(depth, 0.0f, 1.0f);
-      if (std::isnan(depth) || !DepthTest(st.depth_func, z, t.Depth(x, y))) {
+      // Depth is clamped to [0, 1] before the test (the depth buffer holds [0, 1]), and converted to a 16-bit
+      // buffer's fixed point; NaN fails.
+      const float z = std::isnan(depth) ? depth : t.StoredDepth(std::clamp(depth, 0.0f, 1.0f));
+      if (std::isnan(depth) || !DepthTest(st.depth_func, z, t.DepthAt(x, y))) {
         if (ctx.stencil_test) t.Stencil(x, y) = StencilUpdate(face, face.dpfail, t.Stencil(x, y));
         continue;
       }
-      if (st.depth_write) t.Depth(x, y) = z;
+      if (st.depth_write) t.SetDepth(x, y, z);
     }
     if (ctx.stencil_test) t.Stencil(x, y) = StencilUpdate(face, face.dppass, t.Stencil(x, y));
     if (ctx.passed) ++*ctx.passed;
@@ -655,25 +656,25 @@ bool EarlyTest(const FragmentOpsState& state, BlockBuffer& blocks, const RenderT
   std::uint32_t live = 0;
   static const EarlyBlockFn early = SOFTGL_CHOOSE(EarlyBlock);
   for (int b = 0; b < blocks.count; ++b) {
-    if (target.depth && blocks.live[b]) {
-      if (Inside(target, blocks, b)) {
+    if (target.HasDepth() && blocks.live[b]) {
+      if (target.depth && Inside(target, blocks, b)) {
         early(state.depth_func, blocks, target, b, depths);
       } else {
-        // As the late test: depth clamped to [0, 1], NaN fails.
-        auto passes = [&](float depth, const float* plane, int lane) {
-          const float stored = plane[std::size_t(blocks.Y(b, lane)) * std::size_t(target.depth_pitch) + std::size_t(blocks.X(b, lane))];
-          return !std::isnan(depth) && DepthTest(state.depth_func, std::clamp(depth, 0.0f, 1.0f), stored);
+        // As the late test: depth clamped to [0, 1] and converted as the buffer keeps it, NaN fails.
+        auto passes = [&](float depth, int s, int lane) {
+          const float stored = target.DepthAt(blocks.X(b, lane), blocks.Y(b, lane), s);
+          return !std::isnan(depth) &&
+                 DepthTest(state.depth_func, target.StoredDepth(std::clamp(depth, 0.0f, 1.0f)), stored);
         };
         std::uint32_t any = 0;
         for (int lane = 0; lane < kLanes; ++lane) {
           if (!((blocks.live[b] >> lane) & 1u)) continue;  // a live lane lies inside the target
           if (!depths) {
-            if (!passes(blocks.frag_coord[b][2][lane], target.depth, lane)) blocks.live[b] &= ~(1u << lane);
+            if (!passes(blocks.frag_coord[b][2][lane], 0, lane)) blocks.live[b] &= ~(1u << lane);
             continue;
           }
           for (int s = 0; s < target.samples; ++s)
-            if (((blocks.sample_live[b][s] >> lane) & 1u) &&
-                !passes(depths->z[b][s][lane], target.depth + target.depth_plane * std::size_t(s), lane))
+            if (((blocks.sample_live[b][s] >> lane) & 1u) && !passes(depths->z[b][s][lane], s, lane))
               blocks.sample_live[b][s] &= ~(1u << lane);
         }
         if (depths) {
@@ -697,7 +698,7 @@ void BlockOpsAll(const FragmentOpsState& state, const FragmentOpsPlan& plan, con
   ctx.target = &target;
   ctx.shader_depth = shader_depth;
   ctx.stencil_test = state.stencil_test && target.stencil != nullptr;
-  ctx.depth_test = state.depth_test && target.depth != nullptr;
+  ctx.depth_test = state.depth_test && target.HasDepth();
   ctx.any_color = state.color_mask[0] || state.color_mask[1] || state.color_mask[2] || state.color_mask[3];
   ctx.face = blocks.front_facing ? &state.front : &state.back;
   ctx.blend = &plan.blend[0];

@@ -60,6 +60,7 @@ RenderTarget RenderTarget::Sample(int s) const {
   for (ColorBuffer& cb : t.color)
     if (cb.Present()) cb.data += cb.plane * std::size_t(s) * std::size_t(cb.Bytes());
   if (depth) t.depth += depth_plane * std::size_t(s);
+  if (depth16) t.depth16 += depth_plane * std::size_t(s);
   if (stencil) t.stencil += stencil_plane * std::size_t(s);
   return t;
 }
@@ -127,12 +128,16 @@ void RenderTarget::ClearColor(const Rect& r, const glm::vec4& value, const bool 
 }
 
 void RenderTarget::ClearDepth(const Rect& r, float value) const {
-  if (!depth || r.Empty()) return;
+  if (!HasDepth() || r.Empty()) return;
   if (samples > 1) {
     for (int s = 0; s < samples; ++s) Sample(s).ClearDepth(r, value);
     return;
   }
-  for (int y = r.y0; y < r.y1; ++y) std::fill_n(&Depth(r.x0, y), r.x1 - r.x0, value);
+  const std::uint16_t value16 = Depth16(value);
+  for (int y = r.y0; y < r.y1; ++y) {
+    if (depth16) std::fill_n(depth16 + DepthIndex(r.x0, y, 0), r.x1 - r.x0, value16);
+    else std::fill_n(depth + DepthIndex(r.x0, y, 0), r.x1 - r.x0, value);
+  }
 }
 
 void RenderTarget::ClearStencil(const Rect& r, std::uint8_t value, std::uint8_t write_mask) const {
@@ -193,6 +198,17 @@ void AverageBytes(const std::uint8_t* in, std::size_t plane, std::uint8_t* out, 
   }
 }
 
+// n depth values from src's (sx, sy) on to dst's (dx, dy): copied as they are between buffers of one kind.
+void CopyDepthRow(const RenderTarget& src, const RenderTarget& dst, int sx, int sy, int dx, int dy, int n) {
+  if (src.depth16 && dst.depth16) {
+    std::memcpy(dst.depth16 + dst.DepthIndex(dx, dy, 0), src.depth16 + src.DepthIndex(sx, sy, 0), 2 * std::size_t(n));
+  } else if (src.depth && dst.depth) {
+    std::memcpy(dst.depth + dst.DepthIndex(dx, dy, 0), src.depth + src.DepthIndex(sx, sy, 0), 4 * std::size_t(n));
+  } else {
+    for (int i = 0; i < n; ++i) dst.SetDepth(dx + i, dy, dst.StoredDepth(src.DepthAt(sx + i, sy)));
+  }
+}
+
 // Resolves rows [y0, y1) x columns [x0, x1) of a multisampled source into the same pixels of dst (an unmirrored
 // blit of equal rectangles, offset by (dx, dy)): bytes of RGBA8 into RGBA8 averaged in integers (rounded half
 // up), depth and stencil copied from sample 0, other colour formats through LoadResolved. False, doing nothing,
@@ -219,7 +235,7 @@ bool ResolveRows(const RenderTarget& src, const RenderTarget& dst, const BlitReg
         }
       }
     }
-    if (r.depth) std::memcpy(&dst.Depth(x0, y), &src.Depth(x0 - dx, y - dy), sizeof(float) * std::size_t(n));
+    if (r.depth) CopyDepthRow(src, dst, x0 - dx, y - dy, x0, y, n);
     if (r.stencil) std::memcpy(&dst.Stencil(x0, y), &src.Stencil(x0 - dx, y - dy), std::size_t(n));
   }
   return true;
@@ -275,7 +291,7 @@ void Blit(const RenderTarget& src, const RenderTarget& dst, const BlitRegion& r)
         for (const ColorBuffer& cb : dst.color)
           if (cb.Present()) cb.Store(x, y, c, all);
       }
-      if (r.depth) dst.Depth(x, y) = src.Depth(px, py);
+      if (r.depth) dst.SetDepth(x, y, dst.StoredDepth(src.DepthAt(px, py)));
       if (r.stencil) dst.Stencil(x, y) = src.Stencil(px, py);
     }
   }
@@ -291,16 +307,19 @@ bool Framebuffer::Allocate(int w, int h) {
   const std::size_t n = std::size_t(w) * std::size_t(h), ns = n * std::size_t(samples);
   try {
     color.assign(ns * std::size_t(BytesPerTexel(layout)), 0);
-    depth.assign(ns, 1.0f);
+    if (depth16) depth16_data.assign(ns, 65535);
+    else depth.assign(ns, 1.0f);
     stencil.assign(ns, 0);
     if (samples > 1) {
       resolved.color.assign(n * std::size_t(BytesPerTexel(layout)), 0);
-      resolved.depth.assign(n, 1.0f);
+      if (depth16) resolved.depth16_data.assign(n, 65535);
+      else resolved.depth.assign(n, 1.0f);
       resolved.stencil.assign(n, 0);
     }
   } catch (const std::bad_alloc&) {
     color = {};
     depth = {};
+    depth16_data = {};
     stencil = {};
     resolved = {};
     return false;
@@ -319,7 +338,8 @@ RenderTarget Framebuffer::Target(bool srgb_enabled) {
     t.color[0].layout = layout;
     t.color[0].srgb = srgb && srgb_enabled;
     t.color[0].pitch = width;
-    t.depth = depth.data();
+    if (depth16) t.depth16 = depth16_data.data();
+    else t.depth = depth.data();
     t.depth_pitch = width;
     t.stencil = stencil.data();
     t.stencil_pitch = width;
@@ -334,7 +354,8 @@ RenderTarget Framebuffer::ReadTarget(bool srgb_enabled) {
   if (samples <= 1 || width <= 0 || height <= 0) return t;
   RenderTarget out = t.Sample(0);
   out.color[0].data = resolved.color.data();
-  out.depth = resolved.depth.data();
+  if (depth16) out.depth16 = resolved.depth16_data.data();
+  else out.depth = resolved.depth.data();
   out.stencil = resolved.stencil.data();
   if (resolve_pending) {
     BlitRegion all;

@@ -4,6 +4,7 @@
 // row, as in OpenGL.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -52,12 +53,32 @@ struct RenderTarget {
   std::size_t depth_plane = 0;      // depth values from one sample's plane to the next
   std::size_t stencil_plane = 0;    // stencil values from one sample's plane to the next
   ColorBuffer color[kMaxColorOutputs];
-  float* depth = nullptr;           // null: no depth buffer (the depth test then always passes)
+  // The depth buffer: 32-bit floats (`depth`), or 16-bit fixed point (`depth16`, DEPTH_COMPONENT16: k / 65535);
+  // neither: no depth buffer (the depth test then always passes).
+  float* depth = nullptr;
+  std::uint16_t* depth16 = nullptr;
   int depth_pitch = 0;              // depth values from one row to the next
   std::uint8_t* stencil = nullptr;  // null: no stencil buffer (the stencil test then always passes)
   int stencil_pitch = 0;            // stencil values from one row to the next
   Rect Bounds() const { return Rect{0, 0, width, height}; }
-  float& Depth(int x, int y) const { return depth[std::size_t(y) * std::size_t(depth_pitch) + std::size_t(x)]; }
+  bool HasDepth() const { return depth || depth16; }
+  std::size_t DepthIndex(int x, int y, int s) const {
+    return depth_plane * std::size_t(s) + std::size_t(y) * std::size_t(depth_pitch) + std::size_t(x);
+  }
+  /// The depth stored at (x, y) of sample plane s, in [0, 1].
+  float DepthAt(int x, int y, int s = 0) const {
+    return depth16 ? float(depth16[DepthIndex(x, y, s)]) / 65535.0f : depth[DepthIndex(x, y, s)];
+  }
+  /// Stores d, a value StoredDepth gave, at (x, y) of sample plane s.
+  void SetDepth(int x, int y, float d, int s = 0) const {
+    if (depth16) depth16[DepthIndex(x, y, s)] = Depth16(d);
+    else depth[DepthIndex(x, y, s)] = d;
+  }
+  /// A fragment's depth d in [0, 1] as the buffer keeps it, for the depth test: the 16-bit buffer's nearest
+  /// k / 65535 (OpenGL converts to the buffer's fixed point before the test), the float buffer's d.
+  float StoredDepth(float d) const { return depth16 ? float(Depth16(d)) / 65535.0f : d; }
+  /// d in [0, 1] to 16 bits: round(d * 65535), ties to even.
+  static std::uint16_t Depth16(float d) { return std::uint16_t(std::nearbyint(d * 65535.0f)); }
   std::uint8_t& Stencil(int x, int y) const {
     return stencil[std::size_t(y) * std::size_t(stencil_pitch) + std::size_t(x)];
   }
@@ -80,12 +101,15 @@ struct Framebuffer {
   int samples = 1;
   TexelLayout layout = TexelLayout::kUnorm8x4;  // of the colour buffer: kUnorm8x4 (RGBA8) or kUnorm565 (RGB565)
   bool srgb = false;  // the colour buffer is SRGB8_ALPHA8: it converts while FRAMEBUFFER_SRGB is enabled
+  bool depth16 = false;  // the depth buffer is DEPTH_COMPONENT16 (`depth16_data`), else float (`depth`)
   std::vector<std::uint8_t> color;  // [height][width][bytes of the layout]
   std::vector<float> depth;         // [height][width]
+  std::vector<std::uint16_t> depth16_data;
   std::vector<std::uint8_t> stencil;
   struct Resolved {
     std::vector<std::uint8_t> color;
     std::vector<float> depth;
+    std::vector<std::uint16_t> depth16_data;
     std::vector<std::uint8_t> stencil;
   } resolved;  // samples > 1: the image as read (colour the samples' average, depth and stencil sample 0's)
   bool resolve_pending = false;  // drawing may have changed the samples since the last Resolve

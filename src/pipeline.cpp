@@ -286,7 +286,7 @@ class PrimitiveRunner {
     p.front_facing = front_;
     if (state_.primitive.offset_fill)
       p.depth_offset = PolygonOffset(v[0].win, v[1].win, v[2].win, state_.primitive.offset_factor,
-                                     state_.primitive.offset_units);
+                                     state_.primitive.offset_units, state_.depth16);
     bins_.Add(p, v, box, grid_);
   }
 
@@ -298,7 +298,7 @@ class PrimitiveRunner {
                                                        : state_.primitive.offset_fill;
     depth_offset_ =
         offset ? PolygonOffset(win_[0].win, win_[1].win, win_[2].win, state_.primitive.offset_factor,
-                             state_.primitive.offset_units)
+                             state_.primitive.offset_units, state_.depth16)
                : 0.0f;
     switch (state_.primitive.polygon_mode) {
       case LINE:  // the triangle's own edges, each clipped as a line

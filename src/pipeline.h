@@ -51,6 +51,7 @@ struct DrawState {
   const Interpolation* interpolation = nullptr;  // the program's varying qualifiers (null: all smooth)
   std::uint64_t* primitives_generated = nullptr;  // counts the assembled primitives (PRIMITIVES_GENERATED query)
   int samples = 1;  // samples whose coverage triangles compute (RasterTarget::samples)
+  bool depth16 = false;  // the target's depth buffer is 16-bit fixed point (polygon offset's unit is 1 / 65535)
 };
 
 /// The vertices a draw reads: either `count` consecutive vertices from `first`, or `count` element indices.

@@ -418,7 +418,8 @@ bool Perspective(const RasterTarget& t, int i) {
 
 }  // namespace
 
-float PolygonOffset(const glm::vec4& a, const glm::vec4& b, const glm::vec4& c, float factor, float units) {
+float PolygonOffset(const glm::vec4& a, const glm::vec4& b, const glm::vec4& c, float factor, float units,
+                    bool fixed16) {
   const float dx1 = b.x - a.x, dy1 = b.y - a.y, dz1 = b.z - a.z;
   const float dx2 = c.x - a.x, dy2 = c.y - a.y, dz2 = c.z - a.z;
   const float det = dx1 * dy2 - dx2 * dy1;
@@ -430,7 +431,7 @@ float PolygonOffset(const glm::vec4& a, const glm::vec4& b, const glm::vec4& c, 
   const float zmax = std::max({std::fabs(a.z), std::fabs(b.z), std::fabs(c.z)});
   int e = 0;
   std::frexp(zmax, &e);  // zmax = f * 2^e with f in [0.5, 1): the IEEE exponent is e - 1
-  const float r = zmax > 0.0f ? std::ldexp(1.0f, e - 1 - 23) : std::ldexp(1.0f, -126);
+  const float r = fixed16 ? 1.0f / 65535.0f : zmax > 0.0f ? std::ldexp(1.0f, e - 1 - 23) : std::ldexp(1.0f, -126);
   const float offset = m * factor + r * units;
   return std::isfinite(offset) ? offset : 0.0f;
 }

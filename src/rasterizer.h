@@ -44,9 +44,11 @@ struct SampleSpan {
 static_assert(kSubpixelBits == 8, "SampleSpan's default is the centre in 1/256 pixel");
 
 /// OpenGL's polygon offset for the plane through a, b, c: m * factor + r * units, with m the larger of
-/// |dz/dx| and |dz/dy| and r the smallest resolvable difference of the 32-bit float depth buffer at the largest
-/// depth of the polygon, 2^(e - 23) (OpenGL 4.6, section 14.6.5).
-float PolygonOffset(const glm::vec4& a, const glm::vec4& b, const glm::vec4& c, float factor, float units);
+/// |dz/dx| and |dz/dy| and r the smallest resolvable difference of the depth buffer: of the 32-bit float buffer at
+/// the largest depth of the polygon, 2^(e - 23), or of a 16-bit fixed-point one (`fixed16`), 1 / 65535 (OpenGL 4.6,
+/// section 14.6.5).
+float PolygonOffset(const glm::vec4& a, const glm::vec4& b, const glm::vec4& c, float factor, float units,
+                    bool fixed16 = false);
 
 /// The pixels whose centres RasterizeTriangle may cover of the filled triangle a, b, c (window positions) inside
 /// `bounds`: the centres inside its snapped bounding box, cut to `bounds` (half-open). Empty when the snapped

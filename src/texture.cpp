@@ -72,10 +72,10 @@ TexelLayout LayoutOf(Enum f) {
     case RGB5_A1: return TexelLayout::kUnorm5551;
     case RGBA16: return TexelLayout::kUnorm16x4;
     case RG16: return TexelLayout::kUnorm16x2;
-    case R16: return TexelLayout::kUnorm16x1;
+    case R16:
+    case DEPTH_COMPONENT16: return TexelLayout::kUnorm16x1;
     case R32F:
     case DEPTH_COMPONENT:
-    case DEPTH_COMPONENT16:
     case DEPTH_COMPONENT24:
     case DEPTH_COMPONENT32F:
     case DEPTH24_STENCIL8:

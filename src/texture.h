@@ -2,9 +2,9 @@
 //
 // Each level keeps its texels in its own format: RGBA8 four bytes a texel (RGB8 too, alpha stored as 255; SRGB8_ALPHA8
 // and SRGB8 the same way, their colour bytes sRGB-encoded), RG8 two, R8 one, RGBA32F sixteen, R32F and the depth
-// formats one float; RG32F two floats; RGBA16F, RG16F and R16F half floats (IEEE binary16), four, two or one;
-// R11F_G11F_B10F one 32-bit word of three unsigned small floats; RGB565, RGBA4 and RGB5_A1 one 16-bit word;
-// RGBA16, RG16 and R16 a 16-bit word a channel.
+// formats one float, but DEPTH_COMPONENT16 one 16-bit word (as R16); RG32F two floats; RGBA16F, RG16F and R16F half
+// floats (IEEE binary16), four, two or one; R11F_G11F_B10F one 32-bit word of three unsigned small floats; RGB565,
+// RGBA4 and RGB5_A1 one 16-bit word; RGBA16, RG16 and R16 a 16-bit word a channel.
 // 8-bit fixed-point texels are bytes k meaning k / 255; the 16-bit words hold k / (2^bits - 1) a channel.
 // Formats with stencil (DEPTH24_STENCIL8, DEPTH32F_STENCIL8, and STENCIL_INDEX8 for renderbuffers) keep their
 // stencil indices in a plane of their own, one byte a texel.
@@ -32,7 +32,7 @@ enum class TexelLayout : std::uint8_t {
   kUnorm8x1,   // R8
   kFloat32x4,  // RGBA32F
   kFloat32x2,  // RG32F
-  kFloat32x1,  // R32F, DEPTH_COMPONENT*, the depth of DEPTH*_STENCIL8
+  kFloat32x1,  // R32F, DEPTH_COMPONENT, DEPTH_COMPONENT24, DEPTH_COMPONENT32F, the depth of DEPTH*_STENCIL8
   kFloat16x4,  // RGBA16F
   kFloat16x2,  // RG16F
   kFloat16x1,  // R16F
@@ -42,7 +42,7 @@ enum class TexelLayout : std::uint8_t {
   kUnorm5551,  // RGB5_A1: red 11-15, green 6-10, blue 1-5, alpha 0
   kUnorm16x4,  // RGBA16: four 16-bit words k, each k / 65535
   kUnorm16x2,  // RG16
-  kUnorm16x1,  // R16
+  kUnorm16x1,  // R16, DEPTH_COMPONENT16
 };
 
 /// The layout of an internal format (kNone if softgl does not support it), and its bytes per texel.

@@ -456,3 +456,167 @@ TEST_CASE("BlitFramebuffer between framebuffer objects and the context's framebu
   gl.BlitFramebuffer(0, 0, 4, 4, 2, 2, 6, 6, COLOR_BUFFER_BIT, NEAREST);
   CHECK(gl.GetError() == NO_ERROR);
 }
+
+namespace {
+
+// Draws the rectangle x0 <= x < x1 of an 8 x 8 viewport, all rows, at window depth z_steps / 65535.
+void DepthRect(Context& gl, testing::SolidShader& shader, float z_steps, float x0, float x1) {
+  using testing::WindowToClip;
+  const float z = 2.0f * z_steps / 65535.0f - 1.0f;
+  testing::MakeVertexArray(gl, {WindowToClip(x0, 0, 8, 8, z), WindowToClip(x1, 0, 8, 8, z), WindowToClip(x1, 8, 8, 8, z),
+                                WindowToClip(x0, 0, 8, 8, z), WindowToClip(x1, 8, 8, 8, z), WindowToClip(x0, 8, 8, 8, z)});
+  gl.UseProgram(shader);
+  gl.DrawArrays(TRIANGLES, 0, 6);
+}
+
+}  // namespace
+
+TEST_CASE("DEPTH_COMPONENT16 keeps 16-bit depth: two bytes a texel, the test on values converted to 16 bits",
+          "[framebuffer]") {
+  // Storage: the level's layout is one 16-bit word a texel.
+  CHECK(detail::LayoutOf(DEPTH_COMPONENT16) == detail::TexelLayout::kUnorm16x1);
+  CHECK(detail::BytesPerTexel(detail::LayoutOf(DEPTH_COMPONENT16)) == 2);
+  CHECK(detail::BytesPerTexel(detail::LayoutOf(DEPTH_COMPONENT24)) == 4);
+  Context gl(8, 8);
+  testing::SolidShader shader;
+  auto rect = [&](float z_steps, float x0, float x1) { DepthRect(gl, shader, z_steps, x0, x1); };
+  for (const int samples : {1, 4}) {
+    INFO(samples << " samples");
+    const std::uint32_t fbo = gl.GenFramebuffer(), rb[2] = {gl.GenRenderbuffer(), gl.GenRenderbuffer()};
+    gl.BindFramebuffer(FRAMEBUFFER, fbo);
+    gl.BindRenderbuffer(RENDERBUFFER, rb[0]);
+    gl.RenderbufferStorageMultisample(RENDERBUFFER, samples == 1 ? 0 : samples, RGBA8, 8, 8);
+    gl.FramebufferRenderbuffer(FRAMEBUFFER, COLOR_ATTACHMENT0, RENDERBUFFER, rb[0]);
+    gl.BindRenderbuffer(RENDERBUFFER, rb[1]);
+    gl.RenderbufferStorageMultisample(RENDERBUFFER, samples == 1 ? 0 : samples, DEPTH_COMPONENT16, 8, 8);
+    gl.FramebufferRenderbuffer(FRAMEBUFFER, DEPTH_ATTACHMENT, RENDERBUFFER, rb[1]);
+    REQUIRE(gl.CheckFramebufferStatus(FRAMEBUFFER) == FRAMEBUFFER_COMPLETE);
+    gl.Viewport(0, 0, 8, 8);
+    gl.ClearColor(0, 0, 0, 1);
+    gl.ClearDepth(20000.25 / 65535.0);  // kept as 20000
+    gl.Clear(COLOR_BUFFER_BIT | DEPTH_BUFFER_BIT);
+    gl.Enable(DEPTH_TEST);
+    gl.DepthFunc(LESS);
+    shader.color = glm::vec4(1, 0, 0, 1);
+    rect(19999.6f, 0, 4);  // 20000 too: not less, draws nothing (a float buffer would take it)
+    rect(19999.4f, 4, 8);  // 19999: less
+    gl.DepthFunc(EQUAL);
+    shader.color = glm::vec4(0, 1, 0, 1);
+    rect(20000.3f, 0, 2);  // 20000: equal to the clear
+    gl.Disable(DEPTH_TEST);
+    // Read back single-sampled (resolved through a blit into a 16-bit depth buffer).
+    std::uint32_t read = fbo;
+    if (samples > 1) {
+      read = gl.GenFramebuffer();
+      const std::uint32_t single[2] = {gl.GenRenderbuffer(), gl.GenRenderbuffer()};
+      gl.BindFramebuffer(FRAMEBUFFER, read);
+      gl.BindRenderbuffer(RENDERBUFFER, single[0]);
+      gl.RenderbufferStorage(RENDERBUFFER, RGBA8, 8, 8);
+      gl.FramebufferRenderbuffer(FRAMEBUFFER, COLOR_ATTACHMENT0, RENDERBUFFER, single[0]);
+      gl.BindRenderbuffer(RENDERBUFFER, single[1]);
+      gl.RenderbufferStorage(RENDERBUFFER, DEPTH_COMPONENT16, 8, 8);
+      gl.FramebufferRenderbuffer(FRAMEBUFFER, DEPTH_ATTACHMENT, RENDERBUFFER, single[1]);
+      gl.BindFramebuffer(READ_FRAMEBUFFER, fbo);
+      gl.BindFramebuffer(DRAW_FRAMEBUFFER, read);
+      gl.BlitFramebuffer(0, 0, 8, 8, 0, 0, 8, 8, COLOR_BUFFER_BIT | DEPTH_BUFFER_BIT, NEAREST);
+      gl.BindFramebuffer(FRAMEBUFFER, read);
+    }
+    CHECK(gl.GetError() == NO_ERROR);
+    std::uint8_t px[4];
+    gl.ReadPixel(1, 3, px);
+    CHECK((px[0] == 0 && px[1] == 255));  // the EQUAL pass
+    gl.ReadPixel(3, 3, px);
+    CHECK((px[0] == 0 && px[1] == 0));  // the LESS rectangle that converts to the stored value
+    gl.ReadPixel(6, 3, px);
+    CHECK((px[0] == 255 && px[1] == 0));
+    CHECK(gl.ReadDepth(3, 3) == 20000.0f / 65535.0f);
+    CHECK(gl.ReadDepth(6, 3) == 19999.0f / 65535.0f);
+    std::uint16_t words[2];
+    gl.ReadPixels(5, 2, 2, 1, DEPTH_COMPONENT, UNSIGNED_SHORT, words);
+    CHECK(words[0] == 19999);
+    CHECK(words[1] == 19999);
+    gl.BindFramebuffer(FRAMEBUFFER, 0);
+  }
+}
+
+TEST_CASE("a DEPTH_COMPONENT16 texture takes depth data, renders depth and reads it back in 16 bits",
+          "[framebuffer]") {
+  Context gl(4, 4);
+  const std::uint32_t tex = gl.GenTexture();
+  gl.BindTexture(TEXTURE_2D, tex);
+  const float data[4] = {0.0f, 0.25f, 0.5f + 0.4f / 65535.0f, 1.0f};
+  gl.TexImage2D(TEXTURE_2D, 0, DEPTH_COMPONENT16, 2, 2, 0, DEPTH_COMPONENT, FLOAT, data);
+  std::uint16_t back[4];
+  gl.GetTexImage(TEXTURE_2D, 0, DEPTH_COMPONENT, UNSIGNED_SHORT, back);
+  CHECK(back[0] == 0);
+  CHECK(back[1] == 16384);  // 0.25 * 65535 = 16383.75
+  CHECK(back[2] == 32768);  // 32767.9
+  CHECK(back[3] == 65535);
+  // Attached as the depth buffer: a clear and a draw store 16-bit values, which CopyTexSubImage2D copies on.
+  const std::uint32_t fbo = gl.GenFramebuffer(), colour = gl.GenRenderbuffer();
+  gl.BindFramebuffer(FRAMEBUFFER, fbo);
+  gl.BindRenderbuffer(RENDERBUFFER, colour);
+  gl.RenderbufferStorage(RENDERBUFFER, RGBA8, 2, 2);
+  gl.FramebufferRenderbuffer(FRAMEBUFFER, COLOR_ATTACHMENT0, RENDERBUFFER, colour);
+  gl.FramebufferTexture2D(FRAMEBUFFER, DEPTH_ATTACHMENT, TEXTURE_2D, tex, 0);
+  REQUIRE(gl.CheckFramebufferStatus(FRAMEBUFFER) == FRAMEBUFFER_COMPLETE);
+  gl.ClearDepth(0.75);
+  gl.Clear(DEPTH_BUFFER_BIT);
+  gl.Finish();
+  gl.GetTexImage(TEXTURE_2D, 0, DEPTH_COMPONENT, UNSIGNED_SHORT, back);
+  for (std::uint16_t v : back) CHECK(v == 49151);  // 49151.25
+  CHECK(gl.ReadDepth(0, 0) == 49151.0f / 65535.0f);
+  CHECK(gl.GetError() == NO_ERROR);
+}
+
+TEST_CASE("Options::depth_format DEPTH_COMPONENT16 gives the context's framebuffer a 16-bit depth buffer",
+          "[framebuffer]") {
+  for (const int samples : {0, 4}) {
+    INFO(samples << " samples");
+    Context::Options options;
+    options.depth_format = DEPTH_COMPONENT16;
+    options.samples = samples;
+    Context gl(8, 8, options);
+    CHECK(gl.GetError() == NO_ERROR);
+    testing::SolidShader shader;
+    auto rect = [&](float z_steps, float x0, float x1) { DepthRect(gl, shader, z_steps, x0, x1); };
+    gl.Enable(DEPTH_TEST);
+    gl.ClearColor(0, 0, 0, 1);
+    gl.Clear(COLOR_BUFFER_BIT | DEPTH_BUFFER_BIT);
+    shader.color = glm::vec4(1, 0, 0, 1);
+    rect(40000.2f, 0, 8);  // stored as 40000
+    shader.color = glm::vec4(0, 1, 0, 1);
+    rect(39999.7f, 0, 4);  // 40000 again: not LESS
+    rect(39999.4f, 4, 8);  // 39999: LESS
+    std::uint8_t px[4];
+    gl.ReadPixel(1, 1, px);
+    CHECK((px[0] == 255 && px[1] == 0));
+    gl.ReadPixel(6, 1, px);
+    CHECK((px[0] == 0 && px[1] == 255));
+    CHECK(gl.ReadDepth(1, 1) == 40000.0f / 65535.0f);
+    CHECK(gl.ReadDepth(6, 1) == 39999.0f / 65535.0f);
+    // A framebuffer object of DEPTH_COMPONENT16 takes a depth blit from it (same format); DEPTH_COMPONENT24 does not.
+    const std::uint32_t fbo = gl.GenFramebuffer(), rb = gl.GenRenderbuffer(), colour = gl.GenRenderbuffer();
+    gl.BindFramebuffer(DRAW_FRAMEBUFFER, fbo);
+    gl.BindRenderbuffer(RENDERBUFFER, colour);
+    gl.RenderbufferStorage(RENDERBUFFER, RGBA8, 8, 8);
+    gl.FramebufferRenderbuffer(DRAW_FRAMEBUFFER, COLOR_ATTACHMENT0, RENDERBUFFER, colour);
+    gl.BindRenderbuffer(RENDERBUFFER, rb);
+    gl.RenderbufferStorage(RENDERBUFFER, DEPTH_COMPONENT16, 8, 8);
+    gl.FramebufferRenderbuffer(DRAW_FRAMEBUFFER, DEPTH_ATTACHMENT, RENDERBUFFER, rb);
+    gl.BlitFramebuffer(0, 0, 8, 8, 0, 0, 8, 8, DEPTH_BUFFER_BIT, NEAREST);
+    CHECK(gl.GetError() == NO_ERROR);
+    gl.BindFramebuffer(READ_FRAMEBUFFER, fbo);
+    CHECK(gl.ReadDepth(6, 1) == 39999.0f / 65535.0f);
+    gl.RenderbufferStorage(RENDERBUFFER, DEPTH_COMPONENT24, 8, 8);
+    gl.BindFramebuffer(READ_FRAMEBUFFER, 0);
+    gl.BlitFramebuffer(0, 0, 8, 8, 0, 0, 8, 8, DEPTH_BUFFER_BIT, NEAREST);
+    CHECK(gl.GetError() == INVALID_OPERATION);
+  }
+  Context::Options bad;
+  bad.depth_format = RGBA8;
+  Context gl(4, 4, bad);
+  CHECK(gl.GetError() == INVALID_ENUM);
+  gl.Clear(DEPTH_BUFFER_BIT);
+  CHECK(gl.ReadDepth(0, 0) == 1.0f);
+}

@@ -53,6 +53,11 @@ class Context {
     /// alpha). Any but RGBA8 takes the per-pixel path of the fragment operations. Anything else: RGBA8, and
     /// INVALID_ENUM recorded.
     Enum color_format = RGBA8;
+    /// The context's depth buffer: DEPTH_COMPONENT32F (4 bytes a pixel, float, the default) or DEPTH_COMPONENT16
+    /// (2 bytes a pixel, for small memory: depth kept as round(d * 65535), the fragment's depth converted so before
+    /// the test, a polygon offset unit of 1 / 65535; drawing takes the per-pixel path of the fragment operations).
+    /// Anything else: DEPTH_COMPONENT32F, and INVALID_ENUM recorded.
+    Enum depth_format = DEPTH_COMPONENT32F;
     /// Samples per pixel of the context's framebuffer: 0 (the default) or 1 for one, 2, 4 or 8 for a multisampled
     /// framebuffer (3 gives 4, 5 to 7 give 8). Drawing then covers, tests and stores each sample (the fragment
     /// shader still runs once per pixel), and every read (ReadPixels, the copies, blits from it) sees the resolved
@@ -200,8 +205,9 @@ class Context {
   /// Defines level `level` of the bound texture: target TEXTURE_2D or a TEXTURE_CUBE_MAP_* face; internal_format
   /// RGBA8, RGB8, RG8, R8, SRGB8_ALPHA8, SRGB8 (decoded to linear when sampled), RGB565, RGBA4, RGB5_A1, RGBA16,
   /// RG16, R16 (16-bit normalized), RGBA32F,
-  /// RG32F, R32F, RGBA16F, RG16F, R16F, R11F_G11F_B10F, DEPTH_COMPONENT (also DEPTH_COMPONENT16/24/32F: all depth
-  /// is stored as float), DEPTH24_STENCIL8 or DEPTH32F_STENCIL8 (depth, sampled as a depth texture, and a stencil index each);
+  /// RG32F, R32F, RGBA16F, RG16F, R16F, R11F_G11F_B10F, DEPTH_COMPONENT16 (2 bytes a texel, k / 65535),
+  /// DEPTH_COMPONENT (also DEPTH_COMPONENT24/32F: stored as float), DEPTH24_STENCIL8 or DEPTH32F_STENCIL8 (depth,
+  /// sampled as a depth texture, and a stencil index each);
   /// pixels of `format` RED, RG, RGB, RGBA or DEPTH_COMPONENT and `type` UNSIGNED_BYTE, UNSIGNED_SHORT (k / 65535),
   /// HALF_FLOAT (IEEE binary16) or FLOAT, or DEPTH_STENCIL
   /// with UNSIGNED_INT_24_8 or FLOAT_32_UNSIGNED_INT_24_8_REV, rows bottom first, each row aligned to
@@ -376,7 +382,8 @@ class Context {
   void BindRenderbuffer(Enum target, std::uint32_t renderbuffer);
   /// Gives the bound renderbuffer width x height pixels of internal_format: RGBA8, RGB8, RG8, R8, SRGB8_ALPHA8,
   /// SRGB8, RGB565, RGBA4, RGB5_A1, RGBA32F, RG32F, R32F, RGBA16F, RG16F, R16F, R11F_G11F_B10F,
-  /// DEPTH_COMPONENT16/24/32F, DEPTH24_STENCIL8, DEPTH32F_STENCIL8, STENCIL_INDEX8, or the unsized RGBA, RGB, RG,
+  /// DEPTH_COMPONENT16 (16-bit fixed point: the depth test compares depths converted to 16 bits),
+  /// DEPTH_COMPONENT24/32F (float), DEPTH24_STENCIL8, DEPTH32F_STENCIL8, STENCIL_INDEX8, or the unsized RGBA, RGB, RG,
   /// RED, DEPTH_COMPONENT, DEPTH_STENCIL, STENCIL_INDEX (stored as RGBA8, ..., DEPTH24_STENCIL8, STENCIL_INDEX8).
   /// Contents start zero. Errors: target not RENDERBUFFER, another format: INVALID_ENUM; size negative or above
   /// MAX_RENDERBUFFER_SIZE (kMaxFramebufferSize): INVALID_VALUE; nothing bound: INVALID_OPERATION; no memory:
@@ -446,8 +453,8 @@ class Context {
   /// Whether depth is written when the depth test is enabled (and by Clear).
   void DepthMask(bool flag);
   /// Depth offset for polygons when POLYGON_OFFSET_FILL (or _LINE, _POINT for PolygonMode LINE, POINT) is enabled:
-  /// factor * max(|dz/dx|, |dz/dy|) + units * r, r being the depth buffer's resolution at the polygon's
-  /// largest depth (2^(e - 23) for its exponent e; the depth buffer is 32-bit float).
+  /// factor * max(|dz/dx|, |dz/dy|) + units * r, r being the depth buffer's resolution: of a float buffer at the
+  /// polygon's largest depth (2^(e - 23) for its exponent e), of a DEPTH_COMPONENT16 one 1 / 65535.
   void PolygonOffset(float factor, float units);
 
   // ---- Per-fragment operations -------------------------------------------------------------------------------

@@ -369,7 +369,12 @@ int main(int argc, char** argv) {
         for (std::size_t i = 0; i < ours.depth.size() && shown < 40; ++i) {
           int d = 0;
           for (int c = 0; c < 4; ++c) d = std::max(d, std::abs(int(ours.rgba[i * 4 + c]) - int(mesa.rgba[i * 4 + c])));
-          if (d >= std::max(1, min_diff)) {
+          const bool depth_differs = std::fabs(ours.depth[i] - mesa.depth[i]) > std::ldexp(1.0f, -22);
+          if (depth_differs) {
+            ++shown;
+            std::printf("  %s (%d, %d): depth softgl %.9g, mesa %.9g\n", s.name, int(i % ours.width),
+                        int(i / ours.width), double(ours.depth[i]), double(mesa.depth[i]));
+          } else if (d >= std::max(1, min_diff)) {
             ++shown;
             std::printf("  %s (%d, %d): softgl %d %d %d %d, mesa %d %d %d %d\n", s.name, int(i % ours.width),
                         int(i / ours.width), ours.rgba[i * 4], ours.rgba[i * 4 + 1], ours.rgba[i * 4 + 2],

@@ -893,6 +893,59 @@ void StencilInFramebuffer(Backend& b, Enum format, Enum attachment, bool texture
   Stencil(b);
 }
 
+// DEPTH_COMPONENT16: a framebuffer object (left bound: it is what is compared) with an RGBA8 colour and a
+// DEPTH_COMPONENT16 depth renderbuffer. Each of four rows gets a base rectangle at depth (20000.1) / 65535 (16-bit
+// value 20000), then, with LESS, LEQUAL, EQUAL and GREATER, eight stripes 0.3 steps apart around it, -1.05 to
+// +1.05 steps (values 19999, 19999, 20000 x 3, 20001 x 3; none within 0.15 of a rounding tie). The depth test
+// compares the fragments' depths converted to 16 bits (OpenGL 4.6, section 17.3.5): with LESS only the first two
+// stripes pass, and EQUAL passes the middle three, where a float buffer would pass none. The fifth row keeps
+// two rectangles 0.4 steps apart, the second drawn with LESS; the sixth rectangles coplanar with its base, drawn
+// with LESS and a polygon offset of -1 unit (drawn) and of -0.3 units (drawn nowhere), without writing depth:
+// softgl's unit for a 16-bit buffer is one step (r, the smallest resolvable difference, 1 / 65535), llvmpipe's
+// two, and these offsets give the same result under both (a float buffer's r, about 2^-25 here, would draw
+// neither).
+void Depth16(Backend& b) {
+  b.BindFramebuffer(FRAMEBUFFER, b.GenFramebuffer());
+  const std::uint32_t rb[2] = {b.GenRenderbuffer(), b.GenRenderbuffer()};
+  b.BindRenderbuffer(rb[0]);
+  b.RenderbufferStorage(RGBA8, kSize, kSize);
+  b.FramebufferRenderbuffer(FRAMEBUFFER, COLOR_ATTACHMENT0, rb[0]);
+  b.BindRenderbuffer(rb[1]);
+  b.RenderbufferStorage(DEPTH_COMPONENT16, kSize, kSize);
+  b.FramebufferRenderbuffer(FRAMEBUFFER, DEPTH_ATTACHMENT, rb[1]);
+  if (b.CheckFramebufferStatus(FRAMEBUFFER) != FRAMEBUFFER_COMPLETE) return;  // left black: the check fails
+  b.ClearColor(0, 0, 0, 1);
+  b.ClearDepth(1.0);
+  b.Clear(COLOR_BUFFER_BIT | DEPTH_BUFFER_BIT);
+  b.Enable(DEPTH_TEST);
+  auto ndc = [](double steps) { return float(2.0 * steps / 65535.0 - 1.0); };  // NDC z of a depth in 16-bit steps
+  const Enum funcs[4] = {LESS, LEQUAL, EQUAL, GREATER};
+  for (int row = 0; row < 4; ++row) {
+    const float y0 = float(row) * 20, y1 = y0 + 20;
+    b.DepthFunc(ALWAYS);
+    b.Draw(TRIANGLES, Rect(0, y0, 128, y1, ndc(20000.1), Palette(1)));
+    b.DepthFunc(funcs[row]);
+    for (int i = 0; i < 8; ++i)
+      b.Draw(TRIANGLES, Rect(float(i) * 16, y0, float(i + 1) * 16, y1, ndc(20000.1 + 0.3 * i - 1.05), Palette(10 + i)));
+  }
+  b.DepthFunc(ALWAYS);
+  b.Draw(TRIANGLES, Rect(0, 80, 128, 104, ndc(31000.2), Palette(3)));
+  b.DepthFunc(LESS);
+  b.Draw(TRIANGLES, Rect(32, 80, 96, 104, ndc(30999.8), Palette(4)));  // the same 16-bit value: fails
+  b.Draw(TRIANGLES, Rect(48, 84, 80, 100, ndc(30999.3), Palette(5)));  // one step nearer: passes
+  b.DepthFunc(ALWAYS);
+  b.Draw(TRIANGLES, Rect(0, 104, 128, 128, ndc(25000.3), Palette(6)));
+  b.DepthFunc(LESS);
+  b.Enable(POLYGON_OFFSET_FILL);
+  b.DepthMask(false);
+  b.PolygonOffset(0.0f, -1.0f);
+  b.Draw(TRIANGLES, Rect(16, 104, 56, 128, ndc(25000.3), Palette(7)));
+  b.PolygonOffset(0.0f, -0.3f);
+  b.Draw(TRIANGLES, Rect(72, 104, 112, 128, ndc(25000.3), Palette(8)));
+  b.DepthMask(true);
+  b.Disable(POLYGON_OFFSET_FILL);
+}
+
 void StencilRenderbuffer(Backend& b) { StencilInFramebuffer(b, DEPTH24_STENCIL8, DEPTH_STENCIL_ATTACHMENT, false); }
 void StencilIndex8(Backend& b) { StencilInFramebuffer(b, STENCIL_INDEX8, STENCIL_ATTACHMENT, false); }
 void StencilTexture(Backend& b) { StencilInFramebuffer(b, DEPTH32F_STENCIL8, DEPTH_STENCIL_ATTACHMENT, true); }
@@ -1413,6 +1466,7 @@ const std::vector<SceneInfo>& Scenes() {
       {"packed16_targets", kSize, kSize, Check::kStep4, Packed16Targets},
       {"packed16_blending", kSize, kSize, Check::kStep4, Packed16Blending},
       {"copy_tex_image", kSize, kSize, Check::kColor, CopyTexImage},
+      {"depth16", kSize, kSize, Check::kExactWithDepth, Depth16},
       {"stencil_renderbuffer", kSize, kSize, Check::kExactWithDepthStencil, StencilRenderbuffer},
       {"stencil_index8", kSize, kSize, Check::kExactWithStencil, StencilIndex8},
       {"stencil_texture", kSize, kSize, Check::kExactWithDepthStencil, StencilTexture},

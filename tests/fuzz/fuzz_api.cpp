@@ -58,7 +58,7 @@ constexpr std::uint32_t kImageTargets[] = {TEXTURE_2D,
                                            TEXTURE_CUBE_MAP_POSITIVE_Z, TEXTURE_CUBE_MAP_NEGATIVE_Z,
                                            TEXTURE_2D_MULTISAMPLE};
 constexpr std::uint32_t kInternal[] = {RGBA8, RGB8, RG8, R8, RGBA32F, R32F, DEPTH_COMPONENT, DEPTH24_STENCIL8,
-                                       DEPTH32F_STENCIL8, RGBA16, R16, RGBA16F};
+                                       DEPTH32F_STENCIL8, RGBA16, R16, RGBA16F, DEPTH_COMPONENT16};
 constexpr std::uint32_t kFormats[] = {RED, RG, RGB, RGBA, DEPTH_COMPONENT, DEPTH_STENCIL};
 constexpr std::uint32_t kPixelTypes[] = {UNSIGNED_BYTE, FLOAT, UNSIGNED_INT_24_8, FLOAT_32_UNSIGNED_INT_24_8_REV,
                                          UNSIGNED_SHORT, HALF_FLOAT};
@@ -88,7 +88,11 @@ constexpr std::uint32_t kPolygonModes[] = {FILL, LINE, POINT};
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   fuzz::Input in(data, size);
   // Small framebuffers: size validation has its own tests, and a legitimately huge one only costs time here.
-  Context gl(in.Byte() % 49, in.Byte() % 49);
+  // The bytes' quotients choose a 16-bit depth buffer (Options::depth_format) for some contexts.
+  const int wb = in.Byte(), hb = in.Byte();
+  Context::Options options;
+  options.depth_format = (wb / 49 + hb / 49) % 2 ? DEPTH_COMPONENT16 : DEPTH_COMPONENT32F;
+  Context gl(wb % 49, hb % 49, options);
   FuzzShader shader;
   std::vector<std::uint8_t> scratch;
   // Work per input is bounded, so that an input's time says something about softgl: at most kDrawBudget vertices
