@@ -137,7 +137,7 @@ FragmentOpsPlan PlanFragmentOps(const FragmentOpsState& state, const RenderTarge
   const Unorm8Blend rgba(state, false), rgb(state, true);  // the two kinds of buffer, made once
   for (int o = 0; o < kMaxColorOutputs; ++o) plan.blend[o] = target.color[o].rgb_only ? rgb : rgba;
   plan.wide_target = (!target.color[0].Present() || target.color[0].Rgba8()) && !target.color[1].Present() &&
-                     !target.color[2].Present() && !target.color[3].Present() && !target.depth16;
+                     !target.color[2].Present() && !target.color[3].Present();
   return plan;
 }
 
@@ -413,6 +413,13 @@ SOFTGL_WIDE typename V<W>::I StencilOpLanes(const StencilFace& face, Enum op, ty
   return where ? v : s;
 }
 
+// Depths in [0, 1] to a 16-bit buffer's values, round(d * 65535) to nearest even (adding and subtracting 1.5 * 2^23
+// rounds as nearbyint does), as RenderTarget::Depth16.
+template <int W>
+SOFTGL_WIDE typename V<W>::I Depth16Lanes(typename V<W>::F d) {
+  return __builtin_convertvector((d * 65535.0f + 12582912.0f) - 12582912.0f, typename V<W>::I);
+}
+
 // What a batch's blocks share.
 struct BlockOpsContext {
   const FragmentOpsState* state;
@@ -478,18 +485,29 @@ SOFTGL_WIDE void BlockOps(const BlockOpsContext& ctx, int b) {
         go &= pass;
       }
       if (ctx.depth_test) {
-        float* depth = t.depth + t.depth_plane * std::size_t(s);
         const F z = LoadVec<F>((ctx.shader_depth ? bb.Depth(b) : kSamples ? ctx.depths->z[b][s] : bb.frag_coord[b][2]) + l0);
         F zc = z > 0.0f ? z : F{} + 0.0f;  // clamped to [0, 1]; NaN fails below
         zc = zc < 1.0f ? zc : F{} + 1.0f;
-        const F stored = LoadQuads<float, W, F>(depth, depth_at, l0);
-        const I pass = Compare(st.depth_func, zc, stored) & (z == z);
+        I pass;
+        if (t.depth16) {  // 16 bits: the depths converted, round(zc * 65535) (as RenderTarget::Depth16), compared
+          using S = typename V<W>::S;
+          std::uint16_t* depth = t.depth16 + t.depth_plane * std::size_t(s);
+          const I stored = __builtin_convertvector((LoadQuads<std::uint16_t, W, S>(depth, depth_at, l0)), I);
+          const I zq = Depth16Lanes<W>(zc);
+          pass = Compare(st.depth_func, zq, stored) & (z == z);
+          if (st.depth_write)
+            StoreQuads<std::uint16_t, W, S>(depth, depth_at, live, l0, __builtin_convertvector((go & pass) ? zq : stored, S));
+        } else {
+          float* depth = t.depth + t.depth_plane * std::size_t(s);
+          const F stored = LoadQuads<float, W, F>(depth, depth_at, l0);
+          pass = Compare(st.depth_func, zc, stored) & (z == z);
+          if (st.depth_write) StoreQuads<float, W, F>(depth, depth_at, live, l0, (go & pass) ? zc : stored);
+        }
         if (ctx.stencil_test) {
           sten = StencilOpLanes<W>(*ctx.face, ctx.face->dpfail, sten, go & ~pass);
           sten = StencilOpLanes<W>(*ctx.face, ctx.face->dppass, sten, go & pass);
         }
         go &= pass;
-        if (st.depth_write) StoreQuads<float, W, F>(depth, depth_at, live, l0, go ? zc : stored);
       } else if (ctx.stencil_test) {
         sten = StencilOpLanes<W>(*ctx.face, ctx.face->dppass, sten, go);
       }
@@ -588,45 +606,60 @@ template <bool kSamples>
 SOFTGL_TARGET_AVX512 void BlockOpsAvx512(const BlockOpsContext& ctx, int b) { BlockOps<8, kSamples>(ctx, b); }
 #endif
 
-// The early test on block b, W lanes at a time; returns its live lanes.
-template <int W>
-SOFTGL_WIDE std::uint32_t EarlyBlock(Enum func, BlockBuffer& bb, const RenderTarget& t, int b) {
+// The early depth test of W lanes (from l0) of a block at `at`, fragment depths z, against a depth plane (float,
+// or 16-bit when kDepth16, compared as the late test compares them): the lanes that pass.
+template <int W, bool kDepth16>
+SOFTGL_WIDE typename V<W>::I EarlyPass(Enum func, const void* plane, const QuadPlaces& at, int l0, typename V<W>::F z) {
   using F = typename V<W>::F;
   using I = typename V<W>::I;
+  F zc = z > 0.0f ? z : F{} + 0.0f;
+  zc = zc < 1.0f ? zc : F{} + 1.0f;
+  if constexpr (kDepth16) {
+    const I stored = __builtin_convertvector(
+        (LoadQuads<std::uint16_t, W, typename V<W>::S>(static_cast<const std::uint16_t*>(plane), at, l0)), I);
+    return Compare(func, Depth16Lanes<W>(zc), stored) & (z == z);
+  } else {
+    const F stored = LoadQuads<float, W, F>(static_cast<const float*>(plane), at, l0);
+    return Compare(func, zc, stored) & (z == z);
+  }
+}
+// Depth plane s of the target, as EarlyPass<kDepth16> reads it.
+template <bool kDepth16>
+const void* DepthPlane(const RenderTarget& t, int s) {
+  if constexpr (kDepth16) return t.depth16 + t.depth_plane * std::size_t(s);
+  else return t.depth + t.depth_plane * std::size_t(s);
+}
+
+// The early test on block b, W lanes at a time; returns its live lanes.
+template <int W, bool kDepth16>
+SOFTGL_WIDE std::uint32_t EarlyBlock(Enum func, BlockBuffer& bb, const RenderTarget& t, int b) {
+  using F = typename V<W>::F;
   const QuadPlaces depth_at(bb, b, t.depth_pitch);
+  const void* plane = DepthPlane<kDepth16>(t, 0);
   std::uint32_t keep = 0;
   for (int l0 = 0; l0 < kLanes; l0 += W) {
     const F z = LoadVec<F>(&bb.frag_coord[b][2][l0]);
-    F zc = z > 0.0f ? z : F{} + 0.0f;
-    zc = zc < 1.0f ? zc : F{} + 1.0f;
-    const F stored = LoadQuads<float, W, F>(t.depth, depth_at, l0);
-    const I pass = Compare(func, zc, stored) & (z == z);
-    keep |= MaskToBits<W>(pass, l0);
+    keep |= MaskToBits<W>(EarlyPass<W, kDepth16>(func, plane, depth_at, l0, z), l0);
   }
   return bb.live[b] &= keep;
 }
 // The same into a multisampled target: each sample's covered lanes at its depth against its plane; a lane's sample
 // that fails is no longer covered.
-template <int W>
+template <int W, bool kDepth16>
 SOFTGL_WIDE std::uint32_t EarlyBlockSamples(Enum func, BlockBuffer& bb, const RenderTarget& t, int b,
                                             const SampleDepths* depths) {
   using F = typename V<W>::F;
-  using I = typename V<W>::I;
   constexpr std::uint32_t kChunk = (1u << W) - 1u;
   const QuadPlaces depth_at(bb, b, t.depth_pitch);
   std::uint32_t any = 0;
   for (int s = 0; s < t.samples; ++s) {
     const std::uint32_t lanes = bb.live[b] & bb.sample_live[b][s];
-    const float* plane = t.depth + t.depth_plane * std::size_t(s);
+    const void* plane = DepthPlane<kDepth16>(t, s);
     std::uint32_t keep = 0;
     for (int l0 = 0; l0 < kLanes; l0 += W) {
       if (!((lanes >> l0) & kChunk)) continue;
       const F z = LoadVec<F>(depths->z[b][s] + l0);
-      F zc = z > 0.0f ? z : F{} + 0.0f;
-      zc = zc < 1.0f ? zc : F{} + 1.0f;
-      const F stored = LoadQuads<float, W, F>(plane, depth_at, l0);
-      const I pass = Compare(func, zc, stored) & (z == z);
-      keep |= MaskToBits<W>(pass, l0);
+      keep |= MaskToBits<W>(EarlyPass<W, kDepth16>(func, plane, depth_at, l0, z), l0);
     }
     any |= bb.sample_live[b][s] = lanes & keep;
   }
@@ -635,7 +668,8 @@ SOFTGL_WIDE std::uint32_t EarlyBlockSamples(Enum func, BlockBuffer& bb, const Re
 using EarlyBlockFn = std::uint32_t (*)(Enum, BlockBuffer&, const RenderTarget&, int, const SampleDepths*);
 template <int W>
 SOFTGL_WIDE std::uint32_t EarlyBlockEither(Enum f, BlockBuffer& bb, const RenderTarget& t, int b, const SampleDepths* d) {
-  return d ? EarlyBlockSamples<W>(f, bb, t, b, d) : EarlyBlock<W>(f, bb, t, b);
+  if (t.depth16) return d ? EarlyBlockSamples<W, true>(f, bb, t, b, d) : EarlyBlock<W, true>(f, bb, t, b);
+  return d ? EarlyBlockSamples<W, false>(f, bb, t, b, d) : EarlyBlock<W, false>(f, bb, t, b);
 }
 std::uint32_t EarlyBlockBase(Enum f, BlockBuffer& bb, const RenderTarget& t, int b, const SampleDepths* d) {
   return EarlyBlockEither<4>(f, bb, t, b, d);
@@ -657,7 +691,7 @@ bool EarlyTest(const FragmentOpsState& state, BlockBuffer& blocks, const RenderT
   static const EarlyBlockFn early = SOFTGL_CHOOSE(EarlyBlock);
   for (int b = 0; b < blocks.count; ++b) {
     if (target.HasDepth() && blocks.live[b]) {
-      if (target.depth && Inside(target, blocks, b)) {
+      if (Inside(target, blocks, b)) {
         early(state.depth_func, blocks, target, b, depths);
       } else {
         // As the late test: depth clamped to [0, 1] and converted as the buffer keeps it, NaN fails.

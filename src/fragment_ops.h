@@ -141,7 +141,7 @@ struct Unorm8Blend {
 /// What the per-fragment operations resolve once per draw and target.
 struct FragmentOpsPlan {
   Unorm8Blend blend[kMaxColorOutputs];  // for the 8-bit colour buffers
-  bool wide_target = false;  // colour buffer 0 RGBA8 (or none), no other, float depth (or none): the vector path
+  bool wide_target = false;  // colour buffer 0 RGBA8 (or none) and no other: blocks take the vector path
 };
 FragmentOpsPlan PlanFragmentOps(const FragmentOpsState& state, const RenderTarget& target);
 

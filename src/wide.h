@@ -31,6 +31,7 @@ struct V {
   typedef std::int32_t I __attribute__((vector_size(4 * W)));
   typedef std::uint32_t U __attribute__((vector_size(4 * W)));
   typedef std::uint8_t B __attribute__((vector_size(W)));
+  typedef std::uint16_t S __attribute__((vector_size(2 * W)));  // W lanes of 16 bits
   typedef std::uint64_t Q __attribute__((vector_size(4 * W)));  // pairs of 32-bit lanes
   typedef std::uint16_t H __attribute__((vector_size(4 * W)));  // halves of 32-bit lanes
   typedef std::uint64_t D __attribute__((vector_size(8 * W)));  // W lanes of 64 bits

@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "framebuffer.h"
@@ -480,12 +481,14 @@ TEST_CASE("DEPTH_COMPONENT16 keeps 16-bit depth: two bytes a texel, the test on 
   Context gl(8, 8);
   testing::SolidShader shader;
   auto rect = [&](float z_steps, float x0, float x1) { DepthRect(gl, shader, z_steps, x0, x1); };
-  for (const int samples : {1, 4}) {
-    INFO(samples << " samples");
+  // RGBA8 colour takes the vector operations, RGBA16F the lane-by-lane ones.
+  for (const auto& [samples, colour] : {std::pair{1, RGBA8}, std::pair{4, RGBA8}, std::pair{1, RGBA16F},
+                                        std::pair{4, RGBA16F}}) {
+    INFO(samples << " samples, colour format " << colour);
     const std::uint32_t fbo = gl.GenFramebuffer(), rb[2] = {gl.GenRenderbuffer(), gl.GenRenderbuffer()};
     gl.BindFramebuffer(FRAMEBUFFER, fbo);
     gl.BindRenderbuffer(RENDERBUFFER, rb[0]);
-    gl.RenderbufferStorageMultisample(RENDERBUFFER, samples == 1 ? 0 : samples, RGBA8, 8, 8);
+    gl.RenderbufferStorageMultisample(RENDERBUFFER, samples == 1 ? 0 : samples, colour, 8, 8);
     gl.FramebufferRenderbuffer(FRAMEBUFFER, COLOR_ATTACHMENT0, RENDERBUFFER, rb[0]);
     gl.BindRenderbuffer(RENDERBUFFER, rb[1]);
     gl.RenderbufferStorageMultisample(RENDERBUFFER, samples == 1 ? 0 : samples, DEPTH_COMPONENT16, 8, 8);

@@ -55,7 +55,7 @@ class Context {
     Enum color_format = RGBA8;
     /// The context's depth buffer: DEPTH_COMPONENT32F (4 bytes a pixel, float, the default) or DEPTH_COMPONENT16
     /// (2 bytes a pixel, for small memory: depth kept as round(d * 65535), the fragment's depth converted so before
-    /// the test, a polygon offset unit of 1 / 65535; drawing takes the per-pixel path of the fragment operations).
+    /// the test, a polygon offset unit of 1 / 65535).
     /// Anything else: DEPTH_COMPONENT32F, and INVALID_ENUM recorded.
     Enum depth_format = DEPTH_COMPONENT32F;
     /// Samples per pixel of the context's framebuffer: 0 (the default) or 1 for one, 2, 4 or 8 for a multisampled
