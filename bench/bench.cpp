@@ -1,6 +1,6 @@
 // bench — softgl against Mesa's llvmpipe (OSMesa, OpenGL 3.3 core) on the same scenes, same size, in one run.
 //
-//   bench [--threads N] [--frames N] [--png DIR] [--scene TEXT] [--softgl-only 1] [--scalar 0]
+//   bench [--threads N] [--frames N] [--png DIR] [--scene TEXT] [--softgl-only 1] [--scalar 0] [--depth16 1]
 //   (--png DIR: also write each scene's last frame to DIR, softgl's and llvmpipe's)
 //
 // llvmpipe runs with LP_NUM_THREADS = N (0 for --threads 1: rendering on the calling thread alone); softgl with
@@ -14,6 +14,7 @@
 //   --softgl-only 1    skip llvmpipe (for profiling softgl alone)
 //   --scalar 0         skip the runs with each scene's shader in the scalar form (by default they follow each
 //                      scene, and the last columns give their time and the wide form's gain over them)
+//   --depth16 1        softgl's contexts with a 16-bit depth buffer (Options::depth_format DEPTH_COMPONENT16)
 //
 // The last row is the model scene's peak memory: each renderer runs the scene (warm-up and one frame) in a process
 // of its own that loads the model and nothing else (this program with --rss-child), which reports its VmHWM.
@@ -359,7 +360,7 @@ GLuint Program(const char* vs, const char* fs) {
 // ---- Running -------------------------------------------------------------------------------------------------
 
 std::string g_png_dir;  // --png
-softgl::Context::Options g_options;  // --threads
+softgl::Context::Options g_options;  // --threads, --depth16
 bool g_scalar = false;  // run the scalar form of the scenes' shaders
 
 // Runs body with the scene's shader in the wide form, or in the scalar form when g_scalar.
@@ -510,6 +511,8 @@ int main(int argc, char** argv) {
     if (!std::strcmp(argv[i], "--scene")) only = argv[i + 1];
     if (!std::strcmp(argv[i], "--softgl-only")) softgl_only = std::atoi(argv[i + 1]) != 0;
     if (!std::strcmp(argv[i], "--scalar")) with_scalar = std::atoi(argv[i + 1]) != 0;
+    if (!std::strcmp(argv[i], "--depth16") && std::atoi(argv[i + 1]) != 0)
+      g_options.depth_format = softgl::DEPTH_COMPONENT16;
     if (!std::strcmp(argv[i], "--rss-child")) rss_child = argv[i + 1];
   }
   const std::string lp_threads = std::to_string(threads == 1 ? 0 : threads);
