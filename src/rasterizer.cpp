@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <type_traits>
 #include <utility>
 
 #include <cstring>
@@ -356,12 +357,11 @@ SOFTGL_TARGET_AVX512 void SampleRegionCoverageAvx512(const SampleEdges& e, std::
   SampleRegionCoverage<16, S>(e, bits);
 }
 #endif
-// The kernel for `samples` (2, 4 or 8), chosen once per count.
-SampleCoverageFn SampleCoverageFor(int samples) {
-  static const SampleCoverageFn k2 = SOFTGL_CHOOSE(SampleRegionCoverage, <2>);
-  static const SampleCoverageFn k4 = SOFTGL_CHOOSE(SampleRegionCoverage, <4>);
-  static const SampleCoverageFn k8 = SOFTGL_CHOOSE(SampleRegionCoverage, <8>);
-  return samples == 2 ? k2 : samples == 4 ? k4 : k8;
+// The kernel for S samples (2, 4 or 8), chosen once per count.
+template <int S>
+SampleCoverageFn SampleCoverageFor() {
+  static const SampleCoverageFn kernel = SOFTGL_CHOOSE(SampleRegionCoverage, <S>);
+  return kernel;
 }
 
 // The lanes (in RegionCoverage's order) of the region's pixels with ix in [x0, x1) and iy in [y0, y1), 0 <= x0, y0
@@ -493,11 +493,11 @@ namespace {
 // `small`: the triangle's samples all lie in one region (from the box's first quad) even before the bounds cut it,
 // so that its vertices lie within a few pixels and all its edge values there fit 32 bits.
 // A region every sample of every pixel of which is covered goes to `square(bx, by)` as four 4x4 squares instead.
-template <class Emit, class Square>
+template <int samples, class Emit, class Square>
 void RasterizeSamples(const std::int64_t A[3], const std::int64_t B[3], const std::int64_t C[3], const Rect& box,
-                      int samples, bool small, Emit&& emit, Square&& square) {
+                      bool small, Emit&& emit, Square&& square) {
   constexpr int kRegion = 8;
-  const SampleCoverageFn sample_coverage = SampleCoverageFor(samples);
+  const SampleCoverageFn sample_coverage = SampleCoverageFor<samples>();
   const auto* pos = SamplePositions(samples);
   auto emit_region = [&](std::int64_t rx, std::int64_t ry, std::uint64_t any, const std::uint64_t* cover) {
     while (any) {
@@ -742,20 +742,28 @@ void RasterizeTriangle(const VertexView& v0, const VertexView& v1, const VertexV
   if (target.samples > 1) {
     const bool small = LastAt(maxX, span.x0) - (FirstAt(minX, span.x1) & ~std::int64_t(1)) < kRegion &&
                        LastAt(maxY, span.y0) - (FirstAt(minY, span.y1) & ~std::int64_t(1)) < kRegion;
-    RasterizeSamples(A, B, C, Rect{int(px0), int(py0), int(px1) + 1, int(py1) + 1}, target.samples, small,
-                     [&](int qx, int qy, unsigned mask, const std::uint64_t* cover, int shift) {
-                       int slot;
-                       const int b = AddQuad(blocks, sink, front_facing, nvar, qx, qy, mask, slot, open, false);
-                       blocks.quad_planes[b][slot] = entry.For(blocks, planes, varying_planes);
-                       // (a new slot's sample bits are 0)
-                       for (int s = 0; s < blocks.samples; ++s)
-                         blocks.sample_live[b][s] |= (std::uint32_t(cover[s] >> shift) & 0xFu) << (4 * slot);
-                     },
-                     [&](int bx, int by) {
-                       const int b = AddSquare(blocks, sink, front_facing, nvar, bx, by);
-                       const TrianglePlanes* stored = entry.For(blocks, planes, varying_planes);
-                       for (int q = 0; q < 4; ++q) blocks.quad_planes[b][q] = stored;
-                     });
+    // One instance per sample count, so that the loops over the samples have a fixed length.
+    auto rasterize = [&](auto count) {
+      constexpr int kSamples = decltype(count)::value;
+      RasterizeSamples<kSamples>(A, B, C, Rect{int(px0), int(py0), int(px1) + 1, int(py1) + 1}, small,
+                                 [&](int qx, int qy, unsigned mask, const std::uint64_t* cover, int shift) {
+                                   int slot;
+                                   const int b = AddQuad(blocks, sink, front_facing, nvar, qx, qy, mask, slot, open, false);
+                                   blocks.quad_planes[b][slot] = entry.For(blocks, planes, varying_planes);
+                                   // (a new slot's sample bits are 0)
+                                   std::uint32_t* live = blocks.sample_live[b];
+                                   for (int s = 0; s < kSamples; ++s)
+                                     live[s] |= (std::uint32_t(cover[s] >> shift) & 0xFu) << (4 * slot);
+                                 },
+                                 [&](int bx, int by) {
+                                   const int b = AddSquare(blocks, sink, front_facing, nvar, bx, by);
+                                   const TrianglePlanes* stored = entry.For(blocks, planes, varying_planes);
+                                   for (int q = 0; q < 4; ++q) blocks.quad_planes[b][q] = stored;
+                                 });
+    };
+    if (target.samples == 2) rasterize(std::integral_constant<int, 2>{});
+    else if (target.samples == 4) rasterize(std::integral_constant<int, 4>{});
+    else rasterize(std::integral_constant<int, 8>{});
     return;
   }
   if (LastCentre(maxX) - (FirstCentre(minX) & ~std::int64_t(1)) < kRegion &&
