@@ -204,7 +204,9 @@ class PrimitiveRunner {
   void Line(std::uint32_t i0, std::uint32_t i1, std::uint32_t provoking, bool front_facing = true) {
     ToClipVertex(sv_, i0, clip_[0]);
     ToClipVertex(sv_, i1, clip_[1]);
-    if (!ClipLine(clip_[0], clip_[1], sv_.nvar, planes_, clip_[2], clip_[3])) return;
+    // Multisampled, a line covers a rectangle around its segment, whose ends are where clipping puts them: such
+    // lines are clipped against the view volume itself, not a guard band.
+    if (!ClipLine(clip_[0], clip_[1], sv_.nvar, state_.samples > 1 ? ClipPlanes{} : planes_, clip_[2], clip_[3])) return;
     ToWindow(clip_[2], sv_.nvar, state_.viewport, win_[0]);
     ToWindow(clip_[3], sv_.nvar, state_.viewport, win_[1]);
     Flat(win_, 2, provoking);

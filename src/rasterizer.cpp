@@ -867,6 +867,21 @@ void RasterizeTriangle(const VertexView& v0, const VertexView& v1, const VertexV
   }
 }
 
+namespace {
+
+// A rectangle with corners p[0..3] in order, rasterized as the two triangles (p0, p1, p2) and (p0, p2, p3): the fill
+// rule gives each sample on their shared diagonal to one of them, and the rectangle's sides own the samples on them
+// as a triangle's edges do. Each corner carries the varyings `var[k]`.
+void RasterizeRectangle(const glm::vec4 (&p)[4], const float* const (&var)[4], bool front_facing,
+                        const RasterTarget& target, BlockBuffer& blocks, const BlockSink& sink) {
+  RasterizeTriangle(VertexView(p[0], var[0]), VertexView(p[1], var[1]), VertexView(p[2], var[2]), front_facing, target,
+                    blocks, sink);
+  RasterizeTriangle(VertexView(p[0], var[0]), VertexView(p[2], var[2]), VertexView(p[3], var[3]), front_facing, target,
+                    blocks, sink);
+}
+
+}  // namespace
+
 void RasterizeLine(const WindowVertex& a, const WindowVertex& b, bool front_facing, const RasterTarget& target,
                    BlockBuffer& blocks, const BlockSink& sink) {
   const float ax = a.win.x, ay = a.win.y, dx = b.win.x - ax, dy = b.win.y - ay;
@@ -874,6 +889,21 @@ void RasterizeLine(const WindowVertex& a, const WindowVertex& b, bool front_faci
   const float len2 = dx * dx + dy * dy;
   if (len2 == 0.0f) return;
   const int nvar = target.nvar;
+  if (target.samples > 1) {
+    // Multisampled (OpenGL 4.6, section 14.5.4): the samples inside the rectangle of width 1 along the segment,
+    // its long sides half a pixel either side. Depth and varyings vary along the segment alone, as at the point
+    // of the segment nearest to each position: the same at the two corners of each end.
+    // The ends and the half-width offset are each snapped to the subpixel grid, then added: a parallelogram on the
+    // grid whose sides stay parallel (the rasterizer then snaps nothing further).
+    auto snap = [](float f) { return float(RoundToInt64(double(f) * double(kOne))) / float(kOne); };
+    const float scale = 0.5f / std::sqrt(len2);
+    const glm::vec4 n(snap(-dy * scale), snap(dx * scale), 0.0f, 0.0f);
+    const glm::vec4 sa(snap(a.win.x), snap(a.win.y), a.win.z, a.win.w), sb(snap(b.win.x), snap(b.win.y), b.win.z, b.win.w);
+    const glm::vec4 corners[4] = {sa + n, sa - n, sb - n, sb + n};
+    const float* const var[4] = {a.var, a.var, b.var, b.var};
+    RasterizeRectangle(corners, var, front_facing, target, blocks, sink);
+    return;
+  }
 
   // Varyings at the point of the segment nearest to the pixel centre (OpenGL's t, section 14.5.1).
   auto eval = [&](int px, int py, float* frag, float* out) {
@@ -946,6 +976,15 @@ void RasterizePoint(const WindowVertex& v, float size, bool front_facing, const 
                     BlockBuffer& blocks, const BlockSink& sink) {
   if (!(size > 0.0f) || !(std::fabs(v.win.x) < 1e7f) || !(std::fabs(v.win.y) < 1e7f)) return;
   const float half = std::min(size, 1e6f) * 0.5f;
+  if (target.samples > 1) {
+    // Multisampled (OpenGL 4.6, section 14.4.3, point sprites as in the core profile): the samples inside the
+    // square of side `size` centred on the point.
+    const glm::vec4 corners[4] = {v.win + glm::vec4(-half, -half, 0, 0), v.win + glm::vec4(half, -half, 0, 0),
+                                  v.win + glm::vec4(half, half, 0, 0), v.win + glm::vec4(-half, half, 0, 0)};
+    const float* const var[4] = {v.var, v.var, v.var, v.var};
+    RasterizeRectangle(corners, var, front_facing, target, blocks, sink);
+    return;
+  }
   const long x0 = std::max<long>(long(std::ceil(v.win.x - half - 0.5f)), target.bounds.x0);
   const long x1 = std::min<long>(long(std::ceil(v.win.x + half - 0.5f)) - 1, target.bounds.x1 - 1);
   const long y0 = std::max<long>(long(std::ceil(v.win.y - half - 0.5f)), target.bounds.y0);

@@ -371,18 +371,61 @@ TEST_CASE("multisample: the lane-by-lane operations (a float target, an odd size
   CHECK(edged > 20);   // and the resolve mixed samples
 }
 
-TEST_CASE("multisample: lines and points cover every sample of their pixels", "[multisample]") {
+TEST_CASE("multisample: a line covers the samples of a rectangle along it, a point those of its square",
+          "[multisample]") {
+  // Sample positions at 4 samples (x, y in 1/16 pixel): (6, 2), (14, 6), (2, 10), (10, 14).
   Context gl(16, 16, Samples(4));
   gl.ClearColor(0, 0, 0, 1);
   gl.Clear(COLOR_BUFFER_BIT);
   SolidShader shader;
-  MakeVertexArray(gl, {WindowToClip(0.5f, 4.5f, 16, 16), WindowToClip(15.5f, 4.5f, 16, 16), WindowToClip(3.5f, 10.5f, 16, 16)});
+  MakeVertexArray(gl, {WindowToClip(0.5f, 4.5f, 16, 16), WindowToClip(15.5f, 4.5f, 16, 16),
+                       WindowToClip(2.0f, 10.2f, 16, 16), WindowToClip(9.0f, 10.2f, 16, 16),
+                       WindowToClip(3.5f, 13.5f, 16, 16), WindowToClip(12.3f, 12.3f, 16, 16)});
+  gl.UseProgram(shader);
+  gl.DrawArrays(LINES, 0, 4);
+  gl.DrawArrays(POINTS, 4, 1);
+  gl.PointSize(1.5f);
+  gl.DrawArrays(POINTS, 5, 1);
+  // The line through pixel centres at y = 4.5: the rectangle [0.5, 15.5) x [4, 5) holds every sample of row 4 from
+  // pixel 1 to 14, the samples right of 0.5 in pixel 0 (1 and 3) and left of 15.5 in pixel 15 (0 and 2).
+  CHECK(Red(gl, 6, 4) == 255);
+  CHECK(Red(gl, 0, 4) == 128);
+  CHECK(Red(gl, 15, 4) == 128);
+  CHECK(Red(gl, 6, 3) == 0);
+  CHECK(Red(gl, 6, 5) == 0);
+  // The line at y = 10.2: the rectangle's rows [9.7, 10.7) hold sample 3 of row 9 and samples 0 to 2 of row 10
+  // (one pixel wide lines without multisampling light row 10 alone).
+  CHECK(Red(gl, 5, 9) == 64);
+  CHECK(Red(gl, 5, 10) == 191);
+  CHECK(Red(gl, 5, 11) == 0);
+  // The point of size 1 at a pixel centre covers that pixel; the one of size 1.5 at (12.3, 12.3) the square
+  // [11.55, 13.05) x [11.55, 13.05): sample 3 of pixel (11, 11), samples 2 and 3 of (12, 11), 1 and 3 of (11, 12),
+  // all of (12, 12).
+  CHECK(Red(gl, 3, 13) == 255);
+  CHECK(Red(gl, 11, 11) == 64);
+  CHECK(Red(gl, 12, 11) == 128);
+  CHECK(Red(gl, 11, 12) == 128);
+  CHECK(Red(gl, 12, 12) == 255);
+  CHECK(Red(gl, 13, 12) == 0);
+}
+
+TEST_CASE("multisample: with MULTISAMPLE disabled lines and points light every sample of their pixels",
+          "[multisample]") {
+  Context gl(16, 16, Samples(4));
+  gl.ClearColor(0, 0, 0, 1);
+  gl.Clear(COLOR_BUFFER_BIT);
+  gl.Disable(MULTISAMPLE);
+  SolidShader shader;
+  MakeVertexArray(gl, {WindowToClip(2.0f, 10.2f, 16, 16), WindowToClip(9.0f, 10.2f, 16, 16),
+                       WindowToClip(12.3f, 12.3f, 16, 16)});
   gl.UseProgram(shader);
   gl.DrawArrays(LINES, 0, 2);
+  gl.PointSize(1.5f);
   gl.DrawArrays(POINTS, 2, 1);
-  CHECK(Red(gl, 6, 4) == 255);
-  CHECK(Red(gl, 3, 10) == 255);
-  CHECK(Red(gl, 6, 5) == 0);
+  CHECK(Red(gl, 5, 9) == 0);  // the diamond-exit rule: row 10 alone, all its samples
+  CHECK(Red(gl, 5, 10) == 255);
+  CHECK(Red(gl, 11, 11) == 0);  // the pixels whose centres lie in the square: (12, 12) alone
+  CHECK(Red(gl, 12, 12) == 255);
 }
 
 TEST_CASE("multisample: the context's framebuffer reads resolved", "[multisample]") {

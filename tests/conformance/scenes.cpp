@@ -1083,6 +1083,50 @@ void MultisampleCoverage(Backend& b) {
   EndMultisample(b);
 }
 
+// Per-sample coverage of lines and points, as MultisampleCoverage finds it: with multisampling a line covers the
+// samples inside the rectangle of width 1 along its segment, a point the samples inside the square of its size
+// around it (OpenGL 4.6, sections 14.5.4 and 14.4.3), not the pixels the single-sample rules pick.
+void MultisampleLinesPoints(Backend& b) {
+  ClearBlack(b);
+  const std::uint32_t fbo = MultisampleTarget(b);
+  Jitter j(41);
+  std::vector<Vertex> lines;
+  unsigned n = 0;
+  for (int i = 0; i < 40; ++i) {  // segments in every direction, a third of their ends on the samples' grid
+    const float a = 6.2831853f * float(i) / 40.0f + j.Uniform(0.0f, 0.1f), len = j.Uniform(3, 30);
+    const float grid = i % 3 == 0 ? 16.0f : 256.0f;
+    const float x = std::round(j.Uniform(2, 62) * grid) / grid, y = std::round(j.Uniform(2, 62) * grid) / grid;
+    const float x1 = std::round((x + std::cos(a) * len) * grid) / grid, y1 = std::round((y + std::sin(a) * len) * grid) / grid;
+    const glm::vec4 c = Palette(n++);
+    lines.push_back({Win(2 * x, 2 * y), c});
+    lines.push_back({Win(2 * x1, 2 * y1), c});
+  }
+  const float sizes[] = {1.0f, 1.5f, 2.0f, 3.0f, 4.25f, 6.0f};
+  b.Enable(SAMPLE_MASK);
+  for (int s = 0; s < 4; ++s) {
+    b.ClearColor(0, 0, 0, 1);
+    b.Clear(COLOR_BUFFER_BIT);
+    b.SampleMask(1u << s);
+    b.Draw(LINES, lines);
+    Jitter pj(43);
+    unsigned pn = 0;
+    for (float size : sizes) {
+      b.PointSize(size);
+      std::vector<Vertex> points;
+      for (int i = 0; i < 8; ++i) {
+        const float grid = i % 2 == 0 ? 16.0f : 256.0f;
+        points.push_back({Win(2 * std::round(pj.Uniform(3, 61) * grid) / grid, 2 * std::round(pj.Uniform(3, 61) * grid) / grid),
+                          Palette(100 + pn++)});
+      }
+      b.Draw(POINTS, points);
+    }
+    b.PointSize(1.0f);
+    ResolveInto(b, fbo, (s & 1) * 64, (s >> 1) * 64);
+  }
+  b.Disable(SAMPLE_MASK);
+  EndMultisample(b);
+}
+
 // A resolved scene: depth-tested triangles crossing each other (depth per sample), a stencil mask drawn at
 // samples, and blended triangles over them, in a 4-sample framebuffer object resolved into the bottom half;
 // the top half has the same with MULTISAMPLE disabled (each pixel's centre coverage into all its samples).
@@ -1473,6 +1517,7 @@ const std::vector<SceneInfo>& Scenes() {
       {"blit_nearest", kSize, kSize, Check::kExactWithDepthStencil, BlitNearest},
       {"blit_linear", kSize, kSize, Check::kColor, BlitLinear},
       {"msaa_coverage", kSize, kSize, Check::kColor, MultisampleCoverage},
+      {"msaa_lines_points", kSize, kSize, Check::kColor, MultisampleLinesPoints},
       {"msaa_resolve", kSize, kSize, Check::kColor, MultisampleResolve},
       {"msaa_coverage_ops", kSize, kSize, Check::kColor, MultisampleCoverageOps},
       {"msaa_texture", kSize, kSize, Check::kExact, MultisampleTexture},
