@@ -1064,31 +1064,35 @@ std::vector<Vertex> SampleTriangles(unsigned seed, int count) {
   return v;
 }
 
-// Per-sample coverage: the same triangles drawn four times into a 4-sample framebuffer object, each time into one
-// sample alone (SAMPLE_MASK), then resolved into a quadrant of its own. A quadrant's pixel is a quarter of the
-// colour of the last triangle covering that sample, so any sample covered differently shows.
-void MultisampleCoverage(Backend& b) {
+// Draws `draw` four times into a 4-sample framebuffer object, each time into one sample alone (SAMPLE_MASK), and
+// resolves each into a quadrant of its own. A quadrant's pixel is a quarter of the colour of the last primitive
+// covering that sample, so any sample covered differently shows.
+template <class Draw>
+void EachSampleIntoQuadrants(Backend& b, Draw&& draw) {
   ClearBlack(b);
   const std::uint32_t fbo = MultisampleTarget(b);
-  const std::vector<Vertex> v = SampleTriangles(5, 260);
   b.Enable(SAMPLE_MASK);
   for (int s = 0; s < 4; ++s) {
     b.ClearColor(0, 0, 0, 1);
     b.Clear(COLOR_BUFFER_BIT);
     b.SampleMask(1u << s);
-    b.Draw(TRIANGLES, v);
+    draw();
     ResolveInto(b, fbo, (s & 1) * 64, (s >> 1) * 64);
   }
   b.Disable(SAMPLE_MASK);
   EndMultisample(b);
 }
 
-// Per-sample coverage of lines and points, as MultisampleCoverage finds it: with multisampling a line covers the
-// samples inside the rectangle of width 1 along its segment, a point the samples inside the square of its size
-// around it (OpenGL 4.6, sections 14.5.4 and 14.4.3), not the pixels the single-sample rules pick.
+// Per-sample coverage of triangles.
+void MultisampleCoverage(Backend& b) {
+  const std::vector<Vertex> v = SampleTriangles(5, 260);
+  EachSampleIntoQuadrants(b, [&] { b.Draw(TRIANGLES, v); });
+}
+
+// Per-sample coverage of lines and points: with multisampling a line covers the samples inside the rectangle of
+// width 1 along its segment, a point the samples inside the square of its size around it (OpenGL 4.6, sections
+// 14.5.4 and 14.4.3), not the pixels the single-sample rules pick.
 void MultisampleLinesPoints(Backend& b) {
-  ClearBlack(b);
-  const std::uint32_t fbo = MultisampleTarget(b);
   Jitter j(41);
   std::vector<Vertex> lines;
   unsigned n = 0;
@@ -1102,29 +1106,22 @@ void MultisampleLinesPoints(Backend& b) {
     lines.push_back({Win(2 * x1, 2 * y1), c});
   }
   const float sizes[] = {1.0f, 1.5f, 2.0f, 3.0f, 4.25f, 6.0f};
-  b.Enable(SAMPLE_MASK);
-  for (int s = 0; s < 4; ++s) {
-    b.ClearColor(0, 0, 0, 1);
-    b.Clear(COLOR_BUFFER_BIT);
-    b.SampleMask(1u << s);
+  std::vector<Vertex> points[6];
+  Jitter pj(43);
+  for (int k = 0; k < 6; ++k)
+    for (int i = 0; i < 8; ++i) {  // half of them on the samples' grid
+      const float grid = i % 2 == 0 ? 16.0f : 256.0f;
+      const float x = std::round(pj.Uniform(3, 61) * grid) / grid, y = std::round(pj.Uniform(3, 61) * grid) / grid;
+      points[k].push_back({Win(2 * x, 2 * y), Palette(100 + unsigned(8 * k + i))});
+    }
+  EachSampleIntoQuadrants(b, [&] {
     b.Draw(LINES, lines);
-    Jitter pj(43);
-    unsigned pn = 0;
-    for (float size : sizes) {
-      b.PointSize(size);
-      std::vector<Vertex> points;
-      for (int i = 0; i < 8; ++i) {
-        const float grid = i % 2 == 0 ? 16.0f : 256.0f;
-        points.push_back({Win(2 * std::round(pj.Uniform(3, 61) * grid) / grid, 2 * std::round(pj.Uniform(3, 61) * grid) / grid),
-                          Palette(100 + pn++)});
-      }
-      b.Draw(POINTS, points);
+    for (int k = 0; k < 6; ++k) {
+      b.PointSize(sizes[k]);
+      b.Draw(POINTS, points[k]);
     }
     b.PointSize(1.0f);
-    ResolveInto(b, fbo, (s & 1) * 64, (s >> 1) * 64);
-  }
-  b.Disable(SAMPLE_MASK);
-  EndMultisample(b);
+  });
 }
 
 // A resolved scene: depth-tested triangles crossing each other (depth per sample), a stencil mask drawn at
