@@ -265,7 +265,8 @@ void Context::ReadPixels(int x, int y, int width, int height, Enum format, Enum 
 
 void Context::GetTexImage(Enum target, int level, Enum format, Enum type, void* pixels) const {
   auto& s = *state_;
-  if (!IsTexImageTarget(target)) return s.SetError(INVALID_ENUM, __func__, "target must be TEXTURE_2D or a TEXTURE_CUBE_MAP_* face");
+  if (!IsTexImageTarget(target) && target != TEXTURE_2D_ARRAY && target != TEXTURE_3D)
+    return s.SetError(INVALID_ENUM, __func__, "target must be TEXTURE_2D, a TEXTURE_CUBE_MAP_* face, TEXTURE_2D_ARRAY or TEXTURE_3D");
   PixelLayout l;
   if (!LayoutOf(format, l) || (l.stencil && !l.depth)) return s.SetError(INVALID_ENUM, __func__, "format must be a colour format, DEPTH_COMPONENT or DEPTH_STENCIL");
   if (type != UNSIGNED_BYTE && type != UNSIGNED_SHORT && type != UNSIGNED_INT && type != FLOAT && type != UNSIGNED_INT_24_8)
@@ -281,7 +282,9 @@ void Context::GetTexImage(Enum target, int level, Enum format, Enum type, void* 
   if (l.stencil && lv.stencil.empty()) return s.SetError(INVALID_OPERATION, __func__, "DEPTH_STENCIL for a texture without stencil");
   s.Sync(__func__);  // a texture being rendered into holds its texels once the recorded draws are rendered
   const PackLayout pack = Pack(s, lv.width, l, type, pixels);
-  for (int j = 0; j < lv.height; ++j)
+  // A 2D array's layers or a 3D texture's slices one image after another: with the images' rows continuing
+  // upwards, as they are stored, image k's row j is row k * height + j of the packed rows.
+  for (int j = 0; j < lv.height * lv.depth; ++j)
     for (int i = 0; i < lv.width; ++i) {
       const glm::vec4 c = lv.Texel(i, j);
       std::uint8_t* dst = pack.At(i, j);
@@ -361,6 +364,25 @@ void Context::CopyTexSubImage2D(Enum target, int level, int xoffset, int yoffset
   if (!CheckCopySource(s, __func__, detail::IsDepthFormat(lv.format))) return;
   try {
     CopyToLevel(s, __func__, lv, xoffset, yoffset, x, y, width, height);
+  } catch (const std::bad_alloc&) {
+    s.SetError(OUT_OF_MEMORY, __func__, "out of memory");
+  }
+}
+
+void Context::CopyTexSubImage3D(Enum target, int level, int xoffset, int yoffset, int zoffset, int x, int y, int width,
+                                int height) {
+  auto& s = *state_;
+  if (target != TEXTURE_2D_ARRAY && target != TEXTURE_3D) return s.SetError(INVALID_ENUM, __func__, "target must be TEXTURE_2D_ARRAY or TEXTURE_3D");
+  if (level < 0 || level >= detail::kMaxLevels) return s.SetError(INVALID_VALUE, __func__, "level is negative or beyond the largest mipmap level");
+  detail::TextureObject* tex = s.Bound(target);
+  if (!tex || !tex->levels[0][level].Defined()) return s.SetError(INVALID_OPERATION, __func__, "no texture bound, or that level is not defined");
+  detail::TextureLevel& lv = tex->levels[0][level];
+  if (xoffset < 0 || yoffset < 0 || zoffset < 0 || width < 0 || height < 0 ||
+      std::int64_t(xoffset) + width > lv.width || std::int64_t(yoffset) + height > lv.height || zoffset >= lv.depth)
+    return s.SetError(INVALID_VALUE, __func__, "the rectangle is outside the level, or the layer beyond its depth");
+  if (!CheckCopySource(s, __func__, detail::IsDepthFormat(lv.format))) return;
+  try {  // layer (slice) zoffset's rows follow the layers below it
+    CopyToLevel(s, __func__, lv, xoffset, zoffset * lv.height + yoffset, x, y, width, height);
   } catch (const std::bad_alloc&) {
     s.SetError(OUT_OF_MEMORY, __func__, "out of memory");
   }

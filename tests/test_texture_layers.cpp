@@ -426,3 +426,72 @@ TEST_CASE("TexImage3D, TexSubImage3D and FramebufferTextureLayer reject bad inpu
   CHECK(v == 0);
   CHECK(gl.GetError() == NO_ERROR);
 }
+
+TEST_CASE("CopyTexSubImage3D copies into one layer; GetTexImage returns every layer", "[texture][layers]") {
+  Context gl(8, 8);
+  gl.ClearColor(1.0f, 0.5f, 0.0f, 1.0f);  // orange, with the top-right 4 x 4 pixels blue
+  gl.Clear(COLOR_BUFFER_BIT);
+  gl.Enable(SCISSOR_TEST);
+  gl.Scissor(4, 4, 4, 4);
+  gl.ClearColor(0.0f, 0.0f, 1.0f, 1.0f);
+  gl.Clear(COLOR_BUFFER_BIT);
+  gl.Disable(SCISSOR_TEST);
+  gl.PixelStore(PACK_ALIGNMENT, 1);
+  auto word = [](const std::uint8_t* p) {
+    return std::uint32_t(p[0]) << 24 | std::uint32_t(p[1]) << 16 | std::uint32_t(p[2]) << 8 | p[3];
+  };
+  for (Enum target : {TEXTURE_2D_ARRAY, TEXTURE_3D}) {
+    INFO(target);
+    const std::uint32_t tex = gl.GenTexture();
+    gl.BindTexture(target, tex);
+    // 4 x 4 x 3 texels, layer k all of grey 10 (k + 1).
+    std::vector<std::uint8_t> texels(4 * 4 * 3 * 4);
+    for (std::size_t t = 0; t < texels.size(); ++t) texels[t] = std::uint8_t(10 * (t / 64 + 1));
+    gl.TexImage3D(target, 0, RGBA8, 4, 4, 3, 0, RGBA, UNSIGNED_BYTE, texels.data());
+    // Framebuffer (3, 3) .. (5, 5) into layer 1 at (1, 1): texel (1, 1) orange, (2, 2) and (3, 3) blue.
+    gl.CopyTexSubImage3D(target, 0, 1, 1, 1, 3, 3, 3, 3);
+    REQUIRE(gl.GetError() == NO_ERROR);
+    std::vector<std::uint8_t> out(texels.size(), 0xCD);
+    gl.GetTexImage(target, 0, RGBA, UNSIGNED_BYTE, out.data());
+    REQUIRE(gl.GetError() == NO_ERROR);
+    auto at = [&](int i, int j, int k) { return word(&out[((std::size_t(k) * 4 + std::size_t(j)) * 4 + std::size_t(i)) * 4]); };
+    CHECK(at(1, 1, 1) == 0xFF8000FFu);
+    CHECK(at(2, 2, 1) == 0x0000FFFFu);
+    CHECK(at(3, 3, 1) == 0x0000FFFFu);
+    CHECK(at(0, 0, 1) == 0x14141414u);  // outside the copy: layer 1's grey 20
+    CHECK(at(3, 0, 1) == 0x14141414u);
+    CHECK(at(1, 1, 0) == 0x0A0A0A0Au);  // the other layers untouched
+    CHECK(at(1, 1, 2) == 0x1E1E1E1Eu);
+    CHECK(at(3, 3, 2) == 0x1E1E1E1Eu);
+    // Errors.
+    gl.CopyTexSubImage3D(target, 0, 0, 0, 3, 0, 0, 1, 1);  // layer 3 of 3
+    CHECK(gl.GetError() == INVALID_VALUE);
+    gl.CopyTexSubImage3D(target, 0, 0, 0, -1, 0, 0, 1, 1);
+    CHECK(gl.GetError() == INVALID_VALUE);
+    gl.CopyTexSubImage3D(target, 0, 2, 0, 0, 0, 0, 3, 1);  // past the 4 texels of a row
+    CHECK(gl.GetError() == INVALID_VALUE);
+    gl.CopyTexSubImage3D(target, 1, 0, 0, 0, 0, 0, 1, 1);  // level 1 not defined
+    CHECK(gl.GetError() == INVALID_OPERATION);
+    gl.CopyTexSubImage3D(target, -1, 0, 0, 0, 0, 0, 1, 1);
+    CHECK(gl.GetError() == INVALID_VALUE);
+  }
+  gl.CopyTexSubImage3D(TEXTURE_2D, 0, 0, 0, 0, 0, 0, 1, 1);
+  CHECK(gl.GetError() == INVALID_ENUM);
+  // A depth texture array takes the depth buffer.
+  gl.ClearDepth(0.25);
+  gl.Clear(DEPTH_BUFFER_BIT);
+  const std::uint32_t depth = gl.GenTexture();
+  gl.BindTexture(TEXTURE_2D_ARRAY, depth);
+  gl.TexImage3D(TEXTURE_2D_ARRAY, 0, DEPTH_COMPONENT32F, 2, 2, 2, 0, DEPTH_COMPONENT, FLOAT, nullptr);
+  gl.CopyTexSubImage3D(TEXTURE_2D_ARRAY, 0, 0, 0, 1, 0, 0, 2, 2);
+  float d[8] = {};
+  gl.GetTexImage(TEXTURE_2D_ARRAY, 0, DEPTH_COMPONENT, FLOAT, d);
+  CHECK(d[0] == 0.0f);  // layer 0 as allocated
+  CHECK(d[4] == 0.25f);
+  CHECK(d[7] == 0.25f);
+  CHECK(gl.GetError() == NO_ERROR);
+  // Without a texture bound.
+  gl.BindTexture(TEXTURE_3D, 0);
+  gl.CopyTexSubImage3D(TEXTURE_3D, 0, 0, 0, 0, 0, 0, 1, 1);
+  CHECK(gl.GetError() == INVALID_OPERATION);
+}

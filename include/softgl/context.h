@@ -254,11 +254,17 @@ class Context {
   /// defined, no buffer of the texture's kind to read: INVALID_OPERATION; incomplete read framebuffer:
   /// INVALID_FRAMEBUFFER_OPERATION.
   void CopyTexSubImage2D(Enum target, int level, int xoffset, int yoffset, int x, int y, int width, int height);
+  /// CopyTexSubImage2D into layer `zoffset` of level `level` of the bound TEXTURE_2D_ARRAY (a slice of a
+  /// TEXTURE_3D). Errors as CopyTexSubImage2D's; another target: INVALID_ENUM; zoffset outside the level's layers
+  /// (slices): INVALID_VALUE.
+  void CopyTexSubImage3D(Enum target, int level, int xoffset, int yoffset, int zoffset, int x, int y, int width,
+                         int height);
   /// Defines level `level` of the bound texture as width x height of `internal_format` (as TexImage2D, with its
   /// errors) holding the read framebuffer's rectangle (x, y, width, height), as CopyTexSubImage2D copies it.
   void CopyTexImage2D(Enum target, int level, Enum internal_format, int x, int y, int width, int height, int border);
-  /// Writes level `level` of the bound texture (TEXTURE_2D or a cube face) to `pixels`, rows bottom first, laid out
-  /// by the PACK_ settings as ReadPixels lays them out: format a colour format (RED ... BGRA) or DEPTH_COMPONENT
+  /// Writes level `level` of the bound texture (TEXTURE_2D, a cube face, TEXTURE_2D_ARRAY or TEXTURE_3D) to
+  /// `pixels`, rows bottom first, laid out by the PACK_ settings as ReadPixels lays them out (an array's layers or
+  /// a 3D texture's slices one image after another, each `height` rows): format a colour format (RED ... BGRA) or DEPTH_COMPONENT
   /// for a depth texture; type UNSIGNED_BYTE, UNSIGNED_SHORT, UNSIGNED_INT (normalized) or FLOAT; or DEPTH_STENCIL
   /// with UNSIGNED_INT_24_8 for a depth-stencil texture. An undefined level writes nothing. Errors: bad target,
   /// format or type: INVALID_ENUM; level out of range: INVALID_VALUE; nothing bound, DEPTH_COMPONENT for a colour

@@ -368,8 +368,28 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                              in.Enum(kFormats), in.Enum(kPixelTypes), pixels);
             break;
           default:
-            gl.FramebufferTextureLayer(in.Enum(kFbTargets), in.Enum(kAttachments), id(), in.Int(-1, 4),
-                                       in.Int(-1, 9));
+            if (in.Byte() % 2) {
+              gl.FramebufferTextureLayer(in.Enum(kFbTargets), in.Enum(kAttachments), id(), in.Int(-1, 4),
+                                         in.Int(-1, 9));
+            } else if (in.Byte() % 2) {
+              gl.CopyTexSubImage3D(in.Enum(kLayered), in.Int(-1, 3), in.Int(-4, 64), in.Int(-4, 64), in.Int(-2, 9),
+                                   in.Int(-60, 60), in.Int(-60, 60), in.Int(-1, 64), in.Int(-1, 64));
+            } else {  // into a buffer as large as the bound level (asked for first), when that is small
+              const std::uint32_t target = in.Enum(kLayered);
+              const int level = in.Int(-1, 3);
+              int lw = 0, lh = 0, ld = 0;
+              gl.GetTexLevelParameteriv(target, level, TEXTURE_WIDTH, &lw);
+              gl.GetTexLevelParameteriv(target, level, TEXTURE_HEIGHT, &lh);
+              gl.GetTexLevelParameteriv(target, level, TEXTURE_DEPTH, &ld);
+              if (std::int64_t(lw) * lh * ld > 64 * 64 * 64) break;
+              scratch.assign(std::size_t(lw) * std::size_t(lh) * std::size_t(ld) * 16 + 64 * 16, 0);
+              gl.PixelStore(PACK_ALIGNMENT, 4);
+              gl.PixelStore(PACK_ROW_LENGTH, 0);
+              gl.PixelStore(PACK_SKIP_ROWS, 0);
+              gl.PixelStore(PACK_SKIP_PIXELS, 0);
+              gl.GetTexImage(target, level, in.Byte() % 2 ? RGBA : DEPTH_COMPONENT, in.Byte() % 2 ? FLOAT : UNSIGNED_BYTE,
+                             scratch.data());
+            }
             break;
         }
         break;
