@@ -104,6 +104,7 @@ bool* CapFlag(ContextState& s, Enum cap) {
     case SAMPLE_ALPHA_TO_ONE: return &s.ops.multisample.alpha_to_one;
     case SAMPLE_COVERAGE: return &s.ops.multisample.sample_coverage;
     case SAMPLE_MASK: return &s.ops.multisample.sample_mask;
+    case SAMPLE_SHADING: return &s.ops.multisample.sample_shading;
     default: return nullptr;
   }
 }
@@ -134,6 +135,10 @@ void Context::PrimitiveRestartIndex(std::uint32_t index) { state_->restart_index
 void Context::SampleCoverage(float value, bool invert) {
   state_->ops.multisample.coverage_value = value >= 0.0f ? std::min(value, 1.0f) : 0.0f;  // NaN as 0
   state_->ops.multisample.coverage_invert = invert;
+}
+
+void Context::MinSampleShading(float value) {
+  state_->ops.multisample.min_sample_shading = value >= 0.0f ? std::min(value, 1.0f) : 0.0f;  // NaN as 0
 }
 
 void Context::SampleMaski(std::uint32_t index, Bitfield mask) {

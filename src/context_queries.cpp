@@ -120,6 +120,7 @@ bool QueryState(ContextState& s, Enum pname, StateValue& out) {
     case MAX_SAMPLE_MASK_WORDS: return integer(1);
     case SAMPLE_COVERAGE_VALUE: return put(Kind::kFloat, {s.ops.multisample.coverage_value});
     case SAMPLE_COVERAGE_INVERT: return boolean(s.ops.multisample.coverage_invert);
+    case MIN_SAMPLE_SHADING_VALUE: return put(Kind::kFloat, {s.ops.multisample.min_sample_shading});
     case SAMPLE_MASK_VALUE: return integer(s.ops.multisample.mask);
     case SAMPLES:
     case SAMPLE_BUFFERS: {  // of the draw framebuffer (an incomplete one reports 0)

@@ -57,6 +57,8 @@ struct MultisampleState {
   bool coverage_invert = false;
   bool sample_mask = false;
   std::uint32_t mask = ~0u;  // SampleMaski's word 0
+  bool sample_shading = false;
+  float min_sample_shading = 0.0f;  // MinSampleShading, clamped to [0, 1]
   bool operator==(const MultisampleState&) const = default;
 };
 

@@ -1020,6 +1020,24 @@ void InterpolateFragCoords(BlockBuffer& blocks) {
   for (int b = 0; b < blocks.count; ++b) frag_coord_of_block(blocks, b);
 }
 
+void InterpolateAtSample(BlockBuffer& blocks, int s) {
+  const auto* pos = SamplePositions(blocks.samples);
+  const float ox = float(pos[s][0]) / 16.0f, oy = float(pos[s][1]) / 16.0f;
+  for (int b = 0; b < blocks.count; ++b) {
+    float* var = blocks.Varyings(b);
+    for (int lane = 0; lane < kLanes; ++lane) {  // helper lanes too: a quad's derivatives come from one position
+      const TrianglePlanes* p = blocks.quad_planes[b][lane >> 2];
+      if (!p) continue;
+      const float rx = (float(blocks.X(b, lane)) + ox) - p->x0, ry = (float(blocks.Y(b, lane)) + oy) - p->y0;
+      const float w = 1.0f / ((p->oow.a0 + p->oow.dx * rx) + p->oow.dy * ry);
+      for (int i = 0; i < p->nvar; ++i) {
+        const float v = (p->a0[i] + p->dx[i] * rx) + p->dy[i] * ry;
+        var[i * kLanes + lane] = p->perspective[i] ? v * w : v;
+      }
+    }
+  }
+}
+
 void InterpolateCentroids(BlockBuffer& blocks, const std::int8_t (*centroid)[kLanes], const Interpolation* modes) {
   const auto* pos = SamplePositions(blocks.samples);
   for (int b = 0; b < blocks.count; ++b) {

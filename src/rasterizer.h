@@ -75,5 +75,8 @@ void InterpolateVaryings(BlockBuffer& blocks);
 /// each live lane with centroid[b][lane] = s >= 0 taken again at sample s (the lane's first covered sample, where
 /// not all are covered) instead of the pixel centre. Lanes of lines and points keep the centre's.
 void InterpolateCentroids(BlockBuffer& blocks, const std::int8_t (*centroid)[kLanes], const Interpolation* modes);
+/// Every varying of every lane of the blocks' quads evaluated at sample s's position in the lane's pixel (divided
+/// by w where it is interpolated with perspective; flat ones constant): the inputs of a shader run per sample.
+void InterpolateAtSample(BlockBuffer& blocks, int s);
 
 }  // namespace softgl::detail

@@ -2,6 +2,7 @@
 #include "tile_renderer.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 
@@ -121,12 +122,45 @@ struct FragmentStage {
         }
     }
     if (draw->early_depth && !EarlyDepthTestSamples(ops, blocks, *target, depths)) return;
+    const MultisampleState& ms = ops.multisample;
+    if (ms.multisample && ms.sample_shading && std::ceil(ms.min_sample_shading * float(samples)) > 1.0f)
+      return ShadeEachSample(blocks, depths);
     InterpolateVaryings(blocks);
     if (has_centroid && ops.multisample.multisample) InterpolateCentroids(blocks, centroid, draw->interpolation);
     Shade(blocks);
-    // SAMPLE_ALPHA_TO_COVERAGE, SAMPLE_COVERAGE and SAMPLE_MASK narrow each lane's samples, and SAMPLE_ALPHA_TO_ONE
-    // then sets every output's alpha to 1 (while MULTISAMPLE is enabled: section 17.3.1).
-    const MultisampleState& ms = ops.multisample;
+    CoverageOps(blocks);
+    ApplyFragmentOpsSamples(ops, *plan, blocks, draw->shader_depth, *target, depths);
+  }
+
+  // Sample shading (MinSampleShading): the shader once for each sample, its inputs interpolated there, its colour
+  // through the operations of that sample alone.
+  void ShadeEachSample(BlockBuffer& blocks, const SampleDepths& depths) const {
+    const int samples = target->samples;
+    std::uint32_t live[BlockBuffer::kCapacity], sample_live[BlockBuffer::kCapacity][kMaxSamples];
+    for (int b = 0; b < blocks.count; ++b) {
+      live[b] = blocks.live[b];
+      for (int s = 0; s < samples; ++s) sample_live[b][s] = blocks.sample_live[b][s];
+    }
+    for (int s = 0; s < samples; ++s) {
+      std::uint32_t any = 0;
+      for (int b = 0; b < blocks.count; ++b) {
+        blocks.live[b] = live[b] & sample_live[b][s];
+        for (int t = 0; t < samples; ++t) blocks.sample_live[b][t] = t == s ? blocks.live[b] : 0u;
+        any |= blocks.live[b];
+      }
+      if (!any) continue;
+      InterpolateAtSample(blocks, s);
+      Shade(blocks);
+      CoverageOps(blocks);
+      ApplyFragmentOpsSamples(draw->ops, *plan, blocks, draw->shader_depth, *target, depths);
+    }
+  }
+
+  // SAMPLE_ALPHA_TO_COVERAGE, SAMPLE_COVERAGE and SAMPLE_MASK narrow each lane's samples, and SAMPLE_ALPHA_TO_ONE
+  // then sets every output's alpha to 1 (while MULTISAMPLE is enabled: section 17.3.1).
+  void CoverageOps(BlockBuffer& blocks) const {
+    const int samples = target->samples;
+    const MultisampleState& ms = draw->ops.multisample;
     std::uint32_t keep = (std::uint32_t(1) << samples) - 1;
     if (ms.multisample && ms.sample_coverage) keep &= CoverageMask(ms, samples);
     if (ms.multisample && ms.sample_mask) keep &= ms.mask;
@@ -145,7 +179,6 @@ struct FragmentStage {
     if (ms.multisample && ms.alpha_to_one)  // (after alpha to coverage has read the alpha)
       for (int b = 0; b < blocks.count; ++b)
         for (int o = 0; o < outputs; ++o) blocks.out[b].color[o].w = Float(1.0f);
-    ApplyFragmentOpsSamples(ops, *plan, blocks, draw->shader_depth, *target, depths);
   }
 
   void Shade(BlockBuffer& blocks) const {

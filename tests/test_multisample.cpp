@@ -3,6 +3,8 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <cstdint>
 #include <random>
 #include <vector>
@@ -714,4 +716,81 @@ TEST_CASE("TEXTURE_2D_MULTISAMPLE and texelFetch reject bad input with OpenGL's 
   CHECK(probe.got[1] == glm::vec4(0.0f));
   CHECK(probe.got[2] == glm::vec4(0.0f));
   CHECK(gl.GetError() == NO_ERROR);
+}
+
+namespace {
+
+struct StepVaryings {
+  glm::vec4 window;
+};
+// Attribute 1 (the window position) as a varying; red where its x passes `edge`: a step inside the pixel that
+// only shading at the samples resolves to a fraction.
+struct StepShader : softgl::Shader<StepShader, StepVaryings> {
+  float edge = 8.45f;
+  void Vertex(const softgl::VertexIn& in, softgl::VertexOut<StepVaryings>& out) const {
+    out.position = in.attrib[0];
+    out.varyings.window = in.attrib[1];
+  }
+  bool Fragment(const softgl::FragmentIn<StepVaryings>& in, softgl::FragmentOut& out) const {
+    out.color[0] = glm::vec4(in.varyings.window.x > edge ? 1.0f : 0.0f, 0.0f, 0.0f, 1.0f);
+    return true;
+  }
+};
+
+// A quad over the whole 16 x 16 window with the step shader; returns the red of pixels 7 to 9 of row 4.
+float ShadingValue(Context& gl) {
+  float v = -1.0f;
+  gl.GetFloatv(MIN_SAMPLE_SHADING_VALUE, &v);
+  return v;
+}
+
+std::array<int, 3> StepRow(Context& gl) {
+  gl.ClearColor(0, 0, 0, 1);
+  gl.Clear(COLOR_BUFFER_BIT);
+  StepShader shader;
+  const glm::vec2 p[6] = {{0, 0}, {16, 0}, {16, 16}, {0, 0}, {16, 16}, {0, 16}};
+  std::vector<glm::vec4> pos, value;
+  for (const glm::vec2& v : p) {
+    pos.push_back(WindowToClip(v.x, v.y, 16, 16));
+    value.push_back(glm::vec4(v, 0, 1));
+  }
+  MakeVertexArray(gl, pos, value);
+  gl.UseProgram(shader);
+  gl.DrawArrays(TRIANGLES, 0, 6);
+  return {Red(gl, 7, 4), Red(gl, 8, 4), Red(gl, 9, 4)};
+}
+
+}  // namespace
+
+TEST_CASE("multisample: SAMPLE_SHADING runs the shader at each sample once MinSampleShading asks for two or more",
+          "[multisample]") {
+  Context gl(16, 16, Samples(4));
+  CHECK(ShadingValue(gl) == 0.0f);
+  CHECK_FALSE(gl.IsEnabled(SAMPLE_SHADING));
+  // Once per pixel: pixel 8's centre (8.5) is past the step at 8.45, so all its samples are red.
+  CHECK(StepRow(gl) == std::array<int, 3>{0, 255, 255});
+  gl.Enable(SAMPLE_SHADING);
+  gl.MinSampleShading(0.25f);  // one sample of four: still once per pixel
+  CHECK(StepRow(gl) == std::array<int, 3>{0, 255, 255});
+  // At each sample: pixel 8's samples at x = 8.375, 8.875, 8.125, 8.625; the two past 8.45 red.
+  for (float value : {0.5f, 1.0f, 7.0f}) {
+    gl.MinSampleShading(value);
+    INFO(value);
+    CHECK(StepRow(gl) == std::array<int, 3>{0, 128, 255});
+  }
+  CHECK(ShadingValue(gl) == 1.0f);  // clamped
+  gl.MinSampleShading(std::nanf(""));
+  CHECK(ShadingValue(gl) == 0.0f);
+  gl.MinSampleShading(1.0f);
+  gl.Disable(MULTISAMPLE);  // no effect without multisampling
+  CHECK(StepRow(gl) == std::array<int, 3>{0, 255, 255});
+  gl.Enable(MULTISAMPLE);
+  gl.Disable(SAMPLE_SHADING);
+  CHECK(StepRow(gl) == std::array<int, 3>{0, 255, 255});
+  CHECK(gl.GetError() == NO_ERROR);
+  // A single-sampled framebuffer has no samples to shade apart.
+  Context single(16, 16);
+  single.Enable(SAMPLE_SHADING);
+  single.MinSampleShading(1.0f);
+  CHECK(StepRow(single) == std::array<int, 3>{0, 255, 255});
 }

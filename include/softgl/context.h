@@ -505,6 +505,12 @@ class Context {
   // Into a single-sampled framebuffer, or with MULTISAMPLE disabled, they do nothing.
   /// SampleCoverage's value (clamped to [0, 1]; default 1) and whether its mask is inverted (default false).
   void SampleCoverage(float value, bool invert);
+  /// With SAMPLE_SHADING enabled (OpenGL 4.0's sample shading), the fraction of a pixel's samples the fragment
+  /// shader runs for on its own (clamped to [0, 1]; default 0; query MIN_SAMPLE_SHADING_VALUE). When
+  /// ceil(value * samples) > 1, softgl runs the shader once for each covered sample, its inputs interpolated at the
+  /// sample's position (flat ones as they are), and each run's colour goes to that sample alone. With value *
+  /// samples <= 1, or SAMPLE_SHADING or MULTISAMPLE disabled, the shader runs once per pixel.
+  void MinSampleShading(float value);
   /// Word `index` of the sample mask (default all ones): bit s for sample s. index >= MAX_SAMPLE_MASK_WORDS (1):
   /// INVALID_VALUE.
   void SampleMaski(std::uint32_t index, Bitfield mask);

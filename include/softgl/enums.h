@@ -102,6 +102,7 @@ inline constexpr Enum SAMPLE_ALPHA_TO_COVERAGE = 0x809E;  // output 0's alpha pi
 inline constexpr Enum SAMPLE_ALPHA_TO_ONE = 0x809F;       // then every output's alpha becomes 1
 inline constexpr Enum SAMPLE_COVERAGE = 0x80A0;           // SampleCoverage's mask
 inline constexpr Enum SAMPLE_MASK = 0x8E51;               // SampleMaski's mask
+inline constexpr Enum SAMPLE_SHADING = 0x8C36;            // the shader once per sample (MinSampleShading)
 
 // Faces, winding and polygon modes.
 inline constexpr Enum FRONT = 0x0404;
@@ -373,6 +374,7 @@ inline constexpr Enum SAMPLE_BUFFERS = 0x80A8;          // 1 when the draw frame
 inline constexpr Enum SAMPLES = 0x80A9;                 // the draw framebuffer's samples per pixel (0: single)
 inline constexpr Enum SAMPLE_COVERAGE_VALUE = 0x80AA;
 inline constexpr Enum SAMPLE_COVERAGE_INVERT = 0x80AB;
+inline constexpr Enum MIN_SAMPLE_SHADING_VALUE = 0x8C37;  // MinSampleShading's value
 inline constexpr Enum SAMPLE_MASK_VALUE = 0x8E52;       // word 0 of the sample mask
 inline constexpr Enum MAX_SAMPLE_MASK_WORDS = 0x8E59;
 inline constexpr Enum SAMPLE_POSITION = 0x8E50;         // GetMultisamplefv

@@ -168,6 +168,7 @@ class Backend {
   virtual void RenderbufferStorageMultisample(int samples, Enum internal_format, int width, int height) = 0;
   /// glSampleMaski(0, mask) and glSampleCoverage (enabled by SAMPLE_MASK and SAMPLE_COVERAGE).
   virtual void SampleMask(std::uint32_t mask) = 0;
+  virtual void MinSampleShading(float value) = 0;  // with SAMPLE_SHADING enabled
   virtual void SampleCoverage(float value, bool invert) = 0;
   virtual void FramebufferRenderbuffer(Enum target, Enum attachment, std::uint32_t renderbuffer) = 0;
   virtual void ReadBuffer(Enum src) = 0;

@@ -451,6 +451,7 @@ class GlBackend final : public Backend {
     glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, internal_format, width, height);
   }
   void SampleMask(std::uint32_t mask) override { glSampleMaski(0, mask); }
+  void MinSampleShading(float value) override { glMinSampleShading(value); }  // (ARB_sample_shading in 3.3)
   void SampleCoverage(float value, bool invert) override { glSampleCoverage(value, invert ? GL_TRUE : GL_FALSE); }
   void FramebufferRenderbuffer(Enum target, Enum attachment, std::uint32_t renderbuffer) override {
     glFramebufferRenderbuffer(target, attachment, GL_RENDERBUFFER, renderbuffer);

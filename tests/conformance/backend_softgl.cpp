@@ -422,6 +422,7 @@ class SoftglBackend final : public Backend {
     gl_.RenderbufferStorageMultisample(softgl::RENDERBUFFER, samples, internal_format, width, height);
   }
   void SampleMask(std::uint32_t mask) override { gl_.SampleMaski(0, mask); }
+  void MinSampleShading(float value) override { gl_.MinSampleShading(value); }
   void SampleCoverage(float value, bool invert) override { gl_.SampleCoverage(value, invert); }
   void FramebufferRenderbuffer(Enum target, Enum attachment, std::uint32_t renderbuffer) override {
     gl_.FramebufferRenderbuffer(target, attachment, softgl::RENDERBUFFER, renderbuffer);

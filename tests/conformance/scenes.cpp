@@ -1124,6 +1124,38 @@ void MultisampleLinesPoints(Backend& b) {
   });
 }
 
+// Sample shading: a magnified checkerboard (NEAREST) on rotated quads drawn into a 4-sample framebuffer object with
+// SAMPLE_SHADING and MinSampleShading(1) (bottom half) and without (top half), each resolved. At every sample the
+// texel edges inside a pixel resolve to a share of the two texels' colours; shaded once per pixel, to one of them.
+void MultisampleSampleShading(Backend& b) {
+  ClearBlack(b);
+  TextureDesc d = PatternTexture(false);
+  d.levels.resize(1);
+  d.min_filter = d.mag_filter = NEAREST;
+  b.SetTexture(d);
+  const std::uint32_t fbo = MultisampleTarget(b);
+  for (int half = 0; half < 2; ++half) {
+    b.ClearColor(0.1f, 0.2f, 0.3f, 1);
+    b.Clear(COLOR_BUFFER_BIT | DEPTH_BUFFER_BIT);
+    if (half == 0) {
+      b.Enable(SAMPLE_SHADING);
+      b.MinSampleShading(1.0f);
+    }
+    for (int i = 0; i < 2; ++i) {  // two quads turned by 20 and 65 degrees, about 6 pixels a texel
+      const float a = (i == 0 ? 20.0f : 65.0f) * 3.14159265f / 180.0f, c = std::cos(a) * 15.0f, s = std::sin(a) * 15.0f;
+      const float cx = i == 0 ? 17.3f : 46.6f, cy = i == 0 ? 31.1f : 32.7f;
+      const std::vector<Vertex> v = QuadWith({Win(2 * (cx - c + s), 2 * (cy - s - c)), Win(2 * (cx + c + s), 2 * (cy + s - c)),
+                                              Win(2 * (cx + c - s), 2 * (cy + s + c)), Win(2 * (cx - c - s), 2 * (cy - s + c))},
+                                             Uv({0.0f, 0.0f}, {0.3f, 0.0f}, {0.3f, 0.3f}, {0.0f, 0.3f}));
+      b.Draw(TRIANGLES, v, Program::kTexture);
+    }
+    b.Disable(SAMPLE_SHADING);
+    b.MinSampleShading(0.0f);
+    ResolveInto(b, fbo, 0, half * 64);
+  }
+  EndMultisample(b);
+}
+
 // A resolved scene: depth-tested triangles crossing each other (depth per sample), a stencil mask drawn at
 // samples, and blended triangles over them, in a 4-sample framebuffer object resolved into the bottom half;
 // the top half has the same with MULTISAMPLE disabled (each pixel's centre coverage into all its samples).
@@ -1515,6 +1547,7 @@ const std::vector<SceneInfo>& Scenes() {
       {"blit_linear", kSize, kSize, Check::kColor, BlitLinear},
       {"msaa_coverage", kSize, kSize, Check::kColor, MultisampleCoverage},
       {"msaa_lines_points", kSize, kSize, Check::kColor, MultisampleLinesPoints},
+      {"msaa_sample_shading", kSize, kSize, Check::kTexture, MultisampleSampleShading},
       {"msaa_resolve", kSize, kSize, Check::kColor, MultisampleResolve},
       {"msaa_coverage_ops", kSize, kSize, Check::kColor, MultisampleCoverageOps},
       {"msaa_texture", kSize, kSize, Check::kExact, MultisampleTexture},

@@ -45,7 +45,8 @@ using namespace softgl;
 constexpr std::uint32_t kCaps[] = {CULL_FACE, DEPTH_TEST, STENCIL_TEST, SCISSOR_TEST, BLEND, POLYGON_OFFSET_FILL,
                                    POLYGON_OFFSET_LINE, POLYGON_OFFSET_POINT, PROGRAM_POINT_SIZE,
                                    PRIMITIVE_RESTART, PRIMITIVE_RESTART_FIXED_INDEX, MULTISAMPLE,
-                                   SAMPLE_ALPHA_TO_COVERAGE, SAMPLE_ALPHA_TO_ONE, SAMPLE_COVERAGE, SAMPLE_MASK};
+                                   SAMPLE_ALPHA_TO_COVERAGE, SAMPLE_ALPHA_TO_ONE, SAMPLE_COVERAGE, SAMPLE_MASK,
+                                   SAMPLE_SHADING};
 constexpr std::uint32_t kModes[] = {POINTS, LINES, LINE_LOOP, LINE_STRIP, TRIANGLES, TRIANGLE_STRIP, TRIANGLE_FAN};
 constexpr std::uint32_t kTypes[] = {BYTE, UNSIGNED_BYTE, SHORT, UNSIGNED_SHORT, INT, UNSIGNED_INT, FLOAT};
 constexpr std::uint32_t kIndexTypes[] = {UNSIGNED_BYTE, UNSIGNED_SHORT, UNSIGNED_INT};
@@ -327,6 +328,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                                                 in.Amount(-1, 16, 64, kMaxFramebufferSize));
             if (in.Byte() % 4 == 0) gl.SampleCoverage(in.Float(), in.Byte() % 2);
             if (in.Byte() % 4 == 0) gl.SampleMaski(std::uint32_t(in.Int(0, 1)), in.Get<std::uint32_t>());
+            if (in.Byte() % 4 == 0) gl.MinSampleShading(in.Float());
             break;
           case 3: gl.FramebufferRenderbuffer(in.Enum(kFbTargets), in.Enum(kAttachments), RENDERBUFFER, id()); break;
           case 4: gl.DeleteRenderbuffer(id()); break;
