@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <initializer_list>
 #include <random>
 #include <vector>
 
@@ -516,6 +517,20 @@ TEST_CASE("multisample: renderbuffers, completeness, blits and reads follow Open
 
 namespace {
 
+// Triangles at window positions p (of a 16 x 16 window) drawn with `shader`, each vertex's window position its
+// attribute 1.
+template <class S>
+void DrawWithWindowPositions(Context& gl, S& shader, std::initializer_list<glm::vec2> p) {
+  std::vector<glm::vec4> pos, value;
+  for (const glm::vec2& v : p) {
+    pos.push_back(WindowToClip(v.x, v.y, 16, 16));
+    value.push_back(glm::vec4(v, 0, 1));
+  }
+  MakeVertexArray(gl, pos, value);
+  gl.UseProgram(shader);
+  gl.DrawArrays(TRIANGLES, 0, int(p.size()));
+}
+
 struct CentroidVaryings {
   softgl::Centroid<glm::vec4> at_sample;
   glm::vec4 at_centre;
@@ -549,15 +564,7 @@ TEST_CASE("multisample: Centroid<> varyings are taken at the first covered sampl
     Context gl(16, 16, Samples(samples));
     CentroidShader shader;
     // A triangle whose right edge is x = 8.3 (w = 1: the window position interpolates linearly).
-    const glm::vec2 p[3] = {{-10, -10}, {8.3f, -10}, {8.3f, 40}};
-    std::vector<glm::vec4> pos, value;
-    for (const glm::vec2& v : p) {
-      pos.push_back(WindowToClip(v.x, v.y, 16, 16));
-      value.push_back(glm::vec4(v, 0, 1));
-    }
-    MakeVertexArray(gl, pos, value);
-    gl.UseProgram(shader);
-    gl.DrawArrays(TRIANGLES, 0, 3);
+    DrawWithWindowPositions(gl, shader, {{-10, -10}, {8.3f, -10}, {8.3f, 40}});
     gl.Finish();
     const auto* positions = detail::SamplePositions(samples);
     for (const auto& [pixel, values] : *shader.seen) {
@@ -748,15 +755,7 @@ std::array<int, 3> StepRow(Context& gl) {
   gl.ClearColor(0, 0, 0, 1);
   gl.Clear(COLOR_BUFFER_BIT);
   StepShader shader;
-  const glm::vec2 p[6] = {{0, 0}, {16, 0}, {16, 16}, {0, 0}, {16, 16}, {0, 16}};
-  std::vector<glm::vec4> pos, value;
-  for (const glm::vec2& v : p) {
-    pos.push_back(WindowToClip(v.x, v.y, 16, 16));
-    value.push_back(glm::vec4(v, 0, 1));
-  }
-  MakeVertexArray(gl, pos, value);
-  gl.UseProgram(shader);
-  gl.DrawArrays(TRIANGLES, 0, 6);
+  DrawWithWindowPositions(gl, shader, {{0, 0}, {16, 0}, {16, 16}, {0, 0}, {16, 16}, {0, 16}});
   return {Red(gl, 7, 4), Red(gl, 8, 4), Red(gl, 9, 4)};
 }
 
