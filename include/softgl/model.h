@@ -104,7 +104,9 @@ class MaterialProgram {
 /// moment (its allocator, unlike glibc's, leaves a lock held in the child).
 struct LoadOptions {
   double timeout_seconds = 0.0;    ///< the most wall-clock time the import may take; 0: no limit
-  std::size_t memory_budget = 0;   ///< the most memory (bytes of address space) it may add; 0: no limit
+  /// The most memory it may add, in bytes: new address space, and resident memory (memory the process had freed
+  /// counts when the import uses it again); 0: no limit.
+  std::size_t memory_budget = 0;
 };
 
 class Model {

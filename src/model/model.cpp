@@ -2,6 +2,10 @@
 #include <softgl/model.h>
 
 #if defined(__unix__)
+#include <fcntl.h>
+#if defined(__linux__)
+#include <malloc.h>
+#endif
 #include <signal.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
@@ -13,6 +17,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -351,21 +356,51 @@ const aiScene* Import(Assimp::Importer& importer, const std::string& path, std::
   return scene;
 }
 
+#if defined(__unix__)
+// The resident memory of the process whose statm file is `statm` that no file backs (resident less shared pages:
+// what allocations take, not the code it runs); 0 if unreadable.
+std::int64_t ResidentBytes(const std::string& statm) {
+  std::int64_t size = 0, resident = 0, shared = 0;
+  if (std::ifstream f(statm); !(f >> size >> resident >> shared)) return 0;
+  return (resident - shared) * std::int64_t(sysconf(_SC_PAGESIZE));
+}
+#endif
+
 // The import of `path` tried in a child process within the limits. Empty when it finished there (read or
 // refused: the calling process then imports the file itself), else why it was stopped.
 std::string TryImport(const std::string& path, const LoadOptions& options) {
 #if defined(__unix__)
   constexpr int kOutOfMemory = 3;
+  int report[2] = {-1, -1};  // the child's resident memory before the import, child to parent
+  if (options.memory_budget > 0) {
+    if (pipe(report) != 0) return "cannot start the import process";
+    fcntl(report[0], F_SETFD, FD_CLOEXEC);  // (not inherited by programs the caller starts meanwhile)
+    fcntl(report[1], F_SETFD, FD_CLOEXEC);
+  }
+  const std::string budget = std::to_string(options.memory_budget >> 20) + " MiB";
   const pid_t child = fork();
-  if (child < 0) return "cannot start the import process";
+  if (child < 0) {
+    if (report[0] >= 0) close(report[0]), close(report[1]);
+    return "cannot start the import process";
+  }
   if (child == 0) {
     // The child: the import alone, then _exit (no exit handlers of the parent's run in it).
     if (options.memory_budget > 0) {
+      // The budget limits the address space the import adds (here) and the memory it makes resident (the parent
+      // watches that). Memory the process freed before stays in its allocator's heaps, reserved address space
+      // the import can grow into without adding any: it is handed back first, so that using it again shows.
+#if defined(__GLIBC__)
+      malloc_trim(0);
+#endif
       long pages = 0;
       if (std::ifstream statm("/proc/self/statm"); !(statm >> pages)) pages = 0;
       const rlim_t now = rlim_t(pages) * rlim_t(sysconf(_SC_PAGESIZE));
       const rlimit limit{now + options.memory_budget, now + options.memory_budget};
       setrlimit(RLIMIT_AS, &limit);
+      const std::int64_t resident = ResidentBytes("/proc/self/statm");
+      close(report[0]);
+      if (write(report[1], &resident, sizeof resident) != ssize_t(sizeof resident)) _exit(kOutOfMemory);
+      close(report[1]);
     }
     int status = 0;
     try {
@@ -378,7 +413,19 @@ std::string TryImport(const std::string& path, const LoadOptions& options) {
     }
     _exit(status);
   }
-  // The parent: waits for the child until the deadline, polling with growing pauses of at most 10 ms.
+  // The parent: waits for the child until the deadline, polling with growing pauses of at most 10 ms, and stops
+  // it once its resident memory exceeds what it had before the import by the budget.
+  std::int64_t resident_limit = 0;
+  if (options.memory_budget > 0) {
+    close(report[1]);
+    std::int64_t before = 0;
+    ssize_t got = 0;
+    while ((got = read(report[0], &before, sizeof before)) < 0 && errno == EINTR) {
+    }
+    close(report[0]);
+    if (got == ssize_t(sizeof before) && before > 0) resident_limit = before + std::int64_t(options.memory_budget);
+  }
+  const std::string child_statm = "/proc/" + std::to_string(child) + "/statm";
   using Clock = std::chrono::steady_clock;
   const auto deadline = Clock::now() + std::chrono::duration<double>(options.timeout_seconds);
   auto pause = std::chrono::microseconds(50);
@@ -387,6 +434,12 @@ std::string TryImport(const std::string& path, const LoadOptions& options) {
     const pid_t done = waitpid(child, &status, WNOHANG);
     if (done == child) break;
     if (done < 0 && errno != EINTR) return "lost the import process";
+    if (resident_limit > 0 && ResidentBytes(child_statm) > resident_limit) {
+      kill(child, SIGKILL);
+      while (waitpid(child, &status, 0) < 0 && errno == EINTR) {
+      }
+      return "import stopped: it needed more than the memory budget of " + budget;
+    }
     if (options.timeout_seconds > 0.0 && Clock::now() >= deadline) {
       kill(child, SIGKILL);
       while (waitpid(child, &status, 0) < 0 && errno == EINTR) {
@@ -399,7 +452,6 @@ std::string TryImport(const std::string& path, const LoadOptions& options) {
     pause = std::min(pause * 2, std::chrono::microseconds(10000));
   }
   if (WIFEXITED(status) && WEXITSTATUS(status) == 0) return {};
-  const std::string budget = std::to_string(options.memory_budget >> 20) + " MiB";
   if (WIFEXITED(status) && WEXITSTATUS(status) == kOutOfMemory)
     return "import stopped: it needed more than the memory budget of " + budget;
   if (WIFSIGNALED(status))
