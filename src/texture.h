@@ -192,7 +192,7 @@ struct TextureView {
   int q = 0;           // the last level mipmapped filtering may use
   TexelLayout layout = TexelLayout::kNone;
   bool srgb = false;   // an sRGB format: colours decoded before filtering
-  float anisotropy = 1.0f;  // TEXTURE_MAX_ANISOTROPY cut to kMaxAnisotropy; above 1 the 2D samples are anisotropic
+  float anisotropy = 1.0f;  // TEXTURE_MAX_ANISOTROPY cut to kMaxAnisotropy; above 1 2D, array and cube samples are anisotropic
   float scale = 1.0f;  // StorageScale(layout)
   glm::vec4 border_raw{0.0f};  // the border colour in storage units
   // The common case, which sampling takes without re-deciding per sample: a 2D colour texture with REPEAT in s

@@ -544,10 +544,12 @@ SampleRepeatLanesFn SampleRepeatLanesFor(const TextureView& view) {
 // describes it): the footprint's longer axis Pmax and shorter Pmin (texel-space lengths of the two derivatives)
 // give N = min(ceil(Pmax / Pmin), the anisotropy) probes; each is an ordinary sample at lambda = log2(Pmax / N)
 // (the piecewise log2 of Lambda), placed at uv + (i / (N + 1) - 1/2) times the longer derivative, i = 1 .. N, and
-// their mean is the result. N = 1 is the isotropic sample.
+// their mean is the result. N = 1 is the isotropic sample. A cube map's probes lie on the face the direction chose,
+// uv and the derivatives measured on it (probes past its edges wrap by the wrap modes on that face, as its samples
+// do).
 glm::vec4 SampleAnisotropic(const TextureView& view, glm::vec2 uv, glm::vec2 dx, glm::vec2 dy, float shader_bias,
-                            int layer = 0) {
-  const TextureLevel& base = view.texture->levels[0][view.base];
+                            int layer = 0, int face = 0) {
+  const TextureLevel& base = view.texture->levels[face][view.base];
   const glm::vec2 size(float(base.width), float(base.height));
   const glm::vec2 tx = dx * size, ty = dy * size;
   const float px2 = glm::dot(tx, tx), py2 = glm::dot(ty, ty);
@@ -556,10 +558,10 @@ glm::vec4 SampleAnisotropic(const TextureView& view, glm::vec2 uv, glm::vec2 dx,
   const float ratio = min2 > 0.0f ? std::sqrt(max2 / min2) : view.anisotropy;  // NaN: 1 below
   const int n = ratio > 1.0f ? int(std::min(std::ceil(ratio), view.anisotropy)) : 1;
   const float lambda = LambdaOfRho2(view, max2 / float(n * n), shader_bias);
-  if (n == 1) return SampleFace(view, 0, uv, lambda, DepthCompare{}, layer);
+  if (n == 1) return SampleFace(view, face, uv, lambda, DepthCompare{}, layer);
   glm::vec4 sum(0.0f);
   for (int i = 1; i <= n; ++i)
-    sum += SampleFace(view, 0, uv + major * (float(i) / float(n + 1) - 0.5f), lambda, DepthCompare{}, layer);
+    sum += SampleFace(view, face, uv + major * (float(i) / float(n + 1) - 0.5f), lambda, DepthCompare{}, layer);
   return sum / float(n);
 }
 
@@ -614,6 +616,7 @@ glm::vec4 Textures::SampleCube(int unit, glm::vec3 dir, glm::vec3 ddir_dx, glm::
   // neighbour may point at another face: its coordinates must still be measured on this one).
   const glm::vec2 dx = FaceCoords(face, dir + ddir_dx, st_x) ? st_x - st : glm::vec2(0.0f);
   const glm::vec2 dy = FaceCoords(face, dir + ddir_dy, st_y) ? st_y - st : glm::vec2(0.0f);
+  if (v->anisotropy > 1.0f && !v->depth) return SampleAnisotropic(*v, st, dx, dy, bias, 0, face) / v->scale;
   return SampleFace(*v, face, st, Lambda(*v, dx, dy, bias), DepthCompare{}) / v->scale;
 }
 

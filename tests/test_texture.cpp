@@ -1170,6 +1170,53 @@ TEST_CASE("anisotropic filtering: N probes along the footprint's longer axis, at
   CHECK(v == 16.0f);
 }
 
+TEST_CASE("anisotropic filtering of a cube map: the probes on the chosen face, as a 2D texture's", "[texture][anisotropic]") {
+  // The +x face holds the 2D texture's texels, the other faces others; both mipmapped, anisotropy 16.
+  auto texel = [](int i, int j) {
+    return glm::vec4(float((i * 7 + j * 3) % 11) / 10.0f, float((i + 2 * j) % 5) / 4.0f, float(i % 3), 1.0f);
+  };
+  TextureObject flat = MakeTexture(64, 64, texel);
+  TextureObject cube;
+  cube.target = TEXTURE_CUBE_MAP;
+  for (int f = 0; f < 6; ++f) {
+    cube.levels[f][0].Allocate(RGBA32F, 64, 64);
+    for (int j = 0; j < 64; ++j)
+      for (int i = 0; i < 64; ++i)
+        detail::StoreTexel(cube.levels[f][0], i, j, f == 0 ? texel(i, j) : glm::vec4(float(f), 0.5f, 0.25f, 1.0f));
+  }
+  for (TextureObject* t : {&flat, &cube}) {
+    detail::GenerateMipmaps(*t);
+    t->params.min_filter = LINEAR_MIPMAP_LINEAR;
+    t->params.mag_filter = LINEAR;
+    t->params.wrap_s = t->params.wrap_t = CLAMP_TO_EDGE;
+    t->params.max_anisotropy = 16.0f;
+  }
+  Sampler s2d(flat);
+  TextureView cube_view = detail::MakeView(cube);
+  REQUIRE(cube_view.complete);
+  Textures tx;
+  tx.unit_cube[0] = &cube_view;
+  // On +x, s = (-z + 1) / 2 and t = (-y + 1) / 2 for x = 1: (s, t) and its derivatives as a direction and its.
+  auto dir = [](glm::vec2 st) { return glm::vec3(1.0f, 1.0f - 2.0f * st.y, 1.0f - 2.0f * st.x); };
+  auto ddir = [](glm::vec2 d) { return glm::vec3(0.0f, -2.0f * d.y, -2.0f * d.x); };
+  const glm::vec2 uv(0.37f, 0.61f);
+  const glm::vec2 footprints[3][2] = {{{8.0f / 64, 0}, {0, 1.0f / 64}},           // 8 : 1 along s
+                                      {{0.5f / 64, 0}, {0, 3.0f / 64}},           // 6 : 1 along t
+                                      {{2.0f / 64, 2.0f / 64}, {-1.0f / 64, 1.0f / 64}}};  // turned, 2 : 1
+  for (const auto& fp : footprints) {
+    const glm::vec4 want = s2d.textures.Sample(0, uv, fp[0], fp[1]);
+    const glm::vec4 got = tx.SampleCube(0, dir(uv), ddir(fp[0]), ddir(fp[1]));
+    for (int c = 0; c < 4; ++c) CHECK(got[c] == Approx(want[c]).margin(1e-4));
+  }
+  // An isotropic cube sample differs from the anisotropic one where the footprint is long.
+  cube.params.max_anisotropy = 1.0f;
+  TextureView iso = detail::MakeView(cube);
+  tx.unit_cube[0] = &iso;
+  const glm::vec4 blurred = tx.SampleCube(0, dir(uv), ddir(footprints[0][0]), ddir(footprints[0][1]));
+  tx.unit_cube[0] = &cube_view;
+  CHECK(blurred != tx.SampleCube(0, dir(uv), ddir(footprints[0][0]), ddir(footprints[0][1])));
+}
+
 TEST_CASE("16-bit normalized formats and the UNSIGNED_SHORT and HALF_FLOAT uploads", "[texture][packed]") {
   Context gl(4, 4);
   const std::uint32_t tex = gl.GenTexture();
