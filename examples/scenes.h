@@ -54,6 +54,11 @@ softgl::Image Srgb(int width, int height);
 /// so that the pixels show: staircase edges on the left, smoother with every doubling of the samples.
 softgl::Image Multisample(int width, int height);
 
+/// Sample shading: a lit sphere striped along its longitudes (a hard step in the fragment shader) with 4 samples a
+/// pixel, the shader run once per pixel (left) and once per sample with SAMPLE_SHADING and MinSampleShading(1)
+/// (right), magnified 2x: the silhouette is smooth in both, the stripes' edges only on the right.
+softgl::Image SampleShading(int width, int height);
+
 /// Colour formats for small memory: a lit torus in RGBA8 (4 bytes a pixel), RGB565, RGB5_A1 and RGBA4 (2 bytes
 /// a pixel), left to right, each with a DEPTH_COMPONENT16 depth buffer: the smooth shading keeps 256 steps a
 /// channel on the left, 32 or 64 in the middle panels, and shows bands of 16 on the right.

@@ -333,29 +333,28 @@ void SpokesScene(softgl::Context& gl, int width, int height) {
   gl.Disable(softgl::DEPTH_TEST);
 }
 
-}  // namespace
-
-softgl::Image Multisample(int width, int height) {
+// `panels` panels side by side, each rendered by draw(p, w, h) at half the panel's size into a framebuffer object
+// of samples[p] samples a pixel (colour and depth renderbuffers), resolved into a single-sampled one by a blit,
+// then magnified 2x (NEAREST) into the panel, so that the pixels show.
+template <class Draw>
+softgl::Image MagnifiedPanels(int width, int height, int panels, const int* samples, Draw&& draw) {
   softgl::Context gl(width, height);
-  // Four panels, left to right 1, 2, 4 and 8 samples a pixel, each rendered at half the panel's size into a
-  // framebuffer object, resolved into a single-sampled one by a blit, then magnified 2x (NEAREST) into the panel.
-  const int panel = width / 4, w = panel / 2, h = height / 2;
+  const int panel = width / panels, w = panel / 2, h = height / 2;
   const std::uint32_t resolved = gl.GenFramebuffer(), resolved_color = gl.GenRenderbuffer();
   gl.BindRenderbuffer(softgl::RENDERBUFFER, resolved_color);
   gl.RenderbufferStorage(softgl::RENDERBUFFER, softgl::RGBA8, w, h);
   gl.BindFramebuffer(softgl::FRAMEBUFFER, resolved);
   gl.FramebufferRenderbuffer(softgl::FRAMEBUFFER, softgl::COLOR_ATTACHMENT0, softgl::RENDERBUFFER, resolved_color);
-  const int counts[4] = {0, 2, 4, 8};
-  for (int p = 0; p < 4; ++p) {
+  for (int p = 0; p < panels; ++p) {
     const std::uint32_t fbo = gl.GenFramebuffer(), color = gl.GenRenderbuffer(), depth = gl.GenRenderbuffer();
     gl.BindFramebuffer(softgl::FRAMEBUFFER, fbo);
     gl.BindRenderbuffer(softgl::RENDERBUFFER, color);
-    gl.RenderbufferStorageMultisample(softgl::RENDERBUFFER, counts[p], softgl::RGBA8, w, h);
+    gl.RenderbufferStorageMultisample(softgl::RENDERBUFFER, samples[p], softgl::RGBA8, w, h);
     gl.FramebufferRenderbuffer(softgl::FRAMEBUFFER, softgl::COLOR_ATTACHMENT0, softgl::RENDERBUFFER, color);
     gl.BindRenderbuffer(softgl::RENDERBUFFER, depth);
-    gl.RenderbufferStorageMultisample(softgl::RENDERBUFFER, counts[p], softgl::DEPTH_COMPONENT24, w, h);
+    gl.RenderbufferStorageMultisample(softgl::RENDERBUFFER, samples[p], softgl::DEPTH_COMPONENT24, w, h);
     gl.FramebufferRenderbuffer(softgl::FRAMEBUFFER, softgl::DEPTH_ATTACHMENT, softgl::RENDERBUFFER, depth);
-    SpokesScene(gl, w, h);
+    draw(gl, p, w, h);
     gl.BindFramebuffer(softgl::READ_FRAMEBUFFER, fbo);
     gl.BindFramebuffer(softgl::DRAW_FRAMEBUFFER, resolved);
     gl.BlitFramebuffer(0, 0, w, h, 0, 0, w, h, softgl::COLOR_BUFFER_BIT, softgl::NEAREST);  // the resolve
@@ -365,6 +364,61 @@ softgl::Image Multisample(int width, int height) {
   }
   gl.BindFramebuffer(softgl::FRAMEBUFFER, 0);
   return gl.ReadPixels();
+}
+
+struct StripesVaryings {
+  vec3 normal;
+  vec2 uv;
+};
+
+// A lit sphere striped along its longitudes: a hard edge (step) inside each triangle, which only shading at the
+// samples smooths.
+struct StripesShader : softgl::Shader<StripesShader, StripesVaryings> {
+  glm::mat4 mvp{1.0f}, model{1.0f};
+  void Vertex(const VertexLanes& in, VertexLanesOut<StripesVaryings>& out) const {
+    out.position = mvp * vec4(vec3(in.attrib[0]), 1.0f);
+    out.varyings.normal = glm::mat3(model) * vec3(in.attrib[1]);
+    out.varyings.uv = vec2(in.attrib[3]);
+  }
+  void Fragment(const FragmentLanes<StripesVaryings>& in, FragmentLanesOut& out) const {
+    const Float diffuse = max(dot(normalize(in.varyings.normal), normalize(vec3(0.4f, 0.7f, 0.6f))), 0.0f);
+    const Float stripe = step(0.5f, fract(in.varyings.uv.x * 18.0f));
+    const vec3 colour = mix(vec3(0.95f, 0.75f, 0.2f), vec3(0.15f, 0.2f, 0.45f), stripe);
+    out.color[0] = vec4(colour * (0.25f + 0.75f * diffuse), 1.0f);
+  }
+};
+
+}  // namespace
+
+softgl::Image Multisample(int width, int height) {
+  // Four panels, left to right 1, 2, 4 and 8 samples a pixel.
+  const int counts[4] = {0, 2, 4, 8};
+  return MagnifiedPanels(width, height, 4, counts, [](softgl::Context& gl, int, int w, int h) { SpokesScene(gl, w, h); });
+}
+
+softgl::Image SampleShading(int width, int height) {
+  // Two panels of 4 samples a pixel: the shader once per pixel (left), once per sample (right).
+  static const Mesh sphere = MakeSphere(24, 12, 1.0f);
+  const int counts[2] = {4, 4};
+  return MagnifiedPanels(width, height, 2, counts, [](softgl::Context& gl, int p, int w, int h) {
+    gl.Viewport(0, 0, w, h);
+    gl.ClearColor(0.93f, 0.93f, 0.9f, 1.0f);
+    gl.Clear(softgl::COLOR_BUFFER_BIT | softgl::DEPTH_BUFFER_BIT);
+    gl.Enable(softgl::DEPTH_TEST);
+    if (p == 1) {
+      gl.Enable(softgl::SAMPLE_SHADING);
+      gl.MinSampleShading(1.0f);
+    }
+    StripesShader stripes;
+    stripes.model = glm::rotate(glm::rotate(kIdentity, 0.5f, glm::vec3(1, 0, 0)), 0.4f, glm::vec3(0, 0, 1));
+    stripes.mvp = Projection(w, h, 40.0f, 0.1f, 10.0f) *
+                  glm::lookAt(glm::vec3(0.0f, 0.0f, 3.4f), glm::vec3(0.0f), glm::vec3(0, 1, 0)) * stripes.model;
+    UploadLitMesh(gl, sphere);
+    gl.UseProgram(stripes);
+    DrawMesh(gl, sphere);
+    gl.Disable(softgl::SAMPLE_SHADING);
+    gl.Disable(softgl::DEPTH_TEST);
+  });
 }
 
 softgl::Image SmallFormats(int width, int height) {

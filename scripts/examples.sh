@@ -10,6 +10,6 @@ cmake --build build/release -j "$(nproc)"
 out="${1:-out}"
 mkdir -p "$out"
 for example in hello triangle cube wireframe clipped stencil_outline mirror transparency decals \
-    textured_cube srgb multisample small_formats shadow_map cascaded_shadows post_process environment_map instancing models; do
+    textured_cube srgb multisample sample_shading small_formats shadow_map cascaded_shadows post_process environment_map instancing models; do
   "build/release/examples/$example" "$out"
 done

@@ -81,6 +81,10 @@ TEST_CASE("image: multisample", "[image][multisample]") {
   CompareWithGolden("multisample", scenes::Multisample(640, 320));
 }
 
+TEST_CASE("image: sample shading", "[image][multisample]") {
+  CompareWithGolden("sample_shading", scenes::SampleShading(480, 240));
+}
+
 TEST_CASE("image: shadow map", "[image]") { CompareWithGolden("shadow_map", scenes::ShadowMap(640, 480)); }
 
 TEST_CASE("image: small formats", "[image][packed]") {
