@@ -321,7 +321,7 @@ void Context::Clear(Bitfield mask) {
   auto& s = *state_;
   if (mask & ~(COLOR_BUFFER_BIT | DEPTH_BUFFER_BIT | STENCIL_BUFFER_BIT)) return s.SetError(INVALID_VALUE, __func__, "mask has bits other than COLOR_, DEPTH_ and STENCIL_BUFFER_BIT");
   detail::RenderTarget target;
-  if (!s.DrawTarget(target)) return;
+  if (!s.DrawTarget(target, true)) return;
   const detail::Rect area = s.ClearArea(target);
   if (area.Empty()) return;
   detail::ClearPacket clear;

@@ -29,7 +29,7 @@ void ContextState::Draw(const detail::DrawCall& call) {
   }
 
   detail::RenderTarget target;
-  if (!DrawTarget(target)) return;
+  if (!DrawTarget(target, true)) return;
 
   // The fragment stage's state, captured now: the shader's uniforms (a copy), the textures of every unit resolved
   // once, the per-fragment operations.

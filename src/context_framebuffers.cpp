@@ -96,10 +96,13 @@ namespace {
 // FRAMEBUFFER_SRGB is enabled); ReadPixels and the copies return the stored values. A multisampled context
 // framebuffer reads as its resolved image (brought up to date once the recorded commands are rendered), unless
 // `samples` asks for the samples themselves (BlitFramebuffer); a multisampled framebuffer object reads as its
-// samples.
-detail::RenderTarget ReadTarget(ContextState& s, bool srgb = false, bool samples = false) {
+// samples. `buffers` (detail::kColorBit, ...): the buffers the caller reads, the only ones a resolve brings up to
+// date.
+detail::RenderTarget ReadTarget(ContextState& s, bool srgb = false, bool samples = false,
+                               unsigned buffers = detail::kAllBuffers) {
   if (!s.read_fbo) {
-    detail::RenderTarget t = s.fb.samples > 1 && s.frame.Empty() && !samples ? s.fb.ReadTarget(srgb) : s.fb.Target(srgb);
+    detail::RenderTarget t =
+        s.fb.samples > 1 && s.frame.Empty() && !samples ? s.fb.ReadTarget(srgb, buffers) : s.fb.Target(srgb);
     if (s.default_read_buffer == NONE) t.color[0] = detail::ColorBuffer{};
     return t;
   }
@@ -119,7 +122,7 @@ int ReadFboSamples(ContextState& s) {
 
 Image Context::ReadPixels() const {
   state_->Sync(__func__);
-  const detail::RenderTarget t = ReadTarget(*state_);
+  const detail::RenderTarget t = ReadTarget(*state_, false, false, detail::kColorBit);
   Image image;
   if (!t.color[0].Present() || t.width <= 0 || t.height <= 0) return image;
   image.width = t.width;
@@ -136,7 +139,7 @@ Image Context::ReadPixels() const {
 
 void Context::ReadPixel(int x, int y, std::uint8_t rgba[4]) const {
   state_->Sync(__func__);
-  const detail::RenderTarget t = ReadTarget(*state_);
+  const detail::RenderTarget t = ReadTarget(*state_, false, false, detail::kColorBit);
   std::memset(rgba, 0, 4);
   if (!t.color[0].Present() || x < 0 || y < 0 || x >= t.width || y >= t.height) return;
   const glm::vec4 c = detail::LoadResolved(t.color[0], t.samples, x, y);
@@ -413,14 +416,14 @@ void Context::CopyTexImage2D(Enum target, int level, Enum internal_format, int x
 
 float Context::ReadDepth(int x, int y) const {
   state_->Sync(__func__);
-  const detail::RenderTarget t = ReadTarget(*state_);
+  const detail::RenderTarget t = ReadTarget(*state_, false, false, detail::kDepthBit);
   if (!t.HasDepth() || x < 0 || y < 0 || x >= t.width || y >= t.height) return 0.0f;
   return t.DepthAt(x, y);
 }
 
 std::uint8_t Context::ReadStencil(int x, int y) const {
   state_->Sync(__func__);
-  const detail::RenderTarget t = ReadTarget(*state_);
+  const detail::RenderTarget t = ReadTarget(*state_, false, false, detail::kStencilBit);
   if (!t.stencil || x < 0 || y < 0 || x >= t.width || y >= t.height) return 0;
   return t.Stencil(x, y);
 }

@@ -235,11 +235,12 @@ struct ContextState {
   }
 
   // What drawing writes to: the context's framebuffer or the bound framebuffer object. False (with
-  // INVALID_FRAMEBUFFER_OPERATION recorded) when that object is incomplete.
-  bool DrawTarget(detail::RenderTarget& target) {
+  // INVALID_FRAMEBUFFER_OPERATION recorded) when that object is incomplete. `frame`: for commands recorded into
+  // the frame (draws and clears), which may leave the context's multisampled framebuffer's clears deferred.
+  // Anything else that writes it gets its samples with every clear stored.
+  bool DrawTarget(detail::RenderTarget& target, bool frame = false) {
     if (!draw_fbo) {
-      target = fb.Target(framebuffer_srgb);
-      fb.resolve_pending = fb.samples > 1;  // what is drawn now changes the resolved image
+      target = frame ? fb.FrameTarget(framebuffer_srgb) : fb.Target(framebuffer_srgb);
       return true;
     }
     if (FramebufferStatus(*draw_fbo) != FRAMEBUFFER_COMPLETE) {

@@ -303,7 +303,7 @@ bool Framebuffer::Allocate(int w, int h) {
   depth.clear();
   stencil.clear();
   resolved = {};
-  resolve_pending = false;
+  sample_tiles.Reset(0, 0);
   const std::size_t n = std::size_t(w) * std::size_t(h), ns = n * std::size_t(samples);
   try {
     color.assign(ns * std::size_t(BytesPerTexel(layout)), 0);
@@ -326,10 +326,34 @@ bool Framebuffer::Allocate(int w, int h) {
   }
   width = w;
   height = h;
+  if (samples > 1) {
+    sample_tiles.Reset(w, h);
+    RenderTarget& out = sample_tiles.resolved;
+    out = Samples(false).Sample(0);
+    out.color[0].data = resolved.color.data();
+    if (depth16) out.depth16 = resolved.depth16_data.data();
+    else out.depth = resolved.depth.data();
+    out.stencil = resolved.stencil.data();
+  }
   return true;
 }
 
 RenderTarget Framebuffer::Target(bool srgb_enabled) {
+  const RenderTarget t = Samples(srgb_enabled);
+  for (std::size_t i = 0; i < sample_tiles.tiles.size(); ++i) {
+    sample_tiles.Store(t, int(i), kAllBuffers);
+    sample_tiles.tiles[i].stale = kAllBuffers;
+  }
+  return t;
+}
+
+RenderTarget Framebuffer::FrameTarget(bool srgb_enabled) {
+  RenderTarget t = Samples(srgb_enabled);
+  if (samples > 1 && !sample_tiles.tiles.empty()) t.tiles = &sample_tiles;
+  return t;
+}
+
+RenderTarget Framebuffer::Samples(bool srgb_enabled) {
   RenderTarget t;
   t.width = width;
   t.height = height;
@@ -349,26 +373,100 @@ RenderTarget Framebuffer::Target(bool srgb_enabled) {
   return t;
 }
 
-RenderTarget Framebuffer::ReadTarget(bool srgb_enabled) {
-  RenderTarget t = Target(srgb_enabled);
+RenderTarget Framebuffer::ReadTarget(bool srgb_enabled, unsigned buffers) {
+  const RenderTarget t = Samples(srgb_enabled);
   if (samples <= 1 || width <= 0 || height <= 0) return t;
-  RenderTarget out = t.Sample(0);
-  out.color[0].data = resolved.color.data();
-  if (depth16) out.depth16 = resolved.depth16_data.data();
-  else out.depth = resolved.depth.data();
-  out.stencil = resolved.stencil.data();
-  if (resolve_pending) {
-    BlitRegion all;
-    all.src[2] = all.dst[2] = width;
-    all.src[3] = all.dst[3] = height;
-    all.clip = Rect{0, 0, width, height};
-    all.color = all.depth = all.stencil = true;
-    RenderTarget raw = t, into = out;
-    raw.color[0].srgb = into.color[0].srgb = false;  // the bytes averaged as stored
-    Blit(raw, into, all);
-    resolve_pending = false;
-  }
+  for (std::size_t i = 0; i < sample_tiles.tiles.size(); ++i) sample_tiles.Resolve(t, int(i), buffers);
+  RenderTarget out = sample_tiles.resolved;
+  out.color[0].srgb = t.color[0].srgb;
   return out;
+}
+
+namespace {
+
+// Every sample of rectangle r of colour buffer cb (`samples` planes) set to one texel's bytes.
+void FillTexels(const ColorBuffer& cb, int samples, const Rect& r, const std::uint8_t* texel) {
+  const std::size_t bytes = std::size_t(cb.Bytes());
+  std::uint8_t run[16 * 16];  // 16 texels of at most 16 bytes
+  for (int k = 0; k < 16; ++k) std::memcpy(run + std::size_t(k) * bytes, texel, bytes);
+  const int width = r.x1 - r.x0;
+  for (int s = 0; s < samples; ++s)
+    for (int y = r.y0; y < r.y1; ++y) {
+      std::uint8_t* row = cb.At(r.x0, y) + cb.plane * std::size_t(s) * bytes;
+      int x = 0;
+      for (; x + 16 <= width; x += 16) std::memcpy(row + std::size_t(x) * bytes, run, 16 * bytes);
+      std::memcpy(row + std::size_t(x) * bytes, run, std::size_t(width - x) * bytes);
+    }
+}
+
+}  // namespace
+
+void SampleTiles::Reset(int width, int height) {
+  cols = (std::max(width, 0) + kSize - 1) / kSize;
+  rows = (std::max(height, 0) + kSize - 1) / kSize;
+  tiles.assign(std::size_t(cols) * std::size_t(rows), Tile{});
+  resolved = RenderTarget{};
+}
+
+Rect SampleTiles::TileRect(int t, int width, int height) const {
+  const int tx = t % cols, ty = t / cols;
+  return Rect{tx * kSize, ty * kSize, std::min((tx + 1) * kSize, width), std::min((ty + 1) * kSize, height)};
+}
+
+void SampleTiles::NoteColor(const RenderTarget& target, int t, const glm::vec4& value) {
+  Tile& tile = tiles[std::size_t(t)];
+  ColorBuffer texel = target.color[0];  // one texel, stored as the buffer stores it
+  texel.data = tile.color;
+  texel.pitch = 1;
+  const bool all[4] = {true, true, true, true};
+  texel.Store(0, 0, value, all);
+  tile.cleared |= kColorBit;
+}
+
+void SampleTiles::NoteDepth(int t, float value) {
+  tiles[std::size_t(t)].depth = value;
+  tiles[std::size_t(t)].cleared |= kDepthBit;
+}
+
+void SampleTiles::NoteStencil(int t, std::uint8_t value) {
+  tiles[std::size_t(t)].stencil = value;
+  tiles[std::size_t(t)].cleared |= kStencilBit;
+}
+
+void SampleTiles::Store(const RenderTarget& target, int t, unsigned buffers) {
+  Tile& tile = tiles[std::size_t(t)];
+  const unsigned store = tile.cleared & buffers;
+  if (!store) return;
+  const Rect r = TileRect(t, target.width, target.height);
+  if ((store & kColorBit) && target.color[0].Present()) FillTexels(target.color[0], target.samples, r, tile.color);
+  if (store & kDepthBit) target.ClearDepth(r, tile.depth);
+  if (store & kStencilBit) target.ClearStencil(r, tile.stencil, 0xFF);
+  tile.cleared = std::uint8_t(tile.cleared & ~store);
+}
+
+void SampleTiles::Resolve(const RenderTarget& target, int t, unsigned buffers) {
+  Tile& tile = tiles[std::size_t(t)];
+  const unsigned todo = tile.stale & buffers;
+  if (!todo) return;
+  const Rect r = TileRect(t, target.width, target.height);
+  const unsigned filled = todo & tile.cleared, read = todo & ~tile.cleared;
+  if ((filled & kColorBit) && resolved.color[0].Present()) FillTexels(resolved.color[0], 1, r, tile.color);
+  if (filled & kDepthBit) resolved.ClearDepth(r, tile.depth);
+  if (filled & kStencilBit) resolved.ClearStencil(r, tile.stencil, 0xFF);
+  if (read) {
+    BlitRegion region;
+    region.src[2] = region.dst[2] = target.width;
+    region.src[3] = region.dst[3] = target.height;
+    region.clip = r;
+    region.color = (read & kColorBit) != 0;
+    region.depth = (read & kDepthBit) != 0;
+    region.stencil = (read & kStencilBit) != 0;
+    RenderTarget raw = target, into = resolved;
+    raw.tiles = nullptr;
+    raw.color[0].srgb = into.color[0].srgb = false;  // the bytes averaged as stored
+    Blit(raw, into, region);
+  }
+  tile.stale = std::uint8_t(tile.stale & ~todo);
 }
 
 }  // namespace softgl::detail

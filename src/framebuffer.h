@@ -44,10 +44,15 @@ struct ColorBuffer {
 /// 4 give 4, 5 to 8 give 8 (the smallest supported count not below the request, as OpenGL requires).
 int SupportedSamples(int requested);
 
+struct SampleTiles;
+
 /// The buffers drawing writes to; color[i] receives fragment output i (draw buffers already applied).
 /// A multisampled target keeps each buffer as `samples` planes of width x height, one per sample, one after
 /// another; Sample(s) is the single-sampled view of plane s.
 struct RenderTarget {
+  // The context's multisampled framebuffer as the tile renderer draws into it: its tiles' deferred clears and
+  // resolve state (see SampleTiles). Null for every other target, and for every other user of this one.
+  SampleTiles* tiles = nullptr;
   int width = 0, height = 0;
   int samples = 1;                  // 1, 2, 4 or 8
   std::size_t depth_plane = 0;      // depth values from one sample's plane to the next
@@ -93,6 +98,50 @@ struct RenderTarget {
   void ClearStencil(const Rect& r, std::uint8_t value, std::uint8_t write_mask) const;
 };
 
+/// Buffer bits for SampleTiles.
+inline constexpr unsigned kColorBit = 1, kDepthBit = 2, kStencilBit = 4, kAllBuffers = 7;
+
+/// The context's multisampled framebuffer in the tile renderer's tiles (kSize squares, row by row from the
+/// bottom, as TileGrid lays them): what its samples and its resolved image hold, tile by tile.
+///
+/// A clear that covers a whole tile through every mask is only noted here (`cleared` and the value): the samples
+/// of that buffer keep what they held, and take the value when a primitive first reaches the tile (Store), or when
+/// anything but the tile renderer and the resolve asks for the samples (Framebuffer::Target stores every tile's).
+/// The resolve fills such a tile of the resolved image from the value without reading a sample. So the tiles that a
+/// frame clears but no primitive reaches cost neither the samples' clear nor the resolve's reads.
+///
+/// `stale` marks the buffers whose resolved image of the tile is out of date: the tile renderer sets them for each
+/// tile it renders, and resolves colour there at the end of the tile while its samples are in cache.
+/// Each tile's entry is touched by the one thread that renders the tile.
+struct SampleTiles {
+  static constexpr int kSize = 64;
+  struct Tile {
+    std::uint8_t cleared = 0;  // buffers (kColorBit, ...) whose samples all hold the value below, not yet stored
+    std::uint8_t stale = 0;    // buffers whose resolved image of this tile is out of date
+    std::uint8_t color[16] = {};  // the clear colour as the buffer stores a texel
+    float depth = 1.0f;
+    std::uint8_t stencil = 0;
+  };
+  int cols = 0, rows = 0;
+  std::vector<Tile> tiles;
+  RenderTarget resolved;  // the single-sampled image reads see (set by Framebuffer::FrameTarget)
+
+  /// Resets the grid for a width x height framebuffer: nothing deferred, nothing stale.
+  void Reset(int width, int height);
+  /// The pixels of tile t in a width x height target.
+  Rect TileRect(int t, int width, int height) const;
+  /// Notes a clear of tile t's colour (through every mask), depth or stencil to `value`, as the samples of
+  /// `target` (the framebuffer's) would store it.
+  void NoteColor(const RenderTarget& target, int t, const glm::vec4& value);
+  void NoteDepth(int t, float value);
+  void NoteStencil(int t, std::uint8_t value);
+  /// Writes the deferred clears of `buffers` in tile t into the samples of `target`.
+  void Store(const RenderTarget& target, int t, unsigned buffers);
+  /// Brings the resolved image of tile t up to date for the stale buffers among `buffers`, from the samples of
+  /// `target` (or the deferred clear's value).
+  void Resolve(const RenderTarget& target, int t, unsigned buffers);
+};
+
 /// The context's own framebuffer. With samples > 1 the buffers drawing writes hold `samples` planes, and
 /// `resolved` the single-sampled image reads see, made by Resolve.
 struct Framebuffer {
@@ -112,17 +161,24 @@ struct Framebuffer {
     std::vector<std::uint16_t> depth16_data;
     std::vector<std::uint8_t> stencil;
   } resolved;  // samples > 1: the image as read (colour the samples' average, depth and stencil sample 0's)
-  bool resolve_pending = false;  // drawing may have changed the samples since the last Resolve
+  SampleTiles sample_tiles;  // samples > 1: deferred clears and what of `resolved` is out of date
 
   /// Allocates width x height pixels of `samples` samples each (colour 0, depth 1, stencil 0). Returns false,
   /// leaving a 0 x 0 framebuffer, if the memory cannot be had.
   bool Allocate(int w, int h);
+  /// The buffers as they are: no deferred clear stored, nothing marked.
+  RenderTarget Samples(bool srgb_enabled);
   std::size_t Index(int x, int y) const { return std::size_t(y) * std::size_t(width) + std::size_t(x); }
   /// The buffers as a render target; `srgb_enabled`: FRAMEBUFFER_SRGB (an sRGB colour buffer then converts).
+  /// Multisampled, the samples hold every deferred clear (stored now), and the whole resolved image counts as out
+  /// of date, since the caller may write them.
   RenderTarget Target(bool srgb_enabled = false);
-  /// The single-sampled image reads take: Target itself when samples is 1, else `resolved`, brought up to date
-  /// first when resolve_pending.
-  RenderTarget ReadTarget(bool srgb_enabled = false);
+  /// The target the tile renderer draws into: Target without storing the deferred clears, carrying sample_tiles
+  /// (multisampled only; else Target).
+  RenderTarget FrameTarget(bool srgb_enabled = false);
+  /// The single-sampled image reads take: Target itself when samples is 1, else `resolved`, its stale tiles of
+  /// `buffers` (kColorBit, ...) brought up to date first.
+  RenderTarget ReadTarget(bool srgb_enabled = false, unsigned buffers = kAllBuffers);
 };
 
 /// Averages the samples of pixel (x, y) of a multisampled colour buffer (as Load reads them).

@@ -39,7 +39,7 @@ namespace {
 
 bool SameBuffers(const RenderTarget& a, const RenderTarget& b) {
   if (a.width != b.width || a.height != b.height || a.samples != b.samples || a.depth != b.depth || a.depth_pitch != b.depth_pitch ||
-      a.stencil != b.stencil || a.stencil_pitch != b.stencil_pitch)
+      a.stencil != b.stencil || a.stencil_pitch != b.stencil_pitch || a.depth16 != b.depth16 || a.tiles != b.tiles)
     return false;
   for (int i = 0; i < kMaxColorOutputs; ++i) {
     const ColorBuffer &x = a.color[i], &y = b.color[i];
@@ -372,6 +372,8 @@ void Frame::Reset() {
   bytes_ = 0;
 }
 
+static_assert(SampleTiles::kSize == kTileSize, "SampleTiles follows the tile renderer's grid");
+
 void Frame::RenderTile(int tile, TileScratch& scratch) const {
   const Rect rect = grid_.TileRect(tile);
   BlockBuffer& blocks = *scratch.blocks;
@@ -385,6 +387,12 @@ void Frame::RenderTile(int tile, TileScratch& scratch) const {
   const BinnedBatch* shared = nullptr;  // the shared batch `cursor` walks
   BinnedBatch::Cursor cursor;
   const std::vector<std::uint32_t>& list = tile_commands_[std::size_t(tile)];
+  if (list.empty()) return;
+  // The context's multisampled framebuffer: whole-tile clears deferred, stored when a primitive first reaches
+  // the tile; the tile's colour resolved at the end (SampleTiles).
+  SampleTiles* const lazy = target_.tiles;
+  SampleTiles::Tile* const lazy_tile = lazy ? &lazy->tiles[std::size_t(tile)] : nullptr;
+  if (lazy) lazy_tile->stale = kAllBuffers;
   for (std::size_t i = 0; i < list.size(); ++i) {
     const Command& c = commands_[list[i]];
     if (i + 2 < list.size()) {  // a tile's draws lie apart in draws_: fetch the next one's record early
@@ -398,9 +406,27 @@ void Frame::RenderTile(int tile, TileScratch& scratch) const {
       const ClearPacket& clear = clears_[c.index];
       const Rect r = Intersect(clear.area, rect);
       if (r.Empty()) continue;
-      if (clear.color) target_.ClearColor(r, clear.color_value, clear.color_mask);
-      if (clear.depth) target_.ClearDepth(r, clear.depth_value);
-      if (clear.stencil) target_.ClearStencil(r, clear.stencil_value, clear.stencil_mask);
+      bool color = clear.color, depth = clear.depth, stencil = clear.stencil;
+      if (lazy) {
+        if (r.x0 == rect.x0 && r.y0 == rect.y0 && r.x1 == rect.x1 && r.y1 == rect.y1) {  // the whole tile
+          const bool* m = clear.color_mask;
+          if (color && m[0] && m[1] && m[2] && m[3]) {
+            lazy->NoteColor(target_, tile, clear.color_value);
+            color = false;
+          }
+          if (depth) lazy->NoteDepth(tile, clear.depth_value);
+          if (stencil && clear.stencil_mask == 0xFF) {
+            lazy->NoteStencil(tile, clear.stencil_value);
+            stencil = false;
+          }
+          depth = false;
+        }
+        // A clear of part of the tile, or through a mask, changes what a deferred clear left.
+        lazy->Store(target_, tile, (color ? kColorBit : 0u) | (depth ? kDepthBit : 0u) | (stencil ? kStencilBit : 0u));
+      }
+      if (color) target_.ClearColor(r, clear.color_value, clear.color_mask);
+      if (depth) target_.ClearDepth(r, clear.depth_value);
+      if (stencil) target_.ClearStencil(r, clear.stencil_value, clear.stencil_mask);
       continue;
     }
     const DrawPacket& draw = draws_[c.index];
@@ -423,6 +449,7 @@ void Frame::RenderTile(int tile, TileScratch& scratch) const {
     blocks.samples = target_.samples;
     const auto rasterize = [&](const BinnedBatch& batch) {
       return [&](const BinnedPrimitive& p, const float* vertices) {
+        if (lazy && lazy_tile->cleared) lazy->Store(target_, tile, kAllBuffers);  // the first primitive here
         rt.depth_offset = p.depth_offset;
         if (p.kind == PrimitiveKind::kTriangle) {  // read in place
           RasterizeTriangle(batch.View(vertices, 0), batch.View(vertices, 1), batch.View(vertices, 2),
@@ -455,6 +482,7 @@ void Frame::RenderTile(int tile, TileScratch& scratch) const {
     }
     sink.Flush(blocks);
   }
+  if (lazy) lazy->Resolve(target_, tile, kColorBit);  // while the tile's samples are in cache
 }
 
 void Frame::Render(WorkerPool& pool, std::vector<TileScratch>& scratch) {

@@ -623,3 +623,46 @@ TEST_CASE("Options::depth_format DEPTH_COMPONENT16 gives the context's framebuff
   gl.Clear(DEPTH_BUFFER_BIT);
   CHECK(gl.ReadDepth(0, 0) == 1.0f);
 }
+
+TEST_CASE("SampleTiles: a deferred clear fills the resolve without its samples until stored", "[framebuffer][multisample]") {
+  detail::Framebuffer fb;
+  fb.samples = 4;
+  REQUIRE(fb.Allocate(100, 70));  // 2 x 2 tiles of 64
+  detail::SampleTiles& tiles = fb.sample_tiles;
+  REQUIRE(tiles.tiles.size() == 4);
+  CHECK(tiles.TileRect(3, 100, 70).x0 == 64);
+  CHECK(tiles.TileRect(3, 100, 70).y1 == 70);
+  const detail::RenderTarget t = fb.FrameTarget();
+  CHECK(t.tiles == &tiles);
+  CHECK(fb.Target().tiles == nullptr);
+  const std::size_t plane = 100 * 70;
+  auto sample_red = [&](int x, int y, int s) { return fb.color[(plane * std::size_t(s) + std::size_t(y * 100 + x)) * 4]; };
+
+  tiles.NoteColor(t, 3, glm::vec4(1, 0, 0, 1));
+  tiles.NoteDepth(3, 0.5f);
+  tiles.NoteStencil(3, 7);
+  tiles.tiles[3].stale = detail::kAllBuffers;
+  detail::RenderTarget read = fb.ReadTarget(false, detail::kColorBit);
+  CHECK(read.color[0].At(80, 66)[0] == 255);
+  CHECK(read.color[0].At(10, 10)[0] == 0);
+  CHECK(sample_red(80, 66, 3) == 0);  // the samples are not written
+  CHECK(tiles.tiles[3].stale == (detail::kDepthBit | detail::kStencilBit));
+  read = fb.ReadTarget();
+  CHECK(read.DepthAt(80, 66) == 0.5f);
+  CHECK(read.Stencil(80, 66) == 7);
+  CHECK(tiles.tiles[3].stale == 0);
+
+  tiles.Store(t, 3, detail::kColorBit);
+  for (int s = 0; s < 4; ++s) CHECK(sample_red(99, 69, s) == 255);
+  CHECK(sample_red(63, 69, 0) == 0);  // another tile
+  CHECK(tiles.tiles[3].cleared == (detail::kDepthBit | detail::kStencilBit));
+  CHECK(fb.depth[plane * 2 + std::size_t(66 * 100 + 80)] == 1.0f);
+  // Target stores every deferred clear, and takes the whole resolved image as out of date.
+  fb.Target();
+  CHECK(fb.depth[plane * 2 + std::size_t(66 * 100 + 80)] == 0.5f);
+  CHECK(fb.stencil[plane * 3 + std::size_t(66 * 100 + 80)] == 7);
+  for (const detail::SampleTiles::Tile& tile : tiles.tiles) {
+    CHECK(tile.cleared == 0);
+    CHECK(tile.stale == detail::kAllBuffers);
+  }
+}

@@ -793,3 +793,112 @@ TEST_CASE("multisample: SAMPLE_SHADING runs the shader at each sample once MinSa
   single.MinSampleShading(1.0f);
   CHECK(StepRow(single) == std::array<int, 3>{0, 255, 255});
 }
+
+namespace {
+
+std::array<int, 4> Pixel(const Image& image, int x, int y) {  // (x, y) with row 0 at the bottom
+  const std::uint8_t* p = image.rgba.data() + (std::size_t(image.height - 1 - y) * std::size_t(image.width) + x) * 4;
+  return {p[0], p[1], p[2], p[3]};
+}
+
+}  // namespace
+
+// The context's multisampled framebuffer defers a clear of a whole 64 x 64 tile until a primitive reaches the
+// tile or something else reads its samples (detail::SampleTiles). Whatever the path, the image is OpenGL's.
+TEST_CASE("multisample: deferred clears of the context's framebuffer read as cleared", "[multisample]") {
+  constexpr int kW = 150, kH = 100;  // 3 x 2 tiles, the last column and row partial
+  Context gl(kW, kH, Samples(4));
+  SolidShader shader;
+  shader.color = glm::vec4(1, 0, 0, 1);
+  gl.ClearColor(0, 0, 1, 1);
+  gl.Clear(COLOR_BUFFER_BIT | DEPTH_BUFFER_BIT | STENCIL_BUFFER_BIT);
+  // A triangle in the bottom-left tile only.
+  DrawWindowTriangle(gl, shader, {4, 4}, {40, 4}, {4, 40}, kW, kH);
+  Image image = gl.ReadPixels();
+  CHECK(Pixel(image, 10, 10) == std::array<int, 4>{255, 0, 0, 255});
+  CHECK(Pixel(image, 50, 50) == std::array<int, 4>{0, 0, 255, 255});    // the drawn tile's background
+  CHECK(Pixel(image, 100, 80) == std::array<int, 4>{0, 0, 255, 255});   // tiles no primitive reached
+  CHECK(Pixel(image, 149, 99) == std::array<int, 4>{0, 0, 255, 255});
+  CHECK(gl.ReadDepth(100, 80) == 1.0f);
+
+  SECTION("a clear with no draw after it, and one after a draw") {
+    gl.ClearColor(0, 1, 0, 1);
+    gl.Clear(COLOR_BUFFER_BIT);
+    image = gl.ReadPixels();
+    for (const auto& [x, y] : {std::pair{10, 10}, {50, 50}, {100, 80}, {149, 0}})
+      CHECK(Pixel(image, x, y) == std::array<int, 4>{0, 255, 0, 255});
+    // The triangle's edge pixel resolves from green, not from the red drawn before the clear.
+    DrawWindowTriangle(gl, shader, {-10, -10}, {20.5f, -10}, {20.5f, 120}, kW, kH);
+    image = gl.ReadPixels();
+    CHECK(std::abs(Pixel(image, 20, 60)[0] - 128) <= 1);
+    CHECK(std::abs(Pixel(image, 20, 60)[1] - 128) <= 1);
+    CHECK(Pixel(image, 21, 60) == std::array<int, 4>{0, 255, 0, 255});
+  }
+  SECTION("a scissored clear and a masked clear change part of a deferred one") {
+    gl.ClearColor(1, 1, 1, 1);
+    gl.Clear(COLOR_BUFFER_BIT);  // deferred in every tile
+    gl.Enable(SCISSOR_TEST);
+    gl.Scissor(60, 30, 20, 40);  // across the first two columns of tiles
+    gl.ClearColor(0, 0, 0, 1);
+    gl.Clear(COLOR_BUFFER_BIT);
+    gl.Disable(SCISSOR_TEST);
+    gl.ColorMask(false, true, false, false);
+    gl.ClearColor(0, 0.5f, 0, 0);
+    gl.Clear(COLOR_BUFFER_BIT);
+    gl.ColorMask(true, true, true, true);
+    image = gl.ReadPixels();
+    CHECK(Pixel(image, 59, 50) == std::array<int, 4>{255, 128, 255, 255});
+    CHECK(Pixel(image, 60, 50) == std::array<int, 4>{0, 128, 0, 255});
+    CHECK(Pixel(image, 79, 69) == std::array<int, 4>{0, 128, 0, 255});
+    CHECK(Pixel(image, 80, 69) == std::array<int, 4>{255, 128, 255, 255});
+    CHECK(Pixel(image, 140, 90) == std::array<int, 4>{255, 128, 255, 255});
+  }
+  SECTION("deferred depth and stencil are what the tests and the reads see") {
+    gl.ClearDepth(0.25);
+    gl.ClearStencil(0x35);
+    gl.Clear(DEPTH_BUFFER_BIT | STENCIL_BUFFER_BIT);
+    CHECK(gl.ReadDepth(100, 80) == 0.25f);
+    CHECK(gl.ReadStencil(100, 80) == 0x35);
+    gl.Enable(DEPTH_TEST);  // depth 0.5 fails against 0.25 everywhere
+    shader.color = glm::vec4(1, 1, 0, 1);
+    DrawWindowTriangle(gl, shader, {-10, -10}, {400, -10}, {-10, 400}, kW, kH);
+    gl.Disable(DEPTH_TEST);
+    image = gl.ReadPixels();
+    CHECK(Pixel(image, 10, 10) == std::array<int, 4>{255, 0, 0, 255});
+    CHECK(Pixel(image, 100, 80) == std::array<int, 4>{0, 0, 255, 255});
+    // A stencil clear through a write mask keeps the deferred value's other bits.
+    gl.StencilMask(0x0F);
+    gl.ClearStencil(0xFA);
+    gl.Clear(STENCIL_BUFFER_BIT);
+    gl.StencilMask(0xFF);
+    CHECK(gl.ReadStencil(100, 80) == 0x3A);
+    CHECK(gl.ReadStencil(10, 10) == 0x3A);
+  }
+  SECTION("blits read and write the samples with the deferred clears in them") {
+    gl.ClearColor(0, 1, 1, 1);
+    gl.Clear(COLOR_BUFFER_BIT);
+    // From the multisampled framebuffer into a single-sampled object: resolved from the clear's value.
+    const std::uint32_t fbo = gl.GenFramebuffer(), rb = gl.GenRenderbuffer();
+    gl.BindRenderbuffer(RENDERBUFFER, rb);
+    gl.RenderbufferStorage(RENDERBUFFER, RGBA8, kW, kH);
+    gl.BindFramebuffer(DRAW_FRAMEBUFFER, fbo);
+    gl.FramebufferRenderbuffer(DRAW_FRAMEBUFFER, COLOR_ATTACHMENT0, RENDERBUFFER, rb);
+    gl.BlitFramebuffer(0, 0, kW, kH, 0, 0, kW, kH, COLOR_BUFFER_BIT, NEAREST);
+    CHECK(gl.GetError() == NO_ERROR);
+    gl.BindFramebuffer(READ_FRAMEBUFFER, fbo);
+    image = gl.ReadPixels();
+    CHECK(Pixel(image, 100, 80) == std::array<int, 4>{0, 255, 255, 255});
+    CHECK(Pixel(image, 10, 10) == std::array<int, 4>{0, 255, 255, 255});
+    // Into the multisampled framebuffer: a rectangle of one tile from the object, the rest of it as cleared.
+    gl.BindFramebuffer(READ_FRAMEBUFFER, fbo);
+    gl.BindFramebuffer(DRAW_FRAMEBUFFER, 0);
+    gl.ClearColor(1, 0, 1, 1);
+    gl.Clear(COLOR_BUFFER_BIT);
+    gl.BlitFramebuffer(0, 0, 10, 10, 70, 70, 80, 80, COLOR_BUFFER_BIT, NEAREST);
+    gl.BindFramebuffer(READ_FRAMEBUFFER, 0);
+    image = gl.ReadPixels();
+    CHECK(Pixel(image, 75, 75) == std::array<int, 4>{0, 255, 255, 255});
+    CHECK(Pixel(image, 69, 75) == std::array<int, 4>{255, 0, 255, 255});
+    CHECK(Pixel(image, 120, 90) == std::array<int, 4>{255, 0, 255, 255});
+  }
+}
