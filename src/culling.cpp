@@ -1,6 +1,7 @@
 // culling.cpp — OpenGL's facing rule (section 14.6.1 of the 4.6 specification).
 #include "culling.h"
 
+#include "rasterizer.h"
 #include "simd.h"
 #include "wide.h"
 
@@ -25,6 +26,20 @@ bool IsCulled(bool front_facing, Enum cull_face) {
     case FRONT_AND_BACK: return true;
     case FRONT: return front_facing;
     default: return !front_facing;
+  }
+}
+
+void CullState::SetSamples(int count) {
+  const SampleSpan& span = SampleSpan::Of(count);
+  span_x0 = int(span.x0);
+  span_x1 = int(span.x1);
+  span_y0 = int(span.y0);
+  span_y1 = int(span.y1);
+  samples = count <= 1 ? 1 : count;
+  const auto* pos = SamplePositions(samples);
+  for (int s = 0; s < samples; ++s) {
+    sample_x[s] = pos[s][0] * (256 / 16);
+    sample_y[s] = pos[s][1] * (256 / 16);
   }
 }
 
@@ -73,8 +88,8 @@ SOFTGL_WIDE void JudgeLanes(const TriangleGroup& g, const CullState& st, int l0,
   // TriangleCentreBox's first and last centres (pixels with some sample inside), cut to the bounds.
   I first_x = -((st.span_x1 - min3(X[0], X[1], X[2])) >> 8), last_x = (max3(X[0], X[1], X[2]) - st.span_x0) >> 8;
   I first_y = -((st.span_y1 - min3(Y[0], Y[1], Y[2])) >> 8), last_y = (max3(Y[0], Y[1], Y[2]) - st.span_y0) >> 8;
-  // At most 2 x 2 centres before the cut: the vertices lie within 3 pixels of each other.
-  const I tiny = exact & I(last_x - first_x <= 1) & I(last_y - first_y <= 1) & (st.centres ? ~I{} : I{});
+  // At most 2 x 2 pixels before the cut: the vertices lie within 3 pixels of each other.
+  const I tiny = exact & I(last_x - first_x <= 1) & I(last_y - first_y <= 1);
   const I bx0 = I{} + st.bounds.x0, bx1 = I{} + (st.bounds.x1 - 1), by0 = I{} + st.bounds.y0,
           by1 = I{} + (st.bounds.y1 - 1);
   first_x = max(first_x, bx0);
@@ -89,34 +104,40 @@ SOFTGL_WIDE void JudgeLanes(const TriangleGroup& g, const CullState& st, int l0,
   const I small = exact & short_edge(dx1) & short_edge(dy1) & short_edge(dx2) & short_edge(dy2);
   const U snapped_area = U(dx1) * U(dy2) - U(dx2) * U(dy1);
   nothing = nothing | (small & I(snapped_area == 0u));
-  // A tiny triangle draws nothing when none of the (at most four) centres in its box is inside: the rasterizer's
-  // edge test (RasterizeTriangle), each edge's value at the centre in subpixels, the vertices in counter-clockwise
-  // order. A clockwise triangle's edges are the reverses of the counter-clockwise order's, whose values are the
-  // negated values of these. Every value is below 2^21 in magnitude.
+  // A tiny triangle draws nothing when none of the positions in the (at most four) pixels of its box is inside:
+  // each pixel's centre, or each of its samples' positions when multisampled. The rasterizer's edge test
+  // (RasterizeTriangle), each edge's value at the position in subpixels, the vertices in counter-clockwise order.
+  // A clockwise triangle's edges are the reverses of the counter-clockwise order's, whose values are the negated
+  // values of these. Every value is below 2^21 in magnitude.
   if (const I test = tiny & ~nothing; MaskToBits<W>(test, 0) != 0) {
     const I ccw = I(snapped_area) > 0;
-    const I px = first_x * 256 + 128, py = first_y * 256 + 128;  // the box's first centre
-    I value[3], step_x[3], step_y[3], owns_ties[3];
+    const I px = first_x * 256, py = first_y * 256;  // the box's first pixel's corner
+    I value[3], step_x[3], step_y[3], owns_ties[3], ex[3], ey[3];
     for (int e = 0; e < 3; ++e) {
       const int f = e == 2 ? 0 : e + 1;
-      const I ex = ccw ? X[f] - X[e] : X[e] - X[f], ey = ccw ? Y[f] - Y[e] : Y[e] - Y[f];
-      value[e] = ex * (py - (ccw ? Y[e] : Y[f])) - ey * (px - (ccw ? X[e] : X[f]));
-      step_x[e] = ey * -256;  // to the next centre in x, in y
-      step_y[e] = ex * 256;
-      owns_ties[e] = I(ey < 0) | (I(ey == 0) & I(ex > 0));  // left and bottom edges
+      ex[e] = ccw ? X[f] - X[e] : X[e] - X[f];
+      ey[e] = ccw ? Y[f] - Y[e] : Y[e] - Y[f];
+      value[e] = ex[e] * (py - (ccw ? Y[e] : Y[f])) - ey[e] * (px - (ccw ? X[e] : X[f]));
+      step_x[e] = ey[e] * -256;  // to the next pixel in x, in y
+      step_y[e] = ex[e] * 256;
+      owns_ties[e] = I(ey[e] < 0) | (I(ey[e] == 0) & I(ex[e] > 0));  // left and bottom edges
     }
-    // The other centres only where some lane's box has them.
+    // The other pixels only where some lane's box has them.
     const bool two_x = MaskToBits<W>(test & I(last_x > first_x), 0) != 0;
     const bool two_y = MaskToBits<W>(test & I(last_y > first_y), 0) != 0;
     I covered{};
-    for (int k = 0; k < 4; ++k) {
-      if (((k & 1) && !two_x) || ((k >> 1) && !two_y)) continue;
-      I inside = I(first_x + (k & 1) <= last_x) & I(first_y + (k >> 1) <= last_y);
-      for (int e = 0; e < 3; ++e) {
-        const I v = value[e] + (k & 1 ? step_x[e] : I{}) + (k >> 1 ? step_y[e] : I{});
-        inside &= I(v > 0) | (I(v == 0) & owns_ties[e]);
+    for (int s = 0; s < st.samples; ++s) {
+      I at[3];  // each edge at the position in the box's first pixel
+      for (int e = 0; e < 3; ++e) at[e] = value[e] - ey[e] * st.sample_x[s] + ex[e] * st.sample_y[s];
+      for (int k = 0; k < 4; ++k) {
+        if (((k & 1) && !two_x) || ((k >> 1) && !two_y)) continue;
+        I inside = I(first_x + (k & 1) <= last_x) & I(first_y + (k >> 1) <= last_y);
+        for (int e = 0; e < 3; ++e) {
+          const I v = at[e] + (k & 1 ? step_x[e] : I{}) + (k >> 1 ? step_y[e] : I{});
+          inside &= I(v > 0) | (I(v == 0) & owns_ties[e]);
+        }
+        covered |= inside;
       }
-      covered |= inside;
     }
     nothing = nothing | (tiny & ~covered);
   }

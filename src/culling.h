@@ -35,7 +35,12 @@ struct CullState {
   // A multisampled target's sample span (SampleSpan, in 1/256 pixel): the boxes hold the pixels with some sample
   // position inside, as TriangleCentreBox's for that count; the 2 x 2 coverage test is for pixel centres only.
   int span_x0 = 128, span_x1 = 128, span_y0 = 128, span_y1 = 128;
-  bool centres = true;  // single-sampled: the 2 x 2 coverage test applies
+  // The positions the 2 x 2 coverage test tries in each pixel, in 1/256 pixel from its bottom-left corner: the
+  // centre when single-sampled, else each sample's (SamplePositions); `samples` of them.
+  int samples = 1;
+  std::int32_t sample_x[kMaxSamples] = {128}, sample_y[kMaxSamples] = {128};
+  /// Sets the spans and the positions for a target of `samples` (1, 2, 4 or 8) whose coverage triangles compute.
+  void SetSamples(int samples);
 };
 
 /// What the scalar path decides for the triangles of a group, found 4, 8 or 16 triangles per instruction with its
@@ -44,9 +49,9 @@ struct GroupVerdict {
   /// Bit t: triangle t certainly draws nothing. Its SignedArea (the same float operations) is zero or culled; or
   /// its vertices snapped to 1/256 pixel (as TriangleCentreBox snaps: exact here for coordinates below 16384
   /// pixels; a triangle beyond that is left unmarked) have no pixel centre (sample, for a multisampled state)
-  /// inside `bounds` in their box, or, for a triangle less than 128 pixels across, no area; or, single-sampled, for
-  /// one whose box holds at most 2 x 2 centres, none of them passes the rasterizer's edge test
-  /// (RasterizeTriangle's, tie rule included).
+  /// inside `bounds` in their box, or, for a triangle less than 128 pixels across, no area; or, for one whose box
+  /// holds at most 2 x 2 pixels, none of their centres (their samples' positions, multisampled) passes the
+  /// rasterizer's edge test (RasterizeTriangle's, tie rule included).
   std::uint32_t nothing = 0;
   /// Bit t: triangle t is not marked, is less than 128 pixels across and has its coordinates in the exact range;
   /// then bit t of `front` is its facing (IsFrontFacing of its SignedArea), and x0..y1[t] its TriangleCentreBox.

@@ -150,12 +150,7 @@ class PrimitiveRunner {
       : state_(state), sv_(sv), bins_(bins), grid_(grid), clip_(mem.clip), poly_(mem.poly), win_(mem.win),
         planes_(GuardBandPlanes(state.viewport)),
         cull_{state.primitive.cull_enabled, state.primitive.cull_face, state.primitive.front_face, state.bounds} {
-    const SampleSpan& span = SampleSpan::Of(state.samples);
-    cull_.span_x0 = int(span.x0);
-    cull_.span_x1 = int(span.x1);
-    cull_.span_y0 = int(span.y0);
-    cull_.span_y1 = int(span.y1);
-    cull_.centres = state.samples <= 1;
+    cull_.SetSamples(state.samples);
     for (int k = 0; state.interpolation && k < sv.nvar; ++k)
       if (state.interpolation[k] == Interpolation::kFlat) flat_[flat_count_++] = k;
   }
