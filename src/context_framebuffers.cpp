@@ -235,7 +235,9 @@ void Context::ReadPixels(int x, int y, int width, int height, Enum format, Enum 
   if (s.read_fbo && FramebufferStatus(*s.read_fbo) != FRAMEBUFFER_COMPLETE) return s.SetError(INVALID_FRAMEBUFFER_OPERATION, __func__, "the read framebuffer is not complete");
   if (ReadFboSamples(s) > 1) return s.SetError(INVALID_OPERATION, __func__, "the read framebuffer object is multisampled: resolve it with BlitFramebuffer first");
   s.Sync(__func__);
-  const detail::RenderTarget t = ReadTarget(s);
+  const unsigned buffers = l.depth || l.stencil ? (l.depth ? detail::kDepthBit : 0u) | (l.stencil ? detail::kStencilBit : 0u)
+                                                : detail::kColorBit;
+  const detail::RenderTarget t = ReadTarget(s, false, false, buffers);
   if ((l.depth && !t.HasDepth()) || (l.stencil && !t.stencil) || (l.count > 0 && !l.depth && !l.stencil && !t.color[0].Present()))
     return s.SetError(INVALID_OPERATION, __func__, "the read framebuffer has no buffer of that kind");
   if (pixels == nullptr || width == 0 || height == 0) return;

@@ -857,6 +857,13 @@ TEST_CASE("multisample: deferred clears of the context's framebuffer read as cle
     gl.ClearDepth(0.25);
     gl.ClearStencil(0x35);
     gl.Clear(DEPTH_BUFFER_BIT | STENCIL_BUFFER_BIT);
+    (void)gl.ReadPixels();  // colour alone resolved: depth and stencil stay out of date until read
+    float depth = 0.0f;
+    gl.ReadPixels(100, 80, 1, 1, DEPTH_COMPONENT, FLOAT, &depth);
+    CHECK(depth == 0.25f);
+    std::uint8_t stencil = 0;
+    gl.ReadPixels(10, 10, 1, 1, STENCIL_INDEX, UNSIGNED_BYTE, &stencil);
+    CHECK(stencil == 0x35);
     CHECK(gl.ReadDepth(100, 80) == 0.25f);
     CHECK(gl.ReadStencil(100, 80) == 0x35);
     gl.Enable(DEPTH_TEST);  // depth 0.5 fails against 0.25 everywhere
