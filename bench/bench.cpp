@@ -15,6 +15,9 @@
 //   --scalar 0         skip the runs with each scene's shader in the scalar form (by default they follow each
 //                      scene, and the last columns give their time and the wide form's gain over them)
 //   --depth16 1        softgl's contexts with a 16-bit depth buffer (Options::depth_format DEPTH_COMPONENT16)
+//   --msaa-pairs N     also the model scene's softgl frame without and with 4x MSAA in turn, N pairs, in two
+//                      contexts side by side: each pair's ratio is taken a few milliseconds apart, so that a shared
+//                      machine's drifts in speed weigh on both frames of a pair alike; prints the median ratio
 //
 // The last row is the model scene's peak memory: each renderer runs the scene (warm-up and one frame) in a process
 // of its own that loads the model and nothing else (this program with --rss-child), which reports its VmHWM.
@@ -31,6 +34,7 @@
 #include <functional>
 #include <random>
 #include <string>
+#include <memory>
 #include <vector>
 
 #include <unistd.h>
@@ -504,6 +508,7 @@ int main(int argc, char** argv) {
   bool softgl_only = false;  // --softgl-only 1: skip llvmpipe (for profiling)
   bool with_scalar = true;   // --scalar 0: skip the scalar-shader runs
   std::string rss_child;     // --rss-child softgl|llvmpipe: run the model scene once, print peak RSS in KiB
+  int msaa_pairs = 0;        // --msaa-pairs N
   for (int i = 1; i + 1 < argc; i += 2) {
     if (!std::strcmp(argv[i], "--threads")) threads = std::max(1, std::atoi(argv[i + 1]));
     if (!std::strcmp(argv[i], "--frames")) frames = std::max(1, std::atoi(argv[i + 1]));
@@ -514,6 +519,7 @@ int main(int argc, char** argv) {
     if (!std::strcmp(argv[i], "--depth16") && std::atoi(argv[i + 1]) != 0)
       g_options.depth_format = softgl::DEPTH_COMPONENT16;
     if (!std::strcmp(argv[i], "--rss-child")) rss_child = argv[i + 1];
+    if (!std::strcmp(argv[i], "--msaa-pairs")) msaa_pairs = std::max(0, std::atoi(argv[i + 1]));
   }
   const std::string lp_threads = std::to_string(threads == 1 ? 0 : threads);
   setenv("LP_NUM_THREADS", lp_threads.c_str(), 1);
@@ -878,6 +884,51 @@ int main(int argc, char** argv) {
     std::printf("| %s | %dx%d | %d | %.1f | %.1f | %.2f | %.2f %s | %s | %s | %s |\n", s.name, s.width, s.height,
                 threads, a, b, b > 0 ? a / b : 0.0, rate, s.unit, speedup, scalar_ms, gain);
     std::fflush(stdout);
+  }
+  if (msaa_pairs > 0 && have_engine) {
+    // The model scene at 1 and 4 samples, a frame of each in turn (which goes first alternates).
+    std::vector<std::unique_ptr<softgl::Context>> contexts;
+    wide::PhongShader shader;
+    shader.view_proj = engine_vp;
+    shader.eye = engine_eye;
+    for (int samples : {0, 4}) {
+      softgl::Context::Options options = g_options;
+      options.samples = samples;
+      contexts.push_back(std::make_unique<softgl::Context>(1280, 720, options));
+      softgl::Context& gl = *contexts.back();
+      softgl_setup(gl, engine);
+      gl.UseProgram(shader);
+      gl.Enable(softgl::DEPTH_TEST);
+      gl.Enable(softgl::CULL_FACE);
+    }
+    auto frame_ms = [&](int k) {  // as TimeSoftgl's frame
+      softgl::Context& gl = *contexts[std::size_t(k)];
+      const auto t0 = std::chrono::steady_clock::now();
+      gl.Clear(softgl::COLOR_BUFFER_BIT | softgl::DEPTH_BUFFER_BIT);
+      gl.DrawElement(softgl::TRIANGLES, int(engine.indices.size()), softgl::UNSIGNED_INT, 0);
+      gl.Finish();
+      std::uint8_t px[4];
+      gl.ReadPixel(0, 0, px);
+      return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    };
+    for (int k = 0; k < 4; ++k) frame_ms(k % 2);  // warm-up
+    std::vector<double> ratios, one, four;
+    for (int i = 0; i < msaa_pairs; ++i) {
+      double t[2];
+      const int first = i % 2;
+      t[first] = frame_ms(first);
+      t[1 - first] = frame_ms(1 - first);
+      one.push_back(t[0]);
+      four.push_back(t[1]);
+      ratios.push_back(t[1] / t[0]);
+    }
+    auto median = [](std::vector<double> v) {
+      std::sort(v.begin(), v.end());
+      return v[v.size() / 2];
+    };
+    std::printf("| model: 2CylinderEngine, 4x MSAA over 1x, %d pairs of frames in turn: median ratio %.2f "
+                "(1x %.1f ms, 4x %.1f ms) | 1280x720 | %d | | | | | | | |\n",
+                msaa_pairs, median(ratios), median(one), median(four), threads);
   }
   if (rss_softgl >= 0.0)
     std::printf("| model scene: peak RSS of the process, MiB | 1280x720 | %d | %.1f | %.1f | %.2f | | |\n", threads,
