@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <utility>
 
 #if defined(__SSE2__)
 #include <immintrin.h>
@@ -338,11 +339,13 @@ bool Inside(const RenderTarget& t, const BlockBuffer& bb, int b) {
 
 // Where block b's quads start in a buffer of `pitch` values between rows: qy * pitch + qx, computed once per block
 // for all the loads and stores (and sample planes) that share the pitch.
+// (`step` values from one pixel to the next: the sample count where samples lie side by side.)
 struct QuadPlaces {
   std::size_t at[4];
   std::size_t pitch;
-  QuadPlaces(const BlockBuffer& bb, int b, int row_pitch) : pitch(std::size_t(row_pitch)) {
-    for (int q = 0; q < 4; ++q) at[q] = std::size_t(bb.qy[b][q]) * pitch + std::size_t(bb.qx[b][q]);
+  QuadPlaces(const BlockBuffer& bb, int b, int row_pitch, int step = 1) : pitch(std::size_t(row_pitch)) {
+    for (int q = 0; q < 4; ++q)
+      at[q] = std::size_t(bb.qy[b][q]) * pitch + std::size_t(bb.qx[b][q]) * std::size_t(step);
   }
 };
 
@@ -439,10 +442,103 @@ struct BlockOpsContext {
 inline std::uint32_t PlaneLanes(const BlockOpsContext& ctx, int b, int s) {
   return ctx.depths ? ctx.blocks->live[b] & ctx.blocks->sample_live[b][s] : ctx.blocks->live[b];
 }
+// (lane l's at [l * PlaneStride])
 inline const float* PlaneDepths(const BlockOpsContext& ctx, int b, int s) {
   if (ctx.shader_depth) return ctx.blocks->Depth(b);
-  return ctx.depths ? ctx.depths->z[b][s] : ctx.blocks->frag_coord[b][2];
+  return ctx.depths ? ctx.depths->Lanes(b, s) : ctx.blocks->frag_coord[b][2];
 }
+inline int PlaneStride(const BlockOpsContext& ctx) { return ctx.depths && !ctx.shader_depth ? ctx.depths->Stride() : 1; }
+
+// The stencil test, the depth test, the stencil operations and the colour write on W values at once (W lanes of one
+// sample plane, or W elements of samples side by side), `go` those covered. `io` reads and writes each buffer's
+// values at their places (Stencil, SetStencil, Depth, SetDepth, Depth16, SetDepth16, Pixels, SetPixels), gives the
+// values' depths (Z) and the colour to write over the pixels (Result: blended, or the converted colour through the
+// colour mask).
+template <int W, class Io>
+SOFTGL_WIDE void VectorOps(const BlockOpsContext& ctx, typename V<W>::I go, const Io& io) {
+  using F = typename V<W>::F;
+  using I = typename V<W>::I;
+  using U = typename V<W>::U;
+  const RenderTarget& t = *ctx.target;
+  const FragmentOpsState& st = *ctx.state;
+  I sten{};
+  if (ctx.stencil_test) {
+    sten = __builtin_convertvector(io.Stencil(), I);
+    const StencilFace& f = *ctx.face;
+    const std::int32_t m = std::int32_t(f.value_mask & 0xFFu);
+    const I pass = Compare(f.func, I{} + (std::clamp(f.ref, 0, 255) & m), sten & m);
+    sten = StencilOpLanes<W>(f, f.sfail, sten, go & ~pass);
+    go &= pass;
+  }
+  if (ctx.depth_test) {
+    const F z = io.Z();
+    F zc = z > 0.0f ? z : F{} + 0.0f;  // clamped to [0, 1]; NaN fails below
+    zc = zc < 1.0f ? zc : F{} + 1.0f;
+    I pass;
+    if (t.depth16) {  // 16 bits: the depths converted, round(zc * 65535) (as RenderTarget::Depth16), compared
+      const I stored = __builtin_convertvector(io.Depth16(), I);
+      const I zq = Depth16Lanes<W>(zc);
+      pass = Compare(st.depth_func, zq, stored) & (z == z);
+      if (st.depth_write) io.SetDepth16(__builtin_convertvector((go & pass) ? zq : stored, typename V<W>::S));
+    } else {
+      const F stored = io.Depth();
+      pass = Compare(st.depth_func, zc, stored) & (z == z);
+      if (st.depth_write) io.SetDepth((go & pass) ? zc : stored);
+    }
+    if (ctx.stencil_test) {
+      sten = StencilOpLanes<W>(*ctx.face, ctx.face->dpfail, sten, go & ~pass);
+      sten = StencilOpLanes<W>(*ctx.face, ctx.face->dppass, sten, go & pass);
+    }
+    go &= pass;
+  } else if (ctx.stencil_test) {
+    sten = StencilOpLanes<W>(*ctx.face, ctx.face->dppass, sten, go);
+  }
+  if (ctx.stencil_test) io.SetStencil(__builtin_convertvector(sten, typename V<W>::B));
+  if (ctx.passed) *ctx.passed += std::uint64_t(__builtin_popcount(MaskToBits<W>(go, 0)));
+  if (!io.colour) return;
+  const U pixels = io.Pixels();
+  io.SetPixels(go ? io.Result(pixels) : pixels);
+}
+
+// VectorOps' access to sample plane s (kSamples; else the single-sampled target) of block b's lanes l0 .. l0 + W - 1.
+template <int W, bool kSamples>
+struct PlaneIo {
+  using F = typename V<W>::F;
+  using U = typename V<W>::U;
+  const BlockOpsContext& ctx;
+  const RenderTarget& t;
+  const QuadPlaces &depth_at, &stencil_at, &colour_at;
+  int b, s, l0;
+  const F* color;  // the lanes' colour channels
+  U packed;        // without blending: the colour's bytes
+  bool colour;
+  std::uint32_t live() const { return ctx.blocks->live[b]; }
+  std::size_t Plane(std::size_t plane) const { return kSamples ? plane * std::size_t(s) : 0; }
+  typename V<W>::B Stencil() const {
+    return LoadQuads<std::uint8_t, W, typename V<W>::B>(t.stencil + Plane(t.stencil_plane), stencil_at, l0);
+  }
+  void SetStencil(typename V<W>::B v) const {
+    StoreQuads<std::uint8_t, W>(t.stencil + Plane(t.stencil_plane), stencil_at, live(), l0, v);
+  }
+  F Depth() const { return LoadQuads<float, W, F>(t.depth + Plane(t.depth_plane), depth_at, l0); }
+  void SetDepth(F v) const { StoreQuads<float, W>(t.depth + Plane(t.depth_plane), depth_at, live(), l0, v); }
+  typename V<W>::S Depth16() const {
+    return LoadQuads<std::uint16_t, W, typename V<W>::S>(t.depth16 + Plane(t.depth_plane), depth_at, l0);
+  }
+  void SetDepth16(typename V<W>::S v) const {
+    StoreQuads<std::uint16_t, W>(t.depth16 + Plane(t.depth_plane), depth_at, live(), l0, v);
+  }
+  std::uint32_t* PixelsAt() const { return reinterpret_cast<std::uint32_t*>(t.color[0].data) + Plane(t.color[0].plane); }
+  U Pixels() const { return LoadQuads<std::uint32_t, W, U>(PixelsAt(), colour_at, l0); }
+  void SetPixels(U v) const { StoreQuads<std::uint32_t, W>(PixelsAt(), colour_at, live(), l0, v); }
+  F Z() const {
+    const BlockBuffer& bb = *ctx.blocks;
+    if (ctx.shader_depth) return LoadVec<F>(bb.Depth(b) + l0);
+    if constexpr (kSamples) return LoadVec<F>(ctx.depths->z[b][s] + l0);
+    return LoadVec<F>(bb.frag_coord[b][2] + l0);
+  }
+  U Result(U dst) const { return ctx.blend->blend ? Blend8Lanes<W>(*ctx.blend, color, dst) : (dst & ctx.blend->keep) | packed; }
+};
 
 // The per-fragment operations on block b (inside the target, colour buffer 0 RGBA8 or none, no other colour
 // buffer), W lanes at a time, on every sample plane the lanes cover (kSamples: ctx.depths given); the colour
@@ -450,11 +546,9 @@ inline const float* PlaneDepths(const BlockOpsContext& ctx, int b, int s) {
 template <int W, bool kSamples>
 SOFTGL_WIDE void BlockOps(const BlockOpsContext& ctx, int b) {
   using F = typename V<W>::F;
-  using I = typename V<W>::I;
   using U = typename V<W>::U;
   const BlockBuffer& bb = *ctx.blocks;
   const RenderTarget& t = *ctx.target;
-  const FragmentOpsState& st = *ctx.state;
   const bool colour = ctx.any_color && t.color[0].Present();
   constexpr std::uint32_t kChunk = (1u << W) - 1u;
   const std::uint32_t live = bb.live[b];
@@ -472,63 +566,251 @@ SOFTGL_WIDE void BlockOps(const BlockOpsContext& ctx, int b) {
     for (int s = 0; s < (kSamples ? ctx.samples : 1); ++s) {
       const std::uint32_t lanes = kSamples ? live & bb.sample_live[b][s] : live;
       if (!((lanes >> l0) & kChunk)) continue;
-      I go = BitsToMask<W>(lanes, l0);
-      I sten{};
-      std::uint8_t* stencil = ctx.stencil_test ? t.stencil + t.stencil_plane * std::size_t(s) : nullptr;
-      if (ctx.stencil_test) {
-        sten = __builtin_convertvector(
-            (LoadQuads<std::uint8_t, W, typename V<W>::B>(stencil, stencil_at, l0)), I);
-        const StencilFace& f = *ctx.face;
-        const std::int32_t m = std::int32_t(f.value_mask & 0xFFu);
-        const I pass = Compare(f.func, I{} + (std::clamp(f.ref, 0, 255) & m), sten & m);
-        sten = StencilOpLanes<W>(f, f.sfail, sten, go & ~pass);
-        go &= pass;
-      }
-      if (ctx.depth_test) {
-        const F z = LoadVec<F>((ctx.shader_depth ? bb.Depth(b) : kSamples ? ctx.depths->z[b][s] : bb.frag_coord[b][2]) + l0);
-        F zc = z > 0.0f ? z : F{} + 0.0f;  // clamped to [0, 1]; NaN fails below
-        zc = zc < 1.0f ? zc : F{} + 1.0f;
-        I pass;
-        if (t.depth16) {  // 16 bits: the depths converted, round(zc * 65535) (as RenderTarget::Depth16), compared
-          using S = typename V<W>::S;
-          std::uint16_t* depth = t.depth16 + t.depth_plane * std::size_t(s);
-          const I stored = __builtin_convertvector((LoadQuads<std::uint16_t, W, S>(depth, depth_at, l0)), I);
-          const I zq = Depth16Lanes<W>(zc);
-          pass = Compare(st.depth_func, zq, stored) & (z == z);
-          if (st.depth_write)
-            StoreQuads<std::uint16_t, W, S>(depth, depth_at, live, l0, __builtin_convertvector((go & pass) ? zq : stored, S));
-        } else {
-          float* depth = t.depth + t.depth_plane * std::size_t(s);
-          const F stored = LoadQuads<float, W, F>(depth, depth_at, l0);
-          pass = Compare(st.depth_func, zc, stored) & (z == z);
-          if (st.depth_write) StoreQuads<float, W, F>(depth, depth_at, live, l0, (go & pass) ? zc : stored);
-        }
-        if (ctx.stencil_test) {
-          sten = StencilOpLanes<W>(*ctx.face, ctx.face->dpfail, sten, go & ~pass);
-          sten = StencilOpLanes<W>(*ctx.face, ctx.face->dppass, sten, go & pass);
-        }
-        go &= pass;
-      } else if (ctx.stencil_test) {
-        sten = StencilOpLanes<W>(*ctx.face, ctx.face->dppass, sten, go);
-      }
-      if (ctx.stencil_test)
-        StoreQuads<std::uint8_t, W, typename V<W>::B>(stencil, stencil_at, live, l0,
-                                                       __builtin_convertvector(sten, typename V<W>::B));
-      if (ctx.passed) *ctx.passed += std::uint64_t(__builtin_popcount(MaskToBits<W>(go, 0)));
-      if (!colour) continue;
-      const ColorBuffer& cb = t.color[0];
-      auto* cp = reinterpret_cast<std::uint32_t*>(cb.data) + cb.plane * std::size_t(s);
-      const U pixels = LoadQuads<std::uint32_t, W, U>(cp, colour_at, l0);
-      const U result = ctx.blend->blend ? Blend8Lanes<W>(*ctx.blend, color, pixels) : (pixels & ctx.blend->keep) | packed;
-      StoreQuads<std::uint32_t, W, U>(cp, colour_at, live, l0, go ? result : pixels);
+      const PlaneIo<W, kSamples> io{ctx, t, depth_at, stencil_at, colour_at, b, s, l0, color, packed, colour};
+      VectorOps<W>(ctx, BitsToMask<W>(lanes, l0), io);
     }
+  }
+}
+
+// ---- Samples side by side ----
+//
+// Into an interleaved target (RenderTarget::interleaved) a block's values go in element order: element e is sample
+// e % S of lane e / S. A quad row's 2 S elements are one run of memory (its two pixels' samples), so W elements are
+// one load or store of a run, or of two runs when a run is shorter than W.
+template <int W, int S>
+struct Elements {
+  static constexpr int kRun = 2 * S;                       // elements of a quad row
+  static constexpr int kPieces = W > kRun ? W / kRun : 1;  // runs in W elements
+  static constexpr int kPiece = W > kRun ? kRun : W;       // elements from each
+  static constexpr int kChunks = kLanes * S / W;           // W elements at a time over a block
+};
+// Where each of a block's eight quad rows starts (quad q's rows 2 q and 2 q + 1), from its quad places.
+struct RowPlaces {
+  std::size_t at[8];
+  explicit RowPlaces(const QuadPlaces& q) {
+    for (int r = 0; r < 8; ++r) at[r] = q.at[r >> 1] + std::size_t(r & 1) * q.pitch;
+  }
+  // Where piece k of the W elements from e0 starts.
+  template <int W, int S>
+  std::size_t At(int e0, int k) const {
+    using E = Elements<W, S>;
+    const int e = e0 + k * E::kPiece;
+    return at[e / E::kRun] + std::size_t(e % E::kRun);
+  }
+};
+template <class T, int W, int S, class Vec>
+SOFTGL_WIDE Vec LoadElements(const T* base, const RowPlaces& at, int e0) {
+  using E = Elements<W, S>;
+  if constexpr (E::kPieces == 1) {
+    return LoadVec<Vec>(base + at.template At<W, S>(e0, 0));
+  } else {
+    T values[W];
+    for (int k = 0; k < E::kPieces; ++k) std::memcpy(values + k * E::kPiece, base + at.template At<W, S>(e0, k), sizeof(T) * E::kPiece);
+    return LoadVec<Vec>(values);
+  }
+}
+template <class T, int W, int S, class Vec>
+SOFTGL_WIDE void StoreElements(T* base, const RowPlaces& at, int e0, const Vec& v) {
+  using E = Elements<W, S>;
+  if constexpr (E::kPieces == 1) {
+    StoreVec(base + at.template At<W, S>(e0, 0), v);
+  } else {
+    T values[W];
+    StoreVec(values, v);
+    for (int k = 0; k < E::kPieces; ++k) std::memcpy(base + at.template At<W, S>(e0, k), values + k * E::kPiece, sizeof(T) * E::kPiece);
+  }
+}
+// Values spread over W elements: element e takes v[e / S].
+template <int S, class Vec, std::size_t... E>
+SOFTGL_WIDE auto SpreadLanes(const Vec& v, std::index_sequence<E...>) {
+  return __builtin_shufflevector(v, v, int(E / S)...);
+}
+// The W elements of lanes[0 ..] (the W / S lanes they cover, read alone, straight into a register: a vector read
+// back from narrower stores would stall): element e takes lanes[e / S]. T is 32 bits.
+template <int W, int S, class Vec, class T>
+SOFTGL_WIDE Vec Spread(const T* lanes) {
+  static_assert(sizeof(T) == 4);
+  constexpr int kCovered = W >= S ? W / S : 1;
+  if constexpr (kCovered == 1) {
+    return Vec{} + lanes[0];
+  } else if constexpr (kCovered == 2) {
+    std::uint64_t pair;
+    std::memcpy(&pair, lanes, 8);
+    using Q = typename V<W>::Q;
+    return SpreadLanes<S>(Vec(Q{} + pair), std::make_index_sequence<W>{});
+  } else if constexpr (kCovered == W) {
+    return LoadVec<Vec>(lanes);
+  } else {  // four lanes
+    typedef T Four __attribute__((vector_size(16)));
+    return SpreadLanes<S>(LoadVec<Four>(lanes), std::make_index_sequence<W>{});
+  }
+}
+// The covered elements of a block, W at a time: for lane bits `covered[s]` of each sample (live lanes only).
+template <int W, int S>
+struct ElementCoverage {
+  using I = typename V<W>::I;
+  static constexpr int kPatterns = S > W ? S / W : 1;  // chunks repeat their samples every kPatterns
+  I bits[kPatterns];  // element e: covered[sample of e] (the lane bits of its sample)
+  I lane_of;          // element e's lane, less the chunk's first
+  explicit ElementCoverage(const std::uint32_t* covered) {
+    for (int p = 0; p < kPatterns; ++p)
+      for (int e = 0; e < W; ++e) bits[p][e] = std::int32_t(covered[(p * W + e) % S]);
+    for (int e = 0; e < W; ++e) lane_of[e] = e / S;
+  }
+  I Mask(int chunk) const {
+    const int e0 = chunk * W;
+    return ((bits[chunk % kPatterns] >> (lane_of + e0 / S)) & 1) != 0;
+  }
+};
+// A chunk's element bits (MaskToBits) back to lane bits per sample, for S <= 4 and S <= W: table[m] holds, at bit
+// 16 s + i, the bit of chunk-lane i's sample s. (S = 8 goes element by element.)
+template <int W, int S>
+struct ElementBits {
+  std::uint64_t table[1 << W];
+  constexpr ElementBits() : table() {
+    for (int m = 0; m < (1 << W); ++m)
+      for (int e = 0; e < W; ++e)
+        if ((m >> e) & 1) table[m] |= std::uint64_t(1) << (16 * (e % S) + e / S);
+  }
+};
+template <int W, int S>
+SOFTGL_WIDE void AddElementBits(std::uint32_t bits, int e0, std::uint64_t& packed, std::uint32_t* per_sample) {
+  if constexpr (S <= 4 && S <= W) {
+    static constexpr ElementBits<W, S> kTable;
+    packed |= kTable.table[bits] << (e0 / S);
+  } else {
+    for (; bits; bits &= bits - 1) {
+      const int e = e0 + __builtin_ctz(bits);
+      per_sample[e % S] |= 1u << (e / S);
+    }
+  }
+}
+template <int W, int S>
+SOFTGL_WIDE void TakeElementBits(std::uint64_t packed, std::uint32_t* per_sample) {
+  if constexpr (S <= 4 && S <= W)
+    for (int s = 0; s < S; ++s) per_sample[s] |= std::uint32_t(packed >> (16 * s)) & 0xFFFFu;
+}
+
+// Block b's depths in element order, W at a time, as FillSampleDepths (tile_renderer.cpp) computes them: the lane's
+// centre depth plus, at a sample's position, its triangle's change in depth from the centre (a quad without a
+// triangle's planes, or with MULTISAMPLE disabled: none).
+template <int W, int S>
+struct ElementDepths {
+  using F = typename V<W>::F;
+  static constexpr int kPatterns = S > W ? S / W : 1;
+  struct Offsets {  // each element's sample offset from the centre
+    F x[kPatterns], y[kPatterns];
+    Offsets() {
+      const auto* pos = SamplePositions(S);
+      for (int p = 0; p < kPatterns; ++p)
+        for (int e = 0; e < W; ++e) {
+          const int s = (p * W + e) % S;
+          x[p][e] = float(pos[s][0]) / 16.0f - 0.5f;
+          y[p][e] = float(pos[s][1]) / 16.0f - 0.5f;
+        }
+    }
+  };
+  const float* centre;         // the lanes' depths at their centres
+  F delta[4][kPatterns];       // each quad's change from the centre at each element's sample
+  ElementDepths(const BlockBuffer& bb, int b, bool at_samples, const Offsets& o) : centre(bb.frag_coord[b][2]) {
+    for (int q = 0; q < 4; ++q) {
+      const TrianglePlanes* p = bb.quad_planes[b][q];
+      const bool at = p && at_samples && ((bb.live[b] >> (4 * q)) & 0xFu);
+      const float dx = at ? p->z.dx : 0.0f, dy = at ? p->z.dy : 0.0f;
+      for (int k = 0; k < kPatterns; ++k) delta[q][k] = (F{} + dx) * o.x[k] + (F{} + dy) * o.y[k];
+    }
+  }
+  F At(int chunk) const {
+    const int l0 = chunk * W / S;
+    return Spread<W, S, F>(centre + l0) + delta[l0 >> 2][chunk % kPatterns];
+  }
+};
+
+// VectorOps' access to the W elements of chunk `chunk` of block b in an interleaved target of S samples.
+template <int W, int S>
+struct ElementIo {
+  using F = typename V<W>::F;
+  using U = typename V<W>::U;
+  const BlockOpsContext& ctx;
+  const RowPlaces &depth_at, &stencil_at, &colour_at;
+  int chunk, b;
+  const ElementDepths<W, S>& sample_z;
+  std::uint8_t* stencil;
+  float* depth;
+  std::uint16_t* depth16;
+  std::uint32_t* pixels;
+  const std::uint32_t* packed;  // without blending: each lane's colour as bytes
+  bool colour;
+  int E0() const { return chunk * W; }
+  int L0() const { return chunk * W / S; }
+  typename V<W>::B Stencil() const { return LoadElements<std::uint8_t, W, S, typename V<W>::B>(stencil, stencil_at, E0()); }
+  void SetStencil(typename V<W>::B v) const { StoreElements<std::uint8_t, W, S>(stencil, stencil_at, E0(), v); }
+  F Depth() const { return LoadElements<float, W, S, F>(depth, depth_at, E0()); }
+  void SetDepth(F v) const { StoreElements<float, W, S>(depth, depth_at, E0(), v); }
+  typename V<W>::S Depth16() const { return LoadElements<std::uint16_t, W, S, typename V<W>::S>(depth16, depth_at, E0()); }
+  void SetDepth16(typename V<W>::S v) const { StoreElements<std::uint16_t, W, S>(depth16, depth_at, E0(), v); }
+  U Pixels() const { return LoadElements<std::uint32_t, W, S, U>(pixels, colour_at, E0()); }
+  void SetPixels(U v) const { StoreElements<std::uint32_t, W, S>(pixels, colour_at, E0(), v); }
+  F Z() const { return ctx.shader_depth ? Spread<W, S, F>(ctx.blocks->Depth(b) + L0()) : sample_z.At(chunk); }
+  U Result(U dst) const {
+    if (!ctx.blend->blend) return (dst & ctx.blend->keep) | Spread<W, S, U>(packed + L0());
+    F color[4];
+    for (int c = 0; c < 4; ++c) color[c] = Spread<W, S, F>(ctx.blocks->Color(b, 0, c) + L0());
+    return Blend8Lanes<W>(*ctx.blend, color, dst);
+  }
+};
+
+// BlockOps into an interleaved target of S samples, W elements at a time.
+template <int W, int S>
+SOFTGL_WIDE void BlockOpsInterleaved(const BlockOpsContext& ctx, int b) {
+  using F = typename V<W>::F;
+  using I = typename V<W>::I;
+  using U = typename V<W>::U;
+  using E = Elements<W, S>;
+  const BlockBuffer& bb = *ctx.blocks;
+  const RenderTarget& t = *ctx.target;
+  const bool colour = ctx.any_color && t.color[0].Present();
+  const std::uint32_t live = bb.live[b];
+  std::uint32_t covered[S];
+  for (int s = 0; s < S; ++s) covered[s] = live & bb.sample_live[b][s];
+  const ElementCoverage<W, S> coverage(covered);
+  static const typename ElementDepths<W, S>::Offsets kOffsets;
+  const ElementDepths<W, S> sample_z(bb, b, ctx.depths->at_samples, kOffsets);
+  // (The context's framebuffer, the only interleaved target, has one pitch for all its buffers.)
+  const RowPlaces depth_at(QuadPlaces(bb, b, t.depth_pitch, S));
+  const RowPlaces stencil_at(QuadPlaces(bb, b, t.stencil_pitch, S));
+  const RowPlaces colour_at(QuadPlaces(bb, b, t.color[0].pitch, S));
+  // Without blending, the lanes' colours as bytes, converted once.
+  alignas(32) std::uint32_t packed[kLanes];
+  if (colour && !ctx.blend->blend) {
+    for (int l0 = 0; l0 < kLanes; l0 += W) {
+      F lanes[4];
+      for (int c = 0; c < 4; ++c) lanes[c] = LoadVec<F>(bb.Color(b, 0, c) + l0);
+      StoreVec(packed + l0, Blend8Lanes<W>(*ctx.blend, lanes, U{}));
+    }
+  }
+  auto* pixels = colour ? reinterpret_cast<std::uint32_t*>(t.color[0].data) : nullptr;
+  for (int chunk = 0; chunk < E::kChunks; ++chunk) {
+    const I go = coverage.Mask(chunk);
+    if (!MaskToBits<W>(go, 0)) continue;
+    const ElementIo<W, S> io{ctx, depth_at, stencil_at, colour_at, chunk, b, sample_z, t.stencil, t.depth, t.depth16,
+                             pixels, packed, colour};
+    VectorOps<W>(ctx, go, io);
+  }
+}
+template <int W>
+SOFTGL_WIDE void BlockOpsInterleavedAny(const BlockOpsContext& ctx, int b) {
+  switch (ctx.samples) {
+    case 2: return BlockOpsInterleaved<W, 2>(ctx, b);
+    case 4: return BlockOpsInterleaved<W, 4>(ctx, b);
+    default: return BlockOpsInterleaved<W, 8>(ctx, b);
   }
 }
 
 // The same for any block, lane by lane: the lanes in `lanes`, with their depths at `z`, into target `t` (a
 // single-sampled target or one sample's plane).
 void LaneOps(const BlockOpsContext& ctx, const Unorm8Blend* per_buffer, int b, const RenderTarget& t,
-             std::uint32_t lanes, const float* z_lanes) {
+             std::uint32_t lanes, const float* z_lanes, int z_stride) {
   const BlockBuffer& bb = *ctx.blocks;
   const FragmentOpsState& st = *ctx.state;
   const StencilFace& face = *ctx.face;
@@ -540,7 +822,7 @@ void LaneOps(const BlockOpsContext& ctx, const Unorm8Blend* per_buffer, int b, c
       continue;
     }
     if (ctx.depth_test) {
-      const float depth = z_lanes[lane];
+      const float depth = z_lanes[lane * z_stride];
       // Depth is clamped to [0, 1] before the test (the depth buffer holds [0, 1]), and converted to a 16-bit
       // buffer's fixed point; NaN fails.
       const float z = std::isnan(depth) ? depth : t.StoredDepth(std::clamp(depth, 0.0f, 1.0f));
@@ -598,12 +880,15 @@ void LaneOps(const BlockOpsContext& ctx, const Unorm8Blend* per_buffer, int b, c
 using BlockOpsFn = void (*)(const BlockOpsContext&, int);
 template <bool kSamples>
 void BlockOpsBase(const BlockOpsContext& ctx, int b) { BlockOps<4, kSamples>(ctx, b); }
+void BlockOpsInterleavedBase(const BlockOpsContext& ctx, int b) { BlockOpsInterleavedAny<4>(ctx, b); }
 #if defined(SOFTGL_HAS_DISPATCH)
 template <bool kSamples>
 SOFTGL_TARGET_AVX2 void BlockOpsAvx2(const BlockOpsContext& ctx, int b) { BlockOps<8, kSamples>(ctx, b); }
+SOFTGL_TARGET_AVX2 void BlockOpsInterleavedAvx2(const BlockOpsContext& ctx, int b) { BlockOpsInterleavedAny<8>(ctx, b); }
 // 8 lanes on AVX-512 too: GCC 12 compiles this unit's 16-lane comparisons lane by lane (see simd.h).
 template <bool kSamples>
 SOFTGL_TARGET_AVX512 void BlockOpsAvx512(const BlockOpsContext& ctx, int b) { BlockOps<8, kSamples>(ctx, b); }
+SOFTGL_TARGET_AVX512 void BlockOpsInterleavedAvx512(const BlockOpsContext& ctx, int b) { BlockOpsInterleavedAny<8>(ctx, b); }
 #endif
 
 // The early depth test of W lanes (from l0) of a block at `at`, fragment depths z, against a depth plane (float,
@@ -665,9 +950,54 @@ SOFTGL_WIDE std::uint32_t EarlyBlockSamples(Enum func, BlockBuffer& bb, const Re
   }
   return bb.live[b] &= any;
 }
+// The same into an interleaved target of S samples, W elements at a time.
+template <int W, int S, bool kDepth16>
+SOFTGL_WIDE std::uint32_t EarlyBlockInterleaved(Enum func, BlockBuffer& bb, const RenderTarget& t, int b,
+                                                const SampleDepths* depths) {
+  using F = typename V<W>::F;
+  using E = Elements<W, S>;
+  std::uint32_t covered[S], kept[S] = {}, any_sample = 0;
+  for (int s = 0; s < S; ++s) any_sample |= covered[s] = bb.live[b] & bb.sample_live[b][s];
+  const RowPlaces depth_at(QuadPlaces(bb, b, t.depth_pitch, S));
+  static const typename ElementDepths<W, S>::Offsets kOffsets;
+  const ElementDepths<W, S> sample_z(bb, b, depths->at_samples, kOffsets);
+  std::uint64_t packed = 0;  // every element is tested; `covered` then keeps the covered ones
+  constexpr std::uint32_t kChunkLanes = (1u << (W >= S ? W / S : 1)) - 1u;
+  for (int chunk = 0; chunk < E::kChunks; ++chunk) {
+    const int e0 = chunk * W;
+    if (!((any_sample >> (e0 / S)) & kChunkLanes)) continue;
+    const F z = sample_z.At(chunk);
+    F zc = z > 0.0f ? z : F{} + 0.0f;
+    zc = zc < 1.0f ? zc : F{} + 1.0f;
+    typename V<W>::I pass;
+    if constexpr (kDepth16) {
+      const auto stored = __builtin_convertvector(
+          (LoadElements<std::uint16_t, W, S, typename V<W>::S>(t.depth16, depth_at, e0)), typename V<W>::I);
+      pass = Compare(func, Depth16Lanes<W>(zc), stored) & (z == z);
+    } else {
+      pass = Compare(func, zc, LoadElements<float, W, S, F>(t.depth, depth_at, e0)) & (z == z);
+    }
+    AddElementBits<W, S>(MaskToBits<W>(pass, 0), e0, packed, kept);
+  }
+  TakeElementBits<W, S>(packed, kept);
+  std::uint32_t any = 0;
+  for (int s = 0; s < S; ++s) any |= bb.sample_live[b][s] = covered[s] & kept[s];
+  return bb.live[b] &= any;
+}
+template <int W, bool kDepth16>
+SOFTGL_WIDE std::uint32_t EarlyBlockInterleavedAny(Enum f, BlockBuffer& bb, const RenderTarget& t, int b,
+                                                   const SampleDepths* d) {
+  switch (t.samples) {
+    case 2: return EarlyBlockInterleaved<W, 2, kDepth16>(f, bb, t, b, d);
+    case 4: return EarlyBlockInterleaved<W, 4, kDepth16>(f, bb, t, b, d);
+    default: return EarlyBlockInterleaved<W, 8, kDepth16>(f, bb, t, b, d);
+  }
+}
 using EarlyBlockFn = std::uint32_t (*)(Enum, BlockBuffer&, const RenderTarget&, int, const SampleDepths*);
 template <int W>
 SOFTGL_WIDE std::uint32_t EarlyBlockEither(Enum f, BlockBuffer& bb, const RenderTarget& t, int b, const SampleDepths* d) {
+  if (d && t.interleaved)
+    return t.depth16 ? EarlyBlockInterleavedAny<W, true>(f, bb, t, b, d) : EarlyBlockInterleavedAny<W, false>(f, bb, t, b, d);
   if (t.depth16) return d ? EarlyBlockSamples<W, true>(f, bb, t, b, d) : EarlyBlock<W, true>(f, bb, t, b);
   return d ? EarlyBlockSamples<W, false>(f, bb, t, b, d) : EarlyBlock<W, false>(f, bb, t, b);
 }
@@ -708,7 +1038,7 @@ bool EarlyTest(const FragmentOpsState& state, BlockBuffer& blocks, const RenderT
             continue;
           }
           for (int s = 0; s < target.samples; ++s)
-            if (((blocks.sample_live[b][s] >> lane) & 1u) && !passes(depths->z[b][s][lane], s, lane))
+            if (((blocks.sample_live[b][s] >> lane) & 1u) && !passes(depths->Lanes(b, s)[lane * depths->Stride()], s, lane))
               blocks.sample_live[b][s] &= ~(1u << lane);
         }
         if (depths) {
@@ -742,15 +1072,16 @@ void BlockOpsAll(const FragmentOpsState& state, const FragmentOpsPlan& plan, con
   ctx.passed = state.occlusion[0] || state.occlusion[1] ? &passed : nullptr;
   static const BlockOpsFn block_ops = SOFTGL_CHOOSE(BlockOps, <false>);
   static const BlockOpsFn block_ops_samples = SOFTGL_CHOOSE(BlockOps, <true>);
+  static const BlockOpsFn block_ops_interleaved = SOFTGL_CHOOSE(BlockOpsInterleaved);
   for (int b = 0; b < blocks.count; ++b) {
     if (!blocks.live[b]) continue;
     if (plan.wide_target && Inside(target, blocks, b)) {
-      (depths ? block_ops_samples : block_ops)(ctx, b);
+      (!depths ? block_ops : target.interleaved ? block_ops_interleaved : block_ops_samples)(ctx, b);
     } else if (!depths) {
-      LaneOps(ctx, plan.blend, b, target, blocks.live[b], PlaneDepths(ctx, b, 0));
+      LaneOps(ctx, plan.blend, b, target, blocks.live[b], PlaneDepths(ctx, b, 0), PlaneStride(ctx));
     } else {
       for (int s = 0; s < target.samples; ++s)
-        LaneOps(ctx, plan.blend, b, target.Sample(s), PlaneLanes(ctx, b, s), PlaneDepths(ctx, b, s));
+        LaneOps(ctx, plan.blend, b, target.Sample(s), PlaneLanes(ctx, b, s), PlaneDepths(ctx, b, s), PlaneStride(ctx));
     }
   }
   for (OcclusionCounter* c : state.occlusion)

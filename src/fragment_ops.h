@@ -165,8 +165,22 @@ void ApplyFragmentOps(const FragmentOpsState& state, const FragmentOpsPlan& plan
 
 /// A multisampled batch's fragment depths at its samples: z[b][s][lane] is the depth of block b's lane at sample s,
 /// on its triangle's depth plane at the sample's position (the fragment stage fills it from the planes).
+/// Into an interleaved target they are in element order instead (`interleaved`): ze[b][lane * samples + s].
+///
+/// The vector operations into an interleaved target compute each element's depth themselves, by the same arithmetic
+/// (so the arrays are filled only where some block may take another path: `filled`).
 struct SampleDepths {
-  alignas(64) float z[BlockBuffer::kCapacity][kMaxSamples][kLanes];
+  bool interleaved = false;
+  bool at_samples = true;  // MULTISAMPLE enabled: at each sample's position (else every sample at the centre)
+  bool filled = true;      // z or ze hold the depths
+  int samples = 1;
+  union {
+    alignas(64) float z[BlockBuffer::kCapacity][kMaxSamples][kLanes];
+    alignas(64) float ze[BlockBuffer::kCapacity][kMaxSamples * kLanes];
+  };
+  /// Sample s of block b's lanes: lane l at Lanes(b, s)[l * Stride()].
+  const float* Lanes(int b, int s) const { return interleaved ? ze[b] + s : z[b][s]; }
+  int Stride() const { return interleaved ? samples : 1; }
 };
 
 /// The early depth test into a multisampled target: each sample a lane covers (blocks.sample_live) tested at its

@@ -57,6 +57,7 @@ int SupportedSamples(int requested) {
 RenderTarget RenderTarget::Sample(int s) const {
   RenderTarget t = *this;
   t.samples = 1;
+  t.interleaved = false;
   for (ColorBuffer& cb : t.color)
     if (cb.Present()) cb.data += cb.plane * std::size_t(s) * std::size_t(cb.Bytes());
   if (depth) t.depth += depth_plane * std::size_t(s);
@@ -64,6 +65,21 @@ RenderTarget RenderTarget::Sample(int s) const {
   if (stencil) t.stencil += stencil_plane * std::size_t(s);
   return t;
 }
+
+RenderTarget RenderTarget::Flat() const {
+  RenderTarget t = *this;
+  t.width = width * samples;
+  t.samples = 1;
+  t.interleaved = false;
+  t.step = 1;
+  for (ColorBuffer& cb : t.color) cb.step = 1;
+  return t;
+}
+
+namespace {
+// Rectangle r of an interleaved target in its Flat() view.
+Rect FlatRect(const Rect& r, int samples) { return Rect{r.x0 * samples, r.y0, r.x1 * samples, r.y1}; }
+}  // namespace
 
 glm::vec4 LoadResolved(const ColorBuffer& cb, int samples, int x, int y) {
   if (IsUnorm8(cb.layout) && !cb.srgb) {  // bytes: their average rounded half up, exactly
@@ -86,13 +102,14 @@ glm::vec4 LoadResolved(const ColorBuffer& cb, int samples, int x, int y) {
 }
 
 void RenderTarget::ClearColor(const Rect& r, const glm::vec4& value, const bool mask[4]) const {
+  if (interleaved) return Flat().ClearColor(FlatRect(r, samples), value, mask);
   if (samples > 1) {
     for (int s = 0; s < samples; ++s) Sample(s).ClearColor(r, value, mask);
     return;
   }
   for (const ColorBuffer& cb : color) {
     if (!cb.Present() || r.Empty()) continue;
-    if (cb.layout == TexelLayout::kUnorm8x4) {
+    if (cb.layout == TexelLayout::kUnorm8x4 && cb.step == 1) {
       // The pixel is converted once, then stored row by row as 32-bit words through the mask.
       std::uint8_t px[4], keep_bytes[4];
       for (int k = 0; k < 4; ++k) {
@@ -129,11 +146,17 @@ void RenderTarget::ClearColor(const Rect& r, const glm::vec4& value, const bool 
 
 void RenderTarget::ClearDepth(const Rect& r, float value) const {
   if (!HasDepth() || r.Empty()) return;
+  if (interleaved) return Flat().ClearDepth(FlatRect(r, samples), value);
   if (samples > 1) {
     for (int s = 0; s < samples; ++s) Sample(s).ClearDepth(r, value);
     return;
   }
   const std::uint16_t value16 = Depth16(value);
+  if (step != 1) {  // one sample of an interleaved target
+    for (int y = r.y0; y < r.y1; ++y)
+      for (int x = r.x0; x < r.x1; ++x) SetDepth(x, y, StoredDepth(value));
+    return;
+  }
   for (int y = r.y0; y < r.y1; ++y) {
     if (depth16) std::fill_n(depth16 + DepthIndex(r.x0, y, 0), r.x1 - r.x0, value16);
     else std::fill_n(depth + DepthIndex(r.x0, y, 0), r.x1 - r.x0, value);
@@ -142,12 +165,13 @@ void RenderTarget::ClearDepth(const Rect& r, float value) const {
 
 void RenderTarget::ClearStencil(const Rect& r, std::uint8_t value, std::uint8_t write_mask) const {
   if (!stencil || r.Empty()) return;
+  if (interleaved) return Flat().ClearStencil(FlatRect(r, samples), value, write_mask);
   if (samples > 1) {
     for (int s = 0; s < samples; ++s) Sample(s).ClearStencil(r, value, write_mask);
     return;
   }
   for (int y = r.y0; y < r.y1; ++y) {
-    if (write_mask == 0xFF) {  // every bit written: a fill of the row
+    if (write_mask == 0xFF && step == 1) {  // every bit written: a fill of the row
       std::memset(&Stencil(r.x0, y), value, std::size_t(r.x1 - r.x0));
       continue;
     }
@@ -197,10 +221,30 @@ void AverageBytes(const std::uint8_t* in, std::size_t plane, std::uint8_t* out, 
     out[i] = std::uint8_t(sum >> kShift);
   }
 }
+// The same for samples side by side: out[4 i + k] = the average of in[4 (S i + s) + k] (n pixels of 4 bytes).
+// Each pixel's S words summed as two pairs of 16-bit halves (bytes 0 and 2, bytes 1 and 3): at most 8 x 255 each.
+template <int S>
+void AverageInterleaved(const std::uint8_t* in, std::uint8_t* out, int n) {
+  constexpr int kShift = S == 2 ? 1 : S == 4 ? 2 : 3;
+  constexpr std::uint32_t kLow = 0x00FF00FFu, kRound = (S / 2) * 0x00010001u;
+  for (int i = 0; i < n; ++i) {
+    std::uint32_t even = kRound, odd = kRound;
+    for (int s = 0; s < S; ++s) {
+      std::uint32_t w;
+      std::memcpy(&w, in + (std::size_t(i) * S + std::size_t(s)) * 4, 4);
+      even += w & kLow;
+      odd += (w >> 8) & kLow;
+    }
+    const std::uint32_t word = ((even >> kShift) & kLow) | (((odd >> kShift) & kLow) << 8);
+    std::memcpy(out + std::size_t(i) * 4, &word, 4);
+  }
+}
 
 // n depth values from src's (sx, sy) on to dst's (dx, dy): copied as they are between buffers of one kind.
 void CopyDepthRow(const RenderTarget& src, const RenderTarget& dst, int sx, int sy, int dx, int dy, int n) {
-  if (src.depth16 && dst.depth16) {
+  if (src.step != 1 || dst.step != 1) {
+    for (int i = 0; i < n; ++i) dst.SetDepth(dx + i, dy, dst.StoredDepth(src.DepthAt(sx + i, sy)));
+  } else if (src.depth16 && dst.depth16) {
     std::memcpy(dst.depth16 + dst.DepthIndex(dx, dy, 0), src.depth16 + src.DepthIndex(sx, sy, 0), 2 * std::size_t(n));
   } else if (src.depth && dst.depth) {
     std::memcpy(dst.depth + dst.DepthIndex(dx, dy, 0), src.depth + src.DepthIndex(sx, sy, 0), 4 * std::size_t(n));
@@ -216,7 +260,7 @@ void CopyDepthRow(const RenderTarget& src, const RenderTarget& dst, int sx, int 
 bool ResolveRows(const RenderTarget& src, const RenderTarget& dst, const BlitRegion& r, int x0, int x1, int y0, int y1,
                  int dx, int dy) {
   const ColorBuffer& from = src.color[0];
-  if (r.color && (!from.Rgba8()))
+  if (r.color && (!from.Rgba8() || (from.step != 1 && !src.interleaved)))
     return false;
   for (const ColorBuffer& cb : dst.color)
     if (r.color && cb.Present() && !cb.Rgba8()) return false;
@@ -228,6 +272,14 @@ bool ResolveRows(const RenderTarget& src, const RenderTarget& dst, const BlitReg
       for (const ColorBuffer& cb : dst.color) {
         if (!cb.Present()) continue;
         std::uint8_t* out = cb.At(x0, y);
+        if (src.interleaved) {
+          switch (src.samples) {
+            case 2: AverageInterleaved<2>(in, out, n); break;
+            case 4: AverageInterleaved<4>(in, out, n); break;
+            default: AverageInterleaved<8>(in, out, n); break;
+          }
+          continue;
+        }
         switch (src.samples) {
           case 2: AverageBytes<2>(in, plane_bytes, out, 4 * n); break;
           case 4: AverageBytes<4>(in, plane_bytes, out, 4 * n); break;
@@ -236,7 +288,11 @@ bool ResolveRows(const RenderTarget& src, const RenderTarget& dst, const BlitReg
       }
     }
     if (r.depth) CopyDepthRow(src, dst, x0 - dx, y - dy, x0, y, n);
-    if (r.stencil) std::memcpy(&dst.Stencil(x0, y), &src.Stencil(x0 - dx, y - dy), std::size_t(n));
+    if (r.stencil && src.step == 1 && dst.step == 1) {
+      std::memcpy(&dst.Stencil(x0, y), &src.Stencil(x0 - dx, y - dy), std::size_t(n));
+    } else if (r.stencil) {
+      for (int i = 0; i < n; ++i) dst.Stencil(x0 + i, y) = src.Stencil(x0 - dx + i, y - dy);
+    }
   }
   return true;
 }
@@ -297,6 +353,12 @@ void Blit(const RenderTarget& src, const RenderTarget& dst, const BlitRegion& r)
   }
 }
 
+int Framebuffer::RowPitch(int w) const {
+  if (samples <= 1) return w;
+  const int lines = (w * samples + 15) / 16;
+  return 16 * (lines % 2 ? lines : lines + 1);
+}
+
 bool Framebuffer::Allocate(int w, int h) {
   width = height = 0;
   color.clear();
@@ -304,7 +366,7 @@ bool Framebuffer::Allocate(int w, int h) {
   stencil.clear();
   resolved = {};
   sample_tiles.Reset(0, 0);
-  const std::size_t n = std::size_t(w) * std::size_t(h), ns = n * std::size_t(samples);
+  const std::size_t n = std::size_t(w) * std::size_t(h), ns = std::size_t(RowPitch(w)) * std::size_t(h);
   try {
     color.assign(ns * std::size_t(BytesPerTexel(layout)), 0);
     if (depth16) depth16_data.assign(ns, 65535);
@@ -330,6 +392,8 @@ bool Framebuffer::Allocate(int w, int h) {
     sample_tiles.Reset(w, h);
     RenderTarget& out = sample_tiles.resolved;
     out = Samples(false).Sample(0);
+    out.step = out.color[0].step = 1;
+    out.color[0].pitch = out.depth_pitch = out.stencil_pitch = w;
     out.color[0].data = resolved.color.data();
     if (depth16) out.depth16 = resolved.depth16_data.data();
     else out.depth = resolved.depth.data();
@@ -361,14 +425,15 @@ RenderTarget Framebuffer::Samples(bool srgb_enabled) {
     t.color[0].data = color.data();
     t.color[0].layout = layout;
     t.color[0].srgb = srgb && srgb_enabled;
-    t.color[0].pitch = width;
     if (depth16) t.depth16 = depth16_data.data();
     else t.depth = depth.data();
-    t.depth_pitch = width;
     t.stencil = stencil.data();
-    t.stencil_pitch = width;
     t.samples = samples;
-    t.color[0].plane = t.depth_plane = t.stencil_plane = std::size_t(width) * std::size_t(height);
+    // Samples side by side: sample s of pixel (x, y) at y (width samples) + x samples + s.
+    t.interleaved = samples > 1;
+    t.color[0].pitch = t.depth_pitch = t.stencil_pitch = RowPitch(width);
+    t.color[0].step = t.step = samples;
+    t.color[0].plane = t.depth_plane = t.stencil_plane = 1;
   }
   return t;
 }
@@ -385,8 +450,20 @@ RenderTarget Framebuffer::ReadTarget(bool srgb_enabled, unsigned buffers) {
 namespace {
 
 // Every sample of rectangle r of colour buffer cb (`samples` planes) set to one texel's bytes.
-void FillTexels(const ColorBuffer& cb, int samples, const Rect& r, const std::uint8_t* texel) {
+void FillTexels(ColorBuffer cb, int samples, Rect r, const std::uint8_t* texel) {
+  if (samples > 1 && cb.step == samples && cb.plane == 1) {  // side by side: runs of every sample
+    r = FlatRect(r, samples);
+    samples = 1;
+    cb.step = 1;
+  }
   const std::size_t bytes = std::size_t(cb.Bytes());
+  if (cb.step != 1) {
+    for (int s = 0; s < samples; ++s)
+      for (int y = r.y0; y < r.y1; ++y)
+        for (int x = r.x0; x < r.x1; ++x)
+          std::memcpy(cb.At(x, y) + cb.plane * std::size_t(s) * bytes, texel, bytes);
+    return;
+  }
   std::uint8_t run[16 * 16];  // 16 texels of at most 16 bytes
   for (int k = 0; k < 16; ++k) std::memcpy(run + std::size_t(k) * bytes, texel, bytes);
   const int width = r.x1 - r.x0;

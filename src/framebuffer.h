@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <new>
 #include <vector>
 
 #include <softgl/shader.h>
@@ -25,10 +26,13 @@ struct ColorBuffer {
   // linear, Load decodes them (OpenGL 4.6, section 17.3.7). Else an sRGB buffer's bytes are taken as they are.
   bool srgb = false;
   std::size_t plane = 0;  // texels from one sample's plane to the next (a multisampled buffer)
+  int step = 1;           // texels from one pixel to the next in a row (samples side by side: the sample count)
   bool Present() const { return data != nullptr; }
   bool Rgba8() const { return layout == TexelLayout::kUnorm8x4 && !rgb_only && !srgb; }
   int Bytes() const { return BytesPerTexel(layout); }
-  std::size_t Index(int x, int y) const { return std::size_t(y) * std::size_t(pitch) + std::size_t(x); }
+  std::size_t Index(int x, int y) const {
+    return std::size_t(y) * std::size_t(pitch) + std::size_t(x) * std::size_t(step);
+  }
   std::uint8_t* At(int x, int y) const { return data + Index(x, y) * std::size_t(Bytes()); }
   /// The pixel as RGBA floats (fixed point divided by 255, sRGB decoded when `srgb`; channels the format lacks read
   /// (0, 0, 0, 1)).
@@ -47,14 +51,20 @@ int SupportedSamples(int requested);
 struct SampleTiles;
 
 /// The buffers drawing writes to; color[i] receives fragment output i (draw buffers already applied).
-/// A multisampled target keeps each buffer as `samples` planes of width x height, one per sample, one after
-/// another; Sample(s) is the single-sampled view of plane s.
+/// A multisampled target keeps each buffer either as `samples` planes of width x height, one per sample, one after
+/// another (a framebuffer object's attachments), or with each pixel's samples side by side (`interleaved`, the
+/// context's own framebuffer: plane 1, step and row pitch in samples). Sample(s) is the single-sampled view of
+/// sample s either way (strided when interleaved).
 struct RenderTarget {
   // The context's multisampled framebuffer as the tile renderer draws into it: its tiles' deferred clears and
   // resolve state (see SampleTiles). Null for every other target, and for every other user of this one.
   SampleTiles* tiles = nullptr;
   int width = 0, height = 0;
   int samples = 1;                  // 1, 2, 4 or 8
+  // Every buffer holds a pixel's samples side by side, one after another: values (x, y, s) at y pitch + x samples
+  // + s, so that a quad row's samples are one run (the tile renderer's vector operations read them so).
+  bool interleaved = false;
+  int step = 1;                     // depth and stencil values from one pixel to the next in a row
   std::size_t depth_plane = 0;      // depth values from one sample's plane to the next
   std::size_t stencil_plane = 0;    // stencil values from one sample's plane to the next
   ColorBuffer color[kMaxColorOutputs];
@@ -68,7 +78,7 @@ struct RenderTarget {
   Rect Bounds() const { return Rect{0, 0, width, height}; }
   bool HasDepth() const { return depth || depth16; }
   std::size_t DepthIndex(int x, int y, int s) const {
-    return depth_plane * std::size_t(s) + std::size_t(y) * std::size_t(depth_pitch) + std::size_t(x);
+    return depth_plane * std::size_t(s) + std::size_t(y) * std::size_t(depth_pitch) + std::size_t(x) * std::size_t(step);
   }
   /// The depth stored at (x, y) of sample plane s, in [0, 1].
   float DepthAt(int x, int y, int s = 0) const {
@@ -85,11 +95,14 @@ struct RenderTarget {
   /// d in [0, 1] to 16 bits: round(d * 65535), ties to even.
   static std::uint16_t Depth16(float d) { return std::uint16_t(std::nearbyint(d * 65535.0f)); }
   std::uint8_t& Stencil(int x, int y) const {
-    return stencil[std::size_t(y) * std::size_t(stencil_pitch) + std::size_t(x)];
+    return stencil[std::size_t(y) * std::size_t(stencil_pitch) + std::size_t(x) * std::size_t(step)];
   }
 
   /// Plane s of every buffer, as a single-sampled target.
   RenderTarget Sample(int s) const;
+  /// An interleaved target as a single-sampled one of width x samples, each sample a pixel of its own: sample s of
+  /// pixel x is pixel x samples + s of the row (for the operations that fill runs of every sample).
+  RenderTarget Flat() const;
 
   /// Clears rectangle r (inside the target) of every colour buffer through `mask` (every sample).
   void ClearColor(const Rect& r, const glm::vec4& value, const bool mask[4]) const;
@@ -142,8 +155,25 @@ struct SampleTiles {
   void Resolve(const RenderTarget& target, int t, unsigned buffers);
 };
 
-/// The context's own framebuffer. With samples > 1 the buffers drawing writes hold `samples` planes, and
-/// `resolved` the single-sampled image reads see, made by Resolve.
+/// Storage whose first value starts a 64-byte cache line (so that a row whose pitch is a whole number of lines
+/// starts one too, and the vector operations' runs never straddle two).
+template <class T>
+struct LineAligned {
+  using value_type = T;
+  static constexpr std::align_val_t kAlign{64};
+  LineAligned() = default;
+  template <class U>
+  LineAligned(const LineAligned<U>&) {}
+  T* allocate(std::size_t n) { return static_cast<T*>(::operator new(n * sizeof(T), kAlign)); }
+  void deallocate(T* p, std::size_t) { ::operator delete(p, kAlign); }
+  template <class U>
+  bool operator==(const LineAligned<U>&) const { return true; }
+};
+template <class T>
+using LineVector = std::vector<T, LineAligned<T>>;
+
+/// The context's own framebuffer. With samples > 1 the buffers drawing writes hold each pixel's `samples` samples
+/// side by side (an interleaved RenderTarget), and `resolved` the single-sampled image reads see, made by Resolve.
 struct Framebuffer {
   int width = 0;
   int height = 0;
@@ -151,15 +181,15 @@ struct Framebuffer {
   TexelLayout layout = TexelLayout::kUnorm8x4;  // of the colour buffer: kUnorm8x4 (RGBA8) or kUnorm565 (RGB565)
   bool srgb = false;  // the colour buffer is SRGB8_ALPHA8: it converts while FRAMEBUFFER_SRGB is enabled
   bool depth16 = false;  // the depth buffer is DEPTH_COMPONENT16 (`depth16_data`), else float (`depth`)
-  std::vector<std::uint8_t> color;  // [height][width][bytes of the layout]
-  std::vector<float> depth;         // [height][width]
-  std::vector<std::uint16_t> depth16_data;
-  std::vector<std::uint8_t> stencil;
+  LineVector<std::uint8_t> color;  // [height][RowPitch: width][samples][bytes of the layout]
+  LineVector<float> depth;         // [height][RowPitch: width][samples]
+  LineVector<std::uint16_t> depth16_data;
+  LineVector<std::uint8_t> stencil;
   struct Resolved {
-    std::vector<std::uint8_t> color;
-    std::vector<float> depth;
-    std::vector<std::uint16_t> depth16_data;
-    std::vector<std::uint8_t> stencil;
+    LineVector<std::uint8_t> color;
+    LineVector<float> depth;
+    LineVector<std::uint16_t> depth16_data;
+    LineVector<std::uint8_t> stencil;
   } resolved;  // samples > 1: the image as read (colour the samples' average, depth and stencil sample 0's)
   SampleTiles sample_tiles;  // samples > 1: deferred clears and what of `resolved` is out of date
 
@@ -169,6 +199,10 @@ struct Framebuffer {
   /// The buffers as they are: no deferred clear stored, nothing marked.
   RenderTarget Samples(bool srgb_enabled);
   std::size_t Index(int x, int y) const { return std::size_t(y) * std::size_t(width) + std::size_t(x); }
+  /// Values from one row to the next in the buffers drawing writes, for a row of w pixels: w samples, rounded up
+  /// to an odd number of 16 (an odd number of 64-byte lines for 4-byte values), so that a tile's rows fall in
+  /// different cache sets (rows a multiple of 4 KiB apart would all compete for the same few).
+  int RowPitch(int w) const;
   /// The buffers as a render target; `srgb_enabled`: FRAMEBUFFER_SRGB (an sRGB colour buffer then converts).
   /// Multisampled, the samples hold every deferred clear (stored now), and the whole resolved image counts as out
   /// of date, since the caller may write them.

@@ -55,9 +55,11 @@ Rect Intersect(const Rect& a, const Rect& b) {
 
 // The depth of each sample of a batch's lanes: the pixel centre's plus the change of the triangle's depth plane from
 // the centre to the sample (a line's or point's fragments have one depth; with MULTISAMPLE disabled, `at_samples`
-// false, every sample takes the centre's).
+// false, every sample takes the centre's); in element order into an interleaved target, where the vector operations
+// compute the same depths themselves (ElementDepths in fragment_ops.cpp), so that only a batch with some block off
+// their path needs them (`fill`).
 template <int S>
-void FillSampleDepths(const BlockBuffer& blocks, bool at_samples, SampleDepths& depths) {
+void FillSampleDepths(const BlockBuffer& blocks, bool at_samples, bool interleaved, SampleDepths& depths) {
   const auto* pos = SamplePositions(S);
   float ox[S], oy[S];
   for (int s = 0; s < S; ++s) {
@@ -72,15 +74,35 @@ void FillSampleDepths(const BlockBuffer& blocks, bool at_samples, SampleDepths& 
       float delta[S] = {};
       if (p && at_samples && ((blocks.live[b] >> (4 * q)) & 0xFu))
         for (int s = 0; s < S; ++s) delta[s] = p->z.dx * ox[s] + p->z.dy * oy[s];
-      for (int s = 0; s < S; ++s) StoreVec(&depths.z[b][s][4 * q], centre + delta[s]);
+      if (!interleaved) {
+        for (int s = 0; s < S; ++s) StoreVec(&depths.z[b][s][4 * q], centre + delta[s]);
+        continue;
+      }
+      float* ze = &depths.ze[b][4 * q * S];  // the quad's lanes, each with its S samples
+      if constexpr (S == 2) {
+        const F4 d{delta[0], delta[1], delta[0], delta[1]};
+        StoreVec(ze, __builtin_shufflevector(centre, centre, 0, 0, 1, 1) + d);
+        StoreVec(ze + 4, __builtin_shufflevector(centre, centre, 2, 2, 3, 3) + d);
+      } else {
+        for (int g = 0; g < S / 4; ++g) {
+          const F4 d = LoadVec<F4>(delta + 4 * g);
+          for (int k = 0; k < 4; ++k) StoreVec(ze + k * S + 4 * g, (F4{} + centre[k]) + d);
+        }
+      }
     }
   }
 }
-void FillSampleDepths(const BlockBuffer& blocks, int samples, bool at_samples, SampleDepths& depths) {
+void FillSampleDepths(const BlockBuffer& blocks, int samples, bool at_samples, bool interleaved, bool fill,
+                      SampleDepths& depths) {
+  depths.interleaved = interleaved;
+  depths.at_samples = at_samples;
+  depths.samples = samples;
+  depths.filled = fill;
+  if (!fill) return;
   switch (samples) {
-    case 2: return FillSampleDepths<2>(blocks, at_samples, depths);
-    case 4: return FillSampleDepths<4>(blocks, at_samples, depths);
-    default: return FillSampleDepths<8>(blocks, at_samples, depths);
+    case 2: return FillSampleDepths<2>(blocks, at_samples, interleaved, depths);
+    case 4: return FillSampleDepths<4>(blocks, at_samples, interleaved, depths);
+    default: return FillSampleDepths<8>(blocks, at_samples, interleaved, depths);
   }
 }
 
@@ -109,7 +131,10 @@ struct FragmentStage {
     const int samples = target->samples;
     const FragmentOpsState& ops = draw->ops;
     SampleDepths depths;
-    FillSampleDepths(blocks, samples, ops.multisample.multisample, depths);
+    // Into the context's framebuffer (interleaved), every block of an even-sized RGBA8 target takes the vector
+    // operations, which compute the depths themselves.
+    const bool vector_only = target->interleaved && plan->wide_target && ((target->width | target->height) & 1) == 0;
+    FillSampleDepths(blocks, samples, ops.multisample.multisample, target->interleaved, !vector_only, depths);
     // Centroid varyings: each lane's first covered sample where the rasterizer did not cover them all.
     std::int8_t centroid[BlockBuffer::kCapacity][kLanes];
     if (has_centroid && ops.multisample.multisample) {

@@ -635,8 +635,12 @@ TEST_CASE("SampleTiles: a deferred clear fills the resolve without its samples u
   const detail::RenderTarget t = fb.FrameTarget();
   CHECK(t.tiles == &tiles);
   CHECK(fb.Target().tiles == nullptr);
-  const std::size_t plane = 100 * 70;
-  auto sample_red = [&](int x, int y, int s) { return fb.color[(plane * std::size_t(s) + std::size_t(y * 100 + x)) * 4]; };
+  // The samples as they are (side by side: sample s of pixel (x, y) at (y 100 + x) 4 + s).
+  auto sample = [&](int s) { return fb.Samples(false).Sample(s); };
+  auto sample_red = [&](int x, int y, int s) { return sample(s).color[0].At(x, y)[0]; };
+  const std::size_t pitch = std::size_t(t.color[0].pitch);
+  CHECK(pitch >= 400);
+  CHECK(&fb.color[(66 * pitch + 80 * 4 + 3) * 4] == sample(3).color[0].At(80, 66));
 
   tiles.NoteColor(t, 3, glm::vec4(1, 0, 0, 1));
   tiles.NoteDepth(3, 0.5f);
@@ -656,11 +660,12 @@ TEST_CASE("SampleTiles: a deferred clear fills the resolve without its samples u
   for (int s = 0; s < 4; ++s) CHECK(sample_red(99, 69, s) == 255);
   CHECK(sample_red(63, 69, 0) == 0);  // another tile
   CHECK(tiles.tiles[3].cleared == (detail::kDepthBit | detail::kStencilBit));
-  CHECK(fb.depth[plane * 2 + std::size_t(66 * 100 + 80)] == 1.0f);
+  CHECK(sample(2).DepthAt(80, 66) == 1.0f);
   // Target stores every deferred clear, and takes the whole resolved image as out of date.
   fb.Target();
-  CHECK(fb.depth[plane * 2 + std::size_t(66 * 100 + 80)] == 0.5f);
-  CHECK(fb.stencil[plane * 3 + std::size_t(66 * 100 + 80)] == 7);
+  CHECK(sample(2).DepthAt(80, 66) == 0.5f);
+  CHECK(sample(3).Stencil(80, 66) == 7);
+  CHECK(fb.stencil[66 * pitch + 80 * 4 + 3] == 7);
   for (const detail::SampleTiles::Tile& tile : tiles.tiles) {
     CHECK(tile.cleared == 0);
     CHECK(tile.stale == detail::kAllBuffers);

@@ -909,3 +909,112 @@ TEST_CASE("multisample: deferred clears of the context's framebuffer read as cle
     CHECK(Pixel(image, 120, 90) == std::array<int, 4>{255, 0, 255, 255});
   }
 }
+
+namespace {
+
+// A solid colour whose depth the shader writes (gl_FragDepth): its window depth pulled towards 0.3.
+struct SolidDepthShader : softgl::Shader<SolidDepthShader, NoVaryings> {
+  static constexpr bool kWritesDepth = true;
+  glm::vec4 color{1.0f};
+  void Vertex(const softgl::VertexIn& in, softgl::VertexOut<NoVaryings>& out) const { out.position = in.attrib[0]; }
+  bool Fragment(const softgl::FragmentIn<NoVaryings>& in, softgl::FragmentOut& out) const {
+    out.color[0] = color;
+    out.depth = 0.3f + 0.5f * (in.frag_coord.z - 0.3f);
+    return true;
+  }
+};
+
+// Random overlapping triangles into whatever is bound: depth-tested, every third blended, a run with MULTISAMPLE
+// disabled, a run whose shader writes the depth, each pass counting into the stencil (when `stencil`); then a
+// cover pass where the stencil is 2 and a line across. Colours are multiples of 1/255.
+void DrawMixedScene(Context& gl, int w, int h, bool stencil) {
+  SolidShader shader;
+  SolidDepthShader depth_shader;
+  gl.Enable(DEPTH_TEST);
+  gl.DepthFunc(LEQUAL);
+  if (stencil) {
+    gl.Enable(STENCIL_TEST);
+    gl.StencilFunc(ALWAYS, 0, 0xFF);
+    gl.StencilOp(KEEP, KEEP, INCR);
+  }
+  gl.BlendFunc(SRC_ALPHA, ONE_MINUS_SRC_ALPHA);
+  std::mt19937 rng(23);
+  std::uniform_real_distribution<float> pos(-4.0f, float(w) + 8.0f), depth(-0.3f, 0.9f);
+  std::uniform_int_distribution<int> byte(0, 255);
+  for (int t = 0; t < 60; ++t) {
+    const glm::vec4 colour = glm::vec4(float(byte(rng)), float(byte(rng)), float(byte(rng)), 128.0f) / 255.0f;
+    const glm::vec2 a(pos(rng), pos(rng)), b(pos(rng), pos(rng)), c(pos(rng), pos(rng));
+    const float za = depth(rng), zb = depth(rng), zc = depth(rng);
+    if (t % 3 == 0) gl.Enable(BLEND);
+    if (t == 20) gl.Disable(MULTISAMPLE);
+    if (t == 28) gl.Enable(MULTISAMPLE);
+    MakeVertexArray(gl, {WindowToClip(a.x, a.y, w, h, za), WindowToClip(b.x, b.y, w, h, zb), WindowToClip(c.x, c.y, w, h, zc)});
+    if (t >= 40 && t < 48) {
+      depth_shader.color = colour;
+      gl.UseProgram(depth_shader);
+    } else {
+      shader.color = colour;
+      gl.UseProgram(shader);
+    }
+    gl.DrawArrays(TRIANGLES, 0, 3);
+    gl.Disable(BLEND);
+  }
+  shader.color = glm::vec4(0.0f, 0.0f, 1.0f, 1.0f);
+  gl.Disable(DEPTH_TEST);
+  if (stencil) {
+    gl.StencilFunc(EQUAL, 2, 0xFF);
+    gl.StencilOp(KEEP, KEEP, KEEP);
+    DrawWindowTriangle(gl, shader, {-40, -40}, {90, -40}, {-40, 90}, w, h);
+    DrawWindowTriangle(gl, shader, {-40, 90}, {90, -40}, {90, 90}, w, h);
+    gl.Disable(STENCIL_TEST);
+  }
+  shader.color = glm::vec4(1.0f, 1.0f, 0.0f, 1.0f);
+  MakeVertexArray(gl, {WindowToClip(1.3f, 2.1f, w, h), WindowToClip(float(w) - 2.6f, float(h) - 5.2f, w, h)});
+  gl.UseProgram(shader);
+  gl.DrawArrays(LINES, 0, 2);
+}
+
+}  // namespace
+
+TEST_CASE("multisample: the context's framebuffer (samples side by side) draws as a framebuffer object (planes)",
+          "[multisample]") {
+  // The context's own multisampled framebuffer keeps each pixel's samples together and has its own vector
+  // operations (early test, depth, stencil, blending); a framebuffer object keeps a plane per sample. The same
+  // scene into each must resolve to the same bytes: at 2, 4 and 8 samples, at an even size (every block on the
+  // vector path) and an odd one (edge blocks lane by lane), with float and 16-bit depth.
+  for (int samples : {2, 4, 8})
+    for (int size : {32, 31})
+      for (bool depth16 : {false, true}) {
+        CAPTURE(samples, size, depth16);
+        Context::Options options = Samples(samples);
+        if (depth16) options.depth_format = DEPTH_COMPONENT16;
+        Context own(size, size, options);
+        own.ClearColor(0, 0, 0, 1);
+        own.Clear(COLOR_BUFFER_BIT | DEPTH_BUFFER_BIT | STENCIL_BUFFER_BIT);
+        DrawMixedScene(own, size, size, !depth16);
+        std::vector<std::uint8_t> a(std::size_t(size * size) * 4), b(a.size());
+        own.ReadPixels(0, 0, size, size, RGBA, UNSIGNED_BYTE, a.data());
+
+        Context gl(size, size, Samples(0));
+        MultisampleFbo fbo(gl, samples, size, size);
+        if (depth16) {  // the depth a 16-bit renderbuffer, no stencil
+          const std::uint32_t rb = gl.GenRenderbuffer();
+          gl.BindRenderbuffer(RENDERBUFFER, rb);
+          gl.RenderbufferStorageMultisample(RENDERBUFFER, samples, DEPTH_COMPONENT16, size, size);
+          gl.FramebufferRenderbuffer(FRAMEBUFFER, DEPTH_STENCIL_ATTACHMENT, RENDERBUFFER, 0);
+          gl.FramebufferRenderbuffer(FRAMEBUFFER, DEPTH_ATTACHMENT, RENDERBUFFER, rb);
+          REQUIRE(gl.CheckFramebufferStatus(FRAMEBUFFER) == FRAMEBUFFER_COMPLETE);
+        }
+        fbo.Clear(COLOR_BUFFER_BIT | DEPTH_BUFFER_BIT | STENCIL_BUFFER_BIT);
+        DrawMixedScene(gl, size, size, !depth16);
+        fbo.Resolve();
+        gl.ReadPixels(0, 0, size, size, RGBA, UNSIGNED_BYTE, b.data());
+        CHECK(own.GetError() == NO_ERROR);
+        CHECK(gl.GetError() == NO_ERROR);
+        int differ = 0, mixed = 0;
+        for (std::size_t i = 0; i < a.size(); ++i) differ += a[i] != b[i];
+        for (std::size_t i = 0; i < a.size(); i += 4) mixed += a[i + 2] > 0 && a[i + 2] < 255 && a[i] > 0;
+        CHECK(differ == 0);
+        CHECK(mixed > 10);  // edges and blending left colours between
+      }
+}
