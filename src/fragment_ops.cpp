@@ -512,32 +512,32 @@ struct PlaneIo {
   const F* color;  // the lanes' colour channels
   U packed;        // without blending: the colour's bytes
   bool colour;
-  std::uint32_t live() const { return ctx.blocks->live[b]; }
-  std::size_t Plane(std::size_t plane) const { return kSamples ? plane * std::size_t(s) : 0; }
-  typename V<W>::B Stencil() const {
+  SOFTGL_WIDE std::uint32_t live() const { return ctx.blocks->live[b]; }
+  SOFTGL_WIDE std::size_t Plane(std::size_t plane) const { return kSamples ? plane * std::size_t(s) : 0; }
+  SOFTGL_WIDE typename V<W>::B Stencil() const {
     return LoadQuads<std::uint8_t, W, typename V<W>::B>(t.stencil + Plane(t.stencil_plane), stencil_at, l0);
   }
-  void SetStencil(typename V<W>::B v) const {
+  SOFTGL_WIDE void SetStencil(typename V<W>::B v) const {
     StoreQuads<std::uint8_t, W>(t.stencil + Plane(t.stencil_plane), stencil_at, live(), l0, v);
   }
-  F Depth() const { return LoadQuads<float, W, F>(t.depth + Plane(t.depth_plane), depth_at, l0); }
-  void SetDepth(F v) const { StoreQuads<float, W>(t.depth + Plane(t.depth_plane), depth_at, live(), l0, v); }
-  typename V<W>::S Depth16() const {
+  SOFTGL_WIDE F Depth() const { return LoadQuads<float, W, F>(t.depth + Plane(t.depth_plane), depth_at, l0); }
+  SOFTGL_WIDE void SetDepth(F v) const { StoreQuads<float, W>(t.depth + Plane(t.depth_plane), depth_at, live(), l0, v); }
+  SOFTGL_WIDE typename V<W>::S Depth16() const {
     return LoadQuads<std::uint16_t, W, typename V<W>::S>(t.depth16 + Plane(t.depth_plane), depth_at, l0);
   }
-  void SetDepth16(typename V<W>::S v) const {
+  SOFTGL_WIDE void SetDepth16(typename V<W>::S v) const {
     StoreQuads<std::uint16_t, W>(t.depth16 + Plane(t.depth_plane), depth_at, live(), l0, v);
   }
-  std::uint32_t* PixelsAt() const { return reinterpret_cast<std::uint32_t*>(t.color[0].data) + Plane(t.color[0].plane); }
-  U Pixels() const { return LoadQuads<std::uint32_t, W, U>(PixelsAt(), colour_at, l0); }
-  void SetPixels(U v) const { StoreQuads<std::uint32_t, W>(PixelsAt(), colour_at, live(), l0, v); }
-  F Z() const {
+  SOFTGL_WIDE std::uint32_t* PixelsAt() const { return reinterpret_cast<std::uint32_t*>(t.color[0].data) + Plane(t.color[0].plane); }
+  SOFTGL_WIDE U Pixels() const { return LoadQuads<std::uint32_t, W, U>(PixelsAt(), colour_at, l0); }
+  SOFTGL_WIDE void SetPixels(U v) const { StoreQuads<std::uint32_t, W>(PixelsAt(), colour_at, live(), l0, v); }
+  SOFTGL_WIDE F Z() const {
     const BlockBuffer& bb = *ctx.blocks;
     if (ctx.shader_depth) return LoadVec<F>(bb.Depth(b) + l0);
     if constexpr (kSamples) return LoadVec<F>(ctx.depths->z[b][s] + l0);
     return LoadVec<F>(bb.frag_coord[b][2] + l0);
   }
-  U Result(U dst) const { return ctx.blend->blend ? Blend8Lanes<W>(*ctx.blend, color, dst) : (dst & ctx.blend->keep) | packed; }
+  SOFTGL_WIDE U Result(U dst) const { return ctx.blend->blend ? Blend8Lanes<W>(*ctx.blend, color, dst) : (dst & ctx.blend->keep) | packed; }
 };
 
 // The per-fragment operations on block b (inside the target, colour buffer 0 RGBA8 or none, no other colour
@@ -587,12 +587,12 @@ struct Elements {
 // Where each of a block's eight quad rows starts (quad q's rows 2 q and 2 q + 1), from its quad places.
 struct RowPlaces {
   std::size_t at[8];
-  explicit RowPlaces(const QuadPlaces& q) {
+  SOFTGL_WIDE explicit RowPlaces(const QuadPlaces& q) {
     for (int r = 0; r < 8; ++r) at[r] = q.at[r >> 1] + std::size_t(r & 1) * q.pitch;
   }
   // Where piece k of the W elements from e0 starts.
   template <int W, int S>
-  std::size_t At(int e0, int k) const {
+  SOFTGL_WIDE std::size_t At(int e0, int k) const {
     using E = Elements<W, S>;
     const int e = e0 + k * E::kPiece;
     return at[e / E::kRun] + std::size_t(e % E::kRun);
@@ -652,12 +652,12 @@ struct ElementCoverage {
   static constexpr int kPatterns = S > W ? S / W : 1;  // chunks repeat their samples every kPatterns
   I bits[kPatterns];  // element e: covered[sample of e] (the lane bits of its sample)
   I lane_of;          // element e's lane, less the chunk's first
-  explicit ElementCoverage(const std::uint32_t* covered) {
+  SOFTGL_WIDE explicit ElementCoverage(const std::uint32_t* covered) {
     for (int p = 0; p < kPatterns; ++p)
       for (int e = 0; e < W; ++e) bits[p][e] = std::int32_t(covered[(p * W + e) % S]);
     for (int e = 0; e < W; ++e) lane_of[e] = e / S;
   }
-  I Mask(int chunk) const {
+  SOFTGL_WIDE I Mask(int chunk) const {
     const int e0 = chunk * W;
     return ((bits[chunk % kPatterns] >> (lane_of + e0 / S)) & 1) != 0;
   }
@@ -712,7 +712,7 @@ struct ElementDepths {
   };
   const float* centre;         // the lanes' depths at their centres
   F delta[4][kPatterns];       // each quad's change from the centre at each element's sample
-  ElementDepths(const BlockBuffer& bb, int b, bool at_samples, const Offsets& o) : centre(bb.frag_coord[b][2]) {
+  SOFTGL_WIDE ElementDepths(const BlockBuffer& bb, int b, bool at_samples, const Offsets& o) : centre(bb.frag_coord[b][2]) {
     for (int q = 0; q < 4; ++q) {
       const TrianglePlanes* p = bb.quad_planes[b][q];
       const bool at = p && at_samples && ((bb.live[b] >> (4 * q)) & 0xFu);
@@ -720,7 +720,7 @@ struct ElementDepths {
       for (int k = 0; k < kPatterns; ++k) delta[q][k] = (F{} + dx) * o.x[k] + (F{} + dy) * o.y[k];
     }
   }
-  F At(int chunk) const {
+  SOFTGL_WIDE F At(int chunk) const {
     const int l0 = chunk * W / S;
     return Spread<W, S, F>(centre + l0) + delta[l0 >> 2][chunk % kPatterns];
   }
@@ -741,18 +741,18 @@ struct ElementIo {
   std::uint32_t* pixels;
   const std::uint32_t* packed;  // without blending: each lane's colour as bytes
   bool colour;
-  int E0() const { return chunk * W; }
-  int L0() const { return chunk * W / S; }
-  typename V<W>::B Stencil() const { return LoadElements<std::uint8_t, W, S, typename V<W>::B>(stencil, stencil_at, E0()); }
-  void SetStencil(typename V<W>::B v) const { StoreElements<std::uint8_t, W, S>(stencil, stencil_at, E0(), v); }
-  F Depth() const { return LoadElements<float, W, S, F>(depth, depth_at, E0()); }
-  void SetDepth(F v) const { StoreElements<float, W, S>(depth, depth_at, E0(), v); }
-  typename V<W>::S Depth16() const { return LoadElements<std::uint16_t, W, S, typename V<W>::S>(depth16, depth_at, E0()); }
-  void SetDepth16(typename V<W>::S v) const { StoreElements<std::uint16_t, W, S>(depth16, depth_at, E0(), v); }
-  U Pixels() const { return LoadElements<std::uint32_t, W, S, U>(pixels, colour_at, E0()); }
-  void SetPixels(U v) const { StoreElements<std::uint32_t, W, S>(pixels, colour_at, E0(), v); }
-  F Z() const { return ctx.shader_depth ? Spread<W, S, F>(ctx.blocks->Depth(b) + L0()) : sample_z.At(chunk); }
-  U Result(U dst) const {
+  SOFTGL_WIDE int E0() const { return chunk * W; }
+  SOFTGL_WIDE int L0() const { return chunk * W / S; }
+  SOFTGL_WIDE typename V<W>::B Stencil() const { return LoadElements<std::uint8_t, W, S, typename V<W>::B>(stencil, stencil_at, E0()); }
+  SOFTGL_WIDE void SetStencil(typename V<W>::B v) const { StoreElements<std::uint8_t, W, S>(stencil, stencil_at, E0(), v); }
+  SOFTGL_WIDE F Depth() const { return LoadElements<float, W, S, F>(depth, depth_at, E0()); }
+  SOFTGL_WIDE void SetDepth(F v) const { StoreElements<float, W, S>(depth, depth_at, E0(), v); }
+  SOFTGL_WIDE typename V<W>::S Depth16() const { return LoadElements<std::uint16_t, W, S, typename V<W>::S>(depth16, depth_at, E0()); }
+  SOFTGL_WIDE void SetDepth16(typename V<W>::S v) const { StoreElements<std::uint16_t, W, S>(depth16, depth_at, E0(), v); }
+  SOFTGL_WIDE U Pixels() const { return LoadElements<std::uint32_t, W, S, U>(pixels, colour_at, E0()); }
+  SOFTGL_WIDE void SetPixels(U v) const { StoreElements<std::uint32_t, W, S>(pixels, colour_at, E0(), v); }
+  SOFTGL_WIDE F Z() const { return ctx.shader_depth ? Spread<W, S, F>(ctx.blocks->Depth(b) + L0()) : sample_z.At(chunk); }
+  SOFTGL_WIDE U Result(U dst) const {
     if (!ctx.blend->blend) return (dst & ctx.blend->keep) | Spread<W, S, U>(packed + L0());
     F color[4];
     for (int c = 0; c < 4; ++c) color[c] = Spread<W, S, F>(ctx.blocks->Color(b, 0, c) + L0());
