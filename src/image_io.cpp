@@ -1,10 +1,16 @@
 // image_io.cpp — PNG output and image decoding through stb_image_write and stb_image (Debian's libstb-dev).
 #include <softgl/image.h>
 
+#include <cstdlib>
+
 #define STB_IMAGE_STATIC
 #define STB_IMAGE_IMPLEMENTATION
 #define STBI_MAX_DIMENSIONS 16384  // kMaxTextureSize: larger images are refused before anything is decoded
 #define STBI_FAILURE_USERMSG
+// stb's decoder state starts zeroed: whatever of it a corrupt file leaves unset reads the same on every machine.
+#define STBI_MALLOC(size) std::calloc(1, size)
+#define STBI_REALLOC(pointer, size) std::realloc(pointer, size)
+#define STBI_FREE(pointer) std::free(pointer)
 #include <stb/stb_image.h>
 
 #define STB_IMAGE_WRITE_STATIC
@@ -57,14 +63,14 @@ bool ReadImage(const std::string& path, Image& image, std::string* error) {
 
 namespace detail {
 namespace {
-bool JpegHuffmanTablesValid(const std::uint8_t* d, std::size_t size);
+const char* JpegProblem(const std::uint8_t* d, std::size_t size);
 }  // namespace
 }  // namespace detail
 
 bool ReadImageInfo(const void* data, std::size_t size, int* width, int* height, int* channels) {
   int w = 0, h = 0, n = 0;
   if (data == nullptr || size == 0 || size > std::size_t(INT32_MAX) ||
-      !detail::JpegHuffmanTablesValid(static_cast<const std::uint8_t*>(data), size) ||
+      detail::JpegProblem(static_cast<const std::uint8_t*>(data), size) != nullptr ||
       !stbi_info_from_memory(static_cast<const stbi_uc*>(data), int(size), &w, &h, &n))
     return false;
   if (width) *width = w;
@@ -125,17 +131,21 @@ bool Decode(const std::string& name, bool flip_vertically, LoadedImage& out, std
   return true;
 }
 
-// stb_image 2.27 trusts the code counts of a JPEG Huffman table and writes past its tables when they add up to more
-// than 256 (found by fuzz_image). For any file stb would read as a JPEG (0xFF bytes, then SOI), every DHT marker in
-// the file is checked the way stb reads it, bytes past the end reading as zero; such a file is corrupt anyway.
-// (Compressed scan data cannot hold 0xFF 0xC4: a 0xFF there is always followed by 0x00 or a marker.)
-bool JpegHuffmanTablesValid(const std::uint8_t* d, std::size_t size) {
-  auto at = [&](std::size_t i) -> std::size_t { return i < size ? d[i] : 0; };
+// Where stb would read a JPEG: the position just after its SOI marker (0xFF bytes, then 0xD8), else 0.
+std::size_t JpegStart(const std::uint8_t* d, std::size_t size) {
   std::size_t p = 0;
-  if (at(0) != 0xFF) return true;
+  if (size == 0 || d[0] != 0xFF) return 0;
   while (p < size && d[p] == 0xFF) ++p;
-  if (at(p) != 0xD8) return true;  // not a JPEG to stb
-  for (std::size_t i = p; i + 1 < size; ++i) {
+  return p < size && d[p] == 0xD8 ? p + 1 : 0;
+}
+
+// stb_image 2.27 trusts the code counts of a JPEG Huffman table and writes past its tables when they add up to more
+// than 256 (found by fuzz_image). For any file stb would read as a JPEG, every DHT marker in the file is checked the
+// way stb reads it, bytes past the end reading as zero; such a file is corrupt anyway.
+// (Compressed scan data cannot hold 0xFF 0xC4: a 0xFF there is always followed by 0x00 or a marker.)
+bool JpegHuffmanCountsValid(const std::uint8_t* d, std::size_t size, std::size_t start) {
+  auto at = [&](std::size_t i) -> std::size_t { return i < size ? d[i] : 0; };
+  for (std::size_t i = start; i + 1 < size; ++i) {
     if (d[i] != 0xFF || d[i + 1] != 0xC4) continue;
     const std::size_t length = (at(i + 2) << 8) | at(i + 3);
     std::size_t q = i + 4;
@@ -151,9 +161,88 @@ bool JpegHuffmanTablesValid(const std::uint8_t* d, std::size_t size) {
   return true;
 }
 
+// stb_image 2.27 decodes a scan with whatever its Huffman table slots hold, and the slots of tables no DHT segment
+// defined are uninitialized memory: their symbol indices run past the tables (found by fuzz_image, which it made
+// depend on the heap's contents). So the markers are walked in stb's order, and a scan is refused when it uses a
+// table not yet defined: both of a component's tables in a sequential frame; in a progressive one, the DC table in
+// a first DC scan and the AC table in an AC scan (refinements of DC read no table). The walk is, where stb goes on
+// reading, the same as stb's: bytes between segments are skipped, as are runs of 0xFF before a marker, and a scan's
+// compressed data ends at the first 0xFF followed by neither 0x00 nor a restart marker. Wherever the walk stops
+// early (an unknown marker, a bad length, the end), stb would refuse the file itself.
+bool JpegScansUseDefinedTables(const std::uint8_t* d, std::size_t size, std::size_t p) {
+  auto at = [&](std::size_t i) -> std::size_t { return i < size ? d[i] : 0; };
+  bool defined[2][4] = {};
+  bool frame = false, progressive = false;
+  while (true) {
+    while (p < size && d[p] != 0xFF) ++p;
+    while (p < size && d[p] == 0xFF) ++p;
+    if (p >= size) return true;
+    const std::size_t m = d[p++];
+    const std::size_t length = (at(p) << 8) | at(p + 1);
+    if (length < 2) return true;
+    const std::size_t end = p + length;
+    if (m == 0xC4) {  // DHT: tables one after another, each class and slot, 16 counts, then the symbols
+      for (std::size_t q = p + 2; q < end && q < size;) {
+        const std::size_t tc = at(q) >> 4, th = at(q) & 15;
+        if (tc > 1 || th > 3) return true;
+        std::size_t total = 0;
+        for (std::size_t k = 1; k <= 16; ++k) total += at(q + k);
+        defined[tc][th] = true;
+        q += 17 + total;
+      }
+    } else if (m == 0xC0 || m == 0xC1 || m == 0xC2) {  // the frame: stb reads one
+      if (frame) return true;
+      frame = true;
+      progressive = m == 0xC2;
+    } else if (m == 0xDA) {  // SOS: the components' table slots, then the spectral start and approximation
+      if (!frame) return true;
+      const std::size_t n = at(p + 2);
+      if (n < 1 || n > 4 || length != 6 + 2 * n) return true;
+      const std::size_t spectral_start = at(p + 3 + 2 * n), high = at(p + 5 + 2 * n) >> 4;
+      for (std::size_t i = 0; i < n; ++i) {
+        const std::size_t q = at(p + 4 + 2 * i), dc = q >> 4, ac = q & 15;
+        if (dc > 3 || ac > 3) return true;
+        const bool needs_dc = !progressive || (spectral_start == 0 && high == 0);
+        const bool needs_ac = !progressive || spectral_start != 0;
+        if ((needs_dc && !defined[0][dc]) || (needs_ac && !defined[1][ac])) return false;
+      }
+      // The compressed data: 0xFF 0x00 is a data byte, 0xFF 0xD0..0xD7 a restart; any other marker ends it.
+      std::size_t q = end;
+      while (q < size) {
+        if (d[q] != 0xFF) {
+          ++q;
+          continue;
+        }
+        std::size_t r = q + 1;
+        while (r < size && d[r] == 0xFF) ++r;
+        if (r >= size) return true;
+        if (d[r] != 0x00 && (d[r] < 0xD0 || d[r] > 0xD7)) break;
+        q = r + 1;
+      }
+      p = q;
+      continue;
+    } else if (m == 0xD9) {  // EOI
+      return true;
+    } else if (m != 0xDB && m != 0xDD && m != 0xDC && m != 0xFE && (m < 0xE0 || m > 0xEF)) {
+      return true;  // a marker stb does not know: it refuses the file
+    }
+    p = end;
+  }
+}
+
+// Why stb_image must not see these bytes (a JPEG it would misread), or nullptr.
+const char* JpegProblem(const std::uint8_t* d, std::size_t size) {
+  const std::size_t start = JpegStart(d, size);
+  if (start == 0) return nullptr;  // not a JPEG to stb
+  if (!JpegHuffmanCountsValid(d, size, start)) return "corrupt JPEG (a Huffman table has more than 256 codes)";
+  if (!JpegScansUseDefinedTables(d, size, start)) return "corrupt JPEG (a scan uses a Huffman table never defined)";
+  return nullptr;
+}
+
 bool Check(const std::uint8_t* d, std::size_t size, const std::string& name, std::string* error) {
-  if (JpegHuffmanTablesValid(d, size)) return true;
-  if (error) *error = name + ": corrupt JPEG (a Huffman table has more than 256 codes)";
+  const char* problem = JpegProblem(d, size);
+  if (problem == nullptr) return true;
+  if (error) *error = name + ": " + problem;
   return false;
 }
 

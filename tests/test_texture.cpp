@@ -548,6 +548,69 @@ TEST_CASE("one fragment shader writes four render targets, with depth in a depth
   CHECK(fetch.got[4].r == Approx(0.75f));
 }
 
+TEST_CASE("a JPEG whose scan uses a Huffman table never defined is refused before decoding", "[texture][files]") {
+  auto read = [](const std::string& path) {
+    std::ifstream f(path, std::ios::binary);
+    return std::vector<char>((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+  };
+  auto info = [](const std::vector<char>& bytes) {
+    int w = 0, h = 0, n = 0;
+    return ReadImageInfo(bytes.data(), bytes.size(), &w, &h, &n);
+  };
+  // Found by fuzz_image: the seed JPEG with its scan's table slots set to 3, which no DHT segment defines. stb_image
+  // decoded it with uninitialized tables, and read past them for some heap contents.
+  const std::string corpus = std::string(SOFTGL_SOURCE_DIR) + "/tests/fuzz/corpus/fuzz_image/";
+  const std::vector<char> bytes = read(corpus + "regression_jpeg_undefined_table");
+  REQUIRE(!bytes.empty());
+  Context gl(1, 1);
+  gl.BindTexture(TEXTURE_2D, gl.GenTexture());
+  std::string error;
+  CHECK_FALSE(gl.TexImage2DFromMemory(TEXTURE_2D, bytes.data(), bytes.size(), true, &error));
+  CHECK(error.find("never defined") != std::string::npos);
+  CHECK_FALSE(info(bytes));
+  const std::vector<char> seed = read(corpus + "seed.jpg");
+  CHECK(gl.TexImage2DFromMemory(TEXTURE_2D, seed.data(), seed.size(), true, &error));
+
+  // A progressive JPEG reads only the DC table in its first DC scans, no table in DC refinements, and only the AC
+  // table in AC scans; this one's first scan names AC slot 0 before any AC table is defined, as encoders do.
+  const std::vector<char> progressive =
+      read(std::string(SOFTGL_SOURCE_DIR) + "/../shared/assets/damaged_helmet/Default_metalRoughness.jpg");
+  REQUIRE(progressive.size() > 1000);
+  CHECK(info(progressive));
+  // Each scan: where its selectors are, how many, whether it is a DC scan and whether it refines.
+  struct Scan {
+    std::size_t at, n;
+    bool dc, refines;
+  };
+  std::vector<Scan> scans;
+  for (std::size_t i = 0; i + 10 < progressive.size(); ++i)
+    if (std::uint8_t(progressive[i]) == 0xFF && std::uint8_t(progressive[i + 1]) == 0xDA) {
+      const std::size_t n = std::uint8_t(progressive[i + 4]);
+      scans.push_back({i + 5, n, progressive[i + 5 + 2 * n] == 0, (std::uint8_t(progressive[i + 7 + 2 * n]) >> 4) != 0});
+    }
+  auto with = [&](const Scan& scan, std::uint8_t mask, std::uint8_t value) {
+    std::vector<char> changed = progressive;
+    for (std::size_t k = 0; k < scan.n; ++k) {
+      char& q = changed[scan.at + 2 * k + 1];
+      q = char((std::uint8_t(q) & ~mask) | value);
+    }
+    return changed;
+  };
+  int first_dc = 0, refine_dc = 0, ac = 0;
+  for (const Scan& scan : scans) {
+    if (scan.dc && !scan.refines && first_dc++ == 0) {
+      CHECK(info(with(scan, 0x0F, 0x03)));       // its AC slot is not read
+      CHECK_FALSE(info(with(scan, 0xF0, 0x30)));  // its DC slot is
+    } else if (scan.dc && scan.refines && refine_dc++ == 0) {
+      CHECK(info(with(scan, 0xFF, 0x33)));  // a DC refinement reads no table
+    } else if (!scan.dc && ac++ == 0) {
+      CHECK(info(with(scan, 0xF0, 0x30)));
+      CHECK_FALSE(info(with(scan, 0x0F, 0x03)));
+    }
+  }
+  CHECK((first_dc > 0 && refine_dc > 0 && ac > 0));
+}
+
 TEST_CASE("a JPEG with an oversized Huffman table is refused before decoding", "[texture][files]") {
   // Found by fuzz_image: stb_image would write past its Huffman tables on this file.
   std::ifstream f(std::string(SOFTGL_SOURCE_DIR) + "/tests/fuzz/corpus/fuzz_image/regression_jpeg_huffman",
