@@ -1,4 +1,4 @@
-// image_io.h — decoding image files for textures (stb_image): 8-bit PNG, JPEG, TGA, BMP, and float HDR.
+// image_io.h — decoding image files for textures: 8-bit PNG, TGA, BMP and float HDR (stb_image), JPEG (libjpeg-turbo).
 #pragma once
 
 #include <cstdint>
@@ -14,7 +14,7 @@ struct LoadedImage {
   std::vector<float> floats;
 };
 
-/// Decodes `path`. stb_image returns the top row first; flip_vertically puts the bottom row first, which is where
+/// Decodes `path`. Decoders return the top row first; flip_vertically puts the bottom row first, which is where
 /// OpenGL's texture coordinate t = 0 is. Returns false with a message for a missing, truncated or corrupt file.
 bool LoadImageFile(const std::string& path, bool flip_vertically, LoadedImage& out, std::string* error);
 

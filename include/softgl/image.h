@@ -25,13 +25,14 @@ struct Image {
 /// partly written file is removed).
 bool WritePng(const std::string& path, const Image& image);
 
-/// Reads a PNG (or any format stb_image decodes) into an RGBA8 image. Returns false, with a message in `error`
-/// when given, for a missing or corrupt file.
+/// Reads a PNG (or JPEG, TGA, BMP, HDR: any format TexImage2DFromFile reads) into an RGBA8 image. Returns false,
+/// with a message in `error` when given, for a missing or corrupt file.
 bool ReadImage(const std::string& path, Image& image, std::string* error = nullptr);
 
 /// The size and channel count an encoded image (PNG, JPEG, TGA, BMP, HDR, ...) declares, read from its header
 /// without decoding it: check it against your own budget before loading an untrusted image (a 100-byte TGA can
-/// declare 16384 x 16384 pixels). Returns false when the bytes are not an image stb_image recognizes.
+/// declare 16384 x 16384 pixels). Returns false when the bytes are not an image softgl recognizes (or
+/// a JPEG whose header is corrupt).
 bool ReadImageInfo(const void* data, std::size_t size, int* width, int* height, int* channels);
 
 }  // namespace softgl
