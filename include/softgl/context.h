@@ -234,8 +234,9 @@ class Context {
   /// TEXTURE_3D. Outside the level: INVALID_VALUE; level not defined: INVALID_OPERATION.
   void TexSubImage3D(Enum target, int level, int x, int y, int z, int width, int height, int depth, Enum format,
                      Enum type, const void* pixels);
-  /// Loads an image file (PNG, JPEG, TGA, BMP, HDR, through stb_image) into level 0 of the texture bound to
-  /// target (TEXTURE_2D or a cube face): 1 to 4 channels become R8, RG8, RGB8, RGBA8; HDR becomes RGBA32F.
+  /// Loads an image file (PNG, TGA, BMP, HDR through stb_image; JPEG through libjpeg-turbo) into level 0 of the
+  /// texture bound to target (TEXTURE_2D or a cube face): 1 to 4 channels become R8, RG8, RGB8, RGBA8; HDR becomes
+  /// RGBA32F.
   /// `encoding` SRGB marks colour images as sRGB-encoded (3 channels SRGB8, 4 SRGB8_ALPHA8: sampling decodes them
   /// to linear before filtering), as colour maps and photographs are; LINEAR (the default) keeps them as they are,
   /// for data such as normal maps. Image files store the top row first; flip_vertically puts the bottom row at

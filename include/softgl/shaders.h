@@ -324,7 +324,7 @@ struct ShadowMap {
 };
 ShadowMap MakeShadowMap(Context& gl, int size);
 
-/// An environment from an equirectangular HDR image (Radiance .hdr, or any image stb_image reads; longitude 0 at
+/// An environment from an equirectangular HDR image (Radiance .hdr, or any image ReadImage reads; longitude 0 at
 /// -z, the top row up): a float cube map of size x size per face bound to kUnitEnvironment whose level L is
 /// prefiltered for roughness L / (levels - 1) with the GGX distribution (the level PbrShader reads for that
 /// roughness; level 0 the image itself), and a 16 x 16 cube map of its diffuse irradiance (cosine-weighted over
