@@ -12,7 +12,12 @@
 #define STB_IMAGE_IMPLEMENTATION
 #define STBI_MAX_DIMENSIONS 16384  // kMaxTextureSize: larger images are refused before anything is decoded
 #define STBI_FAILURE_USERMSG
-#define STBI_NO_JPEG  // JPEG goes to libjpeg-turbo
+// The formats softgl documents, and no more: each of stb's decoders is code a hostile file can reach (its PNM
+// parser's integers overflow, found by fuzz_image). JPEG goes to libjpeg-turbo.
+#define STBI_ONLY_PNG
+#define STBI_ONLY_BMP
+#define STBI_ONLY_TGA
+#define STBI_ONLY_HDR
 // stb's decoder state starts zeroed: whatever of it a corrupt file leaves unset reads the same on every machine.
 #define STBI_MALLOC(size) std::calloc(1, size)
 #define STBI_REALLOC(pointer, size) std::realloc(pointer, size)

@@ -591,6 +591,27 @@ TEST_CASE("corrupt JPEG files are refused with libjpeg's reason", "[texture][fil
   CHECK((w == 4 && h == 4 && n == 3));
 }
 
+TEST_CASE("formats beyond PNG, JPEG, TGA, BMP and HDR are refused", "[texture][files]") {
+  // A PNM header whose width overflows stb's integer parser (found by fuzz_image): stb reads only the documented
+  // formats, so the file is of no known type.
+  std::ifstream f(std::string(SOFTGL_SOURCE_DIR) + "/tests/fuzz/corpus/fuzz_image/regression_pnm_overflow",
+                  std::ios::binary);
+  const std::vector<char> pnm((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+  REQUIRE(pnm.size() > 2);
+  REQUIRE((pnm[0] == 'P' && pnm[1] == '6'));
+  Context gl(1, 1);
+  gl.BindTexture(TEXTURE_2D, gl.GenTexture());
+  std::string error;
+  CHECK_FALSE(gl.TexImage2DFromMemory(TEXTURE_2D, pnm.data(), pnm.size(), true, &error));
+  CHECK(error.find("not of any known type") != std::string::npos);
+  int w = 0, h = 0, n = 0;
+  CHECK_FALSE(ReadImageInfo(pnm.data(), pnm.size(), &w, &h, &n));
+  // A well-formed 2x1 binary PPM is refused the same way.
+  const char ppm[] = "P6\n2 1\n255\n\x10\x20\x30\x40\x50\x60";
+  CHECK_FALSE(gl.TexImage2DFromMemory(TEXTURE_2D, ppm, sizeof(ppm) - 1, true, &error));
+  CHECK_FALSE(ReadImageInfo(ppm, sizeof(ppm) - 1, &w, &h, &n));
+}
+
 namespace {
 
 // A width x height JPEG of `components` channels (1 grey, 3 RGB, 4 CMYK, which libjpeg marks as Adobe's) with every
