@@ -584,6 +584,23 @@ struct Elements {
   static constexpr int kPiece = W > kRun ? kRun : W;       // elements from each
   static constexpr int kChunks = kLanes * S / W;           // W elements at a time over a block
 };
+// fn(chunk) for each chunk of W elements that holds some of `lanes`, in order.
+template <int W, int S, class Fn>
+SOFTGL_WIDE void ForEachChunk(std::uint32_t lanes, Fn&& fn) {
+  if constexpr (W >= S) {
+    constexpr int kL = W / S;  // lanes to a chunk: the chunk's bit at its first lane
+    std::uint32_t m = lanes;
+    for (int i = 1; i < kL; ++i) m |= lanes >> i;
+    std::uint32_t pattern = 0;
+    for (int l = 0; l < kLanes; l += kL) pattern |= 1u << l;
+    for (m &= pattern; m; m &= m - 1) fn(__builtin_ctz(m) / kL);
+  } else {
+    constexpr int kPer = S / W;  // chunks to a lane
+    for (std::uint32_t m = lanes; m; m &= m - 1)
+      for (int k = 0; k < kPer; ++k) fn(__builtin_ctz(m) * kPer + k);
+  }
+}
+
 // Where each of a block's eight quad rows starts (quad q's rows 2 q and 2 q + 1), from its quad places.
 struct RowPlaces {
   std::size_t at[8];
@@ -698,27 +715,31 @@ template <int W, int S>
 struct ElementDepths {
   using F = typename V<W>::F;
   static constexpr int kPatterns = S > W ? S / W : 1;
-  struct Offsets {  // each element's sample offset from the centre
-    F x[kPatterns], y[kPatterns];
-    Offsets() {
-      const auto* pos = SamplePositions(S);
-      for (int p = 0; p < kPatterns; ++p)
-        for (int e = 0; e < W; ++e) {
-          const int s = (p * W + e) % S;
-          x[p][e] = float(pos[s][0]) / 16.0f - 0.5f;
-          y[p][e] = float(pos[s][1]) / 16.0f - 0.5f;
-        }
-    }
-  };
   const float* centre;         // the lanes' depths at their centres
   F delta[4][kPatterns];       // each quad's change from the centre at each element's sample
-  SOFTGL_WIDE ElementDepths(const BlockBuffer& bb, int b, bool at_samples, const Offsets& o) : centre(bb.frag_coord[b][2]) {
+  SOFTGL_WIDE ElementDepths(const BlockBuffer& bb, int b, bool at_samples) : centre(bb.frag_coord[b][2]) {
     for (int q = 0; q < 4; ++q) {
       const TrianglePlanes* p = bb.quad_planes[b][q];
       const bool at = p && at_samples && ((bb.live[b] >> (4 * q)) & 0xFu);
-      const float dx = at ? p->z.dx : 0.0f, dy = at ? p->z.dy : 0.0f;
-      for (int k = 0; k < kPatterns; ++k) delta[q][k] = (F{} + dx) * o.x[k] + (F{} + dy) * o.y[k];
+      for (int k = 0; k < kPatterns; ++k) delta[q][k] = at ? Pattern(p->sample_dz, k) : F{};
     }
+  }
+  // Element e of pattern k takes d[(k W + e) % S].
+  SOFTGL_WIDE static F Pattern(const float* d, int k) {
+    if constexpr (S >= W) {
+      return LoadVec<F>(d + k * W);
+    } else if constexpr (S == 4) {
+      typedef float Four __attribute__((vector_size(16)));
+      return SpreadPattern(LoadVec<Four>(d), std::make_index_sequence<W>{});
+    } else {
+      static_assert(S == 2);
+      typedef float Two __attribute__((vector_size(8)));
+      return SpreadPattern(LoadVec<Two>(d), std::make_index_sequence<W>{});
+    }
+  }
+  template <class Run, std::size_t... E>
+  SOFTGL_WIDE static F SpreadPattern(const Run& run, std::index_sequence<E...>) {
+    return __builtin_shufflevector(run, run, int(E % S)...);
   }
   SOFTGL_WIDE F At(int chunk) const {
     const int l0 = chunk * W / S;
@@ -766,20 +787,16 @@ SOFTGL_WIDE void BlockOpsInterleaved(const BlockOpsContext& ctx, int b) {
   using F = typename V<W>::F;
   using I = typename V<W>::I;
   using U = typename V<W>::U;
-  using E = Elements<W, S>;
   const BlockBuffer& bb = *ctx.blocks;
   const RenderTarget& t = *ctx.target;
   const bool colour = ctx.any_color && t.color[0].Present();
   const std::uint32_t live = bb.live[b];
-  std::uint32_t covered[S];
-  for (int s = 0; s < S; ++s) covered[s] = live & bb.sample_live[b][s];
+  std::uint32_t covered[S], any = 0;
+  for (int s = 0; s < S; ++s) any |= covered[s] = live & bb.sample_live[b][s];
   const ElementCoverage<W, S> coverage(covered);
-  static const typename ElementDepths<W, S>::Offsets kOffsets;
-  const ElementDepths<W, S> sample_z(bb, b, ctx.depths->at_samples, kOffsets);
-  // (The context's framebuffer, the only interleaved target, has one pitch for all its buffers.)
-  const RowPlaces depth_at(QuadPlaces(bb, b, t.depth_pitch, S));
-  const RowPlaces stencil_at(QuadPlaces(bb, b, t.stencil_pitch, S));
-  const RowPlaces colour_at(QuadPlaces(bb, b, t.color[0].pitch, S));
+  const ElementDepths<W, S> sample_z(bb, b, ctx.depths->at_samples);
+  // The context's framebuffer, the only interleaved target, has one pitch for all its buffers.
+  const RowPlaces at(QuadPlaces(bb, b, t.depth_pitch, S));
   // Without blending, the lanes' colours as bytes, converted once.
   alignas(32) std::uint32_t packed[kLanes];
   if (colour && !ctx.blend->blend) {
@@ -790,13 +807,12 @@ SOFTGL_WIDE void BlockOpsInterleaved(const BlockOpsContext& ctx, int b) {
     }
   }
   auto* pixels = colour ? reinterpret_cast<std::uint32_t*>(t.color[0].data) : nullptr;
-  for (int chunk = 0; chunk < E::kChunks; ++chunk) {
+  ForEachChunk<W, S>(any, [&](int chunk) SOFTGL_WIDE_LAMBDA {
     const I go = coverage.Mask(chunk);
-    if (!MaskToBits<W>(go, 0)) continue;
-    const ElementIo<W, S> io{ctx, depth_at, stencil_at, colour_at, chunk, b, sample_z, t.stencil, t.depth, t.depth16,
+    const ElementIo<W, S> io{ctx, at, at, at, chunk, b, sample_z, t.stencil, t.depth, t.depth16,
                              pixels, packed, colour};
     VectorOps<W>(ctx, go, io);
-  }
+  });
 }
 template <int W>
 SOFTGL_WIDE void BlockOpsInterleavedAny(const BlockOpsContext& ctx, int b) {
@@ -955,17 +971,13 @@ template <int W, int S, bool kDepth16>
 SOFTGL_WIDE std::uint32_t EarlyBlockInterleaved(Enum func, BlockBuffer& bb, const RenderTarget& t, int b,
                                                 const SampleDepths* depths) {
   using F = typename V<W>::F;
-  using E = Elements<W, S>;
   std::uint32_t covered[S], kept[S] = {}, any_sample = 0;
   for (int s = 0; s < S; ++s) any_sample |= covered[s] = bb.live[b] & bb.sample_live[b][s];
   const RowPlaces depth_at(QuadPlaces(bb, b, t.depth_pitch, S));
-  static const typename ElementDepths<W, S>::Offsets kOffsets;
-  const ElementDepths<W, S> sample_z(bb, b, depths->at_samples, kOffsets);
+  const ElementDepths<W, S> sample_z(bb, b, depths->at_samples);
   std::uint64_t packed = 0;  // every element is tested; `covered` then keeps the covered ones
-  constexpr std::uint32_t kChunkLanes = (1u << (W >= S ? W / S : 1)) - 1u;
-  for (int chunk = 0; chunk < E::kChunks; ++chunk) {
+  ForEachChunk<W, S>(any_sample, [&](int chunk) SOFTGL_WIDE_LAMBDA {
     const int e0 = chunk * W;
-    if (!((any_sample >> (e0 / S)) & kChunkLanes)) continue;
     const F z = sample_z.At(chunk);
     F zc = z > 0.0f ? z : F{} + 0.0f;
     zc = zc < 1.0f ? zc : F{} + 1.0f;
@@ -978,7 +990,7 @@ SOFTGL_WIDE std::uint32_t EarlyBlockInterleaved(Enum func, BlockBuffer& bb, cons
       pass = Compare(func, zc, LoadElements<float, W, S, F>(t.depth, depth_at, e0)) & (z == z);
     }
     AddElementBits<W, S>(MaskToBits<W>(pass, 0), e0, packed, kept);
-  }
+  });
   TakeElementBits<W, S>(packed, kept);
   std::uint32_t any = 0;
   for (int s = 0; s < S; ++s) any |= bb.sample_live[b][s] = covered[s] & kept[s];

@@ -330,18 +330,21 @@ SOFTGL_WIDE void SampleRegionCoverage(const SampleEdges& edges, std::uint64_t bi
       const I ix = LoadVec<I>(kRegionX + c * W), iy = LoadVec<I>(kRegionY + c * W);
       value[e][c] = (edges.c00[e] + 2 * edges.row0 * edges.sy[e]) + ix * edges.sx[e] + iy * edges.sy[e];
     }
-  std::uint64_t out[S] = {};
+  std::uint64_t outside[S] = {};  // the lanes some edge excludes at sample s (sign bits)
   for (int row = edges.row0; row <= edges.row1; ++row) {
     for (int c = 0; c < chunks; ++c) {
       for (int s = 0; s < S; ++s) {
-        const I outside = (value[0][c] + edges.delta[s][0]) | (value[1][c] + edges.delta[s][1]) |
-                          (value[2][c] + edges.delta[s][2]);
-        out[s] |= std::uint64_t(MaskToBits<W>(~outside >> 31, 0)) << (row * 16 + c * W);
+        const I out = (value[0][c] + edges.delta[s][0]) | (value[1][c] + edges.delta[s][1]) |
+                      (value[2][c] + edges.delta[s][2]);
+        outside[s] |= std::uint64_t(SignBits<W>(out)) << (row * 16 + c * W);
       }
       for (int e = 0; e < 3; ++e) value[e][c] += 2 * edges.sy[e];
     }
   }
-  for (int s = 0; s < S; ++s) bits[s] = out[s];
+  // The lanes tested: quad rows row0 to row1, the left half only where only that was tested.
+  const std::uint64_t rows = (~std::uint64_t(0) >> (64 - 16 * (edges.row1 - edges.row0 + 1))) << (16 * edges.row0);
+  const std::uint64_t tested = chunks * W < 16 ? rows & 0x00FF00FF00FF00FFull : rows;
+  for (int s = 0; s < S; ++s) bits[s] = ~outside[s] & tested;
 }
 using SampleCoverageFn = void (*)(const SampleEdges&, std::uint64_t*);
 template <int S>
@@ -396,6 +399,7 @@ struct PlanesEntry {
       slot.z = p.z;
       slot.oow = p.oow;
       slot.nvar = p.nvar;
+      std::memcpy(slot.sample_dz, p.sample_dz, sizeof(p.sample_dz));
       if (planes) {
         std::memcpy(slot.a0, planes->a0, sizeof(float) * std::size_t(p.nvar));
         std::memcpy(slot.dx, planes->dx, sizeof(float) * std::size_t(p.nvar));
@@ -485,6 +489,19 @@ const SampleSpan& SampleSpan::Of(int samples) {
 }
 
 namespace {
+
+// Each sample's offset from the pixel centre, in pixels.
+template <int S>
+struct SampleOffsets {
+  float x[S], y[S];
+  SampleOffsets() {
+    const auto* pos = SamplePositions(S);
+    for (int s = 0; s < S; ++s) {
+      x[s] = float(pos[s][0]) / 16.0f - 0.5f;
+      y[s] = float(pos[s][1]) / 16.0f - 0.5f;
+    }
+  }
+};
 
 // The samples of a triangle whose edge functions are A x + B y + C (snapped units, tie rule folded into C; > =
 // 0 inside) over the pixels of `box` (every one inside `bounds`), 8x8 regions at a time: `emit(qx, qy, mask,
@@ -745,6 +762,8 @@ void RasterizeTriangle(const VertexView& v0, const VertexView& v1, const VertexV
     // One instance per sample count, so that the loops over the samples have a fixed length.
     auto rasterize = [&](auto count) {
       constexpr int kSamples = decltype(count)::value;
+      static const SampleOffsets<kSamples> kOffsets;
+      for (int s = 0; s < kSamples; ++s) planes.sample_dz[s] = planes.z.dx * kOffsets.x[s] + planes.z.dy * kOffsets.y[s];
       RasterizeSamples<kSamples>(A, B, C, Rect{int(px0), int(py0), int(px1) + 1, int(py1) + 1}, small,
                                  [&](int qx, int qy, unsigned mask, const std::uint64_t* cover, int shift) {
                                    int slot;
@@ -752,8 +771,20 @@ void RasterizeTriangle(const VertexView& v0, const VertexView& v1, const VertexV
                                    blocks.quad_planes[b][slot] = entry.For(blocks, planes, varying_planes);
                                    // (a new slot's sample bits are 0)
                                    std::uint32_t* live = blocks.sample_live[b];
-                                   for (int s = 0; s < kSamples; ++s)
-                                     live[s] |= (std::uint32_t(cover[s] >> shift) & 0xFu) << (4 * slot);
+                                   if constexpr (kSamples % 4 == 0) {  // four samples to a vector
+                                     using D2 = V<2>::D;
+                                     using U2 = V<2>::U;
+                                     using U4 = V<4>::U;
+                                     for (int g = 0; g < kSamples; g += 4) {
+                                       const U2 lo = __builtin_convertvector(LoadVec<D2>(cover + g) >> shift, U2);
+                                       const U2 hi = __builtin_convertvector(LoadVec<D2>(cover + g + 2) >> shift, U2);
+                                       const U4 bits = (__builtin_shufflevector(lo, hi, 0, 1, 2, 3) & 0xFu) << (4 * slot);
+                                       StoreVec(live + g, LoadVec<U4>(live + g) | bits);
+                                     }
+                                   } else {
+                                     for (int s = 0; s < kSamples; ++s)
+                                       live[s] |= (std::uint32_t(cover[s] >> shift) & 0xFu) << (4 * slot);
+                                   }
                                  },
                                  [&](int bx, int by) {
                                    const int b = AddSquare(blocks, sink, front_facing, nvar, bx, by);

@@ -60,12 +60,6 @@ Rect Intersect(const Rect& a, const Rect& b) {
 // their path needs them (`fill`).
 template <int S>
 void FillSampleDepths(const BlockBuffer& blocks, bool at_samples, bool interleaved, SampleDepths& depths) {
-  const auto* pos = SamplePositions(S);
-  float ox[S], oy[S];
-  for (int s = 0; s < S; ++s) {
-    ox[s] = float(pos[s][0]) / 16.0f - 0.5f;
-    oy[s] = float(pos[s][1]) / 16.0f - 0.5f;
-  }
   using F4 = V<4>::F;
   for (int b = 0; b < blocks.count; ++b) {
     for (int q = 0; q < 4; ++q) {
@@ -73,7 +67,7 @@ void FillSampleDepths(const BlockBuffer& blocks, bool at_samples, bool interleav
       const F4 centre = LoadVec<F4>(&blocks.frag_coord[b][2][4 * q]);
       float delta[S] = {};
       if (p && at_samples && ((blocks.live[b] >> (4 * q)) & 0xFu))
-        for (int s = 0; s < S; ++s) delta[s] = p->z.dx * ox[s] + p->z.dy * oy[s];
+        for (int s = 0; s < S; ++s) delta[s] = p->sample_dz[s];
       if (!interleaved) {
         for (int s = 0; s < S; ++s) StoreVec(&depths.z[b][s][4 * q], centre + delta[s]);
         continue;

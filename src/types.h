@@ -81,6 +81,9 @@ struct TrianglePlanes {
   // The varyings' planes, a0 + dx * x + dy * y for varying i, as rows (computed and read four or more at a time).
   alignas(16) float a0[kMaxVaryingFloats], dx[kMaxVaryingFloats], dy[kMaxVaryingFloats];
   bool perspective[kMaxVaryingFloats];  // smooth: divided by w (the others are taken as they are)
+  // A multisampled triangle's change of depth from a pixel's centre to each of its samples (z.dx ox + z.dy oy, the
+  // sample's offset (ox, oy) from the centre), for the samples' depth tests; set only for a multisampled triangle.
+  float sample_dz[kMaxSamples];
 };
 
 /// Rasterizer output: a batch of blocks ready for the fragment stage, with their coverage and interpolated values,

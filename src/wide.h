@@ -95,6 +95,16 @@ __attribute__((target("avx512f,avx512dq"))) inline std::uint32_t MaskToBits<16>(
 }
 #endif
 
+/// The lanes' sign bits (bit l: lane l is negative), from l0 on.
+template <int W>
+SOFTGL_WIDE std::uint32_t SignBits(typename V<W>::I v, int l0 = 0) {
+#if defined(SOFTGL_HAS_DISPATCH) && !defined(__clang__)
+  return MaskToBits<W>(v, l0);  // (the x86 forms read the sign bits alone)
+#else
+  return MaskToBits<W>(v >> 31, l0);
+#endif
+}
+
 /// The components of p[0 .. W - 1] as four vectors: c[0] the x of each, c[1] the y, c[2] the z, c[3] the w. With 4
 /// and 8 lanes, 4x4 transposes by shuffles (within each 128-bit half for 8); with 16, lane by lane.
 template <int W>
