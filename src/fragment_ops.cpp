@@ -717,11 +717,12 @@ struct ElementDepths {
   static constexpr int kPatterns = S > W ? S / W : 1;
   const float* centre;         // the lanes' depths at their centres
   F delta[4][kPatterns];       // each quad's change from the centre at each element's sample
+  // (A quad's planes, where it has them, are those of a multisampled triangle, which sets sample_dz; a quad that is
+  // not live has its block's first quad's, and its elements are not taken.)
   SOFTGL_WIDE ElementDepths(const BlockBuffer& bb, int b, bool at_samples) : centre(bb.frag_coord[b][2]) {
     for (int q = 0; q < 4; ++q) {
-      const TrianglePlanes* p = bb.quad_planes[b][q];
-      const bool at = p && at_samples && ((bb.live[b] >> (4 * q)) & 0xFu);
-      for (int k = 0; k < kPatterns; ++k) delta[q][k] = at ? Pattern(p->sample_dz, k) : F{};
+      const TrianglePlanes* p = at_samples ? bb.quad_planes[b][q] : nullptr;
+      for (int k = 0; k < kPatterns; ++k) delta[q][k] = p ? Pattern(p->sample_dz, k) : F{};
     }
   }
   // Element e of pattern k takes d[(k W + e) % S].

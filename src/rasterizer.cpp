@@ -20,12 +20,15 @@
 
 namespace softgl::detail {
 
-const std::uint8_t (*SamplePositions(int samples))[2] {
-  // In 1/16 pixel, y up from the pixel's bottom edge.
-  static constexpr std::uint8_t kCentre[1][2] = {{8, 8}};
-  static constexpr std::uint8_t k2[2][2] = {{12, 12}, {4, 4}};
-  static constexpr std::uint8_t k4[4][2] = {{6, 2}, {14, 6}, {2, 10}, {10, 14}};
-  static constexpr std::uint8_t k8[8][2] = {{9, 5}, {7, 11}, {13, 9}, {5, 3}, {3, 13}, {1, 7}, {11, 15}, {15, 1}};
+namespace {
+
+// In 1/16 pixel, y up from the pixel's bottom edge.
+constexpr std::uint8_t kCentre[1][2] = {{8, 8}};
+constexpr std::uint8_t k2[2][2] = {{12, 12}, {4, 4}};
+constexpr std::uint8_t k4[4][2] = {{6, 2}, {14, 6}, {2, 10}, {10, 14}};
+constexpr std::uint8_t k8[8][2] = {{9, 5}, {7, 11}, {13, 9}, {5, 3}, {3, 13}, {1, 7}, {11, 15}, {15, 1}};
+// (A constant expression: with a constant count, the rasterizer multiplies by the positions as constants.)
+constexpr const std::uint8_t (*PositionsOf(int samples))[2] {
   switch (samples) {
     case 2: return k2;
     case 4: return k4;
@@ -33,6 +36,10 @@ const std::uint8_t (*SamplePositions(int samples))[2] {
     default: return kCentre;
   }
 }
+
+}  // namespace
+
+const std::uint8_t (*SamplePositions(int samples))[2] { return PositionsOf(samples); }
 
 namespace {
 
@@ -515,7 +522,7 @@ void RasterizeSamples(const std::int64_t A[3], const std::int64_t B[3], const st
                       bool small, Emit&& emit, Square&& square) {
   constexpr int kRegion = 8;
   const SampleCoverageFn sample_coverage = SampleCoverageFor<samples>();
-  const auto* pos = SamplePositions(samples);
+  constexpr auto* pos = PositionsOf(samples);
   auto emit_region = [&](std::int64_t rx, std::int64_t ry, std::uint64_t any, const std::uint64_t* cover) {
     while (any) {
       const int q = __builtin_ctzll(any) >> 2;
