@@ -353,27 +353,6 @@ SOFTGL_WIDE void SampleRegionCoverage(const SampleEdges& edges, std::uint64_t bi
   const std::uint64_t tested = chunks * W < 16 ? rows & 0x00FF00FF00FF00FFull : rows;
   for (int s = 0; s < S; ++s) bits[s] = ~outside[s] & tested;
 }
-using SampleCoverageFn = void (*)(const SampleEdges&, std::uint64_t*);
-template <int S>
-void SampleRegionCoverageBase(const SampleEdges& e, std::uint64_t* bits) { SampleRegionCoverage<4, S>(e, bits); }
-#if defined(SOFTGL_HAS_DISPATCH)
-template <int S>
-SOFTGL_TARGET_AVX2 void SampleRegionCoverageAvx2(const SampleEdges& e, std::uint64_t* bits) {
-  SampleRegionCoverage<8, S>(e, bits);
-}
-// 16 lanes on AVX-512: a quad row in one vector (measured about 1.5% faster on the 4x bench scene than 8).
-template <int S>
-SOFTGL_TARGET_AVX512 void SampleRegionCoverageAvx512(const SampleEdges& e, std::uint64_t* bits) {
-  SampleRegionCoverage<16, S>(e, bits);
-}
-#endif
-// The kernel for S samples (2, 4 or 8), chosen once per count.
-template <int S>
-SampleCoverageFn SampleCoverageFor() {
-  static const SampleCoverageFn kernel = SOFTGL_CHOOSE(SampleRegionCoverage, <S>);
-  return kernel;
-}
-
 // The lanes (in RegionCoverage's order) of the region's pixels with ix in [x0, x1) and iy in [y0, y1), 0 <= x0, y0
 // and x1, y1 <= 8: from tables of the lanes left of each column and below each row.
 struct RegionMasks {
@@ -517,11 +496,14 @@ struct SampleOffsets {
 // `small`: the triangle's samples all lie in one region (from the box's first quad) even before the bounds cut it,
 // so that its vertices lie within a few pixels and all its edge values there fit 32 bits.
 // A region every sample of every pixel of which is covered goes to `square(bx, by)` as four 4x4 squares instead.
-template <int samples, class Emit, class Square>
-void RasterizeSamples(const std::int64_t A[3], const std::int64_t B[3], const std::int64_t C[3], const Rect& box,
-                      bool small, Emit&& emit, Square&& square) {
+// W: the coverage kernel's lanes (the instance is compiled for the instruction set that has them).
+template <int samples, int W, class Emit, class Square>
+SOFTGL_WIDE void RasterizeSamples(const std::int64_t A[3], const std::int64_t B[3], const std::int64_t C[3],
+                                  const Rect& box, bool small, Emit&& emit, Square&& square) {
   constexpr int kRegion = 8;
-  const SampleCoverageFn sample_coverage = SampleCoverageFor<samples>();
+  auto sample_coverage = [](const SampleEdges& edges, std::uint64_t* cover) SOFTGL_WIDE_LAMBDA {
+    SampleRegionCoverage<W, samples>(edges, cover);
+  };
   constexpr auto* pos = PositionsOf(samples);
   auto emit_region = [&](std::int64_t rx, std::int64_t ry, std::uint64_t any, const std::uint64_t* cover) {
     while (any) {
@@ -577,7 +559,7 @@ void RasterizeSamples(const std::int64_t A[3], const std::int64_t B[3], const st
   // there (kInside + delta > 0: |delta| <= |sx| + |sy| <= 2^27 while narrow).
   constexpr std::int32_t kInside = std::int32_t(1) << 30;
   SampleEdges edges;
-  for (int s = 0; s < samples && narrow; ++s)
+  for (int s = 0; s < samples; ++s)  // (used while narrow)
     for (int e = 0; e < 3; ++e) edges.delta[s][e] = std::int32_t(delta[s][e]);
   const std::int64_t qx_first = box.x0 & ~1, qy_first = box.y0 & ~1;
   std::int64_t row_base[3];  // each edge at the first pixel of the row's first region, stepped region by region
@@ -631,6 +613,27 @@ void RasterizeSamples(const std::int64_t A[3], const std::int64_t B[3], const st
     }
   }
 }
+
+// RasterizeSamples for each instruction set, its bookkeeping compiled for it too, its coverage kernel inlined (16 lanes
+// on AVX-512: a quad row in one vector, measured about 1.5% faster on the 4x bench scene than 8).
+template <int samples, class Emit, class Square>
+SOFTGL_TARGET_BASE void RasterizeSamplesBase(const std::int64_t A[3], const std::int64_t B[3], const std::int64_t C[3],
+                                             const Rect& box, bool small, Emit& emit, Square& square) {
+  RasterizeSamples<samples, 4>(A, B, C, box, small, emit, square);
+}
+#if defined(SOFTGL_HAS_DISPATCH)
+template <int samples, class Emit, class Square>
+SOFTGL_TARGET_AVX2 void RasterizeSamplesAvx2(const std::int64_t A[3], const std::int64_t B[3], const std::int64_t C[3],
+                                             const Rect& box, bool small, Emit& emit, Square& square) {
+  RasterizeSamples<samples, 8>(A, B, C, box, small, emit, square);
+}
+template <int samples, class Emit, class Square>
+SOFTGL_TARGET_AVX512 void RasterizeSamplesAvx512(const std::int64_t A[3], const std::int64_t B[3],
+                                                 const std::int64_t C[3], const Rect& box, bool small, Emit& emit,
+                                                 Square& square) {
+  RasterizeSamples<samples, 16>(A, B, C, box, small, emit, square);
+}
+#endif
 
 }  // namespace
 
@@ -771,33 +774,40 @@ void RasterizeTriangle(const VertexView& v0, const VertexView& v1, const VertexV
       constexpr int kSamples = decltype(count)::value;
       static const SampleOffsets<kSamples> kOffsets;
       for (int s = 0; s < kSamples; ++s) planes.sample_dz[s] = planes.z.dx * kOffsets.x[s] + planes.z.dy * kOffsets.y[s];
-      RasterizeSamples<kSamples>(A, B, C, Rect{int(px0), int(py0), int(px1) + 1, int(py1) + 1}, small,
-                                 [&](int qx, int qy, unsigned mask, const std::uint64_t* cover, int shift) {
-                                   int slot;
-                                   const int b = AddQuad(blocks, sink, front_facing, nvar, qx, qy, mask, slot, open, false);
-                                   blocks.quad_planes[b][slot] = entry.For(blocks, planes, varying_planes);
-                                   // (a new slot's sample bits are 0)
-                                   std::uint32_t* live = blocks.sample_live[b];
-                                   if constexpr (kSamples % 4 == 0) {  // four samples to a vector
-                                     using D2 = V<2>::D;
-                                     using U2 = V<2>::U;
-                                     using U4 = V<4>::U;
-                                     for (int g = 0; g < kSamples; g += 4) {
-                                       const U2 lo = __builtin_convertvector(LoadVec<D2>(cover + g) >> shift, U2);
-                                       const U2 hi = __builtin_convertvector(LoadVec<D2>(cover + g + 2) >> shift, U2);
-                                       const U4 bits = (__builtin_shufflevector(lo, hi, 0, 1, 2, 3) & 0xFu) << (4 * slot);
-                                       StoreVec(live + g, LoadVec<U4>(live + g) | bits);
-                                     }
-                                   } else {
-                                     for (int s = 0; s < kSamples; ++s)
-                                       live[s] |= (std::uint32_t(cover[s] >> shift) & 0xFu) << (4 * slot);
-                                   }
-                                 },
-                                 [&](int bx, int by) {
-                                   const int b = AddSquare(blocks, sink, front_facing, nvar, bx, by);
-                                   const TrianglePlanes* stored = entry.For(blocks, planes, varying_planes);
-                                   for (int q = 0; q < 4; ++q) blocks.quad_planes[b][q] = stored;
-                                 });
+      auto emit = [&](int qx, int qy, unsigned mask, const std::uint64_t* cover, int shift) {
+        int slot;
+        const int b = AddQuad(blocks, sink, front_facing, nvar, qx, qy, mask, slot, open, false);
+        blocks.quad_planes[b][slot] = entry.For(blocks, planes, varying_planes);
+        // (a new slot's sample bits are 0)
+        std::uint32_t* live = blocks.sample_live[b];
+        if constexpr (kSamples % 4 == 0) {  // four samples to a vector
+          using D2 = V<2>::D;
+          using U2 = V<2>::U;
+          using U4 = V<4>::U;
+          for (int g = 0; g < kSamples; g += 4) {
+            const U2 lo = __builtin_convertvector(LoadVec<D2>(cover + g) >> shift, U2);
+            const U2 hi = __builtin_convertvector(LoadVec<D2>(cover + g + 2) >> shift, U2);
+            const U4 bits = (__builtin_shufflevector(lo, hi, 0, 1, 2, 3) & 0xFu) << (4 * slot);
+            StoreVec(live + g, LoadVec<U4>(live + g) | bits);
+          }
+        } else {
+          for (int s = 0; s < kSamples; ++s) live[s] |= (std::uint32_t(cover[s] >> shift) & 0xFu) << (4 * slot);
+        }
+      };
+      auto square = [&](int bx, int by) {
+        const int b = AddSquare(blocks, sink, front_facing, nvar, bx, by);
+        const TrianglePlanes* stored = entry.For(blocks, planes, varying_planes);
+        for (int q = 0; q < 4; ++q) blocks.quad_planes[b][q] = stored;
+      };
+      const Rect box{int(px0), int(py0), int(px1) + 1, int(py1) + 1};
+#if defined(SOFTGL_HAS_DISPATCH)
+      switch (CpuSimdLevel()) {
+        case SimdLevel::kAvx512: return RasterizeSamplesAvx512<kSamples>(A, B, C, box, small, emit, square);
+        case SimdLevel::kAvx2: return RasterizeSamplesAvx2<kSamples>(A, B, C, box, small, emit, square);
+        default: break;
+      }
+#endif
+      RasterizeSamplesBase<kSamples>(A, B, C, box, small, emit, square);
     };
     if (target.samples == 2) rasterize(std::integral_constant<int, 2>{});
     else if (target.samples == 4) rasterize(std::integral_constant<int, 4>{});
