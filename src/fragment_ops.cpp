@@ -967,10 +967,9 @@ SOFTGL_WIDE std::uint32_t EarlyBlockSamples(Enum func, BlockBuffer& bb, const Re
   }
   return bb.live[b] &= any;
 }
-// The same into an interleaved target of S samples, W elements at a time.
-template <int W, int S, bool kDepth16>
-SOFTGL_WIDE std::uint32_t EarlyBlockInterleaved(Enum func, BlockBuffer& bb, const RenderTarget& t, int b,
-                                                const SampleDepths* depths) {
+// The same into an interleaved target of S samples, W elements at a time, with comparison kFunc.
+template <int W, int S, bool kDepth16, Enum kFunc>
+SOFTGL_WIDE std::uint32_t EarlyBlockInterleaved(BlockBuffer& bb, const RenderTarget& t, int b, const SampleDepths* depths) {
   using F = typename V<W>::F;
   std::uint32_t covered[S], kept[S] = {}, any_sample = 0;
   for (int s = 0; s < S; ++s) any_sample |= covered[s] = bb.live[b] & bb.sample_live[b][s];
@@ -986,9 +985,9 @@ SOFTGL_WIDE std::uint32_t EarlyBlockInterleaved(Enum func, BlockBuffer& bb, cons
     if constexpr (kDepth16) {
       const auto stored = __builtin_convertvector(
           (LoadElements<std::uint16_t, W, S, typename V<W>::S>(t.depth16, depth_at, e0)), typename V<W>::I);
-      pass = Compare(func, Depth16Lanes<W>(zc), stored) & (z == z);
+      pass = Compare(kFunc, Depth16Lanes<W>(zc), stored) & (z == z);
     } else {
-      pass = Compare(func, zc, LoadElements<float, W, S, F>(t.depth, depth_at, e0)) & (z == z);
+      pass = Compare(kFunc, zc, LoadElements<float, W, S, F>(t.depth, depth_at, e0)) & (z == z);
     }
     AddElementBits<W, S>(MaskToBits<W>(pass, 0), e0, packed, kept);
   });
@@ -997,13 +996,24 @@ SOFTGL_WIDE std::uint32_t EarlyBlockInterleaved(Enum func, BlockBuffer& bb, cons
   for (int s = 0; s < S; ++s) any |= bb.sample_live[b][s] = covered[s] & kept[s];
   return bb.live[b] &= any;
 }
+// (The early test takes only these four comparisons: EarlyDepthTestApplies.)
+template <int W, int S, bool kDepth16>
+SOFTGL_WIDE std::uint32_t EarlyBlockInterleavedFunc(Enum f, BlockBuffer& bb, const RenderTarget& t, int b,
+                                                    const SampleDepths* d) {
+  switch (f) {
+    case LESS: return EarlyBlockInterleaved<W, S, kDepth16, LESS>(bb, t, b, d);
+    case LEQUAL: return EarlyBlockInterleaved<W, S, kDepth16, LEQUAL>(bb, t, b, d);
+    case GREATER: return EarlyBlockInterleaved<W, S, kDepth16, GREATER>(bb, t, b, d);
+    default: return EarlyBlockInterleaved<W, S, kDepth16, GEQUAL>(bb, t, b, d);
+  }
+}
 template <int W, bool kDepth16>
 SOFTGL_WIDE std::uint32_t EarlyBlockInterleavedAny(Enum f, BlockBuffer& bb, const RenderTarget& t, int b,
                                                    const SampleDepths* d) {
   switch (t.samples) {
-    case 2: return EarlyBlockInterleaved<W, 2, kDepth16>(f, bb, t, b, d);
-    case 4: return EarlyBlockInterleaved<W, 4, kDepth16>(f, bb, t, b, d);
-    default: return EarlyBlockInterleaved<W, 8, kDepth16>(f, bb, t, b, d);
+    case 2: return EarlyBlockInterleavedFunc<W, 2, kDepth16>(f, bb, t, b, d);
+    case 4: return EarlyBlockInterleavedFunc<W, 4, kDepth16>(f, bb, t, b, d);
+    default: return EarlyBlockInterleavedFunc<W, 8, kDepth16>(f, bb, t, b, d);
   }
 }
 using EarlyBlockFn = std::uint32_t (*)(Enum, BlockBuffer&, const RenderTarget&, int, const SampleDepths*);

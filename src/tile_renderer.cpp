@@ -183,7 +183,8 @@ struct FragmentStage {
     std::uint32_t keep = (std::uint32_t(1) << samples) - 1;
     if (ms.multisample && ms.sample_coverage) keep &= CoverageMask(ms, samples);
     if (ms.multisample && ms.sample_mask) keep &= ms.mask;
-    for (int b = 0; b < blocks.count && ms.multisample; ++b) {
+    const bool narrows = ms.multisample && (keep != (std::uint32_t(1) << samples) - 1 || ms.alpha_to_coverage);
+    for (int b = 0; b < blocks.count && narrows; ++b) {
       for (int s = 0; s < samples; ++s)
         if (!((keep >> s) & 1u)) blocks.sample_live[b][s] = 0;
       if (!ms.alpha_to_coverage) continue;
