@@ -453,8 +453,8 @@ inline int PlaneStride(const BlockOpsContext& ctx) { return ctx.depths && !ctx.s
 // sample plane, or W elements of samples side by side), `go` those covered. `io` reads and writes each buffer's
 // values at their places (Stencil, SetStencil, Depth, SetDepth, Depth16, SetDepth16, Pixels, SetPixels), gives the
 // values' depths (Z) and the colour to write over the pixels (Result: blended, or the converted colour through the
-// colour mask).
-template <int W, class Io>
+// colour mask). kDepthFunc, where not 0, is the state's depth comparison as a constant.
+template <int W, class Io, Enum kDepthFunc = 0>
 SOFTGL_WIDE void VectorOps(const BlockOpsContext& ctx, typename V<W>::I go, const Io& io) {
   using F = typename V<W>::F;
   using I = typename V<W>::I;
@@ -471,6 +471,7 @@ SOFTGL_WIDE void VectorOps(const BlockOpsContext& ctx, typename V<W>::I go, cons
     go &= pass;
   }
   if (ctx.depth_test) {
+    const Enum depth_func = kDepthFunc ? kDepthFunc : st.depth_func;
     const F z = io.Z();
     F zc = z > 0.0f ? z : F{} + 0.0f;  // clamped to [0, 1]; NaN fails below
     zc = zc < 1.0f ? zc : F{} + 1.0f;
@@ -478,11 +479,11 @@ SOFTGL_WIDE void VectorOps(const BlockOpsContext& ctx, typename V<W>::I go, cons
     if (t.depth16) {  // 16 bits: the depths converted, round(zc * 65535) (as RenderTarget::Depth16), compared
       const I stored = __builtin_convertvector(io.Depth16(), I);
       const I zq = Depth16Lanes<W>(zc);
-      pass = Compare(st.depth_func, zq, stored) & (z == z);
+      pass = Compare(depth_func, zq, stored) & (z == z);
       if (st.depth_write) io.SetDepth16(__builtin_convertvector((go & pass) ? zq : stored, typename V<W>::S));
     } else {
       const F stored = io.Depth();
-      pass = Compare(st.depth_func, zc, stored) & (z == z);
+      pass = Compare(depth_func, zc, stored) & (z == z);
       if (st.depth_write) io.SetDepth((go & pass) ? zc : stored);
     }
     if (ctx.stencil_test) {
@@ -782,8 +783,8 @@ struct ElementIo {
   }
 };
 
-// BlockOps into an interleaved target of S samples, W elements at a time.
-template <int W, int S>
+// BlockOps into an interleaved target of S samples, W elements at a time (kDepthFunc: VectorOps').
+template <int W, int S, Enum kDepthFunc>
 SOFTGL_WIDE void BlockOpsInterleaved(const BlockOpsContext& ctx, int b) {
   using F = typename V<W>::F;
   using I = typename V<W>::I;
@@ -812,15 +813,26 @@ SOFTGL_WIDE void BlockOpsInterleaved(const BlockOpsContext& ctx, int b) {
     const I go = coverage.Mask(chunk);
     const ElementIo<W, S> io{ctx, at, at, at, chunk, b, sample_z, t.stencil, t.depth, t.depth16,
                              pixels, packed, colour};
-    VectorOps<W>(ctx, go, io);
+    VectorOps<W, ElementIo<W, S>, kDepthFunc>(ctx, go, io);
   });
+}
+// The usual depth comparisons as constants, the others read from the state.
+template <int W, int S>
+SOFTGL_WIDE void BlockOpsInterleavedFunc(const BlockOpsContext& ctx, int b) {
+  switch (ctx.depth_test ? ctx.state->depth_func : Enum(0)) {
+    case LESS: return BlockOpsInterleaved<W, S, LESS>(ctx, b);
+    case LEQUAL: return BlockOpsInterleaved<W, S, LEQUAL>(ctx, b);
+    case GREATER: return BlockOpsInterleaved<W, S, GREATER>(ctx, b);
+    case GEQUAL: return BlockOpsInterleaved<W, S, GEQUAL>(ctx, b);
+    default: return BlockOpsInterleaved<W, S, 0>(ctx, b);
+  }
 }
 template <int W>
 SOFTGL_WIDE void BlockOpsInterleavedAny(const BlockOpsContext& ctx, int b) {
   switch (ctx.samples) {
-    case 2: return BlockOpsInterleaved<W, 2>(ctx, b);
-    case 4: return BlockOpsInterleaved<W, 4>(ctx, b);
-    default: return BlockOpsInterleaved<W, 8>(ctx, b);
+    case 2: return BlockOpsInterleavedFunc<W, 2>(ctx, b);
+    case 4: return BlockOpsInterleavedFunc<W, 4>(ctx, b);
+    default: return BlockOpsInterleavedFunc<W, 8>(ctx, b);
   }
 }
 
