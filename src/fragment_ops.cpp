@@ -453,16 +453,20 @@ inline int PlaneStride(const BlockOpsContext& ctx) { return ctx.depths && !ctx.s
 // sample plane, or W elements of samples side by side), `go` those covered. `io` reads and writes each buffer's
 // values at their places (Stencil, SetStencil, Depth, SetDepth, Depth16, SetDepth16, Pixels, SetPixels), gives the
 // values' depths (Z) and the colour to write over the pixels (Result: blended, or the converted colour through the
-// colour mask). kDepthFunc, where not 0, is the state's depth comparison as a constant.
-template <int W, class Io, Enum kDepthFunc = 0>
+// colour mask). kDepthFunc, where not 0, is the state's depth comparison as a constant; kPlain: the state is known
+// to be the plainest (PlainOps), its tests and writes folded at compile time.
+template <int W, class Io, Enum kDepthFunc = 0, bool kPlain = false>
 SOFTGL_WIDE void VectorOps(const BlockOpsContext& ctx, typename V<W>::I go, const Io& io) {
   using F = typename V<W>::F;
   using I = typename V<W>::I;
   using U = typename V<W>::U;
   const RenderTarget& t = *ctx.target;
   const FragmentOpsState& st = *ctx.state;
+  const bool stencil_test = !kPlain && ctx.stencil_test, depth_test = kPlain || ctx.depth_test;
+  const bool depth16 = !kPlain && t.depth16, depth_write = kPlain || st.depth_write, colour = kPlain || io.colour;
+  std::uint64_t* const passed = kPlain ? nullptr : ctx.passed;
   I sten{};
-  if (ctx.stencil_test) {
+  if (stencil_test) {
     sten = __builtin_convertvector(io.Stencil(), I);
     const StencilFace& f = *ctx.face;
     const std::int32_t m = std::int32_t(f.value_mask & 0xFFu);
@@ -470,33 +474,33 @@ SOFTGL_WIDE void VectorOps(const BlockOpsContext& ctx, typename V<W>::I go, cons
     sten = StencilOpLanes<W>(f, f.sfail, sten, go & ~pass);
     go &= pass;
   }
-  if (ctx.depth_test) {
+  if (depth_test) {
     const Enum depth_func = kDepthFunc ? kDepthFunc : st.depth_func;
     const F z = io.Z();
     F zc = z > 0.0f ? z : F{} + 0.0f;  // clamped to [0, 1]; NaN fails below
     zc = zc < 1.0f ? zc : F{} + 1.0f;
     I pass;
-    if (t.depth16) {  // 16 bits: the depths converted, round(zc * 65535) (as RenderTarget::Depth16), compared
+    if (depth16) {  // 16 bits: the depths converted, round(zc * 65535) (as RenderTarget::Depth16), compared
       const I stored = __builtin_convertvector(io.Depth16(), I);
       const I zq = Depth16Lanes<W>(zc);
       pass = Compare(depth_func, zq, stored) & (z == z);
-      if (st.depth_write) io.SetDepth16(__builtin_convertvector((go & pass) ? zq : stored, typename V<W>::S));
+      if (depth_write) io.SetDepth16(__builtin_convertvector((go & pass) ? zq : stored, typename V<W>::S));
     } else {
       const F stored = io.Depth();
       pass = Compare(depth_func, zc, stored) & (z == z);
-      if (st.depth_write) io.SetDepth((go & pass) ? zc : stored);
+      if (depth_write) io.SetDepth((go & pass) ? zc : stored);
     }
-    if (ctx.stencil_test) {
+    if (stencil_test) {
       sten = StencilOpLanes<W>(*ctx.face, ctx.face->dpfail, sten, go & ~pass);
       sten = StencilOpLanes<W>(*ctx.face, ctx.face->dppass, sten, go & pass);
     }
     go &= pass;
-  } else if (ctx.stencil_test) {
+  } else if (stencil_test) {
     sten = StencilOpLanes<W>(*ctx.face, ctx.face->dppass, sten, go);
   }
-  if (ctx.stencil_test) io.SetStencil(__builtin_convertvector(sten, typename V<W>::B));
-  if (ctx.passed) *ctx.passed += std::uint64_t(__builtin_popcount(MaskToBits<W>(go, 0)));
-  if (!io.colour) return;
+  if (stencil_test) io.SetStencil(__builtin_convertvector(sten, typename V<W>::B));
+  if (passed) *passed += std::uint64_t(__builtin_popcount(MaskToBits<W>(go, 0)));
+  if (!colour) return;
   const U pixels = io.Pixels();
   io.SetPixels(go ? io.Result(pixels) : pixels);
 }
@@ -783,8 +787,8 @@ struct ElementIo {
   }
 };
 
-// BlockOps into an interleaved target of S samples, W elements at a time (kDepthFunc: VectorOps').
-template <int W, int S, Enum kDepthFunc>
+// BlockOps into an interleaved target of S samples, W elements at a time (kDepthFunc, kPlain: VectorOps').
+template <int W, int S, Enum kDepthFunc, bool kPlain>
 SOFTGL_WIDE void BlockOpsInterleaved(const BlockOpsContext& ctx, int b) {
   using F = typename V<W>::F;
   using I = typename V<W>::I;
@@ -813,26 +817,37 @@ SOFTGL_WIDE void BlockOpsInterleaved(const BlockOpsContext& ctx, int b) {
     const I go = coverage.Mask(chunk);
     const ElementIo<W, S> io{ctx, at, at, at, chunk, b, sample_z, t.stencil, t.depth, t.depth16,
                              pixels, packed, colour};
-    VectorOps<W, ElementIo<W, S>, kDepthFunc>(ctx, go, io);
+    VectorOps<W, ElementIo<W, S>, kDepthFunc, kPlain>(ctx, go, io);
   });
 }
-// The usual depth comparisons as constants, the others read from the state.
-template <int W, int S>
+// The usual depth comparisons as constants, the others read from the state; the plainest state (a depth test that
+// writes float depths, a colour written whole without blending, no stencil test, no query) folded.
+inline bool PlainOps(const BlockOpsContext& ctx) {
+  const RenderTarget& t = *ctx.target;
+  return ctx.depth_test && ctx.state->depth_write && !t.depth16 && !ctx.stencil_test && !ctx.passed &&
+         ctx.any_color && t.color[0].Present() && !ctx.blend->blend;
+}
+template <int W, int S, bool kPlain>
 SOFTGL_WIDE void BlockOpsInterleavedFunc(const BlockOpsContext& ctx, int b) {
   switch (ctx.depth_test ? ctx.state->depth_func : Enum(0)) {
-    case LESS: return BlockOpsInterleaved<W, S, LESS>(ctx, b);
-    case LEQUAL: return BlockOpsInterleaved<W, S, LEQUAL>(ctx, b);
-    case GREATER: return BlockOpsInterleaved<W, S, GREATER>(ctx, b);
-    case GEQUAL: return BlockOpsInterleaved<W, S, GEQUAL>(ctx, b);
-    default: return BlockOpsInterleaved<W, S, 0>(ctx, b);
+    case LESS: return BlockOpsInterleaved<W, S, LESS, kPlain>(ctx, b);
+    case LEQUAL: return BlockOpsInterleaved<W, S, LEQUAL, kPlain>(ctx, b);
+    case GREATER: return BlockOpsInterleaved<W, S, GREATER, kPlain>(ctx, b);
+    case GEQUAL: return BlockOpsInterleaved<W, S, GEQUAL, kPlain>(ctx, b);
+    default: return BlockOpsInterleaved<W, S, 0, false>(ctx, b);
   }
+}
+template <int W, int S>
+SOFTGL_WIDE void BlockOpsInterleavedState(const BlockOpsContext& ctx, int b) {
+  if (PlainOps(ctx)) return BlockOpsInterleavedFunc<W, S, true>(ctx, b);
+  BlockOpsInterleavedFunc<W, S, false>(ctx, b);
 }
 template <int W>
 SOFTGL_WIDE void BlockOpsInterleavedAny(const BlockOpsContext& ctx, int b) {
   switch (ctx.samples) {
-    case 2: return BlockOpsInterleavedFunc<W, 2>(ctx, b);
-    case 4: return BlockOpsInterleavedFunc<W, 4>(ctx, b);
-    default: return BlockOpsInterleavedFunc<W, 8>(ctx, b);
+    case 2: return BlockOpsInterleavedState<W, 2>(ctx, b);
+    case 4: return BlockOpsInterleavedState<W, 4>(ctx, b);
+    default: return BlockOpsInterleavedState<W, 8>(ctx, b);
   }
 }
 
