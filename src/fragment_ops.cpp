@@ -827,27 +827,33 @@ inline bool PlainOps(const BlockOpsContext& ctx) {
   return ctx.depth_test && ctx.state->depth_write && !t.depth16 && !ctx.stencil_test && !ctx.passed &&
          ctx.any_color && t.color[0].Present() && !ctx.blend->blend;
 }
+// Blocks b0 to b1 - 1 (those with live lanes), the instance chosen once for all of them.
+template <int W, int S, Enum kDepthFunc, bool kPlain>
+SOFTGL_WIDE void BlockOpsInterleavedRange(const BlockOpsContext& ctx, int b0, int b1) {
+  for (int b = b0; b < b1; ++b)
+    if (ctx.blocks->live[b]) BlockOpsInterleaved<W, S, kDepthFunc, kPlain>(ctx, b);
+}
 template <int W, int S, bool kPlain>
-SOFTGL_WIDE void BlockOpsInterleavedFunc(const BlockOpsContext& ctx, int b) {
+SOFTGL_WIDE void BlockOpsInterleavedFunc(const BlockOpsContext& ctx, int b0, int b1) {
   switch (ctx.depth_test ? ctx.state->depth_func : Enum(0)) {
-    case LESS: return BlockOpsInterleaved<W, S, LESS, kPlain>(ctx, b);
-    case LEQUAL: return BlockOpsInterleaved<W, S, LEQUAL, kPlain>(ctx, b);
-    case GREATER: return BlockOpsInterleaved<W, S, GREATER, kPlain>(ctx, b);
-    case GEQUAL: return BlockOpsInterleaved<W, S, GEQUAL, kPlain>(ctx, b);
-    default: return BlockOpsInterleaved<W, S, 0, false>(ctx, b);
+    case LESS: return BlockOpsInterleavedRange<W, S, LESS, kPlain>(ctx, b0, b1);
+    case LEQUAL: return BlockOpsInterleavedRange<W, S, LEQUAL, kPlain>(ctx, b0, b1);
+    case GREATER: return BlockOpsInterleavedRange<W, S, GREATER, kPlain>(ctx, b0, b1);
+    case GEQUAL: return BlockOpsInterleavedRange<W, S, GEQUAL, kPlain>(ctx, b0, b1);
+    default: return BlockOpsInterleavedRange<W, S, 0, false>(ctx, b0, b1);
   }
 }
 template <int W, int S>
-SOFTGL_WIDE void BlockOpsInterleavedState(const BlockOpsContext& ctx, int b) {
-  if (PlainOps(ctx)) return BlockOpsInterleavedFunc<W, S, true>(ctx, b);
-  BlockOpsInterleavedFunc<W, S, false>(ctx, b);
+SOFTGL_WIDE void BlockOpsInterleavedState(const BlockOpsContext& ctx, int b0, int b1) {
+  if (PlainOps(ctx)) return BlockOpsInterleavedFunc<W, S, true>(ctx, b0, b1);
+  BlockOpsInterleavedFunc<W, S, false>(ctx, b0, b1);
 }
 template <int W>
-SOFTGL_WIDE void BlockOpsInterleavedAny(const BlockOpsContext& ctx, int b) {
+SOFTGL_WIDE void BlockOpsInterleavedAny(const BlockOpsContext& ctx, int b0, int b1) {
   switch (ctx.samples) {
-    case 2: return BlockOpsInterleavedState<W, 2>(ctx, b);
-    case 4: return BlockOpsInterleavedState<W, 4>(ctx, b);
-    default: return BlockOpsInterleavedState<W, 8>(ctx, b);
+    case 2: return BlockOpsInterleavedState<W, 2>(ctx, b0, b1);
+    case 4: return BlockOpsInterleavedState<W, 4>(ctx, b0, b1);
+    default: return BlockOpsInterleavedState<W, 8>(ctx, b0, b1);
   }
 }
 
@@ -924,15 +930,20 @@ void LaneOps(const BlockOpsContext& ctx, const Unorm8Blend* per_buffer, int b, c
 using BlockOpsFn = void (*)(const BlockOpsContext&, int);
 template <bool kSamples>
 void BlockOpsBase(const BlockOpsContext& ctx, int b) { BlockOps<4, kSamples>(ctx, b); }
-void BlockOpsInterleavedBase(const BlockOpsContext& ctx, int b) { BlockOpsInterleavedAny<4>(ctx, b); }
+using BlockRangeOpsFn = void (*)(const BlockOpsContext&, int, int);
+void BlockOpsInterleavedBase(const BlockOpsContext& ctx, int b0, int b1) { BlockOpsInterleavedAny<4>(ctx, b0, b1); }
 #if defined(SOFTGL_HAS_DISPATCH)
 template <bool kSamples>
 SOFTGL_TARGET_AVX2 void BlockOpsAvx2(const BlockOpsContext& ctx, int b) { BlockOps<8, kSamples>(ctx, b); }
-SOFTGL_TARGET_AVX2 void BlockOpsInterleavedAvx2(const BlockOpsContext& ctx, int b) { BlockOpsInterleavedAny<8>(ctx, b); }
+SOFTGL_TARGET_AVX2 void BlockOpsInterleavedAvx2(const BlockOpsContext& ctx, int b0, int b1) {
+  BlockOpsInterleavedAny<8>(ctx, b0, b1);
+}
 // 8 lanes on AVX-512 too: GCC 12 compiles this unit's 16-lane comparisons lane by lane (see simd.h).
 template <bool kSamples>
 SOFTGL_TARGET_AVX512 void BlockOpsAvx512(const BlockOpsContext& ctx, int b) { BlockOps<8, kSamples>(ctx, b); }
-SOFTGL_TARGET_AVX512 void BlockOpsInterleavedAvx512(const BlockOpsContext& ctx, int b) { BlockOpsInterleavedAny<8>(ctx, b); }
+SOFTGL_TARGET_AVX512 void BlockOpsInterleavedAvx512(const BlockOpsContext& ctx, int b0, int b1) {
+  BlockOpsInterleavedAny<8>(ctx, b0, b1);
+}
 #endif
 
 // The early depth test of W lanes (from l0) of a block at `at`, fragment depths z, against a depth plane (float,
@@ -1023,31 +1034,56 @@ SOFTGL_WIDE std::uint32_t EarlyBlockInterleaved(BlockBuffer& bb, const RenderTar
   for (int s = 0; s < S; ++s) any |= bb.sample_live[b][s] = covered[s] & kept[s];
   return bb.live[b] &= any;
 }
-// (The early test takes only these four comparisons: EarlyDepthTestApplies.)
+// Blocks b0 to b1 - 1 (those with live lanes), the instance chosen once for all of them: their live lanes after the
+// test, together. (The early test takes only these four comparisons: EarlyDepthTestApplies.)
+template <int W, int S, bool kDepth16, Enum kFunc>
+SOFTGL_WIDE std::uint32_t EarlyInterleavedRange(BlockBuffer& bb, const RenderTarget& t, int b0, int b1,
+                                                const SampleDepths* d) {
+  std::uint32_t live = 0;
+  for (int b = b0; b < b1; ++b)
+    if (bb.live[b]) live |= EarlyBlockInterleaved<W, S, kDepth16, kFunc>(bb, t, b, d);
+  return live;
+}
 template <int W, int S, bool kDepth16>
-SOFTGL_WIDE std::uint32_t EarlyBlockInterleavedFunc(Enum f, BlockBuffer& bb, const RenderTarget& t, int b,
-                                                    const SampleDepths* d) {
+SOFTGL_WIDE std::uint32_t EarlyInterleavedFunc(Enum f, BlockBuffer& bb, const RenderTarget& t, int b0, int b1,
+                                               const SampleDepths* d) {
   switch (f) {
-    case LESS: return EarlyBlockInterleaved<W, S, kDepth16, LESS>(bb, t, b, d);
-    case LEQUAL: return EarlyBlockInterleaved<W, S, kDepth16, LEQUAL>(bb, t, b, d);
-    case GREATER: return EarlyBlockInterleaved<W, S, kDepth16, GREATER>(bb, t, b, d);
-    default: return EarlyBlockInterleaved<W, S, kDepth16, GEQUAL>(bb, t, b, d);
+    case LESS: return EarlyInterleavedRange<W, S, kDepth16, LESS>(bb, t, b0, b1, d);
+    case LEQUAL: return EarlyInterleavedRange<W, S, kDepth16, LEQUAL>(bb, t, b0, b1, d);
+    case GREATER: return EarlyInterleavedRange<W, S, kDepth16, GREATER>(bb, t, b0, b1, d);
+    default: return EarlyInterleavedRange<W, S, kDepth16, GEQUAL>(bb, t, b0, b1, d);
   }
 }
-template <int W, bool kDepth16>
-SOFTGL_WIDE std::uint32_t EarlyBlockInterleavedAny(Enum f, BlockBuffer& bb, const RenderTarget& t, int b,
-                                                   const SampleDepths* d) {
-  switch (t.samples) {
-    case 2: return EarlyBlockInterleavedFunc<W, 2, kDepth16>(f, bb, t, b, d);
-    case 4: return EarlyBlockInterleavedFunc<W, 4, kDepth16>(f, bb, t, b, d);
-    default: return EarlyBlockInterleavedFunc<W, 8, kDepth16>(f, bb, t, b, d);
+template <int W>
+SOFTGL_WIDE std::uint32_t EarlyInterleavedAny(Enum f, BlockBuffer& bb, const RenderTarget& t, int b0, int b1,
+                                              const SampleDepths* d) {
+  switch (t.samples + (t.depth16 ? 16 : 0)) {
+    case 2: return EarlyInterleavedFunc<W, 2, false>(f, bb, t, b0, b1, d);
+    case 4: return EarlyInterleavedFunc<W, 4, false>(f, bb, t, b0, b1, d);
+    case 8: return EarlyInterleavedFunc<W, 8, false>(f, bb, t, b0, b1, d);
+    case 18: return EarlyInterleavedFunc<W, 2, true>(f, bb, t, b0, b1, d);
+    case 20: return EarlyInterleavedFunc<W, 4, true>(f, bb, t, b0, b1, d);
+    default: return EarlyInterleavedFunc<W, 8, true>(f, bb, t, b0, b1, d);
   }
 }
+using EarlyRangeFn = std::uint32_t (*)(Enum, BlockBuffer&, const RenderTarget&, int, int, const SampleDepths*);
+std::uint32_t EarlyInterleavedBase(Enum f, BlockBuffer& bb, const RenderTarget& t, int b0, int b1, const SampleDepths* d) {
+  return EarlyInterleavedAny<4>(f, bb, t, b0, b1, d);
+}
+#if defined(SOFTGL_HAS_DISPATCH)
+SOFTGL_TARGET_AVX2 std::uint32_t EarlyInterleavedAvx2(Enum f, BlockBuffer& bb, const RenderTarget& t, int b0, int b1,
+                                                      const SampleDepths* d) {
+  return EarlyInterleavedAny<8>(f, bb, t, b0, b1, d);
+}
+SOFTGL_TARGET_AVX512 std::uint32_t EarlyInterleavedAvx512(Enum f, BlockBuffer& bb, const RenderTarget& t, int b0,
+                                                          int b1, const SampleDepths* d) {
+  return EarlyInterleavedAny<8>(f, bb, t, b0, b1, d);
+}
+#endif
 using EarlyBlockFn = std::uint32_t (*)(Enum, BlockBuffer&, const RenderTarget&, int, const SampleDepths*);
 template <int W>
 SOFTGL_WIDE std::uint32_t EarlyBlockEither(Enum f, BlockBuffer& bb, const RenderTarget& t, int b, const SampleDepths* d) {
-  if (d && t.interleaved)
-    return t.depth16 ? EarlyBlockInterleavedAny<W, true>(f, bb, t, b, d) : EarlyBlockInterleavedAny<W, false>(f, bb, t, b, d);
+  if (d && t.interleaved) return EarlyInterleavedAny<W>(f, bb, t, b, b + 1, d);
   if (t.depth16) return d ? EarlyBlockSamples<W, true>(f, bb, t, b, d) : EarlyBlock<W, true>(f, bb, t, b);
   return d ? EarlyBlockSamples<W, false>(f, bb, t, b, d) : EarlyBlock<W, false>(f, bb, t, b);
 }
@@ -1067,6 +1103,9 @@ SOFTGL_TARGET_AVX512 std::uint32_t EarlyBlockAvx512(Enum f, BlockBuffer& bb, con
 
 // The early test of every block, into a single-sampled target or (`depths` given) a multisampled one.
 bool EarlyTest(const FragmentOpsState& state, BlockBuffer& blocks, const RenderTarget& target, const SampleDepths* depths) {
+  static const EarlyRangeFn early_interleaved = SOFTGL_CHOOSE(EarlyInterleaved);
+  if (depths && target.interleaved && target.HasDepth() && ((target.width | target.height) & 1) == 0)
+    return early_interleaved(state.depth_func, blocks, target, 0, blocks.count, depths) != 0;  // (all Inside)
   std::uint32_t live = 0;
   static const EarlyBlockFn early = SOFTGL_CHOOSE(EarlyBlock);
   for (int b = 0; b < blocks.count; ++b) {
@@ -1102,6 +1141,24 @@ bool EarlyTest(const FragmentOpsState& state, BlockBuffer& blocks, const RenderT
   return live != 0;
 }
 
+// The operations of block b (live), into a single-sampled target or (`depths` given) a multisampled one.
+void BlockOpsOne(const BlockOpsContext& ctx, const FragmentOpsPlan& plan, const RenderTarget& target,
+                 const SampleDepths* depths, int b) {
+  static const BlockOpsFn block_ops = SOFTGL_CHOOSE(BlockOps, <false>);
+  static const BlockOpsFn block_ops_samples = SOFTGL_CHOOSE(BlockOps, <true>);
+  static const BlockRangeOpsFn block_ops_interleaved = SOFTGL_CHOOSE(BlockOpsInterleaved);
+  const BlockBuffer& blocks = *ctx.blocks;
+  if (plan.wide_target && Inside(target, blocks, b)) {
+    if (depths && target.interleaved) block_ops_interleaved(ctx, b, b + 1);
+    else (depths ? block_ops_samples : block_ops)(ctx, b);
+  } else if (!depths) {
+    LaneOps(ctx, plan.blend, b, target, blocks.live[b], PlaneDepths(ctx, b, 0), PlaneStride(ctx));
+  } else {
+    for (int s = 0; s < target.samples; ++s)
+      LaneOps(ctx, plan.blend, b, target.Sample(s), PlaneLanes(ctx, b, s), PlaneDepths(ctx, b, s), PlaneStride(ctx));
+  }
+}
+
 // The operations of every block, into a single-sampled target or (`depths` given) a multisampled one.
 void BlockOpsAll(const FragmentOpsState& state, const FragmentOpsPlan& plan, const BlockBuffer& blocks,
                  bool shader_depth, const RenderTarget& target, const SampleDepths* depths) {
@@ -1120,19 +1177,12 @@ void BlockOpsAll(const FragmentOpsState& state, const FragmentOpsPlan& plan, con
   ctx.samples = depths ? target.samples : 1;
   std::uint64_t passed = 0;
   ctx.passed = state.occlusion[0] || state.occlusion[1] ? &passed : nullptr;
-  static const BlockOpsFn block_ops = SOFTGL_CHOOSE(BlockOps, <false>);
-  static const BlockOpsFn block_ops_samples = SOFTGL_CHOOSE(BlockOps, <true>);
-  static const BlockOpsFn block_ops_interleaved = SOFTGL_CHOOSE(BlockOpsInterleaved);
-  for (int b = 0; b < blocks.count; ++b) {
-    if (!blocks.live[b]) continue;
-    if (plan.wide_target && Inside(target, blocks, b)) {
-      (!depths ? block_ops : target.interleaved ? block_ops_interleaved : block_ops_samples)(ctx, b);
-    } else if (!depths) {
-      LaneOps(ctx, plan.blend, b, target, blocks.live[b], PlaneDepths(ctx, b, 0), PlaneStride(ctx));
-    } else {
-      for (int s = 0; s < target.samples; ++s)
-        LaneOps(ctx, plan.blend, b, target.Sample(s), PlaneLanes(ctx, b, s), PlaneDepths(ctx, b, s), PlaneStride(ctx));
-    }
+  static const BlockRangeOpsFn block_ops_interleaved = SOFTGL_CHOOSE(BlockOpsInterleaved);
+  if (depths && target.interleaved && plan.wide_target && ((target.width | target.height) & 1) == 0) {
+    block_ops_interleaved(ctx, 0, blocks.count);  // (every block inside: Inside)
+  } else {
+    for (int b = 0; b < blocks.count; ++b)
+      if (blocks.live[b]) BlockOpsOne(ctx, plan, target, depths, b);
   }
   for (OcclusionCounter* c : state.occlusion)
     if (c && passed) c->passed.fetch_add(passed, std::memory_order_relaxed);
