@@ -931,16 +931,25 @@ using BlockOpsFn = void (*)(const BlockOpsContext&, int);
 template <bool kSamples>
 void BlockOpsBase(const BlockOpsContext& ctx, int b) { BlockOps<4, kSamples>(ctx, b); }
 using BlockRangeOpsFn = void (*)(const BlockOpsContext&, int, int);
+// BlockOps<W, false> on blocks b0 to b1 - 1 (those with live lanes), into a single-sampled target.
+template <int W>
+SOFTGL_WIDE void BlockOpsRange(const BlockOpsContext& ctx, int b0, int b1) {
+  for (int b = b0; b < b1; ++b)
+    if (ctx.blocks->live[b]) BlockOps<W, false>(ctx, b);
+}
+void BlockOpsSingleBase(const BlockOpsContext& ctx, int b0, int b1) { BlockOpsRange<4>(ctx, b0, b1); }
 void BlockOpsInterleavedBase(const BlockOpsContext& ctx, int b0, int b1) { BlockOpsInterleavedAny<4>(ctx, b0, b1); }
 #if defined(SOFTGL_HAS_DISPATCH)
 template <bool kSamples>
 SOFTGL_TARGET_AVX2 void BlockOpsAvx2(const BlockOpsContext& ctx, int b) { BlockOps<8, kSamples>(ctx, b); }
+SOFTGL_TARGET_AVX2 void BlockOpsSingleAvx2(const BlockOpsContext& ctx, int b0, int b1) { BlockOpsRange<8>(ctx, b0, b1); }
 SOFTGL_TARGET_AVX2 void BlockOpsInterleavedAvx2(const BlockOpsContext& ctx, int b0, int b1) {
   BlockOpsInterleavedAny<8>(ctx, b0, b1);
 }
 // 8 lanes on AVX-512 too: GCC 12 compiles this unit's 16-lane comparisons lane by lane (see simd.h).
 template <bool kSamples>
 SOFTGL_TARGET_AVX512 void BlockOpsAvx512(const BlockOpsContext& ctx, int b) { BlockOps<8, kSamples>(ctx, b); }
+SOFTGL_TARGET_AVX512 void BlockOpsSingleAvx512(const BlockOpsContext& ctx, int b0, int b1) { BlockOpsRange<8>(ctx, b0, b1); }
 SOFTGL_TARGET_AVX512 void BlockOpsInterleavedAvx512(const BlockOpsContext& ctx, int b0, int b1) {
   BlockOpsInterleavedAny<8>(ctx, b0, b1);
 }
@@ -1080,6 +1089,29 @@ SOFTGL_TARGET_AVX512 std::uint32_t EarlyInterleavedAvx512(Enum f, BlockBuffer& b
   return EarlyInterleavedAny<8>(f, bb, t, b0, b1, d);
 }
 #endif
+// EarlyBlock on blocks b0 to b1 - 1 (those with live lanes), into a single-sampled target: their live lanes after
+// the test, together.
+template <int W>
+SOFTGL_WIDE std::uint32_t EarlySingleRange(Enum f, BlockBuffer& bb, const RenderTarget& t, int b0, int b1,
+                                           const SampleDepths*) {
+  std::uint32_t live = 0;
+  for (int b = b0; b < b1; ++b)
+    if (bb.live[b]) live |= t.depth16 ? EarlyBlock<W, true>(f, bb, t, b) : EarlyBlock<W, false>(f, bb, t, b);
+  return live;
+}
+std::uint32_t EarlySingleBase(Enum f, BlockBuffer& bb, const RenderTarget& t, int b0, int b1, const SampleDepths* d) {
+  return EarlySingleRange<4>(f, bb, t, b0, b1, d);
+}
+#if defined(SOFTGL_HAS_DISPATCH)
+SOFTGL_TARGET_AVX2 std::uint32_t EarlySingleAvx2(Enum f, BlockBuffer& bb, const RenderTarget& t, int b0, int b1,
+                                                 const SampleDepths* d) {
+  return EarlySingleRange<8>(f, bb, t, b0, b1, d);
+}
+SOFTGL_TARGET_AVX512 std::uint32_t EarlySingleAvx512(Enum f, BlockBuffer& bb, const RenderTarget& t, int b0, int b1,
+                                                     const SampleDepths* d) {
+  return EarlySingleRange<8>(f, bb, t, b0, b1, d);
+}
+#endif
 using EarlyBlockFn = std::uint32_t (*)(Enum, BlockBuffer&, const RenderTarget&, int, const SampleDepths*);
 template <int W>
 SOFTGL_WIDE std::uint32_t EarlyBlockEither(Enum f, BlockBuffer& bb, const RenderTarget& t, int b, const SampleDepths* d) {
@@ -1104,8 +1136,11 @@ SOFTGL_TARGET_AVX512 std::uint32_t EarlyBlockAvx512(Enum f, BlockBuffer& bb, con
 // The early test of every block, into a single-sampled target or (`depths` given) a multisampled one.
 bool EarlyTest(const FragmentOpsState& state, BlockBuffer& blocks, const RenderTarget& target, const SampleDepths* depths) {
   static const EarlyRangeFn early_interleaved = SOFTGL_CHOOSE(EarlyInterleaved);
-  if (depths && target.interleaved && target.HasDepth() && ((target.width | target.height) & 1) == 0)
-    return early_interleaved(state.depth_func, blocks, target, 0, blocks.count, depths) != 0;  // (all Inside)
+  static const EarlyRangeFn early_single = SOFTGL_CHOOSE(EarlySingle);
+  if (target.HasDepth() && ((target.width | target.height) & 1) == 0) {  // every block inside (Inside)
+    if (depths && target.interleaved) return early_interleaved(state.depth_func, blocks, target, 0, blocks.count, depths) != 0;
+    if (!depths) return early_single(state.depth_func, blocks, target, 0, blocks.count, nullptr) != 0;
+  }
   std::uint32_t live = 0;
   static const EarlyBlockFn early = SOFTGL_CHOOSE(EarlyBlock);
   for (int b = 0; b < blocks.count; ++b) {
@@ -1178,8 +1213,12 @@ void BlockOpsAll(const FragmentOpsState& state, const FragmentOpsPlan& plan, con
   std::uint64_t passed = 0;
   ctx.passed = state.occlusion[0] || state.occlusion[1] ? &passed : nullptr;
   static const BlockRangeOpsFn block_ops_interleaved = SOFTGL_CHOOSE(BlockOpsInterleaved);
-  if (depths && target.interleaved && plan.wide_target && ((target.width | target.height) & 1) == 0) {
-    block_ops_interleaved(ctx, 0, blocks.count);  // (every block inside: Inside)
+  static const BlockRangeOpsFn block_ops_single = SOFTGL_CHOOSE(BlockOpsSingle);
+  const bool even = ((target.width | target.height) & 1) == 0;  // every block inside (Inside)
+  if (depths && target.interleaved && plan.wide_target && even) {
+    block_ops_interleaved(ctx, 0, blocks.count);
+  } else if (!depths && plan.wide_target && even) {
+    block_ops_single(ctx, 0, blocks.count);
   } else {
     for (int b = 0; b < blocks.count; ++b)
       if (blocks.live[b]) BlockOpsOne(ctx, plan, target, depths, b);
