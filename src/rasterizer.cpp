@@ -115,7 +115,7 @@ inline int AddQuad(BlockBuffer& blocks, const BlockSink& sink, bool front_facing
     b = blocks.count++;
     blocks.quads[b] = 0;
     blocks.live[b] = 0;
-    if (blocks.samples > 1) std::fill_n(blocks.sample_live[b], blocks.samples, 0u);
+    if (blocks.samples > 1) std::memset(blocks.sample_live[b], 0, sizeof(blocks.sample_live[b]));  // (a constant size: inline stores)
   }
   slot = blocks.quads[b]++;
   blocks.qx[b][slot] = qx;
