@@ -1075,41 +1075,38 @@ SOFTGL_WIDE std::uint32_t EarlyInterleavedAny(Enum f, BlockBuffer& bb, const Ren
     default: return EarlyInterleavedFunc<W, 8, true>(f, bb, t, b0, b1, d);
   }
 }
-using EarlyRangeFn = std::uint32_t (*)(Enum, BlockBuffer&, const RenderTarget&, int, int, const SampleDepths*);
-std::uint32_t EarlyInterleavedBase(Enum f, BlockBuffer& bb, const RenderTarget& t, int b0, int b1, const SampleDepths* d) {
-  return EarlyInterleavedAny<4>(f, bb, t, b0, b1, d);
-}
-#if defined(SOFTGL_HAS_DISPATCH)
-SOFTGL_TARGET_AVX2 std::uint32_t EarlyInterleavedAvx2(Enum f, BlockBuffer& bb, const RenderTarget& t, int b0, int b1,
-                                                      const SampleDepths* d) {
-  return EarlyInterleavedAny<8>(f, bb, t, b0, b1, d);
-}
-SOFTGL_TARGET_AVX512 std::uint32_t EarlyInterleavedAvx512(Enum f, BlockBuffer& bb, const RenderTarget& t, int b0,
-                                                          int b1, const SampleDepths* d) {
-  return EarlyInterleavedAny<8>(f, bb, t, b0, b1, d);
-}
-#endif
 // EarlyBlock on blocks b0 to b1 - 1 (those with live lanes), into a single-sampled target: their live lanes after
 // the test, together.
 template <int W>
-SOFTGL_WIDE std::uint32_t EarlySingleRange(Enum f, BlockBuffer& bb, const RenderTarget& t, int b0, int b1,
-                                           const SampleDepths*) {
+SOFTGL_WIDE std::uint32_t EarlySingleRange(Enum f, BlockBuffer& bb, const RenderTarget& t, int b0, int b1) {
   std::uint32_t live = 0;
   for (int b = b0; b < b1; ++b)
     if (bb.live[b]) live |= t.depth16 ? EarlyBlock<W, true>(f, bb, t, b) : EarlyBlock<W, false>(f, bb, t, b);
   return live;
 }
-std::uint32_t EarlySingleBase(Enum f, BlockBuffer& bb, const RenderTarget& t, int b0, int b1, const SampleDepths* d) {
-  return EarlySingleRange<4>(f, bb, t, b0, b1, d);
+// The early test of blocks b0 to b1 - 1 into an even-sized target: samples side by side (kInterleaved) or a
+// single-sampled target.
+template <int W, bool kInterleaved>
+SOFTGL_WIDE std::uint32_t EarlyRangeAny(Enum f, BlockBuffer& bb, const RenderTarget& t, int b0, int b1,
+                                        const SampleDepths* d) {
+  if constexpr (kInterleaved) return EarlyInterleavedAny<W>(f, bb, t, b0, b1, d);
+  else return EarlySingleRange<W>(f, bb, t, b0, b1);
+}
+using EarlyRangeFn = std::uint32_t (*)(Enum, BlockBuffer&, const RenderTarget&, int, int, const SampleDepths*);
+template <bool kInterleaved>
+std::uint32_t EarlyRangeBase(Enum f, BlockBuffer& bb, const RenderTarget& t, int b0, int b1, const SampleDepths* d) {
+  return EarlyRangeAny<4, kInterleaved>(f, bb, t, b0, b1, d);
 }
 #if defined(SOFTGL_HAS_DISPATCH)
-SOFTGL_TARGET_AVX2 std::uint32_t EarlySingleAvx2(Enum f, BlockBuffer& bb, const RenderTarget& t, int b0, int b1,
-                                                 const SampleDepths* d) {
-  return EarlySingleRange<8>(f, bb, t, b0, b1, d);
+template <bool kInterleaved>
+SOFTGL_TARGET_AVX2 std::uint32_t EarlyRangeAvx2(Enum f, BlockBuffer& bb, const RenderTarget& t, int b0, int b1,
+                                                const SampleDepths* d) {
+  return EarlyRangeAny<8, kInterleaved>(f, bb, t, b0, b1, d);
 }
-SOFTGL_TARGET_AVX512 std::uint32_t EarlySingleAvx512(Enum f, BlockBuffer& bb, const RenderTarget& t, int b0, int b1,
-                                                     const SampleDepths* d) {
-  return EarlySingleRange<8>(f, bb, t, b0, b1, d);
+template <bool kInterleaved>
+SOFTGL_TARGET_AVX512 std::uint32_t EarlyRangeAvx512(Enum f, BlockBuffer& bb, const RenderTarget& t, int b0, int b1,
+                                                    const SampleDepths* d) {
+  return EarlyRangeAny<8, kInterleaved>(f, bb, t, b0, b1, d);
 }
 #endif
 using EarlyBlockFn = std::uint32_t (*)(Enum, BlockBuffer&, const RenderTarget&, int, const SampleDepths*);
@@ -1135,8 +1132,8 @@ SOFTGL_TARGET_AVX512 std::uint32_t EarlyBlockAvx512(Enum f, BlockBuffer& bb, con
 
 // The early test of every block, into a single-sampled target or (`depths` given) a multisampled one.
 bool EarlyTest(const FragmentOpsState& state, BlockBuffer& blocks, const RenderTarget& target, const SampleDepths* depths) {
-  static const EarlyRangeFn early_interleaved = SOFTGL_CHOOSE(EarlyInterleaved);
-  static const EarlyRangeFn early_single = SOFTGL_CHOOSE(EarlySingle);
+  static const EarlyRangeFn early_interleaved = SOFTGL_CHOOSE(EarlyRange, <true>);
+  static const EarlyRangeFn early_single = SOFTGL_CHOOSE(EarlyRange, <false>);
   if (target.HasDepth() && ((target.width | target.height) & 1) == 0) {  // every block inside (Inside)
     if (depths && target.interleaved) return early_interleaved(state.depth_func, blocks, target, 0, blocks.count, depths) != 0;
     if (!depths) return early_single(state.depth_func, blocks, target, 0, blocks.count, nullptr) != 0;
