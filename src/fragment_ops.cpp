@@ -562,7 +562,7 @@ SOFTGL_WIDE void BlockOps(const BlockOpsContext& ctx, int b) {
   const QuadPlaces colour_at = t.color[0].pitch == t.depth_pitch ? depth_at : QuadPlaces(bb, b, t.color[0].pitch);
   for (int l0 = 0; l0 < kLanes; l0 += W) {
     if (!((live >> l0) & kChunk)) continue;
-    F color[4];
+    F color[4] = {};  // (read only where `colour` holds)
     U packed{};  // without blending: the colour's bytes through the colour mask
     if (colour) {
       for (int c = 0; c < 4; ++c) color[c] = LoadVec<F>(bb.Color(b, 0, c) + l0);
