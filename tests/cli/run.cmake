@@ -2,10 +2,11 @@
 # each file exists afterwards (and was not there before); with ABSENT, that none of those files exists afterwards;
 # with STDOUT or STDERR (;-lists of regular expressions), that the standard output or error matches each; with
 # MAGIC (a regular expression over hexadecimal digits), that the first 48 bytes of the first of FILES match it.
+# EMULATOR (a ;-list, may be empty) runs the program when it was built for another architecture.
 foreach(f IN LISTS FILES ABSENT)
   file(REMOVE "${f}")
 endforeach()
-execute_process(COMMAND "${RENDER}" ${ARGS} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+execute_process(COMMAND ${EMULATOR} "${RENDER}" ${ARGS} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
 if(NOT rc EQUAL EXPECTED)
   message(FATAL_ERROR "softgl-render ${ARGS}: exit ${rc}, expected ${EXPECTED}\n${out}${err}")
 endif()

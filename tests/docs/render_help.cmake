@@ -1,5 +1,6 @@
 # docs/guide.md quotes `softgl-render --help` (the text block after the line that ends "`softgl-render --help`:"):
-# the quote must be the program's output, line for line. Variables: GUIDE, RENDER.
+# the quote must be the program's output, line for line. Variables: GUIDE, RENDER, EMULATOR (runs a
+# program built for another architecture; may be empty).
 file(READ "${GUIDE}" guide)
 set(marker "`softgl-render --help`:\n\n```text\n")
 string(FIND "${guide}" "${marker}" start)
@@ -11,7 +12,7 @@ math(EXPR start "${start} + ${marker_length}")
 string(SUBSTRING "${guide}" ${start} -1 rest)
 string(FIND "${rest}" "```" end)
 string(SUBSTRING "${rest}" 0 ${end} quoted)
-execute_process(COMMAND "${RENDER}" --help RESULT_VARIABLE rc OUTPUT_VARIABLE help)
+execute_process(COMMAND ${EMULATOR} "${RENDER}" --help RESULT_VARIABLE rc OUTPUT_VARIABLE help)
 if(rc)
   message(FATAL_ERROR "softgl-render --help failed (${rc})")
 endif()
