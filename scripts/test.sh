@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
-# The whole test suite, in stages: a Release build and its ctest, a Debug build under AddressSanitizer +
-# UndefinedBehaviorSanitizer and its ctest, the threading tests under ThreadSanitizer, then the libFuzzer targets,
-# each for a fixed number of inputs from its seed corpus with a fixed seed (the same commit gives the same result).
-# Warnings are errors throughout.
+# The whole test suite, in stages: a Release build and its ctest (GCC), the same with Clang, a Debug build under
+# AddressSanitizer + UndefinedBehaviorSanitizer and its ctest, the threading tests under ThreadSanitizer, an arm64
+# cross-build whose ctest runs under qemu-aarch64-static, then the libFuzzer targets, each for a fixed number of
+# inputs from its seed corpus with a fixed seed (the same commit gives the same result). Warnings are errors
+# throughout.
 #
 # Every stage runs, even after one has failed; each prints its name as it starts and, when it fails, the cause (the
 # failing tests, the compiler's errors, or the fuzz artifact and its stack). Each stage's whole output is kept in
@@ -12,7 +13,9 @@
 # scripts/fuzz.sh.
 set -uo pipefail
 cd "$(dirname "$0")/.."
-scripts/deps.sh libosmesa6-dev libgl1-mesa-dri assimp-testmodels clang libclang-rt-14-dev || exit 1
+scripts/deps.sh libosmesa6-dev libgl1-mesa-dri assimp-testmodels clang libclang-rt-14-dev \
+  g++-aarch64-linux-gnu qemu-user-static libassimp-dev:arm64 libjpeg62-turbo-dev:arm64 libwebp-dev:arm64 \
+  libstb-dev:arm64 zlib1g-dev:arm64 || exit 1
 
 jobs=$(nproc)
 logs=build/logs
@@ -66,6 +69,13 @@ release() {
     ctest --test-dir build/release --output-on-failure -j "$jobs"
 }
 
+# The same build and tests with Clang (libstdc++), its own warnings as errors.
+clang_release() {
+  CC=clang CXX=clang++ cmake -S . -B build/clang -DCMAKE_BUILD_TYPE=Release -DSOFTGL_WERROR=ON &&
+    cmake --build build/clang -j "$jobs" &&
+    ctest --test-dir build/clang --output-on-failure -j "$jobs"
+}
+
 sanitizers() {
   cmake -S . -B build/sanitize -DCMAKE_BUILD_TYPE=Debug -DSOFTGL_SANITIZE=ON -DSOFTGL_WERROR=ON &&
     cmake --build build/sanitize -j "$jobs" &&
@@ -79,6 +89,17 @@ tsan() {
       -DSOFTGL_INSTALL=OFF &&
     cmake --build build/tsan -j "$jobs" --target softgl_tests &&
     TSAN_OPTIONS=halt_on_error=1 ctest --test-dir build/tsan -R threads --output-on-failure
+}
+
+# 64-bit ARM: cross-built with Debian's aarch64 compiler and :arm64 libraries (cmake/aarch64-linux-gnu.cmake), every
+# test program run under qemu-aarch64-static at the default thread count, golden images included. (No conformance
+# suite there: Mesa's llvmpipe would itself run emulated. The consumer projects and the documentation's programs
+# are host packaging tests.)
+arm64() {
+  cmake -S . -B build/arm64 -DCMAKE_TOOLCHAIN_FILE=cmake/aarch64-linux-gnu.cmake -DCMAKE_BUILD_TYPE=Release \
+      -DSOFTGL_WERROR=ON &&
+    cmake --build build/arm64 -j "$jobs" &&
+    ctest --test-dir build/arm64 --output-on-failure -j "$jobs"
 }
 
 fuzz_build() {
@@ -107,8 +128,10 @@ fuzz() {
 
 scale=${SOFTGL_FUZZ_SCALE:-1}
 stage release release
+stage clang clang_release
 stage sanitizers sanitizers
 stage tsan tsan
+stage arm64 arm64
 if stage fuzz_build fuzz_build; then
   stage fuzz_api fuzz fuzz_api $((150000 * scale)) 1
   stage fuzz_pipeline fuzz fuzz_pipeline $((200000 * scale)) 1
