@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <new>
 
@@ -305,14 +306,17 @@ void Blit(const RenderTarget& src, const RenderTarget& dst, const BlitRegion& r)
     for (int s = 0; s < dst.samples; ++s) Blit(src.samples == dst.samples ? src.Sample(s) : src, dst.Sample(s), r);
     return;
   }
-  if (src.samples > 1 && r.src[2] - r.src[0] == r.dst[2] - r.dst[0] && r.src[3] - r.src[1] == r.dst[3] - r.dst[1] &&
-      r.src[2] > r.src[0] && r.src[3] > r.src[1]) {
-    // A resolve of the same rectangle unmirrored: rows at a time, clipped to both buffers.
-    const int dx = r.dst[0] - r.src[0], dy = r.dst[1] - r.src[1];
-    const int x0 = std::max({r.dst[0], r.clip.x0, 0, dx}), x1 = std::min({r.dst[2], r.clip.x1, dst.width, src.width + dx});
-    const int y0 = std::max({r.dst[1], r.clip.y0, 0, dy}), y1 = std::min({r.dst[3], r.clip.y1, dst.height, src.height + dy});
+  // (Rectangle sizes and offsets in 64 bits: the corners may be any ints, INT_MIN to INT_MAX.)
+  using I64 = std::int64_t;
+  const I64 sw = I64(r.src[2]) - r.src[0], sh = I64(r.src[3]) - r.src[1];
+  if (src.samples > 1 && sw == I64(r.dst[2]) - r.dst[0] && sh == I64(r.dst[3]) - r.dst[1] && sw > 0 && sh > 0) {
+    // A resolve of the same rectangle unmirrored: rows at a time, clipped to both buffers (which also bounds the
+    // offset of the two rectangles to the buffers' sizes wherever a pixel is left).
+    const I64 dx = I64(r.dst[0]) - r.src[0], dy = I64(r.dst[1]) - r.src[1];
+    const I64 x0 = std::max<I64>({r.dst[0], r.clip.x0, 0, dx}), x1 = std::min<I64>({r.dst[2], r.clip.x1, dst.width, src.width + dx});
+    const I64 y0 = std::max<I64>({r.dst[1], r.clip.y0, 0, dy}), y1 = std::min<I64>({r.dst[3], r.clip.y1, dst.height, src.height + dy});
     if (x0 >= x1 || y0 >= y1) return;
-    if (ResolveRows(src, dst, r, x0, x1, y0, y1, dx, dy)) return;
+    if (ResolveRows(src, dst, r, int(x0), int(x1), int(y0), int(y1), int(dx), int(dy))) return;
   }
   const BlitAxis ax =
       MakeAxis(r.src[0], r.src[2], r.dst[0], r.dst[2], std::max(r.clip.x0, 0), std::min(r.clip.x1, dst.width));
