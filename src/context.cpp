@@ -152,7 +152,7 @@ void Context::GetMultisamplefv(Enum pname, std::uint32_t index, float* val) {
   const int samples = s.draw_fbo ? FramebufferTarget(*s.draw_fbo).samples : s.fb.samples;
   if (index >= std::uint32_t(samples)) return s.SetError(INVALID_VALUE, __func__, "index is not below the draw framebuffer's sample count");
   const std::uint8_t* p = detail::SamplePositions(samples)[index];
-  if (val) {
+  if (NotNull(s, __func__, val, "val")) {
     val[0] = float(p[0]) / 16.0f;
     val[1] = float(p[1]) / 16.0f;
   }

@@ -92,8 +92,10 @@ void Context::BufferSubData(Enum target, std::ptrdiff_t offset, std::ptrdiff_t s
   if (buffer == nullptr) return;
   if (offset < 0 || size < 0) return s.SetError(INVALID_VALUE, __func__, "offset or size is negative");
   if (!InStore(buffer->data.size(), offset, size)) return s.SetError(INVALID_VALUE, __func__, "the range is outside the buffer's store");
-  if (buffer->MappedOverlaps(std::size_t(offset), std::size_t(size))) return s.SetError(INVALID_OPERATION, __func__, "the range is mapped");
-  if (data != nullptr && size > 0) std::memcpy(buffer->data.data() + offset, data, std::size_t(size));
+  // OpenGL 3.3 (sections 2.9.2 and 6.1.13): an error whenever the buffer is mapped, whatever range is written.
+  if (buffer->mapped) return s.SetError(INVALID_OPERATION, __func__, "the buffer is mapped");
+  if (size == 0 || !NotNull(s, __func__, data, "data")) return;
+  std::memcpy(buffer->data.data() + offset, data, std::size_t(size));
 }
 
 namespace {
@@ -180,8 +182,9 @@ void Context::GetBufferSubData(Enum target, std::ptrdiff_t offset, std::ptrdiff_
   if (buffer == nullptr) return;
   if (offset < 0 || size < 0) return s.SetError(INVALID_VALUE, __func__, "offset or size is negative");
   if (!InStore(buffer->data.size(), offset, size)) return s.SetError(INVALID_VALUE, __func__, "the range is outside the buffer's store");
-  if (buffer->MappedOverlaps(std::size_t(offset), std::size_t(size))) return s.SetError(INVALID_OPERATION, __func__, "the range is mapped");
-  if (data != nullptr && size > 0) std::memcpy(data, buffer->data.data() + offset, std::size_t(size));
+  if (buffer->mapped) return s.SetError(INVALID_OPERATION, __func__, "the buffer is mapped");
+  if (size == 0 || !NotNull(s, __func__, data, "data")) return;
+  std::memcpy(data, buffer->data.data() + offset, std::size_t(size));
 }
 
 namespace {
@@ -212,13 +215,13 @@ bool BufferParameter(ContextState& s, const char* what, Enum target, Enum pname,
 
 void Context::GetBufferParameteri64v(Enum target, Enum pname, std::int64_t* params) const {
   std::int64_t v = 0;
-  if (BufferParameter(*state_, __func__, target, pname, v) && params != nullptr) *params = v;
+  if (BufferParameter(*state_, __func__, target, pname, v) && NotNull(*state_, __func__, params, "params")) *params = v;
 }
 
 void Context::GetBufferParameteriv(Enum target, Enum pname, int* params) const {
   std::int64_t v = 0;
   // Sizes beyond the int range read as the largest int (OpenGL's conversion of integer state to a smaller type).
-  if (BufferParameter(*state_, __func__, target, pname, v) && params != nullptr)
+  if (BufferParameter(*state_, __func__, target, pname, v) && NotNull(*state_, __func__, params, "params"))
     *params = int(std::clamp<std::int64_t>(v, INT32_MIN, INT32_MAX));
 }
 
@@ -227,7 +230,7 @@ void Context::GetBufferPointerv(Enum target, Enum pname, void** params) const {
   if (pname != BUFFER_MAP_POINTER) return s.SetError(INVALID_ENUM, __func__, "pname must be BUFFER_MAP_POINTER");
   Buffer* buffer = s.BoundBuffer(__func__, target);
   if (buffer == nullptr) return;
-  if (params != nullptr) *params = buffer->mapped ? buffer->data.data() + buffer->map_offset : nullptr;
+  if (NotNull(s, __func__, params, "params")) *params = buffer->mapped ? buffer->data.data() + buffer->map_offset : nullptr;
 }
 
 // ---- Vertex arrays -------------------------------------------------------------------------------------------

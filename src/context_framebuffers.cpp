@@ -112,6 +112,12 @@ detail::RenderTarget ReadTarget(ContextState& s, bool srgb = false, bool samples
   for (int i = 1; i < kMaxColorOutputs; ++i) reading.draw_buffers[i] = NONE;
   return FramebufferTarget(reading, srgb);
 }
+// Whether `t`, read from the context's own framebuffer, is empty (a 0 x N or N x 0 context) where a buffer of the
+// kind asked for would be: that framebuffer's buffers exist, as OpenGL's default framebuffer's do, with no pixels
+// in them to read (colour: unless ReadBuffer(NONE)).
+bool EmptyDefaultRead(const ContextState& s, const detail::RenderTarget& t, bool colour) {
+  return !s.read_fbo && (t.width == 0 || t.height == 0) && (!colour || s.default_read_buffer != NONE);
+}
 // The sample count of the (complete) framebuffer object bound for reading; 1 when none is bound.
 int ReadFboSamples(ContextState& s) {
   if (!s.read_fbo) return 1;
@@ -138,6 +144,7 @@ Image Context::ReadPixels() const {
 }
 
 void Context::ReadPixel(int x, int y, std::uint8_t rgba[4]) const {
+  if (!NotNull(*state_, __func__, rgba, "rgba")) return;
   state_->Sync(__func__);
   const detail::RenderTarget t = ReadTarget(*state_, false, false, detail::kColorBit);
   std::memset(rgba, 0, 4);
@@ -176,21 +183,27 @@ bool LayoutOf(Enum format, PixelLayout& l) {
   }
 }
 
-// Writes normalized value v (clamped to [0, 1]) or, for stencil indices, the integer value as `type`.
+// v clamped to [0, 1], NaN as 0 (a float buffer may hold NaN; std::clamp would pass it on), times `max`, rounded.
+std::uint64_t ToUnsignedNormalized(double v, double max) {
+  const double c = v > 0.0 ? std::min(v, 1.0) : 0.0;
+  return std::uint64_t(std::llround(c * max));
+}
+
+// Writes normalized value v (clamped to [0, 1], NaN as 0) or, for stencil indices, the integer value as `type`.
 void PutComponent(Enum type, double v, bool integer, std::uint8_t* dst) {
   switch (type) {
     case UNSIGNED_BYTE: {
-      const auto b = std::uint8_t(integer ? v : std::lround(std::clamp(v, 0.0, 1.0) * 255.0));
+      const auto b = std::uint8_t(integer ? v : ToUnsignedNormalized(v, 255.0));
       *dst = b;
       break;
     }
     case UNSIGNED_SHORT: {
-      const auto h = std::uint16_t(integer ? v : std::lround(std::clamp(v, 0.0, 1.0) * 65535.0));
+      const auto h = std::uint16_t(integer ? v : ToUnsignedNormalized(v, 65535.0));
       std::memcpy(dst, &h, 2);
       break;
     }
     case UNSIGNED_INT: {
-      const auto u = std::uint32_t(integer ? v : std::llround(std::clamp(v, 0.0, 1.0) * 4294967295.0));
+      const auto u = std::uint32_t(integer ? v : ToUnsignedNormalized(v, 4294967295.0));
       std::memcpy(dst, &u, 4);
       break;
     }
@@ -202,22 +215,35 @@ void PutComponent(Enum type, double v, bool integer, std::uint8_t* dst) {
   }
 }
 
-// OpenGL's pack layout: rows of PACK_ROW_LENGTH (or width) pixels, each row aligned to PACK_ALIGNMENT when a
-// component is smaller than the alignment, starting PACK_SKIP_ROWS rows and PACK_SKIP_PIXELS pixels in.
+// OpenGL's pack layout (section 4.3.2): rows of PACK_ROW_LENGTH (or width) pixels, each row aligned to
+// PACK_ALIGNMENT when a component is smaller than the alignment, starting PACK_SKIP_ROWS rows and PACK_SKIP_PIXELS
+// pixels in; for the images of a 3D or array texture (`layered`), images of PACK_IMAGE_HEIGHT (or height) rows,
+// starting PACK_SKIP_IMAGES images in. With PACK_SWAP_BYTES each component's bytes are reversed (Swap).
 struct PackLayout {
   std::uint8_t* out;
-  std::size_t stride, pixel, component;
-  std::uint8_t* At(int i, int j) const { return out + std::size_t(j) * stride + std::size_t(i) * pixel; }
+  std::size_t stride, image, pixel, component;
+  bool swap = false;
+  std::uint8_t* At(int i, int j, int k = 0) const {
+    return out + std::size_t(k) * image + std::size_t(j) * stride + std::size_t(i) * pixel;
+  }
+  void Swap(std::uint8_t* p) const {
+    if (!swap || component == 1) return;
+    for (std::size_t e = 0; e < pixel; e += component) std::reverse(p + e, p + e + component);
+  }
 };
-PackLayout Pack(const ContextState& s, int width, const PixelLayout& l, Enum type, void* pixels) {
+PackLayout Pack(const ContextState& s, int width, int height, bool layered, const PixelLayout& l, Enum type,
+                void* pixels) {
+  const detail::ClientLayout& c = s.pack;
   PackLayout p;
   p.component = type == UNSIGNED_BYTE ? 1 : type == UNSIGNED_SHORT ? 2 : 4;
   p.pixel = p.component * std::size_t(l.count);
-  p.stride = std::size_t(s.pack_row_length > 0 ? s.pack_row_length : width) * p.pixel;
-  const std::size_t align = std::size_t(s.pack_alignment);
+  p.stride = std::size_t(c.row_length > 0 ? c.row_length : width) * p.pixel;
+  const std::size_t align = std::size_t(c.alignment);
   if (p.component < align) p.stride = (p.stride + align - 1) / align * align;
-  p.out = static_cast<std::uint8_t*>(pixels) + std::size_t(s.pack_skip_rows) * p.stride +
-          std::size_t(s.pack_skip_pixels) * p.pixel;
+  p.image = p.stride * std::size_t(c.image_height > 0 ? c.image_height : height);
+  p.out = static_cast<std::uint8_t*>(pixels) + (layered ? std::size_t(c.skip_images) * p.image : 0) +
+          std::size_t(c.skip_rows) * p.stride + std::size_t(c.skip_pixels) * p.pixel;
+  p.swap = c.swap_bytes;
   return p;
 }
 
@@ -238,10 +264,11 @@ void Context::ReadPixels(int x, int y, int width, int height, Enum format, Enum 
   const unsigned buffers = l.depth || l.stencil ? (l.depth ? detail::kDepthBit : 0u) | (l.stencil ? detail::kStencilBit : 0u)
                                                 : detail::kColorBit;
   const detail::RenderTarget t = ReadTarget(s, false, false, buffers);
-  if ((l.depth && !t.HasDepth()) || (l.stencil && !t.stencil) || (l.count > 0 && !l.depth && !l.stencil && !t.color[0].Present()))
+  if (!EmptyDefaultRead(s, t, !l.depth && !l.stencil) &&
+      ((l.depth && !t.HasDepth()) || (l.stencil && !t.stencil) || (l.count > 0 && !l.depth && !l.stencil && !t.color[0].Present())))
     return s.SetError(INVALID_OPERATION, __func__, "the read framebuffer has no buffer of that kind");
-  if (pixels == nullptr || width == 0 || height == 0) return;
-  const PackLayout pack = Pack(s, width, l, type, pixels);
+  if (width == 0 || height == 0 || !NotNull(s, __func__, pixels, "pixels")) return;
+  const PackLayout pack = Pack(s, width, height, false, l, type, pixels);
   const std::size_t component = pack.component;
   // Only pixels inside the read buffer are written (the others are undefined in OpenGL: left as they are).
   const int x0 = std::max(x, 0), y0 = std::max(y, 0);
@@ -251,8 +278,8 @@ void Context::ReadPixels(int x, int y, int width, int height, Enum format, Enum 
     for (int px = x0; px < x1; ++px) {
       std::uint8_t* dst = pack.At(px - x, py - y);
       if (format == DEPTH_STENCIL) {
-        const double d = std::clamp(double(t.DepthAt(px, py)), 0.0, 1.0);
-        const std::uint32_t word = std::uint32_t(std::llround(d * 16777215.0)) << 8 | t.Stencil(px, py);
+        const std::uint32_t word = std::uint32_t(ToUnsignedNormalized(t.DepthAt(px, py), 16777215.0)) << 8 |
+                                   t.Stencil(px, py);
         std::memcpy(dst, &word, 4);
       } else if (l.depth) {
         PutComponent(type, double(t.DepthAt(px, py)), false, dst);
@@ -265,6 +292,7 @@ void Context::ReadPixels(int x, int y, int width, int height, Enum format, Enum 
         for (int k = 0; k < l.count; ++k)
           PutComponent(type, double(c[l.channels[k]]), false, dst + std::size_t(k) * component);
       }
+      pack.Swap(dst);
     }
 }
 
@@ -277,25 +305,26 @@ void Context::GetTexImage(Enum target, int level, Enum format, Enum type, void* 
   if (type != UNSIGNED_BYTE && type != UNSIGNED_SHORT && type != UNSIGNED_INT && type != FLOAT && type != UNSIGNED_INT_24_8)
     return s.SetError(INVALID_ENUM, __func__, "type must be UNSIGNED_BYTE, UNSIGNED_SHORT, UNSIGNED_INT, FLOAT or UNSIGNED_INT_24_8");
   if ((format == DEPTH_STENCIL) != (type == UNSIGNED_INT_24_8)) return s.SetError(INVALID_OPERATION, __func__, "DEPTH_STENCIL goes with UNSIGNED_INT_24_8, and only it");
-  if (level < 0 || level >= detail::kMaxLevels) return s.SetError(INVALID_VALUE, __func__, "level is negative or beyond the largest mipmap level");
+  if (level < 0 || level >= LevelCount(target)) return s.SetError(INVALID_VALUE, __func__, "level is negative or beyond the largest mipmap level");
   int face = 0;
   const detail::TextureObject* tex = s.Bound(target, &face);
   if (!tex) return s.SetError(INVALID_OPERATION, __func__, "no texture is bound to that target of the active unit");
   const detail::TextureLevel& lv = tex->levels[face][level];
-  if (!lv.Defined() || pixels == nullptr) return;  // an undefined level has no texels to return
+  if (!lv.Defined()) return;  // an undefined level has no texels to return
+  if (!NotNull(s, __func__, pixels, "pixels")) return;
   if (detail::IsDepthFormat(lv.format) != l.depth) return s.SetError(INVALID_OPERATION, __func__, "DEPTH_COMPONENT for a colour texture, or the reverse");
   if (l.stencil && lv.stencil.empty()) return s.SetError(INVALID_OPERATION, __func__, "DEPTH_STENCIL for a texture without stencil");
   s.Sync(__func__);  // a texture being rendered into holds its texels once the recorded draws are rendered
-  const PackLayout pack = Pack(s, lv.width, l, type, pixels);
-  // A 2D array's layers or a 3D texture's slices one image after another: with the images' rows continuing
-  // upwards, as they are stored, image k's row j is row k * height + j of the packed rows.
+  const bool layered = target == TEXTURE_2D_ARRAY || target == TEXTURE_3D;
+  const PackLayout pack = Pack(s, lv.width, lv.height, layered, l, type, pixels);
+  // A 2D array's layers or a 3D texture's slices one image after another (PACK_IMAGE_HEIGHT rows apart); the
+  // level stores image k's row j as its row k * height + j.
   for (int j = 0; j < lv.height * lv.depth; ++j)
     for (int i = 0; i < lv.width; ++i) {
       const glm::vec4 c = lv.Texel(i, j);
-      std::uint8_t* dst = pack.At(i, j);
+      std::uint8_t* dst = pack.At(i, j % lv.height, j / lv.height);
       if (l.stencil) {
-        const double d = std::clamp(double(c.r), 0.0, 1.0);
-        const std::uint32_t word = std::uint32_t(std::llround(d * 16777215.0)) << 8 |
+        const std::uint32_t word = std::uint32_t(ToUnsignedNormalized(c.r, 16777215.0)) << 8 |
                                    lv.stencil[std::size_t(j) * std::size_t(lv.width) + std::size_t(i)];
         std::memcpy(dst, &word, 4);
       } else if (l.depth) {
@@ -304,6 +333,7 @@ void Context::GetTexImage(Enum target, int level, Enum format, Enum type, void* 
         for (int k = 0; k < l.count; ++k)
           PutComponent(type, double(c[l.channels[k]]), false, dst + std::size_t(k) * pack.component);
       }
+      pack.Swap(dst);
     }
 }
 
@@ -315,7 +345,8 @@ bool CheckCopySource(ContextState& s, const char* what, bool depth) {
   if (s.read_fbo && FramebufferStatus(*s.read_fbo) != FRAMEBUFFER_COMPLETE) return s.SetError(INVALID_FRAMEBUFFER_OPERATION, what, "the read framebuffer is not complete"), false;
   if (ReadFboSamples(s) > 1) return s.SetError(INVALID_OPERATION, what, "the read framebuffer object is multisampled: resolve it with BlitFramebuffer first"), false;
   const detail::RenderTarget t = ReadTarget(s);
-  if (depth ? !t.HasDepth() : !t.color[0].Present()) return s.SetError(INVALID_OPERATION, what, "the read framebuffer has no buffer of the texture's kind"), false;
+  if (!EmptyDefaultRead(s, t, !depth) && (depth ? !t.HasDepth() : !t.color[0].Present()))
+    return s.SetError(INVALID_OPERATION, what, "the read framebuffer has no buffer of the texture's kind"), false;
   return true;
 }
 
@@ -328,8 +359,10 @@ void CopyToLevel(ContextState& s, const char* what, detail::TextureLevel& lv, in
   std::vector<float> rect(std::size_t(w) * std::size_t(h) * (depth ? 1 : 4), 0.0f);  // read first: the
   for (int j = 0; j < h; ++j)                                                          // source may be lv itself
     for (int i = 0; i < w; ++i) {
-      const int px = x + i, py = y + j;
-      if (px < 0 || py < 0 || px >= t.width || py >= t.height) continue;
+      // (In 64 bits: x and y may be anything up to INT_MAX, and x + i past it is outside the framebuffer.)
+      const std::int64_t px64 = std::int64_t(x) + i, py64 = std::int64_t(y) + j;
+      if (px64 < 0 || py64 < 0 || px64 >= t.width || py64 >= t.height) continue;
+      const int px = int(px64), py = int(py64);
       float* dst = rect.data() + (std::size_t(j) * std::size_t(w) + std::size_t(i)) * (depth ? 1 : 4);
       if (depth) {
         *dst = t.DepthAt(px, py);
@@ -338,14 +371,14 @@ void CopyToLevel(ContextState& s, const char* what, detail::TextureLevel& lv, in
         for (int k = 0; k < 4; ++k) dst[k] = c[k];
       }
     }
-  detail::UploadPixels(lv, xo, yo, w, h, depth ? DEPTH_COMPONENT : RGBA, FLOAT, 4, rect.data());
+  detail::UploadPixels(lv, xo, yo, w, h, depth ? DEPTH_COMPONENT : RGBA, FLOAT, detail::ClientLayout{}, rect.data());
   if (lv.stencil.empty() || !t.stencil) return;  // a depth-stencil texture takes the stencil indices too
   std::vector<std::uint8_t> indices(std::size_t(w) * std::size_t(h), 0);
   for (int j = 0; j < h; ++j)
     for (int i = 0; i < w; ++i) {
-      const int px = x + i, py = y + j;
+      const std::int64_t px = std::int64_t(x) + i, py = std::int64_t(y) + j;
       if (px >= 0 && py >= 0 && px < t.width && py < t.height)
-        indices[std::size_t(j) * std::size_t(w) + std::size_t(i)] = t.Stencil(px, py);
+        indices[std::size_t(j) * std::size_t(w) + std::size_t(i)] = t.Stencil(int(px), int(py));
     }
   for (int j = 0; j < h; ++j)
     std::memcpy(lv.stencil.data() + std::size_t(yo + j) * std::size_t(lv.width) + std::size_t(xo),
@@ -378,7 +411,7 @@ void Context::CopyTexSubImage3D(Enum target, int level, int xoffset, int yoffset
                                 int height) {
   auto& s = *state_;
   if (target != TEXTURE_2D_ARRAY && target != TEXTURE_3D) return s.SetError(INVALID_ENUM, __func__, "target must be TEXTURE_2D_ARRAY or TEXTURE_3D");
-  if (level < 0 || level >= detail::kMaxLevels) return s.SetError(INVALID_VALUE, __func__, "level is negative or beyond the largest mipmap level");
+  if (level < 0 || level >= LevelCount(target)) return s.SetError(INVALID_VALUE, __func__, "level is negative or beyond the largest mipmap level");
   detail::TextureObject* tex = s.Bound(target);
   if (!tex || !tex->levels[0][level].Defined()) return s.SetError(INVALID_OPERATION, __func__, "no texture bound, or that level is not defined");
   detail::TextureLevel& lv = tex->levels[0][level];
@@ -609,7 +642,7 @@ void Context::GetFramebufferAttachmentParameteriv(Enum target, Enum attachment, 
       break;
     default: return s.SetError(INVALID_ENUM, __func__, "pname must be FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, _OBJECT_NAME, _TEXTURE_LEVEL, _TEXTURE_CUBE_MAP_FACE, _TEXTURE_LAYER or _COLOR_ENCODING");
   }
-  if (params) *params = v;
+  if (NotNull(s, __func__, params, "params")) *params = v;
 }
 
 // ---- Renderbuffers -------------------------------------------------------------------------------------------
@@ -627,6 +660,9 @@ Enum SizedRenderbufferFormat(Enum f) {
     case DEPTH_COMPONENT: return DEPTH_COMPONENT24;
     case DEPTH_STENCIL: return DEPTH24_STENCIL8;
     case STENCIL_INDEX: return STENCIL_INDEX8;
+    // Accepted by OpenGL 3.3 but not required at their sizes (section 4.4.2.1): the nearest softgl stores.
+    case DEPTH_COMPONENT32: return DEPTH_COMPONENT24;
+    case STENCIL_INDEX1: case STENCIL_INDEX4: case STENCIL_INDEX16: return STENCIL_INDEX8;
     case RGBA8: case RGB8: case RG8: case R8: case SRGB8_ALPHA8: case SRGB8: case RGBA32F: case RG32F: case R32F:
     case RGBA16F: case RG16F: case R16F: case R11F_G11F_B10F: case RGB565: case RGBA4: case RGB5_A1: case DEPTH_COMPONENT16:
     case RGBA16: case RG16: case R16:
@@ -730,8 +766,9 @@ void Storage(ContextState& s, const char* what, Enum target, int samples, Enum i
   if (sized == 0) return s.SetError(INVALID_ENUM, what, "internal_format is not a colour, depth or stencil format drawing can render to");
   if (width < 0 || height < 0 || width > kMaxFramebufferSize || height > kMaxFramebufferSize)
     return s.SetError(INVALID_VALUE, what, "width or height is negative or above MAX_RENDERBUFFER_SIZE");
-  if (samples < 0) return s.SetError(INVALID_VALUE, what, "samples is negative");
-  if (samples > detail::kMaxSamples) return s.SetError(INVALID_OPERATION, what, "samples is above MAX_SAMPLES");
+  // OpenGL 3.3 (section 4.4.2.1) makes samples above MAX_SAMPLES INVALID_VALUE; OpenGL 4.2 and later (and Mesa)
+  // INVALID_OPERATION. softgl is OpenGL 3.3.
+  if (samples < 0 || samples > detail::kMaxSamples) return s.SetError(INVALID_VALUE, what, "samples is negative or above MAX_SAMPLES");
   s.Sync(what);  // recorded draws may render into the old image
   detail::TextureLevel next;
   try {
@@ -795,7 +832,7 @@ void Context::GetRenderbufferParameteriv(Enum target, Enum pname, int* params) {
     case RENDERBUFFER_SAMPLES: v = rb->samples; break;
     default: return s.SetError(INVALID_ENUM, __func__, "pname is not a renderbuffer parameter");
   }
-  if (params) *params = v;
+  if (NotNull(s, __func__, params, "params")) *params = v;
 }
 
 // ---- Read buffer and blits -----------------------------------------------------------------------------------
@@ -909,6 +946,7 @@ void Context::DrawBuffers(int n, const Enum* bufs) {
   auto& s = *state_;
   if (n < 0 || n > kMaxColorOutputs) return s.SetError(INVALID_VALUE, __func__, "n must be 0 to kMaxColorOutputs");
   if (!s.draw_fbo) return s.SetError(INVALID_OPERATION, __func__, "the context's own framebuffer has no draw buffers to choose: bind a framebuffer object");
+  if (n > 0 && !NotNull(s, __func__, bufs, "bufs")) return;
   Enum next[kMaxColorOutputs] = {NONE, NONE, NONE, NONE};
   for (int i = 0; i < n; ++i) {
     const Enum b = bufs[i];

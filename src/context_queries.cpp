@@ -2,6 +2,8 @@
 // primitives generated, time elapsed).
 #include "context_state.h"
 
+#include <cmath>
+
 namespace softgl {
 
 // ---- State queries -------------------------------------------------------------------------------------------
@@ -98,11 +100,22 @@ bool QueryState(ContextState& s, Enum pname, StateValue& out) {
       const bool* m = s.ops.color_mask;
       return put(Kind::kBool, {double(m[0]), double(m[1]), double(m[2]), double(m[3])});
     }
-    case UNPACK_ALIGNMENT: return integer(s.unpack_alignment);
-    case PACK_ALIGNMENT: return integer(s.pack_alignment);
-    case PACK_ROW_LENGTH: return integer(s.pack_row_length);
-    case PACK_SKIP_ROWS: return integer(s.pack_skip_rows);
-    case PACK_SKIP_PIXELS: return integer(s.pack_skip_pixels);
+    case UNPACK_ALIGNMENT: return integer(s.unpack.alignment);
+    case UNPACK_ROW_LENGTH: return integer(s.unpack.row_length);
+    case UNPACK_IMAGE_HEIGHT: return integer(s.unpack.image_height);
+    case UNPACK_SKIP_PIXELS: return integer(s.unpack.skip_pixels);
+    case UNPACK_SKIP_ROWS: return integer(s.unpack.skip_rows);
+    case UNPACK_SKIP_IMAGES: return integer(s.unpack.skip_images);
+    case UNPACK_SWAP_BYTES: return boolean(s.unpack.swap_bytes);
+    case UNPACK_LSB_FIRST: return boolean(s.unpack_lsb_first);
+    case PACK_ALIGNMENT: return integer(s.pack.alignment);
+    case PACK_ROW_LENGTH: return integer(s.pack.row_length);
+    case PACK_IMAGE_HEIGHT: return integer(s.pack.image_height);
+    case PACK_SKIP_PIXELS: return integer(s.pack.skip_pixels);
+    case PACK_SKIP_ROWS: return integer(s.pack.skip_rows);
+    case PACK_SKIP_IMAGES: return integer(s.pack.skip_images);
+    case PACK_SWAP_BYTES: return boolean(s.pack.swap_bytes);
+    case PACK_LSB_FIRST: return boolean(s.pack_lsb_first);
     // Limits.
     case MAX_VERTEX_ATTRIBS: return integer(kMaxVertexAttribs);
     case MAX_TEXTURE_SIZE:
@@ -157,6 +170,7 @@ bool Query(ContextState& s, const char* what, Enum pname, StateValue& out) {
 // values round to the nearest integer.
 std::int64_t ToInteger(const StateValue& v, int i) {
   const double d = v.v[i];
+  if (std::isnan(d)) return 0;  // (a colour or value set to NaN: std::clamp would pass it on to the conversion)
   if (v.kind == StateValue::Kind::kNormalized) return std::int64_t(std::clamp(d, -1.0, 1.0) * 2147483647.0);
   return std::llround(std::clamp(d, -9.2e18, 9.2e18));
 }
@@ -165,31 +179,31 @@ std::int64_t ToInteger(const StateValue& v, int i) {
 
 void Context::GetIntegerv(Enum pname, int* data) const {
   StateValue v;
-  if (!Query(*state_, __func__, pname, v) || data == nullptr) return;
+  if (!Query(*state_, __func__, pname, v) || !NotNull(*state_, __func__, data, "data")) return;
   for (int i = 0; i < v.count; ++i) data[i] = int(std::clamp<std::int64_t>(ToInteger(v, i), INT32_MIN, INT32_MAX));
 }
 
 void Context::GetInteger64v(Enum pname, std::int64_t* data) const {
   StateValue v;
-  if (!Query(*state_, __func__, pname, v) || data == nullptr) return;
+  if (!Query(*state_, __func__, pname, v) || !NotNull(*state_, __func__, data, "data")) return;
   for (int i = 0; i < v.count; ++i) data[i] = ToInteger(v, i);
 }
 
 void Context::GetFloatv(Enum pname, float* data) const {
   StateValue v;
-  if (!Query(*state_, __func__, pname, v) || data == nullptr) return;
+  if (!Query(*state_, __func__, pname, v) || !NotNull(*state_, __func__, data, "data")) return;
   for (int i = 0; i < v.count; ++i) data[i] = float(v.v[i]);
 }
 
 void Context::GetDoublev(Enum pname, double* data) const {
   StateValue v;
-  if (!Query(*state_, __func__, pname, v) || data == nullptr) return;
+  if (!Query(*state_, __func__, pname, v) || !NotNull(*state_, __func__, data, "data")) return;
   for (int i = 0; i < v.count; ++i) data[i] = v.v[i];
 }
 
 void Context::GetBooleanv(Enum pname, bool* data) const {
   StateValue v;
-  if (!Query(*state_, __func__, pname, v) || data == nullptr) return;
+  if (!Query(*state_, __func__, pname, v) || !NotNull(*state_, __func__, data, "data")) return;
   for (int i = 0; i < v.count; ++i) data[i] = v.v[i] != 0.0;
 }
 
@@ -273,7 +287,7 @@ void Context::GetQueryiv(Enum target, Enum pname, int* params) const {
   const int slot = QuerySlot(target);
   if (slot < 0) return s.SetError(INVALID_ENUM, __func__, "target must be SAMPLES_PASSED, ANY_SAMPLES_PASSED, PRIMITIVES_GENERATED or TIME_ELAPSED");
   if (pname != CURRENT_QUERY && pname != QUERY_COUNTER_BITS) return s.SetError(INVALID_ENUM, __func__, "pname must be CURRENT_QUERY or QUERY_COUNTER_BITS");
-  if (params != nullptr) *params = pname == CURRENT_QUERY ? int(s.active_query[slot]) : 64;
+  if (NotNull(s, __func__, params, "params")) *params = pname == CURRENT_QUERY ? int(s.active_query[slot]) : 64;
 }
 
 namespace {
@@ -301,22 +315,22 @@ bool QueryResult(ContextState& s, const char* what, std::uint32_t id, Enum pname
 
 void Context::GetQueryObjectiv(std::uint32_t id, Enum pname, int* params) {
   std::uint64_t v = 0;
-  if (QueryResult(*state_, __func__, id, pname, v) && params) *params = int(std::min<std::uint64_t>(v, INT32_MAX));
+  if (QueryResult(*state_, __func__, id, pname, v) && NotNull(*state_, __func__, params, "params")) *params = int(std::min<std::uint64_t>(v, INT32_MAX));
 }
 
 void Context::GetQueryObjectuiv(std::uint32_t id, Enum pname, std::uint32_t* params) {
   std::uint64_t v = 0;
-  if (QueryResult(*state_, __func__, id, pname, v) && params) *params = std::uint32_t(std::min<std::uint64_t>(v, UINT32_MAX));
+  if (QueryResult(*state_, __func__, id, pname, v) && NotNull(*state_, __func__, params, "params")) *params = std::uint32_t(std::min<std::uint64_t>(v, UINT32_MAX));
 }
 
 void Context::GetQueryObjecti64v(std::uint32_t id, Enum pname, std::int64_t* params) {
   std::uint64_t v = 0;
-  if (QueryResult(*state_, __func__, id, pname, v) && params) *params = std::int64_t(std::min<std::uint64_t>(v, INT64_MAX));
+  if (QueryResult(*state_, __func__, id, pname, v) && NotNull(*state_, __func__, params, "params")) *params = std::int64_t(std::min<std::uint64_t>(v, INT64_MAX));
 }
 
 void Context::GetQueryObjectui64v(std::uint32_t id, Enum pname, std::uint64_t* params) {
   std::uint64_t v = 0;
-  if (QueryResult(*state_, __func__, id, pname, v) && params) *params = v;
+  if (QueryResult(*state_, __func__, id, pname, v) && NotNull(*state_, __func__, params, "params")) *params = v;
 }
 
 }  // namespace softgl

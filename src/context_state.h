@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdint>
+#include <cstdio>
 #include <memory>
 #include <new>
 #include <unordered_map>
@@ -152,8 +153,10 @@ struct ContextState {
   TextureUnit units[kMaxTextureUnits];
   int units_used = 0;  // units from here on have never had a texture bound (BindTexture raises it)
   int active_unit = 0;
-  int unpack_alignment = 4;
-  int pack_alignment = 4, pack_row_length = 0, pack_skip_rows = 0, pack_skip_pixels = 0;
+  // PixelStore: where client pixels lie for uploads (UNPACK_*) and read-backs (PACK_*); LSB_FIRST is kept for the
+  // queries alone (it concerns bitmaps, which OpenGL 3.3 core has none of).
+  detail::ClientLayout unpack, pack;
+  bool unpack_lsb_first = false, pack_lsb_first = false;
   std::unordered_map<std::uint32_t, std::unique_ptr<FramebufferObject>> framebuffers;
   std::uint32_t next_framebuffer = 1;
   std::unordered_map<std::uint32_t, std::shared_ptr<Renderbuffer>> renderbuffers;
@@ -286,10 +289,30 @@ std::uint32_t NewId(Table& table, std::uint32_t& next, Make&& make) {
   return id;
 }
 
+// The number of mipmap levels a texture target has: 1 + log2 of its largest size (OpenGL 3.3, section 3.8.3: a
+// level above that is INVALID_VALUE), 12 for TEXTURE_3D (2048), 15 for the others (16384).
+constexpr int LevelCount(Enum target) {
+  int levels = 1;
+  for (int size = target == TEXTURE_3D ? kMax3DTextureSize : kMaxTextureSize; size > 1; size /= 2) ++levels;
+  return levels;
+}
+static_assert(LevelCount(TEXTURE_3D) == 12 && LevelCount(TEXTURE_2D) == detail::kMaxLevels);
+
+// The rule for pointers (docs/guide.md, "Null pointers"): a null pointer through which a call would read or write
+// at least one value sets INVALID_VALUE ("NAME is null") and the call changes nothing. False then.
+inline bool NotNull(ContextState& s, const char* call, const void* p, const char* name) {
+  if (p != nullptr) return true;
+  char message[64];
+  std::snprintf(message, sizeof message, "%s is null", name);
+  s.SetError(INVALID_VALUE, call, message);
+  return false;
+}
+
 // The Gen*s(n, ids) form of a Gen* call.
 template <class Gen>
 void GenMany(ContextState& s, const char* call, int n, std::uint32_t* ids, Gen&& gen) {
   if (n < 0) return s.SetError(INVALID_VALUE, call, "n is negative");
+  if (n > 0 && !NotNull(s, call, ids, "ids")) return;
   for (int i = 0; i < n; ++i) ids[i] = gen();
 }
 
@@ -297,7 +320,7 @@ void GenMany(ContextState& s, const char* call, int n, std::uint32_t* ids, Gen&&
 template <class Delete>
 void DeleteMany(ContextState& s, const char* call, int n, const std::uint32_t* ids, Delete&& del) {
   if (n < 0) return s.SetError(INVALID_VALUE, call, "n is negative");
-  if (ids == nullptr) return;
+  if (n > 0 && !NotNull(s, call, ids, "ids")) return;
   for (int i = 0; i < n; ++i) del(ids[i]);
 }
 

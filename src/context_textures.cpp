@@ -3,6 +3,8 @@
 #include "context_state.h"
 #include "image_io.h"
 
+#include <cmath>
+
 namespace softgl {
 
 // ---- Textures ------------------------------------------------------------------------------------------------
@@ -101,7 +103,7 @@ void Context::TexImage2D(Enum target, int level, Enum internal_format, int width
   } catch (const std::bad_alloc&) {
     return s.SetError(OUT_OF_MEMORY, __func__, "out of memory");
   }
-  detail::UploadPixels(next, 0, 0, width, height, format, type, s.unpack_alignment, pixels);
+  detail::UploadPixels(next, 0, 0, width, height, format, type, s.unpack, pixels);
   tex->levels[face][level] = std::move(next);
 }
 
@@ -111,7 +113,7 @@ void Context::TexSubImage2D(Enum target, int level, int x, int y, int width, int
   auto& s = *state_;
   if (!IsTexImageTarget(target)) return s.SetError(INVALID_ENUM, __func__, "target must be TEXTURE_2D or a TEXTURE_CUBE_MAP_* face");
   if (!CheckTransfer(s, __func__, format, type)) return;
-  if (level < 0 || level >= detail::kMaxLevels) return s.SetError(INVALID_VALUE, __func__, "level is negative or beyond the largest mipmap level");
+  if (level < 0 || level >= LevelCount(target)) return s.SetError(INVALID_VALUE, __func__, "level is negative or beyond the largest mipmap level");
   int face = 0;
   detail::TextureObject* tex = s.Bound(target, &face);
   if (!tex || !tex->levels[face][level].Defined()) return s.SetError(INVALID_OPERATION, __func__, "no texture bound, or that level is not defined");
@@ -120,7 +122,8 @@ void Context::TexSubImage2D(Enum target, int level, int x, int y, int width, int
   if (x < 0 || y < 0 || width < 0 || height < 0 || std::int64_t(x) + width > lv.width ||
       std::int64_t(y) + height > lv.height)
     return s.SetError(INVALID_VALUE, __func__, "a numeric argument is out of range");
-  detail::UploadPixels(lv, x, y, width, height, format, type, s.unpack_alignment, pixels);
+  if (width == 0 || height == 0 || !NotNull(s, __func__, pixels, "pixels")) return;
+  detail::UploadPixels(lv, x, y, width, height, format, type, s.unpack, pixels);
 }
 
 void Context::TexImage3D(Enum target, int level, Enum internal_format, int width, int height, int depth, int border,
@@ -131,7 +134,7 @@ void Context::TexImage3D(Enum target, int level, Enum internal_format, int width
   const bool volume = target == TEXTURE_3D;
   const int max_size = volume ? kMax3DTextureSize : kMaxTextureSize;
   const int max_depth = volume ? kMax3DTextureSize : kMaxArrayTextureLayers;
-  if (level < 0 || level >= detail::kMaxLevels || width < 0 || height < 0 || depth < 0 || width > max_size ||
+  if (level < 0 || level >= LevelCount(target) || width < 0 || height < 0 || depth < 0 || width > max_size ||
       height > max_size || depth > max_depth || border != 0 || detail::FormatComponents(internal_format) == 0)
     return s.SetError(INVALID_VALUE, __func__, "a numeric argument is out of range");
   if (!CheckTransfer(s, __func__, format, type)) return;
@@ -146,7 +149,7 @@ void Context::TexImage3D(Enum target, int level, Enum internal_format, int width
     return s.SetError(OUT_OF_MEMORY, __func__, "out of memory (or more than a 16384 x 16384 RGBA32F level's bytes)");
   }
   if (width > 0 && height > 0 && depth > 0)
-    detail::UploadImages(next, 0, 0, 0, width, height, depth, format, type, s.unpack_alignment, pixels);
+    detail::UploadImages(next, 0, 0, 0, width, height, depth, format, type, s.unpack, pixels);
   if (depth == 0) next = detail::TextureLevel{};  // (no texels: the level is not defined)
   tex->levels[0][level] = std::move(next);
 }
@@ -157,7 +160,7 @@ void Context::TexSubImage3D(Enum target, int level, int x, int y, int z, int wid
   auto& s = *state_;
   if (target != TEXTURE_2D_ARRAY && target != TEXTURE_3D) return s.SetError(INVALID_ENUM, __func__, "target must be TEXTURE_2D_ARRAY or TEXTURE_3D");
   if (!CheckTransfer(s, __func__, format, type)) return;
-  if (level < 0 || level >= detail::kMaxLevels) return s.SetError(INVALID_VALUE, __func__, "level is negative or beyond the largest mipmap level");
+  if (level < 0 || level >= LevelCount(target)) return s.SetError(INVALID_VALUE, __func__, "level is negative or beyond the largest mipmap level");
   detail::TextureObject* tex = s.Bound(target);
   if (!tex || !tex->levels[0][level].Defined()) return s.SetError(INVALID_OPERATION, __func__, "no texture bound, or that level is not defined");
   detail::TextureLevel& lv = tex->levels[0][level];
@@ -165,7 +168,8 @@ void Context::TexSubImage3D(Enum target, int level, int x, int y, int z, int wid
   if (x < 0 || y < 0 || z < 0 || width < 0 || height < 0 || depth < 0 || std::int64_t(x) + width > lv.width ||
       std::int64_t(y) + height > lv.height || std::int64_t(z) + depth > lv.depth)
     return s.SetError(INVALID_VALUE, __func__, "a numeric argument is out of range");
-  detail::UploadImages(lv, x, y, z, width, height, depth, format, type, s.unpack_alignment, pixels);
+  if (width == 0 || height == 0 || depth == 0 || !NotNull(s, __func__, pixels, "pixels")) return;
+  detail::UploadImages(lv, x, y, z, width, height, depth, format, type, s.unpack, pixels);
 }
 
 namespace {
@@ -183,12 +187,13 @@ bool TexImageFromLoaded(Context& gl, ContextState& s, Enum target, const detail:
   static constexpr Enum kInternal[2][4] = {{R8, RG8, RGB8, RGBA8}, {R8, RG8, SRGB8, SRGB8_ALPHA8}};
   const Enum format = kFormats[img.channels - 1];
   const Enum internal = img.hdr ? RGBA32F : kInternal[srgb ? 1 : 0][img.channels - 1];
-  const int saved_alignment = s.unpack_alignment;
-  s.unpack_alignment = 1;
+  const detail::ClientLayout saved = s.unpack;  // the image's rows as they are in memory
+  s.unpack = detail::ClientLayout{};
+  s.unpack.alignment = 1;
   const Enum before = s.error;
   gl.TexImage2D(target, 0, internal, img.width, img.height, 0, format, img.hdr ? FLOAT : UNSIGNED_BYTE,
                 img.hdr ? static_cast<const void*>(img.floats.data()) : static_cast<const void*>(img.bytes.data()));
-  s.unpack_alignment = saved_alignment;
+  s.unpack = saved;
   if (s.error != before) {
     if (error) *error = name + ": the texture could not be defined";
     return false;
@@ -382,7 +387,7 @@ bool TexParameterValues(ContextState& s, const char* what, Enum target, Enum pna
 bool TexLevelValue(ContextState& s, const char* what, Enum target, int level, Enum pname, int& out) {
   if (!IsTexImageTarget(target) && target != TEXTURE_2D_ARRAY && target != TEXTURE_3D && target != TEXTURE_2D_MULTISAMPLE)
     return s.SetError(INVALID_ENUM, what, "target must be TEXTURE_2D, a TEXTURE_CUBE_MAP_* face, TEXTURE_2D_ARRAY, TEXTURE_3D or TEXTURE_2D_MULTISAMPLE"), false;
-  if (level < 0 || level >= detail::kMaxLevels) return s.SetError(INVALID_VALUE, what, "level is negative or beyond the largest mipmap level"), false;
+  if (level < 0 || level >= LevelCount(target)) return s.SetError(INVALID_VALUE, what, "level is negative or beyond the largest mipmap level"), false;
   int face = 0;
   const detail::TextureObject* tex = s.Bound(target, &face);
   if (!tex) return s.SetError(INVALID_OPERATION, what, "no texture is bound to that target of the active unit"), false;
@@ -410,27 +415,30 @@ bool TexLevelValue(ContextState& s, const char* what, Enum target, int level, En
 void Context::GetTexParameterfv(Enum target, Enum pname, float* params) const {
   float v[4];
   int n = 0;
-  if (!TexParameterValues(*state_, __func__, target, pname, v, n) || params == nullptr) return;
+  if (!TexParameterValues(*state_, __func__, target, pname, v, n) || !NotNull(*state_, __func__, params, "params")) return;
   std::copy(v, v + n, params);
 }
 
 void Context::GetTexParameteriv(Enum target, Enum pname, int* params) const {
   float v[4];
   int n = 0;
-  if (!TexParameterValues(*state_, __func__, target, pname, v, n) || params == nullptr) return;
-  for (int k = 0; k < n; ++k)  // the border colour maps [-1, 1] onto the integers; the others round
-    params[k] = pname == TEXTURE_BORDER_COLOR ? int(std::clamp(double(v[k]), -1.0, 1.0) * 2147483647.0)
+  if (!TexParameterValues(*state_, __func__, target, pname, v, n) || !NotNull(*state_, __func__, params, "params")) return;
+  // The border colour maps [-1, 1] onto the integers, rounded (OpenGL 4.6, equation 2.4), so that what
+  // TexParameteriv set reads back as it was (-1 is stored as -1 / (2^31 - 1), which truncation would read as 0); the
+  // others round. NaN reads as 0.
+  for (int k = 0; k < n; ++k)
+    params[k] = std::isnan(v[k]) ? 0 : pname == TEXTURE_BORDER_COLOR ? int(std::lround(std::clamp(double(v[k]), -1.0, 1.0) * 2147483647.0))
                                               : int(std::lround(std::clamp(double(v[k]), -2147483648.0, 2147483647.0)));
 }
 
 void Context::GetTexLevelParameteriv(Enum target, int level, Enum pname, int* params) const {
   int v = 0;
-  if (TexLevelValue(*state_, __func__, target, level, pname, v) && params) *params = v;
+  if (TexLevelValue(*state_, __func__, target, level, pname, v) && NotNull(*state_, __func__, params, "params")) *params = v;
 }
 
 void Context::GetTexLevelParameterfv(Enum target, int level, Enum pname, float* params) const {
   int v = 0;
-  if (TexLevelValue(*state_, __func__, target, level, pname, v) && params) *params = float(v);
+  if (TexLevelValue(*state_, __func__, target, level, pname, v) && NotNull(*state_, __func__, params, "params")) *params = float(v);
 }
 
 void Context::PixelStore(Enum pname, int value) {
@@ -439,16 +447,30 @@ void Context::PixelStore(Enum pname, int value) {
     case UNPACK_ALIGNMENT:
     case PACK_ALIGNMENT:
       if (value != 1 && value != 2 && value != 4 && value != 8) return s.SetError(INVALID_VALUE, __func__, "alignment must be 1, 2, 4 or 8");
-      (pname == PACK_ALIGNMENT ? s.pack_alignment : s.unpack_alignment) = value;
+      (pname == PACK_ALIGNMENT ? s.pack : s.unpack).alignment = value;
       return;
-    case PACK_ROW_LENGTH:
-    case PACK_SKIP_ROWS:
-    case PACK_SKIP_PIXELS:
-      if (value < 0) return s.SetError(INVALID_VALUE, __func__, "value is negative");
-      (pname == PACK_ROW_LENGTH ? s.pack_row_length : pname == PACK_SKIP_ROWS ? s.pack_skip_rows : s.pack_skip_pixels) = value;
-      return;
-    default: return s.SetError(INVALID_ENUM, __func__, "pname must be UNPACK_ALIGNMENT, PACK_ALIGNMENT, PACK_ROW_LENGTH, PACK_SKIP_ROWS or PACK_SKIP_PIXELS");
+    case UNPACK_SWAP_BYTES: s.unpack.swap_bytes = value != 0; return;
+    case PACK_SWAP_BYTES: s.pack.swap_bytes = value != 0; return;
+    case UNPACK_LSB_FIRST: s.unpack_lsb_first = value != 0; return;
+    case PACK_LSB_FIRST: s.pack_lsb_first = value != 0; return;
+    default: break;
   }
+  int* field = nullptr;
+  switch (pname) {
+    case UNPACK_ROW_LENGTH: field = &s.unpack.row_length; break;
+    case UNPACK_IMAGE_HEIGHT: field = &s.unpack.image_height; break;
+    case UNPACK_SKIP_PIXELS: field = &s.unpack.skip_pixels; break;
+    case UNPACK_SKIP_ROWS: field = &s.unpack.skip_rows; break;
+    case UNPACK_SKIP_IMAGES: field = &s.unpack.skip_images; break;
+    case PACK_ROW_LENGTH: field = &s.pack.row_length; break;
+    case PACK_IMAGE_HEIGHT: field = &s.pack.image_height; break;
+    case PACK_SKIP_PIXELS: field = &s.pack.skip_pixels; break;
+    case PACK_SKIP_ROWS: field = &s.pack.skip_rows; break;
+    case PACK_SKIP_IMAGES: field = &s.pack.skip_images; break;
+    default: return s.SetError(INVALID_ENUM, __func__, "pname must be one of the UNPACK_ or PACK_ parameters of OpenGL 3.3 (table 3.1)");
+  }
+  if (value < 0) return s.SetError(INVALID_VALUE, __func__, "value is negative");
+  *field = value;
 }
 
 }  // namespace softgl

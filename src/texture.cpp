@@ -420,25 +420,29 @@ std::size_t TransferRowBytes(int w, Enum format, Enum type, int alignment) {
 }
 }  // namespace
 
-void UploadImages(TextureLevel& level, int x, int y, int z, int w, int h, int d, Enum format, Enum type,
-                  int alignment, const void* pixels) {
-  if (pixels == nullptr || w <= 0 || h <= 0) return;
-  const std::size_t image = TransferRowBytes(w, format, type, alignment) * std::size_t(h);
-  for (int k = 0; k < d; ++k)
-    UploadPixels(level, x, (z + k) * level.height + y, w, h, format, type, alignment,
-                 static_cast<const std::uint8_t*>(pixels) + std::size_t(k) * image);
+namespace {
+// The bytes of one element of `type` in client memory (what UNPACK_SWAP_BYTES reverses): 1, 2 or 4.
+std::size_t ElementBytes(Enum type) {
+  return type == UNSIGNED_BYTE ? 1 : type == UNSIGNED_SHORT || type == HALF_FLOAT ? 2 : 4;
 }
 
-void UploadPixels(TextureLevel& level, int x, int y, int w, int h, Enum format, Enum type, int alignment,
-                  const void* pixels) {
-  if (pixels == nullptr || w <= 0 || h <= 0) return;
+// Rect (x, y, w, h) of `level` from client rows `row` bytes apart, the first pixel at `first`.
+void UploadRect(TextureLevel& level, int x, int y, int w, int h, Enum format, Enum type, std::size_t row,
+                const std::uint8_t* first, bool swap_bytes) {
+  const std::size_t size = TransferPixelBytes(format, type), element = ElementBytes(type);
+  std::uint8_t swapped[16];
+  // The pixel at (i, j), its elements' bytes reversed when asked (into `swapped`).
+  auto pixel = [&](int i, int j) -> const std::uint8_t* {
+    const std::uint8_t* p = first + std::size_t(j) * row + std::size_t(i) * size;
+    if (!swap_bytes || element == 1) return p;
+    for (std::size_t e = 0; e < size; e += element)
+      for (std::size_t b = 0; b < element; ++b) swapped[e + b] = p[e + element - 1 - b];
+    return swapped;
+  };
   if (format == DEPTH_STENCIL) {  // one packed value a pixel: 4 bytes (24_8) or 8 (float, then 24_8 with stencil low)
-    const std::size_t size = TransferPixelBytes(format, type);
-    const std::size_t row = TransferRowBytes(w, format, type, alignment);
-    const auto* bytes = static_cast<const std::uint8_t*>(pixels);
     for (int j = 0; j < h; ++j)
       for (int i = 0; i < w; ++i) {
-        const std::uint8_t* p = bytes + std::size_t(j) * row + std::size_t(i) * size;
+        const std::uint8_t* p = pixel(i, j);
         float depth;
         std::uint32_t word;
         if (size == 8) {
@@ -455,12 +459,9 @@ void UploadPixels(TextureLevel& level, int x, int y, int w, int h, Enum format, 
     return;
   }
   const int n = TransferComponents(format);
-  const std::size_t csize = TransferPixelBytes(format, type) / std::size_t(n);
-  const std::size_t row = TransferRowBytes(w, format, type, alignment);
-  const auto* bytes = static_cast<const std::uint8_t*>(pixels);
   for (int j = 0; j < h; ++j)
     for (int i = 0; i < w; ++i) {
-      const std::uint8_t* p = bytes + std::size_t(j) * row + std::size_t(i) * std::size_t(n) * csize;
+      const std::uint8_t* p = pixel(i, j);
       if (type == UNSIGNED_BYTE && IsUnorm8(level.layout)) {  // bytes into bytes: no conversion
         std::uint8_t* dst = level.At(x + i, y + j);
         for (int c = 0; c < level.bytes; ++c) dst[c] = c < n ? p[c] : (c == 3 ? 255 : 0);
@@ -478,6 +479,34 @@ void UploadPixels(TextureLevel& level, int x, int y, int w, int h, Enum format, 
         if (std::isnan(in[c])) in[c] = 0.0f;
       StoreTexel(level, x + i, y + j, in);
     }
+}
+
+// The bytes from one client image of `layout` to the next, and from one row to the next, for w x h rectangles.
+std::size_t RowBytes(const ClientLayout& layout, int w, Enum format, Enum type) {
+  return TransferRowBytes(layout.row_length > 0 ? layout.row_length : w, format, type, layout.alignment);
+}
+}  // namespace
+
+void UploadImages(TextureLevel& level, int x, int y, int z, int w, int h, int d, Enum format, Enum type,
+                  const ClientLayout& layout, const void* pixels) {
+  if (pixels == nullptr || w <= 0 || h <= 0) return;
+  const std::size_t row = RowBytes(layout, w, format, type);
+  const std::size_t image = row * std::size_t(layout.image_height > 0 ? layout.image_height : h);
+  const auto* first = static_cast<const std::uint8_t*>(pixels) + std::size_t(layout.skip_images) * image +
+                      std::size_t(layout.skip_rows) * row +
+                      std::size_t(layout.skip_pixels) * TransferPixelBytes(format, type);
+  for (int k = 0; k < d; ++k)
+    UploadRect(level, x, (z + k) * level.height + y, w, h, format, type, row, first + std::size_t(k) * image,
+               layout.swap_bytes);
+}
+
+void UploadPixels(TextureLevel& level, int x, int y, int w, int h, Enum format, Enum type, const ClientLayout& layout,
+                  const void* pixels) {
+  if (pixels == nullptr || w <= 0 || h <= 0) return;
+  const std::size_t row = RowBytes(layout, w, format, type);
+  const auto* first = static_cast<const std::uint8_t*>(pixels) + std::size_t(layout.skip_rows) * row +
+                      std::size_t(layout.skip_pixels) * TransferPixelBytes(format, type);
+  UploadRect(level, x, y, w, h, format, type, row, first, layout.swap_bytes);
 }
 
 void GenerateMipmaps(TextureObject& texture) {

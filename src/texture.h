@@ -217,18 +217,28 @@ bool IsNormalizedFormat(Enum internal_format);  // fixed point: RGBA8, RGB8, RG8
 /// value), 0 if unknown.
 int TransferComponents(Enum format);
 
-/// Converts client pixels (format, type UNSIGNED_BYTE, UNSIGNED_SHORT (k / 65535), HALF_FLOAT or FLOAT, rows
-/// aligned to `alignment`; or DEPTH_STENCIL
-/// with UNSIGNED_INT_24_8 or FLOAT_32_UNSIGNED_INT_24_8_REV) into the level's format, writing rect (x, y, w, h) of
-/// `level` (already allocated). Depth data leaves a level's stencil as it is; depth-stencil data into a depth
-/// format drops the stencil. Null pixels leave the level as it is.
-void UploadPixels(TextureLevel& level, int x, int y, int w, int h, Enum format, Enum type, int alignment,
+/// Where client pixels lie in memory: OpenGL's PixelStore state for unpacking (UNPACK_*) or packing (PACK_*)
+/// (OpenGL 3.3, sections 3.7.4 and 4.3.2). Rows of row_length pixels (0: the rectangle's width) aligned to
+/// `alignment` bytes, images of image_height rows (0: the rectangle's height); the first pixel used is skip_pixels
+/// in, skip_rows rows and skip_images images on; with swap_bytes each 2- or 4-byte element has its bytes reversed.
+struct ClientLayout {
+  int alignment = 4;
+  int row_length = 0, image_height = 0;
+  int skip_pixels = 0, skip_rows = 0, skip_images = 0;
+  bool swap_bytes = false;
+};
+
+/// Converts client pixels (format, type UNSIGNED_BYTE, UNSIGNED_SHORT (k / 65535), HALF_FLOAT or FLOAT; or
+/// DEPTH_STENCIL with UNSIGNED_INT_24_8 or FLOAT_32_UNSIGNED_INT_24_8_REV), laid out as `layout` says, into the
+/// level's format, writing rect (x, y, w, h) of `level` (already allocated). Depth data leaves a level's stencil as
+/// it is; depth-stencil data into a depth format drops the stencil. Null pixels leave the level as it is.
+void UploadPixels(TextureLevel& level, int x, int y, int w, int h, Enum format, Enum type, const ClientLayout& layout,
                   const void* pixels);
 
-/// UploadPixels for `d` images of w x h one after another in `pixels` (each h rows as UploadPixels lays them out),
-/// written into planes z .. z + d - 1 of a layered level at (x, y).
+/// UploadPixels for `d` images of w x h (image_height rows apart), written into planes z .. z + d - 1 of a layered
+/// level at (x, y).
 void UploadImages(TextureLevel& level, int x, int y, int z, int w, int h, int d, Enum format, Enum type,
-                  int alignment, const void* pixels);
+                  const ClientLayout& layout, const void* pixels);
 
 /// Writes RGBA value `v` into a texel of RG32F, RGBA16F, RG16F, R16F or R11F_G11F_B10F at p (the channels the
 /// layout has, converted as FloatToHalf and FloatToUnsignedSmall say), or of RGB565, RGBA4 or RGB5_A1 (clamped to

@@ -1,10 +1,12 @@
 // The API: objects by id, what VAOs record, draw modes end to end, and OpenGL's error model on bad input.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cstring>
 #include <limits>
 #include <set>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "helpers.h"
@@ -20,6 +22,15 @@ int CountLit(const Context& gl) {
   const Image img = gl.ReadPixels();
   for (std::size_t i = 0; i < img.rgba.size(); i += 4) n += img.rgba[i] != 0;
   return n;
+}
+
+// Binds a new framebuffer object whose colour attachment is a w x h RGBA32F texture.
+void BindFloatTarget(Context& gl, int w, int h) {
+  const std::uint32_t fbo = gl.GenFramebuffer(), tex = gl.GenTexture();
+  gl.BindTexture(TEXTURE_2D, tex);
+  gl.TexImage2D(TEXTURE_2D, 0, RGBA32F, w, h, 0, RGBA, FLOAT, nullptr);
+  gl.BindFramebuffer(FRAMEBUFFER, fbo);
+  gl.FramebufferTexture2D(FRAMEBUFFER, COLOR_ATTACHMENT0, TEXTURE_2D, tex, 0);
 }
 
 }  // namespace
@@ -316,8 +327,10 @@ TEST_CASE("buffers: the mapping and copying errors, as OpenGL gives them", "[con
   CHECK(gl.GetError() == INVALID_OPERATION);
   const std::uint8_t bytes[8] = {};
   std::uint8_t out[8];
-  gl.BufferSubData(ARRAY_BUFFER, 0, 4, bytes);  // outside the mapped range: allowed
-  CHECK(gl.GetError() == NO_ERROR);
+  gl.BufferSubData(ARRAY_BUFFER, 0, 4, bytes);  // outside the mapped range: refused too (OpenGL 3.3, 2.9.2)
+  CHECK(gl.GetError() == INVALID_OPERATION);
+  gl.GetBufferSubData(ARRAY_BUFFER, 16, 4, out);  // (and 6.1.13)
+  CHECK(gl.GetError() == INVALID_OPERATION);
   gl.BufferSubData(ARRAY_BUFFER, 8, 8, bytes);
   CHECK(gl.GetError() == INVALID_OPERATION);
   gl.GetBufferSubData(ARRAY_BUFFER, 0, 8, out);
@@ -1143,7 +1156,9 @@ TEST_CASE("ReadPixels with a format and type: layouts, conversions, rectangles p
     CHECK(gl.GetError() == INVALID_VALUE);
     gl.PixelStore(PACK_ROW_LENGTH, -1);
     CHECK(gl.GetError() == INVALID_VALUE);
-    gl.ReadPixels(0, 0, 4, 3, RGBA, UNSIGNED_BYTE, nullptr);  // nothing to write to: nothing happens
+    gl.ReadPixels(0, 0, 4, 3, RGBA, UNSIGNED_BYTE, nullptr);  // nothing to write to: refused
+    CHECK(gl.GetError() == INVALID_VALUE);
+    gl.ReadPixels(0, 0, 0, 3, RGBA, UNSIGNED_BYTE, nullptr);  // nothing to write: no error
     CHECK(gl.GetError() == NO_ERROR);
     // A framebuffer object without a depth attachment has no depth to read; an incomplete one cannot be read.
     const std::uint32_t fbo = gl.GenFramebuffer(), tex = gl.GenTexture();
@@ -1162,11 +1177,7 @@ TEST_CASE("ReadPixels with a format and type: layouts, conversions, rectangles p
 
 TEST_CASE("ReadPixels reads a float attachment as stored, and clamps it for bytes", "[context]") {
   Context gl(2, 2);
-  const std::uint32_t fbo = gl.GenFramebuffer(), tex = gl.GenTexture();
-  gl.BindTexture(TEXTURE_2D, tex);
-  gl.TexImage2D(TEXTURE_2D, 0, RGBA32F, 2, 2, 0, RGBA, FLOAT, nullptr);
-  gl.BindFramebuffer(FRAMEBUFFER, fbo);
-  gl.FramebufferTexture2D(FRAMEBUFFER, COLOR_ATTACHMENT0, TEXTURE_2D, tex, 0);
+  BindFloatTarget(gl, 2, 2);
   gl.ClearColor(2.5f, -1.0f, 0.5f, 1.0f);
   gl.Clear(COLOR_BUFFER_BIT);
   float f[4] = {};
@@ -1759,4 +1770,247 @@ TEST_CASE("many small draws in one frame render what they render one frame each,
     colours.insert(c);
   }
   CHECK(colours.size() > 100);
+}
+
+TEST_CASE("hostile calls: rectangles at INT_MIN and INT_MAX blit and copy what lies inside", "[context][errors][hostile]") {
+  // Each of these computed a rectangle's size or a pixel's coordinate in int and overflowed: undefined behaviour,
+  // which the sanitizer build stops on. Now the sizes are 64-bit and the pixels outside the buffers are skipped.
+  constexpr int kMin = std::numeric_limits<int>::min(), kMax = std::numeric_limits<int>::max();
+  Context gl(8, 8);
+  // A 4x multisampled framebuffer object, cleared to one colour, depth and stencil, resolved into the context's
+  // framebuffer through the largest rectangles there are, unmirrored (the resolve path) and mirrored on both axes.
+  const std::uint32_t fbo = gl.GenFramebuffer(), color = gl.GenRenderbuffer(), depth = gl.GenRenderbuffer();
+  gl.BindRenderbuffer(RENDERBUFFER, color);
+  gl.RenderbufferStorageMultisample(RENDERBUFFER, 4, RGBA8, 8, 8);
+  gl.BindRenderbuffer(RENDERBUFFER, depth);
+  gl.RenderbufferStorageMultisample(RENDERBUFFER, 4, DEPTH24_STENCIL8, 8, 8);
+  gl.BindFramebuffer(FRAMEBUFFER, fbo);
+  gl.FramebufferRenderbuffer(FRAMEBUFFER, COLOR_ATTACHMENT0, RENDERBUFFER, color);
+  gl.FramebufferRenderbuffer(FRAMEBUFFER, DEPTH_STENCIL_ATTACHMENT, RENDERBUFFER, depth);
+  REQUIRE(gl.CheckFramebufferStatus(FRAMEBUFFER) == FRAMEBUFFER_COMPLETE);
+  for (const bool mirrored : {false, true}) {
+    CAPTURE(mirrored);
+    gl.BindFramebuffer(FRAMEBUFFER, fbo);
+    gl.ClearColor(0.2f, 0.4f, 0.6f, 1.0f);
+    gl.ClearDepth(0.5);
+    gl.ClearStencil(7);
+    gl.Clear(COLOR_BUFFER_BIT | DEPTH_BUFFER_BIT | STENCIL_BUFFER_BIT);
+    gl.BindFramebuffer(FRAMEBUFFER, 0);
+    gl.ClearColor(0.0f, 0.0f, 0.0f, 0.0f);
+    gl.ClearDepth(1.0);
+    gl.ClearStencil(0);
+    gl.Clear(COLOR_BUFFER_BIT | DEPTH_BUFFER_BIT | STENCIL_BUFFER_BIT);
+    gl.BindFramebuffer(READ_FRAMEBUFFER, fbo);
+    gl.BindFramebuffer(DRAW_FRAMEBUFFER, 0);
+    if (mirrored)
+      gl.BlitFramebuffer(kMax, kMax, kMin, kMin, kMax, kMax, kMin, kMin,
+                         COLOR_BUFFER_BIT | DEPTH_BUFFER_BIT | STENCIL_BUFFER_BIT, NEAREST);
+    else
+      gl.BlitFramebuffer(kMin, kMin, kMax, kMax, kMin, kMin, kMax, kMax,
+                         COLOR_BUFFER_BIT | DEPTH_BUFFER_BIT | STENCIL_BUFFER_BIT, NEAREST);
+    CHECK(gl.GetError() == NO_ERROR);
+    gl.BindFramebuffer(FRAMEBUFFER, 0);
+    std::uint8_t rgba[4] = {};
+    gl.ReadPixel(3, 5, rgba);
+    CHECK((rgba[0] == 51 && rgba[1] == 102 && rgba[2] == 153 && rgba[3] == 255));
+    float d = 0.0f;
+    gl.ReadPixels(6, 1, 1, 1, DEPTH_COMPONENT, FLOAT, &d);
+    CHECK(d == Approx(0.5f).margin(1e-6));
+    std::uint8_t stencil = 0;
+    gl.ReadPixels(0, 7, 1, 1, STENCIL_INDEX, UNSIGNED_BYTE, &stencil);
+    CHECK(stencil == 7);
+  }
+  // Copies from a source rectangle far outside the framebuffer: every texel is outside, so zero (2D, a cube face,
+  // a depth texture, an array layer, and CopyTexImage2D).
+  gl.BindFramebuffer(FRAMEBUFFER, 0);
+  gl.ClearColor(1.0f, 1.0f, 1.0f, 1.0f);
+  gl.Clear(COLOR_BUFFER_BIT | DEPTH_BUFFER_BIT);
+  std::vector<std::uint8_t> texels(16 * 16 * 4, 0xCD);
+  const std::uint32_t tex = gl.GenTexture();
+  gl.BindTexture(TEXTURE_2D, tex);
+  gl.TexImage2D(TEXTURE_2D, 0, RGBA8, 16, 16, 0, RGBA, UNSIGNED_BYTE, texels.data());
+  gl.CopyTexSubImage2D(TEXTURE_2D, 0, 0, 0, kMax, kMax, 16, 16);
+  CHECK(gl.GetError() == NO_ERROR);
+  gl.GetTexImage(TEXTURE_2D, 0, RGBA, UNSIGNED_BYTE, texels.data());
+  CHECK(std::count(texels.begin(), texels.end(), 0) == 16 * 16 * 4);
+  gl.CopyTexImage2D(TEXTURE_2D, 0, RGBA8, kMax, kMax, 4, 4, 0);
+  CHECK(gl.GetError() == NO_ERROR);
+  std::fill(texels.begin(), texels.end(), 0xCD);
+  gl.GetTexImage(TEXTURE_2D, 0, RGBA, UNSIGNED_BYTE, texels.data());
+  CHECK(std::count(texels.begin(), texels.begin() + 4 * 4 * 4, 0) == 4 * 4 * 4);
+  const std::uint32_t cube = gl.GenTexture();
+  gl.BindTexture(TEXTURE_CUBE_MAP, cube);
+  gl.TexImage2D(TEXTURE_CUBE_MAP_POSITIVE_Y, 0, RGBA8, 4, 4, 0, RGBA, UNSIGNED_BYTE, nullptr);
+  gl.CopyTexSubImage2D(TEXTURE_CUBE_MAP_POSITIVE_Y, 0, 0, 0, kMax - 2, kMax - 2, 4, 4);
+  CHECK(gl.GetError() == NO_ERROR);
+  const std::uint32_t depth_tex = gl.GenTexture();
+  gl.BindTexture(TEXTURE_2D, depth_tex);
+  gl.TexImage2D(TEXTURE_2D, 0, DEPTH24_STENCIL8, 4, 4, 0, DEPTH_STENCIL, UNSIGNED_INT_24_8, nullptr);
+  gl.CopyTexSubImage2D(TEXTURE_2D, 0, 0, 0, kMax, kMax, 4, 4);
+  CHECK(gl.GetError() == NO_ERROR);
+  const std::uint32_t array = gl.GenTexture();
+  gl.BindTexture(TEXTURE_2D_ARRAY, array);
+  gl.TexImage3D(TEXTURE_2D_ARRAY, 0, RGBA8, 4, 4, 2, 0, RGBA, UNSIGNED_BYTE, nullptr);
+  gl.CopyTexSubImage3D(TEXTURE_2D_ARRAY, 0, 0, 0, 1, kMax, kMax, 4, 4);
+  CHECK(gl.GetError() == NO_ERROR);
+}
+
+TEST_CASE("hostile calls: a float buffer holding NaN and infinities reads back as integers clamped, NaN as 0",
+          "[context][errors][hostile]") {
+  // ReadPixels into a normalized integer type clamps to [0, 1] first (OpenGL 3.3, section 4.3.2); NaN went through
+  // that clamp unchanged and into a conversion to an integer out of its range (undefined behaviour).
+  Context gl(2, 2);
+  BindFloatTarget(gl, 2, 2);
+  const float inf = std::numeric_limits<float>::infinity();
+  gl.ClearColor(std::numeric_limits<float>::quiet_NaN(), inf, -inf, 1e30f);
+  gl.Clear(COLOR_BUFFER_BIT);
+  std::uint8_t b[4] = {1, 1, 1, 1};
+  gl.ReadPixels(0, 0, 1, 1, RGBA, UNSIGNED_BYTE, b);
+  CHECK((b[0] == 0 && b[1] == 255 && b[2] == 0 && b[3] == 255));
+  std::uint16_t h[4] = {1, 1, 1, 1};
+  gl.ReadPixels(1, 0, 1, 1, RGBA, UNSIGNED_SHORT, h);
+  CHECK((h[0] == 0 && h[1] == 65535 && h[2] == 0 && h[3] == 65535));
+  std::uint32_t u[4] = {1, 1, 1, 1};
+  gl.ReadPixels(0, 1, 1, 1, RGBA, UNSIGNED_INT, u);
+  CHECK((u[0] == 0 && u[1] == 0xFFFFFFFFu && u[2] == 0 && u[3] == 0xFFFFFFFFu));
+  CHECK(gl.GetError() == NO_ERROR);
+  // The clear colour itself, asked for as integers: NaN reads as 0 (the normalized conversion of 1e30 clamps).
+  int clear[4] = {1, 1, 1, 1};
+  gl.GetIntegerv(COLOR_CLEAR_VALUE, clear);
+  CHECK((clear[0] == 0 && clear[1] == std::numeric_limits<int>::max() && clear[2] == -std::numeric_limits<int>::max() &&
+         clear[3] == std::numeric_limits<int>::max()));
+  CHECK(gl.GetError() == NO_ERROR);
+}
+
+TEST_CASE("hostile calls: a null pointer the call would read or write through is INVALID_VALUE and changes nothing",
+          "[context][errors][hostile]") {
+  Context gl(4, 4);
+  // Gen*s and Delete*s of every object kind.
+  using Ids = void (Context::*)(int, std::uint32_t*);
+  using ConstIds = void (Context::*)(int, const std::uint32_t*);
+  const Ids gens[] = {&Context::GenBuffers, &Context::GenVertexArrays, &Context::GenTextures,
+                      &Context::GenFramebuffers, &Context::GenRenderbuffers, &Context::GenQueries};
+  const ConstIds deletes[] = {&Context::DeleteBuffers, &Context::DeleteVertexArrays, &Context::DeleteTextures,
+                              &Context::DeleteFramebuffers, &Context::DeleteRenderbuffers, &Context::DeleteQueries};
+  for (int k = 0; k < 6; ++k) {
+    CAPTURE(k);
+    (gl.*gens[k])(2, nullptr);
+    CHECK(gl.GetError() == INVALID_VALUE);
+    (gl.*gens[k])(0, nullptr);  // nothing to write: no error
+    CHECK(gl.GetError() == NO_ERROR);
+    (gl.*deletes[k])(3, nullptr);
+    CHECK(gl.GetError() == INVALID_VALUE);
+    (gl.*deletes[k])(0, nullptr);
+    CHECK(gl.GetError() == NO_ERROR);
+  }
+  // ReadPixel, and DrawBuffers on a framebuffer object (whose draw buffers stay as they were).
+  gl.ReadPixel(0, 0, nullptr);
+  CHECK(gl.GetError() == INVALID_VALUE);
+  const std::uint32_t fbo = gl.GenFramebuffer();
+  gl.BindFramebuffer(FRAMEBUFFER, fbo);
+  gl.DrawBuffers(2, nullptr);
+  CHECK(gl.GetError() == INVALID_VALUE);
+  int draw_buffer = 0;
+  gl.GetIntegerv(DRAW_BUFFER0, &draw_buffer);
+  CHECK(draw_buffer == int(COLOR_ATTACHMENT0));
+  gl.BindFramebuffer(FRAMEBUFFER, 0);
+  // Queries of every family with a null output.
+  gl.GetIntegerv(VIEWPORT, nullptr);
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.GetFloatv(COLOR_CLEAR_VALUE, nullptr);
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.GetBooleanv(DEPTH_TEST, nullptr);
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.GetIntegerv(0x1234, nullptr);  // the pname is checked first
+  CHECK(gl.GetError() == INVALID_ENUM);
+  const std::uint32_t tex = gl.GenTexture();
+  gl.BindTexture(TEXTURE_2D, tex);
+  gl.TexImage2D(TEXTURE_2D, 0, RGBA8, 2, 2, 0, RGBA, UNSIGNED_BYTE, nullptr);  // OpenGL's meaning: no contents
+  CHECK(gl.GetError() == NO_ERROR);
+  gl.GetTexParameteriv(TEXTURE_2D, TEXTURE_MIN_FILTER, nullptr);
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.GetTexLevelParameteriv(TEXTURE_2D, 0, TEXTURE_WIDTH, nullptr);
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.GetTexImage(TEXTURE_2D, 0, RGBA, UNSIGNED_BYTE, nullptr);
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.TexSubImage2D(TEXTURE_2D, 0, 0, 0, 2, 2, RGBA, UNSIGNED_BYTE, nullptr);
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.TexSubImage2D(TEXTURE_2D, 0, 0, 0, 0, 2, RGBA, UNSIGNED_BYTE, nullptr);  // an empty rectangle: no error
+  CHECK(gl.GetError() == NO_ERROR);
+  const std::uint32_t buffer = gl.GenBuffer();
+  gl.BindBuffer(ARRAY_BUFFER, buffer);
+  gl.BufferData(ARRAY_BUFFER, 16, nullptr);  // OpenGL's meaning: a store without contents
+  CHECK(gl.GetError() == NO_ERROR);
+  gl.BufferSubData(ARRAY_BUFFER, 0, 8, nullptr);
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.GetBufferSubData(ARRAY_BUFFER, 0, 8, nullptr);
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.GetBufferParameteriv(ARRAY_BUFFER, BUFFER_SIZE, nullptr);
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.GetBufferPointerv(ARRAY_BUFFER, BUFFER_MAP_POINTER, nullptr);
+  CHECK(gl.GetError() == INVALID_VALUE);
+  const std::uint32_t query = gl.GenQuery();
+  gl.BeginQuery(SAMPLES_PASSED, query);
+  gl.GetQueryiv(SAMPLES_PASSED, CURRENT_QUERY, nullptr);
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.EndQuery(SAMPLES_PASSED);
+  gl.GetQueryObjectuiv(query, QUERY_RESULT, nullptr);
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.GetMultisamplefv(SAMPLE_POSITION, 0, nullptr);
+  CHECK(gl.GetError() == INVALID_VALUE);
+}
+
+TEST_CASE("hostile calls: OpenGL 3.3's codes for 3D levels and empty default framebuffers", "[context][errors][hostile]") {
+  // A 3D texture has levels 0 to log2(MAX_3D_TEXTURE_SIZE) = 11 (OpenGL 3.3, section 3.8.3); level 12 is
+  // INVALID_VALUE, as level 15 is for the other targets.
+  Context gl(4, 4);
+  const std::uint32_t volume = gl.GenTexture();
+  gl.BindTexture(TEXTURE_3D, volume);
+  gl.TexImage3D(TEXTURE_3D, 12, RGBA8, 1, 1, 1, 0, RGBA, UNSIGNED_BYTE, nullptr);
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.TexImage3D(TEXTURE_3D, 11, RGBA8, 1, 1, 1, 0, RGBA, UNSIGNED_BYTE, nullptr);
+  CHECK(gl.GetError() == NO_ERROR);
+  std::uint8_t texel[4] = {};
+  gl.GetTexImage(TEXTURE_3D, 12, RGBA, UNSIGNED_BYTE, texel);
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.GetTexImage(TEXTURE_3D, 11, RGBA, UNSIGNED_BYTE, texel);
+  CHECK(gl.GetError() == NO_ERROR);
+  int v = 0;
+  gl.GetTexLevelParameteriv(TEXTURE_3D, 12, TEXTURE_WIDTH, &v);
+  CHECK(gl.GetError() == INVALID_VALUE);
+  const std::uint32_t array = gl.GenTexture();  // an array's levels follow MAX_TEXTURE_SIZE: 12 is a level
+  gl.BindTexture(TEXTURE_2D_ARRAY, array);
+  gl.TexImage3D(TEXTURE_2D_ARRAY, 12, RGBA8, 1, 1, 1, 0, RGBA, UNSIGNED_BYTE, nullptr);
+  CHECK(gl.GetError() == NO_ERROR);
+
+  // A context of 0 x N pixels still has its framebuffer's colour, depth and stencil buffers, with no pixels: reads
+  // and copies from it are valid and read nothing (copied texels outside it are zero, as for any framebuffer).
+  for (const auto& size : {std::pair{0, 5}, std::pair{5, 0}, std::pair{0, 0}}) {
+    CAPTURE(size.first, size.second);
+    Context empty(size.first, size.second);
+    std::uint8_t rgba[4] = {9, 9, 9, 9};
+    empty.ReadPixels(0, 0, 1, 1, RGBA, UNSIGNED_BYTE, rgba);
+    CHECK(empty.GetError() == NO_ERROR);
+    CHECK(rgba[0] == 9);  // outside the buffer: left as it was
+    float depth = 0.5f;
+    empty.ReadPixels(0, 0, 1, 1, DEPTH_COMPONENT, FLOAT, &depth);
+    CHECK(empty.GetError() == NO_ERROR);
+    std::uint8_t stencil = 0;
+    empty.ReadPixels(0, 0, 1, 1, STENCIL_INDEX, UNSIGNED_BYTE, &stencil);
+    CHECK(empty.GetError() == NO_ERROR);
+    const std::uint32_t tex = empty.GenTexture();
+    empty.BindTexture(TEXTURE_2D, tex);
+    empty.CopyTexImage2D(TEXTURE_2D, 0, RGBA8, 0, 0, 2, 2, 0);
+    CHECK(empty.GetError() == NO_ERROR);
+    std::uint8_t texels[16];
+    std::memset(texels, 0xCD, sizeof texels);
+    empty.GetTexImage(TEXTURE_2D, 0, RGBA, UNSIGNED_BYTE, texels);
+    CHECK(std::count(texels, texels + 16, 0) == 16);
+    empty.CopyTexSubImage2D(TEXTURE_2D, 0, 0, 0, 0, 0, 2, 2);
+    CHECK(empty.GetError() == NO_ERROR);
+    // With ReadBuffer(NONE) there is no colour buffer to read, whatever the size.
+    empty.ReadBuffer(NONE);
+    empty.ReadPixels(0, 0, 1, 1, RGBA, UNSIGNED_BYTE, rgba);
+    CHECK(empty.GetError() == INVALID_OPERATION);
+  }
 }

@@ -118,7 +118,10 @@ TEST_CASE("renderbuffer objects: storage, parameters and errors", "[framebuffer]
                           Expect{R32F, 32, 0, 0, 0, 0, 0},
                           Expect{DEPTH_COMPONENT16, 0, 0, 0, 0, 16, 0}, Expect{DEPTH_COMPONENT, 0, 0, 0, 0, 24, 0},
                           Expect{DEPTH24_STENCIL8, 0, 0, 0, 0, 24, 8}, Expect{DEPTH32F_STENCIL8, 0, 0, 0, 0, 32, 8},
-                          Expect{STENCIL_INDEX8, 0, 0, 0, 0, 0, 8}, Expect{DEPTH_STENCIL, 0, 0, 0, 0, 24, 8}}) {
+                          Expect{STENCIL_INDEX8, 0, 0, 0, 0, 0, 8}, Expect{DEPTH_STENCIL, 0, 0, 0, 0, 24, 8},
+                          // OpenGL 3.3 accepts these without requiring their sizes: the sizes stored are reported
+                          Expect{DEPTH_COMPONENT32, 0, 0, 0, 0, 24, 0}, Expect{STENCIL_INDEX1, 0, 0, 0, 0, 0, 8},
+                          Expect{STENCIL_INDEX4, 0, 0, 0, 0, 0, 8}, Expect{STENCIL_INDEX16, 0, 0, 0, 0, 0, 8}}) {
     gl.RenderbufferStorage(RENDERBUFFER, e.format, 16, 8);
     int got[9];
     const Enum names[9] = {RENDERBUFFER_WIDTH, RENDERBUFFER_HEIGHT, RENDERBUFFER_INTERNAL_FORMAT, RENDERBUFFER_RED_SIZE,

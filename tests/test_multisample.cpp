@@ -477,8 +477,8 @@ TEST_CASE("multisample: renderbuffers, completeness, blits and reads follow Open
   gl.RenderbufferStorageMultisample(RENDERBUFFER, 3, RGBA8, 8, 8);
   gl.GetRenderbufferParameteriv(RENDERBUFFER, RENDERBUFFER_SAMPLES, &v);
   CHECK(v == 4);
-  gl.RenderbufferStorageMultisample(RENDERBUFFER, 9, RGBA8, 8, 8);
-  CHECK(gl.GetError() == INVALID_OPERATION);
+  gl.RenderbufferStorageMultisample(RENDERBUFFER, 9, RGBA8, 8, 8);  // OpenGL 3.3, section 4.4.2.1
+  CHECK(gl.GetError() == INVALID_VALUE);
   gl.RenderbufferStorageMultisample(RENDERBUFFER, -1, RGBA8, 8, 8);
   CHECK(gl.GetError() == INVALID_VALUE);
   gl.RenderbufferStorage(RENDERBUFFER, RGBA8, 8, 8);

@@ -2,6 +2,7 @@
 // derivatives, completeness, depth comparison, cube faces; framebuffer objects; uploads and errors.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -862,6 +863,11 @@ TEST_CASE("texture parameters and level parameters read back", "[texture]") {
   CHECK((f[0] == 1.0f && f[1] == 0.0f && f[2] == -1.0f && std::fabs(f[3] - 0.5f) < 1e-6f));
   gl.GetTexParameteriv(TEXTURE_2D, TEXTURE_BORDER_COLOR, i);
   CHECK((i[0] == 2147483647 && i[1] == 0 && i[2] == -2147483647));
+  // Small integers read back as they were set (rounded, not truncated: -1 is stored as -1 / (2^31 - 1)).
+  const int small[4] = {-1, 1, -1000, 12345};
+  gl.TexParameteriv(TEXTURE_2D, TEXTURE_BORDER_COLOR, small);
+  gl.GetTexParameteriv(TEXTURE_2D, TEXTURE_BORDER_COLOR, i);
+  CHECK((i[0] == -1 && i[1] == 1 && i[2] == -1000 && i[3] == 12345));
   CHECK(gl.GetError() == NO_ERROR);
   gl.GetTexParameteriv(TEXTURE_2D, 0x1234, i);
   CHECK(gl.GetError() == INVALID_ENUM);
@@ -1459,4 +1465,119 @@ TEST_CASE("16-bit normalized formats and the UNSIGNED_SHORT and HALF_FLOAT uploa
   CHECK(px[2] == 65535);
   CHECK(px[3] == 32768);
   CHECK(gl.GetError() == NO_ERROR);
+}
+
+TEST_CASE("PixelStore: uploads take a sub-rectangle of a larger client image, read-backs write one, bytes swapped",
+          "[texture][unpack]") {
+  Context gl(1, 1);
+  // A 3 x 2 rectangle from (2, 1) of an 8 x 6 RGBA8 image: UNPACK_ROW_LENGTH, _SKIP_PIXELS and _SKIP_ROWS.
+  std::vector<std::uint8_t> image(8 * 6 * 4);
+  for (int j = 0; j < 6; ++j)
+    for (int i = 0; i < 8; ++i)
+      for (int c = 0; c < 4; ++c) image[std::size_t((j * 8 + i) * 4 + c)] = std::uint8_t(c == 0 ? i : c == 1 ? j : c == 2 ? 7 : 255);
+  gl.BindTexture(TEXTURE_2D, gl.GenTexture());
+  gl.PixelStore(UNPACK_ROW_LENGTH, 8);
+  gl.PixelStore(UNPACK_SKIP_PIXELS, 2);
+  gl.PixelStore(UNPACK_SKIP_ROWS, 1);
+  gl.TexImage2D(TEXTURE_2D, 0, RGBA8, 3, 2, 0, RGBA, UNSIGNED_BYTE, image.data());
+  REQUIRE(gl.GetError() == NO_ERROR);
+  std::vector<std::uint8_t> texels(3 * 2 * 4);
+  gl.GetTexImage(TEXTURE_2D, 0, RGBA, UNSIGNED_BYTE, texels.data());
+  for (int j = 0; j < 2; ++j)
+    for (int i = 0; i < 3; ++i) {
+      CAPTURE(i, j);
+      CHECK(int(texels[std::size_t((j * 3 + i) * 4)]) == i + 2);
+      CHECK(int(texels[std::size_t((j * 3 + i) * 4 + 1)]) == j + 1);
+    }
+  // TexSubImage2D takes the same layout: texel (1, 0) from the image's (2, 1).
+  gl.TexSubImage2D(TEXTURE_2D, 0, 1, 0, 1, 1, RGBA, UNSIGNED_BYTE, image.data());
+  gl.GetTexImage(TEXTURE_2D, 0, RGBA, UNSIGNED_BYTE, texels.data());
+  CHECK((texels[4] == 2 && texels[5] == 1));
+  int v[3] = {};
+  gl.GetIntegerv(UNPACK_ROW_LENGTH, &v[0]);
+  gl.GetIntegerv(UNPACK_SKIP_PIXELS, &v[1]);
+  gl.GetIntegerv(UNPACK_SKIP_ROWS, &v[2]);
+  CHECK((v[0] == 8 && v[1] == 2 && v[2] == 1));
+  gl.PixelStore(UNPACK_ROW_LENGTH, 0);
+  gl.PixelStore(UNPACK_SKIP_PIXELS, 0);
+  gl.PixelStore(UNPACK_SKIP_ROWS, 0);
+
+  // A 2 x 2 x 2 block from (1, 1, 1) of 4 x 3 x 3 images of 4 rows each: UNPACK_IMAGE_HEIGHT and _SKIP_IMAGES.
+  std::vector<std::uint8_t> volume(4 * 4 * 3 * 4, 0);
+  for (int k = 0; k < 3; ++k)
+    for (int j = 0; j < 3; ++j)
+      for (int i = 0; i < 4; ++i) {
+        std::uint8_t* p = volume.data() + ((k * 4 + j) * 4 + i) * 4;
+        p[0] = std::uint8_t(i);
+        p[1] = std::uint8_t(j);
+        p[2] = std::uint8_t(k);
+        p[3] = 255;
+      }
+  gl.BindTexture(TEXTURE_3D, gl.GenTexture());
+  gl.PixelStore(UNPACK_ROW_LENGTH, 4);
+  gl.PixelStore(UNPACK_IMAGE_HEIGHT, 4);
+  gl.PixelStore(UNPACK_SKIP_IMAGES, 1);
+  gl.PixelStore(UNPACK_SKIP_ROWS, 1);
+  gl.PixelStore(UNPACK_SKIP_PIXELS, 1);
+  gl.TexImage3D(TEXTURE_3D, 0, RGBA8, 2, 2, 2, 0, RGBA, UNSIGNED_BYTE, volume.data());
+  REQUIRE(gl.GetError() == NO_ERROR);
+  for (const Enum p : {UNPACK_ROW_LENGTH, UNPACK_IMAGE_HEIGHT, UNPACK_SKIP_IMAGES, UNPACK_SKIP_ROWS, UNPACK_SKIP_PIXELS})
+    gl.PixelStore(p, 0);
+  // Read back as 3 images of 3 rows (PACK_IMAGE_HEIGHT) after one skipped image (PACK_SKIP_IMAGES).
+  gl.PixelStore(PACK_IMAGE_HEIGHT, 3);
+  gl.PixelStore(PACK_SKIP_IMAGES, 1);
+  std::vector<std::uint8_t> out(2 * 3 * 3 * 4, 0xEE);
+  gl.GetTexImage(TEXTURE_3D, 0, RGBA, UNSIGNED_BYTE, out.data());
+  CHECK(gl.GetError() == NO_ERROR);
+  for (int k = 0; k < 2; ++k)
+    for (int j = 0; j < 2; ++j)
+      for (int i = 0; i < 2; ++i) {
+        CAPTURE(i, j, k);
+        const std::uint8_t* p = out.data() + (((k + 1) * 3 + j) * 2 + i) * 4;
+        CHECK((int(p[0]) == i + 1 && int(p[1]) == j + 1 && int(p[2]) == k + 1));
+      }
+  CHECK(out[0] == 0xEE);                    // the skipped image is left alone
+  CHECK(out[(1 * 3 + 2) * 2 * 4] == 0xEE);  // and so is the third row of each image
+  gl.PixelStore(PACK_IMAGE_HEIGHT, 0);
+  gl.PixelStore(PACK_SKIP_IMAGES, 0);
+
+  // UNPACK_SWAP_BYTES and PACK_SWAP_BYTES: 16-bit and float components written big-endian.
+  const std::uint8_t shorts[8] = {0x12, 0x34, 0xAB, 0xCD, 0x00, 0x01, 0xFF, 0xFF};  // 0x1234, 0xABCD, 0x0001, 0xFFFF
+  gl.BindTexture(TEXTURE_2D, gl.GenTexture());
+  gl.PixelStore(UNPACK_SWAP_BYTES, 1);
+  gl.TexImage2D(TEXTURE_2D, 0, RGBA16, 1, 1, 0, RGBA, UNSIGNED_SHORT, shorts);
+  gl.PixelStore(UNPACK_SWAP_BYTES, 0);
+  std::uint16_t native[4] = {};
+  gl.GetTexImage(TEXTURE_2D, 0, RGBA, UNSIGNED_SHORT, native);
+  CHECK((native[0] == 0x1234 && native[1] == 0xABCD && native[2] == 0x0001 && native[3] == 0xFFFF));
+  std::uint8_t swapped[8] = {};
+  gl.PixelStore(PACK_SWAP_BYTES, 1);
+  gl.GetTexImage(TEXTURE_2D, 0, RGBA, UNSIGNED_SHORT, swapped);
+  CHECK(std::memcmp(swapped, shorts, 8) == 0);
+  bool flag = false;
+  gl.GetBooleanv(PACK_SWAP_BYTES, &flag);
+  CHECK(flag);
+  gl.PixelStore(PACK_SWAP_BYTES, 0);
+  float one_and_half = 1.5f;  // a float's bytes reversed
+  std::uint8_t reversed[4];
+  std::memcpy(reversed, &one_and_half, 4);
+  std::reverse(reversed, reversed + 4);
+  gl.PixelStore(UNPACK_SWAP_BYTES, 1);
+  gl.TexImage2D(TEXTURE_2D, 0, R32F, 1, 1, 0, RED, FLOAT, reversed);
+  gl.PixelStore(UNPACK_SWAP_BYTES, 0);
+  float back = 0.0f;
+  gl.GetTexImage(TEXTURE_2D, 0, RED, FLOAT, &back);
+  CHECK(back == 1.5f);
+
+  // Errors: negative values, names outside the tables.
+  gl.PixelStore(UNPACK_ROW_LENGTH, -1);
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.PixelStore(PACK_SKIP_IMAGES, -3);
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.PixelStore(0x0CF6, 1);
+  CHECK(gl.GetError() == INVALID_ENUM);
+  gl.PixelStore(UNPACK_LSB_FIRST, 1);  // accepted and kept: it concerns bitmaps only
+  CHECK(gl.GetError() == NO_ERROR);
+  gl.GetBooleanv(UNPACK_LSB_FIRST, &flag);
+  CHECK(flag);
 }

@@ -528,11 +528,11 @@ TEST_CASE("texels take the bytes of their format", "[wide][texture]") {
   gl.TexParameteri(TEXTURE_2D, TEXTURE_MIN_FILTER, NEAREST);
   detail::TextureObject probe;  // (the context's texture is private: check the conversion on a level directly)
   probe.levels[0][0].Allocate(RGB8, 1, 1);
-  detail::UploadPixels(probe.levels[0][0], 0, 0, 1, 1, RGB, UNSIGNED_BYTE, 1, rgb);
+  detail::UploadPixels(probe.levels[0][0], 0, 0, 1, 1, RGB, UNSIGNED_BYTE, detail::ClientLayout{1}, rgb);
   const glm::vec4 texel = probe.levels[0][0].Texel(0, 0);
   CHECK(texel == glm::vec4(10.0f / 255.0f, 20.0f / 255.0f, 30.0f / 255.0f, 1.0f));
   probe.levels[0][0].Allocate(R8, 1, 1);
-  detail::UploadPixels(probe.levels[0][0], 0, 0, 1, 1, RGB, UNSIGNED_BYTE, 1, rgb);
+  detail::UploadPixels(probe.levels[0][0], 0, 0, 1, 1, RGB, UNSIGNED_BYTE, detail::ClientLayout{1}, rgb);
   CHECK(probe.levels[0][0].Texel(0, 0) == glm::vec4(10.0f / 255.0f, 0.0f, 0.0f, 1.0f));
   CHECK(gl.GetError() == NO_ERROR);
 }

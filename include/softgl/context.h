@@ -302,9 +302,12 @@ class Context {
   /// Bad target or name: INVALID_ENUM; level out of range: INVALID_VALUE; nothing bound: INVALID_OPERATION.
   void GetTexLevelParameteriv(Enum target, int level, Enum pname, int* params) const;
   void GetTexLevelParameterfv(Enum target, int level, Enum pname, float* params) const;
-  /// UNPACK_ALIGNMENT (TexImage2D) and PACK_ALIGNMENT (ReadPixels): 1, 2, 4 (default) or 8, else INVALID_VALUE;
-  /// PACK_ROW_LENGTH, PACK_SKIP_ROWS, PACK_SKIP_PIXELS: >= 0 (default 0), else INVALID_VALUE. Another name:
-  /// INVALID_ENUM.
+  /// Where client pixels lie in memory (OpenGL 3.3, tables 3.1 and 4.5): the UNPACK_ parameters for
+  /// TexImage2D/3D and TexSubImage2D/3D, the PACK_ ones for ReadPixels and GetTexImage. _ALIGNMENT: 1, 2, 4
+  /// (default) or 8, else INVALID_VALUE; _ROW_LENGTH (pixels a row, 0: the width), _IMAGE_HEIGHT (rows an image of
+  /// a 3D or array texture, 0: the height), _SKIP_PIXELS, _SKIP_ROWS, _SKIP_IMAGES: >= 0 (default 0), else
+  /// INVALID_VALUE; _SWAP_BYTES: non-zero reverses the bytes of each 2- and 4-byte component; _LSB_FIRST is kept
+  /// and queried only (it concerns bitmaps). Another name: INVALID_ENUM.
   void PixelStore(Enum pname, int value);
 
   // ---- Framebuffer objects -----------------------------------------------------------------------------------
@@ -391,7 +394,9 @@ class Context {
   /// SRGB8, RGB565, RGBA4, RGB5_A1, RGBA32F, RG32F, R32F, RGBA16F, RG16F, R16F, R11F_G11F_B10F,
   /// DEPTH_COMPONENT16 (16-bit fixed point: the depth test compares depths converted to 16 bits),
   /// DEPTH_COMPONENT24/32F (float), DEPTH24_STENCIL8, DEPTH32F_STENCIL8, STENCIL_INDEX8, or the unsized RGBA, RGB, RG,
-  /// RED, DEPTH_COMPONENT, DEPTH_STENCIL, STENCIL_INDEX (stored as RGBA8, ..., DEPTH24_STENCIL8, STENCIL_INDEX8).
+  /// RED, DEPTH_COMPONENT, DEPTH_STENCIL, STENCIL_INDEX (stored as RGBA8, ..., DEPTH24_STENCIL8, STENCIL_INDEX8), or
+  /// DEPTH_COMPONENT32 and STENCIL_INDEX1/4/16, which OpenGL does not require at their sizes (stored as
+  /// DEPTH_COMPONENT24 and STENCIL_INDEX8).
   /// Contents start zero. Errors: target not RENDERBUFFER, another format: INVALID_ENUM; size negative or above
   /// MAX_RENDERBUFFER_SIZE (kMaxFramebufferSize): INVALID_VALUE; nothing bound: INVALID_OPERATION; no memory:
   /// OUT_OF_MEMORY.
@@ -401,7 +406,8 @@ class Context {
   /// sample, resolved by BlitFramebuffer into a single-sampled framebuffer, and cannot be read otherwise
   /// (ReadPixels and CopyTex(Sub)Image2D from it record INVALID_OPERATION). All attachments of a framebuffer
   /// object must have the same sample count, else it is FRAMEBUFFER_INCOMPLETE_MULTISAMPLE. Errors as
-  /// RenderbufferStorage, and samples < 0: INVALID_VALUE; samples above MAX_SAMPLES (8): INVALID_OPERATION.
+  /// RenderbufferStorage, and samples < 0 or above MAX_SAMPLES (8): INVALID_VALUE (OpenGL 3.3's code; 4.2 made the
+  /// latter INVALID_OPERATION).
   void RenderbufferStorageMultisample(Enum target, int samples, Enum internal_format, int width, int height);
   /// Defines the image of the TEXTURE_2D_MULTISAMPLE texture bound to the active unit: width x height of
   /// `internal_format` (as RenderbufferStorage takes it) with `samples` samples a pixel, rounded up as
@@ -607,7 +613,7 @@ class Context {
   /// BLEND_SRC/DST_RGB/ALPHA, BLEND_EQUATION_RGB/ALPHA, BLEND_COLOR (4), COLOR_CLEAR_VALUE (4), COLOR_WRITEMASK
   /// (4); UNPACK_ALIGNMENT and the PACK_ settings; the limits MAX_VERTEX_ATTRIBS, MAX_TEXTURE_SIZE,
   /// MAX_CUBE_MAP_TEXTURE_SIZE, MAX_TEXTURE_IMAGE_UNITS (and the VERTEX_ and COMBINED_ forms), MAX_DRAW_BUFFERS,
-  /// MAX_COLOR_ATTACHMENTS, MAX_SAMPLES (1), MAX_RENDERBUFFER_SIZE, MAX_VIEWPORT_DIMS (2), MAX_VARYING_COMPONENTS,
+  /// MAX_COLOR_ATTACHMENTS, MAX_SAMPLES (8, one value), MAX_RENDERBUFFER_SIZE, MAX_VIEWPORT_DIMS (2), MAX_VARYING_COMPONENTS,
   /// MAX_ELEMENTS_VERTICES/INDICES, POINT_SIZE_RANGE (2), ALIASED_LINE_WIDTH_RANGE (2), SUBPIXEL_BITS,
   /// MAJOR_VERSION, MINOR_VERSION (3.3), NUM_EXTENSIONS (0), CONTEXT_PROFILE_MASK (core). `data` must hold as many
   /// values as the name has. Another name: INVALID_ENUM, data untouched.

@@ -211,6 +211,12 @@ inline constexpr Enum DEPTH_COMPONENT32F = 0x8CAC;
 inline constexpr Enum DEPTH24_STENCIL8 = 0x88F0;
 inline constexpr Enum DEPTH32F_STENCIL8 = 0x8CAD;
 inline constexpr Enum STENCIL_INDEX8 = 0x8D48;  // renderbuffers only
+// Renderbuffer formats OpenGL 3.3 accepts without requiring their sizes: stored as DEPTH_COMPONENT24 and
+// STENCIL_INDEX8 (RENDERBUFFER_DEPTH_SIZE and _STENCIL_SIZE report what is stored).
+inline constexpr Enum DEPTH_COMPONENT32 = 0x81A7;
+inline constexpr Enum STENCIL_INDEX1 = 0x8D46;
+inline constexpr Enum STENCIL_INDEX4 = 0x8D47;
+inline constexpr Enum STENCIL_INDEX16 = 0x8D49;
 inline constexpr Enum FLOAT_32_UNSIGNED_INT_24_8_REV = 0x8DAD;  // DEPTH_STENCIL pixels: a float, then stencil low
 
 // Texture parameters and their values.
@@ -251,11 +257,23 @@ inline constexpr Enum REPEAT = 0x2901;
 inline constexpr Enum CLAMP_TO_BORDER = 0x812D;
 inline constexpr Enum CLAMP_TO_EDGE = 0x812F;
 inline constexpr Enum MIRRORED_REPEAT = 0x8370;
+// PixelStore's parameters (OpenGL 3.3, tables 3.1 and 4.5).
+inline constexpr Enum UNPACK_SWAP_BYTES = 0x0CF0;
+inline constexpr Enum UNPACK_LSB_FIRST = 0x0CF1;
+inline constexpr Enum UNPACK_ROW_LENGTH = 0x0CF2;
+inline constexpr Enum UNPACK_SKIP_ROWS = 0x0CF3;
+inline constexpr Enum UNPACK_SKIP_PIXELS = 0x0CF4;
 inline constexpr Enum UNPACK_ALIGNMENT = 0x0CF5;
+inline constexpr Enum UNPACK_SKIP_IMAGES = 0x806D;
+inline constexpr Enum UNPACK_IMAGE_HEIGHT = 0x806E;
+inline constexpr Enum PACK_SWAP_BYTES = 0x0D00;
+inline constexpr Enum PACK_LSB_FIRST = 0x0D01;
 inline constexpr Enum PACK_ROW_LENGTH = 0x0D02;
 inline constexpr Enum PACK_SKIP_ROWS = 0x0D03;
 inline constexpr Enum PACK_SKIP_PIXELS = 0x0D04;
 inline constexpr Enum PACK_ALIGNMENT = 0x0D05;
+inline constexpr Enum PACK_SKIP_IMAGES = 0x806B;
+inline constexpr Enum PACK_IMAGE_HEIGHT = 0x806C;
 
 // Framebuffer objects.
 inline constexpr Enum FRAMEBUFFER = 0x8D40;
