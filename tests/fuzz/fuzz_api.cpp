@@ -1,6 +1,7 @@
 // fuzz_api — random sequences of API calls with random arguments on one context. Every call must validate, record
 // OpenGL's error or act, and never crash or touch memory it should not.
 #include <algorithm>
+#include <climits>
 #include <cmath>
 #include <cstring>
 #include <vector>
@@ -109,7 +110,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   };
   for (int step = 0; step < 200 && !in.Empty(); ++step) {
     const auto id = [&] { return std::uint32_t(in.Byte() % 8); };
-    switch (in.Byte() % 43) {
+    switch (in.Byte() % 44) {
       case 0: gl.GenBuffer(); break;
       case 1: gl.BindBuffer(in.Enum(kBufferTargets), id()); break;
       case 2: {
@@ -393,6 +394,81 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                              scratch.data());
             }
             break;
+        }
+        break;
+      }
+      case 42: {  // hostile arguments: rectangles at the ends of int, NaN and infinite colours, null pointers
+        constexpr int kEnds[] = {INT_MIN, INT_MIN + 1, -1, 0, 1, INT_MAX - 1, INT_MAX};
+        const auto end = [&] { return in.Byte() % 4 ? kEnds[in.Byte() % 7] : in.Get<int>(); };
+        const auto small = [&](int lo, int hi) { return std::clamp(in.Int(lo, hi), lo, hi); };
+        constexpr std::uint32_t kImageTargets[] = {TEXTURE_2D, TEXTURE_CUBE_MAP_POSITIVE_X, TEXTURE_CUBE_MAP_NEGATIVE_Z};
+        switch (in.Byte() % 6) {
+          case 0:
+            gl.BlitFramebuffer(end(), end(), end(), end(), end(), end(), end(), end(),
+                               std::uint32_t(in.Get<std::uint16_t>()) & 0x4500u, in.Byte() % 2 ? NEAREST : LINEAR);
+            break;
+          case 1:
+            if (in.Byte() % 2)
+              gl.CopyTexSubImage2D(in.Enum(kImageTargets), small(0, 2), small(0, 8), small(0, 8), end(), end(),
+                                   small(-1, 64), small(-1, 64));
+            else if (in.Byte() % 2)
+              gl.CopyTexImage2D(in.Enum(kImageTargets), small(0, 2), in.Enum(kInternal), end(), end(), small(-1, 64),
+                                small(-1, 64), 0);
+            else
+              gl.CopyTexSubImage3D(in.Byte() % 2 ? TEXTURE_2D_ARRAY : TEXTURE_3D, small(0, 2), small(0, 8),
+                                   small(0, 8), small(0, 4), end(), end(), small(-1, 64), small(-1, 64));
+            break;
+          case 2: {  // colours of any bits cleared into whatever is bound, read back as every type
+            gl.ClearColor(in.Float(), in.Float(), in.Float(), in.Float());
+            gl.ClearDepth(double(in.Float()));
+            gl.Clear(COLOR_BUFFER_BIT | DEPTH_BUFFER_BIT);
+            constexpr std::uint32_t kTypes[] = {UNSIGNED_BYTE, UNSIGNED_SHORT, UNSIGNED_INT, FLOAT};
+            std::uint32_t out[4 * 4];
+            gl.PixelStore(PACK_ALIGNMENT, 4);
+            gl.PixelStore(PACK_ROW_LENGTH, 0);
+            gl.PixelStore(PACK_SKIP_ROWS, 0);
+            gl.PixelStore(PACK_SKIP_PIXELS, 0);
+            gl.ReadPixels(small(0, 8), small(0, 8), 2, 2, RGBA, in.Enum(kTypes), out);
+            gl.ReadPixels(small(0, 8), small(0, 8), 2, 2, DEPTH_COMPONENT, in.Enum(kTypes), out);
+            int iv[4];
+            gl.GetIntegerv(in.Byte() % 2 ? COLOR_CLEAR_VALUE : DEPTH_CLEAR_VALUE, iv);
+            break;
+          }
+          case 3: {  // a rectangle at the ends of int, 2 x 2 at most
+            std::uint32_t out[4 * 4];
+            gl.PixelStore(PACK_ALIGNMENT, 4);
+            gl.PixelStore(PACK_ROW_LENGTH, 0);
+            gl.PixelStore(PACK_SKIP_ROWS, 0);
+            gl.PixelStore(PACK_SKIP_PIXELS, 0);
+            gl.ReadPixels(end(), end(), small(-1, 2), small(-1, 2), RGBA, UNSIGNED_INT, out);
+            break;
+          }
+          default: {  // null pointers with counts and rectangles around zero
+            const int n = small(-1, 3);
+            int iv[4];
+            switch (in.Byte() % 12) {
+              case 0: gl.GenBuffers(n, nullptr); break;
+              case 1: gl.DeleteTextures(n, nullptr); break;
+              case 2: gl.GenQueries(n, nullptr); break;
+              case 3: gl.DrawBuffers(n, nullptr); break;
+              case 4: gl.ReadPixel(small(0, 8), small(0, 8), nullptr); break;
+              case 5: gl.ReadPixels(0, 0, n, small(-1, 3), RGBA, UNSIGNED_BYTE, nullptr); break;
+              case 6: gl.GetIntegerv(std::uint32_t(in.Int(0x0B00, 0x0D60)), nullptr); break;
+              case 7: gl.GetTexImage(in.Enum(kImageTargets), small(0, 2), RGBA, UNSIGNED_BYTE, nullptr); break;
+              case 8: gl.BufferSubData(in.Enum(kBufferTargets), small(0, 8), n, nullptr); break;
+              case 9: gl.GetBufferSubData(in.Enum(kBufferTargets), small(0, 8), n, nullptr); break;
+              case 10:
+                gl.TexSubImage2D(in.Enum(kImageTargets), small(0, 2), 0, 0, n, small(-1, 3), RGBA, UNSIGNED_BYTE,
+                                 nullptr);
+                break;
+              default:
+                gl.GetTexParameteriv(in.Enum(kTexTargets), in.Enum(kParams), nullptr);
+                gl.GetBufferParameteriv(in.Enum(kBufferTargets), BUFFER_SIZE, nullptr);
+                gl.GetIntegerv(VIEWPORT, iv);
+                break;
+            }
+            break;
+          }
         }
         break;
       }
