@@ -487,3 +487,34 @@ TEST_CASE("MakeShadowMap: a complete depth-only framebuffer and a comparing dept
   CHECK(width == 64);
   CHECK(gl.GetError() == NO_ERROR);
 }
+
+TEST_CASE("the environment's uploads and read-backs ignore the application's PixelStore settings and keep them",
+          "[model]") {
+  // The studio cube map made with OpenGL's default pixel layout, and again after the application set rows, skips,
+  // alignment and byte swapping for its own uploads: the same texels, and the application's settings stay.
+  auto face = [](Context& gl) {
+    gl.ActiveTexture(TEXTURE0 + Enum(kUnitEnvironment));
+    std::vector<std::uint8_t> texels(16 * 16 * 4);
+    gl.GetTexImage(TEXTURE_CUBE_MAP_POSITIVE_Y, 0, RGBA, UNSIGNED_BYTE, texels.data());
+    gl.ActiveTexture(TEXTURE0);
+    return texels;
+  };
+  Context plain(4, 4);
+  MakeStudioEnvironment(plain, 16);
+  Context set(4, 4);
+  set.PixelStore(UNPACK_ROW_LENGTH, 7);
+  set.PixelStore(UNPACK_SKIP_ROWS, 2);
+  set.PixelStore(UNPACK_ALIGNMENT, 8);
+  set.PixelStore(UNPACK_SWAP_BYTES, 1);
+  MakeStudioEnvironment(set, 16);
+  int row_length = 0, skip_rows = 0, alignment = 0, swap = 0;
+  set.GetIntegerv(UNPACK_ROW_LENGTH, &row_length);
+  set.GetIntegerv(UNPACK_SKIP_ROWS, &skip_rows);
+  set.GetIntegerv(UNPACK_ALIGNMENT, &alignment);
+  set.GetIntegerv(UNPACK_SWAP_BYTES, &swap);
+  CHECK((row_length == 7 && skip_rows == 2 && alignment == 8 && swap == 1));
+  for (const Enum p : {UNPACK_ROW_LENGTH, UNPACK_SKIP_ROWS, UNPACK_ALIGNMENT, UNPACK_SWAP_BYTES})
+    set.PixelStore(p, p == UNPACK_ALIGNMENT ? 4 : 0);
+  CHECK(face(set) == face(plain));
+  CHECK(set.GetError() == NO_ERROR);
+}

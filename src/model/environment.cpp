@@ -6,6 +6,8 @@
 
 #include <softgl/shaders.h>
 
+#include "pixel_store.h"
+
 namespace softgl {
 
 namespace {
@@ -83,6 +85,7 @@ struct Panorama {
 template <class Texel>
 void UploadCube(Context& gl, int size, Enum format, Texel texel, int level = 0) {
   std::vector<float> data(std::size_t(size) * std::size_t(size) * 4);
+  const model_detail::DefaultPixelStore tight(gl);  // data's rows as they are
   for (int face = 0; face < 6; ++face) {
     for (int j = 0; j < size; ++j)
       for (int i = 0; i < size; ++i) {
@@ -122,7 +125,10 @@ float LoadEnvironment(Context& gl, const std::string& path, int size, std::strin
   gl.GetTexLevelParameteriv(TEXTURE_2D, 0, TEXTURE_WIDTH, &w);
   gl.GetTexLevelParameteriv(TEXTURE_2D, 0, TEXTURE_HEIGHT, &h);
   std::vector<float> rgba(std::size_t(w) * std::size_t(h) * 4);
-  gl.GetTexImage(TEXTURE_2D, 0, RGBA, FLOAT, rgba.data());
+  {
+    const model_detail::DefaultPixelStore tight(gl);  // rgba's rows as they are
+    gl.GetTexImage(TEXTURE_2D, 0, RGBA, FLOAT, rgba.data());
+  }
   gl.DeleteTexture(image);
   pano.width = w;
   pano.height = h;

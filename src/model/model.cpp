@@ -34,6 +34,8 @@
 #include <assimp/scene.h>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "pixel_store.h"
+
 namespace softgl {
 
 namespace {
@@ -204,6 +206,7 @@ class Loader {
             const aiTexel& t = embedded->pcData[std::size_t(h - 1 - y) * w + x];
             rgba.insert(rgba.end(), {t.r, t.g, t.b, t.a});
           }
+        const model_detail::DefaultPixelStore tight(gl_);  // rgba's rows as they are
         gl_.TexImage2D(TEXTURE_2D, 0, srgb ? SRGB8_ALPHA8 : RGBA8, int(w), int(h), 0, RGBA, UNSIGNED_BYTE, rgba.data());
         ok = gl_.GetError() == NO_ERROR;
       }
