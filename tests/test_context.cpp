@@ -33,6 +33,14 @@ void BindFloatTarget(Context& gl, int w, int h) {
   gl.FramebufferTexture2D(FRAMEBUFFER, COLOR_ATTACHMENT0, TEXTURE_2D, tex, 0);
 }
 
+// Clears colour, depth and stencil of the bound draw framebuffer to these values.
+void ClearAll(Context& gl, const glm::vec4& color, double depth, int stencil) {
+  gl.ClearColor(color.r, color.g, color.b, color.a);
+  gl.ClearDepth(depth);
+  gl.ClearStencil(stencil);
+  gl.Clear(COLOR_BUFFER_BIT | DEPTH_BUFFER_BIT | STENCIL_BUFFER_BIT);
+}
+
 }  // namespace
 
 TEST_CASE("GetError reports the first error and clears it", "[context]") {
@@ -1791,15 +1799,9 @@ TEST_CASE("hostile calls: rectangles at INT_MIN and INT_MAX blit and copy what l
   for (const bool mirrored : {false, true}) {
     CAPTURE(mirrored);
     gl.BindFramebuffer(FRAMEBUFFER, fbo);
-    gl.ClearColor(0.2f, 0.4f, 0.6f, 1.0f);
-    gl.ClearDepth(0.5);
-    gl.ClearStencil(7);
-    gl.Clear(COLOR_BUFFER_BIT | DEPTH_BUFFER_BIT | STENCIL_BUFFER_BIT);
+    ClearAll(gl, glm::vec4(0.2f, 0.4f, 0.6f, 1.0f), 0.5, 7);
     gl.BindFramebuffer(FRAMEBUFFER, 0);
-    gl.ClearColor(0.0f, 0.0f, 0.0f, 0.0f);
-    gl.ClearDepth(1.0);
-    gl.ClearStencil(0);
-    gl.Clear(COLOR_BUFFER_BIT | DEPTH_BUFFER_BIT | STENCIL_BUFFER_BIT);
+    ClearAll(gl, glm::vec4(0.0f), 1.0, 0);
     gl.BindFramebuffer(READ_FRAMEBUFFER, fbo);
     gl.BindFramebuffer(DRAW_FRAMEBUFFER, 0);
     if (mirrored)
