@@ -276,15 +276,23 @@ void Context::BindVertexArray(std::uint32_t array) {
 void Context::VertexAttributePointer(std::uint32_t index, int size, Enum type, bool normalized, int stride,
                                      std::size_t offset) {
   auto& s = *state_;
-  if (index >= std::uint32_t(kMaxVertexAttribs) || size < 1 || size > 4 || stride < 0)
-    return s.SetError(INVALID_VALUE, __func__, "a numeric argument is out of range");
+  const bool bgra = size == int(BGRA);
+  if (index >= std::uint32_t(kMaxVertexAttribs) || ((size < 1 || size > 4) && !bgra) || stride < 0)
+    return s.SetError(INVALID_VALUE, __func__, "a numeric argument is out of range (size is 1 to 4 or BGRA)");
   if (detail::TypeSize(type) == 0) return s.SetError(INVALID_ENUM, __func__, "not an attribute type");
+  // OpenGL 3.3, section 2.8: the packed types hold four components; BGRA is four normalized components of one of
+  // them or of UNSIGNED_BYTE.
+  const bool packed = detail::IsPackedAttribType(type);
+  if (packed && size != 4 && !bgra) return s.SetError(INVALID_OPERATION, __func__, "the 2_10_10_10 types take size 4 or BGRA");
+  if (bgra && ((!packed && type != UNSIGNED_BYTE) || !normalized))
+    return s.SetError(INVALID_OPERATION, __func__, "size BGRA takes UNSIGNED_BYTE or a 2_10_10_10 type, normalized");
   if (s.vao == nullptr) return s.SetError(INVALID_OPERATION, __func__, "no vertex array is bound");
   if (!s.array_buffer && offset != 0) return s.SetError(INVALID_OPERATION, __func__, "no buffer bound to ARRAY_BUFFER (client-side arrays do not exist in a core profile)");
   AttribBinding& a = s.vao->attrib[index];
   a.buffer = s.array_buffer;
   a.offset = offset;
-  a.size = size;
+  a.size = bgra ? 4 : size;
+  a.bgra = bgra;
   a.type = type;
   a.normalized = normalized;
   a.stride = stride;

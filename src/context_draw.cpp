@@ -24,8 +24,9 @@ void ContextState::Draw(const detail::DrawCall& call) {
     src.components = a.size;
     src.type = a.type;
     src.normalized = a.normalized;
+    src.bgra = a.bgra;
     src.divisor = a.divisor;
-    src.stride = a.stride ? std::size_t(a.stride) : std::size_t(a.size) * detail::TypeSize(a.type);
+    src.stride = a.stride ? std::size_t(a.stride) : detail::AttributeBytes(a.type, a.size);
   }
 
   detail::RenderTarget target;

@@ -1,6 +1,7 @@
 // context_framebuffers.cpp — framebuffer objects and renderbuffers (attachments, completeness), the read buffer,
 // reading back (ReadPixels and its pack layout, CopyTexImage2D, GetTexImage), and BlitFramebuffer.
 #include "context_state.h"
+#include "pixel_transfer.h"
 
 #include <cmath>
 #include <cstring>
@@ -155,91 +156,30 @@ void Context::ReadPixel(int x, int y, std::uint8_t rgba[4]) const {
 
 namespace {
 
-// How ReadPixels lays out one pixel: which RGBA channels, in order (-1 ends), or depth and/or stencil.
-struct PixelLayout {
-  int channels[4] = {-1, -1, -1, -1};
-  int count = 0;  // components per pixel (DEPTH_STENCIL with UNSIGNED_INT_24_8: one 32-bit word)
-  bool depth = false, stencil = false;
-};
-
-bool LayoutOf(Enum format, PixelLayout& l) {
-  auto set = [&](std::initializer_list<int> c) {
-    for (int k : c) l.channels[l.count++] = k;
-    return true;
-  };
-  switch (format) {
-    case RED: return set({0});
-    case GREEN: return set({1});
-    case BLUE: return set({2});
-    case RG: return set({0, 1});
-    case RGB: return set({0, 1, 2});
-    case BGR: return set({2, 1, 0});
-    case RGBA: return set({0, 1, 2, 3});
-    case BGRA: return set({2, 1, 0, 3});
-    case DEPTH_COMPONENT: l.depth = true; l.count = 1; return true;
-    case STENCIL_INDEX: l.stencil = true; l.count = 1; return true;
-    case DEPTH_STENCIL: l.depth = l.stencil = true; l.count = 1; return true;
-    default: return false;
-  }
-}
-
-// v clamped to [0, 1], NaN as 0 (a float buffer may hold NaN; std::clamp would pass it on), times `max`, rounded.
-std::uint64_t ToUnsignedNormalized(double v, double max) {
-  const double c = v > 0.0 ? std::min(v, 1.0) : 0.0;
-  return std::uint64_t(std::llround(c * max));
-}
-
-// Writes normalized value v (clamped to [0, 1], NaN as 0) or, for stencil indices, the integer value as `type`.
-void PutComponent(Enum type, double v, bool integer, std::uint8_t* dst) {
-  switch (type) {
-    case UNSIGNED_BYTE: {
-      const auto b = std::uint8_t(integer ? v : ToUnsignedNormalized(v, 255.0));
-      *dst = b;
-      break;
-    }
-    case UNSIGNED_SHORT: {
-      const auto h = std::uint16_t(integer ? v : ToUnsignedNormalized(v, 65535.0));
-      std::memcpy(dst, &h, 2);
-      break;
-    }
-    case UNSIGNED_INT: {
-      const auto u = std::uint32_t(integer ? v : ToUnsignedNormalized(v, 4294967295.0));
-      std::memcpy(dst, &u, 4);
-      break;
-    }
-    default: {  // FLOAT
-      const auto f = float(v);
-      std::memcpy(dst, &f, 4);
-      break;
-    }
-  }
-}
-
 // OpenGL's pack layout (section 4.3.2): rows of PACK_ROW_LENGTH (or width) pixels, each row aligned to
 // PACK_ALIGNMENT when a component is smaller than the alignment, starting PACK_SKIP_ROWS rows and PACK_SKIP_PIXELS
 // pixels in; for the images of a 3D or array texture (`layered`), images of PACK_IMAGE_HEIGHT (or height) rows,
 // starting PACK_SKIP_IMAGES images in. With PACK_SWAP_BYTES each component's bytes are reversed (Swap).
 struct PackLayout {
   std::uint8_t* out;
-  std::size_t stride, image, pixel, component;
+  std::size_t stride, image, pixel, element;
   bool swap = false;
   std::uint8_t* At(int i, int j, int k = 0) const {
     return out + std::size_t(k) * image + std::size_t(j) * stride + std::size_t(i) * pixel;
   }
   void Swap(std::uint8_t* p) const {
-    if (!swap || component == 1) return;
-    for (std::size_t e = 0; e < pixel; e += component) std::reverse(p + e, p + e + component);
+    if (!swap || element == 1) return;
+    for (std::size_t e = 0; e < pixel; e += element) std::reverse(p + e, p + e + element);
   }
 };
-PackLayout Pack(const ContextState& s, int width, int height, bool layered, const PixelLayout& l, Enum type,
-                void* pixels) {
+PackLayout Pack(const ContextState& s, int width, int height, bool layered, Enum format, Enum type, void* pixels) {
   const detail::ClientLayout& c = s.pack;
   PackLayout p;
-  p.component = type == UNSIGNED_BYTE ? 1 : type == UNSIGNED_SHORT ? 2 : 4;
-  p.pixel = p.component * std::size_t(l.count);
+  p.element = detail::TransferElementBytes(type);
+  p.pixel = detail::TransferPixelBytes(format, type);
   p.stride = std::size_t(c.row_length > 0 ? c.row_length : width) * p.pixel;
   const std::size_t align = std::size_t(c.alignment);
-  if (p.component < align) p.stride = (p.stride + align - 1) / align * align;
+  if (p.element < align) p.stride = (p.stride + align - 1) / align * align;
   p.image = p.stride * std::size_t(c.image_height > 0 ? c.image_height : height);
   p.out = static_cast<std::uint8_t*>(pixels) + (layered ? std::size_t(c.skip_images) * p.image : 0) +
           std::size_t(c.skip_rows) * p.stride + std::size_t(c.skip_pixels) * p.pixel;
@@ -251,25 +191,24 @@ PackLayout Pack(const ContextState& s, int width, int height, bool layered, cons
 
 void Context::ReadPixels(int x, int y, int width, int height, Enum format, Enum type, void* pixels) const {
   auto& s = *state_;
-  PixelLayout l;
-  if (!LayoutOf(format, l)) return s.SetError(INVALID_ENUM, __func__, "not a pixel format ReadPixels knows");
-  if (type != UNSIGNED_BYTE && type != UNSIGNED_SHORT && type != UNSIGNED_INT && type != FLOAT &&
-      type != UNSIGNED_INT_24_8)
-    return s.SetError(INVALID_ENUM, __func__, "type must be UNSIGNED_BYTE, UNSIGNED_SHORT, UNSIGNED_INT, FLOAT or UNSIGNED_INT_24_8");
+  const char* why = "";
+  const Enum check = detail::CheckPixelTransfer(format, type, detail::TransferCall::kReadPixels, why);
+  if (check == INVALID_ENUM) return s.SetError(check, __func__, why);
   if (width < 0 || height < 0) return s.SetError(INVALID_VALUE, __func__, "width or height is negative");
-  if ((format == DEPTH_STENCIL) != (type == UNSIGNED_INT_24_8)) return s.SetError(INVALID_OPERATION, __func__, "DEPTH_STENCIL goes with UNSIGNED_INT_24_8, and only it");
+  if (check != NO_ERROR) return s.SetError(check, __func__, why);
   if (s.read_fbo && FramebufferStatus(*s.read_fbo) != FRAMEBUFFER_COMPLETE) return s.SetError(INVALID_FRAMEBUFFER_OPERATION, __func__, "the read framebuffer is not complete");
   if (ReadFboSamples(s) > 1) return s.SetError(INVALID_OPERATION, __func__, "the read framebuffer object is multisampled: resolve it with BlitFramebuffer first");
   s.Sync(__func__);
-  const unsigned buffers = l.depth || l.stencil ? (l.depth ? detail::kDepthBit : 0u) | (l.stencil ? detail::kStencilBit : 0u)
-                                                : detail::kColorBit;
+  const bool depth = format == DEPTH_COMPONENT || format == DEPTH_STENCIL;
+  const bool stencil = format == STENCIL_INDEX || format == DEPTH_STENCIL;
+  const unsigned buffers = depth || stencil ? (depth ? detail::kDepthBit : 0u) | (stencil ? detail::kStencilBit : 0u)
+                                            : detail::kColorBit;
   const detail::RenderTarget t = ReadTarget(s, false, false, buffers);
-  if (!EmptyDefaultRead(s, t, !l.depth && !l.stencil) &&
-      ((l.depth && !t.HasDepth()) || (l.stencil && !t.stencil) || (l.count > 0 && !l.depth && !l.stencil && !t.color[0].Present())))
+  if (!EmptyDefaultRead(s, t, !depth && !stencil) &&
+      ((depth && !t.HasDepth()) || (stencil && !t.stencil) || (!depth && !stencil && !t.color[0].Present())))
     return s.SetError(INVALID_OPERATION, __func__, "the read framebuffer has no buffer of that kind");
   if (width == 0 || height == 0 || !NotNull(s, __func__, pixels, "pixels")) return;
-  const PackLayout pack = Pack(s, width, height, false, l, type, pixels);
-  const std::size_t component = pack.component;
+  const PackLayout pack = Pack(s, width, height, false, format, type, pixels);
   // Only pixels inside the read buffer are written (the others are undefined in OpenGL: left as they are).
   const int x0 = std::max(x, 0), y0 = std::max(y, 0);
   const int x1 = int(std::min<std::int64_t>(std::int64_t(x) + width, t.width));
@@ -277,20 +216,16 @@ void Context::ReadPixels(int x, int y, int width, int height, Enum format, Enum 
   for (int py = y0; py < y1; ++py)
     for (int px = x0; px < x1; ++px) {
       std::uint8_t* dst = pack.At(px - x, py - y);
-      if (format == DEPTH_STENCIL) {
-        const std::uint32_t word = std::uint32_t(ToUnsignedNormalized(t.DepthAt(px, py), 16777215.0)) << 8 |
-                                   t.Stencil(px, py);
-        std::memcpy(dst, &word, 4);
-      } else if (l.depth) {
-        PutComponent(type, double(t.DepthAt(px, py)), false, dst);
-      } else if (l.stencil) {
-        PutComponent(type, double(t.Stencil(px, py)), true, dst);
+      if (depth && stencil) {
+        detail::PackDepthStencil(type, t.DepthAt(px, py), std::uint8_t(t.Stencil(px, py)), dst);
+      } else if (depth) {
+        detail::PackColor(DEPTH_COMPONENT, type, glm::vec4(t.DepthAt(px, py)), dst);
+      } else if (stencil) {
+        detail::PackStencil(type, std::uint32_t(t.Stencil(px, py)), dst);
       } else {
-        const glm::vec4 c = t.color[0].Load(px, py);
         // A fixed-point buffer's b / 255 gives back b for UNSIGNED_BYTE; a float buffer's values are clamped only
         // when converted to a normalized type.
-        for (int k = 0; k < l.count; ++k)
-          PutComponent(type, double(c[l.channels[k]]), false, dst + std::size_t(k) * component);
+        detail::PackColor(format, type, t.color[0].Load(px, py), dst);
       }
       pack.Swap(dst);
     }
@@ -300,39 +235,33 @@ void Context::GetTexImage(Enum target, int level, Enum format, Enum type, void* 
   auto& s = *state_;
   if (!IsTexImageTarget(target) && target != TEXTURE_2D_ARRAY && target != TEXTURE_3D)
     return s.SetError(INVALID_ENUM, __func__, "target must be TEXTURE_2D, a TEXTURE_CUBE_MAP_* face, TEXTURE_2D_ARRAY or TEXTURE_3D");
-  PixelLayout l;
-  if (!LayoutOf(format, l) || (l.stencil && !l.depth)) return s.SetError(INVALID_ENUM, __func__, "format must be a colour format, DEPTH_COMPONENT or DEPTH_STENCIL");
-  if (type != UNSIGNED_BYTE && type != UNSIGNED_SHORT && type != UNSIGNED_INT && type != FLOAT && type != UNSIGNED_INT_24_8)
-    return s.SetError(INVALID_ENUM, __func__, "type must be UNSIGNED_BYTE, UNSIGNED_SHORT, UNSIGNED_INT, FLOAT or UNSIGNED_INT_24_8");
-  if ((format == DEPTH_STENCIL) != (type == UNSIGNED_INT_24_8)) return s.SetError(INVALID_OPERATION, __func__, "DEPTH_STENCIL goes with UNSIGNED_INT_24_8, and only it");
+  const char* why = "";
+  const Enum check = detail::CheckPixelTransfer(format, type, detail::TransferCall::kGetTexImage, why);
+  if (check == INVALID_ENUM) return s.SetError(check, __func__, why);
   if (level < 0 || level >= LevelCount(target)) return s.SetError(INVALID_VALUE, __func__, "level is negative or beyond the largest mipmap level");
+  if (check != NO_ERROR) return s.SetError(check, __func__, why);
   int face = 0;
   const detail::TextureObject* tex = s.Bound(target, &face);
   if (!tex) return s.SetError(INVALID_OPERATION, __func__, "no texture is bound to that target of the active unit");
   const detail::TextureLevel& lv = tex->levels[face][level];
   if (!lv.Defined()) return;  // an undefined level has no texels to return
   if (!NotNull(s, __func__, pixels, "pixels")) return;
-  if (detail::IsDepthFormat(lv.format) != l.depth) return s.SetError(INVALID_OPERATION, __func__, "DEPTH_COMPONENT for a colour texture, or the reverse");
-  if (l.stencil && lv.stencil.empty()) return s.SetError(INVALID_OPERATION, __func__, "DEPTH_STENCIL for a texture without stencil");
+  const bool depth = format == DEPTH_COMPONENT || format == DEPTH_STENCIL, stencil = format == DEPTH_STENCIL;
+  if (detail::IsDepthFormat(lv.format) != depth) return s.SetError(INVALID_OPERATION, __func__, "DEPTH_COMPONENT for a colour texture, or the reverse");
+  if (stencil && lv.stencil.empty()) return s.SetError(INVALID_OPERATION, __func__, "DEPTH_STENCIL for a texture without stencil");
   s.Sync(__func__);  // a texture being rendered into holds its texels once the recorded draws are rendered
   const bool layered = target == TEXTURE_2D_ARRAY || target == TEXTURE_3D;
-  const PackLayout pack = Pack(s, lv.width, lv.height, layered, l, type, pixels);
+  const PackLayout pack = Pack(s, lv.width, lv.height, layered, format, type, pixels);
   // A 2D array's layers or a 3D texture's slices one image after another (PACK_IMAGE_HEIGHT rows apart); the
   // level stores image k's row j as its row k * height + j.
   for (int j = 0; j < lv.height * lv.depth; ++j)
     for (int i = 0; i < lv.width; ++i) {
       const glm::vec4 c = lv.Texel(i, j);
       std::uint8_t* dst = pack.At(i, j % lv.height, j / lv.height);
-      if (l.stencil) {
-        const std::uint32_t word = std::uint32_t(ToUnsignedNormalized(c.r, 16777215.0)) << 8 |
-                                   lv.stencil[std::size_t(j) * std::size_t(lv.width) + std::size_t(i)];
-        std::memcpy(dst, &word, 4);
-      } else if (l.depth) {
-        PutComponent(type, double(c.r), false, dst);
-      } else {
-        for (int k = 0; k < l.count; ++k)
-          PutComponent(type, double(c[l.channels[k]]), false, dst + std::size_t(k) * pack.component);
-      }
+      if (stencil)
+        detail::PackDepthStencil(type, c.r, lv.stencil[std::size_t(j) * std::size_t(lv.width) + std::size_t(i)], dst);
+      else
+        detail::PackColor(depth ? DEPTH_COMPONENT : format, type, c, dst);
       pack.Swap(dst);
     }
 }

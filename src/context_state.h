@@ -49,6 +49,7 @@ struct AttribBinding {
   int size = 4;
   Enum type = FLOAT;
   bool normalized = false;
+  bool bgra = false;  // size BGRA (4 components, red and blue swapped)
   int stride = 0;
   std::uint32_t divisor = 0;  // VertexAttribDivisor
 };

@@ -2,6 +2,7 @@
 // parameters and pixel unpacking.
 #include "context_state.h"
 #include "image_io.h"
+#include "pixel_transfer.h"
 
 #include <cmath>
 
@@ -66,16 +67,12 @@ void Context::BindTexture(Enum target, std::uint32_t texture) {
 
 namespace {
 
-// TexImage2D's and TexSubImage2D's client data: RED, RG, RGB, RGBA or DEPTH_COMPONENT as UNSIGNED_BYTE,
-// UNSIGNED_SHORT (k / 65535), HALF_FLOAT or FLOAT,
-// or DEPTH_STENCIL as UNSIGNED_INT_24_8 or FLOAT_32_UNSIGNED_INT_24_8_REV. False with the error recorded otherwise.
+// The client data of TexImage* and TexSubImage*: OpenGL 3.3's formats and types (pixel_transfer.h), without
+// STENCIL_INDEX. False with the error recorded otherwise.
 bool CheckTransfer(ContextState& s, const char* what, Enum format, Enum type) {
-  const bool packed = type == UNSIGNED_INT_24_8 || type == FLOAT_32_UNSIGNED_INT_24_8_REV;
-  if (detail::TransferComponents(format) == 0 ||
-      (type != UNSIGNED_BYTE && type != UNSIGNED_SHORT && type != HALF_FLOAT && type != FLOAT && !packed))
-    return s.SetError(INVALID_ENUM, what, "format must be RED, RG, RGB, RGBA, DEPTH_COMPONENT or DEPTH_STENCIL and type UNSIGNED_BYTE, UNSIGNED_SHORT, HALF_FLOAT, FLOAT, UNSIGNED_INT_24_8 or FLOAT_32_UNSIGNED_INT_24_8_REV"), false;
-  if ((format == DEPTH_STENCIL) != packed)
-    return s.SetError(INVALID_OPERATION, what, "DEPTH_STENCIL data goes with UNSIGNED_INT_24_8 or FLOAT_32_UNSIGNED_INT_24_8_REV, and only it"), false;
+  const char* why = "";
+  const Enum error = detail::CheckPixelTransfer(format, type, detail::TransferCall::kUnpack, why);
+  if (error != NO_ERROR) return s.SetError(error, what, why), false;
   return true;
 }
 

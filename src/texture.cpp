@@ -8,6 +8,7 @@
 #include <new>
 
 #include "framebuffer.h"
+#include "pixel_transfer.h"
 
 namespace softgl::detail {
 
@@ -102,18 +103,6 @@ int BytesPerTexel(TexelLayout l) {
     case TexelLayout::kUnorm565:
     case TexelLayout::kUnorm4444:
     case TexelLayout::kUnorm5551: return 2;
-    default: return 0;
-  }
-}
-
-int TransferComponents(Enum format) {
-  switch (format) {
-    case RED:
-    case DEPTH_COMPONENT:
-    case DEPTH_STENCIL: return 1;
-    case RG: return 2;
-    case RGB: return 3;
-    case RGBA: return 4;
     default: return 0;
   }
 }
@@ -408,28 +397,21 @@ void StoreTexel(TextureLevel& level, int i, int j, const glm::vec4& in, bool enc
 }
 
 namespace {
-// The bytes of one client pixel of `format` and `type`.
-std::size_t TransferPixelBytes(Enum format, Enum type) {
-  if (format == DEPTH_STENCIL) return type == FLOAT_32_UNSIGNED_INT_24_8_REV ? 8 : 4;
-  return std::size_t(TransferComponents(format)) * (type == FLOAT ? 4 : type == UNSIGNED_BYTE ? 1 : 2);
-}
-// The bytes of one client row of w pixels, aligned.
+// The bytes of one client row of w pixels, aligned: when an element is smaller than the alignment, rows start at
+// multiples of it (OpenGL 3.3, section 3.7.4; with larger elements a row's length is already such a multiple).
 std::size_t TransferRowBytes(int w, Enum format, Enum type, int alignment) {
   const std::size_t row = std::size_t(w) * TransferPixelBytes(format, type);
   return (row + std::size_t(alignment) - 1) / std::size_t(alignment) * std::size_t(alignment);
 }
-}  // namespace
 
-namespace {
-// The bytes of one element of `type` in client memory (what UNPACK_SWAP_BYTES reverses): 1, 2 or 4.
-std::size_t ElementBytes(Enum type) {
-  return type == UNSIGNED_BYTE ? 1 : type == UNSIGNED_SHORT || type == HALF_FLOAT ? 2 : 4;
-}
+// The channels RED, RG, RGB and RGBA put first in a texel: the formats whose bytes copy straight into 8-bit
+// texels.
+bool InTexelOrder(Enum format) { return format == RED || format == RG || format == RGB || format == RGBA; }
 
 // Rect (x, y, w, h) of `level` from client rows `row` bytes apart, the first pixel at `first`.
 void UploadRect(TextureLevel& level, int x, int y, int w, int h, Enum format, Enum type, std::size_t row,
                 const std::uint8_t* first, bool swap_bytes) {
-  const std::size_t size = TransferPixelBytes(format, type), element = ElementBytes(type);
+  const std::size_t size = TransferPixelBytes(format, type), element = TransferElementBytes(type);
   std::uint8_t swapped[16];
   // The pixel at (i, j), its elements' bytes reversed when asked (into `swapped`).
   auto pixel = [&](int i, int j) -> const std::uint8_t* {
@@ -442,39 +424,27 @@ void UploadRect(TextureLevel& level, int x, int y, int w, int h, Enum format, En
   if (format == DEPTH_STENCIL) {  // one packed value a pixel: 4 bytes (24_8) or 8 (float, then 24_8 with stencil low)
     for (int j = 0; j < h; ++j)
       for (int i = 0; i < w; ++i) {
-        const std::uint8_t* p = pixel(i, j);
         float depth;
-        std::uint32_t word;
-        if (size == 8) {
-          std::memcpy(&depth, p, 4);
-          std::memcpy(&word, p + 4, 4);
-        } else {
-          std::memcpy(&word, p, 4);
-          depth = float(double(word >> 8) / 16777215.0);
-        }
+        std::uint8_t stencil;
+        UnpackDepthStencil(type, pixel(i, j), depth, stencil);
         StoreTexel(level, x + i, y + j, glm::vec4(std::isnan(depth) ? 0.0f : depth, 0.0f, 0.0f, 1.0f));
         if (!level.stencil.empty())
-          level.stencil[std::size_t(y + j) * std::size_t(level.width) + std::size_t(x + i)] = std::uint8_t(word);
+          level.stencil[std::size_t(y + j) * std::size_t(level.width) + std::size_t(x + i)] = stencil;
       }
     return;
   }
-  const int n = TransferComponents(format);
+  const int n = int(size);  // components, when they are bytes
+  const bool bytes_into_bytes = type == UNSIGNED_BYTE && IsUnorm8(level.layout) && InTexelOrder(format);
   for (int j = 0; j < h; ++j)
     for (int i = 0; i < w; ++i) {
       const std::uint8_t* p = pixel(i, j);
-      if (type == UNSIGNED_BYTE && IsUnorm8(level.layout)) {  // bytes into bytes: no conversion
+      if (bytes_into_bytes) {  // no conversion
         std::uint8_t* dst = level.At(x + i, y + j);
         for (int c = 0; c < level.bytes; ++c) dst[c] = c < n ? p[c] : (c == 3 ? 255 : 0);
         if (NoStoredAlpha(level.format)) dst[3] = 255;
         continue;
       }
-      glm::vec4 in(0.0f, 0.0f, 0.0f, 1.0f);
-      for (int c = 0; c < n; ++c) {
-        if (type == FLOAT) std::memcpy(&in[c], p + 4 * c, 4);
-        else if (type == UNSIGNED_SHORT) in[c] = float(Half(p + 2 * c)) / 65535.0f;
-        else if (type == HALF_FLOAT) in[c] = HalfToFloat(Half(p + 2 * c));
-        else in[c] = float(p[c]) / 255.0f;
-      }
+      glm::vec4 in = UnpackColor(format, type, p);
       for (int c = 0; c < 4; ++c)
         if (std::isnan(in[c])) in[c] = 0.0f;
       StoreTexel(level, x + i, y + j, in);

@@ -213,9 +213,6 @@ bool IsDepthFormat(Enum internal_format);
 /// DEPTH24_STENCIL8, DEPTH32F_STENCIL8, STENCIL_INDEX8.
 bool HasStencil(Enum internal_format);
 bool IsNormalizedFormat(Enum internal_format);  // fixed point: RGBA8, RGB8, RG8, R8, SRGB8_ALPHA8, SRGB8
-/// Channels of a pixel transfer format (RED 1, RG 2, RGB 3, RGBA 4, DEPTH_COMPONENT 1, DEPTH_STENCIL 1: one packed
-/// value), 0 if unknown.
-int TransferComponents(Enum format);
 
 /// Where client pixels lie in memory: OpenGL's PixelStore state for unpacking (UNPACK_*) or packing (PACK_*)
 /// (OpenGL 3.3, sections 3.7.4 and 4.3.2). Rows of row_length pixels (0: the rectangle's width) aligned to
@@ -228,9 +225,8 @@ struct ClientLayout {
   bool swap_bytes = false;
 };
 
-/// Converts client pixels (format, type UNSIGNED_BYTE, UNSIGNED_SHORT (k / 65535), HALF_FLOAT or FLOAT; or
-/// DEPTH_STENCIL with UNSIGNED_INT_24_8 or FLOAT_32_UNSIGNED_INT_24_8_REV), laid out as `layout` says, into the
-/// level's format, writing rect (x, y, w, h) of `level` (already allocated). Depth data leaves a level's stencil as
+/// Converts client pixels of a valid (format, type) (pixel_transfer.h says which and how), laid out as `layout`
+/// says, into the level's format, writing rect (x, y, w, h) of `level` (already allocated). Depth data leaves a level's stencil as
 /// it is; depth-stencil data into a depth format drops the stencil. Null pixels leave the level as it is.
 void UploadPixels(TextureLevel& level, int x, int y, int w, int h, Enum format, Enum type, const ClientLayout& layout,
                   const void* pixels);

@@ -3,8 +3,12 @@
 
 #include <algorithm>
 #include <bit>
+#include <cmath>
 #include <cstring>
 #include <limits>
+#include <utility>
+
+#include "texture.h"
 
 namespace softgl::detail {
 
@@ -14,11 +18,21 @@ std::size_t TypeSize(Enum type) {
     case UNSIGNED_BYTE: return 1;
     case SHORT:
     case UNSIGNED_SHORT: return 2;
+    case HALF_FLOAT: return 2;
     case INT:
     case UNSIGNED_INT:
-    case FLOAT: return 4;
+    case FLOAT:
+    case INT_2_10_10_10_REV:
+    case UNSIGNED_INT_2_10_10_10_REV: return 4;
+    case DOUBLE: return 8;
     default: return 0;
   }
+}
+
+bool IsPackedAttribType(Enum type) { return type == INT_2_10_10_10_REV || type == UNSIGNED_INT_2_10_10_10_REV; }
+
+std::size_t AttributeBytes(Enum type, int components) {
+  return IsPackedAttribType(type) ? 4 : TypeSize(type) * std::size_t(components);
 }
 
 namespace {
@@ -30,11 +44,23 @@ T Load(const std::uint8_t* p) {
   return v;
 }
 
+// A double as the nearest float (to nearest, ties to even): beyond the largest float by half a unit or more it is
+// infinity (a plain conversion of such a value is undefined in C++).
+float DoubleToFloat(double d) {
+  const double largest = double(std::numeric_limits<float>::max());
+  if (!(std::abs(d) > largest)) return float(d);  // (NaN too)
+  const bool rounds_down = std::abs(d) < largest + std::ldexp(1.0, 103);  // half a unit at 2^127 is 2^103
+  const float to = rounds_down ? std::numeric_limits<float>::max() : std::numeric_limits<float>::infinity();
+  return d < 0.0 ? -to : to;
+}
+
 // OpenGL 4.2+ conversions (section 2.3.5.1 of the 4.6 specification): unsigned c / (2^b - 1);
-// signed max(c / (2^(b-1) - 1), -1).
+// signed max(c / (2^(b-1) - 1), -1). `normalized` does not apply to the float types.
 float Component(Enum type, bool normalized, const std::uint8_t* p) {
   switch (type) {
     case FLOAT: return Load<float>(p);
+    case HALF_FLOAT: return HalfToFloat(Load<std::uint16_t>(p));
+    case DOUBLE: return DoubleToFloat(Load<double>(p));
     case UNSIGNED_BYTE: {
       const float c = Load<std::uint8_t>(p);
       return normalized ? c / 255.0f : c;
@@ -63,6 +89,23 @@ float Component(Enum type, bool normalized, const std::uint8_t* p) {
   }
 }
 
+// INT_2_10_10_10_REV or UNSIGNED_INT_2_10_10_10_REV: x in bits 0-9, y 10-19, z 20-29, w 30-31 (OpenGL 3.3, section
+// 2.8, table 2.5), signed fields two's complement, converted as Component converts.
+glm::vec4 Packed2101010(Enum type, bool normalized, std::uint32_t word) {
+  glm::vec4 v;
+  for (int k = 0; k < 4; ++k) {
+    const int bits = k == 3 ? 2 : 10;
+    const std::uint32_t field = (word >> (10 * k)) & ((1u << bits) - 1u);
+    if (type == INT_2_10_10_10_REV) {
+      const int c = int(field) - (field >> (bits - 1) ? 1 << bits : 0);  // two's complement of `bits` bits
+      v[k] = normalized ? std::max(float(c) / float((1 << (bits - 1)) - 1), -1.0f) : float(c);
+    } else {
+      v[k] = normalized ? float(field) / float((1u << bits) - 1u) : float(field);
+    }
+  }
+  return v;
+}
+
 }  // namespace
 
 namespace {
@@ -77,7 +120,7 @@ struct Resolved {
 };
 Resolved Resolve(const AttribSource& src) {
   Resolved r;
-  const std::size_t csize = TypeSize(src.type), bytes = csize * std::size_t(src.components);
+  const std::size_t csize = TypeSize(src.type), bytes = AttributeBytes(src.type, src.components);
   r.csize = csize;
   // Overflow-safe bounds: start = offset + stride * index, end = start + bytes <= size.
   if (src.data == nullptr || src.offset > src.size) return r;
@@ -102,7 +145,10 @@ glm::vec4 Read(const AttribSource& src, const Resolved& r, std::uint32_t index) 
     }
     return v;
   }
-  for (int c = 0; c < src.components; ++c) v[c] = Component(src.type, src.normalized, p + r.csize * c);
+  if (IsPackedAttribType(src.type)) v = Packed2101010(src.type, src.normalized, Load<std::uint32_t>(p));
+  else
+    for (int c = 0; c < src.components; ++c) v[c] = Component(src.type, src.normalized, p + r.csize * c);
+  if (src.bgra) std::swap(v.x, v.z);  // size BGRA: the element holds blue, green, red, alpha
   return v;
 }
 

@@ -20,6 +20,7 @@ struct AttribSource {
   int components = 4;                  // 1..4
   Enum type = FLOAT;
   bool normalized = false;
+  bool bgra = false;                   // size BGRA: red and blue swapped (4 components)
   std::uint32_t divisor = 0;           // VertexAttribDivisor: 0 reads per vertex, d > 0 element instance / d
 };
 
@@ -32,8 +33,15 @@ struct FetchPlan {
   }
 };
 
-/// Size in bytes of one component of an attribute or index type; 0 for an unknown type.
+/// Size in bytes of one component of an attribute or index type (BYTE ... DOUBLE; the packed 2_10_10_10 types 4,
+/// their whole element); 0 for an unknown type.
 std::size_t TypeSize(Enum type);
+
+/// INT_2_10_10_10_REV and UNSIGNED_INT_2_10_10_10_REV: four components in one 32-bit element.
+bool IsPackedAttribType(Enum type);
+
+/// Bytes of one attribute element of `components` components of `type` (a packed type's 4 whatever the count).
+std::size_t AttributeBytes(Enum type, int components);
 
 /// Reads attribute `src` of vertex `index` (an enabled attribute). Missing components come from (0, 0, 0, 1); an
 /// element that lies (even partly) outside the buffer reads as (0, 0, 0, 1).

@@ -1152,12 +1152,12 @@ TEST_CASE("ReadPixels with a format and type: layouts, conversions, rectangles p
     std::uint8_t out[64];
     gl.ReadPixels(0, 0, 1, 1, RGBA + 100, UNSIGNED_BYTE, out);
     CHECK(gl.GetError() == INVALID_ENUM);
-    gl.ReadPixels(0, 0, 1, 1, RGBA, BYTE, out);
+    gl.ReadPixels(0, 0, 1, 1, RGBA, UNSIGNED_INT_24_8 + 100, out);
     CHECK(gl.GetError() == INVALID_ENUM);
     gl.ReadPixels(0, 0, -1, 1, RGBA, UNSIGNED_BYTE, out);
     CHECK(gl.GetError() == INVALID_VALUE);
     gl.ReadPixels(0, 0, 1, 1, DEPTH_STENCIL, FLOAT, out);
-    CHECK(gl.GetError() == INVALID_OPERATION);
+    CHECK(gl.GetError() == INVALID_ENUM);  // OpenGL 3.3, section 4.3.1
     gl.ReadPixels(0, 0, 1, 1, RGBA, UNSIGNED_INT_24_8, out);
     CHECK(gl.GetError() == INVALID_OPERATION);
     gl.PixelStore(PACK_ALIGNMENT, 3);
@@ -2015,4 +2015,57 @@ TEST_CASE("hostile calls: OpenGL 3.3's codes for 3D levels and empty default fra
     empty.ReadPixels(0, 0, 1, 1, RGBA, UNSIGNED_BYTE, rgba);
     CHECK(empty.GetError() == INVALID_OPERATION);
   }
+}
+
+TEST_CASE("hostile calls: VertexAttributePointer takes half floats, doubles, the packed types and BGRA as OpenGL 3.3 does",
+          "[context][errors][hostile]") {
+  // OpenGL 3.3, section 2.8: HALF_FLOAT, DOUBLE, INT_2_10_10_10_REV and UNSIGNED_INT_2_10_10_10_REV are attribute
+  // types; the packed ones need size 4 or BGRA, and BGRA needs UNSIGNED_BYTE or a packed type, normalized.
+  Context gl(8, 8);
+  gl.BindVertexArray(gl.GenVertexArray());
+  gl.BindBuffer(ARRAY_BUFFER, gl.GenBuffer());
+  for (Enum type : {HALF_FLOAT, DOUBLE}) {
+    gl.VertexAttributePointer(0, 3, type, false, 0, 0);
+    CHECK(gl.GetError() == NO_ERROR);
+  }
+  for (Enum type : {INT_2_10_10_10_REV, UNSIGNED_INT_2_10_10_10_REV}) {
+    gl.VertexAttributePointer(0, 4, type, true, 0, 0);
+    CHECK(gl.GetError() == NO_ERROR);
+    gl.VertexAttributePointer(0, int(BGRA), type, true, 0, 0);
+    CHECK(gl.GetError() == NO_ERROR);
+    gl.VertexAttributePointer(0, 3, type, true, 0, 0);
+    CHECK(gl.GetError() == INVALID_OPERATION);
+  }
+  gl.VertexAttributePointer(0, int(BGRA), UNSIGNED_BYTE, true, 0, 0);
+  CHECK(gl.GetError() == NO_ERROR);
+  gl.VertexAttributePointer(0, int(BGRA), UNSIGNED_BYTE, false, 0, 0);
+  CHECK(gl.GetError() == INVALID_OPERATION);
+  gl.VertexAttributePointer(0, int(BGRA), FLOAT, true, 0, 0);
+  CHECK(gl.GetError() == INVALID_OPERATION);
+  gl.VertexAttributePointer(0, int(BGR), UNSIGNED_BYTE, true, 0, 0);
+  CHECK(gl.GetError() == INVALID_VALUE);
+
+  // A draw: half-float positions and BGRA byte colours, tightly packed (stride 0 is 6 and 4 bytes).
+  const std::uint16_t positions[] = {0xBC00, 0xBC00, 0, 0x4200, 0xBC00, 0, 0xBC00, 0x4200, 0};  // -1 and 3
+  const std::uint8_t colours[] = {255, 128, 0, 255, 255, 128, 0, 255, 255, 128, 0, 255};        // blue 1, red 0
+  const std::uint32_t vbo = gl.GenBuffer();
+  gl.BindBuffer(ARRAY_BUFFER, vbo);
+  gl.BufferData(ARRAY_BUFFER, sizeof positions + sizeof colours, nullptr);
+  gl.BufferSubData(ARRAY_BUFFER, 0, sizeof positions, positions);
+  gl.BufferSubData(ARRAY_BUFFER, sizeof positions, sizeof colours, colours);
+  gl.VertexAttributePointer(0, 3, HALF_FLOAT, false, 0, 0);
+  gl.VertexAttributePointer(1, int(BGRA), UNSIGNED_BYTE, true, 0, sizeof positions);
+  gl.EnableVertexAttribArray(0);
+  gl.EnableVertexAttribArray(1);
+  testing::CaptureShader shader;
+  gl.UseProgram(shader);
+  gl.DrawArrays(TRIANGLES, 0, 3);
+  gl.Finish();
+  CHECK(shader.samples.size() == 64);  // the triangle covers the whole 8 x 8 viewport
+  const glm::vec4 value = shader.samples[{3, 4}].value;
+  CHECK(value.r == Approx(0.0f).margin(1e-6));
+  CHECK(value.g == Approx(128.0f / 255.0f));
+  CHECK(value.b == Approx(1.0f));
+  CHECK(value.a == Approx(1.0f));
+  CHECK(gl.GetError() == NO_ERROR);
 }

@@ -262,7 +262,7 @@ TEST_CASE("the stencil test works in framebuffer objects: renderbuffers and dept
   CHECK((back[0] & 0xFF) == 9u);
   CHECK(gl.GetError() == NO_ERROR);
   gl.TexImage2D(TEXTURE_2D, 0, DEPTH24_STENCIL8, 1, 1, 0, DEPTH_STENCIL, FLOAT, nullptr);
-  CHECK(gl.GetError() == INVALID_OPERATION);  // DEPTH_STENCIL takes the packed types only
+  CHECK(gl.GetError() == INVALID_ENUM);  // DEPTH_STENCIL takes the packed types only (OpenGL 3.3, section 4.3.1)
   gl.TexImage2D(TEXTURE_2D, 0, RGBA8, 1, 1, 0, RGBA, UNSIGNED_INT_24_8, nullptr);
   CHECK(gl.GetError() == INVALID_OPERATION);
   gl.TexImage2D(TEXTURE_2D, 0, RGBA8, 1, 1, 0, DEPTH_STENCIL, UNSIGNED_INT_24_8, nullptr);

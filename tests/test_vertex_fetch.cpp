@@ -2,7 +2,9 @@
 #include <catch2/catch.hpp>
 
 #include <atomic>
+#include <cmath>
 #include <cstring>
+#include <limits>
 #include <vector>
 
 #include "helpers.h"
@@ -67,6 +69,67 @@ TEST_CASE("vertex fetch converts every type as OpenGL does", "[vertex_fetch]") {
     CHECK(v.y == Approx(row.expect1));
     CHECK(v.z == 0.0f);  // missing components come from (0, 0, 0, 1)
     CHECK(v.w == 1.0f);
+  }
+}
+
+TEST_CASE("vertex fetch reads half floats, doubles, the packed 2_10_10_10 types and BGRA order", "[vertex_fetch]") {
+  SECTION("HALF_FLOAT: IEEE binary16, `normalized` ignored") {
+    // 1.5, -2, 65504 (the largest half), infinity
+    const std::vector<std::uint16_t> halves = {0x3E00, 0xC000, 0x7BFF, 0x7C00};
+    for (bool normalized : {false, true}) {
+      const glm::vec4 v = FetchAttribute(Source(halves, 4, HALF_FLOAT, normalized), 0);
+      CHECK(v == glm::vec4(1.5f, -2.0f, 65504.0f, std::numeric_limits<float>::infinity()));
+    }
+  }
+  SECTION("DOUBLE: the nearest float; beyond the largest float by half a unit, infinity") {
+    const double largest = double(std::numeric_limits<float>::max());
+    const std::vector<double> d = {0.1, -1e300, largest + std::ldexp(1.0, 102), largest + std::ldexp(1.0, 103)};
+    const glm::vec4 v = FetchAttribute(Source(d, 4, DOUBLE, false), 0);
+    CHECK(v.x == 0.1f);
+    CHECK(v.y == -std::numeric_limits<float>::infinity());
+    CHECK(v.z == std::numeric_limits<float>::max());       // rounds down to the largest float
+    CHECK(v.w == std::numeric_limits<float>::infinity());  // the tie goes to even: infinity
+    const std::vector<double> nan = {std::nan("")};
+    CHECK(std::isnan(FetchAttribute(Source(nan, 1, DOUBLE, false), 0).x));
+  }
+  // x = 1, y = 511, z = -512 (0x200 as signed 10 bits), w = 3 (-1 as signed 2 bits)
+  const std::vector<std::uint32_t> word = {1u | 511u << 10 | 0x200u << 20 | 3u << 30};
+  auto packed = [&](Enum type, bool normalized, bool bgra) {
+    AttribSource s = Source(word, 4, type, normalized);
+    s.stride = 4;
+    s.bgra = bgra;
+    return FetchAttribute(s, 0);
+  };
+  SECTION("UNSIGNED_INT_2_10_10_10_REV: x in the low 10 bits ... w in the top 2") {
+    CHECK(packed(UNSIGNED_INT_2_10_10_10_REV, false, false) == glm::vec4(1.0f, 511.0f, 512.0f, 3.0f));
+    const glm::vec4 n = packed(UNSIGNED_INT_2_10_10_10_REV, true, false);
+    CHECK(n.x == 1.0f / 1023.0f);
+    CHECK(n.y == 511.0f / 1023.0f);
+    CHECK(n.z == 512.0f / 1023.0f);
+    CHECK(n.w == 1.0f);
+  }
+  SECTION("INT_2_10_10_10_REV: two's complement fields, normalized as max(c / (2^(b-1) - 1), -1)") {
+    CHECK(packed(INT_2_10_10_10_REV, false, false) == glm::vec4(1.0f, 511.0f, -512.0f, -1.0f));
+    const glm::vec4 n = packed(INT_2_10_10_10_REV, true, false);
+    CHECK(n.x == 1.0f / 511.0f);
+    CHECK(n.y == 1.0f);
+    CHECK(n.z == -1.0f);  // -512 / 511 clamps
+    CHECK(n.w == -1.0f);
+  }
+  SECTION("size BGRA: the element's first component is blue") {
+    CHECK(packed(INT_2_10_10_10_REV, false, true) == glm::vec4(-512.0f, 511.0f, 1.0f, -1.0f));
+    const std::vector<std::uint8_t> bytes = {10, 20, 30, 40};
+    AttribSource s = Source(bytes, 4, UNSIGNED_BYTE, true);
+    s.bgra = true;
+    CHECK(FetchAttribute(s, 0) == glm::vec4(30.0f, 20.0f, 10.0f, 40.0f) / 255.0f);
+  }
+  SECTION("an element of a packed type is 4 bytes, whatever the component count") {
+    CHECK(detail::AttributeBytes(INT_2_10_10_10_REV, 4) == 4);
+    CHECK(detail::AttributeBytes(DOUBLE, 3) == 24);
+    CHECK(detail::AttributeBytes(HALF_FLOAT, 3) == 6);
+    AttribSource s = Source(word, 4, UNSIGNED_INT_2_10_10_10_REV, false);
+    s.stride = 4;
+    CHECK(FetchAttribute(s, 1) == glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));  // element 1 is past the 4-byte buffer
   }
 }
 

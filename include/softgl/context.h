@@ -160,11 +160,14 @@ class Context {
   /// Binds a vertex array (0: none, as in an OpenGL core profile). Unknown id: INVALID_OPERATION.
   void BindVertexArray(std::uint32_t array);
   /// Sets attribute `index` of the bound vertex array to read `size` (1-4) components of `type` (BYTE,
-  /// UNSIGNED_BYTE, SHORT, UNSIGNED_SHORT, INT, UNSIGNED_INT, FLOAT) from the buffer now bound to ARRAY_BUFFER,
+  /// UNSIGNED_BYTE, SHORT, UNSIGNED_SHORT, INT, UNSIGNED_INT, HALF_FLOAT, FLOAT, DOUBLE, or the packed
+  /// INT_2_10_10_10_REV and UNSIGNED_INT_2_10_10_10_REV with size 4) from the buffer now bound to ARRAY_BUFFER,
   /// starting at byte `offset`, every `stride` bytes (0 means tightly packed). Integer types are converted to
-  /// float; with `normalized` they map to [0, 1] (unsigned) or [-1, 1] (signed, max(c / (2^(b-1) - 1), -1)).
-  /// index >= kMaxVertexAttribs, size outside 1-4 or stride < 0: INVALID_VALUE; bad type: INVALID_ENUM;
-  /// no vertex array bound, or no ARRAY_BUFFER bound with offset != 0: INVALID_OPERATION.
+  /// float; with `normalized` they map to [0, 1] (unsigned) or [-1, 1] (signed, max(c / (2^(b-1) - 1), -1));
+  /// doubles become the nearest float. Size BGRA reads four normalized components of UNSIGNED_BYTE or a packed
+  /// type stored blue first, as red, green, blue, alpha. index >= kMaxVertexAttribs, size neither 1-4 nor BGRA,
+  /// or stride < 0: INVALID_VALUE; bad type: INVALID_ENUM; a packed type with size 1-3, BGRA with another type or
+  /// not normalized, no vertex array bound, or no ARRAY_BUFFER bound with offset != 0: INVALID_OPERATION.
   void VertexAttributePointer(std::uint32_t index, int size, Enum type, bool normalized, int stride,
                               std::size_t offset);
   void EnableVertexAttribArray(std::uint32_t index);
@@ -208,13 +211,17 @@ class Context {
   /// RG32F, R32F, RGBA16F, RG16F, R16F, R11F_G11F_B10F, DEPTH_COMPONENT16 (2 bytes a texel, k / 65535),
   /// DEPTH_COMPONENT (also DEPTH_COMPONENT24/32F: stored as float), DEPTH24_STENCIL8 or DEPTH32F_STENCIL8 (depth,
   /// sampled as a depth texture, and a stencil index each);
-  /// pixels of `format` RED, RG, RGB, RGBA or DEPTH_COMPONENT and `type` UNSIGNED_BYTE, UNSIGNED_SHORT (k / 65535),
-  /// HALF_FLOAT (IEEE binary16) or FLOAT, or DEPTH_STENCIL
-  /// with UNSIGNED_INT_24_8 or FLOAT_32_UNSIGNED_INT_24_8_REV, rows bottom first, each row aligned to
-  /// UNPACK_ALIGNMENT; null pixels leave the level zero. Errors: bad target, format or type: INVALID_ENUM;
-  /// unsupported internal format, negative or too large size, level out of range, border != 0, a non-square cube
-  /// face: INVALID_VALUE; depth data for a colour format or the reverse, DEPTH_STENCIL with another type or the
-  /// reverse, nothing bound: INVALID_OPERATION; no memory: OUT_OF_MEMORY.
+  /// pixels of any of OpenGL 3.3's formats and types (tables 3.2 to 3.5): `format` RED, GREEN, BLUE, RG, RGB, BGR,
+  /// RGBA, BGRA or DEPTH_COMPONENT with `type` UNSIGNED_BYTE, BYTE, UNSIGNED_SHORT, SHORT, UNSIGNED_INT, INT
+  /// (normalized: unsigned c / (2^b - 1), signed max(c / (2^(b-1) - 1), -1)), HALF_FLOAT (IEEE binary16) or FLOAT,
+  /// or with a packed type of its component count (UNSIGNED_SHORT_5_6_5, UNSIGNED_INT_2_10_10_10_REV, ...,
+  /// UNSIGNED_INT_10F_11F_11F_REV, UNSIGNED_INT_5_9_9_9_REV: see enums.h); DEPTH_STENCIL with UNSIGNED_INT_24_8
+  /// or FLOAT_32_UNSIGNED_INT_24_8_REV. Rows bottom first, laid out by the UNPACK_ settings (PixelStore); null
+  /// pixels leave the level zero. Errors: bad target, format or type, DEPTH_STENCIL with another type:
+  /// INVALID_ENUM; unsupported internal format, negative or too large size, level out of range, border != 0, a
+  /// non-square cube face: INVALID_VALUE; depth data for a colour format or the reverse, a packed type with a format
+  /// of another component count, an integer format (RED_INTEGER ...: softgl has no integer textures), nothing
+  /// bound: INVALID_OPERATION; no memory: OUT_OF_MEMORY.
   void TexImage2D(Enum target, int level, Enum internal_format, int width, int height, int border, Enum format,
                   Enum type, const void* pixels);
   /// Replaces the rectangle (x, y, width, height) of a defined level. Outside the level: INVALID_VALUE; level not
@@ -265,11 +272,12 @@ class Context {
   void CopyTexImage2D(Enum target, int level, Enum internal_format, int x, int y, int width, int height, int border);
   /// Writes level `level` of the bound texture (TEXTURE_2D, a cube face, TEXTURE_2D_ARRAY or TEXTURE_3D) to
   /// `pixels`, rows bottom first, laid out by the PACK_ settings as ReadPixels lays them out (an array's layers or
-  /// a 3D texture's slices one image after another, each `height` rows): format a colour format (RED ... BGRA) or DEPTH_COMPONENT
-  /// for a depth texture; type UNSIGNED_BYTE, UNSIGNED_SHORT, UNSIGNED_INT (normalized) or FLOAT; or DEPTH_STENCIL
-  /// with UNSIGNED_INT_24_8 for a depth-stencil texture. An undefined level writes nothing. Errors: bad target,
-  /// format or type: INVALID_ENUM; level out of range: INVALID_VALUE; nothing bound, DEPTH_COMPONENT for a colour
-  /// texture or the reverse, DEPTH_STENCIL for a texture without stencil or with another type: INVALID_OPERATION.
+  /// a 3D texture's slices one image after another, each `height` rows): the formats and types ReadPixels takes,
+  /// but not STENCIL_INDEX; DEPTH_COMPONENT for a depth texture, DEPTH_STENCIL for a depth-stencil one. An
+  /// undefined level writes nothing. Errors: bad target, format or type, DEPTH_STENCIL with another type:
+  /// INVALID_ENUM; level out of range: INVALID_VALUE; nothing bound, DEPTH_COMPONENT for a colour texture or the
+  /// reverse, DEPTH_STENCIL for a texture without stencil, a mismatched packed type or an integer format:
+  /// INVALID_OPERATION.
   void GetTexImage(Enum target, int level, Enum format, Enum type, void* pixels) const;
   /// Builds levels base+1 .. 1x1 of the bound texture from its base level (each texel the bilinear sample of the
   /// level above at its centre: the 2x2 average for even sizes; a 2D array layer by layer, a 3D texture down to
@@ -633,12 +641,15 @@ class Context {
   /// glReadPixels: the rectangle (x, y, width, height) of the read framebuffer (y from the bottom, rows bottom
   /// first) into `pixels`, laid out by PACK_ALIGNMENT, PACK_ROW_LENGTH, PACK_SKIP_ROWS and PACK_SKIP_PIXELS
   /// (PixelStore). format: RED, GREEN, BLUE, RG, RGB, BGR, RGBA, BGRA (from the read buffer), DEPTH_COMPONENT,
-  /// STENCIL_INDEX, DEPTH_STENCIL; type: UNSIGNED_BYTE, UNSIGNED_SHORT, UNSIGNED_INT (normalized:
-  /// round(clamp(v) * (2^N - 1)); stencil indices as they are), FLOAT (as stored), or UNSIGNED_INT_24_8 with
-  /// DEPTH_STENCIL (depth in the high 24 bits, stencil in the low 8). Pixels of the rectangle outside the
-  /// framebuffer are not written. Errors: bad format or type: INVALID_ENUM; negative size:
-  /// INVALID_VALUE; DEPTH_STENCIL without UNSIGNED_INT_24_8 or the reverse, no buffer of the kind asked:
-  /// INVALID_OPERATION; incomplete read framebuffer: INVALID_FRAMEBUFFER_OPERATION.
+  /// STENCIL_INDEX, DEPTH_STENCIL; type: every type of OpenGL 3.3 (as TexImage2D lists them): UNSIGNED_BYTE,
+  /// UNSIGNED_SHORT, UNSIGNED_INT (round(clamp(v, 0, 1) * (2^b - 1))), BYTE, SHORT, INT (round(clamp(v, -1, 1) *
+  /// (2^(b-1) - 1))), HALF_FLOAT and FLOAT (as stored), the packed types (each field as the unsigned ones; the
+  /// two packed float types encoded), stencil indices masked to the type's bits; DEPTH_STENCIL with
+  /// UNSIGNED_INT_24_8 (depth in the high 24 bits, stencil in the low 8) or FLOAT_32_UNSIGNED_INT_24_8_REV.
+  /// Pixels of the rectangle outside the framebuffer are not written. Errors: bad format or type, DEPTH_STENCIL
+  /// with another type: INVALID_ENUM; negative size: INVALID_VALUE; a packed type with another format, an integer
+  /// format, no buffer of the kind asked: INVALID_OPERATION; incomplete read framebuffer:
+  /// INVALID_FRAMEBUFFER_OPERATION.
   void ReadPixels(int x, int y, int width, int height, Enum format, Enum type, void* pixels) const;
   /// The colour buffer, top row first (ready for WritePng).
   Image ReadPixels() const;

@@ -65,6 +65,10 @@ inline constexpr Enum HALF_FLOAT = 0x140B;
 inline constexpr Enum INT = 0x1404;
 inline constexpr Enum UNSIGNED_INT = 0x1405;
 inline constexpr Enum FLOAT = 0x1406;
+inline constexpr Enum DOUBLE = 0x140A;  // vertex attributes only (converted to float when fetched)
+// Packed vertex attribute types: four components in 32 bits (x in the low 10 bits, then y, z, and w in the top 2).
+inline constexpr Enum INT_2_10_10_10_REV = 0x8D9F;
+inline constexpr Enum UNSIGNED_INT_2_10_10_10_REV = 0x8368;  // also a packed pixel type (below)
 
 // Primitive modes.
 inline constexpr Enum POINTS = 0x0000;
@@ -218,6 +222,33 @@ inline constexpr Enum STENCIL_INDEX1 = 0x8D46;
 inline constexpr Enum STENCIL_INDEX4 = 0x8D47;
 inline constexpr Enum STENCIL_INDEX16 = 0x8D49;
 inline constexpr Enum FLOAT_32_UNSIGNED_INT_24_8_REV = 0x8DAD;  // DEPTH_STENCIL pixels: a float, then stencil low
+// Integer pixel formats. OpenGL 3.3 accepts them as names; softgl has no integer textures or colour buffers yet, so a
+// transfer with one is answered INVALID_OPERATION, as OpenGL answers one between integer and non-integer data.
+inline constexpr Enum RED_INTEGER = 0x8D94;
+inline constexpr Enum GREEN_INTEGER = 0x8D95;
+inline constexpr Enum BLUE_INTEGER = 0x8D96;
+inline constexpr Enum RG_INTEGER = 0x8228;
+inline constexpr Enum RGB_INTEGER = 0x8D98;
+inline constexpr Enum RGBA_INTEGER = 0x8D99;
+inline constexpr Enum BGR_INTEGER = 0x8D9A;
+inline constexpr Enum BGRA_INTEGER = 0x8D9B;
+// Packed pixel types (OpenGL 3.3, table 3.5): all of a pixel's components in one 8-, 16- or 32-bit value, the first
+// component in the highest bits, or with _REV in the lowest. 3_3_2 and 5_6_5 hold RGB; the others RGBA or BGRA;
+// UNSIGNED_INT_10F_11F_11F_REV (unsigned small floats) and UNSIGNED_INT_5_9_9_9_REV (three 9-bit mantissas sharing
+// a 5-bit exponent) hold RGB.
+inline constexpr Enum UNSIGNED_BYTE_3_3_2 = 0x8032;
+inline constexpr Enum UNSIGNED_BYTE_2_3_3_REV = 0x8362;
+inline constexpr Enum UNSIGNED_SHORT_5_6_5 = 0x8363;
+inline constexpr Enum UNSIGNED_SHORT_5_6_5_REV = 0x8364;
+inline constexpr Enum UNSIGNED_SHORT_4_4_4_4 = 0x8033;
+inline constexpr Enum UNSIGNED_SHORT_4_4_4_4_REV = 0x8365;
+inline constexpr Enum UNSIGNED_SHORT_5_5_5_1 = 0x8034;
+inline constexpr Enum UNSIGNED_SHORT_1_5_5_5_REV = 0x8366;
+inline constexpr Enum UNSIGNED_INT_8_8_8_8 = 0x8035;
+inline constexpr Enum UNSIGNED_INT_8_8_8_8_REV = 0x8367;
+inline constexpr Enum UNSIGNED_INT_10_10_10_2 = 0x8036;
+inline constexpr Enum UNSIGNED_INT_10F_11F_11F_REV = 0x8C3B;
+inline constexpr Enum UNSIGNED_INT_5_9_9_9_REV = 0x8C3E;
 
 // Texture parameters and their values.
 inline constexpr Enum TEXTURE_MAG_FILTER = 0x2800;

@@ -49,7 +49,8 @@ constexpr std::uint32_t kCaps[] = {CULL_FACE, DEPTH_TEST, STENCIL_TEST, SCISSOR_
                                    SAMPLE_ALPHA_TO_COVERAGE, SAMPLE_ALPHA_TO_ONE, SAMPLE_COVERAGE, SAMPLE_MASK,
                                    SAMPLE_SHADING};
 constexpr std::uint32_t kModes[] = {POINTS, LINES, LINE_LOOP, LINE_STRIP, TRIANGLES, TRIANGLE_STRIP, TRIANGLE_FAN};
-constexpr std::uint32_t kTypes[] = {BYTE, UNSIGNED_BYTE, SHORT, UNSIGNED_SHORT, INT, UNSIGNED_INT, FLOAT};
+constexpr std::uint32_t kTypes[] = {BYTE, UNSIGNED_BYTE, SHORT, UNSIGNED_SHORT, INT, UNSIGNED_INT, FLOAT, HALF_FLOAT,
+                                    DOUBLE, INT_2_10_10_10_REV, UNSIGNED_INT_2_10_10_10_REV};
 constexpr std::uint32_t kIndexTypes[] = {UNSIGNED_BYTE, UNSIGNED_SHORT, UNSIGNED_INT};
 constexpr std::uint32_t kBufferTargets[] = {ARRAY_BUFFER, ELEMENT_ARRAY_BUFFER, COPY_READ_BUFFER, COPY_WRITE_BUFFER};
 constexpr std::uint32_t kTexTargets[] = {TEXTURE_2D, TEXTURE_CUBE_MAP, TEXTURE_2D_ARRAY, TEXTURE_3D,
@@ -61,9 +62,40 @@ constexpr std::uint32_t kImageTargets[] = {TEXTURE_2D,
                                            TEXTURE_2D_MULTISAMPLE};
 constexpr std::uint32_t kInternal[] = {RGBA8, RGB8, RG8, R8, RGBA32F, R32F, DEPTH_COMPONENT, DEPTH24_STENCIL8,
                                        DEPTH32F_STENCIL8, RGBA16, R16, RGBA16F, DEPTH_COMPONENT16};
-constexpr std::uint32_t kFormats[] = {RED, RG, RGB, RGBA, DEPTH_COMPONENT, DEPTH_STENCIL};
-constexpr std::uint32_t kPixelTypes[] = {UNSIGNED_BYTE, FLOAT, UNSIGNED_INT_24_8, FLOAT_32_UNSIGNED_INT_24_8_REV,
-                                         UNSIGNED_SHORT, HALF_FLOAT};
+// Every pixel format and type of OpenGL 3.3 (tables 3.2 to 3.5), and one of neither: a pixel is 16 bytes at most.
+constexpr std::uint32_t kFormats[] = {RED, GREEN, BLUE, RG, RGB, BGR, RGBA, BGRA, DEPTH_COMPONENT, DEPTH_STENCIL,
+                                      STENCIL_INDEX, RED_INTEGER, RGB_INTEGER, BGRA_INTEGER, RG_INTEGER, 0x1909};
+constexpr std::uint32_t kPixelTypes[] = {UNSIGNED_BYTE, BYTE, UNSIGNED_SHORT, SHORT, UNSIGNED_INT, INT, HALF_FLOAT,
+                                         FLOAT, UNSIGNED_BYTE_3_3_2, UNSIGNED_BYTE_2_3_3_REV, UNSIGNED_SHORT_5_6_5,
+                                         UNSIGNED_SHORT_5_6_5_REV, UNSIGNED_SHORT_4_4_4_4, UNSIGNED_SHORT_4_4_4_4_REV,
+                                         UNSIGNED_SHORT_5_5_5_1, UNSIGNED_SHORT_1_5_5_5_REV, UNSIGNED_INT_8_8_8_8,
+                                         UNSIGNED_INT_8_8_8_8_REV, UNSIGNED_INT_10_10_10_2,
+                                         UNSIGNED_INT_2_10_10_10_REV, UNSIGNED_INT_10F_11F_11F_REV,
+                                         UNSIGNED_INT_5_9_9_9_REV, UNSIGNED_INT_24_8, FLOAT_32_UNSIGNED_INT_24_8_REV,
+                                         DOUBLE};
+
+// The bytes of one element of a pixel type (what PACK_ALIGNMENT compares with) and of one pixel, as OpenGL 3.3's
+// tables give them (a packed type: one element a pixel; 0 for a pair no call accepts is never needed).
+std::size_t ElementBytes(std::uint32_t type) {
+  switch (type) {
+    case UNSIGNED_BYTE: case BYTE: case UNSIGNED_BYTE_3_3_2: case UNSIGNED_BYTE_2_3_3_REV: return 1;
+    case UNSIGNED_SHORT: case SHORT: case HALF_FLOAT: case UNSIGNED_SHORT_5_6_5: case UNSIGNED_SHORT_5_6_5_REV:
+    case UNSIGNED_SHORT_4_4_4_4: case UNSIGNED_SHORT_4_4_4_4_REV: case UNSIGNED_SHORT_5_5_5_1:
+    case UNSIGNED_SHORT_1_5_5_5_REV: return 2;
+    default: return 4;
+  }
+}
+std::size_t PixelBytes(std::uint32_t format, std::uint32_t type) {
+  if (type == FLOAT_32_UNSIGNED_INT_24_8_REV) return 8;
+  switch (type) {
+    case UNSIGNED_BYTE: case BYTE: case UNSIGNED_SHORT: case SHORT: case UNSIGNED_INT: case INT: case HALF_FLOAT:
+    case FLOAT: break;
+    default: return ElementBytes(type);  // packed
+  }
+  const std::size_t components = format == RGBA || format == BGRA ? 4 : format == RGB || format == BGR ? 3
+                                 : format == RG ? 2 : 1;
+  return components * ElementBytes(type);
+}
 constexpr std::uint32_t kParams[] = {TEXTURE_MIN_FILTER, TEXTURE_MAG_FILTER, TEXTURE_WRAP_S, TEXTURE_WRAP_T,
                                      TEXTURE_BASE_LEVEL, TEXTURE_MAX_LEVEL, TEXTURE_MIN_LOD, TEXTURE_MAX_LOD,
                                      TEXTURE_LOD_BIAS, TEXTURE_COMPARE_MODE, TEXTURE_COMPARE_FUNC};
@@ -149,7 +181,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       case 4: gl.GenVertexArray(); break;
       case 5: gl.BindVertexArray(id()); break;
       case 6:
-        gl.VertexAttributePointer(std::uint32_t(in.Int(0, 16)), in.Int(0, 5), in.Enum(kTypes), in.Byte() & 1,
+        gl.VertexAttributePointer(std::uint32_t(in.Int(0, 16)), in.Byte() % 8 ? in.Int(0, 5) : int(BGRA), in.Enum(kTypes), in.Byte() & 1,
                                   in.Int(-4, 64), std::size_t(std::uint32_t(in.Int(0, 256))));
         break;
       case 7: gl.EnableVertexAttribArray(std::uint32_t(in.Int(0, 16))); break;
@@ -253,8 +285,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
             gl.PixelStore(PACK_ROW_LENGTH, 0);
             gl.PixelStore(PACK_SKIP_ROWS, 0);
             gl.PixelStore(PACK_SKIP_PIXELS, 0);
-            gl.GetTexImage(in.Enum(kImageTargets), small(-1, 3), in.Byte() % 2 ? RGBA : DEPTH_COMPONENT,
-                           in.Byte() % 2 ? FLOAT : UNSIGNED_BYTE, scratch.data());
+            gl.GetTexImage(in.Enum(kImageTargets), small(-1, 3), in.Enum(kFormats), in.Enum(kPixelTypes),
+                           scratch.data());
             break;
           }
         }
@@ -390,8 +422,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
               gl.PixelStore(PACK_ROW_LENGTH, 0);
               gl.PixelStore(PACK_SKIP_ROWS, 0);
               gl.PixelStore(PACK_SKIP_PIXELS, 0);
-              gl.GetTexImage(target, level, in.Byte() % 2 ? RGBA : DEPTH_COMPONENT, in.Byte() % 2 ? FLOAT : UNSIGNED_BYTE,
-                             scratch.data());
+              gl.GetTexImage(target, level, in.Enum(kFormats), in.Enum(kPixelTypes), scratch.data());
             }
             break;
         }
@@ -422,14 +453,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
             gl.ClearColor(in.Float(), in.Float(), in.Float(), in.Float());
             gl.ClearDepth(double(in.Float()));
             gl.Clear(COLOR_BUFFER_BIT | DEPTH_BUFFER_BIT);
-            constexpr std::uint32_t kTypes[] = {UNSIGNED_BYTE, UNSIGNED_SHORT, UNSIGNED_INT, FLOAT};
             std::uint32_t out[4 * 4];
             gl.PixelStore(PACK_ALIGNMENT, 4);
             gl.PixelStore(PACK_ROW_LENGTH, 0);
             gl.PixelStore(PACK_SKIP_ROWS, 0);
             gl.PixelStore(PACK_SKIP_PIXELS, 0);
-            gl.ReadPixels(small(0, 8), small(0, 8), 2, 2, RGBA, in.Enum(kTypes), out);
-            gl.ReadPixels(small(0, 8), small(0, 8), 2, 2, DEPTH_COMPONENT, in.Enum(kTypes), out);
+            gl.ReadPixels(small(0, 8), small(0, 8), 2, 2, in.Enum(kFormats), in.Enum(kPixelTypes), out);
+            gl.ReadPixels(small(0, 8), small(0, 8), 2, 2, in.Byte() % 2 ? DEPTH_COMPONENT : STENCIL_INDEX,
+                          in.Enum(kPixelTypes), out);
             int iv[4];
             gl.GetIntegerv(in.Byte() % 2 ? COLOR_CLEAR_VALUE : DEPTH_CLEAR_VALUE, iv);
             break;
@@ -478,9 +509,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         (void)gl.ReadPixels();
         (void)gl.ReadDepth(in.Int(-2, 50), in.Int(-2, 50));
         {  // a rectangle of any format and pack layout, into a buffer exactly as large as OpenGL says it needs
-          constexpr std::uint32_t kReadFormats[] = {RED, RG, RGB, BGRA, RGBA, DEPTH_COMPONENT, STENCIL_INDEX,
-                                                    DEPTH_STENCIL};
-          constexpr std::uint32_t kReadTypes[] = {UNSIGNED_BYTE, UNSIGNED_SHORT, FLOAT, UNSIGNED_INT_24_8};
           // (Int may return any int: sizes are clamped so that the buffer stays small; x and y may be anything.)
           const auto small = [&](int lo, int hi) { return std::clamp(in.Int(lo, hi), lo, hi); };
           const int align = 1 << small(0, 3), row = small(0, 60), skip_rows = small(0, 3), skip_px = small(0, 3);
@@ -489,13 +517,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
           gl.PixelStore(PACK_SKIP_ROWS, skip_rows);
           gl.PixelStore(PACK_SKIP_PIXELS, skip_px);
           const int x = in.Int(-60, 60), y = in.Int(-60, 60), w = small(-1, 60), h = small(-1, 60);
-          const std::uint32_t format = in.Enum(kReadFormats), type = in.Enum(kReadTypes);
-          const std::size_t comp = type == UNSIGNED_BYTE ? 1 : type == UNSIGNED_SHORT ? 2 : 4;
-          const std::size_t per = format == RGBA || format == BGRA ? 4 : format == RGB ? 3 : format == RG ? 2 : 1;
-          std::size_t stride = std::size_t(row > 0 ? row : std::max(w, 0)) * comp * per;
-          if (comp < std::size_t(align)) stride = (stride + std::size_t(align) - 1) / std::size_t(align) * std::size_t(align);
+          const std::uint32_t format = in.Enum(kFormats), type = in.Enum(kPixelTypes);
+          const std::size_t element = ElementBytes(type), pixel = PixelBytes(format, type);
+          std::size_t stride = std::size_t(row > 0 ? row : std::max(w, 0)) * pixel;
+          if (element < std::size_t(align)) stride = (stride + std::size_t(align) - 1) / std::size_t(align) * std::size_t(align);
           // The last pixel written ends at (skip_rows + h - 1) * stride + (skip_pixels + w) * pixel bytes.
-          const std::size_t need = w > 0 && h > 0 ? std::size_t(skip_rows + h - 1) * stride + std::size_t(skip_px + w) * comp * per : 0;
+          const std::size_t need = w > 0 && h > 0 ? std::size_t(skip_rows + h - 1) * stride + std::size_t(skip_px + w) * pixel : 0;
           scratch.assign(need, 0);
           gl.ReadPixels(x, y, w, h, format, type, scratch.data());
         }
