@@ -593,7 +593,7 @@ Enum SizedRenderbufferFormat(Enum f) {
     case DEPTH_COMPONENT32: return DEPTH_COMPONENT24;
     case STENCIL_INDEX1: case STENCIL_INDEX4: case STENCIL_INDEX16: return STENCIL_INDEX8;
     case RGBA8: case RGB8: case RG8: case R8: case SRGB8_ALPHA8: case SRGB8: case RGBA32F: case RG32F: case R32F:
-    case RGBA16F: case RG16F: case R16F: case R11F_G11F_B10F: case RGB565: case RGBA4: case RGB5_A1: case DEPTH_COMPONENT16:
+    case RGBA16F: case RG16F: case R16F: case R11F_G11F_B10F: case RGB565: case RGBA4: case RGB5_A1: case RGB10_A2: case DEPTH_COMPONENT16:
     case RGBA16: case RG16: case R16:
     case DEPTH_COMPONENT24: case DEPTH_COMPONENT32F: case DEPTH24_STENCIL8: case DEPTH32F_STENCIL8:
     case STENCIL_INDEX8: return f;
@@ -628,6 +628,7 @@ FormatBits BitsOf(Enum f) {
     case RGB565: return {5, 6, 5, 0, 0, 0};
     case RGBA4: return {4, 4, 4, 4, 0, 0};
     case RGB5_A1: return {5, 5, 5, 1, 0, 0};
+    case RGB10_A2: return {10, 10, 10, 2, 0, 0};
     case RGBA16: return {16, 16, 16, 16, 0, 0};
     case RG16: return {16, 16, 0, 0, 0, 0};
     case R16: return {16, 0, 0, 0, 0, 0};

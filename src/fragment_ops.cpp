@@ -891,8 +891,8 @@ void LaneOps(const BlockOpsContext& ctx, const Unorm8Blend* per_buffer, int b, c
       glm::vec4 color(bb.Color(b, o, 0)[lane], bb.Color(b, o, 1)[lane], bb.Color(b, o, 2)[lane],
                       bb.Color(b, o, 3)[lane]);
       if (cb.srgb || IsWideFixedPoint(cb.layout)) {
-        // An sRGB buffer under FRAMEBUFFER_SRGB, or a fixed-point one of 16 bits (RGB565, RGBA4, RGB5_A1, RGBA16, RG16,
-        // R16): the colour clamped as for
+        // An sRGB buffer under FRAMEBUFFER_SRGB, or a fixed-point one of other than 8 bits (RGB565, RGBA4, RGB5_A1,
+        // RGB10_A2, RGBA16, RG16, R16): the colour clamped as for
         // any fixed-point buffer, blended in float with the stored colour (decoded to linear for sRGB; the constant
         // colour clamped), converted again on store.
         color = glm::clamp(color, 0.0f, 1.0f);

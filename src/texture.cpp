@@ -36,6 +36,7 @@ int FormatComponents(Enum f) {
     case SRGB8_ALPHA8:
     case RGBA4:
     case RGB5_A1:
+    case RGB10_A2:
     case RGBA16:
     case RGBA16F:
     case RGBA32F: return 4;
@@ -51,7 +52,8 @@ bool IsDepthFormat(Enum f) {
 bool HasStencil(Enum f) { return f == DEPTH24_STENCIL8 || f == DEPTH32F_STENCIL8 || f == STENCIL_INDEX8; }
 
 bool IsNormalizedFormat(Enum f) {
-  return f == R8 || f == RG8 || f == RGB8 || f == RGBA8 || IsSrgbFormat(f) || f == RGB565 || f == RGBA4 || f == RGB5_A1;
+  return f == R8 || f == RG8 || f == RGB8 || f == RGBA8 || IsSrgbFormat(f) || f == RGB565 || f == RGBA4 || f == RGB5_A1 ||
+         f == RGB10_A2;
 }
 
 TexelLayout LayoutOf(Enum f) {
@@ -71,6 +73,7 @@ TexelLayout LayoutOf(Enum f) {
     case RGB565: return TexelLayout::kUnorm565;
     case RGBA4: return TexelLayout::kUnorm4444;
     case RGB5_A1: return TexelLayout::kUnorm5551;
+    case RGB10_A2: return TexelLayout::kUnorm1010102;
     case RGBA16: return TexelLayout::kUnorm16x4;
     case RG16: return TexelLayout::kUnorm16x2;
     case R16:
@@ -97,6 +100,7 @@ int BytesPerTexel(TexelLayout l) {
     case TexelLayout::kFloat32x1:
     case TexelLayout::kFloat16x2:
     case TexelLayout::kUnorm16x2:
+    case TexelLayout::kUnorm1010102:
     case TexelLayout::kFloat11x11x10: return 4;
     case TexelLayout::kUnorm16x1:
     case TexelLayout::kFloat16x1:
@@ -186,26 +190,42 @@ float UnsignedSmallToFloat(std::uint32_t v, int m) { return DecodeMagnitude(v, m
 
 namespace {
 
-// The channels of a 16-bit layout: bits and lowest bit of red, green, blue, alpha (0 bits: absent, reads 1 for
-// alpha).
-struct Packed16 {
+// The channels of a packed fixed-point layout: bits and lowest bit of red, green, blue, alpha (0 bits: absent,
+// reads 1 for alpha).
+struct PackedUnorm {
   int bits[4], shift[4];
 };
-Packed16 PackingOf(TexelLayout l) {
+PackedUnorm PackingOf(TexelLayout l) {
   switch (l) {
     case TexelLayout::kUnorm565: return {{5, 6, 5, 0}, {11, 5, 0, 0}};
     case TexelLayout::kUnorm4444: return {{4, 4, 4, 4}, {12, 8, 4, 0}};
+    case TexelLayout::kUnorm1010102: return {{10, 10, 10, 2}, {0, 10, 20, 30}};
     default: return {{5, 5, 5, 1}, {11, 6, 1, 0}};  // kUnorm5551
   }
+}
+// The word of a packed layout (2 or 4 bytes), and back.
+std::uint32_t LoadPacked(TexelLayout l, const std::uint8_t* p) {
+  if (BytesPerTexel(l) == 4) {
+    std::uint32_t w;
+    std::memcpy(&w, p, 4);
+    return w;
+  }
+  std::uint16_t h;
+  std::memcpy(&h, p, 2);
+  return h;
+}
+void StorePacked(TexelLayout l, std::uint8_t* p, std::uint32_t w) {
+  if (BytesPerTexel(l) == 4) return std::memcpy(p, &w, 4), void();
+  const std::uint16_t h = std::uint16_t(w);
+  std::memcpy(p, &h, 2);
 }
 
 }  // namespace
 
 glm::vec4 RawTexel(TexelLayout layout, const std::uint8_t* p) {
-  if (IsPacked16(layout)) {
-    const Packed16 k = PackingOf(layout);
-    std::uint16_t w;
-    std::memcpy(&w, p, 2);
+  if (IsPackedUnorm(layout)) {
+    const PackedUnorm k = PackingOf(layout);
+    const std::uint32_t w = LoadPacked(layout, p);
     glm::vec4 v(1.0f);
     for (int c = 0; c < 4; ++c)
       if (k.bits[c]) {
@@ -312,8 +332,9 @@ void StoreSmallFloatTexel(TexelLayout layout, std::uint8_t* p, const glm::vec4& 
       break;
     case TexelLayout::kUnorm565:
     case TexelLayout::kUnorm4444:
-    case TexelLayout::kUnorm5551: {  // OpenGL's fixed-point conversion: clamped to [0, 1], round(c * (2^bits - 1))
-      const Packed16 k = PackingOf(layout);
+    case TexelLayout::kUnorm5551:
+    case TexelLayout::kUnorm1010102: {  // OpenGL's fixed-point conversion: clamped to [0, 1], round(c * (2^bits - 1))
+      const PackedUnorm k = PackingOf(layout);
       std::uint32_t w = 0;
       for (int c = 0; c < 4; ++c) {
         if (!k.bits[c]) continue;
@@ -321,8 +342,7 @@ void StoreSmallFloatTexel(TexelLayout layout, std::uint8_t* p, const glm::vec4& 
         const float v = in[c] > 0.0f ? std::min(in[c], 1.0f) : 0.0f;  // NaN as 0
         w |= std::uint32_t(std::lrint(v * max)) << k.shift[c];
       }
-      const std::uint16_t h = std::uint16_t(w);
-      std::memcpy(p, &h, 2);
+      StorePacked(layout, p, w);
       break;
     }
     default: break;
@@ -383,6 +403,7 @@ void StoreTexel(TextureLevel& level, int i, int j, const glm::vec4& in, bool enc
     case TexelLayout::kUnorm565:
     case TexelLayout::kUnorm4444:
     case TexelLayout::kUnorm5551:
+    case TexelLayout::kUnorm1010102:
     case TexelLayout::kUnorm16x4:
     case TexelLayout::kUnorm16x2:
     case TexelLayout::kUnorm16x1: StoreSmallFloatTexel(level.layout, p, in); break;

@@ -40,6 +40,7 @@ enum class TexelLayout : std::uint8_t {
   kUnorm565,   // RGB565: red in bits 11-15, green 5-10, blue 0-4 (OpenGL's UNSIGNED_SHORT_5_6_5 order)
   kUnorm4444,  // RGBA4: red 12-15, green 8-11, blue 4-7, alpha 0-3
   kUnorm5551,  // RGB5_A1: red 11-15, green 6-10, blue 1-5, alpha 0
+  kUnorm1010102,  // RGB10_A2: red 0-9, green 10-19, blue 20-29, alpha 30-31 (UNSIGNED_INT_2_10_10_10_REV's order)
   kUnorm16x4,  // RGBA16: four 16-bit words k, each k / 65535
   kUnorm16x2,  // RG16
   kUnorm16x1,  // R16, DEPTH_COMPONENT16
@@ -54,10 +55,11 @@ glm::vec4 RawTexel(TexelLayout layout, const std::uint8_t* p);
 inline bool IsUnorm8(TexelLayout l) {
   return l == TexelLayout::kUnorm8x4 || l == TexelLayout::kUnorm8x2 || l == TexelLayout::kUnorm8x1;
 }
-/// The 16-bit fixed-point layouts (RGB565, RGBA4, RGB5_A1): read as floats in [0, 1] (storage scale 1), stored
-/// clamped and rounded to each channel's bits.
-inline bool IsPacked16(TexelLayout l) {
-  return l == TexelLayout::kUnorm565 || l == TexelLayout::kUnorm4444 || l == TexelLayout::kUnorm5551;
+/// The fixed-point layouts with all channels in one 16- or 32-bit word (RGB565, RGBA4, RGB5_A1, RGB10_A2): read
+/// as floats in [0, 1] (storage scale 1), stored clamped and rounded to each channel's bits.
+inline bool IsPackedUnorm(TexelLayout l) {
+  return l == TexelLayout::kUnorm565 || l == TexelLayout::kUnorm4444 || l == TexelLayout::kUnorm5551 ||
+         l == TexelLayout::kUnorm1010102;
 }
 /// RGBA16, RG16, R16: 16 bits a channel, read as floats in [0, 1] (storage scale 1), stored clamped and rounded.
 inline bool IsUnorm16(TexelLayout l) {
@@ -65,7 +67,7 @@ inline bool IsUnorm16(TexelLayout l) {
 }
 /// The fixed-point layouts that are not 8-bit: their values clamp to [0, 1] as 8-bit ones do, but they are read
 /// and blended as floats.
-inline bool IsWideFixedPoint(TexelLayout l) { return IsPacked16(l) || IsUnorm16(l); }
+inline bool IsWideFixedPoint(TexelLayout l) { return IsPackedUnorm(l) || IsUnorm16(l); }
 /// OpenGL's small floats (4.6, section 2.3.4): IEEE binary16 (sign, 5 exponent bits, 10 mantissa bits) and the
 /// unsigned 11- and 10-bit floats (5 exponent bits, 6 or 5 mantissa bits, no sign). From float: rounded to nearest
 /// (ties to even), too large to infinity, NaN to NaN; the unsigned forms take negative values (and -0) as 0.
@@ -237,7 +239,7 @@ void UploadImages(TextureLevel& level, int x, int y, int z, int w, int h, int d,
                   const ClientLayout& layout, const void* pixels);
 
 /// Writes RGBA value `v` into a texel of RG32F, RGBA16F, RG16F, R16F or R11F_G11F_B10F at p (the channels the
-/// layout has, converted as FloatToHalf and FloatToUnsignedSmall say), or of RGB565, RGBA4 or RGB5_A1 (clamped to
+/// layout has, converted as FloatToHalf and FloatToUnsignedSmall say), or of RGB565, RGBA4, RGB5_A1 or RGB10_A2 (clamped to
 /// [0, 1], NaN as 0, round(c * (2^bits - 1))); other layouts are left alone.
 void StoreSmallFloatTexel(TexelLayout layout, std::uint8_t* p, const glm::vec4& v);
 

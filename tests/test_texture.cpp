@@ -1232,17 +1232,20 @@ TEST_CASE("float render targets keep values outside [0, 1] and blend in float", 
   }
 }
 
-TEST_CASE("16-bit formats: RGB565, RGBA4 and RGB5_A1 textures and targets, and a 16-bit context", "[framebuffer][packed]") {
+TEST_CASE("packed formats: RGB565, RGBA4, RGB5_A1 and RGB10_A2 textures and targets, and a 16-bit context",
+          "[framebuffer][packed]") {
   struct Case {
     Enum format;
     int bits[4];  // 0: no such channel (alpha reads 1)
   };
-  for (const Case c : {Case{RGB565, {5, 6, 5, 0}}, Case{RGBA4, {4, 4, 4, 4}}, Case{RGB5_A1, {5, 5, 5, 1}}}) {
+  for (const Case c : {Case{RGB565, {5, 6, 5, 0}}, Case{RGBA4, {4, 4, 4, 4}}, Case{RGB5_A1, {5, 5, 5, 1}},
+                       Case{RGB10_A2, {10, 10, 10, 2}}}) {
     INFO("format 0x" << std::hex << c.format);
     // Stored: clamped to [0, 1] and rounded to each channel's bits; read back as k / (2^bits - 1).
     detail::TextureLevel level;
     level.Allocate(c.format, 2, 1);
-    CHECK(level.data.size() == 2 * 2 + detail::TextureLevel::kGatherPad);
+    const std::size_t bytes = c.format == RGB10_A2 ? 4 : 2;  // one word a texel
+    CHECK(level.data.size() == 2 * bytes + detail::TextureLevel::kGatherPad);
     const glm::vec4 in(0.45f, 1.7f, -0.2f, 0.31f);  // no ties between two steps
     detail::StoreTexel(level, 0, 0, in);
     const glm::vec4 got = level.Texel(0, 0);

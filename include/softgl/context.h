@@ -206,7 +206,8 @@ class Context {
   /// object: texture calls with nothing bound record INVALID_OPERATION.
   void BindTexture(Enum target, std::uint32_t texture);
   /// Defines level `level` of the bound texture: target TEXTURE_2D or a TEXTURE_CUBE_MAP_* face; internal_format
-  /// RGBA8, RGB8, RG8, R8, SRGB8_ALPHA8, SRGB8 (decoded to linear when sampled), RGB565, RGBA4, RGB5_A1, RGBA16,
+  /// RGBA8, RGB8, RG8, R8, SRGB8_ALPHA8, SRGB8 (decoded to linear when sampled), RGB565, RGBA4, RGB5_A1, RGB10_A2
+  /// (10 bits a colour channel, 2 of alpha, in 32), RGBA16,
   /// RG16, R16 (16-bit normalized), RGBA32F,
   /// RG32F, R32F, RGBA16F, RG16F, R16F, R11F_G11F_B10F, DEPTH_COMPONENT16 (2 bytes a texel, k / 65535),
   /// DEPTH_COMPONENT (also DEPTH_COMPONENT24/32F: stored as float), DEPTH24_STENCIL8 or DEPTH32F_STENCIL8 (depth,
@@ -399,7 +400,8 @@ class Context {
   /// Binds a renderbuffer (0 unbinds) to RENDERBUFFER. Bad target: INVALID_ENUM; unknown id: INVALID_OPERATION.
   void BindRenderbuffer(Enum target, std::uint32_t renderbuffer);
   /// Gives the bound renderbuffer width x height pixels of internal_format: RGBA8, RGB8, RG8, R8, SRGB8_ALPHA8,
-  /// SRGB8, RGB565, RGBA4, RGB5_A1, RGBA32F, RG32F, R32F, RGBA16F, RG16F, R16F, R11F_G11F_B10F,
+  /// SRGB8, RGB565, RGBA4, RGB5_A1, RGB10_A2, RGBA16, RG16, R16, RGBA32F, RG32F, R32F, RGBA16F, RG16F, R16F,
+  /// R11F_G11F_B10F,
   /// DEPTH_COMPONENT16 (16-bit fixed point: the depth test compares depths converted to 16 bits),
   /// DEPTH_COMPONENT24/32F (float), DEPTH24_STENCIL8, DEPTH32F_STENCIL8, STENCIL_INDEX8, or the unsized RGBA, RGB, RG,
   /// RED, DEPTH_COMPONENT, DEPTH_STENCIL, STENCIL_INDEX (stored as RGBA8, ..., DEPTH24_STENCIL8, STENCIL_INDEX8), or

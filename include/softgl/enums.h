@@ -196,6 +196,7 @@ inline constexpr Enum RGBA8 = 0x8058;
 inline constexpr Enum RGB565 = 0x8D62;   // 16 bits a texel: red and blue 5 bits, green 6
 inline constexpr Enum RGBA4 = 0x8056;    // 16 bits a texel: 4 a channel
 inline constexpr Enum RGB5_A1 = 0x8057;  // 16 bits a texel: 5 a colour channel, alpha 1
+inline constexpr Enum RGB10_A2 = 0x8059;  // 32 bits a texel: 10 a colour channel, alpha 2
 inline constexpr Enum R16 = 0x822A;      // 16-bit normalized channels: k / 65535
 inline constexpr Enum RG16 = 0x822C;
 inline constexpr Enum RGBA16 = 0x805B;

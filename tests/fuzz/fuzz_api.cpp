@@ -60,7 +60,7 @@ constexpr std::uint32_t kImageTargets[] = {TEXTURE_2D,
                                            TEXTURE_CUBE_MAP_POSITIVE_Y, TEXTURE_CUBE_MAP_NEGATIVE_Y,
                                            TEXTURE_CUBE_MAP_POSITIVE_Z, TEXTURE_CUBE_MAP_NEGATIVE_Z,
                                            TEXTURE_2D_MULTISAMPLE};
-constexpr std::uint32_t kInternal[] = {RGBA8, RGB8, RG8, R8, RGBA32F, R32F, DEPTH_COMPONENT, DEPTH24_STENCIL8,
+constexpr std::uint32_t kInternal[] = {RGBA8, RGB8, RG8, R8, RGBA32F, R32F, RGB10_A2, DEPTH_COMPONENT, DEPTH24_STENCIL8,
                                        DEPTH32F_STENCIL8, RGBA16, R16, RGBA16F, DEPTH_COMPONENT16};
 // Every pixel format and type of OpenGL 3.3 (tables 3.2 to 3.5), and one of neither: a pixel is 16 bytes at most.
 constexpr std::uint32_t kFormats[] = {RED, GREEN, BLUE, RG, RGB, BGR, RGBA, BGRA, DEPTH_COMPONENT, DEPTH_STENCIL,
