@@ -43,6 +43,7 @@ void ContextState::Draw(const detail::DrawCall& call) {
       const detail::TextureObject* t = units[u].bound[k].get();
       (tex.textures.*detail::kKindUnits[k])[u] = t ? &(tex.views[k][u] = detail::MakeView(*t)) : nullptr;
     }
+  tex.textures.units = units_used;
   packet.textures = &tex.textures;
   packet.ops = ops;
   for (int k = 0; k < 2; ++k)  // the active occlusion queries count this draw's fragments

@@ -12,27 +12,36 @@
 
 namespace softgl::detail {
 
+namespace {
+// The units that may have a texture bound in `t` (those past t.units are null).
+int UnitsOf(const Textures& t) { return std::clamp(t.units, 0, kMaxTextureUnits); }
+}  // namespace
+
 bool DrawTextures::Any(const Textures& t) {
   std::uintptr_t any = 0;  // (no early exit: a loop the compiler vectorizes)
+  const int units = UnitsOf(t);
   for (UnitViews kind : kKindUnits)
-    for (int u = 0; u < kMaxTextureUnits; ++u) any |= reinterpret_cast<std::uintptr_t>((t.*kind)[u]);
+    for (int u = 0; u < units; ++u) any |= reinterpret_cast<std::uintptr_t>((t.*kind)[u]);
   return any != 0;
 }
 
 bool DrawTextures::Same(const Textures& t) const {
   const auto same = [](const TextureView* a, const TextureView* b) { return a ? b && *a == *b : !b; };
+  const int units = std::max(UnitsOf(textures), UnitsOf(t));  // (past its own count, each is null)
   for (UnitViews kind : kKindUnits)
-    for (int u = 0; u < kMaxTextureUnits; ++u)
+    for (int u = 0; u < units; ++u)
       if (!same((textures.*kind)[u], (t.*kind)[u])) return false;
   return true;
 }
 
 void DrawTextures::CopyFrom(const Textures& t) {
+  const int units = UnitsOf(t), before = UnitsOf(textures);
   for (int k = 0; k < kTextureKinds; ++k)  // only the views of the units in use: the others are never read
-    for (int u = 0; u < kMaxTextureUnits; ++u) {
-      const TextureView* v = (t.*kKindUnits[k])[u];
+    for (int u = 0; u < std::max(units, before); ++u) {
+      const TextureView* v = u < units ? (t.*kKindUnits[k])[u] : nullptr;
       (textures.*kKindUnits[k])[u] = v ? &(views[k][u] = *v) : nullptr;
     }
+  textures.units = units;
 }
 
 namespace {

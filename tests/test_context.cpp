@@ -2069,3 +2069,50 @@ TEST_CASE("hostile calls: VertexAttributePointer takes half floats, doubles, the
   CHECK(value.a == Approx(1.0f));
   CHECK(gl.GetError() == NO_ERROR);
 }
+
+namespace {
+struct UnitShader : Shader<UnitShader, testing::NoVaryings> {
+  int unit = 0;
+  void Vertex(const VertexIn& in, VertexOut<testing::NoVaryings>& out) const { out.position = in.attrib[0]; }
+  bool Fragment(const FragmentIn<testing::NoVaryings>& in, FragmentOut& out) const {
+    out.color[0] = in.textures->SampleLod(unit, glm::vec2(0.5f), 0.0f);
+    return true;
+  }
+};
+}  // namespace
+
+TEST_CASE("hostile calls: OpenGL 3.3's 48 combined texture units, each bindable and sampled", "[context][errors][hostile]") {
+  // OpenGL 3.3, table 6.54: MAX_COMBINED_TEXTURE_IMAGE_UNITS is at least 48 (16 for each of three stages).
+  Context gl(4, 4);
+  int units = 0;
+  gl.GetIntegerv(MAX_COMBINED_TEXTURE_IMAGE_UNITS, &units);
+  CHECK(units == 48);
+  gl.ActiveTexture(TEXTURE0 + 48);
+  CHECK(gl.GetError() == INVALID_ENUM);
+  // A different colour on units 0, 16 and 47; a draw samples the one its shader names.
+  const std::uint8_t colours[3][4] = {{255, 0, 0, 255}, {0, 255, 0, 255}, {0, 0, 255, 255}};
+  const int bound[3] = {0, 16, 47};
+  for (int i = 0; i < 3; ++i) {
+    gl.ActiveTexture(TEXTURE0 + std::uint32_t(bound[i]));
+    CHECK(gl.GetError() == NO_ERROR);
+    gl.BindTexture(TEXTURE_2D, gl.GenTexture());
+    gl.TexImage2D(TEXTURE_2D, 0, RGBA8, 1, 1, 0, RGBA, UNSIGNED_BYTE, colours[i]);
+    gl.TexParameteri(TEXTURE_2D, TEXTURE_MIN_FILTER, NEAREST);
+  }
+  MakeVertexArray(gl, {{-1, -1, 0, 1}, {3, -1, 0, 1}, {-1, 3, 0, 1}});
+  UnitShader shader;
+  gl.UseProgram(shader);
+  for (int i = 0; i < 3; ++i) {
+    shader.unit = bound[i];
+    gl.DrawArrays(TRIANGLES, 0, 3);
+    std::uint8_t px[4];
+    gl.ReadPixel(1, 1, px);
+    CHECK(std::vector<std::uint8_t>(px, px + 4) == std::vector<std::uint8_t>(colours[i], colours[i] + 4));
+  }
+  shader.unit = 30;  // nothing bound there: (0, 0, 0, 1)
+  gl.DrawArrays(TRIANGLES, 0, 3);
+  std::uint8_t px[4];
+  gl.ReadPixel(1, 1, px);
+  CHECK((px[0] == 0 && px[1] == 0 && px[2] == 0 && px[3] == 255));
+  CHECK(gl.GetError() == NO_ERROR);
+}

@@ -17,8 +17,9 @@
 
 namespace softgl {
 
-/// Number of texture units (GL_MAX_COMBINED_TEXTURE_IMAGE_UNITS as far as softgl goes).
-inline constexpr int kMaxTextureUnits = 16;
+/// Number of texture units: GL_MAX_COMBINED_TEXTURE_IMAGE_UNITS, OpenGL 3.3's minimum (every unit can be sampled
+/// from either stage, so MAX_TEXTURE_IMAGE_UNITS and MAX_VERTEX_TEXTURE_IMAGE_UNITS are the same).
+inline constexpr int kMaxTextureUnits = 48;
 /// Largest texture width or height (GL_MAX_TEXTURE_SIZE).
 inline constexpr int kMaxTextureSize = 16384;
 /// Largest width, height or depth of a 3D texture (GL_MAX_3D_TEXTURE_SIZE).
@@ -108,6 +109,9 @@ class Textures {
   const detail::TextureView* unit_2d_array[kMaxTextureUnits] = {};
   const detail::TextureView* unit_3d[kMaxTextureUnits] = {};
   const detail::TextureView* unit_2d_ms[kMaxTextureUnits] = {};
+  /// Units from this one on have no texture bound (their entries above are null): what a draw copies and compares
+  /// stops here.
+  int units = kMaxTextureUnits;
 };
 
 }  // namespace softgl
