@@ -17,7 +17,8 @@ set(configure_args)
 if(MODE STREQUAL "subdirectory")
   set(source "${CONSUMER_SOURCE_DIR}/subdirectory")
   list(APPEND configure_args "-DSOFTGL_SOURCE_DIR=${SOFTGL_SOURCE_DIR}" -DSOFTGL_BUILD_TESTS=OFF
-       -DSOFTGL_BUILD_EXAMPLES=OFF -DSOFTGL_INSTALL=OFF -DCMAKE_BUILD_TYPE=Release)
+       -DSOFTGL_BUILD_EXAMPLES=OFF -DSOFTGL_INSTALL=OFF -DCMAKE_BUILD_TYPE=Debug)  # (what is tested is the
+  # inclusion, not the code: unoptimized, the library builds in a fraction of the time)
 else()
   set(source "${CONSUMER_SOURCE_DIR}")
   set(prefix "${WORK_DIR}/prefix")
