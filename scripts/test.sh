@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
-# The whole test suite, in stages: a Release build and its ctest (GCC), the same with Clang, a Debug build under
-# AddressSanitizer + UndefinedBehaviorSanitizer and its ctest, the threading tests under ThreadSanitizer, an arm64
-# cross-build whose ctest runs under qemu-aarch64-static, then the libFuzzer targets, each for a fixed number of
-# inputs from its seed corpus with a fixed seed (the same commit gives the same result). Warnings are errors
-# throughout.
+# The whole test suite, in stages: a Release build and its ctest (GCC), the same with Clang, one Clang build under
+# AddressSanitizer + UndefinedBehaviorSanitizer that is also instrumented for libFuzzer, its ctest, then the
+# libFuzzer targets of that build, each for a fixed number of inputs from its seed corpus with a fixed seed (the
+# same commit gives the same result), the threading tests under ThreadSanitizer, and an arm64 cross-build whose
+# ctest runs under qemu-aarch64-static. Warnings are errors throughout.
 #
 # Every stage runs, even after one has failed; each prints its name as it starts and, when it fails, the cause (the
 # failing tests, the compiler's errors, or the fuzz artifact and its stack). Each stage's whole output is kept in
@@ -81,11 +81,18 @@ clang_release() {
     ctest --test-dir build/clang --output-on-failure -j "$jobs" -E '^consumer_subdirectory$'
 }
 
+# One build for the sanitizers and the fuzzers: Clang's AddressSanitizer and UndefinedBehaviorSanitizer (whose
+# -fsanitize=undefined also checks float-to-integer conversions), every target instrumented for libFuzzer too
+# (SOFTGL_FUZZ), optimized (-O2 -g). The whole ctest suite runs on it, then the fuzz stages run its fuzz targets.
+sanitize_build() {
+  CC=clang CXX=clang++ cmake -S . -B build/fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSOFTGL_FUZZ=ON \
+      -DSOFTGL_SANITIZE=ON -DSOFTGL_BUILD_TESTS=ON -DSOFTGL_BUILD_EXAMPLES=ON -DSOFTGL_INSTALL=OFF \
+      -DSOFTGL_WERROR=ON &&
+    cmake --build build/fuzz -j "$jobs"
+}
 sanitizers() {
-  cmake -S . -B build/sanitize -DCMAKE_BUILD_TYPE=Debug -DSOFTGL_SANITIZE=ON -DSOFTGL_WERROR=ON &&
-    cmake --build build/sanitize -j "$jobs" &&
-    ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
-      ctest --test-dir build/sanitize --output-on-failure -j "$jobs"
+  ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+    ctest --test-dir build/fuzz --output-on-failure -j "$jobs"
 }
 
 # The tile renderer on 1 to 8 threads, and several contexts rendering at once.
@@ -105,12 +112,6 @@ arm64() {
       -DSOFTGL_WERROR=ON &&
     cmake --build build/arm64 -j "$jobs" &&
     ctest --test-dir build/arm64 --output-on-failure -j "$jobs"
-}
-
-fuzz_build() {
-  CC=clang CXX=clang++ cmake -S . -B build/fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSOFTGL_FUZZ=ON \
-      -DSOFTGL_BUILD_TESTS=OFF -DSOFTGL_BUILD_EXAMPLES=OFF -DSOFTGL_INSTALL=OFF -DSOFTGL_WERROR=ON &&
-    cmake --build build/fuzz -j "$jobs"
 }
 
 # One fuzz target, RUNS inputs from its seed corpus, reproducibly: a fixed seed, no corpus reloads (libFuzzer
@@ -134,10 +135,8 @@ fuzz() {
 scale=${SOFTGL_FUZZ_SCALE:-1}
 stage release release
 stage clang clang_release
-stage sanitizers sanitizers
-stage tsan tsan
-stage arm64 arm64
-if stage fuzz_build fuzz_build; then
+if stage sanitize_build sanitize_build; then
+  stage sanitizers sanitizers
   stage fuzz_api fuzz fuzz_api $((150000 * scale)) 1
   stage fuzz_pipeline fuzz fuzz_pipeline $((200000 * scale)) 1
   stage fuzz_image fuzz fuzz_image $((40000 * scale)) 1
@@ -145,6 +144,8 @@ if stage fuzz_build fuzz_build; then
   # process makes it the slowest target (about 30 inputs a second here), hence its smaller count.
   stage fuzz_model fuzz fuzz_model $((2000 * scale)) 1
 fi
+stage tsan tsan
+stage arm64 arm64
 
 echo
 echo "== summary"

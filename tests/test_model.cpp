@@ -15,6 +15,18 @@
 
 #include "scenes.h"
 
+// Whether AddressSanitizer is on: GCC says so with __SANITIZE_ADDRESS__, Clang (before 15) only through __has_feature.
+#if defined(__SANITIZE_ADDRESS__)
+#define SOFTGL_TEST_ASAN 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define SOFTGL_TEST_ASAN 1
+#endif
+#endif
+#ifndef SOFTGL_TEST_ASAN
+#define SOFTGL_TEST_ASAN 0
+#endif
+
 using namespace softgl;
 
 namespace {
@@ -359,7 +371,7 @@ TEST_CASE("imports within limits: a time limit and a memory budget stop the impo
   CHECK_FALSE(limited.Load(gl, engine, quick, &error));
   CHECK(error.find("time limit of 1e-06 s") != std::string::npos);
   CHECK(limited.meshes.empty());
-#if !defined(__SANITIZE_ADDRESS__)  // AddressSanitizer's allocator takes its memory beyond any budget
+#if !SOFTGL_TEST_ASAN  // AddressSanitizer's allocator takes its memory beyond any budget
   LoadOptions small;
   small.memory_budget = std::size_t(1) << 20;
   CHECK_FALSE(limited.Load(gl, engine, small, &error));
@@ -374,7 +386,7 @@ TEST_CASE("imports within limits: a time limit and a memory budget stop the impo
 }
 
 TEST_CASE("a memory budget holds in a process that has freed much memory", "[model]") {
-#if defined(__linux__) && !defined(__SANITIZE_ADDRESS__)
+#if defined(__linux__) && !SOFTGL_TEST_ASAN
   // 256 MiB in blocks below the allocator's mapping threshold, freed behind a block that stays: the heap keeps
   // them, reserved address space an import could reuse without adding any.
   std::vector<std::unique_ptr<char[]>> blocks;
