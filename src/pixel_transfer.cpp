@@ -124,27 +124,16 @@ std::size_t PlainBytes(Enum type) {
   }
 }
 
-template <class T>
-T Load(const std::uint8_t* p) {
-  T v;
-  std::memcpy(&v, p, sizeof v);
-  return v;
-}
-template <class T>
-void Store(std::uint8_t* p, T v) {
-  std::memcpy(p, &v, sizeof v);
-}
-
 // A packed value of 1, 2 or 4 bytes, in the machine's byte order.
 std::uint32_t LoadWord(const std::uint8_t* p, std::size_t bytes) {
   if (bytes == 1) return *p;
-  if (bytes == 2) return Load<std::uint16_t>(p);
-  return Load<std::uint32_t>(p);
+  if (bytes == 2) return LoadUnaligned<std::uint16_t>(p);
+  return LoadUnaligned<std::uint32_t>(p);
 }
 void StoreWord(std::uint8_t* p, std::size_t bytes, std::uint32_t v) {
   if (bytes == 1) *p = std::uint8_t(v);
-  else if (bytes == 2) Store(p, std::uint16_t(v));
-  else Store(p, v);
+  else if (bytes == 2) StoreUnaligned(p, std::uint16_t(v));
+  else StoreUnaligned(p, v);
 }
 
 // v clamped to [0, 1] (NaN as 0) times max, rounded.
@@ -161,26 +150,26 @@ std::int64_t Snorm(double v, double max) {
 double UnpackPlain(Enum type, const std::uint8_t* p) {
   switch (type) {
     case UNSIGNED_BYTE: return *p / 255.0;
-    case BYTE: return std::max(Load<std::int8_t>(p) / 127.0, -1.0);
-    case UNSIGNED_SHORT: return Load<std::uint16_t>(p) / 65535.0;
-    case SHORT: return std::max(Load<std::int16_t>(p) / 32767.0, -1.0);
-    case UNSIGNED_INT: return Load<std::uint32_t>(p) / 4294967295.0;
-    case INT: return std::max(Load<std::int32_t>(p) / 2147483647.0, -1.0);
-    case HALF_FLOAT: return HalfToFloat(Load<std::uint16_t>(p));
-    default: return Load<float>(p);
+    case BYTE: return std::max(LoadUnaligned<std::int8_t>(p) / 127.0, -1.0);
+    case UNSIGNED_SHORT: return LoadUnaligned<std::uint16_t>(p) / 65535.0;
+    case SHORT: return std::max(LoadUnaligned<std::int16_t>(p) / 32767.0, -1.0);
+    case UNSIGNED_INT: return LoadUnaligned<std::uint32_t>(p) / 4294967295.0;
+    case INT: return std::max(LoadUnaligned<std::int32_t>(p) / 2147483647.0, -1.0);
+    case HALF_FLOAT: return HalfToFloat(LoadUnaligned<std::uint16_t>(p));
+    default: return LoadUnaligned<float>(p);
   }
 }
 
 void PackPlain(Enum type, double v, std::uint8_t* p) {
   switch (type) {
     case UNSIGNED_BYTE: *p = std::uint8_t(Unorm(v, 255.0)); break;
-    case BYTE: Store(p, std::int8_t(Snorm(v, 127.0))); break;
-    case UNSIGNED_SHORT: Store(p, std::uint16_t(Unorm(v, 65535.0))); break;
-    case SHORT: Store(p, std::int16_t(Snorm(v, 32767.0))); break;
-    case UNSIGNED_INT: Store(p, std::uint32_t(Unorm(v, 4294967295.0))); break;
-    case INT: Store(p, std::int32_t(Snorm(v, 2147483647.0))); break;
-    case HALF_FLOAT: Store(p, FloatToHalf(float(v))); break;
-    default: Store(p, float(v)); break;
+    case BYTE: StoreUnaligned(p, std::int8_t(Snorm(v, 127.0))); break;
+    case UNSIGNED_SHORT: StoreUnaligned(p, std::uint16_t(Unorm(v, 65535.0))); break;
+    case SHORT: StoreUnaligned(p, std::int16_t(Snorm(v, 32767.0))); break;
+    case UNSIGNED_INT: StoreUnaligned(p, std::uint32_t(Unorm(v, 4294967295.0))); break;
+    case INT: StoreUnaligned(p, std::int32_t(Snorm(v, 2147483647.0))); break;
+    case HALF_FLOAT: StoreUnaligned(p, FloatToHalf(float(v))); break;
+    default: StoreUnaligned(p, float(v)); break;
   }
 }
 
@@ -292,10 +281,10 @@ glm::vec4 UnpackColor(Enum format, Enum type, const std::uint8_t* p) {
 
 void UnpackDepthStencil(Enum type, const std::uint8_t* p, float& depth, std::uint8_t& stencil) {
   if (type == FLOAT_32_UNSIGNED_INT_24_8_REV) {
-    depth = Load<float>(p);
-    stencil = std::uint8_t(Load<std::uint32_t>(p + 4));
+    depth = LoadUnaligned<float>(p);
+    stencil = std::uint8_t(LoadUnaligned<std::uint32_t>(p + 4));
   } else {
-    const std::uint32_t word = Load<std::uint32_t>(p);
+    const std::uint32_t word = LoadUnaligned<std::uint32_t>(p);
     depth = float(double(word >> 8) / 16777215.0);
     stencil = std::uint8_t(word);
   }
@@ -326,20 +315,20 @@ void PackStencil(Enum type, std::uint32_t stencil, std::uint8_t* p) {
     case UNSIGNED_BYTE:
     case BYTE: *p = std::uint8_t(stencil); break;
     case UNSIGNED_SHORT:
-    case SHORT: Store(p, std::uint16_t(stencil)); break;
+    case SHORT: StoreUnaligned(p, std::uint16_t(stencil)); break;
     case UNSIGNED_INT:
-    case INT: Store(p, stencil); break;
-    case HALF_FLOAT: Store(p, FloatToHalf(float(stencil))); break;
-    default: Store(p, float(stencil)); break;
+    case INT: StoreUnaligned(p, stencil); break;
+    case HALF_FLOAT: StoreUnaligned(p, FloatToHalf(float(stencil))); break;
+    default: StoreUnaligned(p, float(stencil)); break;
   }
 }
 
 void PackDepthStencil(Enum type, float depth, std::uint8_t stencil, std::uint8_t* p) {
   if (type == FLOAT_32_UNSIGNED_INT_24_8_REV) {
-    Store(p, depth > 0.0f ? std::min(depth, 1.0f) : 0.0f);
-    Store(p + 4, std::uint32_t(stencil));
+    StoreUnaligned(p, depth > 0.0f ? std::min(depth, 1.0f) : 0.0f);
+    StoreUnaligned(p + 4, std::uint32_t(stencil));
   } else {
-    Store(p, std::uint32_t(Unorm(depth, 16777215.0)) << 8 | stencil);
+    StoreUnaligned(p, std::uint32_t(Unorm(depth, 16777215.0)) << 8 | stencil);
   }
 }
 

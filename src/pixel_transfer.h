@@ -6,11 +6,24 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 
 #include <glm/glm.hpp>
 #include <softgl/enums.h>
 
 namespace softgl::detail {
+
+/// A T from client memory at p, which need not be aligned for T (a memcpy, as C++ allows), and back.
+template <class T>
+T LoadUnaligned(const std::uint8_t* p) {
+  T v;
+  std::memcpy(&v, p, sizeof v);
+  return v;
+}
+template <class T>
+void StoreUnaligned(std::uint8_t* p, T v) {
+  std::memcpy(p, &v, sizeof v);
+}
 
 /// Which call a transfer serves: they take different formats (STENCIL_INDEX only ReadPixels).
 enum class TransferCall { kUnpack, kReadPixels, kGetTexImage };

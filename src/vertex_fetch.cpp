@@ -8,6 +8,7 @@
 #include <limits>
 #include <utility>
 
+#include "pixel_transfer.h"
 #include "texture.h"
 
 namespace softgl::detail {
@@ -37,13 +38,6 @@ std::size_t AttributeBytes(Enum type, int components) {
 
 namespace {
 
-template <class T>
-T Load(const std::uint8_t* p) {
-  T v;
-  std::memcpy(&v, p, sizeof v);
-  return v;
-}
-
 // A double as the nearest float (to nearest, ties to even): beyond the largest float by half a unit or more it is
 // infinity (a plain conversion of such a value is undefined in C++).
 float DoubleToFloat(double d) {
@@ -58,31 +52,31 @@ float DoubleToFloat(double d) {
 // signed max(c / (2^(b-1) - 1), -1). `normalized` does not apply to the float types.
 float Component(Enum type, bool normalized, const std::uint8_t* p) {
   switch (type) {
-    case FLOAT: return Load<float>(p);
-    case HALF_FLOAT: return HalfToFloat(Load<std::uint16_t>(p));
-    case DOUBLE: return DoubleToFloat(Load<double>(p));
+    case FLOAT: return LoadUnaligned<float>(p);
+    case HALF_FLOAT: return HalfToFloat(LoadUnaligned<std::uint16_t>(p));
+    case DOUBLE: return DoubleToFloat(LoadUnaligned<double>(p));
     case UNSIGNED_BYTE: {
-      const float c = Load<std::uint8_t>(p);
+      const float c = LoadUnaligned<std::uint8_t>(p);
       return normalized ? c / 255.0f : c;
     }
     case BYTE: {
-      const float c = Load<std::int8_t>(p);
+      const float c = LoadUnaligned<std::int8_t>(p);
       return normalized ? std::max(c / 127.0f, -1.0f) : c;
     }
     case UNSIGNED_SHORT: {
-      const float c = Load<std::uint16_t>(p);
+      const float c = LoadUnaligned<std::uint16_t>(p);
       return normalized ? c / 65535.0f : c;
     }
     case SHORT: {
-      const float c = Load<std::int16_t>(p);
+      const float c = LoadUnaligned<std::int16_t>(p);
       return normalized ? std::max(c / 32767.0f, -1.0f) : c;
     }
     case UNSIGNED_INT: {
-      const std::uint32_t c = Load<std::uint32_t>(p);
+      const std::uint32_t c = LoadUnaligned<std::uint32_t>(p);
       return normalized ? float(double(c) / 4294967295.0) : float(c);
     }
     case INT: {
-      const std::int32_t c = Load<std::int32_t>(p);
+      const std::int32_t c = LoadUnaligned<std::int32_t>(p);
       return normalized ? float(std::max(double(c) / 2147483647.0, -1.0)) : float(c);
     }
     default: return 0.0f;
@@ -145,7 +139,7 @@ glm::vec4 Read(const AttribSource& src, const Resolved& r, std::uint32_t index) 
     }
     return v;
   }
-  if (IsPackedAttribType(src.type)) v = Packed2101010(src.type, src.normalized, Load<std::uint32_t>(p));
+  if (IsPackedAttribType(src.type)) v = Packed2101010(src.type, src.normalized, LoadUnaligned<std::uint32_t>(p));
   else
     for (int c = 0; c < src.components; ++c) v[c] = Component(src.type, src.normalized, p + r.csize * c);
   if (src.bgra) std::swap(v.x, v.z);  // size BGRA: the element holds blue, green, red, alpha
@@ -211,7 +205,7 @@ void FetchVertices(const FetchPlan& plan, const std::uint32_t* indices, int coun
 void ReadIndices(Enum type, const std::uint8_t* data, int count, std::uint32_t* out) {
   auto read = [&](auto zero) {  // one loop per index type (the type decided once, not per index)
     using T = decltype(zero);
-    for (int i = 0; i < count; ++i) out[i] = Load<T>(data + sizeof(T) * std::size_t(i));
+    for (int i = 0; i < count; ++i) out[i] = LoadUnaligned<T>(data + sizeof(T) * std::size_t(i));
   };
   switch (type) {
     case UNSIGNED_BYTE: read(std::uint8_t{}); break;

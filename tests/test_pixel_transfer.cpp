@@ -52,19 +52,12 @@ Enum Expected(Enum format, Enum type, TransferCall call) {
   return NO_ERROR;
 }
 
-template <class T>
-T As(const std::uint8_t* p) {
-  T v;
-  std::memcpy(&v, p, sizeof v);
-  return v;
-}
-
 // Packs c as (format, type) and returns the first `sizeof(T)` bytes as a T.
 template <class T>
 T Pack(Enum format, Enum type, const glm::vec4& c) {
   std::uint8_t bytes[16] = {};
   detail::PackColor(format, type, c, bytes);
-  return As<T>(bytes);
+  return detail::LoadUnaligned<T>(bytes);
 }
 
 void BindTarget(Context& gl, Enum internal_format, int w, int h) {
@@ -175,14 +168,14 @@ TEST_CASE("pixel transfer: each type packs as section 4.3.2 says", "[pixel_trans
     detail::PackStencil(BYTE, 200, bytes);
     CHECK(bytes[0] == 200);
     detail::PackStencil(HALF_FLOAT, 200, bytes);
-    CHECK(As<std::uint16_t>(bytes) == 0x5A40);
+    CHECK(detail::LoadUnaligned<std::uint16_t>(bytes) == 0x5A40);
     detail::PackStencil(FLOAT, 200, bytes);
-    CHECK(As<float>(bytes) == 200.0f);
+    CHECK(detail::LoadUnaligned<float>(bytes) == 200.0f);
     detail::PackDepthStencil(UNSIGNED_INT_24_8, 0.75f, 7, bytes);
-    CHECK(As<std::uint32_t>(bytes) == (std::uint32_t(std::llround(0.75 * 16777215.0)) << 8 | 7u));
+    CHECK(detail::LoadUnaligned<std::uint32_t>(bytes) == (std::uint32_t(std::llround(0.75 * 16777215.0)) << 8 | 7u));
     detail::PackDepthStencil(FLOAT_32_UNSIGNED_INT_24_8_REV, nan, 3, bytes);
-    CHECK(As<float>(bytes) == 0.0f);
-    CHECK(As<std::uint32_t>(bytes + 4) == 3u);
+    CHECK(detail::LoadUnaligned<float>(bytes) == 0.0f);
+    CHECK(detail::LoadUnaligned<std::uint32_t>(bytes + 4) == 3u);
   }
 }
 
