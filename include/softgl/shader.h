@@ -716,47 +716,10 @@ class Shader : public Program {
     return false;
   }
 
-  void ShadeVertices(const VertexBatch& batch) const final {
-    static_assert(SoftglForm::Check());
-    if constexpr (SoftglForm::WideVertex()) {
-#if defined(SOFTGL_HAS_DISPATCH)
-      if (batch.simd == 2) return VerticesAvx512(batch);
-      if (batch.simd == 1) return VerticesAvx2(batch);
-#endif
-      VerticesBase(batch);
-    } else {
-      const Derived& self = static_cast<const Derived&>(*this);
-      glm::vec4 attrib[kMaxVertexAttribs];
-      for (int i = 0; i < batch.count; ++i) {
-        for (int a = 0; a < kMaxVertexAttribs; ++a) {  // vertex i's attributes from the rows
-          const float* row = batch.attribs + std::size_t(a) * 4 * std::size_t(batch.stride) + i;
-          if ((batch.enabled >> a) & 1u)
-            for (int c = 0; c < 4; ++c) attrib[a][c] = row[std::size_t(c) * std::size_t(batch.stride)];
-          else
-            attrib[a] = batch.current[a];
-        }
-        VertexOut<Varyings> out;
-        self.Vertex(VertexIn{attrib, batch.vertex_ids[i], batch.textures, batch.instance_id}, out);
-        batch.positions[i] = out.position;
-        batch.point_sizes[i] = out.point_size;
-        if constexpr (SoftglForm::Floats() > 0)
-          std::memcpy(batch.varyings + std::size_t(i) * SoftglForm::Floats(), &out.varyings, sizeof(Varyings));
-      }
-    }
-  }
-
-  void ShadeBlocks(const BlockBatch& batch) const final {
-    static_assert(SoftglForm::Check());
-    if constexpr (SoftglForm::WideFragment()) {
-#if defined(SOFTGL_HAS_DISPATCH)
-      if (batch.simd == 2) return BlocksAvx512(batch);
-      if (batch.simd == 1) return BlocksAvx2(batch);
-#endif
-      BlocksBase(batch);
-    } else {
-      ScalarBlocks(batch);
-    }
-  }
+  // Defined below the class, out of line: a program that draws with a shader compiled elsewhere (the built-in ones,
+  // explicitly instantiated in softgl::model) then does not compile its stages again.
+  void ShadeVertices(const VertexBatch& batch) const final;
+  void ShadeBlocks(const BlockBatch& batch) const final;
 
  private:
   // ---- The wide form, compiled three times ----
@@ -836,5 +799,49 @@ class Shader : public Program {
     }
   }
 };
+
+template <class Derived, class Varyings>
+void Shader<Derived, Varyings>::ShadeVertices(const VertexBatch& batch) const {
+  static_assert(SoftglForm::Check());
+  if constexpr (SoftglForm::WideVertex()) {
+#if defined(SOFTGL_HAS_DISPATCH)
+    if (batch.simd == 2) return VerticesAvx512(batch);
+    if (batch.simd == 1) return VerticesAvx2(batch);
+#endif
+    VerticesBase(batch);
+  } else {
+    const Derived& self = static_cast<const Derived&>(*this);
+    glm::vec4 attrib[kMaxVertexAttribs];
+    for (int i = 0; i < batch.count; ++i) {
+      for (int a = 0; a < kMaxVertexAttribs; ++a) {  // vertex i's attributes from the rows
+        const float* row = batch.attribs + std::size_t(a) * 4 * std::size_t(batch.stride) + i;
+        if ((batch.enabled >> a) & 1u)
+          for (int c = 0; c < 4; ++c) attrib[a][c] = row[std::size_t(c) * std::size_t(batch.stride)];
+        else
+          attrib[a] = batch.current[a];
+      }
+      VertexOut<Varyings> out;
+      self.Vertex(VertexIn{attrib, batch.vertex_ids[i], batch.textures, batch.instance_id}, out);
+      batch.positions[i] = out.position;
+      batch.point_sizes[i] = out.point_size;
+      if constexpr (SoftglForm::Floats() > 0)
+        std::memcpy(batch.varyings + std::size_t(i) * SoftglForm::Floats(), &out.varyings, sizeof(Varyings));
+    }
+  }
+}
+
+template <class Derived, class Varyings>
+void Shader<Derived, Varyings>::ShadeBlocks(const BlockBatch& batch) const {
+  static_assert(SoftglForm::Check());
+  if constexpr (SoftglForm::WideFragment()) {
+#if defined(SOFTGL_HAS_DISPATCH)
+    if (batch.simd == 2) return BlocksAvx512(batch);
+    if (batch.simd == 1) return BlocksAvx2(batch);
+#endif
+    BlocksBase(batch);
+  } else {
+    ScalarBlocks(batch);
+  }
+}
 
 }  // namespace softgl

@@ -309,6 +309,15 @@ struct PbrShader : SurfaceShader<PbrShader> {
   }
 };
 
+// The stages of the three shaders above are compiled once, into softgl::model (src/model/shaders.cpp), rather than
+// in every program that draws with them (each is three builds of the wide code, one per instruction set).
+extern template void Shader<UnlitShader, SurfaceVaryings>::ShadeVertices(const VertexBatch&) const;
+extern template void Shader<UnlitShader, SurfaceVaryings>::ShadeBlocks(const BlockBatch&) const;
+extern template void Shader<PhongShader, SurfaceVaryings>::ShadeVertices(const VertexBatch&) const;
+extern template void Shader<PhongShader, SurfaceVaryings>::ShadeBlocks(const BlockBatch&) const;
+extern template void Shader<PbrShader, SurfaceVaryings>::ShadeVertices(const VertexBatch&) const;
+extern template void Shader<PbrShader, SurfaceVaryings>::ShadeBlocks(const BlockBatch&) const;
+
 /// A soft studio environment for PbrShader: a cube map (size x size per face, mipmapped) of a bright sky fading
 /// to a dim floor, made in `gl` and bound to kUnitEnvironment. Returns the number of levels (for
 /// PbrShader::environment_levels).
