@@ -16,7 +16,7 @@ scripts/deps.sh assimp-testmodels g++-aarch64-linux-gnu qemu-user-static libassi
 jobs=$(nproc)
 if [ "${1:-}" = "--tsan" ]; then
   shift
-  cmake -S . -B build/arm64-tsan -DCMAKE_TOOLCHAIN_FILE=cmake/aarch64-linux-gnu.cmake \
+  scripts/configure.sh build/arm64-tsan -DCMAKE_TOOLCHAIN_FILE=cmake/aarch64-linux-gnu.cmake \
     -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSOFTGL_TSAN=ON -DSOFTGL_INSTALL=OFF -DCMAKE_EXE_LINKER_FLAGS=-static-libtsan
   # (The build lists the test cases by running the program: under setarch too.)
   setarch "$(uname -m)" -R cmake --build build/arm64-tsan -j "$jobs" --target softgl_tests
@@ -26,7 +26,7 @@ if [ "${1:-}" = "--tsan" ]; then
 fi
 if [ "${1:-}" = "--sanitize" ]; then
   shift
-  cmake -S . -B build/arm64-sanitize -DCMAKE_TOOLCHAIN_FILE=cmake/aarch64-linux-gnu.cmake -DCMAKE_BUILD_TYPE=Debug \
+  scripts/configure.sh build/arm64-sanitize -DCMAKE_TOOLCHAIN_FILE=cmake/aarch64-linux-gnu.cmake -DCMAKE_BUILD_TYPE=Debug \
     -DSOFTGL_SANITIZE=ON -DSOFTGL_INSTALL=OFF "-DCMAKE_EXE_LINKER_FLAGS=-static-libasan -static-libubsan"
   setarch "$(uname -m)" -R cmake --build build/arm64-sanitize -j "$jobs" --target softgl_tests
   ASAN_OPTIONS=detect_leaks=0:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
@@ -34,6 +34,6 @@ if [ "${1:-}" = "--sanitize" ]; then
     -E '^(cli_|docs_render_help)' "$@"
   exit
 fi
-cmake -S . -B build/arm64 -DCMAKE_TOOLCHAIN_FILE=cmake/aarch64-linux-gnu.cmake -DCMAKE_BUILD_TYPE=Release
+scripts/configure.sh build/arm64 -DCMAKE_TOOLCHAIN_FILE=cmake/aarch64-linux-gnu.cmake -DCMAKE_BUILD_TYPE=Release
 cmake --build build/arm64 -j "$jobs"
 ctest --test-dir build/arm64 --output-on-failure -j "$jobs" "$@"

@@ -4,7 +4,7 @@
 # adds that architecture to dpkg first.
 set -euo pipefail
 
-packages=(g++ make cmake pkg-config libglm-dev libassimp-dev libstb-dev libjpeg62-turbo-dev catch2 libcli11-dev libwebp-dev "$@")
+packages=(g++ make cmake ninja-build pkg-config libglm-dev libassimp-dev libstb-dev libjpeg62-turbo-dev catch2 libcli11-dev libwebp-dev "$@")
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

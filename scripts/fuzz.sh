@@ -25,7 +25,7 @@ dir=${SOFTGL_FUZZ_DIR:-$HOME/.cache/softgl-fuzz}
 jobs=${SOFTGL_FUZZ_JOBS:-1}
 
 scripts/deps.sh clang libclang-rt-14-dev
-CC=clang CXX=clang++ cmake -S . -B build/fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSOFTGL_FUZZ=ON \
+CC=clang CXX=clang++ scripts/configure.sh build/fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSOFTGL_FUZZ=ON \
   -DSOFTGL_BUILD_TESTS=OFF -DSOFTGL_BUILD_EXAMPLES=OFF -DSOFTGL_INSTALL=OFF -DSOFTGL_WERROR=ON > /dev/null
 cmake --build build/fuzz -j "$(nproc)" > /dev/null
 

@@ -27,12 +27,48 @@ failed=0
 stage() {
   local name=$1
   shift
-  local log="$logs/$name.log" start=$SECONDS status
+  local start=$SECONDS
   echo
   echo "== stage: $name"
-  "$@" 2>&1 | tee "$log"
-  status=${PIPESTATUS[0]}
-  local took=$((SECONDS - start))
+  "$@" 2>&1 | tee "$logs/$name.log"
+  finish "$name" "${PIPESTATUS[0]}" $((SECONDS - start))
+}
+
+# fuzz_lanes "TARGET RUNS TARGET RUNS ..." ...: each argument is a lane of fuzz stages (see fuzz below) run one after
+# another, the lanes side by side (each on one core), every stage's output in its log only; once all have ended,
+# each log is printed whole, lane by lane, and each stage recorded as stage() records it.
+fuzz_lanes() {
+  local lane pids=() order=()
+  for lane in "$@"; do
+    read -r -a pairs <<<"$lane"
+    local i
+    for ((i = 0; i < ${#pairs[@]}; i += 2)); do
+      echo "== stage: ${pairs[i]} (in a lane beside others; its output follows when all have ended)"
+      order+=("${pairs[i]}")
+    done
+    (
+      for ((i = 0; i < ${#pairs[@]}; i += 2)); do
+        start=$SECONDS
+        fuzz "${pairs[i]}" "${pairs[i + 1]}" 1 >"$logs/${pairs[i]}.log" 2>&1
+        echo "$? $((SECONDS - start))" >"$logs/${pairs[i]}.status"
+      done
+    ) &
+    pids+=($!)
+  done
+  wait "${pids[@]}"
+  local name code took
+  for name in "${order[@]}"; do
+    echo
+    echo "== stage: $name (output)"
+    cat "$logs/$name.log"
+    read -r code took <"$logs/$name.status"
+    finish "$name" "$code" "$took"
+  done
+}
+
+# finish NAME STATUS SECONDS: records a stage's result for the summary and, when it failed, prints the cause.
+finish() {
+  local name=$1 status=$2 took=$3 log="$logs/$1.log"
   if [ "$status" -eq 0 ]; then
     summary+=("passed  $name (${took} s)")
   else
@@ -64,7 +100,7 @@ first_cause() {
 }
 
 release() {
-  cmake -S . -B build/release -DCMAKE_BUILD_TYPE=Release -DSOFTGL_WERROR=ON &&
+  scripts/configure.sh build/release -DCMAKE_BUILD_TYPE=Release -DSOFTGL_WERROR=ON &&
     cmake --build build/release -j "$jobs" &&
     ctest --test-dir build/release --output-on-failure -j "$jobs"
 }
@@ -75,7 +111,7 @@ release() {
 # rebuild with -fsanitize=float-cast-overflow alone for the message. (consumer_subdirectory, which builds the library
 # once more inside another project, runs in the Release stage only.)
 clang_release() {
-  CC=clang CXX=clang++ cmake -S . -B build/clang -DCMAKE_BUILD_TYPE=Release -DSOFTGL_WERROR=ON \
+  CC=clang CXX=clang++ scripts/configure.sh build/clang -DCMAKE_BUILD_TYPE=Release -DSOFTGL_WERROR=ON \
       "-DCMAKE_CXX_FLAGS=-fsanitize=float-cast-overflow -fsanitize-trap=float-cast-overflow" &&
     cmake --build build/clang -j "$jobs" &&
     ctest --test-dir build/clang --output-on-failure -j "$jobs" -E '^consumer_subdirectory$'
@@ -85,7 +121,7 @@ clang_release() {
 # -fsanitize=undefined also checks float-to-integer conversions), every target instrumented for libFuzzer too
 # (SOFTGL_FUZZ), optimized (-O2 -g). The whole ctest suite runs on it, then the fuzz stages run its fuzz targets.
 sanitize_build() {
-  CC=clang CXX=clang++ cmake -S . -B build/fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSOFTGL_FUZZ=ON \
+  CC=clang CXX=clang++ scripts/configure.sh build/fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSOFTGL_FUZZ=ON \
       -DSOFTGL_SANITIZE=ON -DSOFTGL_BUILD_TESTS=ON -DSOFTGL_BUILD_EXAMPLES=ON -DSOFTGL_INSTALL=OFF \
       -DSOFTGL_WERROR=ON &&
     cmake --build build/fuzz -j "$jobs"
@@ -97,7 +133,7 @@ sanitizers() {
 
 # The tile renderer on 1 to 8 threads, and several contexts rendering at once.
 tsan() {
-  cmake -S . -B build/tsan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSOFTGL_TSAN=ON -DSOFTGL_WERROR=ON \
+  scripts/configure.sh build/tsan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSOFTGL_TSAN=ON -DSOFTGL_WERROR=ON \
       -DSOFTGL_INSTALL=OFF &&
     cmake --build build/tsan -j "$jobs" --target softgl_thread_tests &&
     TSAN_OPTIONS=halt_on_error=1 ctest --test-dir build/tsan -R threads --output-on-failure --no-tests=error
@@ -108,7 +144,7 @@ tsan() {
 # suite there: Mesa's llvmpipe would itself run emulated. The consumer projects and the documentation's programs
 # are host packaging tests.)
 arm64() {
-  cmake -S . -B build/arm64 -DCMAKE_TOOLCHAIN_FILE=cmake/aarch64-linux-gnu.cmake -DCMAKE_BUILD_TYPE=Release \
+  scripts/configure.sh build/arm64 -DCMAKE_TOOLCHAIN_FILE=cmake/aarch64-linux-gnu.cmake -DCMAKE_BUILD_TYPE=Release \
       -DSOFTGL_WERROR=ON &&
     cmake --build build/arm64 -j "$jobs" &&
     ctest --test-dir build/arm64 --output-on-failure -j "$jobs"
@@ -137,12 +173,11 @@ stage release release
 stage clang clang_release
 if stage sanitize_build sanitize_build; then
   stage sanitizers sanitizers
-  stage fuzz_api fuzz fuzz_api $((150000 * scale)) 1
-  stage fuzz_pipeline fuzz fuzz_pipeline $((200000 * scale)) 1
-  stage fuzz_image fuzz fuzz_image $((40000 * scale)) 1
-  # fuzz_model imports within limits (5 s, 2 GiB), each input first in a child process: forking the sanitized
-  # process makes it the slowest target (about 30 inputs a second here), hence its smaller count.
-  stage fuzz_model fuzz fuzz_model $((2000 * scale)) 1
+  # Two lanes, one core each (about 4 and 6 minutes here). fuzz_model imports within limits (5 s, 2 GiB), each input
+  # first in a child process: forking the sanitized process makes it the slowest target (about 30 inputs a second
+  # here), hence its smaller count.
+  fuzz_lanes "fuzz_pipeline $((200000 * scale)) fuzz_api $((150000 * scale))" \
+    "fuzz_image $((40000 * scale)) fuzz_model $((2000 * scale))"
 fi
 stage tsan tsan
 stage arm64 arm64
