@@ -65,7 +65,7 @@ endif()
 
 if(NOT MODE STREQUAL "pkgconfig")
   run("configure" ${CMAKE_COMMAND} -S "${source}" -B "${WORK_DIR}/build" ${configure_args})
-  run("build" ${CMAKE_COMMAND} --build "${WORK_DIR}/build" -j 2)
+  run("build" ${CMAKE_COMMAND} --build "${WORK_DIR}/build" -j 2 --target app)  # (not softgl-render: not what is tested)
 endif()
 execute_process(COMMAND "${WORK_DIR}/build/app" RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE out)
 message(STATUS "${out}")
