@@ -52,6 +52,7 @@ namespace {
 struct Geometry {
   std::vector<float> vertices;  // interleaved, `floats` per vertex
   int floats = 3;
+  int position = 3;  // floats of the position (attribute 0): 3 (w = 1 in the shader) or 4, clip space
   std::vector<std::uint32_t> indices;
 };
 
@@ -77,6 +78,24 @@ Geometry FullScreenQuads(int count, float uv_scale) {
       g.vertices.insert(g.vertices.end(), {c[i][0], c[i][1], z, (c[i][0] * 0.5f + 0.5f) * uv_scale,
                                            (c[i][1] * 0.5f + 0.5f) * uv_scale});
     }
+  return g;
+}
+
+// A ground plane seen from 1 unit above it, from under the camera to the horizon, 1280 x 720: clip-space positions
+// (x, y, z, w) and texture coordinates repeating `repeats` times across it, so that one frame reads every level of
+// a mip chain.
+Geometry GroundPlane(float repeats) {
+  Geometry g;
+  g.floats = 6;
+  g.position = 4;
+  const glm::mat4 vp = glm::perspective(glm::radians(60.0f), 1280.0f / 720.0f, 0.1f, 500.0f) *
+                       glm::lookAt(glm::vec3(0, 1, 0), glm::vec3(0, 0.2f, -10), glm::vec3(0, 1, 0));
+  const float c[4][2] = {{-100, 0.5f}, {100, 0.5f}, {100, -200}, {-100, -200}};
+  for (int i : {0, 1, 2, 0, 2, 3}) {
+    const glm::vec4 clip = vp * glm::vec4(c[i][0], 0.0f, c[i][1], 1.0f);
+    g.vertices.insert(g.vertices.end(), {clip.x, clip.y, clip.z, clip.w, (c[i][0] + 100) / 200 * repeats,
+                                         (0.5f - c[i][1]) / 200 * repeats});
+  }
   return g;
 }
 
@@ -180,6 +199,17 @@ struct TextureShader : Shader<TextureShader, UvVaryings> {
   }
 };
 
+// TextureShader for clip-space positions of four floats (GroundPlane).
+struct PlaneShader : Shader<PlaneShader, UvVaryings> {
+  void Vertex(const VertexLanes& in, VertexLanesOut<UvVaryings>& out) const {
+    out.position = in.attrib[0];
+    out.varyings.uv = vec2(in.attrib[1]);
+  }
+  void Fragment(const FragmentLanes<UvVaryings>& in, FragmentLanesOut& out) const {
+    out.color[0] = in.Texture(0, in.varyings.uv);
+  }
+};
+
 struct PhongVaryings {
   vec3 normal;
   vec3 world;
@@ -262,6 +292,17 @@ struct TextureShader : softgl::Shader<TextureShader, UvVaryings> {
   }
 };
 
+struct PlaneShader : softgl::Shader<PlaneShader, UvVaryings> {
+  void Vertex(const softgl::VertexIn& in, softgl::VertexOut<UvVaryings>& out) const {
+    out.position = in.attrib[0];
+    out.varyings.uv = glm::vec2(in.attrib[1]);
+  }
+  bool Fragment(const softgl::FragmentIn<UvVaryings>& in, softgl::FragmentOut& out) const {
+    out.color[0] = in.Texture(0, &UvVaryings::uv);
+    return true;
+  }
+};
+
 struct PhongVaryings {
   glm::vec3 normal;
   glm::vec3 world;
@@ -325,6 +366,9 @@ const char* kFlatFs = "#version 330 core\nuniform vec4 color; out vec4 o; void m
 const char* kTexVs =
     "#version 330 core\nlayout(location=0) in vec3 p; layout(location=1) in vec2 t; out vec2 uv;"
     "void main(){ gl_Position = vec4(p, 1.0); uv = t; }";
+const char* kPlaneVs =
+    "#version 330 core\nlayout(location=0) in vec4 p; layout(location=1) in vec2 t; out vec2 uv;"
+    "void main(){ gl_Position = p; uv = t; }";
 const char* kTexFs = "#version 330 core\nin vec2 uv; uniform sampler2D tex; out vec4 o; void main(){ o = texture(tex, uv); }";
 const char* kPhongVs =
     "#version 330 core\nlayout(location=0) in vec3 p; layout(location=1) in vec3 n; uniform mat4 vp;"
@@ -541,15 +585,15 @@ int main(int argc, char** argv) {
     gl.BindVertexArray(gl.GenVertexArray());
     gl.BindBuffer(softgl::ARRAY_BUFFER, gl.GenBuffer());
     gl.BufferData(softgl::ARRAY_BUFFER, std::ptrdiff_t(g.vertices.size() * 4), g.vertices.data());
-    gl.VertexAttributePointer(0, 3, softgl::FLOAT, false, g.floats * 4, 0);
+    gl.VertexAttributePointer(0, g.position, softgl::FLOAT, false, g.floats * 4, 0);
     gl.EnableVertexAttribArray(0);
     if (g.floats == 12) {  // position, normal, uv, tangent
       gl.VertexAttributePointer(1, 3, softgl::FLOAT, false, 48, 12);
       gl.VertexAttributePointer(2, 2, softgl::FLOAT, false, 48, 24);
       gl.VertexAttributePointer(3, 4, softgl::FLOAT, false, 48, 32);
       for (std::uint32_t a = 1; a < 4; ++a) gl.EnableVertexAttribArray(a);
-    } else if (g.floats > 3) {
-      gl.VertexAttributePointer(1, g.floats - 3, softgl::FLOAT, false, g.floats * 4, 12);
+    } else if (g.floats > g.position) {
+      gl.VertexAttributePointer(1, g.floats - g.position, softgl::FLOAT, false, g.floats * 4, g.position * 4);
       gl.EnableVertexAttribArray(1);
     }
     if (!g.indices.empty()) {
@@ -564,15 +608,16 @@ int main(int argc, char** argv) {
     glGenBuffers(1, &vbo);
     glBindBuffer(GL_ARRAY_BUFFER, vbo);
     glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(g.vertices.size() * 4), g.vertices.data(), GL_STATIC_DRAW);
-    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, g.floats * 4, nullptr);
+    glVertexAttribPointer(0, g.position, GL_FLOAT, GL_FALSE, g.floats * 4, nullptr);
     glEnableVertexAttribArray(0);
     if (g.floats == 12) {
       glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, 48, reinterpret_cast<void*>(12));
       glVertexAttribPointer(2, 2, GL_FLOAT, GL_FALSE, 48, reinterpret_cast<void*>(24));
       glVertexAttribPointer(3, 4, GL_FLOAT, GL_FALSE, 48, reinterpret_cast<void*>(32));
       for (GLuint a = 1; a < 4; ++a) glEnableVertexAttribArray(a);
-    } else if (g.floats > 3) {
-      glVertexAttribPointer(1, g.floats - 3, GL_FLOAT, GL_FALSE, g.floats * 4, reinterpret_cast<void*>(12));
+    } else if (g.floats > g.position) {
+      glVertexAttribPointer(1, g.floats - g.position, GL_FLOAT, GL_FALSE, g.floats * 4,
+                            reinterpret_cast<void*>(std::size_t(g.position) * 4));
       glEnableVertexAttribArray(1);
     }
     if (!g.indices.empty()) {
@@ -833,6 +878,79 @@ int main(int argc, char** argv) {
                           glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
                           Program(kTexVs, kTexFs);
                           return TimeGl(n, overdraw_frame);
+                        });
+                      }});
+  }
+
+  // Sampler states: a textured ground plane in perspective (GroundPlane), 1280 x 720, a 256 x 256 texture with its
+  // mip chain (250 x 250 in one row), only the state changing from row to row.
+  using softgl::Enum;
+  struct SamplerState {
+    const char* name;  // the scene's
+    Enum format;
+    int size;
+    Enum min_filter, mag_filter, wrap;
+    float anisotropy;
+  };
+  namespace sg = softgl;
+  static const SamplerState kSamplerStates[] = {
+      {"sampler: REPEAT, trilinear", sg::RGBA8, 256, sg::LINEAR_MIPMAP_LINEAR, sg::LINEAR, sg::REPEAT, 1},
+      {"sampler: CLAMP_TO_EDGE, trilinear", sg::RGBA8, 256, sg::LINEAR_MIPMAP_LINEAR, sg::LINEAR, sg::CLAMP_TO_EDGE, 1},
+      {"sampler: MIRRORED_REPEAT, trilinear", sg::RGBA8, 256, sg::LINEAR_MIPMAP_LINEAR, sg::LINEAR,
+       sg::MIRRORED_REPEAT, 1},
+      {"sampler: REPEAT, trilinear, 250 x 250", sg::RGBA8, 250, sg::LINEAR_MIPMAP_LINEAR, sg::LINEAR, sg::REPEAT, 1},
+      {"sampler: REPEAT, LINEAR / LINEAR", sg::RGBA8, 256, sg::LINEAR, sg::LINEAR, sg::REPEAT, 1},
+      {"sampler: CLAMP_TO_BORDER, trilinear", sg::RGBA8, 256, sg::LINEAR_MIPMAP_LINEAR, sg::LINEAR,
+       sg::CLAMP_TO_BORDER, 1},
+      {"sampler: REPEAT, NEAREST_MIPMAP_NEAREST / NEAREST", sg::RGBA8, 256, sg::NEAREST_MIPMAP_NEAREST, sg::NEAREST,
+       sg::REPEAT, 1},
+      {"sampler: REPEAT, LINEAR_MIPMAP_NEAREST / LINEAR", sg::RGBA8, 256, sg::LINEAR_MIPMAP_NEAREST, sg::LINEAR,
+       sg::REPEAT, 1},
+      {"sampler: CLAMP_TO_EDGE, trilinear, 16x anisotropic", sg::RGBA8, 256, sg::LINEAR_MIPMAP_LINEAR, sg::LINEAR,
+       sg::CLAMP_TO_EDGE, 16},
+      {"sampler: SRGB8_ALPHA8, MIRRORED_REPEAT, trilinear", sg::SRGB8_ALPHA8, 256, sg::LINEAR_MIPMAP_LINEAR, sg::LINEAR,
+       sg::MIRRORED_REPEAT, 1},
+      {"sampler: RGBA16F, REPEAT, trilinear", sg::RGBA16F, 256, sg::LINEAR_MIPMAP_LINEAR, sg::LINEAR, sg::REPEAT, 1},
+  };
+  const Geometry plane = GroundPlane(40.0f);
+  const FrameSpec plane_frame{false, false, 6, "bench_sampler.png"};
+  for (const SamplerState& st : kSamplerStates) {
+    const std::vector<std::uint8_t> pixels = all_data ? PatternTexture(st.size) : std::vector<std::uint8_t>{};
+    scenes.push_back({st.name, 1280, 720, "Mpixel/s", 1280.0 * 720 / 2,
+                      [&, st, pixels](int n) {
+                        return WithShader<wide::PlaneShader, scalar::PlaneShader>([&](auto& shader) {
+                          softgl::Context gl(1280, 720, g_options);
+                          softgl_setup(gl, plane);
+                          gl.BindTexture(softgl::TEXTURE_2D, gl.GenTexture());
+                          gl.TexImage2D(softgl::TEXTURE_2D, 0, st.format, st.size, st.size, 0, softgl::RGBA,
+                                        softgl::UNSIGNED_BYTE, pixels.data());
+                          gl.GenerateMipmap(softgl::TEXTURE_2D);
+                          gl.TexParameteri(softgl::TEXTURE_2D, softgl::TEXTURE_MIN_FILTER, st.min_filter);
+                          gl.TexParameteri(softgl::TEXTURE_2D, softgl::TEXTURE_MAG_FILTER, st.mag_filter);
+                          gl.TexParameteri(softgl::TEXTURE_2D, softgl::TEXTURE_WRAP_S, st.wrap);
+                          gl.TexParameteri(softgl::TEXTURE_2D, softgl::TEXTURE_WRAP_T, st.wrap);
+                          gl.TexParameterf(softgl::TEXTURE_2D, softgl::TEXTURE_MAX_ANISOTROPY, st.anisotropy);
+                          gl.UseProgram(shader);
+                          return TimeSoftgl(n, gl, plane_frame);
+                        });
+                      },
+                      [&, st, pixels](int n) {
+                        return with_osmesa(1280, 720, [&] {
+                          gl_setup(plane);
+                          GLuint tex;
+                          glGenTextures(1, &tex);
+                          glBindTexture(GL_TEXTURE_2D, tex);
+                          glTexImage2D(GL_TEXTURE_2D, 0, GLint(st.format), st.size, st.size, 0, GL_RGBA,
+                                       GL_UNSIGNED_BYTE, pixels.data());
+                          glGenerateMipmap(GL_TEXTURE_2D);
+                          glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GLint(st.min_filter));
+                          glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GLint(st.mag_filter));
+                          glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GLint(st.wrap));
+                          glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GLint(st.wrap));
+                          if (st.anisotropy > 1.0f)
+                            glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_MAX_ANISOTROPY_EXT, st.anisotropy);
+                          Program(kPlaneVs, kTexFs);
+                          return TimeGl(n, plane_frame);
                         });
                       }});
   }

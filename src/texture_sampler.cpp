@@ -276,12 +276,18 @@ int CubeFace(glm::vec3 r) {
   return r.z >= 0 ? 4 : 5;
 }
 
+// A 2D texture's sample (Textures::Sample) in its format's units; not inlined (the vector paths call it for the odd
+// lane, and their flatten attribute would otherwise copy every filter into each of them).
+__attribute__((noinline)) glm::vec4 Sample2D(const TextureView& v, glm::vec2 uv, glm::vec2 duv_dx, glm::vec2 duv_dy,
+                                             float bias);
+
 // ---- The common 2D case for a block of lanes --------------------------------------------------------------------
 //
-// W lanes at a time (4 with SSE2, 8 with AVX2, 16 with AVX-512), each lane's operations those of SampleRepeat and
-// BilinearRepeatPow2 above in the same order. The levels a chunk of lanes needs are taken one at a time (usually one
-// or two), and each is sampled for all its lanes: texel addresses, texel loads, weights side by side. Lanes whose
-// rho^2 is not a normal positive float (zero or NaN derivatives, say) take the one-lane path.
+// W lanes at a time (4 with SSE2, 8 with AVX2, 16 with AVX-512), each lane's operations those of SampleFace above
+// (for LINEAR or LINEAR_MIPMAP_LINEAR, with LINEAR magnification and REPEAT, CLAMP_TO_EDGE or MIRRORED_REPEAT) in
+// the same order. The levels a chunk of lanes needs are taken one at a time (usually one or two), and each is sampled
+// for all its lanes: texel addresses, texel loads, weights side by side. Lanes whose rho^2 is not a normal positive
+// float (zero or NaN derivatives, say) take the one-lane path.
 
 using detail::V;
 
@@ -363,12 +369,41 @@ SOFTGL_INLINE typename V<W>::F Channel(typename V<W>::U x) {
   }
 }
 
+// i modulo n (n >= 1) in [0, n), for |i| up to 1e9 + 1 (what TexelCoord's clamp leaves): a mask for a power of two,
+// else two steps of a float quotient. The first leaves |r| <= n + 128 (i and i / n are rounded to 24 bits); the
+// second is exact, a float holding that r and its quotient's floor exactly (n is at most 2 x kMaxTextureSize).
+template <int W>
+SOFTGL_INLINE typename V<W>::I FloorMod(typename V<W>::I i, int n) {
+  using F = typename V<W>::F;
+  using I = typename V<W>::I;
+  if ((n & (n - 1)) == 0) return i & (n - 1);
+  const float fn = float(n);
+  I r = i - __builtin_convertvector(FloorF<W>(__builtin_convertvector(i, F) / fn), I) * n;
+  r = r - __builtin_convertvector(FloorF<W>(__builtin_convertvector(r, F) / fn), I) * n;
+  return r;
+}
+
+// Wrap() for W lanes: REPEAT, CLAMP_TO_EDGE or MIRRORED_REPEAT (no border texel), the same indices.
+template <int W>
+SOFTGL_INLINE typename V<W>::I WrapLanes(Enum mode, typename V<W>::I i, int size) {
+  using I = typename V<W>::I;
+  if (mode == CLAMP_TO_EDGE) {
+    const I hi = I{} + (size - 1);
+    i = i < 0 ? I{} : i;
+    return hi < i ? hi : i;
+  }
+  if (mode == REPEAT) return FloorMod<W>(i, size);
+  const I a = FloorMod<W>(i, 2 * size) - size;  // MIRRORED_REPEAT
+  const I mirror = a >= 0 ? a : -(a + 1);
+  return (size - 1) - mirror;
+}
+
 // Bilinear samples of 8-bit level `lv` (RGBA8 and RGB8, RG8 or R8: Bytes 4, 2 or 1 a texel) for the lanes of
 // `mask` (for every lane if All), in byte units, written into r, g, b, a; channels the layout lacks read 0 (alpha
-// 255), as Raw() has them.
+// 255), as Raw() has them. Texel indices wrap by wrap_s and wrap_t (WrapLanes).
 template <int W, int Bytes, bool Srgb, bool All = false>
-SOFTGL_INLINE void BilinearUnorm8(const TextureLevel& lv, typename V<W>::F s, typename V<W>::F t,
-                                 typename V<W>::I mask, typename V<W>::F out[4]) {
+SOFTGL_INLINE void BilinearUnorm8(const TextureLevel& lv, Enum wrap_s, Enum wrap_t, typename V<W>::F s,
+                                 typename V<W>::F t, typename V<W>::I mask, typename V<W>::F out[4]) {
   using F = typename V<W>::F;
   using I = typename V<W>::I;
   using U = typename V<W>::U;
@@ -384,8 +419,8 @@ SOFTGL_INLINE void BilinearUnorm8(const TextureLevel& lv, typename V<W>::F s, ty
   const F flu = FloorF<W>(fu), flv = FloorF<W>(fv);
   const F a = fu - flu, b = fv - flv;
   const I i0 = __builtin_convertvector(flu, I), j0 = __builtin_convertvector(flv, I);
-  const I mi = I{} + (lv.width - 1), mj = I{} + (lv.height - 1);
-  const I c0 = i0 & mi, r0 = (j0 & mj) * lv.width, r1 = ((j0 + 1) & mj) * lv.width;
+  const I c0 = WrapLanes<W>(wrap_s, i0, lv.width), c1 = WrapLanes<W>(wrap_s, i0 + 1, lv.width);
+  const I r0 = WrapLanes<W>(wrap_t, j0, lv.height) * lv.width, r1 = WrapLanes<W>(wrap_t, j0 + 1, lv.height) * lv.width;
   const F w00 = (1 - a) * (1 - b), w10 = a * (1 - b), w01 = (1 - a) * b, w11 = a * b;
   // Each row's two texels from one 64-bit read at its left texel (lanes outside the mask read at texel 0, always
   // there, and are discarded below); the level's padding covers a read at its last texel.
@@ -396,13 +431,14 @@ SOFTGL_INLINE void BilinearUnorm8(const TextureLevel& lv, typename V<W>::F s, ty
           p1 = LoadPairs<W>(base, o1, std::make_index_sequence<W>());
   U t00 = __builtin_convertvector(p0, U), t01 = __builtin_convertvector(p1, U);
   U t10 = __builtin_convertvector(p0 >> (8 * Bytes), U), t11 = __builtin_convertvector(p1 >> (8 * Bytes), U);
-  // On the last column the right-hand texel wraps to the row's first (REPEAT).
-  for (std::uint32_t wrap = detail::MaskToBits<W>(All ? c0 == mi : (c0 == mi) & mask, 0); wrap != 0;
-       wrap &= wrap - 1) {
+  // Where the right-hand texel is not the next one in the row (it wrapped, was clamped or mirrored), it is read
+  // on its own.
+  const I apart = c1 != c0 + 1;
+  for (std::uint32_t wrap = detail::MaskToBits<W>(All ? apart : apart & mask, 0); wrap != 0; wrap &= wrap - 1) {
     const int l = __builtin_ctz(wrap);
     std::uint32_t w0, w1;
-    std::memcpy(&w0, base + std::size_t(r0[l]) * Bytes, 4);
-    std::memcpy(&w1, base + std::size_t(r1[l]) * Bytes, 4);
+    std::memcpy(&w0, base + std::size_t(r0[l] + c1[l]) * Bytes, 4);
+    std::memcpy(&w1, base + std::size_t(r1[l] + c1[l]) * Bytes, 4);
     t10[l] = w0;
     t11[l] = w1;
   }
@@ -450,12 +486,13 @@ SOFTGL_INLINE typename V<W>::I LambdaLanes(const TextureView& view, const Textur
 }
 
 template <int W, int Bytes, bool Srgb>
-SOFTGL_INLINE void SampleRepeatLanes(const TextureView& view, const Textures::Lanes& c, float bias,
+SOFTGL_INLINE void SampleLinearLanes(const TextureView& view, const Textures::Lanes& c, float bias,
                                      float out[4][16]) {
   using F = typename V<W>::F;
   using I = typename V<W>::I;
   const auto& levels = view.texture->levels[0];
-  const bool linear_only = view.fast == TextureView::Fast::kRepeatLinear;
+  const bool linear_only = view.wide == TextureView::Wide::kLinear;
+  const Enum ws = view.texture->params.wrap_s, wt = view.texture->params.wrap_t;
   for (int l0 = 0; l0 < 16; l0 += W) {
     F lam;
     const I normal = LambdaLanes<W>(view, c, l0, bias, lam);
@@ -477,17 +514,18 @@ SOFTGL_INLINE void SampleRepeatLanes(const TextureView& view, const Textures::La
     if (normal_bits == (1u << W) - 1 && detail::MaskToBits<W>(level_a != level_a[0], 0) == 0) {
       // The usual block: every lane on the vector path, on the same first level (so a second level, where any
       // lane needs one, exists for all).
-      BilinearUnorm8<W, Bytes, Srgb, true>(levels[level_a[0]], s, t, normal, ra);
+      BilinearUnorm8<W, Bytes, Srgb, true>(levels[level_a[0]], ws, wt, s, t, normal, ra);
       if (detail::MaskToBits<W>(two, 0) != 0)
-        BilinearUnorm8<W, Bytes, Srgb, true>(levels[level_a[0] + 1], s, t, normal, rb);
+        BilinearUnorm8<W, Bytes, Srgb, true>(levels[level_a[0] + 1], ws, wt, s, t, normal, rb);
       pending = I{};
     }
     for (std::uint32_t bits = detail::MaskToBits<W>(pending, 0); bits != 0; bits = detail::MaskToBits<W>(pending, 0)) {
       const int L = level_a[__builtin_ctz(bits)];
       const I mask = pending & (level_a == L);
-      BilinearUnorm8<W, Bytes, Srgb>(levels[L], s, t, mask, ra);
+      BilinearUnorm8<W, Bytes, Srgb>(levels[L], ws, wt, s, t, mask, ra);
       const I second = mask & two;
-      if (detail::MaskToBits<W>(second, 0) != 0) BilinearUnorm8<W, Bytes, Srgb>(levels[L + 1], s, t, second, rb);
+      if (detail::MaskToBits<W>(second, 0) != 0)
+        BilinearUnorm8<W, Bytes, Srgb>(levels[L + 1], ws, wt, s, t, second, rb);
       pending &= ~mask;
     }
     for (int ch = 0; ch < 4; ++ch) {
@@ -500,38 +538,38 @@ SOFTGL_INLINE void SampleRepeatLanes(const TextureView& view, const Textures::La
     for (std::uint32_t rest = ~normal_bits & ((1u << W) - 1); rest != 0; rest &= rest - 1) {
       const int lane = l0 + __builtin_ctz(rest);
       const glm::vec2 dx(c.ds_dx[lane], c.dt_dx[lane]), dy(c.ds_dy[lane], c.dt_dy[lane]);
-      const glm::vec4 r = SampleRepeat(view, glm::vec2(c.s[lane], c.t[lane]), Lambda(view, dx, dy, bias)) / view.scale;
+      const glm::vec4 r = Sample2D(view, glm::vec2(c.s[lane], c.t[lane]), dx, dy, bias);
       for (int ch = 0; ch < 4; ++ch) out[ch][lane] = r[ch];
     }
   }
 }
 
-using SampleRepeatLanesFn = void (*)(const TextureView&, const Textures::Lanes&, float, float[4][16]);
+using SampleLinearLanesFn = void (*)(const TextureView&, const Textures::Lanes&, float, float[4][16]);
 
 // Each layout's form (an sRGB one for four bytes), for each instruction set.
 template <int Bytes, bool Srgb>
-void SampleRepeatLanesBase(const TextureView& v, const Textures::Lanes& c, float bias, float out[4][16]) {
-  SampleRepeatLanes<4, Bytes, Srgb>(v, c, bias, out);
+void SampleLinearLanesBase(const TextureView& v, const Textures::Lanes& c, float bias, float out[4][16]) {
+  SampleLinearLanes<4, Bytes, Srgb>(v, c, bias, out);
 }
 #if defined(SOFTGL_HAS_DISPATCH)
 template <int Bytes, bool Srgb>
-SOFTGL_TARGET_AVX2 void SampleRepeatLanesAvx2(const TextureView& v, const Textures::Lanes& c, float bias,
+SOFTGL_TARGET_AVX2 void SampleLinearLanesAvx2(const TextureView& v, const Textures::Lanes& c, float bias,
                                               float out[4][16]) {
-  SampleRepeatLanes<8, Bytes, Srgb>(v, c, bias, out);
+  SampleLinearLanes<8, Bytes, Srgb>(v, c, bias, out);
 }
 template <int Bytes, bool Srgb>
-SOFTGL_TARGET_AVX512 void SampleRepeatLanesAvx512(const TextureView& v, const Textures::Lanes& c, float bias,
+SOFTGL_TARGET_AVX512 void SampleLinearLanesAvx512(const TextureView& v, const Textures::Lanes& c, float bias,
                                                   float out[4][16]) {
-  SampleRepeatLanes<16, Bytes, Srgb>(v, c, bias, out);
+  SampleLinearLanes<16, Bytes, Srgb>(v, c, bias, out);
 }
 #endif
 
 
 // The vector path for an 8-bit view (null for other layouts).
-SampleRepeatLanesFn SampleRepeatLanesFor(const TextureView& view) {
-  static const SampleRepeatLanesFn by_bytes[4] = {
-      SOFTGL_CHOOSE(SampleRepeatLanes, <1, false>), SOFTGL_CHOOSE(SampleRepeatLanes, <2, false>),
-      SOFTGL_CHOOSE(SampleRepeatLanes, <4, false>), SOFTGL_CHOOSE(SampleRepeatLanes, <4, true>)};
+SampleLinearLanesFn SampleLinearLanesFor(const TextureView& view) {
+  static const SampleLinearLanesFn by_bytes[4] = {
+      SOFTGL_CHOOSE(SampleLinearLanes, <1, false>), SOFTGL_CHOOSE(SampleLinearLanes, <2, false>),
+      SOFTGL_CHOOSE(SampleLinearLanes, <4, false>), SOFTGL_CHOOSE(SampleLinearLanes, <4, true>)};
   switch (view.layout) {
     case TexelLayout::kUnorm8x1: return by_bytes[0];
     case TexelLayout::kUnorm8x2: return by_bytes[1];
@@ -565,15 +603,18 @@ glm::vec4 SampleAnisotropic(const TextureView& view, glm::vec2 uv, glm::vec2 dx,
   return sum / float(n);
 }
 
+glm::vec4 Sample2D(const TextureView& v, glm::vec2 uv, glm::vec2 duv_dx, glm::vec2 duv_dy, float bias) {
+  if (v.anisotropy > 1.0f && !v.depth) return SampleAnisotropic(v, uv, duv_dx, duv_dy, bias) / v.scale;
+  const float lambda = Lambda(v, duv_dx, duv_dy, bias);
+  if (v.fast != TextureView::Fast::kNone) return SampleRepeat(v, uv, lambda) / v.scale;
+  return SampleFace(v, 0, uv, lambda, DepthCompare{}) / v.scale;
+}
+
 }  // namespace
 
 glm::vec4 Textures::Sample(int unit, glm::vec2 uv, glm::vec2 duv_dx, glm::vec2 duv_dy, float bias) const {
   const TextureView* v = Usable(unit_2d, unit);
-  if (!v) return kMissing;
-  if (v->anisotropy > 1.0f && !v->depth) return SampleAnisotropic(*v, uv, duv_dx, duv_dy, bias) / v->scale;
-  const float lambda = Lambda(*v, duv_dx, duv_dy, bias);
-  if (v->fast != TextureView::Fast::kNone) return SampleRepeat(*v, uv, lambda) / v->scale;
-  return SampleFace(*v, 0, uv, lambda, DepthCompare{}) / v->scale;
+  return v ? Sample2D(*v, uv, duv_dx, duv_dy, bias) : kMissing;
 }
 
 void Textures::SampleQuad(int unit, const glm::vec2 uv[4], const glm::vec2 duv_dx[4], const glm::vec2 duv_dy[4],
@@ -583,8 +624,8 @@ void Textures::SampleQuad(int unit, const glm::vec2 uv[4], const glm::vec2 duv_d
 
 void Textures::SampleLanes(int unit, const Lanes& c, float bias, float out[4][16]) const {
   const TextureView* v = Usable(unit_2d, unit);
-  if (v && v->fast != TextureView::Fast::kNone) {
-    if (const SampleRepeatLanesFn sample = SampleRepeatLanesFor(*v)) return sample(*v, c, bias, out);
+  if (v && v->wide != TextureView::Wide::kNone) {
+    if (const SampleLinearLanesFn sample = SampleLinearLanesFor(*v)) return sample(*v, c, bias, out);
   }
   for (int l = 0; l < 16; ++l) {
     const glm::vec4 r = Sample(unit, glm::vec2(c.s[l], c.t[l]), glm::vec2(c.ds_dx[l], c.dt_dx[l]),

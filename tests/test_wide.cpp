@@ -435,12 +435,13 @@ TEST_CASE("the wide vertex stage: vertex ids, current values, textureLod, counts
 }
 
 TEST_CASE("textures sampled 16 lanes at a time give the floats of one lane at a time", "[wide][texture]") {
-  // Every format and the fast cases (8-bit, REPEAT, power of two, linear or trilinear), random coordinates and
-  // derivatives (NaN, huge and zero ones included), compared as bits.
+  // Every format, and the vector path's cases (8-bit layouts; LINEAR or LINEAR_MIPMAP_LINEAR; REPEAT,
+  // CLAMP_TO_EDGE or MIRRORED_REPEAT; powers of two or not) with others around them, random coordinates (far outside
+  // [0, 1] too) and derivatives (NaN, huge and zero ones included), compared as bits.
   struct Case {
     Enum format;
     int w, h;
-    Enum min_filter, wrap;
+    Enum min_filter, wrap, wrap_t = 0;  // wrap_t 0: as wrap
   };
   const Case cases[] = {{RGBA8, 64, 32, LINEAR_MIPMAP_LINEAR, REPEAT}, {RGBA8, 64, 64, LINEAR, REPEAT},
                         {RGB8, 32, 32, LINEAR_MIPMAP_LINEAR, REPEAT},  {RG8, 16, 16, LINEAR_MIPMAP_NEAREST, MIRRORED_REPEAT},
@@ -448,7 +449,15 @@ TEST_CASE("textures sampled 16 lanes at a time give the floats of one lane at a 
                         {RGBA8, 48, 16, LINEAR_MIPMAP_LINEAR, REPEAT},  {R8, 32, 16, LINEAR_MIPMAP_LINEAR, REPEAT},
                         {RG8, 16, 16, LINEAR, REPEAT},                 {RG8, 8, 32, LINEAR_MIPMAP_LINEAR, REPEAT},
                         {SRGB8_ALPHA8, 64, 32, LINEAR_MIPMAP_LINEAR, REPEAT}, {SRGB8, 32, 32, LINEAR, REPEAT},
-                        {SRGB8_ALPHA8, 24, 16, LINEAR_MIPMAP_LINEAR, CLAMP_TO_EDGE}};
+                        {SRGB8_ALPHA8, 24, 16, LINEAR_MIPMAP_LINEAR, CLAMP_TO_EDGE},
+                        {RGBA8, 64, 32, LINEAR_MIPMAP_LINEAR, CLAMP_TO_EDGE}, {RGBA8, 32, 64, LINEAR_MIPMAP_LINEAR, MIRRORED_REPEAT},
+                        {RGBA8, 37, 23, LINEAR_MIPMAP_LINEAR, MIRRORED_REPEAT}, {RGBA8, 100, 3, LINEAR, MIRRORED_REPEAT},
+                        {RGB8, 45, 27, LINEAR_MIPMAP_LINEAR, REPEAT, CLAMP_TO_EDGE},
+                        {RG8, 13, 16, LINEAR_MIPMAP_LINEAR, CLAMP_TO_EDGE, MIRRORED_REPEAT},
+                        {R8, 1, 5, LINEAR_MIPMAP_LINEAR, MIRRORED_REPEAT, REPEAT},
+                        {SRGB8_ALPHA8, 20, 12, LINEAR, MIRRORED_REPEAT, REPEAT},
+                        {RGBA8, 16, 16, LINEAR_MIPMAP_LINEAR, CLAMP_TO_BORDER},
+                        {RGBA8, 30, 30, NEAREST, MIRRORED_REPEAT}};
   std::mt19937 rng(5);
   std::uniform_real_distribution<float> coord(-2.0f, 2.0f), deriv(-0.3f, 0.3f);
   for (const Case& c : cases) {
@@ -462,17 +471,24 @@ TEST_CASE("textures sampled 16 lanes at a time give the floats of one lane at a 
         for (int i = 0; i < c.w; ++i) detail::StoreTexel(l, i, j, glm::vec4(coord(rng), coord(rng), 0.5f, 1.0f));
     detail::GenerateMipmaps(t);
     t.params.min_filter = c.min_filter;
-    t.params.wrap_s = t.params.wrap_t = c.wrap;
+    t.params.wrap_s = c.wrap;
+    t.params.wrap_t = c.wrap_t ? c.wrap_t : c.wrap;
     const detail::TextureView view = detail::MakeView(t);
     REQUIRE(view.complete);
+    // The cases the vector path takes are those its rule names (so that none is compared with itself unseen).
+    auto vector_wrap = [](Enum w) { return w == REPEAT || w == CLAMP_TO_EDGE || w == MIRRORED_REPEAT; };
+    CHECK((view.wide != detail::TextureView::Wide::kNone) ==
+          ((c.min_filter == LINEAR || c.min_filter == LINEAR_MIPMAP_LINEAR) && vector_wrap(t.params.wrap_s) &&
+           vector_wrap(t.params.wrap_t)));
     Textures tx;
     tx.unit_2d[0] = &view;
     int compared = 0;
     for (int round = 0; round < 200; ++round) {
       Textures::Lanes lanes;
+      const float far = round % 3 == 0 ? 700.0f : 1.0f;  // many periods away: the wrap's modulo at work
       for (int k = 0; k < 16; ++k) {
-        lanes.s[k] = coord(rng);
-        lanes.t[k] = coord(rng);
+        lanes.s[k] = coord(rng) * far;
+        lanes.t[k] = coord(rng) * (k % 2 ? far : 1.0f);
         lanes.ds_dx[k] = deriv(rng) * (round % 4 == 0 ? 0.01f : 1.0f);
         lanes.dt_dx[k] = deriv(rng);
         lanes.ds_dy[k] = deriv(rng);
@@ -483,6 +499,8 @@ TEST_CASE("textures sampled 16 lanes at a time give the floats of one lane at a 
         lanes.ds_dx[5] = lanes.dt_dx[5] = lanes.ds_dy[5] = lanes.dt_dy[5] = 0.0f;
         lanes.dt_dy[6] = std::numeric_limits<float>::infinity();
         lanes.t[7] = 3e9f;
+        lanes.s[8] = -3e9f;
+        lanes.s[9] = -1e6f;
       }
       float out[4][16];
       const float bias = round % 5 == 0 ? 0.7f : 0.0f;
