@@ -598,12 +598,7 @@ TextureView MakeView(const TextureObject& texture) {
     if (p.min_filter == LINEAR) view.fast = TextureView::Fast::kRepeatLinear;
     if (p.min_filter == LINEAR_MIPMAP_LINEAR) view.fast = TextureView::Fast::kRepeatTrilinear;
   }
-  auto wide_wrap = [](Enum w) { return w == REPEAT || w == CLAMP_TO_EDGE || w == MIRRORED_REPEAT; };
-  if (texture.target == TEXTURE_2D && !view.depth && view.anisotropy <= 1.0f && wide_wrap(p.wrap_s) &&
-      wide_wrap(p.wrap_t) && p.mag_filter == LINEAR) {
-    if (p.min_filter == LINEAR) view.wide = TextureView::Wide::kLinear;
-    if (p.min_filter == LINEAR_MIPMAP_LINEAR) view.wide = TextureView::Wide::kTrilinear;
-  }
+  view.wide = texture.target == TEXTURE_2D && !view.depth && view.anisotropy <= 1.0f;
   return view;
 }
 

@@ -202,11 +202,9 @@ struct TextureView {
   // comparison.
   enum class Fast : unsigned char { kNone, kRepeatLinear, kRepeatTrilinear };
   Fast fast = Fast::kNone;
-  // What the vector path (Textures::SampleLanes) samples for 8-bit layouts: a 2D colour texture, LINEAR
-  // magnification, LINEAR (kLinear) or LINEAR_MIPMAP_LINEAR (kTrilinear) minification, REPEAT, CLAMP_TO_EDGE or
-  // MIRRORED_REPEAT in s and t, any size, no anisotropy.
-  enum class Wide : unsigned char { kNone, kLinear, kTrilinear };
-  Wide wide = Wide::kNone;
+  // Whether the vector path (Textures::SampleLanes) samples the view: a 2D colour texture without anisotropy, any
+  // layout, filters, wrap modes and size.
+  bool wide = false;
   bool operator==(const TextureView&) const = default;
 };
 

@@ -3,8 +3,9 @@
 //
 // Texels are filtered in their storage units (the bytes 0..255 of fixed-point formats, the floats of the others)
 // and the result is divided by the format's scale (255 or 1) once, at the end. The wide form (SampleLanes) computes
-// the common 2D case for a whole block of lanes with vector instructions and the same operations, in the same
-// order, as the one-lane form, so both give the same floats.
+// 2D sampling (every filter, wrap mode, size and layout; not anisotropic filtering) for a whole block of lanes with
+// vector instructions and the same operations, in the same order, as the one-lane form, so both give the same
+// floats.
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -281,13 +282,18 @@ int CubeFace(glm::vec3 r) {
 __attribute__((noinline)) glm::vec4 Sample2D(const TextureView& v, glm::vec2 uv, glm::vec2 duv_dx, glm::vec2 duv_dy,
                                              float bias);
 
-// ---- The common 2D case for a block of lanes --------------------------------------------------------------------
+// ---- 2D sampling for a block of lanes -----------------------------------------------------------------------
 //
-// W lanes at a time (4 with SSE2, 8 with AVX2, 16 with AVX-512), each lane's operations those of SampleFace above
-// (for LINEAR or LINEAR_MIPMAP_LINEAR, with LINEAR magnification and REPEAT, CLAMP_TO_EDGE or MIRRORED_REPEAT) in
-// the same order. The levels a chunk of lanes needs are taken one at a time (usually one or two), and each is sampled
-// for all its lanes: texel addresses, texel loads, weights side by side. Lanes whose rho^2 is not a normal positive
-// float (zero or NaN derivatives, say) take the one-lane path.
+// W lanes at a time (4 with SSE2, 8 with AVX2, 16 with AVX-512), each lane's operations those of SampleFace above in
+// the same order, for every filter pair, wrap mode and size. The levels a chunk of lanes needs are taken one at a
+// time (usually one or two), and each is filtered for all its lanes: texel addresses, wraps, texel loads, weights
+// side by side. 8-bit layouts load their texels in vector form (a row's two texels in one 64-bit load); the other
+// layouts read each texel with RawTexel, one lane at a time, the rest in vector form. Lanes whose rho^2 is not a
+// normal positive float (zero or NaN derivatives, say) take the one-lane path.
+//
+// GCC 12 compiles a select whose mask is not plainly one comparison (an OR of two, a mask passed through a select)
+// into a branch per lane, about 80 cycles a block at 16 lanes; the masks below are kept single comparisons, or
+// turned into bits (MaskToBits, SignBits) before they are combined.
 
 using detail::V;
 
@@ -383,7 +389,7 @@ SOFTGL_INLINE typename V<W>::I FloorMod(typename V<W>::I i, int n) {
   return r;
 }
 
-// Wrap() for W lanes: REPEAT, CLAMP_TO_EDGE or MIRRORED_REPEAT (no border texel), the same indices.
+// Wrap() for W lanes, the same indices: -1 for a border texel (CLAMP_TO_BORDER).
 template <int W>
 SOFTGL_INLINE typename V<W>::I WrapLanes(Enum mode, typename V<W>::I i, int size) {
   using I = typename V<W>::I;
@@ -392,66 +398,186 @@ SOFTGL_INLINE typename V<W>::I WrapLanes(Enum mode, typename V<W>::I i, int size
     i = i < 0 ? I{} : i;
     return hi < i ? hi : i;
   }
+  // (One unsigned comparison for i < 0 or i >= size: GCC 12 compiles a select on an OR of two comparisons lane by
+  // lane.)
+  using U = typename V<W>::U;
+  if (mode == CLAMP_TO_BORDER) return (U(i) >= unsigned(size)) ? I{} - 1 : i;
   if (mode == REPEAT) return FloorMod<W>(i, size);
   const I a = FloorMod<W>(i, 2 * size) - size;  // MIRRORED_REPEAT
   const I mirror = a >= 0 ? a : -(a + 1);
   return (size - 1) - mirror;
 }
 
-// Bilinear samples of 8-bit level `lv` (RGBA8 and RGB8, RG8 or R8: Bytes 4, 2 or 1 a texel) for the lanes of
-// `mask` (for every lane if All), in byte units, written into r, g, b, a; channels the layout lacks read 0 (alpha
-// 255), as Raw() has them. Texel indices wrap by wrap_s and wrap_t (WrapLanes).
+// TexelCoord for W lanes: s * size, NaN -> 0, clamped to [-1e9, 1e9] (std::clamp's order of tests).
+template <int W>
+SOFTGL_INLINE typename V<W>::F TexelCoordLanes(typename V<W>::F x, float size) {
+  using F = typename V<W>::F;
+  F u = x * size;
+  u = u == u ? u : F{} + 0.0f;
+  u = F{} + 1e9f < u ? F{} + 1e9f : u;
+  return u < -1e9f ? F{} - 1e9f : u;
+}
+
+// What the filters of one 2D view need: its wrap modes, whether one is CLAMP_TO_BORDER, and the border colour.
+template <int W>
+struct LanesWrap {
+  Enum s, t;
+  bool border;
+  typename V<W>::F border_raw[4];
+};
+
+// The four channels of each lane's 8-bit texel x (Channel).
+template <int W, int Bytes, bool Srgb>
+SOFTGL_INLINE void Channels(typename V<W>::U x, typename V<W>::F out[4]) {
+  out[0] = Channel<W, Bytes, 0, Srgb>(x);
+  out[1] = Channel<W, Bytes, 1, Srgb>(x);
+  out[2] = Channel<W, Bytes, 2, Srgb>(x);
+  out[3] = Channel<W, Bytes, 3, Srgb>(x);
+}
+
+// Texel `index` (row * width + column) of level `lv` for each lane of `mask` (every lane if All), in any layout,
+// as Sampled() gives it (RawTexel: one lane at a time); 0 in the other lanes.
+template <int W, bool All>
+SOFTGL_INLINE void GatherTexels(const TextureLevel& lv, typename V<W>::I index, typename V<W>::I mask,
+                                typename V<W>::F out[4]) {
+  using F = typename V<W>::F;
+  alignas(64) std::int32_t at[W];
+  detail::StoreVec(at, index);
+  alignas(64) float v[4][W] = {};
+  const std::uint32_t lanes = All ? (1u << W) - 1 : detail::MaskToBits<W>(mask, 0);
+  for (std::uint32_t bits = lanes; bits != 0; bits &= bits - 1) {
+    const int l = __builtin_ctz(bits);
+    const glm::vec4 t = detail::RawTexel(lv.layout, lv.data.data() + std::size_t(at[l]) * std::size_t(lv.bytes));
+    for (int c = 0; c < 4; ++c) v[c][l] = t[c];
+  }
+  for (int c = 0; c < 4; ++c) out[c] = detail::LoadVec<F>(v[c]);
+}
+
+// Bilinear samples of level `lv` for the lanes of `mask` (for every lane if All), in storage units, written into
+// out (r, g, b, a): of an 8-bit layout (RGBA8 and RGB8, RG8 or R8: Bytes 4, 2 or 1 a texel; channels the layout
+// lacks read 0, alpha 255, as Raw() has them), or of any layout (Bytes 0: its texels read one lane at a time).
+// Texel indices wrap as `wr` says (WrapLanes); a border texel is the border colour.
 template <int W, int Bytes, bool Srgb, bool All = false>
-SOFTGL_INLINE void BilinearUnorm8(const TextureLevel& lv, Enum wrap_s, Enum wrap_t, typename V<W>::F s,
+SOFTGL_INLINE void BilinearLanes(const TextureLevel& lv, const LanesWrap<W>& wr, typename V<W>::F s,
                                  typename V<W>::F t, typename V<W>::I mask, typename V<W>::F out[4]) {
   using F = typename V<W>::F;
   using I = typename V<W>::I;
   using U = typename V<W>::U;
-  // TexelCoord: s * size, NaN -> 0, clamped to [-1e9, 1e9] (std::clamp's order of tests).
-  auto texel_coord = [](F x, float size) SOFTGL_WIDE_LAMBDA {
-    F u = x * size;
-    u = u == u ? u : F{} + 0.0f;
-    u = F{} + 1e9f < u ? F{} + 1e9f : u;
-    return u < -1e9f ? F{} - 1e9f : u;
-  };
-  const F u = texel_coord(s, float(lv.width)), v = texel_coord(t, float(lv.height));
+  const F u = TexelCoordLanes<W>(s, float(lv.width)), v = TexelCoordLanes<W>(t, float(lv.height));
   const F fu = u - 0.5f, fv = v - 0.5f;
   const F flu = FloorF<W>(fu), flv = FloorF<W>(fv);
   const F a = fu - flu, b = fv - flv;
   const I i0 = __builtin_convertvector(flu, I), j0 = __builtin_convertvector(flv, I);
-  const I c0 = WrapLanes<W>(wrap_s, i0, lv.width), c1 = WrapLanes<W>(wrap_s, i0 + 1, lv.width);
-  const I r0 = WrapLanes<W>(wrap_t, j0, lv.height) * lv.width, r1 = WrapLanes<W>(wrap_t, j0 + 1, lv.height) * lv.width;
-  const F w00 = (1 - a) * (1 - b), w10 = a * (1 - b), w01 = (1 - a) * b, w11 = a * b;
-  // Each row's two texels from one 64-bit read at its left texel (lanes outside the mask read at texel 0, always
-  // there, and are discarded below); the level's padding covers a read at its last texel.
-  using D = typename V<W>::D;
-  const std::uint8_t* base = lv.data.data();
-  const I o0 = (All ? r0 + c0 : (r0 + c0) & mask) * Bytes, o1 = (All ? r1 + c0 : (r1 + c0) & mask) * Bytes;
-  const D p0 = LoadPairs<W>(base, o0, std::make_index_sequence<W>()),
-          p1 = LoadPairs<W>(base, o1, std::make_index_sequence<W>());
-  U t00 = __builtin_convertvector(p0, U), t01 = __builtin_convertvector(p1, U);
-  U t10 = __builtin_convertvector(p0 >> (8 * Bytes), U), t11 = __builtin_convertvector(p1 >> (8 * Bytes), U);
-  // Where the right-hand texel is not the next one in the row (it wrapped, was clamped or mirrored), it is read
-  // on its own.
-  const I apart = c1 != c0 + 1;
-  for (std::uint32_t wrap = detail::MaskToBits<W>(All ? apart : apart & mask, 0); wrap != 0; wrap &= wrap - 1) {
-    const int l = __builtin_ctz(wrap);
-    std::uint32_t w0, w1;
-    std::memcpy(&w0, base + std::size_t(r0[l] + c1[l]) * Bytes, 4);
-    std::memcpy(&w1, base + std::size_t(r1[l] + c1[l]) * Bytes, 4);
-    t10[l] = w0;
-    t11[l] = w1;
+  const I c0 = WrapLanes<W>(wr.s, i0, lv.width), c1 = WrapLanes<W>(wr.s, i0 + 1, lv.width);
+  const I q0 = WrapLanes<W>(wr.t, j0, lv.height), q1 = WrapLanes<W>(wr.t, j0 + 1, lv.height);
+  // (A border texel's index, -1, reads texel 0 of its row or column instead, replaced below.)
+  I r0 = q0, r1 = q1, k0 = c0, k1 = c1;
+  if (wr.border) {
+    r0 = r0 < 0 ? I{} : r0;
+    r1 = r1 < 0 ? I{} : r1;
+    k0 = k0 < 0 ? I{} : k0;
+    k1 = k1 < 0 ? I{} : k1;
   }
-  auto channel_sum = [&](auto c) SOFTGL_WIDE_LAMBDA {
-    const F sum = w00 * Channel<W, Bytes, c, Srgb>(t00) + w10 * Channel<W, Bytes, c, Srgb>(t10) +
-                  w01 * Channel<W, Bytes, c, Srgb>(t01) + w11 * Channel<W, Bytes, c, Srgb>(t11);
+  r0 *= lv.width;
+  r1 *= lv.width;
+  const F w00 = (1 - a) * (1 - b), w10 = a * (1 - b), w01 = (1 - a) * b, w11 = a * b;
+  // Channel c's weighted sum of the four texels (with `border`, the border colour for border texels), into out.
+  auto channel_sum = [&](auto border, int c, F x00, F x10, F x01, F x11) SOFTGL_WIDE_LAMBDA {
+    if constexpr (decltype(border)::value) {
+      x00 = ((c0 | q0) >= 0) ? x00 : wr.border_raw[c];
+      x10 = ((c1 | q0) >= 0) ? x10 : wr.border_raw[c];
+      x01 = ((c0 | q1) >= 0) ? x01 : wr.border_raw[c];
+      x11 = ((c1 | q1) >= 0) ? x11 : wr.border_raw[c];
+    }
+    const F sum = w00 * x00 + w10 * x10 + w01 * x01 + w11 * x11;
     if constexpr (All) out[c] = sum;
-    else out[c] = mask ? sum : out[c];
+    else out[c] = mask != 0 ? sum : out[c];
   };
-  channel_sum(std::integral_constant<int, 0>());
-  channel_sum(std::integral_constant<int, 1>());
-  channel_sum(std::integral_constant<int, 2>());
-  channel_sum(std::integral_constant<int, 3>());
+  if constexpr (Bytes == 0) {
+    F x00[4], x10[4], x01[4], x11[4];
+    GatherTexels<W, All>(lv, r0 + k0, mask, x00);
+    GatherTexels<W, All>(lv, r0 + k1, mask, x10);
+    GatherTexels<W, All>(lv, r1 + k0, mask, x01);
+    GatherTexels<W, All>(lv, r1 + k1, mask, x11);
+    for (int c = 0; c < 4; ++c) {
+      if (wr.border) channel_sum(std::true_type(), c, x00[c], x10[c], x01[c], x11[c]);
+      else channel_sum(std::false_type(), c, x00[c], x10[c], x01[c], x11[c]);
+    }
+  } else {
+    // Each row's two texels from one 64-bit read at its left texel (lanes outside the mask read at texel 0,
+    // always there, and are discarded below); the level's padding covers a read at its last texel.
+    using D = typename V<W>::D;
+    const std::uint8_t* base = lv.data.data();
+    const I o0 = (All ? r0 + k0 : (r0 + k0) & mask) * Bytes, o1 = (All ? r1 + k0 : (r1 + k0) & mask) * Bytes;
+    const D p0 = LoadPairs<W>(base, o0, std::make_index_sequence<W>()),
+            p1 = LoadPairs<W>(base, o1, std::make_index_sequence<W>());
+    U t00 = __builtin_convertvector(p0, U), t01 = __builtin_convertvector(p1, U);
+    U t10 = __builtin_convertvector(p0 >> (8 * Bytes), U), t11 = __builtin_convertvector(p1 >> (8 * Bytes), U);
+    // Where the right-hand texel is not the next one in the row (it wrapped, was clamped or mirrored), it is read
+    // on its own (not where it or both rows are border texels: the border colour replaces them).
+    // (As bits: GCC 12 compiles an OR of two comparisons lane by lane.)
+    const std::uint32_t apart =
+        detail::MaskToBits<W>(All ? k1 != k0 + 1 : (k1 != k0 + 1) & mask, 0) & ~detail::SignBits<W>(c1 | (q0 & q1));
+    for (std::uint32_t wrap = apart; wrap != 0; wrap &= wrap - 1) {
+      const int l = __builtin_ctz(wrap);
+      std::uint32_t w0, w1;
+      std::memcpy(&w0, base + std::size_t(r0[l] + k1[l]) * Bytes, 4);
+      std::memcpy(&w1, base + std::size_t(r1[l] + k1[l]) * Bytes, 4);
+      t10[l] = w0;
+      t11[l] = w1;
+    }
+    // One channel at a time, decoded where it is summed (fewer registers live than four decoded texels); the
+    // border's selects in a form of their own.
+    auto sums = [&](auto border) SOFTGL_WIDE_LAMBDA {
+      auto sum_of = [&](auto c) SOFTGL_WIDE_LAMBDA {
+        channel_sum(border, c, Channel<W, Bytes, c, Srgb>(t00), Channel<W, Bytes, c, Srgb>(t10),
+                    Channel<W, Bytes, c, Srgb>(t01), Channel<W, Bytes, c, Srgb>(t11));
+      };
+      sum_of(std::integral_constant<int, 0>());
+      sum_of(std::integral_constant<int, 1>());
+      sum_of(std::integral_constant<int, 2>());
+      sum_of(std::integral_constant<int, 3>());
+    };
+    if (wr.border) sums(std::true_type());
+    else sums(std::false_type());
+  }
+}
+
+// NEAREST (FilterLevel's) of level `lv` for the lanes of `mask`, as BilinearLanes gives LINEAR: the texel that
+// holds (u, v), wrapped, or the border colour.
+template <int W, int Bytes, bool Srgb, bool All = false>
+SOFTGL_INLINE void NearestLanes(const TextureLevel& lv, const LanesWrap<W>& wr, typename V<W>::F s,
+                                typename V<W>::F t, typename V<W>::I mask, typename V<W>::F out[4]) {
+  using F = typename V<W>::F;
+  using I = typename V<W>::I;
+  using U = typename V<W>::U;
+  const F u = TexelCoordLanes<W>(s, float(lv.width)), v = TexelCoordLanes<W>(t, float(lv.height));
+  const I c = WrapLanes<W>(wr.s, __builtin_convertvector(FloorF<W>(u), I), lv.width);
+  const I q = WrapLanes<W>(wr.t, __builtin_convertvector(FloorF<W>(v), I), lv.height);
+  const I at = (q < 0 ? I{} : q) * lv.width + (c < 0 ? I{} : c);
+  F x[4];
+  if constexpr (Bytes == 0) {
+    GatherTexels<W, All>(lv, at, mask, x);
+  } else {
+    const U texel = __builtin_convertvector(
+        LoadPairs<W>(lv.data.data(), (All ? at : at & mask) * Bytes, std::make_index_sequence<W>()), U);
+    Channels<W, Bytes, Srgb>(texel, x);
+  }
+  const I in = (c | q) >= 0;
+  for (int ch = 0; ch < 4; ++ch) {
+    if (wr.border) x[ch] = in ? x[ch] : wr.border_raw[ch];
+    if constexpr (All) out[ch] = x[ch];
+    else out[ch] = mask != 0 ? x[ch] : out[ch];
+  }
+}
+
+// Level `lv` filtered for the lanes of `mask`: LINEAR where `linear` is set, else NEAREST.
+template <int W, int Bytes, bool Srgb>
+SOFTGL_INLINE void FilterLanes(const TextureLevel& lv, const LanesWrap<W>& wr, typename V<W>::F s,
+                               typename V<W>::F t, typename V<W>::I mask, typename V<W>::I linear,
+                               typename V<W>::F out[4]) {
+  if (detail::MaskToBits<W>(mask & linear, 0) != 0) BilinearLanes<W, Bytes, Srgb>(lv, wr, s, t, mask & linear, out);
+  if (detail::MaskToBits<W>(mask & ~linear, 0) != 0) NearestLanes<W, Bytes, Srgb>(lv, wr, s, t, mask & ~linear, out);
 }
 
 // Lambda() for W lanes; false for lanes whose rho^2 is not a normal positive float.
@@ -485,53 +611,106 @@ SOFTGL_INLINE typename V<W>::I LambdaLanes(const TextureView& view, const Textur
   return normal;
 }
 
-template <int W, int Bytes, bool Srgb>
-SOFTGL_INLINE void SampleLinearLanes(const TextureView& view, const Textures::Lanes& c, float bias,
+// SampleFace for W lanes of a 2D view (Bytes: the 8-bit layout's bytes a texel, 0 for any layout): SampleMip's level
+// choice (magnification, or one level, or two with a weight), then each level's lanes filtered together. Linear: the
+// form for LINEAR magnification with LINEAR or LINEAR_MIPMAP_LINEAR minification, with a shorter level choice.
+template <int W, int Bytes, bool Srgb, bool Linear>
+SOFTGL_INLINE void SampleTexelLanes(const TextureView& view, const Textures::Lanes& c, float bias,
                                      float out[4][16]) {
   using F = typename V<W>::F;
   using I = typename V<W>::I;
   const auto& levels = view.texture->levels[0];
-  const bool linear_only = view.wide == TextureView::Wide::kLinear;
-  const Enum ws = view.texture->params.wrap_s, wt = view.texture->params.wrap_t;
+  const SamplerParams& p = view.texture->params;
+  LanesWrap<W> wr{p.wrap_s, p.wrap_t, p.wrap_s == CLAMP_TO_BORDER || p.wrap_t == CLAMP_TO_BORDER, {}};
+  for (int ch = 0; ch < 4; ++ch) wr.border_raw[ch] = F{} + view.border_raw[ch];
+  // 0: no mipmaps (NEAREST, LINEAR); 1: *_MIPMAP_NEAREST; 2: *_MIPMAP_LINEAR.
+  const int mip = p.min_filter == NEAREST || p.min_filter == LINEAR                             ? 0
+                  : p.min_filter == NEAREST_MIPMAP_NEAREST || p.min_filter == LINEAR_MIPMAP_NEAREST ? 1
+                                                                                                    : 2;
+  const float mag_below = (p.mag_filter == LINEAR && mip == 1) ? 0.5f : 0.0f;
+  const I mag_linear = I{} + (p.mag_filter == LINEAR ? -1 : 0);
+  const I min_linear = I{} + (p.min_filter == LINEAR || p.min_filter == LINEAR_MIPMAP_NEAREST ||
+                                      p.min_filter == LINEAR_MIPMAP_LINEAR
+                                  ? -1
+                                  : 0);
+  const F fbase = F{} + float(view.base), fq = F{} + float(view.q);
   for (int l0 = 0; l0 < 16; l0 += W) {
     F lam;
     const I normal = LambdaLanes<W>(view, c, l0, bias, lam);
-    // SampleRepeat's choice: one level (base or q) or two (d1, d1 + 1) with weight f.
-    const F fl = FloorF<W>(lam);
-    const I single_base = (lam <= 0.0f) | (I{} + (linear_only ? -1 : 0));
-    const I single_q = ~single_base & (F{} + float(view.base) + lam >= float(view.q));
-    const I two = ~single_base & ~single_q;
-    I level_a = __builtin_convertvector(fl, I) + view.base;
-    level_a = single_base ? I{} + view.base : (single_q ? I{} + view.q : level_a);
-    const F f = two ? lam - fl : F{} + 0.0f;
+    // SampleMip's choice: the level (level_a), a second one (level_a + 1) where `two`, with weight f; LINEAR
+    // filtering where `linear` is set, NEAREST elsewhere.
+    I level_a = I{} + view.base, two = I{}, linear = I{} - 1;
+    F f = F{} + 0.0f;
+    if constexpr (Linear) {
+      // LINEAR magnification, LINEAR or LINEAR_MIPMAP_LINEAR minification: one level (base or q) or two (d1,
+      // d1 + 1) with weight f.
+      const F fl = FloorF<W>(lam);
+      const I single_base = (lam <= 0.0f) | (I{} + (mip == 0 ? -1 : 0));
+      const I single_q = ~single_base & (fbase + lam >= fq);
+      two = ~single_base & ~single_q;
+      level_a = __builtin_convertvector(fl, I) + view.base;
+      level_a = single_base ? I{} + view.base : (single_q ? I{} + view.q : level_a);
+      f = two ? lam - fl : F{} + 0.0f;
+    } else {
+      const I mag = lam <= mag_below;
+      if (mip == 1) {
+        const F d = fbase + (F{} - FloorF<W>(F{} - (lam + 0.5f))) - 1.0f;  // base + ceil(lambda + 1/2) - 1
+        level_a = lam <= 0.5f ? level_a : __builtin_convertvector(fq < d ? fq : d, I);
+      } else if (mip == 2) {
+        const F fl = FloorF<W>(lam);
+        const I single_q = fbase + lam >= fq;
+        level_a = single_q ? I{} + view.q : __builtin_convertvector(fl, I) + view.base;
+        two = ~single_q;
+        f = lam - fl;
+      }
+      level_a = mag ? I{} + view.base : level_a;
+      two &= ~mag;
+      f = two != 0 ? f : F{} + 0.0f;
+      linear = mag ? mag_linear : min_linear;
+    }
     const F s = LoadF<W>(c.s + l0), t = LoadF<W>(c.t + l0);
     F ra[4] = {}, rb[4] = {};
-    // Each level a lane needs, first and second, for the lanes that need it.
+    // Each level a lane needs, first (into ra) and second (level_a + 1, into rb), filtered for the lanes that need
+    // it: usually one level for all. (The masks stay results of comparisons: GCC 12 turns a select on a mask it
+    // cannot see is one into a branch per lane.)
     const std::uint32_t normal_bits = detail::MaskToBits<W>(normal, 0);
-    // (The masks stay results of comparisons: GCC 12 turns a select on a mask it cannot see is one into a branch
-    // per lane.)
-    I pending = normal;
-    if (normal_bits == (1u << W) - 1 && detail::MaskToBits<W>(level_a != level_a[0], 0) == 0) {
+    const std::uint32_t linear_bits = detail::MaskToBits<W>(linear, 0);
+    bool usual = false;
+    if constexpr (Bytes != 0) {
       // The usual block: every lane on the vector path, on the same first level (so a second level, where any
-      // lane needs one, exists for all).
-      BilinearUnorm8<W, Bytes, Srgb, true>(levels[level_a[0]], ws, wt, s, t, normal, ra);
-      if (detail::MaskToBits<W>(two, 0) != 0)
-        BilinearUnorm8<W, Bytes, Srgb, true>(levels[level_a[0] + 1], ws, wt, s, t, normal, rb);
-      pending = I{};
+      // lane needs one, exists for all) with the same filter; filtered with the forms for every lane, their
+      // results kept in registers.
+      usual = normal_bits == (1u << W) - 1 && (linear_bits == 0 || linear_bits == normal_bits) &&
+              detail::MaskToBits<W>(level_a != level_a[0], 0) == 0;
+      if (usual && linear_bits != 0) {
+        BilinearLanes<W, Bytes, Srgb, true>(levels[level_a[0]], wr, s, t, normal, ra);
+        if (detail::MaskToBits<W>(two, 0) != 0)
+          BilinearLanes<W, Bytes, Srgb, true>(levels[level_a[0] + 1], wr, s, t, normal, rb);
+      } else if (usual) {
+        NearestLanes<W, Bytes, Srgb, true>(levels[level_a[0]], wr, s, t, normal, ra);
+        if (detail::MaskToBits<W>(two, 0) != 0)
+          NearestLanes<W, Bytes, Srgb, true>(levels[level_a[0] + 1], wr, s, t, normal, rb);
+      }
     }
-    for (std::uint32_t bits = detail::MaskToBits<W>(pending, 0); bits != 0; bits = detail::MaskToBits<W>(pending, 0)) {
-      const int L = level_a[__builtin_ctz(bits)];
-      const I mask = pending & (level_a == L);
-      BilinearUnorm8<W, Bytes, Srgb>(levels[L], ws, wt, s, t, mask, ra);
-      const I second = mask & two;
-      if (detail::MaskToBits<W>(second, 0) != 0)
-        BilinearUnorm8<W, Bytes, Srgb>(levels[L + 1], ws, wt, s, t, second, rb);
-      pending &= ~mask;
+    // Otherwise each level the lanes need, for the lanes that need it (ra and rb named, not chosen by a pointer,
+    // so that they can stay in registers).
+    auto each_level = [&](I pending, I level, F r[4]) SOFTGL_WIDE_LAMBDA {
+      for (std::uint32_t bits = detail::MaskToBits<W>(pending, 0); bits != 0;
+           bits = detail::MaskToBits<W>(pending, 0)) {
+        const int L = level[__builtin_ctz(bits)];
+        const I mask = pending & (level == L);
+        FilterLanes<W, Bytes, Srgb>(levels[L], wr, s, t, mask, linear, r);
+        pending &= ~mask;
+      }
+    };
+    if (!usual) {
+      each_level(normal, level_a, ra);
+      each_level(normal & two, level_a + 1, rb);
     }
     for (int ch = 0; ch < 4; ++ch) {
       const F one = ra[ch];
       const F lerp = (1.0f - f) * ra[ch] + f * rb[ch];
-      const F v = (two ? lerp : one) / 255.0f;
+      const F v = (two != 0 ? lerp : one) / view.scale;
       std::memcpy(&out[ch][l0], &v, sizeof v);
     }
     // Lanes the vector path does not take: one lane at a time.
@@ -544,37 +723,45 @@ SOFTGL_INLINE void SampleLinearLanes(const TextureView& view, const Textures::La
   }
 }
 
-using SampleLinearLanesFn = void (*)(const TextureView&, const Textures::Lanes&, float, float[4][16]);
+using SampleTexelLanesFn = void (*)(const TextureView&, const Textures::Lanes&, float, float[4][16]);
 
 // Each layout's form (an sRGB one for four bytes), for each instruction set.
-template <int Bytes, bool Srgb>
-void SampleLinearLanesBase(const TextureView& v, const Textures::Lanes& c, float bias, float out[4][16]) {
-  SampleLinearLanes<4, Bytes, Srgb>(v, c, bias, out);
+template <int Bytes, bool Srgb, bool Linear>
+void SampleTexelLanesBase(const TextureView& v, const Textures::Lanes& c, float bias, float out[4][16]) {
+  SampleTexelLanes<4, Bytes, Srgb, Linear>(v, c, bias, out);
 }
 #if defined(SOFTGL_HAS_DISPATCH)
-template <int Bytes, bool Srgb>
-SOFTGL_TARGET_AVX2 void SampleLinearLanesAvx2(const TextureView& v, const Textures::Lanes& c, float bias,
-                                              float out[4][16]) {
-  SampleLinearLanes<8, Bytes, Srgb>(v, c, bias, out);
+template <int Bytes, bool Srgb, bool Linear>
+SOFTGL_TARGET_AVX2 void SampleTexelLanesAvx2(const TextureView& v, const Textures::Lanes& c, float bias,
+                                             float out[4][16]) {
+  SampleTexelLanes<8, Bytes, Srgb, Linear>(v, c, bias, out);
 }
-template <int Bytes, bool Srgb>
-SOFTGL_TARGET_AVX512 void SampleLinearLanesAvx512(const TextureView& v, const Textures::Lanes& c, float bias,
-                                                  float out[4][16]) {
-  SampleLinearLanes<16, Bytes, Srgb>(v, c, bias, out);
+template <int Bytes, bool Srgb, bool Linear>
+SOFTGL_TARGET_AVX512 void SampleTexelLanesAvx512(const TextureView& v, const Textures::Lanes& c, float bias,
+                                                 float out[4][16]) {
+  SampleTexelLanes<16, Bytes, Srgb, Linear>(v, c, bias, out);
 }
 #endif
 
-
-// The vector path for an 8-bit view (null for other layouts).
-SampleLinearLanesFn SampleLinearLanesFor(const TextureView& view) {
-  static const SampleLinearLanesFn by_bytes[4] = {
-      SOFTGL_CHOOSE(SampleLinearLanes, <1, false>), SOFTGL_CHOOSE(SampleLinearLanes, <2, false>),
-      SOFTGL_CHOOSE(SampleLinearLanes, <4, false>), SOFTGL_CHOOSE(SampleLinearLanes, <4, true>)};
+// The vector path for a view: its 8-bit layout's, or the one for any layout (null for none). The 8-bit layouts
+// have a second form for LINEAR magnification with LINEAR or LINEAR_MIPMAP_LINEAR minification (the usual
+// states), whose level choice is shorter.
+SampleTexelLanesFn SampleTexelLanesFor(const TextureView& view) {
+  static const SampleTexelLanesFn by_bytes[2][4] = {
+      {SOFTGL_CHOOSE(SampleTexelLanes, <1, false, false>), SOFTGL_CHOOSE(SampleTexelLanes, <2, false, false>),
+       SOFTGL_CHOOSE(SampleTexelLanes, <4, false, false>), SOFTGL_CHOOSE(SampleTexelLanes, <4, true, false>)},
+      {SOFTGL_CHOOSE(SampleTexelLanes, <1, false, true>), SOFTGL_CHOOSE(SampleTexelLanes, <2, false, true>),
+       SOFTGL_CHOOSE(SampleTexelLanes, <4, false, true>), SOFTGL_CHOOSE(SampleTexelLanes, <4, true, true>)}};
+  static const SampleTexelLanesFn any_layout = SOFTGL_CHOOSE(SampleTexelLanes, <0, false, false>);
+  const SamplerParams& p = view.texture->params;
+  const bool linear =
+      p.mag_filter == LINEAR && (p.min_filter == LINEAR || p.min_filter == LINEAR_MIPMAP_LINEAR);
   switch (view.layout) {
-    case TexelLayout::kUnorm8x1: return by_bytes[0];
-    case TexelLayout::kUnorm8x2: return by_bytes[1];
-    case TexelLayout::kUnorm8x4: return by_bytes[view.srgb ? 3 : 2];
-    default: return nullptr;
+    case TexelLayout::kNone: return nullptr;
+    case TexelLayout::kUnorm8x1: return by_bytes[linear][0];
+    case TexelLayout::kUnorm8x2: return by_bytes[linear][1];
+    case TexelLayout::kUnorm8x4: return by_bytes[linear][view.srgb ? 3 : 2];
+    default: return any_layout;
   }
 }
 
@@ -624,8 +811,8 @@ void Textures::SampleQuad(int unit, const glm::vec2 uv[4], const glm::vec2 duv_d
 
 void Textures::SampleLanes(int unit, const Lanes& c, float bias, float out[4][16]) const {
   const TextureView* v = Usable(unit_2d, unit);
-  if (v && v->wide != TextureView::Wide::kNone) {
-    if (const SampleLinearLanesFn sample = SampleLinearLanesFor(*v)) return sample(*v, c, bias, out);
+  if (v && v->wide) {
+    if (const SampleTexelLanesFn sample = SampleTexelLanesFor(*v)) return sample(*v, c, bias, out);
   }
   for (int l = 0; l < 16; ++l) {
     const glm::vec4 r = Sample(unit, glm::vec2(c.s[l], c.t[l]), glm::vec2(c.ds_dx[l], c.dt_dx[l]),

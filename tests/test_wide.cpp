@@ -435,13 +435,15 @@ TEST_CASE("the wide vertex stage: vertex ids, current values, textureLod, counts
 }
 
 TEST_CASE("textures sampled 16 lanes at a time give the floats of one lane at a time", "[wide][texture]") {
-  // Every format, and the vector path's cases (8-bit layouts; LINEAR or LINEAR_MIPMAP_LINEAR; REPEAT,
-  // CLAMP_TO_EDGE or MIRRORED_REPEAT; powers of two or not) with others around them, random coordinates (far outside
+  // Every format (the vector path takes them all: 8-bit layouts loaded in vector form, with a shorter form for
+  // LINEAR magnification and LINEAR or LINEAR_MIPMAP_LINEAR minification; the others read texel by texel), every
+  // filter pair, every wrap mode (a border colour set), powers of two or not; random coordinates (far outside
   // [0, 1] too) and derivatives (NaN, huge and zero ones included), compared as bits.
   struct Case {
     Enum format;
     int w, h;
     Enum min_filter, wrap, wrap_t = 0;  // wrap_t 0: as wrap
+    Enum mag_filter = LINEAR;
   };
   const Case cases[] = {{RGBA8, 64, 32, LINEAR_MIPMAP_LINEAR, REPEAT}, {RGBA8, 64, 64, LINEAR, REPEAT},
                         {RGB8, 32, 32, LINEAR_MIPMAP_LINEAR, REPEAT},  {RG8, 16, 16, LINEAR_MIPMAP_NEAREST, MIRRORED_REPEAT},
@@ -457,7 +459,24 @@ TEST_CASE("textures sampled 16 lanes at a time give the floats of one lane at a 
                         {R8, 1, 5, LINEAR_MIPMAP_LINEAR, MIRRORED_REPEAT, REPEAT},
                         {SRGB8_ALPHA8, 20, 12, LINEAR, MIRRORED_REPEAT, REPEAT},
                         {RGBA8, 16, 16, LINEAR_MIPMAP_LINEAR, CLAMP_TO_BORDER},
-                        {RGBA8, 30, 30, NEAREST, MIRRORED_REPEAT}};
+                        {RGBA8, 30, 30, NEAREST, MIRRORED_REPEAT},
+                        {RGBA8, 32, 32, NEAREST_MIPMAP_NEAREST, REPEAT, 0, NEAREST},
+                        {RGBA8, 32, 32, NEAREST_MIPMAP_NEAREST, CLAMP_TO_EDGE, 0, LINEAR},
+                        {RGB8, 40, 24, LINEAR_MIPMAP_NEAREST, MIRRORED_REPEAT, 0, NEAREST},
+                        {RGBA8, 64, 64, LINEAR_MIPMAP_NEAREST, REPEAT, 0, LINEAR},
+                        {RGBA8, 32, 32, LINEAR_MIPMAP_LINEAR, REPEAT, 0, NEAREST},
+                        {RGBA8, 20, 36, LINEAR, CLAMP_TO_BORDER, 0, NEAREST},
+                        {R8, 17, 33, NEAREST_MIPMAP_LINEAR, REPEAT, CLAMP_TO_BORDER, LINEAR},
+                        {SRGB8_ALPHA8, 32, 16, NEAREST_MIPMAP_LINEAR, CLAMP_TO_BORDER, 0, NEAREST},
+                        {RG8, 16, 16, NEAREST, CLAMP_TO_BORDER, MIRRORED_REPEAT, NEAREST},
+                        {SRGB8, 24, 24, LINEAR, CLAMP_TO_BORDER, CLAMP_TO_EDGE, NEAREST},
+                        {RGBA8, 50, 10, LINEAR_MIPMAP_LINEAR, CLAMP_TO_BORDER, REPEAT},
+                        {RGBA16F, 16, 16, LINEAR_MIPMAP_LINEAR, CLAMP_TO_BORDER},
+                        {RGBA16F, 40, 20, LINEAR_MIPMAP_NEAREST, MIRRORED_REPEAT, REPEAT, NEAREST},
+                        {RG32F, 16, 32, NEAREST, REPEAT}, {R16F, 9, 9, LINEAR_MIPMAP_LINEAR, CLAMP_TO_EDGE},
+                        {R11F_G11F_B10F, 32, 32, LINEAR_MIPMAP_LINEAR, REPEAT},
+                        {RGB565, 20, 30, NEAREST_MIPMAP_LINEAR, CLAMP_TO_BORDER, REPEAT, LINEAR},
+                        {RGB10_A2, 16, 16, LINEAR, MIRRORED_REPEAT}, {RGBA16, 32, 16, LINEAR_MIPMAP_LINEAR, REPEAT}};
   std::mt19937 rng(5);
   std::uniform_real_distribution<float> coord(-2.0f, 2.0f), deriv(-0.3f, 0.3f);
   for (const Case& c : cases) {
@@ -466,20 +485,19 @@ TEST_CASE("textures sampled 16 lanes at a time give the floats of one lane at a 
     auto& l = t.levels[0][0];
     l.Allocate(c.format, c.w, c.h);
     for (std::size_t i = 0; i < l.data.size(); ++i) l.data[i] = std::uint8_t(rng());
-    if (c.format == RGBA32F)
+    if (!detail::IsUnorm8(l.layout))  // (random bytes would be NaN floats)
       for (int j = 0; j < c.h; ++j)
-        for (int i = 0; i < c.w; ++i) detail::StoreTexel(l, i, j, glm::vec4(coord(rng), coord(rng), 0.5f, 1.0f));
+        for (int i = 0; i < c.w; ++i)
+          detail::StoreTexel(l, i, j, glm::vec4(coord(rng), coord(rng) * 0.5f + 0.5f, 0.5f, coord(rng)));
     detail::GenerateMipmaps(t);
     t.params.min_filter = c.min_filter;
     t.params.wrap_s = c.wrap;
     t.params.wrap_t = c.wrap_t ? c.wrap_t : c.wrap;
+    t.params.mag_filter = c.mag_filter;
+    t.params.border = glm::vec4(0.2f, 0.9f, 0.45f, 0.7f);
     const detail::TextureView view = detail::MakeView(t);
     REQUIRE(view.complete);
-    // The cases the vector path takes are those its rule names (so that none is compared with itself unseen).
-    auto vector_wrap = [](Enum w) { return w == REPEAT || w == CLAMP_TO_EDGE || w == MIRRORED_REPEAT; };
-    CHECK((view.wide != detail::TextureView::Wide::kNone) ==
-          ((c.min_filter == LINEAR || c.min_filter == LINEAR_MIPMAP_LINEAR) && vector_wrap(t.params.wrap_s) &&
-           vector_wrap(t.params.wrap_t)));
+    CHECK(view.wide);  // a 2D colour texture without anisotropy: the vector path's
     Textures tx;
     tx.unit_2d[0] = &view;
     int compared = 0;
