@@ -911,6 +911,8 @@ int main(int argc, char** argv) {
       {"sampler: SRGB8_ALPHA8, MIRRORED_REPEAT, trilinear", sg::SRGB8_ALPHA8, 256, sg::LINEAR_MIPMAP_LINEAR, sg::LINEAR,
        sg::MIRRORED_REPEAT, 1},
       {"sampler: RGBA16F, REPEAT, trilinear", sg::RGBA16F, 256, sg::LINEAR_MIPMAP_LINEAR, sg::LINEAR, sg::REPEAT, 1},
+      {"sampler: RGBA32F, REPEAT, trilinear", sg::RGBA32F, 256, sg::LINEAR_MIPMAP_LINEAR, sg::LINEAR, sg::REPEAT, 1},
+      {"sampler: RGB565, REPEAT, trilinear", sg::RGB565, 256, sg::LINEAR_MIPMAP_LINEAR, sg::LINEAR, sg::REPEAT, 1},
   };
   const Geometry plane = GroundPlane(40.0f);
   const FrameSpec plane_frame{false, false, 6, "bench_sampler.png"};

@@ -435,19 +435,68 @@ SOFTGL_INLINE void Channels(typename V<W>::U x, typename V<W>::F out[4]) {
   out[3] = Channel<W, Bytes, 3, Srgb>(x);
 }
 
+// HalfToFloat for W lanes (h in the low 16 bits): the exponent and mantissa moved to a float's places and scaled
+// by 2^112, exact for normal and subnormal halves alike; infinities and NaNs get the float's top exponent.
+template <int W>
+SOFTGL_INLINE typename V<W>::F HalfLanes(typename V<W>::U h) {
+  using F = typename V<W>::F;
+  using U = typename V<W>::U;
+  const U em = h & 0x7FFFu;
+  const U shifted = em << 13;
+  F f;
+  std::memcpy(&f, &shifted, sizeof f);
+  f *= 0x1p112f;
+  U bits;
+  std::memcpy(&bits, &f, sizeof bits);
+  bits = em >= 0x7C00u ? shifted | 0x7F800000u : bits;
+  bits |= (h & 0x8000u) << 16;
+  std::memcpy(&f, &bits, sizeof f);
+  return f;
+}
+
 // Texel `index` (row * width + column) of level `lv` for each lane of `mask` (every lane if All), in any layout,
-// as Sampled() gives it (RawTexel: one lane at a time); 0 in the other lanes.
+// as Sampled() gives it; anything in the other lanes. Float layouts (16- and 32-bit) are read with one or two
+// 64-bit loads a lane and converted in vector form; the others read each texel with RawTexel, one lane at a time.
 template <int W, bool All>
 SOFTGL_INLINE void GatherTexels(const TextureLevel& lv, typename V<W>::I index, typename V<W>::I mask,
                                 typename V<W>::F out[4]) {
   using F = typename V<W>::F;
+  using U = typename V<W>::U;
+  using D = typename V<W>::D;
+  const TexelLayout layout = lv.layout;
+  const int channels = layout == TexelLayout::kFloat16x4 || layout == TexelLayout::kFloat32x4   ? 4
+                       : layout == TexelLayout::kFloat16x2 || layout == TexelLayout::kFloat32x2 ? 2
+                                                                                              : 1;
+  const bool half = layout == TexelLayout::kFloat16x4 || layout == TexelLayout::kFloat16x2 ||
+                    layout == TexelLayout::kFloat16x1;
+  const bool single = layout == TexelLayout::kFloat32x4 || layout == TexelLayout::kFloat32x2 ||
+                      layout == TexelLayout::kFloat32x1;
+  if (half || single) {
+    // (A texel's 64-bit read may run past the level's last texel into its padding; lanes outside the mask read at
+    // texel 0.)
+    const std::uint8_t* base = lv.data.data();
+    const typename V<W>::I at = (All ? index : index & mask) * lv.bytes;
+    const D lo = LoadPairs<W>(base, at, std::make_index_sequence<W>());
+    const D hi = channels == 4 && single ? LoadPairs<W>(base + 8, at, std::make_index_sequence<W>()) : D{};
+    for (int c = 0; c < 4; ++c) {
+      if (c >= channels) {
+        out[c] = F{} + (c == 3 ? 1.0f : 0.0f);
+      } else if (half) {
+        out[c] = HalfLanes<W>(__builtin_convertvector((lo >> (16 * c)) & 0xFFFFu, U));
+      } else {
+        const U bits = __builtin_convertvector(((c < 2 ? lo : hi) >> (32 * (c & 1))), U);
+        std::memcpy(&out[c], &bits, sizeof bits);
+      }
+    }
+    return;
+  }
   alignas(64) std::int32_t at[W];
   detail::StoreVec(at, index);
   alignas(64) float v[4][W] = {};
   const std::uint32_t lanes = All ? (1u << W) - 1 : detail::MaskToBits<W>(mask, 0);
   for (std::uint32_t bits = lanes; bits != 0; bits &= bits - 1) {
     const int l = __builtin_ctz(bits);
-    const glm::vec4 t = detail::RawTexel(lv.layout, lv.data.data() + std::size_t(at[l]) * std::size_t(lv.bytes));
+    const glm::vec4 t = detail::RawTexel(layout, lv.data.data() + std::size_t(at[l]) * std::size_t(lv.bytes));
     for (int c = 0; c < 4; ++c) v[c][l] = t[c];
   }
   for (int c = 0; c < 4; ++c) out[c] = detail::LoadVec<F>(v[c]);

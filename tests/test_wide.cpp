@@ -572,3 +572,49 @@ TEST_CASE("texels take the bytes of their format", "[wide][texture]") {
   CHECK(probe.levels[0][0].Texel(0, 0) == glm::vec4(10.0f / 255.0f, 0.0f, 0.0f, 1.0f));
   CHECK(gl.GetError() == NO_ERROR);
 }
+
+TEST_CASE("the vector path decodes every half-float texel as the one-lane path does", "[wide][texture]") {
+  // An R16F texture holding each of the 65536 half-float bit patterns once (zeros, subnormals, normals,
+  // infinities, NaNs of both signs), read with NEAREST at each texel's centre, 16 lanes at a time and one at a
+  // time, compared as bits.
+  detail::TextureObject t;
+  t.target = TEXTURE_2D;
+  auto& l = t.levels[0][0];
+  l.Allocate(R16F, 256, 256);
+  for (int i = 0; i < 65536; ++i) {
+    const std::uint16_t h = std::uint16_t(i);
+    std::memcpy(l.data.data() + 2 * i, &h, 2);
+  }
+  t.params.min_filter = NEAREST;
+  t.params.mag_filter = NEAREST;
+  const detail::TextureView view = detail::MakeView(t);
+  REQUIRE(view.complete);
+  Textures tx;
+  tx.unit_2d[0] = &view;
+  int differ = 0;
+  for (int first = 0; first < 65536; first += 16) {
+    Textures::Lanes lanes;
+    for (int k = 0; k < 16; ++k) {
+      const int i = first + k;
+      lanes.s[k] = (float(i % 256) + 0.5f) / 256.0f;
+      lanes.t[k] = (float(i / 256) + 0.5f) / 256.0f;
+      lanes.ds_dx[k] = lanes.dt_dy[k] = 1.0f / 256.0f;
+      lanes.dt_dx[k] = lanes.ds_dy[k] = 0.0f;
+    }
+    float out[4][16];
+    tx.SampleLanes(0, lanes, 0.0f, out);
+    for (int k = 0; k < 16; ++k) {
+      const glm::vec4 one = tx.Sample(0, glm::vec2(lanes.s[k], lanes.t[k]), glm::vec2(lanes.ds_dx[k], 0.0f),
+                                      glm::vec2(0.0f, lanes.dt_dy[k]), 0.0f);
+      std::uint32_t a, b;
+      std::memcpy(&a, &out[0][k], 4);
+      std::memcpy(&b, &one[0], 4);
+      if (a != b) {
+        INFO("half 0x" << std::hex << first + k << ": 0x" << a << " vs 0x" << b);
+        CHECK(a == b);
+        ++differ;
+      }
+    }
+  }
+  CHECK(differ == 0);
+}
