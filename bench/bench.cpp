@@ -210,6 +210,23 @@ struct PlaneShader : Shader<PlaneShader, UvVaryings> {
   }
 };
 
+// The ground plane with a cube map (mode 0: direction (u - 20, 1, v - 2): the top face near the camera, the
+// sides towards the horizon) or a 2D array (mode 1: (u, v), layer u / 10).
+struct DirVaryings {
+  vec3 dir;
+};
+struct DirShader : Shader<DirShader, DirVaryings> {
+  int mode = 0;
+  void Vertex(const VertexLanes& in, VertexLanesOut<DirVaryings>& out) const {
+    out.position = in.attrib[0];
+    const vec2 t = vec2(in.attrib[1]);
+    out.varyings.dir = mode == 0 ? vec3(t.x - 20.0f, Float(1.0f), t.y - 2.0f) : vec3(t.x, t.y, t.x * 0.1f);
+  }
+  void Fragment(const FragmentLanes<DirVaryings>& in, FragmentLanesOut& out) const {
+    out.color[0] = mode == 0 ? in.TextureCube(0, in.varyings.dir) : in.TextureArray(0, in.varyings.dir);
+  }
+};
+
 struct PhongVaryings {
   vec3 normal;
   vec3 world;
@@ -303,6 +320,22 @@ struct PlaneShader : softgl::Shader<PlaneShader, UvVaryings> {
   }
 };
 
+struct DirVaryings {
+  glm::vec3 dir;
+};
+struct DirShader : softgl::Shader<DirShader, DirVaryings> {
+  int mode = 0;
+  void Vertex(const softgl::VertexIn& in, softgl::VertexOut<DirVaryings>& out) const {
+    out.position = in.attrib[0];
+    const glm::vec2 t(in.attrib[1]);
+    out.varyings.dir = mode == 0 ? glm::vec3(t.x - 20.0f, 1.0f, t.y - 2.0f) : glm::vec3(t.x, t.y, t.x * 0.1f);
+  }
+  bool Fragment(const softgl::FragmentIn<DirVaryings>& in, softgl::FragmentOut& out) const {
+    out.color[0] = mode == 0 ? in.TextureCube(0, &DirVaryings::dir) : in.TextureArray(0, &DirVaryings::dir);
+    return true;
+  }
+};
+
 struct PhongVaryings {
   glm::vec3 normal;
   glm::vec3 world;
@@ -370,6 +403,10 @@ const char* kPlaneVs =
     "#version 330 core\nlayout(location=0) in vec4 p; layout(location=1) in vec2 t; out vec2 uv;"
     "void main(){ gl_Position = p; uv = t; }";
 const char* kTexFs = "#version 330 core\nin vec2 uv; uniform sampler2D tex; out vec4 o; void main(){ o = texture(tex, uv); }";
+const char* kCubeFs = "#version 330 core\nin vec2 uv; uniform samplerCube tex; out vec4 o;"
+                      "void main(){ o = texture(tex, vec3(uv.x - 20.0, 1.0, uv.y - 2.0)); }";
+const char* kArrayFs = "#version 330 core\nin vec2 uv; uniform sampler2DArray tex; out vec4 o;"
+                       "void main(){ o = texture(tex, vec3(uv, uv.x * 0.1)); }";
 const char* kPhongVs =
     "#version 330 core\nlayout(location=0) in vec3 p; layout(location=1) in vec3 n; uniform mat4 vp;"
     "out vec3 normal; out vec3 world; void main(){ gl_Position = vp * vec4(p, 1.0); normal = n; world = p; }";
@@ -952,6 +989,62 @@ int main(int argc, char** argv) {
                           if (st.anisotropy > 1.0f)
                             glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_MAX_ANISOTROPY_EXT, st.anisotropy);
                           Program(kPlaneVs, kTexFs);
+                          return TimeGl(n, plane_frame);
+                        });
+                      }});
+  }
+  // The same plane with a cube map (six 256 x 256 faces, CLAMP_TO_EDGE) and a 2D array (four 256 x 256 layers,
+  // REPEAT), RGBA8, trilinear.
+  for (const bool cube : {true, false}) {
+    const std::vector<std::uint8_t> pixels = all_data ? PatternTexture(256) : std::vector<std::uint8_t>{};
+    std::vector<std::uint8_t> layers;
+    for (int i = 0; i < 4 && all_data; ++i) layers.insert(layers.end(), pixels.begin(), pixels.end());
+    const Enum target = cube ? sg::TEXTURE_CUBE_MAP : sg::TEXTURE_2D_ARRAY;
+    scenes.push_back({cube ? "sampler: cube map, CLAMP_TO_EDGE, trilinear" : "sampler: 2D array, REPEAT, trilinear",
+                      1280, 720, "Mpixel/s", 1280.0 * 720 / 2,
+                      [&, cube, pixels, layers, target](int n) {
+                        return WithShader<wide::DirShader, scalar::DirShader>([&](auto& shader) {
+                          softgl::Context gl(1280, 720, g_options);
+                          softgl_setup(gl, plane);
+                          gl.BindTexture(target, gl.GenTexture());
+                          if (cube) {
+                            for (int f = 0; f < 6; ++f)
+                              gl.TexImage2D(sg::TEXTURE_CUBE_MAP_POSITIVE_X + Enum(f), 0, sg::RGBA8, 256, 256, 0,
+                                            sg::RGBA, sg::UNSIGNED_BYTE, pixels.data());
+                          } else {
+                            gl.TexImage3D(target, 0, sg::RGBA8, 256, 256, 4, 0, sg::RGBA, sg::UNSIGNED_BYTE,
+                                          layers.data());
+                          }
+                          gl.GenerateMipmap(target);
+                          gl.TexParameteri(target, sg::TEXTURE_MIN_FILTER, sg::LINEAR_MIPMAP_LINEAR);
+                          const Enum wrap = cube ? sg::CLAMP_TO_EDGE : sg::REPEAT;
+                          gl.TexParameteri(target, sg::TEXTURE_WRAP_S, wrap);
+                          gl.TexParameteri(target, sg::TEXTURE_WRAP_T, wrap);
+                          shader.mode = cube ? 0 : 1;
+                          gl.UseProgram(shader);
+                          return TimeSoftgl(n, gl, plane_frame);
+                        });
+                      },
+                      [&, cube, pixels, layers](int n) {
+                        return with_osmesa(1280, 720, [&] {
+                          gl_setup(plane);
+                          const GLenum t = cube ? GL_TEXTURE_CUBE_MAP : GL_TEXTURE_2D_ARRAY;
+                          GLuint tex;
+                          glGenTextures(1, &tex);
+                          glBindTexture(t, tex);
+                          if (cube) {
+                            for (int f = 0; f < 6; ++f)
+                              glTexImage2D(GLenum(GL_TEXTURE_CUBE_MAP_POSITIVE_X + f), 0, GL_RGBA8, 256, 256, 0,
+                                           GL_RGBA, GL_UNSIGNED_BYTE, pixels.data());
+                          } else {
+                            glTexImage3D(t, 0, GL_RGBA8, 256, 256, 4, 0, GL_RGBA, GL_UNSIGNED_BYTE, layers.data());
+                          }
+                          glGenerateMipmap(t);
+                          glTexParameteri(t, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+                          const GLint wrap = cube ? GL_CLAMP_TO_EDGE : GL_REPEAT;
+                          glTexParameteri(t, GL_TEXTURE_WRAP_S, wrap);
+                          glTexParameteri(t, GL_TEXTURE_WRAP_T, wrap);
+                          Program(kPlaneVs, cube ? kCubeFs : kArrayFs);
                           return TimeGl(n, plane_frame);
                         });
                       }});

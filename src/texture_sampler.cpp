@@ -282,6 +282,15 @@ int CubeFace(glm::vec3 r) {
 __attribute__((noinline)) glm::vec4 Sample2D(const TextureView& v, glm::vec2 uv, glm::vec2 duv_dx, glm::vec2 duv_dy,
                                              float bias);
 
+// The lookups the vector path takes: texture() and textureLod() on a 2D texture, a 2D array and a cube map.
+enum class Lookup : unsigned char { k2D, kLod, kArray, kArrayLod, kCube, kCubeLod };
+
+// Lane `lane` of a block's lookup through the one-lane path (for the lanes the vector path leaves: rho^2 not a
+// normal float), in the format's units divided by its scale, as the Textures calls give it. Not inlined, as
+// Sample2D.
+__attribute__((noinline)) glm::vec4 SampleOneLane(const TextureView& v, Lookup kind, const Textures::Lanes& c,
+                                                  int lane, float bias, const float* lod);
+
 // ---- 2D sampling for a block of lanes -----------------------------------------------------------------------
 //
 // W lanes at a time (4 with SSE2, 8 with AVX2, 16 with AVX-512), each lane's operations those of SampleFace above in
@@ -419,11 +428,14 @@ SOFTGL_INLINE typename V<W>::F TexelCoordLanes(typename V<W>::F x, float size) {
 }
 
 // What the filters of one 2D view need: its wrap modes, whether one is CLAMP_TO_BORDER, and the border colour.
+// (And, for a 2D array, each lane's layer: `layered` set, `layer` the layer.)
 template <int W>
 struct LanesWrap {
   Enum s, t;
   bool border;
   typename V<W>::F border_raw[4];
+  bool layered = false;
+  typename V<W>::I layer{};
 };
 
 // The four channels of each lane's 8-bit texel x (Channel).
@@ -527,6 +539,10 @@ SOFTGL_INLINE void BilinearLanes(const TextureLevel& lv, const LanesWrap<W>& wr,
     k0 = k0 < 0 ? I{} : k0;
     k1 = k1 < 0 ? I{} : k1;
   }
+  if (wr.layered) {  // the layer's rows come first (Fetch's layer * height + row)
+    r0 += wr.layer * lv.height;
+    r1 += wr.layer * lv.height;
+  }
   r0 *= lv.width;
   r1 *= lv.width;
   const F w00 = (1 - a) * (1 - b), w10 = a * (1 - b), w01 = (1 - a) * b, w11 = a * b;
@@ -603,7 +619,9 @@ SOFTGL_INLINE void NearestLanes(const TextureLevel& lv, const LanesWrap<W>& wr, 
   const F u = TexelCoordLanes<W>(s, float(lv.width)), v = TexelCoordLanes<W>(t, float(lv.height));
   const I c = WrapLanes<W>(wr.s, __builtin_convertvector(FloorF<W>(u), I), lv.width);
   const I q = WrapLanes<W>(wr.t, __builtin_convertvector(FloorF<W>(v), I), lv.height);
-  const I at = (q < 0 ? I{} : q) * lv.width + (c < 0 ? I{} : c);
+  I row = q < 0 ? I{} : q;
+  if (wr.layered) row += wr.layer * lv.height;
+  const I at = row * lv.width + (c < 0 ? I{} : c);
   F x[4];
   if constexpr (Bytes == 0) {
     GatherTexels<W, All>(lv, at, mask, x);
@@ -631,15 +649,16 @@ SOFTGL_INLINE void FilterLanes(const TextureLevel& lv, const LanesWrap<W>& wr, t
 
 // Lambda() for W lanes; false for lanes whose rho^2 is not a normal positive float.
 template <int W>
-SOFTGL_INLINE typename V<W>::I LambdaLanes(const TextureView& view, const Textures::Lanes& c, int l0, float bias,
+SOFTGL_INLINE typename V<W>::I LambdaLanes(const TextureView& view, typename V<W>::F ds_dx, typename V<W>::F dt_dx,
+                                           typename V<W>::F ds_dy, typename V<W>::F dt_dy, float bias,
                                            typename V<W>::F& lambda) {
   using F = typename V<W>::F;
   using I = typename V<W>::I;
   using U = typename V<W>::U;
   const TextureLevel& base = view.texture->levels[0][view.base];
   const float w = float(base.width), h = float(base.height);
-  const F txx = LoadF<W>(c.ds_dx + l0) * w, txy = LoadF<W>(c.dt_dx + l0) * h;
-  const F tyx = LoadF<W>(c.ds_dy + l0) * w, tyy = LoadF<W>(c.dt_dy + l0) * h;
+  const F txx = ds_dx * w, txy = dt_dx * h;
+  const F tyx = ds_dy * w, tyy = dt_dy * h;
   const F dot_x = txx * txx + txy * txy, dot_y = tyx * tyx + tyy * tyy;
   const F rho2 = dot_x < dot_y ? dot_y : dot_x;  // std::max(dot_x, dot_y)
   I bits;
@@ -660,15 +679,91 @@ SOFTGL_INLINE typename V<W>::I LambdaLanes(const TextureView& view, const Textur
   return normal;
 }
 
+// ExplicitLambda for W lanes.
+template <int W>
+SOFTGL_INLINE typename V<W>::F ExplicitLambdaLanes(const TextureView& view, typename V<W>::F lod) {
+  using F = typename V<W>::F;
+  const SamplerParams& p = view.texture->params;
+  const F lo = F{} + p.min_lod, hi = F{} + p.max_lod;
+  F lam = lod + std::clamp(p.lod_bias, -16.0f, 16.0f);
+  lam = lam < lo ? lo : (hi < lam ? hi : lam);  // std::clamp
+  return lam == lam ? lam : F{} + 0.0f;
+}
+
+// ArrayLayer for W lanes: floor(r + 1/2) clamped to the layers, NaN as 0. (r + 1/2 is clamped to [-1, layers]
+// first, which changes no result, so that the floor's conversion to integers stays in range.)
+template <int W>
+SOFTGL_INLINE typename V<W>::I ArrayLayerLanes(const TextureView& view, typename V<W>::F r) {
+  using F = typename V<W>::F;
+  const float top = float(view.texture->levels[0][view.base].depth - 1);
+  F x = r + 0.5f;
+  x = x == x ? x : F{} + 0.0f;
+  x = x < -1.0f ? F{} - 1.0f : (top + 1.0f < x ? F{} + (top + 1.0f) : x);
+  F l = FloorF<W>(x);
+  l = l < 0.0f ? F{} + 0.0f : (top < l ? F{} + top : l);
+  return __builtin_convertvector(l, typename V<W>::I);
+}
+
+// CubeFace and FaceCoords for W lanes: each lane's face (of direction (s, t, r)), its (s, t) on it ((1/2, 1/2)
+// where the major axis is not positive), and, unless `explicit_lod`, the derivatives of (s, t) measured on that
+// face (0 where the neighbouring direction does not point at it), as SampleCube computes them.
+template <int W>
+SOFTGL_INLINE void CubeLanes(const Textures::Lanes& c, int l0, bool explicit_lod, typename V<W>::I& face,
+                             typename V<W>::F& s, typename V<W>::F& t, typename V<W>::F& ds_dx,
+                             typename V<W>::F& dt_dx, typename V<W>::F& ds_dy, typename V<W>::F& dt_dy) {
+  using F = typename V<W>::F;
+  using I = typename V<W>::I;
+  const F x = LoadF<W>(c.s + l0), y = LoadF<W>(c.t + l0), z = LoadF<W>(c.r + l0);
+  auto abs = [](F v) SOFTGL_WIDE_LAMBDA { return v < 0.0f ? -v : v; };
+  const F ax = abs(x), ay = abs(y), az = abs(z);
+  // (Selects on single comparisons: x is the major axis where ax >= ay and ax >= az.)
+  const I fx = x >= 0.0f ? I{} : I{} + 1, fy = y >= 0.0f ? I{} + 2 : I{} + 3, fz = z >= 0.0f ? I{} + 4 : I{} + 5;
+  const I yz = ay >= az ? fy : fz;
+  I f = ax >= az ? fx : yz;
+  f = ax >= ay ? f : yz;
+  face = f;
+  // Table 8.19's (sc, tc, ma) of a direction on each lane's face.
+  auto coords = [&](F dx, F dy, F dz, F& u, F& v) SOFTGL_WIDE_LAMBDA {
+    F sc = dx, tc = -dy, ma = dz;  // face 4
+    sc = f == 0 ? -dz : sc;
+    ma = f == 0 ? dx : ma;
+    sc = f == 1 ? dz : sc;
+    ma = f == 1 ? -dx : ma;
+    tc = f == 2 ? dz : tc;
+    ma = f == 2 ? dy : ma;
+    tc = f == 3 ? -dz : tc;
+    ma = f == 3 ? -dy : ma;
+    sc = f == 5 ? -dx : sc;
+    ma = f == 5 ? -dz : ma;
+    u = (sc / ma + 1.0f) * 0.5f;
+    v = (tc / ma + 1.0f) * 0.5f;
+    return ma > 0.0f;
+  };
+  F u, v;
+  const I on = coords(x, y, z, u, v);
+  s = on ? u : F{} + 0.5f;
+  t = on ? v : F{} + 0.5f;
+  if (explicit_lod) return;
+  F ux, vx, uy, vy;
+  const I on_x = coords(x + LoadF<W>(c.ds_dx + l0), y + LoadF<W>(c.dt_dx + l0), z + LoadF<W>(c.dr_dx + l0), ux, vx);
+  const I on_y = coords(x + LoadF<W>(c.ds_dy + l0), y + LoadF<W>(c.dt_dy + l0), z + LoadF<W>(c.dr_dy + l0), uy, vy);
+  ds_dx = on_x ? ux - s : F{} + 0.0f;
+  dt_dx = on_x ? vx - t : F{} + 0.0f;
+  ds_dy = on_y ? uy - s : F{} + 0.0f;
+  dt_dy = on_y ? vy - t : F{} + 0.0f;
+}
+
 // SampleFace for W lanes of a 2D view (Bytes: the 8-bit layout's bytes a texel, 0 for any layout): SampleMip's level
 // choice (magnification, or one level, or two with a weight), then each level's lanes filtered together. Linear: the
 // form for LINEAR magnification with LINEAR or LINEAR_MIPMAP_LINEAR minification, with a shorter level choice.
 template <int W, int Bytes, bool Srgb, bool Linear>
-SOFTGL_INLINE void SampleTexelLanes(const TextureView& view, const Textures::Lanes& c, float bias,
-                                     float out[4][16]) {
+SOFTGL_INLINE void SampleTexelLanes(const TextureView& view, Lookup kind, const Textures::Lanes& c, float bias,
+                                    const float* lod, float out[4][16]) {
   using F = typename V<W>::F;
   using I = typename V<W>::I;
-  const auto& levels = view.texture->levels[0];
+  const auto& all_levels = view.texture->levels;
+  const bool cube = kind == Lookup::kCube || kind == Lookup::kCubeLod;
+  const bool explicit_lod = kind == Lookup::kLod || kind == Lookup::kArrayLod || kind == Lookup::kCubeLod;
   const SamplerParams& p = view.texture->params;
   LanesWrap<W> wr{p.wrap_s, p.wrap_t, p.wrap_s == CLAMP_TO_BORDER || p.wrap_t == CLAMP_TO_BORDER, {}};
   for (int ch = 0; ch < 4; ++ch) wr.border_raw[ch] = F{} + view.border_raw[ch];
@@ -683,9 +778,26 @@ SOFTGL_INLINE void SampleTexelLanes(const TextureView& view, const Textures::Lan
                                   ? -1
                                   : 0);
   const F fbase = F{} + float(view.base), fq = F{} + float(view.q);
+  wr.layered = kind == Lookup::kArray || kind == Lookup::kArrayLod;
   for (int l0 = 0; l0 < 16; l0 += W) {
-    F lam;
-    const I normal = LambdaLanes<W>(view, c, l0, bias, lam);
+    // The lookup's coordinates on its face or layer, and lambda: from the derivatives (false in `normal` for
+    // lanes whose rho^2 is not a normal positive float), or textureLod's.
+    F s, t, lam, ds_dx, dt_dx, ds_dy, dt_dy;
+    I face = I{};
+    if (cube) {
+      CubeLanes<W>(c, l0, explicit_lod, face, s, t, ds_dx, dt_dx, ds_dy, dt_dy);
+    } else {
+      s = LoadF<W>(c.s + l0);
+      t = LoadF<W>(c.t + l0);
+      if (!explicit_lod) {
+        ds_dx = LoadF<W>(c.ds_dx + l0), dt_dx = LoadF<W>(c.dt_dx + l0);
+        ds_dy = LoadF<W>(c.ds_dy + l0), dt_dy = LoadF<W>(c.dt_dy + l0);
+      }
+    }
+    if (wr.layered) wr.layer = ArrayLayerLanes<W>(view, LoadF<W>(c.r + l0));
+    I normal = I{} - 1;
+    if (explicit_lod) lam = ExplicitLambdaLanes<W>(view, LoadF<W>(lod + l0));
+    else normal = LambdaLanes<W>(view, ds_dx, dt_dx, ds_dy, dt_dy, bias, lam);
     // SampleMip's choice: the level (level_a), a second one (level_a + 1) where `two`, with weight f; LINEAR
     // filtering where `linear` is set, NEAREST elsewhere.
     I level_a = I{} + view.base, two = I{}, linear = I{} - 1;
@@ -717,7 +829,6 @@ SOFTGL_INLINE void SampleTexelLanes(const TextureView& view, const Textures::Lan
       f = two != 0 ? f : F{} + 0.0f;
       linear = mag ? mag_linear : min_linear;
     }
-    const F s = LoadF<W>(c.s + l0), t = LoadF<W>(c.t + l0);
     F ra[4] = {}, rb[4] = {};
     // Each level a lane needs, first (into ra) and second (level_a + 1, into rb), filtered for the lanes that need
     // it: usually one level for all. (The masks stay results of comparisons: GCC 12 turns a select on a mask it
@@ -730,7 +841,9 @@ SOFTGL_INLINE void SampleTexelLanes(const TextureView& view, const Textures::Lan
       // lane needs one, exists for all) with the same filter; filtered with the forms for every lane, their
       // results kept in registers.
       usual = normal_bits == (1u << W) - 1 && (linear_bits == 0 || linear_bits == normal_bits) &&
-              detail::MaskToBits<W>(level_a != level_a[0], 0) == 0;
+              detail::MaskToBits<W>(level_a != level_a[0], 0) == 0 &&
+              (!cube || detail::MaskToBits<W>(face != face[0], 0) == 0);
+      const auto& levels = all_levels[face[0]];
       if (usual && linear_bits != 0) {
         BilinearLanes<W, Bytes, Srgb, true>(levels[level_a[0]], wr, s, t, normal, ra);
         if (detail::MaskToBits<W>(two, 0) != 0)
@@ -743,12 +856,14 @@ SOFTGL_INLINE void SampleTexelLanes(const TextureView& view, const Textures::Lan
     }
     // Otherwise each level the lanes need, for the lanes that need it (ra and rb named, not chosen by a pointer,
     // so that they can stay in registers).
+    // (A cube map's lanes go by face and level: the key face * 64 + level, one comparison.)
     auto each_level = [&](I pending, I level, F r[4]) SOFTGL_WIDE_LAMBDA {
+      const I key = cube ? face * 64 + level : level;
       for (std::uint32_t bits = detail::MaskToBits<W>(pending, 0); bits != 0;
            bits = detail::MaskToBits<W>(pending, 0)) {
-        const int L = level[__builtin_ctz(bits)];
-        const I mask = pending & (level == L);
-        FilterLanes<W, Bytes, Srgb>(levels[L], wr, s, t, mask, linear, r);
+        const int lane = __builtin_ctz(bits);
+        const I mask = pending & (key == key[lane]);
+        FilterLanes<W, Bytes, Srgb>(all_levels[face[lane]][level[lane]], wr, s, t, mask, linear, r);
         pending &= ~mask;
       }
     };
@@ -765,30 +880,31 @@ SOFTGL_INLINE void SampleTexelLanes(const TextureView& view, const Textures::Lan
     // Lanes the vector path does not take: one lane at a time.
     for (std::uint32_t rest = ~normal_bits & ((1u << W) - 1); rest != 0; rest &= rest - 1) {
       const int lane = l0 + __builtin_ctz(rest);
-      const glm::vec2 dx(c.ds_dx[lane], c.dt_dx[lane]), dy(c.ds_dy[lane], c.dt_dy[lane]);
-      const glm::vec4 r = Sample2D(view, glm::vec2(c.s[lane], c.t[lane]), dx, dy, bias);
+      const glm::vec4 r = SampleOneLane(view, kind, c, lane, bias, lod);
       for (int ch = 0; ch < 4; ++ch) out[ch][lane] = r[ch];
     }
   }
 }
 
-using SampleTexelLanesFn = void (*)(const TextureView&, const Textures::Lanes&, float, float[4][16]);
+using SampleTexelLanesFn = void (*)(const TextureView&, Lookup, const Textures::Lanes&, float, const float*,
+                                    float[4][16]);
 
 // Each layout's form (an sRGB one for four bytes), for each instruction set.
 template <int Bytes, bool Srgb, bool Linear>
-void SampleTexelLanesBase(const TextureView& v, const Textures::Lanes& c, float bias, float out[4][16]) {
-  SampleTexelLanes<4, Bytes, Srgb, Linear>(v, c, bias, out);
+void SampleTexelLanesBase(const TextureView& v, Lookup k, const Textures::Lanes& c, float bias, const float* lod,
+                          float out[4][16]) {
+  SampleTexelLanes<4, Bytes, Srgb, Linear>(v, k, c, bias, lod, out);
 }
 #if defined(SOFTGL_HAS_DISPATCH)
 template <int Bytes, bool Srgb, bool Linear>
-SOFTGL_TARGET_AVX2 void SampleTexelLanesAvx2(const TextureView& v, const Textures::Lanes& c, float bias,
-                                             float out[4][16]) {
-  SampleTexelLanes<8, Bytes, Srgb, Linear>(v, c, bias, out);
+SOFTGL_TARGET_AVX2 void SampleTexelLanesAvx2(const TextureView& v, Lookup k, const Textures::Lanes& c, float bias,
+                                             const float* lod, float out[4][16]) {
+  SampleTexelLanes<8, Bytes, Srgb, Linear>(v, k, c, bias, lod, out);
 }
 template <int Bytes, bool Srgb, bool Linear>
-SOFTGL_TARGET_AVX512 void SampleTexelLanesAvx512(const TextureView& v, const Textures::Lanes& c, float bias,
-                                                 float out[4][16]) {
-  SampleTexelLanes<16, Bytes, Srgb, Linear>(v, c, bias, out);
+SOFTGL_TARGET_AVX512 void SampleTexelLanesAvx512(const TextureView& v, Lookup k, const Textures::Lanes& c, float bias,
+                                                 const float* lod, float out[4][16]) {
+  SampleTexelLanes<16, Bytes, Srgb, Linear>(v, k, c, bias, lod, out);
 }
 #endif
 
@@ -846,6 +962,69 @@ glm::vec4 Sample2D(const TextureView& v, glm::vec2 uv, glm::vec2 duv_dx, glm::ve
   return SampleFace(v, 0, uv, lambda, DepthCompare{}) / v.scale;
 }
 
+// Textures::SampleArray and SampleCube on a usable view.
+glm::vec4 SampleArrayOf(const TextureView& v, glm::vec3 uvl, glm::vec2 duv_dx, glm::vec2 duv_dy, float bias) {
+  const int layer = ArrayLayer(v, uvl.z);
+  const glm::vec2 uv(uvl);
+  if (v.anisotropy > 1.0f && !v.depth) return SampleAnisotropic(v, uv, duv_dx, duv_dy, bias, layer) / v.scale;
+  return SampleFace(v, 0, uv, Lambda(v, duv_dx, duv_dy, bias), DepthCompare{}, layer) / v.scale;
+}
+glm::vec4 SampleCubeOf(const TextureView& v, glm::vec3 dir, glm::vec3 ddir_dx, glm::vec3 ddir_dy, float bias) {
+  const int face = CubeFace(dir);
+  glm::vec2 st(0.5f), st_x, st_y;
+  FaceCoords(face, dir, st);
+  // Derivatives of (s, t) on the chosen face, projecting the neighbouring directions onto that same face (a
+  // neighbour may point at another face: its coordinates must still be measured on this one).
+  const glm::vec2 dx = FaceCoords(face, dir + ddir_dx, st_x) ? st_x - st : glm::vec2(0.0f);
+  const glm::vec2 dy = FaceCoords(face, dir + ddir_dy, st_y) ? st_y - st : glm::vec2(0.0f);
+  if (v.anisotropy > 1.0f && !v.depth) return SampleAnisotropic(v, st, dx, dy, bias, 0, face) / v.scale;
+  return SampleFace(v, face, st, Lambda(v, dx, dy, bias), DepthCompare{}) / v.scale;
+}
+// Textures::SampleLod, SampleArrayLod and SampleCubeLod on a usable view.
+glm::vec4 SampleLodOf(const TextureView& v, glm::vec2 uv, float lod, int layer = 0) {
+  return SampleFace(v, 0, uv, ExplicitLambda(v, lod), DepthCompare{}, layer) / v.scale;
+}
+glm::vec4 SampleCubeLodOf(const TextureView& v, glm::vec3 dir, float lod) {
+  const int face = CubeFace(dir);
+  glm::vec2 st(0.5f);
+  FaceCoords(face, dir, st);
+  return SampleFace(v, face, st, ExplicitLambda(v, lod), DepthCompare{}) / v.scale;
+}
+
+glm::vec4 SampleOneLane(const TextureView& v, Lookup kind, const Textures::Lanes& c, int l, float bias,
+                        const float* lod) {
+  const glm::vec2 dx(c.ds_dx[l], c.dt_dx[l]), dy(c.ds_dy[l], c.dt_dy[l]);
+  switch (kind) {
+    case Lookup::k2D: return Sample2D(v, glm::vec2(c.s[l], c.t[l]), dx, dy, bias);
+    case Lookup::kLod: return SampleLodOf(v, glm::vec2(c.s[l], c.t[l]), lod[l]);
+    case Lookup::kArray: return SampleArrayOf(v, glm::vec3(c.s[l], c.t[l], c.r[l]), dx, dy, bias);
+    case Lookup::kArrayLod: return SampleLodOf(v, glm::vec2(c.s[l], c.t[l]), lod[l], ArrayLayer(v, c.r[l]));
+    case Lookup::kCube:
+      return SampleCubeOf(v, glm::vec3(c.s[l], c.t[l], c.r[l]), glm::vec3(c.ds_dx[l], c.dt_dx[l], c.dr_dx[l]),
+                          glm::vec3(c.ds_dy[l], c.dt_dy[l], c.dr_dy[l]), bias);
+    default: return SampleCubeLodOf(v, glm::vec3(c.s[l], c.t[l], c.r[l]), lod[l]);
+  }
+}
+
+// A block's lookup: on the vector path where the view allows (not anisotropic filtering, unless the level of
+// detail is given), else lane by lane.
+void SampleBlock(const TextureView* v, Lookup kind, const Textures::Lanes& c, float bias, const float* lod,
+                 float out[4][16]) {
+  if (!v) {
+    for (int l = 0; l < 16; ++l)
+      for (int ch = 0; ch < 4; ++ch) out[ch][l] = kMissing[ch];
+    return;
+  }
+  const bool explicit_lod = kind == Lookup::kLod || kind == Lookup::kArrayLod || kind == Lookup::kCubeLod;
+  if (v->wide && (explicit_lod || v->anisotropy <= 1.0f)) {
+    if (const SampleTexelLanesFn sample = SampleTexelLanesFor(*v)) return sample(*v, kind, c, bias, lod, out);
+  }
+  for (int l = 0; l < 16; ++l) {
+    const glm::vec4 r = SampleOneLane(*v, kind, c, l, bias, lod);
+    for (int ch = 0; ch < 4; ++ch) out[ch][l] = r[ch];
+  }
+}
+
 }  // namespace
 
 glm::vec4 Textures::Sample(int unit, glm::vec2 uv, glm::vec2 duv_dx, glm::vec2 duv_dy, float bias) const {
@@ -859,66 +1038,34 @@ void Textures::SampleQuad(int unit, const glm::vec2 uv[4], const glm::vec2 duv_d
 }
 
 void Textures::SampleLanes(int unit, const Lanes& c, float bias, float out[4][16]) const {
-  const TextureView* v = Usable(unit_2d, unit);
-  if (v && v->wide) {
-    if (const SampleTexelLanesFn sample = SampleTexelLanesFor(*v)) return sample(*v, c, bias, out);
-  }
-  for (int l = 0; l < 16; ++l) {
-    const glm::vec4 r = Sample(unit, glm::vec2(c.s[l], c.t[l]), glm::vec2(c.ds_dx[l], c.dt_dx[l]),
-                               glm::vec2(c.ds_dy[l], c.dt_dy[l]), bias);
-    for (int ch = 0; ch < 4; ++ch) out[ch][l] = r[ch];
-  }
+  SampleBlock(Usable(unit_2d, unit), Lookup::k2D, c, bias, nullptr, out);
 }
 
 glm::vec4 Textures::SampleLod(int unit, glm::vec2 uv, float lod) const {
   const TextureView* v = Usable(unit_2d, unit);
-  if (!v) return kMissing;
-  return SampleFace(*v, 0, uv, ExplicitLambda(*v, lod), DepthCompare{}) / v->scale;
+  return v ? SampleLodOf(*v, uv, lod) : kMissing;
 }
 
 void Textures::SampleLodLanes(int unit, const Lanes& c, const float lod[16], float out[4][16]) const {
-  for (int l = 0; l < 16; ++l) {
-    const glm::vec4 r = SampleLod(unit, glm::vec2(c.s[l], c.t[l]), lod[l]);
-    for (int ch = 0; ch < 4; ++ch) out[ch][l] = r[ch];
-  }
+  SampleBlock(Usable(unit_2d, unit), Lookup::kLod, c, 0.0f, lod, out);
 }
 
 glm::vec4 Textures::SampleCube(int unit, glm::vec3 dir, glm::vec3 ddir_dx, glm::vec3 ddir_dy, float bias) const {
   const TextureView* v = Usable(unit_cube, unit);
-  if (!v) return kMissing;
-  const int face = CubeFace(dir);
-  glm::vec2 st(0.5f), st_x, st_y;
-  FaceCoords(face, dir, st);
-  // Derivatives of (s, t) on the chosen face, projecting the neighbouring directions onto that same face (a
-  // neighbour may point at another face: its coordinates must still be measured on this one).
-  const glm::vec2 dx = FaceCoords(face, dir + ddir_dx, st_x) ? st_x - st : glm::vec2(0.0f);
-  const glm::vec2 dy = FaceCoords(face, dir + ddir_dy, st_y) ? st_y - st : glm::vec2(0.0f);
-  if (v->anisotropy > 1.0f && !v->depth) return SampleAnisotropic(*v, st, dx, dy, bias, 0, face) / v->scale;
-  return SampleFace(*v, face, st, Lambda(*v, dx, dy, bias), DepthCompare{}) / v->scale;
+  return v ? SampleCubeOf(*v, dir, ddir_dx, ddir_dy, bias) : kMissing;
 }
 
 void Textures::SampleCubeLanes(int unit, const Lanes& c, float bias, float out[4][16]) const {
-  for (int l = 0; l < 16; ++l) {
-    const glm::vec4 r = SampleCube(unit, glm::vec3(c.s[l], c.t[l], c.r[l]), glm::vec3(c.ds_dx[l], c.dt_dx[l], c.dr_dx[l]),
-                                   glm::vec3(c.ds_dy[l], c.dt_dy[l], c.dr_dy[l]), bias);
-    for (int ch = 0; ch < 4; ++ch) out[ch][l] = r[ch];
-  }
+  SampleBlock(Usable(unit_cube, unit), Lookup::kCube, c, bias, nullptr, out);
 }
 
 glm::vec4 Textures::SampleCubeLod(int unit, glm::vec3 dir, float lod) const {
   const TextureView* v = Usable(unit_cube, unit);
-  if (!v) return kMissing;
-  const int face = CubeFace(dir);
-  glm::vec2 st(0.5f);
-  FaceCoords(face, dir, st);
-  return SampleFace(*v, face, st, ExplicitLambda(*v, lod), DepthCompare{}) / v->scale;
+  return v ? SampleCubeLodOf(*v, dir, lod) : kMissing;
 }
 
 void Textures::SampleCubeLodLanes(int unit, const Lanes& c, const float lod[16], float out[4][16]) const {
-  for (int l = 0; l < 16; ++l) {
-    const glm::vec4 r = SampleCubeLod(unit, glm::vec3(c.s[l], c.t[l], c.r[l]), lod[l]);
-    for (int ch = 0; ch < 4; ++ch) out[ch][l] = r[ch];
-  }
+  SampleBlock(Usable(unit_cube, unit), Lookup::kCubeLod, c, 0.0f, lod, out);
 }
 
 namespace {
@@ -947,18 +1094,12 @@ void Textures::SampleShadowLanes(int unit, const Lanes& c, float out[16]) const 
 
 glm::vec4 Textures::SampleArray(int unit, glm::vec3 uvl, glm::vec2 duv_dx, glm::vec2 duv_dy, float bias) const {
   const TextureView* v = Usable(unit_2d_array, unit);
-  if (!v) return kMissing;
-  const int layer = ArrayLayer(*v, uvl.z);
-  const glm::vec2 uv(uvl);
-  if (v->anisotropy > 1.0f && !v->depth) return SampleAnisotropic(*v, uv, duv_dx, duv_dy, bias, layer) / v->scale;
-  return SampleFace(*v, 0, uv, Lambda(*v, duv_dx, duv_dy, bias), DepthCompare{}, layer) / v->scale;
+  return v ? SampleArrayOf(*v, uvl, duv_dx, duv_dy, bias) : kMissing;
 }
 
 glm::vec4 Textures::SampleArrayLod(int unit, glm::vec3 uvl, float lod) const {
   const TextureView* v = Usable(unit_2d_array, unit);
-  if (!v) return kMissing;
-  return SampleFace(*v, 0, glm::vec2(uvl), ExplicitLambda(*v, lod), DepthCompare{}, ArrayLayer(*v, uvl.z)) /
-         v->scale;
+  return v ? SampleLodOf(*v, glm::vec2(uvl), lod, ArrayLayer(*v, uvl.z)) : kMissing;
 }
 
 float Textures::SampleArrayShadow(int unit, glm::vec3 uvl, float ref, glm::vec2 duv_dx, glm::vec2 duv_dy) const {
@@ -994,14 +1135,11 @@ void EachLane(float out[4][16], Fn&& fn) {
 }  // namespace
 
 void Textures::SampleArrayLanes(int unit, const Lanes& c, float bias, float out[4][16]) const {
-  EachLane(out, [&](int l) {
-    return SampleArray(unit, glm::vec3(c.s[l], c.t[l], c.r[l]), glm::vec2(c.ds_dx[l], c.dt_dx[l]),
-                       glm::vec2(c.ds_dy[l], c.dt_dy[l]), bias);
-  });
+  SampleBlock(Usable(unit_2d_array, unit), Lookup::kArray, c, bias, nullptr, out);
 }
 
 void Textures::SampleArrayLodLanes(int unit, const Lanes& c, const float lod[16], float out[4][16]) const {
-  EachLane(out, [&](int l) { return SampleArrayLod(unit, glm::vec3(c.s[l], c.t[l], c.r[l]), lod[l]); });
+  SampleBlock(Usable(unit_2d_array, unit), Lookup::kArrayLod, c, 0.0f, lod, out);
 }
 
 void Textures::SampleArrayShadowLanes(int unit, const Lanes& c, const float ref[16], float out[16]) const {

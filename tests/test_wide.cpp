@@ -618,3 +618,125 @@ TEST_CASE("the vector path decodes every half-float texel as the one-lane path d
   }
   CHECK(differ == 0);
 }
+
+TEST_CASE("cube maps, 2D arrays and textureLod sampled 16 lanes at a time give the floats of one lane at a time",
+          "[wide][texture]") {
+  // The vector path's other lookups: texture() on a cube map (each lane's face chosen by its direction, lanes of
+  // one block on several faces) and on a 2D array (each lane's layer, out-of-range and NaN layers included), and
+  // textureLod() on all three targets (NaN, huge and negative levels of detail included); every filter pair and
+  // wrap mode, compared as bits with the one-lane calls.
+  struct Case {
+    Enum target, format;
+    int w, h, layers;
+    Enum min_filter, mag_filter, wrap;
+  };
+  const Case cases[] = {
+      {TEXTURE_CUBE_MAP, RGBA8, 16, 16, 1, LINEAR_MIPMAP_LINEAR, LINEAR, CLAMP_TO_EDGE},
+      {TEXTURE_CUBE_MAP, SRGB8_ALPHA8, 8, 8, 1, LINEAR, LINEAR, REPEAT},
+      {TEXTURE_CUBE_MAP, RGBA16F, 32, 32, 1, LINEAR_MIPMAP_NEAREST, NEAREST, MIRRORED_REPEAT},
+      {TEXTURE_CUBE_MAP, R8, 5, 5, 1, NEAREST_MIPMAP_LINEAR, LINEAR, CLAMP_TO_BORDER},
+      {TEXTURE_2D_ARRAY, RGBA8, 16, 8, 5, LINEAR_MIPMAP_LINEAR, LINEAR, REPEAT},
+      {TEXTURE_2D_ARRAY, RG8, 12, 20, 3, NEAREST, NEAREST, CLAMP_TO_BORDER},
+      {TEXTURE_2D_ARRAY, RGBA32F, 8, 8, 4, LINEAR_MIPMAP_NEAREST, LINEAR, MIRRORED_REPEAT},
+      {TEXTURE_2D_ARRAY, RGB565, 10, 6, 2, LINEAR_MIPMAP_LINEAR, NEAREST, CLAMP_TO_EDGE},
+      {TEXTURE_2D, RGBA8, 32, 32, 1, LINEAR_MIPMAP_LINEAR, LINEAR, REPEAT},
+      {TEXTURE_2D, RGB8, 24, 40, 1, NEAREST_MIPMAP_NEAREST, LINEAR, CLAMP_TO_BORDER},
+      {TEXTURE_2D, R16F, 16, 16, 1, LINEAR_MIPMAP_NEAREST, NEAREST, MIRRORED_REPEAT},
+  };
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<float> coord(-2.0f, 2.0f), deriv(-0.3f, 0.3f), level(-3.0f, 8.0f);
+  for (const Case& c : cases) {
+    detail::TextureObject t;
+    t.target = c.target;
+    for (int face = 0; face < t.Faces(); ++face) {
+      auto& l = t.levels[face][0];
+      l.Allocate(c.format, c.w, c.h, 1, c.layers);
+      for (std::size_t i = 0; i < l.data.size(); ++i) l.data[i] = std::uint8_t(rng());
+      if (!detail::IsUnorm8(l.layout))  // (random bytes would be NaN floats)
+        for (int j = 0; j < c.h * c.layers; ++j)
+          for (int i = 0; i < c.w; ++i)
+            detail::StoreTexel(l, i, j, glm::vec4(coord(rng), coord(rng) * 0.5f + 0.5f, 0.5f, coord(rng)));
+    }
+    detail::GenerateMipmaps(t);
+    t.params.min_filter = c.min_filter;
+    t.params.mag_filter = c.mag_filter;
+    t.params.wrap_s = t.params.wrap_t = c.wrap;
+    t.params.border = glm::vec4(0.2f, 0.9f, 0.45f, 0.7f);
+    const detail::TextureView view = detail::MakeView(t);
+    REQUIRE(view.complete);
+    CHECK(view.wide);
+    Textures tx;
+    if (c.target == TEXTURE_CUBE_MAP) tx.unit_cube[0] = &view;
+    else if (c.target == TEXTURE_2D_ARRAY) tx.unit_2d_array[0] = &view;
+    else tx.unit_2d[0] = &view;
+    int compared = 0;
+    auto compare = [&](const float out[4][16], int k, const glm::vec4& one, const char* what) {
+      for (int ch = 0; ch < 4; ++ch) {
+        std::uint32_t a, b;
+        std::memcpy(&a, &out[ch][k], 4);
+        std::memcpy(&b, &one[ch], 4);
+        if (a != b) {
+          INFO(what << " format 0x" << std::hex << c.format << std::dec << " lane " << k << " channel " << ch << ": "
+                    << out[ch][k] << " vs " << one[ch]);
+          CHECK(a == b);
+        }
+        ++compared;
+      }
+    };
+    for (int round = 0; round < 100; ++round) {
+      Textures::Lanes lanes;
+      float lod[16];
+      for (int k = 0; k < 16; ++k) {
+        lanes.s[k] = coord(rng);
+        lanes.t[k] = coord(rng);
+        lanes.r[k] = c.target == TEXTURE_2D_ARRAY ? coord(rng) * 3.0f + 1.0f : coord(rng);
+        lanes.ds_dx[k] = deriv(rng) * (round % 4 == 0 ? 0.01f : 1.0f);
+        lanes.dt_dx[k] = deriv(rng);
+        lanes.dr_dx[k] = deriv(rng);
+        lanes.ds_dy[k] = deriv(rng);
+        lanes.dt_dy[k] = deriv(rng) * (round % 7 == 0 ? 40.0f : 1.0f);
+        lanes.dr_dy[k] = deriv(rng);
+        lod[k] = level(rng);
+      }
+      if (round == 3) {
+        lanes.s[2] = std::numeric_limits<float>::quiet_NaN();
+        lanes.r[3] = std::numeric_limits<float>::quiet_NaN();
+        lanes.r[4] = 1e30f;
+        lanes.r[5] = -1e30f;
+        lanes.s[6] = lanes.t[6] = lanes.r[6] = 0.0f;  // no direction
+        lanes.ds_dx[7] = lanes.dt_dx[7] = lanes.dr_dx[7] = lanes.ds_dy[7] = lanes.dt_dy[7] = lanes.dr_dy[7] = 0.0f;
+        lod[8] = std::numeric_limits<float>::quiet_NaN();
+        lod[9] = 1e30f;
+        lod[10] = -1e30f;
+      }
+      const float bias = round % 5 == 0 ? 0.7f : 0.0f;
+      float out[4][16], out_lod[4][16];
+      if (c.target == TEXTURE_CUBE_MAP) {
+        tx.SampleCubeLanes(0, lanes, bias, out);
+        tx.SampleCubeLodLanes(0, lanes, lod, out_lod);
+      } else if (c.target == TEXTURE_2D_ARRAY) {
+        tx.SampleArrayLanes(0, lanes, bias, out);
+        tx.SampleArrayLodLanes(0, lanes, lod, out_lod);
+      } else {
+        tx.SampleLanes(0, lanes, bias, out);
+        tx.SampleLodLanes(0, lanes, lod, out_lod);
+      }
+      for (int k = 0; k < 16; ++k) {
+        const glm::vec3 p(lanes.s[k], lanes.t[k], lanes.r[k]);
+        const glm::vec3 dx(lanes.ds_dx[k], lanes.dt_dx[k], lanes.dr_dx[k]);
+        const glm::vec3 dy(lanes.ds_dy[k], lanes.dt_dy[k], lanes.dr_dy[k]);
+        if (c.target == TEXTURE_CUBE_MAP) {
+          compare(out, k, tx.SampleCube(0, p, dx, dy, bias), "texture");
+          compare(out_lod, k, tx.SampleCubeLod(0, p, lod[k]), "textureLod");
+        } else if (c.target == TEXTURE_2D_ARRAY) {
+          compare(out, k, tx.SampleArray(0, p, glm::vec2(dx), glm::vec2(dy), bias), "texture");
+          compare(out_lod, k, tx.SampleArrayLod(0, p, lod[k]), "textureLod");
+        } else {
+          compare(out, k, tx.Sample(0, glm::vec2(p), glm::vec2(dx), glm::vec2(dy), bias), "texture");
+          compare(out_lod, k, tx.SampleLod(0, glm::vec2(p), lod[k]), "textureLod");
+        }
+      }
+    }
+    CHECK(compared == 100 * 2 * 64);
+  }
+}
