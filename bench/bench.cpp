@@ -211,7 +211,8 @@ struct PlaneShader : Shader<PlaneShader, UvVaryings> {
 };
 
 // The ground plane with a cube map (mode 0: direction (u - 20, 1, v - 2): the top face near the camera, the
-// sides towards the horizon) or a 2D array (mode 1: (u, v), layer u / 10).
+// sides towards the horizon), a 2D array (mode 1: (u, v), layer u / 10) or a shadow map (mode 2: (u, v) / 40,
+// reference u / 40).
 struct DirVaryings {
   vec3 dir;
 };
@@ -220,10 +221,13 @@ struct DirShader : Shader<DirShader, DirVaryings> {
   void Vertex(const VertexLanes& in, VertexLanesOut<DirVaryings>& out) const {
     out.position = in.attrib[0];
     const vec2 t = vec2(in.attrib[1]);
-    out.varyings.dir = mode == 0 ? vec3(t.x - 20.0f, Float(1.0f), t.y - 2.0f) : vec3(t.x, t.y, t.x * 0.1f);
+    out.varyings.dir = mode == 0   ? vec3(t.x - 20.0f, Float(1.0f), t.y - 2.0f)
+                       : mode == 1 ? vec3(t.x, t.y, t.x * 0.1f)
+                                   : vec3(t.x, t.y, t.x) / 40.0f;
   }
   void Fragment(const FragmentLanes<DirVaryings>& in, FragmentLanesOut& out) const {
-    out.color[0] = mode == 0 ? in.TextureCube(0, in.varyings.dir) : in.TextureArray(0, in.varyings.dir);
+    if (mode == 2) out.color[0] = vec4(vec3(in.TextureShadow(0, in.varyings.dir)), 1.0f);
+    else out.color[0] = mode == 0 ? in.TextureCube(0, in.varyings.dir) : in.TextureArray(0, in.varyings.dir);
   }
 };
 
@@ -328,10 +332,19 @@ struct DirShader : softgl::Shader<DirShader, DirVaryings> {
   void Vertex(const softgl::VertexIn& in, softgl::VertexOut<DirVaryings>& out) const {
     out.position = in.attrib[0];
     const glm::vec2 t(in.attrib[1]);
-    out.varyings.dir = mode == 0 ? glm::vec3(t.x - 20.0f, 1.0f, t.y - 2.0f) : glm::vec3(t.x, t.y, t.x * 0.1f);
+    out.varyings.dir = mode == 0   ? glm::vec3(t.x - 20.0f, 1.0f, t.y - 2.0f)
+                       : mode == 1 ? glm::vec3(t.x, t.y, t.x * 0.1f)
+                                   : glm::vec3(t.x, t.y, t.x) / 40.0f;
   }
   bool Fragment(const softgl::FragmentIn<DirVaryings>& in, softgl::FragmentOut& out) const {
-    out.color[0] = mode == 0 ? in.TextureCube(0, &DirVaryings::dir) : in.TextureArray(0, &DirVaryings::dir);
+    if (mode == 2) {
+      const glm::vec3 d = in.varyings.dir;
+      const float lit = in.textures->SampleShadow(0, glm::vec2(d), d.z, glm::vec2(in.dFdx(&DirVaryings::dir)),
+                                                  glm::vec2(in.dFdy(&DirVaryings::dir)));
+      out.color[0] = glm::vec4(glm::vec3(lit), 1.0f);
+    } else {
+      out.color[0] = mode == 0 ? in.TextureCube(0, &DirVaryings::dir) : in.TextureArray(0, &DirVaryings::dir);
+    }
     return true;
   }
 };
@@ -407,6 +420,8 @@ const char* kCubeFs = "#version 330 core\nin vec2 uv; uniform samplerCube tex; o
                       "void main(){ o = texture(tex, vec3(uv.x - 20.0, 1.0, uv.y - 2.0)); }";
 const char* kArrayFs = "#version 330 core\nin vec2 uv; uniform sampler2DArray tex; out vec4 o;"
                        "void main(){ o = texture(tex, vec3(uv, uv.x * 0.1)); }";
+const char* kShadowFs = "#version 330 core\nin vec2 uv; uniform sampler2DShadow tex; out vec4 o;"
+                        "void main(){ o = vec4(vec3(texture(tex, vec3(uv, uv.x) / 40.0)), 1.0); }";
 const char* kPhongVs =
     "#version 330 core\nlayout(location=0) in vec3 p; layout(location=1) in vec3 n; uniform mat4 vp;"
     "out vec3 normal; out vec3 world; void main(){ gl_Position = vp * vec4(p, 1.0); normal = n; world = p; }";
@@ -1045,6 +1060,50 @@ int main(int argc, char** argv) {
                           glTexParameteri(t, GL_TEXTURE_WRAP_S, wrap);
                           glTexParameteri(t, GL_TEXTURE_WRAP_T, wrap);
                           Program(kPlaneVs, cube ? kCubeFs : kArrayFs);
+                          return TimeGl(n, plane_frame);
+                        });
+                      }});
+  }
+  // A 2048 x 2048 DEPTH_COMPONENT32F shadow map over the plane, LINEAR (four comparisons a lookup), LEQUAL.
+  {
+    std::vector<float> depths;
+    for (int y = 0; y < 2048 && all_data; ++y)
+      for (int x = 0; x < 2048; ++x)
+        depths.push_back(0.5f + 0.25f * std::sin(float(x) * 0.02f) + 0.2f * std::cos(float(y) * 0.013f));
+    scenes.push_back({"sampler: shadow map 2048^2, LINEAR, LEQUAL", 1280, 720, "Mpixel/s", 1280.0 * 720 / 2,
+                      [&, depths](int n) {
+                        return WithShader<wide::DirShader, scalar::DirShader>([&](auto& shader) {
+                          softgl::Context gl(1280, 720, g_options);
+                          softgl_setup(gl, plane);
+                          gl.BindTexture(sg::TEXTURE_2D, gl.GenTexture());
+                          gl.TexImage2D(sg::TEXTURE_2D, 0, sg::DEPTH_COMPONENT32F, 2048, 2048, 0,
+                                        sg::DEPTH_COMPONENT, sg::FLOAT, depths.data());
+                          gl.TexParameteri(sg::TEXTURE_2D, sg::TEXTURE_MIN_FILTER, sg::LINEAR);
+                          gl.TexParameteri(sg::TEXTURE_2D, sg::TEXTURE_MAG_FILTER, sg::LINEAR);
+                          gl.TexParameteri(sg::TEXTURE_2D, sg::TEXTURE_WRAP_S, sg::CLAMP_TO_EDGE);
+                          gl.TexParameteri(sg::TEXTURE_2D, sg::TEXTURE_WRAP_T, sg::CLAMP_TO_EDGE);
+                          gl.TexParameteri(sg::TEXTURE_2D, sg::TEXTURE_COMPARE_MODE, sg::COMPARE_REF_TO_TEXTURE);
+                          gl.TexParameteri(sg::TEXTURE_2D, sg::TEXTURE_COMPARE_FUNC, sg::LEQUAL);
+                          shader.mode = 2;
+                          gl.UseProgram(shader);
+                          return TimeSoftgl(n, gl, plane_frame);
+                        });
+                      },
+                      [&, depths](int n) {
+                        return with_osmesa(1280, 720, [&] {
+                          gl_setup(plane);
+                          GLuint tex;
+                          glGenTextures(1, &tex);
+                          glBindTexture(GL_TEXTURE_2D, tex);
+                          glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT32F, 2048, 2048, 0, GL_DEPTH_COMPONENT,
+                                       GL_FLOAT, depths.data());
+                          glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+                          glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+                          glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+                          glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+                          glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+                          glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+                          Program(kPlaneVs, kShadowFs);
                           return TimeGl(n, plane_frame);
                         });
                       }});

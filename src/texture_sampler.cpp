@@ -282,8 +282,9 @@ int CubeFace(glm::vec3 r) {
 __attribute__((noinline)) glm::vec4 Sample2D(const TextureView& v, glm::vec2 uv, glm::vec2 duv_dx, glm::vec2 duv_dy,
                                              float bias);
 
-// The lookups the vector path takes: texture() and textureLod() on a 2D texture, a 2D array and a cube map.
-enum class Lookup : unsigned char { k2D, kLod, kArray, kArrayLod, kCube, kCubeLod };
+// The lookups the vector path takes: texture() and textureLod() on a 2D texture, a 2D array and a cube map, and
+// texture() on a 2D shadow sampler and a 2D array shadow sampler.
+enum class Lookup : unsigned char { k2D, kLod, kArray, kArrayLod, kCube, kCubeLod, kShadow, kArrayShadow };
 
 // Lane `lane` of a block's lookup through the one-lane path (for the lanes the vector path leaves: rho^2 not a
 // normal float), in the format's units divided by its scale, as the Textures calls give it. Not inlined, as
@@ -436,7 +437,31 @@ struct LanesWrap {
   typename V<W>::F border_raw[4];
   bool layered = false;
   typename V<W>::I layer{};
+  // (And, for a shadow lookup, the comparison: `compare` set, channel 0 of each texel (border texels included)
+  // replaced by 1 where ref `func` texel passes, else 0.)
+  bool compare = false;
+  Enum func = LEQUAL;
+  typename V<W>::F ref{};
 };
+
+// The depth comparison of W texels x against wr.ref: 1 where it passes, 0 elsewhere (a select on one comparison
+// in each case).
+template <int W>
+SOFTGL_INLINE typename V<W>::F CompareLanes(const LanesWrap<W>& wr, typename V<W>::F x) {
+  using F = typename V<W>::F;
+  const F one = F{} + 1.0f, zero = F{};
+  const F r = wr.ref;
+  switch (wr.func) {
+    case NEVER: return zero;
+    case LESS: return r < x ? one : zero;
+    case EQUAL: return r == x ? one : zero;
+    case LEQUAL: return r <= x ? one : zero;
+    case GREATER: return r > x ? one : zero;
+    case NOTEQUAL: return r != x ? one : zero;
+    case GEQUAL: return r >= x ? one : zero;
+    default: return one;  // ALWAYS
+  }
+}
 
 // The four channels of each lane's 8-bit texel x (Channel).
 template <int W, int Bytes, bool Srgb>
@@ -466,9 +491,32 @@ SOFTGL_INLINE typename V<W>::F HalfLanes(typename V<W>::U h) {
   return f;
 }
 
+// Whether a layout's texel is decoded from its first 32 bits by WordTexels (one channel of 32 or 16 bits, or two of
+// 16): a row's two texels then come from one 64-bit load.
+inline bool IsWordLayout(TexelLayout l) {
+  return l == TexelLayout::kFloat32x1 || l == TexelLayout::kFloat16x1 || l == TexelLayout::kFloat16x2 ||
+         l == TexelLayout::kUnorm16x1 || l == TexelLayout::kUnorm16x2;
+}
+// The texels whose first 32 bits are `word`, in a WordTexels layout, as RawTexel reads them.
+template <int W>
+SOFTGL_INLINE void WordTexels(TexelLayout layout, typename V<W>::U word, typename V<W>::F out[4]) {
+  using F = typename V<W>::F;
+  using I = typename V<W>::I;
+  out[1] = out[2] = F{};
+  out[3] = F{} + 1.0f;
+  switch (layout) {
+    case TexelLayout::kFloat32x1: std::memcpy(&out[0], &word, sizeof word); break;
+    case TexelLayout::kFloat16x2: out[1] = HalfLanes<W>(word >> 16); [[fallthrough]];
+    case TexelLayout::kFloat16x1: out[0] = HalfLanes<W>(word & 0xFFFFu); break;
+    case TexelLayout::kUnorm16x2: out[1] = __builtin_convertvector(I(word >> 16), F) / 65535.0f; [[fallthrough]];
+    default: out[0] = __builtin_convertvector(I(word & 0xFFFFu), F) / 65535.0f; break;  // kUnorm16x1
+  }
+}
+
 // Texel `index` (row * width + column) of level `lv` for each lane of `mask` (every lane if All), in any layout,
-// as Sampled() gives it; anything in the other lanes. Float layouts (16- and 32-bit) are read with one or two
-// 64-bit loads a lane and converted in vector form; the others read each texel with RawTexel, one lane at a time.
+// as Sampled() gives it; anything in the other lanes. Float layouts (16- and 32-bit) and 16-bit fixed point are
+// read with one or two 64-bit loads a lane and converted in vector form; the others read each texel with RawTexel,
+// one lane at a time.
 template <int W, bool All>
 SOFTGL_INLINE void GatherTexels(const TextureLevel& lv, typename V<W>::I index, typename V<W>::I mask,
                                 typename V<W>::F out[4]) {
@@ -476,14 +524,17 @@ SOFTGL_INLINE void GatherTexels(const TextureLevel& lv, typename V<W>::I index, 
   using U = typename V<W>::U;
   using D = typename V<W>::D;
   const TexelLayout layout = lv.layout;
-  const int channels = layout == TexelLayout::kFloat16x4 || layout == TexelLayout::kFloat32x4   ? 4
-                       : layout == TexelLayout::kFloat16x2 || layout == TexelLayout::kFloat32x2 ? 2
-                                                                                              : 1;
+  const int channels =
+      layout == TexelLayout::kFloat16x4 || layout == TexelLayout::kFloat32x4 || layout == TexelLayout::kUnorm16x4 ? 4
+      : layout == TexelLayout::kFloat16x2 || layout == TexelLayout::kFloat32x2 || layout == TexelLayout::kUnorm16x2
+          ? 2
+          : 1;
   const bool half = layout == TexelLayout::kFloat16x4 || layout == TexelLayout::kFloat16x2 ||
                     layout == TexelLayout::kFloat16x1;
   const bool single = layout == TexelLayout::kFloat32x4 || layout == TexelLayout::kFloat32x2 ||
                       layout == TexelLayout::kFloat32x1;
-  if (half || single) {
+  const bool unorm16 = detail::IsUnorm16(layout);
+  if (half || single || unorm16) {
     // (A texel's 64-bit read may run past the level's last texel into its padding; lanes outside the mask read at
     // texel 0.)
     const std::uint8_t* base = lv.data.data();
@@ -495,6 +546,9 @@ SOFTGL_INLINE void GatherTexels(const TextureLevel& lv, typename V<W>::I index, 
         out[c] = F{} + (c == 3 ? 1.0f : 0.0f);
       } else if (half) {
         out[c] = HalfLanes<W>(__builtin_convertvector((lo >> (16 * c)) & 0xFFFFu, U));
+      } else if (unorm16) {  // k / 65535, as RawTexel
+        const typename V<W>::I k = __builtin_convertvector((lo >> (16 * c)) & 0xFFFFu, typename V<W>::I);
+        out[c] = __builtin_convertvector(k, F) / 65535.0f;
       } else {
         const U bits = __builtin_convertvector(((c < 2 ? lo : hi) >> (32 * (c & 1))), U);
         std::memcpy(&out[c], &bits, sizeof bits);
@@ -554,16 +608,48 @@ SOFTGL_INLINE void BilinearLanes(const TextureLevel& lv, const LanesWrap<W>& wr,
       x01 = ((c0 | q1) >= 0) ? x01 : wr.border_raw[c];
       x11 = ((c1 | q1) >= 0) ? x11 : wr.border_raw[c];
     }
+    if (c == 0 && wr.compare) {
+      x00 = CompareLanes<W>(wr, x00);
+      x10 = CompareLanes<W>(wr, x10);
+      x01 = CompareLanes<W>(wr, x01);
+      x11 = CompareLanes<W>(wr, x11);
+    }
     const F sum = w00 * x00 + w10 * x10 + w01 * x01 + w11 * x11;
     if constexpr (All) out[c] = sum;
     else out[c] = mask != 0 ? sum : out[c];
   };
   if constexpr (Bytes == 0) {
     F x00[4], x10[4], x01[4], x11[4];
-    GatherTexels<W, All>(lv, r0 + k0, mask, x00);
-    GatherTexels<W, All>(lv, r0 + k1, mask, x10);
-    GatherTexels<W, All>(lv, r1 + k0, mask, x01);
-    GatherTexels<W, All>(lv, r1 + k1, mask, x11);
+    if (IsWordLayout(lv.layout)) {
+      // A row's two texels in one 64-bit load at its left texel, as for the 8-bit layouts below.
+      using D = typename V<W>::D;
+      const int bytes = lv.bytes;
+      const std::uint8_t* base = lv.data.data();
+      const I o0 = (All ? r0 + k0 : (r0 + k0) & mask) * bytes, o1 = (All ? r1 + k0 : (r1 + k0) & mask) * bytes;
+      const D p0 = LoadPairs<W>(base, o0, std::make_index_sequence<W>()),
+              p1 = LoadPairs<W>(base, o1, std::make_index_sequence<W>());
+      U t00 = __builtin_convertvector(p0, U), t01 = __builtin_convertvector(p1, U);
+      U t10 = __builtin_convertvector(p0 >> (8 * bytes), U), t11 = __builtin_convertvector(p1 >> (8 * bytes), U);
+      const std::uint32_t apart = detail::MaskToBits<W>(All ? k1 != k0 + 1 : (k1 != k0 + 1) & mask, 0) &
+                                  ~detail::SignBits<W>(c1 | (q0 & q1));
+      for (std::uint32_t wrap = apart; wrap != 0; wrap &= wrap - 1) {
+        const int l = __builtin_ctz(wrap);
+        std::uint32_t w0, w1;
+        std::memcpy(&w0, base + std::size_t(r0[l] + k1[l]) * bytes, 4);
+        std::memcpy(&w1, base + std::size_t(r1[l] + k1[l]) * bytes, 4);
+        t10[l] = w0;
+        t11[l] = w1;
+      }
+      WordTexels<W>(lv.layout, t00, x00);
+      WordTexels<W>(lv.layout, t10, x10);
+      WordTexels<W>(lv.layout, t01, x01);
+      WordTexels<W>(lv.layout, t11, x11);
+    } else {
+      GatherTexels<W, All>(lv, r0 + k0, mask, x00);
+      GatherTexels<W, All>(lv, r0 + k1, mask, x10);
+      GatherTexels<W, All>(lv, r1 + k0, mask, x01);
+      GatherTexels<W, All>(lv, r1 + k1, mask, x11);
+    }
     for (int c = 0; c < 4; ++c) {
       if (wr.border) channel_sum(std::true_type(), c, x00[c], x10[c], x01[c], x11[c]);
       else channel_sum(std::false_type(), c, x00[c], x10[c], x01[c], x11[c]);
@@ -633,6 +719,7 @@ SOFTGL_INLINE void NearestLanes(const TextureLevel& lv, const LanesWrap<W>& wr, 
   const I in = (c | q) >= 0;
   for (int ch = 0; ch < 4; ++ch) {
     if (wr.border) x[ch] = in ? x[ch] : wr.border_raw[ch];
+    if (ch == 0 && wr.compare) x[ch] = CompareLanes<W>(wr, x[ch]);
     if constexpr (All) out[ch] = x[ch];
     else out[ch] = mask != 0 ? x[ch] : out[ch];
   }
@@ -778,7 +865,9 @@ SOFTGL_INLINE void SampleTexelLanes(const TextureView& view, Lookup kind, const 
                                   ? -1
                                   : 0);
   const F fbase = F{} + float(view.base), fq = F{} + float(view.q);
-  wr.layered = kind == Lookup::kArray || kind == Lookup::kArrayLod;
+  wr.layered = kind == Lookup::kArray || kind == Lookup::kArrayLod || kind == Lookup::kArrayShadow;
+  wr.compare = kind == Lookup::kShadow || kind == Lookup::kArrayShadow;
+  wr.func = p.compare_func;
   for (int l0 = 0; l0 < 16; l0 += W) {
     // The lookup's coordinates on its face or layer, and lambda: from the derivatives (false in `normal` for
     // lanes whose rho^2 is not a normal positive float), or textureLod's.
@@ -795,6 +884,11 @@ SOFTGL_INLINE void SampleTexelLanes(const TextureView& view, Lookup kind, const 
       }
     }
     if (wr.layered) wr.layer = ArrayLayerLanes<W>(view, LoadF<W>(c.r + l0));
+    if (wr.compare) {  // the reference: r, or (for an array) `lod`'s lanes; NaN as 0, clamped to [0, 1]
+      F ref = LoadF<W>((kind == Lookup::kShadow ? c.r : lod) + l0);
+      ref = ref == ref ? ref : F{} + 0.0f;
+      wr.ref = ref < 0.0f ? F{} + 0.0f : (1.0f < ref ? F{} + 1.0f : ref);
+    }
     I normal = I{} - 1;
     if (explicit_lod) lam = ExplicitLambdaLanes<W>(view, LoadF<W>(lod + l0));
     else normal = LambdaLanes<W>(view, ds_dx, dt_dx, ds_dy, dt_dy, bias, lam);
@@ -980,6 +1074,18 @@ glm::vec4 SampleCubeOf(const TextureView& v, glm::vec3 dir, glm::vec3 ddir_dx, g
   if (v.anisotropy > 1.0f && !v.depth) return SampleAnisotropic(v, st, dx, dy, bias, 0, face) / v.scale;
   return SampleFace(v, face, st, Lambda(v, dx, dy, bias), DepthCompare{}) / v.scale;
 }
+// SampleShadow on a 2D texture or one layer of a 2D array.
+float ShadowOf(const TextureView* v, glm::vec2 uv, int layer_or_minus, float r, float ref, glm::vec2 duv_dx,
+               glm::vec2 duv_dy) {
+  if (!v || !v->depth || v->texture->params.compare_mode != COMPARE_REF_TO_TEXTURE) return 0.0f;
+  DepthCompare cmp;
+  cmp.on = true;
+  cmp.func = v->texture->params.compare_func;
+  cmp.ref = std::isnan(ref) ? 0.0f : std::clamp(ref, 0.0f, 1.0f);  // depth textures hold [0, 1]
+  const int layer = layer_or_minus < 0 ? ArrayLayer(*v, r) : 0;
+  return SampleFace(*v, 0, uv, Lambda(*v, duv_dx, duv_dy, 0.0f), cmp, layer).r;
+}
+
 // Textures::SampleLod, SampleArrayLod and SampleCubeLod on a usable view.
 glm::vec4 SampleLodOf(const TextureView& v, glm::vec2 uv, float lod, int layer = 0) {
   return SampleFace(v, 0, uv, ExplicitLambda(v, lod), DepthCompare{}, layer) / v.scale;
@@ -1002,7 +1108,9 @@ glm::vec4 SampleOneLane(const TextureView& v, Lookup kind, const Textures::Lanes
     case Lookup::kCube:
       return SampleCubeOf(v, glm::vec3(c.s[l], c.t[l], c.r[l]), glm::vec3(c.ds_dx[l], c.dt_dx[l], c.dr_dx[l]),
                           glm::vec3(c.ds_dy[l], c.dt_dy[l], c.dr_dy[l]), bias);
-    default: return SampleCubeLodOf(v, glm::vec3(c.s[l], c.t[l], c.r[l]), lod[l]);
+    case Lookup::kCubeLod: return SampleCubeLodOf(v, glm::vec3(c.s[l], c.t[l], c.r[l]), lod[l]);
+    case Lookup::kShadow: return glm::vec4(ShadowOf(&v, glm::vec2(c.s[l], c.t[l]), 0, 0.0f, c.r[l], dx, dy));
+    default: return glm::vec4(ShadowOf(&v, glm::vec2(c.s[l], c.t[l]), -1, c.r[l], lod[l], dx, dy));
   }
 }
 
@@ -1016,7 +1124,14 @@ void SampleBlock(const TextureView* v, Lookup kind, const Textures::Lanes& c, fl
     return;
   }
   const bool explicit_lod = kind == Lookup::kLod || kind == Lookup::kArrayLod || kind == Lookup::kCubeLod;
-  if (v->wide && (explicit_lod || v->anisotropy <= 1.0f)) {
+  const bool shadow = kind == Lookup::kShadow || kind == Lookup::kArrayShadow;
+  if (shadow && (!v->depth || v->texture->params.compare_mode != COMPARE_REF_TO_TEXTURE)) {
+    for (int l = 0; l < 16; ++l)
+      for (int ch = 0; ch < 4; ++ch) out[ch][l] = 0.0f;
+    return;
+  }
+  // (A shadow lookup ignores anisotropy, as ShadowOf does.)
+  if (v->wide && (explicit_lod || shadow || v->anisotropy <= 1.0f)) {
     if (const SampleTexelLanesFn sample = SampleTexelLanesFor(*v)) return sample(*v, kind, c, bias, lod, out);
   }
   for (int l = 0; l < 16; ++l) {
@@ -1068,28 +1183,15 @@ void Textures::SampleCubeLodLanes(int unit, const Lanes& c, const float lod[16],
   SampleBlock(Usable(unit_cube, unit), Lookup::kCubeLod, c, 0.0f, lod, out);
 }
 
-namespace {
-// SampleShadow on a 2D texture or one layer of a 2D array.
-float ShadowOf(const TextureView* v, glm::vec2 uv, int layer_or_minus, float r, float ref, glm::vec2 duv_dx,
-               glm::vec2 duv_dy) {
-  if (!v || !v->depth || v->texture->params.compare_mode != COMPARE_REF_TO_TEXTURE) return 0.0f;
-  DepthCompare cmp;
-  cmp.on = true;
-  cmp.func = v->texture->params.compare_func;
-  cmp.ref = std::isnan(ref) ? 0.0f : std::clamp(ref, 0.0f, 1.0f);  // depth textures hold [0, 1]
-  const int layer = layer_or_minus < 0 ? ArrayLayer(*v, r) : 0;
-  return SampleFace(*v, 0, uv, Lambda(*v, duv_dx, duv_dy, 0.0f), cmp, layer).r;
-}
-}  // namespace
 
 float Textures::SampleShadow(int unit, glm::vec2 uv, float ref, glm::vec2 duv_dx, glm::vec2 duv_dy) const {
   return ShadowOf(Usable(unit_2d, unit), uv, 0, 0.0f, ref, duv_dx, duv_dy);
 }
 
 void Textures::SampleShadowLanes(int unit, const Lanes& c, float out[16]) const {
-  for (int l = 0; l < 16; ++l)
-    out[l] = SampleShadow(unit, glm::vec2(c.s[l], c.t[l]), c.r[l], glm::vec2(c.ds_dx[l], c.dt_dx[l]),
-                          glm::vec2(c.ds_dy[l], c.dt_dy[l]));
+  float all[4][16];
+  SampleBlock(Usable(unit_2d, unit), Lookup::kShadow, c, 0.0f, nullptr, all);
+  std::memcpy(out, all[0], sizeof all[0]);
 }
 
 glm::vec4 Textures::SampleArray(int unit, glm::vec3 uvl, glm::vec2 duv_dx, glm::vec2 duv_dy, float bias) const {
@@ -1143,9 +1245,9 @@ void Textures::SampleArrayLodLanes(int unit, const Lanes& c, const float lod[16]
 }
 
 void Textures::SampleArrayShadowLanes(int unit, const Lanes& c, const float ref[16], float out[16]) const {
-  for (int l = 0; l < 16; ++l)
-    out[l] = SampleArrayShadow(unit, glm::vec3(c.s[l], c.t[l], c.r[l]), ref[l], glm::vec2(c.ds_dx[l], c.dt_dx[l]),
-                               glm::vec2(c.ds_dy[l], c.dt_dy[l]));
+  float all[4][16];
+  SampleBlock(Usable(unit_2d_array, unit), Lookup::kArrayShadow, c, 0.0f, ref, all);
+  std::memcpy(out, all[0], sizeof all[0]);
 }
 
 void Textures::Sample3DLanes(int unit, const Lanes& c, float bias, float out[4][16]) const {

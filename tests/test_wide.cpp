@@ -476,7 +476,10 @@ TEST_CASE("textures sampled 16 lanes at a time give the floats of one lane at a 
                         {RG32F, 16, 32, NEAREST, REPEAT}, {R16F, 9, 9, LINEAR_MIPMAP_LINEAR, CLAMP_TO_EDGE},
                         {R11F_G11F_B10F, 32, 32, LINEAR_MIPMAP_LINEAR, REPEAT},
                         {RGB565, 20, 30, NEAREST_MIPMAP_LINEAR, CLAMP_TO_BORDER, REPEAT, LINEAR},
-                        {RGB10_A2, 16, 16, LINEAR, MIRRORED_REPEAT}, {RGBA16, 32, 16, LINEAR_MIPMAP_LINEAR, REPEAT}};
+                        {RGB10_A2, 16, 16, LINEAR, MIRRORED_REPEAT}, {RGBA16, 32, 16, LINEAR_MIPMAP_LINEAR, REPEAT},
+                        {RG16F, 20, 12, LINEAR_MIPMAP_LINEAR, REPEAT}, {RG16, 33, 7, LINEAR, MIRRORED_REPEAT},
+                        {R16, 16, 16, LINEAR_MIPMAP_NEAREST, CLAMP_TO_BORDER},
+                        {R32F, 31, 17, LINEAR_MIPMAP_LINEAR, REPEAT, CLAMP_TO_EDGE}};
   std::mt19937 rng(5);
   std::uniform_real_distribution<float> coord(-2.0f, 2.0f), deriv(-0.3f, 0.3f);
   for (const Case& c : cases) {
@@ -738,5 +741,108 @@ TEST_CASE("cube maps, 2D arrays and textureLod sampled 16 lanes at a time give t
       }
     }
     CHECK(compared == 100 * 2 * 64);
+  }
+}
+
+TEST_CASE("shadow lookups 16 lanes at a time give the floats of one lane at a time", "[wide][texture]") {
+  // texture(sampler2DShadow) and texture(sampler2DArrayShadow) on the vector path: each depth format, every
+  // comparison function, NEAREST and LINEAR (four comparisons), mipmapped or not, the border's depth compared
+  // too; references outside [0, 1] and NaN included. Then texture() on the same depth textures (no comparison).
+  struct Case {
+    Enum target, format, func, min_filter, mag_filter, wrap;
+  };
+  const Case cases[] = {
+      {TEXTURE_2D, DEPTH_COMPONENT32F, LEQUAL, LINEAR, LINEAR, CLAMP_TO_EDGE},
+      {TEXTURE_2D, DEPTH_COMPONENT16, LESS, NEAREST, NEAREST, CLAMP_TO_BORDER},
+      {TEXTURE_2D, DEPTH24_STENCIL8, GEQUAL, LINEAR_MIPMAP_LINEAR, LINEAR, REPEAT},
+      {TEXTURE_2D, DEPTH_COMPONENT24, GREATER, LINEAR_MIPMAP_NEAREST, NEAREST, CLAMP_TO_BORDER},
+      {TEXTURE_2D, DEPTH_COMPONENT32F, EQUAL, NEAREST, NEAREST, MIRRORED_REPEAT},
+      {TEXTURE_2D, DEPTH_COMPONENT16, NOTEQUAL, LINEAR, LINEAR, CLAMP_TO_EDGE},
+      {TEXTURE_2D, DEPTH_COMPONENT32F, ALWAYS, LINEAR, LINEAR, REPEAT},
+      {TEXTURE_2D, DEPTH_COMPONENT32F, NEVER, LINEAR, LINEAR, REPEAT},
+      {TEXTURE_2D_ARRAY, DEPTH_COMPONENT32F, LEQUAL, LINEAR, LINEAR, CLAMP_TO_BORDER},
+      {TEXTURE_2D_ARRAY, DEPTH_COMPONENT16, GREATER, NEAREST_MIPMAP_LINEAR, LINEAR, REPEAT},
+  };
+  std::mt19937 rng(17);
+  std::uniform_real_distribution<float> coord(-2.0f, 2.0f), deriv(-0.3f, 0.3f), depth(0.0f, 1.0f);
+  for (const Case& c : cases) {
+    detail::TextureObject t;
+    t.target = c.target;
+    const int w = 24, h = 16, layers = c.target == TEXTURE_2D_ARRAY ? 3 : 1;
+    auto& l = t.levels[0][0];
+    l.Allocate(c.format, w, h, 1, layers);
+    for (int j = 0; j < h * layers; ++j)
+      for (int i = 0; i < w; ++i)
+        detail::StoreTexel(l, i, j, glm::vec4(i % 5 == 0 ? 0.5f : depth(rng), 0.0f, 0.0f, 1.0f));
+    detail::GenerateMipmaps(t);
+    t.params.min_filter = c.min_filter;
+    t.params.mag_filter = c.mag_filter;
+    t.params.wrap_s = t.params.wrap_t = c.wrap;
+    t.params.border = glm::vec4(0.6f, 0.0f, 0.0f, 1.0f);
+    t.params.compare_mode = COMPARE_REF_TO_TEXTURE;
+    t.params.compare_func = c.func;
+    const detail::TextureView view = detail::MakeView(t);
+    REQUIRE(view.complete);
+    REQUIRE(view.depth);
+    CHECK(view.wide);
+    Textures tx;
+    if (c.target == TEXTURE_2D_ARRAY) tx.unit_2d_array[0] = &view;
+    else tx.unit_2d[0] = &view;
+    int compared = 0;
+    for (int round = 0; round < 100; ++round) {
+      Textures::Lanes lanes;
+      float ref[16];
+      for (int k = 0; k < 16; ++k) {
+        lanes.s[k] = coord(rng);
+        lanes.t[k] = coord(rng);
+        ref[k] = round % 9 == 0 ? 0.5f : coord(rng) * 0.4f + 0.5f;  // some outside [0, 1]; 0.5 hits EQUAL
+        lanes.r[k] = c.target == TEXTURE_2D_ARRAY ? coord(rng) * 2.0f + 1.0f : ref[k];
+        lanes.ds_dx[k] = deriv(rng) * (round % 4 == 0 ? 0.01f : 1.0f);
+        lanes.dt_dx[k] = deriv(rng);
+        lanes.ds_dy[k] = deriv(rng);
+        lanes.dt_dy[k] = deriv(rng) * (round % 7 == 0 ? 40.0f : 1.0f);
+        lanes.dr_dx[k] = lanes.dr_dy[k] = 0.0f;
+      }
+      if (round == 3) {
+        ref[1] = lanes.r[1] = std::numeric_limits<float>::quiet_NaN();
+        lanes.s[2] = std::numeric_limits<float>::quiet_NaN();
+        lanes.ds_dx[5] = lanes.dt_dx[5] = lanes.ds_dy[5] = lanes.dt_dy[5] = 0.0f;
+      }
+      float out[16], plain[4][16];
+      if (c.target == TEXTURE_2D_ARRAY) {
+        tx.SampleArrayShadowLanes(0, lanes, ref, out);
+        tx.SampleArrayLanes(0, lanes, 0.0f, plain);
+      } else {
+        tx.SampleShadowLanes(0, lanes, out);
+        tx.SampleLanes(0, lanes, 0.0f, plain);
+      }
+      for (int k = 0; k < 16; ++k) {
+        const glm::vec2 uv(lanes.s[k], lanes.t[k]), dx(lanes.ds_dx[k], lanes.dt_dx[k]), dy(lanes.ds_dy[k], lanes.dt_dy[k]);
+        const glm::vec3 uvl(uv, lanes.r[k]);
+        const float one = c.target == TEXTURE_2D_ARRAY ? tx.SampleArrayShadow(0, uvl, ref[k], dx, dy)
+                                                       : tx.SampleShadow(0, uv, lanes.r[k], dx, dy);
+        const glm::vec4 one_plain =
+            c.target == TEXTURE_2D_ARRAY ? tx.SampleArray(0, uvl, dx, dy, 0.0f) : tx.Sample(0, uv, dx, dy, 0.0f);
+        std::uint32_t a, b;
+        std::memcpy(&a, &out[k], 4);
+        std::memcpy(&b, &one, 4);
+        if (a != b) {
+          INFO("shadow, format 0x" << std::hex << c.format << " func 0x" << c.func << std::dec << " lane " << k << ": "
+                                   << out[k] << " vs " << one);
+          CHECK(a == b);
+        }
+        ++compared;
+        for (int ch = 0; ch < 4; ++ch) {
+          std::memcpy(&a, &plain[ch][k], 4);
+          std::memcpy(&b, &one_plain[ch], 4);
+          if (a != b) {
+            INFO("no comparison, format 0x" << std::hex << c.format << std::dec << " lane " << k << " channel " << ch);
+            CHECK(a == b);
+          }
+          ++compared;
+        }
+      }
+    }
+    CHECK(compared == 100 * 16 * 5);
   }
 }
