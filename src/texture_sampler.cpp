@@ -491,11 +491,11 @@ SOFTGL_INLINE typename V<W>::F HalfLanes(typename V<W>::U h) {
   return f;
 }
 
-// Whether a layout's texel is decoded from its first 32 bits by WordTexels (one channel of 32 or 16 bits, or two of
-// 16): a row's two texels then come from one 64-bit load.
+// Whether a layout's texel is decoded from its first 32 bits by WordTexels (one channel of 32 or 16 bits, two of
+// 16, or a packed fixed-point word): a row's two texels then come from one 64-bit load.
 inline bool IsWordLayout(TexelLayout l) {
   return l == TexelLayout::kFloat32x1 || l == TexelLayout::kFloat16x1 || l == TexelLayout::kFloat16x2 ||
-         l == TexelLayout::kUnorm16x1 || l == TexelLayout::kUnorm16x2;
+         l == TexelLayout::kUnorm16x1 || l == TexelLayout::kUnorm16x2 || detail::IsPackedUnorm(l);
 }
 // The texels whose first 32 bits are `word`, in a WordTexels layout, as RawTexel reads them.
 template <int W>
@@ -504,7 +504,20 @@ SOFTGL_INLINE void WordTexels(TexelLayout layout, typename V<W>::U word, typenam
   using I = typename V<W>::I;
   out[1] = out[2] = F{};
   out[3] = F{} + 1.0f;
+  // A packed layout's channels: bits and lowest bit of red, green, blue, alpha (0 bits: alpha absent, reads 1), as
+  // RawTexel has them: k / (2^bits - 1).
+  auto packed = [&](const int (&bits)[4], const int (&shift)[4]) SOFTGL_WIDE_LAMBDA {
+    for (int c = 0; c < 4; ++c)
+      if (bits[c]) {
+        const unsigned max = (1u << bits[c]) - 1u;
+        out[c] = __builtin_convertvector(I((word >> shift[c]) & max), F) / float(max);
+      }
+  };
   switch (layout) {
+    case TexelLayout::kUnorm565: return packed({5, 6, 5, 0}, {11, 5, 0, 0});
+    case TexelLayout::kUnorm4444: return packed({4, 4, 4, 4}, {12, 8, 4, 0});
+    case TexelLayout::kUnorm5551: return packed({5, 5, 5, 1}, {11, 6, 1, 0});
+    case TexelLayout::kUnorm1010102: return packed({10, 10, 10, 2}, {0, 10, 20, 30});
     case TexelLayout::kFloat32x1: std::memcpy(&out[0], &word, sizeof word); break;
     case TexelLayout::kFloat16x2: out[1] = HalfLanes<W>(word >> 16); [[fallthrough]];
     case TexelLayout::kFloat16x1: out[0] = HalfLanes<W>(word & 0xFFFFu); break;
@@ -514,9 +527,9 @@ SOFTGL_INLINE void WordTexels(TexelLayout layout, typename V<W>::U word, typenam
 }
 
 // Texel `index` (row * width + column) of level `lv` for each lane of `mask` (every lane if All), in any layout,
-// as Sampled() gives it; anything in the other lanes. Float layouts (16- and 32-bit) and 16-bit fixed point are
-// read with one or two 64-bit loads a lane and converted in vector form; the others read each texel with RawTexel,
-// one lane at a time.
+// as Sampled() gives it; anything in the other lanes. Float layouts (16- and 32-bit), 16-bit fixed point and the
+// packed fixed-point layouts are read with one or two 64-bit loads a lane and converted in vector form;
+// R11F_G11F_B10F reads each texel with RawTexel, one lane at a time.
 template <int W, bool All>
 SOFTGL_INLINE void GatherTexels(const TextureLevel& lv, typename V<W>::I index, typename V<W>::I mask,
                                 typename V<W>::F out[4]) {
@@ -524,6 +537,12 @@ SOFTGL_INLINE void GatherTexels(const TextureLevel& lv, typename V<W>::I index, 
   using U = typename V<W>::U;
   using D = typename V<W>::D;
   const TexelLayout layout = lv.layout;
+  if (IsWordLayout(layout)) {  // (lanes outside the mask read at texel 0)
+    const typename V<W>::I at = (All ? index : index & mask) * lv.bytes;
+    WordTexels<W>(layout, __builtin_convertvector(LoadPairs<W>(lv.data.data(), at, std::make_index_sequence<W>()), U),
+                  out);
+    return;
+  }
   const int channels =
       layout == TexelLayout::kFloat16x4 || layout == TexelLayout::kFloat32x4 || layout == TexelLayout::kUnorm16x4 ? 4
       : layout == TexelLayout::kFloat16x2 || layout == TexelLayout::kFloat32x2 || layout == TexelLayout::kUnorm16x2
@@ -566,6 +585,40 @@ SOFTGL_INLINE void GatherTexels(const TextureLevel& lv, typename V<W>::I index, 
     for (int c = 0; c < 4; ++c) v[c][l] = t[c];
   }
   for (int c = 0; c < 4; ++c) out[c] = detail::LoadVec<F>(v[c]);
+}
+
+// The first 32 bits of the four texels of each lane's bilinear footprint (bytes a texel, at most 4): rows r0 and r1
+// (texel indices of their first texel), columns k0 and k1, for the lanes of `mask` (every lane if All). Each row's
+// two texels come from one 64-bit read at its left texel (lanes outside the mask read at texel 0, always there);
+// the level's padding covers a read at its last texel. Where the right-hand texel is not the next one in the row
+// (it wrapped, was clamped or mirrored), it is read on its own, unless it or both rows are border texels (c1, q0,
+// q1 negative: the border colour replaces them). (`apart` as bits: GCC 12 compiles an OR of two comparisons lane
+// by lane.)
+template <int W, bool All>
+SOFTGL_INLINE void RowPairs(const std::uint8_t* base, int bytes, typename V<W>::I r0, typename V<W>::I r1,
+                            typename V<W>::I k0, typename V<W>::I k1, typename V<W>::I c1, typename V<W>::I q0,
+                            typename V<W>::I q1, typename V<W>::I mask, typename V<W>::U& t00, typename V<W>::U& t10,
+                            typename V<W>::U& t01, typename V<W>::U& t11) {
+  using D = typename V<W>::D;
+  using U = typename V<W>::U;
+  const typename V<W>::I o0 = (All ? r0 + k0 : (r0 + k0) & mask) * bytes;
+  const typename V<W>::I o1 = (All ? r1 + k0 : (r1 + k0) & mask) * bytes;
+  const D p0 = LoadPairs<W>(base, o0, std::make_index_sequence<W>()),
+          p1 = LoadPairs<W>(base, o1, std::make_index_sequence<W>());
+  t00 = __builtin_convertvector(p0, U);
+  t01 = __builtin_convertvector(p1, U);
+  t10 = __builtin_convertvector(p0 >> (8 * bytes), U);
+  t11 = __builtin_convertvector(p1 >> (8 * bytes), U);
+  const std::uint32_t apart =
+      detail::MaskToBits<W>(All ? k1 != k0 + 1 : (k1 != k0 + 1) & mask, 0) & ~detail::SignBits<W>(c1 | (q0 & q1));
+  for (std::uint32_t wrap = apart; wrap != 0; wrap &= wrap - 1) {
+    const int l = __builtin_ctz(wrap);
+    std::uint32_t w0, w1;
+    std::memcpy(&w0, base + std::size_t(r0[l] + k1[l]) * bytes, 4);
+    std::memcpy(&w1, base + std::size_t(r1[l] + k1[l]) * bytes, 4);
+    t10[l] = w0;
+    t11[l] = w1;
+  }
 }
 
 // Bilinear samples of level `lv` for the lanes of `mask` (for every lane if All), in storage units, written into
@@ -622,24 +675,8 @@ SOFTGL_INLINE void BilinearLanes(const TextureLevel& lv, const LanesWrap<W>& wr,
     F x00[4], x10[4], x01[4], x11[4];
     if (IsWordLayout(lv.layout)) {
       // A row's two texels in one 64-bit load at its left texel, as for the 8-bit layouts below.
-      using D = typename V<W>::D;
-      const int bytes = lv.bytes;
-      const std::uint8_t* base = lv.data.data();
-      const I o0 = (All ? r0 + k0 : (r0 + k0) & mask) * bytes, o1 = (All ? r1 + k0 : (r1 + k0) & mask) * bytes;
-      const D p0 = LoadPairs<W>(base, o0, std::make_index_sequence<W>()),
-              p1 = LoadPairs<W>(base, o1, std::make_index_sequence<W>());
-      U t00 = __builtin_convertvector(p0, U), t01 = __builtin_convertvector(p1, U);
-      U t10 = __builtin_convertvector(p0 >> (8 * bytes), U), t11 = __builtin_convertvector(p1 >> (8 * bytes), U);
-      const std::uint32_t apart = detail::MaskToBits<W>(All ? k1 != k0 + 1 : (k1 != k0 + 1) & mask, 0) &
-                                  ~detail::SignBits<W>(c1 | (q0 & q1));
-      for (std::uint32_t wrap = apart; wrap != 0; wrap &= wrap - 1) {
-        const int l = __builtin_ctz(wrap);
-        std::uint32_t w0, w1;
-        std::memcpy(&w0, base + std::size_t(r0[l] + k1[l]) * bytes, 4);
-        std::memcpy(&w1, base + std::size_t(r1[l] + k1[l]) * bytes, 4);
-        t10[l] = w0;
-        t11[l] = w1;
-      }
+      U t00, t10, t01, t11;
+      RowPairs<W, All>(lv.data.data(), lv.bytes, r0, r1, k0, k1, c1, q0, q1, mask, t00, t10, t01, t11);
       WordTexels<W>(lv.layout, t00, x00);
       WordTexels<W>(lv.layout, t10, x10);
       WordTexels<W>(lv.layout, t01, x01);
@@ -655,28 +692,8 @@ SOFTGL_INLINE void BilinearLanes(const TextureLevel& lv, const LanesWrap<W>& wr,
       else channel_sum(std::false_type(), c, x00[c], x10[c], x01[c], x11[c]);
     }
   } else {
-    // Each row's two texels from one 64-bit read at its left texel (lanes outside the mask read at texel 0,
-    // always there, and are discarded below); the level's padding covers a read at its last texel.
-    using D = typename V<W>::D;
-    const std::uint8_t* base = lv.data.data();
-    const I o0 = (All ? r0 + k0 : (r0 + k0) & mask) * Bytes, o1 = (All ? r1 + k0 : (r1 + k0) & mask) * Bytes;
-    const D p0 = LoadPairs<W>(base, o0, std::make_index_sequence<W>()),
-            p1 = LoadPairs<W>(base, o1, std::make_index_sequence<W>());
-    U t00 = __builtin_convertvector(p0, U), t01 = __builtin_convertvector(p1, U);
-    U t10 = __builtin_convertvector(p0 >> (8 * Bytes), U), t11 = __builtin_convertvector(p1 >> (8 * Bytes), U);
-    // Where the right-hand texel is not the next one in the row (it wrapped, was clamped or mirrored), it is read
-    // on its own (not where it or both rows are border texels: the border colour replaces them).
-    // (As bits: GCC 12 compiles an OR of two comparisons lane by lane.)
-    const std::uint32_t apart =
-        detail::MaskToBits<W>(All ? k1 != k0 + 1 : (k1 != k0 + 1) & mask, 0) & ~detail::SignBits<W>(c1 | (q0 & q1));
-    for (std::uint32_t wrap = apart; wrap != 0; wrap &= wrap - 1) {
-      const int l = __builtin_ctz(wrap);
-      std::uint32_t w0, w1;
-      std::memcpy(&w0, base + std::size_t(r0[l] + k1[l]) * Bytes, 4);
-      std::memcpy(&w1, base + std::size_t(r1[l] + k1[l]) * Bytes, 4);
-      t10[l] = w0;
-      t11[l] = w1;
-    }
+    U t00, t10, t01, t11;
+    RowPairs<W, All>(lv.data.data(), Bytes, r0, r1, k0, k1, c1, q0, q1, mask, t00, t10, t01, t11);
     // One channel at a time, decoded where it is summed (fewer registers live than four decoded texels); the
     // border's selects in a form of their own.
     auto sums = [&](auto border) SOFTGL_WIDE_LAMBDA {

@@ -479,7 +479,8 @@ TEST_CASE("textures sampled 16 lanes at a time give the floats of one lane at a 
                         {RGB10_A2, 16, 16, LINEAR, MIRRORED_REPEAT}, {RGBA16, 32, 16, LINEAR_MIPMAP_LINEAR, REPEAT},
                         {RG16F, 20, 12, LINEAR_MIPMAP_LINEAR, REPEAT}, {RG16, 33, 7, LINEAR, MIRRORED_REPEAT},
                         {R16, 16, 16, LINEAR_MIPMAP_NEAREST, CLAMP_TO_BORDER},
-                        {R32F, 31, 17, LINEAR_MIPMAP_LINEAR, REPEAT, CLAMP_TO_EDGE}};
+                        {R32F, 31, 17, LINEAR_MIPMAP_LINEAR, REPEAT, CLAMP_TO_EDGE},
+                        {RGBA4, 12, 12, NEAREST, REPEAT}, {RGB5_A1, 16, 8, LINEAR_MIPMAP_LINEAR, CLAMP_TO_BORDER}};
   std::mt19937 rng(5);
   std::uniform_real_distribution<float> coord(-2.0f, 2.0f), deriv(-0.3f, 0.3f);
   for (const Case& c : cases) {
