@@ -190,12 +190,14 @@ struct UvVaryings {
   vec2 uv;
 };
 struct TextureShader : Shader<TextureShader, UvVaryings> {
+  bool fetch = false;  // texelFetch(tex, ivec2(gl_FragCoord.xy), 0) instead
   void Vertex(const VertexLanes& in, VertexLanesOut<UvVaryings>& out) const {
     out.position = vec4(vec3(in.attrib[0]), 1.0f);
     out.varyings.uv = vec2(in.attrib[1]);
   }
   void Fragment(const FragmentLanes<UvVaryings>& in, FragmentLanesOut& out) const {
-    out.color[0] = in.Texture(0, in.varyings.uv);
+    if (fetch) out.color[0] = in.TexelFetch(0, Int(in.frag_coord.x), Int(in.frag_coord.y));
+    else out.color[0] = in.Texture(0, in.varyings.uv);
   }
 };
 
@@ -303,12 +305,13 @@ struct UvVaryings {
   glm::vec2 uv;
 };
 struct TextureShader : softgl::Shader<TextureShader, UvVaryings> {
+  bool fetch = false;
   void Vertex(const softgl::VertexIn& in, softgl::VertexOut<UvVaryings>& out) const {
     out.position = glm::vec4(glm::vec3(in.attrib[0]), 1.0f);
     out.varyings.uv = glm::vec2(in.attrib[1]);
   }
   bool Fragment(const softgl::FragmentIn<UvVaryings>& in, softgl::FragmentOut& out) const {
-    out.color[0] = in.Texture(0, &UvVaryings::uv);
+    out.color[0] = fetch ? in.textures->Fetch(0, glm::ivec2(in.frag_coord), 0) : in.Texture(0, &UvVaryings::uv);
     return true;
   }
 };
@@ -416,6 +419,8 @@ const char* kPlaneVs =
     "#version 330 core\nlayout(location=0) in vec4 p; layout(location=1) in vec2 t; out vec2 uv;"
     "void main(){ gl_Position = p; uv = t; }";
 const char* kTexFs = "#version 330 core\nin vec2 uv; uniform sampler2D tex; out vec4 o; void main(){ o = texture(tex, uv); }";
+const char* kFetchFs = "#version 330 core\nin vec2 uv; uniform sampler2D tex; out vec4 o;"
+                       "void main(){ o = texelFetch(tex, ivec2(gl_FragCoord.xy), 0); }";
 const char* kCubeFs = "#version 330 core\nin vec2 uv; uniform samplerCube tex; out vec4 o;"
                       "void main(){ o = texture(tex, vec3(uv.x - 20.0, 1.0, uv.y - 2.0)); }";
 const char* kArrayFs = "#version 330 core\nin vec2 uv; uniform sampler2DArray tex; out vec4 o;"
@@ -930,6 +935,43 @@ int main(int argc, char** argv) {
                           glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
                           Program(kTexVs, kTexFs);
                           return TimeGl(n, overdraw_frame);
+                        });
+                      }});
+  }
+
+  // texelFetch: four full-screen quads each reading its pixel of a 1280 x 720 RGBA16F texture (a deferred
+  // renderer's G-buffer read).
+  {
+    const Geometry fetch_quads = FullScreenQuads(4, 1.0f);
+    const FrameSpec fetch_frame{false, false, 24, "bench_fetch.png"};
+    std::vector<std::uint8_t> gbuffer;
+    for (int i = 0; i < 1280 * 720 && all_data; ++i)
+      gbuffer.insert(gbuffer.end(), {std::uint8_t(i), std::uint8_t(i >> 8), std::uint8_t(i >> 16), 255});
+    scenes.push_back({"texelFetch: 4 full-screen quads, RGBA16F 1280x720", 1280, 720, "Mpixel/s", 4.0 * 1280 * 720,
+                      [&, fetch_quads, fetch_frame, gbuffer](int n) {
+                        return WithShader<wide::TextureShader, scalar::TextureShader>([&](auto& shader) {
+                          softgl::Context gl(1280, 720, g_options);
+                          softgl_setup(gl, fetch_quads);
+                          gl.BindTexture(softgl::TEXTURE_2D, gl.GenTexture());
+                          gl.TexImage2D(softgl::TEXTURE_2D, 0, softgl::RGBA16F, 1280, 720, 0, softgl::RGBA,
+                                        softgl::UNSIGNED_BYTE, gbuffer.data());
+                          gl.TexParameteri(softgl::TEXTURE_2D, softgl::TEXTURE_MIN_FILTER, softgl::NEAREST);
+                          shader.fetch = true;
+                          gl.UseProgram(shader);
+                          return TimeSoftgl(n, gl, fetch_frame);
+                        });
+                      },
+                      [&, fetch_quads, fetch_frame, gbuffer](int n) {
+                        return with_osmesa(1280, 720, [&] {
+                          gl_setup(fetch_quads);
+                          GLuint tex;
+                          glGenTextures(1, &tex);
+                          glBindTexture(GL_TEXTURE_2D, tex);
+                          glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA16F, 1280, 720, 0, GL_RGBA, GL_UNSIGNED_BYTE,
+                                       gbuffer.data());
+                          glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+                          Program(kTexVs, kFetchFs);
+                          return TimeGl(n, fetch_frame);
                         });
                       }});
   }

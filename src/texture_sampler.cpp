@@ -1303,6 +1303,83 @@ glm::vec4 TexelOf(const TextureView& v, const TextureLevel& lv, glm::ivec2 p, in
     return glm::vec4(0.0f);
   return lv.Sampled(p.x, plane * lv.height + p.y) / v.scale;
 }
+
+// ---- texelFetch for a block of lanes ------------------------------------------------------------------------------
+//
+// TexelOf for W lanes at a time: each lane's texel (x, y) of plane `which` (a multisample texture's sample) of level
+// base + `which` (a 2D texture's level), 0 outside; lanes on one level go together (usually all), their texels read
+// in vector form (GatherTexels; an 8-bit layout's with one load a lane), in the format's units divided by its scale.
+template <int W>
+SOFTGL_INLINE void FetchTexelLanes(const TextureView& v, bool multisample, const int* xs, const int* ys,
+                                   const int* which, float out[4][16]) {
+  using F = typename V<W>::F;
+  using I = typename V<W>::I;
+  using U = typename V<W>::U;
+  const auto& levels = v.texture->levels[0];
+  for (int l0 = 0; l0 < 16; l0 += W) {
+    const I x = detail::LoadVec<I>(xs + l0), y = detail::LoadVec<I>(ys + l0), k = detail::LoadVec<I>(which + l0);
+    // The level each lane reads (base + level, or 0), -1 where there is none.
+    I level = multisample ? I{} : k + v.base;
+    level = U(k) < unsigned(multisample ? 0x7FFFFFFF : detail::kMaxLevels - v.base) ? level : I{} - 1;
+    F r[4] = {};
+    I pending = level >= 0;
+    for (std::uint32_t bits = detail::MaskToBits<W>(pending, 0); bits != 0; bits = detail::MaskToBits<W>(pending, 0)) {
+      const int L = level[__builtin_ctz(bits)];
+      const I on_level = pending & (level == L);
+      pending &= ~on_level;
+      const TextureLevel& lv = levels[L];
+      if (!lv.Defined()) continue;
+      const int planes = multisample ? lv.samples : 1;
+      const I plane = multisample ? k : I{};
+      // Inside: 0 <= x < width, 0 <= y < height, 0 <= plane < planes (unsigned comparisons, as bits).
+      const std::uint32_t inside = detail::MaskToBits<W>(on_level, 0) &
+                                   detail::MaskToBits<W>(U(x) < unsigned(lv.width), 0) &
+                                   detail::MaskToBits<W>(U(y) < unsigned(lv.height), 0) &
+                                   detail::MaskToBits<W>(U(plane) < unsigned(planes), 0);
+      const I in = detail::BitsToMask<W>(inside, 0);
+      // (In unsigned arithmetic: lanes outside may overflow, and read texel 0.)
+      const I index = I(((U(plane) * unsigned(lv.height) + U(y)) * unsigned(lv.width) + U(x)) & U(in));
+      F t[4];
+      switch (lv.layout) {
+        case TexelLayout::kUnorm8x4: {
+          const U word = __builtin_convertvector(
+              LoadPairs<W>(lv.data.data(), index * 4, std::make_index_sequence<W>()), U);
+          if (lv.srgb) Channels<W, 4, true>(word, t);
+          else Channels<W, 4, false>(word, t);
+          break;
+        }
+        default: GatherTexels<W, false>(lv, index, in, t); break;
+      }
+      for (int c = 0; c < 4; ++c) r[c] = in != 0 ? t[c] / v.scale : r[c];
+    }
+    for (int c = 0; c < 4; ++c) std::memcpy(&out[c][l0], &r[c], sizeof r[c]);
+  }
+}
+
+void FetchTexelLanesBase(const TextureView& v, bool ms, const int* x, const int* y, const int* k, float out[4][16]) {
+  FetchTexelLanes<4>(v, ms, x, y, k, out);
+}
+#if defined(SOFTGL_HAS_DISPATCH)
+SOFTGL_TARGET_AVX2 void FetchTexelLanesAvx2(const TextureView& v, bool ms, const int* x, const int* y, const int* k,
+                                            float out[4][16]) {
+  FetchTexelLanes<8>(v, ms, x, y, k, out);
+}
+SOFTGL_TARGET_AVX512 void FetchTexelLanesAvx512(const TextureView& v, bool ms, const int* x, const int* y,
+                                                const int* k, float out[4][16]) {
+  FetchTexelLanes<16>(v, ms, x, y, k, out);
+}
+#endif
+using FetchTexelLanesFn = void (*)(const TextureView&, bool, const int*, const int*, const int*, float[4][16]);
+
+void FetchBlock(const TextureView* v, bool multisample, const int* x, const int* y, const int* k, float out[4][16]) {
+  if (!v) {
+    for (int c = 0; c < 4; ++c)
+      for (int l = 0; l < 16; ++l) out[c][l] = 0.0f;
+    return;
+  }
+  static const FetchTexelLanesFn fetch = SOFTGL_CHOOSE(FetchTexelLanes, );
+  fetch(*v, multisample, x, y, k, out);
+}
 }  // namespace
 
 glm::vec4 Textures::Fetch(int unit, glm::ivec2 texel, int level) const {
@@ -1329,12 +1406,12 @@ int Textures::Samples(int unit) const {
 }
 
 void Textures::FetchLanes(int unit, const int x[16], const int y[16], const int level[16], float out[4][16]) const {
-  EachLane(out, [&](int l) { return Fetch(unit, glm::ivec2(x[l], y[l]), level[l]); });
+  FetchBlock(Usable(unit_2d, unit), false, x, y, level, out);
 }
 
 void Textures::FetchSampleLanes(int unit, const int x[16], const int y[16], const int sample[16],
                                 float out[4][16]) const {
-  EachLane(out, [&](int l) { return FetchSample(unit, glm::ivec2(x[l], y[l]), sample[l]); });
+  FetchBlock(Usable(unit_2d_ms, unit), true, x, y, sample, out);
 }
 
 glm::ivec2 Textures::Size(int unit, int level) const {

@@ -847,3 +847,66 @@ TEST_CASE("shadow lookups 16 lanes at a time give the floats of one lane at a ti
     CHECK(compared == 100 * 16 * 5);
   }
 }
+
+TEST_CASE("texelFetch 16 lanes at a time gives the floats of one lane at a time", "[wide][texture]") {
+  // FetchLanes on every layout (levels of a mipmapped texture, levels it does not have, negative ones) and
+  // FetchSampleLanes on a multisample texture (samples it does not have); texels inside, on the edges and outside.
+  const Enum formats[] = {RGBA8, SRGB8_ALPHA8, RGB8, RG8, R8, RGBA16F, RGBA32F, R32F, RG16F, RGB565, RGB10_A2,
+                          R11F_G11F_B10F, RGBA16, DEPTH_COMPONENT32F};
+  std::mt19937 rng(23);
+  std::uniform_int_distribution<int> coord(-3, 40), level(-2, 7);
+  std::uniform_real_distribution<float> value(0.0f, 1.0f);
+  for (const bool multisample : {false, true}) {
+    for (const Enum format : formats) {
+      detail::TextureObject t;
+      t.target = multisample ? TEXTURE_2D_MULTISAMPLE : TEXTURE_2D;
+      auto& l = t.levels[0][0];
+      const int samples = multisample ? 4 : 1;
+      l.Allocate(format, 37, 23, samples);
+      for (int j = 0; j < 23 * samples; ++j)
+        for (int i = 0; i < 37; ++i)
+          detail::StoreTexel(l, i, j, glm::vec4(value(rng), value(rng), value(rng), value(rng)));
+      if (!multisample) detail::GenerateMipmaps(t);
+      t.params.min_filter = NEAREST_MIPMAP_NEAREST;
+      const detail::TextureView view = detail::MakeView(t);
+      REQUIRE(view.complete);
+      Textures tx;
+      if (multisample) tx.unit_2d_ms[0] = &view;
+      else tx.unit_2d[0] = &view;
+      int differ = 0;
+      for (int round = 0; round < 50; ++round) {
+        int x[16], y[16], which[16];
+        for (int k = 0; k < 16; ++k) {
+          x[k] = coord(rng);
+          y[k] = coord(rng);
+          which[k] = multisample ? level(rng) % 6 : (round % 2 ? level(rng) : 0);
+        }
+        if (round == 1) {
+          x[0] = std::numeric_limits<int>::min();
+          y[1] = std::numeric_limits<int>::max();
+          which[2] = std::numeric_limits<int>::max();
+          which[3] = std::numeric_limits<int>::min();
+        }
+        float out[4][16];
+        if (multisample) tx.FetchSampleLanes(0, x, y, which, out);
+        else tx.FetchLanes(0, x, y, which, out);
+        for (int k = 0; k < 16; ++k) {
+          const glm::vec4 one = multisample ? tx.FetchSample(0, glm::ivec2(x[k], y[k]), which[k])
+                                            : tx.Fetch(0, glm::ivec2(x[k], y[k]), which[k]);
+          for (int c = 0; c < 4; ++c) {
+            std::uint32_t a, b;
+            std::memcpy(&a, &out[c][k], 4);
+            std::memcpy(&b, &one[c], 4);
+            if (a != b) {
+              INFO("format 0x" << std::hex << format << std::dec << (multisample ? " samples" : "") << " lane " << k
+                               << " (" << x[k] << ", " << y[k] << ", " << which[k] << ") channel " << c);
+              CHECK(a == b);
+              ++differ;
+            }
+          }
+        }
+      }
+      CHECK(differ == 0);
+    }
+  }
+}
