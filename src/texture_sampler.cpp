@@ -965,11 +965,15 @@ SOFTGL_INLINE void SampleTexelLanes(const TextureView& view, Lookup kind, const 
           NearestLanes<W, Bytes, Srgb, true>(levels[level_a[0] + 1], wr, s, t, normal, rb);
       }
     }
-    // Otherwise each level the lanes need, for the lanes that need it (ra and rb named, not chosen by a pointer,
-    // so that they can stay in registers).
-    // (A cube map's lanes go by face and level: the key face * 64 + level, one comparison.)
-    auto each_level = [&](I pending, I level, F r[4]) SOFTGL_WIDE_LAMBDA {
+    // Otherwise each level the lanes need, first (into ra) and second (level_a + 1, into rb), for the lanes that
+    // need it; a cube map's lanes by face and level (the key face * 64 + level, one comparison). (One loop, its
+    // trip count not known to the compiler, so that the filters are inlined once here.)
+    const int stages = usual ? 0 : detail::MaskToBits<W>(normal & two, 0) != 0 ? 2 : 1;
+    for (int k = 0; k < stages; ++k) {
+      I pending = k ? normal & two : normal;
+      const I level = level_a + k;
       const I key = cube ? face * 64 + level : level;
+      F* r = k ? rb : ra;
       for (std::uint32_t bits = detail::MaskToBits<W>(pending, 0); bits != 0;
            bits = detail::MaskToBits<W>(pending, 0)) {
         const int lane = __builtin_ctz(bits);
@@ -977,10 +981,6 @@ SOFTGL_INLINE void SampleTexelLanes(const TextureView& view, Lookup kind, const 
         FilterLanes<W, Bytes, Srgb>(all_levels[face[lane]][level[lane]], wr, s, t, mask, linear, r);
         pending &= ~mask;
       }
-    };
-    if (!usual) {
-      each_level(normal, level_a, ra);
-      each_level(normal & two, level_a + 1, rb);
     }
     for (int ch = 0; ch < 4; ++ch) {
       const F one = ra[ch];
@@ -1319,7 +1319,7 @@ SOFTGL_INLINE void FetchTexelLanes(const TextureView& v, bool multisample, const
   for (int l0 = 0; l0 < 16; l0 += W) {
     const I x = detail::LoadVec<I>(xs + l0), y = detail::LoadVec<I>(ys + l0), k = detail::LoadVec<I>(which + l0);
     // The level each lane reads (base + level, or 0), -1 where there is none.
-    I level = multisample ? I{} : k + v.base;
+    I level = multisample ? I{} : I(U(k) + unsigned(v.base));  // (unsigned: k may be anything)
     level = U(k) < unsigned(multisample ? 0x7FFFFFFF : detail::kMaxLevels - v.base) ? level : I{} - 1;
     F r[4] = {};
     I pending = level >= 0;
