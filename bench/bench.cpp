@@ -224,11 +224,12 @@ struct DirShader : Shader<DirShader, DirVaryings> {
     out.position = in.attrib[0];
     const vec2 t = vec2(in.attrib[1]);
     out.varyings.dir = mode == 0   ? vec3(t.x - 20.0f, Float(1.0f), t.y - 2.0f)
-                       : mode == 1 ? vec3(t.x, t.y, t.x * 0.1f)
-                                   : vec3(t.x, t.y, t.x) / 40.0f;
+                       : mode == 2 ? vec3(t.x, t.y, t.x) / 40.0f
+                                   : vec3(t.x, t.y, t.x * 0.1f);
   }
   void Fragment(const FragmentLanes<DirVaryings>& in, FragmentLanesOut& out) const {
     if (mode == 2) out.color[0] = vec4(vec3(in.TextureShadow(0, in.varyings.dir)), 1.0f);
+    else if (mode == 3) out.color[0] = in.Texture3D(0, in.varyings.dir);
     else out.color[0] = mode == 0 ? in.TextureCube(0, in.varyings.dir) : in.TextureArray(0, in.varyings.dir);
   }
 };
@@ -336,8 +337,8 @@ struct DirShader : softgl::Shader<DirShader, DirVaryings> {
     out.position = in.attrib[0];
     const glm::vec2 t(in.attrib[1]);
     out.varyings.dir = mode == 0   ? glm::vec3(t.x - 20.0f, 1.0f, t.y - 2.0f)
-                       : mode == 1 ? glm::vec3(t.x, t.y, t.x * 0.1f)
-                                   : glm::vec3(t.x, t.y, t.x) / 40.0f;
+                       : mode == 2 ? glm::vec3(t.x, t.y, t.x) / 40.0f
+                                   : glm::vec3(t.x, t.y, t.x * 0.1f);
   }
   bool Fragment(const softgl::FragmentIn<DirVaryings>& in, softgl::FragmentOut& out) const {
     if (mode == 2) {
@@ -345,6 +346,8 @@ struct DirShader : softgl::Shader<DirShader, DirVaryings> {
       const float lit = in.textures->SampleShadow(0, glm::vec2(d), d.z, glm::vec2(in.dFdx(&DirVaryings::dir)),
                                                   glm::vec2(in.dFdy(&DirVaryings::dir)));
       out.color[0] = glm::vec4(glm::vec3(lit), 1.0f);
+    } else if (mode == 3) {
+      out.color[0] = in.Texture3D(0, &DirVaryings::dir);
     } else {
       out.color[0] = mode == 0 ? in.TextureCube(0, &DirVaryings::dir) : in.TextureArray(0, &DirVaryings::dir);
     }
@@ -425,6 +428,8 @@ const char* kCubeFs = "#version 330 core\nin vec2 uv; uniform samplerCube tex; o
                       "void main(){ o = texture(tex, vec3(uv.x - 20.0, 1.0, uv.y - 2.0)); }";
 const char* kArrayFs = "#version 330 core\nin vec2 uv; uniform sampler2DArray tex; out vec4 o;"
                        "void main(){ o = texture(tex, vec3(uv, uv.x * 0.1)); }";
+const char* k3DFs = "#version 330 core\nin vec2 uv; uniform sampler3D tex; out vec4 o;"
+                    "void main(){ o = texture(tex, vec3(uv, uv.x * 0.1)); }";
 const char* kShadowFs = "#version 330 core\nin vec2 uv; uniform sampler2DShadow tex; out vec4 o;"
                         "void main(){ o = vec4(vec3(texture(tex, vec3(uv, uv.x) / 40.0)), 1.0); }";
 const char* kPhongVs =
@@ -1102,6 +1107,55 @@ int main(int argc, char** argv) {
                           glTexParameteri(t, GL_TEXTURE_WRAP_S, wrap);
                           glTexParameteri(t, GL_TEXTURE_WRAP_T, wrap);
                           Program(kPlaneVs, cube ? kCubeFs : kArrayFs);
+                          return TimeGl(n, plane_frame);
+                        });
+                      }});
+  }
+  // The same plane with a 64^3 RGBA8 3D texture: with its mip chain, REPEAT, trilinear (eight texels a level,
+  // sixteen a lookup), and as a colour-grading table is used, LINEAR without mipmaps, CLAMP_TO_EDGE.
+  struct VolumeState {
+    const char* name;
+    Enum min_filter, wrap;
+  };
+  static const VolumeState kVolumeStates[] = {
+      {"sampler: 3D 64^3, REPEAT, trilinear", sg::LINEAR_MIPMAP_LINEAR, sg::REPEAT},
+      {"sampler: 3D 64^3, CLAMP_TO_EDGE, LINEAR / LINEAR", sg::LINEAR, sg::CLAMP_TO_EDGE}};
+  for (const VolumeState& st : kVolumeStates) {
+    std::vector<std::uint8_t> voxels;
+    const std::vector<std::uint8_t> slice = all_data ? PatternTexture(64) : std::vector<std::uint8_t>{};
+    for (int z = 0; z < 64 && all_data; ++z)
+      for (std::size_t i = 0; i < slice.size(); ++i)
+        voxels.push_back(std::uint8_t(slice[i] + (i % 4 == 3 ? 0 : 4 * z)));
+    scenes.push_back({st.name, 1280, 720, "Mpixel/s", 1280.0 * 720 / 2,
+                      [&, st, voxels](int n) {
+                        return WithShader<wide::DirShader, scalar::DirShader>([&](auto& shader) {
+                          softgl::Context gl(1280, 720, g_options);
+                          softgl_setup(gl, plane);
+                          gl.BindTexture(sg::TEXTURE_3D, gl.GenTexture());
+                          gl.TexImage3D(sg::TEXTURE_3D, 0, sg::RGBA8, 64, 64, 64, 0, sg::RGBA, sg::UNSIGNED_BYTE,
+                                        voxels.data());
+                          gl.GenerateMipmap(sg::TEXTURE_3D);
+                          gl.TexParameteri(sg::TEXTURE_3D, sg::TEXTURE_MIN_FILTER, st.min_filter);
+                          for (const Enum wrap : {sg::TEXTURE_WRAP_S, sg::TEXTURE_WRAP_T, sg::TEXTURE_WRAP_R})
+                            gl.TexParameteri(sg::TEXTURE_3D, wrap, st.wrap);
+                          shader.mode = 3;
+                          gl.UseProgram(shader);
+                          return TimeSoftgl(n, gl, plane_frame);
+                        });
+                      },
+                      [&, st, voxels](int n) {
+                        return with_osmesa(1280, 720, [&] {
+                          gl_setup(plane);
+                          GLuint tex;
+                          glGenTextures(1, &tex);
+                          glBindTexture(GL_TEXTURE_3D, tex);
+                          glTexImage3D(GL_TEXTURE_3D, 0, GL_RGBA8, 64, 64, 64, 0, GL_RGBA, GL_UNSIGNED_BYTE,
+                                       voxels.data());
+                          glGenerateMipmap(GL_TEXTURE_3D);
+                          glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MIN_FILTER, GLint(st.min_filter));
+                          for (const GLenum wrap : {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T, GL_TEXTURE_WRAP_R})
+                            glTexParameteri(GL_TEXTURE_3D, wrap, GLint(st.wrap));
+                          Program(kPlaneVs, k3DFs);
                           return TimeGl(n, plane_frame);
                         });
                       }});

@@ -598,7 +598,8 @@ TextureView MakeView(const TextureObject& texture) {
     if (p.min_filter == LINEAR) view.fast = TextureView::Fast::kRepeatLinear;
     if (p.min_filter == LINEAR_MIPMAP_LINEAR) view.fast = TextureView::Fast::kRepeatTrilinear;
   }
-  view.wide = texture.target == TEXTURE_2D || texture.target == TEXTURE_CUBE_MAP || texture.target == TEXTURE_2D_ARRAY;
+  view.wide = texture.target == TEXTURE_2D || texture.target == TEXTURE_CUBE_MAP || texture.target == TEXTURE_2D_ARRAY ||
+              texture.target == TEXTURE_3D;
   return view;
 }
 

@@ -202,9 +202,9 @@ struct TextureView {
   // comparison.
   enum class Fast : unsigned char { kNone, kRepeatLinear, kRepeatTrilinear };
   Fast fast = Fast::kNone;
-  // Whether the vector path (SampleLanes, SampleLodLanes, SampleShadowLanes, and the cube map and 2D array forms)
-  // samples the view: a 2D, cube map or 2D array texture, any layout, filters, wrap modes and size (with
-  // anisotropic filtering only its textureLod and shadow forms).
+  // Whether the vector path (SampleLanes, SampleLodLanes, SampleShadowLanes, and the cube map, 2D array and 3D
+  // forms) samples the view: a 2D, cube map, 2D array or 3D texture, any layout, filters, wrap modes, size and
+  // anisotropy.
   bool wide = false;
   bool operator==(const TextureView&) const = default;
 };

@@ -282,9 +282,9 @@ int CubeFace(glm::vec3 r) {
 __attribute__((noinline)) glm::vec4 Sample2D(const TextureView& v, glm::vec2 uv, glm::vec2 duv_dx, glm::vec2 duv_dy,
                                              float bias);
 
-// The lookups the vector path takes: texture() and textureLod() on a 2D texture, a 2D array and a cube map, and
-// texture() on a 2D shadow sampler and a 2D array shadow sampler.
-enum class Lookup : unsigned char { k2D, kLod, kArray, kArrayLod, kCube, kCubeLod, kShadow, kArrayShadow };
+// The lookups the vector path takes: texture() and textureLod() on a 2D texture, a 2D array, a cube map and a 3D
+// texture, and texture() on a 2D shadow sampler and a 2D array shadow sampler.
+enum class Lookup : unsigned char { k2D, kLod, kArray, kArrayLod, kCube, kCubeLod, kShadow, kArrayShadow, k3D, k3DLod };
 
 // Lane `lane` of a block's lookup through the one-lane path (for the lanes the vector path leaves: rho^2 not a
 // normal float), in the format's units divided by its scale, as the Textures calls give it. Not inlined, as
@@ -297,9 +297,9 @@ __attribute__((noinline)) glm::vec4 SampleOneLane(const TextureView& v, Lookup k
 // W lanes at a time (4 with SSE2, 8 with AVX2, 16 with AVX-512), each lane's operations those of SampleFace above in
 // the same order, for every filter pair, wrap mode and size. The levels a chunk of lanes needs are taken one at a
 // time (usually one or two), and each is filtered for all its lanes: texel addresses, wraps, texel loads, weights
-// side by side. 8-bit layouts load their texels in vector form (a row's two texels in one 64-bit load); the other
-// layouts read each texel with RawTexel, one lane at a time, the rest in vector form. Lanes whose rho^2 is not a
-// normal positive float (zero or NaN derivatives, say) take the one-lane path.
+// side by side. Texels are loaded with one 64-bit load a lane (a row's two texels at once where they fit) and decoded
+// in vector form, in every layout. Lanes whose rho^2 is not a normal positive float (zero or NaN derivatives, say)
+// take the one-lane path.
 //
 // GCC 12 compiles a select whose mask is not plainly one comparison (an OR of two, a mask passed through a select)
 // into a branch per lane, about 80 cycles a block at 16 lanes; the masks below are kept single comparisons, or
@@ -492,10 +492,11 @@ SOFTGL_INLINE typename V<W>::F HalfLanes(typename V<W>::U h) {
 }
 
 // Whether a layout's texel is decoded from its first 32 bits by WordTexels (one channel of 32 or 16 bits, two of
-// 16, or a packed fixed-point word): a row's two texels then come from one 64-bit load.
+// 16, a packed fixed-point word, or R11F_G11F_B10F's three small floats): a row's two texels then come from one 64-bit load.
 inline bool IsWordLayout(TexelLayout l) {
   return l == TexelLayout::kFloat32x1 || l == TexelLayout::kFloat16x1 || l == TexelLayout::kFloat16x2 ||
-         l == TexelLayout::kUnorm16x1 || l == TexelLayout::kUnorm16x2 || detail::IsPackedUnorm(l);
+         l == TexelLayout::kUnorm16x1 || l == TexelLayout::kUnorm16x2 || l == TexelLayout::kFloat11x11x10 ||
+         detail::IsPackedUnorm(l);
 }
 // The texels whose first 32 bits are `word`, in a WordTexels layout, as RawTexel reads them.
 template <int W>
@@ -519,6 +520,15 @@ SOFTGL_INLINE void WordTexels(TexelLayout layout, typename V<W>::U word, typenam
     case TexelLayout::kUnorm5551: return packed({5, 5, 5, 1}, {11, 6, 1, 0});
     case TexelLayout::kUnorm1010102: return packed({10, 10, 10, 2}, {0, 10, 20, 30});
     case TexelLayout::kFloat32x1: std::memcpy(&out[0], &word, sizeof word); break;
+    case TexelLayout::kFloat11x11x10: {
+      // Unsigned floats of 5 exponent bits (bias 15) and 6, 6 and 5 mantissa bits: a half's magnitude once the
+      // mantissa is moved up to the half's 10 bits; a NaN is the quiet NaN, as RawTexel gives it.
+      const F nan = F{} + std::numeric_limits<float>::quiet_NaN();
+      const F ch[3] = {HalfLanes<W>((word & 0x7FFu) << 4), HalfLanes<W>(((word >> 11) & 0x7FFu) << 4),
+                       HalfLanes<W>((word >> 22) << 5)};
+      for (int c = 0; c < 3; ++c) out[c] = ch[c] == ch[c] ? ch[c] : nan;
+      break;
+    }
     case TexelLayout::kFloat16x2: out[1] = HalfLanes<W>(word >> 16); [[fallthrough]];
     case TexelLayout::kFloat16x1: out[0] = HalfLanes<W>(word & 0xFFFFu); break;
     case TexelLayout::kUnorm16x2: out[1] = __builtin_convertvector(I(word >> 16), F) / 65535.0f; [[fallthrough]];
@@ -527,9 +537,9 @@ SOFTGL_INLINE void WordTexels(TexelLayout layout, typename V<W>::U word, typenam
 }
 
 // Texel `index` (row * width + column) of level `lv` for each lane of `mask` (every lane if All), in any layout,
-// as Sampled() gives it; anything in the other lanes. Float layouts (16- and 32-bit), 16-bit fixed point and the
-// packed fixed-point layouts are read with one or two 64-bit loads a lane and converted in vector form;
-// R11F_G11F_B10F reads each texel with RawTexel, one lane at a time.
+// as Sampled() gives it; anything in the other lanes. Float layouts (16- and 32-bit), 16-bit fixed point, the
+// packed fixed-point layouts and R11F_G11F_B10F are read with one or two 64-bit loads a lane and converted in vector
+// form; any other layout (the 8-bit ones, which the callers load themselves) with RawTexel, one lane at a time.
 template <int W, bool All>
 SOFTGL_INLINE void GatherTexels(const TextureLevel& lv, typename V<W>::I index, typename V<W>::I mask,
                                 typename V<W>::F out[4]) {
@@ -751,20 +761,13 @@ SOFTGL_INLINE void FilterLanes(const TextureLevel& lv, const LanesWrap<W>& wr, t
   if (detail::MaskToBits<W>(mask & ~linear, 0) != 0) NearestLanes<W, Bytes, Srgb>(lv, wr, s, t, mask & ~linear, out);
 }
 
-// Lambda() for W lanes; false for lanes whose rho^2 is not a normal positive float.
+// LambdaOfRho2 for W lanes; false for lanes whose rho^2 is not a normal positive float.
 template <int W>
-SOFTGL_INLINE typename V<W>::I LambdaLanes(const TextureView& view, typename V<W>::F ds_dx, typename V<W>::F dt_dx,
-                                           typename V<W>::F ds_dy, typename V<W>::F dt_dy, float bias,
-                                           typename V<W>::F& lambda) {
+SOFTGL_INLINE typename V<W>::I LambdaOfRho2Lanes(const TextureView& view, typename V<W>::F rho2, float bias,
+                                                 typename V<W>::F& lambda) {
   using F = typename V<W>::F;
   using I = typename V<W>::I;
   using U = typename V<W>::U;
-  const TextureLevel& base = view.texture->levels[0][view.base];
-  const float w = float(base.width), h = float(base.height);
-  const F txx = ds_dx * w, txy = dt_dx * h;
-  const F tyx = ds_dy * w, tyy = dt_dy * h;
-  const F dot_x = txx * txx + txy * txy, dot_y = tyx * tyx + tyy * tyy;
-  const F rho2 = dot_x < dot_y ? dot_y : dot_x;  // std::max(dot_x, dot_y)
   I bits;
   std::memcpy(&bits, &rho2, sizeof bits);
   const I biased = (bits >> 23) & 0x1FF;  // the sign bit makes negative numbers out of range
@@ -860,6 +863,8 @@ SOFTGL_INLINE void CubeLanes(const Textures::Lanes& c, int l0, bool explicit_lod
 // SampleFace for W lanes of a 2D view (Bytes: the 8-bit layout's bytes a texel, 0 for any layout): SampleMip's level
 // choice (magnification, or one level, or two with a weight), then each level's lanes filtered together. Linear: the
 // form for LINEAR magnification with LINEAR or LINEAR_MIPMAP_LINEAR minification, with a shorter level choice.
+// A 3D texture's levels are filtered slice by slice (FilterVolume); anisotropic filtering takes its probes one after
+// another, each for every lane that has that many (SampleAnisotropic).
 template <int W, int Bytes, bool Srgb, bool Linear>
 SOFTGL_INLINE void SampleTexelLanes(const TextureView& view, Lookup kind, const Textures::Lanes& c, float bias,
                                     const float* lod, float out[4][16]) {
@@ -867,7 +872,9 @@ SOFTGL_INLINE void SampleTexelLanes(const TextureView& view, Lookup kind, const 
   using I = typename V<W>::I;
   const auto& all_levels = view.texture->levels;
   const bool cube = kind == Lookup::kCube || kind == Lookup::kCubeLod;
-  const bool explicit_lod = kind == Lookup::kLod || kind == Lookup::kArrayLod || kind == Lookup::kCubeLod;
+  const bool volume = kind == Lookup::k3D || kind == Lookup::k3DLod;
+  const bool explicit_lod =
+      kind == Lookup::kLod || kind == Lookup::kArrayLod || kind == Lookup::kCubeLod || kind == Lookup::k3DLod;
   const SamplerParams& p = view.texture->params;
   LanesWrap<W> wr{p.wrap_s, p.wrap_t, p.wrap_s == CLAMP_TO_BORDER || p.wrap_t == CLAMP_TO_BORDER, {}};
   for (int ch = 0; ch < 4; ++ch) wr.border_raw[ch] = F{} + view.border_raw[ch];
@@ -882,13 +889,17 @@ SOFTGL_INLINE void SampleTexelLanes(const TextureView& view, Lookup kind, const 
                                   ? -1
                                   : 0);
   const F fbase = F{} + float(view.base), fq = F{} + float(view.q);
-  wr.layered = kind == Lookup::kArray || kind == Lookup::kArrayLod || kind == Lookup::kArrayShadow;
+  wr.layered = kind == Lookup::kArray || kind == Lookup::kArrayLod || kind == Lookup::kArrayShadow || volume;
   wr.compare = kind == Lookup::kShadow || kind == Lookup::kArrayShadow;
   wr.func = p.compare_func;
+  // Anisotropic filtering: texture() on a colour texture with TEXTURE_MAX_ANISOTROPY above 1, not on a 3D one.
+  const bool aniso = !explicit_lod && !wr.compare && !volume && !view.depth && view.anisotropy > 1.0f;
+  const TextureLevel& base = all_levels[0][view.base];
+  const float width = float(base.width), height = float(base.height), depth = float(base.depth);
   for (int l0 = 0; l0 < 16; l0 += W) {
     // The lookup's coordinates on its face or layer, and lambda: from the derivatives (false in `normal` for
     // lanes whose rho^2 is not a normal positive float), or textureLod's.
-    F s, t, lam, ds_dx, dt_dx, ds_dy, dt_dy;
+    F s, t, lam, ds_dx, dt_dx, ds_dy, dt_dy, r = F{};
     I face = I{};
     if (cube) {
       CubeLanes<W>(c, l0, explicit_lod, face, s, t, ds_dx, dt_dx, ds_dy, dt_dy);
@@ -900,15 +911,52 @@ SOFTGL_INLINE void SampleTexelLanes(const TextureView& view, Lookup kind, const 
         ds_dy = LoadF<W>(c.ds_dy + l0), dt_dy = LoadF<W>(c.dt_dy + l0);
       }
     }
-    if (wr.layered) wr.layer = ArrayLayerLanes<W>(view, LoadF<W>(c.r + l0));
+    if (volume) r = LoadF<W>(c.r + l0);
+    else if (wr.layered) wr.layer = ArrayLayerLanes<W>(view, LoadF<W>(c.r + l0));
     if (wr.compare) {  // the reference: r, or (for an array) `lod`'s lanes; NaN as 0, clamped to [0, 1]
       F ref = LoadF<W>((kind == Lookup::kShadow ? c.r : lod) + l0);
       ref = ref == ref ? ref : F{} + 0.0f;
       wr.ref = ref < 0.0f ? F{} + 0.0f : (1.0f < ref ? F{} + 1.0f : ref);
     }
     I normal = I{} - 1;
-    if (explicit_lod) lam = ExplicitLambdaLanes<W>(view, LoadF<W>(lod + l0));
-    else normal = LambdaLanes<W>(view, ds_dx, dt_dx, ds_dy, dt_dy, bias, lam);
+    // Anisotropic filtering's probes: n of them along the longer derivative (ms, mt); `probes` the most any lane
+    // takes.
+    I n = I{} + 1;
+    F ms = F{}, mt = F{};
+    int probes = 1;
+    if (explicit_lod) {
+      lam = ExplicitLambdaLanes<W>(view, LoadF<W>(lod + l0));
+    } else {
+      // Lambda (LambdaVolume): the squared lengths of the texel-space derivatives along x and y.
+      const F txx = ds_dx * width, txy = dt_dx * height;
+      const F tyx = ds_dy * width, tyy = dt_dy * height;
+      F dot_x = txx * txx + txy * txy, dot_y = tyx * tyx + tyy * tyy;
+      if (volume) {
+        const F txz = LoadF<W>(c.dr_dx + l0) * depth, tyz = LoadF<W>(c.dr_dy + l0) * depth;
+        dot_x = dot_x + txz * txz;
+        dot_y = dot_y + tyz * tyz;
+      }
+      F rho2 = dot_x < dot_y ? dot_y : dot_x;  // std::max(dot_x, dot_y)
+      if (aniso) {
+        const F min2 = dot_y < dot_x ? dot_y : dot_x;  // std::min
+        ms = dot_x >= dot_y ? ds_dx : ds_dy;
+        mt = dot_x >= dot_y ? dt_dx : dt_dy;
+        alignas(64) float ratio[W];
+        for (int l = 0; l < W; ++l)  // (NaN: one probe below)
+          ratio[l] = min2[l] > 0.0f ? std::sqrt(rho2[l] / min2[l]) : view.anisotropy;
+        const F rt = LoadF<W>(ratio);
+        // min(ceil(ratio), anisotropy), ratio first cut to 64 (above the anisotropy) so that the ceiling's
+        // conversion stays in range.
+        const F cut = rt < 64.0f ? rt : F{} + 64.0f;
+        F nf = F{} - FloorF<W>(F{} - cut);
+        nf = view.anisotropy < nf ? F{} + view.anisotropy : nf;
+        n = rt > 1.0f ? __builtin_convertvector(nf, I) : I{} + 1;
+        rho2 = rho2 / __builtin_convertvector(n * n, F);
+      }
+      normal = LambdaOfRho2Lanes<W>(view, rho2, bias, lam);
+      if (aniso)
+        for (int l = 0; l < W; ++l) probes = std::max(probes, normal[l] ? int(n[l]) : 1);
+    }
     // SampleMip's choice: the level (level_a), a second one (level_a + 1) where `two`, with weight f; LINEAR
     // filtering where `linear` is set, NEAREST elsewhere.
     I level_a = I{} + view.base, two = I{}, linear = I{} - 1;
@@ -940,59 +988,113 @@ SOFTGL_INLINE void SampleTexelLanes(const TextureView& view, Lookup kind, const 
       f = two != 0 ? f : F{} + 0.0f;
       linear = mag ? mag_linear : min_linear;
     }
-    F ra[4] = {}, rb[4] = {};
-    // Each level a lane needs, first (into ra) and second (level_a + 1, into rb), filtered for the lanes that need
-    // it: usually one level for all. (The masks stay results of comparisons: GCC 12 turns a select on a mask it
-    // cannot see is one into a branch per lane.)
     const std::uint32_t normal_bits = detail::MaskToBits<W>(normal, 0);
     const std::uint32_t linear_bits = detail::MaskToBits<W>(linear, 0);
-    bool usual = false;
-    if constexpr (Bytes != 0) {
-      // The usual block: every lane on the vector path, on the same first level (so a second level, where any
-      // lane needs one, exists for all) with the same filter; filtered with the forms for every lane, their
-      // results kept in registers.
-      usual = normal_bits == (1u << W) - 1 && (linear_bits == 0 || linear_bits == normal_bits) &&
-              detail::MaskToBits<W>(level_a != level_a[0], 0) == 0 &&
-              (!cube || detail::MaskToBits<W>(face != face[0], 0) == 0);
-      const auto& levels = all_levels[face[0]];
-      if (usual && linear_bits != 0) {
-        BilinearLanes<W, Bytes, Srgb, true>(levels[level_a[0]], wr, s, t, normal, ra);
-        if (detail::MaskToBits<W>(two, 0) != 0)
-          BilinearLanes<W, Bytes, Srgb, true>(levels[level_a[0] + 1], wr, s, t, normal, rb);
-      } else if (usual) {
-        NearestLanes<W, Bytes, Srgb, true>(levels[level_a[0]], wr, s, t, normal, ra);
-        if (detail::MaskToBits<W>(two, 0) != 0)
-          NearestLanes<W, Bytes, Srgb, true>(levels[level_a[0] + 1], wr, s, t, normal, rb);
+    F sum[4] = {}, first[4] = {};
+    for (int probe = 1; probe <= probes; ++probe) {
+      // This probe's lanes and coordinates: every lane on the vector path, at (s, t), without anisotropy.
+      I active = normal;
+      F ps = s, pt = t;
+      if (probes > 1) {
+        active = normal & (n >= probe);
+        const F k = float(probe) / __builtin_convertvector(n + 1, F) - 0.5f;
+        ps = n == 1 ? s : s + ms * k;
+        pt = n == 1 ? t : t + mt * k;
       }
-    }
-    // Otherwise each level the lanes need, first (into ra) and second (level_a + 1, into rb), for the lanes that
-    // need it; a cube map's lanes by face and level (the key face * 64 + level, one comparison). (One loop, its
-    // trip count not known to the compiler, so that the filters are inlined once here.)
-    const int stages = usual ? 0 : detail::MaskToBits<W>(normal & two, 0) != 0 ? 2 : 1;
-    for (int k = 0; k < stages; ++k) {
-      I pending = k ? normal & two : normal;
-      const I level = level_a + k;
-      const I key = cube ? face * 64 + level : level;
-      F* r = k ? rb : ra;
-      for (std::uint32_t bits = detail::MaskToBits<W>(pending, 0); bits != 0;
-           bits = detail::MaskToBits<W>(pending, 0)) {
-        const int lane = __builtin_ctz(bits);
-        const I mask = pending & (key == key[lane]);
-        FilterLanes<W, Bytes, Srgb>(all_levels[face[lane]][level[lane]], wr, s, t, mask, linear, r);
-        pending &= ~mask;
+      const std::uint32_t active_bits = detail::MaskToBits<W>(active, 0);
+      F ra[4] = {}, rb[4] = {};
+      // Each level a lane needs, first (into ra) and second (level_a + 1, into rb), filtered for the lanes that
+      // need it: usually one level for all. (The masks stay results of comparisons: GCC 12 turns a select on a
+      // mask it cannot see is one into a branch per lane.)
+      bool usual = false;
+      if constexpr (Bytes != 0) {
+        // The usual block: every lane on the vector path, on the same first level (so a second level, where any
+        // lane needs one, exists for all) with the same filter; filtered with the forms for every lane, their
+        // results kept in registers.
+        usual = !volume && active_bits == (1u << W) - 1 && (linear_bits == 0 || linear_bits == active_bits) &&
+                detail::MaskToBits<W>(level_a != level_a[0], 0) == 0 &&
+                (!cube || detail::MaskToBits<W>(face != face[0], 0) == 0);
+        const auto& levels = all_levels[face[0]];
+        if (usual && linear_bits != 0) {
+          BilinearLanes<W, Bytes, Srgb, true>(levels[level_a[0]], wr, ps, pt, active, ra);
+          if (detail::MaskToBits<W>(two, 0) != 0)
+            BilinearLanes<W, Bytes, Srgb, true>(levels[level_a[0] + 1], wr, ps, pt, active, rb);
+        } else if (usual) {
+          NearestLanes<W, Bytes, Srgb, true>(levels[level_a[0]], wr, ps, pt, active, ra);
+          if (detail::MaskToBits<W>(two, 0) != 0)
+            NearestLanes<W, Bytes, Srgb, true>(levels[level_a[0] + 1], wr, ps, pt, active, rb);
+        }
+      }
+      // Otherwise each level the lanes need, first (into ra) and second (level_a + 1, into rb), for the lanes that
+      // need it; a cube map's lanes by face and level (the key face * 64 + level, one comparison). A 3D level's
+      // lanes are filtered on one slice, or two (LINEAR) weighted by the fraction of w (FilterVolume). (One loop,
+      // its trip count not known to the compiler, so that the filters are inlined once here.)
+      const int stages = usual ? 0 : detail::MaskToBits<W>(active & two, 0) != 0 ? 2 : 1;
+      for (int k = 0; k < stages; ++k) {
+        I pending = k ? active & two : active;
+        const I level = level_a + k;
+        const I key = cube ? face * 64 + level : level;
+        F* res = k ? rb : ra;
+        for (std::uint32_t bits = detail::MaskToBits<W>(pending, 0); bits != 0;
+             bits = detail::MaskToBits<W>(pending, 0)) {
+          const int lane = __builtin_ctz(bits);
+          const I mask = pending & (key == key[lane]);
+          const TextureLevel& lv = all_levels[face[lane]][level[lane]];
+          // A 3D level's slices: k0 (NEAREST: the one holding w; LINEAR: the lower one) and k0 + 1, wrapped by
+          // TEXTURE_WRAP_R (-1: the border colour), LINEAR's weight cw; each filtered into slice[j]. (One call of
+          // FilterLanes for both cases, so that its filters are inlined once.)
+          I wk[2] = {};
+          F cw = F{};
+          int slices = 1;
+          if (volume) {
+            const F w = TexelCoordLanes<W>(r, float(lv.depth));
+            const F fw = w - 0.5f, flw = FloorF<W>(fw);
+            cw = fw - flw;
+            const I k0 = linear != 0 ? __builtin_convertvector(flw, I) : __builtin_convertvector(FloorF<W>(w), I);
+            wk[0] = WrapLanes<W>(p.wrap_r, k0, lv.depth);
+            wk[1] = WrapLanes<W>(p.wrap_r, k0 + 1, lv.depth);
+            slices = detail::MaskToBits<W>(mask & linear, 0) != 0 ? 2 : 1;
+          }
+          F slice[2][4] = {};
+          for (int j = 0; j < slices; ++j) {
+            if (volume) wr.layer = wk[j] < 0 ? I{} : wk[j];
+            F* into = volume ? slice[j] : res;
+            FilterLanes<W, Bytes, Srgb>(lv, wr, ps, pt, j ? mask & linear : mask, linear, into);
+            if (volume)
+              for (int ch = 0; ch < 4; ++ch) into[ch] = wk[j] < 0 ? wr.border_raw[ch] : into[ch];
+          }
+          if (volume) {
+            for (int ch = 0; ch < 4; ++ch) {
+              const F lerp = (1.0f - cw) * slice[0][ch] + cw * slice[1][ch];
+              const F v = linear != 0 ? lerp : slice[0][ch];
+              res[ch] = mask != 0 ? v : res[ch];
+            }
+          }
+          pending &= ~mask;
+        }
+      }
+      for (int ch = 0; ch < 4; ++ch) {
+        const F lerp = (1.0f - f) * ra[ch] + f * rb[ch];
+        const F v = two != 0 ? lerp : ra[ch];
+        if (probes == 1) {
+          first[ch] = v;
+        } else {  // SampleAnisotropic's sum, from 0 in probe order
+          if (probe == 1) first[ch] = v;
+          sum[ch] = active != 0 ? sum[ch] + v : sum[ch];
+        }
       }
     }
     for (int ch = 0; ch < 4; ++ch) {
-      const F one = ra[ch];
-      const F lerp = (1.0f - f) * ra[ch] + f * rb[ch];
-      const F v = (two != 0 ? lerp : one) / view.scale;
+      F v = first[ch];
+      if (probes > 1) v = n == 1 ? v : sum[ch] / __builtin_convertvector(n, F);
+      v = v / view.scale;
       std::memcpy(&out[ch][l0], &v, sizeof v);
     }
     // Lanes the vector path does not take: one lane at a time.
     for (std::uint32_t rest = ~normal_bits & ((1u << W) - 1); rest != 0; rest &= rest - 1) {
       const int lane = l0 + __builtin_ctz(rest);
-      const glm::vec4 r = SampleOneLane(view, kind, c, lane, bias, lod);
-      for (int ch = 0; ch < 4; ++ch) out[ch][lane] = r[ch];
+      const glm::vec4 res = SampleOneLane(view, kind, c, lane, bias, lod);
+      for (int ch = 0; ch < 4; ++ch) out[ch][lane] = res[ch];
     }
   }
 }
@@ -1114,6 +1216,19 @@ glm::vec4 SampleCubeLodOf(const TextureView& v, glm::vec3 dir, float lod) {
   return SampleFace(v, face, st, ExplicitLambda(v, lod), DepthCompare{}) / v.scale;
 }
 
+// Textures::Sample3D and Sample3DLod on a usable view.
+glm::vec4 Sample3DOf(const TextureView& v, glm::vec3 str, glm::vec3 dstr_dx, glm::vec3 dstr_dy, float bias) {
+  const auto& levels = v.texture->levels[0];
+  return SampleMip(v, LambdaVolume(v, dstr_dx, dstr_dy, bias),
+                   [&](int d, Enum f) { return FilterVolume(v, levels[d], f, str); }) /
+         v.scale;
+}
+glm::vec4 Sample3DLodOf(const TextureView& v, glm::vec3 str, float lod) {
+  const auto& levels = v.texture->levels[0];
+  return SampleMip(v, ExplicitLambda(v, lod), [&](int d, Enum f) { return FilterVolume(v, levels[d], f, str); }) /
+         v.scale;
+}
+
 glm::vec4 SampleOneLane(const TextureView& v, Lookup kind, const Textures::Lanes& c, int l, float bias,
                         const float* lod) {
   const glm::vec2 dx(c.ds_dx[l], c.dt_dx[l]), dy(c.ds_dy[l], c.dt_dy[l]);
@@ -1127,12 +1242,17 @@ glm::vec4 SampleOneLane(const TextureView& v, Lookup kind, const Textures::Lanes
                           glm::vec3(c.ds_dy[l], c.dt_dy[l], c.dr_dy[l]), bias);
     case Lookup::kCubeLod: return SampleCubeLodOf(v, glm::vec3(c.s[l], c.t[l], c.r[l]), lod[l]);
     case Lookup::kShadow: return glm::vec4(ShadowOf(&v, glm::vec2(c.s[l], c.t[l]), 0, 0.0f, c.r[l], dx, dy));
-    default: return glm::vec4(ShadowOf(&v, glm::vec2(c.s[l], c.t[l]), -1, c.r[l], lod[l], dx, dy));
+    case Lookup::kArrayShadow:
+      return glm::vec4(ShadowOf(&v, glm::vec2(c.s[l], c.t[l]), -1, c.r[l], lod[l], dx, dy));
+    case Lookup::k3D:
+      return Sample3DOf(v, glm::vec3(c.s[l], c.t[l], c.r[l]), glm::vec3(c.ds_dx[l], c.dt_dx[l], c.dr_dx[l]),
+                        glm::vec3(c.ds_dy[l], c.dt_dy[l], c.dr_dy[l]), bias);
+    case Lookup::k3DLod: return Sample3DLodOf(v, glm::vec3(c.s[l], c.t[l], c.r[l]), lod[l]);
   }
+  return kMissing;
 }
 
-// A block's lookup: on the vector path where the view allows (not anisotropic filtering, unless the level of
-// detail is given), else lane by lane.
+// A block's lookup: on the vector path where the view allows, else lane by lane.
 void SampleBlock(const TextureView* v, Lookup kind, const Textures::Lanes& c, float bias, const float* lod,
                  float out[4][16]) {
   if (!v) {
@@ -1140,15 +1260,13 @@ void SampleBlock(const TextureView* v, Lookup kind, const Textures::Lanes& c, fl
       for (int ch = 0; ch < 4; ++ch) out[ch][l] = kMissing[ch];
     return;
   }
-  const bool explicit_lod = kind == Lookup::kLod || kind == Lookup::kArrayLod || kind == Lookup::kCubeLod;
   const bool shadow = kind == Lookup::kShadow || kind == Lookup::kArrayShadow;
   if (shadow && (!v->depth || v->texture->params.compare_mode != COMPARE_REF_TO_TEXTURE)) {
     for (int l = 0; l < 16; ++l)
       for (int ch = 0; ch < 4; ++ch) out[ch][l] = 0.0f;
     return;
   }
-  // (A shadow lookup ignores anisotropy, as ShadowOf does.)
-  if (v->wide && (explicit_lod || shadow || v->anisotropy <= 1.0f)) {
+  if (v->wide) {
     if (const SampleTexelLanesFn sample = SampleTexelLanesFor(*v)) return sample(*v, kind, c, bias, lod, out);
   }
   for (int l = 0; l < 16; ++l) {
@@ -1227,31 +1345,14 @@ float Textures::SampleArrayShadow(int unit, glm::vec3 uvl, float ref, glm::vec2 
 
 glm::vec4 Textures::Sample3D(int unit, glm::vec3 str, glm::vec3 dstr_dx, glm::vec3 dstr_dy, float bias) const {
   const TextureView* v = Usable(unit_3d, unit);
-  if (!v) return kMissing;
-  const auto& levels = v->texture->levels[0];
-  return SampleMip(*v, LambdaVolume(*v, dstr_dx, dstr_dy, bias),
-                   [&](int d, Enum f) { return FilterVolume(*v, levels[d], f, str); }) /
-         v->scale;
+  return v ? Sample3DOf(*v, str, dstr_dx, dstr_dy, bias) : kMissing;
 }
 
 glm::vec4 Textures::Sample3DLod(int unit, glm::vec3 str, float lod) const {
   const TextureView* v = Usable(unit_3d, unit);
-  if (!v) return kMissing;
-  const auto& levels = v->texture->levels[0];
-  return SampleMip(*v, ExplicitLambda(*v, lod), [&](int d, Enum f) { return FilterVolume(*v, levels[d], f, str); }) /
-         v->scale;
+  return v ? Sample3DLodOf(*v, str, lod) : kMissing;
 }
 
-namespace {
-// Each lane of `c` through a one-lane call: fn(lane) gives its RGBA.
-template <class Fn>
-void EachLane(float out[4][16], Fn&& fn) {
-  for (int l = 0; l < 16; ++l) {
-    const glm::vec4 r = fn(l);
-    for (int ch = 0; ch < 4; ++ch) out[ch][l] = r[ch];
-  }
-}
-}  // namespace
 
 void Textures::SampleArrayLanes(int unit, const Lanes& c, float bias, float out[4][16]) const {
   SampleBlock(Usable(unit_2d_array, unit), Lookup::kArray, c, bias, nullptr, out);
@@ -1268,14 +1369,11 @@ void Textures::SampleArrayShadowLanes(int unit, const Lanes& c, const float ref[
 }
 
 void Textures::Sample3DLanes(int unit, const Lanes& c, float bias, float out[4][16]) const {
-  EachLane(out, [&](int l) {
-    return Sample3D(unit, glm::vec3(c.s[l], c.t[l], c.r[l]), glm::vec3(c.ds_dx[l], c.dt_dx[l], c.dr_dx[l]),
-                    glm::vec3(c.ds_dy[l], c.dt_dy[l], c.dr_dy[l]), bias);
-  });
+  SampleBlock(Usable(unit_3d, unit), Lookup::k3D, c, bias, nullptr, out);
 }
 
 void Textures::Sample3DLodLanes(int unit, const Lanes& c, const float lod[16], float out[4][16]) const {
-  EachLane(out, [&](int l) { return Sample3DLod(unit, glm::vec3(c.s[l], c.t[l], c.r[l]), lod[l]); });
+  SampleBlock(Usable(unit_3d, unit), Lookup::k3DLod, c, 0.0f, lod, out);
 }
 
 namespace {
@@ -1346,6 +1444,15 @@ SOFTGL_INLINE void FetchTexelLanes(const TextureView& v, bool multisample, const
               LoadPairs<W>(lv.data.data(), index * 4, std::make_index_sequence<W>()), U);
           if (lv.srgb) Channels<W, 4, true>(word, t);
           else Channels<W, 4, false>(word, t);
+          break;
+        }
+        case TexelLayout::kUnorm8x2:
+        case TexelLayout::kUnorm8x1: {
+          const int bytes = lv.layout == TexelLayout::kUnorm8x2 ? 2 : 1;
+          const U word = __builtin_convertvector(
+              LoadPairs<W>(lv.data.data(), index * bytes, std::make_index_sequence<W>()), U);
+          if (bytes == 2) Channels<W, 2, false>(word, t);
+          else Channels<W, 1, false>(word, t);
           break;
         }
         default: GatherTexels<W, false>(lv, index, in, t); break;

@@ -577,6 +577,44 @@ TEST_CASE("texels take the bytes of their format", "[wide][texture]") {
   CHECK(gl.GetError() == NO_ERROR);
 }
 
+namespace {
+// The first `count` texels of a w x h 2D view (NEAREST), each read at its centre 16 lanes at a time and one at a
+// time: how many channel values differ as bits (each reported).
+int DifferingTexels(const detail::TextureView& view, int w, int h, int count) {
+  Textures tx;
+  tx.unit_2d[0] = &view;
+  int differ = 0;
+  for (int first = 0; first < count; first += 16) {
+    Textures::Lanes lanes;
+    for (int k = 0; k < 16; ++k) {
+      const int i = first + k;
+      lanes.s[k] = (float(i % w) + 0.5f) / float(w);
+      lanes.t[k] = (float(i / w) + 0.5f) / float(h);
+      lanes.ds_dx[k] = 1.0f / float(w);
+      lanes.dt_dy[k] = 1.0f / float(h);
+      lanes.dt_dx[k] = lanes.ds_dy[k] = 0.0f;
+    }
+    float out[4][16];
+    tx.SampleLanes(0, lanes, 0.0f, out);
+    for (int k = 0; k < 16; ++k) {
+      const glm::vec4 one = tx.Sample(0, glm::vec2(lanes.s[k], lanes.t[k]), glm::vec2(lanes.ds_dx[k], 0.0f),
+                                      glm::vec2(0.0f, lanes.dt_dy[k]), 0.0f);
+      for (int ch = 0; ch < 4; ++ch) {
+        std::uint32_t a, b;
+        std::memcpy(&a, &out[ch][k], 4);
+        std::memcpy(&b, &one[ch], 4);
+        if (a != b) {
+          INFO("texel " << first + k << " channel " << ch << ": 0x" << std::hex << a << " vs 0x" << b);
+          CHECK(a == b);
+          ++differ;
+        }
+      }
+    }
+  }
+  return differ;
+}
+}  // namespace
+
 TEST_CASE("the vector path decodes every half-float texel as the one-lane path does", "[wide][texture]") {
   // An R16F texture holding each of the 65536 half-float bit patterns once (zeros, subnormals, normals,
   // infinities, NaNs of both signs), read with NEAREST at each texel's centre, 16 lanes at a time and one at a
@@ -593,46 +631,42 @@ TEST_CASE("the vector path decodes every half-float texel as the one-lane path d
   t.params.mag_filter = NEAREST;
   const detail::TextureView view = detail::MakeView(t);
   REQUIRE(view.complete);
-  Textures tx;
-  tx.unit_2d[0] = &view;
-  int differ = 0;
-  for (int first = 0; first < 65536; first += 16) {
-    Textures::Lanes lanes;
-    for (int k = 0; k < 16; ++k) {
-      const int i = first + k;
-      lanes.s[k] = (float(i % 256) + 0.5f) / 256.0f;
-      lanes.t[k] = (float(i / 256) + 0.5f) / 256.0f;
-      lanes.ds_dx[k] = lanes.dt_dy[k] = 1.0f / 256.0f;
-      lanes.dt_dx[k] = lanes.ds_dy[k] = 0.0f;
-    }
-    float out[4][16];
-    tx.SampleLanes(0, lanes, 0.0f, out);
-    for (int k = 0; k < 16; ++k) {
-      const glm::vec4 one = tx.Sample(0, glm::vec2(lanes.s[k], lanes.t[k]), glm::vec2(lanes.ds_dx[k], 0.0f),
-                                      glm::vec2(0.0f, lanes.dt_dy[k]), 0.0f);
-      std::uint32_t a, b;
-      std::memcpy(&a, &out[0][k], 4);
-      std::memcpy(&b, &one[0], 4);
-      if (a != b) {
-        INFO("half 0x" << std::hex << first + k << ": 0x" << a << " vs 0x" << b);
-        CHECK(a == b);
-        ++differ;
-      }
-    }
-  }
-  CHECK(differ == 0);
+  CHECK(DifferingTexels(view, 256, 256, 65536) == 0);
 }
 
-TEST_CASE("cube maps, 2D arrays and textureLod sampled 16 lanes at a time give the floats of one lane at a time",
+TEST_CASE("the vector path decodes every R11F_G11F_B10F channel value as the one-lane path does", "[wide][texture]") {
+  // Texel i of a 2048-texel R11F_G11F_B10F texture holds 11-bit pattern i in red, 2047 - i in green and the 10-bit
+  // pattern i mod 1024 in blue (zeros, subnormals, normals, infinities, NaNs), read with NEAREST at its centre, 16
+  // lanes at a time and one at a time, compared as bits.
+  detail::TextureObject t;
+  t.target = TEXTURE_2D;
+  auto& l = t.levels[0][0];
+  l.Allocate(R11F_G11F_B10F, 64, 32);
+  for (std::uint32_t i = 0; i < 2048; ++i) {
+    const std::uint32_t word = i | (2047u - i) << 11 | (i & 1023u) << 22;
+    std::memcpy(l.data.data() + 4 * i, &word, 4);
+  }
+  t.params.min_filter = NEAREST;
+  t.params.mag_filter = NEAREST;
+  const detail::TextureView view = detail::MakeView(t);
+  REQUIRE(view.complete);
+  CHECK(DifferingTexels(view, 64, 32, 2048) == 0);
+}
+
+TEST_CASE("cube maps, 2D arrays, 3D textures, textureLod and anisotropic filtering sampled 16 lanes at a time give "
+          "the floats of one lane at a time",
           "[wide][texture]") {
   // The vector path's other lookups: texture() on a cube map (each lane's face chosen by its direction, lanes of
-  // one block on several faces) and on a 2D array (each lane's layer, out-of-range and NaN layers included), and
-  // textureLod() on all three targets (NaN, huge and negative levels of detail included); every filter pair and
-  // wrap mode, compared as bits with the one-lane calls.
+  // one block on several faces), on a 2D array (each lane's layer, out-of-range and NaN layers included) and on a 3D
+  // texture (two slices a level, wrapped by TEXTURE_WRAP_R), and textureLod() on all four targets (NaN, huge and
+  // negative levels of detail included); every filter pair and wrap mode, and anisotropic filtering (each lane with
+  // its own number of probes) on 2D textures, arrays and cube maps; compared as bits with the one-lane calls.
   struct Case {
     Enum target, format;
     int w, h, layers;
     Enum min_filter, mag_filter, wrap;
+    float anisotropy = 1.0f;
+    Enum wrap_r = 0;  // 0: as wrap
   };
   const Case cases[] = {
       {TEXTURE_CUBE_MAP, RGBA8, 16, 16, 1, LINEAR_MIPMAP_LINEAR, LINEAR, CLAMP_TO_EDGE},
@@ -646,6 +680,20 @@ TEST_CASE("cube maps, 2D arrays and textureLod sampled 16 lanes at a time give t
       {TEXTURE_2D, RGBA8, 32, 32, 1, LINEAR_MIPMAP_LINEAR, LINEAR, REPEAT},
       {TEXTURE_2D, RGB8, 24, 40, 1, NEAREST_MIPMAP_NEAREST, LINEAR, CLAMP_TO_BORDER},
       {TEXTURE_2D, R16F, 16, 16, 1, LINEAR_MIPMAP_NEAREST, NEAREST, MIRRORED_REPEAT},
+      {TEXTURE_3D, RGBA8, 16, 16, 16, LINEAR_MIPMAP_LINEAR, LINEAR, REPEAT},
+      {TEXTURE_3D, RGBA8, 8, 8, 8, LINEAR, LINEAR, CLAMP_TO_EDGE},
+      {TEXTURE_3D, SRGB8_ALPHA8, 12, 6, 10, LINEAR_MIPMAP_NEAREST, NEAREST, MIRRORED_REPEAT, 1.0f, CLAMP_TO_BORDER},
+      {TEXTURE_3D, RG8, 5, 7, 9, NEAREST_MIPMAP_LINEAR, LINEAR, CLAMP_TO_BORDER, 1.0f, REPEAT},
+      {TEXTURE_3D, RGBA16F, 8, 16, 4, NEAREST, NEAREST, REPEAT, 1.0f, MIRRORED_REPEAT},
+      {TEXTURE_3D, R11F_G11F_B10F, 8, 8, 8, LINEAR_MIPMAP_LINEAR, LINEAR, CLAMP_TO_EDGE},
+      {TEXTURE_3D, R8, 3, 17, 6, NEAREST_MIPMAP_NEAREST, LINEAR, REPEAT, 1.0f, CLAMP_TO_EDGE},
+      {TEXTURE_2D, RGBA8, 64, 64, 1, LINEAR_MIPMAP_LINEAR, LINEAR, REPEAT, 16.0f},
+      {TEXTURE_2D, RGBA8, 40, 24, 1, LINEAR_MIPMAP_LINEAR, LINEAR, CLAMP_TO_EDGE, 4.0f},
+      {TEXTURE_2D, SRGB8_ALPHA8, 32, 32, 1, LINEAR_MIPMAP_NEAREST, NEAREST, MIRRORED_REPEAT, 2.5f},
+      {TEXTURE_2D, RGBA16F, 16, 32, 1, NEAREST_MIPMAP_LINEAR, LINEAR, CLAMP_TO_BORDER, 8.0f},
+      {TEXTURE_2D, R8, 16, 16, 1, LINEAR, LINEAR, REPEAT, 16.0f},
+      {TEXTURE_2D_ARRAY, RGBA8, 16, 16, 3, LINEAR_MIPMAP_LINEAR, LINEAR, REPEAT, 16.0f},
+      {TEXTURE_CUBE_MAP, RGBA8, 16, 16, 1, LINEAR_MIPMAP_LINEAR, LINEAR, CLAMP_TO_EDGE, 16.0f},
   };
   std::mt19937 rng(11);
   std::uniform_real_distribution<float> coord(-2.0f, 2.0f), deriv(-0.3f, 0.3f), level(-3.0f, 8.0f);
@@ -665,13 +713,16 @@ TEST_CASE("cube maps, 2D arrays and textureLod sampled 16 lanes at a time give t
     t.params.min_filter = c.min_filter;
     t.params.mag_filter = c.mag_filter;
     t.params.wrap_s = t.params.wrap_t = c.wrap;
+    t.params.wrap_r = c.wrap_r ? c.wrap_r : c.wrap;
     t.params.border = glm::vec4(0.2f, 0.9f, 0.45f, 0.7f);
+    t.params.max_anisotropy = c.anisotropy;
     const detail::TextureView view = detail::MakeView(t);
     REQUIRE(view.complete);
     CHECK(view.wide);
     Textures tx;
     if (c.target == TEXTURE_CUBE_MAP) tx.unit_cube[0] = &view;
     else if (c.target == TEXTURE_2D_ARRAY) tx.unit_2d_array[0] = &view;
+    else if (c.target == TEXTURE_3D) tx.unit_3d[0] = &view;
     else tx.unit_2d[0] = &view;
     int compared = 0;
     auto compare = [&](const float out[4][16], int k, const glm::vec4& one, const char* what) {
@@ -721,6 +772,9 @@ TEST_CASE("cube maps, 2D arrays and textureLod sampled 16 lanes at a time give t
       } else if (c.target == TEXTURE_2D_ARRAY) {
         tx.SampleArrayLanes(0, lanes, bias, out);
         tx.SampleArrayLodLanes(0, lanes, lod, out_lod);
+      } else if (c.target == TEXTURE_3D) {
+        tx.Sample3DLanes(0, lanes, bias, out);
+        tx.Sample3DLodLanes(0, lanes, lod, out_lod);
       } else {
         tx.SampleLanes(0, lanes, bias, out);
         tx.SampleLodLanes(0, lanes, lod, out_lod);
@@ -735,6 +789,9 @@ TEST_CASE("cube maps, 2D arrays and textureLod sampled 16 lanes at a time give t
         } else if (c.target == TEXTURE_2D_ARRAY) {
           compare(out, k, tx.SampleArray(0, p, glm::vec2(dx), glm::vec2(dy), bias), "texture");
           compare(out_lod, k, tx.SampleArrayLod(0, p, lod[k]), "textureLod");
+        } else if (c.target == TEXTURE_3D) {
+          compare(out, k, tx.Sample3D(0, p, dx, dy, bias), "texture");
+          compare(out_lod, k, tx.Sample3DLod(0, p, lod[k]), "textureLod");
         } else {
           compare(out, k, tx.Sample(0, glm::vec2(p), glm::vec2(dx), glm::vec2(dy), bias), "texture");
           compare(out_lod, k, tx.SampleLod(0, glm::vec2(p), lod[k]), "textureLod");
