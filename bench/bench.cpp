@@ -15,6 +15,7 @@
 //   --scalar 0         skip the runs with each scene's shader in the scalar form (by default they follow each
 //                      scene, and the last columns give their time and the wide form's gain over them)
 //   --depth16 1        softgl's contexts with a 16-bit depth buffer (Options::depth_format DEPTH_COMPONENT16)
+//   --matrix 1         the sampler matrix instead of the scenes: every target x wrap mode x filter x format (below)
 //   --msaa-pairs N     also the model scene's softgl frame without and with 4x MSAA in turn, N pairs, in two
 //                      contexts side by side: each pair's ratio is taken a few milliseconds apart, so that a shared
 //                      machine's drifts in speed weigh on both frames of a pair alike; prints the median ratio
@@ -155,18 +156,34 @@ bool LoadTexturedModel(const std::string& path, Geometry& g) {
   return true;
 }
 
-std::vector<std::uint8_t> PatternTexture(int n) {
-  std::vector<std::uint8_t> px(std::size_t(n) * n * 4);
-  for (int y = 0; y < n; ++y)
-    for (int x = 0; x < n; ++x) {
-      std::uint8_t* p = &px[(std::size_t(y) * n + x) * 4];
+// A w x h RGBA8 image: 16-texel checks in red, ramps in green (x) and blue (y).
+std::vector<std::uint8_t> PatternImage(int w, int h) {
+  std::vector<std::uint8_t> px(std::size_t(w) * std::size_t(h) * 4);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      std::uint8_t* p = &px[(std::size_t(y) * std::size_t(w) + std::size_t(x)) * 4];
       const bool check = ((x / 16) + (y / 16)) % 2 == 0;
       p[0] = check ? 230 : 40;
-      p[1] = std::uint8_t(x * 255 / n);
-      p[2] = std::uint8_t(y * 255 / n);
+      p[1] = std::uint8_t(x * 255 / w);
+      p[2] = std::uint8_t(y * 255 / h);
       p[3] = 255;
     }
   return px;
+}
+std::vector<std::uint8_t> PatternTexture(int n) { return PatternImage(n, n); }
+
+// The sampler matrix's quad: the whole screen, in perspective (w 1 at the bottom edge, 8 at the top), (u, v) from
+// (-1.5, 0) at the bottom left to (2.5, 8) at the top right: magnified near the bottom, minified about 8 times more
+// towards the top, and outside [0, 1] on both sides so that the wrap modes matter.
+Geometry PerspectiveQuad() {
+  Geometry g;
+  g.floats = 6;
+  g.position = 4;
+  const float c[4][3] = {{-1, -1, 1}, {1, -1, 1}, {1, 1, 8}, {-1, 1, 8}};  // x, y, w
+  const float uv[4][2] = {{-1.5f, 0}, {2.5f, 0}, {2.5f, 8}, {-1.5f, 8}};
+  for (int i : {0, 1, 2, 0, 2, 3})
+    g.vertices.insert(g.vertices.end(), {c[i][0] * c[i][2], c[i][1] * c[i][2], 0.0f, c[i][2], uv[i][0], uv[i][1]});
+  return g;
 }
 
 // ---- softgl shaders ------------------------------------------------------------------------------------------
@@ -209,6 +226,27 @@ struct PlaneShader : Shader<PlaneShader, UvVaryings> {
   }
   void Fragment(const FragmentLanes<UvVaryings>& in, FragmentLanesOut& out) const {
     out.color[0] = in.Texture(0, in.varyings.uv);
+  }
+};
+
+// The sampler matrix's lookups on PerspectiveQuad's (u, v): a 2D texture (mode 0), a cube map at (u - 1/2, 1/2,
+// v - 4) (1: several faces), a 2D array at (u, v, u + 1) (2: layers 0 to 3), a 3D texture at (u, v, u / 2) (3), a
+// 2D shadow map at (u, v) with reference v / 8 (4).
+struct MatrixShader : Shader<MatrixShader, UvVaryings> {
+  int mode = 0;
+  void Vertex(const VertexLanes& in, VertexLanesOut<UvVaryings>& out) const {
+    out.position = in.attrib[0];
+    out.varyings.uv = vec2(in.attrib[1]);
+  }
+  void Fragment(const FragmentLanes<UvVaryings>& in, FragmentLanesOut& out) const {
+    const vec2 t = in.varyings.uv;
+    switch (mode) {
+      case 0: out.color[0] = in.Texture(0, t); break;
+      case 1: out.color[0] = in.TextureCube(0, vec3(t.x - 0.5f, Float(0.5f), t.y - 4.0f)); break;
+      case 2: out.color[0] = in.TextureArray(0, vec3(t.x, t.y, t.x + 1.0f)); break;
+      case 3: out.color[0] = in.Texture3D(0, vec3(t.x, t.y, t.x * 0.5f)); break;
+      default: out.color[0] = vec4(vec3(in.TextureShadow(0, vec3(t.x, t.y, t.y * 0.125f))), 1.0f); break;
+    }
   }
 };
 
@@ -430,6 +468,17 @@ const char* kArrayFs = "#version 330 core\nin vec2 uv; uniform sampler2DArray te
                        "void main(){ o = texture(tex, vec3(uv, uv.x * 0.1)); }";
 const char* k3DFs = "#version 330 core\nin vec2 uv; uniform sampler3D tex; out vec4 o;"
                     "void main(){ o = texture(tex, vec3(uv, uv.x * 0.1)); }";
+// MatrixShader's lookups in GLSL, by mode.
+const char* const kMatrixFs[5] = {
+    "#version 330 core\nin vec2 uv; uniform sampler2D tex; out vec4 o; void main(){ o = texture(tex, uv); }",
+    "#version 330 core\nin vec2 uv; uniform samplerCube tex; out vec4 o;"
+    "void main(){ o = texture(tex, vec3(uv.x - 0.5, 0.5, uv.y - 4.0)); }",
+    "#version 330 core\nin vec2 uv; uniform sampler2DArray tex; out vec4 o;"
+    "void main(){ o = texture(tex, vec3(uv, uv.x + 1.0)); }",
+    "#version 330 core\nin vec2 uv; uniform sampler3D tex; out vec4 o;"
+    "void main(){ o = texture(tex, vec3(uv, uv.x * 0.5)); }",
+    "#version 330 core\nin vec2 uv; uniform sampler2DShadow tex; out vec4 o;"
+    "void main(){ o = vec4(vec3(texture(tex, vec3(uv, uv.y * 0.125))), 1.0); }"};
 const char* kShadowFs = "#version 330 core\nin vec2 uv; uniform sampler2DShadow tex; out vec4 o;"
                         "void main(){ o = vec4(vec3(texture(tex, vec3(uv, uv.x) / 40.0)), 1.0); }";
 const char* kPhongVs =
@@ -615,6 +664,7 @@ int main(int argc, char** argv) {
   bool with_scalar = true;   // --scalar 0: skip the scalar-shader runs
   std::string rss_child;     // --rss-child softgl|llvmpipe: run the model scene once, print peak RSS in KiB
   int msaa_pairs = 0;        // --msaa-pairs N
+  bool matrix = false;       // --matrix 1
   for (int i = 1; i + 1 < argc; i += 2) {
     if (!std::strcmp(argv[i], "--threads")) threads = std::max(1, std::atoi(argv[i + 1]));
     if (!std::strcmp(argv[i], "--frames")) frames = std::max(1, std::atoi(argv[i + 1]));
@@ -626,6 +676,7 @@ int main(int argc, char** argv) {
       g_options.depth_format = softgl::DEPTH_COMPONENT16;
     if (!std::strcmp(argv[i], "--rss-child")) rss_child = argv[i + 1];
     if (!std::strcmp(argv[i], "--msaa-pairs")) msaa_pairs = std::max(0, std::atoi(argv[i + 1]));
+    if (!std::strcmp(argv[i], "--matrix")) matrix = std::atoi(argv[i + 1]) != 0;
   }
   const std::string lp_threads = std::to_string(threads == 1 ? 0 : threads);
   setenv("LP_NUM_THREADS", lp_threads.c_str(), 1);
@@ -700,6 +751,142 @@ int main(int argc, char** argv) {
     OSMesaDestroyContext(ctx);
     return ms;
   };
+
+  // --matrix 1: the sampler matrix. Each cell one full-screen draw (PerspectiveQuad, 1280 x 720) that samples once
+  // per fragment, timed for softgl and for llvmpipe in the same run. Targets: a 256^2 2D texture, a 1000 x 600 one,
+  // a cube map of 256^2 faces, a 2D array of four 256^2 layers, a 64^3 3D texture (each from PatternImage, uploaded
+  // as RGBA bytes and converted to the cell's format), and a 2048^2 DEPTH_COMPONENT32F shadow map compared with
+  // LEQUAL (its own format; NEAREST and bilinear only). Filters: NEAREST (NEAREST / NEAREST), bilinear (LINEAR /
+  // LINEAR), trilinear (LINEAR_MIPMAP_LINEAR / LINEAR), and trilinear with 16x anisotropy. Prints softgl's time
+  // over llvmpipe's per cell, and in brackets softgl's time over its own in the first cell (2D 256^2, RGBA8,
+  // trilinear, REPEAT).
+  if (matrix) {
+    using softgl::Enum;
+    struct MatrixTarget {
+      const char* name;
+      int mode;  // MatrixShader's
+      Enum target;
+      int w, h, d;
+    };
+    namespace sg = softgl;
+    const MatrixTarget targets[] = {{"2D 256^2", 0, sg::TEXTURE_2D, 256, 256, 1},
+                                    {"2D 1000x600", 0, sg::TEXTURE_2D, 1000, 600, 1},
+                                    {"cube 256^2", 1, sg::TEXTURE_CUBE_MAP, 256, 256, 1},
+                                    {"2D array 256^2 x 4", 2, sg::TEXTURE_2D_ARRAY, 256, 256, 4},
+                                    {"3D 64^3", 3, sg::TEXTURE_3D, 64, 64, 64},
+                                    {"shadow 2048^2", 4, sg::TEXTURE_2D, 2048, 2048, 1}};
+    const std::pair<const char*, Enum> formats[] = {
+        {"RGBA8", sg::RGBA8}, {"SRGB8_ALPHA8", sg::SRGB8_ALPHA8}, {"RGBA16F", sg::RGBA16F}, {"RGBA32F", sg::RGBA32F}};
+    struct MatrixFilter {
+      const char* name;
+      Enum min, mag;
+      float anisotropy;
+    };
+    const MatrixFilter filters[] = {{"trilinear", sg::LINEAR_MIPMAP_LINEAR, sg::LINEAR, 1.0f},
+                                    {"bilinear", sg::LINEAR, sg::LINEAR, 1.0f},
+                                    {"NEAREST", sg::NEAREST, sg::NEAREST, 1.0f},
+                                    {"trilinear, 16x aniso", sg::LINEAR_MIPMAP_LINEAR, sg::LINEAR, 16.0f}};
+    const Enum wraps[] = {sg::REPEAT, sg::MIRRORED_REPEAT, sg::CLAMP_TO_EDGE, sg::CLAMP_TO_BORDER};
+    const Geometry quad = PerspectiveQuad();
+    const char* const png[5] = {"bench_matrix_2d.png", "bench_matrix_cube.png", "bench_matrix_array.png",
+                                "bench_matrix_3d.png", "bench_matrix_shadow.png"};  // (--png: each target's last cell)
+    const float border[4] = {0.2f, 0.4f, 0.6f, 1.0f};
+    std::vector<float> depths;
+    for (int y = 0; y < 2048; ++y)
+      for (int x = 0; x < 2048; ++x)
+        depths.push_back(0.5f + 0.25f * std::sin(float(x) * 0.02f) + 0.2f * std::cos(float(y) * 0.013f));
+    std::printf("Sampler matrix, %d thread(s), %d frames a cell: softgl / llvmpipe (softgl ms / ms of the first "
+                "cell)\n\n| target | format | filter | REPEAT | MIRRORED_REPEAT | CLAMP_TO_EDGE | CLAMP_TO_BORDER |\n"
+                "|---|---|---|---|---|---|---|\n",
+                threads, frames);
+    double first_ms = 0.0;
+    for (const MatrixTarget& mt : targets) {
+      const bool shadow = mt.mode == 4;
+      std::vector<std::uint8_t> pixels;
+      if (!shadow) {
+        const std::vector<std::uint8_t> plane = PatternImage(mt.w, mt.h);
+        for (int k = 0; k < (mt.mode == 1 ? 1 : mt.d); ++k)  // (each layer or slice a shade brighter)
+          for (std::size_t i = 0; i < plane.size(); ++i)
+            pixels.push_back(std::uint8_t(plane[i] + (i % 4 == 3 ? 0 : 4 * k)));
+      }
+      for (const auto& [format_name, format] : formats) {
+        if (shadow && format != sg::RGBA8) continue;  // (one row set: DEPTH_COMPONENT32F)
+        for (const MatrixFilter& mf : filters) {
+          if (shadow && (mf.min != sg::NEAREST && mf.min != sg::LINEAR)) continue;
+          std::printf("| %s | %s | %s |", mt.name, shadow ? "DEPTH_COMPONENT32F" : format_name, mf.name);
+          std::fflush(stdout);
+          for (const Enum wrap : wraps) {
+            const bool mipmapped = mf.min != sg::NEAREST && mf.min != sg::LINEAR;
+            const double sg_ms = [&] {
+              wide::MatrixShader shader;
+              shader.mode = mt.mode;
+              softgl::Context gl(1280, 720, g_options);
+              softgl_setup(gl, quad);
+              gl.BindTexture(mt.target, gl.GenTexture());
+              if (shadow) {
+                gl.TexImage2D(mt.target, 0, sg::DEPTH_COMPONENT32F, mt.w, mt.h, 0, sg::DEPTH_COMPONENT, sg::FLOAT,
+                              depths.data());
+                gl.TexParameteri(mt.target, sg::TEXTURE_COMPARE_MODE, sg::COMPARE_REF_TO_TEXTURE);
+                gl.TexParameteri(mt.target, sg::TEXTURE_COMPARE_FUNC, sg::LEQUAL);
+              } else if (mt.mode == 1) {
+                for (int f = 0; f < 6; ++f)
+                  gl.TexImage2D(sg::TEXTURE_CUBE_MAP_POSITIVE_X + Enum(f), 0, format, mt.w, mt.h, 0, sg::RGBA,
+                                sg::UNSIGNED_BYTE, pixels.data());
+              } else if (mt.d > 1) {
+                gl.TexImage3D(mt.target, 0, format, mt.w, mt.h, mt.d, 0, sg::RGBA, sg::UNSIGNED_BYTE, pixels.data());
+              } else {
+                gl.TexImage2D(mt.target, 0, format, mt.w, mt.h, 0, sg::RGBA, sg::UNSIGNED_BYTE, pixels.data());
+              }
+              if (mipmapped) gl.GenerateMipmap(mt.target);
+              gl.TexParameteri(mt.target, sg::TEXTURE_MIN_FILTER, mf.min);
+              gl.TexParameteri(mt.target, sg::TEXTURE_MAG_FILTER, mf.mag);
+              for (const Enum pname : {sg::TEXTURE_WRAP_S, sg::TEXTURE_WRAP_T, sg::TEXTURE_WRAP_R})
+                gl.TexParameteri(mt.target, pname, wrap);
+              gl.TexParameterfv(mt.target, sg::TEXTURE_BORDER_COLOR, border);
+              gl.TexParameterf(mt.target, sg::TEXTURE_MAX_ANISOTROPY, mf.anisotropy);
+              gl.UseProgram(shader);
+              return TimeSoftgl(frames, gl, FrameSpec{false, false, 6, png[mt.mode]});
+            }();
+            const double gl_ms = with_osmesa(1280, 720, [&] {
+              gl_setup(quad);
+              const GLenum t = GLenum(mt.target);
+              GLuint tex;
+              glGenTextures(1, &tex);
+              glBindTexture(t, tex);
+              if (shadow) {
+                glTexImage2D(t, 0, GL_DEPTH_COMPONENT32F, mt.w, mt.h, 0, GL_DEPTH_COMPONENT, GL_FLOAT,
+                             depths.data());
+                glTexParameteri(t, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+                glTexParameteri(t, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+              } else if (mt.mode == 1) {
+                for (int f = 0; f < 6; ++f)
+                  glTexImage2D(GLenum(GL_TEXTURE_CUBE_MAP_POSITIVE_X + f), 0, GLint(format), mt.w, mt.h, 0, GL_RGBA,
+                               GL_UNSIGNED_BYTE, pixels.data());
+              } else if (mt.d > 1) {
+                glTexImage3D(t, 0, GLint(format), mt.w, mt.h, mt.d, 0, GL_RGBA, GL_UNSIGNED_BYTE, pixels.data());
+              } else {
+                glTexImage2D(t, 0, GLint(format), mt.w, mt.h, 0, GL_RGBA, GL_UNSIGNED_BYTE, pixels.data());
+              }
+              if (mipmapped) glGenerateMipmap(t);
+              glTexParameteri(t, GL_TEXTURE_MIN_FILTER, GLint(mf.min));
+              glTexParameteri(t, GL_TEXTURE_MAG_FILTER, GLint(mf.mag));
+              for (const GLenum pname : {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T, GL_TEXTURE_WRAP_R})
+                glTexParameteri(t, pname, GLint(wrap));
+              glTexParameterfv(t, GL_TEXTURE_BORDER_COLOR, border);
+              if (mf.anisotropy > 1.0f) glTexParameterf(t, GL_TEXTURE_MAX_ANISOTROPY_EXT, mf.anisotropy);
+              Program(kPlaneVs, kMatrixFs[mt.mode]);
+              return TimeGl(frames, FrameSpec{false, false, 6, png[mt.mode]});
+            });
+            if (first_ms == 0.0) first_ms = sg_ms;
+            std::printf(" %.2f (%.1f) |", sg_ms / gl_ms, sg_ms / first_ms);
+            std::fflush(stdout);
+          }
+          std::printf("\n");
+        }
+      }
+    }
+    return 0;
+  }
 
   const FrameSpec engine_frame{true, true, int(engine.indices.size()), "bench_engine.png"};
   const FrameSpec small_frame{true, false, 3000000, "bench_small.png"};
