@@ -15,7 +15,8 @@
 //   --scalar 0         skip the runs with each scene's shader in the scalar form (by default they follow each
 //                      scene, and the last columns give their time and the wide form's gain over them)
 //   --depth16 1        softgl's contexts with a 16-bit depth buffer (Options::depth_format DEPTH_COMPONENT16)
-//   --matrix 1         the sampler matrix instead of the scenes: every target x wrap mode x filter x format (below)
+//   --matrix 1         the sampler matrix instead of the scenes: every target x wrap mode x filter x format (below);
+//                      --scene TEXT then picks its rows ("2D 256^2, RGBA8, NEAREST"), --softgl-only 1 its ms
 //   --msaa-pairs N     also the model scene's softgl frame without and with 4x MSAA in turn, N pairs, in two
 //                      contexts side by side: each pair's ratio is taken a few milliseconds apart, so that a shared
 //                      machine's drifts in speed weigh on both frames of a pair alike; prints the median ratio
@@ -813,6 +814,9 @@ int main(int argc, char** argv) {
         if (shadow && format != sg::RGBA8) continue;  // (one row set: DEPTH_COMPONENT32F)
         for (const MatrixFilter& mf : filters) {
           if (shadow && (mf.min != sg::NEAREST && mf.min != sg::LINEAR)) continue;
+          const std::string row = std::string(mt.name) + ", " + (shadow ? "DEPTH_COMPONENT32F" : format_name) + ", " +
+                                  mf.name;  // (--scene TEXT: the rows whose name contains TEXT)
+          if (row.find(only) == std::string::npos) continue;
           std::printf("| %s | %s | %s |", mt.name, shadow ? "DEPTH_COMPONENT32F" : format_name, mf.name);
           std::fflush(stdout);
           for (const Enum wrap : wraps) {
@@ -847,7 +851,7 @@ int main(int argc, char** argv) {
               gl.UseProgram(shader);
               return TimeSoftgl(frames, gl, FrameSpec{false, false, 6, png[mt.mode]});
             }();
-            const double gl_ms = with_osmesa(1280, 720, [&] {
+            const double gl_ms = softgl_only ? 1.0 : with_osmesa(1280, 720, [&] {
               gl_setup(quad);
               const GLenum t = GLenum(mt.target);
               GLuint tex;
@@ -878,7 +882,8 @@ int main(int argc, char** argv) {
               return TimeGl(frames, FrameSpec{false, false, 6, png[mt.mode]});
             });
             if (first_ms == 0.0) first_ms = sg_ms;
-            std::printf(" %.2f (%.1f) |", sg_ms / gl_ms, sg_ms / first_ms);
+            if (softgl_only) std::printf(" %.2f ms |", sg_ms);
+            else std::printf(" %.2f (%.1f) |", sg_ms / gl_ms, sg_ms / first_ms);
             std::fflush(stdout);
           }
           std::printf("\n");

@@ -954,8 +954,11 @@ SOFTGL_INLINE void SampleTexelLanes(const TextureView& view, Lookup kind, const 
         rho2 = rho2 / __builtin_convertvector(n * n, F);
       }
       normal = LambdaOfRho2Lanes<W>(view, rho2, bias, lam);
-      if (aniso)
-        for (int l = 0; l < W; ++l) probes = std::max(probes, normal[l] ? int(n[l]) : 1);
+      if (aniso) {
+        // (The lanes of n, not of `normal`: GCC 12 computes a mask whose lanes are read one by one lane by lane.)
+        const I used = normal != 0 ? n : I{} + 1;
+        for (int l = 0; l < W; ++l) probes = std::max(probes, int(used[l]));
+      }
     }
     // SampleMip's choice: the level (level_a), a second one (level_a + 1) where `two`, with weight f; LINEAR
     // filtering where `linear` is set, NEAREST elsewhere.
