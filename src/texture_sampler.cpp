@@ -1124,25 +1124,90 @@ SOFTGL_TARGET_AVX512 void SampleTexelLanesAvx512(const TextureView& v, Lookup k,
 }
 #endif
 
-// The vector path for a view: its 8-bit layout's, or the one for any layout (null for none). The 8-bit layouts
-// have a second form for LINEAR magnification with LINEAR or LINEAR_MIPMAP_LINEAR minification (the usual
-// states), whose level choice is shorter.
-SampleTexelLanesFn SampleTexelLanesFor(const TextureView& view) {
+// The lookups whose level of detail changes nothing: one level (NEAREST or LINEAR minification) filtered as it is
+// magnified, no anisotropy, on a 2D texture or a 2D array (texture(), textureLod() and the shadow lookups). Every
+// lane is filtered on the base level with the forms for every lane: the samples SampleTexelLanes gives (whose
+// one-lane path gives such a lane the same sample whatever its lambda), without its level of detail and level
+// choice. A post-processing pass reading a render target, a shadow map with LINEAR, a NEAREST texture.
+template <int W, int Bytes, bool Srgb>
+SOFTGL_INLINE void SampleBaseLanes(const TextureView& view, Lookup kind, const Textures::Lanes& c, const float* lod,
+                                   float out[4][16]) {
+  using F = typename V<W>::F;
+  using I = typename V<W>::I;
+  const SamplerParams& p = view.texture->params;
+  LanesWrap<W> wr{p.wrap_s, p.wrap_t, p.wrap_s == CLAMP_TO_BORDER || p.wrap_t == CLAMP_TO_BORDER, {}};
+  for (int ch = 0; ch < 4; ++ch) wr.border_raw[ch] = F{} + view.border_raw[ch];
+  wr.layered = kind == Lookup::kArray || kind == Lookup::kArrayLod || kind == Lookup::kArrayShadow;
+  wr.compare = kind == Lookup::kShadow || kind == Lookup::kArrayShadow;
+  wr.func = p.compare_func;
+  const TextureLevel& lv = view.texture->levels[0][view.base];
+  const I all = I{} - 1;
+  for (int l0 = 0; l0 < 16; l0 += W) {
+    const F s = LoadF<W>(c.s + l0), t = LoadF<W>(c.t + l0);
+    if (wr.layered) wr.layer = ArrayLayerLanes<W>(view, LoadF<W>(c.r + l0));
+    if (wr.compare) {  // as SampleTexelLanes
+      F ref = LoadF<W>((kind == Lookup::kShadow ? c.r : lod) + l0);
+      ref = ref == ref ? ref : F{} + 0.0f;
+      wr.ref = ref < 0.0f ? F{} + 0.0f : (1.0f < ref ? F{} + 1.0f : ref);
+    }
+    F r[4];
+    if (p.mag_filter == LINEAR) BilinearLanes<W, Bytes, Srgb, true>(lv, wr, s, t, all, r);
+    else NearestLanes<W, Bytes, Srgb, true>(lv, wr, s, t, all, r);
+    for (int ch = 0; ch < 4; ++ch) {
+      const F v = r[ch] / view.scale;
+      std::memcpy(&out[ch][l0], &v, sizeof v);
+    }
+  }
+}
+
+template <int Bytes, bool Srgb>
+void SampleBaseLanesBase(const TextureView& v, Lookup k, const Textures::Lanes& c, float, const float* lod,
+                         float out[4][16]) {
+  SampleBaseLanes<4, Bytes, Srgb>(v, k, c, lod, out);
+}
+#if defined(SOFTGL_HAS_DISPATCH)
+template <int Bytes, bool Srgb>
+SOFTGL_TARGET_AVX2 void SampleBaseLanesAvx2(const TextureView& v, Lookup k, const Textures::Lanes& c, float,
+                                            const float* lod, float out[4][16]) {
+  SampleBaseLanes<8, Bytes, Srgb>(v, k, c, lod, out);
+}
+template <int Bytes, bool Srgb>
+SOFTGL_TARGET_AVX512 void SampleBaseLanesAvx512(const TextureView& v, Lookup k, const Textures::Lanes& c, float,
+                                                const float* lod, float out[4][16]) {
+  SampleBaseLanes<16, Bytes, Srgb>(v, k, c, lod, out);
+}
+#endif
+
+// The vector path for a lookup on a view: its 8-bit layout's, or the one for any layout (null for none). The 8-bit
+// layouts have a second form for LINEAR magnification with LINEAR or LINEAR_MIPMAP_LINEAR minification (the usual
+// states), whose level choice is shorter; lookups whose level of detail changes nothing take SampleBaseLanes.
+SampleTexelLanesFn SampleTexelLanesFor(const TextureView& view, Lookup kind) {
   static const SampleTexelLanesFn by_bytes[2][4] = {
       {SOFTGL_CHOOSE(SampleTexelLanes, <1, false, false>), SOFTGL_CHOOSE(SampleTexelLanes, <2, false, false>),
        SOFTGL_CHOOSE(SampleTexelLanes, <4, false, false>), SOFTGL_CHOOSE(SampleTexelLanes, <4, true, false>)},
       {SOFTGL_CHOOSE(SampleTexelLanes, <1, false, true>), SOFTGL_CHOOSE(SampleTexelLanes, <2, false, true>),
        SOFTGL_CHOOSE(SampleTexelLanes, <4, false, true>), SOFTGL_CHOOSE(SampleTexelLanes, <4, true, true>)}};
   static const SampleTexelLanesFn any_layout = SOFTGL_CHOOSE(SampleTexelLanes, <0, false, false>);
+  static const SampleTexelLanesFn base_by_bytes[5] = {
+      SOFTGL_CHOOSE(SampleBaseLanes, <1, false>), SOFTGL_CHOOSE(SampleBaseLanes, <2, false>),
+      SOFTGL_CHOOSE(SampleBaseLanes, <4, false>), SOFTGL_CHOOSE(SampleBaseLanes, <4, true>),
+      SOFTGL_CHOOSE(SampleBaseLanes, <0, false>)};
   const SamplerParams& p = view.texture->params;
+  const bool explicit_lod = kind == Lookup::kLod || kind == Lookup::kArrayLod;
+  const bool shadow = kind == Lookup::kShadow || kind == Lookup::kArrayShadow;
+  const bool flat = kind == Lookup::k2D || kind == Lookup::kArray || explicit_lod || shadow;  // not cube, not 3D
+  const bool anisotropic = !explicit_lod && !shadow && !view.depth && view.anisotropy > 1.0f;
+  const bool base_only = flat && !anisotropic && (p.min_filter == NEAREST || p.min_filter == LINEAR) &&
+                         (p.min_filter == LINEAR) == (p.mag_filter == LINEAR);
   const bool linear =
       p.mag_filter == LINEAR && (p.min_filter == LINEAR || p.min_filter == LINEAR_MIPMAP_LINEAR);
   switch (view.layout) {
     case TexelLayout::kNone: return nullptr;
-    case TexelLayout::kUnorm8x1: return by_bytes[linear][0];
-    case TexelLayout::kUnorm8x2: return by_bytes[linear][1];
-    case TexelLayout::kUnorm8x4: return by_bytes[linear][view.srgb ? 3 : 2];
-    default: return any_layout;
+    case TexelLayout::kUnorm8x1: return base_only ? base_by_bytes[0] : by_bytes[linear][0];
+    case TexelLayout::kUnorm8x2: return base_only ? base_by_bytes[1] : by_bytes[linear][1];
+    case TexelLayout::kUnorm8x4:
+      return base_only ? base_by_bytes[view.srgb ? 3 : 2] : by_bytes[linear][view.srgb ? 3 : 2];
+    default: return base_only ? base_by_bytes[4] : any_layout;
   }
 }
 
@@ -1270,7 +1335,7 @@ void SampleBlock(const TextureView* v, Lookup kind, const Textures::Lanes& c, fl
     return;
   }
   if (v->wide) {
-    if (const SampleTexelLanesFn sample = SampleTexelLanesFor(*v)) return sample(*v, kind, c, bias, lod, out);
+    if (const SampleTexelLanesFn sample = SampleTexelLanesFor(*v, kind)) return sample(*v, kind, c, bias, lod, out);
   }
   for (int l = 0; l < 16; ++l) {
     const glm::vec4 r = SampleOneLane(*v, kind, c, l, bias, lod);
