@@ -175,7 +175,9 @@ float HalfToFloat(std::uint16_t h) {
     const float v = float(m) * (1.0f / 16777216.0f);
     return sign ? -v : v;
   }
-  const std::uint32_t bits = sign | (e == 31 ? 0x7F800000u : (e + 112u) << 23) | m << 13;
+  // (A NaN keeps its payload, with the quiet bit set: as processors convert halves.)
+  const std::uint32_t quiet = (e == 31 && m != 0) ? 0x00400000u : 0u;
+  const std::uint32_t bits = sign | (e == 31 ? 0x7F800000u : (e + 112u) << 23) | m << 13 | quiet;
   float f;
   std::memcpy(&f, &bits, 4);
   return f;

@@ -473,7 +473,8 @@ SOFTGL_INLINE void Channels(typename V<W>::U x, typename V<W>::F out[4]) {
 }
 
 // HalfToFloat for W lanes (h in the low 16 bits): the exponent and mantissa moved to a float's places and scaled
-// by 2^112, exact for normal and subnormal halves alike; infinities and NaNs get the float's top exponent.
+// by 2^112, exact for normal and subnormal halves alike; infinities and NaNs get the float's top exponent, NaNs
+// the quiet bit too.
 template <int W>
 SOFTGL_INLINE typename V<W>::F HalfLanes(typename V<W>::U h) {
   using F = typename V<W>::F;
@@ -486,10 +487,18 @@ SOFTGL_INLINE typename V<W>::F HalfLanes(typename V<W>::U h) {
   U bits;
   std::memcpy(&bits, &f, sizeof bits);
   bits = em >= 0x7C00u ? shifted | 0x7F800000u : bits;
+  bits = em > 0x7C00u ? bits | 0x00400000u : bits;
   bits |= (h & 0x8000u) << 16;
   std::memcpy(&f, &bits, sizeof f);
   return f;
 }
+#if defined(SOFTGL_HAS_DISPATCH) && !defined(__clang__)
+// With AVX-512, one conversion instruction (VCVTPH2PS, exact, a NaN made quiet), as ByteToBottom's byte shuffle.
+template <>
+__attribute__((target("avx512f"))) inline V<16>::F HalfLanes<16>(V<16>::U h) {
+  return V<16>::F(_mm512_cvtph_ps(_mm512_cvtepi32_epi16(__m512i(h))));
+}
+#endif
 
 // Whether a layout's texel is decoded from its first 32 bits by WordTexels (one channel of 32 or 16 bits, two of
 // 16, a packed fixed-point word, or R11F_G11F_B10F's three small floats): a row's two texels then come from one 64-bit load.
@@ -876,7 +885,10 @@ SOFTGL_INLINE void SampleTexelLanes(const TextureView& view, Lookup kind, const 
   const bool explicit_lod =
       kind == Lookup::kLod || kind == Lookup::kArrayLod || kind == Lookup::kCubeLod || kind == Lookup::k3DLod;
   const SamplerParams& p = view.texture->params;
-  LanesWrap<W> wr{p.wrap_s, p.wrap_t, p.wrap_s == CLAMP_TO_BORDER || p.wrap_t == CLAMP_TO_BORDER, {}};
+  LanesWrap<W> wr;
+  wr.s = p.wrap_s;
+  wr.t = p.wrap_t;
+  wr.border = p.wrap_s == CLAMP_TO_BORDER || p.wrap_t == CLAMP_TO_BORDER;
   for (int ch = 0; ch < 4; ++ch) wr.border_raw[ch] = F{} + view.border_raw[ch];
   // 0: no mipmaps (NEAREST, LINEAR); 1: *_MIPMAP_NEAREST; 2: *_MIPMAP_LINEAR.
   const int mip = p.min_filter == NEAREST || p.min_filter == LINEAR                             ? 0
@@ -993,7 +1005,10 @@ SOFTGL_INLINE void SampleTexelLanes(const TextureView& view, Lookup kind, const 
     }
     const std::uint32_t normal_bits = detail::MaskToBits<W>(normal, 0);
     const std::uint32_t linear_bits = detail::MaskToBits<W>(linear, 0);
-    F sum[4] = {}, first[4] = {};
+    // (Arrays set element by element: GCC 12 clears an array initialized with {} by a string instruction, tens
+    // of cycles a block.)
+    F sum[4], first[4];
+    for (int ch = 0; ch < 4; ++ch) sum[ch] = first[ch] = F{};
     for (int probe = 1; probe <= probes; ++probe) {
       // This probe's lanes and coordinates: every lane on the vector path, at (s, t), without anisotropy.
       I active = normal;
@@ -1005,7 +1020,8 @@ SOFTGL_INLINE void SampleTexelLanes(const TextureView& view, Lookup kind, const 
         pt = n == 1 ? t : t + mt * k;
       }
       const std::uint32_t active_bits = detail::MaskToBits<W>(active, 0);
-      F ra[4] = {}, rb[4] = {};
+      F ra[4], rb[4];
+      for (int ch = 0; ch < 4; ++ch) ra[ch] = rb[ch] = F{};
       // Each level a lane needs, first (into ra) and second (level_a + 1, into rb), filtered for the lanes that
       // need it: usually one level for all. (The masks stay results of comparisons: GCC 12 turns a select on a
       // mask it cannot see is one into a branch per lane.)
@@ -1058,7 +1074,8 @@ SOFTGL_INLINE void SampleTexelLanes(const TextureView& view, Lookup kind, const 
             wk[1] = WrapLanes<W>(p.wrap_r, k0 + 1, lv.depth);
             slices = detail::MaskToBits<W>(mask & linear, 0) != 0 ? 2 : 1;
           }
-          F slice[2][4] = {};
+          F slice[2][4];
+          for (int ch = 0; ch < 4; ++ch) slice[0][ch] = slice[1][ch] = F{};
           for (int j = 0; j < slices; ++j) {
             if (volume) wr.layer = wk[j] < 0 ? I{} : wk[j];
             F* into = volume ? slice[j] : res;
@@ -1135,7 +1152,10 @@ SOFTGL_INLINE void SampleBaseLanes(const TextureView& view, Lookup kind, const T
   using F = typename V<W>::F;
   using I = typename V<W>::I;
   const SamplerParams& p = view.texture->params;
-  LanesWrap<W> wr{p.wrap_s, p.wrap_t, p.wrap_s == CLAMP_TO_BORDER || p.wrap_t == CLAMP_TO_BORDER, {}};
+  LanesWrap<W> wr;
+  wr.s = p.wrap_s;
+  wr.t = p.wrap_t;
+  wr.border = p.wrap_s == CLAMP_TO_BORDER || p.wrap_t == CLAMP_TO_BORDER;
   for (int ch = 0; ch < 4; ++ch) wr.border_raw[ch] = F{} + view.border_raw[ch];
   wr.layered = kind == Lookup::kArray || kind == Lookup::kArrayLod || kind == Lookup::kArrayShadow;
   wr.compare = kind == Lookup::kShadow || kind == Lookup::kArrayShadow;
