@@ -1142,10 +1142,10 @@ SOFTGL_TARGET_AVX512 void SampleTexelLanesAvx512(const TextureView& v, Lookup k,
 #endif
 
 // The lookups whose level of detail changes nothing: one level (NEAREST or LINEAR minification) filtered as it is
-// magnified, no anisotropy, on a 2D texture or a 2D array (texture(), textureLod() and the shadow lookups). Every
-// lane is filtered on the base level with the forms for every lane: the samples SampleTexelLanes gives (whose
-// one-lane path gives such a lane the same sample whatever its lambda), without its level of detail and level
-// choice. A post-processing pass reading a render target, a shadow map with LINEAR, a NEAREST texture.
+// magnified, no anisotropy (texture(), textureLod() and the shadow lookups on every target). Every lane is filtered
+// on the base level: the samples SampleTexelLanes gives (whose one-lane path gives such a lane the same sample
+// whatever its lambda), without its level of detail and level choice. A post-processing pass reading a render
+// target, a shadow map with LINEAR, a NEAREST texture, a skybox, a 3D colour-grading table.
 template <int W, int Bytes, bool Srgb>
 SOFTGL_INLINE void SampleBaseLanes(const TextureView& view, Lookup kind, const Textures::Lanes& c, const float* lod,
                                    float out[4][16]) {
@@ -1157,22 +1157,70 @@ SOFTGL_INLINE void SampleBaseLanes(const TextureView& view, Lookup kind, const T
   wr.t = p.wrap_t;
   wr.border = p.wrap_s == CLAMP_TO_BORDER || p.wrap_t == CLAMP_TO_BORDER;
   for (int ch = 0; ch < 4; ++ch) wr.border_raw[ch] = F{} + view.border_raw[ch];
-  wr.layered = kind == Lookup::kArray || kind == Lookup::kArrayLod || kind == Lookup::kArrayShadow;
+  const bool cube = kind == Lookup::kCube || kind == Lookup::kCubeLod;
+  const bool volume = kind == Lookup::k3D || kind == Lookup::k3DLod;
+  const bool array = kind == Lookup::kArray || kind == Lookup::kArrayLod || kind == Lookup::kArrayShadow;
+  wr.layered = array || volume;
   wr.compare = kind == Lookup::kShadow || kind == Lookup::kArrayShadow;
   wr.func = p.compare_func;
+  const bool linear = p.mag_filter == LINEAR;
   const TextureLevel& lv = view.texture->levels[0][view.base];
   const I all = I{} - 1;
   for (int l0 = 0; l0 < 16; l0 += W) {
-    const F s = LoadF<W>(c.s + l0), t = LoadF<W>(c.t + l0);
-    if (wr.layered) wr.layer = ArrayLayerLanes<W>(view, LoadF<W>(c.r + l0));
+    F s, t;
+    I face = I{};
+    if (cube) {
+      F unused[4];
+      CubeLanes<W>(c, l0, true, face, s, t, unused[0], unused[1], unused[2], unused[3]);
+    } else {
+      s = LoadF<W>(c.s + l0);
+      t = LoadF<W>(c.t + l0);
+    }
+    if (array) wr.layer = ArrayLayerLanes<W>(view, LoadF<W>(c.r + l0));
     if (wr.compare) {  // as SampleTexelLanes
       F ref = LoadF<W>((kind == Lookup::kShadow ? c.r : lod) + l0);
       ref = ref == ref ? ref : F{} + 0.0f;
       wr.ref = ref < 0.0f ? F{} + 0.0f : (1.0f < ref ? F{} + 1.0f : ref);
     }
     F r[4];
-    if (p.mag_filter == LINEAR) BilinearLanes<W, Bytes, Srgb, true>(lv, wr, s, t, all, r);
-    else NearestLanes<W, Bytes, Srgb, true>(lv, wr, s, t, all, r);
+    if (cube) {
+      // Each face the lanes point at (usually one for the block), its lanes filtered together.
+      I pending = all;
+      for (std::uint32_t bits = detail::MaskToBits<W>(pending, 0); bits != 0;
+           bits = detail::MaskToBits<W>(pending, 0)) {
+        const I mask = pending & (face == face[__builtin_ctz(bits)]);
+        const TextureLevel& face_level = view.texture->levels[face[__builtin_ctz(bits)]][view.base];
+        if (linear) BilinearLanes<W, Bytes, Srgb>(face_level, wr, s, t, mask, r);
+        else NearestLanes<W, Bytes, Srgb>(face_level, wr, s, t, mask, r);
+        pending &= ~mask;
+      }
+    } else {
+      // A 2D texture or array; or a 3D texture's slices (FilterVolume): the one holding w (NEAREST) or the two
+      // around it (LINEAR, weighted by w's fraction cw), wrapped by TEXTURE_WRAP_R (-1: the border colour).
+      I wk[2] = {};
+      F cw = F{};
+      int slices = 1;
+      if (volume) {
+        const F w = TexelCoordLanes<W>(LoadF<W>(c.r + l0), float(lv.depth));
+        const F fw = w - 0.5f, flw = FloorF<W>(fw);
+        cw = fw - flw;
+        const I k0 = __builtin_convertvector(linear ? flw : FloorF<W>(w), I);
+        wk[0] = WrapLanes<W>(p.wrap_r, k0, lv.depth);
+        wk[1] = WrapLanes<W>(p.wrap_r, k0 + 1, lv.depth);
+        slices = linear ? 2 : 1;
+      }
+      F slice[2][4];
+      for (int j = 0; j < slices; ++j) {
+        F* into = volume ? slice[j] : r;
+        if (volume) wr.layer = wk[j] < 0 ? I{} : wk[j];
+        if (linear) BilinearLanes<W, Bytes, Srgb, true>(lv, wr, s, t, all, into);
+        else NearestLanes<W, Bytes, Srgb, true>(lv, wr, s, t, all, into);
+        if (volume)
+          for (int ch = 0; ch < 4; ++ch) into[ch] = wk[j] < 0 ? wr.border_raw[ch] : into[ch];
+      }
+      if (volume)
+        for (int ch = 0; ch < 4; ++ch) r[ch] = linear ? (1.0f - cw) * slice[0][ch] + cw * slice[1][ch] : slice[0][ch];
+    }
     for (int ch = 0; ch < 4; ++ch) {
       const F v = r[ch] / view.scale;
       std::memcpy(&out[ch][l0], &v, sizeof v);
@@ -1213,11 +1261,12 @@ SampleTexelLanesFn SampleTexelLanesFor(const TextureView& view, Lookup kind) {
       SOFTGL_CHOOSE(SampleBaseLanes, <4, false>), SOFTGL_CHOOSE(SampleBaseLanes, <4, true>),
       SOFTGL_CHOOSE(SampleBaseLanes, <0, false>)};
   const SamplerParams& p = view.texture->params;
-  const bool explicit_lod = kind == Lookup::kLod || kind == Lookup::kArrayLod;
+  const bool explicit_lod =
+      kind == Lookup::kLod || kind == Lookup::kArrayLod || kind == Lookup::kCubeLod || kind == Lookup::k3DLod;
   const bool shadow = kind == Lookup::kShadow || kind == Lookup::kArrayShadow;
-  const bool flat = kind == Lookup::k2D || kind == Lookup::kArray || explicit_lod || shadow;  // not cube, not 3D
-  const bool anisotropic = !explicit_lod && !shadow && !view.depth && view.anisotropy > 1.0f;
-  const bool base_only = flat && !anisotropic && (p.min_filter == NEAREST || p.min_filter == LINEAR) &&
+  const bool volume = kind == Lookup::k3D || kind == Lookup::k3DLod;
+  const bool anisotropic = !explicit_lod && !shadow && !volume && !view.depth && view.anisotropy > 1.0f;
+  const bool base_only = !anisotropic && (p.min_filter == NEAREST || p.min_filter == LINEAR) &&
                          (p.min_filter == LINEAR) == (p.mag_filter == LINEAR);
   const bool linear =
       p.mag_filter == LINEAR && (p.min_filter == LINEAR || p.min_filter == LINEAR_MIPMAP_LINEAR);
