@@ -545,6 +545,44 @@ SOFTGL_INLINE void WordTexels(TexelLayout layout, typename V<W>::U word, typenam
   }
 }
 
+// Each lane's RGBA32F texel at byte offset at[lane] of `base`, its four floats into out: two 64-bit loads a lane.
+template <int W>
+SOFTGL_INLINE void Rgba32Texels(const std::uint8_t* base, typename V<W>::I at, typename V<W>::F out[4]) {
+  using D = typename V<W>::D;
+  using U = typename V<W>::U;
+  const D lo = LoadPairs<W>(base, at, std::make_index_sequence<W>());
+  const D hi = LoadPairs<W>(base + 8, at, std::make_index_sequence<W>());
+  for (int c = 0; c < 4; ++c) {
+    const U bits = __builtin_convertvector((c < 2 ? lo : hi) >> (32 * (c & 1)), U);
+    std::memcpy(&out[c], &bits, sizeof bits);
+  }
+}
+#if defined(SOFTGL_HAS_DISPATCH) && !defined(__clang__)
+// With AVX-512: one 128-bit load a lane, four lanes a register (lanes k, k + 4, k + 8, k + 12 in register k), then
+// a 4 x 4 transpose inside each 128-bit part, which leaves lane 4 * part + k of each channel in its place.
+template <>
+__attribute__((target("avx512f"))) inline void Rgba32Texels<16>(const std::uint8_t* base, V<16>::I at,
+                                                                V<16>::F out[4]) {
+  alignas(64) std::int32_t o[16];
+  detail::StoreVec(o, at);
+  asm("" : "+m"(o));
+  auto texel = [&](int lane) { return _mm_loadu_ps(reinterpret_cast<const float*>(base + o[lane])); };
+  __m512 q[4];
+  for (int k = 0; k < 4; ++k) {
+    __m512 v = _mm512_castps128_ps512(texel(k));
+    v = _mm512_insertf32x4(v, texel(k + 4), 1);
+    v = _mm512_insertf32x4(v, texel(k + 8), 2);
+    q[k] = _mm512_insertf32x4(v, texel(k + 12), 3);
+  }
+  const __m512 t0 = _mm512_unpacklo_ps(q[0], q[1]), t1 = _mm512_unpacklo_ps(q[2], q[3]);
+  const __m512 t2 = _mm512_unpackhi_ps(q[0], q[1]), t3 = _mm512_unpackhi_ps(q[2], q[3]);
+  out[0] = V<16>::F(_mm512_shuffle_ps(t0, t1, 0x44));
+  out[1] = V<16>::F(_mm512_shuffle_ps(t0, t1, 0xEE));
+  out[2] = V<16>::F(_mm512_shuffle_ps(t2, t3, 0x44));
+  out[3] = V<16>::F(_mm512_shuffle_ps(t2, t3, 0xEE));
+}
+#endif
+
 // Texel `index` (row * width + column) of level `lv` for each lane of `mask` (every lane if All), in any layout,
 // as Sampled() gives it; anything in the other lanes. Float layouts (16- and 32-bit), 16-bit fixed point, the
 // packed fixed-point layouts and R11F_G11F_B10F are read with one or two 64-bit loads a lane and converted in vector
@@ -577,8 +615,8 @@ SOFTGL_INLINE void GatherTexels(const TextureLevel& lv, typename V<W>::I index, 
     // texel 0.)
     const std::uint8_t* base = lv.data.data();
     const typename V<W>::I at = (All ? index : index & mask) * lv.bytes;
+    if (channels == 4 && single) return Rgba32Texels<W>(base, at, out);
     const D lo = LoadPairs<W>(base, at, std::make_index_sequence<W>());
-    const D hi = channels == 4 && single ? LoadPairs<W>(base + 8, at, std::make_index_sequence<W>()) : D{};
     for (int c = 0; c < 4; ++c) {
       if (c >= channels) {
         out[c] = F{} + (c == 3 ? 1.0f : 0.0f);
@@ -588,7 +626,7 @@ SOFTGL_INLINE void GatherTexels(const TextureLevel& lv, typename V<W>::I index, 
         const typename V<W>::I k = __builtin_convertvector((lo >> (16 * c)) & 0xFFFFu, typename V<W>::I);
         out[c] = __builtin_convertvector(k, F) / 65535.0f;
       } else {
-        const U bits = __builtin_convertvector(((c < 2 ? lo : hi) >> (32 * (c & 1))), U);
+        const U bits = __builtin_convertvector(lo >> (32 * c), U);
         std::memcpy(&out[c], &bits, sizeof bits);
       }
     }
