@@ -545,6 +545,28 @@ SOFTGL_INLINE void WordTexels(TexelLayout layout, typename V<W>::U word, typenam
   }
 }
 
+// The four halves of each lane's RGBA16F texel (the lane's 64 bits of `texels`) as floats (HalfLanes).
+template <int W>
+SOFTGL_INLINE void Rgba16fTexels(typename V<W>::D texels, typename V<W>::F out[4]) {
+  for (int c = 0; c < 4; ++c)
+    out[c] = HalfLanes<W>(__builtin_convertvector((texels >> (16 * c)) & 0xFFFFu, typename V<W>::U));
+}
+#if defined(SOFTGL_HAS_DISPATCH) && !defined(__clang__)
+// With AVX-512: channel c's 16 halves picked out of the two registers of texels by one word permutation (word
+// 4 * lane + c), then one conversion (VCVTPH2PS, as HalfLanes<16>).
+template <>
+__attribute__((target("avx512f,avx512bw"))) inline void Rgba16fTexels<16>(V<16>::D texels, V<16>::F out[4]) {
+  __m512i part[2];
+  std::memcpy(part, &texels, sizeof part);
+  for (int c = 0; c < 4; ++c) {
+    alignas(64) std::uint16_t pick[32] = {};
+    for (int l = 0; l < 16; ++l) pick[l] = std::uint16_t(4 * l + c);
+    const __m512i words = _mm512_permutex2var_epi16(part[0], _mm512_load_si512(pick), part[1]);
+    out[c] = V<16>::F(_mm512_cvtph_ps(_mm512_castsi512_si256(words)));
+  }
+}
+#endif
+
 // Each lane's RGBA32F texel at byte offset at[lane] of `base`, its four floats into out: two 64-bit loads a lane.
 template <int W>
 SOFTGL_INLINE void Rgba32Texels(const std::uint8_t* base, typename V<W>::I at, typename V<W>::F out[4]) {
@@ -617,6 +639,7 @@ SOFTGL_INLINE void GatherTexels(const TextureLevel& lv, typename V<W>::I index, 
     const typename V<W>::I at = (All ? index : index & mask) * lv.bytes;
     if (channels == 4 && single) return Rgba32Texels<W>(base, at, out);
     const D lo = LoadPairs<W>(base, at, std::make_index_sequence<W>());
+    if (channels == 4 && half) return Rgba16fTexels<W>(lo, out);
     for (int c = 0; c < 4; ++c) {
       if (c >= channels) {
         out[c] = F{} + (c == 3 ? 1.0f : 0.0f);

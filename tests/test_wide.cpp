@@ -632,6 +632,20 @@ TEST_CASE("the vector path decodes every half-float texel as the one-lane path d
   const detail::TextureView view = detail::MakeView(t);
   REQUIRE(view.complete);
   CHECK(DifferingTexels(view, 256, 256, 65536) == 0);
+  // The same patterns four to a texel in an RGBA16F texture (read by its own code on the vector path).
+  detail::TextureObject t4;
+  t4.target = TEXTURE_2D;
+  auto& l4 = t4.levels[0][0];
+  l4.Allocate(RGBA16F, 128, 128);
+  for (int i = 0; i < 65536; ++i) {
+    const std::uint16_t h = std::uint16_t(i);
+    std::memcpy(l4.data.data() + 2 * i, &h, 2);
+  }
+  t4.params.min_filter = NEAREST;
+  t4.params.mag_filter = NEAREST;
+  const detail::TextureView view4 = detail::MakeView(t4);
+  REQUIRE(view4.complete);
+  CHECK(DifferingTexels(view4, 128, 128, 16384) == 0);
 }
 
 TEST_CASE("the vector path decodes every R11F_G11F_B10F channel value as the one-lane path does", "[wide][texture]") {
