@@ -17,6 +17,8 @@
 //   --depth16 1        softgl's contexts with a 16-bit depth buffer (Options::depth_format DEPTH_COMPONENT16)
 //   --matrix 1         the sampler matrix instead of the scenes: every target x wrap mode x filter x format (below);
 //                      --scene TEXT then picks its rows ("2D 256^2, RGBA8, NEAREST"), --softgl-only 1 its ms
+//   --formats 1        the colour format matrix instead: every colour format (and a G-buffer of four) x opaque or
+//                      blended x depth format (below); --scene and --softgl-only as for --matrix
 //   --msaa-pairs N     also the model scene's softgl frame without and with 4x MSAA in turn, N pairs, in two
 //                      contexts side by side: each pair's ratio is taken a few milliseconds apart, so that a shared
 //                      machine's drifts in speed weigh on both frames of a pair alike; prints the median ratio
@@ -251,6 +253,20 @@ struct MatrixShader : Shader<MatrixShader, UvVaryings> {
   }
 };
 
+// The colour format matrix's fragments: (u, v, 0.5, 0.35) from FullScreenQuads' coordinates into each of
+// `outputs` draw buffers (each output a little different).
+struct FormatShader : Shader<FormatShader, UvVaryings> {
+  int outputs = 1;
+  void Vertex(const VertexLanes& in, VertexLanesOut<UvVaryings>& out) const {
+    out.position = vec4(vec3(in.attrib[0]), 1.0f);
+    out.varyings.uv = vec2(in.attrib[1]);
+  }
+  void Fragment(const FragmentLanes<UvVaryings>& in, FragmentLanesOut& out) const {
+    const vec2 t = in.varyings.uv;
+    for (int o = 0; o < outputs; ++o) out.color[o] = vec4(t.x, t.y, Float(0.5f) + 0.1f * float(o), Float(0.35f));
+  }
+};
+
 // The ground plane with a cube map (mode 0: direction (u - 20, 1, v - 2): the top face near the camera, the
 // sides towards the horizon), a 2D array (mode 1: (u, v), layer u / 10) or a shadow map (mode 2: (u, v) / 40,
 // reference u / 40).
@@ -469,6 +485,14 @@ const char* kArrayFs = "#version 330 core\nin vec2 uv; uniform sampler2DArray te
                        "void main(){ o = texture(tex, vec3(uv, uv.x * 0.1)); }";
 const char* k3DFs = "#version 330 core\nin vec2 uv; uniform sampler3D tex; out vec4 o;"
                     "void main(){ o = texture(tex, vec3(uv, uv.x * 0.1)); }";
+// FormatShader in GLSL, for 1 to 4 outputs.
+std::string FormatFs(int outputs) {
+  std::string fs = "#version 330 core\nin vec2 uv;";
+  for (int o = 0; o < outputs; ++o) fs += " layout(location=" + std::to_string(o) + ") out vec4 o" + std::to_string(o) + ";";
+  fs += " void main(){";
+  for (int o = 0; o < outputs; ++o) fs += " o" + std::to_string(o) + " = vec4(uv, 0.5 + 0.1 * " + std::to_string(o) + ".0, 0.35);";
+  return fs + " }";
+}
 // MatrixShader's lookups in GLSL, by mode.
 const char* const kMatrixFs[5] = {
     "#version 330 core\nin vec2 uv; uniform sampler2D tex; out vec4 o; void main(){ o = texture(tex, uv); }",
@@ -623,6 +647,15 @@ double TimeGl(int n, const FrameSpec& f) {
   return ms;
 }
 
+// One cell of a matrix: softgl's time over llvmpipe's and, in brackets, over its own in the first cell (which
+// `first_ms` keeps); with softgl_only, softgl's ms.
+void PrintCell(bool softgl_only, double sg_ms, double gl_ms, double& first_ms) {
+  if (first_ms == 0.0) first_ms = sg_ms;
+  if (softgl_only) std::printf(" %.2f ms |", sg_ms);
+  else std::printf(" %.2f (%.1f) |", sg_ms / gl_ms, sg_ms / first_ms);
+  std::fflush(stdout);
+}
+
 struct Scene {
   const char* name;
   int width, height;
@@ -666,6 +699,7 @@ int main(int argc, char** argv) {
   std::string rss_child;     // --rss-child softgl|llvmpipe: run the model scene once, print peak RSS in KiB
   int msaa_pairs = 0;        // --msaa-pairs N
   bool matrix = false;       // --matrix 1
+  bool format_matrix = false;  // --formats 1
   for (int i = 1; i + 1 < argc; i += 2) {
     if (!std::strcmp(argv[i], "--threads")) threads = std::max(1, std::atoi(argv[i + 1]));
     if (!std::strcmp(argv[i], "--frames")) frames = std::max(1, std::atoi(argv[i + 1]));
@@ -678,6 +712,7 @@ int main(int argc, char** argv) {
     if (!std::strcmp(argv[i], "--rss-child")) rss_child = argv[i + 1];
     if (!std::strcmp(argv[i], "--msaa-pairs")) msaa_pairs = std::max(0, std::atoi(argv[i + 1]));
     if (!std::strcmp(argv[i], "--matrix")) matrix = std::atoi(argv[i + 1]) != 0;
+    if (!std::strcmp(argv[i], "--formats")) format_matrix = std::atoi(argv[i + 1]) != 0;
   }
   const std::string lp_threads = std::to_string(threads == 1 ? 0 : threads);
   setenv("LP_NUM_THREADS", lp_threads.c_str(), 1);
@@ -881,15 +916,130 @@ int main(int argc, char** argv) {
               Program(kPlaneVs, kMatrixFs[mt.mode]);
               return TimeGl(frames, FrameSpec{false, false, 6, png[mt.mode]});
             });
-            if (first_ms == 0.0) first_ms = sg_ms;
-            if (softgl_only) std::printf(" %.2f ms |", sg_ms);
-            else std::printf(" %.2f (%.1f) |", sg_ms / gl_ms, sg_ms / first_ms);
-            std::fflush(stdout);
+            PrintCell(softgl_only, sg_ms, gl_ms, first_ms);
           }
           std::printf("\n");
         }
       }
     }
+    return 0;
+  }
+
+  // --formats 1: the colour format matrix. Each cell 20 full-screen quads (FullScreenQuads, each nearer than the
+  // last, so every fragment passes the depth test LESS), 1280 x 720, into a framebuffer object of renderbuffers:
+  // the row's colour buffers (FRAMEBUFFER_SRGB enabled for SRGB8_ALPHA8) and the column's depth buffer, cleared
+  // each frame; opaque, or blended with SRC_ALPHA, ONE_MINUS_SRC_ALPHA. The fragments are FormatShader's. Prints
+  // softgl's time over llvmpipe's per cell, and in brackets softgl's time over its own in the first cell (RGBA8,
+  // opaque, DEPTH24_STENCIL8).
+  if (format_matrix) {
+    using softgl::Enum;
+    namespace sg = softgl;
+    struct FormatRow {
+      const char* name;
+      std::vector<Enum> colour;
+    };
+    const FormatRow rows[] = {{"RGBA8", {sg::RGBA8}},
+                              {"SRGB8_ALPHA8", {sg::SRGB8_ALPHA8}},
+                              {"RGBA16F", {sg::RGBA16F}},
+                              {"RG16F", {sg::RG16F}},
+                              {"R16F", {sg::R16F}},
+                              {"RGBA32F", {sg::RGBA32F}},
+                              {"RG32F", {sg::RG32F}},
+                              {"R32F", {sg::R32F}},
+                              {"R11F_G11F_B10F", {sg::R11F_G11F_B10F}},
+                              {"RGB565", {sg::RGB565}},
+                              {"RGBA4", {sg::RGBA4}},
+                              {"RGB5_A1", {sg::RGB5_A1}},
+                              {"RGB10_A2", {sg::RGB10_A2}},
+                              {"RG8", {sg::RG8}},
+                              {"R8", {sg::R8}},
+                              {"G-buffer RGBA8 + RGBA16F x 2 + R32F", {sg::RGBA8, sg::RGBA16F, sg::RGBA16F, sg::R32F}}};
+    const std::pair<const char*, Enum> depths[] = {{"DEPTH24_STENCIL8", sg::DEPTH24_STENCIL8},
+                                                   {"DEPTH_COMPONENT16", sg::DEPTH_COMPONENT16},
+                                                   {"DEPTH_COMPONENT32F", sg::DEPTH_COMPONENT32F},
+                                                   {"DEPTH32F_STENCIL8", sg::DEPTH32F_STENCIL8}};
+    const Geometry quads = FullScreenQuads(20, 1.0f);
+    const FrameSpec frame{true, false, 120, "bench_formats.png"};
+    std::printf("Colour format matrix, %d thread(s), %d frames a cell: softgl / llvmpipe (softgl ms / ms of the "
+                "first cell)\n\n| colour | blend | DEPTH24_STENCIL8 | DEPTH_COMPONENT16 | DEPTH_COMPONENT32F | "
+                "DEPTH32F_STENCIL8 |\n|---|---|---|---|---|---|\n",
+                threads, frames);
+    double first_ms = 0.0;
+    for (const FormatRow& row : rows)
+      for (const bool blend : {false, true}) {
+        const std::string name = std::string(row.name) + ", " + (blend ? "blended" : "opaque");
+        if (name.find(only) == std::string::npos) continue;
+        std::printf("| %s | %s |", row.name, blend ? "blended" : "opaque");
+        std::fflush(stdout);
+        const int n = int(row.colour.size());
+        const bool srgb = row.colour[0] == sg::SRGB8_ALPHA8;
+        for (const auto& [depth_name, depth] : depths) {
+          const double sg_ms = [&] {
+            wide::FormatShader shader;
+            shader.outputs = n;
+            softgl::Context gl(1280, 720, g_options);
+            softgl_setup(gl, quads);
+            gl.BindFramebuffer(sg::FRAMEBUFFER, gl.GenFramebuffer());
+            Enum bufs[4];
+            for (int o = 0; o < n; ++o) {
+              const std::uint32_t rb = gl.GenRenderbuffer();
+              gl.BindRenderbuffer(sg::RENDERBUFFER, rb);
+              gl.RenderbufferStorage(sg::RENDERBUFFER, row.colour[std::size_t(o)], 1280, 720);
+              gl.FramebufferRenderbuffer(sg::FRAMEBUFFER, sg::COLOR_ATTACHMENT0 + Enum(o), sg::RENDERBUFFER, rb);
+              bufs[o] = sg::COLOR_ATTACHMENT0 + Enum(o);
+            }
+            gl.DrawBuffers(n, bufs);
+            const std::uint32_t rb = gl.GenRenderbuffer();
+            gl.BindRenderbuffer(sg::RENDERBUFFER, rb);
+            gl.RenderbufferStorage(sg::RENDERBUFFER, depth, 1280, 720);
+            const bool stencil = depth == sg::DEPTH24_STENCIL8 || depth == sg::DEPTH32F_STENCIL8;
+            gl.FramebufferRenderbuffer(sg::FRAMEBUFFER, stencil ? sg::DEPTH_STENCIL_ATTACHMENT : sg::DEPTH_ATTACHMENT,
+                                       sg::RENDERBUFFER, rb);
+            if (srgb) gl.Enable(sg::FRAMEBUFFER_SRGB);
+            gl.Enable(sg::DEPTH_TEST);
+            if (blend) {
+              gl.Enable(sg::BLEND);
+              gl.BlendFunc(sg::SRC_ALPHA, sg::ONE_MINUS_SRC_ALPHA);
+            }
+            gl.UseProgram(shader);
+            return TimeSoftgl(frames, gl, frame);
+          }();
+          const double gl_ms = softgl_only ? 1.0 : with_osmesa(1280, 720, [&] {
+            gl_setup(quads);
+            GLuint fbo;
+            glGenFramebuffers(1, &fbo);
+            glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+            GLenum bufs[4];
+            for (int o = 0; o < n; ++o) {
+              GLuint rb;
+              glGenRenderbuffers(1, &rb);
+              glBindRenderbuffer(GL_RENDERBUFFER, rb);
+              glRenderbufferStorage(GL_RENDERBUFFER, GLenum(row.colour[std::size_t(o)]), 1280, 720);
+              glFramebufferRenderbuffer(GL_FRAMEBUFFER, GLenum(GL_COLOR_ATTACHMENT0 + o), GL_RENDERBUFFER, rb);
+              bufs[o] = GLenum(GL_COLOR_ATTACHMENT0 + o);
+            }
+            glDrawBuffers(n, bufs);
+            GLuint rb;
+            glGenRenderbuffers(1, &rb);
+            glBindRenderbuffer(GL_RENDERBUFFER, rb);
+            glRenderbufferStorage(GL_RENDERBUFFER, GLenum(depth), 1280, 720);
+            const bool stencil = depth == sg::DEPTH24_STENCIL8 || depth == sg::DEPTH32F_STENCIL8;
+            glFramebufferRenderbuffer(GL_FRAMEBUFFER, stencil ? GL_DEPTH_STENCIL_ATTACHMENT : GL_DEPTH_ATTACHMENT,
+                                      GL_RENDERBUFFER, rb);
+            if (srgb) glEnable(GL_FRAMEBUFFER_SRGB);
+            glEnable(GL_DEPTH_TEST);
+            if (blend) {
+              glEnable(GL_BLEND);
+              glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+            }
+            const std::string fs = FormatFs(n);
+            Program(kTexVs, fs.c_str());
+            return TimeGl(frames, frame);
+          });
+          PrintCell(softgl_only, sg_ms, gl_ms, first_ms);
+        }
+        std::printf("\n");
+      }
     return 0;
   }
 

@@ -133,12 +133,28 @@ Unorm8Blend::Unorm8Blend(const FragmentOpsState& state, bool rgb_only) {
                b.dst_rgb == ONE_MINUS_SRC_ALPHA && b.dst_alpha == ONE_MINUS_SRC_ALPHA;
 }
 
+namespace {
+ColourPath PathOf(const ColorBuffer& cb) {
+  if (!cb.Present()) return ColourPath::kNone;
+  if (IsUnorm8(cb.layout)) return cb.srgb ? ColourPath::kFloat : ColourPath::kUnorm8;
+  // Float, half, packed and 16-bit fixed point in vectors; R11F_G11F_B10F lane by lane.
+  return cb.layout == TexelLayout::kFloat11x11x10 ? ColourPath::kLanes : ColourPath::kFloat;
+}
+}  // namespace
+
 FragmentOpsPlan PlanFragmentOps(const FragmentOpsState& state, const RenderTarget& target) {
   FragmentOpsPlan plan;
   const Unorm8Blend rgba(state, false), rgb(state, true);  // the two kinds of buffer, made once
-  for (int o = 0; o < kMaxColorOutputs; ++o) plan.blend[o] = target.color[o].rgb_only ? rgb : rgba;
-  plan.wide_target = (!target.color[0].Present() || target.color[0].Rgba8()) && !target.color[1].Present() &&
-                     !target.color[2].Present() && !target.color[3].Present();
+  const bool any_color = state.color_mask[0] || state.color_mask[1] || state.color_mask[2] || state.color_mask[3];
+  for (int o = 0; o < kMaxColorOutputs; ++o) {
+    plan.blend[o] = target.color[o].rgb_only ? rgb : rgba;
+    plan.path[o] = any_color ? PathOf(target.color[o]) : ColourPath::kNone;
+    if (plan.path[o] != ColourPath::kNone) plan.buffers = o + 1;
+  }
+  plan.one_rgba8 = (!target.color[0].Present() || target.color[0].Rgba8()) && !target.color[1].Present() &&
+                   !target.color[2].Present() && !target.color[3].Present();
+  // The multisampled context framebuffer (samples side by side) has the vector path for RGBA8 only.
+  plan.wide_target = !target.interleaved || plan.one_rgba8;
   return plan;
 }
 
@@ -423,11 +439,349 @@ SOFTGL_WIDE typename V<W>::I Depth16Lanes(typename V<W>::F d) {
   return __builtin_convertvector((d * 65535.0f + 12582912.0f) - 12582912.0f, typename V<W>::I);
 }
 
+// Output o of block b's lane `lane` into colour buffer `cb` (present), through blending and the colour mask.
+void ColourLane(const FragmentOpsState& st, const Unorm8Blend& blend8, const BlockBuffer& bb, int b, int o, int lane,
+                const ColorBuffer& cb) {
+  const int x = bb.X(b, lane), y = bb.Y(b, lane);
+  glm::vec4 color(bb.Color(b, o, 0)[lane], bb.Color(b, o, 1)[lane], bb.Color(b, o, 2)[lane], bb.Color(b, o, 3)[lane]);
+  if (cb.srgb || IsWideFixedPoint(cb.layout)) {
+    // An sRGB buffer under FRAMEBUFFER_SRGB, or a fixed-point one of other than 8 bits (RGB565, RGBA4, RGB5_A1,
+    // RGB10_A2, RGBA16, RG16, R16): the colour clamped as for any fixed-point buffer, blended in float with the
+    // stored colour (decoded to linear for sRGB; the constant colour clamped), converted again on store.
+    color = glm::clamp(color, 0.0f, 1.0f);
+    for (int c = 0; c < 4; ++c)
+      if (std::isnan(color[c])) color[c] = 0.0f;
+    if (st.blend.enabled) {
+      BlendState linear = st.blend;
+      linear.color = glm::clamp(linear.color, 0.0f, 1.0f);
+      color = Blend(linear, color, cb.Load(x, y));
+    }
+    cb.Store(x, y, color, st.color_mask);
+    return;
+  }
+  if (cb.Normalized()) {
+    // 8-bit channels: the exact integer blend on the pixel's bytes (channels the format lacks read 0 or 1).
+    std::uint8_t* p = cb.At(x, y);
+    const int n = cb.Bytes();
+    std::uint8_t d[4] = {0, 0, 0, 255}, out[4];
+    for (int c = 0; c < n; ++c) d[c] = p[c];
+    if (cb.rgb_only) d[3] = 255;
+    Blend8(blend8, color, d, out);
+    const int channels = cb.layout == TexelLayout::kUnorm8x4 ? (cb.rgb_only ? 3 : 4) : n;
+    for (int c = 0; c < channels; ++c)
+      if (!((blend8.keep >> (8 * c)) & 0xFFu)) p[c] = out[c];
+    return;
+  }
+  for (int c = 0; c < 4; ++c)
+    if (std::isnan(color[c])) color[c] = 0.0f;
+  if (st.blend.enabled) color = Blend(st.blend, color, cb.Load(x, y));
+  cb.Store(x, y, color, st.color_mask);
+}
+
+// ---- Colour buffers, W lanes at a time ----
+
+// W texels of a colour buffer: block lanes l0 .. l0 + W - 1 at their quads' places in the buffer (or sample plane)
+// starting at `base`; `live` the block's live lanes (quads without one are not written back).
+template <int W>
+struct TexelQuads {
+  std::uint8_t* base;
+  const QuadPlaces& at;
+  std::uint32_t live;
+  int l0;
+  template <class T, class Vec>
+  SOFTGL_WIDE Vec Load() const { return LoadQuads<T, W, Vec>(reinterpret_cast<const T*>(base), at, l0); }
+  template <class T, class Vec>
+  SOFTGL_WIDE void Store(const Vec& v) const { StoreQuads<T, W>(reinterpret_cast<T*>(base), at, live, l0, v); }
+};
+
+// The exact 8-bit blend (Blend8Lanes) into an RGBA8, RGB8, RG8 or R8 buffer, the lanes of `go`: the stored bytes
+// widened to RGBA words (channels the format lacks 0, alpha 255), blended, the format's bytes stored.
+template <int W>
+SOFTGL_WIDE void Unorm8Lanes(const Unorm8Blend& blend, const ColorBuffer& cb, const TexelQuads<W>& at,
+                             const typename V<W>::F color[4], typename V<W>::I go) {
+  using U = typename V<W>::U;
+  switch (cb.layout) {
+    case TexelLayout::kUnorm8x4: {
+      const U pixels = at.template Load<std::uint32_t, U>();
+      U result;
+      if (cb.rgb_only) {  // alpha reads 1 and is not stored
+        result = Blend8Lanes<W>(blend, color, pixels | 0xFF000000u);
+        result = (result & 0x00FFFFFFu) | (pixels & 0xFF000000u);
+      } else {
+        result = Blend8Lanes<W>(blend, color, pixels);
+      }
+      at.template Store<std::uint32_t>(go ? result : pixels);
+      return;
+    }
+    case TexelLayout::kUnorm8x2: {
+      const U pixels = __builtin_convertvector((at.template Load<std::uint16_t, typename V<W>::S>()), U);
+      const U result = Blend8Lanes<W>(blend, color, pixels | 0xFF000000u);
+      at.template Store<std::uint16_t>(__builtin_convertvector(go ? result & 0xFFFFu : pixels, typename V<W>::S));
+      return;
+    }
+    default: {  // kUnorm8x1
+      const U pixels = __builtin_convertvector((at.template Load<std::uint8_t, typename V<W>::B>()), U);
+      const U result = Blend8Lanes<W>(blend, color, pixels | 0xFF000000u);
+      at.template Store<std::uint8_t>(__builtin_convertvector(go ? result & 0xFFu : pixels, typename V<W>::B));
+      return;
+    }
+  }
+}
+
+// Blend for W lanes: the same factors and equations in the same order.
+template <int W>
+SOFTGL_WIDE void BlendFloatLanes(const BlendState& st, const glm::vec4& k, const typename V<W>::F s[4],
+                                 const typename V<W>::F d[4], typename V<W>::F out[4]) {
+  using F = typename V<W>::F;
+  auto factor = [&](Enum f, int c) SOFTGL_WIDE_LAMBDA -> F {
+    switch (f) {
+      case ZERO: return F{};
+      case ONE: return F{} + 1.0f;
+      case SRC_COLOR: return s[c];
+      case ONE_MINUS_SRC_COLOR: return 1.0f - s[c];
+      case DST_COLOR: return d[c];
+      case ONE_MINUS_DST_COLOR: return 1.0f - d[c];
+      case SRC_ALPHA: return s[3];
+      case ONE_MINUS_SRC_ALPHA: return 1.0f - s[3];
+      case DST_ALPHA: return d[3];
+      case ONE_MINUS_DST_ALPHA: return 1.0f - d[3];
+      case CONSTANT_COLOR: return F{} + k[c];
+      case ONE_MINUS_CONSTANT_COLOR: return F{} + (1.0f - k[c]);
+      case CONSTANT_ALPHA: return F{} + k[3];
+      case ONE_MINUS_CONSTANT_ALPHA: return F{} + (1.0f - k[3]);
+      case SRC_ALPHA_SATURATE: {
+        if (c == 3) return F{} + 1.0f;
+        const F one_minus = 1.0f - d[3];
+        return one_minus < s[3] ? one_minus : s[3];  // std::min(s.a, 1 - d.a)
+      }
+      default: return F{};
+    }
+  };
+  for (int c = 0; c < 4; ++c) {
+    const Enum eq = c == 3 ? st.eq_alpha : st.eq_rgb;
+    switch (eq) {
+      case MIN: out[c] = d[c] < s[c] ? d[c] : s[c]; break;  // std::min(s, d)
+      case MAX: out[c] = s[c] < d[c] ? d[c] : s[c]; break;  // std::max(s, d)
+      default: {
+        const F sf = factor(c == 3 ? st.src_alpha : st.src_rgb, c);
+        const F df = factor(c == 3 ? st.dst_alpha : st.dst_rgb, c);
+        out[c] = eq == FUNC_SUBTRACT ? s[c] * sf - d[c] * df
+                 : eq == FUNC_REVERSE_SUBTRACT ? d[c] * df - s[c] * sf
+                                               : s[c] * sf + d[c] * df;
+      }
+    }
+  }
+}
+
+// SrgbEncode8 for W lanes, by the bucket tables (SrgbLaneTables).
+template <int W>
+SOFTGL_WIDE typename V<W>::I SrgbEncodeLanes(typename V<W>::F x) {
+  using I = typename V<W>::I;
+  using F = typename V<W>::F;
+  const SrgbLaneTables& t = SrgbLanes();
+  I bits;
+  std::memcpy(&bits, &x, sizeof bits);
+  I i = (bits >> 16) - SrgbLaneTables::kBucket0;
+  i = i > 0 ? i : I{};
+  i = i < SrgbLaneTables::kBuckets - 1 ? i : I{} + (SrgbLaneTables::kBuckets - 1);
+  I k;
+  for (int l = 0; l < W; ++l) k[l] = t.start[i[l]];
+  F up;
+  for (int l = 0; l < W; ++l) up[l] = t.up[k[l]];
+  k -= x >= up;  // (a comparison is -1 where it holds)
+  k = x > 0.0f ? k : I{};  // NaN too
+  return x >= 1.0f ? I{} + 255 : k;
+}
+
+// FloatToUnorm8 for W lanes: clamped to [0, 1] (NaN as 0), round(f * 255) to nearest even.
+template <int W>
+SOFTGL_WIDE typename V<W>::I Unorm8OfLanes(typename V<W>::F x) {
+  using F = typename V<W>::F;
+  x = x > 0.0f ? x : F{};
+  x = x < 1.0f ? x : F{} + 1.0f;
+  return __builtin_convertvector((x * 255.0f + 12582912.0f) - 12582912.0f, typename V<W>::I);
+}
+
+// The buffers blended in float (ColourPath::kFloat), the lanes of `go`: each texel decoded to RGBA floats (the
+// channels the layout lacks (0, 0, 0, 1)), the fragment colour clamped for a fixed-point buffer (NaN as 0 either
+// way), blended, the colour mask applied, encoded again; as ColourLane does it lane by lane. `keep` is the
+// 8-bit buffers' mask of kept bytes (the sRGB buffer's).
+template <int W, TexelLayout L, bool kSrgb>
+SOFTGL_WIDE void FloatLanesOf(const FragmentOpsState& st, std::uint32_t keep, bool rgb_only, const TexelQuads<W>& at,
+                              const typename V<W>::F color[4], typename V<W>::I go) {
+  using F = typename V<W>::F;
+  using U = typename V<W>::U;
+  using D = typename V<W>::D;
+  constexpr bool kFixed = kSrgb || IsWideFixedPoint(L);
+  constexpr bool kPacked = IsPackedUnorm(L), kUnorm16 = IsUnorm16(L);
+  constexpr int kBytes = BytesPerTexel(L);
+  auto as_f = [](U u) SOFTGL_WIDE_LAMBDA {
+    F f;
+    std::memcpy(&f, &u, sizeof f);
+    return f;
+  };
+  auto as_u = [](F f) SOFTGL_WIDE_LAMBDA {
+    U u;
+    std::memcpy(&u, &f, sizeof u);
+    return u;
+  };
+  // The stored texels, decoded.
+  F d[4] = {F{}, F{}, F{}, F{} + 1.0f};
+  U word{};
+  D dword{};
+  glm::vec4 quad_texels[W];  // kFloat32x4: the texels as they are stored
+  if constexpr (L == TexelLayout::kFloat32x4) {
+    for (int q = 0; q < W / 4; ++q) {
+      const auto* p = reinterpret_cast<const glm::vec4*>(at.base) + at.at.at[at.l0 / 4 + q];
+      std::memcpy(&quad_texels[4 * q], p, 2 * sizeof(glm::vec4));
+      std::memcpy(&quad_texels[4 * q + 2], p + at.at.pitch, 2 * sizeof(glm::vec4));
+    }
+    LoadComponents<W>(quad_texels, d);
+  } else if constexpr (kBytes == 8) {
+    dword = at.template Load<std::uint64_t, D>();
+    if constexpr (L == TexelLayout::kFloat32x2) {
+      d[0] = as_f(__builtin_convertvector(dword & 0xFFFFFFFFu, U));
+      d[1] = as_f(__builtin_convertvector(dword >> 32, U));
+    } else {
+      for (int c = 0; c < 4; ++c) {
+        const U k = __builtin_convertvector((dword >> (16 * c)) & 0xFFFFu, U);
+        d[c] = kUnorm16 ? __builtin_convertvector(k, F) / 65535.0f : HalfLanes<W>(k);
+      }
+    }
+  } else if constexpr (kBytes == 2) {
+    word = __builtin_convertvector((at.template Load<std::uint16_t, typename V<W>::S>()), U);
+    if constexpr (L == TexelLayout::kFloat16x1) d[0] = HalfLanes<W>(word);
+    else if constexpr (kUnorm16) d[0] = __builtin_convertvector(word, F) / 65535.0f;
+  } else {
+    word = at.template Load<std::uint32_t, U>();
+    if constexpr (L == TexelLayout::kFloat32x1) {
+      d[0] = as_f(word);
+    } else if constexpr (L == TexelLayout::kFloat16x2) {
+      d[0] = HalfLanes<W>(word & 0xFFFFu);
+      d[1] = HalfLanes<W>(word >> 16);
+    } else if constexpr (L == TexelLayout::kUnorm16x2) {
+      d[0] = __builtin_convertvector(word & 0xFFFFu, F) / 65535.0f;
+      d[1] = __builtin_convertvector(word >> 16, F) / 65535.0f;
+    } else if constexpr (kPacked) {
+    } else {  // sRGB8_ALPHA8, SRGB8
+      const SrgbLaneTables& t = SrgbLanes();
+      for (int c = 0; c < 3; ++c)
+        for (int l = 0; l < W; ++l) d[c][l] = t.decode[(word[l] >> (8 * c)) & 0xFFu];
+      d[3] = rgb_only ? F{} + 1.0f : __builtin_convertvector(word >> 24, F) / 255.0f;
+    }
+  }
+  if constexpr (kPacked) {
+    constexpr PackedUnorm kPacking = PackingOf(L);
+    for (int c = 0; c < 4; ++c)
+      if (kPacking.bits[c]) {
+        const float max = float((1u << kPacking.bits[c]) - 1u);
+        d[c] = __builtin_convertvector((word >> kPacking.shift[c]) & ((1u << kPacking.bits[c]) - 1u), F) / max;
+      }
+  }
+  // The fragment colour, blended.
+  F r[4];
+  for (int c = 0; c < 4; ++c) {
+    F x = color[c];
+    if constexpr (kFixed) {
+      x = x > 0.0f ? x : F{};  // (NaN as 0)
+      x = x < 1.0f ? x : F{} + 1.0f;
+    } else {
+      x = x == x ? x : F{};
+    }
+    r[c] = x;
+  }
+  if (st.blend.enabled) {
+    const glm::vec4 k = kFixed ? glm::clamp(st.blend.color, 0.0f, 1.0f) : st.blend.color;
+    const F s[4] = {r[0], r[1], r[2], r[3]};
+    BlendFloatLanes<W>(st.blend, k, s, d, r);
+  }
+  // Encoded, through the colour mask.
+  if constexpr (kSrgb) {
+    U out = U(Unorm8OfLanes<W>(r[3])) << 24;
+    for (int c = 0; c < 3; ++c) out |= U(SrgbEncodeLanes<W>(r[c])) << (8 * c);
+    out = (word & keep) | (out & ~keep);
+    at.template Store<std::uint32_t>(go ? out : word);
+    return;
+  }
+  for (int c = 0; c < 4; ++c)
+    if (!st.color_mask[c]) r[c] = d[c];
+  // A fixed-point channel: clamped to [0, 1] (NaN as 0), round(c * max) to nearest even.
+  auto fixed = [](F x, float max) SOFTGL_WIDE_LAMBDA {
+    x = x > 0.0f ? x : F{};
+    x = x < 1.0f ? x : F{} + 1.0f;
+    return __builtin_convertvector((x * max + 12582912.0f) - 12582912.0f, U);
+  };
+  if constexpr (kPacked) {
+    constexpr PackedUnorm kPacking = PackingOf(L);
+    U out{};
+    for (int c = 0; c < 4; ++c)
+      if (kPacking.bits[c]) out |= fixed(r[c], float((1u << kPacking.bits[c]) - 1u)) << kPacking.shift[c];
+    if constexpr (kBytes == 4) at.template Store<std::uint32_t>(go ? out : word);
+    else at.template Store<std::uint16_t>(__builtin_convertvector(go ? out : word, typename V<W>::S));
+  } else if constexpr (L == TexelLayout::kUnorm16x4) {
+    D out{};
+    for (int c = 0; c < 4; ++c) out |= __builtin_convertvector(fixed(r[c], 65535.0f), D) << (16 * c);
+    at.template Store<std::uint64_t>(__builtin_convertvector(go, D) != 0 ? out : dword);
+  } else if constexpr (L == TexelLayout::kUnorm16x2) {
+    const U out = fixed(r[0], 65535.0f) | (fixed(r[1], 65535.0f) << 16);
+    at.template Store<std::uint32_t>(go ? out : word);
+  } else if constexpr (L == TexelLayout::kUnorm16x1) {
+    at.template Store<std::uint16_t>(__builtin_convertvector(go ? fixed(r[0], 65535.0f) : word, typename V<W>::S));
+  } else if constexpr (L == TexelLayout::kFloat32x4) {
+    for (int c = 0; c < 4; ++c) r[c] = go ? r[c] : d[c];
+    for (int q = 0; q < W / 4; ++q) {
+      if (!((at.live >> (at.l0 + 4 * q)) & 0xFu)) continue;
+      glm::vec4 texels[4];
+      for (int i = 0; i < 4; ++i) texels[i] = glm::vec4(r[0][4 * q + i], r[1][4 * q + i], r[2][4 * q + i], r[3][4 * q + i]);
+      auto* p = reinterpret_cast<glm::vec4*>(at.base) + at.at.at[at.l0 / 4 + q];
+      std::memcpy(p, &texels[0], 2 * sizeof(glm::vec4));
+      std::memcpy(p + at.at.pitch, &texels[2], 2 * sizeof(glm::vec4));
+    }
+  } else if constexpr (L == TexelLayout::kFloat32x2) {
+    const D out = __builtin_convertvector(as_u(r[0]), D) | (__builtin_convertvector(as_u(r[1]), D) << 32);
+    at.template Store<std::uint64_t>(__builtin_convertvector(go, D) != 0 ? out : dword);
+  } else if constexpr (L == TexelLayout::kFloat16x4) {
+    D out{};
+    for (int c = 0; c < 4; ++c) out |= __builtin_convertvector(HalfBitsLanes<W>(r[c]), D) << (16 * c);
+    at.template Store<std::uint64_t>(__builtin_convertvector(go, D) != 0 ? out : dword);
+  } else if constexpr (L == TexelLayout::kFloat16x2) {
+    const U out = HalfBitsLanes<W>(r[0]) | (HalfBitsLanes<W>(r[1]) << 16);
+    at.template Store<std::uint32_t>(go ? out : word);
+  } else if constexpr (L == TexelLayout::kFloat16x1) {
+    const U out = HalfBitsLanes<W>(r[0]);
+    at.template Store<std::uint16_t>(__builtin_convertvector(go ? out : word, typename V<W>::S));
+  } else {  // kFloat32x1
+    at.template Store<std::uint32_t>(go ? as_u(r[0]) : word);
+  }
+}
+template <int W>
+SOFTGL_WIDE void FloatLanes(const FragmentOpsState& st, std::uint32_t keep, const ColorBuffer& cb,
+                            const TexelQuads<W>& at, const typename V<W>::F color[4], typename V<W>::I go) {
+  switch (cb.layout) {
+    case TexelLayout::kFloat32x4: return FloatLanesOf<W, TexelLayout::kFloat32x4, false>(st, keep, cb.rgb_only, at, color, go);
+    case TexelLayout::kFloat32x2: return FloatLanesOf<W, TexelLayout::kFloat32x2, false>(st, keep, cb.rgb_only, at, color, go);
+    case TexelLayout::kFloat32x1: return FloatLanesOf<W, TexelLayout::kFloat32x1, false>(st, keep, cb.rgb_only, at, color, go);
+    case TexelLayout::kFloat16x4: return FloatLanesOf<W, TexelLayout::kFloat16x4, false>(st, keep, cb.rgb_only, at, color, go);
+    case TexelLayout::kFloat16x2: return FloatLanesOf<W, TexelLayout::kFloat16x2, false>(st, keep, cb.rgb_only, at, color, go);
+    case TexelLayout::kFloat16x1: return FloatLanesOf<W, TexelLayout::kFloat16x1, false>(st, keep, cb.rgb_only, at, color, go);
+    case TexelLayout::kUnorm565: return FloatLanesOf<W, TexelLayout::kUnorm565, false>(st, keep, cb.rgb_only, at, color, go);
+    case TexelLayout::kUnorm4444: return FloatLanesOf<W, TexelLayout::kUnorm4444, false>(st, keep, cb.rgb_only, at, color, go);
+    case TexelLayout::kUnorm5551: return FloatLanesOf<W, TexelLayout::kUnorm5551, false>(st, keep, cb.rgb_only, at, color, go);
+    case TexelLayout::kUnorm1010102:
+      return FloatLanesOf<W, TexelLayout::kUnorm1010102, false>(st, keep, cb.rgb_only, at, color, go);
+    case TexelLayout::kUnorm16x4: return FloatLanesOf<W, TexelLayout::kUnorm16x4, false>(st, keep, cb.rgb_only, at, color, go);
+    case TexelLayout::kUnorm16x2: return FloatLanesOf<W, TexelLayout::kUnorm16x2, false>(st, keep, cb.rgb_only, at, color, go);
+    case TexelLayout::kUnorm16x1: return FloatLanesOf<W, TexelLayout::kUnorm16x1, false>(st, keep, cb.rgb_only, at, color, go);
+    default: return FloatLanesOf<W, TexelLayout::kUnorm8x4, true>(st, keep, cb.rgb_only, at, color, go);  // sRGB
+  }
+}
+
 // What a batch's blocks share.
 struct BlockOpsContext {
   const FragmentOpsState* state;
   const BlockBuffer* blocks;
   const RenderTarget* target;
+  const FragmentOpsPlan* plan;
   const Unorm8Blend* blend;  // for color[0] when it is RGBA8
   bool shader_depth;
   bool stencil_test, depth_test, any_color;
@@ -459,7 +813,6 @@ template <int W, class Io, Enum kDepthFunc = 0, bool kPlain = false>
 SOFTGL_WIDE void VectorOps(const BlockOpsContext& ctx, typename V<W>::I go, const Io& io) {
   using F = typename V<W>::F;
   using I = typename V<W>::I;
-  using U = typename V<W>::U;
   const RenderTarget& t = *ctx.target;
   const FragmentOpsState& st = *ctx.state;
   const bool stencil_test = !kPlain && ctx.stencil_test, depth_test = kPlain || ctx.depth_test;
@@ -500,23 +853,25 @@ SOFTGL_WIDE void VectorOps(const BlockOpsContext& ctx, typename V<W>::I go, cons
   }
   if (stencil_test) io.SetStencil(__builtin_convertvector(sten, typename V<W>::B));
   if (passed) *passed += std::uint64_t(__builtin_popcount(MaskToBits<W>(go, 0)));
-  if (!colour) return;
-  const U pixels = io.Pixels();
-  io.SetPixels(go ? io.Result(pixels) : pixels);
+  if (colour) io.WriteColour(go);
 }
 
 // VectorOps' access to sample plane s (kSamples; else the single-sampled target) of block b's lanes l0 .. l0 + W - 1.
-template <int W, bool kSamples>
+// kOne: colour buffer 0 RGBA8 (or none) and no other (FragmentOpsPlan::one_rgba8), the colour given (`color`,
+// and without blending its bytes, `packed`).
+template <int W, bool kSamples, bool kOne>
 struct PlaneIo {
   using F = typename V<W>::F;
   using U = typename V<W>::U;
   const BlockOpsContext& ctx;
   const RenderTarget& t;
-  const QuadPlaces &depth_at, &stencil_at, &colour_at;
+  const QuadPlaces &depth_at, &stencil_at;
+  const QuadPlaces* colour_at;  // each colour buffer's
   int b, s, l0;
-  const F* color;  // the lanes' colour channels
-  U packed;        // without blending: the colour's bytes
+  int buffers;  // colour buffers 0 .. buffers - 1 may be written (plan->path)
   bool colour;
+  const F* color;  // kOne: the lanes' colour channels
+  U packed;        // kOne, without blending: the colour's bytes
   SOFTGL_WIDE std::uint32_t live() const { return ctx.blocks->live[b]; }
   SOFTGL_WIDE std::size_t Plane(std::size_t plane) const { return kSamples ? plane * std::size_t(s) : 0; }
   SOFTGL_WIDE typename V<W>::B Stencil() const {
@@ -533,48 +888,84 @@ struct PlaneIo {
   SOFTGL_WIDE void SetDepth16(typename V<W>::S v) const {
     StoreQuads<std::uint16_t, W>(t.depth16 + Plane(t.depth_plane), depth_at, live(), l0, v);
   }
-  SOFTGL_WIDE std::uint32_t* PixelsAt() const { return reinterpret_cast<std::uint32_t*>(t.color[0].data) + Plane(t.color[0].plane); }
-  SOFTGL_WIDE U Pixels() const { return LoadQuads<std::uint32_t, W, U>(PixelsAt(), colour_at, l0); }
-  SOFTGL_WIDE void SetPixels(U v) const { StoreQuads<std::uint32_t, W>(PixelsAt(), colour_at, live(), l0, v); }
   SOFTGL_WIDE F Z() const {
     const BlockBuffer& bb = *ctx.blocks;
     if (ctx.shader_depth) return LoadVec<F>(bb.Depth(b) + l0);
     if constexpr (kSamples) return LoadVec<F>(ctx.depths->z[b][s] + l0);
     return LoadVec<F>(bb.frag_coord[b][2] + l0);
   }
-  SOFTGL_WIDE U Result(U dst) const { return ctx.blend->blend ? Blend8Lanes<W>(*ctx.blend, color, dst) : (dst & ctx.blend->keep) | packed; }
+  // Each colour buffer by its path, the lanes of `go`.
+  SOFTGL_WIDE void WriteColour(typename V<W>::I go) const {
+    const BlockBuffer& bb = *ctx.blocks;
+    if constexpr (kOne) {
+      auto* pixels = reinterpret_cast<std::uint32_t*>(t.color[0].data) + Plane(t.color[0].plane);
+      const U dst = LoadQuads<std::uint32_t, W, U>(pixels, colour_at[0], l0);
+      const U result = ctx.blend->blend ? Blend8Lanes<W>(*ctx.blend, color, dst) : (dst & ctx.blend->keep) | packed;
+      StoreQuads<std::uint32_t, W>(pixels, colour_at[0], live(), l0, go ? result : dst);
+      return;
+    }
+    for (int o = 0; o < buffers; ++o) {
+      const ColourPath path = ctx.plan->path[o];
+      if (path == ColourPath::kNone) continue;
+      const ColorBuffer& cb = t.color[o];
+      std::uint8_t* base = cb.data + Plane(cb.plane) * std::size_t(cb.Bytes());
+      if (path == ColourPath::kLanes) {
+        ColorBuffer plane = cb;
+        plane.data = base;
+        for (std::uint32_t bits = MaskToBits<W>(go, l0); bits; bits &= bits - 1) {
+          const int lane = __builtin_ctz(bits);
+          ColourLane(*ctx.state, ctx.plan->blend[o], bb, b, o, lane, plane);
+        }
+        continue;
+      }
+      F color[4];
+      for (int c = 0; c < 4; ++c) color[c] = LoadVec<F>(bb.Color(b, o, c) + l0);
+      const TexelQuads<W> at{base, colour_at[o], live(), l0};
+      if (path == ColourPath::kUnorm8) Unorm8Lanes<W>(ctx.plan->blend[o], cb, at, color, go);
+      else FloatLanes<W>(*ctx.state, ctx.plan->blend[o].keep, cb, at, color, go);
+    }
+  }
 };
 
-// The per-fragment operations on block b (inside the target, colour buffer 0 RGBA8 or none, no other colour
-// buffer), W lanes at a time, on every sample plane the lanes cover (kSamples: ctx.depths given); the colour
-// converted to bytes once.
-template <int W, bool kSamples>
+// The per-fragment operations on block b (inside the target), W lanes at a time, on every sample plane the lanes
+// cover (kSamples: ctx.depths given). kOne (one RGBA8 buffer or none): the colour converted to bytes once for all
+// the planes.
+template <int W, bool kSamples, bool kOne>
 SOFTGL_WIDE void BlockOps(const BlockOpsContext& ctx, int b) {
   using F = typename V<W>::F;
   using U = typename V<W>::U;
   const BlockBuffer& bb = *ctx.blocks;
   const RenderTarget& t = *ctx.target;
-  const bool colour = ctx.any_color && t.color[0].Present();
+  const int buffers = ctx.any_color ? ctx.plan->buffers : 0;
   constexpr std::uint32_t kChunk = (1u << W) - 1u;
   const std::uint32_t live = bb.live[b];
   const QuadPlaces depth_at(bb, b, t.depth_pitch);
   const QuadPlaces stencil_at = t.stencil_pitch == t.depth_pitch ? depth_at : QuadPlaces(bb, b, t.stencil_pitch);
-  const QuadPlaces colour_at = t.color[0].pitch == t.depth_pitch ? depth_at : QuadPlaces(bb, b, t.color[0].pitch);
+  QuadPlaces colour_at[kMaxColorOutputs] = {depth_at, depth_at, depth_at, depth_at};
+  for (int o = 0; o < buffers; ++o)
+    if (t.color[o].pitch != t.depth_pitch) colour_at[o] = QuadPlaces(bb, b, t.color[o].pitch);
   for (int l0 = 0; l0 < kLanes; l0 += W) {
     if (!((live >> l0) & kChunk)) continue;
-    F color[4] = {};  // (read only where `colour` holds)
-    U packed{};  // without blending: the colour's bytes through the colour mask
-    if (colour) {
+    F color[4] = {};  // kOne (read only where `colour` holds)
+    U packed{};       // kOne, without blending: the colour's bytes through the colour mask
+    if (kOne && buffers > 0) {
       for (int c = 0; c < 4; ++c) color[c] = LoadVec<F>(bb.Color(b, 0, c) + l0);
       if (!ctx.blend->blend) packed = Blend8Lanes<W>(*ctx.blend, color, U{});
     }
     for (int s = 0; s < (kSamples ? ctx.samples : 1); ++s) {
       const std::uint32_t lanes = kSamples ? live & bb.sample_live[b][s] : live;
       if (!((lanes >> l0) & kChunk)) continue;
-      const PlaneIo<W, kSamples> io{ctx, t, depth_at, stencil_at, colour_at, b, s, l0, color, packed, colour};
+      const PlaneIo<W, kSamples, kOne> io{ctx, t, depth_at, stencil_at, colour_at, b, s, l0, buffers, buffers > 0,
+                                          color, packed};
       VectorOps<W>(ctx, BitsToMask<W>(lanes, l0), io);
     }
   }
+}
+// BlockOps with kOne chosen from the plan.
+template <int W, bool kSamples>
+SOFTGL_WIDE void BlockOpsEither(const BlockOpsContext& ctx, int b) {
+  if (ctx.plan->one_rgba8) BlockOps<W, kSamples, true>(ctx, b);
+  else BlockOps<W, kSamples, false>(ctx, b);
 }
 
 // ---- Samples side by side ----
@@ -785,6 +1176,10 @@ struct ElementIo {
     for (int c = 0; c < 4; ++c) color[c] = Spread<W, S, F>(ctx.blocks->Color(b, 0, c) + L0());
     return Blend8Lanes<W>(*ctx.blend, color, dst);
   }
+  SOFTGL_WIDE void WriteColour(typename V<W>::I go) const {
+    const U dst = Pixels();
+    SetPixels(go ? Result(dst) : dst);
+  }
 };
 
 // BlockOps into an interleaved target of S samples, W elements at a time (kDepthFunc, kPlain: VectorOps').
@@ -875,7 +1270,8 @@ void LaneOps(const BlockOpsContext& ctx, const Unorm8Blend* per_buffer, int b, c
       const float depth = z_lanes[lane * z_stride];
       // Depth is clamped to [0, 1] before the test (the depth buffer holds [0, 1]), and converted to a 16-bit
       // buffer's fixed point; NaN fails.
-      const float z = std::isnan(depth) ? depth : t.StoredDepth(std::clamp(depth, 0.0f, 1.0f));
+      // (-0 clamps to +0, as in the vector path.)
+      const float z = std::isnan(depth) ? depth : t.StoredDepth(depth > 0.0f ? std::min(depth, 1.0f) : 0.0f);
       if (std::isnan(depth) || !DepthTest(st.depth_func, z, t.DepthAt(x, y))) {
         if (ctx.stencil_test) t.Stencil(x, y) = StencilUpdate(face, face.dpfail, t.Stencil(x, y));
         continue;
@@ -885,70 +1281,38 @@ void LaneOps(const BlockOpsContext& ctx, const Unorm8Blend* per_buffer, int b, c
     if (ctx.stencil_test) t.Stencil(x, y) = StencilUpdate(face, face.dppass, t.Stencil(x, y));
     if (ctx.passed) ++*ctx.passed;
     if (!ctx.any_color) continue;
-    for (int o = 0; o < kMaxColorOutputs; ++o) {
-      const ColorBuffer& cb = t.color[o];
-      if (!cb.Present()) continue;
-      glm::vec4 color(bb.Color(b, o, 0)[lane], bb.Color(b, o, 1)[lane], bb.Color(b, o, 2)[lane],
-                      bb.Color(b, o, 3)[lane]);
-      if (cb.srgb || IsWideFixedPoint(cb.layout)) {
-        // An sRGB buffer under FRAMEBUFFER_SRGB, or a fixed-point one of other than 8 bits (RGB565, RGBA4, RGB5_A1,
-        // RGB10_A2, RGBA16, RG16, R16): the colour clamped as for
-        // any fixed-point buffer, blended in float with the stored colour (decoded to linear for sRGB; the constant
-        // colour clamped), converted again on store.
-        color = glm::clamp(color, 0.0f, 1.0f);
-        for (int c = 0; c < 4; ++c)
-          if (std::isnan(color[c])) color[c] = 0.0f;
-        if (st.blend.enabled) {
-          BlendState linear = st.blend;
-          linear.color = glm::clamp(linear.color, 0.0f, 1.0f);
-          color = Blend(linear, color, cb.Load(x, y));
-        }
-        cb.Store(x, y, color, st.color_mask);
-        continue;
-      }
-      if (cb.Normalized()) {
-        // 8-bit channels: the exact integer blend on the pixel's bytes (channels the format lacks read 0 or 1).
-        std::uint8_t* p = cb.At(x, y);
-        const int n = cb.Bytes();
-        std::uint8_t d[4] = {0, 0, 0, 255}, out[4];
-        for (int c = 0; c < n; ++c) d[c] = p[c];
-        if (cb.rgb_only) d[3] = 255;
-        Blend8(per_buffer[o], color, d, out);
-        const int channels = cb.layout == TexelLayout::kUnorm8x4 ? (cb.rgb_only ? 3 : 4) : n;
-        for (int c = 0; c < channels; ++c)
-          if (!((per_buffer[o].keep >> (8 * c)) & 0xFFu)) p[c] = out[c];
-        continue;
-      }
-      for (int c = 0; c < 4; ++c)
-        if (std::isnan(color[c])) color[c] = 0.0f;
-      if (st.blend.enabled) color = Blend(st.blend, color, cb.Load(x, y));
-      cb.Store(x, y, color, st.color_mask);
-    }
+    for (int o = 0; o < kMaxColorOutputs; ++o)
+      if (t.color[o].Present()) ColourLane(st, per_buffer[o], bb, b, o, lane, t.color[o]);
   }
 }
 
 using BlockOpsFn = void (*)(const BlockOpsContext&, int);
 template <bool kSamples>
-void BlockOpsBase(const BlockOpsContext& ctx, int b) { BlockOps<4, kSamples>(ctx, b); }
+void BlockOpsBase(const BlockOpsContext& ctx, int b) { BlockOpsEither<4, kSamples>(ctx, b); }
 using BlockRangeOpsFn = void (*)(const BlockOpsContext&, int, int);
 // BlockOps<W, false> on blocks b0 to b1 - 1 (those with live lanes), into a single-sampled target.
 template <int W>
 SOFTGL_WIDE void BlockOpsRange(const BlockOpsContext& ctx, int b0, int b1) {
-  for (int b = b0; b < b1; ++b)
-    if (ctx.blocks->live[b]) BlockOps<W, false>(ctx, b);
+  if (ctx.plan->one_rgba8) {
+    for (int b = b0; b < b1; ++b)
+      if (ctx.blocks->live[b]) BlockOps<W, false, true>(ctx, b);
+  } else {
+    for (int b = b0; b < b1; ++b)
+      if (ctx.blocks->live[b]) BlockOps<W, false, false>(ctx, b);
+  }
 }
 void BlockOpsSingleBase(const BlockOpsContext& ctx, int b0, int b1) { BlockOpsRange<4>(ctx, b0, b1); }
 void BlockOpsInterleavedBase(const BlockOpsContext& ctx, int b0, int b1) { BlockOpsInterleavedAny<4>(ctx, b0, b1); }
 #if defined(SOFTGL_HAS_DISPATCH)
 template <bool kSamples>
-SOFTGL_TARGET_AVX2 void BlockOpsAvx2(const BlockOpsContext& ctx, int b) { BlockOps<8, kSamples>(ctx, b); }
+SOFTGL_TARGET_AVX2 void BlockOpsAvx2(const BlockOpsContext& ctx, int b) { BlockOpsEither<8, kSamples>(ctx, b); }
 SOFTGL_TARGET_AVX2 void BlockOpsSingleAvx2(const BlockOpsContext& ctx, int b0, int b1) { BlockOpsRange<8>(ctx, b0, b1); }
 SOFTGL_TARGET_AVX2 void BlockOpsInterleavedAvx2(const BlockOpsContext& ctx, int b0, int b1) {
   BlockOpsInterleavedAny<8>(ctx, b0, b1);
 }
 // 8 lanes on AVX-512 too: GCC 12 compiles this unit's 16-lane comparisons lane by lane (see simd.h).
 template <bool kSamples>
-SOFTGL_TARGET_AVX512 void BlockOpsAvx512(const BlockOpsContext& ctx, int b) { BlockOps<8, kSamples>(ctx, b); }
+SOFTGL_TARGET_AVX512 void BlockOpsAvx512(const BlockOpsContext& ctx, int b) { BlockOpsEither<8, kSamples>(ctx, b); }
 SOFTGL_TARGET_AVX512 void BlockOpsSingleAvx512(const BlockOpsContext& ctx, int b0, int b1) { BlockOpsRange<8>(ctx, b0, b1); }
 SOFTGL_TARGET_AVX512 void BlockOpsInterleavedAvx512(const BlockOpsContext& ctx, int b0, int b1) {
   BlockOpsInterleavedAny<8>(ctx, b0, b1);
@@ -1191,11 +1555,12 @@ void BlockOpsOne(const BlockOpsContext& ctx, const FragmentOpsPlan& plan, const 
   }
 }
 
-// The operations of every block, into a single-sampled target or (`depths` given) a multisampled one.
-void BlockOpsAll(const FragmentOpsState& state, const FragmentOpsPlan& plan, const BlockBuffer& blocks,
-                 bool shader_depth, const RenderTarget& target, const SampleDepths* depths) {
+// What the operations of a batch share.
+BlockOpsContext ContextOf(const FragmentOpsState& state, const FragmentOpsPlan& plan, const BlockBuffer& blocks,
+                          bool shader_depth, const RenderTarget& target, const SampleDepths* depths) {
   // Without a depth or stencil buffer the test passes and nothing is written (OpenGL 4.6, 17.3.5 and 17.3.6).
   BlockOpsContext ctx;
+  ctx.plan = &plan;
   ctx.state = &state;
   ctx.blocks = &blocks;
   ctx.target = &target;
@@ -1207,6 +1572,14 @@ void BlockOpsAll(const FragmentOpsState& state, const FragmentOpsPlan& plan, con
   ctx.blend = &plan.blend[0];
   ctx.depths = depths;
   ctx.samples = depths ? target.samples : 1;
+  ctx.passed = nullptr;
+  return ctx;
+}
+
+// The operations of every block, into a single-sampled target or (`depths` given) a multisampled one.
+void BlockOpsAll(const FragmentOpsState& state, const FragmentOpsPlan& plan, const BlockBuffer& blocks,
+                 bool shader_depth, const RenderTarget& target, const SampleDepths* depths) {
+  BlockOpsContext ctx = ContextOf(state, plan, blocks, shader_depth, target, depths);
   std::uint64_t passed = 0;
   ctx.passed = state.occlusion[0] || state.occlusion[1] ? &passed : nullptr;
   static const BlockRangeOpsFn block_ops_interleaved = SOFTGL_CHOOSE(BlockOpsInterleaved);
@@ -1238,6 +1611,13 @@ bool EarlyDepthTestSamples(const FragmentOpsState& state, BlockBuffer& blocks, c
 void ApplyFragmentOps(const FragmentOpsState& state, const FragmentOpsPlan& plan, const BlockBuffer& blocks,
                       bool shader_depth, const RenderTarget& target) {
   BlockOpsAll(state, plan, blocks, shader_depth, target, nullptr);
+}
+
+void ApplyFragmentOpsReference(const FragmentOpsState& state, const FragmentOpsPlan& plan, const BlockBuffer& blocks,
+                               bool shader_depth, const RenderTarget& target) {
+  const BlockOpsContext ctx = ContextOf(state, plan, blocks, shader_depth, target, nullptr);
+  for (int b = 0; b < blocks.count; ++b)
+    if (blocks.live[b]) LaneOps(ctx, plan.blend, b, target, blocks.live[b], PlaneDepths(ctx, b, 0), PlaneStride(ctx));
 }
 
 void ApplyFragmentOpsSamples(const FragmentOpsState& state, const FragmentOpsPlan& plan, const BlockBuffer& blocks,

@@ -2,8 +2,10 @@
 // (scissor, done by the rasterizer's bounds) -> stencil test -> depth test -> stencil update -> blending ->
 // colour mask -> framebuffer. Arithmetic follows the OpenGL 4.6 specification, chapter 17.
 //
-// They run on whole 4x4 blocks: a block inside a target with one RGBA8 colour buffer (the common case) takes the
-// wide path, 4, 8 or 16 lanes per instruction; any other block goes lane by lane with the same arithmetic.
+// They run on whole 4x4 blocks, 4 or 8 lanes per instruction: the stencil and depth tests and writes for every
+// depth and stencil format, then each colour buffer by the path its format takes (ColourPath). A block that
+// reaches past the target's edge, and the multisampled context framebuffer's blocks unless its colour buffer is
+// RGBA8, go lane by lane with the same arithmetic (ApplyFragmentOpsReference).
 // Blending into 8-bit buffers is exact integer arithmetic on the 8-bit operands: the fragment colour is converted
 // to the buffer's format first (clamped to [0, 1], round(c * 255)), like the destination, the constant colour and
 // the factors; the equation's value, (s * sf + d * df) / 255 with all terms in 0..255, is rounded to the nearest
@@ -140,10 +142,21 @@ struct Unorm8Blend {
   Unorm8Blend(const FragmentOpsState& state, bool rgb_only);
 };
 
+/// How a block's lanes are written into one colour buffer.
+enum class ColourPath : std::uint8_t {
+  kNone,     // no buffer, or every channel masked
+  kUnorm8,   // RGBA8, RGB8, RG8, R8: the exact 8-bit blend in vectors (Unorm8Blend)
+  kFloat,    // decoded to floats, blended and encoded again in vectors: float, half, sRGB and packed formats
+  kLanes,    // lane by lane (the formats without a vector form)
+};
+
 /// What the per-fragment operations resolve once per draw and target.
 struct FragmentOpsPlan {
   Unorm8Blend blend[kMaxColorOutputs];  // for the 8-bit colour buffers
-  bool wide_target = false;  // colour buffer 0 RGBA8 (or none) and no other: blocks take the vector path
+  ColourPath path[kMaxColorOutputs] = {};
+  int buffers = 0;           // the buffers after the last one with a path have none
+  bool one_rgba8 = false;    // colour buffer 0 RGBA8 (or none) and no other: the commonest target, its own code
+  bool wide_target = false;  // blocks inside the target take the vector path
 };
 FragmentOpsPlan PlanFragmentOps(const FragmentOpsState& state, const RenderTarget& target);
 
@@ -162,6 +175,10 @@ bool EarlyDepthTest(const FragmentOpsState& state, BlockBuffer& blocks, const Re
 /// colours, and its depth when `shader_depth`, and cleared discarded lanes) into the buffers of `target`.
 void ApplyFragmentOps(const FragmentOpsState& state, const FragmentOpsPlan& plan, const BlockBuffer& blocks,
                       bool shader_depth, const RenderTarget& target);
+
+/// The same operations lane by lane, every block: the reference the vector paths are tested against.
+void ApplyFragmentOpsReference(const FragmentOpsState& state, const FragmentOpsPlan& plan, const BlockBuffer& blocks,
+                               bool shader_depth, const RenderTarget& target);
 
 /// A multisampled batch's fragment depths at its samples: z[b][s][lane] is the depth of block b's lane at sample s,
 /// on its triangle's depth plane at the sample's position (the fragment stage fills it from the planes).

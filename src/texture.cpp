@@ -88,29 +88,6 @@ TexelLayout LayoutOf(Enum f) {
   }
 }
 
-int BytesPerTexel(TexelLayout l) {
-  switch (l) {
-    case TexelLayout::kUnorm8x4: return 4;
-    case TexelLayout::kUnorm8x2: return 2;
-    case TexelLayout::kUnorm8x1: return 1;
-    case TexelLayout::kFloat32x4: return 16;
-    case TexelLayout::kFloat32x2:
-    case TexelLayout::kUnorm16x4:
-    case TexelLayout::kFloat16x4: return 8;
-    case TexelLayout::kFloat32x1:
-    case TexelLayout::kFloat16x2:
-    case TexelLayout::kUnorm16x2:
-    case TexelLayout::kUnorm1010102:
-    case TexelLayout::kFloat11x11x10: return 4;
-    case TexelLayout::kUnorm16x1:
-    case TexelLayout::kFloat16x1:
-    case TexelLayout::kUnorm565:
-    case TexelLayout::kUnorm4444:
-    case TexelLayout::kUnorm5551: return 2;
-    default: return 0;
-  }
-}
-
 namespace {
 
 // |f| (not NaN) as a float of 5 exponent bits (bias 15) and m mantissa bits, without its sign: rounded to nearest,
@@ -192,19 +169,6 @@ float UnsignedSmallToFloat(std::uint32_t v, int m) { return DecodeMagnitude(v, m
 
 namespace {
 
-// The channels of a packed fixed-point layout: bits and lowest bit of red, green, blue, alpha (0 bits: absent,
-// reads 1 for alpha).
-struct PackedUnorm {
-  int bits[4], shift[4];
-};
-PackedUnorm PackingOf(TexelLayout l) {
-  switch (l) {
-    case TexelLayout::kUnorm565: return {{5, 6, 5, 0}, {11, 5, 0, 0}};
-    case TexelLayout::kUnorm4444: return {{4, 4, 4, 4}, {12, 8, 4, 0}};
-    case TexelLayout::kUnorm1010102: return {{10, 10, 10, 2}, {0, 10, 20, 30}};
-    default: return {{5, 5, 5, 1}, {11, 6, 1, 0}};  // kUnorm5551
-  }
-}
 // The word of a packed layout (2 or 4 bytes), and back.
 std::uint32_t LoadPacked(TexelLayout l, const std::uint8_t* p) {
   if (BytesPerTexel(l) == 4) {
@@ -304,6 +268,28 @@ std::uint8_t SrgbEncode8(float linear) {
   if (linear >= 1.0f) return 255;
   const double* step = Srgb().step;
   return std::uint8_t(std::upper_bound(step, step + 255, double(linear)) - step);
+}
+
+const SrgbLaneTables& SrgbLanes() {
+  static const SrgbLaneTables tables = [] {
+    SrgbLaneTables t;
+    for (int k = 0; k < 256; ++k) t.decode[k] = Srgb().decode[k];
+    for (int k = 0; k < 255; ++k) {
+      const double step = Srgb().step[k];
+      float f = float(step);
+      if (double(f) < step) f = std::nextafter(f, 2.0f);
+      t.up[k] = f;
+    }
+    t.up[255] = std::numeric_limits<float>::infinity();
+    for (int i = 0; i < SrgbLaneTables::kBuckets; ++i) {
+      const std::uint32_t bits = std::uint32_t(SrgbLaneTables::kBucket0 + i) << 16;
+      float x;
+      std::memcpy(&x, &bits, 4);
+      t.start[i] = SrgbEncode8(x);
+    }
+    return t;
+  }();
+  return tables;
 }
 
 void StoreSmallFloatTexel(TexelLayout layout, std::uint8_t* p, const glm::vec4& in) {

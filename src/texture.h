@@ -48,26 +48,60 @@ enum class TexelLayout : std::uint8_t {
 
 /// The layout of an internal format (kNone if softgl does not support it), and its bytes per texel.
 TexelLayout LayoutOf(Enum internal_format);
-int BytesPerTexel(TexelLayout layout);
+constexpr int BytesPerTexel(TexelLayout l) {
+  switch (l) {
+    case TexelLayout::kUnorm8x4: return 4;
+    case TexelLayout::kUnorm8x2: return 2;
+    case TexelLayout::kUnorm8x1: return 1;
+    case TexelLayout::kFloat32x4: return 16;
+    case TexelLayout::kFloat32x2:
+    case TexelLayout::kUnorm16x4:
+    case TexelLayout::kFloat16x4: return 8;
+    case TexelLayout::kFloat32x1:
+    case TexelLayout::kFloat16x2:
+    case TexelLayout::kUnorm16x2:
+    case TexelLayout::kUnorm1010102:
+    case TexelLayout::kFloat11x11x10: return 4;
+    case TexelLayout::kUnorm16x1:
+    case TexelLayout::kFloat16x1:
+    case TexelLayout::kUnorm565:
+    case TexelLayout::kUnorm4444:
+    case TexelLayout::kUnorm5551: return 2;
+    default: return 0;
+  }
+}
 /// The texel at p as RGBA in storage units: byte values 0..255 for fixed-point layouts, the floats otherwise;
 /// channels the layout lacks read (0, 0, 0, 1) in the same units.
 glm::vec4 RawTexel(TexelLayout layout, const std::uint8_t* p);
-inline bool IsUnorm8(TexelLayout l) {
+constexpr bool IsUnorm8(TexelLayout l) {
   return l == TexelLayout::kUnorm8x4 || l == TexelLayout::kUnorm8x2 || l == TexelLayout::kUnorm8x1;
 }
 /// The fixed-point layouts with all channels in one 16- or 32-bit word (RGB565, RGBA4, RGB5_A1, RGB10_A2): read
 /// as floats in [0, 1] (storage scale 1), stored clamped and rounded to each channel's bits.
-inline bool IsPackedUnorm(TexelLayout l) {
+constexpr bool IsPackedUnorm(TexelLayout l) {
   return l == TexelLayout::kUnorm565 || l == TexelLayout::kUnorm4444 || l == TexelLayout::kUnorm5551 ||
          l == TexelLayout::kUnorm1010102;
 }
 /// RGBA16, RG16, R16: 16 bits a channel, read as floats in [0, 1] (storage scale 1), stored clamped and rounded.
-inline bool IsUnorm16(TexelLayout l) {
+constexpr bool IsUnorm16(TexelLayout l) {
   return l == TexelLayout::kUnorm16x4 || l == TexelLayout::kUnorm16x2 || l == TexelLayout::kUnorm16x1;
 }
 /// The fixed-point layouts that are not 8-bit: their values clamp to [0, 1] as 8-bit ones do, but they are read
 /// and blended as floats.
-inline bool IsWideFixedPoint(TexelLayout l) { return IsPackedUnorm(l) || IsUnorm16(l); }
+constexpr bool IsWideFixedPoint(TexelLayout l) { return IsPackedUnorm(l) || IsUnorm16(l); }
+/// The channels of a packed fixed-point layout: bits and lowest bit of red, green, blue, alpha (0 bits: absent,
+/// reads 1 for alpha).
+struct PackedUnorm {
+  int bits[4], shift[4];
+};
+constexpr PackedUnorm PackingOf(TexelLayout l) {
+  switch (l) {
+    case TexelLayout::kUnorm565: return {{5, 6, 5, 0}, {11, 5, 0, 0}};
+    case TexelLayout::kUnorm4444: return {{4, 4, 4, 4}, {12, 8, 4, 0}};
+    case TexelLayout::kUnorm1010102: return {{10, 10, 10, 2}, {0, 10, 20, 30}};
+    default: return {{5, 5, 5, 1}, {11, 6, 1, 0}};  // kUnorm5551
+  }
+}
 /// OpenGL's small floats (4.6, section 2.3.4): IEEE binary16 (sign, 5 exponent bits, 10 mantissa bits) and the
 /// unsigned 11- and 10-bit floats (5 exponent bits, 6 or 5 mantissa bits, no sign). From float: rounded to nearest
 /// (ties to even), too large to infinity, NaN to NaN; the unsigned forms take negative values (and -0) as 0.
@@ -87,6 +121,18 @@ inline bool NoStoredAlpha(Enum f) { return f == RGB8 || f == SRGB8; }
 /// linear values where the rounded byte steps up.
 float SrgbDecode8(std::uint8_t k);
 std::uint8_t SrgbEncode8(float linear);
+/// The tables vector code converts sRGB by. decode[k] is SrgbDecode8(k). up[k] (k < 255) is the least float at or
+/// above the k-th step between encoded values, so that SrgbEncode8(x), for x in (0, 1), counts the k with
+/// up[k] <= x; up[255] is infinity. start[i] is SrgbEncode8 of the least float whose bits >> 16 are kBucket0 + i
+/// (x in [2^-13, 1), 128 buckets an octave): no bucket holds more than one step, so that the encoding of x is
+/// start[i], plus 1 where x >= up[start[i]].
+struct SrgbLaneTables {
+  static constexpr int kBucket0 = 0x3900, kBuckets = 0x3F80 - kBucket0;
+  float decode[256];
+  float up[256];
+  std::uint8_t start[kBuckets];
+};
+const SrgbLaneTables& SrgbLanes();
 /// How sampling decodes an sRGB texel's colour byte k (0..255, as a float) into storage units (255 times linear):
 /// k / 12.92 up to byte 10 (the formula's linear segment); above it a polynomial of degree 6 in k, a Chebyshev fit
 /// of section 8.24's formula over bytes 11..255, within 2.4e-3 of 255 times it (9.3e-6 in linear), evaluated by

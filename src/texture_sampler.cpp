@@ -306,6 +306,7 @@ __attribute__((noinline)) glm::vec4 SampleOneLane(const TextureView& v, Lookup k
 // turned into bits (MaskToBits, SignBits) before they are combined.
 
 using detail::V;
+using detail::HalfLanes;
 
 template <int W>
 SOFTGL_INLINE typename V<W>::F LoadF(const float* p) {
@@ -471,34 +472,6 @@ SOFTGL_INLINE void Channels(typename V<W>::U x, typename V<W>::F out[4]) {
   out[2] = Channel<W, Bytes, 2, Srgb>(x);
   out[3] = Channel<W, Bytes, 3, Srgb>(x);
 }
-
-// HalfToFloat for W lanes (h in the low 16 bits): the exponent and mantissa moved to a float's places and scaled
-// by 2^112, exact for normal and subnormal halves alike; infinities and NaNs get the float's top exponent, NaNs
-// the quiet bit too.
-template <int W>
-SOFTGL_INLINE typename V<W>::F HalfLanes(typename V<W>::U h) {
-  using F = typename V<W>::F;
-  using U = typename V<W>::U;
-  const U em = h & 0x7FFFu;
-  const U shifted = em << 13;
-  F f;
-  std::memcpy(&f, &shifted, sizeof f);
-  f *= 0x1p112f;
-  U bits;
-  std::memcpy(&bits, &f, sizeof bits);
-  bits = em >= 0x7C00u ? shifted | 0x7F800000u : bits;
-  bits = em > 0x7C00u ? bits | 0x00400000u : bits;
-  bits |= (h & 0x8000u) << 16;
-  std::memcpy(&f, &bits, sizeof f);
-  return f;
-}
-#if defined(SOFTGL_HAS_DISPATCH) && !defined(__clang__)
-// With AVX-512, one conversion instruction (VCVTPH2PS, exact, a NaN made quiet), as ByteToBottom's byte shuffle.
-template <>
-__attribute__((target("avx512f"))) inline V<16>::F HalfLanes<16>(V<16>::U h) {
-  return V<16>::F(_mm512_cvtph_ps(_mm512_cvtepi32_epi16(__m512i(h))));
-}
-#endif
 
 // Whether a layout's texel is decoded from its first 32 bits by WordTexels (one channel of 32 or 16 bits, two of
 // 16, a packed fixed-point word, or R11F_G11F_B10F's three small floats): a row's two texels then come from one 64-bit load.

@@ -149,4 +149,55 @@ SOFTGL_WIDE typename V<W>::F FloorVec(typename V<W>::F x) {
   return t > x ? t - 1.0f : t;
 }
 
+/// HalfToFloat for W lanes (h in the low 16 bits): the exponent and mantissa moved to a float's places and scaled
+/// by 2^112, exact for normal and subnormal halves alike; infinities and NaNs get the float's top exponent, NaNs
+/// the quiet bit too.
+template <int W>
+SOFTGL_WIDE typename V<W>::F HalfLanes(typename V<W>::U h) {
+  using F = typename V<W>::F;
+  using U = typename V<W>::U;
+  const U em = h & 0x7FFFu;
+  const U shifted = em << 13;
+  F f;
+  std::memcpy(&f, &shifted, sizeof f);
+  f *= 0x1p112f;
+  U bits;
+  std::memcpy(&bits, &f, sizeof bits);
+  bits = em >= 0x7C00u ? shifted | 0x7F800000u : bits;
+  bits = em > 0x7C00u ? bits | 0x00400000u : bits;
+  bits |= (h & 0x8000u) << 16;
+  std::memcpy(&f, &bits, sizeof f);
+  return f;
+}
+#if defined(SOFTGL_HAS_DISPATCH) && !defined(__clang__)
+// With AVX-512, one conversion instruction (VCVTPH2PS, exact, a NaN made quiet).
+template <>
+__attribute__((target("avx512f"))) inline V<16>::F HalfLanes<16>(V<16>::U h) {
+  return V<16>::F(_mm512_cvtph_ps(_mm512_cvtepi32_epi16(__m512i(h))));
+}
+#endif
+
+/// FloatToHalf for W lanes (the half in the low 16 bits of each): normal halves by rounding away 13 mantissa bits
+/// (to nearest, ties to even; past the largest finite, infinity), subnormal ones by adding 2^23 to |f| in units of
+/// 2^-24, every NaN as 0x7E00 with its sign.
+template <int W>
+SOFTGL_WIDE typename V<W>::U HalfBitsLanes(typename V<W>::F f) {
+  using F = typename V<W>::F;
+  using U = typename V<W>::U;
+  U x;
+  std::memcpy(&x, &f, sizeof x);
+  const U sign = (x >> 16) & 0x8000u, a = x & 0x7FFFFFFFu;
+  U r = a - 0x38000000u;
+  r = (r + 0xFFFu + ((r >> 13) & 1u)) >> 13;
+  r = r < 0x7C00u ? r : U{} + 0x7C00u;
+  F units;
+  std::memcpy(&units, &a, sizeof units);
+  units = units * 16777216.0f + 8388608.0f;
+  U u;
+  std::memcpy(&u, &units, sizeof u);
+  U h = a >= 0x38800000u ? r : u & 0x7FFu;
+  h = a > 0x7F800000u ? U{} + 0x7E00u : h;
+  return sign | h;
+}
+
 }  // namespace softgl::detail

@@ -564,18 +564,22 @@ std::uint8_t ReferenceBlend8(const detail::BlendState& b, int channel, const std
   return std::uint8_t(std::lround(std::clamp(r, 0.0, 1.0) * 255.0));  // never a tie: 255 * r is k / 255
 }
 
+// Every blend factor and equation.
+const Enum kBlendFactors[] = {ZERO, ONE, SRC_COLOR, ONE_MINUS_SRC_COLOR, DST_COLOR, ONE_MINUS_DST_COLOR, SRC_ALPHA,
+                              ONE_MINUS_SRC_ALPHA, DST_ALPHA, ONE_MINUS_DST_ALPHA, CONSTANT_COLOR,
+                              ONE_MINUS_CONSTANT_COLOR, CONSTANT_ALPHA, ONE_MINUS_CONSTANT_ALPHA, SRC_ALPHA_SATURATE};
+const Enum kBlendEquations[] = {FUNC_ADD, FUNC_SUBTRACT, FUNC_REVERSE_SUBTRACT, MIN, MAX};
+
 }  // namespace
 
 TEST_CASE("blending into 8-bit buffers is OpenGL's formula on the 8-bit operands, correctly rounded",
           "[fragment_ops][blend]") {
-  // Four blocks of four quads into an 8x8 RGBA8 target: the wide path (one 8-bit colour buffer, blocks inside the target),
-  // and again with a second colour buffer present, which takes the lane-by-lane path for both. Every factor pair
+  // Four blocks of four quads into an 8x8 RGBA8 target: the block path's instance for one RGBA8 buffer, and again
+  // with a second colour buffer present, which takes its general instance for both. Every factor pair
   // and equation, alpha by the same pair or the swapped one, random colours (out of range and NaN included),
   // random colour masks.
-  const Enum factors[] = {ZERO, ONE, SRC_COLOR, ONE_MINUS_SRC_COLOR, DST_COLOR, ONE_MINUS_DST_COLOR, SRC_ALPHA,
-                          ONE_MINUS_SRC_ALPHA, DST_ALPHA, ONE_MINUS_DST_ALPHA, CONSTANT_COLOR,
-                          ONE_MINUS_CONSTANT_COLOR, CONSTANT_ALPHA, ONE_MINUS_CONSTANT_ALPHA, SRC_ALPHA_SATURATE};
-  const Enum equations[] = {FUNC_ADD, FUNC_SUBTRACT, FUNC_REVERSE_SUBTRACT, MIN, MAX};
+  const auto& factors = kBlendFactors;
+  const auto& equations = kBlendEquations;
   std::uint32_t seed = 7;
   auto next = [&] {
     seed = seed * 1664525u + 1013904223u;
@@ -709,4 +713,234 @@ TEST_CASE("the early depth test skips hidden fragments without changing the imag
   int calls = 0;
   render(NOTEQUAL, &calls);  // not monotonic: every fragment is shaded
   CHECK(calls == 2 * n * n);
+}
+
+namespace {
+
+// A colour format as a render target holds it.
+struct TargetFormat {
+  const char* name;
+  detail::TexelLayout layout;
+  bool rgb_only = false, srgb = false;
+};
+const TargetFormat kTargetFormats[] = {
+    {"RGBA8", detail::TexelLayout::kUnorm8x4},
+    {"RGB8", detail::TexelLayout::kUnorm8x4, true},
+    {"RG8", detail::TexelLayout::kUnorm8x2},
+    {"R8", detail::TexelLayout::kUnorm8x1},
+    {"SRGB8_ALPHA8", detail::TexelLayout::kUnorm8x4, false, true},
+    {"SRGB8", detail::TexelLayout::kUnorm8x4, true, true},
+    {"RGBA32F", detail::TexelLayout::kFloat32x4},
+    {"RG32F", detail::TexelLayout::kFloat32x2},
+    {"R32F", detail::TexelLayout::kFloat32x1},
+    {"RGBA16F", detail::TexelLayout::kFloat16x4},
+    {"RG16F", detail::TexelLayout::kFloat16x2},
+    {"R16F", detail::TexelLayout::kFloat16x1},
+    {"R11F_G11F_B10F", detail::TexelLayout::kFloat11x11x10},
+    {"RGB565", detail::TexelLayout::kUnorm565},
+    {"RGBA4", detail::TexelLayout::kUnorm4444},
+    {"RGB5_A1", detail::TexelLayout::kUnorm5551},
+    {"RGB10_A2", detail::TexelLayout::kUnorm1010102},
+    {"RGBA16", detail::TexelLayout::kUnorm16x4},
+    {"RG16", detail::TexelLayout::kUnorm16x2},
+    {"R16", detail::TexelLayout::kUnorm16x1},
+};
+
+// Buffers of a render target for the comparison below: colour buffers of the given formats, float depth and 8-bit
+// stencil, each row `pitch` texels.
+struct TargetBuffers {
+  static constexpr int kSize = 8, kPitch = 11;
+  std::vector<std::uint8_t> color[kMaxColorOutputs];
+  std::vector<float> depth = std::vector<float>(kSize * kPitch);
+  std::vector<std::uint8_t> stencil = std::vector<std::uint8_t>(kSize * kPitch);
+  detail::RenderTarget target;
+  explicit TargetBuffers(const std::vector<const TargetFormat*>& formats) {
+    target.width = target.height = kSize;
+    for (std::size_t o = 0; o < formats.size(); ++o) {
+      if (!formats[o]) continue;
+      const int bytes = detail::BytesPerTexel(formats[o]->layout);
+      color[o].resize(std::size_t(kSize * kPitch * bytes));
+      detail::ColorBuffer& cb = target.color[o];
+      cb.layout = formats[o]->layout;
+      cb.rgb_only = formats[o]->rgb_only;
+      cb.srgb = formats[o]->srgb;
+      cb.pitch = kPitch;
+    }
+    target.depth = depth.data();
+    target.depth_pitch = target.stencil_pitch = kPitch;
+    target.stencil = stencil.data();
+    Point();
+  }
+  TargetBuffers(const TargetBuffers& other) : color{}, depth(other.depth), stencil(other.stencil), target(other.target) {
+    for (int o = 0; o < kMaxColorOutputs; ++o) color[o] = other.color[o];
+    Point();
+  }
+  void Point() {
+    for (int o = 0; o < kMaxColorOutputs; ++o) target.color[o].data = color[o].empty() ? nullptr : color[o].data();
+    target.depth = depth.data();
+    target.stencil = stencil.data();
+  }
+};
+
+}  // namespace
+
+TEST_CASE("every colour format, draw buffer set and depth-stencil state: the block path writes the reference's bytes",
+          "[fragment_ops][formats]") {
+  // Random states, buffer contents (any bits: NaN, infinite and huge floats included), fragment colours (out of
+  // range, NaN, infinite) and depths; the block path (ApplyFragmentOps) against the lane-by-lane reference on a copy
+  // of the same buffers. Each format alone first, then sets of up to four of them.
+  const auto& factors = kBlendFactors;
+  const auto& equations = kBlendEquations;
+  const Enum funcs[] = {NEVER, LESS, EQUAL, LEQUAL, GREATER, NOTEQUAL, GEQUAL, ALWAYS};
+  const Enum stencil_ops[] = {KEEP, ZERO, REPLACE, INCR, DECR, INVERT, INCR_WRAP, DECR_WRAP};
+  const float specials[] = {std::numeric_limits<float>::quiet_NaN(), std::numeric_limits<float>::infinity(),
+                            -std::numeric_limits<float>::infinity(), 1e30f, -1e30f, 65520.0f, 1e-8f, -0.0f};
+  std::uint32_t seed = 11;
+  auto next = [&] {
+    seed = seed * 1664525u + 1013904223u;
+    return seed >> 8;
+  };
+  auto value = [&](float lo, float hi) {
+    if (next() % 16 == 0) return specials[next() % 8];
+    return lo + (hi - lo) * float(next() % 100000) / 100000.0f;
+  };
+  constexpr int kFormats = int(std::size(kTargetFormats));
+  auto blocks = std::make_unique<detail::BlockBuffer>();
+  int compared = 0;
+  for (int round = 0; round < 2 * kFormats + 400; ++round) {
+    std::vector<const TargetFormat*> formats;
+    if (round < 2 * kFormats) {
+      formats.push_back(&kTargetFormats[round % kFormats]);  // alone, twice
+    } else {
+      const int n = 1 + int(next() % 4);
+      for (int o = 0; o < n; ++o) formats.push_back(next() % 5 == 0 ? nullptr : &kTargetFormats[next() % kFormats]);
+    }
+    TargetBuffers a(formats);
+    for (auto& buffer : a.color)
+      for (auto& byte : buffer) byte = std::uint8_t(next());
+    if (next() % 2) {  // or values in range, as a buffer mostly holds
+      for (int o = 0; o < kMaxColorOutputs; ++o)
+        if (a.target.color[o].Present())
+          for (int y = 0; y < TargetBuffers::kSize; ++y)
+            for (int x = 0; x < TargetBuffers::kSize; ++x) {
+              const bool mask[4] = {true, true, true, true};
+              a.target.color[o].Store(x, y, glm::vec4(value(0, 1), value(0, 1), value(0, 1), value(0, 1)), mask);
+            }
+    }
+    for (auto& d : a.depth) d = value(0.0f, 1.0f);
+    for (auto& s : a.stencil) s = std::uint8_t(next());
+
+    detail::FragmentOpsState state;
+    state.blend.enabled = next() % 4 != 0;
+    state.blend.src_rgb = factors[next() % 15];
+    state.blend.dst_rgb = factors[next() % 15];
+    state.blend.src_alpha = factors[next() % 15];
+    state.blend.dst_alpha = factors[next() % 15];
+    state.blend.eq_rgb = equations[next() % 5];
+    state.blend.eq_alpha = equations[next() % 5];
+    state.blend.color = glm::vec4(value(-0.2f, 1.2f), value(-0.2f, 1.2f), value(-0.2f, 1.2f), value(-0.2f, 1.2f));
+    for (int c = 0; c < 4; ++c) state.color_mask[c] = next() % 4 != 0;
+    state.depth_test = next() % 2;
+    state.depth_func = funcs[next() % 8];
+    state.depth_write = next() % 4 != 0;
+    state.stencil_test = next() % 3 == 0;
+    for (detail::StencilFace* face : {&state.front, &state.back}) {
+      face->func = funcs[next() % 8];
+      face->ref = int(next() % 300) - 20;
+      face->value_mask = next();
+      face->write_mask = next();
+      face->sfail = stencil_ops[next() % 8];
+      face->dpfail = stencil_ops[next() % 8];
+      face->dppass = stencil_ops[next() % 8];
+    }
+    blocks->count = 4;
+    blocks->front_facing = next() % 2;
+    for (int b = 0; b < 4; ++b) {
+      blocks->quads[b] = 4;
+      for (int q = 0; q < 4; ++q) {  // block b: the quads of rows 2b and 2b + 1, in a scrambled order
+        blocks->qx[b][q] = ((q + b) % 4) * 2;
+        blocks->qy[b][q] = 2 * b;
+      }
+      blocks->live[b] = next() % 3 == 0 ? 0xFFFFu : next() & 0xFFFFu;
+      for (int l = 0; l < softgl::kLanes; ++l) {
+        blocks->frag_coord[b][2][l] = value(-0.1f, 1.1f);
+        for (int o = 0; o < kMaxColorOutputs; ++o)
+          for (int c = 0; c < 4; ++c) blocks->out[b].color[o][c].v.Set(l, value(-0.3f, 1.3f));
+      }
+    }
+    TargetBuffers b(a);
+    const detail::FragmentOpsPlan plan = detail::PlanFragmentOps(state, a.target);
+    detail::ApplyFragmentOps(state, plan, *blocks, false, a.target);
+    detail::ApplyFragmentOpsReference(state, plan, *blocks, false, b.target);
+    std::string names;
+    for (const TargetFormat* f : formats) names += std::string(f ? f->name : "none") + " ";
+    INFO("round " << round << ": " << names << "blend " << state.blend.enabled);
+    for (int o = 0; o < kMaxColorOutputs; ++o) {
+      if (a.color[o] != b.color[o]) {
+        std::size_t i = 0;
+        while (a.color[o][i] == b.color[o][i]) ++i;
+        INFO("buffer " << o << ", first differing byte " << i);
+        CHECK(a.color[o] == b.color[o]);
+      }
+    }
+    CHECK(std::memcmp(a.depth.data(), b.depth.data(), a.depth.size() * sizeof(float)) == 0);
+    CHECK(a.stencil == b.stencil);
+    ++compared;
+  }
+  CHECK(compared == 2 * kFormats + 400);
+}
+
+TEST_CASE("sRGB encoding in the block path: every step between two codes, on both sides", "[fragment_ops][formats]") {
+  // The colours at each step of SrgbEncode8 and the float just below it, written without blending into an
+  // SRGB8_ALPHA8 buffer (FRAMEBUFFER_SRGB on) by the block path and by the reference.
+  const detail::SrgbLaneTables& tables = detail::SrgbLanes();
+  std::vector<float> values;
+  for (int k = 0; k < 255; ++k) {
+    values.push_back(tables.up[k]);
+    values.push_back(std::nextafter(tables.up[k], 0.0f));
+  }
+  for (int i = 0; i < detail::SrgbLaneTables::kBuckets; i += 7) {  // bucket edges
+    const std::uint32_t bits = std::uint32_t(detail::SrgbLaneTables::kBucket0 + i) << 16;
+    float x;
+    std::memcpy(&x, &bits, 4);
+    values.push_back(x);
+    values.push_back(std::nextafter(x, 0.0f));
+  }
+  auto blocks = std::make_unique<detail::BlockBuffer>();
+  std::size_t at = 0;
+  int checked = 0;
+  while (at < values.size()) {
+    TargetBuffers a({&kTargetFormats[4]});
+    blocks->count = 4;
+    for (int b = 0; b < 4; ++b) {
+      blocks->quads[b] = 4;
+      for (int q = 0; q < 4; ++q) {
+        blocks->qx[b][q] = q * 2;
+        blocks->qy[b][q] = 2 * b;
+      }
+      blocks->live[b] = 0xFFFFu;
+      for (int l = 0; l < softgl::kLanes; ++l)
+        for (int c = 0; c < 4; ++c) {
+          blocks->out[b].color[0][c].v.Set(l, values[at % values.size()]);
+          ++at;
+        }
+    }
+    TargetBuffers b(a);
+    detail::FragmentOpsState state;
+    const detail::FragmentOpsPlan plan = detail::PlanFragmentOps(state, a.target);
+    detail::ApplyFragmentOps(state, plan, *blocks, false, a.target);
+    detail::ApplyFragmentOpsReference(state, plan, *blocks, false, b.target);
+    CHECK(a.color[0] == b.color[0]);
+    // and the reference is SrgbEncode8
+    for (int b2 = 0; b2 < 4; ++b2)
+      for (int l = 0; l < softgl::kLanes; ++l)
+        for (int c = 0; c < 3; ++c) {
+          const int x = blocks->X(b2, l), y = blocks->Y(b2, l);
+          const std::uint8_t want = detail::SrgbEncode8(blocks->out[b2].color[0][c][l]);
+          if (b.color[0][(std::size_t(y) * TargetBuffers::kPitch + std::size_t(x)) * 4 + std::size_t(c)] != want)
+            FAIL_CHECK("reference differs from SrgbEncode8");
+          ++checked;
+        }
+  }
+  CHECK(checked * 4 == int(at) * 3);  // red, green and blue of every value written
 }
