@@ -137,8 +137,8 @@ namespace {
 ColourPath PathOf(const ColorBuffer& cb) {
   if (!cb.Present()) return ColourPath::kNone;
   if (IsUnorm8(cb.layout)) return cb.srgb ? ColourPath::kFloat : ColourPath::kUnorm8;
-  // Float, half, packed and 16-bit fixed point in vectors; R11F_G11F_B10F lane by lane.
-  return cb.layout == TexelLayout::kFloat11x11x10 ? ColourPath::kLanes : ColourPath::kFloat;
+  // Float, half, R11F_G11F_B10F, packed and 16-bit fixed point in vectors.
+  return ColourPath::kFloat;
 }
 }  // namespace
 
@@ -662,6 +662,10 @@ SOFTGL_WIDE void FloatLanesOf(const FragmentOpsState& st, std::uint32_t keep, bo
     } else if constexpr (L == TexelLayout::kUnorm16x2) {
       d[0] = __builtin_convertvector(word & 0xFFFFu, F) / 65535.0f;
       d[1] = __builtin_convertvector(word >> 16, F) / 65535.0f;
+    } else if constexpr (L == TexelLayout::kFloat11x11x10) {  // each small float at a half's places
+      d[0] = HalfLanes<W>((word & 0x7FFu) << 4);
+      d[1] = HalfLanes<W>(((word >> 11) & 0x7FFu) << 4);
+      d[2] = HalfLanes<W>((word >> 22) << 5);
     } else if constexpr (kPacked) {
     } else {  // sRGB8_ALPHA8, SRGB8
       const SrgbLaneTables& t = SrgbLanes();
@@ -750,6 +754,10 @@ SOFTGL_WIDE void FloatLanesOf(const FragmentOpsState& st, std::uint32_t keep, bo
   } else if constexpr (L == TexelLayout::kFloat16x1) {
     const U out = HalfBitsLanes<W>(r[0]);
     at.template Store<std::uint16_t>(__builtin_convertvector(go ? out : word, typename V<W>::S));
+  } else if constexpr (L == TexelLayout::kFloat11x11x10) {
+    const U out = SmallFloatBitsLanes<W, 6>(r[0]) | (SmallFloatBitsLanes<W, 6>(r[1]) << 11) |
+                  (SmallFloatBitsLanes<W, 5>(r[2]) << 22);
+    at.template Store<std::uint32_t>(go ? out : word);
   } else {  // kFloat32x1
     at.template Store<std::uint32_t>(go ? as_u(r[0]) : word);
   }
@@ -764,6 +772,8 @@ SOFTGL_WIDE void FloatLanes(const FragmentOpsState& st, std::uint32_t keep, cons
     case TexelLayout::kFloat16x4: return FloatLanesOf<W, TexelLayout::kFloat16x4, false>(st, keep, cb.rgb_only, at, color, go);
     case TexelLayout::kFloat16x2: return FloatLanesOf<W, TexelLayout::kFloat16x2, false>(st, keep, cb.rgb_only, at, color, go);
     case TexelLayout::kFloat16x1: return FloatLanesOf<W, TexelLayout::kFloat16x1, false>(st, keep, cb.rgb_only, at, color, go);
+    case TexelLayout::kFloat11x11x10:
+      return FloatLanesOf<W, TexelLayout::kFloat11x11x10, false>(st, keep, cb.rgb_only, at, color, go);
     case TexelLayout::kUnorm565: return FloatLanesOf<W, TexelLayout::kUnorm565, false>(st, keep, cb.rgb_only, at, color, go);
     case TexelLayout::kUnorm4444: return FloatLanesOf<W, TexelLayout::kUnorm4444, false>(st, keep, cb.rgb_only, at, color, go);
     case TexelLayout::kUnorm5551: return FloatLanesOf<W, TexelLayout::kUnorm5551, false>(st, keep, cb.rgb_only, at, color, go);
@@ -909,15 +919,6 @@ struct PlaneIo {
       if (path == ColourPath::kNone) continue;
       const ColorBuffer& cb = t.color[o];
       std::uint8_t* base = cb.data + Plane(cb.plane) * std::size_t(cb.Bytes());
-      if (path == ColourPath::kLanes) {
-        ColorBuffer plane = cb;
-        plane.data = base;
-        for (std::uint32_t bits = MaskToBits<W>(go, l0); bits; bits &= bits - 1) {
-          const int lane = __builtin_ctz(bits);
-          ColourLane(*ctx.state, ctx.plan->blend[o], bb, b, o, lane, plane);
-        }
-        continue;
-      }
       F color[4];
       for (int c = 0; c < 4; ++c) color[c] = LoadVec<F>(bb.Color(b, o, c) + l0);
       const TexelQuads<W> at{base, colour_at[o], live(), l0};

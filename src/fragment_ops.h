@@ -146,8 +146,7 @@ struct Unorm8Blend {
 enum class ColourPath : std::uint8_t {
   kNone,     // no buffer, or every channel masked
   kUnorm8,   // RGBA8, RGB8, RG8, R8: the exact 8-bit blend in vectors (Unorm8Blend)
-  kFloat,    // decoded to floats, blended and encoded again in vectors: float, half, sRGB and packed formats
-  kLanes,    // lane by lane (the formats without a vector form)
+  kFloat,    // decoded to floats, blended and encoded again in vectors: the other formats
 };
 
 /// What the per-fragment operations resolve once per draw and target.

@@ -177,27 +177,44 @@ __attribute__((target("avx512f"))) inline V<16>::F HalfLanes<16>(V<16>::U h) {
 }
 #endif
 
-/// FloatToHalf for W lanes (the half in the low 16 bits of each): normal halves by rounding away 13 mantissa bits
-/// (to nearest, ties to even; past the largest finite, infinity), subnormal ones by adding 2^23 to |f| in units of
-/// 2^-24, every NaN as 0x7E00 with its sign.
+/// |f| (its bits `a`, not NaN) as a float of 5 exponent bits (bias 15) and M mantissa bits, without a sign:
+/// normal values by rounding away 23 - M mantissa bits (to nearest, ties to even; past the largest finite,
+/// infinity), subnormal ones by adding 2^23 to |f| in units of 2^(-14 - M). For W lanes.
+template <int W, int M>
+SOFTGL_WIDE typename V<W>::U MagnitudeBitsLanes(typename V<W>::U a) {
+  using F = typename V<W>::F;
+  using U = typename V<W>::U;
+  constexpr int kShift = 23 - M;
+  U r = a - 0x38000000u;  // the exponent rebased from 127 to 15
+  r = (r + ((1u << (kShift - 1)) - 1u) + ((r >> kShift) & 1u)) >> kShift;
+  r = r < (31u << M) ? r : U{} + (31u << M);
+  F units;
+  std::memcpy(&units, &a, sizeof units);
+  units = units * float(1u << (14 + M)) + 8388608.0f;
+  U u;
+  std::memcpy(&u, &units, sizeof u);
+  return a >= 0x38800000u ? r : u & ((2u << M) - 1u);  // (at most 2^M: the smallest normal when it rounds up)
+}
+
+/// FloatToHalf for W lanes (the half in the low 16 bits of each); every NaN as 0x7E00 with its sign.
 template <int W>
 SOFTGL_WIDE typename V<W>::U HalfBitsLanes(typename V<W>::F f) {
-  using F = typename V<W>::F;
   using U = typename V<W>::U;
   U x;
   std::memcpy(&x, &f, sizeof x);
-  const U sign = (x >> 16) & 0x8000u, a = x & 0x7FFFFFFFu;
-  U r = a - 0x38000000u;
-  r = (r + 0xFFFu + ((r >> 13) & 1u)) >> 13;
-  r = r < 0x7C00u ? r : U{} + 0x7C00u;
-  F units;
-  std::memcpy(&units, &a, sizeof units);
-  units = units * 16777216.0f + 8388608.0f;
-  U u;
-  std::memcpy(&u, &units, sizeof u);
-  U h = a >= 0x38800000u ? r : u & 0x7FFu;
-  h = a > 0x7F800000u ? U{} + 0x7E00u : h;
-  return sign | h;
+  const U a = x & 0x7FFFFFFFu;
+  const U h = a > 0x7F800000u ? U{} + 0x7E00u : MagnitudeBitsLanes<W, 10>(a);
+  return ((x >> 16) & 0x8000u) | h;
+}
+
+/// FloatToUnsignedSmall for W lanes, M mantissa bits: NaN as (31 << M) | 1, negative values and zeros as 0.
+template <int W, int M>
+SOFTGL_WIDE typename V<W>::U SmallFloatBitsLanes(typename V<W>::F f) {
+  using U = typename V<W>::U;
+  U a;
+  std::memcpy(&a, &f, sizeof a);
+  const U v = f > 0.0f ? MagnitudeBitsLanes<W, M>(a) : U{};
+  return f == f ? v : U{} + ((31u << M) | 1u);
 }
 
 }  // namespace softgl::detail
