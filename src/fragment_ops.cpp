@@ -150,6 +150,7 @@ FragmentOpsPlan PlanFragmentOps(const FragmentOpsState& state, const RenderTarge
     plan.blend[o] = target.color[o].rgb_only ? rgb : rgba;
     plan.path[o] = any_color ? PathOf(target.color[o]) : ColourPath::kNone;
     if (plan.path[o] != ColourPath::kNone) plan.buffers = o + 1;
+    if (target.color[o].srgb) plan.srgb = &SrgbLanes();
   }
   plan.one_rgba8 = (!target.color[0].Present() || target.color[0].Rgba8()) && !target.color[1].Present() &&
                    !target.color[2].Present() && !target.color[3].Present();
@@ -370,15 +371,18 @@ struct QuadPlaces {
 template <class T, int W, class Vec>
 SOFTGL_WIDE Vec LoadQuads(const T* base, const QuadPlaces& places, int l0) {
   const std::size_t pitch = places.pitch;
-  if constexpr (sizeof(T) == 4) {
-    // 32-bit values: each quad row is one 64-bit word, gathered into the vector in registers (a vector read back
-    // from small stores would stall the processor).
-    typename V<W>::Q rows;
+  if constexpr (sizeof(T) <= 4) {
+    // Values of up to 32 bits: each quad row (two values) is one word, gathered into the vector in registers (a
+    // vector read back from small stores would stall the processor).
+    using Row = std::conditional_t<sizeof(T) == 4, std::uint64_t,
+                                   std::conditional_t<sizeof(T) == 2, std::uint32_t, std::uint16_t>>;
+    typedef Row Rows __attribute__((vector_size(sizeof(Vec))));
+    Rows rows;
     for (int k = 0; k < W / 4; ++k) {
       const T* p = base + places.at[l0 / 4 + k];
-      std::uint64_t lo, hi;
-      std::memcpy(&lo, p, 8);
-      std::memcpy(&hi, p + pitch, 8);
+      Row lo, hi;
+      std::memcpy(&lo, p, sizeof lo);
+      std::memcpy(&hi, p + pitch, sizeof hi);
       rows[2 * k] = lo;
       rows[2 * k + 1] = hi;
     }
@@ -573,22 +577,17 @@ SOFTGL_WIDE void BlendFloatLanes(const BlendState& st, const glm::vec4& k, const
   }
 }
 
-// SrgbEncode8 for W lanes, by the bucket tables (SrgbLaneTables).
+// SrgbEncode8 for W lanes, by the bucket tables (SrgbLaneTables): two gathers by the bucket.
 template <int W>
-SOFTGL_WIDE typename V<W>::I SrgbEncodeLanes(typename V<W>::F x) {
+SOFTGL_WIDE typename V<W>::I SrgbEncodeLanes(const SrgbLaneTables& t, typename V<W>::F x) {
   using I = typename V<W>::I;
-  using F = typename V<W>::F;
-  const SrgbLaneTables& t = SrgbLanes();
   I bits;
   std::memcpy(&bits, &x, sizeof bits);
   I i = (bits >> 16) - SrgbLaneTables::kBucket0;
   i = i > 0 ? i : I{};
   i = i < SrgbLaneTables::kBuckets - 1 ? i : I{} + (SrgbLaneTables::kBuckets - 1);
-  I k;
-  for (int l = 0; l < W; ++l) k[l] = t.start[i[l]];
-  F up;
-  for (int l = 0; l < W; ++l) up[l] = t.up[k[l]];
-  k -= x >= up;  // (a comparison is -1 where it holds)
+  I k = TableLanes<W>(t.start, i);
+  k -= x >= TableLanes<W>(t.next, i);  // (a comparison is -1 where it holds)
   k = x > 0.0f ? k : I{};  // NaN too
   return x >= 1.0f ? I{} + 255 : k;
 }
@@ -607,11 +606,15 @@ SOFTGL_WIDE typename V<W>::I Unorm8OfLanes(typename V<W>::F x) {
 // way), blended, the colour mask applied, encoded again; as ColourLane does it lane by lane. `keep` is the
 // 8-bit buffers' mask of kept bytes (the sRGB buffer's).
 template <int W, TexelLayout L, bool kSrgb>
-SOFTGL_WIDE void FloatLanesOf(const FragmentOpsState& st, std::uint32_t keep, bool rgb_only, const TexelQuads<W>& at,
+SOFTGL_WIDE void FloatLanesOf(const FragmentOpsState& st, const FragmentOpsPlan& plan, int o, bool rgb_only,
+                              const TexelQuads<W>& at,
                               const typename V<W>::F color[4], typename V<W>::I go) {
   using F = typename V<W>::F;
   using U = typename V<W>::U;
   using D = typename V<W>::D;
+  using I = typename V<W>::I;
+  const std::uint32_t keep = plan.blend[o].keep;
+  const SrgbLaneTables& srgb = *plan.srgb;  // (read for sRGB buffers only)
   constexpr bool kFixed = kSrgb || IsWideFixedPoint(L);
   constexpr bool kPacked = IsPackedUnorm(L), kUnorm16 = IsUnorm16(L);
   constexpr int kBytes = BytesPerTexel(L);
@@ -625,7 +628,10 @@ SOFTGL_WIDE void FloatLanesOf(const FragmentOpsState& st, std::uint32_t keep, bo
     std::memcpy(&u, &f, sizeof u);
     return u;
   };
-  // The stored texels, decoded.
+  // The stored texels, decoded where blending or the colour mask reads them (an sRGB buffer keeps its masked
+  // bytes as they are).
+  const bool all_channels = st.color_mask[0] && st.color_mask[1] && st.color_mask[2] && st.color_mask[3];
+  const bool decode = st.blend.enabled || (!kSrgb && !all_channels);
   F d[4] = {F{}, F{}, F{}, F{} + 1.0f};
   U word{};
   D dword{};
@@ -642,7 +648,7 @@ SOFTGL_WIDE void FloatLanesOf(const FragmentOpsState& st, std::uint32_t keep, bo
     if constexpr (L == TexelLayout::kFloat32x2) {
       d[0] = as_f(__builtin_convertvector(dword & 0xFFFFFFFFu, U));
       d[1] = as_f(__builtin_convertvector(dword >> 32, U));
-    } else {
+    } else if (decode) {
       for (int c = 0; c < 4; ++c) {
         const U k = __builtin_convertvector((dword >> (16 * c)) & 0xFFFFu, U);
         d[c] = kUnorm16 ? __builtin_convertvector(k, F) / 65535.0f : HalfLanes<W>(k);
@@ -650,12 +656,13 @@ SOFTGL_WIDE void FloatLanesOf(const FragmentOpsState& st, std::uint32_t keep, bo
     }
   } else if constexpr (kBytes == 2) {
     word = __builtin_convertvector((at.template Load<std::uint16_t, typename V<W>::S>()), U);
-    if constexpr (L == TexelLayout::kFloat16x1) d[0] = HalfLanes<W>(word);
+    if constexpr (L == TexelLayout::kFloat16x1) d[0] = decode ? HalfLanes<W>(word) : F{};
     else if constexpr (kUnorm16) d[0] = __builtin_convertvector(word, F) / 65535.0f;
   } else {
     word = at.template Load<std::uint32_t, U>();
     if constexpr (L == TexelLayout::kFloat32x1) {
       d[0] = as_f(word);
+    } else if (!decode) {
     } else if constexpr (L == TexelLayout::kFloat16x2) {
       d[0] = HalfLanes<W>(word & 0xFFFFu);
       d[1] = HalfLanes<W>(word >> 16);
@@ -668,16 +675,14 @@ SOFTGL_WIDE void FloatLanesOf(const FragmentOpsState& st, std::uint32_t keep, bo
       d[2] = HalfLanes<W>((word >> 22) << 5);
     } else if constexpr (kPacked) {
     } else {  // sRGB8_ALPHA8, SRGB8
-      const SrgbLaneTables& t = SrgbLanes();
-      for (int c = 0; c < 3; ++c)
-        for (int l = 0; l < W; ++l) d[c][l] = t.decode[(word[l] >> (8 * c)) & 0xFFu];
+      for (int c = 0; c < 3; ++c) d[c] = TableLanes<W>(srgb.decode, I((word >> (8 * c)) & 0xFFu));
       d[3] = rgb_only ? F{} + 1.0f : __builtin_convertvector(word >> 24, F) / 255.0f;
     }
   }
   if constexpr (kPacked) {
     constexpr PackedUnorm kPacking = PackingOf(L);
     for (int c = 0; c < 4; ++c)
-      if (kPacking.bits[c]) {
+      if (kPacking.bits[c] && decode) {
         const float max = float((1u << kPacking.bits[c]) - 1u);
         d[c] = __builtin_convertvector((word >> kPacking.shift[c]) & ((1u << kPacking.bits[c]) - 1u), F) / max;
       }
@@ -702,7 +707,7 @@ SOFTGL_WIDE void FloatLanesOf(const FragmentOpsState& st, std::uint32_t keep, bo
   // Encoded, through the colour mask.
   if constexpr (kSrgb) {
     U out = U(Unorm8OfLanes<W>(r[3])) << 24;
-    for (int c = 0; c < 3; ++c) out |= U(SrgbEncodeLanes<W>(r[c])) << (8 * c);
+    for (int c = 0; c < 3; ++c) out |= U(SrgbEncodeLanes<W>(srgb, r[c])) << (8 * c);
     out = (word & keep) | (out & ~keep);
     at.template Store<std::uint32_t>(go ? out : word);
     return;
@@ -763,26 +768,26 @@ SOFTGL_WIDE void FloatLanesOf(const FragmentOpsState& st, std::uint32_t keep, bo
   }
 }
 template <int W>
-SOFTGL_WIDE void FloatLanes(const FragmentOpsState& st, std::uint32_t keep, const ColorBuffer& cb,
+SOFTGL_WIDE void FloatLanes(const FragmentOpsState& st, const FragmentOpsPlan& plan, int o, const ColorBuffer& cb,
                             const TexelQuads<W>& at, const typename V<W>::F color[4], typename V<W>::I go) {
   switch (cb.layout) {
-    case TexelLayout::kFloat32x4: return FloatLanesOf<W, TexelLayout::kFloat32x4, false>(st, keep, cb.rgb_only, at, color, go);
-    case TexelLayout::kFloat32x2: return FloatLanesOf<W, TexelLayout::kFloat32x2, false>(st, keep, cb.rgb_only, at, color, go);
-    case TexelLayout::kFloat32x1: return FloatLanesOf<W, TexelLayout::kFloat32x1, false>(st, keep, cb.rgb_only, at, color, go);
-    case TexelLayout::kFloat16x4: return FloatLanesOf<W, TexelLayout::kFloat16x4, false>(st, keep, cb.rgb_only, at, color, go);
-    case TexelLayout::kFloat16x2: return FloatLanesOf<W, TexelLayout::kFloat16x2, false>(st, keep, cb.rgb_only, at, color, go);
-    case TexelLayout::kFloat16x1: return FloatLanesOf<W, TexelLayout::kFloat16x1, false>(st, keep, cb.rgb_only, at, color, go);
+    case TexelLayout::kFloat32x4: return FloatLanesOf<W, TexelLayout::kFloat32x4, false>(st, plan, o, cb.rgb_only, at, color, go);
+    case TexelLayout::kFloat32x2: return FloatLanesOf<W, TexelLayout::kFloat32x2, false>(st, plan, o, cb.rgb_only, at, color, go);
+    case TexelLayout::kFloat32x1: return FloatLanesOf<W, TexelLayout::kFloat32x1, false>(st, plan, o, cb.rgb_only, at, color, go);
+    case TexelLayout::kFloat16x4: return FloatLanesOf<W, TexelLayout::kFloat16x4, false>(st, plan, o, cb.rgb_only, at, color, go);
+    case TexelLayout::kFloat16x2: return FloatLanesOf<W, TexelLayout::kFloat16x2, false>(st, plan, o, cb.rgb_only, at, color, go);
+    case TexelLayout::kFloat16x1: return FloatLanesOf<W, TexelLayout::kFloat16x1, false>(st, plan, o, cb.rgb_only, at, color, go);
     case TexelLayout::kFloat11x11x10:
-      return FloatLanesOf<W, TexelLayout::kFloat11x11x10, false>(st, keep, cb.rgb_only, at, color, go);
-    case TexelLayout::kUnorm565: return FloatLanesOf<W, TexelLayout::kUnorm565, false>(st, keep, cb.rgb_only, at, color, go);
-    case TexelLayout::kUnorm4444: return FloatLanesOf<W, TexelLayout::kUnorm4444, false>(st, keep, cb.rgb_only, at, color, go);
-    case TexelLayout::kUnorm5551: return FloatLanesOf<W, TexelLayout::kUnorm5551, false>(st, keep, cb.rgb_only, at, color, go);
+      return FloatLanesOf<W, TexelLayout::kFloat11x11x10, false>(st, plan, o, cb.rgb_only, at, color, go);
+    case TexelLayout::kUnorm565: return FloatLanesOf<W, TexelLayout::kUnorm565, false>(st, plan, o, cb.rgb_only, at, color, go);
+    case TexelLayout::kUnorm4444: return FloatLanesOf<W, TexelLayout::kUnorm4444, false>(st, plan, o, cb.rgb_only, at, color, go);
+    case TexelLayout::kUnorm5551: return FloatLanesOf<W, TexelLayout::kUnorm5551, false>(st, plan, o, cb.rgb_only, at, color, go);
     case TexelLayout::kUnorm1010102:
-      return FloatLanesOf<W, TexelLayout::kUnorm1010102, false>(st, keep, cb.rgb_only, at, color, go);
-    case TexelLayout::kUnorm16x4: return FloatLanesOf<W, TexelLayout::kUnorm16x4, false>(st, keep, cb.rgb_only, at, color, go);
-    case TexelLayout::kUnorm16x2: return FloatLanesOf<W, TexelLayout::kUnorm16x2, false>(st, keep, cb.rgb_only, at, color, go);
-    case TexelLayout::kUnorm16x1: return FloatLanesOf<W, TexelLayout::kUnorm16x1, false>(st, keep, cb.rgb_only, at, color, go);
-    default: return FloatLanesOf<W, TexelLayout::kUnorm8x4, true>(st, keep, cb.rgb_only, at, color, go);  // sRGB
+      return FloatLanesOf<W, TexelLayout::kUnorm1010102, false>(st, plan, o, cb.rgb_only, at, color, go);
+    case TexelLayout::kUnorm16x4: return FloatLanesOf<W, TexelLayout::kUnorm16x4, false>(st, plan, o, cb.rgb_only, at, color, go);
+    case TexelLayout::kUnorm16x2: return FloatLanesOf<W, TexelLayout::kUnorm16x2, false>(st, plan, o, cb.rgb_only, at, color, go);
+    case TexelLayout::kUnorm16x1: return FloatLanesOf<W, TexelLayout::kUnorm16x1, false>(st, plan, o, cb.rgb_only, at, color, go);
+    default: return FloatLanesOf<W, TexelLayout::kUnorm8x4, true>(st, plan, o, cb.rgb_only, at, color, go);  // sRGB
   }
 }
 
@@ -923,7 +928,7 @@ struct PlaneIo {
       for (int c = 0; c < 4; ++c) color[c] = LoadVec<F>(bb.Color(b, o, c) + l0);
       const TexelQuads<W> at{base, colour_at[o], live(), l0};
       if (path == ColourPath::kUnorm8) Unorm8Lanes<W>(ctx.plan->blend[o], cb, at, color, go);
-      else FloatLanes<W>(*ctx.state, ctx.plan->blend[o].keep, cb, at, color, go);
+      else FloatLanes<W>(*ctx.state, *ctx.plan, o, cb, at, color, go);
     }
   }
 };

@@ -155,6 +155,7 @@ struct FragmentOpsPlan {
   ColourPath path[kMaxColorOutputs] = {};
   int buffers = 0;           // the buffers after the last one with a path have none
   bool one_rgba8 = false;    // colour buffer 0 RGBA8 (or none) and no other: the commonest target, its own code
+  const SrgbLaneTables* srgb = nullptr;  // SrgbLanes(), where an sRGB buffer converts
   bool wide_target = false;  // blocks inside the target take the vector path
 };
 FragmentOpsPlan PlanFragmentOps(const FragmentOpsState& state, const RenderTarget& target);

@@ -286,6 +286,7 @@ const SrgbLaneTables& SrgbLanes() {
       float x;
       std::memcpy(&x, &bits, 4);
       t.start[i] = SrgbEncode8(x);
+      t.next[i] = t.up[t.start[i]];
     }
     return t;
   }();

@@ -125,12 +125,13 @@ std::uint8_t SrgbEncode8(float linear);
 /// above the k-th step between encoded values, so that SrgbEncode8(x), for x in (0, 1), counts the k with
 /// up[k] <= x; up[255] is infinity. start[i] is SrgbEncode8 of the least float whose bits >> 16 are kBucket0 + i
 /// (x in [2^-13, 1), 128 buckets an octave): no bucket holds more than one step, so that the encoding of x is
-/// start[i], plus 1 where x >= up[start[i]].
+/// start[i], plus 1 where x >= next[i] = up[start[i]].
 struct SrgbLaneTables {
   static constexpr int kBucket0 = 0x3900, kBuckets = 0x3F80 - kBucket0;
   float decode[256];
   float up[256];
-  std::uint8_t start[kBuckets];
+  std::int32_t start[kBuckets];
+  float next[kBuckets];
 };
 const SrgbLaneTables& SrgbLanes();
 /// How sampling decodes an sRGB texel's colour byte k (0..255, as a float) into storage units (255 times linear):

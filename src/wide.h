@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <cstring>
+#include <type_traits>
 
 #include <softgl/lanes.h>
 
@@ -92,6 +93,25 @@ __attribute__((target("avx2"))) inline std::uint32_t MaskToBits<8>(V<8>::I m, in
 template <>
 __attribute__((target("avx512f,avx512dq"))) inline std::uint32_t MaskToBits<16>(V<16>::I m, int l0) {
   return std::uint32_t(_mm512_movepi32_mask(__m512i(m))) << l0;
+}
+#endif
+
+/// table[idx[l]] for each lane l (idx within the table): on x86 with AVX2 and AVX-512 one gather instruction, else
+/// lane by lane. T is float or std::int32_t; Vec the lanes of T.
+template <int W, class T, class Vec = std::conditional_t<std::is_same_v<T, float>, typename V<W>::F, typename V<W>::I>>
+SOFTGL_WIDE Vec TableLanes(const T* table, typename V<W>::I idx) {
+  Vec r;
+  for (int l = 0; l < W; ++l) r[l] = table[idx[l]];
+  return r;
+}
+#if defined(SOFTGL_HAS_DISPATCH) && !defined(__clang__)
+template <>
+__attribute__((target("avx2"))) inline V<8>::F TableLanes<8, float>(const float* table, V<8>::I idx) {
+  return V<8>::F(_mm256_i32gather_ps(table, __m256i(idx), 4));
+}
+template <>
+__attribute__((target("avx2"))) inline V<8>::I TableLanes<8, std::int32_t>(const std::int32_t* table, V<8>::I idx) {
+  return V<8>::I(_mm256_i32gather_epi32(reinterpret_cast<const int*>(table), __m256i(idx), 4));
 }
 #endif
 
