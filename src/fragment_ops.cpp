@@ -614,7 +614,7 @@ SOFTGL_WIDE void FloatLanesOf(const FragmentOpsState& st, const FragmentOpsPlan&
   using D = typename V<W>::D;
   using I = typename V<W>::I;
   const std::uint32_t keep = plan.blend[o].keep;
-  const SrgbLaneTables& srgb = *plan.srgb;  // (read for sRGB buffers only)
+  const SrgbLaneTables* const srgb = plan.srgb;  // (set where a buffer is sRGB)
   constexpr bool kFixed = kSrgb || IsWideFixedPoint(L);
   constexpr bool kPacked = IsPackedUnorm(L), kUnorm16 = IsUnorm16(L);
   constexpr int kBytes = BytesPerTexel(L);
@@ -675,7 +675,7 @@ SOFTGL_WIDE void FloatLanesOf(const FragmentOpsState& st, const FragmentOpsPlan&
       d[2] = HalfLanes<W>((word >> 22) << 5);
     } else if constexpr (kPacked) {
     } else {  // sRGB8_ALPHA8, SRGB8
-      for (int c = 0; c < 3; ++c) d[c] = TableLanes<W>(srgb.decode, I((word >> (8 * c)) & 0xFFu));
+      for (int c = 0; c < 3; ++c) d[c] = TableLanes<W>(srgb->decode, I((word >> (8 * c)) & 0xFFu));
       d[3] = rgb_only ? F{} + 1.0f : __builtin_convertvector(word >> 24, F) / 255.0f;
     }
   }
@@ -707,7 +707,7 @@ SOFTGL_WIDE void FloatLanesOf(const FragmentOpsState& st, const FragmentOpsPlan&
   // Encoded, through the colour mask.
   if constexpr (kSrgb) {
     U out = U(Unorm8OfLanes<W>(r[3])) << 24;
-    for (int c = 0; c < 3; ++c) out |= U(SrgbEncodeLanes<W>(srgb, r[c])) << (8 * c);
+    for (int c = 0; c < 3; ++c) out |= U(SrgbEncodeLanes<W>(*srgb, r[c])) << (8 * c);
     out = (word & keep) | (out & ~keep);
     at.template Store<std::uint32_t>(go ? out : word);
     return;
