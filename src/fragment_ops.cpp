@@ -219,6 +219,7 @@ SOFTGL_WIDE typename V<W>::U Blend8Lanes(const Unorm8Blend& b, const typename V<
   using I = typename V<W>::I;
   using U = typename V<W>::U;
   I s[4], d[4];
+#pragma GCC unroll 4
   for (int c = 0; c < 4; ++c) {
     // FloatToUnorm8: NaN and below 0 give 0, 1 and above 255, the rest round(f * 255) to nearest even (adding and
     // subtracting 1.5 * 2^23 rounds, as lrint does, in the default rounding mode).
@@ -230,6 +231,7 @@ SOFTGL_WIDE typename V<W>::U Blend8Lanes(const Unorm8Blend& b, const typename V<
   }
   U out = U{};
   if (!b.blend) {
+#pragma GCC unroll 4
     for (int c = 0; c < 4; ++c) out |= U(s[c]) << (8 * c);
   } else {
     auto factor = [&](const Term& t, int c) SOFTGL_WIDE_LAMBDA -> I {
@@ -389,6 +391,24 @@ SOFTGL_WIDE Vec LoadQuads(const T* base, const QuadPlaces& places, int l0) {
     Vec r;
     std::memcpy(&r, &rows, sizeof r);
     return r;
+  } else if constexpr (sizeof(T) == 8 && (W == 4 || W == 8)) {
+    // 64-bit values: each quad row one 16-byte load, the rows joined in registers (as above).
+    typedef T Pair __attribute__((vector_size(2 * sizeof(T))));
+    typedef T Four __attribute__((vector_size(4 * sizeof(T))));
+    auto quad = [&](int k) SOFTGL_WIDE_LAMBDA {
+      const T* p = base + places.at[l0 / 4 + k];
+      Pair lo, hi;
+      std::memcpy(&lo, p, sizeof lo);
+      std::memcpy(&hi, p + pitch, sizeof hi);
+      return Four(__builtin_shufflevector(lo, hi, 0, 1, 2, 3));
+    };
+    const Four q0 = quad(0);
+    if constexpr (W == 4) {
+      return Vec(q0);
+    } else {
+      const Four q1 = quad(1);
+      return Vec(__builtin_shufflevector(q0, q1, 0, 1, 2, 3, 4, 5, 6, 7));
+    }
   } else {
     T lanes[W];
     for (int k = 0; k < W / 4; ++k) {
@@ -936,7 +956,7 @@ struct PlaneIo {
 // The per-fragment operations on block b (inside the target), W lanes at a time, on every sample plane the lanes
 // cover (kSamples: ctx.depths given). kOne (one RGBA8 buffer or none): the colour converted to bytes once for all
 // the planes.
-template <int W, bool kSamples, bool kOne>
+template <int W, bool kSamples, bool kOne, Enum kDepthFunc = 0, bool kPlain = false>
 SOFTGL_WIDE void BlockOps(const BlockOpsContext& ctx, int b) {
   using F = typename V<W>::F;
   using U = typename V<W>::U;
@@ -952,18 +972,17 @@ SOFTGL_WIDE void BlockOps(const BlockOpsContext& ctx, int b) {
     if (t.color[o].pitch != t.depth_pitch) colour_at[o] = QuadPlaces(bb, b, t.color[o].pitch);
   for (int l0 = 0; l0 < kLanes; l0 += W) {
     if (!((live >> l0) & kChunk)) continue;
-    F color[4] = {};  // kOne (read only where `colour` holds)
-    U packed{};       // kOne, without blending: the colour's bytes through the colour mask
-    if (kOne && buffers > 0) {
-      for (int c = 0; c < 4; ++c) color[c] = LoadVec<F>(bb.Color(b, 0, c) + l0);
-      if (!ctx.blend->blend) packed = Blend8Lanes<W>(*ctx.blend, color, U{});
-    }
+    // kOne: the lanes' colour (read only where `colour` holds; the block buffer's colour is always there to load)
+    F color[4];
+    for (int c = 0; c < 4; ++c) color[c] = kOne ? LoadVec<F>(bb.Color(b, 0, c) + l0) : F{};
+    U packed{};  // kOne, without blending: the colour's bytes through the colour mask
+    if (kOne && buffers > 0 && !ctx.blend->blend) packed = Blend8Lanes<W>(*ctx.blend, color, U{});
     for (int s = 0; s < (kSamples ? ctx.samples : 1); ++s) {
       const std::uint32_t lanes = kSamples ? live & bb.sample_live[b][s] : live;
       if (!((lanes >> l0) & kChunk)) continue;
       const PlaneIo<W, kSamples, kOne> io{ctx, t, depth_at, stencil_at, colour_at, b, s, l0, buffers, buffers > 0,
                                           color, packed};
-      VectorOps<W>(ctx, BitsToMask<W>(lanes, l0), io);
+      VectorOps<W, PlaneIo<W, kSamples, kOne>, kDepthFunc, kPlain>(ctx, BitsToMask<W>(lanes, l0), io);
     }
   }
 }
@@ -1297,11 +1316,25 @@ template <bool kSamples>
 void BlockOpsBase(const BlockOpsContext& ctx, int b) { BlockOpsEither<4, kSamples>(ctx, b); }
 using BlockRangeOpsFn = void (*)(const BlockOpsContext&, int, int);
 // BlockOps<W, false> on blocks b0 to b1 - 1 (those with live lanes), into a single-sampled target.
+template <int W, Enum kDepthFunc, bool kPlain>
+SOFTGL_WIDE void BlockOpsOneRange(const BlockOpsContext& ctx, int b0, int b1) {
+  for (int b = b0; b < b1; ++b)
+    if (ctx.blocks->live[b]) BlockOps<W, false, true, kDepthFunc, kPlain>(ctx, b);
+}
 template <int W>
 SOFTGL_WIDE void BlockOpsRange(const BlockOpsContext& ctx, int b0, int b1) {
   if (ctx.plan->one_rgba8) {
-    for (int b = b0; b < b1; ++b)
-      if (ctx.blocks->live[b]) BlockOps<W, false, true>(ctx, b);
+    // The plainest state with the usual depth comparisons folded at compile time (as for interleaved targets).
+    if (PlainOps(ctx)) {
+      switch (ctx.state->depth_func) {
+        case LESS: return BlockOpsOneRange<W, LESS, true>(ctx, b0, b1);
+        case LEQUAL: return BlockOpsOneRange<W, LEQUAL, true>(ctx, b0, b1);
+        case GREATER: return BlockOpsOneRange<W, GREATER, true>(ctx, b0, b1);
+        case GEQUAL: return BlockOpsOneRange<W, GEQUAL, true>(ctx, b0, b1);
+        default: break;
+      }
+    }
+    BlockOpsOneRange<W, 0, false>(ctx, b0, b1);
   } else {
     for (int b = b0; b < b1; ++b)
       if (ctx.blocks->live[b]) BlockOps<W, false, false>(ctx, b);
