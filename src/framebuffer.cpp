@@ -80,6 +80,33 @@ RenderTarget RenderTarget::Flat() const {
 namespace {
 // Rectangle r of an interleaved target in its Flat() view.
 Rect FlatRect(const Rect& r, int samples) { return Rect{r.x0 * samples, r.y0, r.x1 * samples, r.y1}; }
+
+// Every sample of rectangle r of colour buffer cb (`samples` planes) set to one texel's bytes.
+void FillTexels(ColorBuffer cb, int samples, Rect r, const std::uint8_t* texel) {
+  if (samples > 1 && cb.step == samples && cb.plane == 1) {  // side by side: runs of every sample
+    r = FlatRect(r, samples);
+    samples = 1;
+    cb.step = 1;
+  }
+  const std::size_t bytes = std::size_t(cb.Bytes());
+  if (cb.step != 1) {
+    for (int s = 0; s < samples; ++s)
+      for (int y = r.y0; y < r.y1; ++y)
+        for (int x = r.x0; x < r.x1; ++x)
+          std::memcpy(cb.At(x, y) + cb.plane * std::size_t(s) * bytes, texel, bytes);
+    return;
+  }
+  std::uint8_t run[16 * 16];  // 16 texels of at most 16 bytes
+  for (int k = 0; k < 16; ++k) std::memcpy(run + std::size_t(k) * bytes, texel, bytes);
+  const int width = r.x1 - r.x0;
+  for (int s = 0; s < samples; ++s)
+    for (int y = r.y0; y < r.y1; ++y) {
+      std::uint8_t* row = cb.At(r.x0, y) + cb.plane * std::size_t(s) * bytes;
+      int x = 0;
+      for (; x + 16 <= width; x += 16) std::memcpy(row + std::size_t(x) * bytes, run, 16 * bytes);
+      std::memcpy(row + std::size_t(x) * bytes, run, std::size_t(width - x) * bytes);
+    }
+}
 }  // namespace
 
 glm::vec4 LoadResolved(const ColorBuffer& cb, int samples, int x, int y) {
@@ -102,6 +129,39 @@ glm::vec4 LoadResolved(const ColorBuffer& cb, int samples, int x, int y) {
   return sum / float(samples);
 }
 
+namespace {
+// Where channel c lies in a texel of `layout` (little-endian bits): its first bit and bit count (0: the layout
+// lacks it).
+struct ChannelBits {
+  int shift = 0, bits = 0;
+};
+ChannelBits ChannelBitsOf(TexelLayout l, int c) {
+  switch (l) {
+    case TexelLayout::kUnorm8x4: return {8 * c, 8};
+    case TexelLayout::kUnorm8x2: return c < 2 ? ChannelBits{8 * c, 8} : ChannelBits{};
+    case TexelLayout::kUnorm8x1: return c < 1 ? ChannelBits{0, 8} : ChannelBits{};
+    case TexelLayout::kFloat32x4: return {32 * c, 32};
+    case TexelLayout::kFloat32x2: return c < 2 ? ChannelBits{32 * c, 32} : ChannelBits{};
+    case TexelLayout::kFloat32x1: return c < 1 ? ChannelBits{0, 32} : ChannelBits{};
+    case TexelLayout::kFloat16x4:
+    case TexelLayout::kUnorm16x4: return {16 * c, 16};
+    case TexelLayout::kFloat16x2:
+    case TexelLayout::kUnorm16x2: return c < 2 ? ChannelBits{16 * c, 16} : ChannelBits{};
+    case TexelLayout::kFloat16x1:
+    case TexelLayout::kUnorm16x1: return c < 1 ? ChannelBits{0, 16} : ChannelBits{};
+    case TexelLayout::kFloat11x11x10: return c < 3 ? ChannelBits{11 * c, c < 2 ? 11 : 10} : ChannelBits{};
+    case TexelLayout::kUnorm565:
+    case TexelLayout::kUnorm4444:
+    case TexelLayout::kUnorm5551:
+    case TexelLayout::kUnorm1010102: {
+      const PackedUnorm p = PackingOf(l);
+      return {p.shift[c], p.bits[c]};
+    }
+    default: return {};
+  }
+}
+}  // namespace
+
 void RenderTarget::ClearColor(const Rect& r, const glm::vec4& value, const bool mask[4]) const {
   if (interleaved) return Flat().ClearColor(FlatRect(r, samples), value, mask);
   if (samples > 1) {
@@ -110,38 +170,38 @@ void RenderTarget::ClearColor(const Rect& r, const glm::vec4& value, const bool 
   }
   for (const ColorBuffer& cb : color) {
     if (!cb.Present() || r.Empty()) continue;
-    if (cb.layout == TexelLayout::kUnorm8x4 && cb.step == 1) {
-      // The pixel is converted once, then stored row by row as 32-bit words through the mask.
-      std::uint8_t px[4], keep_bytes[4];
-      for (int k = 0; k < 4; ++k) {
-        px[k] = cb.srgb && k < 3 ? SrgbEncode8(value[k]) : FloatToUnorm8(value[k]);
-        keep_bytes[k] = mask[k] && !(k == 3 && cb.rgb_only) ? 0x00 : 0xFF;
-      }
-      std::uint32_t word, keep;
-      std::memcpy(&word, px, 4);
-      std::memcpy(&keep, keep_bytes, 4);
-      std::uint8_t run[64];  // 16 pixels
-      for (int k = 0; k < 16; ++k) std::memcpy(run + 4 * k, &word, 4);
-      const int width = r.x1 - r.x0;
-      for (int y = r.y0; y < r.y1; ++y) {
-        std::uint8_t* row = cb.At(r.x0, y);
-        if (keep == 0) {  // every channel written: copies of 16 pixels, then the rest
-          int x = 0;
-          for (; x + 16 <= width; x += 16) std::memcpy(row + 4 * x, run, 64);
-          std::memcpy(row + 4 * x, run, std::size_t(4 * (width - x)));
-          continue;
-        }
-        for (int x = 0; x < width; ++x) {
-          std::uint32_t old;
-          std::memcpy(&old, row + 4 * x, 4);
-          const std::uint32_t out = (old & keep) | (word & ~keep);
-          std::memcpy(row + 4 * x, &out, 4);
-        }
-      }
+    // The texel is encoded once (Store's conversion), with the bits the colour mask keeps (and an RGB buffer's
+    // unstored alpha byte); then whole rows are filled, or merged through those bits 16 bytes at a time.
+    const std::size_t bytes = std::size_t(cb.Bytes());
+    std::uint8_t texel[16] = {}, keep[16] = {};
+    ColorBuffer one = cb;
+    one.data = texel;
+    const bool all[4] = {true, true, true, true};
+    one.Store(0, 0, value, all);
+    bool any_kept = false;
+    for (int c = 0; c < 4; ++c) {
+      if (mask[c] && !(c == 3 && cb.rgb_only)) continue;
+      const ChannelBits ch = ChannelBitsOf(cb.layout, c);
+      for (int bit = ch.shift; bit < ch.shift + ch.bits; ++bit) keep[bit / 8] |= std::uint8_t(1u << (bit % 8));
+      any_kept = any_kept || ch.bits > 0;
+    }
+    if (!any_kept) {
+      FillTexels(cb, 1, r, texel);
       continue;
     }
-    for (int y = r.y0; y < r.y1; ++y)
-      for (int x = r.x0; x < r.x1; ++x) cb.Store(x, y, value, mask);
+    std::uint8_t value16[16], keep16[16];  // the texel and its kept bits repeated over 16 bytes
+    for (std::size_t k = 0; k < 16; ++k) {
+      value16[k] = std::uint8_t(texel[k % bytes] & ~keep[k % bytes]);
+      keep16[k] = keep[k % bytes];
+    }
+    const std::size_t n = std::size_t(r.x1 - r.x0) * bytes;
+    for (int y = r.y0; y < r.y1; ++y) {
+      std::uint8_t* row = cb.At(r.x0, y);
+      std::size_t i = 0;
+      for (; i + 16 <= n; i += 16)
+        for (std::size_t k = 0; k < 16; ++k) row[i + k] = std::uint8_t((row[i + k] & keep16[k]) | value16[k]);
+      for (; i < n; ++i) row[i] = std::uint8_t((row[i] & keep16[i % 16]) | value16[i % 16]);
+    }
   }
 }
 
@@ -451,36 +511,6 @@ RenderTarget Framebuffer::ReadTarget(bool srgb_enabled, unsigned buffers) {
   return out;
 }
 
-namespace {
-
-// Every sample of rectangle r of colour buffer cb (`samples` planes) set to one texel's bytes.
-void FillTexels(ColorBuffer cb, int samples, Rect r, const std::uint8_t* texel) {
-  if (samples > 1 && cb.step == samples && cb.plane == 1) {  // side by side: runs of every sample
-    r = FlatRect(r, samples);
-    samples = 1;
-    cb.step = 1;
-  }
-  const std::size_t bytes = std::size_t(cb.Bytes());
-  if (cb.step != 1) {
-    for (int s = 0; s < samples; ++s)
-      for (int y = r.y0; y < r.y1; ++y)
-        for (int x = r.x0; x < r.x1; ++x)
-          std::memcpy(cb.At(x, y) + cb.plane * std::size_t(s) * bytes, texel, bytes);
-    return;
-  }
-  std::uint8_t run[16 * 16];  // 16 texels of at most 16 bytes
-  for (int k = 0; k < 16; ++k) std::memcpy(run + std::size_t(k) * bytes, texel, bytes);
-  const int width = r.x1 - r.x0;
-  for (int s = 0; s < samples; ++s)
-    for (int y = r.y0; y < r.y1; ++y) {
-      std::uint8_t* row = cb.At(r.x0, y) + cb.plane * std::size_t(s) * bytes;
-      int x = 0;
-      for (; x + 16 <= width; x += 16) std::memcpy(row + std::size_t(x) * bytes, run, 16 * bytes);
-      std::memcpy(row + std::size_t(x) * bytes, run, std::size_t(width - x) * bytes);
-    }
-}
-
-}  // namespace
 
 void SampleTiles::Reset(int width, int height) {
   cols = (std::max(width, 0) + kSize - 1) / kSize;

@@ -3,6 +3,8 @@
 #include <catch2/catch.hpp>
 
 #include <cstdint>
+#include <iterator>
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -673,4 +675,68 @@ TEST_CASE("SampleTiles: a deferred clear fills the resolve without its samples u
     CHECK(tile.cleared == 0);
     CHECK(tile.stale == detail::kAllBuffers);
   }
+}
+
+TEST_CASE("ClearColor of every colour format: the texel Store writes, through the colour mask, inside the rectangle",
+          "[framebuffer][formats]") {
+  using detail::TexelLayout;
+  struct Format {
+    TexelLayout layout;
+    bool rgb_only = false, srgb = false;
+  };
+  const Format formats[] = {{TexelLayout::kUnorm8x4}, {TexelLayout::kUnorm8x4, true}, {TexelLayout::kUnorm8x2},
+                            {TexelLayout::kUnorm8x1}, {TexelLayout::kUnorm8x4, false, true},
+                            {TexelLayout::kUnorm8x4, true, true}, {TexelLayout::kFloat32x4}, {TexelLayout::kFloat32x2},
+                            {TexelLayout::kFloat32x1}, {TexelLayout::kFloat16x4}, {TexelLayout::kFloat16x2},
+                            {TexelLayout::kFloat16x1}, {TexelLayout::kFloat11x11x10}, {TexelLayout::kUnorm565},
+                            {TexelLayout::kUnorm4444}, {TexelLayout::kUnorm5551}, {TexelLayout::kUnorm1010102},
+                            {TexelLayout::kUnorm16x4}, {TexelLayout::kUnorm16x2}, {TexelLayout::kUnorm16x1}};
+  const float specials[] = {0.0f, -0.0f, 1.0f, -1.0f, 0.5f, 1e30f, -1e30f, std::numeric_limits<float>::infinity(),
+                            std::numeric_limits<float>::quiet_NaN(), 3e-5f, 65504.0f, 0.2f};
+  std::uint32_t seed = 7;
+  auto next = [&] { return seed = seed * 1664525u + 1013904223u; };
+  auto random_value = [&] {
+    const std::uint32_t r = next();
+    return (r & 3u) == 0 ? specials[(r >> 2) % std::size(specials)] : float(int(r >> 8) % 4001 - 1000) / 1000.0f;
+  };
+  int compared = 0;
+  for (int round = 0; round < 400; ++round) {
+    const Format& f = formats[std::size_t(round) % std::size(formats)];
+    const int w = 1 + int(next() % 37), h = 1 + int(next() % 5);
+    detail::RenderTarget t;
+    t.width = w;
+    t.height = h;
+    detail::ColorBuffer& cb = t.color[0];
+    cb.layout = f.layout;
+    cb.rgb_only = f.rgb_only;
+    cb.srgb = f.srgb;
+    cb.pitch = w + int(next() % 3);
+    std::vector<std::uint8_t> bytes(std::size_t(cb.pitch) * std::size_t(h) * std::size_t(cb.Bytes()));
+    cb.data = bytes.data();
+    // Texels as Store leaves them (random colours), so that the reference's re-encoding of the kept channels
+    // keeps their bits.
+    const bool all[4] = {true, true, true, true};
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x)
+        cb.Store(x, y, glm::vec4(random_value(), random_value(), random_value(), random_value()), all);
+    std::vector<std::uint8_t> expected = bytes;
+    const std::uint32_t m = next();
+    const bool mask[4] = {(m & 1u) != 0, (m & 2u) != 0, (m & 4u) != 0, (m & 8u) != 0 || (m & 16u) != 0};
+    const glm::vec4 value(random_value(), random_value(), random_value(), random_value());
+    detail::Rect r;
+    r.x0 = int(next() % std::uint32_t(w));
+    r.x1 = r.x0 + 1 + int(next() % std::uint32_t(w - r.x0));
+    r.y0 = int(next() % std::uint32_t(h));
+    r.y1 = r.y0 + 1 + int(next() % std::uint32_t(h - r.y0));
+    if (round % 4 == 0) r = detail::Rect{0, 0, w, h};
+    detail::ColorBuffer reference = cb;
+    reference.data = expected.data();
+    for (int y = r.y0; y < r.y1; ++y)
+      for (int x = r.x0; x < r.x1; ++x) reference.Store(x, y, value, mask);
+    t.ClearColor(r, value, mask);
+    INFO("round " << round << ", layout " << int(f.layout) << ", " << w << " x " << h << ", mask " << (m & 15u));
+    CHECK(bytes == expected);
+    ++compared;
+  }
+  CHECK(compared == 400);
 }
