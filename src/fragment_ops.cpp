@@ -655,14 +655,13 @@ SOFTGL_WIDE void FloatLanesOf(const FragmentOpsState& st, const FragmentOpsPlan&
   F d[4] = {F{}, F{}, F{}, F{} + 1.0f};
   U word{};
   D dword{};
-  glm::vec4 quad_texels[W];  // kFloat32x4: the texels as they are stored
+  // kFloat32x4: lane k's texel, in quad row k / 2 of the block's quads
+  auto texel_at = [&](int k) SOFTGL_WIDE_LAMBDA {
+    float* p = reinterpret_cast<float*>(at.base) + 4 * at.at.at[at.l0 / 4 + k / 4];
+    return p + 4 * (std::size_t((k >> 1) & 1) * at.at.pitch + std::size_t(k & 1));
+  };
   if constexpr (L == TexelLayout::kFloat32x4) {
-    for (int q = 0; q < W / 4; ++q) {
-      const auto* p = reinterpret_cast<const glm::vec4*>(at.base) + at.at.at[at.l0 / 4 + q];
-      std::memcpy(&quad_texels[4 * q], p, 2 * sizeof(glm::vec4));
-      std::memcpy(&quad_texels[4 * q + 2], p + at.at.pitch, 2 * sizeof(glm::vec4));
-    }
-    LoadComponents<W>(quad_texels, d);
+    LoadComponentsAt<W>(texel_at, d);
   } else if constexpr (kBytes == 8) {
     dword = at.template Load<std::uint64_t, D>();
     if constexpr (L == TexelLayout::kFloat32x2) {
@@ -758,14 +757,9 @@ SOFTGL_WIDE void FloatLanesOf(const FragmentOpsState& st, const FragmentOpsPlan&
     at.template Store<std::uint16_t>(__builtin_convertvector(go ? fixed(r[0], 65535.0f) : word, typename V<W>::S));
   } else if constexpr (L == TexelLayout::kFloat32x4) {
     for (int c = 0; c < 4; ++c) r[c] = go ? r[c] : d[c];
-    for (int q = 0; q < W / 4; ++q) {
-      if (!((at.live >> (at.l0 + 4 * q)) & 0xFu)) continue;
-      glm::vec4 texels[4];
-      for (int i = 0; i < 4; ++i) texels[i] = glm::vec4(r[0][4 * q + i], r[1][4 * q + i], r[2][4 * q + i], r[3][4 * q + i]);
-      auto* p = reinterpret_cast<glm::vec4*>(at.base) + at.at.at[at.l0 / 4 + q];
-      std::memcpy(p, &texels[0], 2 * sizeof(glm::vec4));
-      std::memcpy(p + at.at.pitch, &texels[2], 2 * sizeof(glm::vec4));
-    }
+    unsigned quads = 0;  // those with a live lane (StoreQuads)
+    for (int q = 0; q < W / 4; ++q) quads |= ((at.live >> (at.l0 + 4 * q)) & 0xFu) ? 1u << q : 0u;
+    StoreComponentsAt<W>(texel_at, r, quads);
   } else if constexpr (L == TexelLayout::kFloat32x2) {
     const D out = __builtin_convertvector(as_u(r[0]), D) | (__builtin_convertvector(as_u(r[1]), D) << 32);
     at.template Store<std::uint64_t>(__builtin_convertvector(go, D) != 0 ? out : dword);

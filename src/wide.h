@@ -125,13 +125,14 @@ SOFTGL_WIDE std::uint32_t SignBits(typename V<W>::I v, int l0 = 0) {
 #endif
 }
 
-/// The components of p[0 .. W - 1] as four vectors: c[0] the x of each, c[1] the y, c[2] the z, c[3] the w. With 4
-/// and 8 lanes, 4x4 transposes by shuffles (within each 128-bit half for 8); with 16, lane by lane.
-template <int W>
-SOFTGL_WIDE void LoadComponents(const glm::vec4* p, typename V<W>::F (&c)[4]) {
+/// The components of W texels as four vectors: c[0] the x of each, c[1] the y, c[2] the z, c[3] the w; texel k
+/// at at(k), where texels 2 j and 2 j + 1 lie side by side (a quad row). With 4 and 8 lanes, 4x4 transposes by
+/// shuffles (within each 128-bit half for 8); with 16, lane by lane.
+template <int W, class At>
+SOFTGL_WIDE void LoadComponentsAt(At&& at, typename V<W>::F (&c)[4]) {
   using F = typename V<W>::F;
   if constexpr (W == 4) {
-    const F r0 = LoadVec<F>(&p[0]), r1 = LoadVec<F>(&p[1]), r2 = LoadVec<F>(&p[2]), r3 = LoadVec<F>(&p[3]);
+    const F r0 = LoadVec<F>(at(0)), r1 = LoadVec<F>(at(1)), r2 = LoadVec<F>(at(2)), r3 = LoadVec<F>(at(3));
     const F t0 = __builtin_shufflevector(r0, r1, 0, 4, 1, 5), t1 = __builtin_shufflevector(r2, r3, 0, 4, 1, 5);
     const F t2 = __builtin_shufflevector(r0, r1, 2, 6, 3, 7), t3 = __builtin_shufflevector(r2, r3, 2, 6, 3, 7);
     c[0] = __builtin_shufflevector(t0, t1, 0, 1, 4, 5);
@@ -139,8 +140,8 @@ SOFTGL_WIDE void LoadComponents(const glm::vec4* p, typename V<W>::F (&c)[4]) {
     c[2] = __builtin_shufflevector(t2, t3, 0, 1, 4, 5);
     c[3] = __builtin_shufflevector(t2, t3, 2, 3, 6, 7);
   } else if constexpr (W == 8) {
-    // Pairs of positions: a = (p0, p1), b = (p2, p3), d = (p4, p5), e = (p6, p7); then (p0, p4), (p1, p5), ...
-    const F a = LoadVec<F>(&p[0]), b = LoadVec<F>(&p[2]), d = LoadVec<F>(&p[4]), e = LoadVec<F>(&p[6]);
+    // Pairs of texels: a = (p0, p1), b = (p2, p3), d = (p4, p5), e = (p6, p7); then (p0, p4), (p1, p5), ...
+    const F a = LoadVec<F>(at(0)), b = LoadVec<F>(at(2)), d = LoadVec<F>(at(4)), e = LoadVec<F>(at(6));
     const F r04 = __builtin_shufflevector(a, d, 0, 1, 2, 3, 8, 9, 10, 11);
     const F r15 = __builtin_shufflevector(a, d, 4, 5, 6, 7, 12, 13, 14, 15);
     const F r26 = __builtin_shufflevector(b, e, 0, 1, 2, 3, 8, 9, 10, 11);
@@ -156,9 +157,51 @@ SOFTGL_WIDE void LoadComponents(const glm::vec4* p, typename V<W>::F (&c)[4]) {
   } else {
     for (int k = 0; k < 4; ++k) {
       F v{};
-      for (int l = 0; l < W; ++l) v[l] = p[l][k];
+      for (int l = 0; l < W; ++l) v[l] = at(l)[k];
       c[k] = v;
     }
+  }
+}
+/// The components of p[0 .. W - 1] (LoadComponentsAt).
+template <int W>
+SOFTGL_WIDE void LoadComponents(const glm::vec4* p, typename V<W>::F (&c)[4]) {
+  LoadComponentsAt<W>([p](int k) SOFTGL_WIDE_LAMBDA { return &p[k][0]; }, c);
+}
+/// The inverse of LoadComponentsAt: texel k of the four component vectors c stored at at(k) (texels 2 j and 2 j + 1
+/// side by side), for the texels k whose group of four (bit k / 4 of `quads`) is chosen.
+template <int W, class At>
+SOFTGL_WIDE void StoreComponentsAt(At&& at, const typename V<W>::F (&c)[4], unsigned quads = ~0u) {
+  using F = typename V<W>::F;
+  if constexpr (W == 4) {
+    const F t0 = __builtin_shufflevector(c[0], c[1], 0, 4, 1, 5), t1 = __builtin_shufflevector(c[2], c[3], 0, 4, 1, 5);
+    const F t2 = __builtin_shufflevector(c[0], c[1], 2, 6, 3, 7), t3 = __builtin_shufflevector(c[2], c[3], 2, 6, 3, 7);
+    if (!(quads & 1u)) return;
+    StoreVec(at(0), F(__builtin_shufflevector(t0, t1, 0, 1, 4, 5)));
+    StoreVec(at(1), F(__builtin_shufflevector(t0, t1, 2, 3, 6, 7)));
+    StoreVec(at(2), F(__builtin_shufflevector(t2, t3, 0, 1, 4, 5)));
+    StoreVec(at(3), F(__builtin_shufflevector(t2, t3, 2, 3, 6, 7)));
+  } else if constexpr (W == 8) {
+    // Within each 128-bit half (lanes 0-3, then 4-7): x y interleaved, z w interleaved, then texel pairs.
+    const F xy_lo = __builtin_shufflevector(c[0], c[1], 0, 8, 1, 9, 4, 12, 5, 13);
+    const F zw_lo = __builtin_shufflevector(c[2], c[3], 0, 8, 1, 9, 4, 12, 5, 13);
+    const F xy_hi = __builtin_shufflevector(c[0], c[1], 2, 10, 3, 11, 6, 14, 7, 15);
+    const F zw_hi = __builtin_shufflevector(c[2], c[3], 2, 10, 3, 11, 6, 14, 7, 15);
+    const F p04 = __builtin_shufflevector(xy_lo, zw_lo, 0, 1, 8, 9, 4, 5, 12, 13);   // texels 0, 4
+    const F p15 = __builtin_shufflevector(xy_lo, zw_lo, 2, 3, 10, 11, 6, 7, 14, 15);  // texels 1, 5
+    const F p26 = __builtin_shufflevector(xy_hi, zw_hi, 0, 1, 8, 9, 4, 5, 12, 13);    // texels 2, 6
+    const F p37 = __builtin_shufflevector(xy_hi, zw_hi, 2, 3, 10, 11, 6, 7, 14, 15);  // texels 3, 7
+    if (quads & 1u) {
+      StoreVec(at(0), F(__builtin_shufflevector(p04, p15, 0, 1, 2, 3, 8, 9, 10, 11)));
+      StoreVec(at(2), F(__builtin_shufflevector(p26, p37, 0, 1, 2, 3, 8, 9, 10, 11)));
+    }
+    if (quads & 2u) {
+      StoreVec(at(4), F(__builtin_shufflevector(p04, p15, 4, 5, 6, 7, 12, 13, 14, 15)));
+      StoreVec(at(6), F(__builtin_shufflevector(p26, p37, 4, 5, 6, 7, 12, 13, 14, 15)));
+    }
+  } else {
+    for (int l = 0; l < W; ++l)
+      if ((quads >> (l / 4)) & 1u)
+        for (int k = 0; k < 4; ++k) at(l)[k] = c[k][l];
   }
 }
 

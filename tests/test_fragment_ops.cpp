@@ -856,12 +856,16 @@ TEST_CASE("every colour format, draw buffer set and depth-stencil state: the blo
     blocks->count = 4;
     blocks->front_facing = next() % 2;
     for (int b = 0; b < 4; ++b) {
-      blocks->quads[b] = 4;
-      for (int q = 0; q < 4; ++q) {  // block b: the quads of rows 2b and 2b + 1, in a scrambled order
-        blocks->qx[b][q] = ((q + b) % 4) * 2;
+      // Block b: the quads of rows 2b and 2b + 1, in a scrambled order; sometimes fewer than four, the unused ones
+      // at the first one's place without live lanes (as the rasterizer leaves them).
+      const int quads = next() % 4 == 0 ? 1 + int(next() % 3) : 4;
+      blocks->quads[b] = quads;
+      for (int q = 0; q < 4; ++q) {
+        blocks->qx[b][q] = (((q < quads ? q : 0) + b) % 4) * 2;
         blocks->qy[b][q] = 2 * b;
       }
       blocks->live[b] = next() % 3 == 0 ? 0xFFFFu : next() & 0xFFFFu;
+      blocks->live[b] &= (1u << (4 * quads)) - 1u;
       for (int l = 0; l < softgl::kLanes; ++l) {
         blocks->frag_coord[b][2][l] = value(-0.1f, 1.1f);
         for (int o = 0; o < kMaxColorOutputs; ++o)
