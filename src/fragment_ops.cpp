@@ -597,7 +597,7 @@ SOFTGL_WIDE void BlendFloatLanes(const BlendState& st, const glm::vec4& k, const
   }
 }
 
-// SrgbEncode8 for W lanes, by the bucket tables (SrgbLaneTables): two gathers by the bucket.
+// SrgbEncode8 for W lanes, by the bucket table (SrgbLaneTables): one gather by the bucket.
 template <int W>
 SOFTGL_WIDE typename V<W>::I SrgbEncodeLanes(const SrgbLaneTables& t, typename V<W>::F x) {
   using I = typename V<W>::I;
@@ -606,8 +606,9 @@ SOFTGL_WIDE typename V<W>::I SrgbEncodeLanes(const SrgbLaneTables& t, typename V
   I i = (bits >> 16) - SrgbLaneTables::kBucket0;
   i = i > 0 ? i : I{};
   i = i < SrgbLaneTables::kBuckets - 1 ? i : I{} + (SrgbLaneTables::kBuckets - 1);
-  I k = TableLanes<W>(t.start, i);
-  k -= x >= TableLanes<W>(t.next, i);  // (a comparison is -1 where it holds)
+  const I bucket = TableLanes<W>(t.bucket, i);
+  I k = bucket & 0xFF;
+  k -= (bits & 0xFFFF) >= (bucket >> 8);  // (a comparison is -1 where it holds)
   k = x > 0.0f ? k : I{};  // NaN too
   return x >= 1.0f ? I{} + 255 : k;
 }

@@ -285,8 +285,11 @@ const SrgbLaneTables& SrgbLanes() {
       const std::uint32_t bits = std::uint32_t(SrgbLaneTables::kBucket0 + i) << 16;
       float x;
       std::memcpy(&x, &bits, 4);
-      t.start[i] = SrgbEncode8(x);
-      t.next[i] = t.up[t.start[i]];
+      const int start = SrgbEncode8(x);
+      std::uint32_t next;  // the step above, if inside the bucket
+      std::memcpy(&next, &t.up[start], 4);
+      const std::uint32_t low = (next >> 16) == (bits >> 16) ? next & 0xFFFFu : 0x10000u;
+      t.bucket[i] = std::int32_t(std::uint32_t(start) | (low << 8));
     }
     return t;
   }();

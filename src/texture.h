@@ -123,15 +123,16 @@ float SrgbDecode8(std::uint8_t k);
 std::uint8_t SrgbEncode8(float linear);
 /// The tables vector code converts sRGB by. decode[k] is SrgbDecode8(k). up[k] (k < 255) is the least float at or
 /// above the k-th step between encoded values, so that SrgbEncode8(x), for x in (0, 1), counts the k with
-/// up[k] <= x; up[255] is infinity. start[i] is SrgbEncode8 of the least float whose bits >> 16 are kBucket0 + i
-/// (x in [2^-13, 1), 128 buckets an octave): no bucket holds more than one step, so that the encoding of x is
-/// start[i], plus 1 where x >= next[i] = up[start[i]].
+/// up[k] <= x; up[255] is infinity. The buckets: every float whose bits >> 16 are kBucket0 + i (x in [2^-13, 1),
+/// 128 buckets an octave). No bucket holds more than one step, and a step inside bucket i shares its top 16 bits,
+/// so that one word tells the encoding of any x in it: bucket[i] & 0xFF is SrgbEncode8 of the bucket's least float,
+/// and bucket[i] >> 8 the low 16 bits of the step's up[] inside the bucket (0x10000 where none is), 1 more where
+/// x's low 16 bits reach it. (Bucket 0 holds no step, so that smaller x may take it too.)
 struct SrgbLaneTables {
   static constexpr int kBucket0 = 0x3900, kBuckets = 0x3F80 - kBucket0;
   float decode[256];
   float up[256];
-  std::int32_t start[kBuckets];
-  float next[kBuckets];
+  std::int32_t bucket[kBuckets];
 };
 const SrgbLaneTables& SrgbLanes();
 /// How sampling decodes an sRGB texel's colour byte k (0..255, as a float) into storage units (255 times linear):

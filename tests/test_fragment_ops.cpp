@@ -1,6 +1,7 @@
 // Per-fragment operations: depth comparisons, depth writes and masks, colour conversion.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <array>
 #include <atomic>
 #include <memory>
@@ -910,6 +911,20 @@ TEST_CASE("sRGB encoding in the block path: every step between two codes, on bot
     values.push_back(x);
     values.push_back(std::nextafter(x, 0.0f));
   }
+  for (const float x : {1e-5f, 1e-20f, 1e-38f, 1e-45f, 1.2e-4f, 0.99999994f})  // below the buckets, and the top
+    values.push_back(x);
+  // What the bucket table rests on: at most one step a bucket, none in bucket 0 (which smaller values take too).
+  std::vector<int> steps(detail::SrgbLaneTables::kBuckets);
+  for (int k = 0; k < 255; ++k) {
+    std::uint32_t bits;
+    std::memcpy(&bits, &tables.up[k], 4);
+    const int i = int(bits >> 16) - detail::SrgbLaneTables::kBucket0;
+    REQUIRE(i >= 0);
+    REQUIRE(i < detail::SrgbLaneTables::kBuckets);
+    ++steps[std::size_t(i)];
+  }
+  CHECK(steps[0] == 0);
+  CHECK(*std::max_element(steps.begin(), steps.end()) == 1);
   auto blocks = std::make_unique<detail::BlockBuffer>();
   std::size_t at = 0;
   int checked = 0;
