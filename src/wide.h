@@ -233,10 +233,16 @@ SOFTGL_WIDE typename V<W>::F HalfLanes(typename V<W>::U h) {
   return f;
 }
 #if defined(SOFTGL_HAS_DISPATCH) && !defined(__clang__)
-// With AVX-512, one conversion instruction (VCVTPH2PS, exact, a NaN made quiet).
+// With AVX-512, one conversion instruction (VCVTPH2PS, exact, a NaN made quiet); 8 lanes by F16C's (the AVX2 and
+// AVX-512 levels have it), the halves packed to 16 bits first.
 template <>
 __attribute__((target("avx512f"))) inline V<16>::F HalfLanes<16>(V<16>::U h) {
   return V<16>::F(_mm512_cvtph_ps(_mm512_cvtepi32_epi16(__m512i(h))));
+}
+template <>
+__attribute__((target("avx2,f16c"))) inline V<8>::F HalfLanes<8>(V<8>::U h) {
+  const __m256i packed = _mm256_packus_epi32(__m256i(h & 0xFFFFu), _mm256_setzero_si256());  // 0-3, -, 4-7, -
+  return V<8>::F(_mm256_cvtph_ps(_mm256_castsi256_si128(_mm256_permute4x64_epi64(packed, 0x08))));
 }
 #endif
 
@@ -269,6 +275,18 @@ SOFTGL_WIDE typename V<W>::U HalfBitsLanes(typename V<W>::F f) {
   const U h = a > 0x7F800000u ? U{} + 0x7E00u : MagnitudeBitsLanes<W, 10>(a);
   return ((x >> 16) & 0x8000u) | h;
 }
+#if defined(SOFTGL_HAS_DISPATCH) && !defined(__clang__)
+// 8 lanes by F16C's VCVTPS2PH (round to nearest even, overflow to infinity, as FloatToHalf); a NaN keeps the top
+// of its payload there, so NaNs are set to 0x7E00 after.
+template <>
+__attribute__((target("avx2,f16c"))) inline V<8>::U HalfBitsLanes<8>(V<8>::F f) {
+  using U = V<8>::U;
+  const U h = U(_mm256_cvtepu16_epi32(_mm256_cvtps_ph(__m256(f), _MM_FROUND_TO_NEAREST_INT)));
+  U x;
+  std::memcpy(&x, &f, sizeof x);
+  return (x & 0x7FFFFFFFu) > 0x7F800000u ? ((x >> 16) & 0x8000u) | 0x7E00u : h;
+}
+#endif
 
 /// FloatToUnsignedSmall for W lanes, M mantissa bits: NaN as (31 << M) | 1, negative values and zeros as 0.
 template <int W, int M>

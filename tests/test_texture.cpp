@@ -18,6 +18,8 @@
 #include "framebuffer.h"
 #include "image_io.h"
 #include "texture.h"
+#include "simd.h"
+#include "wide.h"
 
 using namespace softgl;
 using detail::TextureObject;
@@ -1169,6 +1171,64 @@ TEST_CASE("half floats and the unsigned 11- and 10-bit floats convert as IEEE ro
   CHECK(detail::UnsignedSmallToFloat((30u << 6) | 63u, 6) == 65024.0f);  // the largest 11-bit value
   CHECK(detail::UnsignedSmallToFloat((30u << 5) | 31u, 5) == 64512.0f);  // and 10-bit
 }
+
+#if defined(SOFTGL_HAS_DISPATCH) && !defined(__clang__)
+namespace {
+// The vector half conversions as the AVX2 and AVX-512 levels compile them with GCC (F16C's instructions: src/wide.h),
+// 8 lanes.
+SOFTGL_TARGET_AVX2 void HalvesToFloatsAvx2(const std::uint32_t* h, float* f) {
+  detail::V<8>::U in;
+  std::memcpy(&in, h, sizeof in);
+  const detail::V<8>::F out = detail::HalfLanes<8>(in);
+  std::memcpy(f, &out, sizeof out);
+}
+SOFTGL_TARGET_AVX2 void FloatsToHalvesAvx2(const float* f, std::uint32_t* h) {
+  detail::V<8>::F in;
+  std::memcpy(&in, f, sizeof in);
+  const detail::V<8>::U out = detail::HalfBitsLanes<8>(in);
+  std::memcpy(h, &out, sizeof out);
+}
+}  // namespace
+
+TEST_CASE("the vector half conversions give FloatToHalf's and HalfToFloat's bits, NaNs included", "[texture][float]") {
+  if (detail::CpuSimdLevel() == detail::SimdLevel::kBaseline) return;  // (SSE2: the generic lanes, tested above)
+  int compared = 0;
+  for (std::uint32_t h0 = 0; h0 < 65536; h0 += 8) {  // every half
+    std::uint32_t h[8];
+    float f[8];
+    for (std::uint32_t k = 0; k < 8; ++k) h[k] = h0 + k;
+    HalvesToFloatsAvx2(h, f);
+    for (int k = 0; k < 8; ++k) {
+      const float want = detail::HalfToFloat(std::uint16_t(h[k]));
+      if (std::memcmp(&want, &f[k], 4) != 0) FAIL("half 0x" << std::hex << h[k]);
+      ++compared;
+    }
+  }
+  // Floats: a sweep over every exponent, ties and the edges of the halves' range, infinities and NaNs of every
+  // payload and sign.
+  std::vector<std::uint32_t> bits = {0x00000000u, 0x80000000u, 0x7F800000u, 0xFF800000u, 0x7F800001u, 0xFF800001u,
+                                     0x7FC00000u, 0xFFC00000u, 0x7FFFFFFFu, 0xFFFFFFFFu, 0x7FA00000u, 0x7F802000u,
+                                     0x477FE000u, 0x477FEFFFu, 0x477FF000u, 0x38800000u, 0x387FFFFFu, 0x33800000u,
+                                     0x33000000u, 0x33000001u, 0x3F801000u, 0x3F803000u};
+  std::uint32_t seed = 99;
+  for (int i = 0; i < 100000; ++i) {
+    seed = seed * 1664525u + 1013904223u;
+    bits.push_back(seed);
+  }
+  while (bits.size() % 8) bits.push_back(0x3F800000u);
+  for (std::size_t i = 0; i < bits.size(); i += 8) {
+    float f[8];
+    std::uint32_t h[8];
+    std::memcpy(f, &bits[i], sizeof f);
+    FloatsToHalvesAvx2(f, h);
+    for (int k = 0; k < 8; ++k) {
+      if (h[k] != detail::FloatToHalf(f[k])) FAIL("float bits 0x" << std::hex << bits[i + std::size_t(k)]);
+      ++compared;
+    }
+  }
+  CHECK(compared == 65536 + int(bits.size()));
+}
+#endif
 
 TEST_CASE("float render targets keep values outside [0, 1] and blend in float", "[framebuffer][float]") {
   struct Case {

@@ -44,8 +44,9 @@ namespace softgl {
 /// Lanes per wide value: four 2x2 quads of fragments, or 16 vertices.
 inline constexpr int kLanes = 16;
 
-/// The instruction set the wide code runs on, read once: 0 for SSE2 (or no vector instructions), 1 for AVX2, 2 for
-/// AVX-512 (F, DQ, BW and VL). SOFTGL_SIMD=sse2 or SOFTGL_SIMD=avx2 in the environment caps it.
+/// The instruction set the wide code runs on, read once: 0 for SSE2 (or no vector instructions), 1 for AVX2 (with
+/// SSE4.1 and F16C), 2 for AVX-512 (F, DQ, BW and VL) on top of that. SOFTGL_SIMD=sse2 or SOFTGL_SIMD=avx2 in the
+/// environment caps it.
 int SimdLevel();
 
 }  // namespace softgl
@@ -60,8 +61,8 @@ int SimdLevel();
 #else
 #define SOFTGL_NO_CONTRACT , optimize("fp-contract=off")
 #endif
-#define SOFTGL_TARGET_AVX512 __attribute__((target("avx512f,avx512dq,avx512bw,avx512vl"), flatten SOFTGL_NO_CONTRACT))
-#define SOFTGL_TARGET_AVX2 __attribute__((target("avx2"), flatten SOFTGL_NO_CONTRACT))
+#define SOFTGL_TARGET_AVX512 __attribute__((target("avx512f,avx512dq,avx512bw,avx512vl,f16c"), flatten SOFTGL_NO_CONTRACT))
+#define SOFTGL_TARGET_AVX2 __attribute__((target("avx2,f16c"), flatten SOFTGL_NO_CONTRACT))
 #define SOFTGL_TARGET_BASE __attribute__((flatten SOFTGL_NO_CONTRACT))
 #else
 #define SOFTGL_TARGET_BASE
