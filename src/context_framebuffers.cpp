@@ -56,7 +56,9 @@ detail::RenderTarget FramebufferTarget(const FramebufferObject& f, bool srgb) {
   for (const Attachment& a : f.color) fit(a);
   fit(f.depth);
   fit(f.stencil);
-  for (const Attachment* a : {&f.color[0], &f.color[1], &f.color[2], &f.color[3], &f.depth, &f.stencil})
+  for (const Attachment& a : f.color)
+    if (a.Present()) t.samples = a.Level()->samples;
+  for (const Attachment* a : {&f.depth, &f.stencil})
     if (a->Present()) t.samples = a->Level()->samples;
   for (int i = 0; i < kMaxColorOutputs; ++i) {
     if (f.draw_buffers[i] == NONE) continue;
@@ -877,7 +879,7 @@ void Context::DrawBuffers(int n, const Enum* bufs) {
   if (n < 0 || n > kMaxColorOutputs) return s.SetError(INVALID_VALUE, __func__, "n must be 0 to kMaxColorOutputs");
   if (!s.draw_fbo) return s.SetError(INVALID_OPERATION, __func__, "the context's own framebuffer has no draw buffers to choose: bind a framebuffer object");
   if (n > 0 && !NotNull(s, __func__, bufs, "bufs")) return;
-  Enum next[kMaxColorOutputs] = {NONE, NONE, NONE, NONE};
+  Enum next[kMaxColorOutputs] = {};  // NONE
   for (int i = 0; i < n; ++i) {
     const Enum b = bufs[i];
     if (b != NONE && (b < COLOR_ATTACHMENT0 || b >= COLOR_ATTACHMENT0 + kMaxColorOutputs))

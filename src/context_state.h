@@ -90,7 +90,7 @@ struct Attachment {
 struct FramebufferObject {
   Attachment color[kMaxColorOutputs];
   Attachment depth, stencil;  // DEPTH_STENCIL_ATTACHMENT sets both
-  Enum draw_buffers[kMaxColorOutputs] = {COLOR_ATTACHMENT0, NONE, NONE, NONE};
+  Enum draw_buffers[kMaxColorOutputs] = {COLOR_ATTACHMENT0};  // the others NONE
   Enum read_buffer = COLOR_ATTACHMENT0;  // ReadBuffer: COLOR_ATTACHMENT0 + i or NONE
 };
 

@@ -152,8 +152,8 @@ FragmentOpsPlan PlanFragmentOps(const FragmentOpsState& state, const RenderTarge
     if (plan.path[o] != ColourPath::kNone) plan.buffers = o + 1;
     if (target.color[o].srgb) plan.srgb = &SrgbLanes();
   }
-  plan.one_rgba8 = (!target.color[0].Present() || target.color[0].Rgba8()) && !target.color[1].Present() &&
-                   !target.color[2].Present() && !target.color[3].Present();
+  plan.one_rgba8 = !target.color[0].Present() || target.color[0].Rgba8();
+  for (int o = 1; o < kMaxColorOutputs; ++o) plan.one_rgba8 = plan.one_rgba8 && !target.color[o].Present();
   // The multisampled context framebuffer (samples side by side) has the vector path for RGBA8 only.
   plan.wide_target = !target.interleaved || plan.one_rgba8;
   return plan;
@@ -362,6 +362,7 @@ bool Inside(const RenderTarget& t, const BlockBuffer& bb, int b) {
 struct QuadPlaces {
   std::size_t at[4];
   std::size_t pitch;
+  QuadPlaces() = default;
   QuadPlaces(const BlockBuffer& bb, int b, int row_pitch, int step = 1) : pitch(std::size_t(row_pitch)) {
     for (int q = 0; q < 4; ++q)
       at[q] = std::size_t(bb.qy[b][q]) * pitch + std::size_t(bb.qx[b][q]) * std::size_t(step);
@@ -962,9 +963,9 @@ SOFTGL_WIDE void BlockOps(const BlockOpsContext& ctx, int b) {
   const std::uint32_t live = bb.live[b];
   const QuadPlaces depth_at(bb, b, t.depth_pitch);
   const QuadPlaces stencil_at = t.stencil_pitch == t.depth_pitch ? depth_at : QuadPlaces(bb, b, t.stencil_pitch);
-  QuadPlaces colour_at[kMaxColorOutputs] = {depth_at, depth_at, depth_at, depth_at};
-  for (int o = 0; o < buffers; ++o)
-    if (t.color[o].pitch != t.depth_pitch) colour_at[o] = QuadPlaces(bb, b, t.color[o].pitch);
+  QuadPlaces colour_at[kMaxColorOutputs];
+  for (int o = 0; o < std::max(buffers, 1); ++o)
+    colour_at[o] = t.color[o].pitch != t.depth_pitch ? QuadPlaces(bb, b, t.color[o].pitch) : depth_at;
   for (int l0 = 0; l0 < kLanes; l0 += W) {
     if (!((live >> l0) & kChunk)) continue;
     // kOne: the lanes' colour (read only where `colour` holds; the block buffer's colour is always there to load)

@@ -1252,7 +1252,7 @@ TEST_CASE("state queries: bindings, conversions, limits, strings and errors", "[
   gl.GetIntegerv(MAX_TEXTURE_SIZE, v);
   CHECK(v[0] == kMaxTextureSize);
   gl.GetIntegerv(MAX_DRAW_BUFFERS, v);
-  CHECK(v[0] == kMaxColorOutputs);
+  CHECK(v[0] == 8);  // OpenGL 3.3's minimum
   gl.GetIntegerv(MAX_VIEWPORT_DIMS, v);
   CHECK((v[0] == kMaxFramebufferSize && v[1] == kMaxFramebufferSize));
   gl.GetIntegerv(MAJOR_VERSION, v);

@@ -789,7 +789,7 @@ TEST_CASE("every colour format, draw buffer set and depth-stencil state: the blo
           "[fragment_ops][formats]") {
   // Random states, buffer contents (any bits: NaN, infinite and huge floats included), fragment colours (out of
   // range, NaN, infinite) and depths; the block path (ApplyFragmentOps) against the lane-by-lane reference on a copy
-  // of the same buffers. Each format alone first, then sets of up to four of them.
+  // of the same buffers. Each format alone first, then sets of up to eight of them (kMaxColorOutputs).
   const auto& factors = kBlendFactors;
   const auto& equations = kBlendEquations;
   const Enum funcs[] = {NEVER, LESS, EQUAL, LEQUAL, GREATER, NOTEQUAL, GEQUAL, ALWAYS};
@@ -813,7 +813,7 @@ TEST_CASE("every colour format, draw buffer set and depth-stencil state: the blo
     if (round < 2 * kFormats) {
       formats.push_back(&kTargetFormats[round % kFormats]);  // alone, twice
     } else {
-      const int n = 1 + int(next() % 4);
+      const int n = 1 + int(next() % kMaxColorOutputs);
       for (int o = 0; o < n; ++o) formats.push_back(next() % 5 == 0 ? nullptr : &kTargetFormats[next() % kFormats]);
     }
     TargetBuffers a(formats);

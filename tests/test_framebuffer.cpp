@@ -318,8 +318,10 @@ TEST_CASE("ReadBuffer chooses the colour buffer that reads and copies take", "[f
   CHECK((px[0] == 0 && px[1] == 255));
   g2.ReadBuffer(BACK);
   CHECK(g2.GetError() == INVALID_OPERATION);
-  g2.ReadBuffer(COLOR_ATTACHMENT0 + 4);
-  CHECK(g2.GetError() == INVALID_OPERATION);  // beyond MAX_COLOR_ATTACHMENTS
+  g2.ReadBuffer(COLOR_ATTACHMENT0 + kMaxColorOutputs);
+  CHECK(g2.GetError() == INVALID_OPERATION);  // beyond MAX_COLOR_ATTACHMENTS (8)
+  g2.ReadBuffer(COLOR_ATTACHMENT0 + 7);  // the last
+  CHECK(g2.GetError() == NO_ERROR);
   g2.ReadBuffer(COLOR_ATTACHMENT0 + 3);  // an empty attachment: accepted, but reading colour fails
   CHECK(g2.GetError() == NO_ERROR);
   CHECK(g2.CheckFramebufferStatus(READ_FRAMEBUFFER) == FRAMEBUFFER_COMPLETE);
@@ -739,4 +741,57 @@ TEST_CASE("ClearColor of every colour format: the texel Store writes, through th
     ++compared;
   }
   CHECK(compared == 400);
+}
+
+TEST_CASE("eight draw buffers of mixed formats, mapped in any order, each takes its output in one draw",
+          "[framebuffer][formats]") {
+  // Output o is (o / 8, 1 - o / 8, 0.25, 1); draw buffer o goes to attachment 7 - o, whose format is formats[7 - o];
+  // draw buffer 5 is NONE (its attachment keeps the clear colour, cleared before with all eight as draw buffers).
+  struct Eight : softgl::Shader<Eight, testing::NoVaryings> {
+    void Vertex(const VertexLanes& in, VertexLanesOut<testing::NoVaryings>& out) const { out.position = in.attrib[0]; }
+    void Fragment(const FragmentLanes<testing::NoVaryings>&, FragmentLanesOut& out) const {
+      for (int o = 0; o < kMaxColorOutputs; ++o)
+        out.color[o] = vec4(Float(float(o) / 8.0f), Float(1.0f - float(o) / 8.0f), Float(0.25f), Float(1.0f));
+    }
+  } shader;
+  const Enum formats[8] = {RGBA8, RGBA16F, R32F, RGB565, RG8, SRGB8_ALPHA8, RGBA32F, R11F_G11F_B10F};
+  Context gl(1, 1);
+  gl.BindFramebuffer(FRAMEBUFFER, gl.GenFramebuffer());
+  for (int a = 0; a < 8; ++a) {
+    const std::uint32_t rb = gl.GenRenderbuffer();
+    gl.BindRenderbuffer(RENDERBUFFER, rb);
+    gl.RenderbufferStorage(RENDERBUFFER, formats[a], 8, 8);
+    gl.FramebufferRenderbuffer(FRAMEBUFFER, COLOR_ATTACHMENT0 + Enum(a), RENDERBUFFER, rb);
+  }
+  CHECK(gl.GetError() == NO_ERROR);
+  Enum bufs[8];
+  for (int o = 0; o < 8; ++o) bufs[o] = COLOR_ATTACHMENT0 + Enum(o);
+  gl.DrawBuffers(8, bufs);
+  REQUIRE(gl.CheckFramebufferStatus(FRAMEBUFFER) == FRAMEBUFFER_COMPLETE);
+  gl.ClearColor(0.5f, 0.5f, 0.5f, 0.5f);
+  gl.Clear(COLOR_BUFFER_BIT);
+  for (int o = 0; o < 8; ++o) bufs[o] = o == 5 ? NONE : COLOR_ATTACHMENT0 + Enum(7 - o);
+  gl.DrawBuffers(8, bufs);
+  std::int32_t got = 0;
+  gl.GetIntegerv(DRAW_BUFFER0 + 7, &got);
+  CHECK(Enum(got) == COLOR_ATTACHMENT0);
+  gl.Viewport(0, 0, 8, 8);
+  gl.UseProgram(shader);
+  testing::MakeVertexArray(gl, {{-1, -1, 0, 1}, {3, -1, 0, 1}, {-1, 3, 0, 1}});
+  gl.DrawArrays(TRIANGLES, 0, 3);
+  CHECK(gl.GetError() == NO_ERROR);
+  for (int a = 0; a < 8; ++a) {
+    const int o = 7 - a;  // the output drawn into attachment a
+    gl.ReadBuffer(COLOR_ATTACHMENT0 + Enum(a));
+    std::vector<float> px(8 * 8 * 4);
+    gl.ReadPixels(0, 0, 8, 8, RGBA, FLOAT, px.data());
+    CHECK(gl.GetError() == NO_ERROR);
+    const glm::vec4 want = o == 5 ? glm::vec4(0.5f) : glm::vec4(float(o) / 8.0f, 1.0f - float(o) / 8.0f, 0.25f, 1.0f);
+    const int channels = formats[a] == R32F ? 1 : formats[a] == RG8 ? 2 : formats[a] == RGB565 || formats[a] == R11F_G11F_B10F ? 3 : 4;
+    for (int i = 0; i < 64; ++i)
+      for (int c = 0; c < channels; ++c) {
+        INFO("attachment " << a << " pixel " << i << " channel " << c);
+        CHECK(px[std::size_t(4 * i + c)] == Approx(want[c]).margin(0.02));  // (RGB565's 5 bits: within 1/62)
+      }
+  }
 }

@@ -429,8 +429,8 @@ TEST_CASE("framebuffer completeness rules", "[framebuffer]") {
   CHECK(gl.GetError() == INVALID_FRAMEBUFFER_OPERATION);
   gl.DrawBuffers(1, bufs);
   CHECK(gl.CheckFramebufferStatus(FRAMEBUFFER) == FRAMEBUFFER_COMPLETE);
-  gl.FramebufferTexture2D(FRAMEBUFFER, COLOR_ATTACHMENT0 + 4, TEXTURE_2D, color, 0);
-  CHECK(gl.GetError() == INVALID_ENUM);
+  gl.FramebufferTexture2D(FRAMEBUFFER, COLOR_ATTACHMENT0 + kMaxColorOutputs, TEXTURE_2D, color, 0);
+  CHECK(gl.GetError() == INVALID_ENUM);  // beyond MAX_COLOR_ATTACHMENTS (8)
   gl.FramebufferTexture2D(FRAMEBUFFER, COLOR_ATTACHMENT0, TEXTURE_CUBE_MAP_POSITIVE_X, color, 0);
   CHECK(gl.GetError() == INVALID_OPERATION);  // not a cube map
   gl.FramebufferTexture2D(FRAMEBUFFER, COLOR_ATTACHMENT0, TEXTURE_2D, 12345, 0);

@@ -54,8 +54,9 @@ namespace softgl {
 inline constexpr int kMaxVertexAttribs = 16;
 /// Largest varyings struct, in floats per vertex: 16 vec4 (GL_MAX_VARYING_COMPONENTS = 64).
 inline constexpr int kMaxVaryingFloats = 64;
-/// Number of colour outputs a fragment shader may write (color[0] goes to the default framebuffer).
-inline constexpr int kMaxColorOutputs = 4;
+/// Number of colour outputs a fragment shader may write (color[0] goes to the default framebuffer): the draw
+/// buffers and colour attachments of a framebuffer object (GL_MAX_DRAW_BUFFERS, GL_MAX_COLOR_ATTACHMENTS).
+inline constexpr int kMaxColorOutputs = 8;
 
 // ---- Interpolation qualifiers ---------------------------------------------------------------------------------
 
