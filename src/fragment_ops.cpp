@@ -154,8 +154,12 @@ FragmentOpsPlan PlanFragmentOps(const FragmentOpsState& state, const RenderTarge
   }
   plan.one_rgba8 = !target.color[0].Present() || target.color[0].Rgba8();
   for (int o = 1; o < kMaxColorOutputs; ++o) plan.one_rgba8 = plan.one_rgba8 && !target.color[o].Present();
-  // The multisampled context framebuffer (samples side by side) has the vector path for RGBA8 only.
-  plan.wide_target = !target.interleaved || plan.one_rgba8;
+  // The multisampled context framebuffer (samples side by side) has the vector path for its formats: RGBA8, and
+  // RGB565 and sRGB-encoded RGBA8 in float.
+  const TexelLayout l0 = target.color[0].layout;
+  plan.wide_target = !target.interleaved || plan.one_rgba8 ||
+                     (plan.buffers <= 1 && (l0 == TexelLayout::kUnorm565 ||
+                                            (l0 == TexelLayout::kUnorm8x4 && target.color[0].srgb && !target.color[0].rgb_only)));
   return plan;
 }
 
@@ -623,14 +627,21 @@ SOFTGL_WIDE typename V<W>::I Unorm8OfLanes(typename V<W>::F x) {
   return __builtin_convertvector((x * 255.0f + 12582912.0f) - 12582912.0f, typename V<W>::I);
 }
 
+// An RGBA32F buffer's texel of lane k of `at`: in quad row k / 2 of the block's quads.
+template <int W>
+SOFTGL_WIDE float* Float4TexelAt(const TexelQuads<W>& at, int k) {
+  float* p = reinterpret_cast<float*>(at.base) + 4 * at.at.at[at.l0 / 4 + k / 4];
+  return p + 4 * (std::size_t((k >> 1) & 1) * at.at.pitch + std::size_t(k & 1));
+}
+
 // The buffers blended in float (ColourPath::kFloat), the lanes of `go`: each texel decoded to RGBA floats (the
 // channels the layout lacks (0, 0, 0, 1)), the fragment colour clamped for a fixed-point buffer (NaN as 0 either
 // way), blended, the colour mask applied, encoded again; as ColourLane does it lane by lane. `keep` is the
-// 8-bit buffers' mask of kept bytes (the sRGB buffer's).
-template <int W, TexelLayout L, bool kSrgb>
+// 8-bit buffers' mask of kept bytes (the sRGB buffer's). `at` loads and stores the texels: TexelQuads, or
+// ElementTexels for samples side by side (RGB565 and sRGB, the layouts the context's framebuffer has).
+template <int W, TexelLayout L, bool kSrgb, class At>
 SOFTGL_WIDE void FloatLanesOf(const FragmentOpsState& st, const FragmentOpsPlan& plan, int o, bool rgb_only,
-                              const TexelQuads<W>& at,
-                              const typename V<W>::F color[4], typename V<W>::I go) {
+                              const At& at, const typename V<W>::F color[4], typename V<W>::I go) {
   using F = typename V<W>::F;
   using U = typename V<W>::U;
   using D = typename V<W>::D;
@@ -657,13 +668,8 @@ SOFTGL_WIDE void FloatLanesOf(const FragmentOpsState& st, const FragmentOpsPlan&
   F d[4] = {F{}, F{}, F{}, F{} + 1.0f};
   U word{};
   D dword{};
-  // kFloat32x4: lane k's texel, in quad row k / 2 of the block's quads
-  auto texel_at = [&](int k) SOFTGL_WIDE_LAMBDA {
-    float* p = reinterpret_cast<float*>(at.base) + 4 * at.at.at[at.l0 / 4 + k / 4];
-    return p + 4 * (std::size_t((k >> 1) & 1) * at.at.pitch + std::size_t(k & 1));
-  };
   if constexpr (L == TexelLayout::kFloat32x4) {
-    LoadComponentsAt<W>(texel_at, d);
+    LoadComponentsAt<W>([&](int k) SOFTGL_WIDE_LAMBDA { return Float4TexelAt(at, k); }, d);
   } else if constexpr (kBytes == 8) {
     dword = at.template Load<std::uint64_t, D>();
     if constexpr (L == TexelLayout::kFloat32x2) {
@@ -761,7 +767,7 @@ SOFTGL_WIDE void FloatLanesOf(const FragmentOpsState& st, const FragmentOpsPlan&
     for (int c = 0; c < 4; ++c) r[c] = go ? r[c] : d[c];
     unsigned quads = 0;  // those with a live lane (StoreQuads)
     for (int q = 0; q < W / 4; ++q) quads |= ((at.live >> (at.l0 + 4 * q)) & 0xFu) ? 1u << q : 0u;
-    StoreComponentsAt<W>(texel_at, r, quads);
+    StoreComponentsAt<W>([&](int k) SOFTGL_WIDE_LAMBDA { return Float4TexelAt(at, k); }, r, quads);
   } else if constexpr (L == TexelLayout::kFloat32x2) {
     const D out = __builtin_convertvector(as_u(r[0]), D) | (__builtin_convertvector(as_u(r[1]), D) << 32);
     at.template Store<std::uint64_t>(__builtin_convertvector(go, D) != 0 ? out : dword);
@@ -1165,6 +1171,18 @@ struct ElementDepths {
   }
 };
 
+// W texels of an interleaved target's colour buffer from element e0, as FloatLanesOf loads and stores them.
+template <int W, int S>
+struct ElementTexels {
+  std::uint8_t* base;
+  const RowPlaces& at;
+  int e0;
+  template <class T, class Vec>
+  SOFTGL_WIDE Vec Load() const { return LoadElements<T, W, S, Vec>(reinterpret_cast<const T*>(base), at, e0); }
+  template <class T, class Vec>
+  SOFTGL_WIDE void Store(const Vec& v) const { StoreElements<T, W, S>(reinterpret_cast<T*>(base), at, e0, v); }
+};
+
 // VectorOps' access to the W elements of chunk `chunk` of block b in an interleaved target of S samples.
 template <int W, int S>
 struct ElementIo {
@@ -1198,6 +1216,17 @@ struct ElementIo {
     return Blend8Lanes<W>(*ctx.blend, color, dst);
   }
   SOFTGL_WIDE void WriteColour(typename V<W>::I go) const {
+    if (ctx.plan->path[0] == ColourPath::kFloat) {  // RGB565 or sRGB-encoded (FRAMEBUFFER_SRGB): in float
+      const ColorBuffer& cb = ctx.target->color[0];
+      F color[4];
+      for (int c = 0; c < 4; ++c) color[c] = Spread<W, S, F>(ctx.blocks->Color(b, 0, c) + L0());
+      const ElementTexels<W, S> at{cb.data, colour_at, E0()};
+      if (cb.layout == TexelLayout::kUnorm565)
+        FloatLanesOf<W, TexelLayout::kUnorm565, false>(*ctx.state, *ctx.plan, 0, cb.rgb_only, at, color, go);
+      else
+        FloatLanesOf<W, TexelLayout::kUnorm8x4, true>(*ctx.state, *ctx.plan, 0, cb.rgb_only, at, color, go);
+      return;
+    }
     const U dst = Pixels();
     SetPixels(go ? Result(dst) : dst);
   }
@@ -1221,7 +1250,7 @@ SOFTGL_WIDE void BlockOpsInterleaved(const BlockOpsContext& ctx, int b) {
   const RowPlaces at(QuadPlaces(bb, b, t.depth_pitch, S));
   // Without blending, the lanes' colours as bytes, converted once.
   alignas(32) std::uint32_t packed[kLanes];
-  if (colour && !ctx.blend->blend) {
+  if (colour && !ctx.blend->blend && ctx.plan->path[0] == ColourPath::kUnorm8) {
     for (int l0 = 0; l0 < kLanes; l0 += W) {
       F lanes[4];
       for (int c = 0; c < 4; ++c) lanes[c] = LoadVec<F>(bb.Color(b, 0, c) + l0);

@@ -77,7 +77,8 @@ struct MultisampleFbo {
   Context& gl;
   std::uint32_t ms = 0, single = 0;
   int width, height;
-  MultisampleFbo(Context& context, int samples, int w, int h, Enum colour = RGBA8) : gl(context), width(w), height(h) {
+  MultisampleFbo(Context& context, int samples, int w, int h, Enum colour = RGBA8, Enum resolved = RGBA8)
+      : gl(context), width(w), height(h) {
     const std::uint32_t rb[3] = {gl.GenRenderbuffer(), gl.GenRenderbuffer(), gl.GenRenderbuffer()};
     ms = gl.GenFramebuffer();
     gl.BindFramebuffer(FRAMEBUFFER, ms);
@@ -90,7 +91,7 @@ struct MultisampleFbo {
     single = gl.GenFramebuffer();
     gl.BindFramebuffer(FRAMEBUFFER, single);
     gl.BindRenderbuffer(RENDERBUFFER, rb[2]);
-    gl.RenderbufferStorage(RENDERBUFFER, RGBA8, w, h);
+    gl.RenderbufferStorage(RENDERBUFFER, resolved, w, h);
     gl.FramebufferRenderbuffer(FRAMEBUFFER, COLOR_ATTACHMENT0, RENDERBUFFER, rb[2]);
     gl.BindFramebuffer(FRAMEBUFFER, ms);
     gl.Viewport(0, 0, w, h);
@@ -927,6 +928,15 @@ struct SolidDepthShader : softgl::Shader<SolidDepthShader, NoVaryings> {
 // Random overlapping triangles into whatever is bound: depth-tested, every third blended, a run with MULTISAMPLE
 // disabled, a run whose shader writes the depth, each pass counting into the stencil (when `stencil`); then a
 // cover pass where the stencil is 2 and a line across. Colours are multiples of 1/255.
+// Two resolved RGBA images of DrawMixedScene: the same bytes, and edges and blending left colours between.
+void CheckSameMixed(const std::vector<std::uint8_t>& a, const std::vector<std::uint8_t>& b) {
+  int differ = 0, mixed = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) differ += a[i] != b[i];
+  for (std::size_t i = 0; i < a.size(); i += 4) mixed += a[i + 2] > 0 && a[i + 2] < 255 && a[i] > 0;
+  CHECK(differ == 0);
+  CHECK(mixed > 10);
+}
+
 void DrawMixedScene(Context& gl, int w, int h, bool stencil) {
   SolidShader shader;
   SolidDepthShader depth_shader;
@@ -1011,10 +1021,40 @@ TEST_CASE("multisample: the context's framebuffer (samples side by side) draws a
         gl.ReadPixels(0, 0, size, size, RGBA, UNSIGNED_BYTE, b.data());
         CHECK(own.GetError() == NO_ERROR);
         CHECK(gl.GetError() == NO_ERROR);
-        int differ = 0, mixed = 0;
-        for (std::size_t i = 0; i < a.size(); ++i) differ += a[i] != b[i];
-        for (std::size_t i = 0; i < a.size(); i += 4) mixed += a[i + 2] > 0 && a[i + 2] < 255 && a[i] > 0;
-        CHECK(differ == 0);
-        CHECK(mixed > 10);  // edges and blending left colours between
+        CheckSameMixed(a, b);
+      }
+}
+
+TEST_CASE("multisample: the context's SRGB8_ALPHA8 and RGB565 framebuffers (samples side by side) draw as framebuffer "
+          "objects of the format", "[multisample][formats]") {
+  // The block path writes a context framebuffer of samples side by side in RGB565 or sRGB-encoded RGBA8 in float
+  // vectors; a framebuffer object of the same format keeps a plane per sample. The same scene into each must resolve
+  // to the same bytes (even sizes: every block on the vector path; an odd one: edge blocks lane by lane).
+  for (const Enum format : {SRGB8_ALPHA8, RGB565})
+    for (int samples : {2, 4, 8})
+      for (int size : {32, 31}) {
+        CAPTURE(format, samples, size);
+        Context::Options options = Samples(samples);
+        options.color_format = format;
+        Context own(size, size, options);
+        own.Enable(FRAMEBUFFER_SRGB);
+        own.ClearColor(0, 0, 0, 1);
+        own.Clear(COLOR_BUFFER_BIT | DEPTH_BUFFER_BIT | STENCIL_BUFFER_BIT);
+        DrawMixedScene(own, size, size, true);
+        std::vector<std::uint8_t> a(std::size_t(size * size) * 4), b(a.size());
+        own.ReadPixels(0, 0, size, size, RGBA, UNSIGNED_BYTE, a.data());
+
+        Context gl(size, size, Samples(0));
+        gl.Enable(FRAMEBUFFER_SRGB);
+        MultisampleFbo fbo(gl, samples, size, size, format, format);
+        REQUIRE(gl.CheckFramebufferStatus(FRAMEBUFFER) == FRAMEBUFFER_COMPLETE);
+        fbo.Clear(COLOR_BUFFER_BIT | DEPTH_BUFFER_BIT | STENCIL_BUFFER_BIT);
+        DrawMixedScene(gl, size, size, true);
+        gl.Disable(FRAMEBUFFER_SRGB);  // the stored bytes averaged, as the context's framebuffer resolves
+        fbo.Resolve();
+        gl.ReadPixels(0, 0, size, size, RGBA, UNSIGNED_BYTE, b.data());
+        CHECK(own.GetError() == NO_ERROR);
+        CHECK(gl.GetError() == NO_ERROR);
+        CheckSameMixed(a, b);
       }
 }

@@ -50,8 +50,8 @@ class Context {
     /// The context's colour buffer: RGBA8 (4 bytes a pixel, the default); SRGB8_ALPHA8 (the same bytes, sRGB-encoded:
     /// while FRAMEBUFFER_SRGB is enabled, drawing, clears and blits encode linear colours into it, and blending
     /// decodes first); or RGB565 (2 bytes a pixel, for small memory: red and blue kept to 5 bits, green to 6, no
-    /// alpha). Any but RGBA8 takes the per-pixel path of the fragment operations. Anything else: RGBA8, and
-    /// INVALID_ENUM recorded.
+    /// alpha). All three take the vector path of the fragment operations, multisampled or not. Anything else:
+    /// RGBA8, and INVALID_ENUM recorded.
     Enum color_format = RGBA8;
     /// The context's depth buffer: DEPTH_COMPONENT32F (4 bytes a pixel, float, the default) or DEPTH_COMPONENT16
     /// (2 bytes a pixel, for small memory: depth kept as round(d * 65535), the fragment's depth converted so before
