@@ -110,7 +110,8 @@ constexpr std::uint32_t kEquations[] = {FUNC_ADD, FUNC_SUBTRACT, FUNC_REVERSE_SU
 constexpr std::uint32_t kFaces[] = {FRONT, BACK, FRONT_AND_BACK};
 constexpr std::uint32_t kFbTargets[] = {FRAMEBUFFER, DRAW_FRAMEBUFFER, READ_FRAMEBUFFER};
 constexpr std::uint32_t kAttachments[] = {COLOR_ATTACHMENT0, COLOR_ATTACHMENT0 + 1, COLOR_ATTACHMENT0 + 3,
-                                          DEPTH_ATTACHMENT, STENCIL_ATTACHMENT, DEPTH_STENCIL_ATTACHMENT};
+                                          DEPTH_ATTACHMENT, STENCIL_ATTACHMENT, DEPTH_STENCIL_ATTACHMENT,
+                                          COLOR_ATTACHMENT0 + 7, COLOR_ATTACHMENT0 + 8};
 constexpr std::uint32_t kRenderbufferFormats[] = {RGBA8, RGB8, R32F, RGBA, DEPTH_COMPONENT16, DEPTH_COMPONENT24,
                                                   DEPTH24_STENCIL8, DEPTH32F_STENCIL8, STENCIL_INDEX8, 0x1234};
 constexpr std::uint32_t kReadBuffers[] = {NONE, BACK, FRONT, RIGHT, COLOR_ATTACHMENT0, COLOR_ATTACHMENT0 + 1,
@@ -317,8 +318,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                                 in.Int(-1, 4));
         break;
       case 29: {
-        const std::uint32_t bufs[4] = {in.Enum(kAttachments), in.Enum(kAttachments), NONE, COLOR_ATTACHMENT0 + 2};
-        gl.DrawBuffers(in.Int(-1, 5), bufs);
+        // (n up to one past the limit, read only when it is accepted: the array holds the limit's count)
+        std::uint32_t bufs[kMaxColorOutputs] = {in.Enum(kAttachments), in.Enum(kAttachments), NONE, COLOR_ATTACHMENT0 + 2};
+        for (int i = 4; i < kMaxColorOutputs; ++i) bufs[i] = in.Enum(kAttachments);
+        gl.DrawBuffers(in.Int(-1, kMaxColorOutputs + 1), bufs);
         break;
       }
       case 30: gl.StencilFuncSeparate(in.Enum(kFaces), in.Enum(kFuncs), in.Int(-300, 300), in.Get<std::uint32_t>()); break;
