@@ -51,6 +51,22 @@ void Context::Finish() { state_->Sync(__func__); }
 
 void Context::Flush() { state_->Sync(__func__); }
 
+void Context::CountTilePrimitives(bool on) {
+  ContextState& s = *state_;
+  s.Sync(__func__);  // what was recorded before counts (or not) as it was asked when it was drawn
+  s.tile_counts.clear();
+  s.tile_count_grid = {0, 0};
+  s.frame.CountTilePrimitives(on ? &s.tile_counts : nullptr, on ? &s.tile_count_grid : nullptr);
+}
+
+std::vector<std::uint32_t> Context::TilePrimitiveCounts(int* columns, int* rows) {
+  ContextState& s = *state_;
+  s.Sync(__func__);
+  if (columns) *columns = s.tile_count_grid.x;
+  if (rows) *rows = s.tile_count_grid.y;
+  return s.tile_counts;
+}
+
 void Context::DebugMessageCallback(DebugCallback callback) { state_->debug_callback = std::move(callback); }
 
 Enum Context::GetError() {

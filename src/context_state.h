@@ -193,6 +193,8 @@ struct ContextState {
   detail::Scratch scratch;
   std::unique_ptr<detail::WorkerPool> pool;
   detail::Frame frame;  // recorded clears and draws, not yet rendered
+  std::vector<std::uint32_t> tile_counts;  // CountTilePrimitives: primitives per tile (empty when off)
+  glm::ivec2 tile_count_grid{0, 0};        // the tiles' columns and rows
   detail::FetchPlan fetch_plan;  // Draw's resolution of the vertex array (a disabled attribute: its current value)
   detail::DrawPacket draw_packet;  // Draw's prototype of the packets it records
   detail::DrawTextures draw_textures;  // the prototype's textures: the bound units resolved at the last draw

@@ -478,6 +478,7 @@ void Frame::RenderTile(int tile, TileScratch& scratch) const {
     blocks.samples = target_.samples;
     const auto rasterize = [&](const BinnedBatch& batch) {
       return [&](const BinnedPrimitive& p, const float* vertices) {
+        if (counts_) ++(*counts_)[std::size_t(tile)];  // (each tile is rendered by one thread)
         if (lazy && lazy_tile->cleared) lazy->Store(target_, tile, kAllBuffers);  // the first primitive here
         rt.depth_offset = p.depth_offset;
         if (p.kind == PrimitiveKind::kTriangle) {  // read in place
@@ -528,6 +529,10 @@ void Frame::Render(WorkerPool& pool, std::vector<TileScratch>& scratch) {
       claimed_count_ = tiles;
     }
     for (int t = 0; t < tiles; ++t) claimed_[std::size_t(t)].store(false, std::memory_order_relaxed);
+    if (counts_ && (count_grid_->x != grid_.cols || count_grid_->y != grid_.rows)) {
+      counts_->assign(std::size_t(tiles), 0u);
+      *count_grid_ = {grid_.cols, grid_.rows};
+    }
     pool.Run(threads, [&](int, int worker) {
       auto take = [&](int t) {
         if (!claimed_[std::size_t(t)].exchange(true, std::memory_order_relaxed))

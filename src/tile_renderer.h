@@ -105,6 +105,12 @@ class Frame {
   void Render(WorkerPool& pool, std::vector<TileScratch>& scratch);
   /// Forgets the recorded commands without rendering them.
   void Reset();
+  /// Counts, while `counts` is not null, the primitives each tile renders into counts[tile], across frames; a
+  /// frame of another grid than `grid` (columns, rows) starts them from zero.
+  void CountTilePrimitives(std::vector<std::uint32_t>* counts, glm::ivec2* grid) {
+    counts_ = counts;
+    count_grid_ = grid;
+  }
 
  private:
   void Begin(const RenderTarget& target);
@@ -138,6 +144,8 @@ class Frame {
   std::size_t bytes_ = 0;
   std::unique_ptr<std::atomic<bool>[]> claimed_;  // Render's tiles taken, claimed_count_ of them
   int claimed_count_ = 0;
+  std::vector<std::uint32_t>* counts_ = nullptr;  // CountTilePrimitives
+  glm::ivec2* count_grid_ = nullptr;
 };
 
 }  // namespace softgl::detail

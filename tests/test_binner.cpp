@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "binner.h"
+#include "helpers.h"
 
 using namespace softgl;
 using detail::BinnedBatch;
@@ -132,4 +133,82 @@ TEST_CASE("binning: memory grows with primitives, not with the tiles they cover"
   REQUIRE(last.size() == 1000);
   CHECK(last.front() == 0.0f);
   CHECK(last.back() == 999.0f);
+}
+
+namespace {
+
+// Window coordinates of a 200 x 130 context as a clip-space position (z, w as given).
+glm::vec4 Window(float x, float y, float z = 0.0f) { return {x / 100.0f - 1.0f, y / 65.0f - 1.0f, z, 1.0f}; }
+
+// Per tile of a 200 x 130 context (4 x 3 tiles): a triangle over tiles 0 and 1; a triangle facing away, culled;
+// one in tile 0 crossing the near plane, clipped into a polygon of two triangles; a line across row 1 (four
+// tiles); a point in tile (2, 1).
+std::vector<std::uint32_t> CountedScene(int threads, int* cols, int* rows) {
+  Context::Options options;
+  options.threads = threads;
+  Context gl(200, 130, options);
+  gl.CountTilePrimitives(true);
+  gl.Enable(CULL_FACE);
+  testing::SolidShader shader;
+  gl.UseProgram(shader);
+  std::vector<glm::vec4> tri = {Window(10, 10), Window(100, 10), Window(10, 50)};
+  std::vector<glm::vec4> culled = {Window(150, 80), Window(150, 120), Window(190, 80)};
+  glm::vec4 behind = Window(30, 40);
+  behind.z = -3.0f;  // clip z < -w: in front of the near plane, and not by a little
+  std::vector<glm::vec4> clipped = {Window(10, 20), Window(50, 20), behind};
+  std::vector<glm::vec4> all = tri;
+  all.insert(all.end(), culled.begin(), culled.end());
+  all.insert(all.end(), clipped.begin(), clipped.end());
+  all.insert(all.end(), {Window(5, 100), Window(195, 100), Window(150.5f, 120.5f)});
+  testing::MakeVertexArray(gl, all);
+  gl.DrawArrays(TRIANGLES, 0, 9);
+  gl.DrawArrays(LINES, 9, 2);
+  gl.DrawArrays(POINTS, 11, 1);
+  return gl.TilePrimitiveCounts(cols, rows);
+}
+
+}  // namespace
+
+TEST_CASE("binning statistics: each tile counts the primitives binned to it, after clipping and culling",
+          "[binner]") {
+  int cols = -1, rows = -1;
+  const std::vector<std::uint32_t> counts = CountedScene(1, &cols, &rows);
+  CHECK(cols == 4);
+  CHECK(rows == 3);
+  const std::vector<std::uint32_t> expected = {1 + 2, 1, 0, 0,  // row 0: the triangle, the clipped one's two parts
+                                               1, 1, 1 + 1, 1,  // row 1: the line, the point
+                                               0, 0, 0, 0};
+  CHECK(counts == expected);
+  // The same counts whichever thread renders which tile.
+  CHECK(CountedScene(3, nullptr, nullptr) == expected);
+
+  Context gl(200, 130);
+  CHECK(gl.TilePrimitiveCounts(&cols, &rows).empty());  // off by default
+  CHECK((cols == 0 && rows == 0));
+  testing::SolidShader shader;
+  gl.UseProgram(shader);
+  testing::MakeVertexArray(gl, {Window(10, 10), Window(100, 10), Window(10, 50)});
+  gl.CountTilePrimitives(true);
+  gl.DrawArrays(TRIANGLES, 0, 3);
+  gl.DrawArrays(TRIANGLES, 0, 3);
+  CHECK(gl.TilePrimitiveCounts()[0] == 2);
+  gl.DrawArrays(TRIANGLES, 0, 3);
+  CHECK(gl.TilePrimitiveCounts()[0] == 3);  // counted on from the call before
+  gl.CountTilePrimitives(true);             // starts again
+  gl.Clear(COLOR_BUFFER_BIT);
+  CHECK(gl.TilePrimitiveCounts() == std::vector<std::uint32_t>(12, 0u));
+  // A framebuffer of another size: its own grid, counted from zero.
+  const std::uint32_t fbo = gl.GenFramebuffer(), rb = gl.GenRenderbuffer();
+  gl.BindRenderbuffer(RENDERBUFFER, rb);
+  gl.RenderbufferStorage(RENDERBUFFER, RGBA8, 70, 20);
+  gl.BindFramebuffer(FRAMEBUFFER, fbo);
+  gl.FramebufferRenderbuffer(FRAMEBUFFER, COLOR_ATTACHMENT0, RENDERBUFFER, rb);
+  gl.Viewport(0, 0, 70, 20);
+  gl.DrawArrays(TRIANGLES, 0, 3);
+  CHECK(gl.TilePrimitiveCounts(&cols, &rows) == std::vector<std::uint32_t>{1, 0});  // (x from 3.5 to 35)
+  CHECK((cols == 2 && rows == 1));
+  gl.CountTilePrimitives(false);
+  CHECK(gl.TilePrimitiveCounts(&cols, &rows).empty());
+  CHECK((cols == 0 && rows == 0));
+  CHECK(gl.GetError() == NO_ERROR);
 }

@@ -82,6 +82,17 @@ class Context {
   /// glFlush: OpenGL lets commands start; softgl renders what is recorded now, as Finish does.
   void Flush();
 
+  /// Binning statistics, for learning and tuning (softgl's own; OpenGL has none): while counting is on, every
+  /// 64 x 64 pixel tile counts the primitives that binning gave it (points, lines and triangles after clipping and
+  /// culling: a triangle goes to each tile that the box of the pixel centres it may cover overlaps). Turning it on
+  /// or off starts the counts again from zero. Off by default.
+  void CountTilePrimitives(bool on);
+  /// Renders what is recorded (as Finish does), then returns the counts per tile since counting was turned on,
+  /// for the tiles of the framebuffer rendered last, row by row from the bottom (tile (col, row) at
+  /// row * columns + col); the counts start again from zero when a framebuffer of another size is rendered.
+  /// Empty when counting is off. `columns` and `rows` (either may be null) receive the grid's size (0 when empty).
+  std::vector<std::uint32_t> TilePrimitiveCounts(int* columns = nullptr, int* rows = nullptr);
+
   // ---- Errors ------------------------------------------------------------------------------------------------
   /// Returns the first error recorded since the last call, and clears it (NO_ERROR when there was none).
   Enum GetError();

@@ -334,12 +334,17 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         constexpr std::uint32_t kQueryTargets[] = {SAMPLES_PASSED, ANY_SAMPLES_PASSED, PRIMITIVES_GENERATED,
                                                    TIME_ELAPSED};
         std::uint64_t result = 0;
-        switch (in.Byte() % 6) {
+        int cols = 0, rows = 0;
+        switch (in.Byte() % 8) {
           case 0: gl.DepthRange(in.Float(), in.Float()); break;
           case 1: gl.GenQuery(); break;
           case 2: gl.BeginQuery(in.Enum(kQueryTargets), id()); break;
           case 3: gl.EndQuery(in.Enum(kQueryTargets)); break;
           case 4: gl.DeleteQuery(id()); break;
+          case 5: gl.CountTilePrimitives(in.Byte() % 2 != 0); break;
+          case 6:
+            if (gl.TilePrimitiveCounts(&cols, &rows).size() != std::size_t(cols) * std::size_t(rows)) __builtin_trap();
+            break;
           default: gl.GetQueryObjectui64v(id(), in.Byte() % 2 ? QUERY_RESULT : QUERY_RESULT_AVAILABLE, &result); break;
         }
         break;
