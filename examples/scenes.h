@@ -86,6 +86,37 @@ softgl::Image EnvironmentMap(int width, int height);
 /// attributes with divisor 1 give its height and colour.
 softgl::Image Instancing(int width, int height);
 
+// ---- The guided tour (docs/tour.md): one picture per stage, each quantity made visible by a shader ----------
+
+/// Clipping: left, a floor triangle seen from above with the camera's view volume (near plane in yellow), red where
+/// clip-space z < -w, and the polygon Sutherland-Hodgman keeps (white); right, the camera's view of what is kept.
+softgl::Image TourClipping(int width, int height);
+/// Coverage: four triangles (and a fifth) in a 20 x 10 framebuffer, added together, magnified with the pixel grid
+/// and centres: every centre on a shared edge belongs to exactly one triangle (the tie rule).
+softgl::Image TourCoverage(int width, int height);
+/// Barycentric weights as red, green and blue with lines every 0.1: left linear in window space, right
+/// perspective-correct, on a triangle lying on the ground.
+softgl::Image TourBarycentric(int width, int height);
+/// The depth buffer: a scene, its DEPTH_COMPONENT32F buffer as grey, and the eye distance recovered from it.
+softgl::Image TourDepth(int width, int height);
+/// Texture coordinates on a receding square of two triangles: affine (NoPerspective) left, perspective-correct
+/// right.
+softgl::Image TourPerspective(int width, int height);
+/// Face culling: a sphere and a torus cut open, front faces blue, back faces orange; left no culling, right
+/// CullFace(BACK).
+softgl::Image TourCulling(int width, int height);
+/// Binning: the 64 x 64 tiles of a scene and how many primitives each was given (Context::CountTilePrimitives).
+softgl::Image TourTiles(int width, int height);
+/// Mipmap levels: a texture whose every level has its own colour on a receding floor, NEAREST_MIPMAP_NEAREST,
+/// LINEAR_MIPMAP_LINEAR and 16x anisotropic, left to right.
+softgl::Image TourMipmapLevels(int width, int height);
+/// Lines: a segment drawn by the diamond-exit rule (above) and by the classic Bresenham loop (below), magnified
+/// with each pixel's diamond.
+softgl::Image TourLines(int width, int height);
+/// Multisampling: an edge in a framebuffer of 4 samples a pixel, magnified: each sample a dot in its own colour,
+/// each pixel the resolved average.
+softgl::Image TourMultisample(int width, int height);
+
 /// The model in `path` (any format assimp reads), framed by its bounding box from (azimuth, elevation) degrees,
 /// three-point lit, drawn with the built-in shader named "unlit", "phong" or "pbr", into a framebuffer of 4 samples
 /// a pixel. An empty image, with the reason in `error`, when the model cannot be loaded.

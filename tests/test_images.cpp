@@ -125,3 +125,17 @@ TEST_CASE("WritePng writes a file whole or reports failure", "[image][files]") {
     CHECK(std::filesystem::is_character_file("/dev/full"));  // a device is never removed
   }
 }
+
+// The pictures of docs/tour.md, at the sizes examples/tour.cpp draws them.
+TEST_CASE("image: tour", "[image]") {
+  CompareWithGolden("tour_clipping", scenes::TourClipping(640, 320));
+  CompareWithGolden("tour_coverage", scenes::TourCoverage(640, 320));
+  CompareWithGolden("tour_barycentric", scenes::TourBarycentric(640, 320));
+  CompareWithGolden("tour_depth", scenes::TourDepth(960, 320));
+  CompareWithGolden("tour_perspective", scenes::TourPerspective(640, 320));
+  CompareWithGolden("tour_culling", scenes::TourCulling(640, 320));
+  CompareWithGolden("tour_tiles", scenes::TourTiles(640, 384));
+  CompareWithGolden("tour_mipmaps", scenes::TourMipmapLevels(960, 320));
+  CompareWithGolden("tour_lines", scenes::TourLines(640, 320));
+  CompareWithGolden("tour_multisample", scenes::TourMultisample(640, 320));
+}
