@@ -36,6 +36,8 @@ enum class Program {
   kArrayShadow,  // colour = texture(depth array on unit 5 with comparison, extra): layer extra.z, reference extra.w
   kFetchSample,  // colour = texelFetch(2D multisample texture on unit 6, ivec2(gl_FragCoord.xy) - ivec2(extra.xy),
                  // int(extra.z))
+  kOutputs,      // four colour outputs: 0 colour; 1 (extra.x, extra.y, 0.5, colour.a); 2 colour * 2 - 0.5 (past
+                 // [0, 1] both ways); 3 (extra.z, extra.w, colour.g, colour.a)
 };
 
 /// A TEXTURE_2D_ARRAY or TEXTURE_3D defined by TexImage3D: RGBA8 from `rgba` (unit 3 for an array, 4 for 3D), or

@@ -114,6 +114,21 @@ out vec4 o_color;
 void main() { o_color = texelFetch(u_ms, ivec2(gl_FragCoord.xy) - ivec2(v_extra.xy), int(v_extra.z)); }
 )";
 
+constexpr const char* kOutputsFragment = R"(#version 330 core
+in vec4 v_color;
+in vec4 v_extra;
+layout(location = 0) out vec4 o_0;
+layout(location = 1) out vec4 o_1;
+layout(location = 2) out vec4 o_2;
+layout(location = 3) out vec4 o_3;
+void main() {
+  o_0 = v_color;
+  o_1 = vec4(v_extra.xy, 0.5, v_color.a);
+  o_2 = v_color * 2.0 - 0.5;
+  o_3 = vec4(v_extra.zw, v_color.g, v_color.a);
+}
+)";
+
 GLuint Compile(GLenum type, const char* source, std::string* error) {
   const GLuint s = glCreateShader(type);
   glShaderSource(s, 1, &source, nullptr);
@@ -166,6 +181,7 @@ class GlBackend final : public Backend {
     programs_[7] = Link(kVolumeFragment, error);
     programs_[8] = Link(kArrayShadowFragment, error);
     programs_[9] = Link(kFetchSampleFragment, error);
+    programs_[10] = Link(kOutputsFragment, error);
     instanced_ = Link(kColorFragment, error, kInstancedVertexShader);
     glUseProgram(programs_[4]);
     glUniform1i(glGetUniformLocation(programs_[4], "u_cube"), 1);
@@ -568,7 +584,7 @@ class GlBackend final : public Backend {
   OSMesaContext ctx_;
   int w_, h_;
   std::vector<std::uint8_t> buffer_;
-  GLuint programs_[10] = {};
+  GLuint programs_[11] = {};
   GLuint instanced_ = 0;
   GLuint rtt_color_ = 0;
   GLuint vao_ = 0, vbo_ = 0, ebo_ = 0;

@@ -148,6 +148,27 @@ struct FetchSampleShader : softgl::Shader<FetchSampleShader, FetchSampleVaryings
   }
 };
 
+// kOutputs, in the wide form: four colour outputs.
+struct OutputsVaryings {
+  softgl::vec4 color;
+  softgl::vec4 extra;
+};
+struct OutputsShader : softgl::Shader<OutputsShader, OutputsVaryings> {
+  void Vertex(const softgl::VertexLanes& in, softgl::VertexLanesOut<OutputsVaryings>& out) const {
+    out.position = in.attrib[0];
+    out.varyings.color = in.attrib[1];
+    out.varyings.extra = in.attrib[2];
+  }
+  void Fragment(const softgl::FragmentLanes<OutputsVaryings>& in, softgl::FragmentLanesOut& out) const {
+    const softgl::vec4& c = in.varyings.color;
+    const softgl::vec4& e = in.varyings.extra;
+    out.color[0] = c;
+    out.color[1] = softgl::vec4(e.x, e.y, softgl::Float(0.5f), c.w);
+    out.color[2] = c * 2.0f - 0.5f;
+    out.color[3] = softgl::vec4(e.z, e.w, c.y, c.w);
+  }
+};
+
 // The instanced program, in the wide form (gl_InstanceID is an Int lane).
 struct InstancedVaryings {
   softgl::vec4 color;
@@ -223,6 +244,7 @@ class SoftglBackend final : public Backend {
       case Program::kVolume: gl_.UseProgram(volume_); break;
       case Program::kArrayShadow: gl_.UseProgram(array_shadow_); break;
       case Program::kFetchSample: gl_.UseProgram(fetch_sample_); break;
+      case Program::kOutputs: gl_.UseProgram(outputs_); break;
     }
     if (indices.empty()) {
       gl_.DrawArrays(mode, 0, int(vertices.size()));
@@ -535,6 +557,7 @@ class SoftglBackend final : public Backend {
   ShadowShader shadow_;
   LayeredShader array_, volume_, array_shadow_;
   FetchSampleShader fetch_sample_;
+  OutputsShader outputs_;
   std::uint32_t rtt_color_ = 0;
 };
 

@@ -762,6 +762,67 @@ void FloatTargets(Backend& b) {
   BlendedTargets(b, formats);
 }
 
+// Several draw buffers of mixed formats in one framebuffer object (64 x 64): colour textures RGBA8, RGBA16F, RG8
+// and R32F, a depth renderbuffer, all cleared to values outside [0, 1]. First the four outputs of kOutputs go to
+// the attachments in reverse order (output 0 to R32F, 1 to RG8, 2 (past [0, 1]) to RGBA16F, 3 to RGBA8), in
+// overlapping gradient quads, depth-tested and blended by SRC_ALPHA / ONE_MINUS_SRC_ALPHA; then outputs 1 and 3
+// alone (with NONE between) add a triangle onto RGBA8 and RG8 (ONE, ONE). Each attachment is then blitted into
+// its quadrant of the context's framebuffer (ReadBuffer, NEAREST), which clamps and converts to 8 bits.
+void MultipleOutputs(Backend& b) {
+  ClearBlack(b);
+  const Enum att[4] = {COLOR_ATTACHMENT0, COLOR_ATTACHMENT0 + 1, COLOR_ATTACHMENT0 + 2, COLOR_ATTACHMENT0 + 3};
+  const Enum formats[4] = {RGBA8, RGBA16F, RG8, R32F};
+  const std::uint32_t fbo = b.GenFramebuffer();
+  b.BindFramebuffer(FRAMEBUFFER, fbo);
+  for (int k = 0; k < 4; ++k) b.AttachNewTexture(FRAMEBUFFER, att[k], formats[k], 64, 64);
+  const std::uint32_t depth = b.GenRenderbuffer();
+  b.BindRenderbuffer(depth);
+  b.RenderbufferStorage(DEPTH24_STENCIL8, 64, 64);
+  b.FramebufferRenderbuffer(FRAMEBUFFER, DEPTH_STENCIL_ATTACHMENT, depth);
+  if (b.CheckFramebufferStatus(FRAMEBUFFER) != FRAMEBUFFER_COMPLETE) return;  // left black: the check fails
+  b.Viewport(0, 0, 64, 64);
+  b.DrawBuffers(4, att);
+  b.ClearColor(0.25f, -0.5f, 1.5f, 0.75f);
+  b.ClearDepth(0.9);
+  b.Clear(COLOR_BUFFER_BIT | DEPTH_BUFFER_BIT);
+  const Enum reversed[4] = {att[3], att[2], att[1], att[0]};
+  b.DrawBuffers(4, reversed);
+  b.Enable(DEPTH_TEST);
+  b.Enable(BLEND);
+  b.BlendFunc(SRC_ALPHA, ONE_MINUS_SRC_ALPHA);
+  auto w = [](float x, float y, float z) { return Win(2 * x, 2 * y, z); };  // window point of the 64 x 64
+  for (int k = 0; k < 3; ++k) {
+    const float a = float(k) * 9.0f, z = 0.5f - 0.4f * float(k);
+    const Corners corner = {w(2 + a, 3 + a, z), w(44 + a, 5, -z), w(40 + a, 58 - a, z), w(4, 52 + a * 0.5f, -z)};
+    const Corners extra = {glm::vec4(0.1f, 0.9f, 1.2f, 0.3f), glm::vec4(0.8f, 0.2f, 0.05f, 0.9f),
+                           glm::vec4(0.6f, 0.6f, 0.7f, 0.0f), glm::vec4(0.0f, 0.35f, 0.4f, 1.0f)};
+    std::vector<Vertex> v = QuadWith(corner, extra);
+    const glm::vec4 colors[4] = {{0.9f, 0.2f, 0.1f, 0.6f}, {0.1f, 0.8f, 0.3f, 0.9f}, {0.3f, 0.4f, 1.0f, 0.4f},
+                                 {1.0f, 1.0f, 0.2f, 0.75f}};
+    const int order[6] = {0, 1, 3, 1, 2, 3};
+    for (int i = 0; i < 6; ++i) v[std::size_t(i)].color = colors[(order[i] + k) % 4];
+    b.Draw(TRIANGLES, v, Program::kOutputs);
+  }
+  b.Disable(DEPTH_TEST);
+  const Enum some[4] = {NONE, att[0], NONE, att[2]};
+  b.DrawBuffers(4, some);
+  b.BlendFunc(ONE, ONE);
+  b.Draw(TRIANGLES, {{w(10, 60, 0), {0.2f, 0.1f, 0.3f, 1}, {0.3f, 0.2f, 0.1f, 0.4f}},
+                     {w(62, 20, 0), {0.4f, 0.3f, 0.2f, 1}, {0.1f, 0.5f, 0.2f, 0.2f}},
+                     {w(30, 8, 0), {0.1f, 0.2f, 0.1f, 1}, {0.25f, 0.25f, 0.6f, 0.1f}}},
+         Program::kOutputs);
+  b.Disable(BLEND);
+  b.BindFramebuffer(DRAW_FRAMEBUFFER, 0);
+  b.Viewport(0, 0, kSize, kSize);
+  for (int k = 0; k < 4; ++k) {
+    const int x0 = (k % 2) * 64, y0 = (k / 2) * 64;
+    b.ReadBuffer(att[k]);
+    b.BlitFramebuffer(0, 0, 64, 64, x0, y0, x0 + 64, y0 + 64, COLOR_BUFFER_BIT, NEAREST);
+  }
+  b.ReadBuffer(att[0]);
+  b.BindFramebuffer(FRAMEBUFFER, 0);
+}
+
 // 16-bit normalized render targets: the same drawing into RGBA16, RG16, R16 and RGBA16, values clamped to [0, 1]
 // and kept to 16 bits.
 void Unorm16Targets(Backend& b) {
@@ -1535,6 +1596,7 @@ const std::vector<SceneInfo>& Scenes() {
       {"srgb_framebuffer", kSize, kSize, Check::kTexture, SrgbFramebuffer},
       {"float_targets", kSize, kSize, Check::kColor, FloatTargets},
       {"unorm16_targets", kSize, kSize, Check::kColor, Unorm16Targets},
+      {"multiple_outputs", kSize, kSize, Check::kColor, MultipleOutputs},
       {"texture_16bit", kSize, kSize, Check::kTexture, Texture16Bit},
       {"packed16_targets", kSize, kSize, Check::kStep4, Packed16Targets},
       {"packed16_blending", kSize, kSize, Check::kStep4, Packed16Blending},
