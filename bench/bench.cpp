@@ -579,6 +579,9 @@ struct FrameSpec {
   int count;
   const char* png;
   int samples = 0;  // > 1: into a multisampled framebuffer, resolved every frame
+  // The colour buffer's format: softgl's context takes it (Options::color_format), llvmpipe's multisampled
+  // framebuffer object; SRGB8_ALPHA8 with FRAMEBUFFER_SRGB enabled on both.
+  softgl::Enum color_format = softgl::RGBA8;
 };
 
 double TimeSoftgl(int n, softgl::Context& gl, const FrameSpec& f) {
@@ -609,12 +612,13 @@ double TimeGl(int n, const FrameSpec& f) {
     glGenFramebuffers(1, &fbo);
     glBindFramebuffer(GL_FRAMEBUFFER, fbo);
     glBindRenderbuffer(GL_RENDERBUFFER, rb[0]);
-    glRenderbufferStorageMultisample(GL_RENDERBUFFER, f.samples, GL_RGBA8, vp[2], vp[3]);
+    glRenderbufferStorageMultisample(GL_RENDERBUFFER, f.samples, f.color_format, vp[2], vp[3]);
     glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, rb[0]);
     glBindRenderbuffer(GL_RENDERBUFFER, rb[1]);
     glRenderbufferStorageMultisample(GL_RENDERBUFFER, f.samples, GL_DEPTH24_STENCIL8, vp[2], vp[3]);
     glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, rb[1]);
   }
+  if (f.color_format == softgl::SRGB8_ALPHA8) glEnable(GL_FRAMEBUFFER_SRGB);
   const double ms = MedianMs(n, [&] {
     glClear(GL_COLOR_BUFFER_BIT | (f.depth ? GL_DEPTH_BUFFER_BIT : 0));
     if (f.indexed) {
@@ -630,6 +634,7 @@ double TimeGl(int n, const FrameSpec& f) {
     glFinish();
   });
   if (fbo) glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  glDisable(GL_FRAMEBUFFER_SRGB);
   if (!g_png_dir.empty()) {  // llvmpipe's last frame beside softgl's, top row first
     softgl::Image img;
     img.width = vp[2];
@@ -1056,7 +1061,9 @@ int main(int argc, char** argv) {
                         return WithShader<wide::PhongShader, scalar::PhongShader>([&](auto& shader) {
                           softgl::Context::Options options = g_options;
                           options.samples = frame.samples;
+                          options.color_format = frame.color_format;
                           softgl::Context gl(w, h, options);
+                          if (frame.color_format == softgl::SRGB8_ALPHA8) gl.Enable(softgl::FRAMEBUFFER_SRGB);
                           softgl_setup(gl, g);
                           shader.view_proj = vp;
                           shader.eye = eye;
@@ -1083,10 +1090,21 @@ int main(int argc, char** argv) {
   FrameSpec engine_msaa_frame = engine_frame;
   engine_msaa_frame.samples = 4;
   engine_msaa_frame.png = "bench_engine_msaa.png";
+  // The context's own multisampled framebuffer in its two other colour formats (llvmpipe: a framebuffer object of
+  // the format, resolved into its RGBA8 context).
+  FrameSpec engine_msaa_srgb_frame = engine_msaa_frame, engine_msaa_565_frame = engine_msaa_frame;
+  engine_msaa_srgb_frame.color_format = softgl::SRGB8_ALPHA8;
+  engine_msaa_srgb_frame.png = "bench_engine_msaa_srgb.png";
+  engine_msaa_565_frame.color_format = softgl::RGB565;
+  engine_msaa_565_frame.png = "bench_engine_msaa_565.png";
   if (have_engine) {
     add_phong_scene("model: 2CylinderEngine, Blinn-Phong", 1280, 720, engine, engine_vp, engine_eye, engine_frame);
     add_phong_scene("model: 2CylinderEngine, Blinn-Phong, 4x MSAA", 1280, 720, engine, engine_vp, engine_eye,
                     engine_msaa_frame);
+    add_phong_scene("model: 2CylinderEngine, Blinn-Phong, 4x MSAA, SRGB8_ALPHA8", 1280, 720, engine, engine_vp,
+                    engine_eye, engine_msaa_srgb_frame);
+    add_phong_scene("model: 2CylinderEngine, Blinn-Phong, 4x MSAA, RGB565", 1280, 720, engine, engine_vp,
+                    engine_eye, engine_msaa_565_frame);
   }
   // The subdivided Suzanne (251,904 triangles, assimp-testmodels' BLEND/SuzanneSubdiv_252.blend) at 1920x1080.
   Geometry suzanne;

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <cstring>
 #include <new>
+#include <vector>
 
 namespace softgl::detail {
 
@@ -301,6 +302,66 @@ void AverageInterleaved(const std::uint8_t* in, std::uint8_t* out, int n) {
   }
 }
 
+// The floats c / (2^bits - 1) of every code c of a packed channel of `bits` bits (1 to 10), as RawTexel computes
+// them: what a resolve sums.
+const float* PackedCodeFloats(int bits) {
+  static const auto tables = [] {
+    std::vector<std::vector<float>> t(11);
+    for (int b = 1; b <= 10; ++b) {
+      const unsigned max = (1u << b) - 1u;
+      for (unsigned c = 0; c <= max; ++c) t[std::size_t(b)].push_back(float(c) / float(max));
+    }
+    return t;
+  }();
+  return tables[std::size_t(bits)].data();
+}
+
+// Resolves n pixels of a packed fixed-point layout (RGB565, RGBA4, RGB5_A1, RGB10_A2) into pixels of the same
+// layout: texel (x, s) of the source at in + (x * in_step + s * plane) texels, of the destination at
+// out + x texels. Each channel's values summed in sample order, divided by the count, clamped and rounded: the
+// operations of LoadResolved then Store, so the same bits, without their per-texel dispatch.
+void ResolvePackedRow(TexelLayout layout, const std::uint8_t* in, std::size_t in_step, std::size_t plane,
+                      std::uint8_t* out, int samples, int n) {
+  const PackedUnorm k = PackingOf(layout);
+  const int bytes = BytesPerTexel(layout);
+  const float* value[4];
+  float max[4];
+  for (int c = 0; c < 4; ++c) {
+    value[c] = k.bits[c] ? PackedCodeFloats(k.bits[c]) : nullptr;
+    max[c] = float((1u << k.bits[c]) - 1u);
+  }
+  const float count = float(samples);
+  for (int x = 0; x < n; ++x) {
+    std::uint32_t codes[8];
+    for (int s = 0; s < samples; ++s) {
+      const std::uint8_t* p = in + (std::size_t(x) * in_step + std::size_t(s) * plane) * std::size_t(bytes);
+      if (bytes == 2) {
+        std::uint16_t h;
+        std::memcpy(&h, p, 2);
+        codes[s] = h;
+      } else {
+        std::memcpy(&codes[s], p, 4);
+      }
+    }
+    std::uint32_t w = 0;
+    for (int c = 0; c < 4; ++c) {
+      if (!value[c]) continue;
+      const std::uint32_t mask = (1u << k.bits[c]) - 1u;
+      float sum = 0.0f;
+      for (int s = 0; s < samples; ++s) sum += value[c][(codes[s] >> k.shift[c]) & mask];
+      const float avg = sum / count;
+      const float v = avg > 0.0f ? std::min(avg, 1.0f) : 0.0f;
+      w |= std::uint32_t(std::lrint(v * max[c])) << k.shift[c];
+    }
+    if (bytes == 2) {
+      const std::uint16_t h = std::uint16_t(w);
+      std::memcpy(out + std::size_t(x) * 2, &h, 2);
+    } else {
+      std::memcpy(out + std::size_t(x) * 4, &w, 4);
+    }
+  }
+}
+
 // n depth values from src's (sx, sy) on to dst's (dx, dy): copied as they are between buffers of one kind.
 void CopyDepthRow(const RenderTarget& src, const RenderTarget& dst, int sx, int sy, int dx, int dy, int n) {
   if (src.step != 1 || dst.step != 1) {
@@ -316,19 +377,25 @@ void CopyDepthRow(const RenderTarget& src, const RenderTarget& dst, int sx, int 
 
 // Resolves rows [y0, y1) x columns [x0, x1) of a multisampled source into the same pixels of dst (an unmirrored
 // blit of equal rectangles, offset by (dx, dy)): bytes of RGBA8 into RGBA8 averaged in integers (rounded half
-// up), depth and stencil copied from sample 0, other colour formats through LoadResolved. False, doing nothing,
-// when a colour buffer of dst is neither RGBA8 nor absent (the caller's general path handles it).
+// up), packed fixed-point texels into the same layout by ResolvePackedRow, depth and stencil copied from sample 0.
+// False, doing nothing, for other colour formats (the caller's general path handles them, through LoadResolved).
 bool ResolveRows(const RenderTarget& src, const RenderTarget& dst, const BlitRegion& r, int x0, int x1, int y0, int y1,
                  int dx, int dy) {
   const ColorBuffer& from = src.color[0];
-  if (r.color && (!from.Rgba8() || (from.step != 1 && !src.interleaved)))
+  const bool packed = IsPackedUnorm(from.layout);
+  if (r.color && !packed && (!from.Rgba8() || (from.step != 1 && !src.interleaved)))
     return false;
   for (const ColorBuffer& cb : dst.color)
-    if (r.color && cb.Present() && !cb.Rgba8()) return false;
+    if (r.color && cb.Present() && (packed ? cb.layout != from.layout || cb.step != 1 : !cb.Rgba8())) return false;
   const int n = x1 - x0;
   const std::size_t plane_bytes = from.plane * 4;
   for (int y = y0; y < y1; ++y) {
-    if (r.color) {
+    if (r.color && packed) {
+      const std::uint8_t* in = from.At(x0 - dx, y - dy);
+      for (const ColorBuffer& cb : dst.color)
+        if (cb.Present())
+          ResolvePackedRow(from.layout, in, std::size_t(from.step), from.plane, cb.At(x0, y), src.samples, n);
+    } else if (r.color) {
       const std::uint8_t* in = from.At(x0 - dx, y - dy);
       for (const ColorBuffer& cb : dst.color) {
         if (!cb.Present()) continue;

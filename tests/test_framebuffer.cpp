@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 
 #include <cstdint>
+#include <cstring>
 #include <iterator>
 #include <limits>
 #include <utility>
@@ -741,6 +742,62 @@ TEST_CASE("ClearColor of every colour format: the texel Store writes, through th
     ++compared;
   }
   CHECK(compared == 400);
+}
+
+TEST_CASE("resolving packed formats (RGB565, RGBA4, RGB5_A1, RGB10_A2) by rows gives LoadResolved's bytes",
+          "[framebuffer][multisample][formats]") {
+  using detail::TexelLayout;
+  const TexelLayout layouts[] = {TexelLayout::kUnorm565, TexelLayout::kUnorm4444, TexelLayout::kUnorm5551,
+                                 TexelLayout::kUnorm1010102};
+  std::uint32_t seed = 11;
+  auto next = [&] { return seed = seed * 1664525u + 1013904223u; };
+  int compared = 0;
+  for (int round = 0; round < 96; ++round) {
+    const TexelLayout layout = layouts[round % 4];
+    const int samples = 2 << (round / 4 % 3);          // 2, 4, 8
+    const bool interleaved = (round / 12) % 2 == 1;    // samples side by side, or planes
+    const int w = 1 + int(next() % 40), h = 1 + int(next() % 6);
+    detail::RenderTarget src;
+    src.width = w;
+    src.height = h;
+    src.samples = samples;
+    src.interleaved = interleaved;
+    detail::ColorBuffer& in = src.color[0];
+    in.layout = layout;
+    in.pitch = interleaved ? w * samples : w;
+    in.step = interleaved ? samples : 1;
+    in.plane = interleaved ? 1 : std::size_t(w) * std::size_t(h);
+    const std::size_t bytes = std::size_t(in.Bytes());
+    std::vector<std::uint8_t> texels(std::size_t(w) * std::size_t(h) * std::size_t(samples) * bytes);
+    for (std::uint8_t& b : texels) b = std::uint8_t(next() >> 24);
+    // A few pixels whose samples all agree, and all-0 and all-1 bits.
+    for (std::size_t i = 0; i + bytes <= texels.size(); i += bytes * 7) std::memset(&texels[i], (i / bytes) % 2 ? 0xFF : 0, bytes);
+    in.data = texels.data();
+    detail::RenderTarget dst;
+    dst.width = w;
+    dst.height = h;
+    detail::ColorBuffer& out = dst.color[0];
+    out.layout = layout;
+    out.pitch = w;
+    std::vector<std::uint8_t> result(std::size_t(w) * std::size_t(h) * bytes), expected = result;
+    out.data = result.data();
+    detail::ColorBuffer reference = out;
+    reference.data = expected.data();
+    const bool all[4] = {true, true, true, true};
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x) reference.Store(x, y, detail::LoadResolved(in, samples, x, y), all);
+    detail::BlitRegion region;
+    region.src[2] = region.dst[2] = w;
+    region.src[3] = region.dst[3] = h;
+    region.clip = detail::Rect{0, 0, w, h};
+    region.color = true;
+    detail::Blit(src, dst, region);
+    INFO("round " << round << ", layout " << int(layout) << ", " << samples << " samples, "
+                  << (interleaved ? "interleaved" : "planes") << ", " << w << " x " << h);
+    CHECK(result == expected);
+    ++compared;
+  }
+  CHECK(compared == 96);
 }
 
 TEST_CASE("eight draw buffers of mixed formats, mapped in any order, each takes its output in one draw",
