@@ -316,12 +316,33 @@ const float* PackedCodeFloats(int bits) {
   return tables[std::size_t(bits)].data();
 }
 
-// Resolves n pixels of a packed fixed-point layout (RGB565, RGBA4, RGB5_A1, RGB10_A2) into pixels of the same
-// layout: texel (x, s) of the source at in + (x * in_step + s * plane) texels, of the destination at
-// out + x texels. Each channel's values summed in sample order, divided by the count, clamped and rounded: the
-// operations of LoadResolved then Store, so the same bits, without their per-texel dispatch.
-void ResolvePackedRow(TexelLayout layout, const std::uint8_t* in, std::size_t in_step, std::size_t plane,
-                      std::uint8_t* out, int samples, int n) {
+// Resolving a run of pixels into a buffer of the same format, a format at a time, without LoadResolved's and
+// Store's per-texel dispatch but with their operations in their order (so the same bytes): each channel's values
+// summed in sample order, divided by the count, and encoded. Texel (x, s) of the source lies at
+// in + (x * in_step + s * plane) texels, pixel x of the destination at out + x texels.
+struct ResolveRun {
+  const std::uint8_t* in;
+  std::size_t in_step, plane;
+  std::uint8_t* out;
+  int samples, n;
+  const std::uint8_t* Texel(int x, int s, int bytes) const {
+    return in + (std::size_t(x) * in_step + std::size_t(s) * plane) * std::size_t(bytes);
+  }
+};
+
+std::uint16_t Bits16(const std::uint8_t* p) {
+  std::uint16_t h;
+  std::memcpy(&h, p, 2);
+  return h;
+}
+std::uint32_t Bits32(const std::uint8_t* p) {
+  std::uint32_t w;
+  std::memcpy(&w, p, 4);
+  return w;
+}
+
+// Packed fixed point (RGB565, RGBA4, RGB5_A1, RGB10_A2): RawTexel's c / (2^bits - 1), Store's clamp and round.
+void ResolvePacked(TexelLayout layout, const ResolveRun& r) {
   const PackedUnorm k = PackingOf(layout);
   const int bytes = BytesPerTexel(layout);
   const float* value[4];
@@ -330,35 +351,135 @@ void ResolvePackedRow(TexelLayout layout, const std::uint8_t* in, std::size_t in
     value[c] = k.bits[c] ? PackedCodeFloats(k.bits[c]) : nullptr;
     max[c] = float((1u << k.bits[c]) - 1u);
   }
-  const float count = float(samples);
-  for (int x = 0; x < n; ++x) {
+  const float count = float(r.samples);
+  for (int x = 0; x < r.n; ++x) {
     std::uint32_t codes[8];
-    for (int s = 0; s < samples; ++s) {
-      const std::uint8_t* p = in + (std::size_t(x) * in_step + std::size_t(s) * plane) * std::size_t(bytes);
-      if (bytes == 2) {
-        std::uint16_t h;
-        std::memcpy(&h, p, 2);
-        codes[s] = h;
-      } else {
-        std::memcpy(&codes[s], p, 4);
-      }
-    }
+    for (int s = 0; s < r.samples; ++s) codes[s] = bytes == 2 ? Bits16(r.Texel(x, s, 2)) : Bits32(r.Texel(x, s, 4));
     std::uint32_t w = 0;
     for (int c = 0; c < 4; ++c) {
       if (!value[c]) continue;
       const std::uint32_t mask = (1u << k.bits[c]) - 1u;
       float sum = 0.0f;
-      for (int s = 0; s < samples; ++s) sum += value[c][(codes[s] >> k.shift[c]) & mask];
+      for (int s = 0; s < r.samples; ++s) sum += value[c][(codes[s] >> k.shift[c]) & mask];
       const float avg = sum / count;
       const float v = avg > 0.0f ? std::min(avg, 1.0f) : 0.0f;
       w |= std::uint32_t(std::lrint(v * max[c])) << k.shift[c];
     }
     if (bytes == 2) {
       const std::uint16_t h = std::uint16_t(w);
-      std::memcpy(out + std::size_t(x) * 2, &h, 2);
+      std::memcpy(r.out + std::size_t(x) * 2, &h, 2);
     } else {
-      std::memcpy(out + std::size_t(x) * 4, &w, 4);
+      std::memcpy(r.out + std::size_t(x) * 4, &w, 4);
     }
+  }
+}
+
+// N channels of `Element` bytes each: decode(p) the float of the channel at p, encode(v, p) stores one.
+template <int N, int Element, class Decode, class Encode>
+void ResolveChannels(const ResolveRun& r, Decode decode, Encode encode) {
+  const float count = float(r.samples);
+  for (int x = 0; x < r.n; ++x)
+    for (int c = 0; c < N; ++c) {
+      float sum = 0.0f;
+      for (int s = 0; s < r.samples; ++s) sum += decode(r.Texel(x, s, N * Element) + c * Element);
+      encode(sum / count, r.out + (std::size_t(x) * N + std::size_t(c)) * Element);
+    }
+}
+
+// 8-bit channels (not sRGB): LoadResolved's integer average, rounded half up (what Store keeps of it).
+void ResolveBytes(int channels, const ResolveRun& r) {
+  for (int x = 0; x < r.n; ++x)
+    for (int c = 0; c < channels; ++c) {
+      int sum = 0;
+      for (int s = 0; s < r.samples; ++s) sum += r.Texel(x, s, channels)[c];
+      r.out[std::size_t(x) * std::size_t(channels) + std::size_t(c)] =
+          std::uint8_t((sum * 2 + r.samples) / (2 * r.samples));
+    }
+}
+
+// SRGB8_ALPHA8 while FRAMEBUFFER_SRGB is enabled: the colour decoded (SrgbDecode8), averaged in linear light and
+// encoded again (SrgbEncode8); alpha as a fixed-point value.
+void ResolveSrgb(const ResolveRun& r) {
+  const float count = float(r.samples);
+  for (int x = 0; x < r.n; ++x)
+    for (int c = 0; c < 4; ++c) {
+      float sum = 0.0f;
+      for (int s = 0; s < r.samples; ++s) {
+        const std::uint8_t k = r.Texel(x, s, 4)[c];
+        sum += c < 3 ? SrgbDecode8(k) : float(k) / 255.0f;
+      }
+      const float avg = sum / count;
+      r.out[std::size_t(x) * 4 + std::size_t(c)] = c < 3 ? SrgbEncode8(avg) : FloatToUnorm8(avg);
+    }
+}
+
+// R11F_G11F_B10F: each small float decoded, averaged and encoded again (rounded to nearest, ties to even).
+void ResolveSmallFloats(const ResolveRun& r) {
+  constexpr int kShift[3] = {0, 11, 22}, kMantissa[3] = {6, 6, 5};
+  constexpr std::uint32_t kMask[3] = {0x7FFu, 0x7FFu, 0x3FFu};
+  const float count = float(r.samples);
+  for (int x = 0; x < r.n; ++x) {
+    std::uint32_t w = 0;
+    for (int c = 0; c < 3; ++c) {
+      float sum = 0.0f;
+      for (int s = 0; s < r.samples; ++s)
+        sum += UnsignedSmallToFloat((Bits32(r.Texel(x, s, 4)) >> kShift[c]) & kMask[c], kMantissa[c]);
+      w |= FloatToUnsignedSmall(sum / count, kMantissa[c]) << kShift[c];
+    }
+    std::memcpy(r.out + std::size_t(x) * 4, &w, 4);
+  }
+}
+
+// Whether ResolveRunOf takes `cb`'s format: all but RGB8 and SRGB8 (whose alpha byte is not stored, and which the
+// per-pixel path leaves as it is).
+bool RunResolvable(const ColorBuffer& cb) {
+  return !cb.rgb_only && cb.layout != TexelLayout::kNone;
+}
+
+// Resolves the run from `from`'s format (RunResolvable) into the same format.
+void ResolveRunOf(const ColorBuffer& from, const ResolveRun& r) {
+  auto half = [](const std::uint8_t* p) { return HalfToFloat(Bits16(p)); };
+  auto to_half = [](float v, std::uint8_t* p) {
+    const std::uint16_t h = FloatToHalf(v);
+    std::memcpy(p, &h, 2);
+  };
+  auto f32 = [](const std::uint8_t* p) {
+    float v;
+    std::memcpy(&v, p, 4);
+    return v;
+  };
+  auto to_f32 = [](float v, std::uint8_t* p) { std::memcpy(p, &v, 4); };
+  auto u16 = [](const std::uint8_t* p) { return float(Bits16(p)) / 65535.0f; };
+  auto to_u16 = [](float v, std::uint8_t* p) {
+    const float c = v > 0.0f ? std::min(v, 1.0f) : 0.0f;  // NaN as 0
+    const auto k = std::uint16_t(std::lrint(c * 65535.0f));
+    std::memcpy(p, &k, 2);
+  };
+  switch (from.layout) {
+    case TexelLayout::kUnorm565:
+    case TexelLayout::kUnorm4444:
+    case TexelLayout::kUnorm5551:
+    case TexelLayout::kUnorm1010102: ResolvePacked(from.layout, r); return;
+    case TexelLayout::kUnorm8x4:
+      if (!from.srgb) {
+        ResolveBytes(4, r);
+        return;
+      }
+      ResolveSrgb(r);
+      return;
+    case TexelLayout::kFloat11x11x10: ResolveSmallFloats(r); return;
+    case TexelLayout::kUnorm8x2: ResolveBytes(2, r); return;
+    case TexelLayout::kUnorm8x1: ResolveBytes(1, r); return;
+    case TexelLayout::kFloat16x4: ResolveChannels<4, 2>(r, half, to_half); return;
+    case TexelLayout::kFloat16x2: ResolveChannels<2, 2>(r, half, to_half); return;
+    case TexelLayout::kFloat16x1: ResolveChannels<1, 2>(r, half, to_half); return;
+    case TexelLayout::kFloat32x4: ResolveChannels<4, 4>(r, f32, to_f32); return;
+    case TexelLayout::kFloat32x2: ResolveChannels<2, 4>(r, f32, to_f32); return;
+    case TexelLayout::kFloat32x1: ResolveChannels<1, 4>(r, f32, to_f32); return;
+    case TexelLayout::kUnorm16x4: ResolveChannels<4, 2>(r, u16, to_u16); return;
+    case TexelLayout::kUnorm16x2: ResolveChannels<2, 2>(r, u16, to_u16); return;
+    case TexelLayout::kUnorm16x1: ResolveChannels<1, 2>(r, u16, to_u16); return;
+    default: return;
   }
 }
 
@@ -377,24 +498,31 @@ void CopyDepthRow(const RenderTarget& src, const RenderTarget& dst, int sx, int 
 
 // Resolves rows [y0, y1) x columns [x0, x1) of a multisampled source into the same pixels of dst (an unmirrored
 // blit of equal rectangles, offset by (dx, dy)): bytes of RGBA8 into RGBA8 averaged in integers (rounded half
-// up), packed fixed-point texels into the same layout by ResolvePackedRow, depth and stencil copied from sample 0.
-// False, doing nothing, for other colour formats (the caller's general path handles them, through LoadResolved).
+// up), other formats into buffers of the same format by ResolveRunOf, depth and stencil copied from sample 0.
+// False, doing nothing, for other pairs of colour formats (the caller's general path handles them, through
+// LoadResolved).
 bool ResolveRows(const RenderTarget& src, const RenderTarget& dst, const BlitRegion& r, int x0, int x1, int y0, int y1,
                  int dx, int dy) {
   const ColorBuffer& from = src.color[0];
-  const bool packed = IsPackedUnorm(from.layout);
-  if (r.color && !packed && (!from.Rgba8() || (from.step != 1 && !src.interleaved)))
-    return false;
+  // RGBA8 into RGBA8 by the byte averages below; any other format into buffers of the same format and sRGB state
+  // by ResolveRunOf (its rows run by run, without LoadResolved's per-texel dispatch).
+  const bool bytes = from.Rgba8() && (from.step == 1 || src.interleaved);
+  bool same = !bytes && RunResolvable(from);
   for (const ColorBuffer& cb : dst.color)
-    if (r.color && cb.Present() && (packed ? cb.layout != from.layout || cb.step != 1 : !cb.Rgba8())) return false;
+    same = same && (!cb.Present() || (cb.layout == from.layout && cb.srgb == from.srgb && !cb.rgb_only && cb.step == 1));
+  if (r.color && !bytes && !same) return false;
+  for (const ColorBuffer& cb : dst.color)
+    if (r.color && bytes && cb.Present() && !cb.Rgba8()) return false;
   const int n = x1 - x0;
   const std::size_t plane_bytes = from.plane * 4;
   for (int y = y0; y < y1; ++y) {
-    if (r.color && packed) {
-      const std::uint8_t* in = from.At(x0 - dx, y - dy);
+    if (r.color && !bytes) {
       for (const ColorBuffer& cb : dst.color)
-        if (cb.Present())
-          ResolvePackedRow(from.layout, in, std::size_t(from.step), from.plane, cb.At(x0, y), src.samples, n);
+        if (cb.Present()) {
+          const ResolveRun run{from.At(x0 - dx, y - dy), std::size_t(from.step), from.plane, cb.At(x0, y),
+                               src.samples, n};
+          ResolveRunOf(from, run);
+        }
     } else if (r.color) {
       const std::uint8_t* in = from.At(x0 - dx, y - dy);
       for (const ColorBuffer& cb : dst.color) {

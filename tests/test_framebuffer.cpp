@@ -680,20 +680,26 @@ TEST_CASE("SampleTiles: a deferred clear fills the resolve without its samples u
   }
 }
 
+namespace {
+
+// Every colour buffer format: its layout, whether alpha is not stored (RGB8, SRGB8), whether sRGB is on.
+struct ColourFormat {
+  detail::TexelLayout layout;
+  bool rgb_only = false, srgb = false;
+};
+using L = detail::TexelLayout;
+const ColourFormat kColourFormats[] = {
+    {L::kUnorm8x4},  {L::kUnorm8x4, true},  {L::kUnorm8x2},  {L::kUnorm8x1},  {L::kUnorm8x4, false, true},
+    {L::kUnorm8x4, true, true},  {L::kFloat32x4},  {L::kFloat32x2},  {L::kFloat32x1},  {L::kFloat16x4},
+    {L::kFloat16x2},  {L::kFloat16x1},  {L::kFloat11x11x10},  {L::kUnorm565},  {L::kUnorm4444},  {L::kUnorm5551},
+    {L::kUnorm1010102},  {L::kUnorm16x4},  {L::kUnorm16x2},  {L::kUnorm16x1}};
+
+}  // namespace
+
 TEST_CASE("ClearColor of every colour format: the texel Store writes, through the colour mask, inside the rectangle",
           "[framebuffer][formats]") {
   using detail::TexelLayout;
-  struct Format {
-    TexelLayout layout;
-    bool rgb_only = false, srgb = false;
-  };
-  const Format formats[] = {{TexelLayout::kUnorm8x4}, {TexelLayout::kUnorm8x4, true}, {TexelLayout::kUnorm8x2},
-                            {TexelLayout::kUnorm8x1}, {TexelLayout::kUnorm8x4, false, true},
-                            {TexelLayout::kUnorm8x4, true, true}, {TexelLayout::kFloat32x4}, {TexelLayout::kFloat32x2},
-                            {TexelLayout::kFloat32x1}, {TexelLayout::kFloat16x4}, {TexelLayout::kFloat16x2},
-                            {TexelLayout::kFloat16x1}, {TexelLayout::kFloat11x11x10}, {TexelLayout::kUnorm565},
-                            {TexelLayout::kUnorm4444}, {TexelLayout::kUnorm5551}, {TexelLayout::kUnorm1010102},
-                            {TexelLayout::kUnorm16x4}, {TexelLayout::kUnorm16x2}, {TexelLayout::kUnorm16x1}};
+  const auto& formats = kColourFormats;
   const float specials[] = {0.0f, -0.0f, 1.0f, -1.0f, 0.5f, 1e30f, -1e30f, std::numeric_limits<float>::infinity(),
                             std::numeric_limits<float>::quiet_NaN(), 3e-5f, 65504.0f, 0.2f};
   std::uint32_t seed = 7;
@@ -704,7 +710,7 @@ TEST_CASE("ClearColor of every colour format: the texel Store writes, through th
   };
   int compared = 0;
   for (int round = 0; round < 400; ++round) {
-    const Format& f = formats[std::size_t(round) % std::size(formats)];
+    const ColourFormat& f = formats[std::size_t(round) % std::size(formats)];
     const int w = 1 + int(next() % 37), h = 1 + int(next() % 5);
     detail::RenderTarget t;
     t.width = w;
@@ -744,18 +750,18 @@ TEST_CASE("ClearColor of every colour format: the texel Store writes, through th
   CHECK(compared == 400);
 }
 
-TEST_CASE("resolving packed formats (RGB565, RGBA4, RGB5_A1, RGB10_A2) by rows gives LoadResolved's bytes",
-          "[framebuffer][multisample][formats]") {
+TEST_CASE("resolving by rows gives LoadResolved's bytes in every colour format", "[framebuffer][multisample][formats]") {
   using detail::TexelLayout;
-  const TexelLayout layouts[] = {TexelLayout::kUnorm565, TexelLayout::kUnorm4444, TexelLayout::kUnorm5551,
-                                 TexelLayout::kUnorm1010102};
+  const auto& formats = kColourFormats;
+  constexpr int kFormats = int(std::size(formats));
   std::uint32_t seed = 11;
   auto next = [&] { return seed = seed * 1664525u + 1013904223u; };
   int compared = 0;
-  for (int round = 0; round < 96; ++round) {
-    const TexelLayout layout = layouts[round % 4];
-    const int samples = 2 << (round / 4 % 3);          // 2, 4, 8
-    const bool interleaved = (round / 12) % 2 == 1;    // samples side by side, or planes
+  for (int round = 0; round < kFormats * 6; ++round) {
+    const ColourFormat& f = formats[round % kFormats];
+    const TexelLayout layout = f.layout;
+    const int samples = 2 << (round / kFormats % 3);        // 2, 4, 8
+    const bool interleaved = (round / (3 * kFormats)) == 1;  // samples side by side, or planes
     const int w = 1 + int(next() % 40), h = 1 + int(next() % 6);
     detail::RenderTarget src;
     src.width = w;
@@ -764,20 +770,50 @@ TEST_CASE("resolving packed formats (RGB565, RGBA4, RGB5_A1, RGB10_A2) by rows g
     src.interleaved = interleaved;
     detail::ColorBuffer& in = src.color[0];
     in.layout = layout;
+    in.rgb_only = f.rgb_only;
+    in.srgb = f.srgb;
     in.pitch = interleaved ? w * samples : w;
     in.step = interleaved ? samples : 1;
     in.plane = interleaved ? 1 : std::size_t(w) * std::size_t(h);
     const std::size_t bytes = std::size_t(in.Bytes());
     std::vector<std::uint8_t> texels(std::size_t(w) * std::size_t(h) * std::size_t(samples) * bytes);
     for (std::uint8_t& b : texels) b = std::uint8_t(next() >> 24);
-    // A few pixels whose samples all agree, and all-0 and all-1 bits.
+    // A few texels of all-0 and all-1 bits.
     for (std::size_t i = 0; i + bytes <= texels.size(); i += bytes * 7) std::memset(&texels[i], (i / bytes) % 2 ? 0xFF : 0, bytes);
+    // No NaN among the float inputs: which of two NaNs' payloads a sum keeps depends on the order the compiler gives
+    // the operands (OpenGL leaves NaN's bits open). Infinities stay.
+    auto no_nan = [&](std::size_t at, int bits, int exponent_shift, std::uint32_t exponent, std::uint32_t mantissa) {
+      std::uint32_t v = 0;
+      std::memcpy(&v, &texels[at], std::size_t(bits / 8));
+      if (((v >> exponent_shift) & exponent) == exponent && (v & mantissa) != 0) v &= ~mantissa;
+      std::memcpy(&texels[at], &v, std::size_t(bits / 8));
+    };
+    for (std::size_t i = 0; i < texels.size(); i += 4) {
+      if (layout == TexelLayout::kFloat32x4 || layout == TexelLayout::kFloat32x2 || layout == TexelLayout::kFloat32x1)
+        no_nan(i, 32, 23, 0xFFu, 0x7FFFFFu);
+      if (layout == TexelLayout::kFloat16x4 || layout == TexelLayout::kFloat16x2 || layout == TexelLayout::kFloat16x1) {
+        no_nan(i, 16, 10, 0x1Fu, 0x3FFu);
+        no_nan(i + 2, 16, 10, 0x1Fu, 0x3FFu);
+      }
+      if (layout == TexelLayout::kFloat11x11x10) {
+        std::uint32_t w;
+        std::memcpy(&w, &texels[i], 4);
+        const int shift[3] = {0, 11, 22}, mantissa[3] = {6, 6, 5};
+        for (int c = 0; c < 3; ++c) {
+          const std::uint32_t e = (w >> (shift[c] + mantissa[c])) & 0x1Fu, m = (w >> shift[c]) & ((1u << mantissa[c]) - 1u);
+          if (e == 0x1Fu && m != 0) w &= ~(((1u << mantissa[c]) - 1u) << shift[c]);
+        }
+        std::memcpy(&texels[i], &w, 4);
+      }
+    }
     in.data = texels.data();
     detail::RenderTarget dst;
     dst.width = w;
     dst.height = h;
     detail::ColorBuffer& out = dst.color[0];
     out.layout = layout;
+    out.rgb_only = f.rgb_only;
+    out.srgb = f.srgb;
     out.pitch = w;
     std::vector<std::uint8_t> result(std::size_t(w) * std::size_t(h) * bytes), expected = result;
     out.data = result.data();
@@ -792,12 +828,13 @@ TEST_CASE("resolving packed formats (RGB565, RGBA4, RGB5_A1, RGB10_A2) by rows g
     region.clip = detail::Rect{0, 0, w, h};
     region.color = true;
     detail::Blit(src, dst, region);
-    INFO("round " << round << ", layout " << int(layout) << ", " << samples << " samples, "
+    INFO("round " << round << ", layout " << int(layout) << (f.srgb ? " sRGB" : "") << (f.rgb_only ? " RGB" : "") << ", "
+                  << samples << " samples, "
                   << (interleaved ? "interleaved" : "planes") << ", " << w << " x " << h);
     CHECK(result == expected);
     ++compared;
   }
-  CHECK(compared == 96);
+  CHECK(compared == kFormats * 6);
 }
 
 TEST_CASE("eight draw buffers of mixed formats, mapped in any order, each takes its output in one draw",
