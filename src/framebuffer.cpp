@@ -487,10 +487,10 @@ void ResolveRunOf(const ColorBuffer& from, const ResolveRun& r) {
 void CopyDepthRow(const RenderTarget& src, const RenderTarget& dst, int sx, int sy, int dx, int dy, int n) {
   if (src.step != 1 || dst.step != 1) {
     for (int i = 0; i < n; ++i) dst.SetDepth(dx + i, dy, dst.StoredDepth(src.DepthAt(sx + i, sy)));
-  } else if (src.depth16 && dst.depth16) {
-    std::memcpy(dst.depth16 + dst.DepthIndex(dx, dy, 0), src.depth16 + src.DepthIndex(sx, sy, 0), 2 * std::size_t(n));
+  } else if (src.depth16 && dst.depth16) {  // (memmove: a blit within one framebuffer may overlap itself)
+    std::memmove(dst.depth16 + dst.DepthIndex(dx, dy, 0), src.depth16 + src.DepthIndex(sx, sy, 0), 2 * std::size_t(n));
   } else if (src.depth && dst.depth) {
-    std::memcpy(dst.depth + dst.DepthIndex(dx, dy, 0), src.depth + src.DepthIndex(sx, sy, 0), 4 * std::size_t(n));
+    std::memmove(dst.depth + dst.DepthIndex(dx, dy, 0), src.depth + src.DepthIndex(sx, sy, 0), 4 * std::size_t(n));
   } else {
     for (int i = 0; i < n; ++i) dst.SetDepth(dx + i, dy, dst.StoredDepth(src.DepthAt(sx + i, sy)));
   }
@@ -553,6 +553,34 @@ bool ResolveRows(const RenderTarget& src, const RenderTarget& dst, const BlitReg
   return true;
 }
 
+// Copies rows [y0, y1) x columns [x0, x1) of a single-sampled source into the same pixels of dst (offset by
+// (dx, dy)) as they are stored, where that is what Load and Store would give: colour into buffers of the same
+// format and sRGB state whose texels every value survives decoding and encoding (8-bit, packed and 16-bit fixed
+// point, 32-bit floats; not the halves and small floats, whose Store makes NaNs canonical, nor RGB8 and SRGB8,
+// whose alpha byte Store leaves), depth and stencil as the resolve copies them. False, doing nothing, otherwise.
+bool CopyRows(const RenderTarget& src, const RenderTarget& dst, const BlitRegion& r, int x0, int x1, int y0, int y1,
+              int dx, int dy) {
+  const ColorBuffer& from = src.color[0];
+  if (r.color) {
+    const TexelLayout l = from.layout;
+    const bool exact = IsUnorm8(l) || IsPackedUnorm(l) || IsUnorm16(l) || l == TexelLayout::kFloat32x4 ||
+                       l == TexelLayout::kFloat32x2 || l == TexelLayout::kFloat32x1;
+    if (!exact || from.rgb_only || from.step != 1) return false;
+    for (const ColorBuffer& cb : dst.color)
+      if (cb.Present() && (cb.layout != l || cb.srgb != from.srgb || cb.rgb_only || cb.step != 1)) return false;
+  }
+  if (r.stencil && (src.step != 1 || dst.step != 1)) return false;
+  const int n = x1 - x0;
+  for (int y = y0; y < y1; ++y) {
+    if (r.color)
+      for (const ColorBuffer& cb : dst.color)
+        if (cb.Present()) std::memmove(cb.At(x0, y), from.At(x0 - dx, y - dy), std::size_t(n) * std::size_t(cb.Bytes()));
+    if (r.depth) CopyDepthRow(src, dst, x0 - dx, y - dy, x0, y, n);
+    if (r.stencil) std::memmove(&dst.Stencil(x0, y), &src.Stencil(x0 - dx, y - dy), std::size_t(n));
+  }
+  return true;
+}
+
 }  // namespace
 
 void Blit(const RenderTarget& src, const RenderTarget& dst, const BlitRegion& r) {
@@ -564,14 +592,17 @@ void Blit(const RenderTarget& src, const RenderTarget& dst, const BlitRegion& r)
   // (Rectangle sizes and offsets in 64 bits: the corners may be any ints, INT_MIN to INT_MAX.)
   using I64 = std::int64_t;
   const I64 sw = I64(r.src[2]) - r.src[0], sh = I64(r.src[3]) - r.src[1];
-  if (src.samples > 1 && sw == I64(r.dst[2]) - r.dst[0] && sh == I64(r.dst[3]) - r.dst[1] && sw > 0 && sh > 0) {
-    // A resolve of the same rectangle unmirrored: rows at a time, clipped to both buffers (which also bounds the
-    // offset of the two rectangles to the buffers' sizes wherever a pixel is left).
+  if ((src.samples > 1 || !r.linear) && sw == I64(r.dst[2]) - r.dst[0] && sh == I64(r.dst[3]) - r.dst[1] && sw > 0 &&
+      sh > 0) {
+    // A resolve, or a NEAREST copy, of the same rectangle unmirrored: rows at a time, clipped to both buffers (which
+    // also bounds the offset of the two rectangles to the buffers' sizes wherever a pixel is left).
     const I64 dx = I64(r.dst[0]) - r.src[0], dy = I64(r.dst[1]) - r.src[1];
     const I64 x0 = std::max<I64>({r.dst[0], r.clip.x0, 0, dx}), x1 = std::min<I64>({r.dst[2], r.clip.x1, dst.width, src.width + dx});
     const I64 y0 = std::max<I64>({r.dst[1], r.clip.y0, 0, dy}), y1 = std::min<I64>({r.dst[3], r.clip.y1, dst.height, src.height + dy});
     if (x0 >= x1 || y0 >= y1) return;
-    if (ResolveRows(src, dst, r, int(x0), int(x1), int(y0), int(y1), int(dx), int(dy))) return;
+    if (src.samples > 1 ? ResolveRows(src, dst, r, int(x0), int(x1), int(y0), int(y1), int(dx), int(dy))
+                        : CopyRows(src, dst, r, int(x0), int(x1), int(y0), int(y1), int(dx), int(dy)))
+      return;
   }
   const BlitAxis ax =
       MakeAxis(r.src[0], r.src[2], r.dst[0], r.dst[2], std::max(r.clip.x0, 0), std::min(r.clip.x1, dst.width));

@@ -837,6 +837,80 @@ TEST_CASE("resolving by rows gives LoadResolved's bytes in every colour format",
   CHECK(compared == kFormats * 6);
 }
 
+TEST_CASE("same-size NEAREST blits between buffers of one format give Load and Store's bytes, offset and clipped",
+          "[framebuffer][formats]") {
+  std::uint32_t seed = 5;
+  auto next = [&] { return seed = seed * 1664525u + 1013904223u; };
+  const int kFormats = int(std::size(kColourFormats));
+  for (int round = 0; round < kFormats * 4; ++round) {
+    const ColourFormat& f = kColourFormats[round % kFormats];
+    const int w = 1 + int(next() % 30), h = 1 + int(next() % 6);
+    auto buffer = [&](detail::RenderTarget& t, std::vector<std::uint8_t>& bytes, std::vector<float>& depth,
+                      std::vector<std::uint8_t>& stencil) {
+      t.width = w;
+      t.height = h;
+      detail::ColorBuffer& cb = t.color[0];
+      cb.layout = f.layout;
+      cb.rgb_only = f.rgb_only;
+      cb.srgb = f.srgb;
+      cb.pitch = w;
+      bytes.resize(std::size_t(w) * std::size_t(h) * std::size_t(cb.Bytes()));
+      const bool all[4] = {true, true, true, true};
+      cb.data = bytes.data();
+      for (int y = 0; y < h; ++y)  // values as Store leaves them (no NaN payloads: Store makes them canonical)
+        for (int x = 0; x < w; ++x)
+          cb.Store(x, y, glm::vec4(float(int(next() % 2001) - 500) / 1000.0f, float(next() % 1000) / 999.0f,
+                                   float(int(next() % 5) - 1) * 0.75f, float(next() % 256) / 255.0f), all);
+      depth.resize(std::size_t(w) * std::size_t(h));
+      for (float& d : depth) d = float(next() % 1000) / 999.0f;
+      stencil.resize(depth.size());
+      for (std::uint8_t& v : stencil) v = std::uint8_t(next());
+      t.depth = depth.data();
+      t.depth_pitch = w;
+      t.stencil = stencil.data();
+      t.stencil_pitch = w;
+    };
+    detail::RenderTarget src, dst, ref;
+    std::vector<std::uint8_t> src_bytes, dst_bytes, ref_bytes, src_st, dst_st, ref_st;
+    std::vector<float> src_d, dst_d, ref_d;
+    buffer(src, src_bytes, src_d, src_st);
+    buffer(dst, dst_bytes, dst_d, dst_st);
+    ref = dst;
+    ref_bytes = dst_bytes;
+    ref_d = dst_d;
+    ref_st = dst_st;
+    ref.color[0].data = ref_bytes.data();
+    ref.depth = ref_d.data();
+    ref.stencil = ref_st.data();
+    // A rectangle of the source onto one of the same size elsewhere, the offset up to the size either way, clipped.
+    const int sw = 1 + int(next() % std::uint32_t(w)), sh = 1 + int(next() % std::uint32_t(h));
+    const int sx = int(next() % std::uint32_t(w)) - 2, sy = int(next() % std::uint32_t(h)) - 1;
+    const int tx = int(next() % std::uint32_t(w)) - 3, ty = int(next() % std::uint32_t(h)) - 1;
+    detail::BlitRegion region;
+    region.src[0] = sx, region.src[1] = sy, region.src[2] = sx + sw, region.src[3] = sy + sh;
+    region.dst[0] = tx, region.dst[1] = ty, region.dst[2] = tx + sw, region.dst[3] = ty + sh;
+    region.clip = detail::Rect{int(next() % 3), 0, w - int(next() % 3), h};
+    region.color = true;
+    region.depth = round % 2 == 0;
+    region.stencil = round % 3 == 0;
+    const bool all[4] = {true, true, true, true};
+    for (int y = std::max({ty, region.clip.y0, 0}); y < std::min({ty + sh, region.clip.y1, h}); ++y)
+      for (int x = std::max({tx, region.clip.x0, 0}); x < std::min({tx + sw, region.clip.x1, w}); ++x) {
+        const int px = x - tx + sx, py = y - ty + sy;
+        if (px < 0 || py < 0 || px >= w || py >= h) continue;
+        ref.color[0].Store(x, y, src.color[0].Load(px, py), all);
+        if (region.depth) ref.SetDepth(x, y, ref.StoredDepth(src.DepthAt(px, py)));
+        if (region.stencil) ref.Stencil(x, y) = src.Stencil(px, py);
+      }
+    detail::Blit(src, dst, region);
+    INFO("round " << round << ", layout " << int(f.layout) << (f.srgb ? " sRGB" : "") << (f.rgb_only ? " RGB" : "")
+                  << ", " << w << " x " << h << ", from " << sx << ", " << sy << " to " << tx << ", " << ty);
+    CHECK(dst_bytes == ref_bytes);
+    CHECK(dst_d == ref_d);
+    CHECK(dst_st == ref_st);
+  }
+}
+
 TEST_CASE("eight draw buffers of mixed formats, mapped in any order, each takes its output in one draw",
           "[framebuffer][formats]") {
   // Output o is (o / 8, 1 - o / 8, 0.25, 1); draw buffer o goes to attachment 7 - o, whose format is formats[7 - o];
