@@ -694,6 +694,22 @@ const ColourFormat kColourFormats[] = {
     {L::kFloat16x2},  {L::kFloat16x1},  {L::kFloat11x11x10},  {L::kUnorm565},  {L::kUnorm4444},  {L::kUnorm5551},
     {L::kUnorm1010102},  {L::kUnorm16x4},  {L::kUnorm16x2},  {L::kUnorm16x1}};
 
+// Makes t a w x h single-sampled target whose colour buffer 0 has format f, rows `pitch` texels apart, its bytes
+// in `bytes` (resized, zero).
+detail::ColorBuffer& ColourTarget(detail::RenderTarget& t, const ColourFormat& f, int w, int h, int pitch,
+                                  std::vector<std::uint8_t>& bytes) {
+  t.width = w;
+  t.height = h;
+  detail::ColorBuffer& cb = t.color[0];
+  cb.layout = f.layout;
+  cb.rgb_only = f.rgb_only;
+  cb.srgb = f.srgb;
+  cb.pitch = pitch;
+  bytes.assign(std::size_t(pitch) * std::size_t(h) * std::size_t(cb.Bytes()), 0);
+  cb.data = bytes.data();
+  return cb;
+}
+
 }  // namespace
 
 TEST_CASE("ClearColor of every colour format: the texel Store writes, through the colour mask, inside the rectangle",
@@ -713,15 +729,8 @@ TEST_CASE("ClearColor of every colour format: the texel Store writes, through th
     const ColourFormat& f = formats[std::size_t(round) % std::size(formats)];
     const int w = 1 + int(next() % 37), h = 1 + int(next() % 5);
     detail::RenderTarget t;
-    t.width = w;
-    t.height = h;
-    detail::ColorBuffer& cb = t.color[0];
-    cb.layout = f.layout;
-    cb.rgb_only = f.rgb_only;
-    cb.srgb = f.srgb;
-    cb.pitch = w + int(next() % 3);
-    std::vector<std::uint8_t> bytes(std::size_t(cb.pitch) * std::size_t(h) * std::size_t(cb.Bytes()));
-    cb.data = bytes.data();
+    std::vector<std::uint8_t> bytes;
+    detail::ColorBuffer& cb = ColourTarget(t, f, w, h, w + int(next() % 3), bytes);
     // Texels as Store leaves them (random colours), so that the reference's re-encoding of the kept channels
     // keeps their bits.
     const bool all[4] = {true, true, true, true};
@@ -847,16 +856,8 @@ TEST_CASE("same-size NEAREST blits between buffers of one format give Load and S
     const int w = 1 + int(next() % 30), h = 1 + int(next() % 6);
     auto buffer = [&](detail::RenderTarget& t, std::vector<std::uint8_t>& bytes, std::vector<float>& depth,
                       std::vector<std::uint8_t>& stencil) {
-      t.width = w;
-      t.height = h;
-      detail::ColorBuffer& cb = t.color[0];
-      cb.layout = f.layout;
-      cb.rgb_only = f.rgb_only;
-      cb.srgb = f.srgb;
-      cb.pitch = w;
-      bytes.resize(std::size_t(w) * std::size_t(h) * std::size_t(cb.Bytes()));
+      detail::ColorBuffer& cb = ColourTarget(t, f, w, h, w, bytes);
       const bool all[4] = {true, true, true, true};
-      cb.data = bytes.data();
       for (int y = 0; y < h; ++y)  // values as Store leaves them (no NaN payloads: Store makes them canonical)
         for (int x = 0; x < w; ++x)
           cb.Store(x, y, glm::vec4(float(int(next() % 2001) - 500) / 1000.0f, float(next() % 1000) / 999.0f,
