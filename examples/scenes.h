@@ -97,6 +97,8 @@ softgl::Image TourCoverage(int width, int height);
 /// Barycentric weights as red, green and blue with lines every 0.1: left linear in window space, right
 /// perspective-correct, on a triangle lying on the ground.
 softgl::Image TourBarycentric(int width, int height);
+/// The viewport: one drawing in normalized device coordinates (a grid, the axes, a triangle) through three viewports.
+softgl::Image TourViewport(int width, int height);
 /// The depth buffer: a scene, its DEPTH_COMPONENT32F buffer as grey, and the eye distance recovered from it.
 softgl::Image TourDepth(int width, int height);
 /// Texture coordinates on a receding square of two triangles: affine (NoPerspective) left, perspective-correct

@@ -340,6 +340,37 @@ softgl::Image TourBarycentric(int width, int height) {
   return gl.ReadPixels();
 }
 
+// ---- The viewport ----------------------------------------------------------------------------------------------
+
+softgl::Image TourViewport(int width, int height) {
+  // The same drawing in normalized device coordinates (the square [-1, 1]^2 with grid lines every 0.25, its axes,
+  // and the README's triangle) through three viewports: a square one, a wide one and a tall one.
+  softgl::Context gl(width, height);
+  gl.ClearColor(0.1f, 0.1f, 0.12f, 1.0f);
+  gl.Clear(softgl::COLOR_BUFFER_BIT);
+  std::vector<float> triangle;
+  Push(triangle, {-0.8f, -0.7f, 0}, {1, 0, 0}), Push(triangle, {0.8f, -0.7f, 0}, {0, 1, 0});
+  Push(triangle, {0.0f, 0.8f, 0}, {0, 0, 1});
+  const int rects[3][4] = {{16, 16, height - 32, height - 32},
+                           {height + 8, height / 2 + 8, width - height - 24, height / 2 - 24},
+                           {height + 8, 16, (width - height) / 3, height / 2 - 24}};
+  for (const auto& v : rects) {
+    // The border of [-1, 1]^2 (yellow) drawn half a pixel inside, where the pixel centres of its edge rows are.
+    const float ix = 1.0f - 1.0f / float(v[2]), iy = 1.0f - 1.0f / float(v[3]);
+    std::vector<float> lines;
+    for (int k = -4; k <= 4; ++k) {
+      const float t = float(k) * 0.25f, tx = k == -4 || k == 4 ? t * ix : t, ty = k == -4 || k == 4 ? t * iy : t;
+      const glm::vec3 c = k == 0 ? glm::vec3(0.9f) : k == -4 || k == 4 ? glm::vec3(0.95f, 0.85f, 0.2f) : glm::vec3(0.35f);
+      Push(lines, {tx, -1, 0}, c), Push(lines, {tx, 1, 0}, c);
+      Push(lines, {-1, ty, 0}, c), Push(lines, {1, ty, 0}, c);
+    }
+    gl.Viewport(v[0], v[1], v[2], v[3]);
+    DrawColored(gl, glm::mat4(1.0f), softgl::TRIANGLES, triangle);
+    DrawColored(gl, glm::mat4(1.0f), softgl::LINES, lines);
+  }
+  return gl.ReadPixels();
+}
+
 // ---- 4. The depth buffer --------------------------------------------------------------------------------------
 
 namespace {

@@ -11,6 +11,7 @@ int main(int argc, char** argv) {
   };
   const Picture pictures[] = {
       {"tour_clipping.png", scenes::TourClipping, 640, 320},      {"tour_coverage.png", scenes::TourCoverage, 640, 320},
+      {"tour_viewport.png", scenes::TourViewport, 640, 320},
       {"tour_barycentric.png", scenes::TourBarycentric, 640, 320}, {"tour_depth.png", scenes::TourDepth, 960, 320},
       {"tour_perspective.png", scenes::TourPerspective, 640, 320}, {"tour_culling.png", scenes::TourCulling, 640, 320},
       {"tour_tiles.png", scenes::TourTiles, 640, 384},            {"tour_mipmaps.png", scenes::TourMipmapLevels, 960, 320},

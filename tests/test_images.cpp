@@ -130,6 +130,7 @@ TEST_CASE("WritePng writes a file whole or reports failure", "[image][files]") {
 TEST_CASE("image: tour", "[image]") {
   CompareWithGolden("tour_clipping", scenes::TourClipping(640, 320));
   CompareWithGolden("tour_coverage", scenes::TourCoverage(640, 320));
+  CompareWithGolden("tour_viewport", scenes::TourViewport(640, 320));
   CompareWithGolden("tour_barycentric", scenes::TourBarycentric(640, 320));
   CompareWithGolden("tour_depth", scenes::TourDepth(960, 320));
   CompareWithGolden("tour_perspective", scenes::TourPerspective(640, 320));
