@@ -1270,6 +1270,69 @@ int main(int argc, char** argv) {
                         return TimeGl(n, fill_frame);
                       });
                     }});
+  // Blits, 1920 x 1080, each timed alone (ten a frame): a copy of a framebuffer object's RGBA8 renderbuffer into the
+  // context's framebuffer (NEAREST, the same rectangle), and resolves of 4-sample renderbuffers into single-sampled
+  // ones of the same format (RGBA8, RGBA16F, RGB565), as an HDR or small-memory pipeline ends its frame.
+  struct BlitCase {
+    const char* name;
+    softgl::Enum format;
+    int samples;  // of the source; 0: a copy into the context's framebuffer
+  };
+  static const BlitCase kBlits[] = {{"blit: RGBA8 framebuffer object copied to the window, 1920x1080", softgl::RGBA8, 0},
+                                    {"blit: 4x MSAA RGBA8 resolved, 1920x1080", softgl::RGBA8, 4},
+                                    {"blit: 4x MSAA RGBA16F resolved, 1920x1080", softgl::RGBA16F, 4},
+                                    {"blit: 4x MSAA RGB565 resolved, 1920x1080", softgl::RGB565, 4}};
+  for (const BlitCase& bc : kBlits) {
+    constexpr int kW = 1920, kH = 1080, kBlitsPerFrame = 10;
+    scenes.push_back({bc.name, kW, kH, "Mpixel/s", double(kBlitsPerFrame) * kW * kH,
+                      [&bc](int n) {
+                        softgl::Context gl(kW, kH, g_options);
+                        std::uint32_t fbo[2] = {gl.GenFramebuffer(), gl.GenFramebuffer()};
+                        for (int k = 0; k < (bc.samples ? 2 : 1); ++k) {
+                          const std::uint32_t rb = gl.GenRenderbuffer();
+                          gl.BindRenderbuffer(softgl::RENDERBUFFER, rb);
+                          gl.RenderbufferStorageMultisample(softgl::RENDERBUFFER, k == 0 ? bc.samples : 0, bc.format,
+                                                            kW, kH);
+                          gl.BindFramebuffer(softgl::FRAMEBUFFER, fbo[k]);
+                          gl.FramebufferRenderbuffer(softgl::FRAMEBUFFER, softgl::COLOR_ATTACHMENT0,
+                                                     softgl::RENDERBUFFER, rb);
+                          gl.ClearColor(0.25f * float(k + 1), 0.5f, 0.75f, 1.0f);
+                          gl.Clear(softgl::COLOR_BUFFER_BIT);
+                        }
+                        gl.BindFramebuffer(softgl::READ_FRAMEBUFFER, fbo[0]);
+                        gl.BindFramebuffer(softgl::DRAW_FRAMEBUFFER, bc.samples ? fbo[1] : 0);
+                        return MedianMs(n, [&] {
+                          for (int i = 0; i < kBlitsPerFrame; ++i)
+                            gl.BlitFramebuffer(0, 0, kW, kH, 0, 0, kW, kH, softgl::COLOR_BUFFER_BIT, softgl::NEAREST);
+                          gl.Finish();
+                        });
+                      },
+                      [&bc, &with_osmesa](int n) {
+                        return with_osmesa(kW, kH, [&] {
+                          GLuint fbo[2], rb[2];
+                          glGenFramebuffers(2, fbo);
+                          glGenRenderbuffers(2, rb);
+                          for (int k = 0; k < (bc.samples ? 2 : 1); ++k) {
+                            glBindRenderbuffer(GL_RENDERBUFFER, rb[k]);
+                            glRenderbufferStorageMultisample(GL_RENDERBUFFER, k == 0 ? bc.samples : 0, bc.format, kW,
+                                                             kH);
+                            glBindFramebuffer(GL_FRAMEBUFFER, fbo[k]);
+                            glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, rb[k]);
+                            glClearColor(0.25f * float(k + 1), 0.5f, 0.75f, 1.0f);
+                            glClear(GL_COLOR_BUFFER_BIT);
+                          }
+                          glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo[0]);
+                          glBindFramebuffer(GL_DRAW_FRAMEBUFFER, bc.samples ? fbo[1] : 0);
+                          const double ms = MedianMs(n, [&] {
+                            for (int i = 0; i < kBlitsPerFrame; ++i)
+                              glBlitFramebuffer(0, 0, kW, kH, 0, 0, kW, kH, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+                            glFinish();
+                          });
+                          glBindFramebuffer(GL_FRAMEBUFFER, 0);
+                          return ms;
+                        });
+                      }});
+  }
   // Textured overdraw with an RGBA8 texture, and the same with an sRGB one (texels decoded before filtering).
   for (const bool srgb : {false, true}) {
     scenes.push_back({srgb ? "textured overdraw, sRGB texture: 20 quads, trilinear, 1024^2"

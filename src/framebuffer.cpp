@@ -8,6 +8,12 @@
 #include <new>
 #include <vector>
 
+#include "simd.h"
+
+#if defined(SOFTGL_HAS_DISPATCH)
+#include <immintrin.h>
+#endif
+
 namespace softgl::detail {
 
 std::uint8_t FloatToUnorm8(float f) {
@@ -386,6 +392,27 @@ void ResolveChannels(const ResolveRun& r, Decode decode, Encode encode) {
     }
 }
 
+#if defined(SOFTGL_HAS_DISPATCH)
+// RGBA16F by F16C: a texel's four halves converted at once (VCVTPH2PS: HalfToFloat's values, a NaN made quiet
+// with its payload kept), summed in sample order, divided, and converted back (VCVTPS2PH, to nearest even, as
+// FloatToHalf), NaNs made sign | 0x7E00 after as FloatToHalf makes them. The same bytes as ResolveChannels.
+SOFTGL_TARGET_AVX2 void ResolveHalves4F16c(const ResolveRun& r) {
+  const __m128 count = _mm_set1_ps(float(r.samples));
+  for (int x = 0; x < r.n; ++x) {
+    __m128 sum = _mm_setzero_ps();
+    for (int s = 0; s < r.samples; ++s)
+      sum = _mm_add_ps(sum, _mm_cvtph_ps(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(r.Texel(x, s, 8)))));
+    const __m128 avg = _mm_div_ps(sum, count);
+    __m128i h = _mm_cvtps_ph(avg, _MM_FROUND_TO_NEAREST_INT);
+    const __m128i nan = _mm_packs_epi32(_mm_castps_si128(_mm_cmpunord_ps(avg, avg)), _mm_setzero_si128());
+    h = _mm_or_si128(_mm_andnot_si128(nan, h),
+                     _mm_and_si128(nan, _mm_or_si128(_mm_and_si128(h, _mm_set1_epi16(short(0x8000))),
+                                                     _mm_set1_epi16(0x7E00))));
+    _mm_storel_epi64(reinterpret_cast<__m128i*>(r.out + std::size_t(x) * 8), h);
+  }
+}
+#endif
+
 // 8-bit channels (not sRGB): LoadResolved's integer average, rounded half up (what Store keeps of it).
 void ResolveBytes(int channels, const ResolveRun& r) {
   for (int x = 0; x < r.n; ++x)
@@ -470,7 +497,12 @@ void ResolveRunOf(const ColorBuffer& from, const ResolveRun& r) {
     case TexelLayout::kFloat11x11x10: ResolveSmallFloats(r); return;
     case TexelLayout::kUnorm8x2: ResolveBytes(2, r); return;
     case TexelLayout::kUnorm8x1: ResolveBytes(1, r); return;
-    case TexelLayout::kFloat16x4: ResolveChannels<4, 2>(r, half, to_half); return;
+    case TexelLayout::kFloat16x4:
+#if defined(SOFTGL_HAS_DISPATCH)
+      if (CpuSimdLevel() != SimdLevel::kBaseline) return ResolveHalves4F16c(r);
+#endif
+      ResolveChannels<4, 2>(r, half, to_half);
+      return;
     case TexelLayout::kFloat16x2: ResolveChannels<2, 2>(r, half, to_half); return;
     case TexelLayout::kFloat16x1: ResolveChannels<1, 2>(r, half, to_half); return;
     case TexelLayout::kFloat32x4: ResolveChannels<4, 4>(r, f32, to_f32); return;
