@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "simd.h"
+#include "wide.h"
 
 #if defined(SOFTGL_HAS_DISPATCH)
 #include <immintrin.h>
@@ -393,6 +394,50 @@ void ResolveChannels(const ResolveRun& r, Decode decode, Encode encode) {
 }
 
 #if defined(SOFTGL_HAS_DISPATCH)
+// ResolvePacked, 8 pixels at a time (its scalar form takes the rest): the same division of each code, sums in
+// sample order, division, clamp and rounding to nearest even (VCVTPS2DQ in the default rounding mode, as lrint).
+SOFTGL_TARGET_AVX2 void ResolvePackedAvx2(TexelLayout layout, const ResolveRun& r) {
+  using F = V<8>::F;
+  using I = V<8>::I;
+  using U = V<8>::U;
+  const PackedUnorm k = PackingOf(layout);
+  const int bytes = BytesPerTexel(layout);
+  const F count = F{} + float(r.samples);
+  int x = 0;
+  for (; x + 8 <= r.n; x += 8) {
+    U codes[8];
+    for (int s = 0; s < r.samples; ++s)
+      for (int l = 0; l < 8; ++l) codes[s][l] = bytes == 2 ? Bits16(r.Texel(x + l, s, 2)) : Bits32(r.Texel(x + l, s, 4));
+    U w = U{};
+    for (int c = 0; c < 4; ++c) {
+      if (!k.bits[c]) continue;
+      const std::uint32_t mask = (1u << k.bits[c]) - 1u;
+      const F max = F{} + float(mask);
+      F sum = F{};
+      for (int s = 0; s < r.samples; ++s) sum += __builtin_convertvector(I((codes[s] >> k.shift[c]) & mask), F) / max;
+      const F avg = sum / count;
+      const F v = avg > 0.0f ? (avg > 1.0f ? F{} + 1.0f : avg) : F{};
+      w |= U(_mm256_cvtps_epi32(__m256(v * max))) << k.shift[c];
+    }
+    for (int l = 0; l < 8; ++l) {
+      if (bytes == 2) {
+        const std::uint16_t h = std::uint16_t(w[l]);
+        std::memcpy(r.out + std::size_t(x + l) * 2, &h, 2);
+      } else {
+        const std::uint32_t word = w[l];
+        std::memcpy(r.out + std::size_t(x + l) * 4, &word, 4);
+      }
+    }
+  }
+  if (x < r.n) {
+    ResolveRun rest = r;
+    rest.in = r.Texel(x, 0, bytes);
+    rest.out = r.out + std::size_t(x) * std::size_t(bytes);
+    rest.n = r.n - x;
+    ResolvePacked(layout, rest);
+  }
+}
+
 // RGBA16F by F16C: a texel's four halves converted at once (VCVTPH2PS: HalfToFloat's values, a NaN made quiet
 // with its payload kept), summed in sample order, divided, and converted back (VCVTPS2PH, to nearest even, as
 // FloatToHalf), NaNs made sign | 0x7E00 after as FloatToHalf makes them. The same bytes as ResolveChannels.
@@ -486,7 +531,12 @@ void ResolveRunOf(const ColorBuffer& from, const ResolveRun& r) {
     case TexelLayout::kUnorm565:
     case TexelLayout::kUnorm4444:
     case TexelLayout::kUnorm5551:
-    case TexelLayout::kUnorm1010102: ResolvePacked(from.layout, r); return;
+    case TexelLayout::kUnorm1010102:
+#if defined(SOFTGL_HAS_DISPATCH)
+      if (CpuSimdLevel() != SimdLevel::kBaseline) return ResolvePackedAvx2(from.layout, r);
+#endif
+      ResolvePacked(from.layout, r);
+      return;
     case TexelLayout::kUnorm8x4:
       if (!from.srgb) {
         ResolveBytes(4, r);
