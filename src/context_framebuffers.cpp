@@ -857,7 +857,21 @@ void Context::BlitFramebuffer(int src_x0, int src_y0, int src_x1, int src_y1, in
   r.stencil = stencil;
   r.linear = filter == LINEAR;
   try {
-    detail::Blit(src, dst, r);
+    // Bands of destination rows on the context's threads: each writes only its own rows, and reads the source
+    // rectangle, which (refused above otherwise) overlaps no destination row of the same buffer.
+    const int rows = std::max(0, std::min(r.clip.y1, dst.height) - std::max(r.clip.y0, 0));
+    const int bands = rows >= 256 ? std::min(s.pool->Threads(), rows / 128) : 1;
+    if (bands <= 1) {
+      detail::Blit(src, dst, r);
+    } else {
+      const int y0 = std::max(r.clip.y0, 0);
+      s.pool->Run(bands, [&](int band, int) {
+        detail::BlitRegion part = r;
+        part.clip.y0 = y0 + int(std::int64_t(rows) * band / bands);
+        part.clip.y1 = y0 + int(std::int64_t(rows) * (band + 1) / bands);
+        detail::Blit(src, dst, part);
+      });
+    }
   } catch (const std::bad_alloc&) {
     s.SetError(OUT_OF_MEMORY, __func__, "out of memory");
   }
