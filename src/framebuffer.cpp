@@ -569,7 +569,7 @@ void ResolveRunOf(const ColorBuffer& from, const ResolveRun& r) {
 void CopyDepthRow(const RenderTarget& src, const RenderTarget& dst, int sx, int sy, int dx, int dy, int n) {
   if (src.step != 1 || dst.step != 1) {
     for (int i = 0; i < n; ++i) dst.SetDepth(dx + i, dy, dst.StoredDepth(src.DepthAt(sx + i, sy)));
-  } else if (src.depth16 && dst.depth16) {  // (memmove: a blit within one framebuffer may overlap itself)
+  } else if (src.depth16 && dst.depth16) {  // (memmove: the two may be one buffer)
     std::memmove(dst.depth16 + dst.DepthIndex(dx, dy, 0), src.depth16 + src.DepthIndex(sx, sy, 0), 2 * std::size_t(n));
   } else if (src.depth && dst.depth) {
     std::memmove(dst.depth + dst.DepthIndex(dx, dy, 0), src.depth + src.DepthIndex(sx, sy, 0), 4 * std::size_t(n));
