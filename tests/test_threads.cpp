@@ -9,7 +9,7 @@
 #include <thread>
 #include <vector>
 
-#include "helpers.h"
+#include "scene_kit.h"
 #include "scenes.h"
 
 TEST_CASE("contexts on several threads render as they do alone", "[threads]") {
@@ -108,7 +108,14 @@ TEST_CASE("BlitFramebuffer in bands of rows on the context's threads gives the s
   auto draw = [] {
     using namespace softgl;
     Context gl(700, 600);
-    testing::SolidShader shader;
+    scenes::kit::ColorShader shader;  // position (attribute 0), colour (attribute 1)
+    const std::uint32_t vao = gl.GenVertexArray(), vbo = gl.GenBuffer();
+    gl.BindVertexArray(vao);
+    gl.BindBuffer(ARRAY_BUFFER, vbo);
+    gl.VertexAttributePointer(0, 3, FLOAT, false, 6 * sizeof(float), 0);
+    gl.VertexAttributePointer(1, 3, FLOAT, false, 6 * sizeof(float), 3 * sizeof(float));
+    gl.EnableVertexAttribArray(0);
+    gl.EnableVertexAttribArray(1);
     const Enum formats[2] = {RGB565, RGBA16F};
     for (int k = 0; k < 2; ++k) {
       std::uint32_t fbo[2], rb[2];
@@ -124,8 +131,9 @@ TEST_CASE("BlitFramebuffer in bands of rows on the context's threads gives the s
       gl.Viewport(0, 0, 350, 520);
       gl.ClearColor(0.1f, 0.2f + 0.3f * float(k), 0.3f, 1.0f);
       gl.Clear(COLOR_BUFFER_BIT);
-      testing::MakeVertexArray(gl, {{-0.9f, -0.95f, 0, 1}, {0.95f, -0.4f, 0, 1}, {-0.3f, 0.97f, 0, 1}});
-      shader.color = glm::vec4(0.9f, 0.6f - 0.4f * float(k), 0.2f, 1.0f);
+      const float g = 0.6f - 0.4f * float(k);
+      const float vertices[] = {-0.9f, -0.95f, 0, 0.9f, g, 0.2f, 0.95f, -0.4f, 0, 0.2f, g, 0.9f, -0.3f, 0.97f, 0, 0.5f, 1, 0.1f};
+      gl.BufferData(ARRAY_BUFFER, sizeof vertices, vertices);
       gl.UseProgram(shader);
       gl.DrawArrays(TRIANGLES, 0, 3);
       gl.BindFramebuffer(DRAW_FRAMEBUFFER, fbo[1]);
