@@ -857,10 +857,11 @@ void Context::BlitFramebuffer(int src_x0, int src_y0, int src_x1, int src_y1, in
   r.stencil = stencil;
   r.linear = filter == LINEAR;
   try {
-    // Bands of destination rows on the context's threads: each writes only its own rows, and reads the source
-    // rectangle, which (refused above otherwise) overlaps no destination row of the same buffer.
+    // Bands of destination rows on the context's threads: each writes only its own rows. Within one buffer only
+    // with NEAREST, which reads inside the source rectangle alone (refused above where it overlaps the
+    // destination); LINEAR's taps may reach a row past it, which another band may be writing.
     const int rows = std::max(0, std::min(r.clip.y1, dst.height) - std::max(r.clip.y0, 0));
-    const int bands = rows >= 256 ? std::min(s.pool->Threads(), rows / 128) : 1;
+    const int bands = rows >= 256 && !(same && r.linear) ? std::min(s.pool->Threads(), rows / 128) : 1;
     if (bands <= 1) {
       detail::Blit(src, dst, r);
     } else {
