@@ -64,6 +64,17 @@ std::uint32_t UploadLitMesh(softgl::Context& gl, const Mesh& mesh) {
   return vao;
 }
 
+std::uint32_t MakeScreenTriangle(softgl::Context& gl) {
+  static const float kScreenTriangle[] = {-1, -1, 3, -1, -1, 3};
+  const std::uint32_t vao = gl.GenVertexArray(), vbo = gl.GenBuffer();
+  gl.BindVertexArray(vao);
+  gl.BindBuffer(softgl::ARRAY_BUFFER, vbo);
+  gl.BufferData(softgl::ARRAY_BUFFER, sizeof kScreenTriangle, kScreenTriangle);
+  gl.VertexAttributePointer(0, 2, softgl::FLOAT, false, 0, 0);
+  gl.EnableVertexAttribArray(0);
+  return vao;
+}
+
 glm::mat4 Projection(int width, int height, float fovy_degrees, float near_plane, float far_plane) {
   const float aspect = height > 0 ? float(width) / float(height) : 1.0f;
   return glm::perspective(glm::radians(fovy_degrees), aspect, near_plane, far_plane);

@@ -121,6 +121,9 @@ std::uint32_t UploadLitMesh(softgl::Context& gl, const Mesh& mesh);
 
 glm::mat4 Projection(int width, int height, float fovy_degrees, float near_plane, float far_plane);
 
+/// A new vertex array (left bound) of one triangle covering the viewport: clip-space x, y in attribute 0.
+std::uint32_t MakeScreenTriangle(softgl::Context& gl);
+
 /// Draws an uploaded mesh (its vertex array bound) with its element count.
 inline void DrawMesh(softgl::Context& gl, const Mesh& mesh) {
   gl.DrawElement(softgl::TRIANGLES, int(mesh.indices.size()), softgl::UNSIGNED_INT, 0);

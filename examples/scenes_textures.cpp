@@ -75,17 +75,6 @@ struct TexturedShader : softgl::Shader<TexturedShader, TexVaryings> {
 struct ScreenVaryings {
   vec2 uv;
 };
-const float kScreenTriangle[] = {-1, -1, 3, -1, -1, 3};
-
-std::uint32_t MakeScreenTriangle(softgl::Context& gl) {
-  const std::uint32_t vao = gl.GenVertexArray(), vbo = gl.GenBuffer();
-  gl.BindVertexArray(vao);
-  gl.BindBuffer(softgl::ARRAY_BUFFER, vbo);
-  gl.BufferData(softgl::ARRAY_BUFFER, sizeof kScreenTriangle, kScreenTriangle);
-  gl.VertexAttributePointer(0, 2, softgl::FLOAT, false, 0, 0);
-  gl.EnableVertexAttribArray(0);
-  return vao;
-}
 
 }  // namespace
 

@@ -56,17 +56,6 @@ void DrawColored(softgl::Context& gl, const glm::mat4& mvp, softgl::Enum mode, c
 
 void Push(std::vector<float>& v, glm::vec3 p, glm::vec3 c) { v.insert(v.end(), {p.x, p.y, p.z, c.x, c.y, c.z}); }
 
-// A vertex array of one triangle covering the viewport (positions in clip space, attribute 0).
-void BindScreenTriangle(softgl::Context& gl) {
-  static const float kCorners[] = {-1, -1, 0, 3, -1, 0, -1, 3, 0};
-  const std::uint32_t vao = gl.GenVertexArray(), vbo = gl.GenBuffer();
-  gl.BindVertexArray(vao);
-  gl.BindBuffer(softgl::ARRAY_BUFFER, vbo);
-  gl.BufferData(softgl::ARRAY_BUFFER, sizeof kCorners, kCorners);
-  gl.VertexAttributePointer(0, 3, softgl::FLOAT, false, 0, 0);
-  gl.EnableVertexAttribArray(0);
-}
-
 // An image as a texture, rows flipped to OpenGL's order (row 0 at the bottom), sampled NEAREST.
 std::uint32_t UploadImage(softgl::Context& gl, const softgl::Image& image) {
   std::vector<std::uint8_t> rows(image.rgba.size());
@@ -116,7 +105,7 @@ void DrawMagnified(softgl::Context& gl, const softgl::Image& small, float scale,
                    bool diamonds = false) {
   gl.ActiveTexture(softgl::TEXTURE0);
   UploadImage(gl, small);
-  BindScreenTriangle(gl);
+  MakeScreenTriangle(gl);
   PixelGridShader grid;
   grid.scale = scale;
   grid.background = background;
@@ -443,7 +432,7 @@ softgl::Image TourDepth(int width, int height) {
   // The three panels: colour, the depth buffer as stored, and eye distance recovered from it.
   gl.BindFramebuffer(softgl::FRAMEBUFFER, 0);
   gl.Disable(softgl::DEPTH_TEST);
-  BindScreenTriangle(gl);
+  MakeScreenTriangle(gl);
   ShowDepthShader show;
   show.near_plane = near_plane;
   show.far_plane = far_plane;
@@ -671,7 +660,7 @@ softgl::Image TourTiles(int width, int height) {
   gl.BindFramebuffer(softgl::FRAMEBUFFER, 0);
   gl.Disable(softgl::DEPTH_TEST);
   gl.Disable(softgl::CULL_FACE);
-  BindScreenTriangle(gl);
+  MakeScreenTriangle(gl);
   gl.UseProgram(heat);
   gl.DrawArrays(softgl::TRIANGLES, 0, 3);
   return gl.ReadPixels();
@@ -819,7 +808,7 @@ softgl::Image TourMultisample(int width, int height) {
   // The picture: the resolved pixels magnified, each sample a dot, the triangle's edges as lines.
   gl.BindFramebuffer(softgl::FRAMEBUFFER, 0);
   gl.Viewport(0, 0, width, height);
-  BindScreenTriangle(gl);
+  MakeScreenTriangle(gl);
   dots.scale = float(width) / float(kMsW);
   gl.UseProgram(dots);
   gl.DrawArrays(softgl::TRIANGLES, 0, 3);

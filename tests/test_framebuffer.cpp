@@ -817,15 +817,9 @@ TEST_CASE("resolving by rows gives LoadResolved's bytes in every colour format",
     }
     in.data = texels.data();
     detail::RenderTarget dst;
-    dst.width = w;
-    dst.height = h;
-    detail::ColorBuffer& out = dst.color[0];
-    out.layout = layout;
-    out.rgb_only = f.rgb_only;
-    out.srgb = f.srgb;
-    out.pitch = w;
-    std::vector<std::uint8_t> result(std::size_t(w) * std::size_t(h) * bytes), expected = result;
-    out.data = result.data();
+    std::vector<std::uint8_t> result;
+    detail::ColorBuffer& out = ColourTarget(dst, f, w, h, w, result);
+    std::vector<std::uint8_t> expected = result;
     detail::ColorBuffer reference = out;
     reference.data = expected.data();
     const bool all[4] = {true, true, true, true};
