@@ -1270,29 +1270,51 @@ int main(int argc, char** argv) {
                         return TimeGl(n, fill_frame);
                       });
                     }});
-  // Blits, 1920 x 1080, each timed alone (ten a frame): a copy of a framebuffer object's RGBA8 renderbuffer into the
-  // context's framebuffer (NEAREST, the same rectangle), and resolves of 4-sample renderbuffers into single-sampled
-  // ones of the same format (RGBA8, RGBA16F, RGB565), as an HDR or small-memory pipeline ends its frame.
+  // Blits into 1920 x 1080, each timed alone (ten a frame): a copy of a framebuffer object's RGBA8 renderbuffer into
+  // the context's framebuffer (NEAREST, the same rectangle), resolves of 4-sample renderbuffers into single-sampled
+  // ones of the same format (RGBA8, RGBA16F, RGB565), as an HDR or small-memory pipeline ends its frame; then the
+  // blits that are not plain copies: an image turned upside down (a y-down convention), a 1280 x 720 frame scaled to
+  // the window (NEAREST and LINEAR), framebuffer objects of other formats into the RGBA8 window, and a LINEAR halving
+  // of an RGBA16F image (a bloom chain's first step).
   struct BlitCase {
     const char* name;
     softgl::Enum format;
-    int samples;  // of the source; 0: a copy into the context's framebuffer
+    int samples;          // of the source; 0: single-sampled
+    int src_w, src_h;     // the source's size (the destination is 1920 x 1080)
+    bool flip;            // the destination rectangle upside down
+    softgl::Enum filter;
+    softgl::Enum into;    // the destination's format; 0: the context's framebuffer (RGBA8)
   };
-  static const BlitCase kBlits[] = {{"blit: RGBA8 framebuffer object copied to the window, 1920x1080", softgl::RGBA8, 0},
-                                    {"blit: 4x MSAA RGBA8 resolved, 1920x1080", softgl::RGBA8, 4},
-                                    {"blit: 4x MSAA RGBA16F resolved, 1920x1080", softgl::RGBA16F, 4},
-                                    {"blit: 4x MSAA RGB565 resolved, 1920x1080", softgl::RGB565, 4}};
+  static const BlitCase kBlits[] = {
+      {"blit: RGBA8 framebuffer object copied to the window, 1920x1080", softgl::RGBA8, 0, 1920, 1080, false,
+       softgl::NEAREST, 0},
+      {"blit: 4x MSAA RGBA8 resolved, 1920x1080", softgl::RGBA8, 4, 1920, 1080, false, softgl::NEAREST, softgl::RGBA8},
+      {"blit: 4x MSAA RGBA16F resolved, 1920x1080", softgl::RGBA16F, 4, 1920, 1080, false, softgl::NEAREST,
+       softgl::RGBA16F},
+      {"blit: 4x MSAA RGB565 resolved, 1920x1080", softgl::RGB565, 4, 1920, 1080, false, softgl::NEAREST,
+       softgl::RGB565},
+      {"blit: RGBA8 turned upside down into the window, 1920x1080", softgl::RGBA8, 0, 1920, 1080, true,
+       softgl::NEAREST, 0},
+      {"blit: RGBA8 1280x720 scaled to the window, NEAREST, 1920x1080", softgl::RGBA8, 0, 1280, 720, false,
+       softgl::NEAREST, 0},
+      {"blit: RGBA8 1280x720 scaled to the window, LINEAR, 1920x1080", softgl::RGBA8, 0, 1280, 720, false,
+       softgl::LINEAR, 0},
+      {"blit: RGBA16F into the RGBA8 window, 1920x1080", softgl::RGBA16F, 0, 1920, 1080, false, softgl::NEAREST, 0},
+      {"blit: RGB565 into the RGBA8 window, 1920x1080", softgl::RGB565, 0, 1920, 1080, false, softgl::NEAREST, 0},
+      {"blit: RGBA16F 3840x2160 halved, LINEAR, into RGBA16F 1920x1080", softgl::RGBA16F, 0, 3840, 2160, false,
+       softgl::LINEAR, softgl::RGBA16F}};
   for (const BlitCase& bc : kBlits) {
     constexpr int kW = 1920, kH = 1080, kBlitsPerFrame = 10;
     scenes.push_back({bc.name, kW, kH, "Mpixel/s", double(kBlitsPerFrame) * kW * kH,
                       [&bc](int n) {
                         softgl::Context gl(kW, kH, g_options);
                         std::uint32_t fbo[2] = {gl.GenFramebuffer(), gl.GenFramebuffer()};
-                        for (int k = 0; k < (bc.samples ? 2 : 1); ++k) {
+                        for (int k = 0; k < (bc.into ? 2 : 1); ++k) {
                           const std::uint32_t rb = gl.GenRenderbuffer();
                           gl.BindRenderbuffer(softgl::RENDERBUFFER, rb);
-                          gl.RenderbufferStorageMultisample(softgl::RENDERBUFFER, k == 0 ? bc.samples : 0, bc.format,
-                                                            kW, kH);
+                          gl.RenderbufferStorageMultisample(softgl::RENDERBUFFER, k == 0 ? bc.samples : 0,
+                                                            k == 0 ? bc.format : bc.into, k == 0 ? bc.src_w : kW,
+                                                            k == 0 ? bc.src_h : kH);
                           gl.BindFramebuffer(softgl::FRAMEBUFFER, fbo[k]);
                           gl.FramebufferRenderbuffer(softgl::FRAMEBUFFER, softgl::COLOR_ATTACHMENT0,
                                                      softgl::RENDERBUFFER, rb);
@@ -1300,10 +1322,11 @@ int main(int argc, char** argv) {
                           gl.Clear(softgl::COLOR_BUFFER_BIT);
                         }
                         gl.BindFramebuffer(softgl::READ_FRAMEBUFFER, fbo[0]);
-                        gl.BindFramebuffer(softgl::DRAW_FRAMEBUFFER, bc.samples ? fbo[1] : 0);
+                        gl.BindFramebuffer(softgl::DRAW_FRAMEBUFFER, bc.into ? fbo[1] : 0);
                         return MedianMs(n, [&] {
                           for (int i = 0; i < kBlitsPerFrame; ++i)
-                            gl.BlitFramebuffer(0, 0, kW, kH, 0, 0, kW, kH, softgl::COLOR_BUFFER_BIT, softgl::NEAREST);
+                            gl.BlitFramebuffer(0, 0, bc.src_w, bc.src_h, 0, bc.flip ? kH : 0, kW, bc.flip ? 0 : kH,
+                                               softgl::COLOR_BUFFER_BIT, bc.filter);
                           gl.Finish();
                         });
                       },
@@ -1312,20 +1335,22 @@ int main(int argc, char** argv) {
                           GLuint fbo[2], rb[2];
                           glGenFramebuffers(2, fbo);
                           glGenRenderbuffers(2, rb);
-                          for (int k = 0; k < (bc.samples ? 2 : 1); ++k) {
+                          for (int k = 0; k < (bc.into ? 2 : 1); ++k) {
                             glBindRenderbuffer(GL_RENDERBUFFER, rb[k]);
-                            glRenderbufferStorageMultisample(GL_RENDERBUFFER, k == 0 ? bc.samples : 0, bc.format, kW,
-                                                             kH);
+                            glRenderbufferStorageMultisample(GL_RENDERBUFFER, k == 0 ? bc.samples : 0,
+                                                             k == 0 ? bc.format : bc.into, k == 0 ? bc.src_w : kW,
+                                                             k == 0 ? bc.src_h : kH);
                             glBindFramebuffer(GL_FRAMEBUFFER, fbo[k]);
                             glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, rb[k]);
                             glClearColor(0.25f * float(k + 1), 0.5f, 0.75f, 1.0f);
                             glClear(GL_COLOR_BUFFER_BIT);
                           }
                           glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo[0]);
-                          glBindFramebuffer(GL_DRAW_FRAMEBUFFER, bc.samples ? fbo[1] : 0);
+                          glBindFramebuffer(GL_DRAW_FRAMEBUFFER, bc.into ? fbo[1] : 0);
                           const double ms = MedianMs(n, [&] {
                             for (int i = 0; i < kBlitsPerFrame; ++i)
-                              glBlitFramebuffer(0, 0, kW, kH, 0, 0, kW, kH, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+                              glBlitFramebuffer(0, 0, bc.src_w, bc.src_h, 0, bc.flip ? kH : 0, kW, bc.flip ? 0 : kH,
+                                                GL_COLOR_BUFFER_BIT, bc.filter);
                             glFinish();
                           });
                           glBindFramebuffer(GL_FRAMEBUFFER, 0);

@@ -663,6 +663,243 @@ bool CopyRows(const RenderTarget& src, const RenderTarget& dst, const BlitRegion
   return true;
 }
 
+// The general blit works a destination row at a time on RGBA floats, four lanes a pixel (Load's values, in the
+// same operations, so the same results as Load and Store pixel by pixel): the source rows it reads decoded once,
+// each destination column's source columns and weight found once per blit.
+using F4 = V<4>::F;
+using I4 = V<4>::I;
+
+SOFTGL_WIDE F4 ToF4(const glm::vec4& c) { return F4{c.r, c.g, c.b, c.a}; }
+
+#if defined(SOFTGL_HAS_DISPATCH)
+// n RGBA16F texels at `in` (`step` texels apart) as floats, by F16C (HalfToFloat's values).
+SOFTGL_TARGET_AVX2 void HalvesToFloats(const std::uint8_t* in, int step, int n, F4* out) {
+  for (int i = 0; i < n; ++i)
+    _mm_storeu_ps(reinterpret_cast<float*>(&out[i]),
+                  _mm_cvtph_ps(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(in + std::size_t(i) * std::size_t(step) * 8))));
+}
+// n pixels of floats into RGBA16F texels `step` apart, by F16C: FloatToHalf's bits (to nearest even, a NaN made
+// sign | 0x7E00), as ResolveHalves4F16c stores them.
+SOFTGL_TARGET_AVX2 void FloatsToHalves(const F4* in, int n, std::uint8_t* out, int step) {
+  for (int i = 0; i < n; ++i) {
+    const __m128 v = _mm_loadu_ps(reinterpret_cast<const float*>(&in[i]));
+    __m128i h = _mm_cvtps_ph(v, _MM_FROUND_TO_NEAREST_INT);
+    const __m128i nan = _mm_packs_epi32(_mm_castps_si128(_mm_cmpunord_ps(v, v)), _mm_setzero_si128());
+    h = _mm_or_si128(_mm_andnot_si128(nan, h),
+                     _mm_and_si128(nan, _mm_or_si128(_mm_and_si128(h, _mm_set1_epi16(short(0x8000))),
+                                                     _mm_set1_epi16(0x7E00))));
+    _mm_storel_epi64(reinterpret_cast<__m128i*>(out + std::size_t(i) * std::size_t(step) * 8), h);
+  }
+}
+#endif
+
+// Pixels [x, x + n) of row y of `cb` as Load reads them (LoadResolved's averages when `samples` > 1), into out.
+void LoadRow(const ColorBuffer& cb, int samples, int x, int n, int y, F4* out) {
+  if (samples > 1) {
+    for (int i = 0; i < n; ++i) out[i] = ToF4(LoadResolved(cb, samples, x + i, y));
+    return;
+  }
+  const std::uint8_t* in = cb.At(x, y);
+  const std::size_t stride = std::size_t(cb.step) * std::size_t(cb.Bytes());
+  switch (cb.layout) {
+    case TexelLayout::kUnorm8x4:
+      if (cb.srgb) break;
+      for (int i = 0; i < n; ++i, in += stride)
+        out[i] = F4{float(in[0]), float(in[1]), float(in[2]), cb.rgb_only ? 255.0f : float(in[3])} / 255.0f;
+      return;
+    case TexelLayout::kFloat32x4:
+      for (int i = 0; i < n; ++i, in += stride) std::memcpy(&out[i], in, 16);
+      return;
+    case TexelLayout::kFloat16x4:
+#if defined(SOFTGL_HAS_DISPATCH)
+      if (CpuSimdLevel() != SimdLevel::kBaseline) return HalvesToFloats(in, cb.step, n, out);
+#endif
+      break;
+    case TexelLayout::kUnorm565:
+    case TexelLayout::kUnorm4444:
+    case TexelLayout::kUnorm5551:
+    case TexelLayout::kUnorm1010102: {  // RawTexel's code / (2^bits - 1) a channel, 1 for a channel not stored
+      const PackedUnorm k = PackingOf(cb.layout);
+      const I4 shift = {k.shift[0], k.shift[1], k.shift[2], k.shift[3]};
+      I4 max;
+      for (int c = 0; c < 4; ++c) max[c] = int((1u << k.bits[c]) - 1u);
+      const F4 fmax = __builtin_convertvector(max, F4);
+      const bool wide = cb.Bytes() == 4;
+      for (int i = 0; i < n; ++i, in += stride) {
+        std::uint32_t w;
+        if (wide) {
+          std::memcpy(&w, in, 4);
+        } else {
+          std::uint16_t h;
+          std::memcpy(&h, in, 2);
+          w = h;
+        }
+        const I4 code = I4((V<4>::U{} + w) >> V<4>::U(shift)) & max;
+        out[i] = max != 0 ? __builtin_convertvector(code, F4) / fmax : F4{} + 1.0f;
+      }
+      return;
+    }
+    default: break;
+  }
+  for (int i = 0; i < n; ++i) out[i] = ToF4(cb.Load(x + i, y));
+}
+
+// Pixels in[0, n) stored at [x, x + n) of row y of `cb`, as Store stores them through an all-true mask.
+void StoreRow(const ColorBuffer& cb, int x, int n, int y, const F4* in) {
+  std::uint8_t* out = cb.At(x, y);
+  const std::size_t stride = std::size_t(cb.step) * std::size_t(cb.Bytes());
+  if (cb.layout == TexelLayout::kUnorm8x4 && !cb.srgb && !cb.rgb_only) {
+    // FloatToUnorm8 a channel: NaN and <= 0 give 0, >= 1 gives 255, else f * 255 rounded to nearest even (by adding
+    // and taking away 1.5 x 2^23, exact for values up to 255).
+    constexpr float kRound = 12582912.0f;
+    for (int i = 0; i < n; ++i, out += stride) {
+      F4 c = in[i] > 0.0f ? in[i] : F4{};
+      c = c < 1.0f ? c : F4{} + 1.0f;
+      const I4 k = __builtin_convertvector((c * 255.0f + kRound) - kRound, I4);
+      const std::uint32_t word = std::uint32_t(k[0]) | std::uint32_t(k[1]) << 8 | std::uint32_t(k[2]) << 16 |
+                                 std::uint32_t(k[3]) << 24;
+      std::memcpy(out, &word, 4);
+    }
+    return;
+  }
+  if (cb.layout == TexelLayout::kFloat32x4) {
+    for (int i = 0; i < n; ++i, out += stride) std::memcpy(out, &in[i], 16);
+    return;
+  }
+#if defined(SOFTGL_HAS_DISPATCH)
+  if (cb.layout == TexelLayout::kFloat16x4 && CpuSimdLevel() != SimdLevel::kBaseline)
+    return FloatsToHalves(in, n, out, cb.step);
+#endif
+  const bool all[4] = {true, true, true, true};
+  for (int i = 0; i < n; ++i) cb.Store(x + i, y, glm::vec4(in[i][0], in[i][1], in[i][2], in[i][3]), all);
+}
+
+// Texels of B bytes: out[i] (`out_step` texels apart) = the texel of `in` at column from[i] (`in_step` apart).
+template <int B>
+void GatherTexels(const std::uint8_t* in, int in_step, const int* from, int n, std::uint8_t* out, int out_step) {
+  for (int i = 0; i < n; ++i)
+    std::memcpy(out + std::size_t(i) * std::size_t(out_step) * B, in + std::size_t(from[i]) * std::size_t(in_step) * B, B);
+}
+
+// Whether a NEAREST blit from `src` may copy texels as they are stored into every colour buffer of `dst`: the
+// formats CopyRows copies, the same in both, single-sampled.
+bool TexelsCopy(const RenderTarget& src, const RenderTarget& dst) {
+  const ColorBuffer& from = src.color[0];
+  const TexelLayout l = from.layout;
+  const bool exact = IsUnorm8(l) || IsPackedUnorm(l) || IsUnorm16(l) || l == TexelLayout::kFloat32x4 ||
+                     l == TexelLayout::kFloat32x2 || l == TexelLayout::kFloat32x1;
+  if (src.samples > 1 || !exact || from.rgb_only) return false;
+  for (const ColorBuffer& cb : dst.color)
+    if (cb.Present() && (cb.layout != l || cb.srgb != from.srgb || cb.rgb_only)) return false;
+  return true;
+}
+
+// The general blit (scaled, mirrored, LINEAR, between formats): destination rows [ay.d0, ay.d1) by columns
+// [ax.d0, ax.d1). A destination pixel reads the source at its centre's mapped point: NEAREST the pixel holding it,
+// LINEAR (colour) the bilinear mix of the four nearest pixel centres, clamped to the edge; pixels whose point lies
+// outside the source are not written. (Those columns are the two ends of the range, the mapping being monotonic.)
+void BlitScaled(const RenderTarget& src, const RenderTarget& dst, const BlitRegion& r, const BlitAxis& ax,
+                const BlitAxis& ay) {
+  const int n = ax.d1 - ax.d0;
+  std::vector<int> px(static_cast<std::size_t>(n)), k0, k1;
+  std::vector<float> wa;
+  if (r.linear) {
+    k0.resize(std::size_t(n));
+    k1.resize(std::size_t(n));
+    wa.resize(std::size_t(n));
+  }
+  int first = n, last = -1, lo = src.width, hi = -1;  // the columns written; the source columns read
+  for (int i = 0; i < n; ++i) {
+    const double sx = ax.At(ax.d0 + i);
+    px[std::size_t(i)] = PixelAt(sx, src.width);
+    if (px[std::size_t(i)] < 0) continue;
+    first = std::min(first, i);
+    last = i;
+    if (r.linear) {  // between pixel centres, clamped to the edge
+      const double u = sx - 0.5;
+      const int i0 = int(std::floor(u));
+      wa[std::size_t(i)] = float(u - i0);
+      k0[std::size_t(i)] = std::max(i0, 0);
+      k1[std::size_t(i)] = std::min(i0 + 1, src.width - 1);
+      lo = std::min(lo, k0[std::size_t(i)]);
+      hi = std::max(hi, k1[std::size_t(i)]);
+    } else {
+      lo = std::min(lo, px[std::size_t(i)]);
+      hi = std::max(hi, px[std::size_t(i)]);
+    }
+  }
+  if (first > last) return;
+  const int count = last - first + 1, x0 = ax.d0 + first;
+  const bool copy = r.color && !r.linear && TexelsCopy(src, dst);
+  // Source rows decoded (two slots, each with the row it holds) and the destination row.
+  std::vector<F4> rows, out;
+  int held[2] = {-1, -1};
+  if (r.color && !copy) {
+    rows.resize(2 * std::size_t(hi - lo + 1));
+    out.resize(std::size_t(count));
+  }
+  auto row = [&](int j, int keep) -> const F4* {
+    for (int k = 0; k < 2; ++k)
+      if (held[k] == j) return &rows[std::size_t(k) * std::size_t(hi - lo + 1)];
+    const int k = held[0] == keep ? 1 : 0;
+    held[k] = j;
+    F4* into = &rows[std::size_t(k) * std::size_t(hi - lo + 1)];
+    LoadRow(src.color[0], src.samples, lo, hi - lo + 1, j, into);
+    return into;
+  };
+  const bool ascending = !r.linear && px[std::size_t(last)] - px[std::size_t(first)] == last - first;
+  for (int y = ay.d0; y < ay.d1; ++y) {
+    const double sy = ay.At(y);
+    const int py = PixelAt(sy, src.height);
+    if (py < 0) continue;
+    if (copy) {
+      const ColorBuffer& from = src.color[0];
+      const int bytes = from.Bytes();
+      for (const ColorBuffer& cb : dst.color) {
+        if (!cb.Present()) continue;
+        std::uint8_t* to = cb.At(x0, y);
+        const std::uint8_t* in = from.At(0, py);
+        const int* cols = &px[std::size_t(first)];
+        if (ascending && from.step == 1 && cb.step == 1) {  // the same columns in order: one run
+          std::memmove(to, in + std::size_t(cols[0]) * std::size_t(bytes), std::size_t(count) * std::size_t(bytes));
+          continue;
+        }
+        switch (bytes) {
+          case 1: GatherTexels<1>(in, from.step, cols, count, to, cb.step); break;
+          case 2: GatherTexels<2>(in, from.step, cols, count, to, cb.step); break;
+          case 4: GatherTexels<4>(in, from.step, cols, count, to, cb.step); break;
+          case 8: GatherTexels<8>(in, from.step, cols, count, to, cb.step); break;
+          default: GatherTexels<16>(in, from.step, cols, count, to, cb.step); break;
+        }
+      }
+    } else if (r.color && r.linear) {
+      const double v = sy - 0.5;
+      const int j0 = int(std::floor(v));
+      const float b = float(v - j0);
+      const int j1 = std::min(j0 + 1, src.height - 1), jc = std::max(j0, 0);
+      const F4* r0 = row(jc, -1);
+      const F4* r1 = row(j1, jc);  // (keeping jc's slot)
+      for (int i = 0; i < count; ++i) {
+        const std::size_t c = std::size_t(first + i);
+        const float a = wa[c];
+        const std::size_t c0 = std::size_t(k0[c] - lo), c1 = std::size_t(k1[c] - lo);
+        out[std::size_t(i)] = (1.0f - b) * ((1.0f - a) * r0[c0] + a * r0[c1]) + b * ((1.0f - a) * r1[c0] + a * r1[c1]);
+      }
+    } else if (r.color) {
+      const F4* in = row(py, -1);
+      for (int i = 0; i < count; ++i) out[std::size_t(i)] = in[px[std::size_t(first + i)] - lo];
+    }
+    if (r.color && !copy)
+      for (const ColorBuffer& cb : dst.color)
+        if (cb.Present()) StoreRow(cb, x0, count, y, out.data());
+    for (int i = 0; i < count && (r.depth || r.stencil); ++i) {
+      const int x = x0 + i, sx = px[std::size_t(first + i)];
+      if (r.depth) dst.SetDepth(x, y, dst.StoredDepth(src.DepthAt(sx, py)));
+      if (r.stencil) dst.Stencil(x, y) = src.Stencil(sx, py);
+    }
+  }
+}
+
 }  // namespace
 
 void Blit(const RenderTarget& src, const RenderTarget& dst, const BlitRegion& r) {
@@ -691,38 +928,7 @@ void Blit(const RenderTarget& src, const RenderTarget& dst, const BlitRegion& r)
   const BlitAxis ay =
       MakeAxis(r.src[1], r.src[3], r.dst[1], r.dst[3], std::max(r.clip.y0, 0), std::min(r.clip.y1, dst.height));
   if (ax.d0 >= ax.d1 || ay.d0 >= ay.d1) return;
-  const bool all[4] = {true, true, true, true};
-  for (int y = ay.d0; y < ay.d1; ++y) {
-    const double sy = ay.At(y);
-    const int py = PixelAt(sy, src.height);
-    if (py < 0) continue;
-    for (int x = ax.d0; x < ax.d1; ++x) {
-      const double sx = ax.At(x);
-      const int px = PixelAt(sx, src.width);
-      if (px < 0) continue;
-      if (r.color) {
-        glm::vec4 c;
-        if (r.linear) {  // bilinear between pixel centres, clamped to the edge
-          const double u = sx - 0.5, v = sy - 0.5;
-          const int i0 = int(std::floor(u)), j0 = int(std::floor(v));
-          const float a = float(u - i0), b = float(v - j0);
-          const int i1 = std::min(i0 + 1, src.width - 1), j1 = std::min(j0 + 1, src.height - 1);
-          const int ic = std::max(i0, 0), jc = std::max(j0, 0);
-          const ColorBuffer& cb = src.color[0];
-          c = (1.0f - b) * ((1.0f - a) * cb.Load(ic, jc) + a * cb.Load(i1, jc)) +
-              b * ((1.0f - a) * cb.Load(ic, j1) + a * cb.Load(i1, j1));
-        } else if (src.samples > 1) {
-          c = LoadResolved(src.color[0], src.samples, px, py);
-        } else {
-          c = src.color[0].Load(px, py);
-        }
-        for (const ColorBuffer& cb : dst.color)
-          if (cb.Present()) cb.Store(x, y, c, all);
-      }
-      if (r.depth) dst.SetDepth(x, y, dst.StoredDepth(src.DepthAt(px, py)));
-      if (r.stencil) dst.Stencil(x, y) = src.Stencil(px, py);
-    }
-  }
+  BlitScaled(src, dst, r, ax, ay);
 }
 
 int Framebuffer::RowPitch(int w) const {

@@ -906,6 +906,138 @@ TEST_CASE("same-size NEAREST blits between buffers of one format give Load and S
   }
 }
 
+TEST_CASE("scaled, mirrored, LINEAR and cross-format blits give Load and Store's values pixel by pixel",
+          "[framebuffer][formats]") {
+  // The reference is BlitFramebuffer's definition pixel by pixel (OpenGL 4.6, section 18.3.1), through Load (or
+  // LoadResolved) and Store: each destination centre mapped into the source, NEAREST the pixel holding the point,
+  // LINEAR the mix of the four nearest centres clamped to the edge, points outside the source not written.
+  std::uint32_t seed = 17;
+  auto next = [&] { return seed = seed * 1664525u + 1013904223u; };
+  const int kFormats = int(std::size(kColourFormats));
+  int compared = 0, written = 0;
+  for (int round = 0; round < kFormats * 12; ++round) {
+    const ColourFormat& fs = kColourFormats[round % kFormats];
+    // Every third round into the same format (the texel copy where it applies), else into another: 12 of the
+    // formats for each source format.
+    const ColourFormat& fd = round % 3 == 0 ? fs : kColourFormats[(round / kFormats + 7 * round) % kFormats];
+    const bool resolve = round % 5 == 4;  // a 4-sample source, mirrored onto a rectangle of the same size
+    const bool linear = !resolve && round % 2 == 1;
+    const int samples = resolve ? 4 : 1;
+    const int ws = 1 + int(next() % 40), hs = 1 + int(next() % 12), wd = 1 + int(next() % 40), hd = 1 + int(next() % 12);
+    const bool all[4] = {true, true, true, true};
+    // The source: `samples` planes of ws x hs, values as Store leaves them (finite: no NaN whose payload the order
+    // of a LINEAR mix's operations would choose).
+    detail::RenderTarget src;
+    std::vector<std::uint8_t> src_bytes;
+    detail::ColorBuffer& in = ColourTarget(src, fs, ws, hs, ws, src_bytes);
+    src_bytes.resize(src_bytes.size() * std::size_t(samples));
+    in.data = src_bytes.data();
+    in.plane = std::size_t(ws) * std::size_t(hs);
+    src.samples = samples;
+    std::vector<float> src_d(in.plane * std::size_t(samples));
+    std::vector<std::uint8_t> src_st(src_d.size());
+    for (float& d : src_d) d = float(next() % 1000) / 999.0f;
+    for (std::uint8_t& v : src_st) v = std::uint8_t(next());
+    src.depth = src_d.data();
+    src.depth_pitch = ws;
+    src.depth_plane = in.plane;
+    src.stencil = src_st.data();
+    src.stencil_pitch = ws;
+    src.stencil_plane = in.plane;
+    for (int s = 0; s < samples; ++s)
+      for (int y = 0; y < hs; ++y)
+        for (int x = 0; x < ws; ++x)
+          src.Sample(s).color[0].Store(x, y, glm::vec4(float(int(next() % 2001) - 500) / 1000.0f, float(next() % 1000) / 999.0f,
+                                                       float(int(next() % 5) - 1) * 0.75f, float(next() % 256) / 255.0f),
+                                       all);
+    // The destination and its reference copy, starting from the same bytes.
+    detail::RenderTarget dst;
+    std::vector<std::uint8_t> dst_bytes;
+    ColourTarget(dst, fd, wd, hd, wd + int(next() % 3), dst_bytes);
+    for (std::uint8_t& b : dst_bytes) b = std::uint8_t(next() >> 24);
+    std::vector<float> dst_d(std::size_t(wd) * std::size_t(hd));
+    std::vector<std::uint8_t> dst_st(dst_d.size());
+    for (float& d : dst_d) d = float(next() % 1000) / 999.0f;
+    dst.depth = dst_d.data();
+    dst.depth_pitch = wd;
+    dst.stencil = dst_st.data();
+    dst.stencil_pitch = wd;
+    std::vector<std::uint8_t> ref_bytes = dst_bytes, ref_st = dst_st;
+    std::vector<float> ref_d = dst_d;
+    detail::RenderTarget ref = dst;
+    ref.color[0].data = ref_bytes.data();
+    ref.depth = ref_d.data();
+    ref.stencil = ref_st.data();
+    // Rectangles reaching past both buffers by up to 3 pixels, either reversed; a resolve's of the same size.
+    detail::BlitRegion region;
+    auto corners = [&](int size, int& a, int& b) {
+      a = int(next() % std::uint32_t(size / 2 + 4)) - 3;
+      b = size / 2 + int(next() % std::uint32_t(size / 2 + 4));
+      if (next() % 2) std::swap(a, b);
+    };
+    for (int k = 0; k < 2; ++k) {
+      corners(k ? hs : ws, region.src[k], region.src[k + 2]);
+      corners(k ? hd : wd, region.dst[k], region.dst[k + 2]);
+      if (resolve) region.dst[k + 2] = region.dst[k] + region.src[k] - region.src[k + 2];
+    }
+    region.clip = detail::Rect{int(next() % 3), int(next() % 2), wd - int(next() % 3), hd};
+    region.color = true;
+    region.linear = linear;
+    region.depth = !linear && round % 4 == 0;
+    region.stencil = !linear && round % 4 == 2;
+    auto axis = [](int s0, int s1, int e0, int e1, int c0, int c1, int& d0, int& d1, double& scale) {
+      scale = (double(s1) - double(s0)) / (double(e1) - double(e0));
+      d0 = std::max(std::min(e0, e1), c0);
+      d1 = std::min(std::max(e0, e1), c1);
+    };
+    int x0, x1, y0, y1;
+    double scale_x, scale_y;
+    axis(region.src[0], region.src[2], region.dst[0], region.dst[2], std::max(region.clip.x0, 0),
+         std::min(region.clip.x1, wd), x0, x1, scale_x);
+    axis(region.src[1], region.src[3], region.dst[1], region.dst[3], std::max(region.clip.y0, 0),
+         std::min(region.clip.y1, hd), y0, y1, scale_y);
+    const bool empty = region.src[0] == region.src[2] || region.src[1] == region.src[3] ||
+                       region.dst[0] == region.dst[2] || region.dst[1] == region.dst[3];
+    for (int y = y0; y < y1 && !empty; ++y)
+      for (int x = x0; x < x1; ++x) {
+        const double sx = region.src[0] + (double(x) + 0.5 - region.dst[0]) * scale_x;
+        const double sy = region.src[1] + (double(y) + 0.5 - region.dst[1]) * scale_y;
+        if (!(sx >= 0.0 && sx < ws && sy >= 0.0 && sy < hs)) continue;
+        const int px = int(sx), py = int(sy);
+        glm::vec4 c;
+        if (linear) {
+          const double u = sx - 0.5, v = sy - 0.5;
+          const int i0 = int(std::floor(u)), j0 = int(std::floor(v));
+          const float a = float(u - i0), b = float(v - j0);
+          const int i1 = std::min(i0 + 1, ws - 1), j1 = std::min(j0 + 1, hs - 1), ic = std::max(i0, 0),
+                    jc = std::max(j0, 0);
+          c = (1.0f - b) * ((1.0f - a) * in.Load(ic, jc) + a * in.Load(i1, jc)) +
+              b * ((1.0f - a) * in.Load(ic, j1) + a * in.Load(i1, j1));
+        } else {
+          c = samples > 1 ? detail::LoadResolved(in, samples, px, py) : in.Load(px, py);
+        }
+        ref.color[0].Store(x, y, c, all);
+        if (region.depth) ref.SetDepth(x, y, ref.StoredDepth(src.DepthAt(px, py)));
+        if (region.stencil) ref.Stencil(x, y) = src.Stencil(px, py);
+        ++written;
+      }
+    detail::Blit(src, dst, region);
+    INFO("round " << round << ", layout " << int(fs.layout) << (fs.srgb ? " sRGB" : "") << (fs.rgb_only ? " RGB" : "")
+                  << " into " << int(fd.layout) << (fd.srgb ? " sRGB" : "") << (fd.rgb_only ? " RGB" : "") << ", "
+                  << (linear ? "LINEAR" : "NEAREST") << ", " << samples << " samples, " << ws << " x " << hs << " ("
+                  << region.src[0] << ", " << region.src[1] << ", " << region.src[2] << ", " << region.src[3] << ") to "
+                  << wd << " x " << hd << " (" << region.dst[0] << ", " << region.dst[1] << ", " << region.dst[2] << ", "
+                  << region.dst[3] << ")");
+    const bool same_colour = dst_bytes == ref_bytes, same_depth = dst_d == ref_d, same_stencil = dst_st == ref_st;
+    CHECK(same_colour);
+    CHECK(same_depth);
+    CHECK(same_stencil);
+    ++compared;
+  }
+  CHECK(compared == kFormats * 12);
+  CHECK(written > 5000);  // (the rectangles are not mostly empty)
+}
+
 TEST_CASE("eight draw buffers of mixed formats, mapped in any order, each takes its output in one draw",
           "[framebuffer][formats]") {
   // Output o is (o / 8, 1 - o / 8, 0.25, 1); draw buffer o goes to attachment 7 - o, whose format is formats[7 - o];
