@@ -1358,6 +1358,63 @@ int main(int argc, char** argv) {
                         });
                       }});
   }
+  // Reading back 1920 x 1080 with ReadPixels, ten reads a frame: the RGBA8 window as RGBA bytes (what every program
+  // that saves its image does) and as floats, and an RGBA16F framebuffer object as floats and as bytes.
+  struct ReadCase {
+    const char* name;
+    softgl::Enum source;  // 0: the context's framebuffer (RGBA8), else a renderbuffer of that format
+    softgl::Enum type;
+  };
+  static const ReadCase kReads[] = {
+      {"read back: ReadPixels of the RGBA8 window as RGBA, UNSIGNED_BYTE, 1920x1080", 0, softgl::UNSIGNED_BYTE},
+      {"read back: ReadPixels of the RGBA8 window as RGBA, FLOAT, 1920x1080", 0, softgl::FLOAT},
+      {"read back: ReadPixels of RGBA16F as RGBA, FLOAT, 1920x1080", softgl::RGBA16F, softgl::FLOAT},
+      {"read back: ReadPixels of RGBA16F as RGBA, UNSIGNED_BYTE, 1920x1080", softgl::RGBA16F, softgl::UNSIGNED_BYTE}};
+  for (const ReadCase& rc : kReads) {
+    constexpr int kW = 1920, kH = 1080, kReadsPerFrame = 10;
+    const std::size_t bytes = std::size_t(kW) * kH * 4 * (rc.type == softgl::FLOAT ? 4 : 1);
+    scenes.push_back({rc.name, kW, kH, "Mpixel/s", double(kReadsPerFrame) * kW * kH,
+                      [&rc, bytes](int n) {
+                        softgl::Context gl(kW, kH, g_options);
+                        if (rc.source) {
+                          gl.BindFramebuffer(softgl::FRAMEBUFFER, gl.GenFramebuffer());
+                          const std::uint32_t rb = gl.GenRenderbuffer();
+                          gl.BindRenderbuffer(softgl::RENDERBUFFER, rb);
+                          gl.RenderbufferStorage(softgl::RENDERBUFFER, rc.source, kW, kH);
+                          gl.FramebufferRenderbuffer(softgl::FRAMEBUFFER, softgl::COLOR_ATTACHMENT0,
+                                                     softgl::RENDERBUFFER, rb);
+                        }
+                        gl.ClearColor(0.25f, 0.5f, 0.75f, 1.0f);
+                        gl.Clear(softgl::COLOR_BUFFER_BIT);
+                        std::vector<std::uint8_t> out(bytes);
+                        return MedianMs(n, [&] {
+                          for (int i = 0; i < kReadsPerFrame; ++i)
+                            gl.ReadPixels(0, 0, kW, kH, softgl::RGBA, rc.type, out.data());
+                        });
+                      },
+                      [&rc, bytes, &with_osmesa](int n) {
+                        return with_osmesa(kW, kH, [&] {
+                          GLuint fbo = 0, rb = 0;
+                          if (rc.source) {
+                            glGenFramebuffers(1, &fbo);
+                            glGenRenderbuffers(1, &rb);
+                            glBindRenderbuffer(GL_RENDERBUFFER, rb);
+                            glRenderbufferStorage(GL_RENDERBUFFER, rc.source, kW, kH);
+                            glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+                            glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, rb);
+                          }
+                          glClearColor(0.25f, 0.5f, 0.75f, 1.0f);
+                          glClear(GL_COLOR_BUFFER_BIT);
+                          std::vector<std::uint8_t> out(bytes);
+                          const double ms = MedianMs(n, [&] {
+                            for (int i = 0; i < kReadsPerFrame; ++i)
+                              glReadPixels(0, 0, kW, kH, GL_RGBA, rc.type, out.data());
+                          });
+                          glBindFramebuffer(GL_FRAMEBUFFER, 0);
+                          return ms;
+                        });
+                      }});
+  }
   // Textured overdraw with an RGBA8 texture, and the same with an sRGB one (texels decoded before filtering).
   for (const bool srgb : {false, true}) {
     scenes.push_back({srgb ? "textured overdraw, sRGB texture: 20 quads, trilinear, 1024^2"

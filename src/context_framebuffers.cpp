@@ -137,12 +137,23 @@ Image Context::ReadPixels() const {
   image.width = t.width;
   image.height = t.height;
   image.rgba.resize(std::size_t(t.width) * std::size_t(t.height) * 4);
-  for (int y = 0; y < t.height; ++y)
-    for (int x = 0; x < t.width; ++x) {
-      const glm::vec4 c = detail::LoadResolved(t.color[0], t.samples, x, y);
-      std::uint8_t* dst = image.rgba.data() + (std::size_t(t.height - 1 - y) * std::size_t(t.width) + x) * 4;
-      for (int k = 0; k < 4; ++k) dst[k] = detail::FloatToUnorm8(c[k]);
+  // Row by row, top row first: an RGBA8 buffer's bytes as they are (b / 255 converts back to b), any other the
+  // row's floats (LoadRow) stored as RGBA8 (StoreRow: FloatToUnorm8 a channel).
+  const detail::ColorBuffer& cb = t.color[0];
+  detail::ColorBuffer out;
+  out.data = image.rgba.data();
+  out.layout = detail::TexelLayout::kUnorm8x4;
+  out.pitch = t.width;
+  const bool bytes = t.samples == 1 && cb.Rgba8() && cb.step == 1;
+  std::vector<float> row(bytes ? 0 : std::size_t(t.width) * 4);
+  for (int y = 0; y < t.height; ++y) {
+    if (bytes) {
+      std::memcpy(out.At(0, t.height - 1 - y), cb.At(0, y), std::size_t(t.width) * 4);
+    } else {
+      detail::LoadRow(cb, t.samples, 0, t.width, y, row.data());
+      detail::StoreRow(out, 0, t.width, t.height - 1 - y, row.data());
     }
+  }
   return image;
 }
 
@@ -189,6 +200,47 @@ PackLayout Pack(const ContextState& s, int width, int height, bool layered, Enum
   return p;
 }
 
+// ReadPixels' colour: columns [x0, x1) of rows [y0, y1) of `cb` (single-sampled) into `pack`, buffer pixel (x0, y0)
+// at client pixel (i0, j0), a row at a time. UNSIGNED_BYTE from an 8-bit buffer takes the stored bytes (b / 255
+// converts back to b; a channel the buffer lacks reads 0, alpha 255), a whole row at once for RGBA from RGBA8;
+// RGBA as FLOAT the row's floats (LoadRow) written where they go; any other pair the row's floats converted by
+// PackColorRow. A fixed-point buffer's values are in [0, 1]; a float buffer's are clamped only when converted to a
+// normalized type.
+void ReadColorRows(const detail::ColorBuffer& cb, Enum format, Enum type, const PackLayout& pack, int i0, int j0,
+                   int x0, int x1, int y0, int y1) {
+  const int n = x1 - x0;
+  int ch[4];
+  const int channels = detail::FormatChannels(format, ch);
+  const bool bytes = type == UNSIGNED_BYTE && detail::IsUnorm8(cb.layout) && !cb.srgb;
+  const int stored = cb.Bytes() - (cb.rgb_only ? 1 : 0);  // the channels the buffer stores, red first
+  const bool whole = bytes && channels == 4 && ch[0] == 0 && ch[1] == 1 && ch[2] == 2 && ch[3] == 3 &&
+                     stored == 4 && cb.step == 1;
+  const bool floats = type == FLOAT && channels == 4 && ch[0] == 0 && ch[1] == 1 && ch[2] == 2 && ch[3] == 3 &&
+                      reinterpret_cast<std::uintptr_t>(pack.At(i0, j0)) % alignof(float) == 0 && pack.stride % 4 == 0;
+  std::vector<float> row(bytes || floats ? 0 : std::size_t(n) * 4);
+  for (int y = y0; y < y1; ++y) {
+    std::uint8_t* out = pack.At(i0, j0 + (y - y0));
+    if (whole) {
+      std::memcpy(out, cb.At(x0, y), std::size_t(n) * 4);
+    } else if (bytes) {
+      const std::uint8_t* in = cb.At(x0, y);
+      const std::size_t in_step = std::size_t(cb.step) * std::size_t(cb.Bytes());
+      for (int i = 0; i < n; ++i, in += in_step, out += pack.pixel)
+        for (int k = 0; k < channels; ++k) out[k] = ch[k] < stored ? in[ch[k]] : (ch[k] == 3 ? 255 : 0);
+    } else if (floats) {  // RGBA floats decoded straight into the client's row, then PackPlain's NaNs made quiet
+      float* f = reinterpret_cast<float*>(out);
+      detail::LoadRow(cb, 1, x0, n, y, f);
+      for (int i = 0; i < 4 * n; ++i)
+        if (f[i] != f[i]) f[i] = float(double(f[i]));
+      for (int i = 0; i < n; ++i, out += pack.pixel) pack.Swap(out);
+    } else {
+      detail::LoadRow(cb, 1, x0, n, y, row.data());
+      detail::PackColorRow(format, type, row.data(), n, out, pack.pixel);
+      for (int i = 0; i < n; ++i, out += pack.pixel) pack.Swap(out);
+    }
+  }
+}
+
 }  // namespace
 
 void Context::ReadPixels(int x, int y, int width, int height, Enum format, Enum type, void* pixels) const {
@@ -215,6 +267,10 @@ void Context::ReadPixels(int x, int y, int width, int height, Enum format, Enum 
   const int x0 = std::max(x, 0), y0 = std::max(y, 0);
   const int x1 = int(std::min<std::int64_t>(std::int64_t(x) + width, t.width));
   const int y1 = int(std::min<std::int64_t>(std::int64_t(y) + height, t.height));
+  if (!depth && !stencil) {
+    if (x0 < x1) ReadColorRows(t.color[0], format, type, pack, x0 - x, y0 - y, x0, x1, y0, y1);
+    return;
+  }
   for (int py = y0; py < y1; ++py)
     for (int px = x0; px < x1; ++px) {
       std::uint8_t* dst = pack.At(px - x, py - y);
@@ -222,12 +278,8 @@ void Context::ReadPixels(int x, int y, int width, int height, Enum format, Enum 
         detail::PackDepthStencil(type, t.DepthAt(px, py), std::uint8_t(t.Stencil(px, py)), dst);
       } else if (depth) {
         detail::PackColor(DEPTH_COMPONENT, type, glm::vec4(t.DepthAt(px, py)), dst);
-      } else if (stencil) {
-        detail::PackStencil(type, std::uint32_t(t.Stencil(px, py)), dst);
       } else {
-        // A fixed-point buffer's b / 255 gives back b for UNSIGNED_BYTE; a float buffer's values are clamped only
-        // when converted to a normalized type.
-        detail::PackColor(format, type, t.color[0].Load(px, py), dst);
+        detail::PackStencil(type, std::uint32_t(t.Stencil(px, py)), dst);
       }
       pack.Swap(dst);
     }

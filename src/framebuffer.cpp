@@ -673,16 +673,16 @@ SOFTGL_WIDE F4 ToF4(const glm::vec4& c) { return F4{c.r, c.g, c.b, c.a}; }
 
 #if defined(SOFTGL_HAS_DISPATCH)
 // n RGBA16F texels at `in` (`step` texels apart) as floats, by F16C (HalfToFloat's values).
-SOFTGL_TARGET_AVX2 void HalvesToFloats(const std::uint8_t* in, int step, int n, F4* out) {
+SOFTGL_TARGET_AVX2 void HalvesToFloats(const std::uint8_t* in, int step, int n, float* out) {
   for (int i = 0; i < n; ++i)
-    _mm_storeu_ps(reinterpret_cast<float*>(&out[i]),
+    _mm_storeu_ps(out + 4 * i,
                   _mm_cvtph_ps(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(in + std::size_t(i) * std::size_t(step) * 8))));
 }
 // n pixels of floats into RGBA16F texels `step` apart, by F16C: FloatToHalf's bits (to nearest even, a NaN made
 // sign | 0x7E00), as ResolveHalves4F16c stores them.
-SOFTGL_TARGET_AVX2 void FloatsToHalves(const F4* in, int n, std::uint8_t* out, int step) {
+SOFTGL_TARGET_AVX2 void FloatsToHalves(const float* in, int n, std::uint8_t* out, int step) {
   for (int i = 0; i < n; ++i) {
-    const __m128 v = _mm_loadu_ps(reinterpret_cast<const float*>(&in[i]));
+    const __m128 v = _mm_loadu_ps(in + 4 * i);
     __m128i h = _mm_cvtps_ph(v, _MM_FROUND_TO_NEAREST_INT);
     const __m128i nan = _mm_packs_epi32(_mm_castps_si128(_mm_cmpunord_ps(v, v)), _mm_setzero_si128());
     h = _mm_or_si128(_mm_andnot_si128(nan, h),
@@ -693,10 +693,11 @@ SOFTGL_TARGET_AVX2 void FloatsToHalves(const F4* in, int n, std::uint8_t* out, i
 }
 #endif
 
-// Pixels [x, x + n) of row y of `cb` as Load reads them (LoadResolved's averages when `samples` > 1), into out.
-void LoadRow(const ColorBuffer& cb, int samples, int x, int n, int y, F4* out) {
+}  // namespace
+
+void LoadRow(const ColorBuffer& cb, int samples, int x, int n, int y, float* rgba) {
   if (samples > 1) {
-    for (int i = 0; i < n; ++i) out[i] = ToF4(LoadResolved(cb, samples, x + i, y));
+    for (int i = 0; i < n; ++i) StoreVec(rgba + 4 * i, ToF4(LoadResolved(cb, samples, x + i, y)));
     return;
   }
   const std::uint8_t* in = cb.At(x, y);
@@ -705,14 +706,14 @@ void LoadRow(const ColorBuffer& cb, int samples, int x, int n, int y, F4* out) {
     case TexelLayout::kUnorm8x4:
       if (cb.srgb) break;
       for (int i = 0; i < n; ++i, in += stride)
-        out[i] = F4{float(in[0]), float(in[1]), float(in[2]), cb.rgb_only ? 255.0f : float(in[3])} / 255.0f;
+        StoreVec(rgba + 4 * i, F4{float(in[0]), float(in[1]), float(in[2]), cb.rgb_only ? 255.0f : float(in[3])} / 255.0f);
       return;
     case TexelLayout::kFloat32x4:
-      for (int i = 0; i < n; ++i, in += stride) std::memcpy(&out[i], in, 16);
+      for (int i = 0; i < n; ++i, in += stride) std::memcpy(rgba + 4 * i, in, 16);
       return;
     case TexelLayout::kFloat16x4:
 #if defined(SOFTGL_HAS_DISPATCH)
-      if (CpuSimdLevel() != SimdLevel::kBaseline) return HalvesToFloats(in, cb.step, n, out);
+      if (CpuSimdLevel() != SimdLevel::kBaseline) return HalvesToFloats(in, cb.step, n, rgba);
 #endif
       break;
     case TexelLayout::kUnorm565:
@@ -735,17 +736,16 @@ void LoadRow(const ColorBuffer& cb, int samples, int x, int n, int y, F4* out) {
           w = h;
         }
         const I4 code = I4((V<4>::U{} + w) >> V<4>::U(shift)) & max;
-        out[i] = max != 0 ? __builtin_convertvector(code, F4) / fmax : F4{} + 1.0f;
+        StoreVec(rgba + 4 * i, max != 0 ? __builtin_convertvector(code, F4) / fmax : F4{} + 1.0f);
       }
       return;
     }
     default: break;
   }
-  for (int i = 0; i < n; ++i) out[i] = ToF4(cb.Load(x + i, y));
+  for (int i = 0; i < n; ++i) StoreVec(rgba + 4 * i, ToF4(cb.Load(x + i, y)));
 }
 
-// Pixels in[0, n) stored at [x, x + n) of row y of `cb`, as Store stores them through an all-true mask.
-void StoreRow(const ColorBuffer& cb, int x, int n, int y, const F4* in) {
+void StoreRow(const ColorBuffer& cb, int x, int n, int y, const float* rgba) {
   std::uint8_t* out = cb.At(x, y);
   const std::size_t stride = std::size_t(cb.step) * std::size_t(cb.Bytes());
   if (cb.layout == TexelLayout::kUnorm8x4 && !cb.srgb && !cb.rgb_only) {
@@ -753,7 +753,8 @@ void StoreRow(const ColorBuffer& cb, int x, int n, int y, const F4* in) {
     // and taking away 1.5 x 2^23, exact for values up to 255).
     constexpr float kRound = 12582912.0f;
     for (int i = 0; i < n; ++i, out += stride) {
-      F4 c = in[i] > 0.0f ? in[i] : F4{};
+      const F4 v = LoadVec<F4>(rgba + 4 * i);
+      F4 c = v > 0.0f ? v : F4{};
       c = c < 1.0f ? c : F4{} + 1.0f;
       const I4 k = __builtin_convertvector((c * 255.0f + kRound) - kRound, I4);
       const std::uint32_t word = std::uint32_t(k[0]) | std::uint32_t(k[1]) << 8 | std::uint32_t(k[2]) << 16 |
@@ -763,16 +764,18 @@ void StoreRow(const ColorBuffer& cb, int x, int n, int y, const F4* in) {
     return;
   }
   if (cb.layout == TexelLayout::kFloat32x4) {
-    for (int i = 0; i < n; ++i, out += stride) std::memcpy(out, &in[i], 16);
+    for (int i = 0; i < n; ++i, out += stride) std::memcpy(out, rgba + 4 * i, 16);
     return;
   }
 #if defined(SOFTGL_HAS_DISPATCH)
   if (cb.layout == TexelLayout::kFloat16x4 && CpuSimdLevel() != SimdLevel::kBaseline)
-    return FloatsToHalves(in, n, out, cb.step);
+    return FloatsToHalves(rgba, n, out, cb.step);
 #endif
   const bool all[4] = {true, true, true, true};
-  for (int i = 0; i < n; ++i) cb.Store(x + i, y, glm::vec4(in[i][0], in[i][1], in[i][2], in[i][3]), all);
+  for (int i = 0; i < n; ++i) cb.Store(x + i, y, glm::vec4(rgba[4 * i], rgba[4 * i + 1], rgba[4 * i + 2], rgba[4 * i + 3]), all);
 }
+
+namespace {
 
 // Texels of B bytes: out[i] (`out_step` texels apart) = the texel of `in` at column from[i] (`in_step` apart).
 template <int B>
@@ -844,7 +847,7 @@ void BlitScaled(const RenderTarget& src, const RenderTarget& dst, const BlitRegi
     const int k = held[0] == keep ? 1 : 0;
     held[k] = j;
     F4* into = &rows[std::size_t(k) * std::size_t(hi - lo + 1)];
-    LoadRow(src.color[0], src.samples, lo, hi - lo + 1, j, into);
+    LoadRow(src.color[0], src.samples, lo, hi - lo + 1, j, reinterpret_cast<float*>(into));
     return into;
   };
   const bool ascending = !r.linear && px[std::size_t(last)] - px[std::size_t(first)] == last - first;
@@ -891,7 +894,7 @@ void BlitScaled(const RenderTarget& src, const RenderTarget& dst, const BlitRegi
     }
     if (r.color && !copy)
       for (const ColorBuffer& cb : dst.color)
-        if (cb.Present()) StoreRow(cb, x0, count, y, out.data());
+        if (cb.Present()) StoreRow(cb, x0, count, y, reinterpret_cast<const float*>(out.data()));
     for (int i = 0; i < count && (r.depth || r.stencil); ++i) {
       const int x = x0 + i, sx = px[std::size_t(first + i)];
       if (r.depth) dst.SetDepth(x, y, dst.StoredDepth(src.DepthAt(sx, py)));

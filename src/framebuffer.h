@@ -242,4 +242,11 @@ void Blit(const RenderTarget& src, const RenderTarget& dst, const BlitRegion& r)
 /// OpenGL's float-to-normalized-fixed conversion for 8 bits: clamp to [0, 1], then round(f * 255).
 std::uint8_t FloatToUnorm8(float f);
 
+/// Pixels [x, x + n) of row y of `cb` as Load reads them (LoadResolved's averages when `samples` > 1): four floats a
+/// pixel into rgba, a row's decoding chosen once (RGBA8, RGBA32F, RGBA16F and the packed formats in vector form).
+void LoadRow(const ColorBuffer& cb, int samples, int x, int n, int y, float* rgba);
+/// n pixels of four floats from rgba stored at [x, x + n) of row y of `cb`, as Store stores them through a mask of
+/// every channel (RGBA8, RGBA32F and RGBA16F in vector form).
+void StoreRow(const ColorBuffer& cb, int x, int n, int y, const float* rgba);
+
 }  // namespace softgl::detail

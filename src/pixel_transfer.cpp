@@ -10,8 +10,6 @@
 
 namespace softgl::detail {
 
-namespace {
-
 // The components of a format in client order, as RGBA channel numbers (red 0 ... alpha 3); 0 for an unknown format.
 // Depth and stencil formats have one component, kept in channel 0.
 int FormatChannels(Enum format, int ch[4]) {
@@ -43,6 +41,8 @@ int FormatChannels(Enum format, int ch[4]) {
     default: return 0;
   }
 }
+
+namespace {
 
 bool IsIntegerFormat(Enum format) {
   switch (format) {
@@ -308,6 +308,31 @@ void PackColor(Enum format, Enum type, const glm::vec4& c, std::uint8_t* p) {
     word |= field << packing.shift[k];
   }
   StoreWord(p, packing.bytes, word);
+}
+
+void PackColorRow(Enum format, Enum type, const float* rgba, int n, std::uint8_t* p, std::size_t pixel) {
+  int ch[4];
+  const int channels = FormatChannels(format, ch);
+  if (type == UNSIGNED_BYTE) {
+    // Unorm(v, 255): for c in [0, 1], c * 255 + 1/2 is exact in double and its truncation is llround's result.
+    for (int i = 0; i < n; ++i, p += pixel)
+      for (int k = 0; k < channels; ++k) {
+        const double v = double(rgba[4 * i + ch[k]]);
+        const double c = v > 0.0 ? std::min(v, 1.0) : 0.0;
+        p[k] = std::uint8_t(int(c * 255.0 + 0.5));
+      }
+    return;
+  }
+  if (type == FLOAT) {
+    for (int i = 0; i < n; ++i, p += pixel)
+      for (int k = 0; k < channels; ++k) {
+        const float v = float(double(rgba[4 * i + ch[k]]));  // (PackPlain's conversions: a signalling NaN made quiet)
+        std::memcpy(p + 4 * k, &v, 4);
+      }
+    return;
+  }
+  for (int i = 0; i < n; ++i, p += pixel)
+    PackColor(format, type, glm::vec4(rgba[4 * i], rgba[4 * i + 1], rgba[4 * i + 2], rgba[4 * i + 3]), p);
 }
 
 void PackStencil(Enum type, std::uint32_t stencil, std::uint8_t* p) {

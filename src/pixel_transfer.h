@@ -57,6 +57,12 @@ void UnpackDepthStencil(Enum type, const std::uint8_t* p, float& depth, std::uin
 /// largest value, rounded; HALF_FLOAT and FLOAT take it as it is; UNSIGNED_INT_10F_11F_11F_REV and
 /// UNSIGNED_INT_5_9_9_9_REV encode it as their small and shared-exponent floats. DEPTH_COMPONENT writes c.r.
 void PackColor(Enum format, Enum type, const glm::vec4& c, std::uint8_t* p);
+/// PackColor for n pixels of four floats each (rgba), the client pixels `pixel` bytes apart from p: the conversion
+/// chosen once (UNSIGNED_BYTE and FLOAT written directly), the bytes PackColor gives pixel by pixel.
+void PackColorRow(Enum format, Enum type, const float* rgba, int n, std::uint8_t* p, std::size_t pixel);
+/// The channels (0 red to 3 alpha) of a client format's components in client order, and their count (0 for an
+/// unknown format; depth and stencil formats have one, channel 0).
+int FormatChannels(Enum format, int ch[4]);
 
 /// Writes a stencil index as `type`: masked to the type's bits for the integer types, converted for the floats.
 void PackStencil(Enum type, std::uint32_t stencil, std::uint8_t* p);

@@ -11,6 +11,7 @@
 
 #include <softgl/softgl.h>
 
+#include "helpers.h"
 #include "pixel_transfer.h"
 
 using namespace softgl;
@@ -266,6 +267,111 @@ TEST_CASE("pixel transfer: ReadPixels in every type from fixed-point and float b
     CHECK(out[0] == 0x00F8);
     CHECK(gl.GetError() == NO_ERROR);
   }
+}
+
+TEST_CASE("pixel transfer: ReadPixels by rows gives GetTexImage's bytes for every colour format, format and type",
+          "[pixel_transfer][context][formats]") {
+  // ReadPixels converts a row at a time; GetTexImage reads the same texture level pixel by pixel (Texel, then
+  // PackColor). Both give the stored values (no sRGB decoding), so the bytes must agree for every pair.
+  const Enum internal_formats[] = {RGBA8,   RGB8,    RG8,     R8,      SRGB8_ALPHA8,   SRGB8,  RGBA32F,
+                                   RG32F,   R32F,    RGBA16F, RG16F,   R16F,           R11F_G11F_B10F,
+                                   RGB565,  RGBA4,   RGB5_A1, RGB10_A2, RGBA16,        RG16,   R16};
+  constexpr int kW = 13, kH = 5;
+  std::vector<float> texels(std::size_t(kW) * kH * 4);
+  std::uint32_t seed = 3;
+  for (float& v : texels) v = float(int((seed = seed * 1664525u + 1013904223u) >> 20) % 2201 - 600) / 1000.0f;
+  texels[0] = 0.0f, texels[1] = 1.0f, texels[2] = 0.5f, texels[3] = 1.0f / 255.0f;
+  int compared = 0;
+  for (const Enum internal : internal_formats) {
+    Context gl(1, 1);
+    BindTarget(gl, internal, kW, kH);
+    gl.TexImage2D(TEXTURE_2D, 0, internal, kW, kH, 0, RGBA, FLOAT, texels.data());
+    REQUIRE(gl.CheckFramebufferStatus(FRAMEBUFFER) == FRAMEBUFFER_COMPLETE);
+    std::vector<std::pair<Enum, Enum>> pairs;
+    for (const Enum format : kColourFormats) {
+      for (const Enum type : kPlainTypes) pairs.push_back({format, type});
+      for (const Enum type : kRgbPacked) pairs.push_back({format, type});
+      for (const Enum type : kRgbaPacked) pairs.push_back({format, type});
+    }
+    for (const auto& [format, type] : pairs) {
+      const char* why = "";
+      if (detail::CheckPixelTransfer(format, type, TransferCall::kReadPixels, why) != NO_ERROR ||
+          detail::CheckPixelTransfer(format, type, TransferCall::kGetTexImage, why) != NO_ERROR)
+        continue;
+      for (const bool swap : {false, true}) {
+        gl.PixelStore(PACK_SWAP_BYTES, swap ? 1 : 0);
+        const std::size_t pixel = detail::TransferPixelBytes(format, type), element = detail::TransferElementBytes(type);
+        auto stride = [&](int w) {
+          const std::size_t row = std::size_t(w) * pixel;
+          return element < 4 ? (row + 3) / 4 * 4 : row;
+        };
+        std::vector<std::uint8_t> whole(stride(kW) * kH, 0xA5), read = whole;
+        gl.GetTexImage(TEXTURE_2D, 0, format, type, whole.data());
+        gl.ReadPixels(0, 0, kW, kH, format, type, read.data());
+        // A rectangle inside, 8 x 3 from (2, 1), and one past the corner (only its inside pixels written).
+        std::vector<std::uint8_t> part(stride(8) * 3, 0x5A), corner(stride(4) * 3, 0x5A);
+        gl.ReadPixels(2, 1, 8, 3, format, type, part.data());
+        gl.ReadPixels(kW - 2, kH - 1, 4, 3, format, type, corner.data());
+        REQUIRE(gl.GetError() == NO_ERROR);
+        bool same = read == whole;
+        for (int j = 0; j < 3; ++j)
+          for (int i = 0; i < 4; ++i) {
+            const std::uint8_t* got = corner.data() + std::size_t(j) * stride(4) + std::size_t(i) * pixel;
+            const bool inside = i < 2 && j < 1;
+            const std::size_t want = inside ? std::size_t(kH - 1 + j) * stride(kW) + std::size_t(kW - 2 + i) * pixel : 0;
+            for (std::size_t k = 0; k < pixel; ++k) same = same && got[k] == (inside ? whole[want + k] : 0x5A);
+          }
+        for (int j = 0; j < 3; ++j)
+          same = same && std::equal(part.begin() + std::ptrdiff_t(std::size_t(j) * stride(8)),
+                                    part.begin() + std::ptrdiff_t(std::size_t(j) * stride(8) + 8 * pixel),
+                                    whole.begin() + std::ptrdiff_t(std::size_t(1 + j) * stride(kW) + 2 * pixel));
+        INFO("internal format " << std::hex << internal << ", format " << format << ", type " << type
+                                << (swap ? ", swapped" : ""));
+        CHECK(same);
+        ++compared;
+      }
+    }
+  }
+  CHECK(compared > 20 * 2 * 60);
+}
+
+TEST_CASE("pixel transfer: ReadPixels() gives each pixel's ReadPixel bytes, top row first, in every context format",
+          "[pixel_transfer][context]") {
+  for (const Enum colour : {RGBA8, SRGB8_ALPHA8, RGB565})
+    for (const int samples : {0, 4}) {
+      Context::Options options;
+      options.color_format = colour;
+      options.samples = samples;
+      options.threads = 1;
+      Context gl(11, 6, options);
+      // Four quarters of different colours, and a clipped triangle whose edge leaves partly covered pixels.
+      const glm::vec4 colours[4] = {{0.1f, 0.9f, 0.3f, 0.6f}, {1.0f, 0.5f, 0.0f, 1.0f}, {0.3f, 0.3f, 0.8f, 0.2f},
+                                    {0.0f, 0.0f, 0.0f, 0.0f}};
+      gl.Enable(SCISSOR_TEST);
+      for (int q = 0; q < 4; ++q) {
+        gl.Scissor((q % 2) * 5, (q / 2) * 3, 6, 3);
+        gl.ClearColor(colours[q].r, colours[q].g, colours[q].b, colours[q].a);
+        gl.Clear(COLOR_BUFFER_BIT);
+      }
+      gl.Disable(SCISSOR_TEST);
+      testing::SolidShader shader;
+      shader.color = glm::vec4(0.95f, 0.05f, 0.6f, 0.7f);
+      gl.UseProgram(shader);
+      testing::MakeVertexArray(gl, {{-1.0f, -1.0f, 0, 1}, {0.9f, -0.7f, 0, 1}, {-0.6f, 0.95f, 0, 1}});
+      gl.DrawArrays(TRIANGLES, 0, 3);
+      const Image image = gl.ReadPixels();
+      REQUIRE((image.width == 11 && image.height == 6));
+      bool same = true;
+      for (int y = 0; y < 6; ++y)
+        for (int x = 0; x < 11; ++x) {
+          std::uint8_t want[4];
+          gl.ReadPixel(x, y, want);
+          same = same && std::equal(want, want + 4, image.rgba.begin() + std::ptrdiff_t(((5 - y) * 11 + x) * 4));
+        }
+      INFO("colour format " << std::hex << colour << std::dec << ", " << samples << " samples");
+      CHECK(same);
+      CHECK(gl.GetError() == NO_ERROR);
+    }
 }
 
 TEST_CASE("pixel transfer: TexImage2D takes every type and GetTexImage gives it back", "[pixel_transfer][texture]") {
