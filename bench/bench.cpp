@@ -1415,6 +1415,64 @@ int main(int argc, char** argv) {
                         });
                       }});
   }
+  // Loading a texture: TexImage2D of a 1024 x 1024 image, then GenerateMipmap, as a model loader does for each of
+  // its textures (one a frame).
+  struct UploadCase {
+    const char* name;
+    softgl::Enum internal, format, type;
+  };
+  static const UploadCase kUploads[] = {
+      {"upload: TexImage2D and GenerateMipmap, RGBA8 from RGBA bytes, 1024^2", softgl::RGBA8, softgl::RGBA,
+       softgl::UNSIGNED_BYTE},
+      {"upload: TexImage2D and GenerateMipmap, SRGB8_ALPHA8 from RGBA bytes, 1024^2", softgl::SRGB8_ALPHA8,
+       softgl::RGBA, softgl::UNSIGNED_BYTE},
+      {"upload: TexImage2D and GenerateMipmap, RGB8 from RGB bytes, 1024^2", softgl::RGB8, softgl::RGB,
+       softgl::UNSIGNED_BYTE},
+      {"upload: TexImage2D and GenerateMipmap, RGBA16F from RGBA floats, 1024^2", softgl::RGBA16F, softgl::RGBA,
+       softgl::FLOAT}};
+  constexpr int kSize = 1024;
+  // The client image: random bytes, or (FLOAT) floats in [0, 1.3).
+  static const auto UploadData = [](softgl::Enum type) {
+    std::vector<std::uint8_t> data(std::size_t(kSize) * kSize * 16);
+    std::uint32_t seed = 1;
+    for (std::uint8_t& b : data) b = std::uint8_t((seed = seed * 1664525u + 1013904223u) >> 24);
+    if (type == softgl::FLOAT)
+      for (std::size_t i = 0; i < data.size() / 4; ++i) {
+        const float v = float(data[i]) / 200.0f;
+        std::memcpy(&data[4 * i], &v, 4);
+      }
+    return data;
+  };
+  for (const UploadCase& uc : kUploads) {
+    scenes.push_back({uc.name, kSize, kSize, "Mtexel/s", double(kSize) * kSize,
+                      [&uc](int n) {
+                        const std::vector<std::uint8_t> data = UploadData(uc.type);
+                        softgl::Context gl(64, 64, g_options);
+                        gl.BindTexture(softgl::TEXTURE_2D, gl.GenTexture());
+                        return MedianMs(n, [&] {
+                          gl.TexImage2D(softgl::TEXTURE_2D, 0, uc.internal, kSize, kSize, 0, uc.format, uc.type,
+                                        data.data());
+                          gl.GenerateMipmap(softgl::TEXTURE_2D);
+                          gl.Finish();
+                        });
+                      },
+                      [&uc, &with_osmesa](int n) {
+                        return with_osmesa(64, 64, [&] {
+                          const std::vector<std::uint8_t> data = UploadData(uc.type);
+                          GLuint tex;
+                          glGenTextures(1, &tex);
+                          glBindTexture(GL_TEXTURE_2D, tex);
+                          const double ms = MedianMs(n, [&] {
+                            glTexImage2D(GL_TEXTURE_2D, 0, GLint(uc.internal), kSize, kSize, 0, uc.format, uc.type,
+                                         data.data());
+                            glGenerateMipmap(GL_TEXTURE_2D);
+                            glFinish();
+                          });
+                          glDeleteTextures(1, &tex);
+                          return ms;
+                        });
+                      }});
+  }
   // Textured overdraw with an RGBA8 texture, and the same with an sRGB one (texels decoded before filtering).
   for (const bool srgb : {false, true}) {
     scenes.push_back({srgb ? "textured overdraw, sRGB texture: 20 quads, trilinear, 1024^2"

@@ -2,6 +2,7 @@
 #include "texture.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -9,6 +10,7 @@
 
 #include "framebuffer.h"
 #include "pixel_transfer.h"
+#include "wide.h"
 
 namespace softgl::detail {
 
@@ -421,6 +423,8 @@ std::size_t TransferRowBytes(int w, Enum format, Enum type, int alignment) {
 // texels.
 bool InTexelOrder(Enum format) { return format == RED || format == RG || format == RGB || format == RGBA; }
 
+void StoreTexelRow(TextureLevel& lv, int x, int row, int n, const float* in, bool encode);
+
 // Rect (x, y, w, h) of `level` from client rows `row` bytes apart, the first pixel at `first`.
 void UploadRect(TextureLevel& level, int x, int y, int w, int h, Enum format, Enum type, std::size_t row,
                 const std::uint8_t* first, bool swap_bytes) {
@@ -448,6 +452,37 @@ void UploadRect(TextureLevel& level, int x, int y, int w, int h, Enum format, En
   }
   const int n = int(size);  // components, when they are bytes
   const bool bytes_into_bytes = type == UNSIGNED_BYTE && IsUnorm8(level.layout) && InTexelOrder(format);
+  if (bytes_into_bytes && n == level.bytes) {  // rows as they are (an RGB8 texture's alpha byte then set to 255)
+    for (int j = 0; j < h; ++j) {
+      std::uint8_t* dst = level.At(x, y + j);
+      std::memcpy(dst, first + std::size_t(j) * row, std::size_t(w) * size);
+      if (NoStoredAlpha(level.format))
+        for (int i = 0; i < w; ++i) dst[4 * i + 3] = 255;
+    }
+    return;
+  }
+  if (bytes_into_bytes && n == 3 && level.bytes == 4) {  // RGB into RGBA8 or RGB8 (SRGB8...): alpha 255
+    for (int j = 0; j < h; ++j) {
+      std::uint8_t* dst = level.At(x, y + j);
+      const std::uint8_t* src = first + std::size_t(j) * row;
+      for (int i = 0; i < w; ++i, dst += 4, src += 3) {
+        dst[0] = src[0];
+        dst[1] = src[1];
+        dst[2] = src[2];
+        dst[3] = 255;
+      }
+    }
+    return;
+  }
+  if (type == FLOAT && format == RGBA && !swap_bytes) {  // four floats a pixel (NaN as 0), stored a row at a time
+    std::vector<float> floats(std::size_t(w) * 4);
+    for (int j = 0; j < h; ++j) {
+      std::memcpy(floats.data(), first + std::size_t(j) * row, floats.size() * 4);
+      for (float& v : floats) v = v == v ? v : 0.0f;
+      StoreTexelRow(level, x, y + j, w, floats.data(), false);
+    }
+    return;
+  }
   for (int j = 0; j < h; ++j)
     for (int i = 0; i < w; ++i) {
       const std::uint8_t* p = pixel(i, j);
@@ -492,6 +527,125 @@ void UploadPixels(TextureLevel& level, int x, int y, int w, int h, Enum format, 
   UploadRect(level, x, y, w, h, format, type, row, first, layout.swap_bytes);
 }
 
+namespace {
+
+using F4 = V<4>::F;
+
+// `lv` as a colour buffer (for LoadRow and StoreRow; an RGB8 texture's alpha byte reads 1 as it holds 255).
+ColorBuffer LevelBuffer(const TextureLevel& lv) {
+  ColorBuffer cb;
+  cb.data = const_cast<std::uint8_t*>(lv.data.data());
+  cb.layout = lv.layout;
+  cb.rgb_only = NoStoredAlpha(lv.format);
+  cb.pitch = lv.width;
+  return cb;
+}
+
+// Row `row` of `lv`, texel by texel as Sampled(i, row) / StorageScale gives it, four floats a texel into out: sRGB
+// bytes decoded by a table of SrgbDecodeSample's 256 values, the other layouts by LoadRow (Load's values, which
+// are Sampled's over the scale where nothing is decoded).
+void SampledRow(const TextureLevel& lv, int row, float* out) {
+  if (lv.srgb && lv.layout == TexelLayout::kUnorm8x4) {
+    static const auto decoded = [] {  // SrgbDecodeSample of each byte
+      std::array<float, 256> t{};
+      for (int k = 0; k < 256; ++k) t[std::size_t(k)] = SrgbDecodeSample(float(k));
+      return t;
+    }();
+    const std::uint8_t* in = lv.At(0, row);
+    for (int i = 0; i < lv.width; ++i, in += 4)
+      StoreVec(out + 4 * i, F4{decoded[in[0]], decoded[in[1]], decoded[in[2]], float(in[3])} / 255.0f);
+    return;
+  }
+  if (lv.srgb) {
+    const float scale = StorageScale(lv.layout);
+    for (int i = 0; i < lv.width; ++i) {
+      const glm::vec4 t = lv.Sampled(i, row) / scale;
+      StoreVec(out + 4 * i, F4{t.x, t.y, t.z, t.w});
+    }
+    return;
+  }
+  LoadRow(LevelBuffer(lv), 1, 0, lv.width, row, out);
+}
+
+// Texels [x, x + n) of row `row` of `lv` from four floats each, as StoreTexel(..., encode) stores them: RGBA8 rounded
+// in vector form (FloatToUnorm8 a channel; sRGB colour by the bucket table), RGBA16F by StoreRow, every other
+// layout through StoreTexel.
+void StoreTexelRow(TextureLevel& lv, int x, int row, int n, const float* in, bool encode) {
+  if (lv.layout == TexelLayout::kUnorm8x4) {
+    // FloatToUnorm8: NaN and <= 0 give 0, >= 1 gives 255, else c * 255 rounded to nearest even (adding and taking
+    // away 1.5 x 2^23, exact up to 255).
+    constexpr float kRound = 12582912.0f;
+    const bool alpha = !NoStoredAlpha(lv.format), srgb = encode && lv.srgb;
+    const SrgbLaneTables* table = srgb ? &SrgbLanes() : nullptr;
+    std::uint8_t* out = lv.At(x, row);
+    for (int i = 0; i < n; ++i, out += 4) {
+      const F4 v = LoadVec<F4>(in + 4 * i);
+      F4 c = v > 0.0f ? v : F4{};
+      c = c < 1.0f ? c : F4{} + 1.0f;
+      const V<4>::I k = __builtin_convertvector((c * 255.0f + kRound) - kRound, V<4>::I);
+      for (int ch = 0; ch < 3; ++ch) out[ch] = srgb ? SrgbEncode8ByTable(*table, v[ch]) : std::uint8_t(k[ch]);
+      out[3] = alpha ? std::uint8_t(k[3]) : 255;
+    }
+    return;
+  }
+  if (lv.layout == TexelLayout::kFloat16x4) return StoreRow(LevelBuffer(lv), x, n, row, in);
+  for (int i = 0; i < n; ++i)
+    StoreTexel(lv, x + i, row, glm::vec4(in[4 * i], in[4 * i + 1], in[4 * i + 2], in[4 * i + 3]), encode);
+}
+
+// Level `dst` of a 2D image, cube face or array from `src` above it, layer by layer: each texel the bilinear
+// sample of src at its centre, clamped to the edge, as GenerateMipmaps's general loop computes it (the same
+// operations in the same order), with src's rows decoded once and each column's taps and weight found once.
+void DownsampleLayers(const TextureLevel& src, TextureLevel& dst) {
+  const int w = dst.width;
+  std::vector<int> c0(static_cast<std::size_t>(w)), c1(static_cast<std::size_t>(w));
+  std::vector<float> wa(static_cast<std::size_t>(w));
+  for (int i = 0; i < w; ++i) {
+    const float u = (float(i) + 0.5f) * float(src.width) / float(dst.width) - 0.5f;
+    const int i0 = int(std::floor(u));
+    wa[std::size_t(i)] = u - float(i0);
+    c0[std::size_t(i)] = std::clamp(i0, 0, src.width - 1);
+    c1[std::size_t(i)] = std::clamp(i0 + 1, 0, src.width - 1);
+  }
+  std::vector<float> rows(std::size_t(src.width) * 8), out(std::size_t(w) * 4);
+  // Two decoded rows, each with the row it holds: a row is decoded into the slot that does not hold `keep`.
+  float* const slot[2] = {rows.data(), rows.data() + std::size_t(src.width) * 4};
+  int held[2] = {-1, -1};
+  auto row = [&](int want, int keep) -> const float* {
+    for (int t = 0; t < 2; ++t)
+      if (held[t] == want) return slot[t];
+    const int t = held[0] == keep ? 1 : 0;
+    SampledRow(src, want, slot[t]);
+    held[t] = want;
+    return slot[t];
+  };
+  for (int k = 0; k < dst.depth; ++k) {
+    for (int j = 0; j < dst.height; ++j) {
+      const float v = (float(j) + 0.5f) * float(src.height) / float(dst.height) - 0.5f;
+      const int j0 = int(std::floor(v));
+      const float b = v - float(j0);
+      const int above = k * src.height + std::clamp(j0, 0, src.height - 1);
+      const float* r0 = row(above, -1);
+      const float* r1 = row(k * src.height + std::clamp(j0 + 1, 0, src.height - 1), above);
+      for (int i = 0; i < w; ++i) {
+        const float a = wa[std::size_t(i)];
+        const std::size_t x0 = std::size_t(c0[std::size_t(i)]) * 4, x1 = std::size_t(c1[std::size_t(i)]) * 4;
+        // (Weights (1 - a)(1 - b) and so on, each times the one slice's weight 1, summed from 0 as taps (0, 0),
+        // (1, 0), (0, 1), (1, 1).)
+        F4 sum = F4{};
+        sum = sum + (((1.0f - a) * (1.0f - b)) * 1.0f) * LoadVec<F4>(r0 + x0);
+        sum = sum + ((a * (1.0f - b)) * 1.0f) * LoadVec<F4>(r0 + x1);
+        sum = sum + (((1.0f - a) * b) * 1.0f) * LoadVec<F4>(r1 + x0);
+        sum = sum + ((a * b) * 1.0f) * LoadVec<F4>(r1 + x1);
+        StoreVec(out.data() + 4 * i, sum);
+      }
+      StoreTexelRow(dst, 0, k * dst.height + j, w, out.data(), true);
+    }
+  }
+}
+
+}  // namespace
+
 void GenerateMipmaps(TextureObject& texture) {
   const int base = std::clamp(texture.params.base_level, 0, kMaxLevels - 1);
   const bool volume = texture.target == TEXTURE_3D;
@@ -505,6 +659,10 @@ void GenerateMipmaps(TextureObject& texture) {
       TextureLevel& dst = texture.levels[face][l];
       dst.Allocate(src.format, std::max(1, src.width / 2), std::max(1, src.height / 2), 1,
                    volume ? std::max(1, src.depth / 2) : src.depth);
+      if (!volume) {
+        DownsampleLayers(src, dst);
+        continue;
+      }
       for (int k = 0; k < dst.depth; ++k) {
         // A 3D level's slice k lies between two slices of the level above (one when that has a single slice); an
         // array's layer k is layer k above.

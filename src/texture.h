@@ -10,6 +10,7 @@
 // stencil indices in a plane of their own, one byte a texel.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <cstring>
 #include <memory>
@@ -135,6 +136,16 @@ struct SrgbLaneTables {
   std::int32_t bucket[kBuckets];
 };
 const SrgbLaneTables& SrgbLanes();
+/// SrgbEncode8(x) by the bucket table t (SrgbLanes()): one lookup, no search.
+inline std::uint8_t SrgbEncode8ByTable(const SrgbLaneTables& t, float x) {
+  if (!(x > 0.0f)) return 0;  // also NaN
+  if (x >= 1.0f) return 255;
+  std::uint32_t bits;
+  std::memcpy(&bits, &x, 4);
+  const int i = std::clamp(int(bits >> 16) - SrgbLaneTables::kBucket0, 0, SrgbLaneTables::kBuckets - 1);
+  const std::int32_t bucket = t.bucket[i];
+  return std::uint8_t((bucket & 0xFF) + (std::int32_t(bits & 0xFFFFu) >= (bucket >> 8) ? 1 : 0));
+}
 /// How sampling decodes an sRGB texel's colour byte k (0..255, as a float) into storage units (255 times linear):
 /// k / 12.92 up to byte 10 (the formula's linear segment); above it a polynomial of degree 6 in k, a Chebyshev fit
 /// of section 8.24's formula over bytes 11..255, within 2.4e-3 of 255 times it (9.3e-6 in linear), evaluated by

@@ -17,6 +17,7 @@
 #include "helpers.h"
 #include "framebuffer.h"
 #include "image_io.h"
+#include "pixel_transfer.h"
 #include "texture.h"
 #include "simd.h"
 #include "wide.h"
@@ -127,6 +128,112 @@ TEST_CASE("LINEAR weights texels by distance to their centres", "[texture]") {
   t.params.wrap_s = REPEAT;  // repeat blends texel 0 with texel 1 across the edge
   const Sampler r(t);
   CHECK(r.At(0.0f, 0.25f).r == Approx(0.5f));
+}
+
+TEST_CASE("GenerateMipmaps gives each texel the bilinear sample of the level above, every format, size and layer",
+          "[texture][formats]") {
+  // The reference: each texel of level l the bilinear sample of level l - 1 at its centre, clamped to the edge,
+  // through Sampled and StoreTexel one texel at a time (weights (1 - a)(1 - b), a(1 - b), (1 - a)b, ab, summed
+  // from 0 in that order).
+  const Enum formats[] = {RGBA8,  RGB8,    RG8,   R8,      SRGB8_ALPHA8, SRGB8,   RGBA32F, RG32F,   R32F,    RGBA16F,
+                          RG16F,  R16F,    R11F_G11F_B10F, RGB565,       RGBA4,   RGB5_A1, RGB10_A2, RGBA16, R16};
+  const int sizes[][3] = {{16, 16, 1}, {13, 7, 1}, {1, 9, 1}, {10, 1, 1}, {6, 5, 3}, {33, 2, 2}};
+  std::uint32_t seed = 9;
+  auto next = [&] { return float((seed = seed * 1664525u + 1013904223u) >> 8) / float(1u << 24); };
+  int compared = 0;
+  for (const Enum format : formats)
+    for (const auto& size : sizes) {
+      TextureObject t;
+      t.target = size[2] > 1 ? TEXTURE_2D_ARRAY : TEXTURE_2D;
+      t.levels[0][0].Allocate(format, size[0], size[1], 1, size[2]);
+      for (int j = 0; j < size[1] * size[2]; ++j)
+        for (int i = 0; i < size[0]; ++i)
+          detail::StoreTexel(t.levels[0][0], i, j, glm::vec4(next() * 1.4f - 0.2f, next(), next() * 3.0f, next()), true);
+      TextureObject want = t;
+      detail::GenerateMipmaps(t);
+      for (int l = 1; l < detail::kMaxLevels; ++l) {
+        const detail::TextureLevel& above = want.levels[0][l - 1];
+        if (above.width == 1 && above.height == 1) break;
+        detail::TextureLevel& level = want.levels[0][l];
+        level.Allocate(format, std::max(1, above.width / 2), std::max(1, above.height / 2), 1, above.depth);
+        for (int k = 0; k < level.depth; ++k)
+          for (int j = 0; j < level.height; ++j)
+            for (int i = 0; i < level.width; ++i) {
+              const float u = (float(i) + 0.5f) * float(above.width) / float(level.width) - 0.5f;
+              const float v = (float(j) + 0.5f) * float(above.height) / float(level.height) - 0.5f;
+              const int i0 = int(std::floor(u)), j0 = int(std::floor(v));
+              const float a = u - float(i0), b = v - float(j0);
+              glm::vec4 sum(0.0f);
+              for (int dj = 0; dj < 2; ++dj)
+                for (int di = 0; di < 2; ++di)
+                  sum += (di ? a : 1.0f - a) * (dj ? b : 1.0f - b) * 1.0f *
+                         (above.Sampled(std::clamp(i0 + di, 0, above.width - 1),
+                                        k * above.height + std::clamp(j0 + dj, 0, above.height - 1)) /
+                          detail::StorageScale(above.layout));
+              detail::StoreTexel(level, i, k * level.height + j, sum, true);
+            }
+        const detail::TextureLevel& got = t.levels[0][l];
+        INFO("format " << std::hex << format << std::dec << ", " << size[0] << " x " << size[1] << " x " << size[2]
+                       << ", level " << l);
+        REQUIRE((got.width == level.width && got.height == level.height && got.depth == level.depth));
+        const bool same = got.data == level.data;
+        CHECK(same);
+        ++compared;
+      }
+    }
+  CHECK(compared > 19 * 6 * 2);
+}
+
+TEST_CASE("UploadPixels by rows gives each pixel's UnpackColor stored by StoreTexel, in every colour format",
+          "[texture][formats]") {
+  const Enum formats[] = {RGBA8,  RGB8,    RG8,   R8,      SRGB8_ALPHA8, SRGB8,   RGBA32F, RG32F,   R32F,    RGBA16F,
+                          RG16F,  R16F,    R11F_G11F_B10F, RGB565,       RGBA4,   RGB5_A1, RGB10_A2, RGBA16, R16};
+  // Client data: RGBA floats (some NaN, infinite, negative and above 1) and bytes as RGBA, RGB, RG and RED; a
+  // rectangle written into the middle of a level, rows padded as UNPACK_ALIGNMENT 4 and UNPACK_ROW_LENGTH say.
+  constexpr int kW = 9, kH = 4, kRowLength = 11;
+  std::vector<std::uint8_t> client(std::size_t(kRowLength) * kH * 16);
+  std::uint32_t seed = 21;
+  for (std::size_t i = 0; i + 4 <= client.size(); i += 4) {
+    seed = seed * 1664525u + 1013904223u;
+    const float v = i % 36 == 8   ? std::numeric_limits<float>::quiet_NaN()
+                    : i % 52 == 4 ? -std::numeric_limits<float>::infinity()
+                                  : float(int(seed >> 20) % 3001 - 1000) / 1000.0f;
+    std::memcpy(&client[i], &v, 4);
+  }
+  const std::pair<Enum, Enum> pairs[] = {{RGBA, FLOAT}, {RGBA, UNSIGNED_BYTE}, {RGB, UNSIGNED_BYTE},
+                                         {RG, UNSIGNED_BYTE}, {RED, UNSIGNED_BYTE}};
+  int compared = 0;
+  for (const Enum format : formats)
+    for (const auto& [client_format, type] : pairs) {
+      detail::ClientLayout layout;
+      layout.row_length = kRowLength;
+      detail::TextureLevel got, want;
+      got.Allocate(format, kW + 3, kH + 2);
+      for (std::uint8_t& b : got.data) b = std::uint8_t(b + 0x3C);
+      want = got;
+      detail::UploadPixels(got, 2, 1, kW, kH, client_format, type, layout, client.data());
+      const std::size_t pixel = detail::TransferPixelBytes(client_format, type);
+      const std::size_t row = (std::size_t(kRowLength) * pixel + 3) / 4 * 4;
+      for (int j = 0; j < kH; ++j)
+        for (int i = 0; i < kW; ++i) {
+          glm::vec4 in = detail::UnpackColor(client_format, type, client.data() + std::size_t(j) * row + std::size_t(i) * pixel);
+          for (int c = 0; c < 4; ++c)
+            if (std::isnan(in[c])) in[c] = 0.0f;
+          if (type == UNSIGNED_BYTE && IsUnorm8(want.layout)) {  // bytes go in as they are
+            std::uint8_t* dst = want.At(2 + i, 1 + j);
+            const std::uint8_t* src = client.data() + std::size_t(j) * row + std::size_t(i) * pixel;
+            for (int c = 0; c < want.bytes; ++c) dst[c] = c < int(pixel) ? src[c] : (c == 3 ? 255 : 0);
+            if (format == RGB8 || format == SRGB8) dst[3] = 255;
+          } else {
+            detail::StoreTexel(want, 2 + i, 1 + j, in);
+          }
+        }
+      INFO("format " << std::hex << format << ", client " << client_format << ", type " << type);
+      const bool same = got.data == want.data;
+      CHECK(same);
+      ++compared;
+    }
+  CHECK(compared == 19 * 5);
 }
 
 TEST_CASE("GenerateMipmap averages 2x2 blocks; odd sizes sample bilinearly", "[texture]") {
@@ -933,6 +1040,24 @@ TEST_CASE("sRGB conversions: the decode table, an exact encode, and their round 
   CHECK(detail::SrgbEncode8(-1.0f) == 0);
   CHECK(detail::SrgbEncode8(std::numeric_limits<float>::quiet_NaN()) == 0);
   CHECK(detail::SrgbEncode8(2.0f) == 255);
+}
+
+TEST_CASE("sRGB conversions: the bucket table's encode is SrgbEncode8 on every float near each step and across (0, 1)",
+          "[texture][srgb]") {
+  const detail::SrgbLaneTables& t = detail::SrgbLanes();
+  bool same = true;
+  auto check = [&](float x) { same = same && detail::SrgbEncode8ByTable(t, x) == detail::SrgbEncode8(x); };
+  for (std::uint32_t bits = 0; bits < 0x3F900000u; bits += 61) {  // 0 to a little past 1, every 61st float
+    float x;
+    std::memcpy(&x, &bits, 4);
+    check(x);
+  }
+  for (int k = 0; k < 255; ++k)  // each step's float and its neighbours
+    for (float x : {std::nextafter(t.up[k], 0.0f), t.up[k], std::nextafter(t.up[k], 2.0f)}) check(x);
+  for (float x : {-0.0f, -1.0f, 1.0f, 2.0f, std::numeric_limits<float>::infinity(),
+                  std::numeric_limits<float>::quiet_NaN(), std::numeric_limits<float>::denorm_min()})
+    check(x);
+  CHECK(same);
 }
 
 TEST_CASE("sRGB textures decode before filtering; their mipmaps average in linear light", "[texture][srgb]") {
