@@ -3,6 +3,7 @@
 #include "context_state.h"
 #include "pixel_transfer.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 
@@ -340,20 +341,22 @@ void CopyToLevel(ContextState& s, const char* what, detail::TextureLevel& lv, in
   const detail::RenderTarget t = ReadTarget(s);
   const bool depth = detail::IsDepthFormat(lv.format);
   std::vector<float> rect(std::size_t(w) * std::size_t(h) * (depth ? 1 : 4), 0.0f);  // read first: the
-  for (int j = 0; j < h; ++j)                                                          // source may be lv itself
-    for (int i = 0; i < w; ++i) {
-      // (In 64 bits: x and y may be anything up to INT_MAX, and x + i past it is outside the framebuffer.)
-      const std::int64_t px64 = std::int64_t(x) + i, py64 = std::int64_t(y) + j;
-      if (px64 < 0 || py64 < 0 || px64 >= t.width || py64 >= t.height) continue;
-      const int px = int(px64), py = int(py64);
-      float* dst = rect.data() + (std::size_t(j) * std::size_t(w) + std::size_t(i)) * (depth ? 1 : 4);
-      if (depth) {
-        *dst = t.DepthAt(px, py);
-      } else {
-        const glm::vec4 c = t.color[0].Load(px, py);
-        for (int k = 0; k < 4; ++k) dst[k] = c[k];
-      }
+                                                                                       // source may be lv itself
+  // The columns inside the framebuffer, [i0, i1) of each row (in 64 bits: x and y may be anything up to INT_MAX,
+  // and x + i past it is outside); colour a row at a time as Load reads it (LoadRow).
+  const int i0 = int(std::clamp<std::int64_t>(-std::int64_t(x), 0, w));
+  const int i1 = int(std::clamp<std::int64_t>(std::int64_t(t.width) - x, i0, w));
+  for (int j = 0; j < h && i0 < i1; ++j) {
+    const std::int64_t py64 = std::int64_t(y) + j;
+    if (py64 < 0 || py64 >= t.height) continue;
+    const int py = int(py64);
+    float* row = rect.data() + std::size_t(j) * std::size_t(w) * (depth ? 1 : 4);
+    if (depth) {
+      for (int i = i0; i < i1; ++i) row[i] = t.DepthAt(x + i, py);
+    } else {
+      detail::LoadRow(t.color[0], 1, x + i0, i1 - i0, py, row + std::size_t(i0) * 4);
     }
+  }
   detail::UploadPixels(lv, xo, yo, w, h, depth ? DEPTH_COMPONENT : RGBA, FLOAT, detail::ClientLayout{}, rect.data());
   if (lv.stencil.empty() || !t.stencil) return;  // a depth-stencil texture takes the stencil indices too
   std::vector<std::uint8_t> indices(std::size_t(w) * std::size_t(h), 0);

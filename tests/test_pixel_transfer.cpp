@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <initializer_list>
@@ -333,6 +334,44 @@ TEST_CASE("pixel transfer: ReadPixels by rows gives GetTexImage's bytes for ever
     }
   }
   CHECK(compared > 20 * 2 * 60);
+}
+
+TEST_CASE("pixel transfer: CopyTexImage2D by rows gives the read buffer's values, zero outside it",
+          "[pixel_transfer][context][formats]") {
+  // The source is a texture attached for reading; its values as GetTexImage gives them (texel by texel) are what
+  // the copy must hold, in an RGBA32F texture that keeps every float.
+  constexpr int kW = 9, kH = 5;
+  std::vector<float> texels(std::size_t(kW) * kH * 4);
+  std::uint32_t seed = 5;
+  for (float& v : texels) v = float(int((seed = seed * 1664525u + 1013904223u) >> 20) % 1601 - 300) / 1000.0f;
+  for (const Enum internal : {RGBA8, SRGB8_ALPHA8, RGB8, RGBA16F, RGB565, R11F_G11F_B10F, RG32F}) {
+    Context gl(1, 1);
+    BindTarget(gl, internal, kW, kH);
+    gl.TexImage2D(TEXTURE_2D, 0, internal, kW, kH, 0, RGBA, FLOAT, texels.data());
+    REQUIRE(gl.CheckFramebufferStatus(FRAMEBUFFER) == FRAMEBUFFER_COMPLETE);
+    std::vector<float> source(texels.size());
+    gl.GetTexImage(TEXTURE_2D, 0, RGBA, FLOAT, source.data());
+    gl.BindTexture(TEXTURE_2D, gl.GenTexture());
+    // A 6 x 4 rectangle from (-2, 3), past the left and top edges, and a 5 x 3 one from (6, -1), past the right
+    // and bottom ones.
+    bool same = true;
+    for (const auto& [x0, y0, w, h] : {std::array<int, 4>{-2, 3, 6, 4}, std::array<int, 4>{6, -1, 5, 3}}) {
+      gl.CopyTexImage2D(TEXTURE_2D, 0, RGBA32F, x0, y0, w, h, 0);
+      std::vector<float> copy(std::size_t(w * h * 4), -7.0f);
+      gl.GetTexImage(TEXTURE_2D, 0, RGBA, FLOAT, copy.data());
+      CHECK(gl.GetError() == NO_ERROR);
+      for (int j = 0; j < h; ++j)
+        for (int i = 0; i < w; ++i)
+          for (int c = 0; c < 4; ++c) {
+            const int x = x0 + i, y = y0 + j;
+            const bool inside = x >= 0 && y >= 0 && x < kW && y < kH;
+            const float want = inside ? source[std::size_t((y * kW + x) * 4 + c)] : 0.0f;
+            same = same && copy[std::size_t((j * w + i) * 4 + c)] == want;
+          }
+    }
+    INFO("internal format " << std::hex << internal);
+    CHECK(same);
+  }
 }
 
 TEST_CASE("pixel transfer: ReadPixels() gives each pixel's ReadPixel bytes, top row first, in every context format",
