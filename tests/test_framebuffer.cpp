@@ -2,6 +2,7 @@
 // buffer, and BlitFramebuffer (detail::Blit's mapping, mirroring, scaling and clipping; the call's errors).
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cstdint>
 #include <cstring>
 #include <iterator>
@@ -1036,6 +1037,43 @@ TEST_CASE("scaled, mirrored, LINEAR and cross-format blits give Load and Store's
   }
   CHECK(compared == kFormats * 12);
   CHECK(written > 5000);  // (the rectangles are not mostly empty)
+}
+
+TEST_CASE("a 4-sample framebuffer object blitted into the 4-sample context framebuffer keeps each sample",
+          "[framebuffer][multisample]") {
+  // Sample s goes to sample s (the context's samples side by side, the object's in planes), so the context's
+  // resolved image is the object's resolve, which a blit into a single-sampled context gives.
+  Image images[2];
+  for (const int samples : {0, 4}) {
+    Context::Options options;
+    options.samples = samples;
+    options.threads = 1;
+    Context gl(31, 23, options);
+    const std::uint32_t fbo = gl.GenFramebuffer(), rb = gl.GenRenderbuffer();
+    gl.BindRenderbuffer(RENDERBUFFER, rb);
+    gl.RenderbufferStorageMultisample(RENDERBUFFER, 4, RGBA8, 31, 23);
+    gl.BindFramebuffer(FRAMEBUFFER, fbo);
+    gl.FramebufferRenderbuffer(FRAMEBUFFER, COLOR_ATTACHMENT0, RENDERBUFFER, rb);
+    gl.ClearColor(0.2f, 0.3f, 0.4f, 1.0f);
+    gl.Clear(COLOR_BUFFER_BIT);
+    testing::SolidShader shader;
+    shader.color = glm::vec4(0.9f, 0.1f, 0.5f, 0.8f);
+    gl.UseProgram(shader);
+    gl.Viewport(0, 0, 31, 23);
+    testing::MakeVertexArray(gl, {{-0.9f, -0.8f, 0, 1}, {0.85f, -0.3f, 0, 1}, {-0.2f, 0.9f, 0, 1}});
+    gl.DrawArrays(TRIANGLES, 0, 3);
+    gl.BindFramebuffer(DRAW_FRAMEBUFFER, 0);
+    gl.BlitFramebuffer(0, 0, 31, 23, 0, 0, 31, 23, COLOR_BUFFER_BIT, NEAREST);
+    CHECK(gl.GetError() == NO_ERROR);
+    gl.BindFramebuffer(READ_FRAMEBUFFER, 0);
+    images[samples ? 1 : 0] = gl.ReadPixels();
+  }
+  const bool same = images[0].rgba == images[1].rgba;
+  CHECK(same);
+  // The triangle's edges hold mixtures: a red neither the clear colour's (51) nor the triangle's (230).
+  int mixed = 0;
+  for (std::size_t i = 0; i < images[1].rgba.size(); i += 4) mixed += images[1].rgba[i] != 51 && images[1].rgba[i] != 230;
+  CHECK(mixed > 10);
 }
 
 TEST_CASE("eight draw buffers of mixed formats, mapped in any order, each takes its output in one draw",
