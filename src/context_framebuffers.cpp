@@ -269,7 +269,9 @@ void Context::ReadPixels(int x, int y, int width, int height, Enum format, Enum 
   const int x1 = int(std::min<std::int64_t>(std::int64_t(x) + width, t.width));
   const int y1 = int(std::min<std::int64_t>(std::int64_t(y) + height, t.height));
   if (!depth && !stencil) {
-    if (x0 < x1) ReadColorRows(t.color[0], format, type, pack, x0 - x, y0 - y, x0, x1, y0, y1);
+    // (x0 - x and y0 - y, the first pixel's place in the client rows, only for a rectangle that reaches inside:
+    // x or y may be INT_MIN.)
+    if (x0 < x1 && y0 < y1) ReadColorRows(t.color[0], format, type, pack, x0 - x, y0 - y, x0, x1, y0, y1);
     return;
   }
   for (int py = y0; py < y1; ++py)

@@ -1822,6 +1822,15 @@ TEST_CASE("hostile calls: rectangles at INT_MIN and INT_MAX blit and copy what l
     gl.ReadPixels(0, 7, 1, 1, STENCIL_INDEX, UNSIGNED_BYTE, &stencil);
     CHECK(stencil == 7);
   }
+  // ReadPixels of rectangles at the ends of int: nothing lies inside, nothing is written.
+  for (const auto& [rx, ry] : {std::pair<int, int>{0, kMin}, std::pair<int, int>{kMin, 0}, std::pair<int, int>{kMin, kMin},
+                               std::pair<int, int>{kMax - 1, 0}, std::pair<int, int>{0, kMax - 1}}) {
+    std::uint8_t out[16];
+    std::memset(out, 0xCD, sizeof out);
+    gl.ReadPixels(rx, ry, 2, 2, RGBA, UNSIGNED_BYTE, out);
+    CHECK(gl.GetError() == NO_ERROR);
+    CHECK(std::count(out, out + 16, std::uint8_t(0xCD)) == 16);
+  }
   // Copies from a source rectangle far outside the framebuffer: every texel is outside, so zero (2D, a cube face,
   // a depth texture, an array layer, and CopyTexImage2D).
   gl.BindFramebuffer(FRAMEBUFFER, 0);
