@@ -5,6 +5,8 @@
 // when one fails. The other families of entry points live in context_*.cpp beside this file.
 #include "context_state.h"
 
+#include <utility>
+
 namespace softgl {
 
 Context::Context(int width, int height) : Context(width, height, Options{}) {}
@@ -65,6 +67,26 @@ std::vector<std::uint32_t> Context::TilePrimitiveCounts(int* columns, int* rows)
   if (columns) *columns = s.tile_count_grid.x;
   if (rows) *rows = s.tile_count_grid.y;
   return s.tile_counts;
+}
+
+void Context::UseHierarchicalDepth(bool on) {
+  ContextState& s = *state_;
+  s.Sync(__func__);  // what was recorded before renders as it was asked
+  s.frame.UseHierarchicalDepth(on);
+}
+
+Context::HierarchicalDepthCounts Context::TakeHierarchicalDepthCounts() {
+  ContextState& s = *state_;
+  s.Sync(__func__);
+  HierarchicalDepthCounts c;
+  for (detail::TileScratch& t : s.scratch.tiles) {
+    detail::HierarchicalDepth& h = t.depth_bounds;
+    c.triangles_tested += std::exchange(h.triangles_tested, 0);
+    c.triangles_hidden += std::exchange(h.triangles_hidden, 0);
+    c.regions_tested += std::exchange(h.regions_tested, 0);
+    c.regions_hidden += std::exchange(h.regions_hidden, 0);
+  }
+  return c;
 }
 
 void Context::DebugMessageCallback(DebugCallback callback) { state_->debug_callback = std::move(callback); }

@@ -15,6 +15,7 @@
 
 #include <softgl/lanes.h>
 
+#include "hierarchical_depth.h"
 #include "simd.h"
 #include "wide.h"
 
@@ -649,6 +650,34 @@ Rect TriangleCentreBox(const glm::vec4& a, const glm::vec4& b, const glm::vec4& 
   return r.Empty() ? Rect{} : r;
 }
 
+namespace {
+// Hierarchical depth's test of a triangle's box, when worth making (HierarchicalDepth::Worth). Out of line, so that
+// RasterizeTriangle's own code stays as the compiler lays it out without.
+__attribute__((noinline)) bool HiddenTriangle(HierarchicalDepth& hz, const Plane& z, float x0, float y0, int px0,
+                                              int py0, int px1, int py1) {
+  if (hz.Worth()) {
+    ++hz.triangles_tested;
+    const bool hidden = hz.Hides(z, x0, y0, px0, py0, px1, py1);
+    hz.Count(hidden);
+    if (hidden) {
+      ++hz.triangles_hidden;
+      return true;
+    }
+  }
+  return false;
+}
+// The same test of an 8x8 region of a larger triangle.
+__attribute__((noinline)) bool HiddenRegion(HierarchicalDepth& hz, const Plane& z, float x0, float y0, int px0,
+                                            int py0, int px1, int py1) {
+  if (!hz.Worth()) return false;
+  ++hz.regions_tested;
+  const bool hidden = hz.Hides(z, x0, y0, px0, py0, px1, py1);
+  hz.Count(hidden);
+  hz.regions_hidden += hidden;
+  return hidden;
+}
+}  // namespace
+
 void RasterizeTriangle(const VertexView& v0, const VertexView& v1, const VertexView& v2, bool front_facing,
                        const RasterTarget& target, BlockBuffer& blocks, const BlockSink& sink) {
   const VertexView* v[3] = {&v0, &v1, &v2};
@@ -711,6 +740,9 @@ void RasterizeTriangle(const VertexView& v0, const VertexView& v1, const VertexV
   planes.nvar = nvar;
   planes.z = make_plane(v[0]->win.z, v[1]->win.z, v[2]->win.z);
   planes.z.a0 += target.depth_offset;
+  // Hierarchical depth: a triangle whose depths over its box cannot pass the depth test there is dropped now.
+  HierarchicalDepth* const hz = target.samples == 1 ? target.depth_bounds : nullptr;
+  if (hz && HiddenTriangle(*hz, planes.z, x0, y0, int(px0), int(py0), int(px1), int(py1))) return;
   planes.oow = make_plane(v[0]->win.w, v[1]->win.w, v[2]->win.w);
   // The varyings' planes four at a time, each lane make_plane's operations in its order.
   auto varying_planes = [&](TrianglePlanes& p) {
@@ -858,6 +890,9 @@ void RasterizeTriangle(const VertexView& v0, const VertexView& v1, const VertexV
         corner_lo[e] = lo;
       }
       if (skip) continue;
+      if (hz && HiddenRegion(*hz, planes.z, x0, y0, int(std::max(rx, px0)), int(std::max(ry, py0)),
+                             int(std::min(rx + kRegion - 1, px1)), int(std::min(ry + kRegion - 1, py1))))
+        continue;  // the region's pixels of the box lie behind what the tile holds there
       if (whole && rx >= bounds.x0 && rx + kRegion <= bounds.x1 && ry >= bounds.y0 && ry + kRegion <= bounds.y1) {
         // Covered whole, inside the bounds: four full blocks.
         for (int sq = 0; sq < 4; ++sq) {

@@ -22,6 +22,8 @@ namespace softgl::detail {
 
 inline constexpr int kSubpixelBits = 8;
 
+struct HierarchicalDepth;
+
 struct RasterTarget {
   Rect bounds;  // viewport, framebuffer and scissor rectangle intersected
   int nvar = 0;
@@ -31,6 +33,9 @@ struct RasterTarget {
   // position (SamplePositions), with the same edge functions and tie rule as a pixel centre; a pixel is emitted
   // when some sample is covered, and its lanes' sample masks say which. 1: the pixel centre alone.
   int samples = 1;
+  // The tile's coarse depth (single-sampled targets, draws whose depth test may run early): a triangle, or an 8x8
+  // region of one, that cannot pass the depth test there is dropped. Null: every triangle is rasterized.
+  HierarchicalDepth* depth_bounds = nullptr;
 };
 
 /// The smallest and largest offsets of a pixel's sample positions (SamplePositions) in x and y, in subpixels

@@ -117,6 +117,9 @@ struct FragmentStage {
   int simd;
   const FragmentOpsPlan* plan;
   bool has_centroid;  // the draw has Centroid<> varyings
+  // The tile's coarse depth, told where a batch may have written depth farther than it was (null: the draw writes
+  // no depth, or only nearer, by LESS or LEQUAL).
+  HierarchicalDepth* touch;
 
   static void Run(void* user, BlockBuffer& blocks) {
     const auto* self = static_cast<const FragmentStage*>(user);
@@ -125,6 +128,7 @@ struct FragmentStage {
     InterpolateVaryings(blocks);
     self->Shade(blocks);
     ApplyFragmentOps(self->draw->ops, *self->plan, blocks, self->draw->shader_depth, *self->target);
+    if (self->touch) self->touch->Touch(blocks);
   }
 
   // Into a multisampled target: the depth test (early and late) and the operations after the shader run on each
@@ -422,6 +426,9 @@ void Frame::RenderTile(int tile, TileScratch& scratch) const {
   SampleTiles* const lazy = target_.tiles;
   SampleTiles::Tile* const lazy_tile = lazy ? &lazy->tiles[std::size_t(tile)] : nullptr;
   if (lazy) lazy_tile->stale = kAllBuffers;
+  // The coarse depth of a single-sampled target's tile, read from its depth buffer as triangles ask.
+  HierarchicalDepth* const hz = hierarchical_depth_ && target_.samples == 1 && target_.HasDepth() ? &scratch.depth_bounds : nullptr;
+  if (hz) hz->Begin(target_, rect);
   for (std::size_t i = 0; i < list.size(); ++i) {
     const Command& c = commands_[list[i]];
     if (i + 2 < list.size()) {  // a tile's draws lie apart in draws_: fetch the next one's record early
@@ -455,6 +462,7 @@ void Frame::RenderTile(int tile, TileScratch& scratch) const {
       }
       if (color) target_.ClearColor(r, clear.color_value, clear.color_mask);
       if (depth) target_.ClearDepth(r, clear.depth_value);
+      if (depth && hz) hz->TouchAll();
       if (stencil) target_.ClearStencil(r, clear.stencil_value, clear.stencil_mask);
       continue;
     }
@@ -465,6 +473,13 @@ void Frame::RenderTile(int tile, TileScratch& scratch) const {
     rt.interpolation = draw.interpolation;
     rt.samples = target_.samples > 1 && draw.ops.multisample.multisample ? target_.samples : 1;
     if (rt.bounds.Empty()) continue;
+    // The depth test is the early one, nearer passing: triangles and regions behind what the tile holds may go.
+    const Enum depth_func = draw.ops.depth_func;
+    const bool nearer = depth_func == LESS || depth_func == LEQUAL;
+    if (hz && draw.early_depth && rt.samples == 1 && nearer) {
+      hz->lequal = depth_func == LEQUAL;
+      rt.depth_bounds = hz;
+    }
     if (!planned || !(draw.ops == *planned)) {  // consecutive draws mostly share their operations
       plan = PlanFragmentOps(draw.ops, target_);
       planned = &draw.ops;
@@ -472,7 +487,8 @@ void Frame::RenderTile(int tile, TileScratch& scratch) const {
     bool has_centroid = false;
     for (int i = 0; draw.interpolation && i < draw.nvar; ++i)
       has_centroid = has_centroid || draw.interpolation[i] == Interpolation::kCentroid;
-    FragmentStage stage{&draw, &target_, outputs, simd, &plan, has_centroid};
+    FragmentStage stage{&draw, &target_, outputs, simd, &plan, has_centroid,
+                        hz && draw.ops.depth_test && draw.ops.depth_write && !nearer ? hz : nullptr};
     const BlockSink sink{&FragmentStage::Run, &stage};
     blocks.count = 0;
     blocks.samples = target_.samples;

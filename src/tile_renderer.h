@@ -18,6 +18,7 @@
 #include "binner.h"
 #include "fragment_ops.h"
 #include "framebuffer.h"
+#include "hierarchical_depth.h"
 #include "texture.h"
 #include "worker_pool.h"
 
@@ -69,6 +70,7 @@ struct ClearPacket {
 /// Memory one worker thread reuses from tile to tile.
 struct TileScratch {
   std::unique_ptr<BlockBuffer> blocks = std::make_unique<BlockBuffer>();
+  HierarchicalDepth depth_bounds;  // the coarse depth of the tile being rendered, and its statistics
 };
 
 class Frame {
@@ -111,6 +113,8 @@ class Frame {
     counts_ = counts;
     count_grid_ = grid;
   }
+  /// Whether tiles drop triangles and regions by their coarse depth (HierarchicalDepth); on by default.
+  void UseHierarchicalDepth(bool on) { hierarchical_depth_ = on; }
 
  private:
   void Begin(const RenderTarget& target);
@@ -146,6 +150,7 @@ class Frame {
   int claimed_count_ = 0;
   std::vector<std::uint32_t>* counts_ = nullptr;  // CountTilePrimitives
   glm::ivec2* count_grid_ = nullptr;
+  bool hierarchical_depth_ = true;
 };
 
 }  // namespace softgl::detail

@@ -93,6 +93,21 @@ class Context {
   /// Empty when counting is off. `columns` and `rows` (either may be null) receive the grid's size (0 when empty).
   std::vector<std::uint32_t> TilePrimitiveCounts(int* columns = nullptr, int* rows = nullptr);
 
+  /// Hierarchical depth (softgl's own; the image is the same with it on or off): each 64 x 64 tile keeps the
+  /// nearest and farthest depth of every 8 x 8 block of a single-sampled depth buffer, and a triangle, or an 8 x 8
+  /// region of a larger one, whose depths cannot pass the depth test there is dropped before coverage,
+  /// interpolation and shading. It applies where the depth test runs before the shader (LESS, LEQUAL, GREATER or
+  /// GEQUAL, no stencil test, a shader without kWritesDepth). On by default; off, for comparing, every triangle is
+  /// tested fragment by fragment.
+  void UseHierarchicalDepth(bool on);
+  /// What hierarchical depth tested and dropped since the last call (all threads together).
+  struct HierarchicalDepthCounts {
+    std::uint64_t triangles_tested = 0, triangles_hidden = 0;  // triangles, against the blocks under their box
+    std::uint64_t regions_tested = 0, regions_hidden = 0;      // 8 x 8 regions of triangles larger than one
+  };
+  /// Renders what is recorded (as Finish does), then returns the counts and starts them again from zero.
+  HierarchicalDepthCounts TakeHierarchicalDepthCounts();
+
   // ---- Errors ------------------------------------------------------------------------------------------------
   /// Returns the first error recorded since the last call, and clears it (NO_ERROR when there was none).
   Enum GetError();
