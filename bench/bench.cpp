@@ -15,6 +15,9 @@
 //   --scalar 0         skip the runs with each scene's shader in the scalar form (by default they follow each
 //                      scene, and the last columns give their time and the wide form's gain over them)
 //   --depth16 1        softgl's contexts with a 16-bit depth buffer (Options::depth_format DEPTH_COMPONENT16)
+//   --hierarchical-depth 0   softgl's contexts without hierarchical depth (Context::UseHierarchicalDepth)
+//   --hiz-counts 1     after each scene's timed frames, one more softgl frame whose hierarchical depth counts
+//                      (triangles and regions tested and dropped) go to stderr
 //   --matrix 1         the sampler matrix instead of the scenes: every target x wrap mode x filter x format (below);
 //                      --scene TEXT then picks its rows ("2D 256^2, RGBA8, NEAREST"), --softgl-only 1 its ms
 //   --formats 1        the colour format matrix instead: every colour format (and a G-buffer of four) x opaque or
@@ -72,13 +75,13 @@ Geometry SmallTriangles(int count) {
   return g;
 }
 
-Geometry FullScreenQuads(int count, float uv_scale) {
+Geometry FullScreenQuads(int count, float uv_scale, bool farther = false) {
   Geometry g;
   g.floats = 5;  // x, y, z, u, v
   const float c[4][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
   for (int q = 0; q < count; ++q)
     for (int i : {0, 1, 2, 0, 2, 3}) {
-      const float z = 0.9f - 0.01f * float(q);
+      const float z = farther ? 0.7f + 0.01f * float(q) : 0.9f - 0.01f * float(q);  // each nearer (or farther)
       g.vertices.insert(g.vertices.end(), {c[i][0], c[i][1], z, (c[i][0] * 0.5f + 0.5f) * uv_scale,
                                            (c[i][1] * 0.5f + 0.5f) * uv_scale});
     }
@@ -546,6 +549,8 @@ GLuint Program(const char* vs, const char* fs) {
 std::string g_png_dir;  // --png
 softgl::Context::Options g_options;  // --threads, --depth16
 bool g_scalar = false;  // run the scalar form of the scenes' shaders
+bool g_hierarchical_depth = true;  // --hierarchical-depth
+bool g_hiz_counts = false;         // --hiz-counts
 
 // Runs body with the scene's shader in the wide form, or in the scalar form when g_scalar.
 template <class Wide, class Scalar, class Body>
@@ -598,6 +603,17 @@ double TimeSoftgl(int n, softgl::Context& gl, const FrameSpec& f) {
       gl.ReadPixel(0, 0, px);
     }
   });
+  if (g_hiz_counts) {
+    gl.TakeHierarchicalDepthCounts();
+    gl.Clear(softgl::COLOR_BUFFER_BIT | (f.depth ? softgl::DEPTH_BUFFER_BIT : 0));
+    if (f.indexed) gl.DrawElement(softgl::TRIANGLES, f.count, softgl::UNSIGNED_INT, 0);
+    else gl.DrawArrays(softgl::TRIANGLES, 0, f.count);
+    const softgl::Context::HierarchicalDepthCounts c = gl.TakeHierarchicalDepthCounts();
+    std::fprintf(stderr, "hierarchical depth, %s: triangles %llu of %llu dropped, regions %llu of %llu dropped\n",
+                 f.png, static_cast<unsigned long long>(c.triangles_hidden),
+                 static_cast<unsigned long long>(c.triangles_tested), static_cast<unsigned long long>(c.regions_hidden),
+                 static_cast<unsigned long long>(c.regions_tested));
+  }
   if (!g_png_dir.empty()) softgl::WritePng(g_png_dir + "/" + f.png, gl.ReadPixels());
   return ms;
 }
@@ -715,6 +731,8 @@ int main(int argc, char** argv) {
     if (!std::strcmp(argv[i], "--depth16") && std::atoi(argv[i + 1]) != 0)
       g_options.depth_format = softgl::DEPTH_COMPONENT16;
     if (!std::strcmp(argv[i], "--rss-child")) rss_child = argv[i + 1];
+    if (!std::strcmp(argv[i], "--hierarchical-depth")) g_hierarchical_depth = std::atoi(argv[i + 1]) != 0;
+    if (!std::strcmp(argv[i], "--hiz-counts")) g_hiz_counts = std::atoi(argv[i + 1]) != 0;
     if (!std::strcmp(argv[i], "--msaa-pairs")) msaa_pairs = std::max(0, std::atoi(argv[i + 1]));
     if (!std::strcmp(argv[i], "--matrix")) matrix = std::atoi(argv[i + 1]) != 0;
     if (!std::strcmp(argv[i], "--formats")) format_matrix = std::atoi(argv[i + 1]) != 0;
@@ -727,6 +745,7 @@ int main(int argc, char** argv) {
   const bool all_data = rss_child.empty();  // a memory-measuring child loads the model alone
   const Geometry tris = all_data ? SmallTriangles(1000000) : Geometry{};
   const Geometry blend_quads = FullScreenQuads(50, 1.0f), tex_quads = FullScreenQuads(20, 3.0f);
+  const Geometry sorted_quads_near = FullScreenQuads(20, 1.0f), sorted_quads_far = FullScreenQuads(20, 1.0f, true);
   const std::vector<std::uint8_t> texture = all_data ? PatternTexture(1024) : std::vector<std::uint8_t>{};
   Geometry engine;
   glm::mat4 engine_vp(1.0f);
@@ -736,6 +755,7 @@ int main(int argc, char** argv) {
 
   // softgl: one context per scene; attributes 0, 1 from the interleaved buffer.
   auto softgl_setup = [](softgl::Context& gl, const Geometry& g) {
+    gl.UseHierarchicalDepth(g_hierarchical_depth);
     gl.BindVertexArray(gl.GenVertexArray());
     gl.BindBuffer(softgl::ARRAY_BUFFER, gl.GenBuffer());
     gl.BufferData(softgl::ARRAY_BUFFER, std::ptrdiff_t(g.vertices.size() * 4), g.vertices.data());
@@ -1270,6 +1290,33 @@ int main(int argc, char** argv) {
                         return TimeGl(n, fill_frame);
                       });
                     }});
+  // Depth-sorted opaque quads (FlatShader, depth test LESS), 1280 x 720: front to back (each quad farther than the
+  // last: all but the first hidden, what hierarchical depth drops), and back to front (each nearer: every fragment
+  // passes, nothing to drop; what its upkeep costs).
+  for (const bool front_to_back : {true, false}) {
+    const Geometry& quads = front_to_back ? sorted_quads_far : sorted_quads_near;
+    const FrameSpec frame{true, false, int(quads.vertices.size() / 5), "bench_sorted.png"};
+    scenes.push_back({front_to_back ? "depth-sorted quads: 20 full-screen, front to back"
+                                    : "depth-sorted quads: 20 full-screen, back to front",
+                      1280, 720, "Mpixel/s", 20.0 * 1280 * 720,
+                      [&, frame](int n) {
+                        return WithShader<wide::FlatShader, scalar::FlatShader>([&](auto& shader) {
+                          softgl::Context gl(1280, 720, g_options);
+                          softgl_setup(gl, quads);
+                          gl.UseProgram(shader);
+                          gl.Enable(softgl::DEPTH_TEST);
+                          return TimeSoftgl(n, gl, frame);
+                        });
+                      },
+                      [&, frame](int n) {
+                        return with_osmesa(1280, 720, [&] {
+                          gl_setup(quads);
+                          Program(kFlatVs, kFlatFs);
+                          glEnable(GL_DEPTH_TEST);
+                          return TimeGl(n, frame);
+                        });
+                      }});
+  }
   // Blits into 1920 x 1080, each timed alone (ten a frame): a copy of a framebuffer object's RGBA8 renderbuffer into
   // the context's framebuffer (NEAREST, the same rectangle), resolves of 4-sample renderbuffers into single-sampled
   // ones of the same format (RGBA8, RGBA16F, RGB565), as an HDR or small-memory pipeline ends its frame; then the
