@@ -13,55 +13,71 @@ void HierarchicalDepth::Refresh(int index) {
   const int x0 = tile.x0 + (index % kPerRow) * kBlock, y0 = tile.y0 + (index / kPerRow) * kBlock;
   const int x1 = std::min(x0 + kBlock, t.width), y1 = std::min(y0 + kBlock, t.height);
   // Stored values outside [0, 1] (a depth texture's upload may hold them) take part as they are; NaN, which no
-  // fragment passes against, is left out by the comparison. No pixel: -inf (no fragment comes there).
-  float h = -INFINITY;
+  // fragment passes against, is left out by the comparisons. No pixel: +inf and -inf (no fragment comes there).
+  float l = INFINITY, h = -INFINITY;
   if (x1 - x0 == kBlock && !t.depth16) {  // whole rows of floats: four lanes at a time
     using F4 = V<4>::F;
-    F4 vh = F4{} - INFINITY;
+    F4 vl = F4{} + INFINITY, vh = F4{} - INFINITY;
     for (int y = y0; y < y1; ++y) {
       const float* row = t.depth + std::size_t(y) * std::size_t(t.depth_pitch) + std::size_t(x0);
       for (int k = 0; k < kBlock; k += 4) {
         const F4 v = LoadVec<F4>(row + k);
+        vl = v < vl ? v : vl;
         vh = v > vh ? v : vh;
       }
     }
-    for (int k = 0; k < 4; ++k) h = vh[k] > h ? vh[k] : h;
+    for (int k = 0; k < 4; ++k) {
+      l = vl[k] < l ? vl[k] : l;
+      h = vh[k] > h ? vh[k] : h;
+    }
   } else {
     for (int y = y0; y < y1; ++y)
       for (int x = x0; x < x1; ++x) {
         const float v = t.DepthAt(x, y);
+        l = v < l ? v : l;
         h = v > h ? v : h;
       }
   }
+  lo[index] = l;
   hi[index] = h;
   stale[index] = 0;
   asks[index] = 0;
 }
 
 bool HierarchicalDepth::Hides(const Plane& z, float x0, float y0, int px0, int py0, int px1, int py1) {
-  // The plane's least value over the pixels' area (every centre and sample in it), less the most that the
-  // fragments' evaluation (a0 + dx rx) + dy ry, rx = (x + 0.5) - x0 rounded, and this one can differ from the exact
-  // value: some ten roundings, each within 2^-24 of the terms' magnitude m, against a margin of 2^-16 m (and a
-  // little more for values near the smallest floats).
+  const bool nearer = func == LESS || func == LEQUAL;
+  if ((nearer && hi_wrong) || (!nearer && lo_wrong)) TouchAll();
+  // The plane's least (greatest) value over the pixels' area (every centre and sample in it), less (plus) the most
+  // that the fragments' evaluation (a0 + dx rx) + dy ry, rx = (x + 0.5) - x0 rounded, and this one can differ from
+  // the exact value: some ten roundings, each within 2^-24 of the terms' magnitude m, against a margin of 2^-16 m
+  // (and a little more for values near the smallest floats).
   const float ax = float(px0) - x0, bx = float(px1 + 1) - x0, ay = float(py0) - y0, by = float(py1 + 1) - y0;
   const float tx0 = z.dx * ax, tx1 = z.dx * bx, ty0 = z.dy * ay, ty1 = z.dy * by;
   const float m = std::fabs(z.a0) + std::max(std::fabs(tx0), std::fabs(tx1)) + std::max(std::fabs(ty0), std::fabs(ty1));
-  const float zmin = (z.a0 + std::min(tx0, tx1)) + std::min(ty0, ty1) - (m * 0x1p-16f + 0x1p-100f);
-  if (!(zmin == zmin)) return false;  // NaN: no bound (such fragments fail the test anyway)
-  // The farthest stored depth under the pixels.
+  const float margin = m * 0x1p-16f + 0x1p-100f;
+  const float bound = nearer ? (z.a0 + std::min(tx0, tx1)) + std::min(ty0, ty1) - margin
+                             : (z.a0 + std::max(tx0, tx1)) + std::max(ty0, ty1) + margin;
+  if (!(bound == bound)) return false;  // NaN: no bound (such fragments fail the test anyway)
+  // The nearest and farthest stored depths under the pixels.
   const int bx0 = (px0 - tile.x0) / kBlock, bx1 = (px1 - tile.x0) / kBlock;
   const int by0 = (py0 - tile.y0) / kBlock, by1 = (py1 - tile.y0) / kBlock;
-  float stored = -INFINITY;
+  float stored_lo = INFINITY, stored_hi = -INFINITY;
   for (int row = by0; row <= by1; ++row)
     for (int col = bx0; col <= bx1; ++col) {
       const int i = row * kPerRow + col;
       if (stale[i] || ++asks[i] >= kAsks) Refresh(i);
-      stored = std::max(stored, hi[i]);
+      stored_lo = std::min(stored_lo, lo[i]);
+      stored_hi = std::max(stored_hi, hi[i]);
     }
   // The fragments' depths as the test sees them: clamped to [0, 1] (an infinite bound too), as the buffer keeps
   // them; both monotonic, so the bound stays a bound.
-  const float near = target->StoredDepth(zmin > 0.0f ? (zmin < 1.0f ? zmin : 1.0f) : 0.0f);
-  return lequal ? near > stored : near >= stored;
+  const float d = target->StoredDepth(bound > 0.0f ? (bound < 1.0f ? bound : 1.0f) : 0.0f);
+  switch (func) {
+    case LESS: return d >= stored_hi;
+    case LEQUAL: return d > stored_hi;
+    case GREATER: return d <= stored_lo;
+    default: return d < stored_lo;  // GEQUAL
+  }
 }
 
 }  // namespace softgl::detail

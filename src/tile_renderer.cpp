@@ -117,9 +117,6 @@ struct FragmentStage {
   int simd;
   const FragmentOpsPlan* plan;
   bool has_centroid;  // the draw has Centroid<> varyings
-  // The tile's coarse depth, told where a batch may have written depth farther than it was (null: the draw writes
-  // no depth, or only nearer, by LESS or LEQUAL).
-  HierarchicalDepth* touch;
 
   static void Run(void* user, BlockBuffer& blocks) {
     const auto* self = static_cast<const FragmentStage*>(user);
@@ -128,7 +125,6 @@ struct FragmentStage {
     InterpolateVaryings(blocks);
     self->Shade(blocks);
     ApplyFragmentOps(self->draw->ops, *self->plan, blocks, self->draw->shader_depth, *self->target);
-    if (self->touch) self->touch->Touch(blocks);
   }
 
   // Into a multisampled target: the depth test (early and late) and the operations after the shader run on each
@@ -474,10 +470,9 @@ void Frame::RenderTile(int tile, TileScratch& scratch) const {
     rt.samples = target_.samples > 1 && draw.ops.multisample.multisample ? target_.samples : 1;
     if (rt.bounds.Empty()) continue;
     // The depth test is the early one, nearer passing: triangles and regions behind what the tile holds may go.
-    const Enum depth_func = draw.ops.depth_func;
-    const bool nearer = depth_func == LESS || depth_func == LEQUAL;
-    if (hz && draw.early_depth && rt.samples == 1 && nearer) {
-      hz->lequal = depth_func == LEQUAL;
+    // The depth test is the early one: triangles and regions that cannot pass it may go.
+    if (hz && draw.early_depth && rt.samples == 1) {
+      hz->func = draw.ops.depth_func;
       rt.depth_bounds = hz;
     }
     if (!planned || !(draw.ops == *planned)) {  // consecutive draws mostly share their operations
@@ -487,8 +482,7 @@ void Frame::RenderTile(int tile, TileScratch& scratch) const {
     bool has_centroid = false;
     for (int i = 0; draw.interpolation && i < draw.nvar; ++i)
       has_centroid = has_centroid || draw.interpolation[i] == Interpolation::kCentroid;
-    FragmentStage stage{&draw, &target_, outputs, simd, &plan, has_centroid,
-                        hz && draw.ops.depth_test && draw.ops.depth_write && !nearer ? hz : nullptr};
+    FragmentStage stage{&draw, &target_, outputs, simd, &plan, has_centroid};
     const BlockSink sink{&FragmentStage::Run, &stage};
     blocks.count = 0;
     blocks.samples = target_.samples;
@@ -527,6 +521,7 @@ void Frame::RenderTile(int tile, TileScratch& scratch) const {
       }
     }
     sink.Flush(blocks);
+    if (hz && draw.ops.depth_test && draw.ops.depth_write) hz->Wrote(draw.ops.depth_func);
   }
   if (lazy) lazy->Resolve(target_, tile, kColorBit);  // while the tile's samples are in cache
 }

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdint>
 #include <random>
+#include <utility>
 #include <vector>
 
 #include "helpers.h"
@@ -47,7 +48,7 @@ TEST_CASE("hierarchical depth: a plane behind every stored depth under its pixel
   HierarchicalDepth hz;
   hz.Begin(tile.target, Rect{0, 0, 64, 64});
   for (const bool lequal : {false, true}) {
-    hz.lequal = lequal;
+    hz.func = lequal ? LEQUAL : LESS;
     CHECK(hz.Hides(FlatPlane(0.6f), 0.0f, 0.0f, 0, 0, 7, 7));
     CHECK(hz.Hides(FlatPlane(0.5001f), 0.0f, 0.0f, 10, 3, 40, 60));
     CHECK_FALSE(hz.Hides(FlatPlane(0.4f), 0.0f, 0.0f, 0, 0, 7, 7));
@@ -66,15 +67,47 @@ TEST_CASE("hierarchical depth: a plane behind every stored depth under its pixel
 
   SECTION("a depth written farther is seen once the block is marked stale") {
     tile.depth[3 * 64 + 5] = 0.7f;  // pixel (5, 3), block 0
-    hz.lequal = false;
+    hz.func = LESS;
     hz.TouchAll();
     CHECK_FALSE(hz.Hides(FlatPlane(0.6f), 0.0f, 0.0f, 0, 0, 7, 7));
     CHECK(hz.Hides(FlatPlane(0.6f), 0.0f, 0.0f, 8, 0, 15, 7));  // block 1 is still at 0.5
     CHECK_FALSE(hz.Hides(FlatPlane(0.6f), 0.0f, 0.0f, 4, 0, 12, 3));  // over blocks 0 and 1
     CHECK(hz.Hides(FlatPlane(0.71f), 0.0f, 0.0f, 4, 0, 12, 3));
   }
+  SECTION("GREATER and GEQUAL against the nearest stored depth") {
+    for (const Enum func : {GREATER, GEQUAL}) {
+      hz.func = func;
+      CHECK(hz.Hides(FlatPlane(0.4f), 0.0f, 0.0f, 0, 0, 7, 7));
+      CHECK_FALSE(hz.Hides(FlatPlane(0.6f), 0.0f, 0.0f, 0, 0, 7, 7));
+      CHECK_FALSE(hz.Hides(FlatPlane(0.5f), 0.0f, 0.0f, 0, 0, 7, 7));
+      // Sloped: 0.4 at x = 0 rising to 0.51 at the far side of pixel 7 reaches farther.
+      CHECK_FALSE(hz.Hides(Plane{0.4f, 0.11f / 8.0f, 0.0f}, 0.0f, 0.0f, 0, 0, 7, 7));
+      CHECK(hz.Hides(Plane{0.4f, 0.09f / 8.0f, 0.0f}, 0.0f, 0.0f, 0, 0, 7, 7));
+    }
+    hz.func = GREATER;
+    for (std::size_t i = 0; i < 64 * 8; ++i) tile.depth[i] = 0.0f;  // clamped to 0: not above 0
+    hz.TouchAll();
+    CHECK(hz.Hides(FlatPlane(-1.0f), 0.0f, 0.0f, 0, 0, 63, 7));
+    hz.func = GEQUAL;
+    CHECK_FALSE(hz.Hides(FlatPlane(-1.0f), 0.0f, 0.0f, 0, 0, 63, 7));
+  }
+  SECTION("a bound that writes may have made wrong is read again: nearer writes for GREATER, farther for LESS") {
+    hz.func = GREATER;
+    CHECK(hz.Hides(FlatPlane(0.3f), 0.0f, 0.0f, 0, 0, 7, 7));  // (block 0 read: 0.5)
+    tile.depth[2 * 64 + 2] = 0.2f;  // a LESS draw brings pixel (2, 2) nearer
+    hz.Wrote(LESS);
+    CHECK_FALSE(hz.Hides(FlatPlane(0.3f), 0.0f, 0.0f, 0, 0, 7, 7));
+    hz.func = LESS;
+    CHECK(hz.Hides(FlatPlane(0.6f), 0.0f, 0.0f, 0, 0, 7, 7));
+    tile.depth[2 * 64 + 2] = 0.7f;  // a GREATER draw takes it farther
+    hz.Wrote(GREATER);
+    CHECK_FALSE(hz.Hides(FlatPlane(0.6f), 0.0f, 0.0f, 0, 0, 7, 7));
+    tile.depth[2 * 64 + 2] = 0.9f;  // ALWAYS, either way
+    hz.Wrote(ALWAYS);
+    CHECK_FALSE(hz.Hides(FlatPlane(0.8f), 0.0f, 0.0f, 0, 0, 7, 7));
+  }
   SECTION("a depth brought nearer tightens the bound within a few asks, and never makes it wrong") {
-    hz.lequal = false;
+    hz.func = LESS;
     for (int y = 0; y < 8; ++y)
       for (int x = 0; x < 8; ++x) tile.depth[std::size_t(y * 64 + x)] = 0.2f;  // (as LESS writes: nearer)
     bool hidden = false;
@@ -85,15 +118,15 @@ TEST_CASE("hierarchical depth: a plane behind every stored depth under its pixel
   SECTION("depth beyond [0, 1] is clamped as the depth test clamps it") {
     for (std::size_t i = 0; i < 64 * 8; ++i) tile.depth[i] = 1.0f;  // row of blocks 0
     hz.TouchAll();
-    hz.lequal = false;
+    hz.func = LESS;
     CHECK(hz.Hides(FlatPlane(2.0f), 0.0f, 0.0f, 0, 0, 63, 7));  // clamped to 1: not below 1
-    hz.lequal = true;
+    hz.func = LEQUAL;
     CHECK_FALSE(hz.Hides(FlatPlane(2.0f), 0.0f, 0.0f, 0, 0, 63, 7));  // 1 <= 1 passes
     for (std::size_t i = 0; i < 64 * 8; ++i) tile.depth[i] = 0.0f;
     hz.TouchAll();
-    hz.lequal = false;
+    hz.func = LESS;
     CHECK(hz.Hides(FlatPlane(-1.0f), 0.0f, 0.0f, 0, 0, 63, 7));  // clamped to 0: not below 0
-    hz.lequal = true;
+    hz.func = LEQUAL;
     CHECK_FALSE(hz.Hides(FlatPlane(-1.0f), 0.0f, 0.0f, 0, 0, 63, 7));
   }
 }
@@ -102,8 +135,9 @@ TEST_CASE("hierarchical depth: no plane is hidden from a stored depth that its n
           "its evaluation rounds",
           "[hierarchical_depth]") {
   // Random planes, gradients from 1e-12 (where only rounding separates the fragments) to 1e2 per pixel; the
-  // block's depths set to what its nearest fragment passes (equal to it for LEQUAL, one step farther for LESS),
-  // its depth evaluated as the rasterizer does: (a0 + dx rx) + dy ry with rx = (x + 0.5) - x0.
+  // block's depths set to what its nearest fragment passes (equal to it for LEQUAL, one step farther for LESS; the
+  // farthest for GEQUAL and GREATER), a fragment's depth evaluated as the rasterizer does: (a0 + dx rx) + dy ry with
+  // rx = (x + 0.5) - x0.
   std::mt19937 rng(7);
   auto uniform = [&](float a, float b) { return std::uniform_real_distribution<float>(a, b)(rng); };
   int cases = 0;
@@ -112,21 +146,28 @@ TEST_CASE("hierarchical depth: no plane is hidden from a stored depth that its n
     const float dx = std::pow(10.0f, uniform(-12.0f, 2.0f)) * (uniform(0, 1) < 0.5f ? -1.0f : 1.0f);
     const float dy = std::pow(10.0f, uniform(-12.0f, 2.0f)) * (uniform(0, 1) < 0.5f ? -1.0f : 1.0f);
     const Plane z{a0, dx, dy};
-    float nearest = INFINITY;
+    float nearest = INFINITY, farthest = -INFINITY;
     for (int y = 8; y < 16; ++y)
       for (int x = 16; x < 24; ++x) {
         const float rx = (float(x) + 0.5f) - x0, ry = (float(y) + 0.5f) - y0;
-        nearest = std::min(nearest, (z.a0 + z.dx * rx) + z.dy * ry);
+        const float d = (z.a0 + z.dx * rx) + z.dy * ry;
+        nearest = std::min(nearest, d);
+        farthest = std::max(farthest, d);
       }
-    if (!(nearest > 0.0f && nearest < 1.0f)) continue;  // (inside the depth range: no clamping)
+    if (!(nearest > 0.0f && farthest < 1.0f)) continue;  // (inside the depth range: no clamping)
     ++cases;
-    for (const bool lequal : {false, true}) {
-      DepthTile tile(lequal ? nearest : std::nextafter(nearest, 2.0f));
+    // The stored depth each comparison's nearest (farthest) fragment just passes.
+    const std::pair<Enum, float> tests[] = {{LEQUAL, nearest},
+                                            {LESS, std::nextafter(nearest, 2.0f)},
+                                            {GEQUAL, farthest},
+                                            {GREATER, std::nextafter(farthest, -1.0f)}};
+    for (const auto& [func, stored] : tests) {
+      DepthTile tile(stored);
       HierarchicalDepth hz;
       hz.Begin(tile.target, Rect{0, 0, 64, 64});
-      hz.lequal = lequal;
+      hz.func = func;
       if (hz.Hides(z, x0, y0, 16, 8, 23, 15)) {
-        CAPTURE(a0, x0, y0, dx, dy, nearest, lequal);
+        CAPTURE(a0, x0, y0, dx, dy, nearest, farthest, func);
         FAIL_CHECK("hidden");
       }
     }
@@ -140,12 +181,12 @@ TEST_CASE("hierarchical depth: a 16-bit depth buffer is compared as the test con
   HierarchicalDepth hz;
   hz.Begin(tile.target, Rect{0, 0, 64, 64});
   // 0.50001 * 65535 = 32768.16: 32768 too, not below the stored value (LESS fails), equal to it (LEQUAL passes).
-  hz.lequal = false;
+  hz.func = LESS;
   CHECK(hz.Hides(FlatPlane(0.50001f), 0.0f, 0.0f, 0, 0, 63, 63));
-  hz.lequal = true;
+  hz.func = LEQUAL;
   CHECK_FALSE(hz.Hides(FlatPlane(0.50001f), 0.0f, 0.0f, 0, 0, 63, 63));
   CHECK(hz.Hides(FlatPlane(0.50005f), 0.0f, 0.0f, 0, 0, 63, 63));  // 32770
-  hz.lequal = false;
+  hz.func = LESS;
   CHECK_FALSE(hz.Hides(FlatPlane(0.4999f), 0.0f, 0.0f, 0, 0, 63, 63));
 }
 
@@ -174,8 +215,9 @@ struct SceneResult {
 
 // A random scene of many draws, 150 x 110 (3 x 2 tiles, the last ones partial): an occluder, then triangles in
 // front of and behind it, coplanar with it, steep (nearly edge-on), beyond the depth range, with random depth
-// functions and masks, polygon offset, lines and points, the stencil test, scissored depth clears.
-SceneResult DrawScene(bool hierarchical, int threads, Enum depth_format, std::uint32_t seed) {
+// functions and masks, polygon offset, lines and points, the stencil test, scissored depth clears; `reversed`:
+// the depth cleared to 0 and GREATER for LESS (a reversed depth range's usual state).
+SceneResult DrawScene(bool hierarchical, int threads, Enum depth_format, std::uint32_t seed, bool reversed) {
   Context::Options options;
   options.threads = threads;
   options.depth_format = depth_format;
@@ -215,14 +257,18 @@ SceneResult DrawScene(bool hierarchical, int threads, Enum depth_format, std::ui
   }
   testing::MakeVertexArray(gl, positions, colors);
   gl.ClearColor(0.1f, 0.2f, 0.3f, 1.0f);
+  gl.ClearDepth(reversed ? 0.0 : 1.0);
   gl.Clear(COLOR_BUFFER_BIT | DEPTH_BUFFER_BIT | STENCIL_BUFFER_BIT);
   gl.Enable(DEPTH_TEST);
+  gl.DepthFunc(reversed ? GREATER : LESS);
   gl.DrawArrays(TRIANGLES, 0, 6);
+  // Mostly nearer passing (or, reversed, farther passing: depth from 1 near to 0 far), the others among them.
   const Enum funcs[] = {LESS, LESS, LESS, LEQUAL, LEQUAL, GREATER, GEQUAL, ALWAYS, EQUAL, NOTEQUAL, NEVER};
+  const Enum reversed_funcs[] = {GREATER, GREATER, GREATER, GEQUAL, GEQUAL, LESS, LEQUAL, ALWAYS, EQUAL, NOTEQUAL, NEVER};
   for (int first = 6; first < 6 + 3 * kTriangles;) {
     const int count = 3 * (1 + pick(40));
     const int n = std::min(count, 6 + 3 * kTriangles - first);
-    gl.DepthFunc(funcs[pick(11)]);
+    gl.DepthFunc((reversed ? reversed_funcs : funcs)[pick(11)]);
     gl.DepthMask(pick(4) != 0);
     if (pick(6) == 0) gl.Enable(POLYGON_OFFSET_FILL), gl.PolygonOffset(uniform(-2, 2), uniform(-4, 4));
     else gl.Disable(POLYGON_OFFSET_FILL);
@@ -240,7 +286,7 @@ SceneResult DrawScene(bool hierarchical, int threads, Enum depth_format, std::ui
     if (pick(5) == 0) {  // a depth clear of part of the window, often to the far end (what lay nearer is gone)
       gl.Enable(SCISSOR_TEST);
       gl.Scissor(pick(150), pick(110), 1 + pick(100), 1 + pick(80));
-      gl.ClearDepth(pick(2) ? 1.0 : uniform(0, 1));
+      gl.ClearDepth(pick(2) ? (reversed ? 0.0 : 1.0) : uniform(0, 1));
       gl.Clear(DEPTH_BUFFER_BIT);
       gl.Disable(SCISSOR_TEST);
     }
@@ -263,17 +309,21 @@ SceneResult DrawScene(bool hierarchical, int threads, Enum depth_format, std::ui
 TEST_CASE("hierarchical depth drops only what the depth test would: random scenes give the same bytes with it on "
           "and off",
           "[hierarchical_depth]") {
-  std::uint64_t hidden = 0;
-  for (const Enum format : {DEPTH_COMPONENT32F, DEPTH_COMPONENT16})
-    for (const int threads : {1, 3})
-      for (std::uint32_t seed = 1; seed <= 6; ++seed) {
-        CAPTURE(format, threads, seed);
-        const SceneResult on = DrawScene(true, threads, format, seed), off = DrawScene(false, threads, format, seed);
-        const bool same_color = on.color == off.color, same_depth = on.depth == off.depth;
-        CHECK(same_color);
-        CHECK(same_depth);
-        CHECK(off.counts.triangles_tested + off.counts.regions_tested == 0);
-        hidden += on.counts.triangles_hidden + on.counts.regions_hidden;
-      }
-  CHECK(hidden > 1000);  // the scenes give it something to drop
+  for (const bool reversed : {false, true}) {
+    std::uint64_t hidden = 0;
+    for (const Enum format : {DEPTH_COMPONENT32F, DEPTH_COMPONENT16})
+      for (const int threads : {1, 3})
+        for (std::uint32_t seed = 1; seed <= 6; ++seed) {
+          CAPTURE(reversed, format, threads, seed);
+          const SceneResult on = DrawScene(true, threads, format, seed, reversed);
+          const SceneResult off = DrawScene(false, threads, format, seed, reversed);
+          const bool same_color = on.color == off.color, same_depth = on.depth == off.depth;
+          CHECK(same_color);
+          CHECK(same_depth);
+          CHECK(off.counts.triangles_tested + off.counts.regions_tested == 0);
+          hidden += on.counts.triangles_hidden + on.counts.regions_hidden;
+        }
+    CAPTURE(reversed);
+    CHECK(hidden > 1000);  // the scenes give it something to drop
+  }
 }
