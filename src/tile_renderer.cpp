@@ -423,7 +423,8 @@ void Frame::RenderTile(int tile, TileScratch& scratch) const {
   SampleTiles::Tile* const lazy_tile = lazy ? &lazy->tiles[std::size_t(tile)] : nullptr;
   if (lazy) lazy_tile->stale = kAllBuffers;
   // The coarse depth of a single-sampled target's tile, read from its depth buffer as triangles ask.
-  HierarchicalDepth* const hz = hierarchical_depth_ && target_.samples == 1 && target_.HasDepth() ? &scratch.depth_bounds : nullptr;
+  HierarchicalDepth* const hz =
+      hierarchical_depth_ && target_.samples == 1 && target_.HasDepth() ? &scratch.depth_bounds : nullptr;
   if (hz) hz->Begin(target_, rect);
   for (std::size_t i = 0; i < list.size(); ++i) {
     const Command& c = commands_[list[i]];
@@ -469,7 +470,6 @@ void Frame::RenderTile(int tile, TileScratch& scratch) const {
     rt.interpolation = draw.interpolation;
     rt.samples = target_.samples > 1 && draw.ops.multisample.multisample ? target_.samples : 1;
     if (rt.bounds.Empty()) continue;
-    // The depth test is the early one, nearer passing: triangles and regions behind what the tile holds may go.
     // The depth test is the early one: triangles and regions that cannot pass it may go.
     if (hz && draw.early_depth && rt.samples == 1) {
       hz->func = draw.ops.depth_func;
