@@ -15,28 +15,33 @@ void HierarchicalDepth::Refresh(int index) {
   // Stored values outside [0, 1] (a depth texture's upload may hold them) take part as they are; NaN, which no
   // fragment passes against, is left out by the comparisons. No pixel: +inf and -inf (no fragment comes there).
   float l = INFINITY, h = -INFINITY;
-  if (x1 - x0 == kBlock && !t.depth16) {  // whole rows of floats: four lanes at a time
+  if (x1 - x0 == kBlock && !t.depth16) {  // whole rows of floats, four lanes at a time
+    // A row's samples: one run of kBlock * step values in each sample plane, or in the one plane where each
+    // pixel's samples lie side by side (interleaved).
     using F4 = V<4>::F;
     F4 vl = F4{} + INFINITY, vh = F4{} - INFINITY;
-    for (int y = y0; y < y1; ++y) {
-      const float* row = t.depth + std::size_t(y) * std::size_t(t.depth_pitch) + std::size_t(x0);
-      for (int k = 0; k < kBlock; k += 4) {
-        const F4 v = LoadVec<F4>(row + k);
-        vl = v < vl ? v : vl;
-        vh = v > vh ? v : vh;
+    const int planes = t.interleaved ? 1 : t.samples, run = kBlock * t.step;
+    for (int s = 0; s < planes; ++s)
+      for (int y = y0; y < y1; ++y) {
+        const float* row = t.depth + t.DepthIndex(x0, y, s);
+        for (int k = 0; k < run; k += 4) {
+          const F4 v = LoadVec<F4>(row + k);
+          vl = v < vl ? v : vl;
+          vh = v > vh ? v : vh;
+        }
       }
-    }
     for (int k = 0; k < 4; ++k) {
       l = vl[k] < l ? vl[k] : l;
       h = vh[k] > h ? vh[k] : h;
     }
   } else {
     for (int y = y0; y < y1; ++y)
-      for (int x = x0; x < x1; ++x) {
-        const float v = t.DepthAt(x, y);
-        l = v < l ? v : l;
-        h = v > h ? v : h;
-      }
+      for (int x = x0; x < x1; ++x)
+        for (int s = 0; s < t.samples; ++s) {  // (every sample of a multisampled buffer)
+          const float v = t.DepthAt(x, y, s);
+          l = v < l ? v : l;
+          h = v > h ? v : h;
+        }
   }
   lo[index] = l;
   hi[index] = h;

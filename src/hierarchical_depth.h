@@ -13,9 +13,9 @@
 // A triangle's fragment depths over a pixel rectangle are bounded by its depth plane at the rectangle's corners,
 // widened by the most that the per-fragment float evaluation of the plane can differ from the exact value. A test
 // LESS (LEQUAL) fails everywhere when the nearest of them is not below (is above) the farthest stored depth;
-// GREATER (GEQUAL) when the farthest is not above (is below) the nearest stored one. Only where the depth test is
-// the early one (EarlyDepthTestApplies: one of those four, no stencil test, no shader depth) and the target
-// single-sampled.
+// GREATER (GEQUAL) when the farthest is not above (is below) the nearest stored one: the rectangle holds every
+// sample position of its pixels, and a multisampled buffer's bounds are over all samples. Only where the depth
+// test is the early one (EarlyDepthTestApplies: one of those four, no stencil test, no shader depth).
 #pragma once
 
 #include <cstdint>
@@ -37,7 +37,7 @@ struct HierarchicalDepth {
   // the next kSkip are not made.
   static constexpr int kWindow = 32, kSkip = 480;
 
-  // The tile: its target (single-sampled, with a depth buffer) and the pixel rectangle it covers.
+  // The tile: its target (with a depth buffer) and the pixel rectangle it covers.
   const RenderTarget* target = nullptr;
   Rect tile;
   float lo[kBlocks], hi[kBlocks];  // StoredDepth's values: k / 65535 for a 16-bit buffer

@@ -741,7 +741,7 @@ void RasterizeTriangle(const VertexView& v0, const VertexView& v1, const VertexV
   planes.z = make_plane(v[0]->win.z, v[1]->win.z, v[2]->win.z);
   planes.z.a0 += target.depth_offset;
   // Hierarchical depth: a triangle whose depths over its box cannot pass the depth test there is dropped now.
-  HierarchicalDepth* const hz = target.samples == 1 ? target.depth_bounds : nullptr;
+  HierarchicalDepth* const hz = target.depth_bounds;
   if (hz && HiddenTriangle(*hz, planes.z, x0, y0, int(px0), int(py0), int(px1), int(py1))) return;
   planes.oow = make_plane(v[0]->win.w, v[1]->win.w, v[2]->win.w);
   // The varyings' planes four at a time, each lane make_plane's operations in its order.

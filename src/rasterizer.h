@@ -33,8 +33,8 @@ struct RasterTarget {
   // position (SamplePositions), with the same edge functions and tie rule as a pixel centre; a pixel is emitted
   // when some sample is covered, and its lanes' sample masks say which. 1: the pixel centre alone.
   int samples = 1;
-  // The tile's coarse depth (single-sampled targets, draws whose depth test may run early): a triangle, or an 8x8
-  // region of one, that cannot pass the depth test there is dropped. Null: every triangle is rasterized.
+  // The tile's coarse depth (draws whose depth test may run early): a triangle, or an 8x8 region of one, that
+  // cannot pass the depth test there is dropped. Null: every triangle is rasterized.
   HierarchicalDepth* depth_bounds = nullptr;
 };
 

@@ -422,9 +422,8 @@ void Frame::RenderTile(int tile, TileScratch& scratch) const {
   SampleTiles* const lazy = target_.tiles;
   SampleTiles::Tile* const lazy_tile = lazy ? &lazy->tiles[std::size_t(tile)] : nullptr;
   if (lazy) lazy_tile->stale = kAllBuffers;
-  // The coarse depth of a single-sampled target's tile, read from its depth buffer as triangles ask.
-  HierarchicalDepth* const hz =
-      hierarchical_depth_ && target_.samples == 1 && target_.HasDepth() ? &scratch.depth_bounds : nullptr;
+  // The coarse depth of the tile, read from its depth buffer as triangles ask.
+  HierarchicalDepth* const hz = hierarchical_depth_ && target_.HasDepth() ? &scratch.depth_bounds : nullptr;
   if (hz) hz->Begin(target_, rect);
   for (std::size_t i = 0; i < list.size(); ++i) {
     const Command& c = commands_[list[i]];
@@ -459,7 +458,7 @@ void Frame::RenderTile(int tile, TileScratch& scratch) const {
       }
       if (color) target_.ClearColor(r, clear.color_value, clear.color_mask);
       if (depth) target_.ClearDepth(r, clear.depth_value);
-      if (depth && hz) hz->TouchAll();
+      if (clear.depth && hz) hz->TouchAll();  // (also where the tile only noted it: Store takes it first)
       if (stencil) target_.ClearStencil(r, clear.stencil_value, clear.stencil_mask);
       continue;
     }
@@ -471,7 +470,7 @@ void Frame::RenderTile(int tile, TileScratch& scratch) const {
     rt.samples = target_.samples > 1 && draw.ops.multisample.multisample ? target_.samples : 1;
     if (rt.bounds.Empty()) continue;
     // The depth test is the early one: triangles and regions that cannot pass it may go.
-    if (hz && draw.early_depth && rt.samples == 1) {
+    if (hz && draw.early_depth) {
       hz->func = draw.ops.depth_func;
       rt.depth_bounds = hz;
     }

@@ -175,6 +175,32 @@ TEST_CASE("hierarchical depth: no plane is hidden from a stored depth that its n
   CHECK(cases > 1000);
 }
 
+TEST_CASE("hierarchical depth: a multisampled buffer's bounds are over every sample", "[hierarchical_depth]") {
+  for (const bool interleaved : {false, true}) {
+    CAPTURE(interleaved);
+    // 64 x 64, 4 samples: planes one after another, or each pixel's samples side by side.
+    std::vector<float> depth(64 * 64 * 4, 0.2f);
+    RenderTarget t;
+    t.width = t.height = 64;
+    t.samples = 4;
+    t.depth = depth.data();
+    t.interleaved = interleaved;
+    t.step = interleaved ? 4 : 1;
+    t.depth_pitch = interleaved ? 64 * 4 : 64;
+    t.depth_plane = interleaved ? 1 : 64 * 64;
+    depth[t.DepthIndex(5, 3, 2)] = 1.0f;  // one sample of pixel (5, 3), block 0, not drawn over
+    depth[t.DepthIndex(13, 3, 1)] = 0.0f;  // one of pixel (13, 3), block 1, nearer
+    HierarchicalDepth hz;
+    hz.Begin(t, Rect{0, 0, 64, 64});
+    hz.func = LESS;
+    CHECK_FALSE(hz.Hides(FlatPlane(0.5f), 0.0f, 0.0f, 0, 0, 7, 7));
+    CHECK(hz.Hides(FlatPlane(0.5f), 0.0f, 0.0f, 8, 0, 15, 7));
+    hz.func = GREATER;
+    CHECK(hz.Hides(FlatPlane(0.1f), 0.0f, 0.0f, 0, 0, 7, 7));
+    CHECK_FALSE(hz.Hides(FlatPlane(0.1f), 0.0f, 0.0f, 8, 0, 15, 7));
+  }
+}
+
 TEST_CASE("hierarchical depth: a 16-bit depth buffer is compared as the test converts depths", "[hierarchical_depth]") {
   DepthTile tile(0.5f, true);  // stored 32768 (0.5 * 65535 = 32767.5, ties to even)
   REQUIRE(tile.depth16[0] == 32768);
@@ -216,11 +242,14 @@ struct SceneResult {
 // A random scene of many draws, 150 x 110 (3 x 2 tiles, the last ones partial): an occluder, then triangles in
 // front of and behind it, coplanar with it, steep (nearly edge-on), beyond the depth range, with random depth
 // functions and masks, polygon offset, lines and points, the stencil test, scissored depth clears; `reversed`:
-// the depth cleared to 0 and GREATER for LESS (a reversed depth range's usual state).
-SceneResult DrawScene(bool hierarchical, int threads, Enum depth_format, std::uint32_t seed, bool reversed) {
+// the depth cleared to 0 and GREATER for LESS (a reversed depth range's usual state); `samples` for the context's
+// framebuffer (4: multisampled, MULTISAMPLE sometimes disabled).
+SceneResult DrawScene(bool hierarchical, int threads, Enum depth_format, std::uint32_t seed, bool reversed,
+                      int samples) {
   Context::Options options;
   options.threads = threads;
   options.depth_format = depth_format;
+  options.samples = samples;
   Context gl(150, 110, options);
   gl.UseHierarchicalDepth(hierarchical);
   ColorShader shader;
@@ -272,6 +301,8 @@ SceneResult DrawScene(bool hierarchical, int threads, Enum depth_format, std::ui
     gl.DepthMask(pick(4) != 0);
     if (pick(6) == 0) gl.Enable(POLYGON_OFFSET_FILL), gl.PolygonOffset(uniform(-2, 2), uniform(-4, 4));
     else gl.Disable(POLYGON_OFFSET_FILL);
+    if (samples > 1 && pick(4) == 0) gl.Disable(MULTISAMPLE);  // (each fragment then covers all its samples)
+    else if (samples > 1) gl.Enable(MULTISAMPLE);
     if (pick(8) == 0) {  // the stencil test counts depth failures
       gl.Enable(STENCIL_TEST);
       gl.StencilFunc(ALWAYS, 0, 0xFF);
@@ -309,21 +340,59 @@ SceneResult DrawScene(bool hierarchical, int threads, Enum depth_format, std::ui
 TEST_CASE("hierarchical depth drops only what the depth test would: random scenes give the same bytes with it on "
           "and off",
           "[hierarchical_depth]") {
-  for (const bool reversed : {false, true}) {
+  for (const bool reversed : {false, true})
+    for (const int samples : {0, 4}) {
     std::uint64_t hidden = 0;
     for (const Enum format : {DEPTH_COMPONENT32F, DEPTH_COMPONENT16})
       for (const int threads : {1, 3})
         for (std::uint32_t seed = 1; seed <= 6; ++seed) {
-          CAPTURE(reversed, format, threads, seed);
-          const SceneResult on = DrawScene(true, threads, format, seed, reversed);
-          const SceneResult off = DrawScene(false, threads, format, seed, reversed);
+          CAPTURE(reversed, samples, format, threads, seed);
+          const SceneResult on = DrawScene(true, threads, format, seed, reversed, samples);
+          const SceneResult off = DrawScene(false, threads, format, seed, reversed, samples);
           const bool same_color = on.color == off.color, same_depth = on.depth == off.depth;
           CHECK(same_color);
           CHECK(same_depth);
           CHECK(off.counts.triangles_tested + off.counts.regions_tested == 0);
           hidden += on.counts.triangles_hidden + on.counts.regions_hidden;
         }
-    CAPTURE(reversed);
-    CHECK(hidden > 1000);  // the scenes give it something to drop
+    CAPTURE(reversed, samples, hidden);
+    CHECK(hidden > 500);  // the scenes give it something to drop
+  }
+}
+
+TEST_CASE("hierarchical depth: a depth clear between draws is seen at once, also where the multisampled tile only "
+          "notes it",
+          "[hierarchical_depth]") {
+  // A near quad (drawn 1 to 4 times, so that the bounds are read at different points), a clear of the whole
+  // window's depth, a far quad: the far one is drawn (its first triangles would be dropped against bounds read
+  // before the clear).
+  for (const int samples : {0, 4})
+  for (int repeats = 1; repeats <= 4; ++repeats) {
+    CAPTURE(samples, repeats);
+    Context::Options options;
+    options.samples = samples;
+    Context gl(64, 64, options);
+    ColorShader shader;
+    gl.UseProgram(shader);
+    const std::vector<glm::vec4> quad = {{-1, -1, 0, 1}, {1, -1, 0, 1}, {1, 1, 0, 1},
+                                         {-1, -1, 0, 1}, {1, 1, 0, 1}, {-1, 1, 0, 1}};
+    std::vector<glm::vec4> positions, colors;
+    for (const float z : {-0.6f, 0.0f})
+      for (const glm::vec4& p : quad) {
+        positions.push_back({p.x, p.y, z, 1.0f});
+        colors.push_back(z < 0.0f ? glm::vec4(1, 0, 0, 1) : glm::vec4(0, 0, 1, 1));
+      }
+    testing::MakeVertexArray(gl, positions, colors);
+    gl.Enable(DEPTH_TEST);
+    gl.Clear(COLOR_BUFFER_BIT | DEPTH_BUFFER_BIT);
+    for (int k = 0; k < repeats; ++k) gl.DrawArrays(TRIANGLES, 0, 6);  // near, red
+    gl.Clear(DEPTH_BUFFER_BIT);
+    gl.DrawArrays(TRIANGLES, 6, 6);  // far, blue: passes against the cleared depth
+    for (const auto& [x, y] : {std::pair{10, 50}, std::pair{50, 10}}) {  // each of its two triangles
+      std::uint8_t px[4];
+      gl.ReadPixel(x, y, px);
+      CHECK(int(px[0]) == 0);
+      CHECK(int(px[2]) == 255);
+    }
   }
 }

@@ -94,11 +94,11 @@ class Context {
   std::vector<std::uint32_t> TilePrimitiveCounts(int* columns = nullptr, int* rows = nullptr);
 
   /// Hierarchical depth (softgl's own; the image is the same with it on or off): each 64 x 64 tile keeps the
-  /// nearest and farthest depth of every 8 x 8 block of a single-sampled depth buffer, and a triangle, or an 8 x 8
-  /// region of a larger one, whose depths cannot pass the depth test there is dropped before coverage,
-  /// interpolation and shading. It applies where the depth test runs before the shader (LESS, LEQUAL, GREATER or
-  /// GEQUAL, no stencil test, a shader without kWritesDepth). On by default; off, for comparing, every triangle is
-  /// tested fragment by fragment.
+  /// nearest and farthest depth of every 8 x 8 block of the depth buffer (over all samples of a multisampled one),
+  /// and a triangle, or an 8 x 8 region of a larger one, whose depths cannot pass the depth test there is dropped
+  /// before coverage, interpolation and shading. It applies where the depth test runs before the shader (LESS,
+  /// LEQUAL, GREATER or GEQUAL, no stencil test, a shader without kWritesDepth). On by default; off, for comparing,
+  /// every triangle is tested fragment by fragment.
   void UseHierarchicalDepth(bool on);
   /// What hierarchical depth tested and dropped since the last call (all threads together).
   struct HierarchicalDepthCounts {
