@@ -4,9 +4,10 @@
 //
 // Each 8x8 pixel block of the tile keeps the nearest and the farthest depth its pixels hold (`lo`, `hi`), read from
 // the depth buffer when a test first asks for the block, and again every kAsks asks (to follow what drawing
-// changed). Writes by a depth test LESS or LEQUAL only bring depths nearer, which leaves `hi` a bound (a looser
-// one) and may leave `lo` wrong; GREATER and GEQUAL the other way round; any other comparison, and clears, both.
-// The tile renderer says which after each draw (Wrote) and at each clear (TouchAll); a bound that may be wrong
+// changed); a clear of the whole tile sets them all to the clear value, with nothing to read. Writes by a depth
+// test LESS or LEQUAL only bring depths nearer, which leaves `hi` a bound (a looser one) and may leave `lo` wrong;
+// GREATER and GEQUAL the other way round; any other comparison, and a clear of part of the tile, both. The tile
+// renderer says which after each draw (Wrote) and at each clear (Cleared, TouchAll); a bound that may be wrong
 // makes every block of the tile read again before it is used. So the bounds hold under every depth function,
 // write mask and clear, and cost nothing where no triangle asks.
 //
@@ -59,6 +60,15 @@ struct HierarchicalDepth {
   /// Marks every block stale (a clear, or writes that may have made a bound wrong).
   void TouchAll() {
     std::memset(stale, 1, sizeof stale);
+    lo_wrong = hi_wrong = false;
+  }
+  /// A clear of the whole tile's depth to `stored` (as StoredDepth gives it): every block's bounds that value,
+  /// read afresh, with nothing to read from the buffer.
+  void Cleared(float stored) {
+    if (!(stored == stored)) return TouchAll();  // (a clear value is never NaN; kept safe all the same)
+    for (int i = 0; i < kBlocks; ++i) lo[i] = hi[i] = stored;
+    std::memset(stale, 0, sizeof stale);
+    std::memset(asks, 0, sizeof asks);
     lo_wrong = hi_wrong = false;
   }
   /// After a draw that wrote depth through comparison `depth_func`: which bound its writes may have made wrong.

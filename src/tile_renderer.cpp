@@ -458,7 +458,12 @@ void Frame::RenderTile(int tile, TileScratch& scratch) const {
       }
       if (color) target_.ClearColor(r, clear.color_value, clear.color_mask);
       if (depth) target_.ClearDepth(r, clear.depth_value);
-      if (clear.depth && hz) hz->TouchAll();  // (also where the tile only noted it: Store takes it first)
+      if (clear.depth && hz) {  // (also where the tile only noted it: Store takes it first)
+        if (r.x0 == rect.x0 && r.y0 == rect.y0 && r.x1 == rect.x1 && r.y1 == rect.y1)
+          hz->Cleared(target_.StoredDepth(clear.depth_value));
+        else
+          hz->TouchAll();
+      }
       if (stencil) target_.ClearStencil(r, clear.stencil_value, clear.stencil_mask);
       continue;
     }

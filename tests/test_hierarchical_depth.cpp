@@ -74,6 +74,25 @@ TEST_CASE("hierarchical depth: a plane behind every stored depth under its pixel
     CHECK_FALSE(hz.Hides(FlatPlane(0.6f), 0.0f, 0.0f, 4, 0, 12, 3));  // over blocks 0 and 1
     CHECK(hz.Hides(FlatPlane(0.71f), 0.0f, 0.0f, 4, 0, 12, 3));
   }
+  SECTION("a clear of the whole tile gives every block its value; a block is read again kAsks asks later, and only "
+          "where its bound as it stands does not hide the plane") {
+    hz.Cleared(0.7f);  // as if cleared to 0.7 and drawn nearer since (the buffer holds 0.5), nothing read
+    hz.func = LESS;
+    for (int ask = 1; ask < HierarchicalDepth::kAsks; ++ask)  // behind 0.7, then in front of it, and so on
+      CHECK(hz.Hides(FlatPlane(ask % 2 ? 0.8f : 0.6f), 0.0f, 0.0f, 0, 0, 7, 7) == (ask % 2 == 1));
+    CHECK(hz.Hides(FlatPlane(0.6f), 0.0f, 0.0f, 0, 0, 7, 7));  // read again: the 0.5 the buffer holds
+    hz.Cleared(0.7f);
+    for (int y = 0; y < 8; ++y)  // (a state no drawing makes: 0.9 behind the bound, to show when it is read)
+      for (int x = 0; x < 8; ++x) tile.depth[std::size_t(y * 64 + x)] = 0.9f;
+    for (int ask = 1; ask <= 2 * HierarchicalDepth::kAsks; ++ask)  // hidden by the bound as it stands: not read
+      CHECK(hz.Hides(FlatPlane(0.8f), 0.0f, 0.0f, 0, 0, 7, 7));
+    CHECK_FALSE(hz.Hides(FlatPlane(0.6f), 0.0f, 0.0f, 0, 0, 7, 7));  // due long since: read for this one (0.9)
+    CHECK_FALSE(hz.Hides(FlatPlane(0.8f), 0.0f, 0.0f, 0, 0, 7, 7));  // and the 0.9 kept
+    hz.Cleared(0.7f);
+    hz.Wrote(GREATER);  // writes that may have moved depths farther: read before use (the 0.7 would hide it)
+    CHECK_FALSE(hz.Hides(FlatPlane(0.8f), 0.0f, 0.0f, 0, 0, 7, 7));
+  }
+
   SECTION("GREATER and GEQUAL against the nearest stored depth") {
     for (const Enum func : {GREATER, GEQUAL}) {
       hz.func = func;
@@ -314,8 +333,10 @@ SceneResult DrawScene(bool hierarchical, int threads, Enum depth_format, std::ui
     if (kind == 0) gl.DrawArrays(LINES, first, n - n % 2);
     else if (kind == 1) gl.DrawArrays(POINTS, first, n);
     else gl.DrawArrays(TRIANGLES, first, n);
-    if (pick(5) == 0) {  // a depth clear of part of the window, often to the far end (what lay nearer is gone)
-      gl.Enable(SCISSOR_TEST);
+    if (pick(5) == 0) {  // a depth clear, often to the far end (what lay nearer is gone): mostly of part of the
+                         // window, else of all of it (whole tiles, whose bounds then come from the clear value)
+      const bool part = pick(3) != 0;
+      if (part) gl.Enable(SCISSOR_TEST);
       gl.Scissor(pick(150), pick(110), 1 + pick(100), 1 + pick(80));
       gl.ClearDepth(pick(2) ? (reversed ? 0.0 : 1.0) : uniform(0, 1));
       gl.Clear(DEPTH_BUFFER_BIT);
