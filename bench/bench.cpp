@@ -1268,6 +1268,56 @@ int main(int argc, char** argv) {
   };
   add_draws_scene("many draws: 10,000 draw calls of one small triangle each", false);
   add_draws_scene("many draws, a uniform changed before each", true);
+  // The same 10,000 triangles as 10,000 objects of their own: each its own vertex array over its own buffer, bound
+  // before its draw (how a scene of many separately loaded meshes draws).
+  auto vertex_of_draw = [&](int i) { return tris.vertices.data() + std::size_t(i) * 3 * std::size_t(tris.floats); };
+  scenes.push_back({"many draws, each its own vertex array", 1280, 720, "Mdraw/s", double(kDraws),
+                    [&](int n) {
+                      return WithShader<wide::FlatShader, scalar::FlatShader>([&](auto& shader) {
+                        softgl::Context gl(1280, 720, g_options);
+                        small_softgl(gl, shader);
+                        std::vector<std::uint32_t> arrays(kDraws);
+                        for (int i = 0; i < kDraws; ++i) {
+                          arrays[std::size_t(i)] = gl.GenVertexArray();
+                          gl.BindVertexArray(arrays[std::size_t(i)]);
+                          gl.BindBuffer(softgl::ARRAY_BUFFER, gl.GenBuffer());
+                          gl.BufferData(softgl::ARRAY_BUFFER, std::ptrdiff_t(3 * tris.floats * 4), vertex_of_draw(i));
+                          gl.VertexAttributePointer(0, tris.position, softgl::FLOAT, false, tris.floats * 4, 0);
+                          gl.EnableVertexAttribArray(0);
+                        }
+                        return MedianMs(n, [&] {
+                          gl.Clear(softgl::COLOR_BUFFER_BIT | softgl::DEPTH_BUFFER_BIT);
+                          for (int i = 0; i < kDraws; ++i) {
+                            gl.BindVertexArray(arrays[std::size_t(i)]);
+                            gl.DrawArrays(softgl::TRIANGLES, 0, 3);
+                          }
+                          gl.Finish();
+                        });
+                      });
+                    },
+                    [&](int n) {
+                      return with_osmesa(1280, 720, [&] {
+                        small_gl();
+                        std::vector<GLuint> arrays(kDraws), buffers(kDraws);
+                        glGenVertexArrays(kDraws, arrays.data());
+                        glGenBuffers(kDraws, buffers.data());
+                        for (int i = 0; i < kDraws; ++i) {
+                          glBindVertexArray(arrays[std::size_t(i)]);
+                          glBindBuffer(GL_ARRAY_BUFFER, buffers[std::size_t(i)]);
+                          glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(3 * tris.floats * 4), vertex_of_draw(i), GL_STATIC_DRAW);
+                          glVertexAttribPointer(0, tris.position, GL_FLOAT, GL_FALSE, tris.floats * 4, nullptr);
+                          glEnableVertexAttribArray(0);
+                        }
+                        return MedianMs(n, [&] {
+                          glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+                          for (int i = 0; i < kDraws; ++i) {
+                            glBindVertexArray(arrays[std::size_t(i)]);
+                            glDrawArrays(GL_TRIANGLES, 0, 3);
+                          }
+                          glFinish();
+                        });
+                      });
+                    }});
   scenes.push_back({"fill rate: 50 blended full-screen quads", 1920, 1080, "Mpixel/s", 50.0 * 1920 * 1080,
                     [&](int n) {
                       return WithShader<wide::FlatShader, scalar::FlatShader>([&](auto& shader) {
