@@ -18,6 +18,9 @@
 //   --hierarchical-depth 0   softgl's contexts without hierarchical depth (Context::UseHierarchicalDepth)
 //   --hiz-counts 1     after each scene's timed frames, one more softgl frame whose hierarchical depth counts
 //                      (triangles and regions tested and dropped) go to stderr
+//   --cpu-time 1       softgl's mean wall and process CPU time per timed frame to stderr, and how busy its threads
+//                      were (CPU / (wall x threads)); with --threads N > 1 for the one-thread run too: where N
+//                      threads spend more CPU time than one on the same frames, each thread ran slower
 //   --matrix 1         the sampler matrix instead of the scenes: every target x wrap mode x filter x format (below);
 //                      --scene TEXT then picks its rows ("2D 256^2, RGBA8, NEAREST"), --softgl-only 1 its ms
 //   --formats 1        the colour format matrix instead: every colour format (and a G-buffer of four) x opaque or
@@ -38,6 +41,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <ctime>
 #include <functional>
 #include <random>
 #include <string>
@@ -551,6 +555,15 @@ softgl::Context::Options g_options;  // --threads, --depth16
 bool g_scalar = false;  // run the scalar form of the scenes' shaders
 bool g_hierarchical_depth = true;  // --hierarchical-depth
 bool g_hiz_counts = false;         // --hiz-counts
+bool g_cpu_time = false;           // --cpu-time
+// The timed frames of the last MedianMs: wall and process CPU time per frame (all threads' CPU time together).
+double g_last_wall_ms = 0.0, g_last_cpu_ms = 0.0;
+
+double ProcessCpuMs() {
+  timespec t{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return double(t.tv_sec) * 1e3 + double(t.tv_nsec) * 1e-6;
+}
 
 // Runs body with the scene's shader in the wide form, or in the scalar form when g_scalar.
 template <class Wide, class Scalar, class Body>
@@ -567,11 +580,15 @@ double MedianMs(int frames, const std::function<void()>& frame) {
   frame();  // warm-up: llvmpipe compiles its shaders on first use
   frame();
   std::vector<double> ms;
+  const double cpu0 = ProcessCpuMs();
   for (int i = 0; i < frames; ++i) {
     const auto t0 = std::chrono::steady_clock::now();
     frame();
     ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
   }
+  g_last_cpu_ms = (ProcessCpuMs() - cpu0) / frames;
+  g_last_wall_ms = 0.0;
+  for (const double m : ms) g_last_wall_ms += m / frames;
   std::sort(ms.begin(), ms.end());
   return ms[ms.size() / 2];
 }
@@ -733,6 +750,7 @@ int main(int argc, char** argv) {
     if (!std::strcmp(argv[i], "--rss-child")) rss_child = argv[i + 1];
     if (!std::strcmp(argv[i], "--hierarchical-depth")) g_hierarchical_depth = std::atoi(argv[i + 1]) != 0;
     if (!std::strcmp(argv[i], "--hiz-counts")) g_hiz_counts = std::atoi(argv[i + 1]) != 0;
+    if (!std::strcmp(argv[i], "--cpu-time")) g_cpu_time = std::atoi(argv[i + 1]) != 0;
     if (!std::strcmp(argv[i], "--msaa-pairs")) msaa_pairs = std::max(0, std::atoi(argv[i + 1]));
     if (!std::strcmp(argv[i], "--matrix")) matrix = std::atoi(argv[i + 1]) != 0;
     if (!std::strcmp(argv[i], "--formats")) format_matrix = std::atoi(argv[i + 1]) != 0;
@@ -1890,12 +1908,21 @@ int main(int argc, char** argv) {
   std::printf("|---|---|---|---|---|---|---|---|---|---|\n");
   for (const Scene& s : scenes) {
     if (!chosen(s.name)) continue;
-    const double a = s.softgl_ms(frames), b = softgl_only ? 0.0 : s.gl_ms(frames);
+    // --cpu-time: softgl's mean wall and CPU ms per frame, and how busy its threads were (CPU / (wall x threads)).
+    auto cpu_report = [&](int n) {
+      if (g_cpu_time)
+        std::fprintf(stderr, "cpu time, %s, %d thread%s: wall %.2f ms/frame, cpu %.2f ms/frame, busy %.2f\n", s.name,
+                     n, n > 1 ? "s" : "", g_last_wall_ms, g_last_cpu_ms, g_last_cpu_ms / (g_last_wall_ms * n));
+    };
+    const double a = s.softgl_ms(frames);
+    cpu_report(threads);
+    const double b = softgl_only ? 0.0 : s.gl_ms(frames);
     // softgl's own scaling, measured in this run: the scene again on one thread, right after.
     double one = a;
     if (threads > 1) {
       g_options.threads = 1;
       one = s.softgl_ms(frames);
+      cpu_report(1);
       g_options.threads = threads;
     }
     // The same scene with the scalar form of its shader, right after: what the wide form gains.
