@@ -2,10 +2,38 @@
 #include "worker_pool.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cstdlib>
 #include <exception>
 
 namespace softgl::detail {
+
+namespace {
+
+// How long a thread watches for what it waits for before it sleeps (worker_pool.h).
+constexpr auto kSpin = std::chrono::microseconds(50);
+
+// A hint to the core that this thread is spinning.
+inline void CpuRelax() {
+#if defined(__x86_64__) || defined(__i386__)
+  __builtin_ia32_pause();
+#elif defined(__aarch64__)
+  asm volatile("yield");
+#endif
+}
+
+// Whether ready() became true within about kSpin, checked between pauses.
+template <class Ready>
+bool SpinUntil(Ready&& ready) {
+  const auto until = std::chrono::steady_clock::now() + kSpin;
+  for (int i = 1;; ++i) {
+    if (ready()) return true;
+    CpuRelax();
+    if (i % 64 == 0 && std::chrono::steady_clock::now() >= until) return ready();
+  }
+}
+
+}  // namespace
 
 int DefaultThreadCount() {
   if (const char* env = std::getenv("SOFTGL_THREADS")) {
@@ -60,6 +88,7 @@ void WorkerPool::Work(int worker) {
   }
   done_.notify_all();
   for (;;) {
+    SpinUntil([&] { return generation_.load(std::memory_order_acquire) != seen; });  // (stop_ is seen below)
     {
       std::unique_lock<std::mutex> lock(mutex_);
       wake_.wait(lock, [&] { return stop_ || generation_ != seen; });
@@ -90,7 +119,7 @@ void WorkerPool::Run(int jobs, JobFn fn) {
   }
   if (spread) wake_.notify_all();
   Drain(0);
-  if (spread) {
+  if (spread && !SpinUntil([&] { return busy_.load(std::memory_order_acquire) == 0; })) {
     std::unique_lock<std::mutex> lock(mutex_);
     done_.wait(lock, [&] { return busy_ == 0; });
   }
