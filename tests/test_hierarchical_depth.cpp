@@ -8,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include "color_shader.h"
 #include "helpers.h"
 #include "hierarchical_depth.h"
 
@@ -237,20 +238,7 @@ TEST_CASE("hierarchical depth: a 16-bit depth buffer is compared as the test con
 
 namespace {
 
-struct ColorVaryings {
-  glm::vec4 color;
-};
-// Position from attribute 0, colour from attribute 1.
-struct ColorShader : softgl::Shader<ColorShader, ColorVaryings> {
-  void Vertex(const softgl::VertexIn& in, softgl::VertexOut<ColorVaryings>& out) const {
-    out.position = in.attrib[0];
-    out.varyings.color = in.attrib[1];
-  }
-  bool Fragment(const softgl::FragmentIn<ColorVaryings>& in, softgl::FragmentOut& out) const {
-    out.color[0] = in.varyings.color;
-    return true;
-  }
-};
+using testing::ColorShader;
 
 struct SceneResult {
   std::vector<std::uint8_t> color;

@@ -5,26 +5,14 @@
 
 #include <softgl/softgl.h>
 
+#include "../color_shader.h"
 #include "backend.h"
 
 namespace conformance {
 
 namespace {
 
-struct ColorVaryings {
-  glm::vec4 color;
-};
-
-struct ColorShader : softgl::Shader<ColorShader, ColorVaryings> {
-  void Vertex(const softgl::VertexIn& in, softgl::VertexOut<ColorVaryings>& out) const {
-    out.position = in.attrib[0];
-    out.varyings.color = in.attrib[1];
-  }
-  bool Fragment(const softgl::FragmentIn<ColorVaryings>& in, softgl::FragmentOut& out) const {
-    out.color[0] = in.varyings.color;
-    return true;
-  }
-};
+using testing::ColorShader;
 
 struct UvVaryings {
   glm::vec2 uv;
