@@ -41,7 +41,7 @@ void ContextState::Draw(const detail::DrawCall& call) {
   for (int u = 0; u < units_used; ++u)  // (the units past those stay null)
     for (int k = 0; k < detail::kTextureKinds; ++k) {
       const detail::TextureObject* t = units[u].bound[k].get();
-      (tex.textures.*detail::kKindUnits[k])[u] = t ? &(tex.views[k][u] = detail::MakeView(*t)) : nullptr;
+      (tex.textures.*detail::kKindUnits[k])[u] = t ? &(tex.views[k][u] = detail::MakeView(*t, units[u].sampler.get())) : nullptr;
     }
   tex.textures.units = units_used;
   packet.textures = &tex.textures;

@@ -51,6 +51,7 @@ bool QueryState(ContextState& s, Enum pname, StateValue& out) {
     case TEXTURE_BINDING_2D_ARRAY: return integer(IdOf(s.textures, s.Bound(TEXTURE_2D_ARRAY)));
     case TEXTURE_BINDING_3D: return integer(IdOf(s.textures, s.Bound(TEXTURE_3D)));
     case TEXTURE_BINDING_2D_MULTISAMPLE: return integer(IdOf(s.textures, s.Bound(TEXTURE_2D_MULTISAMPLE)));
+    case SAMPLER_BINDING: return integer(IdOf(s.samplers, s.units[s.active_unit].sampler.get()));
     case DRAW_FRAMEBUFFER_BINDING: return integer(IdOf(s.framebuffers, s.draw_fbo));
     case DRAW_BUFFER: return QueryState(s, DRAW_BUFFER0, out);
     case READ_BUFFER: return integer(s.read_fbo ? s.read_fbo->read_buffer : s.default_read_buffer);

@@ -117,6 +117,7 @@ inline int QuerySlot(Enum target) {
 
 struct TextureUnit {
   std::shared_ptr<detail::TextureObject> bound[detail::kTextureKinds];  // by detail::TextureKind
+  std::shared_ptr<detail::SamplerParams> sampler;  // BindSampler's sampler object (null: the textures' own state)
 };
 
 inline int CubeFaceIndex(Enum target) {
@@ -154,6 +155,8 @@ struct ContextState {
   TextureUnit units[kMaxTextureUnits];
   int units_used = 0;  // units from here on have never had a texture bound (BindTexture raises it)
   int active_unit = 0;
+  std::unordered_map<std::uint32_t, std::shared_ptr<detail::SamplerParams>> samplers;  // sampler objects
+  std::uint32_t next_sampler = 1;
   // PixelStore: where client pixels lie for uploads (UNPACK_*) and read-backs (PACK_*); LSB_FIRST is kept for the
   // queries alone (it concerns bitmaps, which OpenGL 3.3 core has none of).
   detail::ClientLayout unpack, pack;

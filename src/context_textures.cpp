@@ -5,6 +5,7 @@
 #include "pixel_transfer.h"
 
 #include <cmath>
+#include <limits>
 
 namespace softgl {
 
@@ -273,6 +274,70 @@ bool IsWrap(int v) { return v == REPEAT || v == MIRRORED_REPEAT || v == CLAMP_TO
 
 }  // namespace
 
+namespace {
+
+// Sets sampling parameter `pname` of `p` (a texture's, or with `levels` false a sampler object's, which has no
+// levels) from `values` (four for TEXTURE_BORDER_COLOR); the error set where it is not taken.
+void SetSamplerParameter(ContextState& s, const char* what, detail::SamplerParams& p, Enum pname, const float* values,
+                         bool levels) {
+  if (values == nullptr) return s.SetError(INVALID_VALUE, what, "values is null");
+  const float v = values[0];
+  const int iv = std::isfinite(v) ? int(std::clamp(v, -2e9f, 2e9f)) : -1;
+  switch (pname) {
+    case TEXTURE_MIN_FILTER:
+      if (!IsMinFilter(iv)) return s.SetError(INVALID_ENUM, what, "not a minification filter");
+      p.min_filter = Enum(iv);
+      break;
+    case TEXTURE_MAG_FILTER:
+      if (iv != NEAREST && iv != LINEAR) return s.SetError(INVALID_ENUM, what, "magnification filter must be NEAREST or LINEAR");
+      p.mag_filter = Enum(iv);
+      break;
+    case TEXTURE_WRAP_S:
+    case TEXTURE_WRAP_T:
+    case TEXTURE_WRAP_R:
+      if (!IsWrap(iv)) return s.SetError(INVALID_ENUM, what, "wrap mode must be REPEAT, MIRRORED_REPEAT, CLAMP_TO_EDGE or CLAMP_TO_BORDER");
+      (pname == TEXTURE_WRAP_S ? p.wrap_s : pname == TEXTURE_WRAP_T ? p.wrap_t : p.wrap_r) = Enum(iv);
+      break;
+    case TEXTURE_BASE_LEVEL:
+    case TEXTURE_MAX_LEVEL:
+      if (!levels) return s.SetError(INVALID_ENUM, what, "a sampler object has no levels: TEXTURE_BASE_LEVEL and TEXTURE_MAX_LEVEL are the texture's");
+      if (iv < 0) return s.SetError(INVALID_VALUE, what, "level is negative");
+      (pname == TEXTURE_BASE_LEVEL ? p.base_level : p.max_level) = iv;
+      break;
+    case TEXTURE_MIN_LOD:
+    case TEXTURE_MAX_LOD:
+    case TEXTURE_LOD_BIAS:
+      if (std::isnan(v)) return s.SetError(INVALID_VALUE, what, "value is NaN");
+      (pname == TEXTURE_MIN_LOD ? p.min_lod : pname == TEXTURE_MAX_LOD ? p.max_lod : p.lod_bias) = v;
+      break;
+    case TEXTURE_MAX_ANISOTROPY:
+      if (!(v >= 1.0f)) return s.SetError(INVALID_VALUE, what, "TEXTURE_MAX_ANISOTROPY is below 1 (or NaN)");
+      p.max_anisotropy = v;
+      break;
+    case TEXTURE_COMPARE_MODE:
+      if (iv != int(NONE) && iv != int(COMPARE_REF_TO_TEXTURE)) return s.SetError(INVALID_ENUM, what, "compare mode must be NONE or COMPARE_REF_TO_TEXTURE");
+      p.compare_mode = Enum(iv);
+      break;
+    case TEXTURE_COMPARE_FUNC:
+      if (iv < int(NEVER) || iv > int(ALWAYS)) return s.SetError(INVALID_ENUM, what, "not a comparison function");
+      p.compare_func = Enum(iv);
+      break;
+    case TEXTURE_BORDER_COLOR:
+      p.border = glm::vec4(values[0], values[1], values[2], values[3]);
+      p.border_integer = 0;
+      break;
+    default: return s.SetError(INVALID_ENUM, what, "an enum argument is not one this call accepts");
+  }
+}
+
+// TEXTURE_BORDER_COLOR's integers of TexParameteriv and SamplerParameteriv, mapped to [-1, 1] as OpenGL maps signed
+// normalized values (i / (2^31 - 1)).
+void BorderOfIntegers(const int* values, float out[4]) {
+  for (int k = 0; k < 4; ++k) out[k] = float(std::max(double(values[k]) / 2147483647.0, -1.0));
+}
+
+}  // namespace
+
 void Context::TexParameterfv(Enum target, Enum pname, const float* values) {
   state_->Sync(__func__);
   auto& s = *state_;
@@ -280,50 +345,7 @@ void Context::TexParameterfv(Enum target, Enum pname, const float* values) {
   if (values == nullptr) return s.SetError(INVALID_VALUE, __func__, "values is null");
   detail::TextureObject* tex = s.Bound(target);
   if (!tex) return s.SetError(INVALID_OPERATION, __func__, "no texture is bound to that target of the active unit");
-  detail::SamplerParams& p = tex->params;
-  const float v = values[0];
-  const int iv = std::isfinite(v) ? int(std::clamp(v, -2e9f, 2e9f)) : -1;
-  switch (pname) {
-    case TEXTURE_MIN_FILTER:
-      if (!IsMinFilter(iv)) return s.SetError(INVALID_ENUM, __func__, "not a minification filter");
-      p.min_filter = Enum(iv);
-      break;
-    case TEXTURE_MAG_FILTER:
-      if (iv != NEAREST && iv != LINEAR) return s.SetError(INVALID_ENUM, __func__, "magnification filter must be NEAREST or LINEAR");
-      p.mag_filter = Enum(iv);
-      break;
-    case TEXTURE_WRAP_S:
-    case TEXTURE_WRAP_T:
-    case TEXTURE_WRAP_R:
-      if (!IsWrap(iv)) return s.SetError(INVALID_ENUM, __func__, "wrap mode must be REPEAT, MIRRORED_REPEAT, CLAMP_TO_EDGE or CLAMP_TO_BORDER");
-      (pname == TEXTURE_WRAP_S ? p.wrap_s : pname == TEXTURE_WRAP_T ? p.wrap_t : p.wrap_r) = Enum(iv);
-      break;
-    case TEXTURE_BASE_LEVEL:
-    case TEXTURE_MAX_LEVEL:
-      if (iv < 0) return s.SetError(INVALID_VALUE, __func__, "level is negative");
-      (pname == TEXTURE_BASE_LEVEL ? p.base_level : p.max_level) = iv;
-      break;
-    case TEXTURE_MIN_LOD:
-    case TEXTURE_MAX_LOD:
-    case TEXTURE_LOD_BIAS:
-      if (std::isnan(v)) return s.SetError(INVALID_VALUE, __func__, "value is NaN");
-      (pname == TEXTURE_MIN_LOD ? p.min_lod : pname == TEXTURE_MAX_LOD ? p.max_lod : p.lod_bias) = v;
-      break;
-    case TEXTURE_MAX_ANISOTROPY:
-      if (!(v >= 1.0f)) return s.SetError(INVALID_VALUE, __func__, "TEXTURE_MAX_ANISOTROPY is below 1 (or NaN)");
-      p.max_anisotropy = v;
-      break;
-    case TEXTURE_COMPARE_MODE:
-      if (iv != int(NONE) && iv != int(COMPARE_REF_TO_TEXTURE)) return s.SetError(INVALID_ENUM, __func__, "compare mode must be NONE or COMPARE_REF_TO_TEXTURE");
-      p.compare_mode = Enum(iv);
-      break;
-    case TEXTURE_COMPARE_FUNC:
-      if (iv < int(NEVER) || iv > int(ALWAYS)) return s.SetError(INVALID_ENUM, __func__, "not a comparison function");
-      p.compare_func = Enum(iv);
-      break;
-    case TEXTURE_BORDER_COLOR: p.border = glm::vec4(values[0], values[1], values[2], values[3]); break;
-    default: return s.SetError(INVALID_ENUM, __func__, "an enum argument is not one this call accepts");
-  }
+  SetSamplerParameter(s, __func__, tex->params, pname, values, true);
 }
 
 void Context::TexParameteri(Enum target, Enum pname, int value) {
@@ -343,19 +365,39 @@ void Context::TexParameteriv(Enum target, Enum pname, const int* values) {
   if (values == nullptr) return state_->SetError(INVALID_VALUE, __func__, "values is null");
   if (pname != TEXTURE_BORDER_COLOR) return TexParameteri(target, pname, values[0]);
   float v[4];
-  for (int k = 0; k < 4; ++k) v[k] = float(std::max(double(values[k]) / 2147483647.0, -1.0));
+  BorderOfIntegers(values, v);
   TexParameterfv(target, pname, v);
 }
 
 namespace {
+
+bool SamplerParameterValues(ContextState& s, const char* what, const detail::SamplerParams& p, Enum pname,
+                            float out[4], int& n, bool levels);
+
+// GetTexParameteriv's and GetSamplerParameteriv's integers of the values `v`: the border colour maps [-1, 1] onto
+// the integers, rounded (OpenGL 4.6, equation 2.4), so that what TexParameteriv set reads back as it was (-1 is
+// stored as -1 / (2^31 - 1), which truncation would read as 0); the others round. NaN reads as 0.
+void IntegersOfValues(Enum pname, const float* v, int n, int* params) {
+  for (int k = 0; k < n; ++k)
+    params[k] = std::isnan(v[k]) ? 0 : pname == TEXTURE_BORDER_COLOR ? int(std::lround(std::clamp(double(v[k]), -1.0, 1.0) * 2147483647.0))
+                                              : int(std::lround(std::clamp(double(v[k]), -2147483648.0, 2147483647.0)));
+}
 
 // The sampling state `pname` of the texture bound to target, as up to four floats; false with the error set.
 bool TexParameterValues(ContextState& s, const char* what, Enum target, Enum pname, float out[4], int& n) {
   if (detail::TextureKind(target) < 0 || target == TEXTURE_2D_MULTISAMPLE) return s.SetError(INVALID_ENUM, what, "target must be TEXTURE_2D, TEXTURE_CUBE_MAP, TEXTURE_2D_ARRAY or TEXTURE_3D (a multisample texture has no sampling state)"), false;
   const detail::TextureObject* tex = s.Bound(target);
   if (!tex) return s.SetError(INVALID_OPERATION, what, "no texture is bound to that target of the active unit"), false;
-  const detail::SamplerParams& p = tex->params;
+  return SamplerParameterValues(s, what, tex->params, pname, out, n, true);
+}
+
+// The value of sampling parameter `pname` of `p` (a texture's, or with `levels` false a sampler object's) as up to
+// four floats; false with the error set.
+bool SamplerParameterValues(ContextState& s, const char* what, const detail::SamplerParams& p, Enum pname,
+                            float out[4], int& n, bool levels) {
   n = 1;
+  if (!levels && (pname == TEXTURE_BASE_LEVEL || pname == TEXTURE_MAX_LEVEL))
+    return s.SetError(INVALID_ENUM, what, "a sampler object has no levels: TEXTURE_BASE_LEVEL and TEXTURE_MAX_LEVEL are the texture's"), false;
   switch (pname) {
     case TEXTURE_MIN_FILTER: out[0] = float(p.min_filter); return true;
     case TEXTURE_MAG_FILTER: out[0] = float(p.mag_filter); return true;
@@ -420,12 +462,7 @@ void Context::GetTexParameteriv(Enum target, Enum pname, int* params) const {
   float v[4];
   int n = 0;
   if (!TexParameterValues(*state_, __func__, target, pname, v, n) || !NotNull(*state_, __func__, params, "params")) return;
-  // The border colour maps [-1, 1] onto the integers, rounded (OpenGL 4.6, equation 2.4), so that what
-  // TexParameteriv set reads back as it was (-1 is stored as -1 / (2^31 - 1), which truncation would read as 0); the
-  // others round. NaN reads as 0.
-  for (int k = 0; k < n; ++k)
-    params[k] = std::isnan(v[k]) ? 0 : pname == TEXTURE_BORDER_COLOR ? int(std::lround(std::clamp(double(v[k]), -1.0, 1.0) * 2147483647.0))
-                                              : int(std::lround(std::clamp(double(v[k]), -2147483648.0, 2147483647.0)));
+  IntegersOfValues(pname, v, n, params);
 }
 
 void Context::GetTexLevelParameteriv(Enum target, int level, Enum pname, int* params) const {
@@ -468,6 +505,156 @@ void Context::PixelStore(Enum pname, int value) {
   }
   if (value < 0) return s.SetError(INVALID_VALUE, __func__, "value is negative");
   *field = value;
+}
+
+// ---- Sampler objects ------------------------------------------------------------------------------------------
+
+std::uint32_t Context::GenSampler() {
+  return NewId(state_->samplers, state_->next_sampler, [] { return std::make_shared<detail::SamplerParams>(); });
+}
+
+void Context::GenSamplers(int n, std::uint32_t* ids) {
+  GenMany(*state_, __func__, n, ids, [this] { return GenSampler(); });
+}
+
+void Context::DeleteSamplers(int n, const std::uint32_t* ids) {
+  DeleteMany(*state_, __func__, n, ids, [this](std::uint32_t id) { DeleteSampler(id); });
+}
+
+void Context::DeleteSampler(std::uint32_t sampler) {
+  auto& s = *state_;
+  auto it = s.samplers.find(sampler);
+  if (it == s.samplers.end()) return;
+  for (TextureUnit& u : s.units)  // (recorded draws hold copies of its state)
+    if (u.sampler == it->second) u.sampler.reset();
+  s.samplers.erase(it);
+}
+
+bool Context::IsSampler(std::uint32_t sampler) const { return state_->samplers.count(sampler) != 0; }
+
+void Context::BindSampler(int unit, std::uint32_t sampler) {
+  auto& s = *state_;
+  if (unit < 0 || unit >= kMaxTextureUnits) return s.SetError(INVALID_VALUE, __func__, "unit must be 0 to kMaxTextureUnits - 1 (a number, not TEXTURE0 + i)");
+  std::shared_ptr<detail::SamplerParams> object;
+  if (sampler != 0) {
+    auto it = s.samplers.find(sampler);
+    if (it == s.samplers.end()) return s.SetError(INVALID_OPERATION, __func__, "not a sampler id made by GenSampler (or it was deleted)");
+    object = it->second;
+  }
+  s.units[unit].sampler = std::move(object);
+}
+
+namespace {
+
+// The sampler object `sampler`; null with INVALID_OPERATION set when there is none.
+detail::SamplerParams* SamplerOf(ContextState& s, const char* what, std::uint32_t sampler) {
+  auto it = s.samplers.find(sampler);
+  if (it == s.samplers.end()) return s.SetError(INVALID_OPERATION, what, "not a sampler id made by GenSampler (or it was deleted)"), nullptr;
+  return it->second.get();
+}
+
+}  // namespace
+
+void Context::SamplerParameterfv(std::uint32_t sampler, Enum pname, const float* values) {
+  auto& s = *state_;
+  if (detail::SamplerParams* p = SamplerOf(s, __func__, sampler)) SetSamplerParameter(s, __func__, *p, pname, values, false);
+}
+
+void Context::SamplerParameteri(std::uint32_t sampler, Enum pname, int value) {
+  if (pname == TEXTURE_BORDER_COLOR) return state_->SetError(INVALID_ENUM, __func__, "TEXTURE_BORDER_COLOR takes four values: use SamplerParameterfv");
+  const float v = float(value);
+  auto& s = *state_;
+  if (detail::SamplerParams* p = SamplerOf(s, __func__, sampler)) SetSamplerParameter(s, __func__, *p, pname, &v, false);
+}
+
+void Context::SamplerParameterf(std::uint32_t sampler, Enum pname, float value) {
+  if (pname == TEXTURE_BORDER_COLOR) return state_->SetError(INVALID_ENUM, __func__, "TEXTURE_BORDER_COLOR takes four values: use SamplerParameterfv");
+  auto& s = *state_;
+  if (detail::SamplerParams* p = SamplerOf(s, __func__, sampler)) SetSamplerParameter(s, __func__, *p, pname, &value, false);
+}
+
+void Context::SamplerParameteriv(std::uint32_t sampler, Enum pname, const int* values) {
+  auto& s = *state_;
+  detail::SamplerParams* p = SamplerOf(s, __func__, sampler);
+  if (!p) return;
+  if (values == nullptr) return s.SetError(INVALID_VALUE, __func__, "values is null");
+  float v[4] = {float(values[0]), 0.0f, 0.0f, 0.0f};
+  if (pname == TEXTURE_BORDER_COLOR) BorderOfIntegers(values, v);
+  SetSamplerParameter(s, __func__, *p, pname, v, false);
+}
+
+namespace {
+
+// SamplerParameterIiv and SamplerParameterIuiv: the border colour's four numbers kept as they are (`kind` 1 signed,
+// 2 unsigned), as floats for sampling; any other name as SamplerParameteriv.
+template <class T>
+void SetSamplerParameterI(ContextState& s, const char* what, std::uint32_t sampler, Enum pname, const T* values, int kind) {
+  detail::SamplerParams* p = SamplerOf(s, what, sampler);
+  if (!p) return;
+  if (values == nullptr) return s.SetError(INVALID_VALUE, what, "values is null");
+  if (pname != TEXTURE_BORDER_COLOR) {
+    const float v = float(values[0]);
+    return SetSamplerParameter(s, what, *p, pname, &v, false);
+  }
+  for (int k = 0; k < 4; ++k) {
+    p->border[k] = float(values[k]);
+    p->border_bits[k] = std::uint32_t(values[k]);
+  }
+  p->border_integer = kind;
+}
+
+// GetSamplerParameterIiv and GetSamplerParameterIuiv: the border colour's numbers as they were set by the integer
+// forms (else its floats, rounded and clamped to T's range); any other name as GetSamplerParameteriv.
+template <class T>
+void SamplerParameterI(ContextState& s, const char* what, std::uint32_t sampler, Enum pname, T* params) {
+  const detail::SamplerParams* p = SamplerOf(s, what, sampler);
+  float v[4];
+  int n = 0;
+  if (!p || !SamplerParameterValues(s, what, *p, pname, v, n, false) || !NotNull(s, what, params, "params")) return;
+  for (int k = 0; k < n; ++k) {
+    if (pname == TEXTURE_BORDER_COLOR && p->border_integer != 0) {
+      params[k] = T(p->border_bits[k]);
+      continue;
+    }
+    const double lo = double(std::numeric_limits<T>::min()), hi = double(std::numeric_limits<T>::max());
+    params[k] = std::isnan(v[k]) ? T(0) : T(std::llround(std::clamp(double(v[k]), lo, hi)));
+  }
+}
+
+}  // namespace
+
+void Context::SamplerParameterIiv(std::uint32_t sampler, Enum pname, const int* values) {
+  SetSamplerParameterI(*state_, __func__, sampler, pname, values, 1);
+}
+
+void Context::SamplerParameterIuiv(std::uint32_t sampler, Enum pname, const std::uint32_t* values) {
+  SetSamplerParameterI(*state_, __func__, sampler, pname, values, 2);
+}
+
+void Context::GetSamplerParameterfv(std::uint32_t sampler, Enum pname, float* params) const {
+  auto& s = *state_;
+  const detail::SamplerParams* p = SamplerOf(s, __func__, sampler);
+  float v[4];
+  int n = 0;
+  if (!p || !SamplerParameterValues(s, __func__, *p, pname, v, n, false) || !NotNull(s, __func__, params, "params")) return;
+  std::copy(v, v + n, params);
+}
+
+void Context::GetSamplerParameteriv(std::uint32_t sampler, Enum pname, int* params) const {
+  auto& s = *state_;
+  const detail::SamplerParams* p = SamplerOf(s, __func__, sampler);
+  float v[4];
+  int n = 0;
+  if (!p || !SamplerParameterValues(s, __func__, *p, pname, v, n, false) || !NotNull(s, __func__, params, "params")) return;
+  IntegersOfValues(pname, v, n, params);
+}
+
+void Context::GetSamplerParameterIiv(std::uint32_t sampler, Enum pname, int* params) const {
+  SamplerParameterI(*state_, __func__, sampler, pname, params);
+}
+
+void Context::GetSamplerParameterIuiv(std::uint32_t sampler, Enum pname, std::uint32_t* params) const {
+  SamplerParameterI(*state_, __func__, sampler, pname, params);
 }
 
 }  // namespace softgl

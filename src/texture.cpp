@@ -696,10 +696,16 @@ void GenerateMipmaps(TextureObject& texture) {
   }
 }
 
-TextureView MakeView(const TextureObject& texture) {
+TextureView MakeView(const TextureObject& texture, const SamplerParams* sampler) {
   TextureView view;
   view.texture = &texture;
-  const SamplerParams& p = texture.params;
+  view.params = texture.params;
+  if (sampler) {  // every sampling parameter but the levels, which belong to the texture
+    view.params = *sampler;
+    view.params.base_level = texture.params.base_level;
+    view.params.max_level = texture.params.max_level;
+  }
+  const SamplerParams& p = view.params;
   view.base = p.base_level;
   if (p.base_level < 0 || p.base_level >= kMaxLevels || p.base_level > p.max_level) return view;
   if (texture.target == TEXTURE_2D_MULTISAMPLE) {  // one image, fetched by sample: no levels, no filtering

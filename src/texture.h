@@ -210,10 +210,15 @@ struct SamplerParams {
   Enum mag_filter = LINEAR;
   Enum wrap_s = REPEAT, wrap_t = REPEAT, wrap_r = REPEAT;
   glm::vec4 border{0.0f};
+  // TEXTURE_BORDER_COLOR as SamplerParameterIiv / Iuiv gave it (border_integer: 1 signed, 2 unsigned; 0: as
+  // floats): the numbers, for the queries (`border` holds them as floats, which sampling reads).
+  int border_integer = 0;
+  std::uint32_t border_bits[4] = {0, 0, 0, 0};
   int base_level = 0, max_level = 1000;
   float min_lod = -1000.0f, max_lod = 1000.0f, lod_bias = 0.0f;
   float max_anisotropy = 1.0f;  // TEXTURE_MAX_ANISOTROPY, >= 1 (sampling takes at most kMaxAnisotropy)
   Enum compare_mode = NONE, compare_func = LEQUAL;
+  bool operator==(const SamplerParams&) const = default;
 };
 
 struct TextureObject {
@@ -247,6 +252,9 @@ inline constexpr UnitViews kKindUnits[kTextureKinds] = {&Textures::unit_2d, &Tex
 /// A texture as one draw samples it: completeness and the levels in use resolved once.
 struct TextureView {
   const TextureObject* texture = nullptr;
+  // The sampling state: the texture's own, or with a sampler object bound to the unit, the sampler's (all but
+  // the base and maximum levels, which stay the texture's).
+  SamplerParams params;
   bool complete = false;
   bool depth = false;  // a DEPTH_COMPONENT format
   int base = 0;        // level_base
@@ -268,8 +276,9 @@ struct TextureView {
   bool operator==(const TextureView&) const = default;
 };
 
-/// Resolves a texture for sampling (OpenGL 4.6, section 8.17, texture completeness).
-TextureView MakeView(const TextureObject& texture);
+/// Resolves a texture for sampling (OpenGL 4.6, section 8.17, texture completeness), with the sampling state of
+/// `sampler` (a sampler object bound to the unit: OpenGL 4.6, section 8.2) in place of the texture's where given.
+TextureView MakeView(const TextureObject& texture, const SamplerParams* sampler = nullptr);
 
 /// Number of colour or depth channels of an internal format, 0 if softgl does not support it.
 int FormatComponents(Enum internal_format);

@@ -82,7 +82,7 @@ struct DepthCompare {
 // `layer` is the plane of a layered level (a 2D array's layer, a 3D texture's slice), already wrapped.
 glm::vec4 Fetch(const TextureView& view, const TextureLevel& level, long i, long j, const DepthCompare& cmp,
                 int layer = 0) {
-  const SamplerParams& p = view.texture->params;
+  const SamplerParams& p = view.params;
   const int wi = Wrap(p.wrap_s, i, level.width), wj = Wrap(p.wrap_t, j, level.height);
   const glm::vec4 t = (wi >= 0 && wj >= 0) ? level.Sampled(wi, layer * level.height + wj) : view.border_raw;
   if (cmp.on) return glm::vec4(detail::Compare(cmp.func, cmp.ref, t.r) ? 1.0f : 0.0f);
@@ -119,7 +119,7 @@ SOFTGL_INLINE glm::vec4 FilterLevel(const TextureView& view, const TextureLevel&
 // One level of a 3D texture, NEAREST or LINEAR (section 8.14.2): the slices wrapped by TEXTURE_WRAP_R, LINEAR the
 // two slices' bilinear samples weighted by the fraction of w.
 SOFTGL_INLINE glm::vec4 FilterVolume(const TextureView& view, const TextureLevel& level, Enum filter, glm::vec3 str) {
-  const Enum wrap_r = view.texture->params.wrap_r;
+  const Enum wrap_r = view.params.wrap_r;
   const float w = TexelCoord(str.z, level.depth);
   auto slice = [&](long k) {
     const int wk = Wrap(wrap_r, k, level.depth);
@@ -174,7 +174,7 @@ SOFTGL_INLINE float PiecewiseLog2(float x) {
 // makes, which keeps trilinear filtering within +-1 of it where the exact logarithm differs by up to 4
 // (docs/conformance.md).
 SOFTGL_INLINE float LambdaOfRho2(const TextureView& view, float rho2, float shader_bias) {
-  const SamplerParams& p = view.texture->params;
+  const SamplerParams& p = view.params;
   const float bias = std::clamp(p.lod_bias + shader_bias, -16.0f, 16.0f);
   float lambda = 0.5f * PiecewiseLog2(rho2) + bias;
   if (std::isnan(lambda)) lambda = 0.0f;
@@ -195,7 +195,7 @@ SOFTGL_INLINE float LambdaVolume(const TextureView& view, glm::vec3 dx, glm::vec
 }
 // textureLod's lambda: lod plus TEXTURE_LOD_BIAS, clamped to [min_lod, max_lod]; NaN as 0.
 SOFTGL_INLINE float ExplicitLambda(const TextureView& view, float lod) {
-  const SamplerParams& p = view.texture->params;
+  const SamplerParams& p = view.params;
   const float lambda = std::clamp(lod + std::clamp(p.lod_bias, -16.0f, 16.0f), p.min_lod, p.max_lod);
   return std::isnan(lambda) ? 0.0f : lambda;
 }
@@ -204,7 +204,7 @@ SOFTGL_INLINE float ExplicitLambda(const TextureView& view, float lod) {
 // filter(d, f) filters level d with NEAREST or LINEAR f.
 template <class Filter>
 SOFTGL_INLINE glm::vec4 SampleMip(const TextureView& view, float lambda, Filter&& filter) {
-  const SamplerParams& p = view.texture->params;
+  const SamplerParams& p = view.params;
   const bool nearest_mip = p.min_filter == NEAREST_MIPMAP_NEAREST || p.min_filter == LINEAR_MIPMAP_NEAREST;
   const float c = (p.mag_filter == LINEAR && nearest_mip) ? 0.5f : 0.0f;
   if (lambda <= c) return filter(view.base, p.mag_filter);
@@ -819,7 +819,7 @@ SOFTGL_INLINE typename V<W>::I LambdaOfRho2Lanes(const TextureView& view, typena
   F m;
   std::memcpy(&m, &m_bits, sizeof m);
   const F log2 = __builtin_convertvector(biased - 127, F) + (m - 1.0f);
-  const SamplerParams& p = view.texture->params;
+  const SamplerParams& p = view.params;
   const float b = std::clamp(p.lod_bias + bias, -16.0f, 16.0f);
   F lam = 0.5f * log2 + b;
   lam = lam == lam ? lam : F{} + 0.0f;
@@ -833,7 +833,7 @@ SOFTGL_INLINE typename V<W>::I LambdaOfRho2Lanes(const TextureView& view, typena
 template <int W>
 SOFTGL_INLINE typename V<W>::F ExplicitLambdaLanes(const TextureView& view, typename V<W>::F lod) {
   using F = typename V<W>::F;
-  const SamplerParams& p = view.texture->params;
+  const SamplerParams& p = view.params;
   const F lo = F{} + p.min_lod, hi = F{} + p.max_lod;
   F lam = lod + std::clamp(p.lod_bias, -16.0f, 16.0f);
   lam = lam < lo ? lo : (hi < lam ? hi : lam);  // std::clamp
@@ -918,7 +918,7 @@ SOFTGL_INLINE void SampleTexelLanes(const TextureView& view, Lookup kind, const 
   const bool volume = kind == Lookup::k3D || kind == Lookup::k3DLod;
   const bool explicit_lod =
       kind == Lookup::kLod || kind == Lookup::kArrayLod || kind == Lookup::kCubeLod || kind == Lookup::k3DLod;
-  const SamplerParams& p = view.texture->params;
+  const SamplerParams& p = view.params;
   LanesWrap<W> wr;
   wr.s = p.wrap_s;
   wr.t = p.wrap_t;
@@ -1185,7 +1185,7 @@ SOFTGL_INLINE void SampleBaseLanes(const TextureView& view, Lookup kind, const T
                                    float out[4][16]) {
   using F = typename V<W>::F;
   using I = typename V<W>::I;
-  const SamplerParams& p = view.texture->params;
+  const SamplerParams& p = view.params;
   LanesWrap<W> wr;
   wr.s = p.wrap_s;
   wr.t = p.wrap_t;
@@ -1294,7 +1294,7 @@ SampleTexelLanesFn SampleTexelLanesFor(const TextureView& view, Lookup kind) {
       SOFTGL_CHOOSE(SampleBaseLanes, <1, false>), SOFTGL_CHOOSE(SampleBaseLanes, <2, false>),
       SOFTGL_CHOOSE(SampleBaseLanes, <4, false>), SOFTGL_CHOOSE(SampleBaseLanes, <4, true>),
       SOFTGL_CHOOSE(SampleBaseLanes, <0, false>)};
-  const SamplerParams& p = view.texture->params;
+  const SamplerParams& p = view.params;
   const bool explicit_lod =
       kind == Lookup::kLod || kind == Lookup::kArrayLod || kind == Lookup::kCubeLod || kind == Lookup::k3DLod;
   const bool shadow = kind == Lookup::kShadow || kind == Lookup::kArrayShadow;
@@ -1367,10 +1367,10 @@ glm::vec4 SampleCubeOf(const TextureView& v, glm::vec3 dir, glm::vec3 ddir_dx, g
 // SampleShadow on a 2D texture or one layer of a 2D array.
 float ShadowOf(const TextureView* v, glm::vec2 uv, int layer_or_minus, float r, float ref, glm::vec2 duv_dx,
                glm::vec2 duv_dy) {
-  if (!v || !v->depth || v->texture->params.compare_mode != COMPARE_REF_TO_TEXTURE) return 0.0f;
+  if (!v || !v->depth || v->params.compare_mode != COMPARE_REF_TO_TEXTURE) return 0.0f;
   DepthCompare cmp;
   cmp.on = true;
-  cmp.func = v->texture->params.compare_func;
+  cmp.func = v->params.compare_func;
   cmp.ref = std::isnan(ref) ? 0.0f : std::clamp(ref, 0.0f, 1.0f);  // depth textures hold [0, 1]
   const int layer = layer_or_minus < 0 ? ArrayLayer(*v, r) : 0;
   return SampleFace(*v, 0, uv, Lambda(*v, duv_dx, duv_dy, 0.0f), cmp, layer).r;
@@ -1432,7 +1432,7 @@ void SampleBlock(const TextureView* v, Lookup kind, const Textures::Lanes& c, fl
     return;
   }
   const bool shadow = kind == Lookup::kShadow || kind == Lookup::kArrayShadow;
-  if (shadow && (!v->depth || v->texture->params.compare_mode != COMPARE_REF_TO_TEXTURE)) {
+  if (shadow && (!v->depth || v->params.compare_mode != COMPARE_REF_TO_TEXTURE)) {
     for (int l = 0; l < 16; ++l)
       for (int ch = 0; ch < 4; ++ch) out[ch][l] = 0.0f;
     return;

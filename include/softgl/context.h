@@ -329,6 +329,45 @@ class Context {
   /// as integers, mapped back from [-1, 1]). Bad target or name: INVALID_ENUM; nothing bound: INVALID_OPERATION.
   void GetTexParameterfv(Enum target, Enum pname, float* params) const;
   void GetTexParameteriv(Enum target, Enum pname, int* params) const;
+
+  // ---- Sampler objects (OpenGL 3.3, section 3.8.2) ----
+  // A sampler object holds the sampling state TexParameter sets, but the levels: bound to a unit, it is used in
+  // place of the state of every texture bound to that unit (TEXTURE_BASE_LEVEL and TEXTURE_MAX_LEVEL stay the
+  // texture's), completeness included (a sampler that does not mipmap makes a texture of one level complete).
+
+  /// Creates a sampler object, with TexParameter's defaults, and returns its id (never 0).
+  std::uint32_t GenSampler();
+  void GenSamplers(int n, std::uint32_t* ids);
+  /// Deletes a sampler object: every unit it is bound to has 0 bound instead. 0 and unknown ids are ignored.
+  void DeleteSampler(std::uint32_t sampler);
+  void DeleteSamplers(int n, const std::uint32_t* ids);
+  bool IsSampler(std::uint32_t sampler) const;
+  /// Binds a sampler object to texture unit `unit` (0 to kMaxTextureUnits - 1: a number, not TEXTURE0 + i; 0
+  /// unbinds). Unit out of range: INVALID_VALUE; an id not made by GenSampler: INVALID_OPERATION. Draws recorded
+  /// before keep the state they were recorded with. GetIntegerv(SAMPLER_BINDING) gives the active unit's.
+  void BindSampler(int unit, std::uint32_t sampler);
+  /// A sampler object's state, by TexParameter's names and values but TEXTURE_BASE_LEVEL and TEXTURE_MAX_LEVEL
+  /// (INVALID_ENUM): TEXTURE_MIN_FILTER, TEXTURE_MAG_FILTER, TEXTURE_WRAP_S/T/R, TEXTURE_MIN_LOD, TEXTURE_MAX_LOD,
+  /// TEXTURE_LOD_BIAS, TEXTURE_MAX_ANISOTROPY, TEXTURE_COMPARE_MODE, TEXTURE_COMPARE_FUNC, TEXTURE_BORDER_COLOR (the
+  /// vector forms only). Not a sampler object: INVALID_OPERATION; the other errors as TexParameter's.
+  void SamplerParameteri(std::uint32_t sampler, Enum pname, int value);
+  void SamplerParameterf(std::uint32_t sampler, Enum pname, float value);
+  void SamplerParameterfv(std::uint32_t sampler, Enum pname, const float* values);
+  /// As SamplerParameterfv; TEXTURE_BORDER_COLOR's integers map to [-1, 1] as TexParameteriv maps them.
+  void SamplerParameteriv(std::uint32_t sampler, Enum pname, const int* values);
+  /// The integer forms: TEXTURE_BORDER_COLOR's four integers (signed, or unsigned) kept as the numbers they are,
+  /// for the integer textures that would read them (softgl's textures are not integer ones, and sample the
+  /// border colour as those floats); any other name as SamplerParameteriv.
+  void SamplerParameterIiv(std::uint32_t sampler, Enum pname, const int* values);
+  void SamplerParameterIuiv(std::uint32_t sampler, Enum pname, const std::uint32_t* values);
+  /// A sampler object's state, by the names SamplerParameter takes (TEXTURE_BORDER_COLOR: four values; iv maps
+  /// them back from [-1, 1], Iiv and Iuiv give them as numbers). Not a sampler object: INVALID_OPERATION; another
+  /// name: INVALID_ENUM.
+  void GetSamplerParameterfv(std::uint32_t sampler, Enum pname, float* params) const;
+  void GetSamplerParameteriv(std::uint32_t sampler, Enum pname, int* params) const;
+  void GetSamplerParameterIiv(std::uint32_t sampler, Enum pname, int* params) const;
+  void GetSamplerParameterIuiv(std::uint32_t sampler, Enum pname, std::uint32_t* params) const;
+
   /// One level of the bound texture (target TEXTURE_2D, a cube face, TEXTURE_2D_ARRAY, TEXTURE_3D or
   /// TEXTURE_2D_MULTISAMPLE): TEXTURE_WIDTH, TEXTURE_HEIGHT, TEXTURE_DEPTH (layers or slices; 1 for 2D),
   /// TEXTURE_SAMPLES (0 but for a multisample texture), TEXTURE_FIXED_SAMPLE_LOCATIONS (1),
@@ -640,8 +679,8 @@ class Context {
   /// glGet*: the state named by pname, converted as OpenGL converts it (booleans to 0 / 1; floats to integers by
   /// rounding, except colours and depths, which map [-1, 1] linearly onto the integer range; GetIntegerv clamps to
   /// int). Names: the Enable capabilities; the bindings (ARRAY_BUFFER_BINDING, ELEMENT_ARRAY_BUFFER_BINDING,
-  /// COPY_READ/WRITE_BUFFER_BINDING, VERTEX_ARRAY_BINDING, ACTIVE_TEXTURE, TEXTURE_BINDING_2D/CUBE_MAP of the
-  /// active unit, DRAW/READ_FRAMEBUFFER_BINDING, RENDERBUFFER_BINDING, DRAW_BUFFER0 + i (DRAW_BUFFER: the first),
+  /// COPY_READ/WRITE_BUFFER_BINDING, VERTEX_ARRAY_BINDING, ACTIVE_TEXTURE, TEXTURE_BINDING_2D/CUBE_MAP and
+  /// SAMPLER_BINDING of the active unit, DRAW/READ_FRAMEBUFFER_BINDING, RENDERBUFFER_BINDING, DRAW_BUFFER0 + i (DRAW_BUFFER: the first),
   /// READ_BUFFER); VIEWPORT, SCISSOR_BOX (4 values), DEPTH_RANGE
   /// (2); CULL_FACE_MODE, FRONT_FACE, POLYGON_MODE (2), POINT_SIZE, PROVOKING_VERTEX, POLYGON_OFFSET_FACTOR/UNITS,
   /// PRIMITIVE_RESTART_INDEX; DEPTH_FUNC, DEPTH_WRITEMASK, DEPTH_CLEAR_VALUE; STENCIL_FUNC, _REF, _VALUE_MASK,

@@ -361,6 +361,7 @@ inline constexpr Enum TEXTURE_BINDING_2D = 0x8069;
 inline constexpr Enum TEXTURE_BINDING_CUBE_MAP = 0x8514;
 inline constexpr Enum TEXTURE_BINDING_2D_ARRAY = 0x8C1D;
 inline constexpr Enum TEXTURE_BINDING_3D = 0x806A;
+inline constexpr Enum SAMPLER_BINDING = 0x8919;  // GetIntegerv: the sampler object bound to the active unit
 inline constexpr Enum TEXTURE_BINDING_2D_MULTISAMPLE = 0x9104;
 inline constexpr Enum DRAW_FRAMEBUFFER_BINDING = 0x8CA6;  // also FRAMEBUFFER_BINDING
 inline constexpr Enum READ_FRAMEBUFFER_BINDING = 0x8CAA;
