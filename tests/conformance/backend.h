@@ -191,6 +191,11 @@ class Backend {
   virtual std::vector<bool> GetBooleans(Enum pname, int count) = 0;
   /// The first error since the last call (glGetError).
   virtual Enum GetError() = 0;
+  /// Sampler objects: a new id, glBindSampler, glSamplerParameteri and glSamplerParameterfv.
+  virtual std::uint32_t GenSampler() = 0;
+  virtual void BindSampler(int unit, std::uint32_t sampler) = 0;
+  virtual void SamplerParameteri(std::uint32_t sampler, Enum pname, int value) = 0;
+  virtual void SamplerParameterfv(std::uint32_t sampler, Enum pname, const float* values) = 0;
   /// Query objects: a new id, glBeginQuery / glEndQuery, and QUERY_RESULT (64-bit).
   virtual std::uint32_t GenQuery() = 0;
   virtual void BeginQuery(Enum target, std::uint32_t id) = 0;

@@ -543,6 +543,12 @@ class GlBackend final : public Backend {
     glUseProgram(programs_[3]);
     glUniform1i(glGetUniformLocation(programs_[3], "u_tex"), 0);
   }
+  std::uint32_t GenSampler() override { return GenOne(glGenSamplers); }
+  void BindSampler(int unit, std::uint32_t sampler) override { glBindSampler(GLuint(unit), sampler); }
+  void SamplerParameteri(std::uint32_t sampler, Enum pname, int value) override { glSamplerParameteri(sampler, pname, value); }
+  void SamplerParameterfv(std::uint32_t sampler, Enum pname, const float* values) override {
+    glSamplerParameterfv(sampler, pname, values);
+  }
   std::uint32_t GenQuery() override { return GenOne(glGenQueries); }
   void BeginQuery(Enum target, std::uint32_t id) override { glBeginQuery(target, id); }
   void EndQuery(Enum target) override { glEndQuery(target); }

@@ -496,6 +496,12 @@ class SoftglBackend final : public Backend {
     gl_.TexParameteri(softgl::TEXTURE_2D, softgl::TEXTURE_WRAP_S, softgl::CLAMP_TO_EDGE);
     gl_.TexParameteri(softgl::TEXTURE_2D, softgl::TEXTURE_WRAP_T, softgl::CLAMP_TO_EDGE);
   }
+  std::uint32_t GenSampler() override { return gl_.GenSampler(); }
+  void BindSampler(int unit, std::uint32_t sampler) override { gl_.BindSampler(unit, sampler); }
+  void SamplerParameteri(std::uint32_t sampler, Enum pname, int value) override { gl_.SamplerParameteri(sampler, pname, value); }
+  void SamplerParameterfv(std::uint32_t sampler, Enum pname, const float* values) override {
+    gl_.SamplerParameterfv(sampler, pname, values);
+  }
   std::uint32_t GenQuery() override { return gl_.GenQuery(); }
   void BeginQuery(Enum target, std::uint32_t id) override { gl_.BeginQuery(target, id); }
   void EndQuery(Enum target) override { gl_.EndQuery(target); }

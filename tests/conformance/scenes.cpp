@@ -636,6 +636,52 @@ void TextureWraps(Backend& b) {
   }
 }
 
+// Sampler objects: texture_wraps' quads with the texture's own state left at NEAREST / REPEAT, and each quad's
+// wrap modes, filters and border colour from a sampler object bound to unit 0; then a trilinear receding floor
+// whose LOD bias and LOD range come from a sampler, and a last quad drawn with the sampler unbound (the texture's
+// NEAREST / REPEAT again).
+void SamplerObjects(Backend& b) {
+  ClearBlack(b);
+  const Enum wraps[4] = {REPEAT, MIRRORED_REPEAT, CLAMP_TO_EDGE, CLAMP_TO_BORDER};
+  TextureDesc d = PatternTexture(false);
+  d.levels.resize(1);
+  d.levels[0].width = d.levels[0].height = 64;
+  d.min_filter = d.mag_filter = NEAREST;
+  b.SetTexture(d);
+  const std::uint32_t sampler = b.GenSampler();
+  b.BindSampler(0, sampler);
+  const glm::vec4 border(0.2f, 0.6f, 1.0f, 1.0f);
+  b.SamplerParameterfv(sampler, TEXTURE_BORDER_COLOR, &border[0]);
+  for (int i = 0; i < 4; ++i) {
+    b.SamplerParameteri(sampler, TEXTURE_MIN_FILTER, i < 2 ? LINEAR : NEAREST);
+    b.SamplerParameteri(sampler, TEXTURE_MAG_FILTER, i < 2 ? LINEAR : NEAREST);
+    b.SamplerParameteri(sampler, TEXTURE_WRAP_S, int(wraps[i]));
+    b.SamplerParameteri(sampler, TEXTURE_WRAP_T, int(wraps[(i + 3) % 4]));
+    const float x0 = float(i) * 32;
+    b.Draw(TRIANGLES,
+           QuadWith({Win(x0, 0), Win(x0 + 32, 0), Win(x0 + 32, 48), Win(x0, 48)},
+                    Uv({-1.25f, -1.25f}, {2.25f, -1.25f}, {2.25f, 2.25f}, {-1.25f, 2.25f})),
+           Program::kTexture);
+  }
+  TextureDesc mip = PatternTexture(true);
+  mip.min_filter = mip.mag_filter = NEAREST;
+  b.SetTexture(mip);
+  b.SamplerParameteri(sampler, TEXTURE_MIN_FILTER, LINEAR_MIPMAP_LINEAR);
+  b.SamplerParameteri(sampler, TEXTURE_MAG_FILTER, LINEAR);
+  b.SamplerParameteri(sampler, TEXTURE_WRAP_S, REPEAT);
+  b.SamplerParameteri(sampler, TEXTURE_WRAP_T, REPEAT);
+  const float bias = 0.75f, min_lod = 0.5f, max_lod = 2.0f;
+  b.SamplerParameterfv(sampler, TEXTURE_LOD_BIAS, &bias);
+  b.SamplerParameterfv(sampler, TEXTURE_MIN_LOD, &min_lod);
+  b.SamplerParameterfv(sampler, TEXTURE_MAX_LOD, &max_lod);
+  RecedingPlane(b, 0, 48, 96, 80, 4.0f);
+  b.BindSampler(0, 0);
+  b.Draw(TRIANGLES,
+         QuadWith({Win(96, 48), Win(128, 48), Win(128, 128), Win(96, 128)},
+                  Uv({-0.5f, -0.5f}, {1.5f, -0.5f}, {1.5f, 1.5f}, {-0.5f, 1.5f})),
+         Program::kTexture);
+}
+
 void TextureGeneratedMipmaps(Backend& b) {
   ClearBlack(b);
   TextureDesc d = PatternTexture(false);
@@ -1589,6 +1635,7 @@ const std::vector<SceneInfo>& Scenes() {
       {"polygon_offset", kSize, kSize, Check::kExactWithDepth, PolygonOffset},
       {"texture_filters", kSize, kSize, Check::kTexture, TextureFilters},
       {"texture_wraps", kSize, kSize, Check::kTexture, TextureWraps},
+      {"sampler_objects", kSize, kSize, Check::kTexture, SamplerObjects},
       {"texture_generated_mipmaps", kSize, kSize, Check::kTexture, TextureGeneratedMipmaps},
       {"render_to_texture", kSize, kSize, Check::kTexture, RenderToTexture},
       {"texture_anisotropic", kSize, kSize, Check::kCoverage, TextureAnisotropic},

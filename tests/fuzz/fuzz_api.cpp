@@ -143,7 +143,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   };
   for (int step = 0; step < 200 && !in.Empty(); ++step) {
     const auto id = [&] { return std::uint32_t(in.Byte() % 8); };
-    switch (in.Byte() % 44) {
+    switch (in.Byte() % 45) {
       case 0: gl.GenBuffer(); break;
       case 1: gl.BindBuffer(in.Enum(kBufferTargets), id()); break;
       case 2: {
@@ -508,6 +508,32 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
             }
             break;
           }
+        }
+        break;
+      }
+      case 43: {  // sampler objects: made, bound to any unit (and past the last), set, read back, deleted
+        int iv[4] = {int(in.Enum(kParamValues)), in.Int(-9, 9), in.Get<int>(), in.Get<int>()};
+        std::uint32_t uv[4] = {in.Get<std::uint32_t>(), 0, 7, 0xFFFFFFFFu};
+        float fv[4] = {in.Float(), in.Float(), in.Float(), in.Float()};
+        const std::uint32_t pname = in.Byte() % 4 ? in.Enum(kParams) : TEXTURE_BORDER_COLOR;
+        switch (in.Byte() % 8) {
+          case 0: gl.GenSampler(); break;
+          case 1: gl.BindSampler(in.Int(-1, kMaxTextureUnits), id()); break;
+          case 2: gl.SamplerParameteri(id(), pname, iv[0]); break;
+          case 3: gl.SamplerParameterfv(id(), pname, in.Byte() % 8 ? fv : nullptr); break;
+          case 4: gl.SamplerParameteriv(id(), pname, iv); break;
+          case 5:
+            gl.SamplerParameterIiv(id(), pname, iv);
+            gl.SamplerParameterIuiv(id(), pname, uv);
+            break;
+          case 6:
+            gl.GetSamplerParameteriv(id(), pname, iv);
+            gl.GetSamplerParameterfv(id(), pname, fv);
+            gl.GetSamplerParameterIiv(id(), pname, iv);
+            gl.GetSamplerParameterIuiv(id(), pname, uv);
+            (void)gl.IsSampler(id());
+            break;
+          default: gl.DeleteSampler(id()); break;
         }
         break;
       }
