@@ -5,6 +5,8 @@
 // when one fails. The other families of entry points live in context_*.cpp beside this file.
 #include "context_state.h"
 
+#include <algorithm>
+#include <initializer_list>
 #include <utility>
 
 namespace softgl {
@@ -355,6 +357,11 @@ void Context::ClearDepth(double depth) { state_->clear_depth = depth >= 0.0 ? st
 
 void Context::ClearStencil(int s) { state_->clear_stencil = s; }
 
+namespace {
+void RecordClear(ContextState& s, const detail::RenderTarget& target, const detail::ClearPacket& clear,
+                 const char* what);
+}  // namespace
+
 void Context::Clear(Bitfield mask) {
   auto& s = *state_;
   if (mask & ~(COLOR_BUFFER_BIT | DEPTH_BUFFER_BIT | STENCIL_BUFFER_BIT)) return s.SetError(INVALID_VALUE, __func__, "mask has bits other than COLOR_, DEPTH_ and STENCIL_BUFFER_BIT");
@@ -372,13 +379,93 @@ void Context::Clear(Bitfield mask) {
   clear.stencil = (mask & STENCIL_BUFFER_BIT) != 0;
   clear.stencil_value = std::uint8_t(s.clear_stencil & 0xFF);
   clear.stencil_mask = std::uint8_t(s.ops.front.write_mask);
+  RecordClear(s, target, clear, __func__);
+}
+
+namespace {
+
+// The rest of every clear call: records `clear` (nothing when it clears nothing).
+void RecordClear(ContextState& s, const detail::RenderTarget& target, const detail::ClearPacket& clear,
+                 const char* what) {
   if (!clear.color && !clear.depth && !clear.stencil) return;
-  if (!s.frame.Accepts(target)) s.Sync(__func__);
+  if (!s.frame.Accepts(target)) s.Sync(what);
   try {
     s.frame.AddClear(target, clear);
   } catch (const std::bad_alloc&) {
-    s.SetError(OUT_OF_MEMORY, __func__, "out of memory");
+    s.SetError(OUT_OF_MEMORY, what, "out of memory");
   }
+}
+
+// ClearBuffer*'s checks and the clear they make: `buffer` one of `accepted` (else INVALID_ENUM), `drawbuffer` a draw
+// buffer of COLOR (0 to kMaxColorOutputs - 1) and 0 for the others (else INVALID_VALUE), a complete draw
+// framebuffer. False, with the error recorded, where there is nothing to clear.
+bool ClearBufferPacket(ContextState& s, const char* what, Enum buffer, int drawbuffer, std::initializer_list<Enum> accepted,
+                       detail::RenderTarget& target, detail::ClearPacket& clear) {
+  if (std::find(accepted.begin(), accepted.end(), buffer) == accepted.end())
+    return s.SetError(INVALID_ENUM, what, "buffer is not one this call clears (COLOR, DEPTH, STENCIL or DEPTH_STENCIL, as the call's type allows)"), false;
+  if (buffer == COLOR ? drawbuffer < 0 || drawbuffer >= kMaxColorOutputs : drawbuffer != 0)
+    return s.SetError(INVALID_VALUE, what, buffer == COLOR ? "drawbuffer is not a draw buffer (0 to MAX_DRAW_BUFFERS - 1)" : "drawbuffer must be 0 for DEPTH, STENCIL and DEPTH_STENCIL"), false;
+  if (!s.DrawTarget(target, true)) return false;
+  clear.area = s.ClearArea(target);
+  if (clear.area.Empty()) return false;
+  for (int i = 0; i < 4; ++i) clear.color_mask[i] = s.ops.color_mask[i];
+  clear.color_buffers = std::uint32_t(1) << (buffer == COLOR ? drawbuffer : 0);
+  clear.stencil_mask = std::uint8_t(s.ops.front.write_mask);
+  return true;
+}
+
+}  // namespace
+
+void Context::ClearBufferfv(Enum buffer, int drawbuffer, const float* value) {
+  auto& s = *state_;
+  detail::RenderTarget target;
+  detail::ClearPacket clear;
+  if (!ClearBufferPacket(s, __func__, buffer, drawbuffer, {COLOR, DEPTH}, target, clear) || !NotNull(s, __func__, value, "value")) return;
+  if (buffer == COLOR) {
+    clear.color = target.color[drawbuffer].Present();
+    clear.color_value = glm::vec4(value[0], value[1], value[2], value[3]);
+  } else {
+    clear.depth = s.ops.depth_write && target.HasDepth();
+    clear.depth_value = value[0] >= 0.0f ? std::min(value[0], 1.0f) : 0.0f;  // (NaN as 0)
+  }
+  RecordClear(s, target, clear, __func__);
+}
+
+void Context::ClearBufferiv(Enum buffer, int drawbuffer, const int* value) {
+  auto& s = *state_;
+  detail::RenderTarget target;
+  detail::ClearPacket clear;
+  if (!ClearBufferPacket(s, __func__, buffer, drawbuffer, {COLOR, STENCIL}, target, clear) || !NotNull(s, __func__, value, "value")) return;
+  if (buffer == COLOR) {
+    clear.color = target.color[drawbuffer].Present();
+    clear.color_value = glm::vec4(float(value[0]), float(value[1]), float(value[2]), float(value[3]));
+  } else {
+    clear.stencil = target.stencil != nullptr;
+    clear.stencil_value = std::uint8_t(value[0] & 0xFF);
+  }
+  RecordClear(s, target, clear, __func__);
+}
+
+void Context::ClearBufferuiv(Enum buffer, int drawbuffer, const std::uint32_t* value) {
+  auto& s = *state_;
+  detail::RenderTarget target;
+  detail::ClearPacket clear;
+  if (!ClearBufferPacket(s, __func__, buffer, drawbuffer, {COLOR}, target, clear) || !NotNull(s, __func__, value, "value")) return;
+  clear.color = target.color[drawbuffer].Present();
+  clear.color_value = glm::vec4(float(value[0]), float(value[1]), float(value[2]), float(value[3]));
+  RecordClear(s, target, clear, __func__);
+}
+
+void Context::ClearBufferfi(Enum buffer, int drawbuffer, float depth, int stencil) {
+  auto& s = *state_;
+  detail::RenderTarget target;
+  detail::ClearPacket clear;
+  if (!ClearBufferPacket(s, __func__, buffer, drawbuffer, {DEPTH_STENCIL}, target, clear)) return;
+  clear.depth = s.ops.depth_write && target.HasDepth();
+  clear.depth_value = depth >= 0.0f ? std::min(depth, 1.0f) : 0.0f;
+  clear.stencil = target.stencil != nullptr;
+  clear.stencil_value = std::uint8_t(stencil & 0xFF);
+  RecordClear(s, target, clear, __func__);
 }
 
 }  // namespace softgl

@@ -170,14 +170,15 @@ ChannelBits ChannelBitsOf(TexelLayout l, int c) {
 }
 }  // namespace
 
-void RenderTarget::ClearColor(const Rect& r, const glm::vec4& value, const bool mask[4]) const {
-  if (interleaved) return Flat().ClearColor(FlatRect(r, samples), value, mask);
+void RenderTarget::ClearColor(const Rect& r, const glm::vec4& value, const bool mask[4], std::uint32_t buffers) const {
+  if (interleaved) return Flat().ClearColor(FlatRect(r, samples), value, mask, buffers);
   if (samples > 1) {
-    for (int s = 0; s < samples; ++s) Sample(s).ClearColor(r, value, mask);
+    for (int s = 0; s < samples; ++s) Sample(s).ClearColor(r, value, mask, buffers);
     return;
   }
-  for (const ColorBuffer& cb : color) {
-    if (!cb.Present() || r.Empty()) continue;
+  for (int o = 0; o < kMaxColorOutputs; ++o) {
+    const ColorBuffer& cb = color[o];
+    if (!cb.Present() || r.Empty() || !((buffers >> o) & 1u)) continue;
     // The texel is encoded once (Store's conversion), with the bits the colour mask keeps (and an RGB buffer's
     // unstored alpha byte); then whole rows are filled, or merged through those bits 16 bytes at a time.
     const std::size_t bytes = std::size_t(cb.Bytes());

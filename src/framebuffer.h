@@ -104,8 +104,9 @@ struct RenderTarget {
   /// pixel x is pixel x samples + s of the row (for the operations that fill runs of every sample).
   RenderTarget Flat() const;
 
-  /// Clears rectangle r (inside the target) of every colour buffer through `mask` (every sample).
-  void ClearColor(const Rect& r, const glm::vec4& value, const bool mask[4]) const;
+  /// Clears rectangle r (inside the target) of every colour buffer in `buffers` (bit i: color[i], draw buffer i)
+  /// through `mask` (every sample).
+  void ClearColor(const Rect& r, const glm::vec4& value, const bool mask[4], std::uint32_t buffers = ~0u) const;
   void ClearDepth(const Rect& r, float value) const;
   /// Clears the stencil bits of write_mask in rectangle r.
   void ClearStencil(const Rect& r, std::uint8_t value, std::uint8_t write_mask) const;

@@ -442,7 +442,7 @@ void Frame::RenderTile(int tile, TileScratch& scratch) const {
       if (lazy) {
         if (r.x0 == rect.x0 && r.y0 == rect.y0 && r.x1 == rect.x1 && r.y1 == rect.y1) {  // the whole tile
           const bool* m = clear.color_mask;
-          if (color && m[0] && m[1] && m[2] && m[3]) {
+          if (color && m[0] && m[1] && m[2] && m[3] && (clear.color_buffers & 1u)) {  // (its one colour buffer)
             lazy->NoteColor(target_, tile, clear.color_value);
             color = false;
           }
@@ -456,7 +456,7 @@ void Frame::RenderTile(int tile, TileScratch& scratch) const {
         // A clear of part of the tile, or through a mask, changes what a deferred clear left.
         lazy->Store(target_, tile, (color ? kColorBit : 0u) | (depth ? kDepthBit : 0u) | (stencil ? kStencilBit : 0u));
       }
-      if (color) target_.ClearColor(r, clear.color_value, clear.color_mask);
+      if (color) target_.ClearColor(r, clear.color_value, clear.color_mask, clear.color_buffers);
       if (depth) target_.ClearDepth(r, clear.depth_value);
       if (clear.depth && hz) {  // (also where the tile only noted it: Store takes it first)
         if (r.x0 == rect.x0 && r.y0 == rect.y0 && r.x1 == rect.x1 && r.y1 == rect.y1)

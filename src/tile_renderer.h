@@ -61,6 +61,7 @@ struct DrawPacket {
 struct ClearPacket {
   Rect area;
   bool color = false, depth = false, stencil = false;
+  std::uint32_t color_buffers = ~0u;  // the draw buffers whose colour is cleared (bit i: draw buffer i)
   glm::vec4 color_value{0.0f};
   bool color_mask[4] = {true, true, true, true};
   float depth_value = 1.0f;

@@ -1128,3 +1128,155 @@ TEST_CASE("eight draw buffers of mixed formats, mapped in any order, each takes 
       }
   }
 }
+
+TEST_CASE("ClearBuffer clears one draw buffer, the depth or the stencil, through the masks and the scissor box",
+          "[framebuffer][formats]") {
+  // Three colour attachments of different formats, draw buffers 0, 1, 2 sent to attachments 2, NONE, 0, and a
+  // depth-stencil renderbuffer; each clear is read back from every buffer.
+  Context gl(1, 1);
+  gl.BindFramebuffer(FRAMEBUFFER, gl.GenFramebuffer());
+  const Enum formats[3] = {RGBA8, RGBA16F, R32F};
+  for (int a = 0; a < 3; ++a) {
+    const std::uint32_t rb = gl.GenRenderbuffer();
+    gl.BindRenderbuffer(RENDERBUFFER, rb);
+    gl.RenderbufferStorage(RENDERBUFFER, formats[a], 8, 8);
+    gl.FramebufferRenderbuffer(FRAMEBUFFER, COLOR_ATTACHMENT0 + Enum(a), RENDERBUFFER, rb);
+  }
+  const std::uint32_t ds = gl.GenRenderbuffer();
+  gl.BindRenderbuffer(RENDERBUFFER, ds);
+  gl.RenderbufferStorage(RENDERBUFFER, DEPTH24_STENCIL8, 8, 8);
+  gl.FramebufferRenderbuffer(FRAMEBUFFER, DEPTH_STENCIL_ATTACHMENT, RENDERBUFFER, ds);
+  const Enum all[3] = {COLOR_ATTACHMENT0, COLOR_ATTACHMENT0 + 1, COLOR_ATTACHMENT0 + 2};
+  gl.DrawBuffers(3, all);
+  REQUIRE(gl.CheckFramebufferStatus(FRAMEBUFFER) == FRAMEBUFFER_COMPLETE);
+  gl.ClearColor(0.25f, 0.25f, 0.25f, 0.25f);
+  gl.ClearDepth(0.75);
+  gl.ClearStencil(9);
+  gl.Clear(COLOR_BUFFER_BIT | DEPTH_BUFFER_BIT | STENCIL_BUFFER_BIT);
+  const Enum mapped[3] = {COLOR_ATTACHMENT0 + 2, NONE, COLOR_ATTACHMENT0};
+  gl.DrawBuffers(3, mapped);
+  // The pixel (x, y) of attachment a, as floats.
+  auto colour = [&](int a, int x, int y) {
+    gl.ReadBuffer(COLOR_ATTACHMENT0 + Enum(a));
+    float px[4];
+    gl.ReadPixels(x, y, 1, 1, RGBA, FLOAT, px);
+    return glm::vec4(px[0], px[1], px[2], px[3]);
+  };
+  const glm::vec4 before(0.25f, 0.25f, 0.25f, 0.25f), before8(64.0f / 255.0f), before_r(0.25f, 0.0f, 0.0f, 1.0f);
+
+  // Draw buffer 0 (attachment 2, R32F) to a value outside [0, 1]: only there, inside the scissor box.
+  gl.Enable(SCISSOR_TEST);
+  gl.Scissor(2, 2, 4, 4);
+  const float v[4] = {-3.5f, 2.0f, 0.5f, 7.0f};
+  gl.ClearBufferfv(COLOR, 0, v);
+  CHECK(gl.GetError() == NO_ERROR);
+  CHECK(colour(2, 3, 3) == glm::vec4(-3.5f, 0.0f, 0.0f, 1.0f));
+  CHECK(colour(2, 1, 1) == before_r);
+  CHECK(colour(0, 3, 3) == before8);
+  CHECK(colour(1, 3, 3) == before);
+  gl.Disable(SCISSOR_TEST);
+  // Draw buffer 2 (attachment 0, RGBA8) through the colour mask; draw buffer 1 is NONE: nothing changes.
+  gl.ColorMask(true, false, true, false);
+  const float w[4] = {1.0f, 1.0f, 0.0f, 1.0f};
+  gl.ClearBufferfv(COLOR, 2, w);
+  gl.ColorMask(true, true, true, true);
+  CHECK(colour(0, 7, 7) == glm::vec4(1.0f, 64.0f / 255.0f, 0.0f, 64.0f / 255.0f));
+  gl.ClearBufferfv(COLOR, 1, w);
+  CHECK(colour(1, 0, 0) == before);
+  CHECK(colour(0, 0, 0) == glm::vec4(1.0f, 64.0f / 255.0f, 0.0f, 64.0f / 255.0f));
+  CHECK(colour(2, 0, 0) == before_r);
+  // Integer colours are taken as floats.
+  const int ones[4] = {1, 0, 1, 1};
+  gl.ClearBufferiv(COLOR, 2, ones);
+  CHECK(colour(0, 4, 4) == glm::vec4(1.0f, 0.0f, 1.0f, 1.0f));
+  const std::uint32_t uones[4] = {0, 1, 0, 1};
+  gl.ClearBufferuiv(COLOR, 2, uones);
+  CHECK(colour(0, 4, 4) == glm::vec4(0.0f, 1.0f, 0.0f, 1.0f));
+  CHECK(colour(2, 4, 4) == glm::vec4(-3.5f, 0.0f, 0.0f, 1.0f));
+
+  // Depth (clamped, through DepthMask), stencil (through the front write mask), both at once.
+  const float d = 0.25f, big = 5.0f;
+  gl.ClearBufferfv(DEPTH, 0, &d);
+  CHECK(gl.ReadDepth(4, 4) == Approx(0.25f).margin(1e-6));
+  CHECK(int(gl.ReadStencil(4, 4)) == 9);
+  gl.DepthMask(false);
+  gl.ClearBufferfv(DEPTH, 0, &big);
+  CHECK(gl.ReadDepth(4, 4) == Approx(0.25f).margin(1e-6));
+  gl.DepthMask(true);
+  gl.ClearBufferfv(DEPTH, 0, &big);
+  CHECK(gl.ReadDepth(4, 4) == 1.0f);
+  gl.StencilMask(0x0F);
+  const int st = 0x1F3;
+  gl.ClearBufferiv(STENCIL, 0, &st);
+  CHECK(int(gl.ReadStencil(4, 4)) == 0x03);  // 9 = 0x09: the low four bits from 0xF3
+  gl.StencilMask(0xFF);
+  gl.ClearBufferfi(DEPTH_STENCIL, 0, -1.0f, 200);
+  CHECK(gl.ReadDepth(4, 4) == 0.0f);
+  CHECK(int(gl.ReadStencil(4, 4)) == 200);
+  CHECK(colour(0, 4, 4) == glm::vec4(0.0f, 1.0f, 0.0f, 1.0f));
+  CHECK(gl.GetError() == NO_ERROR);
+
+  // Errors: nothing changes.
+  gl.ClearBufferfv(STENCIL, 0, v);
+  CHECK(gl.GetError() == INVALID_ENUM);
+  gl.ClearBufferiv(DEPTH, 0, ones);
+  CHECK(gl.GetError() == INVALID_ENUM);
+  gl.ClearBufferuiv(DEPTH, 0, uones);
+  CHECK(gl.GetError() == INVALID_ENUM);
+  gl.ClearBufferfi(DEPTH, 0, 0.5f, 1);
+  CHECK(gl.GetError() == INVALID_ENUM);
+  gl.ClearBufferfv(COLOR, kMaxColorOutputs, v);
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.ClearBufferfv(COLOR, -1, v);
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.ClearBufferfv(DEPTH, 1, v);
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.ClearBufferfi(DEPTH_STENCIL, 2, 0.5f, 1);
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.ClearBufferfv(COLOR, 0, nullptr);
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.ClearBufferiv(STENCIL, 0, nullptr);
+  CHECK(gl.GetError() == INVALID_VALUE);
+  CHECK(gl.ReadDepth(4, 4) == 0.0f);
+  CHECK(int(gl.ReadStencil(4, 4)) == 200);
+  CHECK(colour(2, 3, 3) == glm::vec4(-3.5f, 0.0f, 0.0f, 1.0f));
+  // An incomplete framebuffer object.
+  gl.BindFramebuffer(FRAMEBUFFER, gl.GenFramebuffer());
+  gl.ClearBufferfv(COLOR, 0, v);
+  CHECK(gl.GetError() == INVALID_FRAMEBUFFER_OPERATION);
+}
+
+TEST_CASE("ClearBuffer on the context's framebuffer, 1 and 4 samples, sRGB-encoded: the bytes Clear gives",
+          "[framebuffer][multisample][srgb]") {
+  for (int samples : {0, 4}) {
+    for (bool srgb : {false, true}) {
+      Context::Options options;
+      options.samples = samples;
+      if (srgb) options.color_format = SRGB8_ALPHA8;
+      Context a(16, 16, options), b(16, 16, options);
+      for (Context* gl : {&a, &b}) {
+        if (srgb) gl->Enable(FRAMEBUFFER_SRGB);
+        gl->Enable(SCISSOR_TEST);
+        gl->Scissor(3, 5, 9, 7);
+      }
+      const float c[4] = {0.2f, 0.4f, 0.6f, 0.8f}, d = 0.3f;
+      a.ClearColor(c[0], c[1], c[2], c[3]);
+      a.ClearDepth(d);
+      a.ClearStencil(77);
+      a.Clear(COLOR_BUFFER_BIT | DEPTH_BUFFER_BIT | STENCIL_BUFFER_BIT);
+      b.ClearBufferfv(COLOR, 0, c);
+      b.ClearBufferfi(DEPTH_STENCIL, 0, d, 77);
+      b.ClearBufferfv(COLOR, 1, c);  // (draw buffer 1 is NONE: nothing)
+      CHECK(b.GetError() == NO_ERROR);
+      CHECK(a.ReadPixels().rgba == b.ReadPixels().rgba);
+      for (int y = 0; y < 16; y += 3)
+        for (int x = 0; x < 16; x += 3) {
+          CHECK(a.ReadDepth(x, y) == b.ReadDepth(x, y));
+          CHECK(a.ReadStencil(x, y) == b.ReadStencil(x, y));
+        }
+      std::uint8_t px[4];
+      b.ReadPixel(6, 8, px);
+      CHECK(int(px[1]) > 50);  // (the clear is there)
+    }
+  }
+}

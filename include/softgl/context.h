@@ -608,6 +608,18 @@ class Context {
   /// Clears the buffers named by mask (COLOR_BUFFER_BIT | DEPTH_BUFFER_BIT | STENCIL_BUFFER_BIT); any other bit:
   /// INVALID_VALUE. Honours the scissor test, ColorMask, DepthMask and the front StencilMask, as OpenGL does.
   void Clear(Bitfield mask);
+  /// Clears one buffer of the draw framebuffer to the value given, as Clear does (the scissor test, ColorMask,
+  /// DepthMask and the front StencilMask honoured): COLOR clears draw buffer `drawbuffer` (0 to MAX_DRAW_BUFFERS - 1;
+  /// the attachment DrawBuffers sent it to, nothing where that is NONE) to value[0..3] (sRGB-encoded under
+  /// FRAMEBUFFER_SRGB); DEPTH to value[0] clamped to [0, 1]; STENCIL to value[0]'s low 8 bits; DEPTH_STENCIL
+  /// (ClearBufferfi) both. fv takes COLOR and DEPTH, iv COLOR and STENCIL, uiv COLOR, fi DEPTH_STENCIL; another
+  /// buffer: INVALID_ENUM. drawbuffer out of range, or not 0 for DEPTH, STENCIL and DEPTH_STENCIL: INVALID_VALUE;
+  /// value null: INVALID_VALUE; an incomplete framebuffer object: INVALID_FRAMEBUFFER_OPERATION. softgl's colour
+  /// buffers are not integer ones: iv and uiv's colours are taken as the floats of those numbers (1 is full).
+  void ClearBufferfv(Enum buffer, int drawbuffer, const float* value);
+  void ClearBufferiv(Enum buffer, int drawbuffer, const int* value);
+  void ClearBufferuiv(Enum buffer, int drawbuffer, const std::uint32_t* value);
+  void ClearBufferfi(Enum buffer, int drawbuffer, float depth, int stencil);
 
   // ---- Drawing -----------------------------------------------------------------------------------------------
   /// Draws vertices [first, first + count) of the bound vertex array. mode: POINTS, LINES, LINE_STRIP, LINE_LOOP,

@@ -184,7 +184,11 @@ inline constexpr Enum GREEN = 0x1904;
 inline constexpr Enum BLUE = 0x1905;
 inline constexpr Enum BGR = 0x80E0;
 inline constexpr Enum BGRA = 0x80E1;
-inline constexpr Enum DEPTH_STENCIL = 0x84F9;
+inline constexpr Enum DEPTH_STENCIL = 0x84F9;  // (also ClearBufferfi's buffer)
+// ClearBuffer*'s buffers (with DEPTH_STENCIL).
+inline constexpr Enum COLOR = 0x1800;
+inline constexpr Enum DEPTH = 0x1801;
+inline constexpr Enum STENCIL = 0x1802;
 inline constexpr Enum UNSIGNED_INT_24_8 = 0x84FA;  // DEPTH_STENCIL pixels: depth in the high 24 bits, stencil low
 inline constexpr Enum RGB = 0x1907;
 inline constexpr Enum RGBA = 0x1908;
