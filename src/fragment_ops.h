@@ -3,9 +3,10 @@
 // colour mask -> framebuffer. Arithmetic follows the OpenGL 4.6 specification, chapter 17.
 //
 // They run on whole 4x4 blocks, 4 or 8 lanes per instruction: the stencil and depth tests and writes for every
-// depth and stencil format, then each colour buffer by the path its format takes (ColourPath). A block that
-// reaches past the target's edge, and the multisampled context framebuffer's blocks unless its colour buffer is
-// RGBA8, go lane by lane with the same arithmetic (ApplyFragmentOpsReference).
+// depth and stencil format, then each colour buffer by the path its format takes (ColourPath), into framebuffer
+// objects of any formats and the context's framebuffer (its samples side by side when multisampled) alike. A block
+// that reaches past an odd-sized target's edge goes lane by lane with the same arithmetic
+// (ApplyFragmentOpsReference).
 // Blending into 8-bit buffers is exact integer arithmetic on the 8-bit operands: the fragment colour is converted
 // to the buffer's format first (clamped to [0, 1], round(c * 255)), like the destination, the constant colour and
 // the factors; the equation's value, (s * sf + d * df) / 255 with all terms in 0..255, is rounded to the nearest

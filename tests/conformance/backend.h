@@ -137,6 +137,10 @@ class Backend {
   virtual void ClearDepth(double d) = 0;
   virtual void ClearStencil(int s) = 0;
   virtual void Clear(std::uint32_t mask) = 0;
+  /// glClearBufferfv, glClearBufferiv and glClearBufferfi.
+  virtual void ClearBufferfv(Enum buffer, int drawbuffer, const float* value) = 0;
+  virtual void ClearBufferiv(Enum buffer, int drawbuffer, const int* value) = 0;
+  virtual void ClearBufferfi(Enum buffer, int drawbuffer, float depth, int stencil) = 0;
   /// Draws `vertices` (through `indices` when not empty) with `mode` and `program`.
   virtual void Draw(Enum mode, const std::vector<Vertex>& vertices, const std::vector<std::uint32_t>& indices,
                     Program program, const Uniforms& uniforms) = 0;

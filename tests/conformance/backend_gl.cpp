@@ -234,6 +234,11 @@ class GlBackend final : public Backend {
   void BlendFuncSeparate(Enum a, Enum b, Enum c, Enum d) override { glBlendFuncSeparate(a, b, c, d); }
   void BlendEquationSeparate(Enum rgb, Enum alpha) override { glBlendEquationSeparate(rgb, alpha); }
   void BlendColor(float r, float g, float b, float a) override { glBlendColor(r, g, b, a); }
+  void ClearBufferfv(Enum buffer, int drawbuffer, const float* value) override { glClearBufferfv(buffer, drawbuffer, value); }
+  void ClearBufferiv(Enum buffer, int drawbuffer, const int* value) override { glClearBufferiv(buffer, drawbuffer, value); }
+  void ClearBufferfi(Enum buffer, int drawbuffer, float depth, int stencil) override {
+    glClearBufferfi(buffer, drawbuffer, depth, stencil);
+  }
   void ColorMask(bool r, bool g, bool b, bool a) override { glColorMask(r, g, b, a); }
   void ClearColor(float r, float g, float b, float a) override { glClearColor(r, g, b, a); }
   void ClearDepth(double d) override { glClearDepth(d); }

@@ -211,6 +211,11 @@ class SoftglBackend final : public Backend {
   void BlendFuncSeparate(Enum a, Enum b, Enum c, Enum d) override { gl_.BlendFuncSeparate(a, b, c, d); }
   void BlendEquationSeparate(Enum rgb, Enum alpha) override { gl_.BlendEquationSeparate(rgb, alpha); }
   void BlendColor(float r, float g, float b, float a) override { gl_.BlendColor(r, g, b, a); }
+  void ClearBufferfv(Enum buffer, int drawbuffer, const float* value) override { gl_.ClearBufferfv(buffer, drawbuffer, value); }
+  void ClearBufferiv(Enum buffer, int drawbuffer, const int* value) override { gl_.ClearBufferiv(buffer, drawbuffer, value); }
+  void ClearBufferfi(Enum buffer, int drawbuffer, float depth, int stencil) override {
+    gl_.ClearBufferfi(buffer, drawbuffer, depth, stencil);
+  }
   void ColorMask(bool r, bool g, bool b, bool a) override { gl_.ColorMask(r, g, b, a); }
   void ClearColor(float r, float g, float b, float a) override { gl_.ClearColor(r, g, b, a); }
   void ClearDepth(double d) override { gl_.ClearDepth(d); }

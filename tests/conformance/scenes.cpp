@@ -530,6 +530,44 @@ void Masks(Backend& b) {
   b.Disable(STENCIL_TEST);
 }
 
+// ClearBuffer: colour, depth and stencil cleared one buffer at a time, through the scissor box, the colour mask,
+// the depth mask and the stencil write mask; then quads that the depth and stencil tests let through where the
+// clears left values that pass, so that depth and stencil show in the colours too.
+void ClearBuffers(Backend& b) {
+  const float grey[4] = {0.3f, 0.3f, 0.3f, 1.0f};
+  b.ClearBufferfv(COLOR, 0, grey);
+  b.ClearBufferfi(DEPTH_STENCIL, 0, 1.0f, 0);
+  b.Enable(SCISSOR_TEST);
+  const float colours[3][4] = {{0.9f, 0.2f, 0.1f, 1.0f}, {0.1f, 0.8f, 0.3f, 0.5f}, {0.2f, 0.3f, 1.0f, 0.0f}};
+  for (int i = 0; i < 3; ++i) {
+    b.Scissor(8 + i * 40, 8, 32, 112);
+    b.ColorMask(true, i != 1, true, i != 2);
+    b.ClearBufferfv(COLOR, 0, colours[i]);
+    const float depth = 0.2f + 0.3f * float(i);
+    b.ClearBufferfv(DEPTH, 0, &depth);
+  }
+  b.ColorMask(true, true, true, true);
+  b.Scissor(0, 64, 128, 40);
+  b.StencilMaskSeparate(FRONT_AND_BACK, 0x0F);
+  const int stencil = 0x35;
+  b.ClearBufferiv(STENCIL, 0, &stencil);
+  b.StencilMaskSeparate(FRONT_AND_BACK, 0xFF);
+  b.Scissor(20, 20, 30, 20);
+  b.DepthMask(false);
+  b.ClearBufferfi(DEPTH_STENCIL, 0, 0.0f, 7);  // the depth mask keeps the depth; the stencil is written
+  b.DepthMask(true);
+  b.Disable(SCISSOR_TEST);
+  b.Enable(DEPTH_TEST);
+  b.Enable(STENCIL_TEST);
+  b.StencilFunc(EQUAL, 0x05, 0xFF);
+  b.StencilOp(KEEP, KEEP, KEEP);
+  b.Draw(TRIANGLES, Rect(0, 0, 128, 128, 0.1f, {1, 1, 0, 1}));  // depth 0.55: behind the clears of 0.2 and 0.5
+  b.StencilFunc(EQUAL, 7, 0xFF);
+  b.Draw(TRIANGLES, Rect(0, 0, 128, 128, 0.1f, {0, 1, 1, 1}));
+  b.Disable(DEPTH_TEST);
+  b.Disable(STENCIL_TEST);
+}
+
 void Scissor(Backend& b) {
   ClearBlack(b);
   b.Enable(SCISSOR_TEST);
@@ -1631,6 +1669,7 @@ const std::vector<SceneInfo>& Scenes() {
       {"blend_factors", kSize, kSize, Check::kColor, BlendFactors},
       {"blend_equations", kSize, kSize, Check::kColor, BlendEquations},
       {"masks", kSize, kSize, Check::kExactWithStencil, Masks},
+      {"clear_buffer", kSize, kSize, Check::kExactWithDepthStencil, ClearBuffers},
       {"scissor", kSize, kSize, Check::kExact, Scissor},
       {"polygon_offset", kSize, kSize, Check::kExactWithDepth, PolygonOffset},
       {"texture_filters", kSize, kSize, Check::kTexture, TextureFilters},

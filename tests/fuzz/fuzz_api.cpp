@@ -143,7 +143,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   };
   for (int step = 0; step < 200 && !in.Empty(); ++step) {
     const auto id = [&] { return std::uint32_t(in.Byte() % 8); };
-    switch (in.Byte() % 45) {
+    switch (in.Byte() % 46) {
       case 0: gl.GenBuffer(); break;
       case 1: gl.BindBuffer(in.Enum(kBufferTargets), id()); break;
       case 2: {
@@ -534,6 +534,21 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
             (void)gl.IsSampler(id());
             break;
           default: gl.DeleteSampler(id()); break;
+        }
+        break;
+      }
+      case 44: {  // ClearBuffer*: any buffer and draw buffer, values NaN, infinite or huge included
+        constexpr std::uint32_t kBuffers[] = {COLOR, DEPTH, STENCIL, DEPTH_STENCIL, COLOR_BUFFER_BIT, 0};
+        const float fv[4] = {in.Float(), in.Float(), in.Float(), in.Float()};
+        const int iv[4] = {in.Get<int>(), in.Int(-2, 300), 1, 0};
+        const std::uint32_t uv[4] = {in.Get<std::uint32_t>(), 1, 0, 1};
+        const std::uint32_t buffer = in.Enum(kBuffers);
+        const int drawbuffer = in.Int(-1, kMaxColorOutputs);
+        switch (in.Byte() % 4) {
+          case 0: gl.ClearBufferfv(buffer, drawbuffer, in.Byte() % 8 ? fv : nullptr); break;
+          case 1: gl.ClearBufferiv(buffer, drawbuffer, iv); break;
+          case 2: gl.ClearBufferuiv(buffer, drawbuffer, uv); break;
+          default: gl.ClearBufferfi(buffer, drawbuffer, fv[0], iv[1]); break;
         }
         break;
       }
