@@ -2,7 +2,11 @@
 // divisors, current attribute values).
 #include "context_state.h"
 
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
 #include <cstring>
+#include <limits>
 
 namespace softgl {
 
@@ -322,6 +326,90 @@ void Context::VertexAttribDivisor(std::uint32_t index, std::uint32_t divisor) {
 void Context::VertexAttrib4f(std::uint32_t index, float x, float y, float z, float w) {
   if (index >= std::uint32_t(kMaxVertexAttribs)) return state_->SetError(INVALID_VALUE, __func__, "attribute index is kMaxVertexAttribs or more");
   state_->current_attrib[index] = glm::vec4(x, y, z, w);
+}
+
+}  // namespace softgl
+
+namespace softgl {
+
+namespace {
+
+// GetVertexAttrib*'s value `pname` of attribute `index`, as up to four doubles (CURRENT_VERTEX_ATTRIB: four); false
+// with the error set.
+bool VertexAttribValues(ContextState& s, const char* what, std::uint32_t index, Enum pname, double out[4], int& n) {
+  if (index >= std::uint32_t(kMaxVertexAttribs)) return s.SetError(INVALID_VALUE, what, "attribute index is kMaxVertexAttribs or more"), false;
+  n = 1;
+  if (pname == CURRENT_VERTEX_ATTRIB) {
+    n = 4;
+    for (int c = 0; c < 4; ++c) out[c] = double(s.current_attrib[index][c]);
+    return true;
+  }
+  const bool array_state = pname == VERTEX_ATTRIB_ARRAY_ENABLED || pname == VERTEX_ATTRIB_ARRAY_SIZE ||
+                           pname == VERTEX_ATTRIB_ARRAY_STRIDE || pname == VERTEX_ATTRIB_ARRAY_TYPE ||
+                           pname == VERTEX_ATTRIB_ARRAY_NORMALIZED || pname == VERTEX_ATTRIB_ARRAY_INTEGER ||
+                           pname == VERTEX_ATTRIB_ARRAY_DIVISOR || pname == VERTEX_ATTRIB_ARRAY_BUFFER_BINDING;
+  if (!array_state) return s.SetError(INVALID_ENUM, what, "pname is not a vertex attribute state"), false;
+  if (s.vao == nullptr) return s.SetError(INVALID_OPERATION, what, "no vertex array is bound"), false;
+  const AttribBinding& a = s.vao->attrib[index];
+  switch (pname) {
+    case VERTEX_ATTRIB_ARRAY_ENABLED: out[0] = (s.vao->enabled >> index) & 1u; break;
+    case VERTEX_ATTRIB_ARRAY_SIZE: out[0] = a.bgra ? double(BGRA) : double(a.size); break;
+    case VERTEX_ATTRIB_ARRAY_STRIDE: out[0] = a.stride; break;
+    case VERTEX_ATTRIB_ARRAY_TYPE: out[0] = double(a.type); break;
+    case VERTEX_ATTRIB_ARRAY_NORMALIZED: out[0] = a.normalized ? 1.0 : 0.0; break;
+    case VERTEX_ATTRIB_ARRAY_INTEGER: out[0] = 0.0; break;
+    case VERTEX_ATTRIB_ARRAY_DIVISOR: out[0] = double(a.divisor); break;
+    default: out[0] = double(IdOf(s.buffers, a.buffer.get())); break;  // VERTEX_ATTRIB_ARRAY_BUFFER_BINDING
+  }
+  return true;
+}
+
+// The values as integers of type T: rounded to nearest (halves away from 0) and clamped to T's range (NaN as 0).
+template <class T>
+void VertexAttribIntegers(ContextState& s, const char* what, std::uint32_t index, Enum pname, T* params) {
+  double v[4];
+  int n = 0;
+  if (!VertexAttribValues(s, what, index, pname, v, n) || !NotNull(s, what, params, "params")) return;
+  const double lo = double(std::numeric_limits<T>::min()), hi = double(std::numeric_limits<T>::max());
+  for (int k = 0; k < n; ++k) params[k] = std::isnan(v[k]) ? T(0) : T(std::llround(std::clamp(v[k], lo, hi)));
+}
+
+}  // namespace
+
+void Context::GetVertexAttribdv(std::uint32_t index, Enum pname, double* params) const {
+  auto& s = *state_;
+  double v[4];
+  int n = 0;
+  if (VertexAttribValues(s, __func__, index, pname, v, n) && NotNull(s, __func__, params, "params")) std::copy(v, v + n, params);
+}
+
+void Context::GetVertexAttribfv(std::uint32_t index, Enum pname, float* params) const {
+  auto& s = *state_;
+  double v[4];
+  int n = 0;
+  if (!VertexAttribValues(s, __func__, index, pname, v, n) || !NotNull(s, __func__, params, "params")) return;
+  for (int k = 0; k < n; ++k) params[k] = float(v[k]);
+}
+
+void Context::GetVertexAttribiv(std::uint32_t index, Enum pname, int* params) const {
+  VertexAttribIntegers(*state_, __func__, index, pname, params);
+}
+
+void Context::GetVertexAttribIiv(std::uint32_t index, Enum pname, int* params) const {
+  VertexAttribIntegers(*state_, __func__, index, pname, params);
+}
+
+void Context::GetVertexAttribIuiv(std::uint32_t index, Enum pname, std::uint32_t* params) const {
+  VertexAttribIntegers(*state_, __func__, index, pname, params);
+}
+
+void Context::GetVertexAttribPointerv(std::uint32_t index, Enum pname, void** pointer) const {
+  auto& s = *state_;
+  if (index >= std::uint32_t(kMaxVertexAttribs)) return s.SetError(INVALID_VALUE, __func__, "attribute index is kMaxVertexAttribs or more");
+  if (pname != VERTEX_ATTRIB_ARRAY_POINTER) return s.SetError(INVALID_ENUM, __func__, "pname must be VERTEX_ATTRIB_ARRAY_POINTER");
+  if (s.vao == nullptr) return s.SetError(INVALID_OPERATION, __func__, "no vertex array is bound");
+  if (NotNull(s, __func__, pointer, "pointer"))
+    *pointer = reinterpret_cast<void*>(static_cast<std::uintptr_t>(s.vao->attrib[index].offset));
 }
 
 }  // namespace softgl

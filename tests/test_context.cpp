@@ -2125,3 +2125,87 @@ TEST_CASE("hostile calls: OpenGL 3.3's 48 combined texture units, each bindable 
   CHECK((px[0] == 0 && px[1] == 0 && px[2] == 0 && px[3] == 255));
   CHECK(gl.GetError() == NO_ERROR);
 }
+
+TEST_CASE("GetVertexAttrib reads back each attribute's array state and current value", "[context][errors]") {
+  Context gl(4, 4);
+  // Without a vertex array: the current value only.
+  gl.VertexAttrib4f(3, 1.5f, -2.5f, 0.25f, 7.0f);
+  float fv[4] = {};
+  gl.GetVertexAttribfv(3, CURRENT_VERTEX_ATTRIB, fv);
+  CHECK((fv[0] == 1.5f && fv[1] == -2.5f && fv[2] == 0.25f && fv[3] == 7.0f));
+  int iv[4] = {};
+  gl.GetVertexAttribIiv(3, CURRENT_VERTEX_ATTRIB, iv);
+  CHECK((iv[0] == 2 && iv[1] == -3 && iv[2] == 0 && iv[3] == 7));  // (rounded to nearest, halves away from 0)
+  gl.GetVertexAttribiv(3, VERTEX_ATTRIB_ARRAY_SIZE, iv);
+  CHECK(gl.GetError() == INVALID_OPERATION);
+  void* pointer = nullptr;
+  gl.GetVertexAttribPointerv(3, VERTEX_ATTRIB_ARRAY_POINTER, &pointer);
+  CHECK(gl.GetError() == INVALID_OPERATION);
+
+  const std::uint32_t vao = gl.GenVertexArray(), vbo = gl.GenBuffer();
+  gl.BindVertexArray(vao);
+  // The defaults (OpenGL 3.3, table 6.4).
+  const std::pair<Enum, int> defaults[] = {{VERTEX_ATTRIB_ARRAY_ENABLED, 0}, {VERTEX_ATTRIB_ARRAY_SIZE, 4},
+                                           {VERTEX_ATTRIB_ARRAY_STRIDE, 0}, {VERTEX_ATTRIB_ARRAY_TYPE, int(FLOAT)},
+                                           {VERTEX_ATTRIB_ARRAY_NORMALIZED, 0}, {VERTEX_ATTRIB_ARRAY_INTEGER, 0},
+                                           {VERTEX_ATTRIB_ARRAY_DIVISOR, 0}, {VERTEX_ATTRIB_ARRAY_BUFFER_BINDING, 0}};
+  for (const auto& [pname, value] : defaults) {
+    int v = -99;
+    gl.GetVertexAttribiv(5, pname, &v);
+    CHECK(v == value);
+  }
+  gl.GetVertexAttribfv(5, CURRENT_VERTEX_ATTRIB, fv);
+  CHECK((fv[0] == 0.0f && fv[1] == 0.0f && fv[2] == 0.0f && fv[3] == 1.0f));
+  // What VertexAttributePointer, EnableVertexAttribArray and VertexAttribDivisor set.
+  gl.BindBuffer(ARRAY_BUFFER, vbo);
+  gl.BufferData(ARRAY_BUFFER, 256, nullptr);
+  gl.VertexAttributePointer(5, 3, SHORT, true, 12, 40);
+  gl.VertexAttributePointer(6, int(BGRA), UNSIGNED_BYTE, true, 0, 8);
+  gl.EnableVertexAttribArray(5);
+  gl.VertexAttribDivisor(5, 3);
+  const std::pair<Enum, int> set[] = {{VERTEX_ATTRIB_ARRAY_ENABLED, 1}, {VERTEX_ATTRIB_ARRAY_SIZE, 3},
+                                      {VERTEX_ATTRIB_ARRAY_STRIDE, 12}, {VERTEX_ATTRIB_ARRAY_TYPE, int(SHORT)},
+                                      {VERTEX_ATTRIB_ARRAY_NORMALIZED, 1}, {VERTEX_ATTRIB_ARRAY_DIVISOR, 3},
+                                      {VERTEX_ATTRIB_ARRAY_BUFFER_BINDING, int(vbo)}};
+  for (const auto& [pname, value] : set) {
+    int v = -99;
+    std::uint32_t u = 99;
+    float f = -99.0f;
+    double d = -99.0;
+    gl.GetVertexAttribiv(5, pname, &v);
+    gl.GetVertexAttribIuiv(5, pname, &u);
+    gl.GetVertexAttribfv(5, pname, &f);
+    gl.GetVertexAttribdv(5, pname, &d);
+    CHECK(v == value);
+    CHECK(u == std::uint32_t(value));
+    CHECK(f == float(value));
+    CHECK(d == double(value));
+  }
+  int v = 0;
+  gl.GetVertexAttribiv(6, VERTEX_ATTRIB_ARRAY_SIZE, &v);
+  CHECK(v == int(BGRA));
+  gl.GetVertexAttribPointerv(5, VERTEX_ATTRIB_ARRAY_POINTER, &pointer);
+  CHECK(reinterpret_cast<std::uintptr_t>(pointer) == 40u);
+  gl.GetVertexAttribPointerv(6, VERTEX_ATTRIB_ARRAY_POINTER, &pointer);
+  CHECK(reinterpret_cast<std::uintptr_t>(pointer) == 8u);
+  // A deleted buffer reads 0 while the array keeps its store.
+  gl.DeleteBuffer(vbo);
+  gl.GetVertexAttribiv(5, VERTEX_ATTRIB_ARRAY_BUFFER_BINDING, &v);
+  CHECK(v == 0);
+  CHECK(gl.GetError() == NO_ERROR);
+  // Errors: nothing written.
+  v = -7;
+  gl.GetVertexAttribiv(kMaxVertexAttribs, VERTEX_ATTRIB_ARRAY_SIZE, &v);
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.GetVertexAttribiv(0, TEXTURE_2D, &v);
+  CHECK(gl.GetError() == INVALID_ENUM);
+  gl.GetVertexAttribPointerv(0, VERTEX_ATTRIB_ARRAY_SIZE, &pointer);
+  CHECK(gl.GetError() == INVALID_ENUM);
+  gl.GetVertexAttribPointerv(kMaxVertexAttribs, VERTEX_ATTRIB_ARRAY_POINTER, &pointer);
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.GetVertexAttribfv(0, CURRENT_VERTEX_ATTRIB, nullptr);
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.GetVertexAttribPointerv(0, VERTEX_ATTRIB_ARRAY_POINTER, nullptr);
+  CHECK(gl.GetError() == INVALID_VALUE);
+  CHECK(v == -7);
+}

@@ -205,6 +205,20 @@ class Context {
   void VertexAttribDivisor(std::uint32_t index, std::uint32_t divisor);
   /// The current value of a generic attribute, read by the vertex stage while its array is disabled.
   void VertexAttrib4f(std::uint32_t index, float x, float y, float z, float w);
+  /// Attribute `index`'s state in the bound vertex array: VERTEX_ATTRIB_ARRAY_ENABLED, _SIZE (1 to 4, or BGRA),
+  /// _STRIDE (as given: 0 for tightly packed), _TYPE, _NORMALIZED, _INTEGER (0: softgl's attributes are read as
+  /// floats), _DIVISOR, _BUFFER_BINDING (the buffer's id; 0 once deleted, while the array still reads its store);
+  /// and CURRENT_VERTEX_ATTRIB, the four values of VertexAttrib4f (no vertex array needed). The I forms give
+  /// CURRENT_VERTEX_ATTRIB's values rounded to integers (softgl has no integer attributes). index >=
+  /// kMaxVertexAttribs: INVALID_VALUE; another name: INVALID_ENUM; an array state with no vertex array bound:
+  /// INVALID_OPERATION.
+  void GetVertexAttribdv(std::uint32_t index, Enum pname, double* params) const;
+  void GetVertexAttribfv(std::uint32_t index, Enum pname, float* params) const;
+  void GetVertexAttribiv(std::uint32_t index, Enum pname, int* params) const;
+  void GetVertexAttribIiv(std::uint32_t index, Enum pname, int* params) const;
+  void GetVertexAttribIuiv(std::uint32_t index, Enum pname, std::uint32_t* params) const;
+  /// VERTEX_ATTRIB_ARRAY_POINTER: the offset VertexAttributePointer was given, as a pointer. Errors as above.
+  void GetVertexAttribPointerv(std::uint32_t index, Enum pname, void** pointer) const;
 
   // ---- Shaders -----------------------------------------------------------------------------------------------
   /// Makes `program` (usually a softgl::Shader subclass) the current shader. The context keeps a pointer: the

@@ -365,6 +365,17 @@ inline constexpr Enum TEXTURE_BINDING_2D = 0x8069;
 inline constexpr Enum TEXTURE_BINDING_CUBE_MAP = 0x8514;
 inline constexpr Enum TEXTURE_BINDING_2D_ARRAY = 0x8C1D;
 inline constexpr Enum TEXTURE_BINDING_3D = 0x806A;
+// GetVertexAttrib* (VERTEX_ATTRIB_ARRAY_DIVISOR and the others an attribute array has).
+inline constexpr Enum VERTEX_ATTRIB_ARRAY_ENABLED = 0x8622;
+inline constexpr Enum VERTEX_ATTRIB_ARRAY_SIZE = 0x8623;
+inline constexpr Enum VERTEX_ATTRIB_ARRAY_STRIDE = 0x8624;
+inline constexpr Enum VERTEX_ATTRIB_ARRAY_TYPE = 0x8625;
+inline constexpr Enum CURRENT_VERTEX_ATTRIB = 0x8626;
+inline constexpr Enum VERTEX_ATTRIB_ARRAY_POINTER = 0x8645;
+inline constexpr Enum VERTEX_ATTRIB_ARRAY_NORMALIZED = 0x886A;
+inline constexpr Enum VERTEX_ATTRIB_ARRAY_BUFFER_BINDING = 0x889F;
+inline constexpr Enum VERTEX_ATTRIB_ARRAY_INTEGER = 0x88FD;
+inline constexpr Enum VERTEX_ATTRIB_ARRAY_DIVISOR = 0x88FE;
 inline constexpr Enum SAMPLER_BINDING = 0x8919;  // GetIntegerv: the sampler object bound to the active unit
 inline constexpr Enum TEXTURE_BINDING_2D_MULTISAMPLE = 0x9104;
 inline constexpr Enum DRAW_FRAMEBUFFER_BINDING = 0x8CA6;  // also FRAMEBUFFER_BINDING
