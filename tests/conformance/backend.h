@@ -200,6 +200,11 @@ class Backend {
   virtual void BindSampler(int unit, std::uint32_t sampler) = 0;
   virtual void SamplerParameteri(std::uint32_t sampler, Enum pname, int value) = 0;
   virtual void SamplerParameterfv(std::uint32_t sampler, Enum pname, const float* values) = 0;
+  /// glGetSamplerParameteriv / fv of `count` values, and glGetVertexAttribiv / fv of the vertex array the draws use.
+  virtual std::vector<std::int64_t> GetSamplerIntegers(std::uint32_t sampler, Enum pname, int count) = 0;
+  virtual std::vector<float> GetSamplerFloats(std::uint32_t sampler, Enum pname, int count) = 0;
+  virtual std::vector<std::int64_t> GetVertexAttribIntegers(std::uint32_t index, Enum pname, int count) = 0;
+  virtual std::vector<float> GetVertexAttribFloats(std::uint32_t index, Enum pname, int count) = 0;
   /// Query objects: a new id, glBeginQuery / glEndQuery, and QUERY_RESULT (64-bit).
   virtual std::uint32_t GenQuery() = 0;
   virtual void BeginQuery(Enum target, std::uint32_t id) = 0;

@@ -554,6 +554,28 @@ class GlBackend final : public Backend {
   void SamplerParameterfv(std::uint32_t sampler, Enum pname, const float* values) override {
     glSamplerParameterfv(sampler, pname, values);
   }
+  std::vector<std::int64_t> GetSamplerIntegers(std::uint32_t sampler, Enum pname, int count) override {
+    std::vector<GLint> v(std::size_t(count), -12345);
+    glGetSamplerParameteriv(sampler, pname, v.data());
+    return {v.begin(), v.end()};
+  }
+  std::vector<float> GetSamplerFloats(std::uint32_t sampler, Enum pname, int count) override {
+    std::vector<float> v(std::size_t(count), -12345.0f);
+    glGetSamplerParameterfv(sampler, pname, v.data());
+    return v;
+  }
+  std::vector<std::int64_t> GetVertexAttribIntegers(std::uint32_t index, Enum pname, int count) override {
+    glBindVertexArray(vao_);
+    std::vector<GLint> v(std::size_t(count), -12345);
+    glGetVertexAttribiv(index, pname, v.data());
+    return {v.begin(), v.end()};
+  }
+  std::vector<float> GetVertexAttribFloats(std::uint32_t index, Enum pname, int count) override {
+    glBindVertexArray(vao_);
+    std::vector<float> v(std::size_t(count), -12345.0f);
+    glGetVertexAttribfv(index, pname, v.data());
+    return v;
+  }
   std::uint32_t GenQuery() override { return GenOne(glGenQueries); }
   void BeginQuery(Enum target, std::uint32_t id) override { glBeginQuery(target, id); }
   void EndQuery(Enum target) override { glEndQuery(target); }

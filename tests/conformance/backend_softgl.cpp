@@ -507,6 +507,28 @@ class SoftglBackend final : public Backend {
   void SamplerParameterfv(std::uint32_t sampler, Enum pname, const float* values) override {
     gl_.SamplerParameterfv(sampler, pname, values);
   }
+  std::vector<std::int64_t> GetSamplerIntegers(std::uint32_t sampler, Enum pname, int count) override {
+    std::vector<int> v(std::size_t(count), -12345);
+    gl_.GetSamplerParameteriv(sampler, pname, v.data());
+    return {v.begin(), v.end()};
+  }
+  std::vector<float> GetSamplerFloats(std::uint32_t sampler, Enum pname, int count) override {
+    std::vector<float> v(std::size_t(count), -12345.0f);
+    gl_.GetSamplerParameterfv(sampler, pname, v.data());
+    return v;
+  }
+  std::vector<std::int64_t> GetVertexAttribIntegers(std::uint32_t index, Enum pname, int count) override {
+    gl_.BindVertexArray(vao_);
+    std::vector<int> v(std::size_t(count), -12345);
+    gl_.GetVertexAttribiv(index, pname, v.data());
+    return {v.begin(), v.end()};
+  }
+  std::vector<float> GetVertexAttribFloats(std::uint32_t index, Enum pname, int count) override {
+    gl_.BindVertexArray(vao_);
+    std::vector<float> v(std::size_t(count), -12345.0f);
+    gl_.GetVertexAttribfv(index, pname, v.data());
+    return v;
+  }
   std::uint32_t GenQuery() override { return gl_.GenQuery(); }
   void BeginQuery(Enum target, std::uint32_t id) override { gl_.BeginQuery(target, id); }
   void EndQuery(Enum target) override { gl_.EndQuery(target); }

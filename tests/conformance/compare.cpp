@@ -277,6 +277,67 @@ TEST_CASE("state queries return what Mesa returns, at the defaults and after cha
   }
 }
 
+TEST_CASE("sampler object and vertex attribute state read back as Mesa reads it", "[conformance]") {
+  namespace gl = softgl;
+  const std::pair<Enum, int> sampler_names[] = {
+      {gl::TEXTURE_MIN_FILTER, 1}, {gl::TEXTURE_MAG_FILTER, 1}, {gl::TEXTURE_WRAP_S, 1}, {gl::TEXTURE_WRAP_T, 1},
+      {gl::TEXTURE_WRAP_R, 1}, {gl::TEXTURE_MIN_LOD, 1}, {gl::TEXTURE_MAX_LOD, 1}, {gl::TEXTURE_LOD_BIAS, 1},
+      {gl::TEXTURE_COMPARE_MODE, 1}, {gl::TEXTURE_COMPARE_FUNC, 1}, {gl::TEXTURE_BORDER_COLOR, 4},
+      {gl::TEXTURE_BASE_LEVEL, 1}};  // (the last is no sampler state: INVALID_ENUM in both)
+  auto change = [](Backend& b, std::uint32_t s) {
+    b.SamplerParameteri(s, gl::TEXTURE_MIN_FILTER, gl::LINEAR_MIPMAP_NEAREST);
+    b.SamplerParameteri(s, gl::TEXTURE_MAG_FILTER, gl::NEAREST);
+    b.SamplerParameteri(s, gl::TEXTURE_WRAP_S, gl::MIRRORED_REPEAT);
+    b.SamplerParameteri(s, gl::TEXTURE_WRAP_R, gl::CLAMP_TO_BORDER);
+    const float lod[3] = {-2.25f, 6.5f, 1.75f}, border[4] = {0.5f, -0.25f, 1.0f, 0.125f};
+    b.SamplerParameterfv(s, gl::TEXTURE_MIN_LOD, &lod[0]);
+    b.SamplerParameterfv(s, gl::TEXTURE_MAX_LOD, &lod[1]);
+    b.SamplerParameterfv(s, gl::TEXTURE_LOD_BIAS, &lod[2]);
+    b.SamplerParameteri(s, gl::TEXTURE_COMPARE_MODE, gl::COMPARE_REF_TO_TEXTURE);
+    b.SamplerParameteri(s, gl::TEXTURE_COMPARE_FUNC, gl::GEQUAL);
+    b.SamplerParameterfv(s, gl::TEXTURE_BORDER_COLOR, border);
+    b.SamplerParameteri(s, gl::TEXTURE_WRAP_T, gl::NEAREST);  // refused: INVALID_ENUM in both
+  };
+  const std::pair<Enum, int> attrib_names[] = {
+      {gl::VERTEX_ATTRIB_ARRAY_ENABLED, 1}, {gl::VERTEX_ATTRIB_ARRAY_SIZE, 1}, {gl::VERTEX_ATTRIB_ARRAY_STRIDE, 1},
+      {gl::VERTEX_ATTRIB_ARRAY_TYPE, 1}, {gl::VERTEX_ATTRIB_ARRAY_NORMALIZED, 1},
+      {gl::VERTEX_ATTRIB_ARRAY_INTEGER, 1}, {gl::VERTEX_ATTRIB_ARRAY_DIVISOR, 1}, {gl::CURRENT_VERTEX_ATTRIB, 4}};
+  std::string error;
+  auto mesa = MakeGlBackend(32, 32, &error);
+  REQUIRE(mesa);
+  auto ours = MakeSoftglBackend(32, 32);
+  const std::uint32_t s_mesa = mesa->GenSampler(), s_ours = ours->GenSampler();
+  for (bool changed : {false, true}) {
+    if (changed) {
+      change(*mesa, s_mesa);
+      change(*ours, s_ours);
+      CHECK(ours->GetError() == mesa->GetError());
+    }
+    for (const auto& [pname, count] : sampler_names) {
+      INFO((changed ? "changed" : "default") << " sampler state 0x" << std::hex << pname);
+      // (The border colour as integers: softgl rounds c * (2^31 - 1), as OpenGL 4.6's equation 2.4 says, so that
+      // what SamplerParameteriv set reads back as it was; Mesa truncates. The guide's Errors section says so.)
+      if (pname != gl::TEXTURE_BORDER_COLOR)
+        CHECK(ours->GetSamplerIntegers(s_ours, pname, count) == mesa->GetSamplerIntegers(s_mesa, pname, count));
+      CHECK(ours->GetSamplerFloats(s_ours, pname, count) == mesa->GetSamplerFloats(s_mesa, pname, count));
+      CHECK(ours->GetError() == mesa->GetError());
+    }
+  }
+  for (std::uint32_t index : {0u, 2u, 5u}) {
+    for (const auto& [pname, count] : attrib_names) {
+      INFO("attribute " << index << " state 0x" << std::hex << pname);
+      CHECK(ours->GetVertexAttribIntegers(index, pname, count) == mesa->GetVertexAttribIntegers(index, pname, count));
+      CHECK(ours->GetVertexAttribFloats(index, pname, count) == mesa->GetVertexAttribFloats(index, pname, count));
+      CHECK(ours->GetError() == mesa->GetError());
+    }
+  }
+  // A name that is no attribute state: the same error (Mesa then writes 0, softgl leaves the values, as OpenGL's
+  // "no change is made to params" on an error has it).
+  (void)ours->GetVertexAttribIntegers(0, gl::TEXTURE_2D, 1);
+  (void)mesa->GetVertexAttribIntegers(0, gl::TEXTURE_2D, 1);
+  CHECK(ours->GetError() == mesa->GetError());
+}
+
 TEST_CASE("query results equal Mesa's", "[conformance]") {
   namespace gl = softgl;
   // In 128 x 128 window coordinates, z in [-1, 1] as NDC.

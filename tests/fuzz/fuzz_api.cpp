@@ -537,18 +537,34 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         }
         break;
       }
-      case 44: {  // ClearBuffer*: any buffer and draw buffer, values NaN, infinite or huge included
+      case 44: {  // ClearBuffer*: any buffer and draw buffer, values NaN, infinite or huge included; GetVertexAttrib*
         constexpr std::uint32_t kBuffers[] = {COLOR, DEPTH, STENCIL, DEPTH_STENCIL, COLOR_BUFFER_BIT, 0};
         const float fv[4] = {in.Float(), in.Float(), in.Float(), in.Float()};
         const int iv[4] = {in.Get<int>(), in.Int(-2, 300), 1, 0};
         const std::uint32_t uv[4] = {in.Get<std::uint32_t>(), 1, 0, 1};
         const std::uint32_t buffer = in.Enum(kBuffers);
         const int drawbuffer = in.Int(-1, kMaxColorOutputs);
-        switch (in.Byte() % 4) {
+        switch (in.Byte() % 5) {
           case 0: gl.ClearBufferfv(buffer, drawbuffer, in.Byte() % 8 ? fv : nullptr); break;
           case 1: gl.ClearBufferiv(buffer, drawbuffer, iv); break;
           case 2: gl.ClearBufferuiv(buffer, drawbuffer, uv); break;
-          default: gl.ClearBufferfi(buffer, drawbuffer, fv[0], iv[1]); break;
+          case 3: gl.ClearBufferfi(buffer, drawbuffer, fv[0], iv[1]); break;
+          default: {
+            const std::uint32_t index = std::uint32_t(in.Int(-1, kMaxVertexAttribs));
+            const std::uint32_t pname = std::uint32_t(in.Byte() % 2 ? in.Int(0x8620, 0x8646) : in.Int(0x8869, 0x88FF));
+            int out_i[4];
+            std::uint32_t out_u[4];
+            float out_f[4];
+            double out_d[4];
+            void* pointer = nullptr;
+            gl.GetVertexAttribiv(index, pname, out_i);
+            gl.GetVertexAttribIiv(index, pname, out_i);
+            gl.GetVertexAttribIuiv(index, pname, out_u);
+            gl.GetVertexAttribfv(index, pname, out_f);
+            gl.GetVertexAttribdv(index, pname, out_d);
+            gl.GetVertexAttribPointerv(index, pname, &pointer);
+            break;
+          }
         }
         break;
       }
