@@ -46,6 +46,7 @@ bool QueryState(ContextState& s, Enum pname, StateValue& out) {
     case COPY_WRITE_BUFFER_BINDING: return integer(IdOf(s.buffers, s.copy_write_buffer.get()));
     case VERTEX_ARRAY_BINDING: return integer(s.vao_id);
     case ACTIVE_TEXTURE: return integer(TEXTURE0 + Enum(s.active_unit));
+    case TIMESTAMP: return integer(std::int64_t(TimestampNs()));
     case TEXTURE_BINDING_2D: return integer(IdOf(s.textures, s.Bound(TEXTURE_2D)));
     case TEXTURE_BINDING_CUBE_MAP: return integer(IdOf(s.textures, s.Bound(TEXTURE_CUBE_MAP)));
     case TEXTURE_BINDING_2D_ARRAY: return integer(IdOf(s.textures, s.Bound(TEXTURE_2D_ARRAY)));
@@ -283,8 +284,26 @@ void Context::EndQuery(Enum target) {
   }
 }
 
+void Context::QueryCounter(std::uint32_t id, Enum target) {
+  auto& s = *state_;
+  if (target != TIMESTAMP) return s.SetError(INVALID_ENUM, __func__, "target must be TIMESTAMP");
+  auto it = s.queries.find(id);
+  if (it == s.queries.end()) return s.SetError(INVALID_OPERATION, __func__, "not a query id made by GenQuery (or it was deleted)");
+  QueryObject& q = *it->second;
+  if (q.active) return s.SetError(INVALID_OPERATION, __func__, "the query is active");
+  if (q.target != 0 && q.target != TIMESTAMP) return s.SetError(INVALID_OPERATION, __func__, "the query was begun with another target");
+  q.target = TIMESTAMP;
+  s.Sync(__func__);  // the time when everything before it has been rendered
+  q.elapsed_ns = TimestampNs();
+}
+
 void Context::GetQueryiv(Enum target, Enum pname, int* params) const {
   auto& s = *state_;
+  if (target == TIMESTAMP) {  // (it has a counter, never an active query)
+    if (pname != QUERY_COUNTER_BITS) return s.SetError(INVALID_ENUM, __func__, "TIMESTAMP takes QUERY_COUNTER_BITS only");
+    if (NotNull(s, __func__, params, "params")) *params = 64;
+    return;
+  }
   const int slot = QuerySlot(target);
   if (slot < 0) return s.SetError(INVALID_ENUM, __func__, "target must be SAMPLES_PASSED, ANY_SAMPLES_PASSED, PRIMITIVES_GENERATED or TIME_ELAPSED");
   if (pname != CURRENT_QUERY && pname != QUERY_COUNTER_BITS) return s.SetError(INVALID_ENUM, __func__, "pname must be CURRENT_QUERY or QUERY_COUNTER_BITS");

@@ -101,8 +101,14 @@ struct QueryObject {
   std::shared_ptr<detail::OcclusionCounter> counter;  // SAMPLES_PASSED, ANY_SAMPLES_PASSED: tiles add to it
   std::uint64_t count = 0;                            // PRIMITIVES_GENERATED, counted as draws are recorded
   std::chrono::steady_clock::time_point start;        // TIME_ELAPSED
-  std::uint64_t elapsed_ns = 0;
+  std::uint64_t elapsed_ns = 0;  // TIME_ELAPSED; TIMESTAMP: the time QueryCounter recorded (TimestampNs)
 };
+
+// TIMESTAMP's clock: nanoseconds since the first time it was read in the process (a steady clock).
+inline std::uint64_t TimestampNs() {
+  static const auto epoch = std::chrono::steady_clock::now();
+  return std::uint64_t(std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now() - epoch).count());
+}
 
 // The slot of each query target: 0 SAMPLES_PASSED, 1 ANY_SAMPLES_PASSED, 2 PRIMITIVES_GENERATED, 3 TIME_ELAPSED.
 inline int QuerySlot(Enum target) {

@@ -2209,3 +2209,56 @@ TEST_CASE("GetVertexAttrib reads back each attribute's array state and current v
   CHECK(gl.GetError() == INVALID_VALUE);
   CHECK(v == -7);
 }
+
+TEST_CASE("QueryCounter records TIMESTAMP after the work before it; GetInteger64v(TIMESTAMP) reads the same clock",
+          "[context][errors]") {
+  Context gl(64, 64);
+  std::uint32_t ids[3];
+  gl.GenQueries(3, ids);
+  std::int64_t now0 = 0;
+  gl.GetInteger64v(TIMESTAMP, &now0);
+  gl.QueryCounter(ids[0], TIMESTAMP);
+  testing::SolidShader shader;
+  gl.UseProgram(shader);
+  testing::MakeVertexArray(gl, {{-1, -1, 0, 1}, {3, -1, 0, 1}, {-1, 3, 0, 1}});
+  for (int i = 0; i < 50; ++i) gl.DrawArrays(TRIANGLES, 0, 3);
+  gl.QueryCounter(ids[1], TIMESTAMP);
+  std::int64_t now1 = 0;
+  gl.GetInteger64v(TIMESTAMP, &now1);
+  std::uint64_t t0 = 0, t1 = 0;
+  gl.GetQueryObjectui64v(ids[0], QUERY_RESULT, &t0);
+  gl.GetQueryObjectui64v(ids[1], QUERY_RESULT, &t1);
+  CHECK(std::int64_t(t0) >= now0);
+  CHECK(t1 > t0);  // (the draws were rendered in between)
+  CHECK(now1 >= std::int64_t(t1));
+  int available = 0, bits = 0;
+  gl.GetQueryObjectiv(ids[1], QUERY_RESULT_AVAILABLE, &available);
+  CHECK(available == 1);
+  gl.GetQueryiv(TIMESTAMP, QUERY_COUNTER_BITS, &bits);
+  CHECK(bits == 64);
+  gl.QueryCounter(ids[0], TIMESTAMP);  // again: a later time
+  std::uint64_t t2 = 0;
+  gl.GetQueryObjectui64v(ids[0], QUERY_RESULT, &t2);
+  CHECK(t2 >= t1);
+  CHECK(gl.GetError() == NO_ERROR);
+
+  // Errors.
+  gl.QueryCounter(ids[2], TIME_ELAPSED);
+  CHECK(gl.GetError() == INVALID_ENUM);
+  gl.QueryCounter(ids[2] + 100, TIMESTAMP);
+  CHECK(gl.GetError() == INVALID_OPERATION);
+  gl.BeginQuery(TIMESTAMP, ids[2]);
+  CHECK(gl.GetError() == INVALID_ENUM);
+  gl.GetQueryiv(TIMESTAMP, CURRENT_QUERY, &bits);
+  CHECK(gl.GetError() == INVALID_ENUM);
+  gl.BeginQuery(SAMPLES_PASSED, ids[2]);
+  gl.QueryCounter(ids[2], TIMESTAMP);  // active
+  CHECK(gl.GetError() == INVALID_OPERATION);
+  gl.EndQuery(SAMPLES_PASSED);
+  gl.QueryCounter(ids[2], TIMESTAMP);  // begun with another target
+  CHECK(gl.GetError() == INVALID_OPERATION);
+  gl.BeginQuery(TIME_ELAPSED, ids[1]);  // a TIMESTAMP query is not begun with another target either
+  CHECK(gl.GetError() == INVALID_OPERATION);
+  gl.GetInteger64v(TIMESTAMP, nullptr);
+  CHECK(gl.GetError() == INVALID_VALUE);
+}

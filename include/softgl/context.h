@@ -691,7 +691,12 @@ class Context {
   void BeginQuery(Enum target, std::uint32_t id);
   /// Stops the query active on target (none: INVALID_OPERATION).
   void EndQuery(Enum target);
-  /// CURRENT_QUERY (the id active on target, or 0) or QUERY_COUNTER_BITS (64).
+  /// Records in query `id` the time (TIMESTAMP: nanoseconds, the clock GetInteger64v(TIMESTAMP) reads) once
+  /// everything before it has been rendered: it renders what was recorded. Errors: target not TIMESTAMP:
+  /// INVALID_ENUM; an id not made by GenQuery, an active query or one begun with another target: INVALID_OPERATION.
+  void QueryCounter(std::uint32_t id, Enum target);
+  /// CURRENT_QUERY (the id active on target, or 0) or QUERY_COUNTER_BITS (64); TIMESTAMP takes QUERY_COUNTER_BITS
+  /// alone.
   void GetQueryiv(Enum target, Enum pname, int* params) const;
   /// QUERY_RESULT (the count, or 0 / 1 for ANY_SAMPLES_PASSED, or nanoseconds) or QUERY_RESULT_AVAILABLE (true:
   /// asking renders the recorded draws the result depends on, so it is always available). The smaller types clamp

@@ -466,6 +466,7 @@ inline constexpr Enum SAMPLES_PASSED = 0x8914;
 inline constexpr Enum ANY_SAMPLES_PASSED = 0x8C2F;
 inline constexpr Enum PRIMITIVES_GENERATED = 0x8C87;
 inline constexpr Enum TIME_ELAPSED = 0x88BF;
+inline constexpr Enum TIMESTAMP = 0x8E28;  // QueryCounter's target; GetInteger64v: the time now, in nanoseconds
 inline constexpr Enum QUERY_COUNTER_BITS = 0x8864;
 inline constexpr Enum CURRENT_QUERY = 0x8865;
 inline constexpr Enum QUERY_RESULT = 0x8866;

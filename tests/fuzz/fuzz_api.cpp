@@ -332,7 +332,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       case 35: gl.PolygonOffset(in.Float(), in.Float()); break;
       case 36: {
         constexpr std::uint32_t kQueryTargets[] = {SAMPLES_PASSED, ANY_SAMPLES_PASSED, PRIMITIVES_GENERATED,
-                                                   TIME_ELAPSED};
+                                                   TIME_ELAPSED, TIMESTAMP};
         std::uint64_t result = 0;
         int cols = 0, rows = 0;
         switch (in.Byte() % 8) {
@@ -340,7 +340,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
           case 1: gl.GenQuery(); break;
           case 2: gl.BeginQuery(in.Enum(kQueryTargets), id()); break;
           case 3: gl.EndQuery(in.Enum(kQueryTargets)); break;
-          case 4: gl.DeleteQuery(id()); break;
+          case 4:
+            if (in.Byte() % 2) gl.DeleteQuery(id());
+            else gl.QueryCounter(id(), in.Enum(kQueryTargets));
+            break;
           case 5: gl.CountTilePrimitives(in.Byte() % 2 != 0); break;
           case 6:
             if (gl.TilePrimitiveCounts(&cols, &rows).size() != std::size_t(cols) * std::size_t(rows)) __builtin_trap();
