@@ -387,7 +387,7 @@ namespace {
 // The rest of every clear call: records `clear` (nothing when it clears nothing).
 void RecordClear(ContextState& s, const detail::RenderTarget& target, const detail::ClearPacket& clear,
                  const char* what) {
-  if (!clear.color && !clear.depth && !clear.stencil) return;
+  if ((!clear.color && !clear.depth && !clear.stencil) || s.condition_discards) return;
   if (!s.frame.Accepts(target)) s.Sync(what);
   try {
     s.frame.AddClear(target, clear);

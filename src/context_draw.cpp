@@ -31,6 +31,7 @@ void ContextState::Draw(const detail::DrawCall& call) {
 
   detail::RenderTarget target;
   if (!DrawTarget(target, true)) return;
+  if (condition_discards) return;  // BeginConditionalRender's query counted nothing
 
   // The fragment stage's state, captured now: the shader's uniforms (a copy), the textures of every unit resolved
   // once, the per-fragment operations.

@@ -207,8 +207,9 @@ PackLayout Pack(const ContextState& s, int width, int height, bool layered, Enum
 // RGBA as FLOAT the row's floats (LoadRow) written where they go; any other pair the row's floats converted by
 // PackColorRow. A fixed-point buffer's values are in [0, 1]; a float buffer's are clamped only when converted to a
 // normalized type.
+// `clamp`: ClampColor's clamping to [0, 1] (NaN to 0), before the conversion to `type`.
 void ReadColorRows(const detail::ColorBuffer& cb, Enum format, Enum type, const PackLayout& pack, int i0, int j0,
-                   int x0, int x1, int y0, int y1) {
+                   int x0, int x1, int y0, int y1, bool clamp) {
   const int n = x1 - x0;
   int ch[4];
   const int channels = detail::FormatChannels(format, ch);
@@ -232,10 +233,13 @@ void ReadColorRows(const detail::ColorBuffer& cb, Enum format, Enum type, const 
       float* f = reinterpret_cast<float*>(out);
       detail::LoadRow(cb, 1, x0, n, y, f);
       for (int i = 0; i < 4 * n; ++i)
-        if (f[i] != f[i]) f[i] = float(double(f[i]));
+        if (clamp) f[i] = f[i] > 0.0f ? std::min(f[i], 1.0f) : 0.0f;
+        else if (f[i] != f[i]) f[i] = float(double(f[i]));
       for (int i = 0; i < n; ++i, out += pack.pixel) pack.Swap(out);
     } else {
       detail::LoadRow(cb, 1, x0, n, y, row.data());
+      if (clamp)
+        for (float& v : row) v = v > 0.0f ? std::min(v, 1.0f) : 0.0f;
       detail::PackColorRow(format, type, row.data(), n, out, pack.pixel);
       for (int i = 0; i < n; ++i, out += pack.pixel) pack.Swap(out);
     }
@@ -243,6 +247,13 @@ void ReadColorRows(const detail::ColorBuffer& cb, Enum format, Enum type, const 
 }
 
 }  // namespace
+
+void Context::ClampColor(Enum target, Enum clamp) {
+  auto& s = *state_;
+  if (target != CLAMP_READ_COLOR) return s.SetError(INVALID_ENUM, __func__, "target must be CLAMP_READ_COLOR");
+  if (clamp != 0 && clamp != 1 && clamp != FIXED_ONLY) return s.SetError(INVALID_ENUM, __func__, "clamp must be true, false or FIXED_ONLY");
+  s.clamp_read_color = clamp;
+}
 
 void Context::ReadPixels(int x, int y, int width, int height, Enum format, Enum type, void* pixels) const {
   auto& s = *state_;
@@ -271,7 +282,7 @@ void Context::ReadPixels(int x, int y, int width, int height, Enum format, Enum 
   if (!depth && !stencil) {
     // (x0 - x and y0 - y, the first pixel's place in the client rows, only for a rectangle that reaches inside:
     // x or y may be INT_MIN.)
-    if (x0 < x1 && y0 < y1) ReadColorRows(t.color[0], format, type, pack, x0 - x, y0 - y, x0, x1, y0, y1);
+    if (x0 < x1 && y0 < y1) ReadColorRows(t.color[0], format, type, pack, x0 - x, y0 - y, x0, x1, y0, y1, s.clamp_read_color == 1);
     return;
   }
   for (int py = y0; py < y1; ++py)

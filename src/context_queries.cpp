@@ -102,6 +102,8 @@ bool QueryState(ContextState& s, Enum pname, StateValue& out) {
       const bool* m = s.ops.color_mask;
       return put(Kind::kBool, {double(m[0]), double(m[1]), double(m[2]), double(m[3])});
     }
+    case CLAMP_READ_COLOR: return integer(s.clamp_read_color);
+    case MAX_SERVER_WAIT_TIMEOUT: return integer(0);  // WaitSync never waits
     case UNPACK_ALIGNMENT: return integer(s.unpack.alignment);
     case UNPACK_ROW_LENGTH: return integer(s.unpack.row_length);
     case UNPACK_IMAGE_HEIGHT: return integer(s.unpack.image_height);
@@ -277,6 +279,7 @@ void Context::EndQuery(Enum target) {
   QueryObject& q = *s.queries.at(s.active_query[slot]);
   s.active_query[slot] = 0;
   q.active = false;
+  q.end_mark = s.WorkMark();
   if (slot == 3) {
     s.Sync(__func__);
     q.elapsed_ns = std::uint64_t(
@@ -332,6 +335,108 @@ bool QueryResult(ContextState& s, const char* what, std::uint32_t id, Enum pname
 }
 
 }  // namespace
+
+// ---- Conditional rendering ----------------------------------------------------------------------------------
+
+void Context::BeginConditionalRender(std::uint32_t id, Enum mode) {
+  auto& s = *state_;
+  if (mode != QUERY_WAIT && mode != QUERY_NO_WAIT && mode != QUERY_BY_REGION_WAIT && mode != QUERY_BY_REGION_NO_WAIT)
+    return s.SetError(INVALID_ENUM, __func__, "mode must be QUERY_WAIT, QUERY_NO_WAIT, QUERY_BY_REGION_WAIT or QUERY_BY_REGION_NO_WAIT");
+  auto it = s.queries.find(id);
+  if (it == s.queries.end()) return s.SetError(INVALID_VALUE, __func__, "not a query id made by GenQuery (or it was deleted)");
+  if (s.condition_query) return s.SetError(INVALID_OPERATION, __func__, "conditional rendering is already on");
+  const QueryObject& q = *it->second;
+  if (q.target != SAMPLES_PASSED && q.target != ANY_SAMPLES_PASSED) return s.SetError(INVALID_OPERATION, __func__, "the query is not an occlusion query (SAMPLES_PASSED or ANY_SAMPLES_PASSED) that has been begun");
+  if (q.active) return s.SetError(INVALID_OPERATION, __func__, "the query is active");
+  const bool wait = mode == QUERY_WAIT || mode == QUERY_BY_REGION_WAIT;
+  if (wait) s.Sync(__func__);
+  s.condition_query = id;
+  // Without waiting, a result still waiting for its draws to be rendered draws everything (OpenGL allows it).
+  s.condition_discards = s.WorkDone(q.end_mark) && (!q.counter || q.counter->passed.load() == 0);
+}
+
+void Context::EndConditionalRender() {
+  auto& s = *state_;
+  if (!s.condition_query) return s.SetError(INVALID_OPERATION, __func__, "conditional rendering is not on");
+  s.condition_query = 0;
+  s.condition_discards = false;
+}
+
+// ---- Sync objects ------------------------------------------------------------------------------------------------
+
+namespace {
+
+// The fence behind handle `sync`, or null (the handle is only compared, never read through).
+const SyncObject* FindSync(const ContextState& s, Sync sync) {
+  auto it = s.syncs.find(sync);
+  return it == s.syncs.end() ? nullptr : it->second.get();
+}
+
+}  // namespace
+
+Sync Context::FenceSync(Enum condition, Bitfield flags) {
+  auto& s = *state_;
+  if (condition != SYNC_GPU_COMMANDS_COMPLETE) return s.SetError(INVALID_ENUM, __func__, "condition must be SYNC_GPU_COMMANDS_COMPLETE"), nullptr;
+  if (flags != 0) return s.SetError(INVALID_VALUE, __func__, "flags must be 0"), nullptr;
+  try {
+    auto fence = std::make_unique<SyncObject>();
+    fence->mark = s.WorkMark();
+    SyncObject* handle = fence.get();
+    s.syncs.emplace(handle, std::move(fence));
+    return handle;
+  } catch (const std::bad_alloc&) {
+    return s.SetError(OUT_OF_MEMORY, __func__, "out of memory"), nullptr;
+  }
+}
+
+bool Context::IsSync(Sync sync) const { return FindSync(*state_, sync) != nullptr; }
+
+void Context::DeleteSync(Sync sync) {
+  auto& s = *state_;
+  if (sync == nullptr) return;
+  if (s.syncs.erase(sync) == 0) s.SetError(INVALID_VALUE, __func__, "not a fence made by FenceSync (or it was deleted)");
+}
+
+Enum Context::ClientWaitSync(Sync sync, Bitfield flags, std::uint64_t timeout) {
+  auto& s = *state_;
+  const SyncObject* fence = FindSync(s, sync);
+  if (!fence) return s.SetError(INVALID_VALUE, __func__, "not a fence made by FenceSync (or it was deleted)"), WAIT_FAILED;
+  if (flags & ~SYNC_FLUSH_COMMANDS_BIT) return s.SetError(INVALID_VALUE, __func__, "flags may only have SYNC_FLUSH_COMMANDS_BIT"), WAIT_FAILED;
+  if (s.WorkDone(fence->mark)) return ALREADY_SIGNALED;
+  if (timeout == 0) {
+    if (flags & SYNC_FLUSH_COMMANDS_BIT) s.Sync(__func__);  // as Flush: the next wait finds it signalled
+    return TIMEOUT_EXPIRED;
+  }
+  s.Sync(__func__);
+  return CONDITION_SATISFIED;
+}
+
+void Context::WaitSync(Sync sync, Bitfield flags, std::uint64_t timeout) {
+  auto& s = *state_;
+  if (!FindSync(s, sync)) return s.SetError(INVALID_VALUE, __func__, "not a fence made by FenceSync (or it was deleted)");
+  if (flags != 0) return s.SetError(INVALID_VALUE, __func__, "flags must be 0");
+  if (timeout != TIMEOUT_IGNORED) return s.SetError(INVALID_VALUE, __func__, "timeout must be TIMEOUT_IGNORED");
+}
+
+void Context::GetSynciv(Sync sync, Enum pname, int bufSize, int* length, int* values) const {
+  auto& s = *state_;
+  const SyncObject* fence = FindSync(s, sync);
+  if (!fence) return s.SetError(INVALID_VALUE, __func__, "not a fence made by FenceSync (or it was deleted)");
+  int value = 0;
+  switch (pname) {
+    case OBJECT_TYPE: value = int(SYNC_FENCE); break;
+    case SYNC_STATUS: value = int(s.WorkDone(fence->mark) ? SIGNALED : UNSIGNALED); break;
+    case SYNC_CONDITION: value = int(SYNC_GPU_COMMANDS_COMPLETE); break;
+    case SYNC_FLAGS: value = 0; break;
+    default: return s.SetError(INVALID_ENUM, __func__, "pname must be OBJECT_TYPE, SYNC_STATUS, SYNC_CONDITION or SYNC_FLAGS");
+  }
+  if (bufSize < 0) return s.SetError(INVALID_VALUE, __func__, "bufSize is negative");
+  if (bufSize > 0) {
+    if (!NotNull(s, __func__, values, "values")) return;
+    values[0] = value;
+  }
+  if (length) *length = bufSize > 0 ? 1 : 0;
+}
 
 void Context::GetQueryObjectiv(std::uint32_t id, Enum pname, int* params) {
   std::uint64_t v = 0;

@@ -102,6 +102,12 @@ struct QueryObject {
   std::uint64_t count = 0;                            // PRIMITIVES_GENERATED, counted as draws are recorded
   std::chrono::steady_clock::time_point start;        // TIME_ELAPSED
   std::uint64_t elapsed_ns = 0;  // TIME_ELAPSED; TIMESTAMP: the time QueryCounter recorded (TimestampNs)
+  std::uint64_t end_mark = 0;    // ContextState::WorkMark() at EndQuery: the result is final once it is done
+};
+
+// A fence (FenceSync): signalled once what was recorded before it has been rendered.
+struct SyncObject {
+  std::uint64_t mark = 0;  // ContextState::WorkMark() when it was made
 };
 
 // TIMESTAMP's clock: nanoseconds since the first time it was read in the process (a steady clock).
@@ -176,6 +182,16 @@ struct ContextState {
   std::unordered_map<std::uint32_t, std::unique_ptr<QueryObject>> queries;
   std::uint32_t next_query = 1;
   std::uint32_t active_query[4] = {0, 0, 0, 0};  // by QuerySlot: the id active on each target (0: none)
+  // Conditional rendering: the query id between BeginConditionalRender and EndConditionalRender (0: none), and
+  // whether its result discards the draws and clears meanwhile.
+  std::uint32_t condition_query = 0;
+  bool condition_discards = false;
+  // Fences, by their handles (the address of each object: never read through a handle the caller gives).
+  std::unordered_map<const SyncObject*, std::unique_ptr<SyncObject>> syncs;
+  // The number of times the recorded work has been rendered (Sync): a mark WorkMark() gave is done once it is
+  // reached.
+  std::uint64_t renders = 0;
+  Enum clamp_read_color = FIXED_ONLY;  // ClampColor(CLAMP_READ_COLOR)
   FramebufferObject* draw_fbo = nullptr;
   FramebufferObject* read_fbo = nullptr;
 
@@ -279,9 +295,14 @@ struct ContextState {
 
   void Draw(const detail::DrawCall& call);
 
+  // A mark for the work recorded so far: WorkDone(mark) once it has all been rendered (0 when there is none).
+  std::uint64_t WorkMark() const { return frame.Empty() ? 0 : renders + 1; }
+  bool WorkDone(std::uint64_t mark) const { return mark <= renders; }
+
   // Renders what is recorded, so that the buffers hold it: before the buffers are read, before anything a
   // recorded draw refers to (textures, framebuffer attachments) changes, and before drawing elsewhere.
   void Sync(const char* call) {
+    ++renders;
     try {
       frame.Render(*pool, scratch.tiles);
       last_snapshot.reset();  // the next frame's draws take a copy of their own

@@ -35,6 +35,10 @@ inline constexpr int kMaxFramebufferSize = 16384;
 
 struct ContextState;  // defined in src/, never seen by users
 
+struct SyncObject;  // defined in src/, never seen by users
+/// A fence made by FenceSync (OpenGL's GLsync): an opaque handle; null is none.
+using Sync = SyncObject*;
+
 class Context {
  public:
   /// Creates a context whose framebuffer is width x height pixels. 0 x 0 is allowed (every draw is then a no-op).
@@ -706,6 +710,40 @@ class Context {
   void GetQueryObjecti64v(std::uint32_t id, Enum pname, std::int64_t* params);
   void GetQueryObjectui64v(std::uint32_t id, Enum pname, std::uint64_t* params);
 
+  // ---- Conditional rendering -----------------------------------------------------------------------------------
+  /// glBeginConditionalRender: until EndConditionalRender, draws and clears (Clear, ClearBuffer*) are dropped when
+  /// occlusion query `id` (SAMPLES_PASSED or ANY_SAMPLES_PASSED) counted nothing. QUERY_WAIT and
+  /// QUERY_BY_REGION_WAIT render what was recorded before, so that the result is known; QUERY_NO_WAIT and
+  /// QUERY_BY_REGION_NO_WAIT use the result if the draws it counted have already been rendered (Finish, a read
+  /// back, a query's result) and otherwise draw unconditionally, as OpenGL allows. The result is taken once, here.
+  /// Errors: bad mode: INVALID_ENUM; an id that is not a query: INVALID_VALUE; conditional rendering already on, a
+  /// query never begun, of another target, or active: INVALID_OPERATION.
+  void BeginConditionalRender(std::uint32_t id, Enum mode);
+  /// Ends conditional rendering (not on: INVALID_OPERATION).
+  void EndConditionalRender();
+
+  // ---- Sync objects --------------------------------------------------------------------------------------------
+  /// glFenceSync: a fence, signalled once everything recorded before it has been rendered (Finish, Flush, a read
+  /// back, ClientWaitSync). condition must be SYNC_GPU_COMMANDS_COMPLETE (else INVALID_ENUM) and flags 0 (else
+  /// INVALID_VALUE); null on error.
+  Sync FenceSync(Enum condition, Bitfield flags);
+  /// Whether `sync` is a fence FenceSync made and DeleteSync has not deleted.
+  bool IsSync(Sync sync) const;
+  /// Deletes a fence. Null is ignored; anything else that is not a fence: INVALID_VALUE.
+  void DeleteSync(Sync sync);
+  /// glClientWaitSync: ALREADY_SIGNALED when the fence is signalled already; else with timeout 0 it renders
+  /// nothing (unless flags has SYNC_FLUSH_COMMANDS_BIT, which renders as Flush does) and returns TIMEOUT_EXPIRED;
+  /// with a timeout above 0 it renders what was recorded, however long that takes, and returns
+  /// CONDITION_SATISFIED. Not a fence, or flags other than SYNC_FLUSH_COMMANDS_BIT: INVALID_VALUE, WAIT_FAILED.
+  Enum ClientWaitSync(Sync sync, Bitfield flags, std::uint64_t timeout);
+  /// glWaitSync: commands run in order, so there is nothing to wait for; it checks its arguments (not a fence,
+  /// flags not 0, timeout not TIMEOUT_IGNORED: INVALID_VALUE).
+  void WaitSync(Sync sync, Bitfield flags, std::uint64_t timeout);
+  /// glGetSynciv: OBJECT_TYPE (SYNC_FENCE), SYNC_STATUS (SIGNALED or UNSIGNALED), SYNC_CONDITION
+  /// (SYNC_GPU_COMMANDS_COMPLETE), SYNC_FLAGS (0), one value written to `values` if bufSize > 0, and 1 to `length`
+  /// unless it is null. Not a fence, negative bufSize: INVALID_VALUE; another pname: INVALID_ENUM.
+  void GetSynciv(Sync sync, Enum pname, int bufSize, int* length, int* values) const;
+
   // ---- State queries -----------------------------------------------------------------------------------------
   /// glGet*: the state named by pname, converted as OpenGL converts it (booleans to 0 / 1; floats to integers by
   /// rounding, except colours and depths, which map [-1, 1] linearly onto the integer range; GetIntegerv clamps to
@@ -744,11 +782,17 @@ class Context {
   /// (2^(b-1) - 1))), HALF_FLOAT and FLOAT (as stored), the packed types (each field as the unsigned ones; the
   /// two packed float types encoded), stencil indices masked to the type's bits; DEPTH_STENCIL with
   /// UNSIGNED_INT_24_8 (depth in the high 24 bits, stencil in the low 8) or FLOAT_32_UNSIGNED_INT_24_8_REV.
-  /// Pixels of the rectangle outside the framebuffer are not written. Errors: bad format or type, DEPTH_STENCIL
+  /// Pixels of the rectangle outside the framebuffer are not written; colours are clamped to [0, 1] first where
+  /// ClampColor says so. Errors: bad format or type, DEPTH_STENCIL
   /// with another type: INVALID_ENUM; negative size: INVALID_VALUE; a packed type with another format, an integer
   /// format, no buffer of the kind asked: INVALID_OPERATION; incomplete read framebuffer:
   /// INVALID_FRAMEBUFFER_OPERATION.
   void ReadPixels(int x, int y, int width, int height, Enum format, Enum type, void* pixels) const;
+  /// glClampColor(CLAMP_READ_COLOR, clamp): whether ReadPixels clamps colours to [0, 1] before converting them:
+  /// true (1) clamps; false (0) does not; FIXED_ONLY (the default) clamps values read from fixed-point buffers only,
+  /// which hold [0, 1] already, so float buffers read as stored. Query CLAMP_READ_COLOR. Errors: another target or
+  /// clamp: INVALID_ENUM.
+  void ClampColor(Enum target, Enum clamp);
   /// The colour buffer, top row first (ready for WritePng).
   Image ReadPixels() const;
   /// The colour of window pixel (x, y), y counted from the bottom as in OpenGL; {0,0,0,0} outside.

@@ -472,4 +472,31 @@ inline constexpr Enum CURRENT_QUERY = 0x8865;
 inline constexpr Enum QUERY_RESULT = 0x8866;
 inline constexpr Enum QUERY_RESULT_AVAILABLE = 0x8867;
 
+// Conditional rendering (BeginConditionalRender's modes).
+inline constexpr Enum QUERY_WAIT = 0x8E13;
+inline constexpr Enum QUERY_NO_WAIT = 0x8E14;
+inline constexpr Enum QUERY_BY_REGION_WAIT = 0x8E15;
+inline constexpr Enum QUERY_BY_REGION_NO_WAIT = 0x8E16;
+
+// Sync objects (FenceSync, ClientWaitSync, WaitSync, GetSynciv).
+inline constexpr Enum SYNC_GPU_COMMANDS_COMPLETE = 0x9117;
+inline constexpr Bitfield SYNC_FLUSH_COMMANDS_BIT = 0x00000001;
+inline constexpr std::uint64_t TIMEOUT_IGNORED = 0xFFFFFFFFFFFFFFFFull;
+inline constexpr Enum MAX_SERVER_WAIT_TIMEOUT = 0x9111;
+inline constexpr Enum OBJECT_TYPE = 0x9112;
+inline constexpr Enum SYNC_CONDITION = 0x9113;
+inline constexpr Enum SYNC_STATUS = 0x9114;
+inline constexpr Enum SYNC_FLAGS = 0x9115;
+inline constexpr Enum SYNC_FENCE = 0x9116;
+inline constexpr Enum UNSIGNALED = 0x9118;
+inline constexpr Enum SIGNALED = 0x9119;
+inline constexpr Enum ALREADY_SIGNALED = 0x911A;
+inline constexpr Enum TIMEOUT_EXPIRED = 0x911B;
+inline constexpr Enum CONDITION_SATISFIED = 0x911C;
+inline constexpr Enum WAIT_FAILED = 0x911D;
+
+// ClampColor (its clamp is also true or false: OpenGL's TRUE and FALSE are 1 and 0).
+inline constexpr Enum CLAMP_READ_COLOR = 0x891C;
+inline constexpr Enum FIXED_ONLY = 0x891D;
+
 }  // namespace softgl

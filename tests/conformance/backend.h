@@ -210,6 +210,19 @@ class Backend {
   virtual void BeginQuery(Enum target, std::uint32_t id) = 0;
   virtual void EndQuery(Enum target) = 0;
   virtual std::uint64_t QueryResult(std::uint32_t id) = 0;
+  /// glBeginConditionalRender / glEndConditionalRender.
+  virtual void BeginConditionalRender(std::uint32_t id, Enum mode) = 0;
+  virtual void EndConditionalRender() = 0;
+  /// Sync objects, a fence as an opaque handle: glFenceSync, glIsSync, glDeleteSync, glClientWaitSync, glWaitSync,
+  /// and glGetSynciv of one value (bufSize 1; the value is -1 where the call writes none).
+  virtual const void* FenceSync(Enum condition, std::uint32_t flags) = 0;
+  virtual bool IsSync(const void* sync) = 0;
+  virtual void DeleteSync(const void* sync) = 0;
+  virtual Enum ClientWaitSync(const void* sync, std::uint32_t flags, std::uint64_t timeout) = 0;
+  virtual void WaitSync(const void* sync, std::uint32_t flags, std::uint64_t timeout) = 0;
+  virtual int GetSynci(const void* sync, Enum pname) = 0;
+  /// glClampColor.
+  virtual void ClampColor(Enum target, Enum clamp) = 0;
   virtual Frame Read() = 0;
   /// ReadPixels into a buffer of `bytes` bytes first filled with 0xCD (bytes the call does not write keep it).
   virtual std::vector<std::uint8_t> ReadPixels(const PixelRead& read, std::size_t bytes) = 0;

@@ -579,6 +579,22 @@ class GlBackend final : public Backend {
   std::uint32_t GenQuery() override { return GenOne(glGenQueries); }
   void BeginQuery(Enum target, std::uint32_t id) override { glBeginQuery(target, id); }
   void EndQuery(Enum target) override { glEndQuery(target); }
+  void BeginConditionalRender(std::uint32_t id, Enum mode) override { glBeginConditionalRender(id, mode); }
+  void EndConditionalRender() override { glEndConditionalRender(); }
+  const void* FenceSync(Enum condition, std::uint32_t flags) override { return glFenceSync(condition, flags); }
+  bool IsSync(const void* sync) override { return glIsSync(Handle(sync)) == GL_TRUE; }
+  void DeleteSync(const void* sync) override { glDeleteSync(Handle(sync)); }
+  Enum ClientWaitSync(const void* sync, std::uint32_t flags, std::uint64_t timeout) override {
+    return glClientWaitSync(Handle(sync), flags, timeout);
+  }
+  void WaitSync(const void* sync, std::uint32_t flags, std::uint64_t timeout) override { glWaitSync(Handle(sync), flags, timeout); }
+  int GetSynci(const void* sync, Enum pname) override {
+    GLint v = -1;
+    glGetSynciv(Handle(sync), pname, 1, nullptr, &v);
+    return v;
+  }
+  void ClampColor(Enum target, Enum clamp) override { glClampColor(target, clamp); }
+  static GLsync Handle(const void* sync) { return static_cast<GLsync>(const_cast<void*>(sync)); }
   std::uint64_t QueryResult(std::uint32_t id) override {
     GLuint v = ~0u;  // (OSMesa exports the 32-bit form; the counts here are small)
     glGetQueryObjectuiv(id, GL_QUERY_RESULT, &v);

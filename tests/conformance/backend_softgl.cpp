@@ -532,6 +532,24 @@ class SoftglBackend final : public Backend {
   std::uint32_t GenQuery() override { return gl_.GenQuery(); }
   void BeginQuery(Enum target, std::uint32_t id) override { gl_.BeginQuery(target, id); }
   void EndQuery(Enum target) override { gl_.EndQuery(target); }
+  void BeginConditionalRender(std::uint32_t id, Enum mode) override { gl_.BeginConditionalRender(id, mode); }
+  void EndConditionalRender() override { gl_.EndConditionalRender(); }
+  const void* FenceSync(Enum condition, std::uint32_t flags) override { return gl_.FenceSync(condition, flags); }
+  bool IsSync(const void* sync) override { return gl_.IsSync(Handle(sync)); }
+  void DeleteSync(const void* sync) override { gl_.DeleteSync(Handle(sync)); }
+  Enum ClientWaitSync(const void* sync, std::uint32_t flags, std::uint64_t timeout) override {
+    return gl_.ClientWaitSync(Handle(sync), flags, timeout);
+  }
+  void WaitSync(const void* sync, std::uint32_t flags, std::uint64_t timeout) override { gl_.WaitSync(Handle(sync), flags, timeout); }
+  int GetSynci(const void* sync, Enum pname) override {
+    int v = -1;
+    gl_.GetSynciv(Handle(sync), pname, 1, nullptr, &v);
+    return v;
+  }
+  void ClampColor(Enum target, Enum clamp) override { gl_.ClampColor(target, clamp); }
+  static softgl::Sync Handle(const void* sync) {
+    return static_cast<softgl::Sync>(const_cast<void*>(sync));
+  }
   std::uint64_t QueryResult(std::uint32_t id) override {
     std::uint64_t v = ~0ull;
     gl_.GetQueryObjectui64v(id, softgl::QUERY_RESULT, &v);

@@ -414,6 +414,110 @@ TEST_CASE("query results equal Mesa's", "[conformance]") {
   CHECK(want[6] == 22);
 }
 
+TEST_CASE("conditional rendering, fences and ClampColor: errors, state and reads as Mesa's", "[conformance]") {
+  namespace gl = softgl;
+  // Each step's error (and value, where it has one) in both; the fence's wait results are compared only where
+  // they do not depend on how fast the work runs.
+  auto run = [](Backend& b) {
+    std::vector<std::int64_t> out;
+    auto step = [&](std::int64_t value) {
+      out.push_back(value);
+      out.push_back(b.GetError());
+    };
+    step(b.GetIntegers(gl::CLAMP_READ_COLOR, 1)[0]);
+    b.ClampColor(gl::CLAMP_READ_COLOR, 2);
+    step(0);
+    b.ClampColor(gl::READ_BUFFER, 1);
+    step(0);
+    b.ClampColor(gl::CLAMP_READ_COLOR, 0);
+    step(b.GetIntegers(gl::CLAMP_READ_COLOR, 1)[0]);
+    // A float framebuffer read as stored, then clamped.
+    const std::uint32_t fbo = b.GenFramebuffer();
+    b.BindFramebuffer(gl::FRAMEBUFFER, fbo);
+    b.AttachNewTexture(gl::FRAMEBUFFER, gl::COLOR_ATTACHMENT0, gl::RGBA32F, 4, 4);
+    const float value[4] = {2.5f, -0.75f, 0.25f, 1.5f};
+    b.ClearBufferfv(gl::COLOR, 0, value);
+    // (SHORT only clamped: unclamped, softgl converts -0.75 to -24575 as OpenGL's signed rule says, and Mesa clamps
+    // to [0, 1] first for every type but the float ones; docs/guide.md says so.)
+    for (Enum clamp : {Enum(0), Enum(1), gl::FIXED_ONLY})
+      for (Enum type : {gl::FLOAT, gl::SHORT, gl::UNSIGNED_BYTE}) {
+        if (type == gl::SHORT && clamp != 1) continue;
+        b.ClampColor(gl::CLAMP_READ_COLOR, clamp);
+        PixelRead r{1, 1, 1, 1, gl::RGBA, type, 1};
+        const std::vector<std::uint8_t> bytes = b.ReadPixels(r, 16);
+        for (std::size_t i = 0; i < bytes.size(); i += 4) {
+          std::uint32_t word = 0;
+          std::memcpy(&word, &bytes[i], 4);
+          step(word);
+        }
+      }
+    b.BindFramebuffer(gl::FRAMEBUFFER, 0);
+    // Conditional rendering.
+    const std::uint32_t never = b.GenQuery(), prims = b.GenQuery(), occlusion = b.GenQuery();
+    b.BeginConditionalRender(occlusion, gl::QUERY_RESULT);
+    step(0);
+    b.BeginConditionalRender(occlusion + 100, gl::QUERY_WAIT);
+    step(0);
+    b.BeginConditionalRender(never, gl::QUERY_WAIT);
+    step(0);
+    b.BeginQuery(gl::PRIMITIVES_GENERATED, prims);
+    b.EndQuery(gl::PRIMITIVES_GENERATED);
+    b.BeginConditionalRender(prims, gl::QUERY_NO_WAIT);
+    step(0);
+    b.BeginQuery(gl::SAMPLES_PASSED, occlusion);
+    b.BeginConditionalRender(occlusion, gl::QUERY_WAIT);
+    step(0);
+    b.EndQuery(gl::SAMPLES_PASSED);
+    b.EndConditionalRender();
+    step(0);
+    b.BeginConditionalRender(occlusion, gl::QUERY_BY_REGION_NO_WAIT);
+    step(0);
+    b.BeginConditionalRender(occlusion, gl::QUERY_WAIT);
+    step(0);
+    b.EndConditionalRender();
+    step(0);
+    // Fences.
+    step(b.FenceSync(gl::SYNC_FENCE, 0) == nullptr);
+    step(b.FenceSync(gl::SYNC_GPU_COMMANDS_COMPLETE, 1) == nullptr);
+    b.Draw(gl::TRIANGLES, {{glm::vec4(-1, -1, 0, 1)}, {glm::vec4(3, -1, 0, 1)}, {glm::vec4(-1, 3, 0, 1)}});
+    const void* fence = b.FenceSync(gl::SYNC_GPU_COMMANDS_COMPLETE, 0);
+    step(fence != nullptr);
+    step(b.IsSync(fence));
+    for (Enum pname : {gl::OBJECT_TYPE, gl::SYNC_CONDITION, gl::SYNC_FLAGS, gl::QUERY_RESULT}) step(b.GetSynci(fence, pname));
+    const Enum waited = b.ClientWaitSync(fence, gl::SYNC_FLUSH_COMMANDS_BIT, 1000000000);
+    step(waited == gl::ALREADY_SIGNALED || waited == gl::CONDITION_SATISFIED);
+    step(b.ClientWaitSync(fence, 0, 0));
+    step(b.GetSynci(fence, gl::SYNC_STATUS));
+    step(b.ClientWaitSync(fence, 4, 0));
+    b.WaitSync(fence, 0, gl::TIMEOUT_IGNORED);
+    step(0);
+    b.WaitSync(fence, 1, gl::TIMEOUT_IGNORED);
+    step(0);
+    b.WaitSync(fence, 0, 5);
+    step(0);
+    step(b.GetIntegers(gl::MAX_SERVER_WAIT_TIMEOUT, 1).size());
+    b.DeleteSync(nullptr);
+    step(0);
+    b.DeleteSync(fence);
+    step(b.IsSync(fence));
+    step(b.ClientWaitSync(fence, 0, 0));
+    b.DeleteSync(fence);
+    step(0);
+    return out;
+  };
+  std::string error;
+  auto mesa = MakeGlBackend(32, 32, &error);
+  REQUIRE(mesa);
+  auto ours = MakeSoftglBackend(32, 32);
+  const std::vector<std::int64_t> want = run(*mesa), got = run(*ours);
+  REQUIRE(got.size() == want.size());
+  for (std::size_t i = 0; i < want.size(); i += 2) {
+    INFO("step " << i / 2);
+    CHECK(got[i] == want[i]);
+    CHECK(got[i + 1] == want[i + 1]);
+  }
+}
+
 int main(int argc, char** argv) {
   if (argc > 1 && std::string(argv[1]) == "--report") {
     for (const SceneInfo& s : Scenes()) {

@@ -568,6 +568,45 @@ void ClearBuffers(Backend& b) {
   b.Disable(STENCIL_TEST);
 }
 
+// Conditional rendering: in each of 16 cells an occlusion query over a quad in front of or behind an occluder
+// (colour writes off), then, conditional on it, a quad, a scissored Clear and a ClearBuffer in the cell, and a
+// quad across the whole row after the end. Both occlusion targets, both waiting modes, culled and visible.
+void ConditionalRender(Backend& b) {
+  ClearBlack(b);
+  b.ClearDepth(1.0);
+  b.Clear(DEPTH_BUFFER_BIT);
+  b.Enable(DEPTH_TEST);
+  b.ColorMask(false, false, false, false);
+  b.Draw(TRIANGLES, Rect(0, 0, 64, 128, 0.0f, {1, 1, 1, 1}));  // the occluder: the left half, depth 0.5
+  b.ColorMask(true, true, true, true);
+  for (int i = 0; i < 16; ++i) {
+    const int cx = (i % 4) * 32, cy = (i / 4) * 32;
+    const std::uint32_t q = b.GenQuery();
+    const Enum target = i % 3 ? SAMPLES_PASSED : ANY_SAMPLES_PASSED;
+    b.ColorMask(false, false, false, false);
+    b.DepthMask(false);
+    b.BeginQuery(target, q);
+    // Behind the occluder in the left half (no samples pass) but in cell 5, whose quad is in front.
+    b.Draw(TRIANGLES, Rect(float(cx + 4), float(cy + 4), float(cx + 28), float(cy + 28), i == 5 ? -0.5f : 0.4f, {1, 1, 1, 1}));
+    b.EndQuery(target);
+    b.DepthMask(true);
+    b.ColorMask(true, true, true, true);
+    b.BeginConditionalRender(q, i % 2 ? QUERY_WAIT : QUERY_BY_REGION_WAIT);
+    b.Draw(TRIANGLES, Rect(float(cx + 2), float(cy + 2), float(cx + 30), float(cy + 16), -0.9f, Palette(unsigned(i))));
+    b.Enable(SCISSOR_TEST);
+    b.Scissor(cx + 2, cy + 18, 28, 6);
+    b.ClearColor(0.25f, 0.5f, 0.75f, 1);
+    b.Clear(COLOR_BUFFER_BIT);
+    b.Scissor(cx + 2, cy + 25, 28, 5);
+    const float white[4] = {1, 1, 1, 1};
+    b.ClearBufferfv(COLOR, 0, white);
+    b.Disable(SCISSOR_TEST);
+    b.EndConditionalRender();
+    b.Draw(TRIANGLES, Rect(float(cx), float(cy + 30), float(cx + 32), float(cy + 32), -0.9f, {1, 0.5f, 0, 1}));
+  }
+  b.Disable(DEPTH_TEST);
+}
+
 void Scissor(Backend& b) {
   ClearBlack(b);
   b.Enable(SCISSOR_TEST);
@@ -1671,6 +1710,7 @@ const std::vector<SceneInfo>& Scenes() {
       {"masks", kSize, kSize, Check::kExactWithStencil, Masks},
       {"clear_buffer", kSize, kSize, Check::kExactWithDepthStencil, ClearBuffers},
       {"scissor", kSize, kSize, Check::kExact, Scissor},
+      {"conditional_render", kSize, kSize, Check::kExact, ConditionalRender},
       {"polygon_offset", kSize, kSize, Check::kExactWithDepth, PolygonOffset},
       {"texture_filters", kSize, kSize, Check::kTexture, TextureFilters},
       {"texture_wraps", kSize, kSize, Check::kTexture, TextureWraps},

@@ -1,6 +1,7 @@
 // fuzz_api — random sequences of API calls with random arguments on one context. Every call must validate, record
 // OpenGL's error or act, and never crash or touch memory it should not.
 #include <algorithm>
+#include <array>
 #include <climits>
 #include <cmath>
 #include <cstring>
@@ -130,6 +131,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   Context gl(wb % 49, hb % 49, options);
   FuzzShader shader;
   std::vector<std::uint8_t> scratch;
+  std::array<Sync, 6> fences{};  // the fences made (deleted ones stay here: stale handles are passed back too)
   // Work per input is bounded, so that an input's time says something about softgl: at most kDrawBudget vertices
   // over all draws (a 255-pixel point covers the whole target, so fragments <= budget x target area), render
   // targets of at most 64x64 (textures above 64 texels a side are folded back unless they are invalid).
@@ -143,7 +145,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   };
   for (int step = 0; step < 200 && !in.Empty(); ++step) {
     const auto id = [&] { return std::uint32_t(in.Byte() % 8); };
-    switch (in.Byte() % 46) {
+    switch (in.Byte() % 47) {
       case 0: gl.GenBuffer(); break;
       case 1: gl.BindBuffer(in.Enum(kBufferTargets), id()); break;
       case 2: {
@@ -569,6 +571,34 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
             break;
           }
         }
+        break;
+      }
+      case 45: {  // conditional rendering, fences (handles made, deleted, stale and made up), ClampColor
+        constexpr std::uint32_t kModes[] = {QUERY_WAIT, QUERY_NO_WAIT, QUERY_BY_REGION_WAIT, QUERY_BY_REGION_NO_WAIT,
+                                            QUERY_RESULT, 0};
+        constexpr std::uint32_t kSyncNames[] = {OBJECT_TYPE, SYNC_STATUS, SYNC_CONDITION, SYNC_FLAGS, SYNC_FENCE, 0};
+        const auto sync = [&]() -> Sync {
+          const int pick = in.Byte() % 8;
+          if (pick == 6) return nullptr;
+          if (pick == 7) return reinterpret_cast<Sync>(&scratch);  // not a fence
+          return fences[std::size_t(pick)];
+        };
+        int values[2] = {0, 0}, length = 0;
+        switch (in.Byte() % 8) {
+          case 0: gl.BeginConditionalRender(id(), in.Enum(kModes)); break;
+          case 1: gl.EndConditionalRender(); break;
+          case 2: {
+            const Sync made = gl.FenceSync(in.Byte() % 8 ? SYNC_GPU_COMMANDS_COMPLETE : SYNC_FENCE, in.Byte() % 8 ? 0u : 1u);
+            fences[in.Byte() % fences.size()] = made;  // (an overwritten one stays alive: DeleteSync never sees it)
+            break;
+          }
+          case 3: gl.DeleteSync(sync()); break;
+          case 4: (void)gl.ClientWaitSync(sync(), in.Byte() % 4, in.Byte() % 2 ? 0 : in.Get<std::uint64_t>()); break;
+          case 5: gl.WaitSync(sync(), in.Byte() % 4 ? 0 : 1, in.Byte() % 4 ? TIMEOUT_IGNORED : 0); break;
+          case 6: gl.GetSynciv(sync(), in.Enum(kSyncNames), in.Int(-1, 2), in.Byte() % 2 ? &length : nullptr, in.Byte() % 8 ? values : nullptr); break;
+          default: gl.ClampColor(in.Byte() % 8 ? CLAMP_READ_COLOR : CLAMP_TO_EDGE, std::uint32_t(in.Byte() % 4 ? in.Int(0, 2) : FIXED_ONLY)); break;
+        }
+        (void)gl.IsSync(sync());
         break;
       }
       default: {
