@@ -328,6 +328,47 @@ void Context::VertexAttrib4f(std::uint32_t index, float x, float y, float z, flo
   state_->current_attrib[index] = glm::vec4(x, y, z, w);
 }
 
+namespace {
+
+// VertexAttribP*: the first `components` components of a packed word as attribute `index`'s current value.
+void SetPackedAttrib(ContextState& s, const char* what, std::uint32_t index, Enum type, bool normalized,
+                     const std::uint32_t* value, int components) {
+  if (!detail::IsPackedAttribType(type)) return s.SetError(INVALID_ENUM, what, "type must be INT_2_10_10_10_REV or UNSIGNED_INT_2_10_10_10_REV");
+  if (index >= std::uint32_t(kMaxVertexAttribs)) return s.SetError(INVALID_VALUE, what, "attribute index is kMaxVertexAttribs or more");
+  if (!NotNull(s, what, value, "value")) return;
+  const glm::vec4 v = detail::Packed2101010(type, normalized, *value);
+  glm::vec4 current(0.0f, 0.0f, 0.0f, 1.0f);
+  for (int k = 0; k < components; ++k) current[k] = v[k];
+  s.current_attrib[index] = current;
+}
+
+}  // namespace
+
+void Context::VertexAttribP1ui(std::uint32_t index, Enum type, bool normalized, std::uint32_t value) {
+  SetPackedAttrib(*state_, __func__, index, type, normalized, &value, 1);
+}
+void Context::VertexAttribP2ui(std::uint32_t index, Enum type, bool normalized, std::uint32_t value) {
+  SetPackedAttrib(*state_, __func__, index, type, normalized, &value, 2);
+}
+void Context::VertexAttribP3ui(std::uint32_t index, Enum type, bool normalized, std::uint32_t value) {
+  SetPackedAttrib(*state_, __func__, index, type, normalized, &value, 3);
+}
+void Context::VertexAttribP4ui(std::uint32_t index, Enum type, bool normalized, std::uint32_t value) {
+  SetPackedAttrib(*state_, __func__, index, type, normalized, &value, 4);
+}
+void Context::VertexAttribP1uiv(std::uint32_t index, Enum type, bool normalized, const std::uint32_t* value) {
+  SetPackedAttrib(*state_, __func__, index, type, normalized, value, 1);
+}
+void Context::VertexAttribP2uiv(std::uint32_t index, Enum type, bool normalized, const std::uint32_t* value) {
+  SetPackedAttrib(*state_, __func__, index, type, normalized, value, 2);
+}
+void Context::VertexAttribP3uiv(std::uint32_t index, Enum type, bool normalized, const std::uint32_t* value) {
+  SetPackedAttrib(*state_, __func__, index, type, normalized, value, 3);
+}
+void Context::VertexAttribP4uiv(std::uint32_t index, Enum type, bool normalized, const std::uint32_t* value) {
+  SetPackedAttrib(*state_, __func__, index, type, normalized, value, 4);
+}
+
 }  // namespace softgl
 
 namespace softgl {

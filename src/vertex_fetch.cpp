@@ -83,8 +83,8 @@ float Component(Enum type, bool normalized, const std::uint8_t* p) {
   }
 }
 
-// INT_2_10_10_10_REV or UNSIGNED_INT_2_10_10_10_REV: x in bits 0-9, y 10-19, z 20-29, w 30-31 (OpenGL 3.3, section
-// 2.8, table 2.5), signed fields two's complement, converted as Component converts.
+}  // namespace
+
 glm::vec4 Packed2101010(Enum type, bool normalized, std::uint32_t word) {
   glm::vec4 v;
   for (int k = 0; k < 4; ++k) {
@@ -99,8 +99,6 @@ glm::vec4 Packed2101010(Enum type, bool normalized, std::uint32_t word) {
   }
   return v;
 }
-
-}  // namespace
 
 namespace {
 

@@ -40,6 +40,11 @@ std::size_t TypeSize(Enum type);
 /// INT_2_10_10_10_REV and UNSIGNED_INT_2_10_10_10_REV: four components in one 32-bit element.
 bool IsPackedAttribType(Enum type);
 
+/// The four components of a packed element (INT_2_10_10_10_REV or UNSIGNED_INT_2_10_10_10_REV): x in bits 0-9, y
+/// 10-19, z 20-29, w 30-31 (OpenGL 3.3, section 2.8, table 2.5), signed fields two's complement, normalized or not
+/// as the other integer types are converted.
+glm::vec4 Packed2101010(Enum type, bool normalized, std::uint32_t word);
+
 /// Bytes of one attribute element of `components` components of `type` (a packed type's 4 whatever the count).
 std::size_t AttributeBytes(Enum type, int components);
 

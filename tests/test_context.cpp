@@ -2126,6 +2126,47 @@ TEST_CASE("hostile calls: OpenGL 3.3's 48 combined texture units, each bindable 
   CHECK(gl.GetError() == NO_ERROR);
 }
 
+TEST_CASE("VertexAttribP sets a current value from a packed word, the missing components (0, 0, 1)", "[context][errors]") {
+  Context gl(4, 4);
+  const auto current = [&](std::uint32_t index) {
+    glm::vec4 v(-9.0f);
+    gl.GetVertexAttribfv(index, CURRENT_VERTEX_ATTRIB, &v.x);
+    return v;
+  };
+  // x = -512 (0x200), y = 511 (0x1FF), z = -1 (0x3FF), w = -2 (0b10) as signed fields; 512, 511, 1023, 2 unsigned.
+  const std::uint32_t word = 0x200u | (0x1FFu << 10) | (0x3FFu << 20) | (0x2u << 30);
+  gl.VertexAttrib4f(2, 7, 7, 7, 7);
+  gl.VertexAttribP4ui(2, INT_2_10_10_10_REV, false, word);
+  CHECK(current(2) == glm::vec4(-512, 511, -1, -2));
+  gl.VertexAttribP4ui(2, INT_2_10_10_10_REV, true, word);  // max(c / (2^(b-1) - 1), -1)
+  CHECK(current(2) == glm::vec4(-1.0f, 1.0f, -1.0f / 511.0f, -1.0f));
+  gl.VertexAttribP4uiv(2, UNSIGNED_INT_2_10_10_10_REV, false, &word);
+  CHECK(current(2) == glm::vec4(512, 511, 1023, 2));
+  gl.VertexAttribP4ui(2, UNSIGNED_INT_2_10_10_10_REV, true, word);  // c / (2^b - 1)
+  CHECK(current(2) == glm::vec4(512.0f / 1023.0f, 511.0f / 1023.0f, 1.0f, 2.0f / 3.0f));
+  gl.VertexAttribP3ui(2, UNSIGNED_INT_2_10_10_10_REV, false, word);
+  CHECK(current(2) == glm::vec4(512, 511, 1023, 1));
+  gl.VertexAttribP2uiv(2, UNSIGNED_INT_2_10_10_10_REV, false, &word);
+  CHECK(current(2) == glm::vec4(512, 511, 0, 1));
+  gl.VertexAttribP1ui(2, INT_2_10_10_10_REV, false, word);
+  CHECK(current(2) == glm::vec4(-512, 0, 0, 1));
+  gl.VertexAttribP3uiv(2, INT_2_10_10_10_REV, true, &word);
+  gl.VertexAttribP2ui(2, INT_2_10_10_10_REV, true, word);
+  gl.VertexAttribP1uiv(2, INT_2_10_10_10_REV, true, &word);
+  CHECK(current(2) == glm::vec4(-1, 0, 0, 1));
+  CHECK(gl.GetError() == NO_ERROR);
+  // Errors change nothing: a type that is not packed, an index past the last, a null pointer.
+  gl.VertexAttribP4ui(2, UNSIGNED_INT, false, word);
+  CHECK(gl.GetError() == INVALID_ENUM);
+  gl.VertexAttribP4ui(std::uint32_t(kMaxVertexAttribs), INT_2_10_10_10_REV, false, word);
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.VertexAttribP4ui(std::uint32_t(kMaxVertexAttribs), FLOAT, false, word);  // (the type is checked first)
+  CHECK(gl.GetError() == INVALID_ENUM);
+  gl.VertexAttribP2uiv(2, INT_2_10_10_10_REV, false, nullptr);
+  CHECK(gl.GetError() == INVALID_VALUE);
+  CHECK(current(2) == glm::vec4(-1, 0, 0, 1));
+}
+
 TEST_CASE("GetVertexAttrib reads back each attribute's array state and current value", "[context][errors]") {
   Context gl(4, 4);
   // Without a vertex array: the current value only.

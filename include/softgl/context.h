@@ -209,6 +209,18 @@ class Context {
   void VertexAttribDivisor(std::uint32_t index, std::uint32_t divisor);
   /// The current value of a generic attribute, read by the vertex stage while its array is disabled.
   void VertexAttrib4f(std::uint32_t index, float x, float y, float z, float w);
+  /// glVertexAttribP1ui ... P4ui (and the uiv forms, which read one word): the current value from one packed word
+  /// of `type` INT_2_10_10_10_REV or UNSIGNED_INT_2_10_10_10_REV (x in bits 0-9, y 10-19, z 20-29, w 30-31),
+  /// normalized or not as VertexAttributePointer converts them; the first 1 to 4 components are taken, the others
+  /// are (0, 0, 1). Another type: INVALID_ENUM; index >= kMaxVertexAttribs: INVALID_VALUE.
+  void VertexAttribP1ui(std::uint32_t index, Enum type, bool normalized, std::uint32_t value);
+  void VertexAttribP2ui(std::uint32_t index, Enum type, bool normalized, std::uint32_t value);
+  void VertexAttribP3ui(std::uint32_t index, Enum type, bool normalized, std::uint32_t value);
+  void VertexAttribP4ui(std::uint32_t index, Enum type, bool normalized, std::uint32_t value);
+  void VertexAttribP1uiv(std::uint32_t index, Enum type, bool normalized, const std::uint32_t* value);
+  void VertexAttribP2uiv(std::uint32_t index, Enum type, bool normalized, const std::uint32_t* value);
+  void VertexAttribP3uiv(std::uint32_t index, Enum type, bool normalized, const std::uint32_t* value);
+  void VertexAttribP4uiv(std::uint32_t index, Enum type, bool normalized, const std::uint32_t* value);
   /// Attribute `index`'s state in the bound vertex array: VERTEX_ATTRIB_ARRAY_ENABLED, _SIZE (1 to 4, or BGRA),
   /// _STRIDE (as given: 0 for tightly packed), _TYPE, _NORMALIZED, _INTEGER (0: softgl's attributes are read as
   /// floats), _DIVISOR, _BUFFER_BINDING (the buffer's id; 0 once deleted, while the array still reads its store);

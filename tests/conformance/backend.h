@@ -210,6 +210,8 @@ class Backend {
   virtual void BeginQuery(Enum target, std::uint32_t id) = 0;
   virtual void EndQuery(Enum target) = 0;
   virtual std::uint64_t QueryResult(std::uint32_t id) = 0;
+  /// glVertexAttribP1ui ... glVertexAttribP4ui (`components` 1 to 4; another count: the P4uiv form).
+  virtual void VertexAttribP(int components, std::uint32_t index, Enum type, bool normalized, std::uint32_t value) = 0;
   /// glBeginConditionalRender / glEndConditionalRender.
   virtual void BeginConditionalRender(std::uint32_t id, Enum mode) = 0;
   virtual void EndConditionalRender() = 0;

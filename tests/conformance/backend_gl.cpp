@@ -579,6 +579,15 @@ class GlBackend final : public Backend {
   std::uint32_t GenQuery() override { return GenOne(glGenQueries); }
   void BeginQuery(Enum target, std::uint32_t id) override { glBeginQuery(target, id); }
   void EndQuery(Enum target) override { glEndQuery(target); }
+  void VertexAttribP(int components, std::uint32_t index, Enum type, bool normalized, std::uint32_t value) override {
+    switch (components) {
+      case 1: glVertexAttribP1ui(index, type, normalized, value); break;
+      case 2: glVertexAttribP2ui(index, type, normalized, value); break;
+      case 3: glVertexAttribP3ui(index, type, normalized, value); break;
+      case 4: glVertexAttribP4ui(index, type, normalized, value); break;
+      default: glVertexAttribP4uiv(index, type, normalized, &value); break;
+    }
+  }
   void BeginConditionalRender(std::uint32_t id, Enum mode) override { glBeginConditionalRender(id, mode); }
   void EndConditionalRender() override { glEndConditionalRender(); }
   const void* FenceSync(Enum condition, std::uint32_t flags) override { return glFenceSync(condition, flags); }

@@ -532,6 +532,15 @@ class SoftglBackend final : public Backend {
   std::uint32_t GenQuery() override { return gl_.GenQuery(); }
   void BeginQuery(Enum target, std::uint32_t id) override { gl_.BeginQuery(target, id); }
   void EndQuery(Enum target) override { gl_.EndQuery(target); }
+  void VertexAttribP(int components, std::uint32_t index, Enum type, bool normalized, std::uint32_t value) override {
+    switch (components) {
+      case 1: gl_.VertexAttribP1ui(index, type, normalized, value); break;
+      case 2: gl_.VertexAttribP2ui(index, type, normalized, value); break;
+      case 3: gl_.VertexAttribP3ui(index, type, normalized, value); break;
+      case 4: gl_.VertexAttribP4ui(index, type, normalized, value); break;
+      default: gl_.VertexAttribP4uiv(index, type, normalized, &value); break;
+    }
+  }
   void BeginConditionalRender(std::uint32_t id, Enum mode) override { gl_.BeginConditionalRender(id, mode); }
   void EndConditionalRender() override { gl_.EndConditionalRender(); }
   const void* FenceSync(Enum condition, std::uint32_t flags) override { return gl_.FenceSync(condition, flags); }

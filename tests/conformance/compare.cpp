@@ -331,6 +331,31 @@ TEST_CASE("sampler object and vertex attribute state read back as Mesa reads it"
       CHECK(ours->GetError() == mesa->GetError());
     }
   }
+  // Current values from packed words (VertexAttribP*): every field at its extremes and in between, signed and
+  // unsigned, normalized or not, 1 to 4 components taken (5: the uiv form); then the errors.
+  const std::uint32_t words[] = {0x00000000u, 0xFFFFFFFFu, 0x80100200u, 0x7FEFFDFFu, 0x4A5F1234u, 0xC0000201u};
+  for (std::uint32_t word : words)
+    for (Enum type : {gl::INT_2_10_10_10_REV, gl::UNSIGNED_INT_2_10_10_10_REV})
+      for (bool normalized : {false, true})
+        for (int components = 1; components <= 5; ++components) {
+          INFO("packed word 0x" << std::hex << word << " type 0x" << type << std::dec << " normalized " << normalized
+                                << " components " << components);
+          ours->VertexAttribP(components, 3, type, normalized, word);
+          mesa->VertexAttribP(components, 3, type, normalized, word);
+          // (The components the call gives: OpenGL sets the others to (0, 0, 1), as softgl does; Mesa leaves them as
+          // they were. docs/guide.md says so.)
+          std::vector<float> a = ours->GetVertexAttribFloats(3, gl::CURRENT_VERTEX_ATTRIB, 4);
+          std::vector<float> b = mesa->GetVertexAttribFloats(3, gl::CURRENT_VERTEX_ATTRIB, 4);
+          a.resize(std::size_t(std::min(components, 4)));
+          b.resize(a.size());
+          CHECK(a == b);
+          CHECK(ours->GetError() == mesa->GetError());
+        }
+  for (auto [index, type] : {std::pair<std::uint32_t, Enum>{3, gl::UNSIGNED_INT}, {99, gl::INT_2_10_10_10_REV}, {99, gl::FLOAT}}) {
+    ours->VertexAttribP(2, index, type, true, 5);
+    mesa->VertexAttribP(2, index, type, true, 5);
+    CHECK(ours->GetError() == mesa->GetError());
+  }
   // A name that is no attribute state: the same error (Mesa then writes 0, softgl leaves the values, as OpenGL's
   // "no change is made to params" on an error has it).
   (void)ours->GetVertexAttribIntegers(0, gl::TEXTURE_2D, 1);

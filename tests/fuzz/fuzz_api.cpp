@@ -358,7 +358,22 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         if (in.Byte() % 2) gl.PointSize(in.Float());
         else gl.PrimitiveRestartIndex(in.Byte() % 2 ? in.Get<std::uint32_t>() : std::uint32_t(in.Int(0, 8)));
         break;
-      case 38: gl.VertexAttrib4f(std::uint32_t(in.Int(0, 16)), in.Float(), in.Float(), in.Float(), in.Float()); break;
+      case 38:
+        if (in.Byte() % 4) {
+          gl.VertexAttrib4f(std::uint32_t(in.Int(0, 16)), in.Float(), in.Float(), in.Float(), in.Float());
+        } else {  // packed current values: any word, type and index; null for the uiv form now and then
+          const std::uint32_t word = in.Get<std::uint32_t>(), index = std::uint32_t(in.Int(0, 16));
+          const std::uint32_t type = in.Byte() % 8 ? (in.Byte() % 2 ? INT_2_10_10_10_REV : UNSIGNED_INT_2_10_10_10_REV) : FLOAT;
+          const bool normalized = in.Byte() % 2 != 0;
+          switch (in.Byte() % 5) {
+            case 0: gl.VertexAttribP1ui(index, type, normalized, word); break;
+            case 1: gl.VertexAttribP2uiv(index, type, normalized, &word); break;
+            case 2: gl.VertexAttribP3ui(index, type, normalized, word); break;
+            case 3: gl.VertexAttribP4ui(index, type, normalized, word); break;
+            default: gl.VertexAttribP4uiv(index, type, normalized, in.Byte() % 2 ? &word : nullptr); break;
+          }
+        }
+        break;
       case 39: {  // renderbuffers (sizes mostly small, sometimes wild)
         int v = 0;
         switch (in.Byte() % 6) {
