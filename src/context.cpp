@@ -219,6 +219,35 @@ void Context::PointSize(float size) {
   state_->primitive.point_size = size;
 }
 
+namespace {
+
+// PointParameter's forms: `value` the first of the values given (an int or a float, exact as a double).
+void SetPointParameter(ContextState& s, const char* what, Enum pname, const void* params, double value) {
+  if (pname != POINT_SPRITE_COORD_ORIGIN && pname != POINT_FADE_THRESHOLD_SIZE) return s.SetError(INVALID_ENUM, what, "pname must be POINT_SPRITE_COORD_ORIGIN or POINT_FADE_THRESHOLD_SIZE");
+  if (!NotNull(s, what, params, "params")) return;
+  if (pname == POINT_FADE_THRESHOLD_SIZE) {
+    if (!(value >= 0.0)) return s.SetError(INVALID_VALUE, what, "POINT_FADE_THRESHOLD_SIZE must be 0 or more");
+    s.primitive.point_fade_threshold = float(value);
+    return;
+  }
+  if (value != double(LOWER_LEFT) && value != double(UPPER_LEFT)) return s.SetError(INVALID_ENUM, what, "POINT_SPRITE_COORD_ORIGIN must be LOWER_LEFT or UPPER_LEFT");
+  s.primitive.point_lower_left = value == double(LOWER_LEFT);
+}
+
+}  // namespace
+
+void Context::PointParameterf(Enum pname, float param) { SetPointParameter(*state_, __func__, pname, &param, param); }
+
+void Context::PointParameterfv(Enum pname, const float* params) {
+  SetPointParameter(*state_, __func__, pname, params, params ? double(params[0]) : 0.0);
+}
+
+void Context::PointParameteri(Enum pname, int param) { SetPointParameter(*state_, __func__, pname, &param, param); }
+
+void Context::PointParameteriv(Enum pname, const int* params) {
+  SetPointParameter(*state_, __func__, pname, params, params ? double(params[0]) : 0.0);
+}
+
 void Context::ProvokingVertex(Enum mode) {
   if (mode != FIRST_VERTEX_CONVENTION && mode != LAST_VERTEX_CONVENTION)
     return state_->SetError(INVALID_ENUM, __func__, "mode must be FIRST_VERTEX_CONVENTION or LAST_VERTEX_CONVENTION");

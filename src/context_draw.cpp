@@ -55,6 +55,7 @@ void ContextState::Draw(const detail::DrawCall& call) {
   packet.nvar = program->VaryingFloats();
   packet.interpolation = program->VaryingInterpolation();
   packet.shader_depth = program->WritesDepth();
+  packet.point_lower_left = primitive.point_lower_left;
 
   detail::DrawState ds;
   ds.program = program;

@@ -68,6 +68,8 @@ bool QueryState(ContextState& s, Enum pname, StateValue& out) {
     case FRONT_FACE: return integer(s.primitive.front_face);
     case POLYGON_MODE: return put(Kind::kInt, {double(s.primitive.polygon_mode), double(s.primitive.polygon_mode)});
     case POINT_SIZE: return put(Kind::kFloat, {s.primitive.point_size});
+    case POINT_SPRITE_COORD_ORIGIN: return integer(s.primitive.point_lower_left ? LOWER_LEFT : UPPER_LEFT);
+    case POINT_FADE_THRESHOLD_SIZE: return put(Kind::kFloat, {s.primitive.point_fade_threshold});
     case PROVOKING_VERTEX: return integer(s.primitive.provoking_first ? FIRST_VERTEX_CONVENTION : LAST_VERTEX_CONVENTION);
     case POLYGON_OFFSET_FACTOR: return put(Kind::kFloat, {s.primitive.offset_factor});
     case POLYGON_OFFSET_UNITS: return put(Kind::kFloat, {s.primitive.offset_units});

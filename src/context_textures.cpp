@@ -585,40 +585,67 @@ void Context::SamplerParameteriv(std::uint32_t sampler, Enum pname, const int* v
 
 namespace {
 
-// SamplerParameterIiv and SamplerParameterIuiv: the border colour's four numbers kept as they are (`kind` 1 signed,
-// 2 unsigned), as floats for sampling; any other name as SamplerParameteriv.
+// SamplerParameterI*v and TexParameterI*v on state `p` (a texture's when `levels`): the border colour's four numbers
+// kept as they are (`kind` 1 signed, 2 unsigned), as floats for sampling; any other name as the iv forms.
 template <class T>
-void SetSamplerParameterI(ContextState& s, const char* what, std::uint32_t sampler, Enum pname, const T* values, int kind) {
-  detail::SamplerParams* p = SamplerOf(s, what, sampler);
-  if (!p) return;
+void SetParameterI(ContextState& s, const char* what, detail::SamplerParams& p, Enum pname, const T* values, int kind,
+                   bool levels) {
   if (values == nullptr) return s.SetError(INVALID_VALUE, what, "values is null");
   if (pname != TEXTURE_BORDER_COLOR) {
     const float v = float(values[0]);
-    return SetSamplerParameter(s, what, *p, pname, &v, false);
+    return SetSamplerParameter(s, what, p, pname, &v, levels);
   }
   for (int k = 0; k < 4; ++k) {
-    p->border[k] = float(values[k]);
-    p->border_bits[k] = std::uint32_t(values[k]);
+    p.border[k] = float(values[k]);
+    p.border_bits[k] = std::uint32_t(values[k]);
   }
-  p->border_integer = kind;
+  p.border_integer = kind;
 }
 
-// GetSamplerParameterIiv and GetSamplerParameterIuiv: the border colour's numbers as they were set by the integer
-// forms (else its floats, rounded and clamped to T's range); any other name as GetSamplerParameteriv.
+// GetSamplerParameterI*v and GetTexParameterI*v of `p`, whose value of `pname` is `v` (n values): the border
+// colour's numbers as the integer forms set them (else its floats, rounded and clamped to T's range); any other
+// name as the iv forms.
+template <class T>
+void ParameterI(const detail::SamplerParams& p, Enum pname, const float* v, int n, T* params) {
+  for (int k = 0; k < n; ++k) {
+    if (pname == TEXTURE_BORDER_COLOR && p.border_integer != 0) {
+      params[k] = T(p.border_bits[k]);
+      continue;
+    }
+    const double lo = double(std::numeric_limits<T>::min()), hi = double(std::numeric_limits<T>::max());
+    params[k] = std::isnan(v[k]) ? T(0) : T(std::llround(std::clamp(double(v[k]), lo, hi)));
+  }
+}
+
+template <class T>
+void SetSamplerParameterI(ContextState& s, const char* what, std::uint32_t sampler, Enum pname, const T* values, int kind) {
+  if (detail::SamplerParams* p = SamplerOf(s, what, sampler)) SetParameterI(s, what, *p, pname, values, kind, false);
+}
+
 template <class T>
 void SamplerParameterI(ContextState& s, const char* what, std::uint32_t sampler, Enum pname, T* params) {
   const detail::SamplerParams* p = SamplerOf(s, what, sampler);
   float v[4];
   int n = 0;
   if (!p || !SamplerParameterValues(s, what, *p, pname, v, n, false) || !NotNull(s, what, params, "params")) return;
-  for (int k = 0; k < n; ++k) {
-    if (pname == TEXTURE_BORDER_COLOR && p->border_integer != 0) {
-      params[k] = T(p->border_bits[k]);
-      continue;
-    }
-    const double lo = double(std::numeric_limits<T>::min()), hi = double(std::numeric_limits<T>::max());
-    params[k] = std::isnan(v[k]) ? T(0) : T(std::llround(std::clamp(double(v[k]), lo, hi)));
-  }
+  ParameterI(*p, pname, v, n, params);
+}
+
+// The texture bound to `target` for TexParameterI*v, or null with the error set.
+detail::TextureObject* TexParameterTarget(ContextState& s, const char* what, Enum target) {
+  s.Sync(what);
+  if (detail::TextureKind(target) < 0 || target == TEXTURE_2D_MULTISAMPLE) return s.SetError(INVALID_ENUM, what, "target must be TEXTURE_2D, TEXTURE_CUBE_MAP, TEXTURE_2D_ARRAY or TEXTURE_3D (a multisample texture has no levels or sampling state)"), nullptr;
+  detail::TextureObject* tex = s.Bound(target);
+  if (!tex) return s.SetError(INVALID_OPERATION, what, "no texture is bound to that target of the active unit"), nullptr;
+  return tex;
+}
+
+template <class T>
+void TexParameterI(ContextState& s, const char* what, Enum target, Enum pname, T* params) {
+  float v[4];
+  int n = 0;
+  if (!TexParameterValues(s, what, target, pname, v, n) || !NotNull(s, what, params, "params")) return;
+  ParameterI(s.Bound(target)->params, pname, v, n, params);
 }
 
 }  // namespace
@@ -629,6 +656,20 @@ void Context::SamplerParameterIiv(std::uint32_t sampler, Enum pname, const int* 
 
 void Context::SamplerParameterIuiv(std::uint32_t sampler, Enum pname, const std::uint32_t* values) {
   SetSamplerParameterI(*state_, __func__, sampler, pname, values, 2);
+}
+
+void Context::TexParameterIiv(Enum target, Enum pname, const int* values) {
+  if (detail::TextureObject* tex = TexParameterTarget(*state_, __func__, target)) SetParameterI(*state_, __func__, tex->params, pname, values, 1, true);
+}
+
+void Context::TexParameterIuiv(Enum target, Enum pname, const std::uint32_t* values) {
+  if (detail::TextureObject* tex = TexParameterTarget(*state_, __func__, target)) SetParameterI(*state_, __func__, tex->params, pname, values, 2, true);
+}
+
+void Context::GetTexParameterIiv(Enum target, Enum pname, int* params) const { TexParameterI(*state_, __func__, target, pname, params); }
+
+void Context::GetTexParameterIuiv(Enum target, Enum pname, std::uint32_t* params) const {
+  TexParameterI(*state_, __func__, target, pname, params);
 }
 
 void Context::GetSamplerParameterfv(std::uint32_t sampler, Enum pname, float* params) const {

@@ -36,6 +36,8 @@ struct PrimitiveState {
   Enum polygon_mode = FILL;
   bool program_point_size = false;
   float point_size = 1.0f;
+  bool point_lower_left = false;       // POINT_SPRITE_COORD_ORIGIN is LOWER_LEFT
+  float point_fade_threshold = 1.0f;   // POINT_FADE_THRESHOLD_SIZE (kept for the queries)
   bool offset_fill = false, offset_line = false, offset_point = false;  // POLYGON_OFFSET_FILL / _LINE / _POINT
   float offset_factor = 0.0f, offset_units = 0.0f;
   bool provoking_first = false;  // ProvokingVertex(FIRST_VERTEX_CONVENTION)

@@ -122,9 +122,16 @@ inline int AddQuad(BlockBuffer& blocks, const BlockSink& sink, bool front_facing
   blocks.qx[b][slot] = qx;
   blocks.qy[b][slot] = qy;
   blocks.quad_planes[b][slot] = nullptr;
+  if (blocks.points) blocks.quad_point[b][slot] = blocks.point;
   blocks.live[b] |= std::uint32_t(mask) << (4 * slot);
   if (blocks.samples > 1 && all_samples) SetSampleLanes(blocks, b, slot, mask);
   return b;
+}
+
+// Before a primitive that is not a point: the points' quads go on first (they and others never share a buffer).
+void EndPoints(BlockBuffer& blocks, const BlockSink& sink) {
+  sink.Flush(blocks);
+  blocks.points = false;
 }
 
 // The lanes of the quad at (qx, qy) inside `bounds`.
@@ -678,8 +685,24 @@ __attribute__((noinline)) bool HiddenRegion(HierarchicalDepth& hz, const Plane& 
 }
 }  // namespace
 
+namespace {
+
+// RasterizeTriangle, for the buffer as it is (a multisampled point's rectangle is two of these, and stays a point).
+void TriangleQuads(const VertexView& v0, const VertexView& v1, const VertexView& v2, bool front_facing,
+                   const RasterTarget& target, BlockBuffer& blocks, const BlockSink& sink);
+
+}  // namespace
+
 void RasterizeTriangle(const VertexView& v0, const VertexView& v1, const VertexView& v2, bool front_facing,
                        const RasterTarget& target, BlockBuffer& blocks, const BlockSink& sink) {
+  if (blocks.points) EndPoints(blocks, sink);
+  TriangleQuads(v0, v1, v2, front_facing, target, blocks, sink);
+}
+
+namespace {
+
+void TriangleQuads(const VertexView& v0, const VertexView& v1, const VertexView& v2, bool front_facing,
+                   const RasterTarget& target, BlockBuffer& blocks, const BlockSink& sink) {
   const VertexView* v[3] = {&v0, &v1, &v2};
   std::int64_t X[3], Y[3];
   const glm::vec4* const pos[3] = {&v0.win, &v1.win, &v2.win};
@@ -950,23 +973,22 @@ void RasterizeTriangle(const VertexView& v0, const VertexView& v1, const VertexV
   }
 }
 
-namespace {
-
 // A rectangle with corners p[0..3] in order, rasterized as the two triangles (p0, p1, p2) and (p0, p2, p3): the fill
 // rule gives each sample on their shared diagonal to one of them, and the rectangle's sides own the samples on them
 // as a triangle's edges do. Each corner carries the varyings `var[k]`.
 void RasterizeRectangle(const glm::vec4 (&p)[4], const float* const (&var)[4], bool front_facing,
                         const RasterTarget& target, BlockBuffer& blocks, const BlockSink& sink) {
-  RasterizeTriangle(VertexView(p[0], var[0]), VertexView(p[1], var[1]), VertexView(p[2], var[2]), front_facing, target,
-                    blocks, sink);
-  RasterizeTriangle(VertexView(p[0], var[0]), VertexView(p[2], var[2]), VertexView(p[3], var[3]), front_facing, target,
-                    blocks, sink);
+  TriangleQuads(VertexView(p[0], var[0]), VertexView(p[1], var[1]), VertexView(p[2], var[2]), front_facing, target,
+                blocks, sink);
+  TriangleQuads(VertexView(p[0], var[0]), VertexView(p[2], var[2]), VertexView(p[3], var[3]), front_facing, target,
+                blocks, sink);
 }
 
 }  // namespace
 
 void RasterizeLine(const WindowVertex& a, const WindowVertex& b, bool front_facing, const RasterTarget& target,
                    BlockBuffer& blocks, const BlockSink& sink) {
+  if (blocks.points) EndPoints(blocks, sink);
   const float ax = a.win.x, ay = a.win.y, dx = b.win.x - ax, dy = b.win.y - ay;
   if (!(std::fabs(ax) < 1e7f && std::fabs(ay) < 1e7f && std::fabs(dx) < 1e7f && std::fabs(dy) < 1e7f)) return;
   const float len2 = dx * dx + dy * dy;
@@ -1059,6 +1081,11 @@ void RasterizePoint(const WindowVertex& v, float size, bool front_facing, const 
                     BlockBuffer& blocks, const BlockSink& sink) {
   if (!(size > 0.0f) || !(std::fabs(v.win.x) < 1e7f) || !(std::fabs(v.win.y) < 1e7f)) return;
   const float half = std::min(size, 1e6f) * 0.5f;
+  if (!blocks.points) {  // (a point's quads never share the buffer with another primitive's)
+    sink.Flush(blocks);
+    blocks.points = true;
+  }
+  blocks.point = PointSprite{v.win.x, v.win.y, 0.5f / half, target.point_lower_left ? 1.0f : -1.0f};
   if (target.samples > 1) {
     // Multisampled (OpenGL 4.6, section 14.4.3, point sprites as in the core profile): the samples inside the
     // square of side `size` centred on the point.

@@ -36,6 +36,7 @@ struct RasterTarget {
   // The tile's coarse depth (draws whose depth test may run early): a triangle, or an 8x8 region of one, that
   // cannot pass the depth test there is dropped. Null: every triangle is rasterized.
   HierarchicalDepth* depth_bounds = nullptr;
+  bool point_lower_left = false;  // POINT_SPRITE_COORD_ORIGIN is LOWER_LEFT (gl_PointCoord's t grows upwards)
 };
 
 /// The smallest and largest offsets of a pixel's sample positions (SamplePositions) in x and y, in subpixels

@@ -210,6 +210,16 @@ struct FragmentStage {
         for (int o = 0; o < outputs; ++o) blocks.out[b].color[o].w = Float(1.0f);
   }
 
+  // gl_PointCoord of every lane of a buffer of points, from its gl_FragCoord and its quad's point.
+  static void PointCoords(BlockBuffer& blocks) {
+    for (int b = 0; b < blocks.count; ++b)
+      for (int lane = 0; lane < kLanes; ++lane) {
+        const PointSprite& p = blocks.quad_point[b][lane >> 2];
+        blocks.point_coord[b][0][lane] = 0.5f + (blocks.frag_coord[b][0][lane] - p.cx) * p.inv_size;
+        blocks.point_coord[b][1][lane] = 0.5f + p.t_sign * (blocks.frag_coord[b][1][lane] - p.cy) * p.inv_size;
+      }
+  }
+
   void Shade(BlockBuffer& blocks) const {
     const FragmentStage* self = this;
     BlockBatch batch;
@@ -219,6 +229,10 @@ struct FragmentStage {
     batch.simd = self->simd;
     batch.varyings = blocks.varyings;
     batch.frag_coord = &blocks.frag_coord[0][0][0];
+    if (blocks.points) {
+      PointCoords(blocks);
+      batch.point_coord = &blocks.point_coord[0][0][0];
+    }
     batch.live = blocks.live;
     batch.out = blocks.out;
     batch.textures = self->draw->textures;
@@ -232,7 +246,7 @@ bool SameState(const DrawPacket& a, const DrawPacket& b) {
   return a.program == b.program && a.textures == b.textures && a.ops == b.ops && a.bounds.x0 == b.bounds.x0 &&
          a.bounds.y0 == b.bounds.y0 && a.bounds.x1 == b.bounds.x1 && a.bounds.y1 == b.bounds.y1 &&
          a.nvar == b.nvar && a.interpolation == b.interpolation && a.shader_depth == b.shader_depth &&
-         a.early_depth == b.early_depth;
+         a.early_depth == b.early_depth && a.point_lower_left == b.point_lower_left;
 }
 
 }  // namespace
@@ -473,6 +487,7 @@ void Frame::RenderTile(int tile, TileScratch& scratch) const {
     rt.nvar = draw.nvar;
     rt.interpolation = draw.interpolation;
     rt.samples = target_.samples > 1 && draw.ops.multisample.multisample ? target_.samples : 1;
+    rt.point_lower_left = draw.point_lower_left;
     if (rt.bounds.Empty()) continue;
     // The depth test is the early one: triangles and regions that cannot pass it may go.
     if (hz && draw.early_depth) {

@@ -86,6 +86,13 @@ struct TrianglePlanes {
   float sample_dz[kMaxSamples];
 };
 
+/// A point as gl_PointCoord sees it: its centre in window coordinates, 1 / its size, and t's direction (+1:
+/// POINT_SPRITE_COORD_ORIGIN LOWER_LEFT, t grows upwards; -1: UPPER_LEFT, downwards). For a fragment at (x, y)
+/// (gl_FragCoord), gl_PointCoord = (0.5 + (x - cx) / size, 0.5 + t_sign * (y - cy) / size) (OpenGL 4.6, 14.4.1).
+struct PointSprite {
+  float cx = 0.0f, cy = 0.0f, inv_size = 1.0f, t_sign = -1.0f;
+};
+
 /// Rasterizer output: a batch of blocks ready for the fragment stage, with their coverage and interpolated values,
 /// and the fragment stage's outputs. A block is 16 fragments: four 2x2 quads anywhere in the target (of one draw and
 /// one facing, possibly of different primitives, never two at the same place), lane = quad * 4 + (x & 1) +
@@ -114,6 +121,13 @@ struct BlockBuffer {
   int epoch = 0;  // counts flushes: a triangle's entry in `planes` is valid in the epoch it was made
   const TrianglePlanes* quad_planes[kCapacity][4];
   alignas(64) float frag_coord[kCapacity][4][kLanes];                  // x, y, z, 1/w
+  // Points: while `points` is set, every quad of the buffer belongs to a point, which AddQuad records for it from
+  // `point` (the one being rasterized); the fragment stage makes gl_PointCoord of each lane from it and the lane's
+  // gl_FragCoord. Points and other primitives never share the buffer.
+  bool points = false;
+  PointSprite point;
+  PointSprite quad_point[kCapacity][4];
+  alignas(64) float point_coord[kCapacity][2][kLanes];  // gl_PointCoord (s, t), made by the fragment stage
   alignas(64) float varyings[kCapacity * kBlockVaryingFloats];         // block b: [nvar][16] at b * kBlockVaryingFloats
   FragmentLanesOut out[kCapacity];  // the fragment shader's outputs (it writes them here)
   float* Varyings(int b) { return varyings + std::size_t(b) * kBlockVaryingFloats; }
@@ -132,6 +146,7 @@ struct BlockBuffer {
       qx[b][q] = qx[b][0];
       qy[b][q] = qy[b][0];
       quad_planes[b][q] = quad_planes[b][0];
+      quad_point[b][q] = quad_point[b][0];
       if (!quad_planes[b][0])  // (from planes, gl_FragCoord is interpolated after this, for every quad)
         for (int c = 0; c < 4; ++c)
           for (int k = 0; k < 4; ++k) frag_coord[b][c][q * 4 + k] = frag_coord[b][c][k];

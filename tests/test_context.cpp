@@ -1017,6 +1017,142 @@ TEST_CASE("program point size comes from the vertex stage when enabled", "[conte
   CHECK(CountLit(gl) == 16);
 }
 
+namespace {
+// gl_PointCoord as the colour (s, t, 0, 1), written wide and scalar; position from attribute 0.
+struct WidePointCoord : softgl::Shader<WidePointCoord, WideColor> {
+  void Vertex(const softgl::VertexLanes& in, softgl::VertexLanesOut<WideColor>& out) const { out.position = in.attrib[0]; }
+  void Fragment(const softgl::FragmentLanes<WideColor>& in, softgl::FragmentLanesOut& out) const {
+    out.color[0] = softgl::vec4(in.point_coord.x, in.point_coord.y, 0.0f, 1.0f);
+  }
+};
+struct ScalarPointCoord : softgl::Shader<ScalarPointCoord, testing::NoVaryings> {
+  void Vertex(const VertexIn& in, VertexOut<testing::NoVaryings>& out) const { out.position = in.attrib[0]; }
+  bool Fragment(const FragmentIn<testing::NoVaryings>& in, FragmentOut& out) const {
+    out.color[0] = glm::vec4(in.point_coord, 0.0f, 1.0f);
+    return true;
+  }
+};
+}  // namespace
+
+TEST_CASE("gl_PointCoord runs across each point from (0, 0) to (1, 1), its origin as POINT_SPRITE_COORD_ORIGIN says",
+          "[context]") {
+  WidePointCoord wide;
+  ScalarPointCoord scalar;
+  for (const softgl::Program* shader : {static_cast<const softgl::Program*>(&wide), static_cast<const softgl::Program*>(&scalar)})
+    for (bool lower_left : {false, true}) {
+      INFO((shader == &wide ? "wide" : "scalar") << ", origin " << (lower_left ? "LOWER_LEFT" : "UPPER_LEFT"));
+      Context gl(32, 32);
+      BindFloatTarget(gl, 32, 32);
+      gl.UseProgram(*shader);
+      if (lower_left) gl.PointParameteri(POINT_SPRITE_COORD_ORIGIN, int(LOWER_LEFT));
+      // Points of size 8 at (8.5, 8.5) and (20, 23.25), size 5 (pixel (2, 28)'s centre), then a triangle and a
+      // line, whose fragments read (0, 0); a point after them again.
+      MakeVertexArray(gl, {testing::WindowToClip(8.5f, 8.5f, 32, 32), testing::WindowToClip(20.0f, 23.25f, 32, 32),
+                           testing::WindowToClip(26, 2, 32, 32), testing::WindowToClip(31, 2, 32, 32),
+                           testing::WindowToClip(31, 7, 32, 32), testing::WindowToClip(2.5f, 28.5f, 32, 32)});
+      gl.PointSize(8.0f);
+      gl.DrawArrays(POINTS, 0, 2);
+      gl.DrawArrays(TRIANGLES, 2, 3);
+      gl.PointSize(5.0f);
+      gl.DrawArrays(POINTS, 5, 1);
+      std::vector<float> px(32 * 32 * 4);
+      gl.ReadPixels(0, 0, 32, 32, RGBA, FLOAT, px.data());
+      const auto at = [&](int x, int y) { return glm::vec2(px[std::size_t(y * 32 + x) * 4], px[std::size_t(y * 32 + x) * 4 + 1]); };
+      const auto expect = [&](float cx, float cy, float size, int x, int y) {
+        const float s = 0.5f + (float(x) + 0.5f - cx) / size, d = (float(y) + 0.5f - cy) / size;
+        return glm::vec2(s, lower_left ? 0.5f + d : 0.5f - d);
+      };
+      int checked = 0;
+      for (int y = 0; y < 32; ++y)
+        for (int x = 0; x < 32; ++x) {
+          glm::vec2 want(-1.0f);
+          if (x >= 4 && x < 12 && y >= 4 && y < 12) want = expect(8.5f, 8.5f, 8.0f, x, y);
+          if (x >= 16 && x < 24 && y >= 19 && y < 27) want = expect(20.0f, 23.25f, 8.0f, x, y);
+          if (x >= 0 && x < 5 && y >= 26 && y < 31) want = expect(2.5f, 28.5f, 5.0f, x, y);
+          if (want.x < 0.0f) continue;
+          INFO("pixel " << x << ", " << y);
+          CHECK(std::abs(at(x, y).x - want.x) < 1e-6f);
+          CHECK(std::abs(at(x, y).y - want.y) < 1e-6f);
+          ++checked;
+        }
+      CHECK(checked == 64 + 64 + 25);
+      // Corners: the first point's pixel centres from 4.5 (its left edge: s = 0) to 11.5 (s = 7/8); t's direction
+      // by the origin.
+      CHECK(at(4, 4).x == 0.0f);
+      CHECK(at(11, 4).x == 0.875f);
+      CHECK(at(4, 11).y == (lower_left ? 0.875f : 0.125f));
+      CHECK(at(28, 3) == glm::vec2(0.0f));  // inside the triangle
+      CHECK(gl.GetError() == NO_ERROR);
+    }
+}
+
+TEST_CASE("PointParameter: its state, queries and errors; multisampled and polygon-mode points have gl_PointCoord too",
+          "[context][errors]") {
+  Context gl(16, 16);
+  int origin = 0;
+  float threshold = -1.0f;
+  gl.GetIntegerv(POINT_SPRITE_COORD_ORIGIN, &origin);
+  gl.GetFloatv(POINT_FADE_THRESHOLD_SIZE, &threshold);
+  CHECK(origin == int(UPPER_LEFT));
+  CHECK(threshold == 1.0f);
+  gl.PointParameterf(POINT_SPRITE_COORD_ORIGIN, float(LOWER_LEFT));
+  gl.PointParameterf(POINT_FADE_THRESHOLD_SIZE, 2.5f);
+  gl.GetIntegerv(POINT_SPRITE_COORD_ORIGIN, &origin);
+  gl.GetFloatv(POINT_FADE_THRESHOLD_SIZE, &threshold);
+  CHECK(origin == int(LOWER_LEFT));
+  CHECK(threshold == 2.5f);
+  const int upper = int(UPPER_LEFT), four = 4;
+  const float zero = 0.0f;
+  gl.PointParameteriv(POINT_SPRITE_COORD_ORIGIN, &upper);
+  gl.PointParameteriv(POINT_FADE_THRESHOLD_SIZE, &four);
+  gl.PointParameterfv(POINT_FADE_THRESHOLD_SIZE, &zero);
+  gl.GetIntegerv(POINT_SPRITE_COORD_ORIGIN, &origin);
+  gl.GetFloatv(POINT_FADE_THRESHOLD_SIZE, &threshold);
+  CHECK(origin == int(UPPER_LEFT));
+  CHECK(threshold == 0.0f);
+  CHECK(gl.GetError() == NO_ERROR);
+  gl.PointParameteri(POINT_SPRITE_COORD_ORIGIN, int(LOWER_LEFT) + 5);
+  CHECK(gl.GetError() == INVALID_ENUM);
+  gl.PointParameterf(POINT_SIZE, 3.0f);
+  CHECK(gl.GetError() == INVALID_ENUM);
+  gl.PointParameterf(POINT_FADE_THRESHOLD_SIZE, -1.0f);
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.PointParameterf(POINT_FADE_THRESHOLD_SIZE, std::numeric_limits<float>::quiet_NaN());
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.PointParameteri(POINT_FADE_THRESHOLD_SIZE, -3);
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.PointParameterfv(POINT_FADE_THRESHOLD_SIZE, nullptr);
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.GetFloatv(POINT_FADE_THRESHOLD_SIZE, &threshold);
+  CHECK(threshold == 0.0f);
+
+  // A 4x multisampled context and a triangle drawn as points (POLYGON_MODE POINT): each pixel's gl_PointCoord as
+  // at its centre, resolved to 8 bits.
+  for (int samples : {1, 4}) {
+    INFO(samples << " samples");
+    Context::Options options;
+    options.samples = samples;
+    Context ms(16, 16, options);
+    WidePointCoord shader;
+    ms.UseProgram(shader);
+    ms.PolygonMode(FRONT_AND_BACK, POINT);
+    ms.PointSize(6.0f);
+    MakeVertexArray(ms, {testing::WindowToClip(4, 4, 16, 16), testing::WindowToClip(12, 4, 16, 16),
+                         testing::WindowToClip(8, 11, 16, 16)});
+    ms.DrawArrays(TRIANGLES, 0, 3);
+    for (auto [cx, cy] : {std::pair{4, 4}, std::pair{12, 4}, std::pair{8, 11}})
+      for (int y = cy - 3; y < cy + 3; ++y)
+        for (int x = cx - 3; x < cx + 3; ++x) {
+          std::uint8_t p[4];
+          ms.ReadPixel(x, y, p);
+          const float s = 0.5f + (float(x) + 0.5f - float(cx)) / 6.0f, t = 0.5f - (float(y) + 0.5f - float(cy)) / 6.0f;
+          INFO("pixel " << x << ", " << y);
+          CHECK(std::abs(float(p[0]) - s * 255.0f) <= 0.51f);
+          CHECK(std::abs(float(p[1]) - t * 255.0f) <= 0.51f);
+        }
+  }
+}
+
 TEST_CASE("the viewport maps NDC to its rectangle and bounds the fragments", "[context]") {
   Context gl(16, 16);
   SolidShader shader;

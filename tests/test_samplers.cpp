@@ -397,3 +397,66 @@ TEST_CASE("sampler objects: OpenGL's errors, bindings and the state read back", 
   CHECK(fv == 4.0f);
   CHECK(gl.GetError() == NO_ERROR);
 }
+
+TEST_CASE("TexParameterI*: a texture's border colour kept as integers, other names as TexParameteriv; the errors",
+          "[texture][samplers][errors]") {
+  Context gl(4, 4);
+  const std::uint32_t tex = gl.GenTexture();
+  gl.BindTexture(TEXTURE_2D_ARRAY, tex);
+  const int numbers[4] = {-5, 7, std::numeric_limits<int>::min(), std::numeric_limits<int>::max()};
+  gl.TexParameterIiv(TEXTURE_2D_ARRAY, TEXTURE_BORDER_COLOR, numbers);
+  int back_i[4] = {0, 0, 0, 0};
+  gl.GetTexParameterIiv(TEXTURE_2D_ARRAY, TEXTURE_BORDER_COLOR, back_i);
+  CHECK(std::vector<int>(back_i, back_i + 4) == std::vector<int>(numbers, numbers + 4));
+  float back_f[4];
+  gl.GetTexParameterfv(TEXTURE_2D_ARRAY, TEXTURE_BORDER_COLOR, back_f);
+  CHECK((back_f[0] == -5.0f && back_f[1] == 7.0f));  // (sampled as these floats: no integer textures yet)
+  const std::uint32_t unumbers[4] = {0xFFFFFFFFu, 3, 0x80000000u, 0};
+  gl.TexParameterIuiv(TEXTURE_2D_ARRAY, TEXTURE_BORDER_COLOR, unumbers);
+  std::uint32_t back_u[4] = {0, 0, 0, 0};
+  gl.GetTexParameterIuiv(TEXTURE_2D_ARRAY, TEXTURE_BORDER_COLOR, back_u);
+  CHECK(std::vector<std::uint32_t>(back_u, back_u + 4) == std::vector<std::uint32_t>(unumbers, unumbers + 4));
+  const float floats[4] = {0.25f, -3.0f, 2.6f, 1.0f};
+  gl.TexParameterfv(TEXTURE_2D_ARRAY, TEXTURE_BORDER_COLOR, floats);  // floats again: the I queries round and clamp
+  gl.GetTexParameterIuiv(TEXTURE_2D_ARRAY, TEXTURE_BORDER_COLOR, back_u);
+  CHECK((back_u[0] == 0 && back_u[1] == 0 && back_u[2] == 3 && back_u[3] == 1));
+  gl.GetTexParameterIiv(TEXTURE_2D_ARRAY, TEXTURE_BORDER_COLOR, back_i);
+  CHECK((back_i[0] == 0 && back_i[1] == -3 && back_i[2] == 3 && back_i[3] == 1));
+  // Other names, the texture's levels included: as TexParameteriv.
+  const int base = 2, nearest = int(NEAREST);
+  gl.TexParameterIiv(TEXTURE_2D_ARRAY, TEXTURE_BASE_LEVEL, &base);
+  const std::uint32_t filter = LINEAR_MIPMAP_NEAREST;
+  gl.TexParameterIuiv(TEXTURE_2D_ARRAY, TEXTURE_MIN_FILTER, &filter);
+  gl.TexParameterIiv(TEXTURE_2D_ARRAY, TEXTURE_MAG_FILTER, &nearest);
+  gl.GetTexParameterIiv(TEXTURE_2D_ARRAY, TEXTURE_BASE_LEVEL, back_i);
+  CHECK(back_i[0] == 2);
+  gl.GetTexParameterIuiv(TEXTURE_2D_ARRAY, TEXTURE_MIN_FILTER, back_u);
+  CHECK(back_u[0] == std::uint32_t(LINEAR_MIPMAP_NEAREST));
+  int iv = 0;
+  gl.GetTexParameteriv(TEXTURE_2D_ARRAY, TEXTURE_MAG_FILTER, &iv);
+  CHECK(iv == int(NEAREST));
+  CHECK(gl.GetError() == NO_ERROR);
+
+  // Errors, each changing nothing.
+  const int bad = 12345;
+  gl.TexParameterIiv(TEXTURE_2D_ARRAY, TEXTURE_MAG_FILTER, &bad);
+  CHECK(gl.GetError() == INVALID_ENUM);
+  const int negative = -1;
+  gl.TexParameterIiv(TEXTURE_2D_ARRAY, TEXTURE_BASE_LEVEL, &negative);
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.TexParameterIiv(TEXTURE_2D_MULTISAMPLE, TEXTURE_BORDER_COLOR, numbers);
+  CHECK(gl.GetError() == INVALID_ENUM);
+  gl.TexParameterIuiv(TEXTURE_3D, TEXTURE_BORDER_COLOR, unumbers);  // nothing bound there
+  CHECK(gl.GetError() == INVALID_OPERATION);
+  gl.TexParameterIiv(TEXTURE_2D_ARRAY, TEXTURE_BORDER_COLOR, nullptr);
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.GetTexParameterIiv(TEXTURE_2D_ARRAY, TEXTURE_BORDER_COLOR, nullptr);
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.GetTexParameterIuiv(TEXTURE_2D_ARRAY, TEXTURE_WIDTH, back_u);
+  CHECK(gl.GetError() == INVALID_ENUM);
+  gl.GetTexParameterIiv(TEXTURE_2D_ARRAY, TEXTURE_BASE_LEVEL, back_i);
+  gl.GetTexParameterIiv(TEXTURE_2D_ARRAY, TEXTURE_MAG_FILTER, &iv);
+  CHECK(back_i[0] == 2);
+  CHECK(iv == int(NEAREST));
+  CHECK(gl.GetError() == NO_ERROR);
+}

@@ -359,6 +359,15 @@ class Context {
   /// as integers, mapped back from [-1, 1]). Bad target or name: INVALID_ENUM; nothing bound: INVALID_OPERATION.
   void GetTexParameterfv(Enum target, Enum pname, float* params) const;
   void GetTexParameteriv(Enum target, Enum pname, int* params) const;
+  /// glTexParameterIiv / Iuiv: TEXTURE_BORDER_COLOR's four numbers kept as they are, for integer textures (the
+  /// queries below give them back; sampling, with no integer textures yet, takes them as floats); any other name
+  /// as TexParameteriv.
+  void TexParameterIiv(Enum target, Enum pname, const int* values);
+  void TexParameterIuiv(Enum target, Enum pname, const std::uint32_t* values);
+  /// glGetTexParameterIiv / Iuiv: the border colour as the I forms set it (else its floats rounded and clamped to
+  /// the type); any other name as GetTexParameteriv.
+  void GetTexParameterIiv(Enum target, Enum pname, int* params) const;
+  void GetTexParameterIuiv(Enum target, Enum pname, std::uint32_t* params) const;
 
   // ---- Sampler objects (OpenGL 3.3, section 3.8.2) ----
   // A sampler object holds the sampling state TexParameter sets, but the levels: bound to a unit, it is used in
@@ -562,6 +571,14 @@ class Context {
   void PolygonMode(Enum face, Enum mode);
   /// Point diameter in pixels when PROGRAM_POINT_SIZE is disabled. size <= 0: INVALID_VALUE.
   void PointSize(float size);
+  /// glPointParameter: POINT_SPRITE_COORD_ORIGIN, UPPER_LEFT (the default: gl_PointCoord's t is 0 at the point's
+  /// top) or LOWER_LEFT (0 at its bottom), else INVALID_ENUM; POINT_FADE_THRESHOLD_SIZE, a size >= 0 (else
+  /// INVALID_VALUE), kept for the queries: OpenGL lets multisampled points below it fade, and softgl draws every
+  /// point at its own size without fading. Another pname: INVALID_ENUM; a null pointer: INVALID_VALUE.
+  void PointParameterf(Enum pname, float param);
+  void PointParameterfv(Enum pname, const float* params);
+  void PointParameteri(Enum pname, int param);
+  void PointParameteriv(Enum pname, const int* params);
   /// Which vertex of each primitive gives the value of flat varyings (Flat<> in shader.h): FIRST_VERTEX_CONVENTION
   /// or LAST_VERTEX_CONVENTION (the default), as OpenGL 4.6's table 13.2 defines them per mode. Other values:
   /// INVALID_ENUM.

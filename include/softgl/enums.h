@@ -392,6 +392,11 @@ inline constexpr Enum CULL_FACE_MODE = 0x0B45;
 inline constexpr Enum FRONT_FACE = 0x0B46;
 inline constexpr Enum POLYGON_MODE = 0x0B40;
 inline constexpr Enum POINT_SIZE = 0x0B11;
+// PointParameter's names and POINT_SPRITE_COORD_ORIGIN's values.
+inline constexpr Enum POINT_FADE_THRESHOLD_SIZE = 0x8128;
+inline constexpr Enum POINT_SPRITE_COORD_ORIGIN = 0x8CA0;
+inline constexpr Enum LOWER_LEFT = 0x8CA1;
+inline constexpr Enum UPPER_LEFT = 0x8CA2;
 inline constexpr Enum PROVOKING_VERTEX = 0x8E4F;
 inline constexpr Enum POLYGON_OFFSET_FACTOR = 0x8038;
 inline constexpr Enum POLYGON_OFFSET_UNITS = 0x2A00;

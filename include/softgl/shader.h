@@ -266,6 +266,8 @@ template <class Varyings>
 struct FragmentLanes {
   Varyings varyings;   ///< interpolated varyings, per lane
   vec4 frag_coord;     ///< gl_FragCoord: window x, y (pixel centre at +0.5), depth z, and 1/w
+  vec2 point_coord;    ///< gl_PointCoord: where in its point the fragment lies, (0, 0) to (1, 1) (see
+                       ///< PointParameter's POINT_SPRITE_COORD_ORIGIN); (0, 0) for lines and triangles
   bool front_facing;   ///< gl_FrontFacing (the same for all 16 lanes)
   Bool helper;         ///< gl_HelperInvocation: lanes outside the primitive, run for derivatives, never written
   const Textures* textures;  ///< the textures bound for this draw
@@ -426,6 +428,8 @@ struct FragmentIn {
   int lane;                  ///< This fragment's lane in quad.
   const Textures* textures;  ///< The textures bound for this draw.
   QuadSamples<Varyings>* samples = nullptr;  ///< This quad's samples so far (null: sample lane by lane).
+  glm::vec2 point_coord{0.0f};  ///< gl_PointCoord: where in its point the fragment lies, (0, 0) to (1, 1); (0, 0)
+                                ///< for lines and triangles.
 
   /// texture(sampler2D, uv) with uv a varying: the level of detail comes from uv's derivatives across the quad.
   glm::vec4 Texture(int unit, glm::vec2 Varyings::*uv, float bias = 0.0f) const {
@@ -515,6 +519,7 @@ struct BlockBatch {
   int simd = 0;                           ///< SimdLevel()
   const float* varyings = nullptr;        ///< block b at + b * kBlockVaryingFloats: [VaryingFloats()][16]
   const float* frag_coord = nullptr;      ///< block b at + b * 64: [4][16] (x, y, z, 1/w)
+  const float* point_coord = nullptr;     ///< points: block b at + b * 32: [2][16] (s, t); null for other primitives
   std::uint32_t* live = nullptr;          ///< [count] in: covered lanes (bit = lane); out: discarded lanes cleared
   FragmentLanesOut* out = nullptr;        ///< [count] what the fragment stage writes
   const Textures* textures = nullptr;
@@ -554,6 +559,12 @@ void FillFragmentLanes(const BlockBatch& batch, int b, FragmentLanes<Varyings>& 
   const float* fc = batch.frag_coord + std::size_t(b) * 4 * kLanes;
   in.frag_coord = vec4(Float::Load(fc), Float::Load(fc + kLanes), Float::Load(fc + 2 * kLanes),
                        Float::Load(fc + 3 * kLanes));
+  if (batch.point_coord) {
+    const float* pc = batch.point_coord + std::size_t(b) * 2 * kLanes;
+    in.point_coord = vec2(Float::Load(pc), Float::Load(pc + kLanes));
+  } else {
+    in.point_coord = vec2(Float(0.0f));
+  }
   in.front_facing = batch.front_facing;
   in.helper = !Bool::FromBits(batch.live[b]);
   in.textures = batch.textures;
@@ -787,8 +798,12 @@ class Shader : public Program {
         for (int k = 0; k < 4; ++k) {
           const int l = q * 4 + k;
           if (!((batch.live[b] >> l) & 1u)) continue;
-          const FragmentIn<Varyings> in{quad[k], glm::vec4(fc[l], fc[kLanes + l], fc[2 * kLanes + l], fc[3 * kLanes + l]),
-                                        batch.front_facing, quad, k, batch.textures, &samples};
+          FragmentIn<Varyings> in{quad[k], glm::vec4(fc[l], fc[kLanes + l], fc[2 * kLanes + l], fc[3 * kLanes + l]),
+                                  batch.front_facing, quad, k, batch.textures, &samples};
+          if (batch.point_coord) {
+            const float* pc = batch.point_coord + std::size_t(b) * 2 * kLanes;
+            in.point_coord = glm::vec2(pc[l], pc[kLanes + l]);
+          }
           FragmentOut out{};  // outputs the shader leaves alone read 0
           out.depth = in.frag_coord.z;
           if (!self.Fragment(in, out)) batch.live[b] &= ~(1u << l);

@@ -38,6 +38,7 @@ enum class Program {
                  // int(extra.z))
   kOutputs,      // four colour outputs: 0 colour; 1 (extra.x, extra.y, 0.5, colour.a); 2 colour * 2 - 0.5 (past
                  // [0, 1] both ways); 3 (extra.z, extra.w, colour.g, colour.a)
+  kPointCoord,   // colour = (gl_PointCoord, colour.b, 1)
 };
 
 /// A TEXTURE_2D_ARRAY or TEXTURE_3D defined by TexImage3D: RGBA8 from `rgba` (unit 3 for an array, 4 for 3D), or
@@ -121,6 +122,8 @@ class Backend {
   virtual void FrontFace(Enum mode) = 0;
   virtual void PolygonMode(Enum mode) = 0;
   virtual void PointSize(float size) = 0;
+  /// glPointParameteri.
+  virtual void PointParameteri(Enum pname, int value) = 0;
   virtual void DepthFunc(Enum func) = 0;
   virtual void DepthMask(bool flag) = 0;
   virtual void PolygonOffset(float factor, float units) = 0;
@@ -212,6 +215,9 @@ class Backend {
   virtual std::uint64_t QueryResult(std::uint32_t id) = 0;
   /// glVertexAttribP1ui ... glVertexAttribP4ui (`components` 1 to 4; another count: the P4uiv form).
   virtual void VertexAttribP(int components, std::uint32_t index, Enum type, bool normalized, std::uint32_t value) = 0;
+  /// glTexParameterIiv / Iuiv and glGetTexParameterIiv / Iuiv (`count` values) on unit 0's TEXTURE_2D.
+  virtual void TexParameterI(Enum pname, const int* values, bool is_unsigned) = 0;
+  virtual std::vector<std::int64_t> GetTexParameterI(Enum pname, int count, bool is_unsigned) = 0;
   /// glBeginConditionalRender / glEndConditionalRender.
   virtual void BeginConditionalRender(std::uint32_t id, Enum mode) = 0;
   virtual void EndConditionalRender() = 0;

@@ -114,6 +114,12 @@ out vec4 o_color;
 void main() { o_color = texelFetch(u_ms, ivec2(gl_FragCoord.xy) - ivec2(v_extra.xy), int(v_extra.z)); }
 )";
 
+constexpr const char* kPointCoordFragment = R"(#version 330 core
+in vec4 v_color;
+out vec4 o_color;
+void main() { o_color = vec4(gl_PointCoord, v_color.b, 1.0); }
+)";
+
 constexpr const char* kOutputsFragment = R"(#version 330 core
 in vec4 v_color;
 in vec4 v_extra;
@@ -182,6 +188,7 @@ class GlBackend final : public Backend {
     programs_[8] = Link(kArrayShadowFragment, error);
     programs_[9] = Link(kFetchSampleFragment, error);
     programs_[10] = Link(kOutputsFragment, error);
+    programs_[11] = Link(kPointCoordFragment, error);
     instanced_ = Link(kColorFragment, error, kInstancedVertexShader);
     glUseProgram(programs_[4]);
     glUniform1i(glGetUniformLocation(programs_[4], "u_cube"), 1);
@@ -221,6 +228,7 @@ class GlBackend final : public Backend {
   void FrontFace(Enum mode) override { glFrontFace(mode); }
   void PolygonMode(Enum mode) override { glPolygonMode(GL_FRONT_AND_BACK, mode); }
   void PointSize(float size) override { glPointSize(size); }
+  void PointParameteri(Enum pname, int value) override { glPointParameteri(pname, value); }
   void DepthFunc(Enum func) override { glDepthFunc(func); }
   void DepthMask(bool flag) override { glDepthMask(flag); }
   void PolygonOffset(float factor, float units) override { glPolygonOffset(factor, units); }
@@ -588,6 +596,20 @@ class GlBackend final : public Backend {
       default: glVertexAttribP4uiv(index, type, normalized, &value); break;
     }
   }
+  void TexParameterI(Enum pname, const int* values, bool is_unsigned) override {
+    glActiveTexture(GL_TEXTURE0);
+    if (is_unsigned) glTexParameterIuiv(GL_TEXTURE_2D, pname, reinterpret_cast<const GLuint*>(values));
+    else glTexParameterIiv(GL_TEXTURE_2D, pname, values);
+  }
+  std::vector<std::int64_t> GetTexParameterI(Enum pname, int count, bool is_unsigned) override {
+    glActiveTexture(GL_TEXTURE0);
+    GLint v[4] = {-7, -7, -7, -7};
+    if (is_unsigned) glGetTexParameterIuiv(GL_TEXTURE_2D, pname, reinterpret_cast<GLuint*>(v));
+    else glGetTexParameterIiv(GL_TEXTURE_2D, pname, v);
+    std::vector<std::int64_t> out;
+    for (int k = 0; k < count; ++k) out.push_back(is_unsigned ? std::int64_t(std::uint32_t(v[k])) : std::int64_t(v[k]));
+    return out;
+  }
   void BeginConditionalRender(std::uint32_t id, Enum mode) override { glBeginConditionalRender(id, mode); }
   void EndConditionalRender() override { glEndConditionalRender(); }
   const void* FenceSync(Enum condition, std::uint32_t flags) override { return glFenceSync(condition, flags); }
@@ -642,7 +664,7 @@ class GlBackend final : public Backend {
   OSMesaContext ctx_;
   int w_, h_;
   std::vector<std::uint8_t> buffer_;
-  GLuint programs_[11] = {};
+  GLuint programs_[12] = {};
   GLuint instanced_ = 0;
   GLuint rtt_color_ = 0;
   GLuint vao_ = 0, vbo_ = 0, ebo_ = 0;

@@ -136,6 +136,20 @@ struct FetchSampleShader : softgl::Shader<FetchSampleShader, FetchSampleVaryings
   }
 };
 
+// kPointCoord, in the wide form: gl_PointCoord and the colour's blue.
+struct PointCoordVaryings {
+  softgl::Float blue;
+};
+struct PointCoordShader : softgl::Shader<PointCoordShader, PointCoordVaryings> {
+  void Vertex(const softgl::VertexLanes& in, softgl::VertexLanesOut<PointCoordVaryings>& out) const {
+    out.position = in.attrib[0];
+    out.varyings.blue = in.attrib[1].z;
+  }
+  void Fragment(const softgl::FragmentLanes<PointCoordVaryings>& in, softgl::FragmentLanesOut& out) const {
+    out.color[0] = softgl::vec4(in.point_coord.x, in.point_coord.y, in.varyings.blue, softgl::Float(1.0f));
+  }
+};
+
 // kOutputs, in the wide form: four colour outputs.
 struct OutputsVaryings {
   softgl::vec4 color;
@@ -198,6 +212,7 @@ class SoftglBackend final : public Backend {
   void FrontFace(Enum mode) override { gl_.FrontFace(mode); }
   void PolygonMode(Enum mode) override { gl_.PolygonMode(softgl::FRONT_AND_BACK, mode); }
   void PointSize(float size) override { gl_.PointSize(size); }
+  void PointParameteri(Enum pname, int value) override { gl_.PointParameteri(pname, value); }
   void DepthFunc(Enum func) override { gl_.DepthFunc(func); }
   void DepthMask(bool flag) override { gl_.DepthMask(flag); }
   void PolygonOffset(float factor, float units) override { gl_.PolygonOffset(factor, units); }
@@ -238,6 +253,7 @@ class SoftglBackend final : public Backend {
       case Program::kArrayShadow: gl_.UseProgram(array_shadow_); break;
       case Program::kFetchSample: gl_.UseProgram(fetch_sample_); break;
       case Program::kOutputs: gl_.UseProgram(outputs_); break;
+      case Program::kPointCoord: gl_.UseProgram(point_coord_); break;
     }
     if (indices.empty()) {
       gl_.DrawArrays(mode, 0, int(vertices.size()));
@@ -541,6 +557,20 @@ class SoftglBackend final : public Backend {
       default: gl_.VertexAttribP4uiv(index, type, normalized, &value); break;
     }
   }
+  void TexParameterI(Enum pname, const int* values, bool is_unsigned) override {
+    gl_.ActiveTexture(softgl::TEXTURE0);
+    if (is_unsigned) gl_.TexParameterIuiv(softgl::TEXTURE_2D, pname, reinterpret_cast<const std::uint32_t*>(values));
+    else gl_.TexParameterIiv(softgl::TEXTURE_2D, pname, values);
+  }
+  std::vector<std::int64_t> GetTexParameterI(Enum pname, int count, bool is_unsigned) override {
+    gl_.ActiveTexture(softgl::TEXTURE0);
+    int v[4] = {-7, -7, -7, -7};
+    if (is_unsigned) gl_.GetTexParameterIuiv(softgl::TEXTURE_2D, pname, reinterpret_cast<std::uint32_t*>(v));
+    else gl_.GetTexParameterIiv(softgl::TEXTURE_2D, pname, v);
+    std::vector<std::int64_t> out;
+    for (int k = 0; k < count; ++k) out.push_back(is_unsigned ? std::int64_t(std::uint32_t(v[k])) : std::int64_t(v[k]));
+    return out;
+  }
   void BeginConditionalRender(std::uint32_t id, Enum mode) override { gl_.BeginConditionalRender(id, mode); }
   void EndConditionalRender() override { gl_.EndConditionalRender(); }
   const void* FenceSync(Enum condition, std::uint32_t flags) override { return gl_.FenceSync(condition, flags); }
@@ -606,6 +636,7 @@ class SoftglBackend final : public Backend {
   LayeredShader array_, volume_, array_shadow_;
   FetchSampleShader fetch_sample_;
   OutputsShader outputs_;
+  PointCoordShader point_coord_;
   std::uint32_t rtt_color_ = 0;
 };
 

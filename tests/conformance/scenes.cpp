@@ -143,6 +143,33 @@ void Points(Backend& b) {
   }
 }
 
+// gl_PointCoord across points of several sizes at jittered positions, both origins, then points made by
+// POLYGON_MODE POINT.
+void PointSprites(Backend& b) {
+  ClearBlack(b);
+  Jitter j(11);
+  const float sizes[] = {3, 6, 9.5f, 16, 23};
+  for (Enum origin : {UPPER_LEFT, LOWER_LEFT}) {
+    b.PointParameteri(POINT_SPRITE_COORD_ORIGIN, int(origin));
+    const float y0 = origin == UPPER_LEFT ? 0.0f : 64.0f;
+    for (int i = 0; i < 5; ++i) {
+      b.PointSize(sizes[i]);
+      b.Draw(POINTS, {{Win(12.0f + 25.0f * float(i) + j.Uniform(-0.5f, 0.5f), y0 + 14.0f + j.Uniform(-0.5f, 0.5f)),
+                       {0, 0, origin == UPPER_LEFT ? 0.0f : 1.0f, 1}},
+                      {Win(12.0f + 25.0f * float(i) + j.Uniform(-0.5f, 0.5f), y0 + 44.0f + j.Uniform(-0.5f, 0.5f)),
+                       {0, 0, 0.5f, 1}}},
+             Program::kPointCoord);
+    }
+  }
+  b.PointParameteri(POINT_SPRITE_COORD_ORIGIN, int(UPPER_LEFT));
+  b.PolygonMode(POINT);
+  b.PointSize(7);
+  b.Draw(TRIANGLES, {{Win(60.3f, 60.6f), {0, 0, 0.25f, 1}}, {Win(80.2f, 62.1f), {0, 0, 0.25f, 1}}, {Win(70.5f, 75.5f), {0, 0, 0.25f, 1}}},
+         Program::kPointCoord);
+  b.PolygonMode(FILL);
+  b.PointSize(1);
+}
+
 void Lines(Backend& b) {
   ClearBlack(b);
   Jitter j(5);
@@ -1693,6 +1720,7 @@ const std::vector<SceneInfo>& Scenes() {
       {"fill_rule_triangles", kSize, kSize, Check::kExact, FillRuleTriangles},
       {"fill_rule_shared_edges", kSize, kSize, Check::kExact, FillRuleSharedEdges},
       {"points", kSize, kSize, Check::kExact, Points},
+      {"point_sprites", kSize, kSize, Check::kColor, PointSprites},
       {"lines", kSize, kSize, Check::kExact, Lines},
       {"line_interpolation", kSize, kSize, Check::kCoverage, LineInterpolation},
       {"polygon_mode_line", kSize, kSize, Check::kExact, PolygonModeLine},

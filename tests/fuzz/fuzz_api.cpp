@@ -28,7 +28,7 @@ struct FuzzShader : softgl::Shader<FuzzShader, Vary> {
     out.varyings.uv = glm::vec2(in.attrib[2]);
   }
   bool Fragment(const softgl::FragmentIn<Vary>& in, softgl::FragmentOut& out) const {
-    out.color[0] = in.varyings.a + in.Texture(0, &Vary::uv) + in.TextureCube(1, &Vary::dir);
+    out.color[0] = in.varyings.a + in.Texture(0, &Vary::uv) + in.TextureCube(1, &Vary::dir) + glm::vec4(in.point_coord, 0, 0);
     out.color[1] = in.textures->SampleLod(2, in.varyings.uv, in.varyings.a.w);
     out.color[2] = glm::vec4(in.textures->SampleShadow(3, in.varyings.uv, in.varyings.a.x, {}, {}));
     const auto small = [](float v) { return std::isfinite(v) ? int(std::clamp(v, -4.0f, 12.0f)) : 0; };
@@ -300,11 +300,23 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         float fv[4];
         switch (in.Byte() % 4) {
           case 0: gl.TexParameteri(in.Enum(kTexTargets), in.Enum(kParams), iv[0]); break;
-          case 1: gl.TexParameteriv(in.Enum(kTexTargets), in.Byte() % 4 ? in.Enum(kParams) : TEXTURE_BORDER_COLOR, iv); break;
-          case 2:
+          case 1: {
+            const std::uint32_t target = in.Enum(kTexTargets), pname = in.Byte() % 4 ? in.Enum(kParams) : TEXTURE_BORDER_COLOR;
+            switch (in.Byte() % 3) {
+              case 0: gl.TexParameteriv(target, pname, iv); break;
+              case 1: gl.TexParameterIiv(target, pname, in.Byte() % 8 ? iv : nullptr); break;
+              default: gl.TexParameterIuiv(target, pname, reinterpret_cast<const std::uint32_t*>(iv)); break;
+            }
+            break;
+          }
+          case 2: {
+            std::uint32_t uv[4];
             gl.GetTexParameteriv(in.Enum(kTexTargets), in.Byte() % 4 ? in.Enum(kParams) : TEXTURE_BORDER_COLOR, iv);
             gl.GetTexParameterfv(in.Enum(kTexTargets), in.Enum(kParams), fv);
+            gl.GetTexParameterIiv(in.Enum(kTexTargets), in.Byte() % 4 ? in.Enum(kParams) : TEXTURE_BORDER_COLOR, iv);
+            gl.GetTexParameterIuiv(in.Enum(kTexTargets), in.Byte() % 4 ? in.Enum(kParams) : TEXTURE_BORDER_COLOR, uv);
             break;
+          }
           default:
             gl.GetTexLevelParameteriv(in.Enum(kImageTargets), in.Int(-1, 16), std::uint32_t(in.Int(0x1000, 0x1004)), iv);
             gl.GetTexLevelParameterfv(in.Enum(kImageTargets), in.Int(-1, 16), std::uint32_t(in.Int(0x8059, 0x8060)), fv);
@@ -355,8 +367,18 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         break;
       }
       case 37:
-        if (in.Byte() % 2) gl.PointSize(in.Float());
-        else gl.PrimitiveRestartIndex(in.Byte() % 2 ? in.Get<std::uint32_t>() : std::uint32_t(in.Int(0, 8)));
+        switch (in.Byte() % 3) {
+          case 0: gl.PointSize(in.Float()); break;
+          case 1: gl.PrimitiveRestartIndex(in.Byte() % 2 ? in.Get<std::uint32_t>() : std::uint32_t(in.Int(0, 8))); break;
+          default: {  // PointParameter: either name, any value (an origin's enum, as a float too), null now and then
+            const std::uint32_t pname = in.Byte() % 4 ? (in.Byte() % 2 ? POINT_SPRITE_COORD_ORIGIN : POINT_FADE_THRESHOLD_SIZE) : POINT_SIZE;
+            const int i = in.Byte() % 2 ? int(in.Byte() % 2 ? LOWER_LEFT : UPPER_LEFT) : in.Get<int>();
+            const float f = in.Byte() % 2 ? float(i) : in.Float();
+            if (in.Byte() % 2) gl.PointParameteriv(pname, in.Byte() % 8 ? &i : nullptr);
+            else gl.PointParameterfv(pname, in.Byte() % 8 ? &f : nullptr);
+            break;
+          }
+        }
         break;
       case 38:
         if (in.Byte() % 4) {
