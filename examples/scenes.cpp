@@ -198,4 +198,85 @@ softgl::Image Instancing(int width, int height) {
   return gl.ReadPixels();
 }
 
+namespace {
+
+struct SpriteVaryings {
+  vec4 color;
+};
+
+// A particle as a point sprite: attribute 0 its position, 1 its colour (alpha: how bright); the vertex stage sizes
+// it by its distance (gl_PointSize, with PROGRAM_POINT_SIZE), the fragment stage shapes a soft disc from
+// gl_PointCoord with a hot core, and discards the corners outside the disc.
+struct SpriteShader : softgl::Shader<SpriteShader, SpriteVaryings> {
+  glm::mat4 view_proj{1.0f};
+  float size_at_unit_distance = 60.0f;  // pixels
+  void Vertex(const VertexLanes& in, VertexLanesOut<SpriteVaryings>& out) const {
+    out.position = view_proj * vec4(vec3(in.attrib[0]), 1.0f);
+    out.point_size = size_at_unit_distance / max(out.position.w, 0.1f);
+    out.varyings.color = in.attrib[1];
+  }
+  void Fragment(const FragmentLanes<SpriteVaryings>& in, FragmentLanesOut& out) const {
+    const vec2 d = in.point_coord * 2.0f - 1.0f;  // (-1, -1) to (1, 1) across the sprite
+    const Float r2 = dot(d, d);
+    out.Discard(r2 > 1.0f);
+    const Float glow = (1.0f - r2) * (1.0f - r2);
+    const Float core = smoothstep(Float(0.25f), Float(0.0f), r2);
+    const vec3 c = vec3(in.varyings.color) * glow + vec3(core * 0.6f);
+    out.color[0] = vec4(c * in.varyings.color.w, 1.0f);
+  }
+};
+
+}  // namespace
+
+softgl::Image Particles(int width, int height) {
+  softgl::Context gl(width, height);
+  // A fountain: particles leave the nozzle with jittered speeds (a fixed hash, the same on every machine), rise and
+  // fall under gravity, each shown at its age; hot white-yellow when young, red and dim when old.
+  constexpr int kParticles = 1500;
+  const auto hash = [](std::uint32_t x) {  // [0, 1)
+    x ^= x >> 16;
+    x *= 0x7FEB352Du;
+    x ^= x >> 15;
+    x *= 0x846CA68Bu;
+    x ^= x >> 16;
+    return float(x >> 8) / 16777216.0f;
+  };
+  std::vector<float> data;
+  data.reserve(kParticles * 8);
+  for (int i = 0; i < kParticles; ++i) {
+    const std::uint32_t k = std::uint32_t(i) * 4u;
+    const float age = hash(k), angle = 6.2831853f * hash(k + 1), spread = 0.4f + 1.1f * hash(k + 2);
+    const float speed = 5.4f + 1.0f * hash(k + 3);
+    const glm::vec3 v(std::cos(angle) * spread, speed, std::sin(angle) * spread);
+    const float t = age * 1.3f;  // seconds: the oldest are back near the nozzle's height
+    const glm::vec3 p = v * t + glm::vec3(0.0f, -4.9f * t * t, 0.0f);
+    const glm::vec3 young(1.0f, 0.95f, 0.6f), old(0.9f, 0.15f, 0.05f);
+    const glm::vec3 c = young + (old - young) * age;
+    const float bright = 0.16f * (1.0f - 0.5f * age);
+    const float v8[8] = {p.x, p.y, p.z, 1.0f, c.r, c.g, c.b, bright};
+    data.insert(data.end(), v8, v8 + 8);
+  }
+  const std::uint32_t vao = gl.GenVertexArray(), vbo = gl.GenBuffer();
+  gl.BindVertexArray(vao);
+  gl.BindBuffer(softgl::ARRAY_BUFFER, vbo);
+  gl.BufferData(softgl::ARRAY_BUFFER, std::ptrdiff_t(data.size() * sizeof(float)), data.data());
+  gl.VertexAttributePointer(0, 4, softgl::FLOAT, false, 8 * sizeof(float), 0);
+  gl.VertexAttributePointer(1, 4, softgl::FLOAT, false, 8 * sizeof(float), 4 * sizeof(float));
+  gl.EnableVertexAttribArray(0);
+  gl.EnableVertexAttribArray(1);
+
+  SpriteShader shader;
+  const glm::mat4 view = glm::lookAt(glm::vec3(0.0f, 0.6f, 6.0f), glm::vec3(0.0f, 1.0f, 0.0f), glm::vec3(0, 1, 0));
+  shader.view_proj = Projection(width, height, 45.0f, 0.1f, 50.0f) * view;
+  shader.size_at_unit_distance = 0.25f * float(height);
+  gl.UseProgram(shader);
+  gl.Enable(softgl::PROGRAM_POINT_SIZE);
+  gl.Enable(softgl::BLEND);
+  gl.BlendFunc(softgl::ONE, softgl::ONE);  // additive: the order of the particles does not matter
+  gl.ClearColor(0.02f, 0.02f, 0.05f, 1.0f);
+  gl.Clear(softgl::COLOR_BUFFER_BIT);
+  gl.DrawArrays(softgl::POINTS, 0, kParticles);
+  return gl.ReadPixels();
+}
+
 }  // namespace scenes

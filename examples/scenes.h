@@ -86,6 +86,10 @@ softgl::Image EnvironmentMap(int width, int height);
 /// attributes with divisor 1 give its height and colour.
 softgl::Image Instancing(int width, int height);
 
+/// A fountain of 1,500 particles drawn as point sprites in one draw: gl_PointSize by distance, a soft disc shaped
+/// from gl_PointCoord, additive blending.
+softgl::Image Particles(int width, int height);
+
 // ---- The guided tour (docs/tour.md): one picture per stage, each quantity made visible by a shader ----------
 
 /// Clipping: left, a floor triangle seen from above with the camera's view volume (near plane in yellow), red where
