@@ -133,7 +133,6 @@ bool* CapFlag(ContextState& s, Enum cap) {
     case SCISSOR_TEST: return &s.scissor_enabled;
     case FRAMEBUFFER_SRGB: return &s.framebuffer_srgb;
     case STENCIL_TEST: return &s.ops.stencil_test;
-    case BLEND: return &s.ops.blend.enabled;
     case POLYGON_OFFSET_FILL: return &s.primitive.offset_fill;
     case POLYGON_OFFSET_LINE: return &s.primitive.offset_line;
     case POLYGON_OFFSET_POINT: return &s.primitive.offset_point;
@@ -150,24 +149,51 @@ bool* CapFlag(ContextState& s, Enum cap) {
 }
 
 void Context::Enable(Enum cap) {
+  if (cap == BLEND) return void(state_->ops.blend_buffers = 0xFF);  // every draw buffer's
   bool* flag = CapFlag(*state_, cap);
   if (!flag) return state_->SetError(INVALID_ENUM, __func__, "not a capability Enable/Disable/IsEnabled knows");
   *flag = true;
 }
 
 void Context::Disable(Enum cap) {
+  if (cap == BLEND) return void(state_->ops.blend_buffers = 0);
   bool* flag = CapFlag(*state_, cap);
   if (!flag) return state_->SetError(INVALID_ENUM, __func__, "not a capability Enable/Disable/IsEnabled knows");
   *flag = false;
 }
 
 bool Context::IsEnabled(Enum cap) {
+  if (cap == BLEND) return state_->ops.Blends(0);  // (draw buffer 0's, as IsEnabledi(BLEND, 0))
   bool* flag = CapFlag(*state_, cap);
   if (!flag) {
     state_->SetError(INVALID_ENUM, __func__, "an enum argument is not one this call accepts");
     return false;
   }
   return *flag;
+}
+
+namespace {
+
+// Enablei, Disablei and IsEnabledi's checks: cap BLEND (else INVALID_ENUM), index a draw buffer (else
+// INVALID_VALUE). False with the error set.
+bool IndexedCap(ContextState& s, const char* what, Enum cap, std::uint32_t index) {
+  if (cap != BLEND) return s.SetError(INVALID_ENUM, what, "cap must be BLEND (the one capability with a value per draw buffer)"), false;
+  if (index >= std::uint32_t(kMaxColorOutputs)) return s.SetError(INVALID_VALUE, what, "index is not a draw buffer (0 to MAX_DRAW_BUFFERS - 1)"), false;
+  return true;
+}
+
+}  // namespace
+
+void Context::Enablei(Enum cap, std::uint32_t index) {
+  if (IndexedCap(*state_, __func__, cap, index)) state_->ops.blend_buffers |= std::uint8_t(1u << index);
+}
+
+void Context::Disablei(Enum cap, std::uint32_t index) {
+  if (IndexedCap(*state_, __func__, cap, index)) state_->ops.blend_buffers &= std::uint8_t(~(1u << index));
+}
+
+bool Context::IsEnabledi(Enum cap, std::uint32_t index) {
+  return IndexedCap(*state_, __func__, cap, index) && state_->ops.Blends(int(index));
 }
 
 void Context::PrimitiveRestartIndex(std::uint32_t index) { state_->restart_index = index; }
@@ -368,11 +394,12 @@ void Context::BlendEquationSeparate(Enum mode_rgb, Enum mode_alpha) {
 void Context::BlendColor(float r, float g, float b, float a) { state_->ops.blend.color = glm::vec4(r, g, b, a); }
 
 void Context::ColorMask(bool r, bool g, bool b, bool a) {
-  bool* m = state_->ops.color_mask;
-  m[0] = r;
-  m[1] = g;
-  m[2] = b;
-  m[3] = a;
+  for (std::uint8_t& m : state_->ops.color_masks) m = std::uint8_t(r | g << 1 | b << 2 | a << 3);
+}
+
+void Context::ColorMaski(std::uint32_t index, bool r, bool g, bool b, bool a) {
+  if (index >= std::uint32_t(kMaxColorOutputs)) return state_->SetError(INVALID_VALUE, __func__, "index is not a draw buffer (0 to MAX_DRAW_BUFFERS - 1)");
+  state_->ops.color_masks[index] = std::uint8_t(r | g << 1 | b << 2 | a << 3);
 }
 
 // ---- Clearing ------------------------------------------------------------------------------------------------
@@ -402,13 +429,25 @@ void Context::Clear(Bitfield mask) {
   clear.area = area;
   clear.color = (mask & COLOR_BUFFER_BIT) != 0;
   clear.color_value = glm::vec4(s.clear_color[0], s.clear_color[1], s.clear_color[2], s.clear_color[3]);
-  for (int i = 0; i < 4; ++i) clear.color_mask[i] = s.ops.color_mask[i];
   clear.depth = (mask & DEPTH_BUFFER_BIT) && s.ops.depth_write;
   clear.depth_value = float(s.clear_depth);
   clear.stencil = (mask & STENCIL_BUFFER_BIT) != 0;
   clear.stencil_value = std::uint8_t(s.clear_stencil & 0xFF);
   clear.stencil_mask = std::uint8_t(s.ops.front.write_mask);
-  RecordClear(s, target, clear, __func__);
+  // Each draw buffer through its own colour mask: one packet per distinct mask (one, unless ColorMaski made them
+  // differ), the depth and stencil with the first.
+  std::uint32_t left = clear.color ? 0xFFu : 0u;
+  do {
+    const int first = left ? std::countr_zero(left) : 0;
+    const std::uint8_t m = s.ops.color_masks[first];
+    clear.color_buffers = 0;
+    for (int o = first; o < kMaxColorOutputs; ++o)
+      if (((left >> o) & 1u) && s.ops.color_masks[o] == m) clear.color_buffers |= 1u << o;
+    left &= ~clear.color_buffers;
+    for (int c = 0; c < 4; ++c) clear.color_mask[c] = (m >> c) & 1u;
+    RecordClear(s, target, clear, __func__);
+    clear.depth = clear.stencil = false;
+  } while (left);
 }
 
 namespace {
@@ -437,8 +476,9 @@ bool ClearBufferPacket(ContextState& s, const char* what, Enum buffer, int drawb
   if (!s.DrawTarget(target, true)) return false;
   clear.area = s.ClearArea(target);
   if (clear.area.Empty()) return false;
-  for (int i = 0; i < 4; ++i) clear.color_mask[i] = s.ops.color_mask[i];
-  clear.color_buffers = std::uint32_t(1) << (buffer == COLOR ? drawbuffer : 0);
+  const int o = buffer == COLOR ? drawbuffer : 0;
+  for (int c = 0; c < 4; ++c) clear.color_mask[c] = s.ops.Writes(o, c);
+  clear.color_buffers = std::uint32_t(1) << o;
   clear.stencil_mask = std::uint8_t(s.ops.front.write_mask);
   return true;
 }

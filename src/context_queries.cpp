@@ -30,6 +30,7 @@ bool QueryState(ContextState& s, Enum pname, StateValue& out) {
   auto integer = [&](double v) { return put(Kind::kInt, {v}); };
   auto boolean = [&](bool v) { return put(Kind::kBool, {v ? 1.0 : 0.0}); };
   if (bool* flag = CapFlag(s, pname)) return boolean(*flag);
+  if (pname == BLEND) return boolean(s.ops.Blends(0));  // (draw buffer 0's)
   if (pname >= DRAW_BUFFER0 && pname < DRAW_BUFFER0 + kMaxColorOutputs) {
     const int i = int(pname - DRAW_BUFFER0);
     // The context's own framebuffer has one colour buffer, which output 0 writes (BACK, as a double-buffered
@@ -100,8 +101,9 @@ bool QueryState(ContextState& s, Enum pname, StateValue& out) {
     case BLEND_EQUATION_ALPHA: return integer(blend.eq_alpha);
     case BLEND_COLOR: return put(Kind::kNormalized, {blend.color.r, blend.color.g, blend.color.b, blend.color.a});
     case COLOR_CLEAR_VALUE: return put(Kind::kNormalized, {s.clear_color[0], s.clear_color[1], s.clear_color[2], s.clear_color[3]});
-    case COLOR_WRITEMASK: {
-      const bool* m = s.ops.color_mask;
+    case COLOR_WRITEMASK: {  // draw buffer 0's
+      bool m[4];
+      s.ops.Mask(0, m);
       return put(Kind::kBool, {double(m[0]), double(m[1]), double(m[2]), double(m[3])});
     }
     case CLAMP_READ_COLOR: return integer(s.clamp_read_color);
@@ -140,7 +142,7 @@ bool QueryState(ContextState& s, Enum pname, StateValue& out) {
     case SAMPLE_COVERAGE_VALUE: return put(Kind::kFloat, {s.ops.multisample.coverage_value});
     case SAMPLE_COVERAGE_INVERT: return boolean(s.ops.multisample.coverage_invert);
     case MIN_SAMPLE_SHADING_VALUE: return put(Kind::kFloat, {s.ops.multisample.min_sample_shading});
-    case SAMPLE_MASK_VALUE: return integer(s.ops.multisample.mask);
+    case SAMPLE_MASK_VALUE: return integer(std::int32_t(s.ops.multisample.mask));  // the bits as a GLint (all: -1)
     case SAMPLES:
     case SAMPLE_BUFFERS: {  // of the draw framebuffer (an incomplete one reports 0)
       int samples = s.fb.samples;
@@ -163,6 +165,28 @@ bool QueryState(ContextState& s, Enum pname, StateValue& out) {
     case CONTEXT_PROFILE_MASK: return integer(1);  // CONTEXT_CORE_PROFILE_BIT
     default: return false;
   }
+}
+
+// The indexed state `pname` at `index` (GetBooleani_v and its kin): BLEND and COLOR_WRITEMASK of draw buffer
+// index, SAMPLE_MASK_VALUE of mask word index (one word). False with the error set: INVALID_ENUM for another
+// name, INVALID_VALUE for an index past the name's last.
+bool QueryIndexed(ContextState& s, const char* what, Enum pname, std::uint32_t index, StateValue& out) {
+  using Kind = StateValue::Kind;
+  const std::uint32_t count = pname == SAMPLE_MASK_VALUE ? 1u : std::uint32_t(kMaxColorOutputs);
+  if (pname != BLEND && pname != COLOR_WRITEMASK && pname != SAMPLE_MASK_VALUE) return s.SetError(INVALID_ENUM, what, "target must be BLEND, COLOR_WRITEMASK or SAMPLE_MASK_VALUE (the indexed state softgl keeps)"), false;
+  if (index >= count) return s.SetError(INVALID_VALUE, what, "index is past the last of the state's values (a draw buffer, or mask word 0)"), false;
+  out = StateValue{};
+  if (pname == SAMPLE_MASK_VALUE) {
+    out.kind = Kind::kInt;
+    out.v[out.count++] = double(std::int32_t(s.ops.multisample.mask));  // the bits as a GLint, as GetIntegerv
+  } else if (pname == BLEND) {
+    out.kind = Kind::kBool;
+    out.v[out.count++] = s.ops.Blends(int(index)) ? 1.0 : 0.0;
+  } else {
+    out.kind = Kind::kBool;
+    for (int c = 0; c < 4; ++c) out.v[out.count++] = s.ops.Writes(int(index), c) ? 1.0 : 0.0;
+  }
+  return true;
 }
 
 bool Query(ContextState& s, const char* what, Enum pname, StateValue& out) {
@@ -211,6 +235,24 @@ void Context::GetBooleanv(Enum pname, bool* data) const {
   StateValue v;
   if (!Query(*state_, __func__, pname, v) || !NotNull(*state_, __func__, data, "data")) return;
   for (int i = 0; i < v.count; ++i) data[i] = v.v[i] != 0.0;
+}
+
+void Context::GetBooleani_v(Enum target, std::uint32_t index, bool* data) const {
+  StateValue v;
+  if (!QueryIndexed(*state_, __func__, target, index, v) || !NotNull(*state_, __func__, data, "data")) return;
+  for (int i = 0; i < v.count; ++i) data[i] = v.v[i] != 0.0;
+}
+
+void Context::GetIntegeri_v(Enum target, std::uint32_t index, int* data) const {
+  StateValue v;
+  if (!QueryIndexed(*state_, __func__, target, index, v) || !NotNull(*state_, __func__, data, "data")) return;
+  for (int i = 0; i < v.count; ++i) data[i] = int(std::clamp<std::int64_t>(ToInteger(v, i), INT32_MIN, INT32_MAX));
+}
+
+void Context::GetInteger64i_v(Enum target, std::uint32_t index, std::int64_t* data) const {
+  StateValue v;
+  if (!QueryIndexed(*state_, __func__, target, index, v) || !NotNull(*state_, __func__, data, "data")) return;
+  for (int i = 0; i < v.count; ++i) data[i] = ToInteger(v, i);
 }
 
 const char* Context::GetString(Enum name) const {

@@ -115,10 +115,10 @@ Term TermOf(Enum f, bool alpha) {
 
 }  // namespace
 
-Unorm8Blend::Unorm8Blend(const FragmentOpsState& state, bool rgb_only) {
+Unorm8Blend::Unorm8Blend(const FragmentOpsState& state, int o, bool rgb_only) {
   for (int c = 0; c < 4; ++c)
-    if (!state.color_mask[c] || (c == 3 && rgb_only)) keep |= 0xFFu << (8 * c);
-  blend = state.blend.enabled;
+    if (!state.Writes(o, c) || (c == 3 && rgb_only)) keep |= 0xFFu << (8 * c);
+  blend = state.Blends(o);
   const BlendState& b = state.blend;
   for (int c = 0; c < 4; ++c) {
     const bool a = c == 3;
@@ -144,11 +144,9 @@ ColourPath PathOf(const ColorBuffer& cb) {
 
 FragmentOpsPlan PlanFragmentOps(const FragmentOpsState& state, const RenderTarget& target) {
   FragmentOpsPlan plan;
-  const Unorm8Blend rgba(state, false), rgb(state, true);  // the two kinds of buffer, made once
-  const bool any_color = state.color_mask[0] || state.color_mask[1] || state.color_mask[2] || state.color_mask[3];
   for (int o = 0; o < kMaxColorOutputs; ++o) {
-    plan.blend[o] = target.color[o].rgb_only ? rgb : rgba;
-    plan.path[o] = any_color ? PathOf(target.color[o]) : ColourPath::kNone;
+    plan.blend[o] = Unorm8Blend(state, o, target.color[o].rgb_only);
+    plan.path[o] = state.color_masks[o] != 0 ? PathOf(target.color[o]) : ColourPath::kNone;
     if (plan.path[o] != ColourPath::kNone) plan.buffers = o + 1;
     if (target.color[o].srgb) plan.srgb = &SrgbLanes();
   }
@@ -324,7 +322,8 @@ SOFTGL_WIDE typename V<W>::U Blend8Lanes(const Unorm8Blend& b, const typename V<
 void BlendUnorm8(const BlendState& state, const glm::vec4& src, const std::uint8_t dst[4], std::uint8_t out[4]) {
   FragmentOpsState s;
   s.blend = state;
-  Blend8(Unorm8Blend(s, false), src, dst, out);
+  s.blend_buffers = 1;  // (draw buffer 0 blends)
+  Blend8(Unorm8Blend(s, 0, false), src, dst, out);
 }
 
 std::uint32_t CoverageMask(const MultisampleState& state, int samples) {
@@ -480,12 +479,14 @@ void ColourLane(const FragmentOpsState& st, const Unorm8Blend& blend8, const Blo
     color = glm::clamp(color, 0.0f, 1.0f);
     for (int c = 0; c < 4; ++c)
       if (std::isnan(color[c])) color[c] = 0.0f;
-    if (st.blend.enabled) {
+    if (st.Blends(o)) {
       BlendState linear = st.blend;
       linear.color = glm::clamp(linear.color, 0.0f, 1.0f);
       color = Blend(linear, color, cb.Load(x, y));
     }
-    cb.Store(x, y, color, st.color_mask);
+    bool mask[4];
+    st.Mask(o, mask);
+    cb.Store(x, y, color, mask);
     return;
   }
   if (cb.Normalized()) {
@@ -503,8 +504,10 @@ void ColourLane(const FragmentOpsState& st, const Unorm8Blend& blend8, const Blo
   }
   for (int c = 0; c < 4; ++c)
     if (std::isnan(color[c])) color[c] = 0.0f;
-  if (st.blend.enabled) color = Blend(st.blend, color, cb.Load(x, y));
-  cb.Store(x, y, color, st.color_mask);
+  if (st.Blends(o)) color = Blend(st.blend, color, cb.Load(x, y));
+  bool mask[4];
+  st.Mask(o, mask);
+  cb.Store(x, y, color, mask);
 }
 
 // ---- Colour buffers, W lanes at a time ----
@@ -663,8 +666,8 @@ SOFTGL_WIDE void FloatLanesOf(const FragmentOpsState& st, const FragmentOpsPlan&
   };
   // The stored texels, decoded where blending or the colour mask reads them (an sRGB buffer keeps its masked
   // bytes as they are).
-  const bool all_channels = st.color_mask[0] && st.color_mask[1] && st.color_mask[2] && st.color_mask[3];
-  const bool decode = st.blend.enabled || (!kSrgb && !all_channels);
+  const bool all_channels = st.color_masks[o] == 0xF;
+  const bool decode = st.Blends(o) || (!kSrgb && !all_channels);
   F d[4] = {F{}, F{}, F{}, F{} + 1.0f};
   U word{};
   D dword{};
@@ -726,7 +729,7 @@ SOFTGL_WIDE void FloatLanesOf(const FragmentOpsState& st, const FragmentOpsPlan&
     }
     r[c] = x;
   }
-  if (st.blend.enabled) {
+  if (st.Blends(o)) {
     const glm::vec4 k = kFixed ? glm::clamp(st.blend.color, 0.0f, 1.0f) : st.blend.color;
     const F s[4] = {r[0], r[1], r[2], r[3]};
     BlendFloatLanes<W>(st.blend, k, s, d, r);
@@ -740,7 +743,7 @@ SOFTGL_WIDE void FloatLanesOf(const FragmentOpsState& st, const FragmentOpsPlan&
     return;
   }
   for (int c = 0; c < 4; ++c)
-    if (!st.color_mask[c]) r[c] = d[c];
+    if (!st.Writes(o, c)) r[c] = d[c];
   // A fixed-point channel: clamped to [0, 1] (NaN as 0), round(c * max) to nearest even.
   auto fixed = [](F x, float max) SOFTGL_WIDE_LAMBDA {
     x = x > 0.0f ? x : F{};
@@ -1631,7 +1634,7 @@ BlockOpsContext ContextOf(const FragmentOpsState& state, const FragmentOpsPlan& 
   ctx.shader_depth = shader_depth;
   ctx.stencil_test = state.stencil_test && target.stencil != nullptr;
   ctx.depth_test = state.depth_test && target.HasDepth();
-  ctx.any_color = state.color_mask[0] || state.color_mask[1] || state.color_mask[2] || state.color_mask[3];
+  ctx.any_color = state.WritesAny();
   ctx.face = blocks.front_facing ? &state.front : &state.back;
   ctx.blend = &plan.blend[0];
   ctx.depths = depths;

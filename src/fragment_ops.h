@@ -36,7 +36,6 @@ struct StencilFace {
 };
 
 struct BlendState {
-  bool enabled = false;
   Enum eq_rgb = FUNC_ADD, eq_alpha = FUNC_ADD;
   Enum src_rgb = ONE, dst_rgb = ZERO, src_alpha = ONE, dst_alpha = ZERO;
   glm::vec4 color{0.0f};  // BlendColor
@@ -80,11 +79,28 @@ struct FragmentOpsState {
   bool depth_test = false;
   Enum depth_func = LESS;
   bool depth_write = true;
-  BlendState blend;
-  bool color_mask[4] = {true, true, true, true};
+  BlendState blend;  // the equations, factors and constant colour, which every draw buffer that blends uses
+  // BLEND and ColorMask per draw buffer (Enable and ColorMask set every draw buffer's, Enablei and ColorMaski one):
+  // bit i of blend_buffers, bit c of color_masks[i].
+  std::uint8_t blend_buffers = 0;
+  std::uint8_t color_masks[kMaxColorOutputs] = {0xF, 0xF, 0xF, 0xF, 0xF, 0xF, 0xF, 0xF};
   MultisampleState multisample;
   bool operator==(const FragmentOpsState&) const = default;
+  /// Whether draw buffer o blends, and writes channel c.
+  bool Blends(int o) const { return (blend_buffers >> o) & 1u; }
+  bool Writes(int o, int c) const { return (color_masks[o] >> c) & 1u; }
+  /// Whether any draw buffer writes any channel.
+  bool WritesAny() const {
+    std::uint8_t any = 0;
+    for (std::uint8_t m : color_masks) any |= m;
+    return any != 0;
+  }
+  /// Draw buffer o's colour mask as four flags.
+  void Mask(int o, bool out[4]) const {
+    for (int c = 0; c < 4; ++c) out[c] = Writes(o, c);
+  }
 };
+static_assert(kMaxColorOutputs == 8, "FragmentOpsState's masks are written for 8 draw buffers");
 
 /// Whether `a` passes comparison `func` against `b` (a func b): the depth test compares incoming to stored, the
 /// stencil test the masked reference to the masked stored value. For vectors (src/wide.h), a lane mask. Always
@@ -140,7 +156,8 @@ struct Unorm8Blend {
   bool alpha_over = false;         // packed, FUNC_ADD, SRC_ALPHA and ONE_MINUS_SRC_ALPHA in all four channels
 
   Unorm8Blend() = default;
-  Unorm8Blend(const FragmentOpsState& state, bool rgb_only);
+  /// Draw buffer o's blending and colour mask (rgb_only: a buffer without alpha, whose alpha byte is kept).
+  Unorm8Blend(const FragmentOpsState& state, int o, bool rgb_only);
 };
 
 /// How a block's lanes are written into one colour buffer.

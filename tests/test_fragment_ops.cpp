@@ -217,7 +217,6 @@ TEST_CASE("every blend factor", "[fragment_ops][blend]") {
   for (const Row& r : rows) {
     INFO("factor 0x" << std::hex << r.factor);
     detail::BlendState b;
-    b.enabled = true;
     b.color = c;
     // As source factor with the destination factor ZERO: result = s * factor.
     b.src_rgb = b.src_alpha = r.factor;
@@ -237,7 +236,6 @@ TEST_CASE("every blend factor", "[fragment_ops][blend]") {
 TEST_CASE("every blend equation, separately for colour and alpha", "[fragment_ops][blend]") {
   const glm::vec4 s(0.8f, 0.2f, 0.5f, 0.6f), d(0.3f, 0.9f, 0.5f, 0.2f);
   detail::BlendState b;
-  b.enabled = true;
   b.src_rgb = b.src_alpha = SRC_ALPHA;          // 0.6
   b.dst_rgb = b.dst_alpha = ONE_MINUS_SRC_ALPHA;  // 0.4
   struct Row {
@@ -605,7 +603,7 @@ TEST_CASE("blending into 8-bit buffers is OpenGL's formula on the 8-bit operands
             // the swapped one.
             for (const bool same_pair : {false, true}) {
               detail::FragmentOpsState state;
-              state.blend.enabled = true;
+              state.blend_buffers = 0xFF;
               state.blend.src_rgb = src;
               state.blend.dst_rgb = dst;
               state.blend.src_alpha = same_pair ? src : dst;
@@ -613,7 +611,9 @@ TEST_CASE("blending into 8-bit buffers is OpenGL's formula on the 8-bit operands
               state.blend.eq_rgb = eq;
               state.blend.eq_alpha = same_equation ? eq : equations[(int(next()) % 5)];
               state.blend.color = glm::vec4(0.3f, 1.2f, -0.1f, 0.55f);
-              for (int c = 0; c < 4; ++c) state.color_mask[c] = (next() % 5) != 0;
+              std::uint8_t mask = 0;
+              for (int c = 0; c < 4; ++c) mask |= std::uint8_t(((next() % 5) != 0) << c);
+              for (std::uint8_t& m : state.color_masks) m = mask;
               for (auto& v : pixels) v = std::uint8_t(next());
               const std::vector<std::uint8_t> before = pixels;
               blocks->count = 4;
@@ -639,7 +639,7 @@ TEST_CASE("blending into 8-bit buffers is OpenGL's formula on the 8-bit operands
                   for (int c = 0; c < 4; ++c) s8[c] = FloatToUnorm8(blocks->out[b].color[0][c][l]);  // NaN reads 0
                   for (int c = 0; c < 4; ++c) {
                     const std::uint8_t want =
-                        state.color_mask[c] ? ReferenceBlend8(state.blend, c, s8, &before[i])
+                        state.Writes(0, c) ? ReferenceBlend8(state.blend, c, s8, &before[i])
                                             : before[i + std::size_t(c)];
                     if (pixels[i + std::size_t(c)] != want) {
                       INFO("src 0x" << std::hex << src << " dst 0x" << dst << " eq 0x" << eq << std::dec << " channel "
@@ -832,7 +832,10 @@ TEST_CASE("every colour format, draw buffer set and depth-stencil state: the blo
     for (auto& s : a.stencil) s = std::uint8_t(next());
 
     detail::FragmentOpsState state;
-    state.blend.enabled = next() % 4 != 0;
+    // BLEND and the colour mask per draw buffer: mostly all alike, a quarter of the rounds each its own.
+    const bool per_buffer = next() % 4 == 0;
+    state.blend_buffers = next() % 4 != 0 ? 0xFF : 0;
+    if (per_buffer) state.blend_buffers = std::uint8_t(next());
     state.blend.src_rgb = factors[next() % 15];
     state.blend.dst_rgb = factors[next() % 15];
     state.blend.src_alpha = factors[next() % 15];
@@ -840,7 +843,11 @@ TEST_CASE("every colour format, draw buffer set and depth-stencil state: the blo
     state.blend.eq_rgb = equations[next() % 5];
     state.blend.eq_alpha = equations[next() % 5];
     state.blend.color = glm::vec4(value(-0.2f, 1.2f), value(-0.2f, 1.2f), value(-0.2f, 1.2f), value(-0.2f, 1.2f));
-    for (int c = 0; c < 4; ++c) state.color_mask[c] = next() % 4 != 0;
+    for (int o = 0; o < kMaxColorOutputs; ++o) {
+      std::uint8_t mask = 0;
+      for (int c = 0; c < 4; ++c) mask |= std::uint8_t((next() % 4 != 0) << c);
+      state.color_masks[o] = o == 0 || per_buffer ? mask : state.color_masks[0];
+    }
     state.depth_test = next() % 2;
     state.depth_func = funcs[next() % 8];
     state.depth_write = next() % 4 != 0;
@@ -879,7 +886,7 @@ TEST_CASE("every colour format, draw buffer set and depth-stencil state: the blo
     detail::ApplyFragmentOpsReference(state, plan, *blocks, false, b.target);
     std::string names;
     for (const TargetFormat* f : formats) names += std::string(f ? f->name : "none") + " ";
-    INFO("round " << round << ": " << names << "blend " << state.blend.enabled);
+    INFO("round " << round << ": " << names << "blend 0x" << std::hex << int(state.blend_buffers) << std::dec);
     for (int o = 0; o < kMaxColorOutputs; ++o) {
       if (a.color[o] != b.color[o]) {
         std::size_t i = 0;

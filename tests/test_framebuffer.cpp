@@ -1129,6 +1129,109 @@ TEST_CASE("eight draw buffers of mixed formats, mapped in any order, each takes 
   }
 }
 
+TEST_CASE("ColorMaski and Enablei: each draw buffer its own colour mask and blending, in draws and clears",
+          "[framebuffer][formats]") {
+  // Four attachments (RGBA8, RGBA16F, RGBA32F, RGBA8) as draw buffers 0 to 3; every output (0.8, 0.6, 0.4, 0.5).
+  struct Four : softgl::Shader<Four, testing::NoVaryings> {
+    void Vertex(const VertexLanes& in, VertexLanesOut<testing::NoVaryings>& out) const { out.position = in.attrib[0]; }
+    void Fragment(const FragmentLanes<testing::NoVaryings>&, FragmentLanesOut& out) const {
+      for (int o = 0; o < 4; ++o) out.color[o] = vec4(Float(0.8f), Float(0.6f), Float(0.4f), Float(0.5f));
+    }
+  } shader;
+  const Enum formats[4] = {RGBA8, RGBA16F, RGBA32F, RGBA8};
+  for (int threads : {1, 3}) {
+    INFO(threads << " threads");
+    Context gl(1, 1, Context::Options{threads});
+    gl.BindFramebuffer(FRAMEBUFFER, gl.GenFramebuffer());
+    Enum bufs[4];
+    for (int a = 0; a < 4; ++a) {
+      const std::uint32_t rb = gl.GenRenderbuffer();
+      gl.BindRenderbuffer(RENDERBUFFER, rb);
+      gl.RenderbufferStorage(RENDERBUFFER, formats[a], 8, 8);
+      gl.FramebufferRenderbuffer(FRAMEBUFFER, COLOR_ATTACHMENT0 + Enum(a), RENDERBUFFER, rb);
+      bufs[a] = COLOR_ATTACHMENT0 + Enum(a);
+    }
+    gl.DrawBuffers(4, bufs);
+    gl.Viewport(0, 0, 8, 8);
+    gl.ClearColor(0.2f, 0.2f, 0.2f, 1.0f);
+    gl.Clear(COLOR_BUFFER_BIT);
+    // Clear through four masks: buffer 0 all, 1 red, 2 green and alpha, 3 nothing.
+    gl.ColorMaski(1, true, false, false, false);
+    gl.ColorMaski(2, false, true, false, true);
+    gl.ColorMaski(3, false, false, false, false);
+    gl.ClearColor(1.0f, 1.0f, 1.0f, 0.0f);
+    gl.Clear(COLOR_BUFFER_BIT);
+    const auto read = [&](int a) {
+      gl.ReadBuffer(COLOR_ATTACHMENT0 + Enum(a));
+      float px[4];
+      gl.ReadPixels(3, 3, 1, 1, RGBA, FLOAT, px);
+      return glm::vec4(px[0], px[1], px[2], px[3]);
+    };
+    const auto near = [](glm::vec4 a, glm::vec4 b) { return glm::all(glm::lessThan(glm::abs(a - b), glm::vec4(0.003f))); };
+    CHECK(near(read(0), glm::vec4(1, 1, 1, 0)));
+    CHECK(near(read(1), glm::vec4(1, 0.2f, 0.2f, 1)));
+    CHECK(near(read(2), glm::vec4(0.2f, 1, 0.2f, 0)));
+    CHECK(near(read(3), glm::vec4(0.2f, 0.2f, 0.2f, 1)));
+    // A draw: blending (SRC_ALPHA, ONE_MINUS_SRC_ALPHA) on for buffers 1 and 3 only; masks: 0 all, 1 red and green,
+    // 2 blue, 3 all.
+    gl.ColorMask(true, true, true, true);
+    gl.ColorMaski(1, true, true, false, false);
+    gl.ColorMaski(2, false, false, true, false);
+    gl.Enablei(BLEND, 1);
+    gl.Enablei(BLEND, 3);
+    gl.BlendFunc(SRC_ALPHA, ONE_MINUS_SRC_ALPHA);
+    CHECK(gl.IsEnabledi(BLEND, 3));
+    CHECK_FALSE(gl.IsEnabledi(BLEND, 2));
+    CHECK_FALSE(gl.IsEnabled(BLEND));  // (draw buffer 0's)
+    gl.UseProgram(shader);
+    testing::MakeVertexArray(gl, {{-1, -1, 0, 1}, {3, -1, 0, 1}, {-1, 3, 0, 1}});
+    gl.DrawArrays(TRIANGLES, 0, 3);
+    CHECK(gl.GetError() == NO_ERROR);
+    const glm::vec4 src(0.8f, 0.6f, 0.4f, 0.5f);
+    CHECK(near(read(0), src));                                                   // written whole, not blended
+    CHECK(near(read(1), glm::vec4(0.5f * 0.8f + 0.5f * 1.0f, 0.5f * 0.6f + 0.5f * 0.2f, 0.2f, 1)));  // blended, r g
+    CHECK(near(read(2), glm::vec4(0.2f, 1, 0.4f, 0)));                           // blue only, not blended
+    CHECK(near(read(3), glm::vec4(0.5f * 0.8f + 0.5f * 0.2f, 0.5f * 0.6f + 0.5f * 0.2f, 0.5f * 0.4f + 0.5f * 0.2f,
+                                  0.5f * 0.5f + 0.5f * 1.0f)));                  // blended, all channels
+    // ClearBuffer goes through its buffer's own mask.
+    const float value[4] = {0, 0, 0, 0};
+    gl.ClearBufferfv(COLOR, 2, value);
+    CHECK(near(read(2), glm::vec4(0.2f, 1, 0, 0)));
+    // Enable and ColorMask set every draw buffer's again.
+    gl.Enable(BLEND);
+    gl.ColorMask(false, true, false, true);
+    bool m[4] = {true, false, true, false};
+    gl.GetBooleani_v(COLOR_WRITEMASK, 2, m);
+    CHECK((!m[0] && m[1] && !m[2] && m[3]));
+    CHECK(gl.IsEnabledi(BLEND, 2));
+    gl.Disablei(BLEND, 0);
+    CHECK_FALSE(gl.IsEnabled(BLEND));
+    CHECK(gl.IsEnabledi(BLEND, 7));
+    CHECK(gl.GetError() == NO_ERROR);
+    // Errors.
+    gl.ColorMaski(std::uint32_t(kMaxColorOutputs), true, true, true, true);
+    CHECK(gl.GetError() == INVALID_VALUE);
+    gl.Enablei(BLEND, 8);
+    CHECK(gl.GetError() == INVALID_VALUE);
+    gl.Disablei(DEPTH_TEST, 0);
+    CHECK(gl.GetError() == INVALID_ENUM);
+    CHECK_FALSE(gl.IsEnabledi(SCISSOR_TEST, 0));
+    CHECK(gl.GetError() == INVALID_ENUM);
+    gl.GetBooleani_v(COLOR_WRITEMASK, 8, m);
+    CHECK(gl.GetError() == INVALID_VALUE);
+    gl.GetBooleani_v(COLOR_WRITEMASK, 0, nullptr);
+    CHECK(gl.GetError() == INVALID_VALUE);
+    int iv = 5;
+    gl.GetIntegeri_v(DEPTH_FUNC, 0, &iv);
+    CHECK(gl.GetError() == INVALID_ENUM);
+    std::int64_t lv = 0;
+    gl.GetInteger64i_v(SAMPLE_MASK_VALUE, 0, &lv);
+    CHECK(lv == -1);  // (all 32 bits, as a GLint)
+    gl.GetInteger64i_v(SAMPLE_MASK_VALUE, 1, &lv);
+    CHECK(gl.GetError() == INVALID_VALUE);
+  }
+}
+
 TEST_CASE("ClearBuffer clears one draw buffer, the depth or the stencil, through the masks and the scissor box",
           "[framebuffer][formats]") {
   // Three colour attachments of different formats, draw buffers 0, 1, 2 sent to attachments 2, NONE, 0, and a

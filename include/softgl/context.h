@@ -553,9 +553,15 @@ class Context {
   /// sample at its own position; disabled, a pixel's coverage at its centre goes to all its samples),
   /// SAMPLE_ALPHA_TO_COVERAGE, SAMPLE_ALPHA_TO_ONE, SAMPLE_COVERAGE, SAMPLE_MASK (see SampleCoverage,
   /// SampleMaski); otherwise INVALID_ENUM. All but MULTISAMPLE start disabled.
+  /// BLEND is kept per draw buffer: Enable and Disable set every draw buffer's, IsEnabled reads draw buffer 0's.
   void Enable(Enum cap);
   void Disable(Enum cap);
   bool IsEnabled(Enum cap);
+  /// glEnablei / glDisablei / glIsEnabledi: BLEND for draw buffer `index` alone (the blend equations and factors
+  /// are shared). Another cap: INVALID_ENUM; index >= MAX_DRAW_BUFFERS: INVALID_VALUE.
+  void Enablei(Enum cap, std::uint32_t index);
+  void Disablei(Enum cap, std::uint32_t index);
+  bool IsEnabledi(Enum cap, std::uint32_t index);
   /// The index value that, while PRIMITIVE_RESTART is enabled, ends the primitive sequence of an indexed draw
   /// (DrawElement and its variants) and starts a new one, as if the draw ended there and another began after it
   /// (default 0). It is compared with the index as read, before any base vertex is added. While
@@ -621,8 +627,11 @@ class Context {
   void BlendEquationSeparate(Enum mode_rgb, Enum mode_alpha);
   /// The constant colour of the CONSTANT_* factors (clamped to [0, 1] when used).
   void BlendColor(float r, float g, float b, float a);
-  /// Which colour channels drawing and Clear write (default all).
+  /// Which colour channels drawing and Clear write (default all), for every draw buffer.
   void ColorMask(bool r, bool g, bool b, bool a);
+  /// glColorMaski: the channels draw buffer `index` writes (index >= MAX_DRAW_BUFFERS: INVALID_VALUE). Clear and
+  /// ClearBuffer go through each buffer's own mask.
+  void ColorMaski(std::uint32_t index, bool r, bool g, bool b, bool a);
 
   // ---- Multisampling -----------------------------------------------------------------------------------------
   // Into a multisampled framebuffer with MULTISAMPLE enabled, the samples a fragment covers are narrowed after
@@ -795,6 +804,12 @@ class Context {
   void GetFloatv(Enum pname, float* data) const;
   void GetDoublev(Enum pname, double* data) const;
   void GetBooleanv(Enum pname, bool* data) const;
+  /// glGetBooleani_v / glGetIntegeri_v / glGetInteger64i_v: indexed state, BLEND (1 value) and COLOR_WRITEMASK (4)
+  /// of draw buffer `index`, SAMPLE_MASK_VALUE of mask word `index` (0 only). Another name: INVALID_ENUM; an index
+  /// past the last: INVALID_VALUE. (COLOR_WRITEMASK and BLEND through the plain Get calls: draw buffer 0's.)
+  void GetBooleani_v(Enum target, std::uint32_t index, bool* data) const;
+  void GetIntegeri_v(Enum target, std::uint32_t index, int* data) const;
+  void GetInteger64i_v(Enum target, std::uint32_t index, std::int64_t* data) const;
   /// VENDOR, RENDERER, VERSION ("3.3 softgl" and softgl's version) or SHADING_LANGUAGE_VERSION; another name:
   /// INVALID_ENUM and null.
   const char* GetString(Enum name) const;

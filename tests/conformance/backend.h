@@ -122,6 +122,14 @@ class Backend {
   virtual void FrontFace(Enum mode) = 0;
   virtual void PolygonMode(Enum mode) = 0;
   virtual void PointSize(float size) = 0;
+  /// glColorMaski, glEnablei and glDisablei.
+  virtual void ColorMaski(std::uint32_t index, bool r, bool g, bool b, bool a) = 0;
+  virtual void Enablei(Enum cap, std::uint32_t index) = 0;
+  virtual void Disablei(Enum cap, std::uint32_t index) = 0;
+  /// glGetBooleani_v and glGetIntegeri_v of `count` values, glIsEnabledi.
+  virtual std::vector<bool> GetBooleansI(Enum target, std::uint32_t index, int count) = 0;
+  virtual std::vector<std::int64_t> GetIntegersI(Enum target, std::uint32_t index, int count) = 0;
+  virtual bool IsEnabledi(Enum cap, std::uint32_t index) = 0;
   /// glPointParameteri.
   virtual void PointParameteri(Enum pname, int value) = 0;
   virtual void DepthFunc(Enum func) = 0;

@@ -229,6 +229,20 @@ class GlBackend final : public Backend {
   void PolygonMode(Enum mode) override { glPolygonMode(GL_FRONT_AND_BACK, mode); }
   void PointSize(float size) override { glPointSize(size); }
   void PointParameteri(Enum pname, int value) override { glPointParameteri(pname, value); }
+  void ColorMaski(std::uint32_t index, bool r, bool g, bool b, bool a) override { glColorMaski(index, r, g, b, a); }
+  void Enablei(Enum cap, std::uint32_t index) override { glEnablei(cap, index); }
+  void Disablei(Enum cap, std::uint32_t index) override { glDisablei(cap, index); }
+  std::vector<bool> GetBooleansI(Enum target, std::uint32_t index, int count) override {
+    GLboolean v[4] = {7, 7, 7, 7};
+    glGetBooleani_v(target, index, v);
+    return std::vector<bool>(v, v + count);
+  }
+  std::vector<std::int64_t> GetIntegersI(Enum target, std::uint32_t index, int count) override {
+    GLint v[4] = {-7, -7, -7, -7};
+    glGetIntegeri_v(target, index, v);
+    return std::vector<std::int64_t>(v, v + count);
+  }
+  bool IsEnabledi(Enum cap, std::uint32_t index) override { return glIsEnabledi(cap, index) == GL_TRUE; }
   void DepthFunc(Enum func) override { glDepthFunc(func); }
   void DepthMask(bool flag) override { glDepthMask(flag); }
   void PolygonOffset(float factor, float units) override { glPolygonOffset(factor, units); }

@@ -213,6 +213,20 @@ class SoftglBackend final : public Backend {
   void PolygonMode(Enum mode) override { gl_.PolygonMode(softgl::FRONT_AND_BACK, mode); }
   void PointSize(float size) override { gl_.PointSize(size); }
   void PointParameteri(Enum pname, int value) override { gl_.PointParameteri(pname, value); }
+  void ColorMaski(std::uint32_t index, bool r, bool g, bool b, bool a) override { gl_.ColorMaski(index, r, g, b, a); }
+  void Enablei(Enum cap, std::uint32_t index) override { gl_.Enablei(cap, index); }
+  void Disablei(Enum cap, std::uint32_t index) override { gl_.Disablei(cap, index); }
+  std::vector<bool> GetBooleansI(Enum target, std::uint32_t index, int count) override {
+    bool v[4] = {true, true, true, true};
+    gl_.GetBooleani_v(target, index, v);
+    return std::vector<bool>(v, v + count);
+  }
+  std::vector<std::int64_t> GetIntegersI(Enum target, std::uint32_t index, int count) override {
+    int v[4] = {-7, -7, -7, -7};
+    gl_.GetIntegeri_v(target, index, v);
+    return std::vector<std::int64_t>(v, v + count);
+  }
+  bool IsEnabledi(Enum cap, std::uint32_t index) override { return gl_.IsEnabledi(cap, index); }
   void DepthFunc(Enum func) override { gl_.DepthFunc(func); }
   void DepthMask(bool flag) override { gl_.DepthMask(flag); }
   void PolygonOffset(float factor, float units) override { gl_.PolygonOffset(factor, units); }

@@ -460,6 +460,22 @@ TEST_CASE("query results equal Mesa's", "[conformance]") {
   CHECK(want[6] == 22);
 }
 
+// `run` on Mesa and on softgl (size x size windows): its (value, error) pairs, step by step, equal.
+template <class Run>
+void CompareSteps(int size, Run&& run) {
+  std::string error;
+  auto mesa = MakeGlBackend(size, size, &error);
+  REQUIRE(mesa);
+  auto ours = MakeSoftglBackend(size, size);
+  const std::vector<std::int64_t> want = run(*mesa), got = run(*ours);
+  REQUIRE(got.size() == want.size());
+  for (std::size_t i = 0; i < want.size(); i += 2) {
+    INFO("step " << i / 2);
+    CHECK(got[i] == want[i]);
+    CHECK(got[i + 1] == want[i + 1]);
+  }
+}
+
 TEST_CASE("conditional rendering, fences and ClampColor: errors, state and reads as Mesa's", "[conformance]") {
   namespace gl = softgl;
   // Each step's error (and value, where it has one) in both; the fence's wait results are compared only where
@@ -551,17 +567,56 @@ TEST_CASE("conditional rendering, fences and ClampColor: errors, state and reads
     step(0);
     return out;
   };
-  std::string error;
-  auto mesa = MakeGlBackend(32, 32, &error);
-  REQUIRE(mesa);
-  auto ours = MakeSoftglBackend(32, 32);
-  const std::vector<std::int64_t> want = run(*mesa), got = run(*ours);
-  REQUIRE(got.size() == want.size());
-  for (std::size_t i = 0; i < want.size(); i += 2) {
-    INFO("step " << i / 2);
-    CHECK(got[i] == want[i]);
-    CHECK(got[i + 1] == want[i + 1]);
-  }
+  CompareSteps(32, run);
+}
+
+TEST_CASE("per-draw-buffer state (ColorMaski, Enablei) and the indexed queries as Mesa's", "[conformance]") {
+  namespace gl = softgl;
+  auto run = [](Backend& b) {
+    std::vector<std::int64_t> out;
+    auto step = [&](std::int64_t value) {
+      out.push_back(value);
+      out.push_back(b.GetError());
+    };
+    auto read = [&](std::uint32_t i) {
+      for (bool v : b.GetBooleansI(gl::COLOR_WRITEMASK, i, 4)) step(v);
+      step(b.IsEnabledi(gl::BLEND, i));
+      step(b.GetBooleansI(gl::BLEND, i, 1)[0]);
+      for (std::int64_t v : b.GetIntegersI(gl::COLOR_WRITEMASK, i, 4)) step(v);
+    };
+    for (std::uint32_t i : {0u, 3u, 7u}) read(i);
+    b.ColorMaski(3, true, false, true, false);
+    b.Enablei(gl::BLEND, 3);
+    b.Enablei(gl::BLEND, 7);
+    b.Disablei(gl::BLEND, 7);
+    for (std::uint32_t i : {0u, 3u, 7u}) read(i);
+    for (bool v : b.GetBooleans(gl::COLOR_WRITEMASK, 4)) step(v);  // draw buffer 0's
+    step(b.GetBooleans(gl::BLEND, 1)[0]);
+    b.Enable(gl::BLEND);  // every draw buffer's
+    b.ColorMask(false, true, false, true);
+    for (std::uint32_t i : {0u, 3u, 7u}) read(i);
+    b.ColorMaski(3, true, true, true, true);
+    b.Disablei(gl::BLEND, 0);
+    step(b.GetBooleans(gl::BLEND, 1)[0]);
+    for (bool v : b.GetBooleans(gl::COLOR_WRITEMASK, 4)) step(v);
+    step(b.GetIntegersI(gl::SAMPLE_MASK_VALUE, 0, 1)[0]);
+    // Errors: an index past the last draw buffer or mask word, a name with no indexed value, another capability.
+    b.ColorMaski(8, true, true, true, true);
+    step(0);
+    b.Enablei(gl::BLEND, 8);
+    step(0);
+    b.Enablei(gl::DEPTH_TEST, 0);
+    step(0);
+    step(b.IsEnabledi(gl::BLEND, 9));
+    (void)b.GetBooleansI(gl::COLOR_WRITEMASK, 8, 4);
+    step(0);
+    (void)b.GetIntegersI(gl::SAMPLE_MASK_VALUE, 1, 1);
+    step(0);
+    (void)b.GetIntegersI(gl::DEPTH_FUNC, 0, 1);
+    step(0);
+    return out;
+  };
+  CompareSteps(16, run);
 }
 
 int main(int argc, char** argv) {

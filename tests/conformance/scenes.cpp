@@ -918,6 +918,20 @@ void FloatTargets(Backend& b) {
 // overlapping gradient quads, depth-tested and blended by SRC_ALPHA / ONE_MINUS_SRC_ALPHA; then outputs 1 and 3
 // alone (with NONE between) add a triangle onto RGBA8 and RG8 (ONE, ONE). Each attachment is then blitted into
 // its quadrant of the context's framebuffer (ReadBuffer, NEAREST), which clamps and converts to 8 bits.
+// The 64 x 64 colour attachments att[0..3] of the bound framebuffer blitted into the window's quarters (0 bottom
+// left, 1 bottom right, 2 top left, 3 top right); then back to the window's framebuffer.
+void BlitQuarters(Backend& b, const Enum (&att)[4]) {
+  b.BindFramebuffer(DRAW_FRAMEBUFFER, 0);
+  b.Viewport(0, 0, kSize, kSize);
+  for (int k = 0; k < 4; ++k) {
+    const int x0 = (k % 2) * 64, y0 = (k / 2) * 64;
+    b.ReadBuffer(att[k]);
+    b.BlitFramebuffer(0, 0, 64, 64, x0, y0, x0 + 64, y0 + 64, COLOR_BUFFER_BIT, NEAREST);
+  }
+  b.ReadBuffer(att[0]);
+  b.BindFramebuffer(FRAMEBUFFER, 0);
+}
+
 void MultipleOutputs(Backend& b) {
   ClearBlack(b);
   const Enum att[4] = {COLOR_ATTACHMENT0, COLOR_ATTACHMENT0 + 1, COLOR_ATTACHMENT0 + 2, COLOR_ATTACHMENT0 + 3};
@@ -962,15 +976,57 @@ void MultipleOutputs(Backend& b) {
                      {w(30, 8, 0), {0.1f, 0.2f, 0.1f, 1}, {0.25f, 0.25f, 0.6f, 0.1f}}},
          Program::kOutputs);
   b.Disable(BLEND);
-  b.BindFramebuffer(DRAW_FRAMEBUFFER, 0);
-  b.Viewport(0, 0, kSize, kSize);
-  for (int k = 0; k < 4; ++k) {
-    const int x0 = (k % 2) * 64, y0 = (k / 2) * 64;
-    b.ReadBuffer(att[k]);
-    b.BlitFramebuffer(0, 0, 64, 64, x0, y0, x0 + 64, y0 + 64, COLOR_BUFFER_BIT, NEAREST);
+  BlitQuarters(b, att);
+}
+
+// Per-draw-buffer state: four colour textures of mixed formats, each with its own colour mask (ColorMaski) and
+// blending on or off (Enablei / Disablei); a Clear through the four masks, a ClearBuffer of one buffer, then
+// overlapping blended quads with four outputs. Each buffer blitted into a quarter of the window.
+void PerBufferState(Backend& b) {
+  ClearBlack(b);
+  const Enum att[4] = {COLOR_ATTACHMENT0, COLOR_ATTACHMENT0 + 1, COLOR_ATTACHMENT0 + 2, COLOR_ATTACHMENT0 + 3};
+  const Enum formats[4] = {RGBA8, RGBA16F, RGBA8, RG8};
+  const std::uint32_t fbo = b.GenFramebuffer();
+  b.BindFramebuffer(FRAMEBUFFER, fbo);
+  for (int k = 0; k < 4; ++k) b.AttachNewTexture(FRAMEBUFFER, att[k], formats[k], 64, 64);
+  if (b.CheckFramebufferStatus(FRAMEBUFFER) != FRAMEBUFFER_COMPLETE) return;  // left black: the check fails
+  b.Viewport(0, 0, 64, 64);
+  b.DrawBuffers(4, att);
+  b.ClearColor(0.2f, 0.35f, 0.4f, 1.0f);
+  b.Clear(COLOR_BUFFER_BIT);
+  b.ColorMaski(1, true, false, true, true);
+  b.ColorMaski(2, false, true, false, true);
+  b.ColorMaski(3, true, true, false, false);
+  b.ClearColor(0.9f, 0.8f, 0.1f, 0.45f);  // (no channel on a tie between two bytes: those may round either way)
+  b.Enable(SCISSOR_TEST);
+  b.Scissor(0, 0, 64, 20);
+  b.Clear(COLOR_BUFFER_BIT);  // each buffer through its own mask
+  b.Scissor(0, 20, 20, 44);
+  const float magenta[4] = {1.0f, 0.0f, 1.0f, 1.0f};
+  b.ClearBufferfv(COLOR, 2, magenta);  // through buffer 2's mask (green and alpha)
+  b.Disable(SCISSOR_TEST);
+  b.Enable(BLEND);
+  b.Disablei(BLEND, 1);
+  b.Disablei(BLEND, 3);
+  b.Enablei(BLEND, 3);
+  b.Disablei(BLEND, 0);
+  b.BlendFunc(SRC_ALPHA, ONE_MINUS_SRC_ALPHA);
+  auto w = [](float x, float y) { return Win(2 * x, 2 * y, 0.0f); };  // window point of the 64 x 64
+  for (int k = 0; k < 3; ++k) {
+    const float a = float(k) * 10.0f;
+    const Corners corner = {w(4 + a, 6 + a), w(40 + a, 8), w(38 + a, 56 - a), w(6, 50 + a * 0.5f)};
+    const Corners extra = {glm::vec4(0.1f, 0.9f, 0.7f, 0.3f), glm::vec4(0.8f, 0.2f, 0.05f, 0.9f),
+                           glm::vec4(0.6f, 0.6f, 0.7f, 0.0f), glm::vec4(0.0f, 0.35f, 0.4f, 1.0f)};
+    std::vector<Vertex> v = QuadWith(corner, extra);
+    const glm::vec4 colors[4] = {{0.9f, 0.2f, 0.1f, 0.6f}, {0.1f, 0.8f, 0.3f, 0.5f}, {0.3f, 0.4f, 1.0f, 0.4f},
+                                 {1.0f, 1.0f, 0.2f, 0.75f}};
+    const int order[6] = {0, 1, 3, 1, 2, 3};
+    for (int i = 0; i < 6; ++i) v[std::size_t(i)].color = colors[(order[i] + k) % 4];
+    b.Draw(TRIANGLES, v, Program::kOutputs);
   }
-  b.ReadBuffer(att[0]);
-  b.BindFramebuffer(FRAMEBUFFER, 0);
+  b.Disable(BLEND);
+  b.ColorMask(true, true, true, true);
+  BlitQuarters(b, att);
 }
 
 // 16-bit normalized render targets: the same drawing into RGBA16, RG16, R16 and RGBA16, values clamped to [0, 1]
@@ -1751,6 +1807,7 @@ const std::vector<SceneInfo>& Scenes() {
       {"float_targets", kSize, kSize, Check::kColor, FloatTargets},
       {"unorm16_targets", kSize, kSize, Check::kColor, Unorm16Targets},
       {"multiple_outputs", kSize, kSize, Check::kColor, MultipleOutputs},
+      {"per_buffer_state", kSize, kSize, Check::kColor, PerBufferState},
       {"texture_16bit", kSize, kSize, Check::kTexture, Texture16Bit},
       {"packed16_targets", kSize, kSize, Check::kStep4, Packed16Targets},
       {"packed16_blending", kSize, kSize, Check::kStep4, Packed16Blending},

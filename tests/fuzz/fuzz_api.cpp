@@ -341,7 +341,31 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       case 30: gl.StencilFuncSeparate(in.Enum(kFaces), in.Enum(kFuncs), in.Int(-300, 300), in.Get<std::uint32_t>()); break;
       case 31: gl.StencilOpSeparate(in.Enum(kFaces), in.Enum(kOps), in.Enum(kOps), in.Enum(kOps)); break;
       case 32: gl.BlendFuncSeparate(in.Enum(kFactors), in.Enum(kFactors), in.Enum(kFactors), in.Enum(kFactors)); break;
-      case 33: gl.BlendEquationSeparate(in.Enum(kEquations), in.Enum(kEquations)); break;
+      case 33:
+        if (in.Byte() % 2) {
+          gl.BlendEquationSeparate(in.Enum(kEquations), in.Enum(kEquations));
+        } else {  // per-draw-buffer state and the indexed queries: any index (past the last too), other names
+          const std::uint32_t index = std::uint32_t(in.Int(-1, kMaxColorOutputs + 1));
+          const std::uint32_t cap = in.Byte() % 4 ? BLEND : DEPTH_TEST;
+          bool bv[4];
+          int iv[4];
+          std::int64_t lv[4];
+          switch (in.Byte() % 5) {
+            case 0: gl.ColorMaski(index, in.Byte() % 2, in.Byte() % 2, in.Byte() % 2, in.Byte() % 2); break;
+            case 1: gl.Enablei(cap, index); break;
+            case 2: gl.Disablei(cap, index); break;
+            case 3: (void)gl.IsEnabledi(cap, index); break;
+            default: {
+              constexpr std::uint32_t kIndexed[] = {BLEND, COLOR_WRITEMASK, SAMPLE_MASK_VALUE, DEPTH_FUNC};
+              const std::uint32_t target = in.Enum(kIndexed);
+              gl.GetBooleani_v(target, index, in.Byte() % 8 ? bv : nullptr);
+              gl.GetIntegeri_v(target, index, iv);
+              gl.GetInteger64i_v(target, index, lv);
+              break;
+            }
+          }
+        }
+        break;
       case 34: gl.PolygonMode(FRONT_AND_BACK, in.Enum(kPolygonModes)); break;
       case 35: gl.PolygonOffset(in.Float(), in.Float()); break;
       case 36: {
