@@ -65,6 +65,9 @@ glm::vec4 Factor(Enum f, const glm::vec4& s, const glm::vec4& d, const glm::vec4
   }
 }
 
+// The NaN every blend that makes one gives (positive, quiet).
+constexpr float kBlendNaN = __builtin_nanf("");
+
 float Equation(Enum eq, float s, float sf, float d, float df) {
   switch (eq) {
     case FUNC_SUBTRACT: return s * sf - d * df;
@@ -84,6 +87,11 @@ glm::vec4 Blend(const BlendState& state, const glm::vec4& src, const glm::vec4& 
   glm::vec4 out;
   for (int i = 0; i < 3; ++i) out[i] = Equation(state.eq_rgb, src[i], sf_rgb[i], dst[i], df_rgb[i]);
   out.a = Equation(state.eq_alpha, src.a, sf_a, dst.a, df_a);
+  // A NaN result (a NaN or infinite stored value, or a colour out of a float buffer) is one NaN: which of two NaN
+  // operands an operation returns depends on their order, which a compiler may swap (a * b as b * a), so the
+  // vector and the lane-by-lane paths would store NaNs of different signs.
+  for (int i = 0; i < 4; ++i)
+    if (out[i] != out[i]) out[i] = kBlendNaN;
   return out;
 }
 
@@ -602,6 +610,7 @@ SOFTGL_WIDE void BlendFloatLanes(const BlendState& st, const glm::vec4& k, const
                                                : s[c] * sf + d[c] * df;
       }
     }
+    out[c] = out[c] == out[c] ? out[c] : F{} + kBlendNaN;  // (as Blend: one NaN whatever the operands' order)
   }
 }
 

@@ -130,7 +130,8 @@ bool StencilTest(const StencilFace& face, std::uint8_t stored);
 /// `stored`, written through the face's write mask.
 std::uint8_t StencilUpdate(const StencilFace& face, Enum op, std::uint8_t stored);
 
-/// Blends source colour `src` over destination `dst` in float: OpenGL's factors and equations (float buffers).
+/// Blends source colour `src` over destination `dst` in float: OpenGL's factors and equations (float buffers). A
+/// NaN result is always the positive quiet NaN.
 glm::vec4 Blend(const BlendState& state, const glm::vec4& src, const glm::vec4& dst);
 
 /// Blends into an 8-bit RGBA pixel: `src` is the fragment colour (converted to 8 bits here, NaN as 0), `dst` the
