@@ -460,6 +460,14 @@ TEST_CASE("query results equal Mesa's", "[conformance]") {
   CHECK(want[6] == 22);
 }
 
+// Records a step of a state comparison: the value (0 where the call has none) and the error after it.
+auto Recorder(Backend& b, std::vector<std::int64_t>& out) {
+  return [&b, &out](std::int64_t value) {
+    out.push_back(value);
+    out.push_back(b.GetError());
+  };
+}
+
 // `run` on Mesa and on softgl (size x size windows): its (value, error) pairs, step by step, equal.
 template <class Run>
 void CompareSteps(int size, Run&& run) {
@@ -482,10 +490,7 @@ TEST_CASE("conditional rendering, fences and ClampColor: errors, state and reads
   // they do not depend on how fast the work runs.
   auto run = [](Backend& b) {
     std::vector<std::int64_t> out;
-    auto step = [&](std::int64_t value) {
-      out.push_back(value);
-      out.push_back(b.GetError());
-    };
+    const auto step = Recorder(b, out);
     step(b.GetIntegers(gl::CLAMP_READ_COLOR, 1)[0]);
     b.ClampColor(gl::CLAMP_READ_COLOR, 2);
     step(0);
@@ -574,10 +579,7 @@ TEST_CASE("per-draw-buffer state (ColorMaski, Enablei) and the indexed queries a
   namespace gl = softgl;
   auto run = [](Backend& b) {
     std::vector<std::int64_t> out;
-    auto step = [&](std::int64_t value) {
-      out.push_back(value);
-      out.push_back(b.GetError());
-    };
+    const auto step = Recorder(b, out);
     auto read = [&](std::uint32_t i) {
       for (bool v : b.GetBooleansI(gl::COLOR_WRITEMASK, i, 4)) step(v);
       step(b.IsEnabledi(gl::BLEND, i));

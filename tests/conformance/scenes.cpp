@@ -918,6 +918,24 @@ void FloatTargets(Backend& b) {
 // overlapping gradient quads, depth-tested and blended by SRC_ALPHA / ONE_MINUS_SRC_ALPHA; then outputs 1 and 3
 // alone (with NONE between) add a triangle onto RGBA8 and RG8 (ONE, ONE). Each attachment is then blitted into
 // its quadrant of the context's framebuffer (ReadBuffer, NEAREST), which clamps and converts to 8 bits.
+// Three overlapping quads in the 64 x 64 framebuffer, with kOutputs' four outputs: colours cycling over the
+// corners, depths alternating per corner (a depth test sorts them), extras giving outputs 1 and 3 gradients.
+void OutputQuads(Backend& b) {
+  auto w = [](float x, float y, float z) { return Win(2 * x, 2 * y, z); };  // window point of the 64 x 64
+  for (int k = 0; k < 3; ++k) {
+    const float a = float(k) * 9.0f, z = 0.5f - 0.4f * float(k);
+    const Corners corner = {w(2 + a, 3 + a, z), w(44 + a, 5, -z), w(40 + a, 58 - a, z), w(4, 52 + a * 0.5f, -z)};
+    const Corners extra = {glm::vec4(0.1f, 0.9f, 1.2f, 0.3f), glm::vec4(0.8f, 0.2f, 0.05f, 0.9f),
+                           glm::vec4(0.6f, 0.6f, 0.7f, 0.0f), glm::vec4(0.0f, 0.35f, 0.4f, 1.0f)};
+    std::vector<Vertex> v = QuadWith(corner, extra);
+    const glm::vec4 colors[4] = {{0.9f, 0.2f, 0.1f, 0.6f}, {0.1f, 0.8f, 0.3f, 0.9f}, {0.3f, 0.4f, 1.0f, 0.4f},
+                                 {1.0f, 1.0f, 0.2f, 0.75f}};
+    const int order[6] = {0, 1, 3, 1, 2, 3};
+    for (int i = 0; i < 6; ++i) v[std::size_t(i)].color = colors[(order[i] + k) % 4];
+    b.Draw(TRIANGLES, v, Program::kOutputs);
+  }
+}
+
 // The 64 x 64 colour attachments att[0..3] of the bound framebuffer blitted into the window's quarters (0 bottom
 // left, 1 bottom right, 2 top left, 3 top right); then back to the window's framebuffer.
 void BlitQuarters(Backend& b, const Enum (&att)[4]) {
@@ -954,20 +972,9 @@ void MultipleOutputs(Backend& b) {
   b.Enable(DEPTH_TEST);
   b.Enable(BLEND);
   b.BlendFunc(SRC_ALPHA, ONE_MINUS_SRC_ALPHA);
-  auto w = [](float x, float y, float z) { return Win(2 * x, 2 * y, z); };  // window point of the 64 x 64
-  for (int k = 0; k < 3; ++k) {
-    const float a = float(k) * 9.0f, z = 0.5f - 0.4f * float(k);
-    const Corners corner = {w(2 + a, 3 + a, z), w(44 + a, 5, -z), w(40 + a, 58 - a, z), w(4, 52 + a * 0.5f, -z)};
-    const Corners extra = {glm::vec4(0.1f, 0.9f, 1.2f, 0.3f), glm::vec4(0.8f, 0.2f, 0.05f, 0.9f),
-                           glm::vec4(0.6f, 0.6f, 0.7f, 0.0f), glm::vec4(0.0f, 0.35f, 0.4f, 1.0f)};
-    std::vector<Vertex> v = QuadWith(corner, extra);
-    const glm::vec4 colors[4] = {{0.9f, 0.2f, 0.1f, 0.6f}, {0.1f, 0.8f, 0.3f, 0.9f}, {0.3f, 0.4f, 1.0f, 0.4f},
-                                 {1.0f, 1.0f, 0.2f, 0.75f}};
-    const int order[6] = {0, 1, 3, 1, 2, 3};
-    for (int i = 0; i < 6; ++i) v[std::size_t(i)].color = colors[(order[i] + k) % 4];
-    b.Draw(TRIANGLES, v, Program::kOutputs);
-  }
+  OutputQuads(b);
   b.Disable(DEPTH_TEST);
+  auto w = [](float x, float y, float z) { return Win(2 * x, 2 * y, z); };  // window point of the 64 x 64
   const Enum some[4] = {NONE, att[0], NONE, att[2]};
   b.DrawBuffers(4, some);
   b.BlendFunc(ONE, ONE);
@@ -1011,19 +1018,7 @@ void PerBufferState(Backend& b) {
   b.Enablei(BLEND, 3);
   b.Disablei(BLEND, 0);
   b.BlendFunc(SRC_ALPHA, ONE_MINUS_SRC_ALPHA);
-  auto w = [](float x, float y) { return Win(2 * x, 2 * y, 0.0f); };  // window point of the 64 x 64
-  for (int k = 0; k < 3; ++k) {
-    const float a = float(k) * 10.0f;
-    const Corners corner = {w(4 + a, 6 + a), w(40 + a, 8), w(38 + a, 56 - a), w(6, 50 + a * 0.5f)};
-    const Corners extra = {glm::vec4(0.1f, 0.9f, 0.7f, 0.3f), glm::vec4(0.8f, 0.2f, 0.05f, 0.9f),
-                           glm::vec4(0.6f, 0.6f, 0.7f, 0.0f), glm::vec4(0.0f, 0.35f, 0.4f, 1.0f)};
-    std::vector<Vertex> v = QuadWith(corner, extra);
-    const glm::vec4 colors[4] = {{0.9f, 0.2f, 0.1f, 0.6f}, {0.1f, 0.8f, 0.3f, 0.5f}, {0.3f, 0.4f, 1.0f, 0.4f},
-                                 {1.0f, 1.0f, 0.2f, 0.75f}};
-    const int order[6] = {0, 1, 3, 1, 2, 3};
-    for (int i = 0; i < 6; ++i) v[std::size_t(i)].color = colors[(order[i] + k) % 4];
-    b.Draw(TRIANGLES, v, Program::kOutputs);
-  }
+  OutputQuads(b);
   b.Disable(BLEND);
   b.ColorMask(true, true, true, true);
   BlitQuarters(b, att);
