@@ -105,10 +105,14 @@ Enum Context::GetError() {
 void Context::UseProgram(const Program& program) {
   if (program.VaryingFloats() < 0 || program.VaryingFloats() > kMaxVaryingFloats)
     return state_->SetError(INVALID_VALUE, __func__, "a numeric argument is out of range");
+  if (state_->feedback->Recording()) return state_->SetError(INVALID_OPERATION, __func__, "transform feedback is active (and not paused)");
   state_->program = &program;
 }
 
-void Context::UseProgram(std::nullptr_t) { state_->program = nullptr; }
+void Context::UseProgram(std::nullptr_t) {
+  if (state_->feedback->Recording()) return state_->SetError(INVALID_OPERATION, __func__, "transform feedback is active (and not paused)");
+  state_->program = nullptr;
+}
 
 void Context::Viewport(int x, int y, int width, int height) {
   auto& s = *state_;
@@ -144,6 +148,7 @@ bool* CapFlag(ContextState& s, Enum cap) {
     case SAMPLE_COVERAGE: return &s.ops.multisample.sample_coverage;
     case SAMPLE_MASK: return &s.ops.multisample.sample_mask;
     case SAMPLE_SHADING: return &s.ops.multisample.sample_shading;
+    case RASTERIZER_DISCARD: return &s.rasterizer_discard;
     default: return nullptr;
   }
 }
@@ -452,10 +457,11 @@ void Context::Clear(Bitfield mask) {
 
 namespace {
 
-// The rest of every clear call: records `clear` (nothing when it clears nothing).
+// The rest of every clear call: records `clear` (nothing when it clears nothing, under conditional rendering
+// that discards, or with RASTERIZER_DISCARD enabled: OpenGL 4.6, section 14.1).
 void RecordClear(ContextState& s, const detail::RenderTarget& target, const detail::ClearPacket& clear,
                  const char* what) {
-  if ((!clear.color && !clear.depth && !clear.stencil) || s.condition_discards) return;
+  if ((!clear.color && !clear.depth && !clear.stencil) || s.condition_discards || s.rasterizer_discard) return;
   if (!s.frame.Accepts(target)) s.Sync(what);
   try {
     s.frame.AddClear(target, clear);

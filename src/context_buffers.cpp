@@ -33,6 +33,9 @@ void Context::DeleteBuffer(std::uint32_t buffer) {
   if (s.array_buffer.get() == dead) s.array_buffer.reset();
   if (s.copy_read_buffer.get() == dead) s.copy_read_buffer.reset();
   if (s.copy_write_buffer.get() == dead) s.copy_write_buffer.reset();
+  if (s.feedback_buffer.get() == dead) s.feedback_buffer.reset();
+  for (FeedbackBinding& b : s.feedback->binding)  // the bound transform feedback object's (as the vertex array's)
+    if (b.buffer.get() == dead) b = FeedbackBinding{};
   if (s.vao) {  // only the bound vertex array forgets it (OpenGL 4.6, section 5.1.2)
     if (s.vao->element_buffer.get() == dead) s.vao->element_buffer.reset();
     for (auto& a : s.vao->attrib)
@@ -45,9 +48,7 @@ bool Context::IsBuffer(std::uint32_t buffer) const { return state_->buffers.coun
 
 void Context::BindBuffer(Enum target, std::uint32_t buffer) {
   auto& s = *state_;
-  if (target != ARRAY_BUFFER && target != ELEMENT_ARRAY_BUFFER && target != COPY_READ_BUFFER &&
-      target != COPY_WRITE_BUFFER)
-    return s.SetError(INVALID_ENUM, __func__, "target must be ARRAY_BUFFER, ELEMENT_ARRAY_BUFFER, COPY_READ_BUFFER or COPY_WRITE_BUFFER");
+  if (!ContextState::IsBufferTarget(target)) return s.SetError(INVALID_ENUM, __func__, ContextState::kBufferTargets);
   std::shared_ptr<Buffer> object;
   if (buffer != 0) {
     auto it = s.buffers.find(buffer);
@@ -61,9 +62,7 @@ void Context::BindBuffer(Enum target, std::uint32_t buffer) {
 
 void Context::BufferData(Enum target, std::ptrdiff_t size, const void* data, Enum usage) {
   auto& s = *state_;
-  if (target != ARRAY_BUFFER && target != ELEMENT_ARRAY_BUFFER && target != COPY_READ_BUFFER &&
-      target != COPY_WRITE_BUFFER)
-    return s.SetError(INVALID_ENUM, __func__, "target must be ARRAY_BUFFER, ELEMENT_ARRAY_BUFFER, COPY_READ_BUFFER or COPY_WRITE_BUFFER");
+  if (!ContextState::IsBufferTarget(target)) return s.SetError(INVALID_ENUM, __func__, ContextState::kBufferTargets);
   if (!IsUsage(usage)) return s.SetError(INVALID_ENUM, __func__, "not a buffer usage");
   if (size < 0) return s.SetError(INVALID_VALUE, __func__, "size is negative");
   Buffer* buffer = s.BoundBuffer(__func__, target);

@@ -70,6 +70,20 @@ void ContextState::Draw(const detail::DrawCall& call) {
   ds.samples = target.samples > 1 && ops.multisample.multisample ? target.samples : 1;
   ds.depth16 = target.depth16 != nullptr;
   if (active_query[2]) ds.primitives_generated = &queries.at(active_query[2])->count;
+  ds.discard = rasterizer_discard;
+  // Transform feedback: each buffer's store from its write position on (a store replaced since may have shrunk).
+  detail::FeedbackCapture capture;
+  TransformFeedbackObject& xfb = *feedback;
+  if (xfb.Recording()) {
+    capture.layout = xfb.layout.get();
+    for (int b = 0; b < capture.layout->Buffers(); ++b) {
+      const FeedbackBinding& binding = xfb.binding[b];
+      const std::size_t room = binding.Room();
+      capture.room[b] = room > xfb.written[b] ? room - xfb.written[b] : 0;
+      capture.data[b] = capture.room[b] ? binding.buffer->data.data() + binding.offset + xfb.written[b] : nullptr;
+    }
+    ds.feedback = &capture;
+  }
   packet.bounds = ds.bounds;
   if (!frame.Accepts(target)) Sync(__func__);
   try {
@@ -89,6 +103,11 @@ void ContextState::Draw(const detail::DrawCall& call) {
   } catch (const std::length_error&) {
     frame.Reset();
     SetError(OUT_OF_MEMORY, __func__, "out of memory (recorded draws not yet rendered are dropped)");
+  }
+  if (ds.feedback) {
+    for (int b = 0; b < capture.layout->Buffers(); ++b) xfb.written[b] += capture.written[b];
+    xfb.vertices += capture.vertices;
+    if (active_query[4]) queries.at(active_query[4])->count += capture.primitives;
   }
   // A shader that cannot be copied is used as it is: render before the caller can change it.
   const bool copied = packet.snapshot != nullptr;
@@ -111,12 +130,23 @@ bool CheckNotMapped(ContextState& s, const char* what, bool elements) {
   return true;
 }
 
+// While transform feedback records (OpenGL 4.6, section 13.3): a draw mode of another kind than
+// BeginTransformFeedback's, or a buffer being recorded into mapped, is INVALID_OPERATION. False with the error set.
+bool CheckFeedback(ContextState& s, const char* what, Enum mode) {
+  const TransformFeedbackObject& t = *s.feedback;
+  if (!t.Recording()) return true;
+  if (detail::VerticesPerPrimitive(mode) != detail::VerticesPerPrimitive(t.mode)) return s.SetError(INVALID_OPERATION, what, "the draw's mode is not of the kind BeginTransformFeedback was given"), false;
+  for (int b = 0; b < t.layout->Buffers(); ++b)
+    if (t.binding[b].buffer && t.binding[b].buffer->mapped) return s.SetError(INVALID_OPERATION, what, "a buffer transform feedback records into is mapped"), false;
+  return true;
+}
+
 void DrawArraysChecked(ContextState& s, const char* what, Enum mode, int first, int count, int instances) {
   if (detail::VerticesPerPrimitive(mode) == 0) return s.SetError(INVALID_ENUM, what, "mode is not a primitive mode");
   if (first < 0 || count < 0) return s.SetError(INVALID_VALUE, what, "first or count is negative");
   if (instances < 0) return s.SetError(INVALID_VALUE, what, "instancecount is negative");
   if (s.vao == nullptr || s.program == nullptr) return s.SetError(INVALID_OPERATION, what, "needs a bound vertex array and a shader (UseProgram)");
-  if (!CheckNotMapped(s, what, false)) return;
+  if (!CheckNotMapped(s, what, false) || !CheckFeedback(s, what, mode)) return;
   if (instances == 0) return;
   detail::DrawCall call;
   call.mode = mode;
@@ -143,9 +173,9 @@ bool CheckElements(ContextState& s, const char* what, Enum mode, Enum type) {
   if (type != UNSIGNED_BYTE && type != UNSIGNED_SHORT && type != UNSIGNED_INT) return s.SetError(INVALID_ENUM, what, "index type must be UNSIGNED_BYTE, UNSIGNED_SHORT or UNSIGNED_INT"), false;
   return true;
 }
-bool CheckElementsBound(ContextState& s, const char* what) {
+bool CheckElementsBound(ContextState& s, const char* what, Enum mode) {
   if (s.vao == nullptr || s.program == nullptr || !s.vao->element_buffer) return s.SetError(INVALID_OPERATION, what, "needs a bound vertex array with an element buffer, and a shader (UseProgram)"), false;
-  return CheckNotMapped(s, what, true);
+  return CheckNotMapped(s, what, true) && CheckFeedback(s, what, mode);
 }
 bool CheckElementRange(ContextState& s, const char* what, int count, Enum type, std::size_t offset) {
   const auto& store = s.vao->element_buffer->data;
@@ -214,7 +244,7 @@ void DrawElementsChecked(ContextState& s, const char* what, Enum mode, int count
   if (!CheckElements(s, what, mode, type)) return;
   if (count < 0) return s.SetError(INVALID_VALUE, what, "count is negative");
   if (instances < 0) return s.SetError(INVALID_VALUE, what, "instancecount is negative");
-  if (!CheckElementsBound(s, what) || !CheckElementRange(s, what, count, type, offset)) return;
+  if (!CheckElementsBound(s, what, mode) || !CheckElementRange(s, what, count, type, offset)) return;
   DrawIndexed(s, what, mode, count, type, offset, basevertex, instances);
 }
 
@@ -244,7 +274,7 @@ void DrawRangeChecked(ContextState& s, const char* what, Enum mode, std::uint32_
   if (!CheckElements(s, what, mode, type)) return;
   if (count < 0) return s.SetError(INVALID_VALUE, what, "count is negative");
   if (end < start) return s.SetError(INVALID_VALUE, what, "end is less than start");
-  if (!CheckElementsBound(s, what) || !CheckElementRange(s, what, count, type, offset)) return;
+  if (!CheckElementsBound(s, what, mode) || !CheckElementRange(s, what, count, type, offset)) return;
   DrawIndexed(s, what, mode, count, type, offset, basevertex);
 }
 
@@ -256,7 +286,7 @@ void MultiDrawChecked(ContextState& s, const char* what, Enum mode, const int* c
   if (drawcount > 0 && (count == nullptr || offsets == nullptr)) return s.SetError(INVALID_VALUE, what, "count or offsets is null");
   for (int i = 0; i < drawcount; ++i)
     if (count[i] < 0) return s.SetError(INVALID_VALUE, what, "a count is negative");
-  if (!CheckElementsBound(s, what)) return;
+  if (!CheckElementsBound(s, what, mode)) return;
   for (int i = 0; i < drawcount; ++i)
     if (!CheckElementRange(s, what, count[i], type, offsets[i])) return;
   for (int i = 0; i < drawcount; ++i) DrawIndexed(s, what, mode, count[i], type, offsets[i], basevertex ? basevertex[i] : 0);
@@ -282,8 +312,18 @@ void Context::MultiDrawArrays(Enum mode, const int* first, const int* count, int
   for (int i = 0; i < drawcount; ++i)
     if (first[i] < 0 || count[i] < 0) return s.SetError(INVALID_VALUE, __func__, "a first or count is negative");
   if (s.vao == nullptr || s.program == nullptr) return s.SetError(INVALID_OPERATION, __func__, "needs a bound vertex array and a shader (UseProgram)");
-  if (!CheckNotMapped(s, __func__, false)) return;
+  if (!CheckNotMapped(s, __func__, false) || !CheckFeedback(s, __func__, mode)) return;
   for (int i = 0; i < drawcount; ++i) DrawArrays(mode, first[i], count[i]);
+}
+
+void Context::DrawTransformFeedback(Enum mode, std::uint32_t id) {
+  auto& s = *state_;
+  const TransformFeedbackObject* t = id == 0 ? &s.default_feedback : nullptr;
+  if (auto it = s.feedbacks.find(id); id != 0 && it != s.feedbacks.end() && it->second->bound) t = it->second.get();
+  if (detail::VerticesPerPrimitive(mode) == 0) return s.SetError(INVALID_ENUM, __func__, "mode is not a primitive mode");
+  if (t == nullptr) return s.SetError(INVALID_VALUE, __func__, "not a transform feedback object (made by GenTransformFeedback and bound since, not deleted)");
+  if (!t->ended) return s.SetError(INVALID_OPERATION, __func__, "EndTransformFeedback has never been called on the object");
+  DrawArraysChecked(s, __func__, mode, 0, int(std::min<std::uint64_t>(t->drawable, INT32_MAX)), 1);
 }
 
 void Context::MultiDrawElements(Enum mode, const int* count, Enum type, const std::size_t* offsets, int drawcount) {

@@ -45,6 +45,14 @@ bool QueryState(ContextState& s, Enum pname, StateValue& out) {
     case ELEMENT_ARRAY_BUFFER_BINDING: return integer(s.vao ? IdOf(s.buffers, s.vao->element_buffer.get()) : 0);
     case COPY_READ_BUFFER_BINDING: return integer(IdOf(s.buffers, s.copy_read_buffer.get()));
     case COPY_WRITE_BUFFER_BINDING: return integer(IdOf(s.buffers, s.copy_write_buffer.get()));
+    case TRANSFORM_FEEDBACK_BUFFER_BINDING: return integer(IdOf(s.buffers, s.feedback_buffer.get()));
+    case TRANSFORM_FEEDBACK_BINDING: return integer(s.feedback_id);
+    case TRANSFORM_FEEDBACK_BUFFER_ACTIVE: return boolean(s.feedback->active);
+    case TRANSFORM_FEEDBACK_BUFFER_PAUSED: return boolean(s.feedback->paused);
+    case MAX_TRANSFORM_FEEDBACK_INTERLEAVED_COMPONENTS: return integer(kMaxFeedbackComponents);
+    case MAX_TRANSFORM_FEEDBACK_SEPARATE_ATTRIBS:
+    case MAX_TRANSFORM_FEEDBACK_BUFFERS: return integer(kMaxFeedbackBuffers);
+    case MAX_TRANSFORM_FEEDBACK_SEPARATE_COMPONENTS: return integer(kMaxFeedbackSeparateComponents);
     case VERTEX_ARRAY_BINDING: return integer(s.vao_id);
     case ACTIVE_TEXTURE: return integer(TEXTURE0 + Enum(s.active_unit));
     case TIMESTAMP: return integer(std::int64_t(TimestampNs()));
@@ -168,15 +176,26 @@ bool QueryState(ContextState& s, Enum pname, StateValue& out) {
 }
 
 // The indexed state `pname` at `index` (GetBooleani_v and its kin): BLEND and COLOR_WRITEMASK of draw buffer
-// index, SAMPLE_MASK_VALUE of mask word index (one word). False with the error set: INVALID_ENUM for another
-// name, INVALID_VALUE for an index past the name's last.
+// index, SAMPLE_MASK_VALUE of mask word index (one word), TRANSFORM_FEEDBACK_BUFFER_BINDING, _START and _SIZE of
+// the bound transform feedback object's binding index. False with the error set: INVALID_ENUM for another name,
+// INVALID_VALUE for an index past the name's last.
 bool QueryIndexed(ContextState& s, const char* what, Enum pname, std::uint32_t index, StateValue& out) {
   using Kind = StateValue::Kind;
-  const std::uint32_t count = pname == SAMPLE_MASK_VALUE ? 1u : std::uint32_t(kMaxColorOutputs);
-  if (pname != BLEND && pname != COLOR_WRITEMASK && pname != SAMPLE_MASK_VALUE) return s.SetError(INVALID_ENUM, what, "target must be BLEND, COLOR_WRITEMASK or SAMPLE_MASK_VALUE (the indexed state softgl keeps)"), false;
-  if (index >= count) return s.SetError(INVALID_VALUE, what, "index is past the last of the state's values (a draw buffer, or mask word 0)"), false;
+  const bool feedback = pname == TRANSFORM_FEEDBACK_BUFFER_BINDING || pname == TRANSFORM_FEEDBACK_BUFFER_START ||
+                        pname == TRANSFORM_FEEDBACK_BUFFER_SIZE;
+  const std::uint32_t count = pname == SAMPLE_MASK_VALUE ? 1u
+                              : feedback                 ? std::uint32_t(kMaxFeedbackBuffers)
+                                                         : std::uint32_t(kMaxColorOutputs);
+  if (pname != BLEND && pname != COLOR_WRITEMASK && pname != SAMPLE_MASK_VALUE && !feedback) return s.SetError(INVALID_ENUM, what, "target must be BLEND, COLOR_WRITEMASK, SAMPLE_MASK_VALUE or TRANSFORM_FEEDBACK_BUFFER_BINDING, _START or _SIZE (the indexed state softgl keeps)"), false;
+  if (index >= count) return s.SetError(INVALID_VALUE, what, "index is past the last of the state's values (a draw buffer, mask word 0, or a transform feedback binding)"), false;
   out = StateValue{};
-  if (pname == SAMPLE_MASK_VALUE) {
+  if (feedback) {
+    const FeedbackBinding& b = s.feedback->binding[index];
+    out.kind = Kind::kInt;
+    out.v[out.count++] = pname == TRANSFORM_FEEDBACK_BUFFER_BINDING ? double(IdOf(s.buffers, b.buffer.get()))
+                         : pname == TRANSFORM_FEEDBACK_BUFFER_START ? double(b.offset)
+                                                                    : double(b.size);
+  } else if (pname == SAMPLE_MASK_VALUE) {
     out.kind = Kind::kInt;
     out.v[out.count++] = double(std::int32_t(s.ops.multisample.mask));  // the bits as a GLint, as GetIntegerv
   } else if (pname == BLEND) {
@@ -293,7 +312,7 @@ bool Context::IsQuery(std::uint32_t id) const { return state_->queries.count(id)
 void Context::BeginQuery(Enum target, std::uint32_t id) {
   auto& s = *state_;
   const int slot = QuerySlot(target);
-  if (slot < 0) return s.SetError(INVALID_ENUM, __func__, "target must be SAMPLES_PASSED, ANY_SAMPLES_PASSED, PRIMITIVES_GENERATED or TIME_ELAPSED");
+  if (slot < 0) return s.SetError(INVALID_ENUM, __func__, "target must be SAMPLES_PASSED, ANY_SAMPLES_PASSED, PRIMITIVES_GENERATED, TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN or TIME_ELAPSED");
   if (s.active_query[slot]) return s.SetError(INVALID_OPERATION, __func__, "a query is already active on target");
   if (slot < 2 && s.active_query[1 - slot]) return s.SetError(INVALID_OPERATION, __func__, "an occlusion query of the other kind is active (one occlusion query at a time)");
   auto it = s.queries.find(id);
@@ -307,7 +326,8 @@ void Context::BeginQuery(Enum target, std::uint32_t id) {
   switch (slot) {
     case 0:
     case 1: q.counter = std::make_shared<detail::OcclusionCounter>(); break;  // draws of earlier runs keep theirs
-    case 2: q.count = 0; break;
+    case 2:
+    case 4: q.count = 0; break;
     default:  // the time of the work between BeginQuery and EndQuery, rendering included
       s.Sync(__func__);
       q.start = std::chrono::steady_clock::now();
@@ -318,7 +338,7 @@ void Context::BeginQuery(Enum target, std::uint32_t id) {
 void Context::EndQuery(Enum target) {
   auto& s = *state_;
   const int slot = QuerySlot(target);
-  if (slot < 0) return s.SetError(INVALID_ENUM, __func__, "target must be SAMPLES_PASSED, ANY_SAMPLES_PASSED, PRIMITIVES_GENERATED or TIME_ELAPSED");
+  if (slot < 0) return s.SetError(INVALID_ENUM, __func__, "target must be SAMPLES_PASSED, ANY_SAMPLES_PASSED, PRIMITIVES_GENERATED, TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN or TIME_ELAPSED");
   if (!s.active_query[slot]) return s.SetError(INVALID_OPERATION, __func__, "no query is active on target");
   QueryObject& q = *s.queries.at(s.active_query[slot]);
   s.active_query[slot] = 0;
@@ -352,7 +372,7 @@ void Context::GetQueryiv(Enum target, Enum pname, int* params) const {
     return;
   }
   const int slot = QuerySlot(target);
-  if (slot < 0) return s.SetError(INVALID_ENUM, __func__, "target must be SAMPLES_PASSED, ANY_SAMPLES_PASSED, PRIMITIVES_GENERATED or TIME_ELAPSED");
+  if (slot < 0) return s.SetError(INVALID_ENUM, __func__, "target must be SAMPLES_PASSED, ANY_SAMPLES_PASSED, PRIMITIVES_GENERATED, TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN or TIME_ELAPSED");
   if (pname != CURRENT_QUERY && pname != QUERY_COUNTER_BITS) return s.SetError(INVALID_ENUM, __func__, "pname must be CURRENT_QUERY or QUERY_COUNTER_BITS");
   if (NotNull(s, __func__, params, "params")) *params = pname == CURRENT_QUERY ? int(s.active_query[slot]) : 64;
 }
@@ -372,7 +392,8 @@ bool QueryResult(ContextState& s, const char* what, std::uint32_t id, Enum pname
   switch (QuerySlot(q.target)) {
     case 0: out = q.counter ? q.counter->passed.load() : 0; break;
     case 1: out = q.counter && q.counter->passed.load() != 0; break;
-    case 2: out = q.count; break;
+    case 2:
+    case 4: out = q.count; break;
     default: out = q.elapsed_ns; break;
   }
   return true;

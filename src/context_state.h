@@ -94,6 +94,41 @@ struct FramebufferObject {
   Enum read_buffer = COLOR_ATTACHMENT0;  // ReadBuffer: COLOR_ATTACHMENT0 + i or NONE
 };
 
+// Transform feedback's buffer bindings (MAX_TRANSFORM_FEEDBACK_SEPARATE_ATTRIBS) and the floats a vertex may record
+// interleaved (MAX_TRANSFORM_FEEDBACK_INTERLEAVED_COMPONENTS) or per separate varying.
+inline constexpr int kMaxFeedbackBuffers = detail::FeedbackCapture::kMaxBuffers;
+inline constexpr int kMaxFeedbackComponents = 64;
+inline constexpr int kMaxFeedbackSeparateComponents = 4;
+
+// One indexed TRANSFORM_FEEDBACK_BUFFER binding: a buffer's bytes [offset, offset + size) (BindBufferRange), or its
+// whole store as it is at each draw (BindBufferBase: range false, offset and size 0).
+struct FeedbackBinding {
+  std::shared_ptr<Buffer> buffer;
+  std::size_t offset = 0, size = 0;
+  bool range = false;
+  // Bytes of the store recording may use from the binding's start (0 if none is bound).
+  std::size_t Room() const {
+    if (!buffer || offset > buffer->data.size()) return 0;
+    const std::size_t left = buffer->data.size() - offset;
+    return range ? std::min(size, left) : left;
+  }
+};
+
+// A transform feedback object (GenTransformFeedbacks; 0 is the context's own): its bindings and its recording.
+struct TransformFeedbackObject {
+  FeedbackBinding binding[kMaxFeedbackBuffers];
+  bool active = false, paused = false;
+  bool ended = false;  // EndTransformFeedback has been called on it (DrawTransformFeedback may draw it)
+  bool bound = false;  // it has been bound: only then is it an object (IsTransformFeedback, DrawTransformFeedback)
+  Enum mode = POINTS;  // BeginTransformFeedback's primitive mode
+  std::shared_ptr<const detail::FeedbackLayout> layout;  // the program's, at Begin
+  const Program* program = nullptr;                      // the program recorded from
+  std::size_t written[kMaxFeedbackBuffers] = {};         // bytes written into each binding since Begin
+  std::uint64_t vertices = 0;                            // vertices written since Begin
+  std::uint64_t drawable = 0;                            // vertices written between the last Begin and End
+  bool Recording() const { return active && !paused; }
+};
+
 // A query object (GenQueries). Its target is fixed by its first BeginQuery.
 struct QueryObject {
   Enum target = 0;
@@ -116,13 +151,16 @@ inline std::uint64_t TimestampNs() {
   return std::uint64_t(std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now() - epoch).count());
 }
 
-// The slot of each query target: 0 SAMPLES_PASSED, 1 ANY_SAMPLES_PASSED, 2 PRIMITIVES_GENERATED, 3 TIME_ELAPSED.
+// The slot of each query target: 0 SAMPLES_PASSED, 1 ANY_SAMPLES_PASSED, 2 PRIMITIVES_GENERATED, 3 TIME_ELAPSED,
+// 4 TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN.
+inline constexpr int kQuerySlots = 5;
 inline int QuerySlot(Enum target) {
   switch (target) {
     case SAMPLES_PASSED: return 0;
     case ANY_SAMPLES_PASSED: return 1;
     case PRIMITIVES_GENERATED: return 2;
     case TIME_ELAPSED: return 3;
+    case TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN: return 4;
     default: return -1;
   }
 }
@@ -157,6 +195,14 @@ struct ContextState {
 
   std::shared_ptr<Buffer> array_buffer;
   std::shared_ptr<Buffer> copy_read_buffer, copy_write_buffer;
+  std::shared_ptr<Buffer> feedback_buffer;  // TRANSFORM_FEEDBACK_BUFFER (the generic binding)
+  // Transform feedback objects; `feedback` is the bound one (feedback_id's, or default_feedback for 0).
+  std::unordered_map<std::uint32_t, std::unique_ptr<TransformFeedbackObject>> feedbacks;
+  std::uint32_t next_feedback = 1;
+  TransformFeedbackObject default_feedback;
+  TransformFeedbackObject* feedback = &default_feedback;
+  std::uint32_t feedback_id = 0;
+  bool rasterizer_discard = false;  // RASTERIZER_DISCARD
   VertexArray* vao = nullptr;
   std::uint32_t vao_id = 0;
   glm::vec4 current_attrib[kMaxVertexAttribs];
@@ -181,7 +227,7 @@ struct ContextState {
   Enum default_read_buffer = BACK;             // ReadBuffer while the context's own framebuffer is read: or NONE
   std::unordered_map<std::uint32_t, std::unique_ptr<QueryObject>> queries;
   std::uint32_t next_query = 1;
-  std::uint32_t active_query[4] = {0, 0, 0, 0};  // by QuerySlot: the id active on each target (0: none)
+  std::uint32_t active_query[kQuerySlots] = {};  // by QuerySlot: the id active on each target (0: none)
   // Conditional rendering: the query id between BeginConditionalRender and EndConditionalRender (0: none), and
   // whether its result discards the draws and clears meanwhile.
   std::uint32_t condition_query = 0;
@@ -234,8 +280,16 @@ struct ContextState {
     if (debug_callback) debug_callback(e, call, message);
   }
 
+  static bool IsBufferTarget(Enum target) {
+    return target == ARRAY_BUFFER || target == ELEMENT_ARRAY_BUFFER || target == COPY_READ_BUFFER ||
+           target == COPY_WRITE_BUFFER || target == TRANSFORM_FEEDBACK_BUFFER;
+  }
+  static constexpr const char* kBufferTargets =
+      "target must be ARRAY_BUFFER, ELEMENT_ARRAY_BUFFER, COPY_READ_BUFFER, COPY_WRITE_BUFFER or TRANSFORM_FEEDBACK_BUFFER";
+
   std::shared_ptr<Buffer>* BindingFor(Enum target) {
     if (target == ARRAY_BUFFER) return &array_buffer;
+    if (target == TRANSFORM_FEEDBACK_BUFFER) return &feedback_buffer;
     if (target == COPY_READ_BUFFER) return &copy_read_buffer;
     if (target == COPY_WRITE_BUFFER) return &copy_write_buffer;
     if (target == ELEMENT_ARRAY_BUFFER && vao) return &vao->element_buffer;
@@ -245,9 +299,7 @@ struct ContextState {
   // The buffer bound to `target`, or null with the error set: a target that is not a buffer target (INVALID_ENUM),
   // nothing bound there (INVALID_OPERATION).
   Buffer* BoundBuffer(const char* what, Enum target) {
-    if (target != ARRAY_BUFFER && target != ELEMENT_ARRAY_BUFFER && target != COPY_READ_BUFFER &&
-        target != COPY_WRITE_BUFFER)
-      return SetError(INVALID_ENUM, what, "target must be ARRAY_BUFFER, ELEMENT_ARRAY_BUFFER, COPY_READ_BUFFER or COPY_WRITE_BUFFER"), nullptr;
+    if (!IsBufferTarget(target)) return SetError(INVALID_ENUM, what, kBufferTargets), nullptr;
     auto* binding = BindingFor(target);
     if (binding == nullptr || !*binding) return SetError(INVALID_OPERATION, what, "no buffer is bound to target"), nullptr;
     return binding->get();

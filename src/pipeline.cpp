@@ -22,8 +22,8 @@ constexpr std::size_t kBinJobMax = 4096;  // and at most
 
 // Stage 1-2: fetch and shade every vertex the draw references, once each where indices repeat.
 void ShadeVertices(const DrawCall& call, const FetchPlan& fetch, const Program& program, const Textures* textures,
-                   const Interpolation* interpolation, const ViewportTransform& viewport, WorkerPool& pool,
-                   Scratch& s) {
+                   const Interpolation* interpolation, const ViewportTransform& viewport,
+                   const FeedbackLayout* record, WorkerPool& pool, Scratch& s) {
   const int count = call.count;
   auto& to_shade = s.shade_indices;
   auto& map = s.element_to_shaded;
@@ -82,6 +82,7 @@ void ShadeVertices(const DrawCall& call, const FetchPlan& fetch, const Program& 
   out.clip_codes.resize(std::size_t(n));
   out.window.resize(std::size_t(n));
   out.window_varyings.resize(std::size_t(n) * std::size_t(out.nvar));
+  if (record) out.feedback.resize(std::size_t(n) * std::size_t(record->floats));
   const ClipPlanes planes = GuardBandPlanes(viewport);
   if (s.vertex.size() < std::size_t(pool.Threads())) s.vertex.resize(std::size_t(pool.Threads()));
   const int simd = int(CpuSimdLevel());
@@ -118,6 +119,16 @@ void ShadeVertices(const DrawCall& call, const FetchPlan& fetch, const Program& 
       batch.varyings = out.varyings.data() + std::size_t(base) * out.nvar;
       batch.textures = textures;
       program.ShadeVertices(batch);
+      if (record)  // what transform feedback records, before anything below changes the varyings
+        for (int i = base; i < base + m; ++i) {
+          float* dst = out.feedback.data() + std::size_t(i) * std::size_t(record->floats);
+          const float* var = out.varyings.data() + std::size_t(i) * out.nvar;
+          for (const FeedbackLayout::Item& item : record->items) {
+            const float* src = item.first < 0 ? &out.position[std::size_t(i)].x : var + item.first;
+            std::memcpy(dst, src, sizeof(float) * std::size_t(item.components));
+            dst += item.components;
+          }
+        }
       // Clip codes, and the window position of each vertex (the divide and viewport transform of ToWindow, done
       // once per vertex rather than once per primitive using it), several vertices per instruction; the varyings
       // divided by w for the vertices inside the guard band.
@@ -354,11 +365,47 @@ class PrimitiveRunner {
 
 namespace {
 
+// Transform feedback: the vertices of primitives [0, count) (primitive q of instance g at index q of the assembled
+// primitives, its shaded vertices g * unique further on) written in order, each primitive whole into every buffer
+// or, once one has no room for it, neither it nor any after it.
+void RecordFeedback(const Primitives& prims, std::size_t per_instance, std::size_t count, std::uint32_t unique,
+                    const std::vector<std::uint32_t>& map, const ShadedVertices& sv, FeedbackCapture& out) {
+  const FeedbackLayout& layout = *out.layout;
+  const int per = prims.vertices_per_primitive;
+  const int buffers = layout.Buffers();
+  std::size_t vertex_bytes[FeedbackCapture::kMaxBuffers] = {};
+  int offset[FeedbackCapture::kMaxBuffers] = {};  // each buffer's first float in a vertex's recorded values
+  for (int b = 0, at = 0; b < buffers; ++b) {
+    const int floats = layout.separate ? layout.items[std::size_t(b)].components : layout.floats;
+    vertex_bytes[b] = sizeof(float) * std::size_t(floats);
+    offset[b] = at;
+    at += floats;
+  }
+  for (std::size_t p = 0; p < count; ++p) {
+    for (int b = 0; b < buffers; ++b)
+      if (out.room[b] - out.written[b] < vertex_bytes[b] * std::size_t(per)) return;
+    const std::size_t q = p % per_instance;
+    const std::uint32_t shift = std::uint32_t(p / per_instance) * unique;
+    for (int k = 0; k < per; ++k) {
+      const std::uint32_t v = map[prims.indices[q * std::size_t(per) + std::size_t(k)]] + shift;
+      const float* values = sv.feedback.data() + std::size_t(v) * std::size_t(layout.floats);
+      for (int b = 0; b < buffers; ++b) {
+        std::memcpy(out.data[b] + out.written[b], values + offset[b], vertex_bytes[b]);
+        out.written[b] += vertex_bytes[b];
+      }
+    }
+    ++out.primitives;
+    out.vertices += std::uint64_t(per);
+  }
+}
+
 // One draw small enough to hold all its shaded vertices at once: shaded, then its primitives clipped and binned
 // in jobs of kBinJob to kBinJobMax primitives, each job into its own batch, the batches kept in primitive order.
-void RecordChunk(const DrawCall& call, const FetchPlan& fetch, const DrawState& state, DrawPacket& packet,
+// Without a packet (nothing to rasterize), only shaded, counted and recorded by transform feedback.
+void RecordChunk(const DrawCall& call, const FetchPlan& fetch, const DrawState& state, DrawPacket* packet,
                  Frame& frame, WorkerPool& pool, Scratch& scratch) {
-  ShadeVertices(call, fetch, *state.program, state.textures, state.interpolation, state.viewport, pool, scratch);
+  ShadeVertices(call, fetch, *state.program, state.textures, state.interpolation, state.viewport,
+                state.feedback ? state.feedback->layout : nullptr, pool, scratch);
 
   Primitives& prims = scratch.primitives;
   AssemblePrimitives(call.mode, call.count, call.restarts, call.restart_count, prims, state.primitive.provoking_first);
@@ -369,6 +416,9 @@ void RecordChunk(const DrawCall& call, const FetchPlan& fetch, const DrawState& 
   const std::size_t count = per_instance * std::size_t(call.instances);
   if (state.primitives_generated) *state.primitives_generated += count;
   const std::uint32_t unique = std::uint32_t(scratch.shaded.count / call.instances);
+  if (state.feedback && per_instance > 0)
+    RecordFeedback(prims, per_instance, count, unique, scratch.element_to_shaded, scratch.shaded, *state.feedback);
+  if (packet == nullptr) return;
   // Every tile walks every batch of the draw, so fewer, larger batches render faster; but each thread should still
   // have about two jobs to bin.
   const std::size_t threads = std::size_t(pool.Threads());
@@ -388,7 +438,7 @@ void RecordChunk(const DrawCall& call, const FetchPlan& fetch, const DrawState& 
   while (scratch.primitive.size() < std::size_t(pool.Threads()))
     scratch.primitive.push_back(std::make_unique<PrimitiveScratch>());
   pool.Run(jobs, [&](int job, int worker) {
-    BinnedBatch& bins = shared ? *shared_batch : frame.Batch(packet, job);
+    BinnedBatch& bins = shared ? *shared_batch : frame.Batch(*packet, job);
     PrimitiveRunner runner(state, scratch.shaded, bins, grid, *scratch.primitive[std::size_t(worker)]);
     const std::size_t end = std::min(count, std::size_t(job + 1) * job_size);
     // Primitive p is primitive q of instance g: q and the instance's shift advance with p (no division per
@@ -432,16 +482,17 @@ void RecordChunk(const DrawCall& call, const FetchPlan& fetch, const DrawState& 
     frame.EndShared();
     return;
   }
-  for (int j = 0; j < jobs; ++j) frame.AddBytes(frame.Batch(packet, j).Bytes());
+  for (int j = 0; j < jobs; ++j) frame.AddBytes(frame.Batch(*packet, j).Bytes());
 }
 
 // Records one piece of a draw as its own command (a copy of the prototype packet), rendering the frame first
 // when what is recorded already exceeds the budget.
 void RecordPiece(const DrawCall& call, const FetchPlan& fetch, const DrawState& state, const DrawPacket& proto,
                  const RenderTarget& target, Frame& frame, WorkerPool& pool, Scratch& scratch) {
+  if (state.discard || state.bounds.Empty()) return RecordChunk(call, fetch, state, nullptr, frame, pool, scratch);
   if (frame.Bytes() > kFrameBudgetBytes) frame.Render(pool, scratch.tiles);
   DrawPacket& packet = frame.AddDraw(target, proto);
-  RecordChunk(call, fetch, state, packet, frame, pool, scratch);
+  RecordChunk(call, fetch, state, &packet, frame, pool, scratch);
   frame.ListLastDraw();
 }
 
@@ -492,7 +543,8 @@ void RecordRestartRuns(const DrawCall& call, const FetchPlan& fetch, const DrawS
 void RecordDraw(const DrawCall& call, const FetchPlan& fetch, const DrawState& state, const DrawPacket& packet,
                 const RenderTarget& target, Frame& frame, WorkerPool& pool, Scratch& scratch) {
   if (call.count <= 0 || call.instances <= 0 || state.program == nullptr) return;
-  if (state.bounds.Empty()) {  // nothing can be drawn; the primitives are still generated, and counted
+  if ((state.bounds.Empty() || state.discard) && !state.feedback) {
+    // Nothing can be drawn; the primitives are still generated, and counted.
     if (state.primitives_generated)
       *state.primitives_generated +=
           PrimitiveCount(call.mode, call.count, call.restarts, call.restart_count) * std::uint64_t(call.instances);

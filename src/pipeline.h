@@ -9,6 +9,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include <softgl/shader.h>
@@ -43,6 +44,31 @@ struct PrimitiveState {
   bool provoking_first = false;  // ProvokingVertex(FIRST_VERTEX_CONVENTION)
 };
 
+/// What transform feedback records of each vertex (a program's TransformFeedbackVaryings).
+struct FeedbackLayout {
+  struct Item {
+    std::string name;
+    int first = 0;       // float of the varyings, or FeedbackVarying::kPosition
+    int components = 4;  // 1 to 4
+  };
+  std::vector<Item> items;
+  bool separate = false;  // SEPARATE_ATTRIBS: item i into buffer i; else all into buffer 0, a vertex after another
+  int floats = 0;         // the items' components together
+  int Buffers() const { return separate ? int(items.size()) : 1; }
+};
+
+/// Where a draw's transform feedback writes: for each buffer the layout uses, the store from the binding's write
+/// position on and its room in bytes. The pipeline adds what it wrote.
+struct FeedbackCapture {
+  static constexpr int kMaxBuffers = 4;
+  const FeedbackLayout* layout = nullptr;
+  std::uint8_t* data[kMaxBuffers] = {};
+  std::size_t room[kMaxBuffers] = {};
+  std::size_t written[kMaxBuffers] = {};  // out: bytes written into each
+  std::uint64_t primitives = 0;           // out: primitives written
+  std::uint64_t vertices = 0;             // out: vertices written
+};
+
 /// Everything the front end of a draw needs from the context's state, resolved at draw time.
 struct DrawState {
   const Program* program = nullptr;
@@ -52,6 +78,8 @@ struct DrawState {
   const Textures* textures = nullptr;  // what the vertex stage samples
   const Interpolation* interpolation = nullptr;  // the program's varying qualifiers (null: all smooth)
   std::uint64_t* primitives_generated = nullptr;  // counts the assembled primitives (PRIMITIVES_GENERATED query)
+  FeedbackCapture* feedback = nullptr;  // transform feedback records the draw's primitives (null: it does not)
+  bool discard = false;  // RASTERIZER_DISCARD: nothing is rasterized (the primitives are still counted and recorded)
   int samples = 1;  // samples whose coverage triangles compute (RasterTarget::samples)
   bool depth16 = false;  // the target's depth buffer is 16-bit fixed point (polygon offset's unit is 1 / 65535)
 };

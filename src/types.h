@@ -39,6 +39,9 @@ struct ShadedVertices {
   std::vector<unsigned> clip_codes;
   std::vector<glm::vec4> window;
   std::vector<float> window_varyings;  // [count][nvar]
+  // While transform feedback records: the values it records of each vertex, as the vertex stage wrote them
+  // ([count][FeedbackLayout::floats]).
+  std::vector<float> feedback;
 };
 
 /// A vertex in homogeneous clip space with its varyings (input and output of clipping).

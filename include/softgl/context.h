@@ -126,14 +126,15 @@ class Context {
   std::uint32_t GenBuffer();
   /// Creates n buffer objects, writing their ids to ids. n < 0: INVALID_VALUE.
   void GenBuffers(int n, std::uint32_t* ids);
-  /// Deletes a buffer; it is unbound from ARRAY_BUFFER and from the bound vertex array's element binding.
+  /// Deletes a buffer; it is unbound from every target, from the bound vertex array's element binding and from the
+  /// bound transform feedback object's bindings.
   /// Attribute bindings in other vertex arrays keep the storage alive, as OpenGL does. 0 and unknown ids are ignored.
   void DeleteBuffer(std::uint32_t buffer);
   /// DeleteBuffer of each of ids[0 .. n). n < 0: INVALID_VALUE. (Each Delete*s call below is so.)
   void DeleteBuffers(int n, const std::uint32_t* ids);
   bool IsBuffer(std::uint32_t buffer) const;
-  /// Binds buffer (0 unbinds) to target ARRAY_BUFFER, ELEMENT_ARRAY_BUFFER, COPY_READ_BUFFER or
-  /// COPY_WRITE_BUFFER. The ELEMENT_ARRAY_BUFFER binding is part of the bound vertex array (INVALID_OPERATION if
+  /// Binds buffer (0 unbinds) to target ARRAY_BUFFER, ELEMENT_ARRAY_BUFFER, COPY_READ_BUFFER, COPY_WRITE_BUFFER or
+  /// TRANSFORM_FEEDBACK_BUFFER (the buffer calls below take each of them). The ELEMENT_ARRAY_BUFFER binding is part of the bound vertex array (INVALID_OPERATION if
   /// none is bound). Bad target: INVALID_ENUM; an id not made by GenBuffer: INVALID_OPERATION.
   void BindBuffer(Enum target, std::uint32_t buffer);
   /// Replaces the store of the buffer bound to target with size bytes copied from data (zeros if data is null),
@@ -240,8 +241,62 @@ class Context {
   /// Makes `program` (usually a softgl::Shader subclass) the current shader. The context keeps a pointer: the
   /// shader must outlive its use, and changes to its members (uniforms) are seen by later draws.
   void UseProgram(const Program& program);
-  /// Unbinds the current shader; draws then record INVALID_OPERATION.
+  /// Unbinds the current shader; draws then record INVALID_OPERATION. (Either form while transform feedback is
+  /// active and not paused: INVALID_OPERATION.)
   void UseProgram(std::nullptr_t);
+
+  // ---- Transform feedback --------------------------------------------------------------------------------------
+  /// What transform feedback records from each vertex `program`'s vertex stage writes: varyings[0 .. count), in
+  /// order, into one buffer (INTERLEAVED_ATTRIBS: binding 0, each vertex's values one after the other) or each
+  /// into its own (SEPARATE_ATTRIBS: varying i into binding i). Takes effect at once (there is no link step); count
+  /// 0 records nothing. Bad buffer_mode: INVALID_ENUM; count < 0, more than MAX_TRANSFORM_FEEDBACK_SEPARATE_ATTRIBS
+  /// (4) separate varyings, more than MAX_TRANSFORM_FEEDBACK_INTERLEAVED_COMPONENTS (64) floats interleaved, a
+  /// varying with components outside 1-4 or floats past the program's VaryingFloats(), a null name or array:
+  /// INVALID_VALUE; the program is the one transform feedback is recording from: INVALID_OPERATION.
+  void TransformFeedbackVaryings(Program& program, int count, const FeedbackVarying* varyings, Enum buffer_mode);
+  /// Varying `index` of `program`'s list: its name (up to buf_size - 1 characters and a terminating 0, its length
+  /// without it in *length), *size 1 and *type FLOAT, FLOAT_VEC2, FLOAT_VEC3 or FLOAT_VEC4. Any of the pointers may
+  /// be null. index past the list or buf_size < 0: INVALID_VALUE.
+  void GetTransformFeedbackVarying(const Program& program, std::uint32_t index, int buf_size, int* length, int* size,
+                                   Enum* type, char* name) const;
+  /// Binds `buffer` to binding `index` (0 to MAX_TRANSFORM_FEEDBACK_SEPARATE_ATTRIBS - 1) of the bound transform
+  /// feedback object, and to the TRANSFORM_FEEDBACK_BUFFER target, for recording into bytes [offset, offset + size)
+  /// (Range) or into the whole store as it is at each draw (Base). target other than TRANSFORM_FEEDBACK_BUFFER:
+  /// INVALID_ENUM; index out of range, size <= 0 or offset < 0 or either not a multiple of 4 (Range, buffer not
+  /// 0): INVALID_VALUE; an id not made by GenBuffer, or transform feedback active: INVALID_OPERATION.
+  void BindBufferRange(Enum target, std::uint32_t index, std::uint32_t buffer, std::ptrdiff_t offset,
+                       std::ptrdiff_t size);
+  void BindBufferBase(Enum target, std::uint32_t index, std::uint32_t buffer);
+  /// Starts recording: every draw until EndTransformFeedback writes the current program's varyings of each vertex
+  /// of each primitive, in order (strips, fans and loops as separate primitives, as assembled), at the bound
+  /// buffers' write positions, which start at the bindings' offsets. primitive_mode POINTS, LINES or TRIANGLES (else
+  /// INVALID_ENUM); draws must then use a mode of that kind (INVALID_OPERATION). A primitive that does not fit in
+  /// every buffer's room is not recorded, nor anything after it, and is not counted by
+  /// TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN. Already active, no current program, a program with no varyings to
+  /// record, or a binding it writes with no buffer: INVALID_OPERATION. Draws while a buffer being recorded into is
+  /// mapped: INVALID_OPERATION. Enable(RASTERIZER_DISCARD) discards the primitives after recording them (and
+  /// Clear and ClearBuffer* do nothing).
+  void BeginTransformFeedback(Enum primitive_mode);
+  /// Ends recording (not active: INVALID_OPERATION). DrawTransformFeedback then draws what was recorded.
+  void EndTransformFeedback();
+  /// Suspends and resumes recording, keeping the write positions; while paused, draws record nothing and may use any
+  /// mode, and the program and bindings may change. Pause when not active or already paused, Resume when not
+  /// paused: INVALID_OPERATION.
+  void PauseTransformFeedback();
+  void ResumeTransformFeedback();
+  /// Transform feedback objects (OpenGL 4.0): each holds the bindings above, the active and paused state and the
+  /// count of vertices last recorded. 0 is the context's own. A name from Gen becomes an object when first bound
+  /// (IsTransformFeedback is false until then). Bind of an unknown id, or while active and not paused:
+  /// INVALID_OPERATION; target other than TRANSFORM_FEEDBACK: INVALID_ENUM. Deleting an active object:
+  /// INVALID_OPERATION; the bound one rebinds 0.
+  std::uint32_t GenTransformFeedback();
+  void GenTransformFeedbacks(int n, std::uint32_t* ids);
+  void DeleteTransformFeedbacks(int n, const std::uint32_t* ids);
+  bool IsTransformFeedback(std::uint32_t id) const;
+  void BindTransformFeedback(Enum target, std::uint32_t id);
+  /// DrawArrays(mode, 0, count) with count the vertices object `id` recorded between its last Begin and End. An
+  /// id that is no object (unknown, or never bound): INVALID_VALUE; an object never ended: INVALID_OPERATION; other errors as DrawArrays.
+  void DrawTransformFeedback(Enum mode, std::uint32_t id);
 
   // ---- Textures ----------------------------------------------------------------------------------------------
   /// Creates a texture object and returns its id (never 0). Its target is fixed by its first BindTexture.
@@ -726,7 +781,8 @@ class Context {
   bool IsQuery(std::uint32_t id) const;
   /// Starts counting into query `id` for target: SAMPLES_PASSED (fragments that pass every per-fragment test),
   /// ANY_SAMPLES_PASSED (whether any did), PRIMITIVES_GENERATED (primitives assembled from the draws' vertices,
-  /// before clipping and culling) or TIME_ELAPSED (nanoseconds of the work between BeginQuery and EndQuery,
+  /// before clipping and culling), TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN (primitives transform feedback recorded)
+  /// or TIME_ELAPSED (nanoseconds of the work between BeginQuery and EndQuery,
   /// rendering included: both render what was recorded before them). Errors: bad target: INVALID_ENUM; a query
   /// already active on target (SAMPLES_PASSED and ANY_SAMPLES_PASSED count as one), an id not made by GenQuery, a query active elsewhere or begun before with another
   /// target: INVALID_OPERATION.

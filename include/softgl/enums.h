@@ -27,6 +27,7 @@ inline constexpr Enum ARRAY_BUFFER = 0x8892;
 inline constexpr Enum ELEMENT_ARRAY_BUFFER = 0x8893;
 inline constexpr Enum COPY_READ_BUFFER = 0x8F36;   // binding points for CopyBufferSubData (any buffer call takes them)
 inline constexpr Enum COPY_WRITE_BUFFER = 0x8F37;
+inline constexpr Enum TRANSFORM_FEEDBACK_BUFFER = 0x8C8E;  // also indexed: BindBufferBase / BindBufferRange
 
 // MapBufferRange access bits, MapBuffer access, and GetBufferParameter names.
 inline constexpr Bitfield MAP_READ_BIT = 0x0001;
@@ -476,6 +477,26 @@ inline constexpr Enum QUERY_COUNTER_BITS = 0x8864;
 inline constexpr Enum CURRENT_QUERY = 0x8865;
 inline constexpr Enum QUERY_RESULT = 0x8866;
 inline constexpr Enum QUERY_RESULT_AVAILABLE = 0x8867;
+
+// Transform feedback (BeginTransformFeedback, TransformFeedbackVaryings, the queries of its state).
+inline constexpr Enum TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN = 0x8C88;  // a query target
+inline constexpr Enum RASTERIZER_DISCARD = 0x8C89;                     // an Enable capability
+inline constexpr Enum INTERLEAVED_ATTRIBS = 0x8C8C;
+inline constexpr Enum SEPARATE_ATTRIBS = 0x8C8D;
+inline constexpr Enum TRANSFORM_FEEDBACK = 0x8E22;  // BindTransformFeedback's target
+inline constexpr Enum TRANSFORM_FEEDBACK_BUFFER_START = 0x8C84;
+inline constexpr Enum TRANSFORM_FEEDBACK_BUFFER_SIZE = 0x8C85;
+inline constexpr Enum TRANSFORM_FEEDBACK_BUFFER_BINDING = 0x8C8F;
+inline constexpr Enum TRANSFORM_FEEDBACK_BUFFER_PAUSED = 0x8E23;  // (TRANSFORM_FEEDBACK_PAUSED)
+inline constexpr Enum TRANSFORM_FEEDBACK_BUFFER_ACTIVE = 0x8E24;  // (TRANSFORM_FEEDBACK_ACTIVE)
+inline constexpr Enum TRANSFORM_FEEDBACK_BINDING = 0x8E25;
+inline constexpr Enum MAX_TRANSFORM_FEEDBACK_INTERLEAVED_COMPONENTS = 0x8C8A;
+inline constexpr Enum MAX_TRANSFORM_FEEDBACK_SEPARATE_ATTRIBS = 0x8C8B;
+inline constexpr Enum MAX_TRANSFORM_FEEDBACK_SEPARATE_COMPONENTS = 0x8C80;
+inline constexpr Enum MAX_TRANSFORM_FEEDBACK_BUFFERS = 0x8E70;
+inline constexpr Enum FLOAT_VEC2 = 0x8B50;  // GetTransformFeedbackVarying's types (and FLOAT)
+inline constexpr Enum FLOAT_VEC3 = 0x8B51;
+inline constexpr Enum FLOAT_VEC4 = 0x8B52;
 
 // Conditional rendering (BeginConditionalRender's modes).
 inline constexpr Enum QUERY_WAIT = 0x8E13;

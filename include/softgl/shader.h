@@ -571,6 +571,25 @@ void FillFragmentLanes(const BlockBatch& batch, int b, FragmentLanes<Varyings>& 
 }
 }  // namespace shader_detail
 
+/// One value transform feedback records from each vertex (Context::TransformFeedbackVaryings): `components` (1 to
+/// 4) consecutive floats of the vertex stage's varyings from float `first` (counted as VaryingFloats() counts them:
+/// in declaration order, one per Float or float), or gl_Position (`first` = kPosition, 4 components). `name` is
+/// what GetTransformFeedbackVarying reports (copied). Shader<>::Capture makes one from a member pointer.
+struct FeedbackVarying {
+  static constexpr int kPosition = -1;
+  const char* name = "";
+  int first = kPosition;
+  int components = 4;
+  /// gl_Position, named as GLSL names it.
+  static constexpr FeedbackVarying Position() { return FeedbackVarying{"gl_Position", kPosition, 4}; }
+};
+
+namespace detail {
+struct FeedbackLayout;  // a program's recorded varyings (src/, never seen by users)
+}  // namespace detail
+
+class Context;
+
 /// The interface the pipeline uses to run a shader. Subclass Shader<> rather than this.
 class Program {
  public:
@@ -596,6 +615,12 @@ class Program {
   /// Whether the fragment stage writes gl_FragDepth. When it does not, the depth test may run before the shader
   /// (early depth test), where that cannot change the result.
   virtual bool WritesDepth() const { return true; }
+
+ private:
+  friend class Context;
+  // What transform feedback records from this program's vertices (TransformFeedbackVaryings); null: nothing. Never
+  // changed in place, only replaced, so that a copy (Snapshot) shares it and compares equal byte for byte.
+  std::shared_ptr<const detail::FeedbackLayout> feedback_;
 };
 
 /// Base class of user shaders (CRTP): `struct MyShader : softgl::Shader<MyShader, MyVaryings> { ... }`.
@@ -702,6 +727,18 @@ class Shader : public Program {
   }
 
   bool WritesDepth() const final { return SoftglForm::DeclaresDepth(); }
+
+  /// The varying `member` (a member of Varyings: Float, vec2, vec3 or vec4, or float and GLM vectors in the scalar
+  /// form) as transform feedback records it, reported under `name`: `FeedbackVarying v =
+  /// MyShader::Capture(&MyVaryings::color, "color");`.
+  template <class Member>
+  static FeedbackVarying Capture(Member Varyings::*member, const char* name) {
+    const Varyings probe{};
+    const auto* base = reinterpret_cast<const unsigned char*>(&probe);
+    const auto* at = reinterpret_cast<const unsigned char*>(&(probe.*member));
+    return FeedbackVarying{name, int((at - base) / SoftglForm::FloatBytes()),
+                           int(sizeof(Member)) / SoftglForm::FloatBytes()};
+  }
 
   std::shared_ptr<const Program> Snapshot() const override {
     if constexpr (std::is_copy_constructible_v<Derived>) {
