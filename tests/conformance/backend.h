@@ -39,6 +39,8 @@ enum class Program {
   kOutputs,      // four colour outputs: 0 colour; 1 (extra.x, extra.y, 0.5, colour.a); 2 colour * 2 - 0.5 (past
                  // [0, 1] both ways); 3 (extra.z, extra.w, colour.g, colour.a)
   kPointCoord,   // colour = (gl_PointCoord, colour.b, 1)
+  kFeedback,     // colour = attribute 1; the vertex stage also writes v_extra = attribute 2 * 2 - position, for
+                 // transform feedback (Backend::FeedbackVaryings)
 };
 
 /// A TEXTURE_2D_ARRAY or TEXTURE_3D defined by TexImage3D: RGBA8 from `rgba` (unit 3 for an array, 4 for 3D), or
@@ -239,6 +241,24 @@ class Backend {
   virtual int GetSynci(const void* sync, Enum pname) = 0;
   /// glClampColor.
   virtual void ClampColor(Enum target, Enum clamp) = 0;
+  /// Transform feedback. FeedbackVaryings: what the kFeedback program records, `which` naming its outputs (0
+  /// gl_Position, 1 v_color, 2 v_extra: vec4 each), with glTransformFeedbackVaryings (and a new link in OpenGL).
+  /// NewFeedbackBuffer: a buffer of `floats` floats of -7, made through the TRANSFORM_FEEDBACK_BUFFER target.
+  /// ReadBufferFloats: its first `floats` floats by GetBufferSubData. The others one to one with OpenGL's calls
+  /// (BindBufferBase / BindBufferRange on TRANSFORM_FEEDBACK_BUFFER, BindTransformFeedback on TRANSFORM_FEEDBACK).
+  virtual void FeedbackVaryings(const std::vector<int>& which, Enum buffer_mode) = 0;
+  virtual std::uint32_t NewFeedbackBuffer(int floats) = 0;
+  virtual std::vector<float> ReadBufferFloats(std::uint32_t buffer, int floats) = 0;
+  virtual void BindBufferBase(std::uint32_t index, std::uint32_t buffer) = 0;
+  virtual void BindBufferRange(std::uint32_t index, std::uint32_t buffer, std::ptrdiff_t offset, std::ptrdiff_t size) = 0;
+  virtual void BeginTransformFeedback(Enum mode) = 0;
+  virtual void EndTransformFeedback() = 0;
+  virtual void PauseTransformFeedback() = 0;
+  virtual void ResumeTransformFeedback() = 0;
+  virtual std::uint32_t GenTransformFeedback() = 0;
+  virtual void BindTransformFeedback(std::uint32_t id) = 0;
+  virtual void DrawTransformFeedback(Enum mode, std::uint32_t id) = 0;
+  virtual void ProvokingVertex(Enum convention) = 0;
   virtual Frame Read() = 0;
   /// ReadPixels into a buffer of `bytes` bytes first filled with 0xCD (bytes the call does not write keep it).
   virtual std::vector<std::uint8_t> ReadPixels(const PixelRead& read, std::size_t bytes) = 0;

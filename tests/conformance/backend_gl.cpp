@@ -39,6 +39,19 @@ void main() {
 }
 )";
 
+constexpr const char* kFeedbackVertexShader = R"(#version 330 core
+layout(location = 0) in vec4 a_pos;
+layout(location = 1) in vec4 a_color;
+layout(location = 2) in vec4 a_extra;
+out vec4 v_color;
+out vec4 v_extra;
+void main() {
+  gl_Position = a_pos;
+  v_color = a_color;
+  v_extra = a_extra * 2.0 - a_pos;
+}
+)";
+
 constexpr const char* kColorFragment = R"(#version 330 core
 in vec4 v_color;
 out vec4 o_color;
@@ -189,6 +202,7 @@ class GlBackend final : public Backend {
     programs_[9] = Link(kFetchSampleFragment, error);
     programs_[10] = Link(kOutputsFragment, error);
     programs_[11] = Link(kPointCoordFragment, error);
+    programs_[12] = Link(kColorFragment, error, kFeedbackVertexShader);
     instanced_ = Link(kColorFragment, error, kInstancedVertexShader);
     glUseProgram(programs_[4]);
     glUniform1i(glGetUniformLocation(programs_[4], "u_cube"), 1);
@@ -270,7 +284,9 @@ class GlBackend final : public Backend {
   void Draw(Enum mode, const std::vector<Vertex>& vertices, const std::vector<std::uint32_t>& indices,
             Program program, const Uniforms& u) override {
     const GLuint p = programs_[int(program)];
-    glUseProgram(p);
+    GLint current = 0;  // (UseProgram is an error while transform feedback records, even of the same program)
+    glGetIntegerv(GL_CURRENT_PROGRAM, &current);
+    if (GLuint(current) != p) glUseProgram(p);
     if (program == Program::kLit) {
       glUniform4f(glGetUniformLocation(p, "u_tint"), u.tint.r, u.tint.g, u.tint.b, u.tint.a);
       glUniform3f(glGetUniformLocation(p, "u_light_dir"), u.light_dir.x, u.light_dir.y, u.light_dir.z);
@@ -639,6 +655,45 @@ class GlBackend final : public Backend {
     return v;
   }
   void ClampColor(Enum target, Enum clamp) override { glClampColor(target, clamp); }
+  void FeedbackVaryings(const std::vector<int>& which, Enum buffer_mode) override {
+    static const char* const kNames[] = {"gl_Position", "v_color", "v_extra"};
+    std::vector<const char*> names;
+    for (int w : which) names.push_back(kNames[w]);
+    const GLuint p = programs_[int(Program::kFeedback)];
+    glTransformFeedbackVaryings(p, GLsizei(names.size()), names.data(), buffer_mode);
+    if (glGetError() == GL_NO_ERROR) glLinkProgram(p);
+    else glTransformFeedbackVaryings(p, -1, nullptr, buffer_mode);  // the error again, for the caller to read
+  }
+  std::uint32_t NewFeedbackBuffer(int floats) override {
+    const GLuint id = GenOne(glGenBuffers);
+    glBindBuffer(GL_TRANSFORM_FEEDBACK_BUFFER, id);
+    const std::vector<float> fill(std::size_t(floats), -7.0f);
+    glBufferData(GL_TRANSFORM_FEEDBACK_BUFFER, GLsizeiptr(fill.size() * sizeof(float)), fill.data(), GL_STREAM_READ);
+    return id;
+  }
+  std::vector<float> ReadBufferFloats(std::uint32_t buffer, int floats) override {
+    std::vector<float> out(static_cast<std::size_t>(floats), 0.0f);
+    glBindBuffer(GL_COPY_READ_BUFFER, buffer);
+    glGetBufferSubData(GL_COPY_READ_BUFFER, 0, GLsizeiptr(out.size() * sizeof(float)), out.data());
+    return out;
+  }
+  void BindBufferBase(std::uint32_t index, std::uint32_t buffer) override {
+    glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, index, buffer);
+  }
+  void BindBufferRange(std::uint32_t index, std::uint32_t buffer, std::ptrdiff_t offset, std::ptrdiff_t size) override {
+    glBindBufferRange(GL_TRANSFORM_FEEDBACK_BUFFER, index, buffer, offset, size);
+  }
+  void BeginTransformFeedback(Enum mode) override { glBeginTransformFeedback(mode); }
+  void EndTransformFeedback() override { glEndTransformFeedback(); }
+  void PauseTransformFeedback() override { glPauseTransformFeedback(); }
+  void ResumeTransformFeedback() override { glResumeTransformFeedback(); }
+  std::uint32_t GenTransformFeedback() override { return GenOne(glGenTransformFeedbacks); }
+  void BindTransformFeedback(std::uint32_t id) override { glBindTransformFeedback(GL_TRANSFORM_FEEDBACK, id); }
+  void DrawTransformFeedback(Enum mode, std::uint32_t id) override {
+    glUseProgram(programs_[int(Program::kFeedback)]);
+    glDrawTransformFeedback(mode, id);
+  }
+  void ProvokingVertex(Enum convention) override { glProvokingVertex(convention); }
   static GLsync Handle(const void* sync) { return static_cast<GLsync>(const_cast<void*>(sync)); }
   std::uint64_t QueryResult(std::uint32_t id) override {
     GLuint v = ~0u;  // (OSMesa exports the 32-bit form; the counts here are small)
@@ -678,7 +733,7 @@ class GlBackend final : public Backend {
   OSMesaContext ctx_;
   int w_, h_;
   std::vector<std::uint8_t> buffer_;
-  GLuint programs_[12] = {};
+  GLuint programs_[13] = {};
   GLuint instanced_ = 0;
   GLuint rtt_color_ = 0;
   GLuint vao_ = 0, vbo_ = 0, ebo_ = 0;

@@ -187,6 +187,24 @@ struct InstancedShader : softgl::Shader<InstancedShader, InstancedVaryings> {
   }
 };
 
+struct FeedbackVaryings {
+  glm::vec4 color;
+  glm::vec4 extra;
+};
+
+// kFeedback: what transform feedback records (extra = attribute 2 * 2 - position).
+struct FeedbackShader : softgl::Shader<FeedbackShader, FeedbackVaryings> {
+  void Vertex(const softgl::VertexIn& in, softgl::VertexOut<FeedbackVaryings>& out) const {
+    out.position = in.attrib[0];
+    out.varyings.color = in.attrib[1];
+    out.varyings.extra = in.attrib[2] * 2.0f - in.attrib[0];
+  }
+  bool Fragment(const softgl::FragmentIn<FeedbackVaryings>& in, softgl::FragmentOut& out) const {
+    out.color[0] = in.varyings.color;
+    return true;
+  }
+};
+
 class SoftglBackend final : public Backend {
  public:
   SoftglBackend(int w, int h) : gl_(w, h) {
@@ -268,6 +286,9 @@ class SoftglBackend final : public Backend {
       case Program::kFetchSample: gl_.UseProgram(fetch_sample_); break;
       case Program::kOutputs: gl_.UseProgram(outputs_); break;
       case Program::kPointCoord: gl_.UseProgram(point_coord_); break;
+      case Program::kFeedback:  // (UseProgram is an error while transform feedback records, even of the same one)
+        if (!Recording()) gl_.UseProgram(feedback_);
+        break;
     }
     if (indices.empty()) {
       gl_.DrawArrays(mode, 0, int(vertices.size()));
@@ -600,6 +621,45 @@ class SoftglBackend final : public Backend {
     return v;
   }
   void ClampColor(Enum target, Enum clamp) override { gl_.ClampColor(target, clamp); }
+  void FeedbackVaryings(const std::vector<int>& which, Enum buffer_mode) override {
+    std::vector<softgl::FeedbackVarying> v;
+    for (int w : which)
+      v.push_back(w == 0   ? softgl::FeedbackVarying::Position()
+                  : w == 1 ? FeedbackShader::Capture(&FeedbackVaryings::color, "v_color")
+                           : FeedbackShader::Capture(&FeedbackVaryings::extra, "v_extra"));
+    gl_.TransformFeedbackVaryings(feedback_, int(v.size()), v.data(), buffer_mode);
+  }
+  std::uint32_t NewFeedbackBuffer(int floats) override {
+    const std::uint32_t id = gl_.GenBuffer();
+    gl_.BindBuffer(softgl::TRANSFORM_FEEDBACK_BUFFER, id);
+    const std::vector<float> fill(std::size_t(floats), -7.0f);
+    gl_.BufferData(softgl::TRANSFORM_FEEDBACK_BUFFER, std::ptrdiff_t(fill.size() * sizeof(float)), fill.data(),
+                   softgl::STREAM_READ);
+    return id;
+  }
+  std::vector<float> ReadBufferFloats(std::uint32_t buffer, int floats) override {
+    std::vector<float> out(static_cast<std::size_t>(floats), 0.0f);
+    gl_.BindBuffer(softgl::COPY_READ_BUFFER, buffer);
+    gl_.GetBufferSubData(softgl::COPY_READ_BUFFER, 0, std::ptrdiff_t(out.size() * sizeof(float)), out.data());
+    return out;
+  }
+  void BindBufferBase(std::uint32_t index, std::uint32_t buffer) override {
+    gl_.BindBufferBase(softgl::TRANSFORM_FEEDBACK_BUFFER, index, buffer);
+  }
+  void BindBufferRange(std::uint32_t index, std::uint32_t buffer, std::ptrdiff_t offset, std::ptrdiff_t size) override {
+    gl_.BindBufferRange(softgl::TRANSFORM_FEEDBACK_BUFFER, index, buffer, offset, size);
+  }
+  void BeginTransformFeedback(Enum mode) override { gl_.BeginTransformFeedback(mode); }
+  void EndTransformFeedback() override { gl_.EndTransformFeedback(); }
+  void PauseTransformFeedback() override { gl_.PauseTransformFeedback(); }
+  void ResumeTransformFeedback() override { gl_.ResumeTransformFeedback(); }
+  std::uint32_t GenTransformFeedback() override { return gl_.GenTransformFeedback(); }
+  void BindTransformFeedback(std::uint32_t id) override { gl_.BindTransformFeedback(softgl::TRANSFORM_FEEDBACK, id); }
+  void DrawTransformFeedback(Enum mode, std::uint32_t id) override {
+    gl_.UseProgram(feedback_);
+    gl_.DrawTransformFeedback(mode, id);
+  }
+  void ProvokingVertex(Enum convention) override { gl_.ProvokingVertex(convention); }
   static softgl::Sync Handle(const void* sync) {
     return static_cast<softgl::Sync>(const_cast<void*>(sync));
   }
@@ -651,6 +711,13 @@ class SoftglBackend final : public Backend {
   FetchSampleShader fetch_sample_;
   OutputsShader outputs_;
   PointCoordShader point_coord_;
+  FeedbackShader feedback_;
+  bool Recording() {
+    bool active = false, paused = false;
+    gl_.GetBooleanv(softgl::TRANSFORM_FEEDBACK_BUFFER_ACTIVE, &active);
+    gl_.GetBooleanv(softgl::TRANSFORM_FEEDBACK_BUFFER_PAUSED, &paused);
+    return active && !paused;
+  }
   std::uint32_t rtt_color_ = 0;
 };
 

@@ -621,6 +621,168 @@ TEST_CASE("per-draw-buffer state (ColorMaski, Enablei) and the indexed queries a
   CompareSteps(16, run);
 }
 
+TEST_CASE("transform feedback: recorded values, counts, state and errors as Mesa's", "[conformance]") {
+  namespace gl = softgl;
+  auto run = [](Backend& b) {
+    std::vector<std::int64_t> out;
+    const auto step = Recorder(b, out);
+    auto floats = [&](std::uint32_t buffer, int n) {  // each float's bits
+      for (float f : b.ReadBufferFloats(buffer, n)) {
+        std::uint32_t bits = 0;
+        std::memcpy(&bits, &f, 4);
+        step(bits);
+      }
+    };
+    auto bindings = [&] {
+      for (std::uint32_t i = 0; i < 4; ++i)
+        for (Enum pname : {gl::TRANSFORM_FEEDBACK_BUFFER_BINDING, gl::TRANSFORM_FEEDBACK_BUFFER_START,
+                           gl::TRANSFORM_FEEDBACK_BUFFER_SIZE})
+          step(b.GetIntegersI(pname, i, 1)[0]);
+      step(b.GetIntegers(gl::TRANSFORM_FEEDBACK_BUFFER_BINDING, 1)[0]);
+    };
+    std::vector<Vertex> v;
+    for (int i = 0; i < 8; ++i)
+      v.push_back({glm::vec4(-0.8f + 0.2f * float(i), float(i % 3) * 0.3f - 0.4f, 0.1f * float(i), 1.0f + 0.25f * float(i)),
+                   glm::vec4(0.125f * float(i), 0.5f, 1.0f - 0.125f * float(i), 1.0f),
+                   glm::vec4(float(i), 0.5f * float(i), -1.0f, 3.0f)});
+    for (Enum pname : {gl::MAX_TRANSFORM_FEEDBACK_INTERLEAVED_COMPONENTS, gl::MAX_TRANSFORM_FEEDBACK_SEPARATE_ATTRIBS,
+                       gl::MAX_TRANSFORM_FEEDBACK_SEPARATE_COMPONENTS})
+      step(b.GetIntegers(pname, 1)[0] >= (pname == gl::MAX_TRANSFORM_FEEDBACK_INTERLEAVED_COMPONENTS ? 64 : 4));
+    bindings();
+    // Interleaved: colour, extra and position; strips, fans and loops taken apart, indexed draws, both provoking
+    // vertex conventions.
+    b.FeedbackVaryings({1, 2, 0}, gl::INTERLEAVED_ATTRIBS);
+    step(0);
+    const std::uint32_t a = b.NewFeedbackBuffer(1200);
+    b.BindBufferBase(0, a);
+    step(0);
+    bindings();
+    const std::uint32_t written = b.GenQuery(), generated = b.GenQuery();
+    b.Draw(gl::TRIANGLES, v, Program::kFeedback);  // (makes the program current)
+    b.BeginQuery(gl::TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN, written);
+    b.BeginQuery(gl::PRIMITIVES_GENERATED, generated);
+    b.BeginTransformFeedback(gl::TRIANGLES);
+    step(0);
+    for (Enum convention : {gl::LAST_VERTEX_CONVENTION, gl::FIRST_VERTEX_CONVENTION}) {
+      b.PauseTransformFeedback();
+      b.ProvokingVertex(convention);
+      b.ResumeTransformFeedback();
+      step(0);
+      b.Draw(gl::TRIANGLE_STRIP, {v.begin(), v.begin() + 7}, Program::kFeedback);
+      b.Draw(gl::TRIANGLE_FAN, {v.begin(), v.begin() + 6}, Program::kFeedback);
+      b.Draw(gl::TRIANGLES, v, {7, 2, 5, 0, 0, 3}, Program::kFeedback, Uniforms{});
+      step(0);
+      b.Draw(gl::LINES, v, Program::kFeedback);  // another kind: INVALID_OPERATION
+      step(0);
+    }
+    b.EndTransformFeedback();
+    b.EndQuery(gl::PRIMITIVES_GENERATED);
+    b.EndQuery(gl::TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN);
+    step(b.QueryResult(written));
+    step(b.QueryResult(generated));
+    floats(a, 1200);
+    // Lines and points, separate buffers with ranges too small for every primitive.
+    b.ProvokingVertex(gl::LAST_VERTEX_CONVENTION);
+    b.FeedbackVaryings({0, 2}, gl::SEPARATE_ATTRIBS);
+    const std::uint32_t c = b.NewFeedbackBuffer(64), d = b.NewFeedbackBuffer(64);
+    b.BindBufferRange(0, c, 16, 160);  // 10 vertices of 4 floats from float 4
+    b.BindBufferBase(1, d);
+    bindings();
+    b.BeginQuery(gl::TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN, written);
+    b.BeginTransformFeedback(gl::LINES);
+    b.Draw(gl::LINE_LOOP, {v.begin(), v.begin() + 4}, Program::kFeedback);  // 4 lines
+    b.Draw(gl::LINE_STRIP, {v.begin() + 3, v.begin() + 6}, Program::kFeedback);  // 2 lines: the second does not fit
+    b.EndTransformFeedback();
+    b.EndQuery(gl::TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN);
+    step(b.QueryResult(written));
+    floats(c, 64);
+    floats(d, 64);
+    // Points, paused in the middle (any mode then), and RASTERIZER_DISCARD: recorded, not drawn, clears dropped.
+    b.FeedbackVaryings({2}, gl::INTERLEAVED_ATTRIBS);
+    const std::uint32_t e = b.NewFeedbackBuffer(64);
+    b.BindBufferBase(0, e);
+    b.ClearColor(0, 0, 1, 1);
+    b.Clear(gl::COLOR_BUFFER_BIT);
+    b.Enable(gl::RASTERIZER_DISCARD);
+    b.BeginTransformFeedback(gl::POINTS);
+    b.Draw(gl::POINTS, {v.begin(), v.begin() + 2}, Program::kFeedback);
+    b.PauseTransformFeedback();
+    b.Draw(gl::TRIANGLES, {v.begin(), v.begin() + 3}, Program::kFeedback);
+    b.ResumeTransformFeedback();
+    b.Draw(gl::POINTS, {v.begin() + 5, v.begin() + 7}, Program::kFeedback);
+    step(0);
+    b.ClearColor(0, 1, 0, 1);
+    b.Clear(gl::COLOR_BUFFER_BIT);
+    b.EndTransformFeedback();
+    b.Disable(gl::RASTERIZER_DISCARD);
+    floats(e, 64);
+    const Frame f = b.Read();
+    step(f.rgba[(8 * f.width + 8) * 4 + 1]);
+    step(f.rgba[(8 * f.width + 8) * 4 + 2]);
+    // Objects: recorded in one, drawn by DrawTransformFeedback (counted by PRIMITIVES_GENERATED). (Mesa 22.3.6
+    // counts the vertices as the bytes recorded over the stride of the draw's vertex buffer, so the layout here
+    // is a Vertex's 48 bytes; docs/conformance.md.)
+    const std::uint32_t object = b.GenTransformFeedback();
+    b.BindTransformFeedback(object);
+    step(0);
+    bindings();
+    b.FeedbackVaryings({1, 2, 0}, gl::INTERLEAVED_ATTRIBS);
+    b.BindBufferBase(0, a);
+    b.BeginTransformFeedback(gl::TRIANGLES);
+    b.Draw(gl::TRIANGLE_STRIP, {v.begin(), v.begin() + 5}, Program::kFeedback);
+    b.EndTransformFeedback();
+    b.BindTransformFeedback(0);
+    bindings();
+    b.BeginQuery(gl::PRIMITIVES_GENERATED, generated);
+    b.DrawTransformFeedback(gl::POINTS, object);
+    step(0);
+    b.EndQuery(gl::PRIMITIVES_GENERATED);
+    step(b.QueryResult(generated));
+    // Errors.
+    b.FeedbackVaryings({0, 1, 2, 0, 1}, gl::SEPARATE_ATTRIBS);  // more than 4 separate
+    step(0);
+    b.BindBufferBase(4, e);
+    step(0);
+    b.BindBufferRange(0, e, 2, 16);
+    step(0);
+    b.BindBufferRange(0, e, 0, 0);
+    step(0);
+    b.BindBufferBase(0, e + 100);
+    step(0);
+    b.BeginTransformFeedback(gl::TRIANGLE_STRIP);
+    step(0);
+    b.EndTransformFeedback();
+    step(0);
+    b.PauseTransformFeedback();
+    step(0);
+    b.BindBufferBase(0, 0);
+    b.BeginTransformFeedback(gl::POINTS);  // binding 0 empty
+    step(0);
+    b.BindBufferBase(0, e);
+    b.BeginTransformFeedback(gl::POINTS);
+    b.BeginTransformFeedback(gl::POINTS);
+    step(0);
+    b.BindBufferBase(0, e);
+    step(0);
+    b.BindTransformFeedback(object);
+    step(0);
+    b.ResumeTransformFeedback();
+    step(0);
+    b.EndTransformFeedback();
+    b.DrawTransformFeedback(gl::POINTS, object + 100);
+    step(0);
+    const std::uint32_t fresh = b.GenTransformFeedback();
+    b.DrawTransformFeedback(gl::POINTS, fresh);  // never bound: no object yet
+    step(0);
+    b.BindTransformFeedback(fresh);
+    b.BindTransformFeedback(0);
+    b.DrawTransformFeedback(gl::POINTS, fresh);  // never ended
+    step(0);
+    return out;
+  };
+  CompareSteps(16, run);
+}
+
 int main(int argc, char** argv) {
   if (argc > 1 && std::string(argv[1]) == "--report") {
     for (const SceneInfo& s : Scenes()) {
