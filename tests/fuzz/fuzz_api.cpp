@@ -48,12 +48,13 @@ constexpr std::uint32_t kCaps[] = {CULL_FACE, DEPTH_TEST, STENCIL_TEST, SCISSOR_
                                    POLYGON_OFFSET_LINE, POLYGON_OFFSET_POINT, PROGRAM_POINT_SIZE,
                                    PRIMITIVE_RESTART, PRIMITIVE_RESTART_FIXED_INDEX, MULTISAMPLE,
                                    SAMPLE_ALPHA_TO_COVERAGE, SAMPLE_ALPHA_TO_ONE, SAMPLE_COVERAGE, SAMPLE_MASK,
-                                   SAMPLE_SHADING};
+                                   SAMPLE_SHADING, RASTERIZER_DISCARD};
 constexpr std::uint32_t kModes[] = {POINTS, LINES, LINE_LOOP, LINE_STRIP, TRIANGLES, TRIANGLE_STRIP, TRIANGLE_FAN};
 constexpr std::uint32_t kTypes[] = {BYTE, UNSIGNED_BYTE, SHORT, UNSIGNED_SHORT, INT, UNSIGNED_INT, FLOAT, HALF_FLOAT,
                                     DOUBLE, INT_2_10_10_10_REV, UNSIGNED_INT_2_10_10_10_REV};
 constexpr std::uint32_t kIndexTypes[] = {UNSIGNED_BYTE, UNSIGNED_SHORT, UNSIGNED_INT};
-constexpr std::uint32_t kBufferTargets[] = {ARRAY_BUFFER, ELEMENT_ARRAY_BUFFER, COPY_READ_BUFFER, COPY_WRITE_BUFFER};
+constexpr std::uint32_t kBufferTargets[] = {ARRAY_BUFFER, ELEMENT_ARRAY_BUFFER, COPY_READ_BUFFER, COPY_WRITE_BUFFER,
+                                            TRANSFORM_FEEDBACK_BUFFER};
 constexpr std::uint32_t kTexTargets[] = {TEXTURE_2D, TEXTURE_CUBE_MAP, TEXTURE_2D_ARRAY, TEXTURE_3D,
                                          TEXTURE_2D_MULTISAMPLE};
 constexpr std::uint32_t kImageTargets[] = {TEXTURE_2D,
@@ -145,7 +146,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   };
   for (int step = 0; step < 200 && !in.Empty(); ++step) {
     const auto id = [&] { return std::uint32_t(in.Byte() % 8); };
-    switch (in.Byte() % 47) {
+    switch (in.Byte() % 48) {
       case 0: gl.GenBuffer(); break;
       case 1: gl.BindBuffer(in.Enum(kBufferTargets), id()); break;
       case 2: {
@@ -660,6 +661,53 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
           default: gl.ClampColor(in.Byte() % 8 ? CLAMP_READ_COLOR : CLAMP_TO_EDGE, std::uint32_t(in.Byte() % 4 ? in.Int(0, 2) : FIXED_ONLY)); break;
         }
         (void)gl.IsSync(sync());
+        break;
+      }
+      case 46: {  // transform feedback: varyings (good and bad), bindings, Begin ... End, objects, their queries
+        static const FeedbackVarying kVaryings[] = {
+            FeedbackVarying::Position(), FuzzShader::Capture(&Vary::a, "a"), FuzzShader::Capture(&Vary::dir, "dir"),
+            FuzzShader::Capture(&Vary::uv, "uv"), {"past", 8, 2}, {"none", 0, 0}, {nullptr, 0, 1}};
+        constexpr std::uint32_t kFeedbackNames[] = {TRANSFORM_FEEDBACK_BUFFER_BINDING, TRANSFORM_FEEDBACK_BUFFER_START,
+                                                    TRANSFORM_FEEDBACK_BUFFER_SIZE, BLEND};
+        const auto target = [&] { return in.Byte() % 8 ? TRANSFORM_FEEDBACK_BUFFER : ARRAY_BUFFER; };
+        switch (in.Byte() % 10) {
+          case 0: {
+            FeedbackVarying pick[6];
+            const int n = std::min(in.Int(-1, 6), 6);  // (negative ones too: the error)
+            for (int i = 0; i < n; ++i) pick[i] = kVaryings[in.Byte() % 7];
+            const std::uint32_t mode = in.Byte() % 2 ? INTERLEAVED_ATTRIBS : in.Byte() % 4 ? SEPARATE_ATTRIBS : TRIANGLES;
+            gl.TransformFeedbackVaryings(shader, n, in.Byte() % 8 ? pick : nullptr, mode);
+            break;
+          }
+          case 1: gl.BindBufferRange(target(), std::uint32_t(in.Byte() % 6), id(), in.Int(-4, 64), in.Int(-4, 256)); break;
+          case 2: gl.BindBufferBase(target(), std::uint32_t(in.Byte() % 6), id()); break;
+          case 3: gl.BeginTransformFeedback(in.Enum(kModes)); break;
+          case 4: gl.EndTransformFeedback(); break;
+          case 5: in.Byte() % 2 ? gl.PauseTransformFeedback() : gl.ResumeTransformFeedback(); break;
+          case 6: in.Byte() % 2 ? void(gl.GenTransformFeedback()) : gl.BindTransformFeedback(in.Byte() % 8 ? TRANSFORM_FEEDBACK : TRIANGLES, id()); break;
+          case 7: {
+            const std::uint32_t ids[2] = {id(), id()};
+            gl.DeleteTransformFeedbacks(std::min(in.Int(-1, 2), 2), in.Byte() % 8 ? ids : nullptr);
+            break;
+          }
+          case 8: {  // (each draws at most the vertices recorded, which draws counted already: a share of the budget)
+            if (drawn >= kDrawBudget) break;
+            drawn += kDrawBudget / 4;
+            gl.DrawTransformFeedback(in.Enum(kModes), id());
+            break;
+          }
+          default: {
+            char name[8];
+            int length = 0, size = 0;
+            Enum type = 0;
+            gl.GetTransformFeedbackVarying(shader, std::uint32_t(in.Byte() % 8), in.Int(-1, 8), in.Byte() % 2 ? &length : nullptr,
+                                           &size, &type, in.Byte() % 4 ? name : nullptr);
+            std::int64_t values[4];
+            gl.GetInteger64i_v(in.Enum(kFeedbackNames), std::uint32_t(in.Byte() % 6), values);
+            (void)gl.IsTransformFeedback(id());
+            break;
+          }
+        }
         break;
       }
       default: {
