@@ -200,6 +200,16 @@ softgl::Image Instancing(int width, int height) {
 
 namespace {
 
+// A fixed hash of x into [0, 1): the same jitter on every machine.
+float Hash01(std::uint32_t x) {
+  x ^= x >> 16;
+  x *= 0x7FEB352Du;
+  x ^= x >> 15;
+  x *= 0x846CA68Bu;
+  x ^= x >> 16;
+  return float(x >> 8) / 16777216.0f;
+}
+
 struct SpriteVaryings {
   vec4 color;
 };
@@ -233,20 +243,12 @@ softgl::Image Particles(int width, int height) {
   // A fountain: particles leave the nozzle with jittered speeds (a fixed hash, the same on every machine), rise and
   // fall under gravity, each shown at its age; hot white-yellow when young, red and dim when old.
   constexpr int kParticles = 1500;
-  const auto hash = [](std::uint32_t x) {  // [0, 1)
-    x ^= x >> 16;
-    x *= 0x7FEB352Du;
-    x ^= x >> 15;
-    x *= 0x846CA68Bu;
-    x ^= x >> 16;
-    return float(x >> 8) / 16777216.0f;
-  };
   std::vector<float> data;
   data.reserve(kParticles * 8);
   for (int i = 0; i < kParticles; ++i) {
     const std::uint32_t k = std::uint32_t(i) * 4u;
-    const float age = hash(k), angle = 6.2831853f * hash(k + 1), spread = 0.4f + 1.1f * hash(k + 2);
-    const float speed = 5.4f + 1.0f * hash(k + 3);
+    const float age = Hash01(k), angle = 6.2831853f * Hash01(k + 1), spread = 0.4f + 1.1f * Hash01(k + 2);
+    const float speed = 5.4f + 1.0f * Hash01(k + 3);
     const glm::vec3 v(std::cos(angle) * spread, speed, std::sin(angle) * spread);
     const float t = age * 1.3f;  // seconds: the oldest are back near the nozzle's height
     const glm::vec3 p = v * t + glm::vec3(0.0f, -4.9f * t * t, 0.0f);
@@ -276,6 +278,124 @@ softgl::Image Particles(int width, int height) {
   gl.ClearColor(0.02f, 0.02f, 0.05f, 1.0f);
   gl.Clear(softgl::COLOR_BUFFER_BIT);
   gl.DrawArrays(softgl::POINTS, 0, kParticles);
+  return gl.ReadPixels();
+}
+
+namespace {
+
+struct StepVaryings {
+  vec4 position;  // xyz, and w: the particle's age in seconds (negative: not yet launched)
+  vec4 velocity;  // xyz, and w: the particle's launch speed, kept
+};
+
+// One step of the fountain on the vertex stage, recorded by transform feedback: attribute 0 a particle's position
+// and age, 1 its velocity. A particle waits at the nozzle until its age passes 0, then flies under gravity and
+// bounces on the floor (y = 0) losing half its speed.
+struct StepShader : softgl::Shader<StepShader, StepVaryings> {
+  float dt = 1.0f / 60.0f;
+  void Vertex(const VertexLanes& in, VertexLanesOut<StepVaryings>& out) const {
+    const Float age = in.attrib[0].w + dt;
+    const softgl::Bool flying = age > 0.0f;
+    vec3 v = vec3(in.attrib[1]);
+    v.y = select(flying, v.y - 9.8f * dt, v.y);
+    vec3 p = vec3(in.attrib[0]) + v * select(flying, Float(dt), Float(0.0f));
+    const softgl::Bool below = p.y < 0.0f;
+    p.y = select(below, -p.y, p.y);
+    v = select(below, vec3(v.x * 0.7f, -v.y * 0.5f, v.z * 0.7f), v);
+    out.varyings.position = vec4(p, age);
+    out.varyings.velocity = vec4(v, in.attrib[1].w);
+    out.position = vec4(0.0f, 0.0f, 0.0f, 1.0f);  // (nothing is drawn: RASTERIZER_DISCARD)
+  }
+  void Fragment(const FragmentLanes<StepVaryings>&, FragmentLanesOut&) const {}
+};
+
+// The particles as small glowing points, coloured by age, at `brightness` (older snapshots dimmer: trails).
+struct TrailVaryings {
+  vec4 color;
+};
+
+struct TrailShader : softgl::Shader<TrailShader, TrailVaryings> {
+  glm::mat4 view_proj{1.0f};
+  float size_at_unit_distance = 20.0f;  // pixels
+  float brightness = 1.0f;
+  void Vertex(const VertexLanes& in, VertexLanesOut<TrailVaryings>& out) const {
+    out.position = view_proj * vec4(vec3(in.attrib[0]), 1.0f);
+    out.point_size = size_at_unit_distance / max(out.position.w, 0.1f);
+    const Float t = clamp(in.attrib[0].w * 0.5f, 0.0f, 1.0f);  // young: blue-white, old: violet
+    const vec3 c = mix(vec3(0.7f, 0.9f, 1.0f), vec3(0.6f, 0.2f, 0.9f), t);
+    out.varyings.color = vec4(c, select(in.attrib[0].w > 0.0f, Float(brightness), Float(0.0f)));
+  }
+  void Fragment(const FragmentLanes<TrailVaryings>& in, FragmentLanesOut& out) const {
+    const vec2 d = in.point_coord * 2.0f - 1.0f;
+    const Float r2 = dot(d, d);
+    out.Discard(r2 > 1.0f);
+    out.color[0] = vec4(vec3(in.varyings.color) * ((1.0f - r2) * in.varyings.color.w), 1.0f);
+  }
+};
+
+}  // namespace
+
+softgl::Image FeedbackParticles(int width, int height) {
+  softgl::Context gl(width, height);
+  // 800 particles launched one after another from a nozzle; every step of the simulation runs on the vertex stage
+  // and transform feedback writes the new state into the other of two buffers (the state never leaves them).
+  constexpr int kParticles = 800, kSteps = 150, kTrailEvery = 2;
+  std::vector<float> start;
+  start.reserve(kParticles * 8);
+  for (int i = 0; i < kParticles; ++i) {
+    const std::uint32_t k = std::uint32_t(i) * 3u + 7u;
+    const float angle = 6.2831853f * Hash01(k), spread = 0.5f + 0.9f * Hash01(k + 1);
+    const float speed = 5.0f + 1.2f * Hash01(k + 2);
+    const float wait = -2.2f * float(i) / float(kParticles);
+    const float v8[8] = {0.0f, 0.2f, 0.0f, wait, std::cos(angle) * spread, speed, std::sin(angle) * spread, speed};
+    start.insert(start.end(), v8, v8 + 8);
+  }
+  const std::ptrdiff_t bytes = std::ptrdiff_t(start.size() * sizeof(float));
+  std::uint32_t state[2] = {gl.GenBuffer(), gl.GenBuffer()}, arrays[2] = {gl.GenVertexArray(), gl.GenVertexArray()};
+  for (int b = 0; b < 2; ++b) {  // vertex array b reads state buffer b
+    gl.BindVertexArray(arrays[b]);
+    gl.BindBuffer(softgl::ARRAY_BUFFER, state[b]);
+    gl.BufferData(softgl::ARRAY_BUFFER, bytes, b == 0 ? start.data() : nullptr, softgl::DYNAMIC_COPY);
+    gl.VertexAttributePointer(0, 4, softgl::FLOAT, false, 8 * sizeof(float), 0);
+    gl.VertexAttributePointer(1, 4, softgl::FLOAT, false, 8 * sizeof(float), 4 * sizeof(float));
+    gl.EnableVertexAttribArray(0);
+    gl.EnableVertexAttribArray(1);
+  }
+  StepShader step;
+  const softgl::FeedbackVarying record[] = {StepShader::Capture(&StepVaryings::position, "position"),
+                                            StepShader::Capture(&StepVaryings::velocity, "velocity")};
+  gl.TransformFeedbackVaryings(step, 2, record, softgl::INTERLEAVED_ATTRIBS);
+
+  TrailShader trail;
+  const glm::mat4 view = glm::lookAt(glm::vec3(0.0f, 2.4f, 5.2f), glm::vec3(0.0f, 0.8f, 0.0f), glm::vec3(0, 1, 0));
+  trail.view_proj = Projection(width, height, 45.0f, 0.1f, 50.0f) * view;
+  trail.size_at_unit_distance = 0.05f * float(height);
+  gl.Enable(softgl::PROGRAM_POINT_SIZE);
+  gl.BlendFunc(softgl::ONE, softgl::ONE);  // additive: the order of the points does not matter
+  gl.ClearColor(0.01f, 0.01f, 0.03f, 1.0f);
+  gl.Clear(softgl::COLOR_BUFFER_BIT);
+  int current = 0;
+  for (int s = 1; s <= kSteps; ++s) {
+    // The step: read buffer `current`, record into the other, nothing rasterized.
+    gl.UseProgram(step);
+    gl.BindVertexArray(arrays[current]);
+    gl.Enable(softgl::RASTERIZER_DISCARD);
+    gl.BindBufferBase(softgl::TRANSFORM_FEEDBACK_BUFFER, 0, state[1 - current]);
+    gl.BeginTransformFeedback(softgl::POINTS);
+    gl.DrawArrays(softgl::POINTS, 0, kParticles);
+    gl.EndTransformFeedback();
+    gl.Disable(softgl::RASTERIZER_DISCARD);
+    current = 1 - current;
+    if (s % kTrailEvery != 0) continue;
+    // A snapshot of the particles, brighter the later it is: the last one full, the earlier ones faint trails.
+    trail.brightness = s == kSteps ? 0.9f : 0.03f + 0.15f * float(s) / float(kSteps);
+    trail.size_at_unit_distance = (s == kSteps ? 0.05f : 0.03f) * float(height);
+    gl.UseProgram(trail);
+    gl.BindVertexArray(arrays[current]);
+    gl.Enable(softgl::BLEND);
+    gl.DrawArrays(softgl::POINTS, 0, kParticles);
+    gl.Disable(softgl::BLEND);
+  }
   return gl.ReadPixels();
 }
 

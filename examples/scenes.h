@@ -90,6 +90,10 @@ softgl::Image Instancing(int width, int height);
 /// from gl_PointCoord, additive blending.
 softgl::Image Particles(int width, int height);
 
+/// A fountain simulated on the vertex stage: each step recorded by transform feedback into the other of two
+/// buffers (RASTERIZER_DISCARD), snapshots drawn as points that leave trails.
+softgl::Image FeedbackParticles(int width, int height);
+
 // ---- The guided tour (docs/tour.md): one picture per stage, each quantity made visible by a shader ----------
 
 /// Clipping: left, a floor triangle seen from above with the camera's view volume (near plane in yellow), red where

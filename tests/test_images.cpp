@@ -100,6 +100,9 @@ TEST_CASE("image: post-processing", "[image]") { CompareWithGolden("post_process
 TEST_CASE("image: instancing", "[image]") { CompareWithGolden("instancing", scenes::Instancing(800, 500)); }
 
 TEST_CASE("image: particles", "[image]") { CompareWithGolden("particles", scenes::Particles(640, 400)); }
+TEST_CASE("image: feedback_particles", "[image]") {
+  CompareWithGolden("feedback_particles", scenes::FeedbackParticles(640, 400));
+}
 
 TEST_CASE("image: environment map", "[image]") {
   CompareWithGolden("environment_map", scenes::EnvironmentMap(640, 480));
