@@ -462,11 +462,17 @@ namespace {
 void RecordClear(ContextState& s, const detail::RenderTarget& target, const detail::ClearPacket& clear,
                  const char* what) {
   if ((!clear.color && !clear.depth && !clear.stencil) || s.condition_discards || s.rasterizer_discard) return;
-  if (!s.frame.Accepts(target)) s.Sync(what);
-  try {
-    s.frame.AddClear(target, clear);
-  } catch (const std::bad_alloc&) {
-    s.SetError(OUT_OF_MEMORY, what, "out of memory");
+  // A layered framebuffer object: every layer of each attachment (OpenGL 4.6, section 17.4.3), `target` being
+  // layer 0's.
+  const int layers = s.DrawLayers();
+  for (int l = 0; l < layers; ++l) {
+    const detail::RenderTarget t = l == 0 ? target : s.DrawLayer(l);
+    if (!s.frame.Accepts(t)) s.Sync(what);
+    try {
+      s.frame.AddClear(t, clear);
+    } catch (const std::bad_alloc&) {
+      return s.SetError(OUT_OF_MEMORY, what, "out of memory");
+    }
   }
 }
 

@@ -33,11 +33,31 @@ Enum FramebufferStatus(const FramebufferObject& f) {
       return FRAMEBUFFER_INCOMPLETE_ATTACHMENT;
   }
   if (!any) return FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT;
+  // A layered cube map attachment needs all six faces' images alike.
+  for (const Attachment* a : {&f.color[0], &f.color[1], &f.color[2], &f.color[3], &f.color[4], &f.color[5],
+                              &f.color[6], &f.color[7], &f.depth, &f.stencil}) {
+    if (!a->layered || a->texture->target != TEXTURE_CUBE_MAP) continue;
+    const detail::TextureLevel& first = a->texture->levels[0][a->level];
+    for (int face = 1; face < 6; ++face) {
+      const detail::TextureLevel& l = a->texture->levels[face][a->level];
+      if (!l.Defined() || l.width != first.width || l.height != first.height || l.format != first.format)
+        return FRAMEBUFFER_INCOMPLETE_ATTACHMENT;
+    }
+  }
   int samples = 0;  // every image must have as many samples (section 9.4.2)
-  for (const Attachment* a : {&f.color[0], &f.color[1], &f.color[2], &f.color[3], &f.depth, &f.stencil}) {
+  int layered = -1;  // every attachment layered or none, the layered ones of one texture target (section 9.4.2)
+  Enum layer_target = 0;
+  for (const Attachment* a : {&f.color[0], &f.color[1], &f.color[2], &f.color[3], &f.color[4], &f.color[5],
+                              &f.color[6], &f.color[7], &f.depth, &f.stencil}) {
     if (!a->Present()) continue;
     if (samples != 0 && a->Level()->samples != samples) return FRAMEBUFFER_INCOMPLETE_MULTISAMPLE;
     samples = a->Level()->samples;
+    if (layered >= 0 && int(a->layered) != layered) return FRAMEBUFFER_INCOMPLETE_LAYER_TARGETS;
+    layered = int(a->layered);
+    if (a->layered && a != &f.depth && a != &f.stencil) {
+      if (layer_target != 0 && a->texture->target != layer_target) return FRAMEBUFFER_INCOMPLETE_LAYER_TARGETS;
+      layer_target = a->texture->target;
+    }
   }
   for (Enum b : f.draw_buffers)
     if (b != NONE && !f.color[b - COLOR_ATTACHMENT0].Present()) return FRAMEBUFFER_INCOMPLETE_DRAW_BUFFER;
@@ -46,7 +66,22 @@ Enum FramebufferStatus(const FramebufferObject& f) {
 
 // The buffers of a complete framebuffer object, drawn through its draw buffers; its size is the intersection of
 // its attachments'.
-detail::RenderTarget FramebufferTarget(const FramebufferObject& f, bool srgb) {
+int FramebufferLayers(const FramebufferObject& f) {
+  int layers = 1;
+  for (const Attachment& a : f.color) layers = std::max(layers, a.Layers());
+  return std::max({layers, f.depth.Layers(), f.stencil.Layers()});
+}
+
+detail::RenderTarget FramebufferTarget(const FramebufferObject& f, bool srgb, int layer) {
+  bool layered = f.depth.layered || f.stencil.layered;
+  for (const Attachment& a : f.color) layered = layered || a.layered;
+  if (layered) {  // the one layer's images, as attachments of their own
+    FramebufferObject one = f;
+    for (Attachment& a : one.color) a = a.AtLayer(layer);
+    one.depth = f.depth.AtLayer(layer);
+    one.stencil = f.stencil.AtLayer(layer);
+    return FramebufferTarget(one, srgb, 0);
+  }
   detail::RenderTarget t;
   t.width = t.height = 1 << 30;
   auto fit = [&](const Attachment& a) {
@@ -548,47 +583,92 @@ int TextureSlots(ContextState& s, const char* what, Enum target, Enum attachment
   for (int k = 0; k < n; ++k) *slots[k] = Attachment{};
   return 0;
 }
+
+// The start of every FramebufferTexture call: renders what was recorded (attachments are about to change), then
+// TextureSlots.
+int AttachmentSlots(ContextState& s, const char* what, Enum target, Enum attachment, std::uint32_t texture,
+                    Attachment* slots[2]) {
+  s.Sync(what);
+  return TextureSlots(s, what, target, attachment, texture, slots);
+}
+
+// The texture named `texture`, or null with `missing` recorded when there is none (or, `bound`, when it has never
+// been bound).
+const std::shared_ptr<detail::TextureObject>* AttachedTexture(ContextState& s, const char* what, std::uint32_t texture,
+                                                              Enum missing, bool bound = false) {
+  auto it = s.textures.find(texture);
+  if (it == s.textures.end() || (bound && it->second->target == 0)) return s.SetError(missing, what, "not a texture id made by GenTexture (or it was deleted, or never bound)"), nullptr;
+  return &it->second;
+}
+
+// Attaches `texture`'s level at the n points of `slots` (what TextureSlots found).
+void AttachTexture(Attachment* const* slots, int n, const std::shared_ptr<detail::TextureObject>& texture, int level,
+                   int face, int layer, bool layered) {
+  for (int k = 0; k < n; ++k) {
+    *slots[k] = Attachment{};
+    slots[k]->texture = texture;
+    slots[k]->level = level;
+    slots[k]->face = face;
+    slots[k]->layer = layer;
+    slots[k]->layered = layered;
+  }
+}
 }  // namespace
 
 void Context::FramebufferTexture2D(Enum target, Enum attachment, Enum textarget, std::uint32_t texture, int level) {
-  state_->Sync(__func__);
   auto& s = *state_;
   Attachment* slots[2] = {nullptr, nullptr};
-  const int n = TextureSlots(s, __func__, target, attachment, texture, slots);
+  const int n = AttachmentSlots(s, __func__, target, attachment, texture, slots);
   if (n == 0) return;
   if (!IsTexImageTarget(textarget) && textarget != TEXTURE_2D_MULTISAMPLE) return s.SetError(INVALID_ENUM, __func__, "textarget must be TEXTURE_2D, a TEXTURE_CUBE_MAP_* face or TEXTURE_2D_MULTISAMPLE");
-  auto it = s.textures.find(texture);
-  if (it == s.textures.end()) return s.SetError(INVALID_OPERATION, __func__, "not a texture id made by GenTexture (or it was deleted)");
+  const auto* it = AttachedTexture(s, __func__, texture, INVALID_OPERATION);
+  if (!it) return;
   const Enum kind = CubeFaceIndex(textarget) >= 0 ? TEXTURE_CUBE_MAP : textarget;
-  if (it->second->target != kind) return s.SetError(INVALID_OPERATION, __func__, "textarget does not match the texture (2D, cube map or 2D multisample)");
+  if ((*it)->target != kind) return s.SetError(INVALID_OPERATION, __func__, "textarget does not match the texture (2D, cube map or 2D multisample)");
   if (level < 0 || level >= detail::kMaxLevels || (kind == TEXTURE_2D_MULTISAMPLE && level != 0)) return s.SetError(INVALID_VALUE, __func__, "level is negative or beyond the largest mipmap level (a multisample texture has level 0 alone)");
-  for (int k = 0; k < n; ++k) {
-    *slots[k] = Attachment{};
-    slots[k]->texture = it->second;
-    slots[k]->face = kind == TEXTURE_CUBE_MAP ? CubeFaceIndex(textarget) : 0;
-    slots[k]->level = level;
-  }
+  AttachTexture(slots, n, (*it), level, kind == TEXTURE_CUBE_MAP ? CubeFaceIndex(textarget) : 0, 0, false);
 }
 
 void Context::FramebufferTextureLayer(Enum target, Enum attachment, std::uint32_t texture, int level, int layer) {
-  state_->Sync(__func__);
   auto& s = *state_;
   Attachment* slots[2] = {nullptr, nullptr};
-  const int n = TextureSlots(s, __func__, target, attachment, texture, slots);
+  const int n = AttachmentSlots(s, __func__, target, attachment, texture, slots);
   if (n == 0) return;
-  auto it = s.textures.find(texture);
-  if (it == s.textures.end()) return s.SetError(INVALID_OPERATION, __func__, "not a texture id made by GenTexture (or it was deleted)");
-  const Enum kind = it->second->target;
+  const auto* it = AttachedTexture(s, __func__, texture, INVALID_OPERATION);
+  if (!it) return;
+  const Enum kind = (*it)->target;
   if (kind != TEXTURE_2D_ARRAY && kind != TEXTURE_3D) return s.SetError(INVALID_OPERATION, __func__, "the texture is not a TEXTURE_2D_ARRAY or TEXTURE_3D");
   if (level < 0 || level >= detail::kMaxLevels) return s.SetError(INVALID_VALUE, __func__, "level is negative or beyond the largest mipmap level");
   if (layer < 0 || layer >= (kind == TEXTURE_3D ? kMax3DTextureSize : kMaxArrayTextureLayers))
     return s.SetError(INVALID_VALUE, __func__, "layer is negative or beyond the most layers a texture has");
-  for (int k = 0; k < n; ++k) {
-    *slots[k] = Attachment{};
-    slots[k]->texture = it->second;
-    slots[k]->level = level;
-    slots[k]->layer = layer;
-  }
+  AttachTexture(slots, n, (*it), level, 0, layer, false);
+}
+
+void Context::FramebufferTexture(Enum target, Enum attachment, std::uint32_t texture, int level) {
+  auto& s = *state_;
+  Attachment* slots[2] = {nullptr, nullptr};
+  const int n = AttachmentSlots(s, __func__, target, attachment, texture, slots);
+  if (n == 0) return;
+  // (OpenGL 4.6, section 9.2.8: INVALID_VALUE here, where the other FramebufferTexture calls say INVALID_OPERATION.)
+  const auto* it = AttachedTexture(s, __func__, texture, INVALID_VALUE, true);
+  if (!it) return;
+  const Enum kind = (*it)->target;
+  if (level < 0 || level >= LevelCount(kind) || (kind == TEXTURE_2D_MULTISAMPLE && level != 0)) return s.SetError(INVALID_VALUE, __func__, "level is negative or beyond the texture's largest mipmap level");
+  AttachTexture(slots, n, (*it), level, 0, 0, kind == TEXTURE_CUBE_MAP || kind == TEXTURE_2D_ARRAY || kind == TEXTURE_3D);
+}
+
+void Context::FramebufferTexture3D(Enum target, Enum attachment, Enum textarget, std::uint32_t texture, int level,
+                                   int zoffset) {
+  auto& s = *state_;
+  Attachment* slots[2] = {nullptr, nullptr};
+  const int n = AttachmentSlots(s, __func__, target, attachment, texture, slots);
+  if (n == 0) return;
+  const auto* it = AttachedTexture(s, __func__, texture, INVALID_OPERATION);
+  if (!it) return;
+  if (textarget != TEXTURE_3D || (*it)->target != TEXTURE_3D) return s.SetError(INVALID_OPERATION, __func__, "textarget and the texture must be TEXTURE_3D");
+  if (level < 0 || level >= LevelCount(TEXTURE_3D)) return s.SetError(INVALID_VALUE, __func__, "level is negative or beyond the largest mipmap level");
+  if (zoffset < 0 || zoffset >= kMax3DTextureSize) return s.SetError(INVALID_VALUE, __func__, "zoffset is negative or beyond the most slices a texture has");
+  AttachTexture(slots, n, (*it), level, 0, zoffset, false);
 }
 
 void Context::FramebufferRenderbuffer(Enum target, Enum attachment, Enum renderbuffer_target,
@@ -618,7 +698,7 @@ void Context::GetFramebufferAttachmentParameteriv(Enum target, Enum attachment, 
   if (n == 0) return;
   const Attachment& a = *slots[0];
   if (n == 2 && (a.texture != slots[1]->texture || a.renderbuffer != slots[1]->renderbuffer || a.level != slots[1]->level || a.face != slots[1]->face ||
-                 a.layer != slots[1]->layer))
+                 a.layer != slots[1]->layer || a.layered != slots[1]->layered))
     return s.SetError(INVALID_OPERATION, __func__, "DEPTH_STENCIL_ATTACHMENT asked while depth and stencil hold different images");
   int v = 0;
   switch (pname) {
@@ -635,11 +715,15 @@ void Context::GetFramebufferAttachmentParameteriv(Enum target, Enum attachment, 
           : a.texture->target == TEXTURE_CUBE_MAP        ? int(TEXTURE_CUBE_MAP_POSITIVE_X) + a.face
                                                          : 0;
       break;
+    case FRAMEBUFFER_ATTACHMENT_LAYERED:
+      if (!a.texture) return s.SetError(a.Present() ? INVALID_ENUM : INVALID_OPERATION, __func__, "no texture is attached there");
+      v = a.layered ? 1 : 0;
+      break;
     case FRAMEBUFFER_ATTACHMENT_COLOR_ENCODING:
       if (!a.Present()) return s.SetError(INVALID_OPERATION, __func__, "nothing is attached there");
       v = int(a.Level()->srgb ? SRGB : LINEAR);
       break;
-    default: return s.SetError(INVALID_ENUM, __func__, "pname must be FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, _OBJECT_NAME, _TEXTURE_LEVEL, _TEXTURE_CUBE_MAP_FACE, _TEXTURE_LAYER or _COLOR_ENCODING");
+    default: return s.SetError(INVALID_ENUM, __func__, "pname must be FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, _OBJECT_NAME, _TEXTURE_LEVEL, _TEXTURE_CUBE_MAP_FACE, _TEXTURE_LAYER, _LAYERED or _COLOR_ENCODING");
   }
   if (NotNull(s, __func__, params, "params")) *params = v;
 }

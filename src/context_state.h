@@ -76,7 +76,26 @@ struct Attachment {
   int face = 0;
   int level = 0;
   int layer = 0;  // FramebufferTextureLayer: the layer (or 3D slice) drawn to
+  // FramebufferTexture of a cube map, array or 3D texture: every layer (cube face) is attached; drawing renders into
+  // layer 0 (face and layer are 0), clears clear them all (AtLayer).
+  bool layered = false;
   bool Present() const { return texture || renderbuffer; }
+  /// The layers of a layered attachment: 6 for a cube map, the level's layers or slices otherwise (1 when not
+  /// layered).
+  int Layers() const {
+    if (!layered) return 1;
+    return texture->target == TEXTURE_CUBE_MAP ? 6 : Level()->depth;
+  }
+  /// Layer `l` of a layered attachment as an attachment of that one layer (absent past its last); itself when not
+  /// layered.
+  Attachment AtLayer(int l) const {
+    if (!layered) return *this;
+    if (l >= Layers()) return Attachment{};
+    Attachment a = *this;
+    a.layered = false;
+    (texture->target == TEXTURE_CUBE_MAP ? a.face : a.layer) = l;
+    return a;
+  }
   /// Where the attached image starts in its level's planes, in texels (its layer's plane).
   std::size_t PlaneOffset() const {
     const detail::TextureLevel* l = Level();
@@ -182,7 +201,10 @@ inline bool IsTexImageTarget(Enum target) { return target == TEXTURE_2D || CubeF
 Enum FramebufferStatus(const FramebufferObject& f);
 // The buffers of a complete framebuffer object, drawn through its draw buffers; its size is the intersection of
 // its attachments'. With `srgb` (FRAMEBUFFER_SRGB enabled) its sRGB colour buffers convert (ColorBuffer::srgb).
-detail::RenderTarget FramebufferTarget(const FramebufferObject& f, bool srgb = false);
+// `layer`: of a layered framebuffer, that layer of each layered attachment (those with fewer layers absent).
+detail::RenderTarget FramebufferTarget(const FramebufferObject& f, bool srgb = false, int layer = 0);
+// The most layers of a layered attachment of `f` (1 when none is layered).
+int FramebufferLayers(const FramebufferObject& f);
 
 struct ContextState {
   Enum error = NO_ERROR;
@@ -333,6 +355,10 @@ struct ContextState {
     target = FramebufferTarget(*draw_fbo, framebuffer_srgb);
     return true;
   }
+  // The layers a clear of the draw framebuffer clears (1 unless a layered framebuffer object is bound), and layer
+  // l's buffers (a complete framebuffer is bound: DrawTarget said so).
+  int DrawLayers() const { return draw_fbo ? FramebufferLayers(*draw_fbo) : 1; }
+  detail::RenderTarget DrawLayer(int l) const { return FramebufferTarget(*draw_fbo, framebuffer_srgb, l); }
 
   // The texture bound to `target` of the active unit (a cube face target selects the cube map), and the face.
   detail::TextureObject* Bound(Enum target, int* face = nullptr) {

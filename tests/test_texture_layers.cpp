@@ -495,3 +495,126 @@ TEST_CASE("CopyTexSubImage3D copies into one layer; GetTexImage returns every la
   gl.CopyTexSubImage3D(TEXTURE_3D, 0, 0, 0, 0, 0, 0, 1, 1);
   CHECK(gl.GetError() == INVALID_OPERATION);
 }
+
+TEST_CASE("FramebufferTexture attaches every layer: clears clear them all, draws go to layer 0",
+          "[texture][layers][framebuffer]") {
+  for (Enum kind : {TEXTURE_2D_ARRAY, TEXTURE_3D, TEXTURE_CUBE_MAP}) {
+    INFO(kind);
+    const int layers = kind == TEXTURE_CUBE_MAP ? 6 : 3;
+    Context gl(4, 4);
+    const std::uint32_t color = gl.GenTexture(), depth = gl.GenTexture(), fbo = gl.GenFramebuffer();
+    gl.BindTexture(kind, color);
+    const std::vector<std::uint8_t> grey(4 * 4 * 4 * 3, 99);  // every texel grey 99 before
+    if (kind == TEXTURE_CUBE_MAP) {
+      for (int f = 0; f < 6; ++f) gl.TexImage2D(TEXTURE_CUBE_MAP_POSITIVE_X + Enum(f), 0, RGBA8, 4, 4, 0, RGBA, UNSIGNED_BYTE, grey.data());
+    } else {
+      gl.TexImage3D(kind, 0, RGBA8, 4, 4, 3, 0, RGBA, UNSIGNED_BYTE, grey.data());
+    }
+    gl.BindFramebuffer(FRAMEBUFFER, fbo);
+    gl.FramebufferTexture(FRAMEBUFFER, COLOR_ATTACHMENT0, color, 0);
+    int v = -1;
+    gl.GetFramebufferAttachmentParameteriv(FRAMEBUFFER, COLOR_ATTACHMENT0, FRAMEBUFFER_ATTACHMENT_LAYERED, &v);
+    CHECK(v == 1);
+    REQUIRE(gl.CheckFramebufferStatus(FRAMEBUFFER) == FRAMEBUFFER_COMPLETE);
+    if (kind == TEXTURE_2D_ARRAY) {  // with a layered depth array of as many layers
+      gl.BindTexture(TEXTURE_2D_ARRAY, depth);
+      gl.TexImage3D(TEXTURE_2D_ARRAY, 0, DEPTH_COMPONENT32F, 4, 4, 3, 0, DEPTH_COMPONENT, FLOAT, nullptr);
+      gl.FramebufferTexture(FRAMEBUFFER, DEPTH_ATTACHMENT, depth, 0);
+      REQUIRE(gl.CheckFramebufferStatus(FRAMEBUFFER) == FRAMEBUFFER_COMPLETE);
+      gl.ClearDepth(0.25);
+    }
+    gl.ClearColor(0.0f, 1.0f, 0.0f, 1.0f);
+    gl.Clear(COLOR_BUFFER_BIT | DEPTH_BUFFER_BIT);
+    testing::SolidShader solid;
+    solid.color = {1, 0, 0, 1};
+    gl.UseProgram(solid);
+    testing::MakeVertexArray(gl, {{-1, -1, -1, 1}, {0, -1, -1, 1}, {-1, 0, -1, 1}, {0, 0, -1, 1}});
+    gl.DrawArrays(TRIANGLE_STRIP, 0, 4);  // the bottom-left 2 x 2 pixels of layer 0 red
+    REQUIRE(gl.GetError() == NO_ERROR);
+    gl.BindFramebuffer(FRAMEBUFFER, 0);
+    // Every layer green, layer 0's corner red.
+    std::vector<std::uint8_t> out(std::size_t(4 * 4 * 4 * layers), 0xCD);
+    if (kind == TEXTURE_CUBE_MAP) {
+      for (int f = 0; f < 6; ++f)
+        gl.GetTexImage(TEXTURE_CUBE_MAP_POSITIVE_X + Enum(f), 0, RGBA, UNSIGNED_BYTE, out.data() + f * 64);
+    } else {
+      gl.BindTexture(kind, color);
+      gl.GetTexImage(kind, 0, RGBA, UNSIGNED_BYTE, out.data());
+    }
+    for (int l = 0; l < layers; ++l)
+      for (int p = 0; p < 16; ++p) {
+        const bool corner = l == 0 && p % 4 < 2 && p / 4 < 2;
+        const std::uint8_t* px = &out[std::size_t(l * 16 + p) * 4];
+        INFO("layer " << l << " pixel " << p);
+        CHECK(int(px[0]) == (corner ? 255 : 0));
+        CHECK(int(px[1]) == (corner ? 0 : 255));
+      }
+    if (kind == TEXTURE_2D_ARRAY) {
+      std::vector<float> d(4 * 4 * 3, -1.0f);
+      gl.BindTexture(TEXTURE_2D_ARRAY, depth);
+      gl.GetTexImage(TEXTURE_2D_ARRAY, 0, DEPTH_COMPONENT, FLOAT, d.data());
+      CHECK(d[0] == 0.25f);   // (the draw wrote no depth: DEPTH_TEST is off)
+      CHECK(d[16] == 0.25f);  // layer 1
+      CHECK(d[47] == 0.25f);  // layer 2
+    }
+    CHECK(gl.GetError() == NO_ERROR);
+  }
+}
+
+TEST_CASE("layered framebuffers: completeness, FramebufferTexture3D, errors", "[texture][layers][framebuffer]") {
+  Context gl(4, 4);
+  const std::uint32_t array = gl.GenTexture(), cube = gl.GenTexture(), vol = gl.GenTexture(), flat = gl.GenTexture();
+  gl.BindTexture(TEXTURE_2D_ARRAY, array);
+  gl.TexImage3D(TEXTURE_2D_ARRAY, 0, RGBA8, 4, 4, 2, 0, RGBA, UNSIGNED_BYTE, nullptr);
+  gl.BindTexture(TEXTURE_3D, vol);
+  gl.TexImage3D(TEXTURE_3D, 0, RGBA8, 4, 4, 4, 0, RGBA, UNSIGNED_BYTE, nullptr);
+  gl.BindTexture(TEXTURE_2D, flat);
+  gl.TexImage2D(TEXTURE_2D, 0, RGBA8, 4, 4, 0, RGBA, UNSIGNED_BYTE, nullptr);
+  gl.BindTexture(TEXTURE_CUBE_MAP, cube);
+  for (int f = 0; f < 5; ++f) gl.TexImage2D(TEXTURE_CUBE_MAP_POSITIVE_X + Enum(f), 0, RGBA8, 4, 4, 0, RGBA, UNSIGNED_BYTE, nullptr);
+  const std::uint32_t fbo = gl.GenFramebuffer();
+  gl.BindFramebuffer(FRAMEBUFFER, fbo);
+  // A layered attachment beside an unlayered one; layered ones of two targets.
+  gl.FramebufferTexture(FRAMEBUFFER, COLOR_ATTACHMENT0, array, 0);
+  gl.FramebufferTexture(FRAMEBUFFER, COLOR_ATTACHMENT0 + 1, flat, 0);  // a 2D texture: not layered
+  int v = -1;
+  gl.GetFramebufferAttachmentParameteriv(FRAMEBUFFER, COLOR_ATTACHMENT0 + 1, FRAMEBUFFER_ATTACHMENT_LAYERED, &v);
+  CHECK(v == 0);
+  CHECK(gl.CheckFramebufferStatus(FRAMEBUFFER) == FRAMEBUFFER_INCOMPLETE_LAYER_TARGETS);
+  gl.FramebufferTexture(FRAMEBUFFER, COLOR_ATTACHMENT0 + 1, vol, 0);
+  CHECK(gl.CheckFramebufferStatus(FRAMEBUFFER) == FRAMEBUFFER_INCOMPLETE_LAYER_TARGETS);
+  gl.FramebufferTexture(FRAMEBUFFER, COLOR_ATTACHMENT0 + 1, 0, 0);
+  CHECK(gl.CheckFramebufferStatus(FRAMEBUFFER) == FRAMEBUFFER_COMPLETE);
+  // A cube map with a face missing.
+  gl.FramebufferTexture(FRAMEBUFFER, COLOR_ATTACHMENT0, cube, 0);
+  CHECK(gl.CheckFramebufferStatus(FRAMEBUFFER) == FRAMEBUFFER_INCOMPLETE_ATTACHMENT);
+  gl.TexImage2D(TEXTURE_CUBE_MAP_NEGATIVE_Z, 0, RGBA8, 4, 4, 0, RGBA, UNSIGNED_BYTE, nullptr);
+  CHECK(gl.CheckFramebufferStatus(FRAMEBUFFER) == FRAMEBUFFER_COMPLETE);
+  // FramebufferTexture3D: one slice, as FramebufferTextureLayer.
+  gl.FramebufferTexture3D(FRAMEBUFFER, COLOR_ATTACHMENT0, TEXTURE_3D, vol, 0, 3);
+  CHECK(gl.CheckFramebufferStatus(FRAMEBUFFER) == FRAMEBUFFER_COMPLETE);
+  gl.GetFramebufferAttachmentParameteriv(FRAMEBUFFER, COLOR_ATTACHMENT0, FRAMEBUFFER_ATTACHMENT_TEXTURE_LAYER, &v);
+  CHECK(v == 3);
+  gl.GetFramebufferAttachmentParameteriv(FRAMEBUFFER, COLOR_ATTACHMENT0, FRAMEBUFFER_ATTACHMENT_LAYERED, &v);
+  CHECK(v == 0);
+  CHECK(gl.GetError() == NO_ERROR);
+  gl.FramebufferTexture3D(FRAMEBUFFER, COLOR_ATTACHMENT0, TEXTURE_2D, vol, 0, 0);
+  CHECK(gl.GetError() == INVALID_OPERATION);
+  gl.FramebufferTexture3D(FRAMEBUFFER, COLOR_ATTACHMENT0, TEXTURE_3D, array, 0, 0);
+  CHECK(gl.GetError() == INVALID_OPERATION);
+  gl.FramebufferTexture3D(FRAMEBUFFER, COLOR_ATTACHMENT0, TEXTURE_3D, vol, 0, -1);
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.FramebufferTexture3D(FRAMEBUFFER, COLOR_ATTACHMENT0, TEXTURE_3D, vol, 12, 0);
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.FramebufferTexture(FRAMEBUFFER, COLOR_ATTACHMENT0, 999, 0);
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.FramebufferTexture(FRAMEBUFFER, COLOR_ATTACHMENT0, gl.GenTexture(), 0);  // never bound: no target
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.FramebufferTexture(FRAMEBUFFER, COLOR_ATTACHMENT0, array, -1);
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.FramebufferTexture(FRAMEBUFFER, 0x1234, array, 0);
+  CHECK(gl.GetError() == INVALID_ENUM);
+  gl.BindFramebuffer(FRAMEBUFFER, 0);
+  gl.FramebufferTexture(FRAMEBUFFER, COLOR_ATTACHMENT0, array, 0);
+  CHECK(gl.GetError() == INVALID_OPERATION);
+}

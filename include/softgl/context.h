@@ -501,20 +501,34 @@ class Context {
   /// INVALID_ENUM; framebuffer 0 bound, unknown texture, a texture of another target: INVALID_OPERATION; level
   /// out of range, negative layer or one beyond kMaxArrayTextureLayers (kMax3DTextureSize): INVALID_VALUE.
   void FramebufferTextureLayer(Enum target, Enum attachment, std::uint32_t texture, int level, int layer);
+  /// Attaches level `level` of any texture: a 2D (or 2D multisample) one as FramebufferTexture2D does; a cube map,
+  /// 2D array or 3D texture with all its faces, layers or slices (a layered attachment). A layered framebuffer
+  /// draws into layer 0 (face +X of a cube map): softgl has no stage that writes gl_Layer yet; Clear and
+  /// ClearBuffer* clear every layer; reads and blits read layer 0. Layered and unlayered attachments in one
+  /// framebuffer, or layered colour attachments of different texture targets, make it
+  /// FRAMEBUFFER_INCOMPLETE_LAYER_TARGETS; a layered cube map whose six faces differ,
+  /// FRAMEBUFFER_INCOMPLETE_ATTACHMENT. Errors as FramebufferTexture2D's, but for an unknown texture or one never
+  /// bound: INVALID_VALUE (as OpenGL says for this call).
+  void FramebufferTexture(Enum target, Enum attachment, std::uint32_t texture, int level);
+  /// Slice `zoffset` of level `level` of a TEXTURE_3D texture, as FramebufferTextureLayer attaches it. textarget
+  /// or the texture not TEXTURE_3D: INVALID_OPERATION; other errors as FramebufferTextureLayer's.
+  void FramebufferTexture3D(Enum target, Enum attachment, Enum textarget, std::uint32_t texture, int level,
+                            int zoffset);
   /// Attaches a renderbuffer (renderbuffer_target RENDERBUFFER; 0 detaches) to an attachment point as
   /// FramebufferTexture2D does. Errors: bad target, attachment or renderbuffer_target: INVALID_ENUM; framebuffer 0
   /// bound, unknown renderbuffer: INVALID_OPERATION.
   void FramebufferRenderbuffer(Enum target, Enum attachment, Enum renderbuffer_target, std::uint32_t renderbuffer);
   /// What an attachment point holds: FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE (NONE, TEXTURE or RENDERBUFFER),
   /// _OBJECT_NAME, _TEXTURE_LEVEL, _TEXTURE_CUBE_MAP_FACE (0 but for a cube map), _TEXTURE_LAYER (0 but for
-  /// FramebufferTextureLayer). Errors: bad target, attachment or pname, a texture name asked of a renderbuffer:
+  /// FramebufferTextureLayer), _LAYERED (whether FramebufferTexture attached every layer). Errors: bad target, attachment or pname, a texture name asked of a renderbuffer:
   /// INVALID_ENUM; framebuffer 0 bound, a texture name asked of an empty point, DEPTH_STENCIL_ATTACHMENT while
   /// depth and stencil hold different images: INVALID_OPERATION.
   void GetFramebufferAttachmentParameteriv(Enum target, Enum attachment, Enum pname, int* params);
   /// FRAMEBUFFER_COMPLETE, or why not: INCOMPLETE_ATTACHMENT (an attachment's image is not defined or has no size,
   /// or its format cannot be rendered to that point: colour formats at colour points, depth formats at
   /// DEPTH_ATTACHMENT, formats with stencil at STENCIL_ATTACHMENT), INCOMPLETE_MISSING_ATTACHMENT (none),
-  /// INCOMPLETE_DRAW_BUFFER (a draw buffer names an empty attachment). Attachments of different sizes are allowed,
+  /// INCOMPLETE_DRAW_BUFFER (a draw buffer names an empty attachment), INCOMPLETE_LAYER_TARGETS (see
+  /// FramebufferTexture). Attachments of different sizes are allowed,
   /// as in OpenGL 3.0 and later: drawing covers their intersection; depth and stencil may be separate images. The
   /// read buffer is checked when it is read (INVALID_OPERATION), as in OpenGL 4.1 and later. Draws and clears on an
   /// incomplete framebuffer record INVALID_FRAMEBUFFER_OPERATION. Bad target: INVALID_ENUM and 0.

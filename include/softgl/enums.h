@@ -332,6 +332,8 @@ inline constexpr Enum FRAMEBUFFER_ATTACHMENT_TEXTURE_LEVEL = 0x8CD2;
 inline constexpr Enum FRAMEBUFFER_ATTACHMENT_TEXTURE_CUBE_MAP_FACE = 0x8CD3;
 inline constexpr Enum FRAMEBUFFER_ATTACHMENT_TEXTURE_LAYER = 0x8CD4;
 inline constexpr Enum FRAMEBUFFER_ATTACHMENT_COLOR_ENCODING = 0x8210;  // LINEAR or SRGB
+inline constexpr Enum FRAMEBUFFER_ATTACHMENT_LAYERED = 0x8DA7;  // whether FramebufferTexture attached every layer
+inline constexpr Enum FRAMEBUFFER_INCOMPLETE_LAYER_TARGETS = 0x8DA8;
 inline constexpr Enum TEXTURE = 0x1702;  // an attachment's object type (or NONE, RENDERBUFFER)
 
 // Renderbuffers.

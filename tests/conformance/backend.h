@@ -202,6 +202,18 @@ class Backend {
   /// `attachment` of the framebuffer bound to `target`.
   virtual void AttachNewMultisampleTexture(Enum target, Enum attachment, int samples, Enum internal_format,
                                            int width, int height) = 0;
+  /// A new texture of `texture_target` with `layers` layers or slices of size x size (a cube map: its first
+  /// `layers` faces) of `internal_format` (RGBA8, or DEPTH_COMPONENT32F for an array), no data, NEAREST, bound to
+  /// unit 3 (array), 4 (3D) or 1 (cube map), depth arrays to unit 7; attached to `attachment` of the framebuffer
+  /// bound to `target` by FramebufferTexture (`layer` < 0), or FramebufferTexture3D (3D) or FramebufferTextureLayer
+  /// at `layer`. Returns its id.
+  virtual std::uint32_t AttachLayered(Enum target, Enum attachment, Enum texture_target, Enum internal_format,
+                                      int size, int layers, int layer) = 0;
+  /// glFramebufferTexture, glFramebufferTexture3D and glGetFramebufferAttachmentParameteriv (one value).
+  virtual void FramebufferTexture(Enum target, Enum attachment, std::uint32_t texture, int level) = 0;
+  virtual void FramebufferTexture3D(Enum target, Enum attachment, Enum textarget, std::uint32_t texture, int level,
+                                    int zoffset) = 0;
+  virtual std::int64_t GetAttachmentParameter(Enum target, Enum attachment, Enum pname) = 0;
   /// glGetIntegerv, glGetFloatv and glGetBooleanv of `count` values.
   virtual std::vector<std::int64_t> GetIntegers(Enum pname, int count) = 0;
   virtual std::vector<float> GetFloats(Enum pname, int count) = 0;

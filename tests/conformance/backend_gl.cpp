@@ -551,6 +551,39 @@ class GlBackend final : public Backend {
     glFramebufferTexture2D(target, attachment, GL_TEXTURE_2D, tex, 0);
   }
 
+  std::uint32_t AttachLayered(Enum target, Enum attachment, Enum texture_target, Enum internal_format, int size,
+                              int layers, int layer) override {
+    const GLuint tex = GenOne(glGenTextures);
+    const bool depth = internal_format == GL_DEPTH_COMPONENT32F;
+    glActiveTexture(GL_TEXTURE0 + (depth ? 7 : texture_target == GL_TEXTURE_2D_ARRAY ? 3 : texture_target == GL_TEXTURE_3D ? 4 : 1));
+    glBindTexture(texture_target, tex);
+    const GLenum format = depth ? GL_DEPTH_COMPONENT : GL_RGBA, type = depth ? GL_FLOAT : GL_UNSIGNED_BYTE;
+    if (texture_target == GL_TEXTURE_CUBE_MAP)
+      for (int f = 0; f < layers; ++f)
+        glTexImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_X + GLenum(f), 0, internal_format, size, size, 0, format, type, nullptr);
+    else
+      glTexImage3D(texture_target, 0, internal_format, size, size, layers, 0, format, type, nullptr);
+    glTexParameteri(texture_target, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(texture_target, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glActiveTexture(GL_TEXTURE0);
+    if (layer < 0) glFramebufferTexture(target, attachment, tex, 0);
+    else if (texture_target == GL_TEXTURE_3D) glFramebufferTexture3D(target, attachment, GL_TEXTURE_3D, tex, 0, layer);
+    else glFramebufferTextureLayer(target, attachment, tex, 0, layer);
+    return tex;
+  }
+  void FramebufferTexture(Enum target, Enum attachment, std::uint32_t texture, int level) override {
+    glFramebufferTexture(target, attachment, texture, level);
+  }
+  void FramebufferTexture3D(Enum target, Enum attachment, Enum textarget, std::uint32_t texture, int level,
+                            int zoffset) override {
+    glFramebufferTexture3D(target, attachment, textarget, texture, level, zoffset);
+  }
+  std::int64_t GetAttachmentParameter(Enum target, Enum attachment, Enum pname) override {
+    GLint v = -12345;
+    glGetFramebufferAttachmentParameteriv(target, attachment, pname, &v);
+    return v;
+  }
+
   std::vector<std::int64_t> GetIntegers(Enum pname, int count) override {
     std::vector<std::int64_t> v(std::size_t(count), -12345);
     std::vector<GLint> i(std::size_t(count), -12345);

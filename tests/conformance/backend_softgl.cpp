@@ -524,6 +524,39 @@ class SoftglBackend final : public Backend {
     gl_.FramebufferTexture2D(target, attachment, softgl::TEXTURE_2D, tex, 0);
   }
 
+  std::uint32_t AttachLayered(Enum target, Enum attachment, Enum texture_target, Enum internal_format, int size,
+                              int layers, int layer) override {
+    const std::uint32_t tex = gl_.GenTexture();
+    const bool depth = internal_format == softgl::DEPTH_COMPONENT32F;
+    gl_.ActiveTexture(softgl::TEXTURE0 + (depth ? 7 : texture_target == softgl::TEXTURE_2D_ARRAY ? 3 : texture_target == softgl::TEXTURE_3D ? 4 : 1));
+    gl_.BindTexture(texture_target, tex);
+    const Enum format = depth ? softgl::DEPTH_COMPONENT : softgl::RGBA, type = depth ? softgl::FLOAT : softgl::UNSIGNED_BYTE;
+    if (texture_target == softgl::TEXTURE_CUBE_MAP)
+      for (int f = 0; f < layers; ++f)
+        gl_.TexImage2D(softgl::TEXTURE_CUBE_MAP_POSITIVE_X + Enum(f), 0, internal_format, size, size, 0, format, type, nullptr);
+    else
+      gl_.TexImage3D(texture_target, 0, internal_format, size, size, layers, 0, format, type, nullptr);
+    gl_.TexParameteri(texture_target, softgl::TEXTURE_MIN_FILTER, softgl::NEAREST);
+    gl_.TexParameteri(texture_target, softgl::TEXTURE_MAG_FILTER, softgl::NEAREST);
+    gl_.ActiveTexture(softgl::TEXTURE0);
+    if (layer < 0) gl_.FramebufferTexture(target, attachment, tex, 0);
+    else if (texture_target == softgl::TEXTURE_3D) gl_.FramebufferTexture3D(target, attachment, softgl::TEXTURE_3D, tex, 0, layer);
+    else gl_.FramebufferTextureLayer(target, attachment, tex, 0, layer);
+    return tex;
+  }
+  void FramebufferTexture(Enum target, Enum attachment, std::uint32_t texture, int level) override {
+    gl_.FramebufferTexture(target, attachment, texture, level);
+  }
+  void FramebufferTexture3D(Enum target, Enum attachment, Enum textarget, std::uint32_t texture, int level,
+                            int zoffset) override {
+    gl_.FramebufferTexture3D(target, attachment, textarget, texture, level, zoffset);
+  }
+  std::int64_t GetAttachmentParameter(Enum target, Enum attachment, Enum pname) override {
+    int v = -12345;
+    gl_.GetFramebufferAttachmentParameteriv(target, attachment, pname, &v);
+    return v;
+  }
+
   std::vector<std::int64_t> GetIntegers(Enum pname, int count) override {
     std::vector<std::int64_t> v(std::size_t(count), -12345);
     std::vector<int> i(std::size_t(count), -12345);

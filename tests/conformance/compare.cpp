@@ -783,6 +783,65 @@ TEST_CASE("transform feedback: recorded values, counts, state and errors as Mesa
   CompareSteps(16, run);
 }
 
+TEST_CASE("layered framebuffers: completeness, attachment state and errors as Mesa's", "[conformance]") {
+  namespace gl = softgl;
+  auto run = [](Backend& b) {
+    std::vector<std::int64_t> out;
+    const auto step = Recorder(b, out);
+    const Enum fb = gl::FRAMEBUFFER, c0 = gl::COLOR_ATTACHMENT0, c1 = gl::COLOR_ATTACHMENT0 + 1;
+    auto state = [&](Enum attachment) {
+      for (Enum pname : {gl::FRAMEBUFFER_ATTACHMENT_LAYERED, gl::FRAMEBUFFER_ATTACHMENT_TEXTURE_LAYER,
+                         gl::FRAMEBUFFER_ATTACHMENT_TEXTURE_LEVEL, gl::FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE})
+        step(b.GetAttachmentParameter(fb, attachment, pname));
+      step(b.CheckFramebufferStatus(fb));
+    };
+    b.BindFramebuffer(fb, b.GenFramebuffer());
+    const std::uint32_t array = b.AttachLayered(fb, c0, gl::TEXTURE_2D_ARRAY, gl::RGBA8, 8, 3, -1);
+    state(c0);
+    b.AttachNewTexture(fb, c1, gl::RGBA8, 8, 8);  // unlayered beside layered
+    state(c1);
+    const std::uint32_t volume = b.AttachLayered(fb, c1, gl::TEXTURE_3D, gl::RGBA8, 8, 4, -1);  // two layered targets
+    state(c1);
+    b.AttachLayered(fb, c1, gl::TEXTURE_2D_ARRAY, gl::RGBA8, 8, 5, -1);  // more layers than the other
+    state(c1);
+    b.AttachLayered(fb, gl::DEPTH_ATTACHMENT, gl::TEXTURE_2D_ARRAY, gl::DEPTH_COMPONENT32F, 8, 3, 1);  // one layer
+    state(gl::DEPTH_ATTACHMENT);
+    b.AttachLayered(fb, gl::DEPTH_ATTACHMENT, gl::TEXTURE_2D_ARRAY, gl::DEPTH_COMPONENT32F, 8, 3, -1);
+    state(gl::DEPTH_ATTACHMENT);
+    b.AttachLayered(fb, c1, gl::TEXTURE_CUBE_MAP, gl::RGBA8, 8, 6, -1);  // a cube map beside an array
+    state(c1);
+    b.FramebufferTexture(fb, c1, 0, 0);
+    b.FramebufferTexture(fb, gl::DEPTH_ATTACHMENT, 0, 0);
+    b.FramebufferTexture(fb, c0, 0, 0);
+    b.AttachLayered(fb, c0, gl::TEXTURE_CUBE_MAP, gl::RGBA8, 8, 6, -1);
+    state(c0);
+    b.AttachLayered(fb, c0, gl::TEXTURE_3D, gl::RGBA8, 8, 4, 2);  // FramebufferTexture3D: one slice
+    state(c0);
+    // Errors.
+    b.FramebufferTexture3D(fb, c0, gl::TEXTURE_2D, volume, 0, 0);
+    step(0);
+    b.FramebufferTexture3D(fb, c0, gl::TEXTURE_3D, array, 0, 0);
+    step(0);
+    b.FramebufferTexture3D(fb, c0, gl::TEXTURE_3D, volume, 0, -1);
+    step(0);
+    b.FramebufferTexture3D(fb, c0, gl::TEXTURE_3D, volume, 12, 0);
+    step(0);
+    b.FramebufferTexture(fb, c0, array + 100, 0);
+    step(0);
+    b.FramebufferTexture(fb, c0, array, -1);
+    step(0);
+    b.FramebufferTexture(fb, 0x1234, array, 0);
+    step(0);
+    b.FramebufferTexture(fb, c0, volume, 0);
+    state(c0);
+    b.BindFramebuffer(fb, 0);
+    b.FramebufferTexture(fb, c0, array, 0);
+    step(0);
+    return out;
+  };
+  CompareSteps(16, run);
+}
+
 int main(int argc, char** argv) {
   if (argc > 1 && std::string(argv[1]) == "--report") {
     for (const SceneInfo& s : Scenes()) {

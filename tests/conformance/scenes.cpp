@@ -634,6 +634,60 @@ void ConditionalRender(Backend& b) {
   b.Disable(DEPTH_TEST);
 }
 
+// Layered framebuffers: a 2D array of 3 layers with a layered depth array, a 3D texture of 3 slices and a cube
+// map, each attached whole (FramebufferTexture). Clear, a scissored Clear and a ClearBuffer reach every layer, two
+// depth-tested quads only layer 0; then every layer is shown by sampling it (NEAREST) in the window.
+void LayeredFramebuffers(Backend& b) {
+  const Enum kinds[3] = {TEXTURE_2D_ARRAY, TEXTURE_3D, TEXTURE_CUBE_MAP};
+  for (int k = 0; k < 3; ++k) {
+    const std::uint32_t fbo = b.GenFramebuffer();
+    b.BindFramebuffer(FRAMEBUFFER, fbo);
+    b.AttachLayered(FRAMEBUFFER, COLOR_ATTACHMENT0, kinds[k], RGBA8, 16, kinds[k] == TEXTURE_CUBE_MAP ? 6 : 3, -1);
+    if (k == 0) b.AttachLayered(FRAMEBUFFER, DEPTH_ATTACHMENT, TEXTURE_2D_ARRAY, DEPTH_COMPONENT32F, 16, 3, -1);
+    b.Viewport(0, 0, 16, 16);
+    const glm::vec4 base = Palette(unsigned(3 * k + 1));
+    b.ClearColor(base.r, base.g, base.b, 1);
+    b.ClearDepth(0.5);
+    b.Clear(COLOR_BUFFER_BIT | DEPTH_BUFFER_BIT);
+    b.Enable(SCISSOR_TEST);
+    b.Scissor(8, 8, 8, 8);
+    b.ClearColor(0.1f, 0.2f, 0.9f, 1);
+    b.Clear(COLOR_BUFFER_BIT);
+    b.Scissor(0, 8, 8, 8);
+    const float white[4] = {1, 1, 1, 1};
+    b.ClearBufferfv(COLOR, 0, white);
+    b.Disable(SCISSOR_TEST);
+    b.Enable(DEPTH_TEST);  // in front of the cleared depth 0.5 (drawn), then behind it (not drawn where there is depth)
+    b.Draw(TRIANGLES, Quad({-0.75f, -0.75f, -0.5f, 1}, {0.25f, -0.75f, -0.5f, 1}, {0.25f, 0.25f, -0.5f, 1},
+                           {-0.75f, 0.25f, -0.5f, 1}, {1, 0.5f, 0, 1}));
+    b.Draw(TRIANGLES, Quad({-0.25f, -0.25f, 0.5f, 1}, {0.75f, -0.25f, 0.5f, 1}, {0.75f, 0.75f, 0.5f, 1},
+                           {-0.25f, 0.75f, 0.5f, 1}, {0, 1, 0.5f, 1}));
+    b.Disable(DEPTH_TEST);
+  }
+  b.BindFramebuffer(FRAMEBUFFER, 0);
+  b.Viewport(0, 0, kSize, kSize);
+  ClearBlack(b);
+  auto cell = [&](int x, int y, const Corners& extra, Program p) {
+    const float x0 = float(x * 32), y0 = float(y * 32);
+    b.Draw(TRIANGLES, QuadWith({Win(x0, y0), Win(x0 + 32, y0), Win(x0 + 32, y0 + 32), Win(x0, y0 + 32)}, extra), p);
+  };
+  for (int l = 0; l < 3; ++l) {
+    const float z = float(l);
+    cell(l, 3, {glm::vec4(0, 0, z, 0), glm::vec4(1, 0, z, 0), glm::vec4(1, 1, z, 0), glm::vec4(0, 1, z, 0)}, Program::kArray);
+    const float r = (z + 0.5f) / 3.0f;
+    cell(l, 2, {glm::vec4(0, 0, r, 0), glm::vec4(1, 0, r, 0), glm::vec4(1, 1, r, 0), glm::vec4(0, 1, r, 0)}, Program::kVolume);
+  }
+  // Each cube face: its major axis plus the two others, corners at +-0.99.
+  for (int f = 0; f < 6; ++f) {
+    glm::vec3 m(0.0f), u(0.0f), w(0.0f);
+    m[f / 2] = f % 2 ? -1.0f : 1.0f;
+    u[(f / 2 + 1) % 3] = 0.99f;
+    w[(f / 2 + 2) % 3] = 0.99f;
+    const Corners dirs = {glm::vec4(m - u - w, 0), glm::vec4(m + u - w, 0), glm::vec4(m + u + w, 0), glm::vec4(m - u + w, 0)};
+    cell(f % 4, f / 4, dirs, Program::kCube);
+  }
+}
+
 void Scissor(Backend& b) {
   ClearBlack(b);
   b.Enable(SCISSOR_TEST);
@@ -1790,6 +1844,7 @@ const std::vector<SceneInfo>& Scenes() {
       {"clear_buffer", kSize, kSize, Check::kExactWithDepthStencil, ClearBuffers},
       {"scissor", kSize, kSize, Check::kExact, Scissor},
       {"conditional_render", kSize, kSize, Check::kExact, ConditionalRender},
+      {"layered_framebuffers", kSize, kSize, Check::kExact, LayeredFramebuffers},
       {"polygon_offset", kSize, kSize, Check::kExactWithDepth, PolygonOffset},
       {"texture_filters", kSize, kSize, Check::kTexture, TextureFilters},
       {"texture_wraps", kSize, kSize, Check::kTexture, TextureWraps},

@@ -479,8 +479,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
             break;
           default:
             if (in.Byte() % 2) {
-              gl.FramebufferTextureLayer(in.Enum(kFbTargets), in.Enum(kAttachments), id(), in.Int(-1, 4),
-                                         in.Int(-1, 9));
+              switch (in.Byte() % 3) {  // one layer, one slice, or every layer (a layered framebuffer)
+                case 0: gl.FramebufferTextureLayer(in.Enum(kFbTargets), in.Enum(kAttachments), id(), in.Int(-1, 4), in.Int(-1, 9)); break;
+                case 1: gl.FramebufferTexture3D(in.Enum(kFbTargets), in.Enum(kAttachments), in.Enum(kLayered), id(), in.Int(-1, 4), in.Int(-1, 9)); break;
+                default: gl.FramebufferTexture(in.Enum(kFbTargets), in.Enum(kAttachments), id(), in.Int(-1, 4)); break;
+              }
             } else if (in.Byte() % 2) {
               gl.CopyTexSubImage3D(in.Enum(kLayered), in.Int(-1, 3), in.Int(-4, 64), in.Int(-4, 64), in.Int(-2, 9),
                                    in.Int(-60, 60), in.Int(-60, 60), in.Int(-1, 64), in.Int(-1, 64));
