@@ -71,6 +71,12 @@ void ContextState::Draw(const detail::DrawCall& call) {
   ds.depth16 = target.depth16 != nullptr;
   if (active_query[2]) ds.primitives_generated = &queries.at(active_query[2])->count;
   ds.discard = rasterizer_discard;
+  if (draw_fbo && program->WritesLayer() && DrawLayers() > 1) {  // each primitive into the layer it names
+    layer_targets.resize(std::size_t(DrawLayers()));
+    for (std::size_t l = 0; l < layer_targets.size(); ++l) layer_targets[l] = l == 0 ? target : DrawLayer(int(l));
+    ds.layer_targets = layer_targets.data();
+    ds.layers = int(layer_targets.size());
+  }
   // Transform feedback: each buffer's store from its write position on (a store replaced since may have shrunk).
   detail::FeedbackCapture capture;
   TransformFeedbackObject& xfb = *feedback;

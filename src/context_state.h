@@ -291,6 +291,7 @@ struct ContextState {
   detail::FetchPlan fetch_plan;  // Draw's resolution of the vertex array (a disabled attribute: its current value)
   detail::DrawPacket draw_packet;  // Draw's prototype of the packets it records
   detail::DrawTextures draw_textures;  // the prototype's textures: the bound units resolved at the last draw
+  std::vector<detail::RenderTarget> layer_targets;  // Draw's buffers of each layer of a layered framebuffer
   // The last shader copy taken (Snapshot), used again by the draws after it while the shader is unchanged.
   std::shared_ptr<const Program> last_snapshot;
 

@@ -23,7 +23,7 @@ constexpr std::size_t kBinJobMax = 4096;  // and at most
 // Stage 1-2: fetch and shade every vertex the draw references, once each where indices repeat.
 void ShadeVertices(const DrawCall& call, const FetchPlan& fetch, const Program& program, const Textures* textures,
                    const Interpolation* interpolation, const ViewportTransform& viewport,
-                   const FeedbackLayout* record, WorkerPool& pool, Scratch& s) {
+                   const FeedbackLayout* record, bool layers, WorkerPool& pool, Scratch& s) {
   const int count = call.count;
   auto& to_shade = s.shade_indices;
   auto& map = s.element_to_shaded;
@@ -83,6 +83,7 @@ void ShadeVertices(const DrawCall& call, const FetchPlan& fetch, const Program& 
   out.window.resize(std::size_t(n));
   out.window_varyings.resize(std::size_t(n) * std::size_t(out.nvar));
   if (record) out.feedback.resize(std::size_t(n) * std::size_t(record->floats));
+  if (layers) out.layer.resize(std::size_t(n));
   const ClipPlanes planes = GuardBandPlanes(viewport);
   if (s.vertex.size() < std::size_t(pool.Threads())) s.vertex.resize(std::size_t(pool.Threads()));
   const int simd = int(CpuSimdLevel());
@@ -116,6 +117,7 @@ void ShadeVertices(const DrawCall& call, const FetchPlan& fetch, const Program& 
       batch.instance_id = int(instance);
       batch.positions = out.position.data() + base;
       batch.point_sizes = out.point_size.data() + base;
+      batch.layers = layers ? out.layer.data() + base : nullptr;
       batch.varyings = out.varyings.data() + std::size_t(base) * out.nvar;
       batch.textures = textures;
       program.ShadeVertices(batch);
@@ -399,26 +401,43 @@ void RecordFeedback(const Primitives& prims, std::size_t per_instance, std::size
   }
 }
 
-// One draw small enough to hold all its shaded vertices at once: shaded, then its primitives clipped and binned
-// in jobs of kBinJob to kBinJobMax primitives, each job into its own batch, the batches kept in primitive order.
-// Without a packet (nothing to rasterize), only shaded, counted and recorded by transform feedback.
-void RecordChunk(const DrawCall& call, const FetchPlan& fetch, const DrawState& state, DrawPacket* packet,
-                 Frame& frame, WorkerPool& pool, Scratch& scratch) {
-  ShadeVertices(call, fetch, *state.program, state.textures, state.interpolation, state.viewport,
-                state.feedback ? state.feedback->layout : nullptr, pool, scratch);
+// The primitives of one piece, shaded and assembled: `count` of `per` vertices, primitive q of instance g at index
+// q of scratch.primitives with its shaded vertices g * unique further on.
+struct AssembledPiece {
+  int per = 0;
+  std::size_t per_instance = 0, count = 0;
+  std::uint32_t unique = 0;
+};
 
+// The front half of a piece: vertices shaded, primitives assembled and counted, and recorded by transform
+// feedback. False when there is nothing to bin.
+bool ShadeAndAssemble(const DrawCall& call, const FetchPlan& fetch, const DrawState& state, WorkerPool& pool,
+                      Scratch& scratch, AssembledPiece& a) {
+  ShadeVertices(call, fetch, *state.program, state.textures, state.interpolation, state.viewport,
+                state.feedback ? state.feedback->layout : nullptr, state.layers > 1, pool, scratch);
   Primitives& prims = scratch.primitives;
   AssemblePrimitives(call.mode, call.count, call.restarts, call.restart_count, prims, state.primitive.provoking_first);
-  const int per = prims.vertices_per_primitive;
-  if (per < 1 || per > 3) return;
-  // Instance g of the piece repeats the primitives with its own shaded vertices, g * unique further on.
-  const std::size_t per_instance = prims.indices.size() / std::size_t(per);
-  const std::size_t count = per_instance * std::size_t(call.instances);
-  if (state.primitives_generated) *state.primitives_generated += count;
-  const std::uint32_t unique = std::uint32_t(scratch.shaded.count / call.instances);
-  if (state.feedback && per_instance > 0)
-    RecordFeedback(prims, per_instance, count, unique, scratch.element_to_shaded, scratch.shaded, *state.feedback);
-  if (packet == nullptr) return;
+  a.per = prims.vertices_per_primitive;
+  if (a.per < 1 || a.per > 3) return false;
+  a.per_instance = prims.indices.size() / std::size_t(a.per);
+  a.count = a.per_instance * std::size_t(call.instances);
+  if (state.primitives_generated) *state.primitives_generated += a.count;
+  a.unique = std::uint32_t(scratch.shaded.count / call.instances);
+  if (state.feedback && a.per_instance > 0)
+    RecordFeedback(prims, a.per_instance, a.count, a.unique, scratch.element_to_shaded, scratch.shaded,
+                   *state.feedback);
+  return a.count > 0;
+}
+
+// The back half: the primitives clipped and binned into `packet`'s batches in jobs of kBinJob to kBinJobMax
+// primitives, each job into its own batch, the batches kept in primitive order. With `layer` >= 0 (a layered
+// framebuffer), only the primitives scratch.primitive_layer sends to that layer.
+void BinPrimitives(const AssembledPiece& a, const DrawState& state, DrawPacket& packet, Frame& frame,
+                   WorkerPool& pool, Scratch& scratch, int layer = -1) {
+  const Primitives& prims = scratch.primitives;
+  const int per = a.per;
+  const std::size_t per_instance = a.per_instance, count = a.count;
+  const std::uint32_t unique = a.unique;
   // Every tile walks every batch of the draw, so fewer, larger batches render faster; but each thread should still
   // have about two jobs to bin.
   const std::size_t threads = std::size_t(pool.Threads());
@@ -438,7 +457,7 @@ void RecordChunk(const DrawCall& call, const FetchPlan& fetch, const DrawState& 
   while (scratch.primitive.size() < std::size_t(pool.Threads()))
     scratch.primitive.push_back(std::make_unique<PrimitiveScratch>());
   pool.Run(jobs, [&](int job, int worker) {
-    BinnedBatch& bins = shared ? *shared_batch : frame.Batch(*packet, job);
+    BinnedBatch& bins = shared ? *shared_batch : frame.Batch(packet, job);
     PrimitiveRunner runner(state, scratch.shaded, bins, grid, *scratch.primitive[std::size_t(worker)]);
     const std::size_t end = std::min(count, std::size_t(job + 1) * job_size);
     // Primitive p is primitive q of instance g: q and the instance's shift advance with p (no division per
@@ -449,18 +468,21 @@ void RecordChunk(const DrawCall& call, const FetchPlan& fetch, const DrawState& 
     // pixel box of most others, are found together.
     std::uint32_t v[TriangleGroup::kSize][4];  // each primitive's vertices, then its provoking vertex
     GroupVerdict verdict;
+    const int* layer_of = layer >= 0 ? scratch.primitive_layer.data() : nullptr;
     for (std::size_t p = std::size_t(job) * job_size; p < end;) {
       int n = 0;
-      for (; n < TriangleGroup::kSize && p < end; ++n, ++p, ++q) {
+      for (; n < TriangleGroup::kSize && p < end; ++p, ++q) {
         if (q == per_instance) {
           q = 0;
           shift += unique;
         }
+        if (layer_of && layer_of[p] != layer) continue;
         const std::size_t i = q * std::size_t(per);
         // The provoking vertex: the first of the primitive or its last (OpenGL 4.6, table 13.2; assembly put it there).
         const std::size_t provoking = i + (first ? 0 : std::size_t(per - 1));
         for (int k = 0; k < per; ++k) v[n][k] = map[idx[i + std::size_t(k)]] + shift;
         v[n][3] = map[idx[provoking]] + shift;
+        ++n;
       }
       if (per == 3) runner.Judge(v, n, verdict);
       for (int t = 0; t < n; ++t) {
@@ -482,7 +504,46 @@ void RecordChunk(const DrawCall& call, const FetchPlan& fetch, const DrawState& 
     frame.EndShared();
     return;
   }
-  for (int j = 0; j < jobs; ++j) frame.AddBytes(frame.Batch(*packet, j).Bytes());
+  for (int j = 0; j < jobs; ++j) frame.AddBytes(frame.Batch(packet, j).Bytes());
+}
+
+// One draw small enough to hold all its shaded vertices at once, shaded and binned. Without a packet (nothing to
+// rasterize), only shaded, counted and recorded by transform feedback.
+void RecordChunk(const DrawCall& call, const FetchPlan& fetch, const DrawState& state, DrawPacket* packet,
+                 Frame& frame, WorkerPool& pool, Scratch& scratch) {
+  AssembledPiece a;
+  if (ShadeAndAssemble(call, fetch, state, pool, scratch, a) && packet)
+    BinPrimitives(a, state, *packet, frame, pool, scratch);
+}
+
+// A piece drawn into a layered framebuffer whose program writes gl_Layer: shaded once, then each primitive binned
+// into a draw command of its layer's buffers (its provoking vertex's layer; one past the last goes to the last,
+// as does a negative one, as llvmpipe has it), layer after layer, the frame rendered between layers.
+void RecordLayeredPiece(const DrawCall& call, const FetchPlan& fetch, const DrawState& state,
+                        const DrawPacket& proto, Frame& frame, WorkerPool& pool, Scratch& scratch) {
+  AssembledPiece a;
+  if (!ShadeAndAssemble(call, fetch, state, pool, scratch, a)) return;
+  const Primitives& prims = scratch.primitives;
+  const std::size_t provoking = state.primitive.provoking_first ? 0 : std::size_t(a.per - 1);
+  std::vector<int>& layer_of = scratch.primitive_layer;
+  layer_of.resize(a.count);
+  std::vector<bool> used(std::size_t(state.layers), false);
+  for (std::size_t p = 0; p < a.count; ++p) {
+    const std::size_t q = p % a.per_instance;
+    const std::uint32_t v = scratch.element_to_shaded[prims.indices[q * std::size_t(a.per) + provoking]] +
+                            std::uint32_t(p / a.per_instance) * a.unique;
+    const unsigned l = std::min(unsigned(scratch.shaded.layer[v]), unsigned(state.layers - 1));
+    layer_of[p] = int(l);
+    used[l] = true;
+  }
+  for (int l = 0; l < state.layers; ++l) {
+    if (!used[std::size_t(l)]) continue;
+    const RenderTarget& target = state.layer_targets[l];
+    if (!frame.Accepts(target) || frame.Bytes() > kFrameBudgetBytes) frame.Render(pool, scratch.tiles);
+    DrawPacket& packet = frame.AddDraw(target, proto);
+    BinPrimitives(a, state, packet, frame, pool, scratch, l);
+    frame.ListLastDraw();
+  }
 }
 
 // Records one piece of a draw as its own command (a copy of the prototype packet), rendering the frame first
@@ -490,6 +551,7 @@ void RecordChunk(const DrawCall& call, const FetchPlan& fetch, const DrawState& 
 void RecordPiece(const DrawCall& call, const FetchPlan& fetch, const DrawState& state, const DrawPacket& proto,
                  const RenderTarget& target, Frame& frame, WorkerPool& pool, Scratch& scratch) {
   if (state.discard || state.bounds.Empty()) return RecordChunk(call, fetch, state, nullptr, frame, pool, scratch);
+  if (state.layers > 1) return RecordLayeredPiece(call, fetch, state, proto, frame, pool, scratch);
   if (frame.Bytes() > kFrameBudgetBytes) frame.Render(pool, scratch.tiles);
   DrawPacket& packet = frame.AddDraw(target, proto);
   RecordChunk(call, fetch, state, &packet, frame, pool, scratch);

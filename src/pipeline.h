@@ -80,6 +80,9 @@ struct DrawState {
   std::uint64_t* primitives_generated = nullptr;  // counts the assembled primitives (PRIMITIVES_GENERATED query)
   FeedbackCapture* feedback = nullptr;  // transform feedback records the draw's primitives (null: it does not)
   bool discard = false;  // RASTERIZER_DISCARD: nothing is rasterized (the primitives are still counted and recorded)
+  // A layered framebuffer whose layers the program's gl_Layer chooses: each layer's buffers (layers > 1), or none.
+  const RenderTarget* layer_targets = nullptr;
+  int layers = 0;
   int samples = 1;  // samples whose coverage triangles compute (RasterTarget::samples)
   bool depth16 = false;  // the target's depth buffer is 16-bit fixed point (polygon offset's unit is 1 / 65535)
 };
@@ -120,6 +123,7 @@ struct Scratch {
   std::vector<std::uint32_t> shade_indices;  // vertex index of each vertex to shade
   std::vector<std::uint32_t> element_to_shaded;
   std::vector<std::uint32_t> first_use;      // per vertex of an indexed draw's index range: its shaded slot
+  std::vector<int> primitive_layer;          // a layered draw's layer of each primitive
   ShadedVertices shaded;
   Primitives primitives;
   std::vector<VertexScratch> vertex;  // per worker

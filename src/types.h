@@ -42,6 +42,8 @@ struct ShadedVertices {
   // While transform feedback records: the values it records of each vertex, as the vertex stage wrote them
   // ([count][FeedbackLayout::floats]).
   std::vector<float> feedback;
+  // Drawn into a layered framebuffer by a program that writes gl_Layer: each vertex's layer.
+  std::vector<int> layer;
 };
 
 /// A vertex in homogeneous clip space with its varyings (input and output of clipping).

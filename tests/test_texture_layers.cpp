@@ -618,3 +618,87 @@ TEST_CASE("layered framebuffers: completeness, FramebufferTexture3D, errors", "[
   gl.FramebufferTexture(FRAMEBUFFER, COLOR_ATTACHMENT0, array, 0);
   CHECK(gl.GetError() == INVALID_OPERATION);
 }
+
+namespace {
+
+struct LayerVaryings {
+  vec4 color;
+};
+
+// Position from attribute 0, colour from attribute 1, gl_Layer from attribute 2's x.
+struct LayerShader : Shader<LayerShader, LayerVaryings> {
+  static constexpr bool kWritesLayer = true;
+  void Vertex(const VertexLanes& in, VertexLanesOut<LayerVaryings>& out) const {
+    out.position = in.attrib[0];
+    out.varyings.color = in.attrib[1];
+    out.layer = Int(in.attrib[2].x);
+  }
+  void Fragment(const FragmentLanes<LayerVaryings>& in, FragmentLanesOut& out) const { out.color[0] = in.varyings.color; }
+};
+
+}  // namespace
+
+TEST_CASE("gl_Layer from the vertex stage routes each primitive to its layer", "[texture][layers][framebuffer]") {
+  for (int threads : {1, 3}) {
+    INFO(threads << " threads");
+    Context gl(8, 8, Context::Options{threads});
+    const std::uint32_t color = gl.GenTexture(), depth = gl.GenTexture(), fbo = gl.GenFramebuffer();
+    gl.BindTexture(TEXTURE_2D_ARRAY, color);
+    gl.TexImage3D(TEXTURE_2D_ARRAY, 0, RGBA8, 8, 8, 4, 0, RGBA, UNSIGNED_BYTE, nullptr);
+    gl.BindTexture(TEXTURE_2D_ARRAY, depth);
+    gl.TexImage3D(TEXTURE_2D_ARRAY, 0, DEPTH_COMPONENT32F, 8, 8, 4, 0, DEPTH_COMPONENT, FLOAT, nullptr);
+    gl.BindFramebuffer(FRAMEBUFFER, fbo);
+    gl.FramebufferTexture(FRAMEBUFFER, COLOR_ATTACHMENT0, color, 0);
+    gl.FramebufferTexture(FRAMEBUFFER, DEPTH_ATTACHMENT, depth, 0);
+    REQUIRE(gl.CheckFramebufferStatus(FRAMEBUFFER) == FRAMEBUFFER_COMPLETE);
+    gl.ClearColor(0, 0, 0, 1);
+    gl.Clear(COLOR_BUFFER_BIT | DEPTH_BUFFER_BIT);
+    gl.Enable(DEPTH_TEST);
+    LayerShader shader;
+    gl.UseProgram(shader);
+    // One draw of 5 full-screen triangles: layer 2 (red, far), layer 0 (green), layer 2 again (blue, near: over the
+    // red), layer 9 (past the last: layer 3, yellow), layer 1 by a triangle whose provoking (last) vertex says 1
+    // though its first says 3 (white).
+    struct V {
+      glm::vec4 pos, color, extra;
+    };
+    auto tri = [](float z, glm::vec4 c, float l0, float l2) {
+      return std::vector<V>{{{-1, -1, z, 1}, c, {l0, 0, 0, 0}}, {{3, -1, z, 1}, c, {l0, 0, 0, 0}}, {{-1, 3, z, 1}, c, {l2, 0, 0, 0}}};
+    };
+    std::vector<V> v;
+    for (const auto& t : {tri(0.5f, {1, 0, 0, 1}, 2, 2), tri(0.0f, {0, 1, 0, 1}, 0, 0), tri(-0.5f, {0, 0, 1, 1}, 2, 2),
+                          tri(0.0f, {1, 1, 0, 1}, 9, 9), tri(0.0f, {1, 1, 1, 1}, 3, 1)})
+      v.insert(v.end(), t.begin(), t.end());
+    gl.BindVertexArray(gl.GenVertexArray());
+    gl.BindBuffer(ARRAY_BUFFER, gl.GenBuffer());
+    gl.BufferData(ARRAY_BUFFER, std::ptrdiff_t(v.size() * sizeof(V)), v.data());
+    for (std::uint32_t a = 0; a < 3; ++a) {
+      gl.VertexAttributePointer(a, 4, FLOAT, false, sizeof(V), a * sizeof(glm::vec4));
+      gl.EnableVertexAttribArray(a);
+    }
+    gl.DrawArrays(TRIANGLES, 0, int(v.size()));
+    REQUIRE(gl.GetError() == NO_ERROR);
+    gl.BindFramebuffer(FRAMEBUFFER, 0);
+    std::vector<std::uint8_t> out(8 * 8 * 4 * 4, 0xCD);
+    gl.BindTexture(TEXTURE_2D_ARRAY, color);
+    gl.GetTexImage(TEXTURE_2D_ARRAY, 0, RGBA, UNSIGNED_BYTE, out.data());
+    const std::uint32_t want[4] = {0x00FF00FFu, 0xFFFFFFFFu, 0x0000FFFFu, 0xFFFF00FFu};
+    for (int l = 0; l < 4; ++l) {
+      const std::uint8_t* p = &out[std::size_t(l * 64 + 27) * 4];
+      const std::uint32_t got = std::uint32_t(p[0]) << 24 | std::uint32_t(p[1]) << 16 | std::uint32_t(p[2]) << 8 | p[3];
+      INFO("layer " << l);
+      CHECK(got == want[l]);
+    }
+    // Without kWritesLayer (SolidShader), everything goes to layer 0.
+    gl.BindFramebuffer(FRAMEBUFFER, fbo);
+    gl.Clear(COLOR_BUFFER_BIT | DEPTH_BUFFER_BIT);
+    testing::SolidShader solid;
+    solid.color = {1, 0, 1, 1};
+    gl.UseProgram(solid);
+    gl.DrawArrays(TRIANGLES, 0, int(v.size()));
+    gl.BindFramebuffer(FRAMEBUFFER, 0);
+    gl.GetTexImage(TEXTURE_2D_ARRAY, 0, RGBA, UNSIGNED_BYTE, out.data());
+    for (int l = 0; l < 4; ++l) CHECK(int(out[std::size_t(l * 64 + 27) * 4 + 2]) == (l == 0 ? 255 : 0));
+    CHECK(gl.GetError() == NO_ERROR);
+  }
+}

@@ -503,8 +503,9 @@ class Context {
   void FramebufferTextureLayer(Enum target, Enum attachment, std::uint32_t texture, int level, int layer);
   /// Attaches level `level` of any texture: a 2D (or 2D multisample) one as FramebufferTexture2D does; a cube map,
   /// 2D array or 3D texture with all its faces, layers or slices (a layered attachment). A layered framebuffer
-  /// draws into layer 0 (face +X of a cube map): softgl has no stage that writes gl_Layer yet; Clear and
-  /// ClearBuffer* clear every layer; reads and blits read layer 0. Layered and unlayered attachments in one
+  /// draws each primitive into the layer its provoking vertex's gl_Layer names (VertexLanesOut::layer, with
+  /// kWritesLayer; else layer 0; past the last or below 0: the last); Clear and ClearBuffer* clear every layer;
+  /// reads and blits read layer 0. Layered and unlayered attachments in one
   /// framebuffer, or layered colour attachments of different texture targets, make it
   /// FRAMEBUFFER_INCOMPLETE_LAYER_TARGETS; a layered cube map whose six faces differ,
   /// FRAMEBUFFER_INCOMPLETE_ATTACHMENT. Errors as FramebufferTexture2D's, but for an unknown texture or one never

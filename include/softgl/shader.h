@@ -257,6 +257,10 @@ struct VertexLanesOut {
   vec4 position = vec4(0.0f, 0.0f, 0.0f, 1.0f);  ///< gl_Position, in clip space
   Float point_size = 1.0f;  ///< gl_PointSize, used when PROGRAM_POINT_SIZE is enabled
   Varyings varyings{};      ///< interpolated across the primitive for the fragment stage
+  /// gl_Layer (as OpenGL's ARB_shader_viewport_layer_array lets a vertex shader write it): the layer of a layered
+  /// framebuffer the primitive is drawn into, its provoking vertex's. Read only when Derived declares
+  /// `static constexpr bool kWritesLayer = true;`.
+  Int layer = 0;
 };
 
 /// What a wide fragment stage reads: 16 fragments, four 2x2 quads, lane = quad * 4 + (x % 2) + 2 * (y % 2). The
@@ -394,6 +398,7 @@ struct VertexOut {
   glm::vec4 position{0.0f, 0.0f, 0.0f, 1.0f};  ///< gl_Position, in clip space.
   float point_size = 1.0f;  ///< gl_PointSize, used when PROGRAM_POINT_SIZE is enabled.
   Varyings varyings{};      ///< Interpolated across the primitive for the fragment stage.
+  int layer = 0;            ///< gl_Layer, as VertexLanesOut::layer (read only with kWritesLayer).
 };
 
 /// What a scalar fragment stage writes.
@@ -503,6 +508,7 @@ struct VertexBatch {
   int instance_id = 0;                 ///< gl_InstanceID of every vertex of the batch
   glm::vec4* positions = nullptr;      ///< out: [count] clip-space positions
   float* point_sizes = nullptr;        ///< out: [count]
+  int* layers = nullptr;               ///< out: [count] gl_Layer (null: not wanted; see Program::WritesLayer)
   float* varyings = nullptr;           ///< out: [count][VaryingFloats()]
   const Textures* textures = nullptr;
   int simd = 0;                        ///< SimdLevel()
@@ -615,6 +621,9 @@ class Program {
   /// Whether the fragment stage writes gl_FragDepth. When it does not, the depth test may run before the shader
   /// (early depth test), where that cannot change the result.
   virtual bool WritesDepth() const { return true; }
+  /// Whether the vertex stage writes gl_Layer (VertexLanesOut::layer), which routes primitives to the layers of a
+  /// layered framebuffer. When it does not, they all go to layer 0.
+  virtual bool WritesLayer() const { return false; }
 
  private:
   friend class Context;
@@ -632,6 +641,7 @@ class Program {
 /// or, in the scalar form (varyings made of float and GLM float vectors):
 ///   void Vertex(const VertexIn&, VertexOut<Varyings>&) const;
 ///   bool Fragment(const FragmentIn<Varyings>&, FragmentOut&) const;   // false discards the fragment
+/// A Vertex() that writes gl_Layer (out.layer) says so with `static constexpr bool kWritesLayer = true;`.
 /// A Fragment() that writes gl_FragDepth (out.depth) must say so with `static constexpr bool kWritesDepth = true;`
 /// in Derived, as GLSL knows from the source; otherwise out.depth is ignored (the fragment keeps frag_coord.z)
 /// and the depth test may run before the shader. Varyings must be trivially copyable, at most kMaxVaryingFloats
@@ -653,6 +663,13 @@ class Shader : public Program {
     // Floats of varyings per vertex: one per float of the struct, or one per Float (16 lanes) in the wide form.
     static constexpr int FloatBytes() { return Wide() ? int(sizeof(float)) * kLanes : int(sizeof(float)); }
     static constexpr int Floats() { return std::is_empty_v<Varyings> ? 0 : int(sizeof(Varyings)) / FloatBytes(); }
+    static constexpr bool DeclaresLayer() {
+      if constexpr (requires { Derived::kWritesLayer; }) {
+        return bool(Derived::kWritesLayer);
+      } else {
+        return false;
+      }
+    }
     static constexpr bool DeclaresDepth() {
       if constexpr (requires { Derived::kWritesDepth; }) {
         return bool(Derived::kWritesDepth);
@@ -727,6 +744,7 @@ class Shader : public Program {
   }
 
   bool WritesDepth() const final { return SoftglForm::DeclaresDepth(); }
+  bool WritesLayer() const final { return SoftglForm::DeclaresLayer(); }
 
   /// The varying `member` (a member of Varyings: Float, vec2, vec3 or vec4, or float and GLM vectors in the scalar
   /// form) as transform feedback records it, reported under `name`: `FeedbackVarying v =
@@ -782,6 +800,9 @@ class Shader : public Program {
       self.Vertex(in, out);
       shader_detail::StoreVertices(&out.position.x, 4, &batch.positions[base].x, 4, n);
       for (int l = 0; l < n; ++l) batch.point_sizes[base + l] = out.point_size[l];
+      if constexpr (SoftglForm::DeclaresLayer())
+        if (batch.layers)
+          for (int l = 0; l < n; ++l) batch.layers[base + l] = out.layer[l];
       if constexpr (SoftglForm::Floats() > 0) {
         shader_detail::StoreVertices(reinterpret_cast<const Float*>(&out.varyings), SoftglForm::Floats(),
                                      batch.varyings + std::size_t(base) * SoftglForm::Floats(), SoftglForm::Floats(),
@@ -877,6 +898,8 @@ void Shader<Derived, Varyings>::ShadeVertices(const VertexBatch& batch) const {
       self.Vertex(VertexIn{attrib, batch.vertex_ids[i], batch.textures, batch.instance_id}, out);
       batch.positions[i] = out.position;
       batch.point_sizes[i] = out.point_size;
+      if constexpr (SoftglForm::DeclaresLayer())
+        if (batch.layers) batch.layers[i] = out.layer;
       if constexpr (SoftglForm::Floats() > 0)
         std::memcpy(batch.varyings + std::size_t(i) * SoftglForm::Floats(), &out.varyings, sizeof(Varyings));
     }

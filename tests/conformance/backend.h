@@ -41,6 +41,7 @@ enum class Program {
   kPointCoord,   // colour = (gl_PointCoord, colour.b, 1)
   kFeedback,     // colour = attribute 1; the vertex stage also writes v_extra = attribute 2 * 2 - position, for
                  // transform feedback (Backend::FeedbackVaryings)
+  kLayer,        // colour = attribute 1; the vertex stage writes gl_Layer = int(extra.w) (ARB_shader_viewport_layer_array)
 };
 
 /// A TEXTURE_2D_ARRAY or TEXTURE_3D defined by TexImage3D: RGBA8 from `rgba` (unit 3 for an array, 4 for 3D), or

@@ -52,6 +52,19 @@ void main() {
 }
 )";
 
+constexpr const char* kLayerVertexShader = R"(#version 330 core
+#extension GL_ARB_shader_viewport_layer_array : require
+layout(location = 0) in vec4 a_pos;
+layout(location = 1) in vec4 a_color;
+layout(location = 2) in vec4 a_extra;
+out vec4 v_color;
+void main() {
+  gl_Position = a_pos;
+  v_color = a_color;
+  gl_Layer = int(a_extra.w);
+}
+)";
+
 constexpr const char* kColorFragment = R"(#version 330 core
 in vec4 v_color;
 out vec4 o_color;
@@ -203,6 +216,11 @@ class GlBackend final : public Backend {
     programs_[10] = Link(kOutputsFragment, error);
     programs_[11] = Link(kPointCoordFragment, error);
     programs_[12] = Link(kColorFragment, error, kFeedbackVertexShader);
+    {  // (softpipe has no ARB_shader_viewport_layer_array: without it, kLayer draws nothing there)
+      std::string layer_error;
+      programs_[13] = Link(kColorFragment, &layer_error, kLayerVertexShader);
+      if (!layer_error.empty()) programs_[13] = 0;
+    }
     instanced_ = Link(kColorFragment, error, kInstancedVertexShader);
     glUseProgram(programs_[4]);
     glUniform1i(glGetUniformLocation(programs_[4], "u_cube"), 1);
@@ -766,7 +784,7 @@ class GlBackend final : public Backend {
   OSMesaContext ctx_;
   int w_, h_;
   std::vector<std::uint8_t> buffer_;
-  GLuint programs_[13] = {};
+  GLuint programs_[14] = {};
   GLuint instanced_ = 0;
   GLuint rtt_color_ = 0;
   GLuint vao_ = 0, vbo_ = 0, ebo_ = 0;

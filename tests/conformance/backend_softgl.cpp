@@ -205,6 +205,19 @@ struct FeedbackShader : softgl::Shader<FeedbackShader, FeedbackVaryings> {
   }
 };
 
+// kLayer: gl_Layer from attribute 2's w.
+struct LayerShader : softgl::Shader<LayerShader, InstancedVaryings> {
+  static constexpr bool kWritesLayer = true;
+  void Vertex(const softgl::VertexLanes& in, softgl::VertexLanesOut<InstancedVaryings>& out) const {
+    out.position = in.attrib[0];
+    out.varyings.color = in.attrib[1];
+    out.layer = softgl::Int(in.attrib[2].w);
+  }
+  void Fragment(const softgl::FragmentLanes<InstancedVaryings>& in, softgl::FragmentLanesOut& out) const {
+    out.color[0] = in.varyings.color;
+  }
+};
+
 class SoftglBackend final : public Backend {
  public:
   SoftglBackend(int w, int h) : gl_(w, h) {
@@ -286,6 +299,7 @@ class SoftglBackend final : public Backend {
       case Program::kFetchSample: gl_.UseProgram(fetch_sample_); break;
       case Program::kOutputs: gl_.UseProgram(outputs_); break;
       case Program::kPointCoord: gl_.UseProgram(point_coord_); break;
+      case Program::kLayer: gl_.UseProgram(layer_); break;
       case Program::kFeedback:  // (UseProgram is an error while transform feedback records, even of the same one)
         if (!Recording()) gl_.UseProgram(feedback_);
         break;
@@ -745,6 +759,7 @@ class SoftglBackend final : public Backend {
   OutputsShader outputs_;
   PointCoordShader point_coord_;
   FeedbackShader feedback_;
+  LayerShader layer_;
   bool Recording() {
     bool active = false, paused = false;
     gl_.GetBooleanv(softgl::TRANSFORM_FEEDBACK_BUFFER_ACTIVE, &active);

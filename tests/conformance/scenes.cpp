@@ -634,6 +634,33 @@ void ConditionalRender(Backend& b) {
   b.Disable(DEPTH_TEST);
 }
 
+// The layers of LayeredFramebuffers' three textures (a 2D array and a 3D texture of 3, a cube map of 6, on units
+// 3, 4 and 1), each sampled (NEAREST) on a 32 x 32 square of the window.
+void ShowLayers(Backend& b) {
+  b.BindFramebuffer(FRAMEBUFFER, 0);
+  b.Viewport(0, 0, kSize, kSize);
+  ClearBlack(b);
+  auto cell = [&](int x, int y, const Corners& extra, Program p) {
+    const float x0 = float(x * 32), y0 = float(y * 32);
+    b.Draw(TRIANGLES, QuadWith({Win(x0, y0), Win(x0 + 32, y0), Win(x0 + 32, y0 + 32), Win(x0, y0 + 32)}, extra), p);
+  };
+  for (int l = 0; l < 3; ++l) {
+    const float z = float(l);
+    cell(l, 3, {glm::vec4(0, 0, z, 0), glm::vec4(1, 0, z, 0), glm::vec4(1, 1, z, 0), glm::vec4(0, 1, z, 0)}, Program::kArray);
+    const float r = (z + 0.5f) / 3.0f;
+    cell(l, 2, {glm::vec4(0, 0, r, 0), glm::vec4(1, 0, r, 0), glm::vec4(1, 1, r, 0), glm::vec4(0, 1, r, 0)}, Program::kVolume);
+  }
+  // Each cube face: its major axis plus the two others, corners at +-0.99.
+  for (int f = 0; f < 6; ++f) {
+    glm::vec3 m(0.0f), u(0.0f), w(0.0f);
+    m[f / 2] = f % 2 ? -1.0f : 1.0f;
+    u[(f / 2 + 1) % 3] = 0.99f;
+    w[(f / 2 + 2) % 3] = 0.99f;
+    const Corners dirs = {glm::vec4(m - u - w, 0), glm::vec4(m + u - w, 0), glm::vec4(m + u + w, 0), glm::vec4(m - u + w, 0)};
+    cell(f % 4, f / 4, dirs, Program::kCube);
+  }
+}
+
 // Layered framebuffers: a 2D array of 3 layers with a layered depth array, a 3D texture of 3 slices and a cube
 // map, each attached whole (FramebufferTexture). Clear, a scissored Clear and a ClearBuffer reach every layer, two
 // depth-tested quads only layer 0; then every layer is shown by sampling it (NEAREST) in the window.
@@ -664,28 +691,42 @@ void LayeredFramebuffers(Backend& b) {
                            {-0.25f, 0.75f, 0.5f, 1}, {0, 1, 0.5f, 1}));
     b.Disable(DEPTH_TEST);
   }
-  b.BindFramebuffer(FRAMEBUFFER, 0);
-  b.Viewport(0, 0, kSize, kSize);
-  ClearBlack(b);
-  auto cell = [&](int x, int y, const Corners& extra, Program p) {
-    const float x0 = float(x * 32), y0 = float(y * 32);
-    b.Draw(TRIANGLES, QuadWith({Win(x0, y0), Win(x0 + 32, y0), Win(x0 + 32, y0 + 32), Win(x0, y0 + 32)}, extra), p);
-  };
-  for (int l = 0; l < 3; ++l) {
-    const float z = float(l);
-    cell(l, 3, {glm::vec4(0, 0, z, 0), glm::vec4(1, 0, z, 0), glm::vec4(1, 1, z, 0), glm::vec4(0, 1, z, 0)}, Program::kArray);
-    const float r = (z + 0.5f) / 3.0f;
-    cell(l, 2, {glm::vec4(0, 0, r, 0), glm::vec4(1, 0, r, 0), glm::vec4(1, 1, r, 0), glm::vec4(0, 1, r, 0)}, Program::kVolume);
+  ShowLayers(b);
+}
+
+// gl_Layer from the vertex stage: the same three layered textures, each cleared, then one draw of a quad per layer
+// (different sizes and colours, depth-tested where there is depth), a quad whose first vertex names another layer
+// than its provoking (last) one, and quads naming layers past the last and below 0; shown as LayeredFramebuffers.
+void VertexLayer(Backend& b) {
+  const Enum kinds[3] = {TEXTURE_2D_ARRAY, TEXTURE_3D, TEXTURE_CUBE_MAP};
+  for (int k = 0; k < 3; ++k) {
+    const int layers = kinds[k] == TEXTURE_CUBE_MAP ? 6 : 3;
+    b.BindFramebuffer(FRAMEBUFFER, b.GenFramebuffer());
+    b.AttachLayered(FRAMEBUFFER, COLOR_ATTACHMENT0, kinds[k], RGBA8, 16, layers, -1);
+    if (k == 0) b.AttachLayered(FRAMEBUFFER, DEPTH_ATTACHMENT, TEXTURE_2D_ARRAY, DEPTH_COMPONENT32F, 16, 3, -1);
+    b.Viewport(0, 0, 16, 16);
+    b.ClearColor(0.2f, 0.2f, 0.25f, 1);
+    b.ClearDepth(1.0);
+    b.Clear(COLOR_BUFFER_BIT | DEPTH_BUFFER_BIT);
+    b.Enable(DEPTH_TEST);
+    std::vector<Vertex> v;
+    auto quad = [&](float x0, float y0, float x1, float y1, float z, glm::vec4 c, float layer, float first = -100) {
+      const glm::vec4 lw(0, 0, 0, layer), fw(0, 0, 0, first == -100 ? layer : first);
+      const Vertex q[4] = {{{x0, y0, z, 1}, c, lw}, {{x1, y0, z, 1}, c, lw}, {{x1, y1, z, 1}, c, lw}, {{x0, y1, z, 1}, c, lw}};
+      for (int i : {0, 1, 3, 1, 2, 3}) v.push_back(q[i]);
+      v[v.size() - 6].extra = fw;  // the first triangle's first vertex (not its provoking one)
+    };
+    for (int l = 0; l < layers; ++l) {
+      const float e = 0.9f - 0.1f * float(l);
+      quad(-e, -e, e * 0.5f, e * 0.5f, 0.2f, Palette(unsigned(l + 2 * k)), float(l));
+    }
+    quad(0.1f, -0.9f, 0.9f, -0.1f, -0.3f, {1, 1, 1, 1}, 1.0f, 0.0f);
+    quad(-0.9f, 0.3f, -0.3f, 0.9f, -0.5f, {1, 0.5f, 0, 1}, float(layers + 2));
+    quad(0.3f, 0.3f, 0.9f, 0.9f, -0.5f, {0, 1, 1, 1}, -1.0f);
+    b.Draw(TRIANGLES, v, Program::kLayer);
+    b.Disable(DEPTH_TEST);
   }
-  // Each cube face: its major axis plus the two others, corners at +-0.99.
-  for (int f = 0; f < 6; ++f) {
-    glm::vec3 m(0.0f), u(0.0f), w(0.0f);
-    m[f / 2] = f % 2 ? -1.0f : 1.0f;
-    u[(f / 2 + 1) % 3] = 0.99f;
-    w[(f / 2 + 2) % 3] = 0.99f;
-    const Corners dirs = {glm::vec4(m - u - w, 0), glm::vec4(m + u - w, 0), glm::vec4(m + u + w, 0), glm::vec4(m - u + w, 0)};
-    cell(f % 4, f / 4, dirs, Program::kCube);
-  }
+  ShowLayers(b);
 }
 
 void Scissor(Backend& b) {
@@ -1845,6 +1886,7 @@ const std::vector<SceneInfo>& Scenes() {
       {"scissor", kSize, kSize, Check::kExact, Scissor},
       {"conditional_render", kSize, kSize, Check::kExact, ConditionalRender},
       {"layered_framebuffers", kSize, kSize, Check::kExact, LayeredFramebuffers},
+      {"vertex_layer", kSize, kSize, Check::kExact, VertexLayer},
       {"polygon_offset", kSize, kSize, Check::kExactWithDepth, PolygonOffset},
       {"texture_filters", kSize, kSize, Check::kTexture, TextureFilters},
       {"texture_wraps", kSize, kSize, Check::kTexture, TextureWraps},

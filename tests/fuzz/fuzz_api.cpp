@@ -20,8 +20,11 @@ struct Vary {
 };
 
 struct FuzzShader : softgl::Shader<FuzzShader, Vary> {
+  static constexpr bool kWritesLayer = true;  // (a layered framebuffer's primitives go where attribute 2's w says)
   void Vertex(const softgl::VertexIn& in, softgl::VertexOut<Vary>& out) const {
     out.position = in.attrib[0];
+    const float layer = in.attrib[2].w * 4.0f;
+    out.layer = std::isfinite(layer) ? int(std::clamp(layer, -4.0f, 8.0f)) : 0;
     out.point_size = in.attrib[1].x * 8.0f;
     out.varyings.a = in.attrib[1];
     out.varyings.dir = glm::vec3(in.attrib[2]);
