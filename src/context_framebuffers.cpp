@@ -601,6 +601,15 @@ const std::shared_ptr<detail::TextureObject>* AttachedTexture(ContextState& s, c
   return &it->second;
 }
 
+// AttachmentSlots, then AttachedTexture: null when there is nothing more to do (n points found, 0 if none).
+const std::shared_ptr<detail::TextureObject>* SlotsAndTexture(ContextState& s, const char* what, Enum target,
+                                                              Enum attachment, std::uint32_t texture,
+                                                              Attachment* slots[2], int& n, Enum missing,
+                                                              bool bound = false) {
+  n = AttachmentSlots(s, what, target, attachment, texture, slots);
+  return n == 0 ? nullptr : AttachedTexture(s, what, texture, missing, bound);
+}
+
 // Attaches `texture`'s level at the n points of `slots` (what TextureSlots found).
 void AttachTexture(Attachment* const* slots, int n, const std::shared_ptr<detail::TextureObject>& texture, int level,
                    int face, int layer, bool layered) {
@@ -632,9 +641,8 @@ void Context::FramebufferTexture2D(Enum target, Enum attachment, Enum textarget,
 void Context::FramebufferTextureLayer(Enum target, Enum attachment, std::uint32_t texture, int level, int layer) {
   auto& s = *state_;
   Attachment* slots[2] = {nullptr, nullptr};
-  const int n = AttachmentSlots(s, __func__, target, attachment, texture, slots);
-  if (n == 0) return;
-  const auto* it = AttachedTexture(s, __func__, texture, INVALID_OPERATION);
+  int n = 0;
+  const auto* it = SlotsAndTexture(s, __func__, target, attachment, texture, slots, n, INVALID_OPERATION);
   if (!it) return;
   const Enum kind = (*it)->target;
   if (kind != TEXTURE_2D_ARRAY && kind != TEXTURE_3D) return s.SetError(INVALID_OPERATION, __func__, "the texture is not a TEXTURE_2D_ARRAY or TEXTURE_3D");
@@ -647,10 +655,9 @@ void Context::FramebufferTextureLayer(Enum target, Enum attachment, std::uint32_
 void Context::FramebufferTexture(Enum target, Enum attachment, std::uint32_t texture, int level) {
   auto& s = *state_;
   Attachment* slots[2] = {nullptr, nullptr};
-  const int n = AttachmentSlots(s, __func__, target, attachment, texture, slots);
-  if (n == 0) return;
+  int n = 0;
   // (OpenGL 4.6, section 9.2.8: INVALID_VALUE here, where the other FramebufferTexture calls say INVALID_OPERATION.)
-  const auto* it = AttachedTexture(s, __func__, texture, INVALID_VALUE, true);
+  const auto* it = SlotsAndTexture(s, __func__, target, attachment, texture, slots, n, INVALID_VALUE, true);
   if (!it) return;
   const Enum kind = (*it)->target;
   if (level < 0 || level >= LevelCount(kind) || (kind == TEXTURE_2D_MULTISAMPLE && level != 0)) return s.SetError(INVALID_VALUE, __func__, "level is negative or beyond the texture's largest mipmap level");
@@ -661,9 +668,8 @@ void Context::FramebufferTexture3D(Enum target, Enum attachment, Enum textarget,
                                    int zoffset) {
   auto& s = *state_;
   Attachment* slots[2] = {nullptr, nullptr};
-  const int n = AttachmentSlots(s, __func__, target, attachment, texture, slots);
-  if (n == 0) return;
-  const auto* it = AttachedTexture(s, __func__, texture, INVALID_OPERATION);
+  int n = 0;
+  const auto* it = SlotsAndTexture(s, __func__, target, attachment, texture, slots, n, INVALID_OPERATION);
   if (!it) return;
   if (textarget != TEXTURE_3D || (*it)->target != TEXTURE_3D) return s.SetError(INVALID_OPERATION, __func__, "textarget and the texture must be TEXTURE_3D");
   if (level < 0 || level >= LevelCount(TEXTURE_3D)) return s.SetError(INVALID_VALUE, __func__, "level is negative or beyond the largest mipmap level");

@@ -30,6 +30,20 @@ TextureObject MakeLayered(Enum target, int w, int h, int d, F f) {
   return t;
 }
 
+// A colour array (RGBA8) and a depth array (DEPTH_COMPONENT32F) of size x size x layers, no data, and a framebuffer
+// object bound (nothing attached yet).
+struct ArrayTargets {
+  std::uint32_t color = 0, depth = 0, fbo = 0;
+  ArrayTargets(Context& gl, int size, int layers)
+      : color(gl.GenTexture()), depth(gl.GenTexture()), fbo(gl.GenFramebuffer()) {
+    gl.BindTexture(TEXTURE_2D_ARRAY, color);
+    gl.TexImage3D(TEXTURE_2D_ARRAY, 0, RGBA8, size, size, layers, 0, RGBA, UNSIGNED_BYTE, nullptr);
+    gl.BindTexture(TEXTURE_2D_ARRAY, depth);
+    gl.TexImage3D(TEXTURE_2D_ARRAY, 0, DEPTH_COMPONENT32F, size, size, layers, 0, DEPTH_COMPONENT, FLOAT, nullptr);
+    gl.BindFramebuffer(FRAMEBUFFER, fbo);
+  }
+};
+
 // Units 0 of every kind pointing at one view.
 struct Bound {
   TextureView view;
@@ -216,12 +230,8 @@ TEST_CASE("TexImage3D lays out images plane by plane; GenerateMipmap keeps layer
 
 TEST_CASE("FramebufferTextureLayer draws into one layer, of colour and of depth", "[texture][layers][framebuffer]") {
   Context gl(4, 4);
-  const std::uint32_t color = gl.GenTexture(), depth = gl.GenTexture(), fbo = gl.GenFramebuffer();
-  gl.BindTexture(TEXTURE_2D_ARRAY, color);
-  gl.TexImage3D(TEXTURE_2D_ARRAY, 0, RGBA8, 4, 4, 3, 0, RGBA, UNSIGNED_BYTE, nullptr);
-  gl.BindTexture(TEXTURE_2D_ARRAY, depth);
-  gl.TexImage3D(TEXTURE_2D_ARRAY, 0, DEPTH_COMPONENT32F, 4, 4, 3, 0, DEPTH_COMPONENT, FLOAT, nullptr);
-  gl.BindFramebuffer(FRAMEBUFFER, fbo);
+  const ArrayTargets arrays(gl, 4, 3);
+  const std::uint32_t color = arrays.color, depth = arrays.depth;
   testing::SolidShader solid;
   gl.UseProgram(solid);
   testing::MakeVertexArray(gl, {{-1, -1, 0, 1}, {1, -1, 0, 1}, {-1, 1, 0, 1}, {1, 1, 0, 1}});
@@ -642,12 +652,8 @@ TEST_CASE("gl_Layer from the vertex stage routes each primitive to its layer", "
   for (int threads : {1, 3}) {
     INFO(threads << " threads");
     Context gl(8, 8, Context::Options{threads});
-    const std::uint32_t color = gl.GenTexture(), depth = gl.GenTexture(), fbo = gl.GenFramebuffer();
-    gl.BindTexture(TEXTURE_2D_ARRAY, color);
-    gl.TexImage3D(TEXTURE_2D_ARRAY, 0, RGBA8, 8, 8, 4, 0, RGBA, UNSIGNED_BYTE, nullptr);
-    gl.BindTexture(TEXTURE_2D_ARRAY, depth);
-    gl.TexImage3D(TEXTURE_2D_ARRAY, 0, DEPTH_COMPONENT32F, 8, 8, 4, 0, DEPTH_COMPONENT, FLOAT, nullptr);
-    gl.BindFramebuffer(FRAMEBUFFER, fbo);
+    const ArrayTargets arrays(gl, 8, 4);
+    const std::uint32_t color = arrays.color, depth = arrays.depth, fbo = arrays.fbo;
     gl.FramebufferTexture(FRAMEBUFFER, COLOR_ATTACHMENT0, color, 0);
     gl.FramebufferTexture(FRAMEBUFFER, DEPTH_ATTACHMENT, depth, 0);
     REQUIRE(gl.CheckFramebufferStatus(FRAMEBUFFER) == FRAMEBUFFER_COMPLETE);

@@ -14,12 +14,15 @@ namespace conformance {
 
 namespace {
 
-constexpr const char* kVertexShader = R"(#version 330 core
-layout(location = 0) in vec4 a_pos;
-layout(location = 1) in vec4 a_color;
-layout(location = 2) in vec4 a_extra;
-out vec4 v_color;
-out vec4 v_extra;
+// The declarations of the vertex shaders that read Vertex's three attributes (after #version and any #extension).
+#define VERTEX_DECLARATIONS "\n" \
+  "layout(location = 0) in vec4 a_pos;\n" \
+  "layout(location = 1) in vec4 a_color;\n" \
+  "layout(location = 2) in vec4 a_extra;\n" \
+  "out vec4 v_color;\n" \
+  "out vec4 v_extra;\n"
+
+constexpr const char* kVertexShader = "#version 330 core" VERTEX_DECLARATIONS R"(
 void main() {
   gl_Position = a_pos;
   v_color = a_color;
@@ -39,12 +42,7 @@ void main() {
 }
 )";
 
-constexpr const char* kFeedbackVertexShader = R"(#version 330 core
-layout(location = 0) in vec4 a_pos;
-layout(location = 1) in vec4 a_color;
-layout(location = 2) in vec4 a_extra;
-out vec4 v_color;
-out vec4 v_extra;
+constexpr const char* kFeedbackVertexShader = "#version 330 core" VERTEX_DECLARATIONS R"(
 void main() {
   gl_Position = a_pos;
   v_color = a_color;
@@ -52,12 +50,8 @@ void main() {
 }
 )";
 
-constexpr const char* kLayerVertexShader = R"(#version 330 core
-#extension GL_ARB_shader_viewport_layer_array : require
-layout(location = 0) in vec4 a_pos;
-layout(location = 1) in vec4 a_color;
-layout(location = 2) in vec4 a_extra;
-out vec4 v_color;
+constexpr const char* kLayerVertexShader =
+    "#version 330 core\n#extension GL_ARB_shader_viewport_layer_array : require" VERTEX_DECLARATIONS R"(
 void main() {
   gl_Position = a_pos;
   v_color = a_color;

@@ -460,22 +460,24 @@ TEST_CASE("query results equal Mesa's", "[conformance]") {
   CHECK(want[6] == 22);
 }
 
-// Records a step of a state comparison: the value (0 where the call has none) and the error after it.
-auto Recorder(Backend& b, std::vector<std::int64_t>& out) {
-  return [&b, &out](std::int64_t value) {
-    out.push_back(value);
-    out.push_back(b.GetError());
-  };
-}
-
-// `run` on Mesa and on softgl (size x size windows): its (value, error) pairs, step by step, equal.
+// `run(backend, step)` on Mesa and on softgl (size x size windows), where step(value) records a value (0 where the
+// call has none) and the error after it: the (value, error) pairs, step by step, equal.
 template <class Run>
 void CompareSteps(int size, Run&& run) {
+  auto steps = [&](Backend& b) {
+    std::vector<std::int64_t> out;
+    const auto step = [&](std::int64_t value) {
+      out.push_back(value);
+      out.push_back(b.GetError());
+    };
+    run(b, step);
+    return out;
+  };
   std::string error;
   auto mesa = MakeGlBackend(size, size, &error);
   REQUIRE(mesa);
   auto ours = MakeSoftglBackend(size, size);
-  const std::vector<std::int64_t> want = run(*mesa), got = run(*ours);
+  const std::vector<std::int64_t> want = steps(*mesa), got = steps(*ours);
   REQUIRE(got.size() == want.size());
   for (std::size_t i = 0; i < want.size(); i += 2) {
     INFO("step " << i / 2);
@@ -488,9 +490,7 @@ TEST_CASE("conditional rendering, fences and ClampColor: errors, state and reads
   namespace gl = softgl;
   // Each step's error (and value, where it has one) in both; the fence's wait results are compared only where
   // they do not depend on how fast the work runs.
-  auto run = [](Backend& b) {
-    std::vector<std::int64_t> out;
-    const auto step = Recorder(b, out);
+  auto run = [](Backend& b, const auto& step) {
     step(b.GetIntegers(gl::CLAMP_READ_COLOR, 1)[0]);
     b.ClampColor(gl::CLAMP_READ_COLOR, 2);
     step(0);
@@ -570,16 +570,13 @@ TEST_CASE("conditional rendering, fences and ClampColor: errors, state and reads
     step(b.ClientWaitSync(fence, 0, 0));
     b.DeleteSync(fence);
     step(0);
-    return out;
   };
   CompareSteps(32, run);
 }
 
 TEST_CASE("per-draw-buffer state (ColorMaski, Enablei) and the indexed queries as Mesa's", "[conformance]") {
   namespace gl = softgl;
-  auto run = [](Backend& b) {
-    std::vector<std::int64_t> out;
-    const auto step = Recorder(b, out);
+  auto run = [](Backend& b, const auto& step) {
     auto read = [&](std::uint32_t i) {
       for (bool v : b.GetBooleansI(gl::COLOR_WRITEMASK, i, 4)) step(v);
       step(b.IsEnabledi(gl::BLEND, i));
@@ -616,16 +613,13 @@ TEST_CASE("per-draw-buffer state (ColorMaski, Enablei) and the indexed queries a
     step(0);
     (void)b.GetIntegersI(gl::DEPTH_FUNC, 0, 1);
     step(0);
-    return out;
   };
   CompareSteps(16, run);
 }
 
 TEST_CASE("transform feedback: recorded values, counts, state and errors as Mesa's", "[conformance]") {
   namespace gl = softgl;
-  auto run = [](Backend& b) {
-    std::vector<std::int64_t> out;
-    const auto step = Recorder(b, out);
+  auto run = [](Backend& b, const auto& step) {
     auto floats = [&](std::uint32_t buffer, int n) {  // each float's bits
       for (float f : b.ReadBufferFloats(buffer, n)) {
         std::uint32_t bits = 0;
@@ -778,16 +772,13 @@ TEST_CASE("transform feedback: recorded values, counts, state and errors as Mesa
     b.BindTransformFeedback(0);
     b.DrawTransformFeedback(gl::POINTS, fresh);  // never ended
     step(0);
-    return out;
   };
   CompareSteps(16, run);
 }
 
 TEST_CASE("layered framebuffers: completeness, attachment state and errors as Mesa's", "[conformance]") {
   namespace gl = softgl;
-  auto run = [](Backend& b) {
-    std::vector<std::int64_t> out;
-    const auto step = Recorder(b, out);
+  auto run = [](Backend& b, const auto& step) {
     const Enum fb = gl::FRAMEBUFFER, c0 = gl::COLOR_ATTACHMENT0, c1 = gl::COLOR_ATTACHMENT0 + 1;
     auto state = [&](Enum attachment) {
       for (Enum pname : {gl::FRAMEBUFFER_ATTACHMENT_LAYERED, gl::FRAMEBUFFER_ATTACHMENT_TEXTURE_LAYER,
@@ -837,7 +828,6 @@ TEST_CASE("layered framebuffers: completeness, attachment state and errors as Me
     b.BindFramebuffer(fb, 0);
     b.FramebufferTexture(fb, c0, array, 0);
     step(0);
-    return out;
   };
   CompareSteps(16, run);
 }

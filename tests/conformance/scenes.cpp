@@ -1045,19 +1045,27 @@ void BlitQuarters(Backend& b, const Enum (&att)[4]) {
   b.BindFramebuffer(FRAMEBUFFER, 0);
 }
 
-void MultipleOutputs(Backend& b) {
+// The window cleared black, then a new framebuffer object bound with four 64 x 64 colour textures of `formats` at
+// `att` (and a DEPTH24_STENCIL8 renderbuffer with `depth_stencil`), the viewport on it. False when it is not
+// complete (the window is left black: the check fails).
+bool FourTargets(Backend& b, const Enum (&att)[4], const Enum (&formats)[4], bool depth_stencil) {
   ClearBlack(b);
-  const Enum att[4] = {COLOR_ATTACHMENT0, COLOR_ATTACHMENT0 + 1, COLOR_ATTACHMENT0 + 2, COLOR_ATTACHMENT0 + 3};
-  const Enum formats[4] = {RGBA8, RGBA16F, RG8, R32F};
-  const std::uint32_t fbo = b.GenFramebuffer();
-  b.BindFramebuffer(FRAMEBUFFER, fbo);
+  b.BindFramebuffer(FRAMEBUFFER, b.GenFramebuffer());
   for (int k = 0; k < 4; ++k) b.AttachNewTexture(FRAMEBUFFER, att[k], formats[k], 64, 64);
-  const std::uint32_t depth = b.GenRenderbuffer();
-  b.BindRenderbuffer(depth);
-  b.RenderbufferStorage(DEPTH24_STENCIL8, 64, 64);
-  b.FramebufferRenderbuffer(FRAMEBUFFER, DEPTH_STENCIL_ATTACHMENT, depth);
-  if (b.CheckFramebufferStatus(FRAMEBUFFER) != FRAMEBUFFER_COMPLETE) return;  // left black: the check fails
+  if (depth_stencil) {
+    const std::uint32_t depth = b.GenRenderbuffer();
+    b.BindRenderbuffer(depth);
+    b.RenderbufferStorage(DEPTH24_STENCIL8, 64, 64);
+    b.FramebufferRenderbuffer(FRAMEBUFFER, DEPTH_STENCIL_ATTACHMENT, depth);
+  }
+  if (b.CheckFramebufferStatus(FRAMEBUFFER) != FRAMEBUFFER_COMPLETE) return false;
   b.Viewport(0, 0, 64, 64);
+  return true;
+}
+
+void MultipleOutputs(Backend& b) {
+  const Enum att[4] = {COLOR_ATTACHMENT0, COLOR_ATTACHMENT0 + 1, COLOR_ATTACHMENT0 + 2, COLOR_ATTACHMENT0 + 3};
+  if (!FourTargets(b, att, {RGBA8, RGBA16F, RG8, R32F}, true)) return;
   b.DrawBuffers(4, att);
   b.ClearColor(0.25f, -0.5f, 1.5f, 0.75f);
   b.ClearDepth(0.9);
@@ -1085,14 +1093,8 @@ void MultipleOutputs(Backend& b) {
 // blending on or off (Enablei / Disablei); a Clear through the four masks, a ClearBuffer of one buffer, then
 // overlapping blended quads with four outputs. Each buffer blitted into a quarter of the window.
 void PerBufferState(Backend& b) {
-  ClearBlack(b);
   const Enum att[4] = {COLOR_ATTACHMENT0, COLOR_ATTACHMENT0 + 1, COLOR_ATTACHMENT0 + 2, COLOR_ATTACHMENT0 + 3};
-  const Enum formats[4] = {RGBA8, RGBA16F, RGBA8, RG8};
-  const std::uint32_t fbo = b.GenFramebuffer();
-  b.BindFramebuffer(FRAMEBUFFER, fbo);
-  for (int k = 0; k < 4; ++k) b.AttachNewTexture(FRAMEBUFFER, att[k], formats[k], 64, 64);
-  if (b.CheckFramebufferStatus(FRAMEBUFFER) != FRAMEBUFFER_COMPLETE) return;  // left black: the check fails
-  b.Viewport(0, 0, 64, 64);
+  if (!FourTargets(b, att, {RGBA8, RGBA16F, RGBA8, RG8}, false)) return;
   b.DrawBuffers(4, att);
   b.ClearColor(0.2f, 0.35f, 0.4f, 1.0f);
   b.Clear(COLOR_BUFFER_BIT);
