@@ -136,12 +136,17 @@ bool CheckNotMapped(ContextState& s, const char* what, bool elements) {
   return true;
 }
 
-// While transform feedback records (OpenGL 4.6, section 13.3): a draw mode of another kind than
-// BeginTransformFeedback's, or a buffer being recorded into mapped, is INVALID_OPERATION. False with the error set.
-bool CheckFeedback(ContextState& s, const char* what, Enum mode) {
+// The draw's mode against the program's geometry stage (OpenGL 4.6, section 11.3.1: a mode that does not make the
+// primitives it takes is INVALID_OPERATION) and, while transform feedback records (section 13.3), against
+// BeginTransformFeedback's: primitives of another kind (the geometry stage's output, with one), or a buffer being
+// recorded into mapped, are INVALID_OPERATION. False with the error set. Needs a program.
+bool CheckModes(ContextState& s, const char* what, Enum mode) {
+  const GeometryLayout* g = s.program->Geometry();
+  if (g && !g->Accepts(mode)) return s.SetError(INVALID_OPERATION, what, "the draw's mode does not make the primitives the program's geometry stage takes (kGeometry.input)"), false;
   const TransformFeedbackObject& t = *s.feedback;
   if (!t.Recording()) return true;
-  if (detail::VerticesPerPrimitive(mode) != detail::VerticesPerPrimitive(t.mode)) return s.SetError(INVALID_OPERATION, what, "the draw's mode is not of the kind BeginTransformFeedback was given"), false;
+  const int kind = g ? (g->output == POINTS ? 1 : g->output == LINE_STRIP ? 2 : 3) : detail::VerticesPerPrimitive(mode);
+  if (kind != detail::VerticesPerPrimitive(t.mode)) return s.SetError(INVALID_OPERATION, what, "the draw makes primitives of another kind than BeginTransformFeedback was given"), false;
   for (int b = 0; b < t.layout->Buffers(); ++b)
     if (t.binding[b].buffer && t.binding[b].buffer->mapped) return s.SetError(INVALID_OPERATION, what, "a buffer transform feedback records into is mapped"), false;
   return true;
@@ -152,7 +157,7 @@ void DrawArraysChecked(ContextState& s, const char* what, Enum mode, int first, 
   if (first < 0 || count < 0) return s.SetError(INVALID_VALUE, what, "first or count is negative");
   if (instances < 0) return s.SetError(INVALID_VALUE, what, "instancecount is negative");
   if (s.vao == nullptr || s.program == nullptr) return s.SetError(INVALID_OPERATION, what, "needs a bound vertex array and a shader (UseProgram)");
-  if (!CheckNotMapped(s, what, false) || !CheckFeedback(s, what, mode)) return;
+  if (!CheckNotMapped(s, what, false) || !CheckModes(s, what, mode)) return;
   if (instances == 0) return;
   detail::DrawCall call;
   call.mode = mode;
@@ -181,7 +186,7 @@ bool CheckElements(ContextState& s, const char* what, Enum mode, Enum type) {
 }
 bool CheckElementsBound(ContextState& s, const char* what, Enum mode) {
   if (s.vao == nullptr || s.program == nullptr || !s.vao->element_buffer) return s.SetError(INVALID_OPERATION, what, "needs a bound vertex array with an element buffer, and a shader (UseProgram)"), false;
-  return CheckNotMapped(s, what, true) && CheckFeedback(s, what, mode);
+  return CheckNotMapped(s, what, true) && CheckModes(s, what, mode);
 }
 bool CheckElementRange(ContextState& s, const char* what, int count, Enum type, std::size_t offset) {
   const auto& store = s.vao->element_buffer->data;
@@ -318,7 +323,7 @@ void Context::MultiDrawArrays(Enum mode, const int* first, const int* count, int
   for (int i = 0; i < drawcount; ++i)
     if (first[i] < 0 || count[i] < 0) return s.SetError(INVALID_VALUE, __func__, "a first or count is negative");
   if (s.vao == nullptr || s.program == nullptr) return s.SetError(INVALID_OPERATION, __func__, "needs a bound vertex array and a shader (UseProgram)");
-  if (!CheckNotMapped(s, __func__, false) || !CheckFeedback(s, __func__, mode)) return;
+  if (!CheckNotMapped(s, __func__, false) || !CheckModes(s, __func__, mode)) return;
   for (int i = 0; i < drawcount; ++i) DrawArrays(mode, first[i], count[i]);
 }
 

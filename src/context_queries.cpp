@@ -162,6 +162,11 @@ bool QueryState(ContextState& s, Enum pname, StateValue& out) {
     case MAX_RENDERBUFFER_SIZE: return integer(kMaxFramebufferSize);
     case MAX_VIEWPORT_DIMS: return put(Kind::kInt, {double(kMaxFramebufferSize), double(kMaxFramebufferSize)});
     case MAX_VARYING_COMPONENTS: return integer(kMaxVaryingFloats);
+    case MAX_GEOMETRY_INPUT_COMPONENTS:
+    case MAX_GEOMETRY_OUTPUT_COMPONENTS: return integer(kMaxVaryingFloats);
+    case MAX_GEOMETRY_OUTPUT_VERTICES: return integer(kMaxGeometryOutputVertices);
+    case MAX_GEOMETRY_TOTAL_OUTPUT_COMPONENTS: return integer(kMaxGeometryTotalOutputFloats);
+    case MAX_GEOMETRY_SHADER_INVOCATIONS: return integer(kMaxGeometryInvocations);
     case MAX_ELEMENTS_VERTICES:
     case MAX_ELEMENTS_INDICES: return integer(detail::kDrawChunk);  // larger draws work, in pieces
     case POINT_SIZE_RANGE: return put(Kind::kFloat, {1.0, double(detail::kMaxPointSize)});

@@ -7,6 +7,7 @@
 
 #include "clipper.h"
 #include "culling.h"
+#include "geometry_stage.h"
 #include "binner.h"
 #include "rasterizer.h"  // PolygonOffset, TriangleCentreBox
 #include "simd.h"
@@ -20,10 +21,60 @@ constexpr int kVertexJob = 16 * kVertexBatch;
 constexpr std::size_t kBinJob = 1024;     // primitives clipped and binned per job, at least
 constexpr std::size_t kBinJobMax = 4096;  // and at most
 
-// Stage 1-2: fetch and shade every vertex the draw references, once each where indices repeat.
+// Whether any of the program's `nvar` varyings is noperspective.
+bool AnyNoPerspective(const Interpolation* interpolation, int nvar) {
+  bool any = false;
+  for (int k = 0; interpolation && k < nvar; ++k) any = any || interpolation[k] == Interpolation::kNoPerspective;
+  return any;
+}
+
+// What the stages after the last one before rasterization need of vertices [base, base + m) of `out`: what
+// transform feedback records (`record`), clip codes, and the window position of each vertex (the divide and
+// viewport transform of ToWindow, done once per vertex rather than once per primitive using it), several vertices
+// per instruction; the varyings divided by w for the vertices inside the guard band. Noperspective varyings are
+// multiplied by the clip-space w here, so that clipping (linear in clip space) and the divide by w give each window
+// vertex the varying's own value, which the rasterizer interpolates linearly.
+void FinishVertices(ShadedVertices& out, int base, int m, const ClipPlanes& planes, const ViewportTransform& viewport,
+                    const Interpolation* interpolation, bool noperspective, const FeedbackLayout* record) {
+  if (record)  // what transform feedback records, before anything below changes the varyings
+    for (int i = base; i < base + m; ++i) {
+      float* dst = out.feedback.data() + std::size_t(i) * std::size_t(record->floats);
+      const float* var = out.varyings.data() + std::size_t(i) * out.nvar;
+      for (const FeedbackLayout::Item& item : record->items) {
+        const float* src = item.first < 0 ? &out.position[std::size_t(i)].x : var + item.first;
+        std::memcpy(dst, src, sizeof(float) * std::size_t(item.components));
+        dst += item.components;
+      }
+    }
+  ClipCodesOfVertices(&out.position[std::size_t(base)], m, planes, &out.clip_codes[std::size_t(base)]);
+  WindowPositions(&out.position[std::size_t(base)], m, viewport, &out.window[std::size_t(base)]);
+  for (int i = base; out.nvar > 0 && i < base + m; ++i) {
+    const float w = out.position[std::size_t(i)].w;
+    float* __restrict v = out.varyings.data() + std::size_t(i) * out.nvar;
+    if (noperspective)
+      for (int k = 0; k < out.nvar; ++k)
+        if (interpolation[k] == Interpolation::kNoPerspective) v[k] *= w;
+    if (out.clip_codes[std::size_t(i)] != 0) continue;
+    const float oow = out.window[std::size_t(i)].w;
+    float* __restrict win = out.window_varyings.data() + std::size_t(i) * out.nvar;
+    for (int k = 0; k < out.nvar; ++k) win[k] = v[k] * oow;
+  }
+}
+
+// The arrays FinishVertices fills, sized for out.count vertices.
+void SizeFinished(ShadedVertices& out, const FeedbackLayout* record) {
+  const std::size_t n = std::size_t(out.count);
+  out.clip_codes.resize(n);
+  out.window.resize(n);
+  out.window_varyings.resize(n * std::size_t(out.nvar));
+  if (record) out.feedback.resize(n * std::size_t(record->floats));
+}
+
+// Stage 1-2: fetch and shade every vertex the draw references, once each where indices repeat. With `geometry`
+// (a geometry stage reads them), only shaded: nothing FinishVertices does.
 void ShadeVertices(const DrawCall& call, const FetchPlan& fetch, const Program& program, const Textures* textures,
                    const Interpolation* interpolation, const ViewportTransform& viewport,
-                   const FeedbackLayout* record, bool layers, WorkerPool& pool, Scratch& s) {
+                   const FeedbackLayout* record, bool layers, bool geometry, WorkerPool& pool, Scratch& s) {
   const int count = call.count;
   auto& to_shade = s.shade_indices;
   auto& map = s.element_to_shaded;
@@ -75,23 +126,16 @@ void ShadeVertices(const DrawCall& call, const FetchPlan& fetch, const Program& 
   const int n = unique * call.instances;
   ShadedVertices& out = s.shaded;
   out.count = n;
-  out.nvar = program.VaryingFloats();
+  out.nvar = program.VertexVaryingFloats();
   out.position.resize(std::size_t(n));
   out.point_size.resize(std::size_t(n));
   out.varyings.resize(std::size_t(n) * std::size_t(out.nvar));
-  out.clip_codes.resize(std::size_t(n));
-  out.window.resize(std::size_t(n));
-  out.window_varyings.resize(std::size_t(n) * std::size_t(out.nvar));
-  if (record) out.feedback.resize(std::size_t(n) * std::size_t(record->floats));
+  if (!geometry) SizeFinished(out, record);
   if (layers) out.layer.resize(std::size_t(n));
   const ClipPlanes planes = GuardBandPlanes(viewport);
   if (s.vertex.size() < std::size_t(pool.Threads())) s.vertex.resize(std::size_t(pool.Threads()));
   const int simd = int(CpuSimdLevel());
-  // Noperspective varyings are multiplied by the clip-space w here, so that clipping (linear in clip space) and
-  // the divide by w give each window vertex the varying's own value, which the rasterizer interpolates linearly.
-  bool noperspective = false;
-  for (int k = 0; interpolation && k < program.VaryingFloats(); ++k)
-    noperspective = noperspective || interpolation[k] == Interpolation::kNoPerspective;
+  const bool noperspective = AnyNoPerspective(interpolation, out.nvar);
   // Jobs of kVertexJob vertices, shaded in batches of kVertexBatch; every vertex is written by one job only.
   const int jobs = (n + kVertexJob - 1) / kVertexJob;
   pool.Run(jobs, [&](int job, int worker) {
@@ -121,32 +165,7 @@ void ShadeVertices(const DrawCall& call, const FetchPlan& fetch, const Program& 
       batch.varyings = out.varyings.data() + std::size_t(base) * out.nvar;
       batch.textures = textures;
       program.ShadeVertices(batch);
-      if (record)  // what transform feedback records, before anything below changes the varyings
-        for (int i = base; i < base + m; ++i) {
-          float* dst = out.feedback.data() + std::size_t(i) * std::size_t(record->floats);
-          const float* var = out.varyings.data() + std::size_t(i) * out.nvar;
-          for (const FeedbackLayout::Item& item : record->items) {
-            const float* src = item.first < 0 ? &out.position[std::size_t(i)].x : var + item.first;
-            std::memcpy(dst, src, sizeof(float) * std::size_t(item.components));
-            dst += item.components;
-          }
-        }
-      // Clip codes, and the window position of each vertex (the divide and viewport transform of ToWindow, done
-      // once per vertex rather than once per primitive using it), several vertices per instruction; the varyings
-      // divided by w for the vertices inside the guard band.
-      ClipCodesOfVertices(&out.position[std::size_t(base)], m, planes, &out.clip_codes[std::size_t(base)]);
-      WindowPositions(&out.position[std::size_t(base)], m, viewport, &out.window[std::size_t(base)]);
-      for (int i = base; out.nvar > 0 && i < base + m; ++i) {
-        const float w = out.position[std::size_t(i)].w;
-        float* __restrict v = out.varyings.data() + std::size_t(i) * out.nvar;
-        if (noperspective)
-          for (int k = 0; k < out.nvar; ++k)
-            if (interpolation[k] == Interpolation::kNoPerspective) v[k] *= w;
-        if (out.clip_codes[std::size_t(i)] != 0) continue;
-        const float oow = out.window[std::size_t(i)].w;
-        float* __restrict win = out.window_varyings.data() + std::size_t(i) * out.nvar;
-        for (int k = 0; k < out.nvar; ++k) win[k] = v[k] * oow;
-      }
+      if (!geometry) FinishVertices(out, base, m, planes, viewport, interpolation, noperspective, record);
     }
   });
 }
@@ -409,24 +428,86 @@ struct AssembledPiece {
   std::uint32_t unique = 0;
 };
 
-// The front half of a piece: vertices shaded, primitives assembled and counted, and recorded by transform
-// feedback. False when there is nothing to bin.
-bool ShadeAndAssemble(const DrawCall& call, const FetchPlan& fetch, const DrawState& state, WorkerPool& pool,
-                      Scratch& scratch, AssembledPiece& a) {
+// Transform feedback and the PRIMITIVES_GENERATED query take the primitives of a piece, in order.
+void CountAndRecord(const AssembledPiece& a, const DrawState& state, Scratch& scratch) {
+  if (state.primitives_generated) *state.primitives_generated += a.count;
+  if (state.feedback && a.per_instance > 0)
+    RecordFeedback(scratch.primitives, a.per_instance, a.count, a.unique, scratch.element_to_shaded, scratch.shaded,
+                   *state.feedback);
+}
+
+// The program's geometry stage on the primitives the vertex stage's outputs make (in scratch.geometry), in groups
+// of input primitives; each group's output, finished as ShadeVertices finishes vertices, replaces scratch.shaded and
+// scratch.primitives (with element_to_shaded the identity), is counted and recorded, and goes to bin(piece).
+template <class Bin>
+void Geometry(const DrawCall& call, const DrawState& state, const AssembledPiece& input, WorkerPool& pool,
+              Scratch& scratch, Bin&& bin) {
+  const Program& program = *state.program;
+  GeometryScratch& g = scratch.geometry;
+  std::swap(g.input, scratch.shaded);
+  std::swap(g.input_primitives, scratch.primitives);
+  std::swap(g.input_map, scratch.element_to_shaded);
+  GeometryInput in;
+  in.layout = program.Geometry();
+  in.prims = &g.input_primitives;
+  in.per_instance = input.per_instance;
+  in.count = input.count;
+  in.unique = input.unique;
+  in.map = g.input_map.data();
+  in.vertices = &g.input;
+  in.first_instance = call.instance;
+  in.primitive_base = call.primitive_base;
+  in.textures = state.textures;
+  in.provoking_first = state.primitive.provoking_first;
+  const FeedbackLayout* record = state.feedback ? state.feedback->layout : nullptr;
+  const ClipPlanes planes = GuardBandPlanes(state.viewport);
+  const bool noperspective = AnyNoPerspective(state.interpolation, program.VaryingFloats());
+  const std::size_t group = GeometryGroup(*in.layout);
+  for (std::size_t begin = 0; begin < input.count; begin += group) {
+    const std::size_t end = std::min(input.count, begin + group);
+    ShadedVertices& out = scratch.shaded;
+    RunGeometry(program, in, begin, end, state.layers > 1, pool, g, out, scratch.primitives);
+    SizeFinished(out, record);
+    constexpr int kFinishJob = 4096;
+    pool.Run((out.count + kFinishJob - 1) / kFinishJob, [&](int job, int) {
+      const int base = job * kFinishJob;
+      FinishVertices(out, base, std::min(kFinishJob, out.count - base), planes, state.viewport, state.interpolation,
+                     noperspective, record);
+    });
+    std::vector<std::uint32_t>& map = scratch.element_to_shaded;
+    if (map.size() < std::size_t(out.count)) map.resize(std::size_t(out.count));
+    for (std::uint32_t i = 0; i < std::uint32_t(out.count); ++i) map[i] = i;
+    AssembledPiece a;
+    a.per = scratch.primitives.vertices_per_primitive;
+    a.per_instance = a.count = scratch.primitives.indices.size() / std::size_t(a.per);
+    a.unique = std::uint32_t(out.count);
+    CountAndRecord(a, state, scratch);
+    if (a.count > 0) bin(a);
+  }
+}
+
+// The front half of a piece: vertices shaded, primitives assembled (and, with a geometry stage, made anew), counted
+// and recorded by transform feedback; each set of primitives to bin goes to bin(piece), with scratch.shaded,
+// scratch.primitives and scratch.element_to_shaded holding them.
+template <class Bin>
+void ShadeAndAssemble(const DrawCall& call, const FetchPlan& fetch, const DrawState& state, WorkerPool& pool,
+                      Scratch& scratch, Bin&& bin) {
+  const bool geometry = state.program->Geometry() != nullptr;
   ShadeVertices(call, fetch, *state.program, state.textures, state.interpolation, state.viewport,
-                state.feedback ? state.feedback->layout : nullptr, state.layers > 1, pool, scratch);
+                state.feedback ? state.feedback->layout : nullptr, state.layers > 1 && !geometry, geometry, pool,
+                scratch);
   Primitives& prims = scratch.primitives;
-  AssemblePrimitives(call.mode, call.count, call.restarts, call.restart_count, prims, state.primitive.provoking_first);
+  AssemblePrimitives(call.mode, call.count, call.restarts, call.restart_count, prims, state.primitive.provoking_first,
+                     geometry);
+  AssembledPiece a;
   a.per = prims.vertices_per_primitive;
-  if (a.per < 1 || a.per > 3) return false;
+  if (a.per < 1) return;
   a.per_instance = prims.indices.size() / std::size_t(a.per);
   a.count = a.per_instance * std::size_t(call.instances);
-  if (state.primitives_generated) *state.primitives_generated += a.count;
   a.unique = std::uint32_t(scratch.shaded.count / call.instances);
-  if (state.feedback && a.per_instance > 0)
-    RecordFeedback(prims, a.per_instance, a.count, a.unique, scratch.element_to_shaded, scratch.shaded,
-                   *state.feedback);
-  return a.count > 0;
+  if (geometry) return a.count > 0 ? Geometry(call, state, a, pool, scratch, bin) : void();
+  CountAndRecord(a, state, scratch);
+  if (a.count > 0) bin(a);
 }
 
 // The back half: the primitives clipped and binned into `packet`'s batches in jobs of kBinJob to kBinJobMax
@@ -507,22 +588,11 @@ void BinPrimitives(const AssembledPiece& a, const DrawState& state, DrawPacket& 
   for (int j = 0; j < jobs; ++j) frame.AddBytes(frame.Batch(packet, j).Bytes());
 }
 
-// One draw small enough to hold all its shaded vertices at once, shaded and binned. Without a packet (nothing to
-// rasterize), only shaded, counted and recorded by transform feedback.
-void RecordChunk(const DrawCall& call, const FetchPlan& fetch, const DrawState& state, DrawPacket* packet,
-                 Frame& frame, WorkerPool& pool, Scratch& scratch) {
-  AssembledPiece a;
-  if (ShadeAndAssemble(call, fetch, state, pool, scratch, a) && packet)
-    BinPrimitives(a, state, *packet, frame, pool, scratch);
-}
-
-// A piece drawn into a layered framebuffer whose program writes gl_Layer: shaded once, then each primitive binned
-// into a draw command of its layer's buffers (its provoking vertex's layer; one past the last goes to the last,
-// as does a negative one, as llvmpipe has it), layer after layer, the frame rendered between layers.
-void RecordLayeredPiece(const DrawCall& call, const FetchPlan& fetch, const DrawState& state,
-                        const DrawPacket& proto, Frame& frame, WorkerPool& pool, Scratch& scratch) {
-  AssembledPiece a;
-  if (!ShadeAndAssemble(call, fetch, state, pool, scratch, a)) return;
+// Primitives drawn into a layered framebuffer whose program writes gl_Layer: each binned into a draw command of its
+// layer's buffers (its provoking vertex's layer; one past the last goes to the last, as does a negative one, as
+// llvmpipe has it), layer after layer, the frame rendered between layers.
+void BinLayered(const AssembledPiece& a, const DrawState& state, const DrawPacket& proto, Frame& frame,
+                WorkerPool& pool, Scratch& scratch) {
   const Primitives& prims = scratch.primitives;
   const std::size_t provoking = state.primitive.provoking_first ? 0 : std::size_t(a.per - 1);
   std::vector<int>& layer_of = scratch.primitive_layer;
@@ -546,16 +616,21 @@ void RecordLayeredPiece(const DrawCall& call, const FetchPlan& fetch, const Draw
   }
 }
 
-// Records one piece of a draw as its own command (a copy of the prototype packet), rendering the frame first
-// when what is recorded already exceeds the budget.
+// Records one piece of a draw: shaded, assembled, and its primitives binned into a command of their own (a copy
+// of the prototype packet; with a geometry stage, one per group of its output), the frame rendered first when what
+// is recorded already exceeds the budget. With nothing to rasterize, only shaded, counted and recorded by
+// transform feedback.
 void RecordPiece(const DrawCall& call, const FetchPlan& fetch, const DrawState& state, const DrawPacket& proto,
                  const RenderTarget& target, Frame& frame, WorkerPool& pool, Scratch& scratch) {
-  if (state.discard || state.bounds.Empty()) return RecordChunk(call, fetch, state, nullptr, frame, pool, scratch);
-  if (state.layers > 1) return RecordLayeredPiece(call, fetch, state, proto, frame, pool, scratch);
-  if (frame.Bytes() > kFrameBudgetBytes) frame.Render(pool, scratch.tiles);
-  DrawPacket& packet = frame.AddDraw(target, proto);
-  RecordChunk(call, fetch, state, &packet, frame, pool, scratch);
-  frame.ListLastDraw();
+  const bool draw = !state.discard && !state.bounds.Empty();
+  ShadeAndAssemble(call, fetch, state, pool, scratch, [&](const AssembledPiece& a) {
+    if (!draw) return;
+    if (state.layers > 1) return BinLayered(a, state, proto, frame, pool, scratch);
+    if (frame.Bytes() > kFrameBudgetBytes) frame.Render(pool, scratch.tiles);
+    DrawPacket& packet = frame.AddDraw(target, proto);
+    BinPrimitives(a, state, packet, frame, pool, scratch);
+    frame.ListLastDraw();
+  });
 }
 
 // A large draw with primitive restart: its runs (the element sequences between restart positions) in order, runs
@@ -564,9 +639,12 @@ void RecordPiece(const DrawCall& call, const FetchPlan& fetch, const DrawState& 
 void RecordRestartRuns(const DrawCall& call, const FetchPlan& fetch, const DrawState& state, const DrawPacket& packet,
                        const RenderTarget& target, Frame& frame, WorkerPool& pool, Scratch& scratch) {
   std::vector<std::uint32_t> group, group_restarts;
+  // gl_PrimitiveIDIn counts on across restarts: the primitives of the runs before, and before the group.
+  std::uint32_t done = call.primitive_base, group_base = done;
   auto flush = [&] {
     if (group.empty()) return;
     DrawCall sub = call;
+    sub.primitive_base = group_base;
     sub.elements = group.data();
     sub.count = int(group.size());
     sub.restarts = group_restarts.empty() ? nullptr : group_restarts.data();
@@ -586,15 +664,18 @@ void RecordRestartRuns(const DrawCall& call, const FetchPlan& fetch, const DrawS
       sub.count = length;
       sub.restarts = nullptr;
       sub.restart_count = 0;
+      sub.primitive_base = done;
       RecordDraw(sub, fetch, state, packet, target, frame, pool, scratch);
     } else if (length > 0) {
       if (group.size() + std::size_t(length) + 1 > std::size_t(kDrawChunk)) flush();
+      if (group.empty()) group_base = done;
       if (!group.empty()) {  // a restart position between runs, holding a copy of the run's first element
         group_restarts.push_back(std::uint32_t(group.size()));
         group.push_back(call.elements[begin]);
       }
       group.insert(group.end(), call.elements + begin, call.elements + end);
     }
+    done += std::uint32_t(PrimitiveCount(call.mode, length));
     begin = end + 1;
   }
   flush();
@@ -605,8 +686,10 @@ void RecordRestartRuns(const DrawCall& call, const FetchPlan& fetch, const DrawS
 void RecordDraw(const DrawCall& call, const FetchPlan& fetch, const DrawState& state, const DrawPacket& packet,
                 const RenderTarget& target, Frame& frame, WorkerPool& pool, Scratch& scratch) {
   if (call.count <= 0 || call.instances <= 0 || state.program == nullptr) return;
-  if ((state.bounds.Empty() || state.discard) && !state.feedback) {
-    // Nothing can be drawn; the primitives are still generated, and counted.
+  const GeometryLayout* geometry = state.program->Geometry();
+  if ((state.bounds.Empty() || state.discard) && !state.feedback && (!geometry || !state.primitives_generated)) {
+    // Nothing can be drawn; the primitives are still generated, and counted (a geometry stage's primitives are
+    // counted by running it).
     if (state.primitives_generated)
       *state.primitives_generated +=
           PrimitiveCount(call.mode, call.count, call.restarts, call.restart_count) * std::uint64_t(call.instances);
@@ -632,6 +715,24 @@ void RecordDraw(const DrawCall& call, const FetchPlan& fetch, const DrawState& s
     }
     return;
   }
+  if (call.mode == LINE_STRIP_ADJACENCY || call.mode == TRIANGLE_STRIP_ADJACENCY) {
+    // A strip with adjacency, whose first and last primitives take their adjacent vertices otherwise than the
+    // others, is drawn as the list its primitives make (with a geometry stage; without one, as LINES or
+    // TRIANGLES), in pieces.
+    Primitives list;
+    AssemblePrimitives(call.mode, call.count, call.restarts, call.restart_count, list,
+                       state.primitive.provoking_first, geometry != nullptr);
+    for (std::uint32_t& e : list.indices) e = call.elements ? call.elements[e] : call.first + e;
+    DrawCall sub = call;
+    sub.mode = geometry ? (call.mode == LINE_STRIP_ADJACENCY ? LINES_ADJACENCY : TRIANGLES_ADJACENCY)
+                        : (call.mode == LINE_STRIP_ADJACENCY ? LINES : TRIANGLES);
+    sub.elements = list.indices.data();
+    sub.count = int(list.indices.size());
+    sub.restarts = nullptr;
+    sub.restart_count = 0;
+    if (sub.count > 0) RecordDraw(sub, fetch, state, packet, target, frame, pool, scratch);
+    return;
+  }
   if (call.restart_count > 0) return RecordRestartRuns(call, fetch, state, packet, target, frame, pool, scratch);
 
   // A large draw goes through in pieces of at most kDrawChunk vertices, so that memory stays bounded whatever the
@@ -653,8 +754,11 @@ void RecordDraw(const DrawCall& call, const FetchPlan& fetch, const DrawState& s
       step = kDrawChunk - 2;
       begin = 1;
       break;
-    default: break;  // POINTS, LINES, TRIANGLES: kDrawChunk is a multiple of 6
+    default: break;  // lists: kDrawChunk is a multiple of 4 and 6
   }
+  // Vertices per primitive of a list, for gl_PrimitiveIDIn of each piece's first primitive.
+  const int list = call.mode == LINES_ADJACENCY ? 4 : call.mode == TRIANGLES_ADJACENCY ? 6 : VerticesPerPrimitive(call.mode);
+  const bool strip = call.mode == LINE_STRIP || call.mode == LINE_LOOP || call.mode == TRIANGLE_STRIP;
   std::vector<std::uint32_t>& piece = scratch.piece;
   piece.reserve(std::size_t(kDrawChunk));
   for (std::int64_t s = begin; s < count; s += step) {
@@ -665,6 +769,7 @@ void RecordDraw(const DrawCall& call, const FetchPlan& fetch, const DrawState& s
     DrawCall sub;
     sub.instance = call.instance;
     sub.mode = piece_mode;
+    sub.primitive_base = call.primitive_base + std::uint32_t(call.mode == TRIANGLE_FAN ? s - 1 : strip ? s : s / list);
     if (!call.elements && piece.empty()) {  // consecutive vertices: a DrawArrays piece of its own
       sub.first = call.first + std::uint32_t(s);
       sub.count = int(stop - s);
@@ -682,6 +787,7 @@ void RecordDraw(const DrawCall& call, const FetchPlan& fetch, const DrawState& s
     const std::uint32_t closing[2] = {element(count - 1), element(0)};
     DrawCall sub;
     sub.instance = call.instance;
+    sub.primitive_base = call.primitive_base + std::uint32_t(count - 1);
     sub.mode = LINES;
     sub.count = 2;
     sub.elements = closing;

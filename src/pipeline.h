@@ -15,6 +15,7 @@
 #include <softgl/shader.h>
 
 #include "framebuffer.h"
+#include "geometry_stage.h"
 #include "primitive_assembly.h"
 #include "tile_renderer.h"
 #include "types.h"
@@ -99,6 +100,7 @@ struct DrawCall {
   // the elements there are not vertices of any primitive.
   const std::uint32_t* restarts = nullptr;
   int restart_count = 0;
+  std::uint32_t primitive_base = 0;  // gl_PrimitiveIDIn of the first primitive (a piece of a larger draw's)
 };
 
 /// Memory one worker thread reuses while shading vertices.
@@ -129,6 +131,7 @@ struct Scratch {
   std::vector<VertexScratch> vertex;  // per worker
   std::vector<std::unique_ptr<PrimitiveScratch>> primitive;  // per worker
   std::vector<TileScratch> tiles;     // per worker
+  GeometryScratch geometry;
 };
 
 /// Recorded data beyond which a frame is rendered before recording goes on (between pieces of a draw).

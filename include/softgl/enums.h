@@ -79,6 +79,12 @@ inline constexpr Enum LINE_STRIP = 0x0003;
 inline constexpr Enum TRIANGLES = 0x0004;
 inline constexpr Enum TRIANGLE_STRIP = 0x0005;
 inline constexpr Enum TRIANGLE_FAN = 0x0006;
+// With adjacency: each primitive also carries the vertices next to it, which only a geometry stage reads (without
+// one they are drawn as LINES, LINE_STRIP, TRIANGLES and TRIANGLE_STRIP, the adjacent vertices ignored).
+inline constexpr Enum LINES_ADJACENCY = 0x000A;
+inline constexpr Enum LINE_STRIP_ADJACENCY = 0x000B;
+inline constexpr Enum TRIANGLES_ADJACENCY = 0x000C;
+inline constexpr Enum TRIANGLE_STRIP_ADJACENCY = 0x000D;
 
 // Provoking vertex conventions (ProvokingVertex): which vertex of a primitive gives flat varyings.
 inline constexpr Enum FIRST_VERTEX_CONVENTION = 0x8E4D;
@@ -455,6 +461,11 @@ inline constexpr Enum SAMPLE_POSITION = 0x8E50;         // GetMultisamplefv
 inline constexpr Enum MAX_TEXTURE_MAX_ANISOTROPY = 0x84FF;  // 16
 inline constexpr Enum MAX_VIEWPORT_DIMS = 0x0D3A;
 inline constexpr Enum MAX_VARYING_COMPONENTS = 0x8B4B;
+inline constexpr Enum MAX_GEOMETRY_OUTPUT_VERTICES = 0x8DE0;
+inline constexpr Enum MAX_GEOMETRY_TOTAL_OUTPUT_COMPONENTS = 0x8DE1;
+inline constexpr Enum MAX_GEOMETRY_SHADER_INVOCATIONS = 0x8E5A;
+inline constexpr Enum MAX_GEOMETRY_INPUT_COMPONENTS = 0x9123;
+inline constexpr Enum MAX_GEOMETRY_OUTPUT_COMPONENTS = 0x9124;
 inline constexpr Enum MAX_ELEMENTS_VERTICES = 0x80E8;
 inline constexpr Enum MAX_ELEMENTS_INDICES = 0x80E9;
 inline constexpr Enum POINT_SIZE_RANGE = 0x0B12;

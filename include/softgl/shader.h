@@ -35,6 +35,7 @@
 
 #include <softgl/config.h>
 
+#include <bit>
 #include <concepts>
 #include <cstddef>
 #include <cstdint>
@@ -45,6 +46,7 @@
 #include <type_traits>
 
 #include <glm/glm.hpp>
+#include <softgl/enums.h>
 #include <softgl/lanes.h>
 #include <softgl/texture.h>
 
@@ -221,16 +223,12 @@ inline vec4 Sample(const Textures* textures, int unit, Textures::Lanes& c, const
 }
 }  // namespace shader_detail
 
-/// What a wide vertex stage reads: the attributes of 16 vertices.
-struct VertexLanes {
-  /// attrib[i]: attribute location i, converted to float as OpenGL does (normalized or not); missing components
-  /// read (0, 0, 0, 1); a disabled attribute reads its current value (VertexAttrib4f), by default (0, 0, 0, 1).
-  vec4 attrib[kMaxVertexAttribs];
-  Int vertex_id;  ///< gl_VertexID: the index of each vertex (the element value for DrawElement)
-  Int instance_id;  ///< gl_InstanceID: the instance of an instanced draw (DrawArraysInstanced, ...); 0 otherwise
+/// The textureLod calls of the stages that have no derivatives (vertex and geometry), on the textures bound for
+/// the draw.
+struct LodTextures {
   const Textures* textures = nullptr;  ///< the textures bound for this draw
 
-  /// textureLod(sampler2D, uv, lod) (the vertex stage has no derivatives).
+  /// textureLod(sampler2D, uv, lod).
   vec4 TextureLod(int unit, const vec2& uv, Float lod) const {
     return shader_detail::Lod(textures, unit, shader_detail::Coords(uv.x, uv.y), lod, &Textures::SampleLodLanes);
   }
@@ -251,6 +249,15 @@ struct VertexLanes {
   }
 };
 
+/// What a wide vertex stage reads: the attributes of 16 vertices (and, from LodTextures, the textures).
+struct VertexLanes : LodTextures {
+  /// attrib[i]: attribute location i, converted to float as OpenGL does (normalized or not); missing components
+  /// read (0, 0, 0, 1); a disabled attribute reads its current value (VertexAttrib4f), by default (0, 0, 0, 1).
+  vec4 attrib[kMaxVertexAttribs];
+  Int vertex_id;  ///< gl_VertexID: the index of each vertex (the element value for DrawElement)
+  Int instance_id;  ///< gl_InstanceID: the instance of an instanced draw (DrawArraysInstanced, ...); 0 otherwise
+};
+
 /// What a wide vertex stage writes for its 16 vertices.
 template <class Varyings>
 struct VertexLanesOut {
@@ -261,6 +268,130 @@ struct VertexLanesOut {
   /// framebuffer the primitive is drawn into, its provoking vertex's. Read only when Derived declares
   /// `static constexpr bool kWritesLayer = true;`.
   Int layer = 0;
+};
+
+// ---- The geometry stage ---------------------------------------------------------------------------------------
+
+/// Most vertices a geometry stage may emit per invocation (GL_MAX_GEOMETRY_OUTPUT_VERTICES).
+inline constexpr int kMaxGeometryOutputVertices = 256;
+/// Most floats a geometry stage may emit per invocation, max_vertices x (4 for the position + its varyings'
+/// floats) (GL_MAX_GEOMETRY_TOTAL_OUTPUT_COMPONENTS).
+inline constexpr int kMaxGeometryTotalOutputFloats = 1024;
+/// Most invocations of a geometry stage per primitive (GL_MAX_GEOMETRY_SHADER_INVOCATIONS).
+inline constexpr int kMaxGeometryInvocations = 32;
+/// Most vertices of an input primitive (TRIANGLES_ADJACENCY's six).
+inline constexpr int kMaxGeometryInputVertices = 6;
+
+/// What a geometry stage takes and makes: GLSL's `layout(triangles, invocations = 2) in;` and
+/// `layout(triangle_strip, max_vertices = 6) out;`. A shader with a Geometry() declares it as
+/// `static constexpr softgl::GeometryLayout kGeometry{softgl::TRIANGLES, softgl::TRIANGLE_STRIP, 6};`.
+struct GeometryLayout {
+  Enum input = TRIANGLES;        ///< POINTS, LINES, LINES_ADJACENCY, TRIANGLES or TRIANGLES_ADJACENCY
+  Enum output = TRIANGLE_STRIP;  ///< POINTS, LINE_STRIP or TRIANGLE_STRIP
+  int max_vertices = 3;          ///< most vertices one invocation emits (1 to kMaxGeometryOutputVertices)
+  int invocations = 1;           ///< times the stage runs per primitive, gl_InvocationID 0, 1, ... (1 to 32)
+
+  /// Vertices of each input primitive (gl_in.length()): 1, 2, 4, 3 or 6; 0 for a mode that is none of them.
+  constexpr int InputVertices() const {
+    return input == POINTS ? 1 : input == LINES ? 2 : input == LINES_ADJACENCY ? 4 : input == TRIANGLES ? 3
+           : input == TRIANGLES_ADJACENCY ? 6 : 0;
+  }
+  /// Whether the draw mode `mode` makes the primitives `input` names (OpenGL 4.6, section 11.3.1).
+  constexpr bool Accepts(Enum mode) const {
+    switch (input) {
+      case POINTS: return mode == POINTS;
+      case LINES: return mode == LINES || mode == LINE_STRIP || mode == LINE_LOOP;
+      case LINES_ADJACENCY: return mode == LINES_ADJACENCY || mode == LINE_STRIP_ADJACENCY;
+      case TRIANGLES: return mode == TRIANGLES || mode == TRIANGLE_STRIP || mode == TRIANGLE_FAN;
+      case TRIANGLES_ADJACENCY: return mode == TRIANGLES_ADJACENCY || mode == TRIANGLE_STRIP_ADJACENCY;
+      default: return false;
+    }
+  }
+};
+
+/// One vertex of 16 input primitives, as the vertex stage wrote it (GLSL's gl_in[i] and the inputs' [i]).
+template <class Varyings>
+struct GeometryVertexLanes {
+  vec4 position;     ///< gl_Position
+  Float point_size;  ///< gl_PointSize
+  Varyings varyings;
+};
+
+/// What a wide geometry stage reads: 16 primitives, one per lane, each with kGeometry.input's vertices. For
+/// TRIANGLES_ADJACENCY, vertex 0, 2 and 4 make the triangle and 1, 3, 5 lie beyond its edges 0-2, 2-4 and 4-0;
+/// for LINES_ADJACENCY, 1 and 2 make the line and 0, 3 lie beyond its ends (OpenGL 4.6, section 10.1).
+template <class Varyings>
+struct GeometryLanes : LodTextures {
+  GeometryVertexLanes<Varyings> vertex[kMaxGeometryInputVertices];  ///< gl_in[0 .. vertices)
+  int vertices = 0;    ///< gl_in.length(), the same in every lane
+  Int primitive_id;    ///< gl_PrimitiveIDIn: the primitive's number in its draw (each instance counts from 0)
+  Int instance_id;     ///< gl_InstanceID of the primitive's vertices
+  Int invocation_id;   ///< gl_InvocationID: which of kGeometry.invocations runs (the same in every lane)
+};
+
+namespace shader_detail {
+// Floats before the varyings in each vertex a geometry stage emits: the position (4), gl_PointSize, gl_Layer (its
+// bits), and 1 where the vertex starts a new strip (EndPrimitive came before it), 0 where it continues one.
+inline constexpr int kGeometryHead = 7;
+// Where a geometry stage's emitted vertices go: lane l's k-th vertex at records + (l * max_vertices + k) * stride.
+struct GeometrySink {
+  float* records = nullptr;
+  int stride = 0;
+  int max_vertices = 0;
+  std::uint32_t lanes = 0;  // the lanes that hold a primitive (the others' vertices are dropped)
+  std::uint32_t cut = 0;    // lanes whose next vertex starts a new strip
+  int count[kLanes] = {};   // vertices each lane has emitted
+};
+}  // namespace shader_detail
+
+/// What a wide geometry stage writes: the values of the next vertex to emit, per lane, and EmitVertex() /
+/// EndPrimitive(), which act in the lanes `lanes` selects (all by default), as GLSL's do in the invocations that
+/// reach them. Emitted vertices past kGeometry.max_vertices are dropped. A strip of too few vertices (a line strip
+/// of one, a triangle strip of two) makes nothing.
+template <class Varyings>
+struct GeometryLanesOut {
+  vec4 position = vec4(0.0f, 0.0f, 0.0f, 1.0f);  ///< gl_Position, in clip space
+  Float point_size = 1.0f;  ///< gl_PointSize, used when PROGRAM_POINT_SIZE is enabled
+  Varyings varyings{};      ///< interpolated across the output primitive for the fragment stage
+  Int layer = 0;            ///< gl_Layer, read only when Derived declares `static constexpr bool kWritesLayer = true;`
+
+  explicit GeometryLanesOut(shader_detail::GeometrySink& sink) : sink_(&sink) {}
+
+  /// EmitVertex(): the values above become the next vertex of the current strip, in each lane of `lanes`.
+  void EmitVertex(const Bool& lanes = Bool(true)) {
+    const std::uint32_t m = lanes.Bits() & sink_->lanes;
+    if (m == 0) return;
+    constexpr int kVaryingFloats = std::is_empty_v<Varyings> ? 0 : int(sizeof(Varyings) / sizeof(Float));
+    alignas(64) float rows[shader_detail::kGeometryHead + kVaryingFloats][kLanes];
+    position.x.Store(rows[0]);
+    position.y.Store(rows[1]);
+    position.z.Store(rows[2]);
+    position.w.Store(rows[3]);
+    point_size.Store(rows[4]);
+    alignas(64) std::int32_t layers[kLanes];
+    layer.Store(layers);
+    std::memcpy(rows[5], layers, sizeof layers);
+    for (int l = 0; l < kLanes; ++l) rows[6][l] = ((sink_->cut >> l) & 1u) ? 1.0f : 0.0f;
+    if constexpr (kVaryingFloats > 0) {
+      const Float* v = reinterpret_cast<const Float*>(static_cast<const void*>(&varyings));
+      for (int f = 0; f < kVaryingFloats; ++f) v[f].Store(rows[shader_detail::kGeometryHead + f]);
+    }
+    for (std::uint32_t bits = m; bits != 0; bits &= bits - 1) {
+      const int l = std::countr_zero(bits);
+      const int k = sink_->count[l];
+      if (k >= sink_->max_vertices) continue;
+      float* r = sink_->records + (std::size_t(l) * std::size_t(sink_->max_vertices) + std::size_t(k)) *
+                                      std::size_t(sink_->stride);
+      for (int f = 0; f < shader_detail::kGeometryHead + kVaryingFloats; ++f) r[f] = rows[f][l];
+      sink_->count[l] = k + 1;
+    }
+    sink_->cut &= ~m;
+  }
+  /// EndPrimitive(): the current strip ends in each lane of `lanes`; the next vertex starts another.
+  void EndPrimitive(const Bool& lanes = Bool(true)) { sink_->cut |= lanes.Bits(); }
+
+ private:
+  shader_detail::GeometrySink* sink_;
 };
 
 /// What a wide fragment stage reads: 16 fragments, four 2x2 quads, lane = quad * 4 + (x % 2) + 2 * (y % 2). The
@@ -514,6 +645,27 @@ struct VertexBatch {
   int simd = 0;                        ///< SimdLevel()
 };
 
+/// A batch of primitives handed to the geometry stage, for one invocation. Filled by the pipeline.
+struct GeometryBatch {
+  int count = 0;     ///< primitives
+  int vertices = 0;  ///< vertices of each (GeometryLayout::InputVertices())
+  const std::uint32_t* vertex_index = nullptr;  ///< [count][vertices]: each vertex's row in the arrays below
+  const glm::vec4* positions = nullptr;  ///< the vertex stage's outputs
+  const float* point_sizes = nullptr;
+  const float* varyings = nullptr;       ///< [][VertexVaryingFloats()]
+  const std::int32_t* primitive_ids = nullptr;  ///< [count]
+  const std::int32_t* instance_ids = nullptr;   ///< [count]
+  int invocation = 0;
+  const Textures* textures = nullptr;
+  int simd = 0;
+  /// out: primitive p's k-th vertex at records + (p * max_vertices + k) * stride: position, point size, layer,
+  /// strip start, then VaryingFloats() varyings (shader_detail::kGeometryHead floats before them).
+  float* records = nullptr;
+  int stride = 0;
+  int max_vertices = 0;
+  int* emitted = nullptr;  ///< out: [count] vertices each primitive's invocation emitted
+};
+
 /// Floats a block's varyings take in a BlockBatch: kMaxVaryingFloats rows of 16 lanes.
 inline constexpr int kBlockVaryingFloats = kMaxVaryingFloats * kLanes;
 
@@ -621,9 +773,16 @@ class Program {
   /// Whether the fragment stage writes gl_FragDepth. When it does not, the depth test may run before the shader
   /// (early depth test), where that cannot change the result.
   virtual bool WritesDepth() const { return true; }
-  /// Whether the vertex stage writes gl_Layer (VertexLanesOut::layer), which routes primitives to the layers of a
-  /// layered framebuffer. When it does not, they all go to layer 0.
+  /// Whether the last stage before rasterization (geometry, or else vertex) writes gl_Layer, which routes
+  /// primitives to the layers of a layered framebuffer. When it does not, they all go to layer 0.
   virtual bool WritesLayer() const { return false; }
+  /// The geometry stage's layout, or null when the program has no geometry stage.
+  virtual const GeometryLayout* Geometry() const { return nullptr; }
+  /// Floats of varyings per vertex the vertex stage writes: VaryingFloats(), unless a geometry stage sits between
+  /// the vertex and fragment stages (VaryingFloats() is then the geometry stage's output, what fragments read).
+  virtual int VertexVaryingFloats() const { return VaryingFloats(); }
+  /// Runs the geometry stage on every primitive of the batch (only called when Geometry() is not null).
+  virtual void ShadeGeometry(const GeometryBatch& batch) const { (void)batch; }
 
  private:
   friend class Context;
@@ -641,12 +800,19 @@ class Program {
 /// or, in the scalar form (varyings made of float and GLM float vectors):
 ///   void Vertex(const VertexIn&, VertexOut<Varyings>&) const;
 ///   bool Fragment(const FragmentIn<Varyings>&, FragmentOut&) const;   // false discards the fragment
-/// A Vertex() that writes gl_Layer (out.layer) says so with `static constexpr bool kWritesLayer = true;`.
+/// A geometry stage (wide form only) sits between them when Derived defines
+///   static constexpr GeometryLayout kGeometry{input, output, max_vertices, invocations};
+///   void Geometry(const GeometryLanes<Varyings>&, GeometryLanesOut<FragmentVaryings>&) const;
+/// It reads the primitives the vertex stage's Varyings make and emits new ones whose FragmentVaryings the fragment
+/// stage reads; without one, FragmentVaryings is Varyings. A Geometry() whose types do not match the other stages'
+/// does not compile, as a GLSL program with mismatched stages does not link.
+/// The last stage before rasterization that writes gl_Layer (out.layer) says so with
+/// `static constexpr bool kWritesLayer = true;`.
 /// A Fragment() that writes gl_FragDepth (out.depth) must say so with `static constexpr bool kWritesDepth = true;`
 /// in Derived, as GLSL knows from the source; otherwise out.depth is ignored (the fragment keeps frag_coord.z)
 /// and the depth test may run before the shader. Varyings must be trivially copyable, at most kMaxVaryingFloats
 /// floats per vertex; an empty struct means no varyings.
-template <class Derived, class Varyings>
+template <class Derived, class Varyings, class FragmentVaryings = Varyings>
 class Shader : public Program {
   // Which form Derived is written in, and what follows from it. (Asked inside member functions, where Derived is
   // complete; in one nested struct, so that no name of it can hide or be hidden by a name of Derived.)
@@ -655,14 +821,23 @@ class Shader : public Program {
       return requires(const Derived& d, const VertexLanes& in, VertexLanesOut<Varyings>& out) { d.Vertex(in, out); };
     }
     static constexpr bool WideFragment() {
-      return requires(const Derived& d, const FragmentLanes<Varyings>& in, FragmentLanesOut& out) {
+      return requires(const Derived& d, const FragmentLanes<FragmentVaryings>& in, FragmentLanesOut& out) {
         d.Fragment(in, out);
       };
     }
+    static constexpr bool DefinesGeometry() {
+      return requires(const Derived& d, const GeometryLanes<Varyings>& in, GeometryLanesOut<FragmentVaryings>& out) {
+        d.Geometry(in, out);
+      };
+    }
+    static constexpr bool DeclaresGeometry() { return requires { Derived::kGeometry; }; }
     static constexpr bool Wide() { return WideVertex() || WideFragment(); }
     // Floats of varyings per vertex: one per float of the struct, or one per Float (16 lanes) in the wide form.
     static constexpr int FloatBytes() { return Wide() ? int(sizeof(float)) * kLanes : int(sizeof(float)); }
     static constexpr int Floats() { return std::is_empty_v<Varyings> ? 0 : int(sizeof(Varyings)) / FloatBytes(); }
+    static constexpr int FragmentFloats() {
+      return std::is_empty_v<FragmentVaryings> ? 0 : int(sizeof(FragmentVaryings)) / FloatBytes();
+    }
     static constexpr bool DeclaresLayer() {
       if constexpr (requires { Derived::kWritesLayer; }) {
         return bool(Derived::kWritesLayer);
@@ -693,6 +868,31 @@ class Shader : public Program {
         { d.Fragment(in, out) } -> std::convertible_to<bool>;
       }, "Derived needs a Fragment(const FragmentLanes<Varyings>&, FragmentLanesOut&) const (or the scalar form)");
       static_assert(WideVertex() == WideFragment(), "Vertex and Fragment must both be wide, or both scalar");
+      static_assert(DefinesGeometry() == DeclaresGeometry(),
+                    "a Geometry(const GeometryLanes<Varyings>&, GeometryLanesOut<FragmentVaryings>&) const needs a "
+                    "static constexpr GeometryLayout kGeometry, and kGeometry needs that Geometry()");
+      static_assert(DefinesGeometry() || std::is_same_v<Varyings, FragmentVaryings>,
+                    "the fragment stage reads other varyings than the vertex stage writes: a Geometry() must make "
+                    "them");
+      if constexpr (DeclaresGeometry()) {
+        static_assert(WideVertex(), "a shader with a geometry stage is written in the wide form");
+        static_assert(std::is_trivially_copyable_v<FragmentVaryings> &&
+                          (std::is_empty_v<FragmentVaryings> || sizeof(FragmentVaryings) % (sizeof(float) * kLanes) == 0),
+                      "the geometry stage's varyings must be made of Float, vec2, vec3 and vec4");
+        static_assert(FragmentFloats() <= kMaxVaryingFloats, "too many varyings out of the geometry stage");
+        constexpr GeometryLayout g = Derived::kGeometry;
+        static_assert(g.InputVertices() > 0,
+                      "kGeometry.input is POINTS, LINES, LINES_ADJACENCY, TRIANGLES or TRIANGLES_ADJACENCY");
+        static_assert(g.output == POINTS || g.output == LINE_STRIP || g.output == TRIANGLE_STRIP,
+                      "kGeometry.output is POINTS, LINE_STRIP or TRIANGLE_STRIP");
+        static_assert(g.max_vertices >= 1 && g.max_vertices <= kMaxGeometryOutputVertices,
+                      "kGeometry.max_vertices is 1 to kMaxGeometryOutputVertices (256)");
+        static_assert(g.invocations >= 1 && g.invocations <= kMaxGeometryInvocations,
+                      "kGeometry.invocations is 1 to kMaxGeometryInvocations (32)");
+        static_assert(g.max_vertices * (4 + FragmentFloats()) <= kMaxGeometryTotalOutputFloats,
+                      "kGeometry.max_vertices x (4 + the varyings' floats) exceeds "
+                      "kMaxGeometryTotalOutputFloats (1024), as GL_MAX_GEOMETRY_TOTAL_OUTPUT_COMPONENTS");
+      }
       return true;
     }
   };
@@ -717,10 +917,10 @@ class Shader : public Program {
     Interpolation mode[kMaxVaryingFloats] = {};
     bool any = false;
     Qualifiers() {
-      if constexpr (SoftglForm::Floats() > 0) {
-        const Varyings probe{};
+      if constexpr (SoftglForm::FragmentFloats() > 0) {
+        const FragmentVaryings probe{};
         const unsigned char* bytes = reinterpret_cast<const unsigned char*>(&probe);
-        for (int k = 0; k < SoftglForm::Floats(); ++k) {
+        for (int k = 0; k < SoftglForm::FragmentFloats(); ++k) {
           std::uint32_t bits;
           std::memcpy(&bits, bytes + std::size_t(k) * SoftglForm::FloatBytes(), sizeof bits);
           if (bits == shader_detail::kFlatBits) mode[k] = Interpolation::kFlat;
@@ -735,7 +935,17 @@ class Shader : public Program {
  public:
   int VaryingFloats() const final {
     static_assert(SoftglForm::Check());
-    return SoftglForm::Floats();
+    return SoftglForm::FragmentFloats();
+  }
+  int VertexVaryingFloats() const final { return SoftglForm::Floats(); }
+
+  const GeometryLayout* Geometry() const final {
+    if constexpr (SoftglForm::DeclaresGeometry()) {
+      static constexpr GeometryLayout layout = Derived::kGeometry;
+      return &layout;
+    } else {
+      return nullptr;
+    }
   }
 
   const Interpolation* VaryingInterpolation() const final {
@@ -746,12 +956,12 @@ class Shader : public Program {
   bool WritesDepth() const final { return SoftglForm::DeclaresDepth(); }
   bool WritesLayer() const final { return SoftglForm::DeclaresLayer(); }
 
-  /// The varying `member` (a member of Varyings: Float, vec2, vec3 or vec4, or float and GLM vectors in the scalar
-  /// form) as transform feedback records it, reported under `name`: `FeedbackVarying v =
-  /// MyShader::Capture(&MyVaryings::color, "color");`.
+  /// The varying `member` (a member of the varyings the fragment stage reads: Float, vec2, vec3 or vec4, or float
+  /// and GLM vectors in the scalar form; with a geometry stage, its output's) as transform feedback records it,
+  /// reported under `name`: `FeedbackVarying v = MyShader::Capture(&MyVaryings::color, "color");`.
   template <class Member>
-  static FeedbackVarying Capture(Member Varyings::*member, const char* name) {
-    const Varyings probe{};
+  static FeedbackVarying Capture(Member FragmentVaryings::*member, const char* name) {
+    const FragmentVaryings probe{};
     const auto* base = reinterpret_cast<const unsigned char*>(&probe);
     const auto* at = reinterpret_cast<const unsigned char*>(&(probe.*member));
     return FeedbackVarying{name, int((at - base) / SoftglForm::FloatBytes()),
@@ -787,6 +997,7 @@ class Shader : public Program {
   // explicitly instantiated in softgl::model) then does not compile its stages again.
   void ShadeVertices(const VertexBatch& batch) const final;
   void ShadeBlocks(const BlockBatch& batch) const final;
+  void ShadeGeometry(const GeometryBatch& batch) const final;
 
  private:
   // ---- The wide form, compiled three times ----
@@ -815,7 +1026,7 @@ class Shader : public Program {
     const Derived& self = static_cast<const Derived&>(*this);
     for (int b = 0; b < batch.count; ++b) {
       if (!batch.live[b]) continue;  // every lane failed the early depth test
-      FragmentLanes<Varyings> in;  // (not value-initialized: every member is set here)
+      FragmentLanes<FragmentVaryings> in;  // (not value-initialized: every member is set here)
       shader_detail::FillFragmentLanes(batch, b, in);
       FragmentLanesOut& out = batch.out[b];  // written in place (outputs the shader leaves alone are undefined)
       if constexpr (SoftglForm::DeclaresDepth()) out.depth = in.frag_coord.z;  // (read only then)
@@ -825,13 +1036,69 @@ class Shader : public Program {
     }
   }
 
+  // 16 primitives per call, their vertices gathered into lanes; what they emit goes to batch.records.
+  void GeometryLanesRun(const GeometryBatch& batch) const {
+    if constexpr (SoftglForm::DeclaresGeometry()) {
+      const Derived& self = static_cast<const Derived&>(*this);
+      constexpr int kIn = SoftglForm::Floats();
+      GeometryLanes<Varyings> in;
+      in.textures = batch.textures;
+      in.vertices = batch.vertices;
+      in.invocation_id = Int(batch.invocation);
+      shader_detail::GeometrySink sink;
+      sink.stride = batch.stride;
+      sink.max_vertices = batch.max_vertices;
+      alignas(64) float rows[5 + kIn][kLanes];
+      alignas(64) std::int32_t ids[2][kLanes];
+      for (int base = 0; base < batch.count; base += kLanes) {
+        const int n = batch.count - base < kLanes ? batch.count - base : kLanes;
+        for (int k = 0; k < batch.vertices; ++k) {
+          for (int l = 0; l < kLanes; ++l) {  // lanes past the batch repeat its last primitive
+            const int p = base + (l < n ? l : n - 1);
+            const std::uint32_t v = batch.vertex_index[std::size_t(p) * std::size_t(batch.vertices) + std::size_t(k)];
+            const glm::vec4& pos = batch.positions[v];
+            for (int c = 0; c < 4; ++c) rows[c][l] = pos[c];
+            rows[4][l] = batch.point_sizes[v];
+            for (int f = 0; f < kIn; ++f) rows[5 + f][l] = batch.varyings[std::size_t(v) * kIn + std::size_t(f)];
+          }
+          GeometryVertexLanes<Varyings>& dst = in.vertex[k];
+          dst.position = vec4(Float::Load(rows[0]), Float::Load(rows[1]), Float::Load(rows[2]), Float::Load(rows[3]));
+          dst.point_size = Float::Load(rows[4]);
+          if constexpr (kIn > 0) {
+            Float* var = reinterpret_cast<Float*>(static_cast<void*>(&dst.varyings));
+            for (int f = 0; f < kIn; ++f) var[f] = Float::Load(rows[5 + f]);
+          }
+        }
+        for (int l = 0; l < kLanes; ++l) {
+          const int p = base + (l < n ? l : n - 1);
+          ids[0][l] = batch.primitive_ids[p];
+          ids[1][l] = batch.instance_ids[p];
+        }
+        in.primitive_id = Int::Load(ids[0]);
+        in.instance_id = Int::Load(ids[1]);
+        sink.records = batch.records + std::size_t(base) * std::size_t(batch.max_vertices) * std::size_t(batch.stride);
+        sink.lanes = n == kLanes ? 0xFFFFu : (1u << n) - 1u;
+        sink.cut = 0xFFFFu;
+        for (int l = 0; l < kLanes; ++l) sink.count[l] = 0;
+        GeometryLanesOut<FragmentVaryings> out(sink);
+        self.Geometry(in, out);
+        for (int l = 0; l < n; ++l) batch.emitted[base + l] = sink.count[l];
+      }
+    } else {
+      (void)batch;
+    }
+  }
+
 #if defined(SOFTGL_HAS_DISPATCH)
+  SOFTGL_TARGET_AVX512 void GeometryAvx512(const GeometryBatch& batch) const { GeometryLanesRun(batch); }
+  SOFTGL_TARGET_AVX2 void GeometryAvx2(const GeometryBatch& batch) const { GeometryLanesRun(batch); }
   SOFTGL_TARGET_AVX512 void VerticesAvx512(const VertexBatch& batch) const { VertexLanesRun(batch); }
   SOFTGL_TARGET_AVX2 void VerticesAvx2(const VertexBatch& batch) const { VertexLanesRun(batch); }
   SOFTGL_TARGET_AVX512 void BlocksAvx512(const BlockBatch& batch) const { BlockLanesRun(batch); }
   SOFTGL_TARGET_AVX2 void BlocksAvx2(const BlockBatch& batch) const { BlockLanesRun(batch); }
 #endif
   SOFTGL_TARGET_BASE void VerticesBase(const VertexBatch& batch) const { VertexLanesRun(batch); }
+  SOFTGL_TARGET_BASE void GeometryBase(const GeometryBatch& batch) const { GeometryLanesRun(batch); }
   SOFTGL_TARGET_BASE void BlocksBase(const BlockBatch& batch) const { BlockLanesRun(batch); }
 
   // ---- The scalar form, lane by lane ----
@@ -874,8 +1141,8 @@ class Shader : public Program {
   }
 };
 
-template <class Derived, class Varyings>
-void Shader<Derived, Varyings>::ShadeVertices(const VertexBatch& batch) const {
+template <class Derived, class Varyings, class FragmentVaryings>
+void Shader<Derived, Varyings, FragmentVaryings>::ShadeVertices(const VertexBatch& batch) const {
   static_assert(SoftglForm::Check());
   if constexpr (SoftglForm::WideVertex()) {
 #if defined(SOFTGL_HAS_DISPATCH)
@@ -906,8 +1173,18 @@ void Shader<Derived, Varyings>::ShadeVertices(const VertexBatch& batch) const {
   }
 }
 
-template <class Derived, class Varyings>
-void Shader<Derived, Varyings>::ShadeBlocks(const BlockBatch& batch) const {
+template <class Derived, class Varyings, class FragmentVaryings>
+void Shader<Derived, Varyings, FragmentVaryings>::ShadeGeometry(const GeometryBatch& batch) const {
+  static_assert(SoftglForm::Check());
+#if defined(SOFTGL_HAS_DISPATCH)
+  if (batch.simd == 2) return GeometryAvx512(batch);
+  if (batch.simd == 1) return GeometryAvx2(batch);
+#endif
+  GeometryBase(batch);
+}
+
+template <class Derived, class Varyings, class FragmentVaryings>
+void Shader<Derived, Varyings, FragmentVaryings>::ShadeBlocks(const BlockBatch& batch) const {
   static_assert(SoftglForm::Check());
   if constexpr (SoftglForm::WideFragment()) {
 #if defined(SOFTGL_HAS_DISPATCH)

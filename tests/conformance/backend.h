@@ -42,6 +42,16 @@ enum class Program {
   kFeedback,     // colour = attribute 1; the vertex stage also writes v_extra = attribute 2 * 2 - position, for
                  // transform feedback (Backend::FeedbackVaryings)
   kLayer,        // colour = attribute 1; the vertex stage writes gl_Layer = int(extra.w) (ARB_shader_viewport_layer_array)
+  // With a geometry stage (colour = what it emits):
+  kGeometryShrink,  // triangles, two invocations: 0 the triangle shrunk by half toward vertex 0 in its colours;
+                    // 1 the same quartered, in (id % 4 * 0.2, 1 - that, blue, 1) for gl_PrimitiveIDIn id, and for
+                    // even ids a second strip: a small yellow triangle at vertex 2
+  kGeometrySprites,  // points: a square of half side extra.x (clip units, times w) in the colour; where extra.y >
+                     // 0.5, a second one to its right, half as large, in the colour's inverse
+  kGeometryAdjacency,      // triangles with adjacency: the triangle, vertex k coloured as adjacent vertex 2k + 1
+  kGeometryLineAdjacency,  // lines with adjacency: the line, its ends coloured as adjacent vertices 0 and 3
+  kGeometryLayer,  // triangles, three invocations: into layer int(extra.w) + gl_InvocationID, the colour times
+                   // 1 - invocation / 4
 };
 
 /// A TEXTURE_2D_ARRAY or TEXTURE_3D defined by TexImage3D: RGBA8 from `rgba` (unit 3 for an array, 4 for 3D), or

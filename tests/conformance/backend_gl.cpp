@@ -155,6 +155,107 @@ void main() {
 }
 )";
 
+// The fragment shader of the programs with a geometry stage: the colour it emits.
+constexpr const char* kGeometryFragment = R"(#version 330 core
+in vec4 g_color;
+out vec4 o_color;
+void main() { o_color = g_color; }
+)";
+
+constexpr const char* kShrinkGeometry = R"(#version 400 core
+layout(triangles, invocations = 2) in;
+layout(triangle_strip, max_vertices = 6) out;
+in vec4 v_color[];
+out vec4 g_color;
+void main() {
+  float s = gl_InvocationID == 0 ? 0.5 : 0.25;
+  float tint = float(gl_PrimitiveIDIn % 4) * 0.2;
+  for (int k = 0; k < 3; ++k) {
+    gl_Position = gl_in[0].gl_Position + (gl_in[k].gl_Position - gl_in[0].gl_Position) * s;
+    g_color = gl_InvocationID == 0 ? v_color[k] : vec4(tint, 1.0 - tint, v_color[k].b, 1.0);
+    EmitVertex();
+  }
+  EndPrimitive();
+  if (gl_InvocationID == 1 && gl_PrimitiveIDIn % 2 == 0) {
+    vec4 p = gl_in[2].gl_Position;
+    for (int k = 0; k < 3; ++k) {
+      gl_Position = p + vec4(k == 1 ? 0.125 : 0.0, k == 2 ? 0.125 : 0.0, 0.0, 0.0) * p.w;
+      g_color = vec4(1.0, 1.0, 0.0, 1.0);
+      EmitVertex();
+    }
+  }
+}
+)";
+
+constexpr const char* kSpritesGeometry = R"(#version 330 core
+layout(points) in;
+layout(triangle_strip, max_vertices = 8) out;
+in vec4 v_color[];
+in vec4 v_extra[];
+out vec4 g_color;
+void main() {
+  vec4 p = gl_in[0].gl_Position;
+  float d = v_extra[0].x;
+  for (int k = 0; k < 4; ++k) {
+    gl_Position = p + vec4((k & 1) != 0 ? d : -d, (k & 2) != 0 ? d : -d, 0.0, 0.0) * p.w;
+    g_color = v_color[0];
+    EmitVertex();
+  }
+  if (v_extra[0].y > 0.5) {
+    EndPrimitive();
+    for (int k = 0; k < 4; ++k) {
+      gl_Position = p + vec4(2.0 * d + ((k & 1) != 0 ? d : 0.0), (k & 2) != 0 ? d * 0.5 : -d * 0.5, 0.0, 0.0) * p.w;
+      g_color = vec4(1.0 - v_color[0].rgb, 1.0);
+      EmitVertex();
+    }
+  }
+}
+)";
+
+constexpr const char* kAdjacencyGeometry = R"(#version 330 core
+layout(triangles_adjacency) in;
+layout(triangle_strip, max_vertices = 3) out;
+in vec4 v_color[];
+out vec4 g_color;
+void main() {
+  for (int k = 0; k < 3; ++k) {
+    gl_Position = gl_in[2 * k].gl_Position;
+    g_color = v_color[2 * k + 1];
+    EmitVertex();
+  }
+}
+)";
+
+constexpr const char* kLineAdjacencyGeometry = R"(#version 330 core
+layout(lines_adjacency) in;
+layout(line_strip, max_vertices = 2) out;
+in vec4 v_color[];
+out vec4 g_color;
+void main() {
+  for (int k = 0; k < 2; ++k) {
+    gl_Position = gl_in[1 + k].gl_Position;
+    g_color = v_color[3 * k];
+    EmitVertex();
+  }
+}
+)";
+
+constexpr const char* kLayerGeometry = R"(#version 400 core
+layout(triangles, invocations = 3) in;
+layout(triangle_strip, max_vertices = 3) out;
+in vec4 v_color[];
+in vec4 v_extra[];
+out vec4 g_color;
+void main() {
+  for (int k = 0; k < 3; ++k) {
+    gl_Position = gl_in[k].gl_Position;
+    g_color = vec4(v_color[k].rgb * (1.0 - float(gl_InvocationID) * 0.25), v_color[k].a);
+    gl_Layer = int(v_extra[2].w) + gl_InvocationID;
+    EmitVertex();
+  }
+}
+)";
+
 GLuint Compile(GLenum type, const char* source, std::string* error) {
   const GLuint s = glCreateShader(type);
   glShaderSource(s, 1, &source, nullptr);
@@ -169,9 +270,11 @@ GLuint Compile(GLenum type, const char* source, std::string* error) {
   return s;
 }
 
-GLuint Link(const char* fragment, std::string* error, const char* vertex = kVertexShader) {
+GLuint Link(const char* fragment, std::string* error, const char* vertex = kVertexShader,
+            const char* geometry = nullptr) {
   const GLuint p = glCreateProgram();
   glAttachShader(p, Compile(GL_VERTEX_SHADER, vertex, error));
+  if (geometry) glAttachShader(p, Compile(GL_GEOMETRY_SHADER, geometry, error));
   glAttachShader(p, Compile(GL_FRAGMENT_SHADER, fragment, error));
   glLinkProgram(p);
   GLint ok = 0;
@@ -215,6 +318,11 @@ class GlBackend final : public Backend {
       programs_[13] = Link(kColorFragment, &layer_error, kLayerVertexShader);
       if (!layer_error.empty()) programs_[13] = 0;
     }
+    programs_[14] = Link(kGeometryFragment, error, kVertexShader, kShrinkGeometry);
+    programs_[15] = Link(kGeometryFragment, error, kVertexShader, kSpritesGeometry);
+    programs_[16] = Link(kGeometryFragment, error, kVertexShader, kAdjacencyGeometry);
+    programs_[17] = Link(kGeometryFragment, error, kVertexShader, kLineAdjacencyGeometry);
+    programs_[18] = Link(kGeometryFragment, error, kVertexShader, kLayerGeometry);
     instanced_ = Link(kColorFragment, error, kInstancedVertexShader);
     glUseProgram(programs_[4]);
     glUniform1i(glGetUniformLocation(programs_[4], "u_cube"), 1);
@@ -778,7 +886,7 @@ class GlBackend final : public Backend {
   OSMesaContext ctx_;
   int w_, h_;
   std::vector<std::uint8_t> buffer_;
-  GLuint programs_[14] = {};
+  GLuint programs_[19] = {};
   GLuint instanced_ = 0;
   GLuint rtt_color_ = 0;
   GLuint vao_ = 0, vbo_ = 0, ebo_ = 0;

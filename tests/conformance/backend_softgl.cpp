@@ -218,6 +218,120 @@ struct LayerShader : softgl::Shader<LayerShader, InstancedVaryings> {
   }
 };
 
+// The programs with a geometry stage: the vertex stage passes colour and extra on; the fragment stage writes the
+// colour the geometry stage emitted.
+struct GeometryIn {
+  softgl::vec4 color;
+  softgl::vec4 extra;
+};
+struct GeometryOut {
+  softgl::vec4 color;
+};
+template <class Derived>
+struct GeometryProgram : softgl::Shader<Derived, GeometryIn, GeometryOut> {
+  void Vertex(const softgl::VertexLanes& in, softgl::VertexLanesOut<GeometryIn>& out) const {
+    out.position = in.attrib[0];
+    out.varyings.color = in.attrib[1];
+    out.varyings.extra = in.attrib[2];
+  }
+  void Fragment(const softgl::FragmentLanes<GeometryOut>& in, softgl::FragmentLanesOut& out) const {
+    out.color[0] = in.varyings.color;
+  }
+};
+using GeometryLanes = softgl::GeometryLanes<GeometryIn>;
+using GeometryLanesOut = softgl::GeometryLanesOut<GeometryOut>;
+
+// kGeometryShrink.
+struct ShrinkShader : GeometryProgram<ShrinkShader> {
+  static constexpr softgl::GeometryLayout kGeometry{softgl::TRIANGLES, softgl::TRIANGLE_STRIP, 6, 2};
+  void Geometry(const GeometryLanes& in, GeometryLanesOut& out) const {
+    using namespace softgl;
+    const Bool first = in.invocation_id == Int(0);
+    const Float s = select(first, Float(0.5f), Float(0.25f));
+    const Float tint = Float(in.primitive_id & Int(3)) * 0.2f;
+    const vec4& p0 = in.vertex[0].position;
+    for (int k = 0; k < 3; ++k) {
+      out.position = p0 + (in.vertex[k].position - p0) * s;
+      const vec4& c = in.vertex[k].varyings.color;
+      out.varyings.color = select(first, c, vec4(tint, 1.0f - tint, c.z, 1.0f));
+      out.EmitVertex();
+    }
+    out.EndPrimitive();
+    const Bool second = (!first) & ((in.primitive_id & Int(1)) == Int(0));
+    const vec4& p = in.vertex[2].position;
+    for (int k = 0; k < 3; ++k) {
+      out.position = p + vec4(k == 1 ? 0.125f : 0.0f, k == 2 ? 0.125f : 0.0f, 0.0f, 0.0f) * p.w;
+      out.varyings.color = vec4(1.0f, 1.0f, 0.0f, 1.0f);
+      out.EmitVertex(second);
+    }
+  }
+};
+
+// kGeometrySprites.
+struct SpritesShader : GeometryProgram<SpritesShader> {
+  static constexpr softgl::GeometryLayout kGeometry{softgl::POINTS, softgl::TRIANGLE_STRIP, 8};
+  void Geometry(const GeometryLanes& in, GeometryLanesOut& out) const {
+    using namespace softgl;
+    const vec4& p = in.vertex[0].position;
+    const Float d = in.vertex[0].varyings.extra.x;
+    const vec4& c = in.vertex[0].varyings.color;
+    for (int k = 0; k < 4; ++k) {
+      out.position = p + vec4((k & 1) ? d : -d, (k & 2) ? d : -d, Float(0.0f), Float(0.0f)) * p.w;
+      out.varyings.color = c;
+      out.EmitVertex();
+    }
+    const Bool twice = in.vertex[0].varyings.extra.y > 0.5f;
+    out.EndPrimitive(twice);
+    for (int k = 0; k < 4; ++k) {
+      out.position = p + vec4(2.0f * d + ((k & 1) ? d : Float(0.0f)), (k & 2) ? d * 0.5f : -d * 0.5f, Float(0.0f),
+                              Float(0.0f)) * p.w;
+      out.varyings.color = vec4(1.0f - c.x, 1.0f - c.y, 1.0f - c.z, Float(1.0f));
+      out.EmitVertex(twice);
+    }
+  }
+};
+
+// kGeometryAdjacency.
+struct AdjacencyShader : GeometryProgram<AdjacencyShader> {
+  static constexpr softgl::GeometryLayout kGeometry{softgl::TRIANGLES_ADJACENCY, softgl::TRIANGLE_STRIP, 3};
+  void Geometry(const GeometryLanes& in, GeometryLanesOut& out) const {
+    for (int k = 0; k < 3; ++k) {
+      out.position = in.vertex[2 * k].position;
+      out.varyings.color = in.vertex[2 * k + 1].varyings.color;
+      out.EmitVertex();
+    }
+  }
+};
+
+// kGeometryLineAdjacency.
+struct LineAdjacencyShader : GeometryProgram<LineAdjacencyShader> {
+  static constexpr softgl::GeometryLayout kGeometry{softgl::LINES_ADJACENCY, softgl::LINE_STRIP, 2};
+  void Geometry(const GeometryLanes& in, GeometryLanesOut& out) const {
+    for (int k = 0; k < 2; ++k) {
+      out.position = in.vertex[1 + k].position;
+      out.varyings.color = in.vertex[3 * k].varyings.color;
+      out.EmitVertex();
+    }
+  }
+};
+
+// kGeometryLayer.
+struct GeometryLayerShader : GeometryProgram<GeometryLayerShader> {
+  static constexpr bool kWritesLayer = true;
+  static constexpr softgl::GeometryLayout kGeometry{softgl::TRIANGLES, softgl::TRIANGLE_STRIP, 3, 3};
+  void Geometry(const GeometryLanes& in, GeometryLanesOut& out) const {
+    using namespace softgl;
+    const Float scale = 1.0f - Float(in.invocation_id) * 0.25f;
+    for (int k = 0; k < 3; ++k) {
+      const vec4& c = in.vertex[k].varyings.color;
+      out.position = in.vertex[k].position;
+      out.varyings.color = vec4(c.x * scale, c.y * scale, c.z * scale, c.w);
+      out.layer = Int(in.vertex[2].varyings.extra.w) + in.invocation_id;
+      out.EmitVertex();
+    }
+  }
+};
+
 class SoftglBackend final : public Backend {
  public:
   SoftglBackend(int w, int h) : gl_(w, h) {
@@ -300,6 +414,11 @@ class SoftglBackend final : public Backend {
       case Program::kOutputs: gl_.UseProgram(outputs_); break;
       case Program::kPointCoord: gl_.UseProgram(point_coord_); break;
       case Program::kLayer: gl_.UseProgram(layer_); break;
+      case Program::kGeometryShrink: gl_.UseProgram(shrink_); break;
+      case Program::kGeometrySprites: gl_.UseProgram(sprites_); break;
+      case Program::kGeometryAdjacency: gl_.UseProgram(adjacency_); break;
+      case Program::kGeometryLineAdjacency: gl_.UseProgram(line_adjacency_); break;
+      case Program::kGeometryLayer: gl_.UseProgram(geometry_layer_); break;
       case Program::kFeedback:  // (UseProgram is an error while transform feedback records, even of the same one)
         if (!Recording()) gl_.UseProgram(feedback_);
         break;
@@ -760,6 +879,11 @@ class SoftglBackend final : public Backend {
   PointCoordShader point_coord_;
   FeedbackShader feedback_;
   LayerShader layer_;
+  ShrinkShader shrink_;
+  SpritesShader sprites_;
+  AdjacencyShader adjacency_;
+  LineAdjacencyShader line_adjacency_;
+  GeometryLayerShader geometry_layer_;
   bool Recording() {
     bool active = false, paused = false;
     gl_.GetBooleanv(softgl::TRANSFORM_FEEDBACK_BUFFER_ACTIVE, &active);

@@ -694,18 +694,25 @@ void LayeredFramebuffers(Backend& b) {
   ShowLayers(b);
 }
 
+// A new framebuffer bound, with every layer of a new 16 x 16 RGBA8 texture of `kind` (three layers, or a cube map's
+// six) attached as its colour, the viewport and clear colour set for it; returns the number of layers.
+int BindLayeredTarget(Backend& b, Enum kind) {
+  const int layers = kind == TEXTURE_CUBE_MAP ? 6 : 3;
+  b.BindFramebuffer(FRAMEBUFFER, b.GenFramebuffer());
+  b.AttachLayered(FRAMEBUFFER, COLOR_ATTACHMENT0, kind, RGBA8, 16, layers, -1);
+  b.Viewport(0, 0, 16, 16);
+  b.ClearColor(0.2f, 0.2f, 0.25f, 1);
+  return layers;
+}
+
 // gl_Layer from the vertex stage: the same three layered textures, each cleared, then one draw of a quad per layer
 // (different sizes and colours, depth-tested where there is depth), a quad whose first vertex names another layer
 // than its provoking (last) one, and quads naming layers past the last and below 0; shown as LayeredFramebuffers.
 void VertexLayer(Backend& b) {
   const Enum kinds[3] = {TEXTURE_2D_ARRAY, TEXTURE_3D, TEXTURE_CUBE_MAP};
   for (int k = 0; k < 3; ++k) {
-    const int layers = kinds[k] == TEXTURE_CUBE_MAP ? 6 : 3;
-    b.BindFramebuffer(FRAMEBUFFER, b.GenFramebuffer());
-    b.AttachLayered(FRAMEBUFFER, COLOR_ATTACHMENT0, kinds[k], RGBA8, 16, layers, -1);
+    const int layers = BindLayeredTarget(b, kinds[k]);
     if (k == 0) b.AttachLayered(FRAMEBUFFER, DEPTH_ATTACHMENT, TEXTURE_2D_ARRAY, DEPTH_COMPONENT32F, 16, 3, -1);
-    b.Viewport(0, 0, 16, 16);
-    b.ClearColor(0.2f, 0.2f, 0.25f, 1);
     b.ClearDepth(1.0);
     b.Clear(COLOR_BUFFER_BIT | DEPTH_BUFFER_BIT);
     b.Enable(DEPTH_TEST);
@@ -725,6 +732,86 @@ void VertexLayer(Backend& b) {
     quad(0.3f, 0.3f, 0.9f, 0.9f, -0.5f, {0, 1, 1, 1}, -1.0f);
     b.Draw(TRIANGLES, v, Program::kLayer);
     b.Disable(DEPTH_TEST);
+  }
+  ShowLayers(b);
+}
+
+// The geometry stage: triangles of a list and of a strip (some with w = 2) shrunk, twice per triangle by two
+// invocations, the second coloured by gl_PrimitiveIDIn and for even ids followed by a second strip (EndPrimitive);
+// points made squares, some followed by a second square (lanes that emit different numbers of vertices).
+void GeometryStage(Backend& b) {
+  ClearBlack(b);
+  std::vector<Vertex> list;
+  for (int i = 0; i < 6; ++i) {
+    const float x = -0.875f + 0.3125f * float(i);
+    list.push_back({{x, 0.125f, 0, 1}, Palette(unsigned(3 * i))});
+    list.push_back({{x + 0.25f, 0.1875f, 0, 1}, Palette(unsigned(3 * i + 1))});
+    list.push_back({{x + 0.125f, 0.875f, 0, 1}, Palette(unsigned(3 * i + 2))});
+  }
+  b.Draw(TRIANGLES, list, Program::kGeometryShrink);
+  std::vector<Vertex> strip;
+  for (int i = 0; i < 9; ++i) {
+    const float w = (i % 3 == 0) ? 2.0f : 1.0f;
+    strip.push_back({glm::vec4(-0.9375f + 0.1875f * float(i), (i % 2) ? -0.125f : -0.625f, 0, 1) * w,
+                     Palette(unsigned(20 + i))});
+  }
+  b.Draw(TRIANGLE_STRIP, strip, Program::kGeometryShrink);
+  std::vector<Vertex> points;
+  for (int i = 0; i < 7; ++i) {
+    const float w = (i % 2) ? 2.0f : 1.0f;
+    const glm::vec4 p(-0.875f + 0.25f * float(i), -0.875f, 0.5f, 1.0f);
+    points.push_back({glm::vec4(p.x * w, p.y * w, p.z * w, w), Palette(unsigned(40 + i)),
+                      glm::vec4(0.015625f * float(1 + i % 3), (i % 3 == 1) ? 1.0f : 0.0f, 0, 0)});
+  }
+  b.Draw(POINTS, points, Program::kGeometrySprites);
+}
+
+// Adjacency: triangles and lines with adjacency, as lists and strips (one triangle, several, odd and even), through
+// geometry stages that colour each vertex as an adjacent one, then the same modes without a geometry stage, which
+// draw the lines and triangles alone.
+void GeometryAdjacency(Backend& b) {
+  ClearBlack(b);
+  // A strip's own vertices at even positions (a zigzag from x0), the adjacent ones at odd positions.
+  auto zigzag = [](int n, float x0, float y0, unsigned colour) {
+    std::vector<Vertex> v;
+    for (int i = 0; i < n; ++i) {
+      const int m = i / 2;
+      const glm::vec4 own(x0 + 0.125f * float(m), y0 + ((m % 2) ? 0.25f : 0.0f), 0, 1);
+      v.push_back({(i % 2) ? own + glm::vec4(0.0625f, -0.5f, 0, 0) : own, Palette(colour + unsigned(i))});
+    }
+    return v;
+  };
+  b.Draw(TRIANGLES_ADJACENCY, zigzag(12, -0.875f, 0.5f, 0), Program::kGeometryAdjacency);
+  b.Draw(TRIANGLE_STRIP_ADJACENCY, zigzag(6, -0.25f, 0.5f, 20), Program::kGeometryAdjacency);
+  b.Draw(TRIANGLE_STRIP_ADJACENCY, zigzag(15, 0.125f, 0.5f, 40), Program::kGeometryAdjacency);
+  b.Draw(TRIANGLE_STRIP_ADJACENCY, zigzag(14, -0.875f, -0.125f, 60), Program::kColor);
+  b.Draw(TRIANGLES_ADJACENCY, zigzag(12, 0.125f, -0.125f, 80), Program::kColor);
+  std::vector<Vertex> lines;
+  for (int i = 0; i < 9; ++i)
+    lines.push_back({{-0.9375f + 0.1875f * float(i), (i % 2) ? -0.5f : -0.6875f, 0, 1}, Palette(unsigned(100 + i))});
+  b.Draw(LINES_ADJACENCY, lines, Program::kGeometryLineAdjacency);
+  for (Vertex& v : lines) v.pos.y -= 0.125f;
+  b.Draw(LINE_STRIP_ADJACENCY, lines, Program::kGeometryLineAdjacency);
+  for (Vertex& v : lines) v.pos.y -= 0.125f;
+  b.Draw(LINE_STRIP_ADJACENCY, lines, Program::kColor);
+}
+
+// gl_Layer from the geometry stage: the layered textures of VertexLayer, each triangle drawn by three invocations
+// into three consecutive layers from the one its last vertex names (past the last: the last), darker each time.
+void GeometryLayer(Backend& b) {
+  const Enum kinds[3] = {TEXTURE_2D_ARRAY, TEXTURE_3D, TEXTURE_CUBE_MAP};
+  for (int k = 0; k < 3; ++k) {
+    const int layers = BindLayeredTarget(b, kinds[k]);
+    b.Clear(COLOR_BUFFER_BIT);
+    std::vector<Vertex> v;
+    auto triangle = [&](float x0, float y0, float x1, float y1, glm::vec4 c, float layer) {
+      const glm::vec4 lw(0, 0, 0, layer);
+      for (const glm::vec4& p : {glm::vec4(x0, y0, 0, 1), glm::vec4(x1, y0, 0, 1), glm::vec4(x0, y1, 0, 1)})
+        v.push_back({p, c, lw});
+    };
+    triangle(-0.875f, -0.875f, 0.75f, 0.5f, Palette(unsigned(3 * k)), 0.0f);
+    triangle(0.875f, 0.875f, -0.5f, -0.25f, Palette(unsigned(3 * k + 1)), float(layers - 2));
+    b.Draw(TRIANGLES, v, Program::kGeometryLayer);
   }
   ShowLayers(b);
 }
@@ -1889,6 +1976,9 @@ const std::vector<SceneInfo>& Scenes() {
       {"conditional_render", kSize, kSize, Check::kExact, ConditionalRender},
       {"layered_framebuffers", kSize, kSize, Check::kExact, LayeredFramebuffers},
       {"vertex_layer", kSize, kSize, Check::kExact, VertexLayer},
+      {"geometry_stage", kSize, kSize, Check::kColor, GeometryStage},
+      {"geometry_adjacency", kSize, kSize, Check::kColor, GeometryAdjacency},
+      {"geometry_layer", kSize, kSize, Check::kColor, GeometryLayer},
       {"polygon_offset", kSize, kSize, Check::kExactWithDepth, PolygonOffset},
       {"texture_filters", kSize, kSize, Check::kTexture, TextureFilters},
       {"texture_wraps", kSize, kSize, Check::kTexture, TextureWraps},
