@@ -82,6 +82,134 @@ softgl::Image Wireframe(int width, int height) {
   return gl.ReadPixels();
 }
 
+namespace {
+
+using softgl::Float;
+using softgl::vec3;
+using softgl::vec4;
+
+struct WireVaryings {
+  vec3 normal;
+  vec3 color;
+  softgl::NoPerspective<vec3> edge;  // window-space distance, in pixels, to each of the triangle's three edges
+};
+
+// A lit surface with its triangles' edges drawn over it in the same pass: the geometry stage gives each vertex its
+// distance, in pixels, to the opposite edge (and 0 to the other two), interpolated without perspective; the fragment
+// stage darkens whatever lies within about a pixel of an edge, smoothly (the lines come anti-aliased).
+struct SolidWireShader : softgl::Shader<SolidWireShader, LitVaryings, WireVaryings> {
+  static constexpr softgl::GeometryLayout kGeometry{softgl::TRIANGLES, softgl::TRIANGLE_STRIP, 3};
+  glm::mat4 mvp{1.0f};
+  glm::mat4 model{1.0f};
+  glm::vec2 half_viewport{1.0f};  // viewport width and height / 2
+  glm::vec3 light_dir = glm::normalize(glm::vec3(0.4f, 0.8f, 0.6f));
+  glm::vec3 wire{0.05f, 0.05f, 0.1f};
+  void Vertex(const softgl::VertexLanes& in, softgl::VertexLanesOut<LitVaryings>& out) const {
+    out.position = mvp * vec4(vec3(in.attrib[0]), 1.0f);
+    out.varyings.normal = glm::mat3(model) * vec3(in.attrib[1]);
+    out.varyings.color = vec3(in.attrib[2]);
+  }
+  void Geometry(const softgl::GeometryLanes<LitVaryings>& in, softgl::GeometryLanesOut<WireVaryings>& out) const {
+    softgl::vec2 p[3];  // window positions, in pixels
+    for (int k = 0; k < 3; ++k) {
+      const vec4& c = in.vertex[k].position;
+      p[k] = softgl::vec2(c.x / c.w * half_viewport.x, c.y / c.w * half_viewport.y);
+    }
+    const softgl::vec2 e0 = p[2] - p[1], e1 = p[0] - p[2], e2 = p[1] - p[0];
+    const Float area = abs(e1.x * e2.y - e1.y * e2.x);  // twice the triangle's area
+    const Float height[3] = {area / length(e0), area / length(e1), area / length(e2)};
+    for (int k = 0; k < 3; ++k) {
+      out.position = in.vertex[k].position;
+      out.varyings.normal = in.vertex[k].varyings.normal;
+      out.varyings.color = in.vertex[k].varyings.color;
+      out.varyings.edge = vec3(k == 0 ? height[0] : Float(0.0f), k == 1 ? height[1] : Float(0.0f),
+                               k == 2 ? height[2] : Float(0.0f));
+      out.EmitVertex();
+    }
+  }
+  void Fragment(const softgl::FragmentLanes<WireVaryings>& in, softgl::FragmentLanesOut& out) const {
+    const Float diffuse = max(dot(normalize(in.varyings.normal), light_dir), 0.0f);
+    const vec3 lit = in.varyings.color * (0.25f + 0.75f * diffuse);
+    const vec3& e = in.varyings.edge;
+    const Float near_edge = 1.0f - smoothstep(0.5f, 1.5f, min(min(e.x, e.y), e.z));
+    out.color[0] = vec4(mix(lit, vec3(wire), near_edge), 1.0f);
+  }
+};
+
+struct WorldVaryings {
+  vec3 world;
+};
+struct ColourVaryings {
+  vec3 color;
+};
+
+// Each triangle's face normal drawn as a short line from its centre: a geometry stage that takes triangles and makes
+// line strips, a debugging view of a mesh's orientation (the lines fade from yellow at the face to red at the tip).
+struct FaceNormalShader : softgl::Shader<FaceNormalShader, WorldVaryings, ColourVaryings> {
+  static constexpr softgl::GeometryLayout kGeometry{softgl::TRIANGLES, softgl::LINE_STRIP, 2};
+  glm::mat4 model{1.0f};
+  glm::mat4 view_projection{1.0f};
+  float length = 0.1f;
+  void Vertex(const softgl::VertexLanes& in, softgl::VertexLanesOut<WorldVaryings>& out) const {
+    const vec4 world = model * vec4(vec3(in.attrib[0]), 1.0f);
+    out.varyings.world = vec3(world);
+    out.position = world;  // (not rasterized: the geometry stage makes the positions)
+  }
+  void Geometry(const softgl::GeometryLanes<WorldVaryings>& in, softgl::GeometryLanesOut<ColourVaryings>& out) const {
+    const vec3& a = in.vertex[0].varyings.world;
+    const vec3& b = in.vertex[1].varyings.world;
+    const vec3& c = in.vertex[2].varyings.world;
+    const vec3 centre = (a + b + c) * (1.0f / 3.0f);
+    const vec3 normal = normalize(cross(b - a, c - a));
+    out.position = view_projection * vec4(centre, 1.0f);
+    out.varyings.color = vec3(1.0f, 0.9f, 0.2f);
+    out.EmitVertex();
+    out.position = view_projection * vec4(centre + normal * length, 1.0f);
+    out.varyings.color = vec3(1.0f, 0.2f, 0.1f);
+    out.EmitVertex();
+  }
+  void Fragment(const softgl::FragmentLanes<ColourVaryings>& in, softgl::FragmentLanesOut& out) const {
+    out.color[0] = vec4(in.varyings.color, 1.0f);
+  }
+};
+
+}  // namespace
+
+softgl::Image GeometryStage(int width, int height) {
+  softgl::Context gl(width, height);
+  const Mesh torus = MakeTorus(32, 16, 0.65f, 0.28f);
+  UploadLitMesh(gl, torus);
+  const int count = int(torus.indices.size());
+  const glm::mat4 projection = Projection(width, height, 40.0f, 0.1f, 10.0f);
+  gl.Enable(softgl::DEPTH_TEST);
+  gl.ClearColor(0.78f, 0.8f, 0.84f, 1.0f);
+  gl.Clear(softgl::COLOR_BUFFER_BIT | softgl::DEPTH_BUFFER_BIT);
+  // Left: the torus shaded with its wireframe, one pass. Right: the same torus, and its face normals.
+  for (int side = 0; side < 2; ++side) {
+    const float x = side == 0 ? -1.0f : 1.0f;
+    const glm::mat4 view = glm::lookAt(glm::vec3(0.0f, 1.2f, 4.0f), glm::vec3(0.0f), glm::vec3(0, 1, 0));
+    const glm::mat4 model = glm::translate(glm::mat4(1.0f), glm::vec3(x, 0.0f, 0.0f)) *
+                            glm::rotate(glm::mat4(1.0f), side == 0 ? 0.5f : -0.7f, glm::vec3(1.0f, 0.2f, 0.1f));
+    SolidWireShader solid;
+    LitShader lit;
+    solid.model = lit.model = model;
+    solid.mvp = lit.mvp = projection * view * model;
+    solid.half_viewport = glm::vec2(float(width), float(height)) * 0.5f;
+    if (side == 0) gl.UseProgram(solid);
+    else gl.UseProgram(lit);
+    gl.DrawElement(softgl::TRIANGLES, count, softgl::UNSIGNED_INT, 0);
+    if (side == 1) {
+      FaceNormalShader normals;
+      normals.model = model;
+      normals.view_projection = projection * view;
+      normals.length = 0.12f;
+      gl.UseProgram(normals);
+      gl.DrawElement(softgl::TRIANGLES, count, softgl::UNSIGNED_INT, 0);
+    }
+  }
+  return gl.ReadPixels();
+}
+
 softgl::Image Clipped(int width, int height) {
   softgl::Context gl(width, height);
   const glm::mat4 proj = Projection(width, height, 70.0f, 0.5f, 60.0f);

@@ -17,6 +17,9 @@ softgl::Image Cube(int width, int height, float angle);
 
 /// A torus drawn with PolygonMode(LINE) over a filled, dimmed copy, and its vertices as points.
 softgl::Image Wireframe(int width, int height);
+/// The geometry stage: a torus shaded with its wireframe in one pass (edge distances from the geometry stage), and
+/// a torus with its face normals drawn as lines made from its triangles.
+softgl::Image GeometryStage(int width, int height);
 
 /// A camera standing on a checkered floor that runs behind it, with a cube crossing the near plane: triangles are
 /// clipped by the near plane and the side planes, and the checks show perspective-correct interpolation.

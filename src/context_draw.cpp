@@ -141,7 +141,7 @@ bool CheckNotMapped(ContextState& s, const char* what, bool elements) {
 // BeginTransformFeedback's: primitives of another kind (the geometry stage's output, with one), or a buffer being
 // recorded into mapped, are INVALID_OPERATION. False with the error set. Needs a program.
 bool CheckModes(ContextState& s, const char* what, Enum mode) {
-  const GeometryLayout* g = s.program->Geometry();
+  const GeometryLayout* g = s.program->GeometryStage();
   if (g && !g->Accepts(mode)) return s.SetError(INVALID_OPERATION, what, "the draw's mode does not make the primitives the program's geometry stage takes (kGeometry.input)"), false;
   const TransformFeedbackObject& t = *s.feedback;
   if (!t.Recording()) return true;

@@ -21,7 +21,9 @@ void RunGeometry(const Program& program, const GeometryInput& in, std::size_t be
   const std::size_t n = end - begin;  // input primitives
   const int invocations = layout.invocations, max = layout.max_vertices;
   const int nvar = program.VaryingFloats();
-  const int stride = shader_detail::kGeometryHead + nvar;
+  const bool ids = program.ReadsPrimitiveId();  // the last two varyings: gl_PrimitiveID, from the record's head
+  const int own = nvar - (ids ? 2 : 0);          // the varyings of the fragment stage's struct
+  const int stride = shader_detail::kGeometryHead + own;
   const std::size_t slots = n * std::size_t(invocations);  // (invocation, primitive), invocation-major
 
   // Each primitive's shaded vertices, its gl_PrimitiveIDIn and gl_InstanceID.
@@ -93,9 +95,13 @@ void RunGeometry(const Program& program, const GeometryInput& in, std::size_t be
         std::memcpy(&out.position[v].x, rec, sizeof(float) * 4);
         out.point_size[v] = rec[4];
         if (layers) std::memcpy(&out.layer[v], rec + 5, sizeof(int));
-        if (nvar > 0)
-          std::memcpy(out.varyings.data() + std::size_t(v) * std::size_t(nvar), rec + shader_detail::kGeometryHead,
-                      sizeof(float) * std::size_t(nvar));
+        float* var = out.varyings.data() + std::size_t(v) * std::size_t(nvar);
+        if (own > 0) std::memcpy(var, rec + shader_detail::kGeometryHead, sizeof(float) * std::size_t(own));
+        if (ids) {
+          std::uint32_t id;
+          std::memcpy(&id, rec + 7, sizeof id);
+          PrimitiveIdFloats(id, var + own);
+        }
       }
       AppendPrimitives(layout.output, strip, int(v - strip), out_prims.indices, in.provoking_first);
     }

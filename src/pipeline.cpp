@@ -185,7 +185,13 @@ class PrimitiveRunner {
     cull_.SetSamples(state.samples);
     for (int k = 0; state.interpolation && k < sv.nvar; ++k)
       if (state.interpolation[k] == Interpolation::kFlat) flat_[flat_count_++] = k;
+    // gl_PrimitiveID, which the fragment stage reads from the last two varyings: each primitive's number, unless a
+    // geometry stage wrote it into its vertices.
+    ids_ = state.program->ReadsPrimitiveId() && state.program->GeometryStage() == nullptr;
   }
+
+  // The number of the primitives that follow (gl_PrimitiveID), when the runner sets it.
+  void SetPrimitiveId(std::uint32_t id) { id_ = id; }
 
   void Point(std::uint32_t i) { Point(i, i, true); }
 
@@ -297,6 +303,8 @@ class PrimitiveRunner {
     const float* value = sv_.Varyings(int(provoking));
     for (int k = 0; k < count; ++k)
       for (int f = 0; f < flat_count_; ++f) v[k].var[flat_[f]] = value[flat_[f]];
+    if (ids_)
+      for (int k = 0; k < count; ++k) PrimitiveIdFloats(id_, v[k].var + sv_.nvar - 2);
   }
 
   void Point(std::uint32_t i, std::uint32_t provoking, bool front_facing) {
@@ -380,6 +388,8 @@ class PrimitiveRunner {
   bool front_ = true;  // facing of the polygon in win_
   int flat_[kMaxVaryingFloats];  // the varyings that are flat
   int flat_count_ = 0;
+  bool ids_ = false;  // primitives carry their number to the fragment stage
+  std::uint32_t id_ = 0;
 };
 
 }  // namespace
@@ -426,6 +436,7 @@ struct AssembledPiece {
   int per = 0;
   std::size_t per_instance = 0, count = 0;
   std::uint32_t unique = 0;
+  std::uint32_t primitive_base = 0;  // gl_PrimitiveID of primitive 0 of each instance
 };
 
 // Transform feedback and the PRIMITIVES_GENERATED query take the primitives of a piece, in order.
@@ -448,7 +459,7 @@ void Geometry(const DrawCall& call, const DrawState& state, const AssembledPiece
   std::swap(g.input_primitives, scratch.primitives);
   std::swap(g.input_map, scratch.element_to_shaded);
   GeometryInput in;
-  in.layout = program.Geometry();
+  in.layout = program.GeometryStage();
   in.prims = &g.input_primitives;
   in.per_instance = input.per_instance;
   in.count = input.count;
@@ -492,7 +503,7 @@ void Geometry(const DrawCall& call, const DrawState& state, const AssembledPiece
 template <class Bin>
 void ShadeAndAssemble(const DrawCall& call, const FetchPlan& fetch, const DrawState& state, WorkerPool& pool,
                       Scratch& scratch, Bin&& bin) {
-  const bool geometry = state.program->Geometry() != nullptr;
+  const bool geometry = state.program->GeometryStage() != nullptr;
   ShadeVertices(call, fetch, *state.program, state.textures, state.interpolation, state.viewport,
                 state.feedback ? state.feedback->layout : nullptr, state.layers > 1 && !geometry, geometry, pool,
                 scratch);
@@ -505,6 +516,7 @@ void ShadeAndAssemble(const DrawCall& call, const FetchPlan& fetch, const DrawSt
   a.per_instance = prims.indices.size() / std::size_t(a.per);
   a.count = a.per_instance * std::size_t(call.instances);
   a.unique = std::uint32_t(scratch.shaded.count / call.instances);
+  a.primitive_base = call.primitive_base;
   if (geometry) return a.count > 0 ? Geometry(call, state, a, pool, scratch, bin) : void();
   CountAndRecord(a, state, scratch);
   if (a.count > 0) bin(a);
@@ -548,6 +560,7 @@ void BinPrimitives(const AssembledPiece& a, const DrawState& state, DrawPacket& 
     // In groups of up to 16 primitives: the triangles of a group that certainly draw nothing, and the facing and
     // pixel box of most others, are found together.
     std::uint32_t v[TriangleGroup::kSize][4];  // each primitive's vertices, then its provoking vertex
+    std::uint32_t id[TriangleGroup::kSize];    // and its gl_PrimitiveID
     GroupVerdict verdict;
     const int* layer_of = layer >= 0 ? scratch.primitive_layer.data() : nullptr;
     for (std::size_t p = std::size_t(job) * job_size; p < end;) {
@@ -563,6 +576,7 @@ void BinPrimitives(const AssembledPiece& a, const DrawState& state, DrawPacket& 
         const std::size_t provoking = i + (first ? 0 : std::size_t(per - 1));
         for (int k = 0; k < per; ++k) v[n][k] = map[idx[i + std::size_t(k)]] + shift;
         v[n][3] = map[idx[provoking]] + shift;
+        id[n] = a.primitive_base + std::uint32_t(q);
         ++n;
       }
       if (per == 3) runner.Judge(v, n, verdict);
@@ -572,6 +586,7 @@ void BinPrimitives(const AssembledPiece& a, const DrawState& state, DrawPacket& 
           runner.Known(v[t][0], v[t][1], v[t][2], (verdict.front >> t) & 1u, verdict.Box(t));
           continue;
         }
+        runner.SetPrimitiveId(id[t]);
         switch (per) {
           case 1: runner.Point(v[t][0]); break;
           case 2: runner.Line(v[t][0], v[t][1], v[t][3]); break;
@@ -686,7 +701,7 @@ void RecordRestartRuns(const DrawCall& call, const FetchPlan& fetch, const DrawS
 void RecordDraw(const DrawCall& call, const FetchPlan& fetch, const DrawState& state, const DrawPacket& packet,
                 const RenderTarget& target, Frame& frame, WorkerPool& pool, Scratch& scratch) {
   if (call.count <= 0 || call.instances <= 0 || state.program == nullptr) return;
-  const GeometryLayout* geometry = state.program->Geometry();
+  const GeometryLayout* geometry = state.program->GeometryStage();
   if ((state.bounds.Empty() || state.discard) && !state.feedback && (!geometry || !state.primitives_generated)) {
     // Nothing can be drawn; the primitives are still generated, and counted (a geometry stage's primitives are
     // counted by running it).

@@ -46,6 +46,13 @@ struct ShadedVertices {
   std::vector<int> layer;
 };
 
+/// gl_PrimitiveID as the two flat varyings that carry it to the fragment stage (Program::ReadsPrimitiveId): its
+/// low and high 16 bits, each exact as a float.
+inline void PrimitiveIdFloats(std::uint32_t id, float* out) {
+  out[0] = float(id & 0xFFFFu);
+  out[1] = float(id >> 16);
+}
+
 /// A vertex in homogeneous clip space with its varyings (input and output of clipping).
 struct ClipVertex {
   glm::vec4 pos;

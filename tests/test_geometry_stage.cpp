@@ -482,3 +482,98 @@ TEST_CASE("PRIMITIVES_GENERATED counts the geometry stage's output, under RASTER
   }
   CHECK(s.gl.GetError() == NO_ERROR);
 }
+
+namespace {
+
+// The fragment stage's gl_PrimitiveID as a colour: its bytes in red, green and blue.
+template <class Derived, class Varyings>
+struct IdColour {
+  static constexpr bool kReadsPrimitiveId = true;
+  void Fragment(const FragmentLanes<Varyings>& in, FragmentLanesOut& out) const {
+    const Int id = in.primitive_id;
+    out.color[0] = vec4(Float(id & Int(255)) / 255.0f, Float((id >> 8) & Int(255)) / 255.0f,
+                        Float((id >> 16) & Int(255)) / 255.0f, Float(1.0f));
+  }
+};
+struct IdShader : Base<IdShader, In>, IdColour<IdShader, In> {
+  using IdColour<IdShader, In>::kReadsPrimitiveId;
+  using IdColour<IdShader, In>::Fragment;
+};
+// The geometry stage writes gl_PrimitiveID = 1000 * gl_PrimitiveIDIn + 7, or leaves it (gl_PrimitiveIDIn).
+template <bool kWrite>
+struct GeometryIdShader : Base<GeometryIdShader<kWrite>, In>, IdColour<GeometryIdShader<kWrite>, In> {
+  using IdColour<GeometryIdShader<kWrite>, In>::kReadsPrimitiveId;
+  using IdColour<GeometryIdShader<kWrite>, In>::Fragment;
+  static constexpr GeometryLayout kGeometry{TRIANGLES, TRIANGLE_STRIP, 3};
+  void Geometry(const GeometryLanes<In>& in, GeometryLanesOut<In>& out) const {
+    if (kWrite) out.primitive_id = in.primitive_id * Int(1000) + Int(7);
+    for (int k = 0; k < 3; ++k) {
+      out.position = in.vertex[k].position;
+      out.varyings = in.vertex[k].varyings;
+      out.EmitVertex();
+    }
+  }
+};
+
+// The id a pixel's colour holds (IdColour).
+std::uint32_t IdAt(const std::vector<std::uint8_t>& p, int size, int x, int y) {
+  const std::uint8_t* c = &p[std::size_t(y * size + x) * 4];
+  return std::uint32_t(c[0]) | std::uint32_t(c[1]) << 8 | std::uint32_t(c[2]) << 16;
+}
+
+}  // namespace
+
+TEST_CASE("the fragment stage reads gl_PrimitiveID: each primitive's number, or the geometry stage's", "[geometry]") {
+  // Four columns of two triangles each: a quad per column, as a list (ids 0 .. 7) in columns of 8 pixels.
+  std::vector<Vertex> v;
+  for (int c = 0; c < 4; ++c) {
+    const float x0 = -1.0f + 0.5f * float(c), x1 = x0 + 0.5f;
+    for (glm::vec2 p : {glm::vec2(x0, -1), glm::vec2(x1, -1), glm::vec2(x0, 1), glm::vec2(x1, -1), glm::vec2(x1, 1),
+                        glm::vec2(x0, 1)})
+      v.push_back({glm::vec4(p, 0, 1), glm::vec4(1.0f)});
+  }
+  auto draw = [&](auto& shader, Enum polygon) {
+    Scene s(v, 32, 2);
+    s.gl.UseProgram(shader);
+    s.gl.PolygonMode(FRONT_AND_BACK, polygon);
+    s.gl.DrawArrays(TRIANGLES, 0, int(v.size()));
+    CHECK(s.gl.GetError() == NO_ERROR);
+    return Pixels(s.gl, 32);
+  };
+  IdShader plain;
+  GeometryIdShader<true> written;
+  GeometryIdShader<false> left;
+  const auto p = draw(plain, FILL), w = draw(written, FILL), l = draw(left, FILL);
+  for (int c = 0; c < 4; ++c) {
+    INFO("column " << c);
+    // Pixel (8c + 1, 2) lies in the column's first triangle, (8c + 6, 29) in its second.
+    CHECK(IdAt(p, 32, 8 * c + 1, 2) == std::uint32_t(2 * c));
+    CHECK(IdAt(p, 32, 8 * c + 6, 29) == std::uint32_t(2 * c + 1));
+    CHECK(IdAt(w, 32, 8 * c + 6, 29) == std::uint32_t(1000 * (2 * c + 1) + 7));
+    CHECK(IdAt(l, 32, 8 * c + 6, 29) == std::uint32_t(2 * c + 1));
+  }
+  // As lines, each triangle's edges keep its number: the left edge of column 1 belongs to triangle 2 (drawn after
+  // column 0's triangle 1, whose right edge it shares), the column's diagonal to triangle 3 (its last).
+  const auto lines = draw(plain, LINE);
+  CHECK(IdAt(lines, 32, 7, 16) == 2u);  // (a line at x = 8.0 covers column 7)
+  CHECK(IdAt(lines, 32, 11, 16) == 3u);  // the diagonal of column 1
+}
+
+TEST_CASE("gl_PrimitiveID past 65535, in a draw made in pieces", "[geometry]") {
+  // One point per pixel of a 300 x 300 target: 90,000 points, in pieces of MAX_ELEMENTS_VERTICES.
+  constexpr int kSize = 300;
+  std::vector<Vertex> v;
+  for (int y = 0; y < kSize; ++y)
+    for (int x = 0; x < kSize; ++x)
+      v.push_back({glm::vec4((float(x) + 0.5f) / kSize * 2.0f - 1.0f, (float(y) + 0.5f) / kSize * 2.0f - 1.0f, 0, 1),
+                   glm::vec4(1.0f)});
+  Scene s(v, kSize, 2);
+  IdShader shader;
+  s.gl.UseProgram(shader);
+  s.gl.DrawArrays(POINTS, 0, int(v.size()));
+  const auto p = Pixels(s.gl, kSize);
+  int wrong = 0;
+  for (int y = 0; y < kSize; ++y)
+    for (int x = 0; x < kSize; ++x) wrong += IdAt(p, kSize, x, y) != std::uint32_t(y * kSize + x);
+  CHECK(wrong == 0);
+}

@@ -104,6 +104,10 @@ TEST_CASE("image: feedback_particles", "[image]") {
   CompareWithGolden("feedback_particles", scenes::FeedbackParticles(640, 400));
 }
 
+TEST_CASE("image: geometry_stage", "[image]") {
+  CompareWithGolden("geometry_stage", scenes::GeometryStage(640, 360));
+}
+
 TEST_CASE("image: environment map", "[image]") {
   CompareWithGolden("environment_map", scenes::EnvironmentMap(640, 480));
 }

@@ -190,7 +190,7 @@ namespace shader_detail {
 // baseline instructions through the stack: 9% of a texturing scene's time for the fragment stage).
 template <class Batch>
 void FillVertexLanes(const Batch& batch, int base, int n, VertexLanes& in);
-template <class Varyings>
+template <class Varyings, bool kPrimitiveId>
 void FillFragmentLanes(const BlockBatch& batch, int b, FragmentLanes<Varyings>& in);
 
 // textureLod through one of Textures' *LodLanes calls.
@@ -331,8 +331,9 @@ struct GeometryLanes : LodTextures {
 
 namespace shader_detail {
 // Floats before the varyings in each vertex a geometry stage emits: the position (4), gl_PointSize, gl_Layer (its
-// bits), and 1 where the vertex starts a new strip (EndPrimitive came before it), 0 where it continues one.
-inline constexpr int kGeometryHead = 7;
+// bits), 1 where the vertex starts a new strip (EndPrimitive came before it) and 0 where it continues one, and
+// gl_PrimitiveID (its bits).
+inline constexpr int kGeometryHead = 8;
 // Where a geometry stage's emitted vertices go: lane l's k-th vertex at records + (l * max_vertices + k) * stride.
 struct GeometrySink {
   float* records = nullptr;
@@ -354,6 +355,7 @@ struct GeometryLanesOut {
   Float point_size = 1.0f;  ///< gl_PointSize, used when PROGRAM_POINT_SIZE is enabled
   Varyings varyings{};      ///< interpolated across the output primitive for the fragment stage
   Int layer = 0;            ///< gl_Layer, read only when Derived declares `static constexpr bool kWritesLayer = true;`
+  Int primitive_id = 0;     ///< gl_PrimitiveID for the fragment stage (set to gl_PrimitiveIDIn before Geometry())
 
   explicit GeometryLanesOut(shader_detail::GeometrySink& sink) : sink_(&sink) {}
 
@@ -368,9 +370,11 @@ struct GeometryLanesOut {
     position.z.Store(rows[2]);
     position.w.Store(rows[3]);
     point_size.Store(rows[4]);
-    alignas(64) std::int32_t layers[kLanes];
-    layer.Store(layers);
-    std::memcpy(rows[5], layers, sizeof layers);
+    alignas(64) std::int32_t ints[kLanes];
+    layer.Store(ints);
+    std::memcpy(rows[5], ints, sizeof ints);
+    primitive_id.Store(ints);
+    std::memcpy(rows[7], ints, sizeof ints);
     for (int l = 0; l < kLanes; ++l) rows[6][l] = ((sink_->cut >> l) & 1u) ? 1.0f : 0.0f;
     if constexpr (kVaryingFloats > 0) {
       const Float* v = reinterpret_cast<const Float*>(static_cast<const void*>(&varyings));
@@ -404,6 +408,10 @@ struct FragmentLanes {
   vec2 point_coord;    ///< gl_PointCoord: where in its point the fragment lies, (0, 0) to (1, 1) (see
                        ///< PointParameter's POINT_SPRITE_COORD_ORIGIN); (0, 0) for lines and triangles
   bool front_facing;   ///< gl_FrontFacing (the same for all 16 lanes)
+  /// gl_PrimitiveID: the number of the fragment's primitive in its draw (each instance counts from 0; a triangle
+  /// drawn as lines or points keeps its number), or what the geometry stage wrote for it. Read only when Derived
+  /// declares `static constexpr bool kReadsPrimitiveId = true;` (0 otherwise).
+  Int primitive_id;
   Bool helper;         ///< gl_HelperInvocation: lanes outside the primitive, run for derivatives, never written
   const Textures* textures;  ///< the textures bound for this draw
 
@@ -659,7 +667,8 @@ struct GeometryBatch {
   const Textures* textures = nullptr;
   int simd = 0;
   /// out: primitive p's k-th vertex at records + (p * max_vertices + k) * stride: position, point size, layer,
-  /// strip start, then VaryingFloats() varyings (shader_detail::kGeometryHead floats before them).
+  /// strip start, primitive id, then the varyings of the fragment stage's struct (shader_detail::kGeometryHead
+  /// floats before them).
   float* records = nullptr;
   int stride = 0;
   int max_vertices = 0;
@@ -707,12 +716,18 @@ void FillVertexLanes(const Batch& batch, int base, int n, VertexLanes& in) {
   in.vertex_id = Int::Load(ids);
   in.instance_id = Int(batch.instance_id);
 }
-template <class Varyings>
+template <class Varyings, bool kPrimitiveId>
 void FillFragmentLanes(const BlockBatch& batch, int b, FragmentLanes<Varyings>& in) {
-  if constexpr (!std::is_empty_v<Varyings>) {  // Float by Float (the struct is made of them)
-    const float* src = batch.varyings + std::size_t(b) * kBlockVaryingFloats;
+  constexpr std::size_t kFloats = std::is_empty_v<Varyings> ? 0 : sizeof(Varyings) / sizeof(Float);
+  const float* src = batch.varyings + std::size_t(b) * kBlockVaryingFloats;
+  if constexpr (kFloats > 0) {  // Float by Float (the struct is made of them)
     Float* dst = reinterpret_cast<Float*>(static_cast<void*>(&in.varyings));
-    for (std::size_t i = 0; i < sizeof(Varyings) / sizeof(Float); ++i) dst[i] = Float::Load(src + i * kLanes);
+    for (std::size_t i = 0; i < kFloats; ++i) dst[i] = Float::Load(src + i * kLanes);
+  }
+  if constexpr (kPrimitiveId) {  // two flat floats after the varyings: its low and high 16 bits
+    in.primitive_id = Int(Float::Load(src + kFloats * kLanes)) + (Int(Float::Load(src + (kFloats + 1) * kLanes)) << 16);
+  } else {
+    in.primitive_id = Int(0);
   }
   const float* fc = batch.frag_coord + std::size_t(b) * 4 * kLanes;
   in.frag_coord = vec4(Float::Load(fc), Float::Load(fc + kLanes), Float::Load(fc + 2 * kLanes),
@@ -776,12 +791,15 @@ class Program {
   /// Whether the last stage before rasterization (geometry, or else vertex) writes gl_Layer, which routes
   /// primitives to the layers of a layered framebuffer. When it does not, they all go to layer 0.
   virtual bool WritesLayer() const { return false; }
+  /// Whether the fragment stage reads gl_PrimitiveID (FragmentLanes::primitive_id). It then takes the last two of
+  /// VaryingFloats(), flat, which the pipeline fills.
+  virtual bool ReadsPrimitiveId() const { return false; }
   /// The geometry stage's layout, or null when the program has no geometry stage.
-  virtual const GeometryLayout* Geometry() const { return nullptr; }
+  virtual const GeometryLayout* GeometryStage() const { return nullptr; }
   /// Floats of varyings per vertex the vertex stage writes: VaryingFloats(), unless a geometry stage sits between
   /// the vertex and fragment stages (VaryingFloats() is then the geometry stage's output, what fragments read).
   virtual int VertexVaryingFloats() const { return VaryingFloats(); }
-  /// Runs the geometry stage on every primitive of the batch (only called when Geometry() is not null).
+  /// Runs the geometry stage on every primitive of the batch (only called when GeometryStage() is not null).
   virtual void ShadeGeometry(const GeometryBatch& batch) const { (void)batch; }
 
  private:
@@ -845,6 +863,17 @@ class Shader : public Program {
         return false;
       }
     }
+    static constexpr bool DeclaresPrimitiveId() {
+      if constexpr (requires { Derived::kReadsPrimitiveId; }) {
+        return bool(Derived::kReadsPrimitiveId);
+      } else {
+        return false;
+      }
+    }
+    // Floats after the fragment stage's varyings that carry gl_PrimitiveID (its low and high 16 bits, flat).
+    static constexpr int Hidden() { return DeclaresPrimitiveId() ? 2 : 0; }
+    // Floats per vertex of the vertex stage's output: its struct's, and with no geometry stage the hidden ones.
+    static constexpr int VertexStride() { return Floats() + (DeclaresGeometry() ? 0 : Hidden()); }
     static constexpr bool DeclaresDepth() {
       if constexpr (requires { Derived::kWritesDepth; }) {
         return bool(Derived::kWritesDepth);
@@ -868,6 +897,9 @@ class Shader : public Program {
         { d.Fragment(in, out) } -> std::convertible_to<bool>;
       }, "Derived needs a Fragment(const FragmentLanes<Varyings>&, FragmentLanesOut&) const (or the scalar form)");
       static_assert(WideVertex() == WideFragment(), "Vertex and Fragment must both be wide, or both scalar");
+      static_assert(!DeclaresPrimitiveId() || WideFragment(), "gl_PrimitiveID is read in the wide form");
+      static_assert(FragmentFloats() + Hidden() <= kMaxVaryingFloats,
+                    "too many varyings: gl_PrimitiveID takes two of the kMaxVaryingFloats (64)");
       static_assert(DefinesGeometry() == DeclaresGeometry(),
                     "a Geometry(const GeometryLanes<Varyings>&, GeometryLanesOut<FragmentVaryings>&) const needs a "
                     "static constexpr GeometryLayout kGeometry, and kGeometry needs that Geometry()");
@@ -929,17 +961,22 @@ class Shader : public Program {
           any = any || mode[k] != Interpolation::kSmooth;
         }
       }
+      for (int k = SoftglForm::FragmentFloats(); k < SoftglForm::FragmentFloats() + SoftglForm::Hidden(); ++k) {
+        mode[k] = Interpolation::kFlat;
+        any = true;
+      }
     }
   };
 
  public:
   int VaryingFloats() const final {
     static_assert(SoftglForm::Check());
-    return SoftglForm::FragmentFloats();
+    return SoftglForm::FragmentFloats() + SoftglForm::Hidden();
   }
-  int VertexVaryingFloats() const final { return SoftglForm::Floats(); }
+  int VertexVaryingFloats() const final { return SoftglForm::VertexStride(); }
+  bool ReadsPrimitiveId() const final { return SoftglForm::DeclaresPrimitiveId(); }
 
-  const GeometryLayout* Geometry() const final {
+  const GeometryLayout* GeometryStage() const final {
     if constexpr (SoftglForm::DeclaresGeometry()) {
       static constexpr GeometryLayout layout = Derived::kGeometry;
       return &layout;
@@ -1014,11 +1051,14 @@ class Shader : public Program {
       if constexpr (SoftglForm::DeclaresLayer())
         if (batch.layers)
           for (int l = 0; l < n; ++l) batch.layers[base + l] = out.layer[l];
+      constexpr int kStride = SoftglForm::VertexStride();
       if constexpr (SoftglForm::Floats() > 0) {
         shader_detail::StoreVertices(reinterpret_cast<const Float*>(&out.varyings), SoftglForm::Floats(),
-                                     batch.varyings + std::size_t(base) * SoftglForm::Floats(), SoftglForm::Floats(),
-                                     n);
+                                     batch.varyings + std::size_t(base) * kStride, kStride, n);
       }
+      if constexpr (kStride > SoftglForm::Floats())  // gl_PrimitiveID's floats, which binning fills
+        for (int l = 0; l < n; ++l)
+          for (int h = SoftglForm::Floats(); h < kStride; ++h) batch.varyings[std::size_t(base + l) * kStride + h] = 0.0f;
     }
   }
 
@@ -1027,7 +1067,7 @@ class Shader : public Program {
     for (int b = 0; b < batch.count; ++b) {
       if (!batch.live[b]) continue;  // every lane failed the early depth test
       FragmentLanes<FragmentVaryings> in;  // (not value-initialized: every member is set here)
-      shader_detail::FillFragmentLanes(batch, b, in);
+      shader_detail::FillFragmentLanes<FragmentVaryings, SoftglForm::DeclaresPrimitiveId()>(batch, b, in);
       FragmentLanesOut& out = batch.out[b];  // written in place (outputs the shader leaves alone are undefined)
       if constexpr (SoftglForm::DeclaresDepth()) out.depth = in.frag_coord.z;  // (read only then)
       out.discarded = false;
@@ -1081,6 +1121,7 @@ class Shader : public Program {
         sink.cut = 0xFFFFu;
         for (int l = 0; l < kLanes; ++l) sink.count[l] = 0;
         GeometryLanesOut<FragmentVaryings> out(sink);
+        out.primitive_id = in.primitive_id;
         self.Geometry(in, out);
         for (int l = 0; l < n; ++l) batch.emitted[base + l] = sink.count[l];
       }
