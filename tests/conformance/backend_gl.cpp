@@ -162,7 +162,9 @@ out vec4 o_color;
 void main() { o_color = g_color; }
 )";
 
-constexpr const char* kShrinkGeometry = R"(#version 400 core
+// (Instanced geometry shaders are OpenGL 4.0's, ARB_gpu_shader5 on a 3.3 context.)
+constexpr const char* kShrinkGeometry = R"(#version 330 core
+#extension GL_ARB_gpu_shader5 : require
 layout(triangles, invocations = 2) in;
 layout(triangle_strip, max_vertices = 6) out;
 in vec4 v_color[];
@@ -240,7 +242,8 @@ void main() {
 }
 )";
 
-constexpr const char* kLayerGeometry = R"(#version 400 core
+constexpr const char* kLayerGeometry = R"(#version 330 core
+#extension GL_ARB_gpu_shader5 : require
 layout(triangles, invocations = 3) in;
 layout(triangle_strip, max_vertices = 3) out;
 in vec4 v_color[];
@@ -318,11 +321,14 @@ class GlBackend final : public Backend {
       programs_[13] = Link(kColorFragment, &layer_error, kLayerVertexShader);
       if (!layer_error.empty()) programs_[13] = 0;
     }
-    programs_[14] = Link(kGeometryFragment, error, kVertexShader, kShrinkGeometry);
     programs_[15] = Link(kGeometryFragment, error, kVertexShader, kSpritesGeometry);
     programs_[16] = Link(kGeometryFragment, error, kVertexShader, kAdjacencyGeometry);
     programs_[17] = Link(kGeometryFragment, error, kVertexShader, kLineAdjacencyGeometry);
-    programs_[18] = Link(kGeometryFragment, error, kVertexShader, kLayerGeometry);
+    for (int k : {14, 18}) {  // (a renderer without ARB_gpu_shader5 draws nothing with these)
+      std::string instanced_error;
+      programs_[k] = Link(kGeometryFragment, &instanced_error, kVertexShader, k == 14 ? kShrinkGeometry : kLayerGeometry);
+      if (!instanced_error.empty()) programs_[k] = 0;
+    }
     instanced_ = Link(kColorFragment, error, kInstancedVertexShader);
     glUseProgram(programs_[4]);
     glUniform1i(glGetUniformLocation(programs_[4], "u_cube"), 1);

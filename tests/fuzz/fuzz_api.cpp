@@ -45,6 +45,58 @@ struct FuzzShader : softgl::Shader<FuzzShader, Vary> {
   }
 };
 
+struct WideVary {
+  softgl::vec4 a;
+};
+
+// A geometry stage whose every choice comes from the vertices' values (any floats: NaN, infinite, huge): how many
+// of its nine tries to emit (one past max_vertices) each lane makes, where strips are cut, gl_Layer and
+// gl_PrimitiveID; three invocations, the fragment stage reading the primitive's id.
+struct FuzzGeometry : softgl::Shader<FuzzGeometry, WideVary> {
+  static constexpr bool kWritesLayer = true;
+  static constexpr bool kReadsPrimitiveId = true;
+  static constexpr softgl::GeometryLayout kGeometry{softgl::TRIANGLES, softgl::TRIANGLE_STRIP, 8, 3};
+  void Vertex(const softgl::VertexLanes& in, softgl::VertexLanesOut<WideVary>& out) const {
+    out.position = in.attrib[0];
+    out.varyings.a = in.attrib[1];
+  }
+  void Geometry(const softgl::GeometryLanes<WideVary>& in, softgl::GeometryLanesOut<WideVary>& out) const {
+    using softgl::Float;
+    for (int k = 0; k < 9; ++k) {
+      const auto& v = in.vertex[k % 3];
+      out.position = v.position * (Float(in.invocation_id) + 1.0f);
+      out.varyings.a = v.varyings.a;
+      out.layer = softgl::Int(v.varyings.a.w * 4.0f) + in.invocation_id;
+      out.primitive_id = softgl::Int(v.varyings.a.z * 100.0f);
+      out.EmitVertex(v.varyings.a.x * 9.0f > Float(float(k)));
+      if (k == 3) out.EndPrimitive(v.varyings.a.y > 0.5f);
+    }
+  }
+  void Fragment(const softgl::FragmentLanes<WideVary>& in, softgl::FragmentLanesOut& out) const {
+    out.color[0] = in.varyings.a + softgl::Float(in.primitive_id) * 0.001f;
+  }
+};
+
+// Lines with adjacency made points, the vertices beyond the line included.
+struct FuzzAdjacency : softgl::Shader<FuzzAdjacency, WideVary> {
+  static constexpr softgl::GeometryLayout kGeometry{softgl::LINES_ADJACENCY, softgl::POINTS, 4};
+  void Vertex(const softgl::VertexLanes& in, softgl::VertexLanesOut<WideVary>& out) const {
+    out.position = in.attrib[0];
+    out.varyings.a = in.attrib[1];
+  }
+  void Geometry(const softgl::GeometryLanes<WideVary>& in, softgl::GeometryLanesOut<WideVary>& out) const {
+    for (int k = 0; k < 4; ++k) {
+      out.position = in.vertex[k].position;
+      out.point_size = in.vertex[k].point_size;
+      out.varyings.a = in.vertex[3 - k].varyings.a;
+      out.EmitVertex();
+    }
+  }
+  void Fragment(const softgl::FragmentLanes<WideVary>& in, softgl::FragmentLanesOut& out) const {
+    out.color[0] = in.varyings.a;
+  }
+};
+
 using namespace softgl;
 
 constexpr std::uint32_t kCaps[] = {CULL_FACE, DEPTH_TEST, STENCIL_TEST, SCISSOR_TEST, BLEND, POLYGON_OFFSET_FILL,
@@ -52,7 +104,9 @@ constexpr std::uint32_t kCaps[] = {CULL_FACE, DEPTH_TEST, STENCIL_TEST, SCISSOR_
                                    PRIMITIVE_RESTART, PRIMITIVE_RESTART_FIXED_INDEX, MULTISAMPLE,
                                    SAMPLE_ALPHA_TO_COVERAGE, SAMPLE_ALPHA_TO_ONE, SAMPLE_COVERAGE, SAMPLE_MASK,
                                    SAMPLE_SHADING, RASTERIZER_DISCARD};
-constexpr std::uint32_t kModes[] = {POINTS, LINES, LINE_LOOP, LINE_STRIP, TRIANGLES, TRIANGLE_STRIP, TRIANGLE_FAN};
+constexpr std::uint32_t kModes[] = {POINTS, LINES, LINE_LOOP, LINE_STRIP, TRIANGLES, TRIANGLE_STRIP, TRIANGLE_FAN,
+                                    LINES_ADJACENCY, LINE_STRIP_ADJACENCY, TRIANGLES_ADJACENCY,
+                                    TRIANGLE_STRIP_ADJACENCY};
 constexpr std::uint32_t kTypes[] = {BYTE, UNSIGNED_BYTE, SHORT, UNSIGNED_SHORT, INT, UNSIGNED_INT, FLOAT, HALF_FLOAT,
                                     DOUBLE, INT_2_10_10_10_REV, UNSIGNED_INT_2_10_10_10_REV};
 constexpr std::uint32_t kIndexTypes[] = {UNSIGNED_BYTE, UNSIGNED_SHORT, UNSIGNED_INT};
@@ -134,6 +188,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   options.depth_format = (wb / 49 + hb / 49) % 2 ? DEPTH_COMPONENT16 : DEPTH_COMPONENT32F;
   Context gl(wb % 49, hb % 49, options);
   FuzzShader shader;
+  FuzzGeometry geometry;
+  FuzzAdjacency adjacency;
   std::vector<std::uint8_t> scratch;
   std::array<Sync, 6> fences{};  // the fences made (deleted ones stay here: stale handles are passed back too)
   // Work per input is bounded, so that an input's time says something about softgl: at most kDrawBudget vertices
@@ -196,7 +252,13 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         if (in.Byte() % 2) gl.DisableVertexAttribArray(std::uint32_t(in.Int(0, 16)));
         else gl.VertexAttribDivisor(std::uint32_t(in.Int(0, 16)), std::uint32_t(in.Int(0, 3)));
         break;
-      case 9: gl.UseProgram(shader); break;
+      case 9: {  // one of the programs, two of them with a geometry stage
+        const int which = in.Byte() % 4;
+        if (which == 1) gl.UseProgram(geometry);
+        else if (which == 2) gl.UseProgram(adjacency);
+        else gl.UseProgram(shader);
+        break;
+      }
       case 10: {
         const std::uint32_t mode = in.Enum(kModes);
         const int first = in.Int(-2, 64);
