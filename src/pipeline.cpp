@@ -637,15 +637,26 @@ void BinLayered(const AssembledPiece& a, const DrawState& state, const DrawPacke
 // transform feedback.
 void RecordPiece(const DrawCall& call, const FetchPlan& fetch, const DrawState& state, const DrawPacket& proto,
                  const RenderTarget& target, Frame& frame, WorkerPool& pool, Scratch& scratch) {
-  const bool draw = !state.discard && !state.bounds.Empty();
-  ShadeAndAssemble(call, fetch, state, pool, scratch, [&](const AssembledPiece& a) {
-    if (!draw) return;
-    if (state.layers > 1) return BinLayered(a, state, proto, frame, pool, scratch);
-    if (frame.Bytes() > kFrameBudgetBytes) frame.Render(pool, scratch.tiles);
-    DrawPacket& packet = frame.AddDraw(target, proto);
-    BinPrimitives(a, state, packet, frame, pool, scratch);
-    frame.ListLastDraw();
-  });
+  if (state.discard || state.bounds.Empty())
+    return ShadeAndAssemble(call, fetch, state, pool, scratch, [](const AssembledPiece&) {});
+  if (state.layers > 1) {
+    return ShadeAndAssemble(call, fetch, state, pool, scratch, [&](const AssembledPiece& a) {
+      BinLayered(a, state, proto, frame, pool, scratch);
+    });
+  }
+  if (state.program->GeometryStage()) {  // a command per group of the geometry stage's output
+    return ShadeAndAssemble(call, fetch, state, pool, scratch, [&](const AssembledPiece& a) {
+      if (frame.Bytes() > kFrameBudgetBytes) frame.Render(pool, scratch.tiles);
+      DrawPacket& packet = frame.AddDraw(target, proto);
+      BinPrimitives(a, state, packet, frame, pool, scratch);
+      frame.ListLastDraw();
+    });
+  }
+  if (frame.Bytes() > kFrameBudgetBytes) frame.Render(pool, scratch.tiles);
+  DrawPacket& packet = frame.AddDraw(target, proto);
+  ShadeAndAssemble(call, fetch, state, pool, scratch,
+                   [&](const AssembledPiece& a) { BinPrimitives(a, state, packet, frame, pool, scratch); });
+  frame.ListLastDraw();
 }
 
 // A large draw with primitive restart: its runs (the element sequences between restart positions) in order, runs
