@@ -213,6 +213,28 @@ struct FlatShader : Shader<FlatShader, NoVaryings> {
   void Fragment(const FragmentLanes<NoVaryings>&, FragmentLanesOut& out) const { out.color[0] = color; }
 };
 
+// Each point a square of side 2 * half_size (clip units) in its colour, made by a geometry stage.
+struct ColourVaryings {
+  vec4 color;
+};
+struct SquaresShader : Shader<SquaresShader, ColourVaryings> {
+  static constexpr GeometryLayout kGeometry{POINTS, TRIANGLE_STRIP, 4};
+  glm::vec2 half_size{0.004f, 0.007f};
+  void Vertex(const VertexLanes& in, VertexLanesOut<ColourVaryings>& out) const {
+    out.position = vec4(vec3(in.attrib[0]), 1.0f);
+    out.varyings.color = vec4(abs(in.attrib[0].x), abs(in.attrib[0].y), 0.5f, 1.0f);
+  }
+  void Geometry(const GeometryLanes<ColourVaryings>& in, GeometryLanesOut<ColourVaryings>& out) const {
+    for (int k = 0; k < 4; ++k) {
+      out.position = in.vertex[0].position + vec4((k & 1) ? half_size.x : -half_size.x,
+                                                  (k & 2) ? half_size.y : -half_size.y, 0.0f, 0.0f);
+      out.varyings.color = in.vertex[0].varyings.color;
+      out.EmitVertex();
+    }
+  }
+  void Fragment(const FragmentLanes<ColourVaryings>& in, FragmentLanesOut& out) const { out.color[0] = in.varyings.color; }
+};
+
 struct UvVaryings {
   vec2 uv;
 };
@@ -535,9 +557,23 @@ const char* kHeadFs =
     "float d = max(dot(n, light), 0.0); float s = pow(max(dot(n, h), 0.0), 24.0) * texture(spec_map, uv).r;"
     "o = vec4(texture(diffuse_map, uv).rgb * (0.15 + d) + vec3(s), 1.0); }";
 
-GLuint Program(const char* vs, const char* fs) {
+// The geometry stage of wide::SquaresShader.
+constexpr const char* kSquaresVs =
+    "#version 330 core\nlayout(location = 0) in vec3 pos; out vec4 v_color;"
+    "void main(){ gl_Position = vec4(pos, 1.0); v_color = vec4(abs(pos.x), abs(pos.y), 0.5, 1.0); }";
+constexpr const char* kSquaresGs =
+    "#version 330 core\nlayout(points) in; layout(triangle_strip, max_vertices = 4) out; in vec4 v_color[];"
+    "out vec4 g_color; uniform vec2 half_size;"
+    "void main(){ for (int k = 0; k < 4; ++k) { gl_Position = gl_in[0].gl_Position + vec4((k & 1) != 0 ?"
+    " half_size.x : -half_size.x, (k & 2) != 0 ? half_size.y : -half_size.y, 0.0, 0.0); g_color = v_color[0];"
+    " EmitVertex(); } }";
+constexpr const char* kSquaresFs = "#version 330 core\nin vec4 g_color; out vec4 o; void main(){ o = g_color; }";
+
+GLuint Program(const char* vs, const char* fs, const char* gs = nullptr) {
   const GLuint p = glCreateProgram();
-  for (auto [type, src] : {std::pair{GLenum(GL_VERTEX_SHADER), vs}, std::pair{GLenum(GL_FRAGMENT_SHADER), fs}}) {
+  for (auto [type, src] : {std::pair{GLenum(GL_VERTEX_SHADER), vs}, std::pair{GLenum(GL_FRAGMENT_SHADER), fs},
+                           std::pair{GLenum(GL_GEOMETRY_SHADER), gs}}) {
+    if (!src) continue;
     const GLuint s = glCreateShader(type);
     glShaderSource(s, 1, &src, nullptr);
     glCompileShader(s);
@@ -1241,6 +1277,52 @@ int main(int argc, char** argv) {
                       return with_osmesa(1280, 720, [&] {
                         small_gl();
                         return TimeGl(n, small_frame);
+                      });
+                    }});
+  // The geometry stage: 200,000 points, each made a square of about 5 x 5 pixels (two triangles) by a geometry
+  // stage, depth-tested: the stage's cost per primitive beside what drawing the squares costs.
+  constexpr int kSquares = 200000;
+  std::vector<float> square_points;
+  {
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<float> u(-0.98f, 0.98f);
+    for (int i = 0; i < kSquares; ++i) square_points.insert(square_points.end(), {u(rng), u(rng), u(rng)});
+  }
+  scenes.push_back({"geometry stage: 200,000 points made squares", 1280, 720, "Mprim/s", double(kSquares),
+                    [&](int n) {
+                      softgl::Context gl(1280, 720, g_options);
+                      gl.BindVertexArray(gl.GenVertexArray());
+                      gl.BindBuffer(softgl::ARRAY_BUFFER, gl.GenBuffer());
+                      gl.BufferData(softgl::ARRAY_BUFFER, std::ptrdiff_t(square_points.size() * 4), square_points.data());
+                      gl.VertexAttributePointer(0, 3, softgl::FLOAT, false, 12, 0);
+                      gl.EnableVertexAttribArray(0);
+                      gl.Enable(softgl::DEPTH_TEST);
+                      wide::SquaresShader shader;
+                      gl.UseProgram(shader);
+                      return MedianMs(n, [&] {
+                        gl.Clear(softgl::COLOR_BUFFER_BIT | softgl::DEPTH_BUFFER_BIT);
+                        gl.DrawArrays(softgl::POINTS, 0, kSquares);
+                        gl.Finish();
+                      });
+                    },
+                    [&](int n) {
+                      return with_osmesa(1280, 720, [&] {
+                        GLuint vao = 0, vbo = 0;
+                        glGenVertexArrays(1, &vao);
+                        glBindVertexArray(vao);
+                        glGenBuffers(1, &vbo);
+                        glBindBuffer(GL_ARRAY_BUFFER, vbo);
+                        glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(square_points.size() * 4), square_points.data(), GL_STATIC_DRAW);
+                        glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 12, nullptr);
+                        glEnableVertexAttribArray(0);
+                        glEnable(GL_DEPTH_TEST);
+                        const GLuint p = Program(kSquaresVs, kSquaresFs, kSquaresGs);
+                        glUniform2f(glGetUniformLocation(p, "half_size"), 0.004f, 0.007f);
+                        return MedianMs(n, [&] {
+                          glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+                          glDrawArrays(GL_POINTS, 0, kSquares);
+                          glFinish();
+                        });
                       });
                     }});
   // The per-draw cost: the first 10,000 of those triangles, one draw call each (a scene of many small objects);
