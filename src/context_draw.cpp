@@ -59,6 +59,8 @@ void ContextState::Draw(const detail::DrawCall& call) {
 
   detail::DrawState ds;
   ds.program = program;
+  ds.geometry = program->GeometryStage();
+  ds.primitive_ids = program->ReadsPrimitiveId();
   ds.textures = &tex.textures;
   ds.interpolation = packet.interpolation;
   ds.viewport = detail::MakeViewportTransform(viewport[0], viewport[1], viewport[2], viewport[3], depth_near,

@@ -34,8 +34,10 @@ bool AnyNoPerspective(const Interpolation* interpolation, int nvar) {
 // per instruction; the varyings divided by w for the vertices inside the guard band. Noperspective varyings are
 // multiplied by the clip-space w here, so that clipping (linear in clip space) and the divide by w give each window
 // vertex the varying's own value, which the rasterizer interpolates linearly.
-void FinishVertices(ShadedVertices& out, int base, int m, const ClipPlanes& planes, const ViewportTransform& viewport,
-                    const Interpolation* interpolation, bool noperspective, const FeedbackLayout* record) {
+// (Inlined into its callers: a draw of a few vertices pays for the call otherwise.)
+[[gnu::always_inline]] inline void FinishVertices(ShadedVertices& out, int base, int m, const ClipPlanes& planes,
+                                                  const ViewportTransform& viewport, const Interpolation* interpolation,
+                                                  bool noperspective, const FeedbackLayout* record) {
   if (record)  // what transform feedback records, before anything below changes the varyings
     for (int i = base; i < base + m; ++i) {
       float* dst = out.feedback.data() + std::size_t(i) * std::size_t(record->floats);
@@ -62,7 +64,7 @@ void FinishVertices(ShadedVertices& out, int base, int m, const ClipPlanes& plan
 }
 
 // The arrays FinishVertices fills, sized for out.count vertices.
-void SizeFinished(ShadedVertices& out, const FeedbackLayout* record) {
+[[gnu::always_inline]] inline void SizeFinished(ShadedVertices& out, const FeedbackLayout* record) {
   const std::size_t n = std::size_t(out.count);
   out.clip_codes.resize(n);
   out.window.resize(n);
@@ -187,7 +189,7 @@ class PrimitiveRunner {
       if (state.interpolation[k] == Interpolation::kFlat) flat_[flat_count_++] = k;
     // gl_PrimitiveID, which the fragment stage reads from the last two varyings: each primitive's number, unless a
     // geometry stage wrote it into its vertices.
-    ids_ = state.program->ReadsPrimitiveId() && state.program->GeometryStage() == nullptr;
+    ids_ = state.primitive_ids && state.geometry == nullptr;
   }
 
   // The number of the primitives that follow (gl_PrimitiveID), when the runner sets it.
@@ -459,7 +461,7 @@ void Geometry(const DrawCall& call, const DrawState& state, const AssembledPiece
   std::swap(g.input_primitives, scratch.primitives);
   std::swap(g.input_map, scratch.element_to_shaded);
   GeometryInput in;
-  in.layout = program.GeometryStage();
+  in.layout = state.geometry;
   in.prims = &g.input_primitives;
   in.per_instance = input.per_instance;
   in.count = input.count;
@@ -503,7 +505,7 @@ void Geometry(const DrawCall& call, const DrawState& state, const AssembledPiece
 template <class Bin>
 void ShadeAndAssemble(const DrawCall& call, const FetchPlan& fetch, const DrawState& state, WorkerPool& pool,
                       Scratch& scratch, Bin&& bin) {
-  const bool geometry = state.program->GeometryStage() != nullptr;
+  const bool geometry = state.geometry != nullptr;
   ShadeVertices(call, fetch, *state.program, state.textures, state.interpolation, state.viewport,
                 state.feedback ? state.feedback->layout : nullptr, state.layers > 1 && !geometry, geometry, pool,
                 scratch);
@@ -560,7 +562,8 @@ void BinPrimitives(const AssembledPiece& a, const DrawState& state, DrawPacket& 
     // In groups of up to 16 primitives: the triangles of a group that certainly draw nothing, and the facing and
     // pixel box of most others, are found together.
     std::uint32_t v[TriangleGroup::kSize][4];  // each primitive's vertices, then its provoking vertex
-    std::uint32_t id[TriangleGroup::kSize];    // and its gl_PrimitiveID
+    std::uint32_t id[TriangleGroup::kSize];    // and its gl_PrimitiveID (when the fragment stage reads it)
+    const bool ids = state.primitive_ids && !state.geometry;
     GroupVerdict verdict;
     const int* layer_of = layer >= 0 ? scratch.primitive_layer.data() : nullptr;
     for (std::size_t p = std::size_t(job) * job_size; p < end;) {
@@ -576,7 +579,7 @@ void BinPrimitives(const AssembledPiece& a, const DrawState& state, DrawPacket& 
         const std::size_t provoking = i + (first ? 0 : std::size_t(per - 1));
         for (int k = 0; k < per; ++k) v[n][k] = map[idx[i + std::size_t(k)]] + shift;
         v[n][3] = map[idx[provoking]] + shift;
-        id[n] = a.primitive_base + std::uint32_t(q);
+        if (ids) id[n] = a.primitive_base + std::uint32_t(q);
         ++n;
       }
       if (per == 3) runner.Judge(v, n, verdict);
@@ -586,7 +589,7 @@ void BinPrimitives(const AssembledPiece& a, const DrawState& state, DrawPacket& 
           runner.Known(v[t][0], v[t][1], v[t][2], (verdict.front >> t) & 1u, verdict.Box(t));
           continue;
         }
-        runner.SetPrimitiveId(id[t]);
+        if (ids) runner.SetPrimitiveId(id[t]);
         switch (per) {
           case 1: runner.Point(v[t][0]); break;
           case 2: runner.Line(v[t][0], v[t][1], v[t][3]); break;
@@ -644,7 +647,7 @@ void RecordPiece(const DrawCall& call, const FetchPlan& fetch, const DrawState& 
       BinLayered(a, state, proto, frame, pool, scratch);
     });
   }
-  if (state.program->GeometryStage()) {  // a command per group of the geometry stage's output
+  if (state.geometry) {  // a command per group of the geometry stage's output
     return ShadeAndAssemble(call, fetch, state, pool, scratch, [&](const AssembledPiece& a) {
       if (frame.Bytes() > kFrameBudgetBytes) frame.Render(pool, scratch.tiles);
       DrawPacket& packet = frame.AddDraw(target, proto);
@@ -712,7 +715,7 @@ void RecordRestartRuns(const DrawCall& call, const FetchPlan& fetch, const DrawS
 void RecordDraw(const DrawCall& call, const FetchPlan& fetch, const DrawState& state, const DrawPacket& packet,
                 const RenderTarget& target, Frame& frame, WorkerPool& pool, Scratch& scratch) {
   if (call.count <= 0 || call.instances <= 0 || state.program == nullptr) return;
-  const GeometryLayout* geometry = state.program->GeometryStage();
+  const GeometryLayout* geometry = state.geometry;
   if ((state.bounds.Empty() || state.discard) && !state.feedback && (!geometry || !state.primitives_generated)) {
     // Nothing can be drawn; the primitives are still generated, and counted (a geometry stage's primitives are
     // counted by running it).

@@ -73,6 +73,8 @@ struct FeedbackCapture {
 /// Everything the front end of a draw needs from the context's state, resolved at draw time.
 struct DrawState {
   const Program* program = nullptr;
+  const GeometryLayout* geometry = nullptr;  // the program's geometry stage (Program::GeometryStage), or none
+  bool primitive_ids = false;  // the fragment stage reads gl_PrimitiveID (Program::ReadsPrimitiveId)
   ViewportTransform viewport;
   Rect bounds;  // viewport, framebuffer and (when enabled) scissor rectangle intersected
   PrimitiveState primitive;
