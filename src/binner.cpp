@@ -147,9 +147,10 @@ Rect Box(float x_lo, float y_lo, float x_hi, float y_hi, const Rect& bounds) {
 
 }  // namespace
 
-Rect LineBox(const WindowVertex& a, const WindowVertex& b, const Rect& bounds) {
-  return Box(std::min(a.win.x, b.win.x), std::min(a.win.y, b.win.y), std::max(a.win.x, b.win.x),
-             std::max(a.win.y, b.win.y), bounds);
+Rect LineBox(const WindowVertex& a, const WindowVertex& b, const Rect& bounds, float width) {
+  const float half = width * 0.5f;  // (a wide line reaches this far across its segment)
+  return Box(std::min(a.win.x, b.win.x) - half, std::min(a.win.y, b.win.y) - half, std::max(a.win.x, b.win.x) + half,
+             std::max(a.win.y, b.win.y) + half, bounds);
 }
 
 Rect PointBox(const WindowVertex& v, float size, const Rect& bounds) {

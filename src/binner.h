@@ -195,7 +195,7 @@ class BinnedBatch {
 /// The pixel box a primitive's fragments can fall in, from its window positions: the rounded-out bounding box
 /// (one pixel of margin for the fill rule's snapping), or for a point its square, cut to `bounds`. (A filled
 /// triangle's box is rasterizer.h's TriangleCentreBox.)
-Rect LineBox(const WindowVertex& a, const WindowVertex& b, const Rect& bounds);
+Rect LineBox(const WindowVertex& a, const WindowVertex& b, const Rect& bounds, float width = 1.0f);
 Rect PointBox(const WindowVertex& v, float size, const Rect& bounds);
 
 }  // namespace softgl::detail

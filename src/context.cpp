@@ -137,6 +137,7 @@ bool* CapFlag(ContextState& s, Enum cap) {
     case SCISSOR_TEST: return &s.scissor_enabled;
     case FRAMEBUFFER_SRGB: return &s.framebuffer_srgb;
     case STENCIL_TEST: return &s.ops.stencil_test;
+    case COLOR_LOGIC_OP: return &s.ops.logic_op;
     case POLYGON_OFFSET_FILL: return &s.primitive.offset_fill;
     case POLYGON_OFFSET_LINE: return &s.primitive.offset_line;
     case POLYGON_OFFSET_POINT: return &s.primitive.offset_point;
@@ -168,7 +169,7 @@ void Context::Disable(Enum cap) {
 }
 
 bool Context::IsEnabled(Enum cap) {
-  if (cap == BLEND) return state_->ops.Blends(0);  // (draw buffer 0's, as IsEnabledi(BLEND, 0))
+  if (cap == BLEND) return state_->ops.BlendEnabled(0);  // (draw buffer 0's, as IsEnabledi(BLEND, 0))
   bool* flag = CapFlag(*state_, cap);
   if (!flag) {
     state_->SetError(INVALID_ENUM, __func__, "an enum argument is not one this call accepts");
@@ -198,7 +199,7 @@ void Context::Disablei(Enum cap, std::uint32_t index) {
 }
 
 bool Context::IsEnabledi(Enum cap, std::uint32_t index) {
-  return IndexedCap(*state_, __func__, cap, index) && state_->ops.Blends(int(index));
+  return IndexedCap(*state_, __func__, cap, index) && state_->ops.BlendEnabled(int(index));
 }
 
 void Context::PrimitiveRestartIndex(std::uint32_t index) { state_->restart_index = index; }
@@ -243,6 +244,11 @@ void Context::PolygonMode(Enum face, Enum mode) {
   if (face != FRONT_AND_BACK || (mode != POINT && mode != LINE && mode != FILL))
     return state_->SetError(INVALID_ENUM, __func__, "an enum argument is not one this call accepts");
   state_->primitive.polygon_mode = mode;
+}
+
+void Context::LineWidth(float width) {
+  if (!(width > 0.0f)) return state_->SetError(INVALID_VALUE, __func__, "width must be positive");
+  state_->primitive.line_width = width;
 }
 
 void Context::PointSize(float size) {
@@ -397,6 +403,11 @@ void Context::BlendEquationSeparate(Enum mode_rgb, Enum mode_alpha) {
 }
 
 void Context::BlendColor(float r, float g, float b, float a) { state_->ops.blend.color = glm::vec4(r, g, b, a); }
+
+void Context::LogicOp(Enum opcode) {
+  if (opcode < CLEAR || opcode > SET) return state_->SetError(INVALID_ENUM, __func__, "opcode must be one of the sixteen logic operations, CLEAR to SET");
+  state_->ops.logic_mode = opcode;
+}
 
 void Context::ColorMask(bool r, bool g, bool b, bool a) {
   for (std::uint8_t& m : state_->ops.color_masks) m = std::uint8_t(r | g << 1 | b << 2 | a << 3);

@@ -56,6 +56,7 @@ void ContextState::Draw(const detail::DrawCall& call) {
   packet.interpolation = program->VaryingInterpolation();
   packet.shader_depth = program->WritesDepth();
   packet.point_lower_left = primitive.point_lower_left;
+  packet.line_width = std::min(primitive.line_width, detail::kMaxLineWidth);
 
   detail::DrawState ds;
   ds.program = program;

@@ -30,7 +30,7 @@ bool QueryState(ContextState& s, Enum pname, StateValue& out) {
   auto integer = [&](double v) { return put(Kind::kInt, {v}); };
   auto boolean = [&](bool v) { return put(Kind::kBool, {v ? 1.0 : 0.0}); };
   if (bool* flag = CapFlag(s, pname)) return boolean(*flag);
-  if (pname == BLEND) return boolean(s.ops.Blends(0));  // (draw buffer 0's)
+  if (pname == BLEND) return boolean(s.ops.BlendEnabled(0));  // (draw buffer 0's)
   if (pname >= DRAW_BUFFER0 && pname < DRAW_BUFFER0 + kMaxColorOutputs) {
     const int i = int(pname - DRAW_BUFFER0);
     // The context's own framebuffer has one colour buffer, which output 0 writes (BACK, as a double-buffered
@@ -77,6 +77,7 @@ bool QueryState(ContextState& s, Enum pname, StateValue& out) {
     case FRONT_FACE: return integer(s.primitive.front_face);
     case POLYGON_MODE: return put(Kind::kInt, {double(s.primitive.polygon_mode), double(s.primitive.polygon_mode)});
     case POINT_SIZE: return put(Kind::kFloat, {s.primitive.point_size});
+    case LINE_WIDTH: return put(Kind::kFloat, {s.primitive.line_width});
     case POINT_SPRITE_COORD_ORIGIN: return integer(s.primitive.point_lower_left ? LOWER_LEFT : UPPER_LEFT);
     case POINT_FADE_THRESHOLD_SIZE: return put(Kind::kFloat, {s.primitive.point_fade_threshold});
     case PROVOKING_VERTEX: return integer(s.primitive.provoking_first ? FIRST_VERTEX_CONVENTION : LAST_VERTEX_CONVENTION);
@@ -107,6 +108,7 @@ bool QueryState(ContextState& s, Enum pname, StateValue& out) {
     case BLEND_DST_ALPHA: return integer(blend.dst_alpha);
     case BLEND_EQUATION_RGB: return integer(blend.eq_rgb);
     case BLEND_EQUATION_ALPHA: return integer(blend.eq_alpha);
+    case LOGIC_OP_MODE: return integer(s.ops.logic_mode);
     case BLEND_COLOR: return put(Kind::kNormalized, {blend.color.r, blend.color.g, blend.color.b, blend.color.a});
     case COLOR_CLEAR_VALUE: return put(Kind::kNormalized, {s.clear_color[0], s.clear_color[1], s.clear_color[2], s.clear_color[3]});
     case COLOR_WRITEMASK: {  // draw buffer 0's
@@ -170,7 +172,7 @@ bool QueryState(ContextState& s, Enum pname, StateValue& out) {
     case MAX_ELEMENTS_VERTICES:
     case MAX_ELEMENTS_INDICES: return integer(detail::kDrawChunk);  // larger draws work, in pieces
     case POINT_SIZE_RANGE: return put(Kind::kFloat, {1.0, double(detail::kMaxPointSize)});
-    case ALIASED_LINE_WIDTH_RANGE: return put(Kind::kFloat, {1.0, 1.0});
+    case ALIASED_LINE_WIDTH_RANGE: return put(Kind::kFloat, {1.0, double(detail::kMaxLineWidth)});
     case SUBPIXEL_BITS: return integer(8);  // vertices snap to 1/256 pixel
     case MAJOR_VERSION: return integer(3);
     case MINOR_VERSION: return integer(3);
@@ -205,7 +207,7 @@ bool QueryIndexed(ContextState& s, const char* what, Enum pname, std::uint32_t i
     out.v[out.count++] = double(std::int32_t(s.ops.multisample.mask));  // the bits as a GLint, as GetIntegerv
   } else if (pname == BLEND) {
     out.kind = Kind::kBool;
-    out.v[out.count++] = s.ops.Blends(int(index)) ? 1.0 : 0.0;
+    out.v[out.count++] = s.ops.BlendEnabled(int(index)) ? 1.0 : 0.0;
   } else {
     out.kind = Kind::kBool;
     for (int c = 0; c < 4; ++c) out.v[out.count++] = s.ops.Writes(int(index), c) ? 1.0 : 0.0;

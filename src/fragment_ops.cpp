@@ -126,7 +126,8 @@ Term TermOf(Enum f, bool alpha) {
 Unorm8Blend::Unorm8Blend(const FragmentOpsState& state, int o, bool rgb_only) {
   for (int c = 0; c < 4; ++c)
     if (!state.Writes(o, c) || (c == 3 && rgb_only)) keep |= 0xFFu << (8 * c);
-  blend = state.Blends(o);
+  logic = state.LogicMode();
+  blend = state.Blends(o) || logic != 0;
   const BlendState& b = state.blend;
   for (int c = 0; c < 4; ++c) {
     const bool a = c == 3;
@@ -135,7 +136,7 @@ Unorm8Blend::Unorm8Blend(const FragmentOpsState& state, int o, bool rgb_only) {
     eq[c] = a ? b.eq_alpha : b.eq_rgb;
     constant[c] = FloatToUnorm8(b.color[c]);
   }
-  packed = blend && b.eq_rgb == b.eq_alpha &&
+  packed = state.Blends(o) && b.eq_rgb == b.eq_alpha &&
            (b.eq_rgb == FUNC_ADD || b.eq_rgb == FUNC_SUBTRACT || b.eq_rgb == FUNC_REVERSE_SUBTRACT);
   alpha_over = packed && b.eq_rgb == FUNC_ADD && b.src_rgb == SRC_ALPHA && b.src_alpha == SRC_ALPHA &&
                b.dst_rgb == ONE_MINUS_SRC_ALPHA && b.dst_alpha == ONE_MINUS_SRC_ALPHA;
@@ -211,8 +212,8 @@ void Blend8(const Unorm8Blend& b, const glm::vec4& color, const std::uint8_t dst
     d[c] = dst[c];
   }
   for (int c = 0; c < 4; ++c) {
-    if (!b.blend) {
-      out[c] = std::uint8_t(s[c]);
+    if (!b.blend || b.logic) {
+      out[c] = b.logic ? std::uint8_t(LogicOpBits(b.logic, unsigned(s[c]), unsigned(d[c]))) : std::uint8_t(s[c]);
       continue;
     }
     const int sf = Factor8(b.src[c], c, s, d, b.constant), df = Factor8(b.dst[c], c, s, d, b.constant);
@@ -240,9 +241,10 @@ SOFTGL_WIDE typename V<W>::U Blend8Lanes(const Unorm8Blend& b, const typename V<
     d[c] = I((pixels >> (8 * c)) & 0xFFu);
   }
   U out = U{};
-  if (!b.blend) {
+  if (!b.blend || b.logic) {
 #pragma GCC unroll 4
     for (int c = 0; c < 4; ++c) out |= U(s[c]) << (8 * c);
+    if (b.logic) out = LogicOpBits(b.logic, out, pixels);
   } else {
     auto factor = [&](const Term& t, int c) SOFTGL_WIDE_LAMBDA -> I {
       I v;
@@ -487,6 +489,18 @@ void ColourLane(const FragmentOpsState& st, const Unorm8Blend& blend8, const Blo
     color = glm::clamp(color, 0.0f, 1.0f);
     for (int c = 0; c < 4; ++c)
       if (std::isnan(color[c])) color[c] = 0.0f;
+    if (const Enum logic = st.LogicMode(); logic && !cb.srgb) {
+      // The logic operation on each channel's fixed-point value: the colour's as Store rounds it, the stored one's
+      // (exact), the result stored back through its value.
+      const glm::vec4 dst = cb.Load(x, y);
+      for (int c = 0; c < 4; ++c) {
+        const int bits = FixedPointBits(cb.layout, c);
+        if (!bits) continue;
+        const std::uint32_t max = (1u << bits) - 1u;
+        const auto q = [max](float v) { return std::uint32_t(std::nearbyint(v * float(max))); };
+        color[c] = float(LogicOpBits(logic, q(color[c]), q(dst[c])) & max) / float(max);
+      }
+    }
     if (st.Blends(o)) {
       BlendState linear = st.blend;
       linear.color = glm::clamp(linear.color, 0.0f, 1.0f);
@@ -759,22 +773,38 @@ SOFTGL_WIDE void FloatLanesOf(const FragmentOpsState& st, const FragmentOpsPlan&
     x = x < 1.0f ? x : F{} + 1.0f;
     return __builtin_convertvector((x * max + 12582912.0f) - 12582912.0f, U);
   };
+  // The logic operation on the encoded texel and the stored one, the masked channels' bits kept (LogicOpBits
+  // works bit by bit, so on whole texels as on each channel).
+  const Enum logic = st.LogicMode();
+  auto logic_op = [&](auto out, auto stored, auto channel_bits) SOFTGL_WIDE_LAMBDA {
+    using T = decltype(out);
+    if (!logic) return out;
+    using Word = std::remove_cvref_t<decltype(stored[0])>;
+    Word keep_bits = 0;
+    for (int c = 0; c < 4; ++c)
+      if (!st.Writes(o, c)) keep_bits |= Word(channel_bits(c));
+    return T((stored & keep_bits) | (LogicOpBits(logic, out, stored) & ~keep_bits));
+  };
   if constexpr (kPacked) {
     constexpr PackedUnorm kPacking = PackingOf(L);
     U out{};
     for (int c = 0; c < 4; ++c)
       if (kPacking.bits[c]) out |= fixed(r[c], float((1u << kPacking.bits[c]) - 1u)) << kPacking.shift[c];
+    out = logic_op(out, word, [&](int c) { return ((1u << kPacking.bits[c]) - 1u) << kPacking.shift[c]; });
     if constexpr (kBytes == 4) at.template Store<std::uint32_t>(go ? out : word);
     else at.template Store<std::uint16_t>(__builtin_convertvector(go ? out : word, typename V<W>::S));
   } else if constexpr (L == TexelLayout::kUnorm16x4) {
     D out{};
     for (int c = 0; c < 4; ++c) out |= __builtin_convertvector(fixed(r[c], 65535.0f), D) << (16 * c);
+    out = logic_op(out, dword, [](int c) { return std::uint64_t(0xFFFF) << (16 * c); });
     at.template Store<std::uint64_t>(__builtin_convertvector(go, D) != 0 ? out : dword);
   } else if constexpr (L == TexelLayout::kUnorm16x2) {
-    const U out = fixed(r[0], 65535.0f) | (fixed(r[1], 65535.0f) << 16);
+    const U out = logic_op(fixed(r[0], 65535.0f) | (fixed(r[1], 65535.0f) << 16), word,
+                           [](int c) { return c < 2 ? 0xFFFFu << (16 * c) : 0u; });
     at.template Store<std::uint32_t>(go ? out : word);
   } else if constexpr (L == TexelLayout::kUnorm16x1) {
-    at.template Store<std::uint16_t>(__builtin_convertvector(go ? fixed(r[0], 65535.0f) : word, typename V<W>::S));
+    const U out = logic_op(fixed(r[0], 65535.0f), word, [](int c) { return c < 1 ? 0xFFFFu : 0u; });
+    at.template Store<std::uint16_t>(__builtin_convertvector(go ? out : word, typename V<W>::S));
   } else if constexpr (L == TexelLayout::kFloat32x4) {
     for (int c = 0; c < 4; ++c) r[c] = go ? r[c] : d[c];
     unsigned quads = 0;  // those with a live lane (StoreQuads)

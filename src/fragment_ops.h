@@ -84,10 +84,18 @@ struct FragmentOpsState {
   // bit i of blend_buffers, bit c of color_masks[i].
   std::uint8_t blend_buffers = 0;
   std::uint8_t color_masks[kMaxColorOutputs] = {0xF, 0xF, 0xF, 0xF, 0xF, 0xF, 0xF, 0xF};
+  // COLOR_LOGIC_OP and LogicOp's operation: while enabled, no draw buffer blends, and the fixed-point ones take
+  // the operation on the colour's and the stored value's bits (LogicOpBits).
+  bool logic_op = false;
+  Enum logic_mode = COPY;
   MultisampleState multisample;
   bool operator==(const FragmentOpsState&) const = default;
-  /// Whether draw buffer o blends, and writes channel c.
-  bool Blends(int o) const { return (blend_buffers >> o) & 1u; }
+  /// Whether BLEND is enabled for draw buffer o (what IsEnabledi reports).
+  bool BlendEnabled(int o) const { return (blend_buffers >> o) & 1u; }
+  /// Whether draw buffer o blends (BLEND enabled and no logic operation), and writes channel c.
+  bool Blends(int o) const { return !logic_op && BlendEnabled(o); }
+  /// The logic operation the fixed-point buffers take, or 0 for none.
+  Enum LogicMode() const { return logic_op ? logic_mode : 0; }
   bool Writes(int o, int c) const { return (color_masks[o] >> c) & 1u; }
   /// Whether any draw buffer writes any channel.
   bool WritesAny() const {
@@ -117,6 +125,31 @@ inline __attribute__((always_inline)) auto Compare(Enum func, T a, T b) {
     case NOTEQUAL: return a != b;
     case GEQUAL: return a >= b;
     default: return Result(!Result{});  // ALWAYS
+  }
+}
+
+/// OpenGL's logic operation `op` (CLEAR ... SET) on the bits of source `s` and destination `d`: scalars or vectors
+/// of unsigned integers. Bits past a channel's are not cleared (the caller keeps its own). Always inlined, as
+/// Compare.
+template <class T>
+inline __attribute__((always_inline)) T LogicOpBits(Enum op, T s, T d) {
+  switch (op) {
+    case CLEAR: return s & ~s;
+    case AND: return s & d;
+    case AND_REVERSE: return s & ~d;
+    case AND_INVERTED: return ~s & d;
+    case NOOP: return d;
+    case XOR: return s ^ d;
+    case OR: return s | d;
+    case NOR: return ~(s | d);
+    case EQUIV: return ~(s ^ d);
+    case INVERT: return ~d;
+    case OR_REVERSE: return s | ~d;
+    case COPY_INVERTED: return ~s;
+    case OR_INVERTED: return ~s | d;
+    case NAND: return ~(s & d);
+    case SET: return ~(s & ~s);
+    default: return s;  // COPY
   }
 }
 
@@ -155,6 +188,7 @@ struct Unorm8Blend {
   std::uint32_t keep = 0;          // bytes of the stored pixel the colour mask keeps
   bool packed = false;             // blending by one equation, FUNC_ADD or a subtraction, in all four channels
   bool alpha_over = false;         // packed, FUNC_ADD, SRC_ALPHA and ONE_MINUS_SRC_ALPHA in all four channels
+  Enum logic = 0;                  // the logic operation instead of blending (then `blend` is set too), or 0
 
   Unorm8Blend() = default;
   /// Draw buffer o's blending and colour mask (rgb_only: a buffer without alpha, whose alpha byte is kept).

@@ -249,7 +249,7 @@ class PrimitiveRunner {
     p.kind = PrimitiveKind::kLine;
     p.front_facing = front_facing;
     p.depth_offset = depth_offset_;
-    bins_.Add(p, win_, LineBox(win_[0], win_[1], state_.bounds), grid_);
+    bins_.Add(p, win_, LineBox(win_[0], win_[1], state_.bounds, std::min(state_.primitive.line_width, kMaxLineWidth)), grid_);
   }
 
   void Triangle(std::uint32_t i0, std::uint32_t i1, std::uint32_t i2, std::uint32_t provoking) {

@@ -26,6 +26,7 @@
 namespace softgl::detail {
 
 inline constexpr float kMaxPointSize = 255.0f;
+inline constexpr float kMaxLineWidth = 255.0f;  // ALIASED_LINE_WIDTH_RANGE's upper end
 /// Largest number of vertices shaded at once; larger draws go through in pieces (a multiple of 6, so that pieces of
 /// point, line and triangle lists hold whole primitives).
 inline constexpr int kDrawChunk = 6 * 8192;
@@ -38,6 +39,7 @@ struct PrimitiveState {
   Enum polygon_mode = FILL;
   bool program_point_size = false;
   float point_size = 1.0f;
+  float line_width = 1.0f;             // LineWidth as given (queries); drawing clamps it to kMaxLineWidth
   bool point_lower_left = false;       // POINT_SPRITE_COORD_ORIGIN is LOWER_LEFT
   float point_fade_threshold = 1.0f;   // POINT_FADE_THRESHOLD_SIZE (kept for the queries)
   bool offset_fill = false, offset_line = false, offset_point = false;  // POLYGON_OFFSET_FILL / _LINE / _POINT

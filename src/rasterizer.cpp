@@ -1001,7 +1001,7 @@ void RasterizeLine(const WindowVertex& a, const WindowVertex& b, bool front_faci
     // The ends and the half-width offset are each snapped to the subpixel grid, then added: a parallelogram on the
     // grid whose sides stay parallel (the rasterizer then snaps nothing further).
     auto snap = [](float f) { return float(RoundToInt64(double(f) * double(kOne))) / float(kOne); };
-    const float scale = 0.5f / std::sqrt(len2);
+    const float scale = 0.5f * std::max(target.line_width, 1.0f) / std::sqrt(len2);
     const glm::vec4 n(snap(-dy * scale), snap(dx * scale), 0.0f, 0.0f);
     const glm::vec4 sa(snap(a.win.x), snap(a.win.y), a.win.z, a.win.w), sb(snap(b.win.x), snap(b.win.y), b.win.z, b.win.w);
     const glm::vec4 corners[4] = {sa + n, sa - n, sb - n, sb + n};
@@ -1052,6 +1052,31 @@ void RasterizeLine(const WindowVertex& a, const WindowVertex& b, bool front_faci
   const long lo = x_major ? target.bounds.x0 : target.bounds.y0, hi = (x_major ? target.bounds.x1 : target.bounds.y1) - 1;
   first = std::max(first, lo);
   last = std::min(last, hi);
+  if (const float width = std::round(target.line_width); width >= 2.0f && first <= last) {
+    // A wide line (OpenGL 4.6, section 14.5.2.1): columns (rows) first .. last, each `width` fragments centred on
+    // the line: the parallelogram between the line moved width / 2 either way across its major axis, cut to those
+    // columns by the bounds. Its long sides are the segment extended to 2a - b and 2b - a, moved by a multiple of
+    // 1/2: on the subpixel grid when the ends are, so that the fill rule decides centres on them exactly. Its
+    // corners take depth, 1/w and varyings at their projection on the segment (the triangles' planes then give each
+    // fragment the values at its centre's projection).
+    const float half = width * 0.5f;
+    const glm::vec2 ends[2] = {glm::vec2(ax - dx, ay - dy), glm::vec2(b.win.x + dx, b.win.y + dy)};
+    const glm::vec2 across = x_major ? glm::vec2(0.0f, half) : glm::vec2(half, 0.0f);
+    float var[4][kMaxVaryingFloats];
+    glm::vec4 p[4];
+    for (int k = 0; k < 4; ++k) {
+      const glm::vec2 c = ends[k == 1 || k == 2] + (k < 2 ? -across : across);  // (around the parallelogram)
+      const float t = ((c.x - ax) * dx + (c.y - ay) * dy) / len2;
+      p[k] = glm::vec4(c, a.win.z + t * (b.win.z - a.win.z), a.win.w + t * (b.win.w - a.win.w));
+      for (int i = 0; i < nvar; ++i) var[k][i] = a.var[i] + t * (b.var[i] - a.var[i]);
+    }
+    RasterTarget columns = target;
+    (x_major ? columns.bounds.x0 : columns.bounds.y0) = int(first);  // (first and last lie inside the bounds)
+    (x_major ? columns.bounds.x1 : columns.bounds.y1) = int(last + 1);
+    const float* const vars[4] = {var[0], var[1], var[2], var[3]};
+    RasterizeRectangle(p, vars, front_facing, columns, blocks, sink);
+    return;
+  }
   // Where the line passes exactly between two pixel centres of a column (row), the pixel on the side that a
   // one-pixel-wide parallelogram around the line owns under the fill rule is taken: for x-major lines the upper
   // one when the line rises, else the lower one; for y-major lines the left one.

@@ -11,7 +11,10 @@
 //   noperspective varyings linearly in window space, flat ones not at all (the caller gives every vertex the
 //   provoking vertex's value, and the window vertices of noperspective and flat varyings hold the value itself).
 // - Lines: one pixel wide, one fragment per column (x-major) or row (y-major) whose centre lies in the half-open
-//   span [start, end), the diamond-exit rule for end points at pixel centres.
+//   span [start, end), the diamond-exit rule for end points at pixel centres. A wider line (LineWidth w, rounded)
+//   takes the same columns (rows), each w fragments high (wide) centred on the line: the parallelogram between the
+//   line moved w/2 down and up (left and right), its sides owning centres as a triangle's edges do. Multisampled,
+//   a line is the rectangle of width w (unrounded) along the segment.
 // - Points: squares of the point size; pixels whose centres lie in [x - s/2, x + s/2) x [y - s/2, y + s/2).
 // Only pixels inside `bounds` (viewport, framebuffer, scissor) are marked live.
 #pragma once
@@ -37,6 +40,7 @@ struct RasterTarget {
   // cannot pass the depth test there is dropped. Null: every triangle is rasterized.
   HierarchicalDepth* depth_bounds = nullptr;
   bool point_lower_left = false;  // POINT_SPRITE_COORD_ORIGIN is LOWER_LEFT (gl_PointCoord's t grows upwards)
+  float line_width = 1.0f;        // LineWidth, clamped to ALIASED_LINE_WIDTH_RANGE
 };
 
 /// The smallest and largest offsets of a pixel's sample positions (SamplePositions) in x and y, in subpixels

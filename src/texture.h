@@ -103,6 +103,20 @@ constexpr PackedUnorm PackingOf(TexelLayout l) {
     default: return {{5, 5, 5, 1}, {11, 6, 1, 0}};  // kUnorm5551
   }
 }
+/// The bits of channel c (0 red ... 3 alpha) of a fixed-point layout (8-bit, packed, 16-bit), 0 where the layout
+/// lacks it or is not fixed point.
+constexpr int FixedPointBits(TexelLayout l, int c) {
+  if (IsPackedUnorm(l)) return PackingOf(l).bits[c];
+  switch (l) {
+    case TexelLayout::kUnorm8x4: return 8;
+    case TexelLayout::kUnorm8x2: return c < 2 ? 8 : 0;
+    case TexelLayout::kUnorm8x1: return c < 1 ? 8 : 0;
+    case TexelLayout::kUnorm16x4: return 16;
+    case TexelLayout::kUnorm16x2: return c < 2 ? 16 : 0;
+    case TexelLayout::kUnorm16x1: return c < 1 ? 16 : 0;
+    default: return 0;
+  }
+}
 /// OpenGL's small floats (4.6, section 2.3.4): IEEE binary16 (sign, 5 exponent bits, 10 mantissa bits) and the
 /// unsigned 11- and 10-bit floats (5 exponent bits, 6 or 5 mantissa bits, no sign). From float: rounded to nearest
 /// (ties to even), too large to infinity, NaN to NaN; the unsigned forms take negative values (and -0) as 0.

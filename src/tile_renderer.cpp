@@ -246,7 +246,7 @@ bool SameState(const DrawPacket& a, const DrawPacket& b) {
   return a.program == b.program && a.textures == b.textures && a.ops == b.ops && a.bounds.x0 == b.bounds.x0 &&
          a.bounds.y0 == b.bounds.y0 && a.bounds.x1 == b.bounds.x1 && a.bounds.y1 == b.bounds.y1 &&
          a.nvar == b.nvar && a.interpolation == b.interpolation && a.shader_depth == b.shader_depth &&
-         a.early_depth == b.early_depth && a.point_lower_left == b.point_lower_left;
+         a.early_depth == b.early_depth && a.point_lower_left == b.point_lower_left && a.line_width == b.line_width;
 }
 
 }  // namespace
@@ -488,6 +488,7 @@ void Frame::RenderTile(int tile, TileScratch& scratch) const {
     rt.interpolation = draw.interpolation;
     rt.samples = target_.samples > 1 && draw.ops.multisample.multisample ? target_.samples : 1;
     rt.point_lower_left = draw.point_lower_left;
+    rt.line_width = draw.line_width;
     if (rt.bounds.Empty()) continue;
     // The depth test is the early one: triangles and regions that cannot pass it may go.
     if (hz && draw.early_depth) {

@@ -50,6 +50,7 @@ struct DrawPacket {
   bool shader_depth = false;  // the program writes gl_FragDepth
   bool early_depth = false;  // EarlyDepthTestApplies
   bool point_lower_left = false;  // POINT_SPRITE_COORD_ORIGIN is LOWER_LEFT
+  float line_width = 1.0f;        // LineWidth, clamped to kMaxLineWidth
   // The draw's batches: the frame's batches first_batch .. first_batch + batch_count. A shared batch (one, holding
   // the primitives of consecutive small draws) has the draw's primitives at indices prim_lo .. prim_hi.
   bool shared = false;

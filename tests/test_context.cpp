@@ -109,6 +109,13 @@ TEST_CASE("invalid values set INVALID_VALUE", "[context]") {
   CHECK(gl.GetError() == INVALID_VALUE);
   gl.PointSize(0.0f);
   CHECK(gl.GetError() == INVALID_VALUE);
+  gl.LineWidth(0.0f);
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.LineWidth(std::numeric_limits<float>::quiet_NaN());
+  CHECK(gl.GetError() == INVALID_VALUE);
+  float width = 0.0f;
+  gl.GetFloatv(LINE_WIDTH, &width);
+  CHECK(width == 1.0f);  // unchanged by the refused calls
   gl.Clear(0x1);
   CHECK(gl.GetError() == INVALID_VALUE);
   SolidShader shader;

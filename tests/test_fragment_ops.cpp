@@ -297,6 +297,111 @@ TEST_CASE("blending into the 8-bit framebuffer, by hand", "[fragment_ops][blend]
   CHECK(gl.GetError() == NO_ERROR);
 }
 
+TEST_CASE("logic operations on the colour's and the stored value's bits, by hand", "[fragment_ops][logic_op]") {
+  // Source 0xF0 and destination 0xCC in every channel of an RGBA8 buffer; OpenGL's table of the sixteen
+  // operations. Blending is enabled with factors that would give 0, to show that the logic operation replaces it.
+  // A 1 x 1 target goes lane by lane, a 4 x 4 one by whole blocks.
+  const Enum ops[16] = {CLEAR, AND, AND_REVERSE, COPY, AND_INVERTED, NOOP, XOR, OR,
+                        NOR, EQUIV, INVERT, OR_REVERSE, COPY_INVERTED, OR_INVERTED, NAND, SET};
+  const int expected[16] = {0x00, 0xC0, 0x30, 0xF0, 0x0C, 0xCC, 0x3C, 0xFC,
+                            0x03, 0xC3, 0x33, 0xF3, 0x0F, 0xCF, 0x3F, 0xFF};
+  for (const int size : {1, 4}) {
+    Context gl(size, size);
+    CHECK_FALSE(gl.IsEnabled(COLOR_LOGIC_OP));
+    int mode = 0;
+    gl.GetIntegerv(LOGIC_OP_MODE, &mode);
+    CHECK(mode == int(COPY));
+    gl.Enable(BLEND);
+    gl.BlendFunc(ZERO, ZERO);
+    gl.Enable(COLOR_LOGIC_OP);
+    CHECK(gl.IsEnabled(COLOR_LOGIC_OP));
+    CHECK(gl.IsEnabled(BLEND));  // still enabled, only not applied
+    const glm::vec4 src(240.0f / 255.0f), dst(204.0f / 255.0f);
+    for (int k = 0; k < 16; ++k) {
+      gl.LogicOp(ops[k]);
+      INFO("size " << size << ", operation 0x" << std::hex << ops[k]);
+      const int e = expected[k];
+      CHECK(DrawOnePixel(gl, dst, src) == std::array<int, 4>{e, e, e, e});
+    }
+    // Through the colour mask: green and alpha keep the stored bits.
+    gl.LogicOp(XOR);
+    gl.ClearColor(dst.r, dst.g, dst.b, dst.a);
+    gl.Clear(COLOR_BUFFER_BIT);
+    gl.ColorMask(true, false, true, false);
+    testing::SolidShader shader;
+    FullQuad(gl, shader, 0.0f, src);
+    std::uint8_t px[4];
+    gl.ReadPixel(size - 1, size - 1, px);
+    CHECK((px[0] == 0x3C && px[1] == 0xCC && px[2] == 0x3C && px[3] == 0xCC));
+    gl.ColorMask(true, true, true, true);
+    // Disabled: blending again (ZERO, ZERO).
+    gl.Disable(COLOR_LOGIC_OP);
+    CHECK(DrawOnePixel(gl, dst, src) == std::array<int, 4>{0, 0, 0, 0});
+    CHECK(gl.GetError() == NO_ERROR);
+  }
+}
+
+TEST_CASE("logic operations on packed, 16-bit and float buffers", "[fragment_ops][logic_op]") {
+  // RGB565 (5, 6, 5 bits), RGBA16 and RGBA32F renderbuffers, 4 x 4 and 3 x 3 (whole blocks and lane by lane): XOR
+  // of the colour's fixed-point value and the stored one; a float buffer takes the colour as it is, unblended.
+  for (const int size : {3, 4}) {
+    for (const Enum format : {RGB565, RGBA16, RGBA32F}) {
+      Context gl(size, size);
+      const std::uint32_t fbo = gl.GenFramebuffer(), rb = gl.GenRenderbuffer();
+      gl.BindFramebuffer(FRAMEBUFFER, fbo);
+      gl.BindRenderbuffer(RENDERBUFFER, rb);
+      gl.RenderbufferStorage(RENDERBUFFER, format, size, size);
+      gl.FramebufferRenderbuffer(FRAMEBUFFER, COLOR_ATTACHMENT0, RENDERBUFFER, rb);
+      REQUIRE(gl.CheckFramebufferStatus(FRAMEBUFFER) == FRAMEBUFFER_COMPLETE);
+      gl.Enable(BLEND);
+      gl.BlendFunc(ONE, ONE);
+      gl.Enable(COLOR_LOGIC_OP);
+      gl.LogicOp(XOR);
+      // Red 22/31 over 13/31 in 5 bits: 10110 ^ 01101 = 11011 (27); green 40/63 over 25/63: 101000 ^ 011001 =
+      // 110001 (49). In 16 bits: 0xF0F0 ^ 0x0FF0 = 0xFF00; 0x1234 ^ 0xFFFF = 0xEDCB.
+      glm::vec4 src, dst, want;
+      if (format == RGB565) {
+        src = {22.0f / 31, 40.0f / 63, 0, 0};
+        dst = {13.0f / 31, 25.0f / 63, 1, 1};
+        want = {27.0f / 31, 49.0f / 63, 1, 1};
+      } else if (format == RGBA16) {
+        src = {0xF0F0 / 65535.0f, 0x1234 / 65535.0f, 0, 1};
+        dst = {0x0FF0 / 65535.0f, 1, 0, 1};
+        want = {0xFF00 / 65535.0f, 0xEDCB / 65535.0f, 0, 0};
+      } else {
+        src = {0.3f, -2.0f, 5.0f, 0.25f};
+        dst = {0.5f, 0.5f, 0.5f, 0.5f};
+        want = src;
+      }
+      testing::SolidShader shader;
+      gl.ClearColor(dst.r, dst.g, dst.b, dst.a);
+      gl.Clear(COLOR_BUFFER_BIT);
+      FullQuad(gl, shader, 0.0f, src);
+      std::vector<float> px(std::size_t(size * size) * 4);
+      gl.ReadPixels(0, 0, size, size, RGBA, FLOAT, px.data());
+      INFO("format 0x" << std::hex << format << std::dec << ", size " << size);
+      for (int i = 0; i < size * size; ++i)
+        for (int c = 0; c < 4; ++c) CHECK(px[std::size_t(i * 4 + c)] == Approx(want[c]).margin(1e-6));
+      CHECK(gl.GetError() == NO_ERROR);
+    }
+  }
+}
+
+TEST_CASE("LogicOp rejects what is not a logic operation", "[fragment_ops][logic_op][errors]") {
+  Context gl(1, 1);
+  gl.LogicOp(0x1510);
+  CHECK(gl.GetError() == INVALID_ENUM);
+  gl.LogicOp(0x14FF);
+  CHECK(gl.GetError() == INVALID_ENUM);
+  int mode = 0;
+  gl.GetIntegerv(LOGIC_OP_MODE, &mode);
+  CHECK(mode == int(COPY));
+  gl.LogicOp(INVERT);
+  gl.GetIntegerv(LOGIC_OP_MODE, &mode);
+  CHECK(mode == int(INVERT));
+  CHECK(gl.GetError() == NO_ERROR);
+}
+
 // ---- Masks, scissor, stencil through the API --------------------------------------------------------------------
 
 TEST_CASE("colour, depth and stencil masks apply to Clear and to drawing", "[fragment_ops][masks]") {
@@ -843,6 +948,8 @@ TEST_CASE("every colour format, draw buffer set and depth-stencil state: the blo
     state.blend.eq_rgb = equations[next() % 5];
     state.blend.eq_alpha = equations[next() % 5];
     state.blend.color = glm::vec4(value(-0.2f, 1.2f), value(-0.2f, 1.2f), value(-0.2f, 1.2f), value(-0.2f, 1.2f));
+    state.logic_op = next() % 5 == 0;  // (which turns blending off)
+    state.logic_mode = CLEAR + Enum(next() % 16);
     for (int o = 0; o < kMaxColorOutputs; ++o) {
       std::uint8_t mask = 0;
       for (int c = 0; c < 4; ++c) mask |= std::uint8_t((next() % 4 != 0) << c);
@@ -886,7 +993,8 @@ TEST_CASE("every colour format, draw buffer set and depth-stencil state: the blo
     detail::ApplyFragmentOpsReference(state, plan, *blocks, false, b.target);
     std::string names;
     for (const TargetFormat* f : formats) names += std::string(f ? f->name : "none") + " ";
-    INFO("round " << round << ": " << names << "blend 0x" << std::hex << int(state.blend_buffers) << std::dec);
+    INFO("round " << round << ": " << names << "blend 0x" << std::hex << int(state.blend_buffers) << std::dec
+                  << ", logic op 0x" << std::hex << state.LogicMode() << std::dec);
     for (int o = 0; o < kMaxColorOutputs; ++o) {
       if (a.color[o] != b.color[o]) {
         std::size_t i = 0;

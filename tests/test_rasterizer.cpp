@@ -289,6 +289,63 @@ TEST_CASE("lines: one fragment per major-axis step, last pixel left out", "[rast
         "....\n");
 }
 
+TEST_CASE("wide lines: each column (row) the line crosses holds w fragments centred on it", "[rasterizer][wide_lines]") {
+  Raster h(8, 6);
+  h.target.line_width = 3.0f;
+  h.Line({0.5f, 2.5f}, {6.5f, 2.5f});
+  CHECK(h.Picture() ==
+        "........\n"
+        "........\n"
+        "######..\n"
+        "######..\n"
+        "######..\n"
+        "........\n");
+  // Two wide: the centres in [y - 1, y + 1) for a horizontal line (its lower side owns them, a bottom edge)...
+  Raster h2(8, 6);
+  h2.target.line_width = 2.0f;
+  h2.Line({0.5f, 2.5f}, {6.5f, 2.5f});
+  CHECK(h2.Picture() ==
+        "........\n"
+        "........\n"
+        "........\n"
+        "######..\n"
+        "######..\n"
+        "........\n");
+  // ... and in (y - 1, y + 1] for a rising one, whose upper side is a left edge (as llvmpipe draws it).
+  Raster r(10, 6);
+  r.target.line_width = 2.0f;
+  r.Line({0.5f, 0.5f}, {8.5f, 2.5f});
+  CHECK(r.Picture() ==
+        "..........\n"
+        "..........\n"
+        "..........\n"
+        "....####..\n"
+        "########..\n"
+        "####......\n");
+  // y-major: rows, each 3 wide; 2.6 rounds to 3.
+  Raster v(6, 6);
+  v.target.line_width = 2.6f;
+  v.Line({2.5f, 0.5f}, {2.5f, 4.5f});
+  CHECK(v.Picture() ==
+        "......\n"
+        "......\n"
+        ".###..\n"
+        ".###..\n"
+        ".###..\n"
+        ".###..\n");
+  // Past the target's edges: cut to them, every pixel once.
+  Raster e(8, 6);
+  e.target.line_width = 5.0f;
+  e.Line({-3.0f, 2.25f}, {20.0f, 2.75f});
+  for (int y = 0; y < 6; ++y)
+    for (int x = 0; x < 8; ++x) CHECK(e.counter.At(x, y) == (y <= 4 ? 1 : 0));
+  // Huge: no pixel twice, nothing outside.
+  Raster g(16, 16);
+  g.target.line_width = 255.0f;
+  g.Line({-100.0f, 3.3f}, {100.0f, 9.1f});
+  for (int n : g.counter.hits) CHECK(n == 1);
+}
+
 TEST_CASE("a line strip hits shared vertices once", "[rasterizer]") {
   Raster r(12, 12);
   r.Line({0.5f, 0.5f}, {8.5f, 3.5f});

@@ -645,6 +645,12 @@ class Context {
   /// How polygons are rasterized: FILL (default), LINE (edges) or POINT (vertices). face must be
   /// FRONT_AND_BACK, as in an OpenGL core profile.
   void PolygonMode(Enum face, Enum mode);
+  /// The width of lines in pixels (default 1; width <= 0 or NaN: INVALID_VALUE), clamped when drawing to
+  /// ALIASED_LINE_WIDTH_RANGE, [1, 255]. A line w wide (rounded to an integer) covers, in each column an
+  /// x-major line crosses (row for y-major), the w pixels centred on it: OpenGL's wide lines, which llvmpipe
+  /// draws the same. Into a multisampled framebuffer with MULTISAMPLE enabled, the samples inside the rectangle of
+  /// width w (not rounded) along the segment. Lines drawn by PolygonMode(LINE) are as wide.
+  void LineWidth(float width);
   /// Point diameter in pixels when PROGRAM_POINT_SIZE is disabled. size <= 0: INVALID_VALUE.
   void PointSize(float size);
   /// glPointParameter: POINT_SPRITE_COORD_ORIGIN, UPPER_LEFT (the default: gl_PointCoord's t is 0 at the point's
@@ -702,6 +708,13 @@ class Context {
   /// glColorMaski: the channels draw buffer `index` writes (index >= MAX_DRAW_BUFFERS: INVALID_VALUE). Clear and
   /// ClearBuffer go through each buffer's own mask.
   void ColorMaski(std::uint32_t index, bool r, bool g, bool b, bool a);
+  /// The logic operation drawing applies while COLOR_LOGIC_OP is enabled (default disabled): CLEAR, AND,
+  /// AND_REVERSE, COPY (default), AND_INVERTED, NOOP, XOR, OR, NOR, EQUIV, INVERT, OR_REVERSE, COPY_INVERTED,
+  /// OR_INVERTED, NAND, SET; another enum: INVALID_ENUM. It takes the bits of the fragment's colour, converted to
+  /// the buffer's fixed-point channels as a write would convert it, and of the stored channels, and writes the
+  /// result through the colour mask. While it is enabled no draw buffer blends; float buffers (and sRGB-encoded
+  /// ones under FRAMEBUFFER_SRGB) take the colour as it is. Clear and ClearBuffer ignore it.
+  void LogicOp(Enum opcode);
 
   // ---- Multisampling -----------------------------------------------------------------------------------------
   // Into a multisampled framebuffer with MULTISAMPLE enabled, the samples a fragment covers are narrowed after
@@ -860,14 +873,14 @@ class Context {
   /// COPY_READ/WRITE_BUFFER_BINDING, VERTEX_ARRAY_BINDING, ACTIVE_TEXTURE, TEXTURE_BINDING_2D/CUBE_MAP and
   /// SAMPLER_BINDING of the active unit, DRAW/READ_FRAMEBUFFER_BINDING, RENDERBUFFER_BINDING, DRAW_BUFFER0 + i (DRAW_BUFFER: the first),
   /// READ_BUFFER); VIEWPORT, SCISSOR_BOX (4 values), DEPTH_RANGE
-  /// (2); CULL_FACE_MODE, FRONT_FACE, POLYGON_MODE (2), POINT_SIZE, PROVOKING_VERTEX, POLYGON_OFFSET_FACTOR/UNITS,
+  /// (2); CULL_FACE_MODE, FRONT_FACE, POLYGON_MODE (2), POINT_SIZE, LINE_WIDTH, PROVOKING_VERTEX, POLYGON_OFFSET_FACTOR/UNITS,
   /// PRIMITIVE_RESTART_INDEX; DEPTH_FUNC, DEPTH_WRITEMASK, DEPTH_CLEAR_VALUE; STENCIL_FUNC, _REF, _VALUE_MASK,
   /// _FAIL, _PASS_DEPTH_FAIL, _PASS_DEPTH_PASS, _WRITEMASK and their STENCIL_BACK_ forms, STENCIL_CLEAR_VALUE;
-  /// BLEND_SRC/DST_RGB/ALPHA, BLEND_EQUATION_RGB/ALPHA, BLEND_COLOR (4), COLOR_CLEAR_VALUE (4), COLOR_WRITEMASK
-  /// (4); UNPACK_ALIGNMENT and the PACK_ settings; the limits MAX_VERTEX_ATTRIBS, MAX_TEXTURE_SIZE,
+  /// BLEND_SRC/DST_RGB/ALPHA, BLEND_EQUATION_RGB/ALPHA, BLEND_COLOR (4), LOGIC_OP_MODE, COLOR_CLEAR_VALUE (4),
+  /// COLOR_WRITEMASK (4); UNPACK_ALIGNMENT and the PACK_ settings; the limits MAX_VERTEX_ATTRIBS, MAX_TEXTURE_SIZE,
   /// MAX_CUBE_MAP_TEXTURE_SIZE, MAX_TEXTURE_IMAGE_UNITS (and the VERTEX_ and COMBINED_ forms), MAX_DRAW_BUFFERS,
   /// MAX_COLOR_ATTACHMENTS, MAX_SAMPLES (8, one value), MAX_RENDERBUFFER_SIZE, MAX_VIEWPORT_DIMS (2), MAX_VARYING_COMPONENTS,
-  /// MAX_ELEMENTS_VERTICES/INDICES, POINT_SIZE_RANGE (2), ALIASED_LINE_WIDTH_RANGE (2), SUBPIXEL_BITS,
+  /// MAX_ELEMENTS_VERTICES/INDICES, POINT_SIZE_RANGE (2), ALIASED_LINE_WIDTH_RANGE (2, [1, 255]), SUBPIXEL_BITS,
   /// MAJOR_VERSION, MINOR_VERSION (3.3), NUM_EXTENSIONS (0), CONTEXT_PROFILE_MASK (core). `data` must hold as many
   /// values as the name has. Another name: INVALID_ENUM, data untouched.
   void GetIntegerv(Enum pname, int* data) const;

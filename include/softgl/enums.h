@@ -144,6 +144,25 @@ inline constexpr Enum INVERT = 0x150A;
 inline constexpr Enum INCR_WRAP = 0x8507;
 inline constexpr Enum DECR_WRAP = 0x8508;
 
+// Logic operations (LogicOp; INVERT is the stencil operation's enum, as in OpenGL), and their state.
+inline constexpr Enum CLEAR = 0x1500;
+inline constexpr Enum AND = 0x1501;
+inline constexpr Enum AND_REVERSE = 0x1502;
+inline constexpr Enum COPY = 0x1503;
+inline constexpr Enum AND_INVERTED = 0x1504;
+inline constexpr Enum NOOP = 0x1505;
+inline constexpr Enum XOR = 0x1506;
+inline constexpr Enum OR = 0x1507;
+inline constexpr Enum NOR = 0x1508;
+inline constexpr Enum EQUIV = 0x1509;
+inline constexpr Enum OR_REVERSE = 0x150B;
+inline constexpr Enum COPY_INVERTED = 0x150C;
+inline constexpr Enum OR_INVERTED = 0x150D;
+inline constexpr Enum NAND = 0x150E;
+inline constexpr Enum SET = 0x150F;
+inline constexpr Enum COLOR_LOGIC_OP = 0x0BF2;
+inline constexpr Enum LOGIC_OP_MODE = 0x0BF0;
+
 // Blend factors.
 inline constexpr Enum ZERO = 0;
 inline constexpr Enum ONE = 1;
@@ -470,6 +489,7 @@ inline constexpr Enum MAX_ELEMENTS_VERTICES = 0x80E8;
 inline constexpr Enum MAX_ELEMENTS_INDICES = 0x80E9;
 inline constexpr Enum POINT_SIZE_RANGE = 0x0B12;
 inline constexpr Enum ALIASED_LINE_WIDTH_RANGE = 0x846E;
+inline constexpr Enum LINE_WIDTH = 0x0B21;
 inline constexpr Enum SUBPIXEL_BITS = 0x0D50;
 inline constexpr Enum MAJOR_VERSION = 0x821B;
 inline constexpr Enum MINOR_VERSION = 0x821C;

@@ -135,6 +135,7 @@ class Backend {
   virtual void FrontFace(Enum mode) = 0;
   virtual void PolygonMode(Enum mode) = 0;
   virtual void PointSize(float size) = 0;
+  virtual void LineWidth(float width) = 0;
   /// glColorMaski, glEnablei and glDisablei.
   virtual void ColorMaski(std::uint32_t index, bool r, bool g, bool b, bool a) = 0;
   virtual void Enablei(Enum cap, std::uint32_t index) = 0;
@@ -156,6 +157,7 @@ class Backend {
   virtual void BlendFuncSeparate(Enum src_rgb, Enum dst_rgb, Enum src_a, Enum dst_a) = 0;
   virtual void BlendEquationSeparate(Enum rgb, Enum alpha) = 0;
   virtual void BlendColor(float r, float g, float b, float a) = 0;
+  virtual void LogicOp(Enum op) = 0;
   virtual void ColorMask(bool r, bool g, bool b, bool a) = 0;
   virtual void ClearColor(float r, float g, float b, float a) = 0;
   virtual void ClearDepth(double d) = 0;

@@ -368,6 +368,7 @@ class GlBackend final : public Backend {
   void FrontFace(Enum mode) override { glFrontFace(mode); }
   void PolygonMode(Enum mode) override { glPolygonMode(GL_FRONT_AND_BACK, mode); }
   void PointSize(float size) override { glPointSize(size); }
+  void LineWidth(float width) override { glLineWidth(width); }
   void PointParameteri(Enum pname, int value) override { glPointParameteri(pname, value); }
   void ColorMaski(std::uint32_t index, bool r, bool g, bool b, bool a) override { glColorMaski(index, r, g, b, a); }
   void Enablei(Enum cap, std::uint32_t index) override { glEnablei(cap, index); }
@@ -396,6 +397,7 @@ class GlBackend final : public Backend {
   void BlendFuncSeparate(Enum a, Enum b, Enum c, Enum d) override { glBlendFuncSeparate(a, b, c, d); }
   void BlendEquationSeparate(Enum rgb, Enum alpha) override { glBlendEquationSeparate(rgb, alpha); }
   void BlendColor(float r, float g, float b, float a) override { glBlendColor(r, g, b, a); }
+  void LogicOp(Enum op) override { glLogicOp(op); }
   void ClearBufferfv(Enum buffer, int drawbuffer, const float* value) override { glClearBufferfv(buffer, drawbuffer, value); }
   void ClearBufferiv(Enum buffer, int drawbuffer, const int* value) override { glClearBufferiv(buffer, drawbuffer, value); }
   void ClearBufferfi(Enum buffer, int drawbuffer, float depth, int stencil) override {

@@ -357,6 +357,7 @@ class SoftglBackend final : public Backend {
   void FrontFace(Enum mode) override { gl_.FrontFace(mode); }
   void PolygonMode(Enum mode) override { gl_.PolygonMode(softgl::FRONT_AND_BACK, mode); }
   void PointSize(float size) override { gl_.PointSize(size); }
+  void LineWidth(float width) override { gl_.LineWidth(width); }
   void PointParameteri(Enum pname, int value) override { gl_.PointParameteri(pname, value); }
   void ColorMaski(std::uint32_t index, bool r, bool g, bool b, bool a) override { gl_.ColorMaski(index, r, g, b, a); }
   void Enablei(Enum cap, std::uint32_t index) override { gl_.Enablei(cap, index); }
@@ -385,6 +386,7 @@ class SoftglBackend final : public Backend {
   void BlendFuncSeparate(Enum a, Enum b, Enum c, Enum d) override { gl_.BlendFuncSeparate(a, b, c, d); }
   void BlendEquationSeparate(Enum rgb, Enum alpha) override { gl_.BlendEquationSeparate(rgb, alpha); }
   void BlendColor(float r, float g, float b, float a) override { gl_.BlendColor(r, g, b, a); }
+  void LogicOp(Enum op) override { gl_.LogicOp(op); }
   void ClearBufferfv(Enum buffer, int drawbuffer, const float* value) override { gl_.ClearBufferfv(buffer, drawbuffer, value); }
   void ClearBufferiv(Enum buffer, int drawbuffer, const int* value) override { gl_.ClearBufferiv(buffer, drawbuffer, value); }
   void ClearBufferfi(Enum buffer, int drawbuffer, float depth, int stencil) override {

@@ -229,7 +229,8 @@ TEST_CASE("state queries return what Mesa returns, at the defaults and after cha
       {gl::COLOR_CLEAR_VALUE, 4}, {gl::COLOR_WRITEMASK, 4}, {gl::CULL_FACE, 1}, {gl::DEPTH_TEST, 1},
       {gl::STENCIL_TEST, 1}, {gl::SCISSOR_TEST, 1}, {gl::BLEND, 1}, {gl::POLYGON_OFFSET_FILL, 1},
       {gl::POLYGON_OFFSET_LINE, 1}, {gl::POLYGON_OFFSET_POINT, 1}, {gl::PROGRAM_POINT_SIZE, 1},
-      {gl::PRIMITIVE_RESTART, 1}, {gl::PRIMITIVE_RESTART_FIXED_INDEX, 1}};
+      {gl::PRIMITIVE_RESTART, 1}, {gl::PRIMITIVE_RESTART_FIXED_INDEX, 1}, {gl::COLOR_LOGIC_OP, 1},
+      {gl::LOGIC_OP_MODE, 1}, {gl::LINE_WIDTH, 1}};
   auto change = [](Backend& b) {
     b.Viewport(3, 5, 70, 40);
     b.Scissor(-2, 7, 11, 13);
@@ -255,8 +256,10 @@ TEST_CASE("state queries return what Mesa returns, at the defaults and after cha
     b.BlendColor(0.2f, 1.0f, -0.25f, 0.75f);
     b.ClearColor(0.1f, 0.9f, 0.0f, -1.0f);
     b.ColorMask(true, false, true, false);
+    b.LogicOp(gl::NAND);
+    b.LineWidth(2.75f);
     for (Enum cap : {gl::CULL_FACE, gl::DEPTH_TEST, gl::STENCIL_TEST, gl::BLEND, gl::POLYGON_OFFSET_LINE,
-                     gl::PRIMITIVE_RESTART})
+                     gl::PRIMITIVE_RESTART, gl::COLOR_LOGIC_OP})
       b.Enable(cap);
   };
   for (bool changed : {false, true}) {

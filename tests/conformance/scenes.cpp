@@ -191,6 +191,60 @@ void Lines(Backend& b) {
   b.Draw(LINE_LOOP, loop);
 }
 
+// Wide lines: segments in every direction at widths 2 to 5 and 2.6 (drawn 3 wide: OpenGL rounds the width), flat
+// colours, a strip and a polygon drawn as lines 3 wide, and lines past the edges. The segments start on the
+// subpixel grid but not on pixel centres: where an end lies on a centre and a long side of the line passes through
+// a pixel centre in the end's column, llvmpipe's choice follows its own snapping of the moved end (a column's
+// fragments one pixel up or down); wide_ties draws such ends where the sides run exactly through centres.
+void WideLines(Backend& b) {
+  ClearBlack(b);
+  Jitter j(23);
+  unsigned n = 0;
+  const float widths[5] = {2.0f, 3.0f, 4.0f, 5.0f, 2.6f};
+  for (int w = 0; w < 5; ++w) {
+    b.LineWidth(widths[w]);
+    std::vector<Vertex> v;
+    for (int i = 0; i < 12; ++i) {
+      const float a = 6.2831853f * (float(i) + 0.37f * float(w)) / 12.0f, len = j.Uniform(8, 30);
+      const float x = std::round(j.Uniform(20, 108) * 256) / 256, y = std::round(j.Uniform(20, 108) * 256) / 256;
+      const glm::vec4 c = Palette(n++);
+      v.push_back({Win(x, y), c});
+      v.push_back({Win(std::round((x + std::cos(a) * len) * 256) / 256, std::round((y + std::sin(a) * len) * 256) / 256), c});
+    }
+    b.Draw(LINES, v);
+  }
+  b.LineWidth(3.0f);
+  std::vector<Vertex> strip;
+  for (int i = 0; i < 8; ++i) strip.push_back({Win(j.Sub(2, 126), j.Sub(2, 30)), Palette(n)});
+  b.Draw(LINE_STRIP, strip);
+  b.Draw(LINES, {{Win(-10, 60.3f), Palette(n + 1)}, {Win(140, 70.8f), Palette(n + 1)},
+                 {Win(126.5f, -5), Palette(n + 2)}, {Win(120.2f, 135), Palette(n + 2)}});
+  b.PolygonMode(LINE);
+  b.Draw(TRIANGLES, {{Win(j.Sub(70, 90), j.Sub(95, 100)), Palette(n + 3)}, {Win(j.Sub(100, 125), j.Sub(100, 110)), Palette(n + 3)},
+                     {Win(j.Sub(90, 110), j.Sub(115, 126)), Palette(n + 3)}});
+  b.PolygonMode(FILL);
+  b.LineWidth(1.0f);
+}
+
+// Wide lines (2 pixels) whose long sides pass exactly through pixel centres: rising, falling, x- and y-major, drawn
+// either way, from and to pixel centres: the fill rule's choice on the sides.
+void WideTies(Backend& b) {
+  ClearBlack(b);
+  b.LineWidth(2.0f);
+  auto line = [&](float x0, float y0, float x1, float y1, unsigned c) {
+    b.Draw(LINES, {{Win(x0, y0), Palette(c)}, {Win(x1, y1), Palette(c)}});
+  };
+  line(10.5f, 10.5f, 50.5f, 20.5f, 1);   // x-major rising, left to right
+  line(50.5f, 40.5f, 10.5f, 30.5f, 2);   // x-major rising, right to left
+  line(70.5f, 20.5f, 110.5f, 10.5f, 3);  // x-major falling
+  line(110.5f, 30.5f, 70.5f, 40.5f, 4);  // x-major falling, right to left
+  line(10.5f, 60.5f, 20.5f, 100.5f, 5);  // y-major rising
+  line(40.5f, 100.5f, 30.5f, 60.5f, 6);
+  line(70.5f, 100.5f, 80.5f, 60.5f, 7);  // y-major falling
+  line(100.5f, 60.5f, 90.5f, 100.5f, 8);
+  b.LineWidth(1.0f);
+}
+
 // Colours varying along lines: OpenGL interpolates by the projection of the pixel centre onto the segment
 // (t = (p - a).(b - a) / |b - a|^2), llvmpipe by the major axis coordinate alone; see docs/conformance.md.
 void LineInterpolation(Backend& b) {
@@ -1282,6 +1336,80 @@ void Packed16(Backend& b, bool blend) {
   }
 }
 
+// Logic operations: stripes of flat colours (exact in the buffer's bits, so that no conversion differs), then in
+// each cell stripes across them with COLOR_LOGIC_OP and one operation (blending enabled too, which the logic
+// operation turns off). The top half is the context's RGBA8 framebuffer, the sixteen operations in 32 x 16 cells;
+// the bottom half an RGB565 framebuffer object with four operations (one through a colour mask) blitted into it.
+void LogicOps(Backend& b) {
+  ClearBlack(b);
+  auto stripes = [&b](float x0, float y0, float x1, float y1, bool vertical, unsigned seed, int bits_g) {
+    for (int k = 0; k < 4; ++k) {
+      glm::vec4 c = Palette(seed + unsigned(k));
+      if (bits_g) {  // RGB565: 5, 6 and 5 bits
+        c = glm::vec4(std::round(c.r * 31) / 31, std::round(c.g * 63) / 63, std::round(c.b * 31) / 31, 1);
+      }
+      c.a = float((seed * 7 + unsigned(k) * 60) % 256) / 255.0f;
+      const float w = (vertical ? x1 - x0 : y1 - y0) / 4;
+      if (vertical) b.Draw(TRIANGLES, Rect(x0 + w * float(k), y0, x0 + w * float(k + 1), y1, 0, c));
+      else b.Draw(TRIANGLES, Rect(x0, y0 + w * float(k), x1, y0 + w * float(k + 1), 0, c));
+    }
+  };
+  const Enum ops[16] = {CLEAR, AND, AND_REVERSE, COPY, AND_INVERTED, NOOP, XOR, OR,
+                        NOR, EQUIV, INVERT, OR_REVERSE, COPY_INVERTED, OR_INVERTED, NAND, SET};
+  b.Enable(BLEND);
+  b.BlendFunc(ONE, ONE);
+  for (int k = 0; k < 16; ++k) {
+    const float x0 = float(k % 4) * 32, y0 = 64 + float(k / 4) * 16;
+    stripes(x0, y0, x0 + 32, y0 + 16, false, unsigned(k) * 5, 0);
+    b.Enable(COLOR_LOGIC_OP);
+    b.LogicOp(ops[k]);
+    stripes(x0 + 2, y0, x0 + 30, y0 + 16, true, 100 + unsigned(k) * 3, 0);
+    b.Disable(COLOR_LOGIC_OP);
+  }
+  b.BindFramebuffer(FRAMEBUFFER, b.GenFramebuffer());
+  b.AttachNewTexture(FRAMEBUFFER, COLOR_ATTACHMENT0, RGB565, kSize, kSize);
+  if (b.CheckFramebufferStatus(FRAMEBUFFER) == FRAMEBUFFER_COMPLETE) {
+    const Enum ops565[4] = {XOR, AND_INVERTED, EQUIV, OR_REVERSE};
+    for (int k = 0; k < 4; ++k) {
+      const float x0 = float(k % 2) * 64, y0 = float(k / 2) * 32;
+      stripes(x0, y0, x0 + 64, y0 + 32, false, 200 + unsigned(k), 6);
+      b.Enable(COLOR_LOGIC_OP);
+      b.LogicOp(ops565[k]);
+      if (k == 3) b.ColorMask(true, false, true, true);
+      stripes(x0 + 4, y0, x0 + 60, y0 + 32, true, 300 + unsigned(k) * 4, 6);
+      b.ColorMask(true, true, true, true);
+      b.Disable(COLOR_LOGIC_OP);
+    }
+    b.BindFramebuffer(DRAW_FRAMEBUFFER, 0);
+    b.BlitFramebuffer(0, 0, kSize, 64, 0, 0, kSize, 64, COLOR_BUFFER_BIT, NEAREST);
+  }
+  b.BindFramebuffer(FRAMEBUFFER, 0);
+  b.Disable(BLEND);
+}
+
+// A logic operation into an SRGB8_ALPHA8 framebuffer object: with FRAMEBUFFER_SRGB enabled on the left half, disabled
+// on the right (where the stored bytes are a fixed-point buffer's). The object stays bound: its bytes are compared.
+void LogicOpSrgb(Backend& b) {
+  b.BindFramebuffer(FRAMEBUFFER, b.GenFramebuffer());
+  b.AttachNewTexture(FRAMEBUFFER, COLOR_ATTACHMENT0, SRGB8_ALPHA8, kSize, kSize);
+  if (b.CheckFramebufferStatus(FRAMEBUFFER) != FRAMEBUFFER_COMPLETE) return;  // left black: the check fails
+  ClearBlack(b);
+  for (const bool on : {true, false}) {
+    const float x0 = on ? 0.0f : 64.0f;
+    if (on) b.Enable(FRAMEBUFFER_SRGB);
+    else b.Disable(FRAMEBUFFER_SRGB);
+    for (int k = 0; k < 4; ++k)  // (stripes of the colours 0 and 1 in each channel: the same bytes either way)
+      b.Draw(TRIANGLES, Rect(x0, float(k) * 32, x0 + 64, float(k + 1) * 32, 0,
+                             glm::vec4(float(k & 1), float((k >> 1) & 1), float(k == 1), 1)));
+    b.Enable(COLOR_LOGIC_OP);
+    b.LogicOp(XOR);
+    for (int k = 0; k < 4; ++k)
+      b.Draw(TRIANGLES, Rect(x0 + float(k) * 16, 0, x0 + float(k + 1) * 16, kSize, 0, Palette(40 + unsigned(k))));
+    b.Disable(COLOR_LOGIC_OP);
+  }
+  b.Disable(FRAMEBUFFER_SRGB);
+}
+
 void Packed16Targets(Backend& b) { Packed16(b, false); }
 void Packed16Blending(Backend& b) { Packed16(b, true); }
 
@@ -1538,6 +1666,29 @@ void MultisampleCoverage(Backend& b) {
 // Per-sample coverage of lines and points: with multisampling a line covers the samples inside the rectangle of
 // width 1 along its segment, a point the samples inside the square of its size around it (OpenGL 4.6, sections
 // 14.5.4 and 14.4.3), not the pixels the single-sample rules pick.
+// Wide lines in a multisampled framebuffer (as in msaa_lines_points): rectangles 1.5, 2, 3.25 and 5 pixels wide
+// (multisampled widths are not rounded) around segments in every direction.
+void MultisampleWideLines(Backend& b) {
+  Jitter j(47);
+  const float widths[4] = {1.5f, 2.0f, 3.25f, 5.0f};
+  std::vector<Vertex> lines[4];
+  for (int i = 0; i < 32; ++i) {
+    const float a = 6.2831853f * float(i) / 32.0f + j.Uniform(0.0f, 0.1f), len = j.Uniform(4, 30);
+    const float grid = i % 3 == 0 ? 16.0f : 256.0f;
+    const float x = std::round(j.Uniform(4, 60) * grid) / grid, y = std::round(j.Uniform(4, 60) * grid) / grid;
+    const float x1 = std::round((x + std::cos(a) * len) * grid) / grid, y1 = std::round((y + std::sin(a) * len) * grid) / grid;
+    lines[i % 4].push_back({Win(2 * x, 2 * y), Palette(unsigned(i))});
+    lines[i % 4].push_back({Win(2 * x1, 2 * y1), Palette(unsigned(i))});
+  }
+  EachSampleIntoQuadrants(b, [&] {
+    for (int k = 0; k < 4; ++k) {
+      b.LineWidth(widths[k]);
+      b.Draw(LINES, lines[k]);
+    }
+    b.LineWidth(1.0f);
+  });
+}
+
 void MultisampleLinesPoints(Backend& b) {
   Jitter j(41);
   std::vector<Vertex> lines;
@@ -1958,6 +2109,8 @@ const std::vector<SceneInfo>& Scenes() {
       {"point_sprites", kSize, kSize, Check::kColor, PointSprites},
       {"lines", kSize, kSize, Check::kExact, Lines},
       {"line_interpolation", kSize, kSize, Check::kCoverage, LineInterpolation},
+      {"wide_lines", kSize, kSize, Check::kExact, WideLines},
+      {"wide_ties", kSize, kSize, Check::kExact, WideTies},
       {"polygon_mode_line", kSize, kSize, Check::kExact, PolygonModeLine},
       {"culling", kSize, kSize, Check::kExact, Culling},
       {"draw_variants", kSize, kSize, Check::kColor, DrawVariants},
@@ -1995,6 +2148,8 @@ const std::vector<SceneInfo>& Scenes() {
       {"texture_16bit", kSize, kSize, Check::kTexture, Texture16Bit},
       {"packed16_targets", kSize, kSize, Check::kStep4, Packed16Targets},
       {"packed16_blending", kSize, kSize, Check::kStep4, Packed16Blending},
+      {"logic_op", kSize, kSize, Check::kExact, LogicOps},
+      {"logic_op_srgb", kSize, kSize, Check::kExact, LogicOpSrgb},
       {"copy_tex_image", kSize, kSize, Check::kColor, CopyTexImage},
       {"depth16", kSize, kSize, Check::kExactWithDepth, Depth16},
       {"stencil_renderbuffer", kSize, kSize, Check::kExactWithDepthStencil, StencilRenderbuffer},
@@ -2004,6 +2159,7 @@ const std::vector<SceneInfo>& Scenes() {
       {"blit_linear", kSize, kSize, Check::kColor, BlitLinear},
       {"msaa_coverage", kSize, kSize, Check::kColor, MultisampleCoverage},
       {"msaa_lines_points", kSize, kSize, Check::kColor, MultisampleLinesPoints},
+      {"msaa_wide_lines", kSize, kSize, Check::kColor, MultisampleWideLines},
       {"msaa_sample_shading", kSize, kSize, Check::kTexture, MultisampleSampleShading},
       {"msaa_resolve", kSize, kSize, Check::kColor, MultisampleResolve},
       {"msaa_coverage_ops", kSize, kSize, Check::kColor, MultisampleCoverageOps},

@@ -103,7 +103,7 @@ constexpr std::uint32_t kCaps[] = {CULL_FACE, DEPTH_TEST, STENCIL_TEST, SCISSOR_
                                    POLYGON_OFFSET_LINE, POLYGON_OFFSET_POINT, PROGRAM_POINT_SIZE,
                                    PRIMITIVE_RESTART, PRIMITIVE_RESTART_FIXED_INDEX, MULTISAMPLE,
                                    SAMPLE_ALPHA_TO_COVERAGE, SAMPLE_ALPHA_TO_ONE, SAMPLE_COVERAGE, SAMPLE_MASK,
-                                   SAMPLE_SHADING, RASTERIZER_DISCARD};
+                                   SAMPLE_SHADING, RASTERIZER_DISCARD, COLOR_LOGIC_OP};
 constexpr std::uint32_t kModes[] = {POINTS, LINES, LINE_LOOP, LINE_STRIP, TRIANGLES, TRIANGLE_STRIP, TRIANGLE_FAN,
                                     LINES_ADJACENCY, LINE_STRIP_ADJACENCY, TRIANGLES_ADJACENCY,
                                     TRIANGLE_STRIP_ADJACENCY};
@@ -405,7 +405,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         break;
       }
       case 30: gl.StencilFuncSeparate(in.Enum(kFaces), in.Enum(kFuncs), in.Int(-300, 300), in.Get<std::uint32_t>()); break;
-      case 31: gl.StencilOpSeparate(in.Enum(kFaces), in.Enum(kOps), in.Enum(kOps), in.Enum(kOps)); break;
+      case 31:
+        if (in.Byte() % 4) gl.StencilOpSeparate(in.Enum(kFaces), in.Enum(kOps), in.Enum(kOps), in.Enum(kOps));
+        else gl.LogicOp(CLEAR + std::uint32_t(in.Int(-1, 16)));  // the sixteen operations, and one each side
+        break;
       case 32: gl.BlendFuncSeparate(in.Enum(kFactors), in.Enum(kFactors), in.Enum(kFactors), in.Enum(kFactors)); break;
       case 33:
         if (in.Byte() % 2) {
@@ -458,7 +461,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       }
       case 37:
         switch (in.Byte() % 3) {
-          case 0: gl.PointSize(in.Float()); break;
+          case 0:
+            if (in.Byte() % 2) gl.PointSize(in.Float());
+            else gl.LineWidth(in.Byte() % 2 ? float(in.Int(0, 8)) : in.Float());  // wide lines, any value
+            break;
           case 1: gl.PrimitiveRestartIndex(in.Byte() % 2 ? in.Get<std::uint32_t>() : std::uint32_t(in.Int(0, 8))); break;
           default: {  // PointParameter: either name, any value (an origin's enum, as a float too), null now and then
             const std::uint32_t pname = in.Byte() % 4 ? (in.Byte() % 2 ? POINT_SPRITE_COORD_ORIGIN : POINT_FADE_THRESHOLD_SIZE) : POINT_SIZE;
