@@ -336,8 +336,9 @@ void Context::ReadPixels(int x, int y, int width, int height, Enum format, Enum 
 
 void Context::GetTexImage(Enum target, int level, Enum format, Enum type, void* pixels) const {
   auto& s = *state_;
-  if (!IsTexImageTarget(target) && target != TEXTURE_2D_ARRAY && target != TEXTURE_3D)
-    return s.SetError(INVALID_ENUM, __func__, "target must be TEXTURE_2D, a TEXTURE_CUBE_MAP_* face, TEXTURE_2D_ARRAY or TEXTURE_3D");
+  if (!IsTexImageTarget(target) && target != TEXTURE_2D_ARRAY && target != TEXTURE_3D && target != TEXTURE_1D &&
+      target != TEXTURE_1D_ARRAY)
+    return s.SetError(INVALID_ENUM, __func__, "target must be TEXTURE_1D, TEXTURE_2D, a TEXTURE_CUBE_MAP_* face, TEXTURE_1D_ARRAY, TEXTURE_2D_ARRAY or TEXTURE_3D");
   const char* why = "";
   const Enum check = detail::CheckPixelTransfer(format, type, detail::TransferCall::kGetTexImage, why);
   if (check == INVALID_ENUM) return s.SetError(check, __func__, why);
@@ -354,13 +355,15 @@ void Context::GetTexImage(Enum target, int level, Enum format, Enum type, void* 
   if (stencil && lv.stencil.empty()) return s.SetError(INVALID_OPERATION, __func__, "DEPTH_STENCIL for a texture without stencil");
   s.Sync(__func__);  // a texture being rendered into holds its texels once the recorded draws are rendered
   const bool layered = target == TEXTURE_2D_ARRAY || target == TEXTURE_3D;
-  const PackLayout pack = Pack(s, lv.width, lv.height, layered, format, type, pixels);
+  // (A 1D array goes out as one image whose rows are its layers, each of its planes being one row.)
+  const PackLayout pack = Pack(s, lv.width, target == TEXTURE_1D_ARRAY ? lv.depth : lv.height, layered, format, type,
+                               pixels);
   // A 2D array's layers or a 3D texture's slices one image after another (PACK_IMAGE_HEIGHT rows apart); the
   // level stores image k's row j as its row k * height + j.
   for (int j = 0; j < lv.height * lv.depth; ++j)
     for (int i = 0; i < lv.width; ++i) {
       const glm::vec4 c = lv.Texel(i, j);
-      std::uint8_t* dst = pack.At(i, j % lv.height, j / lv.height);
+      std::uint8_t* dst = target == TEXTURE_1D_ARRAY ? pack.At(i, j, 0) : pack.At(i, j % lv.height, j / lv.height);
       if (stencil)
         detail::PackDepthStencil(type, c.r, lv.stencil[std::size_t(j) * std::size_t(lv.width) + std::size_t(i)], dst);
       else
@@ -424,14 +427,14 @@ void CopyToLevel(ContextState& s, const char* what, detail::TextureLevel& lv, in
 void Context::CopyTexSubImage2D(Enum target, int level, int xoffset, int yoffset, int x, int y, int width,
                                 int height) {
   auto& s = *state_;
-  if (!IsTexImageTarget(target)) return s.SetError(INVALID_ENUM, __func__, "target must be TEXTURE_2D or a TEXTURE_CUBE_MAP_* face");
+  if (!IsTexImageTarget(target) && target != TEXTURE_1D_ARRAY) return s.SetError(INVALID_ENUM, __func__, "target must be TEXTURE_2D, a TEXTURE_CUBE_MAP_* face or TEXTURE_1D_ARRAY");
   if (level < 0 || level >= detail::kMaxLevels) return s.SetError(INVALID_VALUE, __func__, "level is negative or beyond the largest mipmap level");
   int face = 0;
   detail::TextureObject* tex = s.Bound(target, &face);
   if (!tex || !tex->levels[face][level].Defined()) return s.SetError(INVALID_OPERATION, __func__, "no texture bound, or that level is not defined");
   detail::TextureLevel& lv = tex->levels[face][level];
   if (xoffset < 0 || yoffset < 0 || width < 0 || height < 0 || std::int64_t(xoffset) + width > lv.width ||
-      std::int64_t(yoffset) + height > lv.height)
+      std::int64_t(yoffset) + height > std::int64_t(lv.height) * lv.depth)  // (a 1D array's rows are its layers)
     return s.SetError(INVALID_VALUE, __func__, "the rectangle is outside the level");
   if (!CheckCopySource(s, __func__, detail::IsDepthFormat(lv.format))) return;
   try {
@@ -463,9 +466,11 @@ void Context::CopyTexSubImage3D(Enum target, int level, int xoffset, int yoffset
 void Context::CopyTexImage2D(Enum target, int level, Enum internal_format, int x, int y, int width, int height,
                              int border) {
   auto& s = *state_;
-  if (!IsTexImageTarget(target)) return s.SetError(INVALID_ENUM, __func__, "target must be TEXTURE_2D or a TEXTURE_CUBE_MAP_* face");
+  const bool rows_of_layers = target == TEXTURE_1D_ARRAY;
+  if (!IsTexImageTarget(target) && !rows_of_layers) return s.SetError(INVALID_ENUM, __func__, "target must be TEXTURE_2D, a TEXTURE_CUBE_MAP_* face or TEXTURE_1D_ARRAY");
   if (level < 0 || level >= detail::kMaxLevels || width < 0 || height < 0 || width > kMaxTextureSize ||
-      height > kMaxTextureSize || border != 0 || detail::FormatComponents(internal_format) == 0)
+      height > (rows_of_layers ? kMaxArrayTextureLayers : kMaxTextureSize) || border != 0 ||
+      detail::FormatComponents(internal_format) == 0)
     return s.SetError(INVALID_VALUE, __func__, "a numeric argument is out of range");
   if (CubeFaceIndex(target) >= 0 && width != height) return s.SetError(INVALID_VALUE, __func__, "cube map faces must be square");
   int face = 0;
@@ -475,9 +480,47 @@ void Context::CopyTexImage2D(Enum target, int level, Enum internal_format, int x
   try {
     s.Sync(__func__);  // the old level may be what recorded draws sample or render into
     detail::TextureLevel next;
-    next.Allocate(internal_format, width, height);
+    if (rows_of_layers) next.Allocate(internal_format, width, 1, 1, height);  // each row a layer
+    else next.Allocate(internal_format, width, height);
     CopyToLevel(s, __func__, next, 0, 0, x, y, width, height);
+    if (rows_of_layers && height == 0) next = detail::TextureLevel{};
     tex->levels[face][level] = std::move(next);
+  } catch (const std::bad_alloc&) {
+    s.SetError(OUT_OF_MEMORY, __func__, "out of memory");
+  }
+}
+
+void Context::CopyTexImage1D(Enum target, int level, Enum internal_format, int x, int y, int width, int border) {
+  auto& s = *state_;
+  if (target != TEXTURE_1D) return s.SetError(INVALID_ENUM, __func__, "target must be TEXTURE_1D");
+  if (level < 0 || level >= detail::kMaxLevels || width < 0 || width > kMaxTextureSize || border != 0 ||
+      detail::FormatComponents(internal_format) == 0)
+    return s.SetError(INVALID_VALUE, __func__, "a numeric argument is out of range");
+  detail::TextureObject* tex = s.Bound(target);
+  if (!tex) return s.SetError(INVALID_OPERATION, __func__, "no texture is bound to that target of the active unit");
+  if (!CheckCopySource(s, __func__, detail::IsDepthFormat(internal_format))) return;
+  try {
+    s.Sync(__func__);
+    detail::TextureLevel next;
+    next.Allocate(internal_format, width, 1);
+    CopyToLevel(s, __func__, next, 0, 0, x, y, width, 1);
+    tex->levels[0][level] = std::move(next);
+  } catch (const std::bad_alloc&) {
+    s.SetError(OUT_OF_MEMORY, __func__, "out of memory");
+  }
+}
+
+void Context::CopyTexSubImage1D(Enum target, int level, int xoffset, int x, int y, int width) {
+  auto& s = *state_;
+  if (target != TEXTURE_1D) return s.SetError(INVALID_ENUM, __func__, "target must be TEXTURE_1D");
+  if (level < 0 || level >= detail::kMaxLevels) return s.SetError(INVALID_VALUE, __func__, "level is negative or beyond the largest mipmap level");
+  detail::TextureObject* tex = s.Bound(target);
+  if (!tex || !tex->levels[0][level].Defined()) return s.SetError(INVALID_OPERATION, __func__, "no texture bound, or that level is not defined");
+  detail::TextureLevel& lv = tex->levels[0][level];
+  if (xoffset < 0 || width < 0 || std::int64_t(xoffset) + width > lv.width) return s.SetError(INVALID_VALUE, __func__, "the span is outside the level");
+  if (!CheckCopySource(s, __func__, detail::IsDepthFormat(lv.format))) return;
+  try {
+    CopyToLevel(s, __func__, lv, xoffset, 0, x, y, width, 1);
   } catch (const std::bad_alloc&) {
     s.SetError(OUT_OF_MEMORY, __func__, "out of memory");
   }
@@ -645,7 +688,7 @@ void Context::FramebufferTextureLayer(Enum target, Enum attachment, std::uint32_
   const auto* it = SlotsAndTexture(s, __func__, target, attachment, texture, slots, n, INVALID_OPERATION);
   if (!it) return;
   const Enum kind = (*it)->target;
-  if (kind != TEXTURE_2D_ARRAY && kind != TEXTURE_3D) return s.SetError(INVALID_OPERATION, __func__, "the texture is not a TEXTURE_2D_ARRAY or TEXTURE_3D");
+  if (kind != TEXTURE_2D_ARRAY && kind != TEXTURE_3D && kind != TEXTURE_1D_ARRAY) return s.SetError(INVALID_OPERATION, __func__, "the texture is not a TEXTURE_1D_ARRAY, TEXTURE_2D_ARRAY or TEXTURE_3D");
   if (level < 0 || level >= detail::kMaxLevels) return s.SetError(INVALID_VALUE, __func__, "level is negative or beyond the largest mipmap level");
   if (layer < 0 || layer >= (kind == TEXTURE_3D ? kMax3DTextureSize : kMaxArrayTextureLayers))
     return s.SetError(INVALID_VALUE, __func__, "layer is negative or beyond the most layers a texture has");
@@ -661,7 +704,20 @@ void Context::FramebufferTexture(Enum target, Enum attachment, std::uint32_t tex
   if (!it) return;
   const Enum kind = (*it)->target;
   if (level < 0 || level >= LevelCount(kind) || (kind == TEXTURE_2D_MULTISAMPLE && level != 0)) return s.SetError(INVALID_VALUE, __func__, "level is negative or beyond the texture's largest mipmap level");
-  AttachTexture(slots, n, (*it), level, 0, 0, kind == TEXTURE_CUBE_MAP || kind == TEXTURE_2D_ARRAY || kind == TEXTURE_3D);
+  AttachTexture(slots, n, (*it), level, 0, 0, kind == TEXTURE_CUBE_MAP || (*it)->Layered());
+}
+
+void Context::FramebufferTexture1D(Enum target, Enum attachment, Enum textarget, std::uint32_t texture, int level) {
+  auto& s = *state_;
+  Attachment* slots[2] = {nullptr, nullptr};
+  const int n = AttachmentSlots(s, __func__, target, attachment, texture, slots);
+  if (n == 0) return;
+  if (textarget != TEXTURE_1D) return s.SetError(INVALID_ENUM, __func__, "textarget must be TEXTURE_1D");
+  const auto* it = AttachedTexture(s, __func__, texture, INVALID_OPERATION);
+  if (!it) return;
+  if ((*it)->target != TEXTURE_1D) return s.SetError(INVALID_OPERATION, __func__, "the texture is not a TEXTURE_1D");
+  if (level < 0 || level >= detail::kMaxLevels) return s.SetError(INVALID_VALUE, __func__, "level is negative or beyond the largest mipmap level");
+  AttachTexture(slots, n, (*it), level, 0, 0, false);
 }
 
 void Context::FramebufferTexture3D(Enum target, Enum attachment, Enum textarget, std::uint32_t texture, int level,

@@ -60,6 +60,8 @@ bool QueryState(ContextState& s, Enum pname, StateValue& out) {
     case TEXTURE_BINDING_CUBE_MAP: return integer(IdOf(s.textures, s.Bound(TEXTURE_CUBE_MAP)));
     case TEXTURE_BINDING_2D_ARRAY: return integer(IdOf(s.textures, s.Bound(TEXTURE_2D_ARRAY)));
     case TEXTURE_BINDING_3D: return integer(IdOf(s.textures, s.Bound(TEXTURE_3D)));
+    case TEXTURE_BINDING_1D: return integer(IdOf(s.textures, s.Bound(TEXTURE_1D)));
+    case TEXTURE_BINDING_1D_ARRAY: return integer(IdOf(s.textures, s.Bound(TEXTURE_1D_ARRAY)));
     case TEXTURE_BINDING_2D_MULTISAMPLE: return integer(IdOf(s.textures, s.Bound(TEXTURE_2D_MULTISAMPLE)));
     case SAMPLER_BINDING: return integer(IdOf(s.samplers, s.units[s.active_unit].sampler.get()));
     case DRAW_FRAMEBUFFER_BINDING: return integer(IdOf(s.framebuffers, s.draw_fbo));

@@ -52,7 +52,7 @@ void Context::ActiveTexture(Enum unit) {
 void Context::BindTexture(Enum target, std::uint32_t texture) {
   auto& s = *state_;
   const int kind = detail::TextureKind(target);
-  if (kind < 0) return s.SetError(INVALID_ENUM, __func__, "target must be TEXTURE_2D, TEXTURE_CUBE_MAP, TEXTURE_2D_ARRAY or TEXTURE_3D");
+  if (kind < 0) return s.SetError(INVALID_ENUM, __func__, "target must be TEXTURE_1D, TEXTURE_2D, TEXTURE_CUBE_MAP, TEXTURE_1D_ARRAY, TEXTURE_2D_ARRAY, TEXTURE_3D or TEXTURE_2D_MULTISAMPLE");
   std::shared_ptr<detail::TextureObject> object;
   if (texture != 0) {
     auto it = s.textures.find(texture);
@@ -85,9 +85,11 @@ void Context::TexImage2D(Enum target, int level, Enum internal_format, int width
                          Enum format, Enum type, const void* pixels) {
   state_->Sync(__func__);
   auto& s = *state_;
-  if (!IsTexImageTarget(target)) return s.SetError(INVALID_ENUM, __func__, "target must be TEXTURE_2D or a TEXTURE_CUBE_MAP_* face");
+  const bool rows_of_layers = target == TEXTURE_1D_ARRAY;  // each row of the image a layer
+  if (!IsTexImageTarget(target) && !rows_of_layers) return s.SetError(INVALID_ENUM, __func__, "target must be TEXTURE_2D, a TEXTURE_CUBE_MAP_* face or TEXTURE_1D_ARRAY");
   if (level < 0 || level >= detail::kMaxLevels || width < 0 || height < 0 || width > kMaxTextureSize ||
-      height > kMaxTextureSize || border != 0 || detail::FormatComponents(internal_format) == 0)
+      height > (rows_of_layers ? kMaxArrayTextureLayers : kMaxTextureSize) || border != 0 ||
+      detail::FormatComponents(internal_format) == 0)
     return s.SetError(INVALID_VALUE, __func__, "a numeric argument is out of range");
   if (!CheckTransfer(s, __func__, format, type)) return;
   if (detail::IsDepthFormat(internal_format) != IsDepthTransfer(format)) return s.SetError(INVALID_OPERATION, __func__, "depth data for a colour format, or the reverse");
@@ -97,19 +99,59 @@ void Context::TexImage2D(Enum target, int level, Enum internal_format, int width
   if (!tex) return s.SetError(INVALID_OPERATION, __func__, "no texture is bound to that target of the active unit");
   detail::TextureLevel next;
   try {
-    next.Allocate(internal_format, width, height);
+    // (A 1D array's layers are planes one texel high: its texel (i, layer) is row `layer`, as the image's is.)
+    if (rows_of_layers) next.Allocate(internal_format, width, 1, 1, height);
+    else next.Allocate(internal_format, width, height);
   } catch (const std::bad_alloc&) {
     return s.SetError(OUT_OF_MEMORY, __func__, "out of memory");
   }
   detail::UploadPixels(next, 0, 0, width, height, format, type, s.unpack, pixels);
+  if (rows_of_layers && height == 0) next = detail::TextureLevel{};  // (no layers: the level is not defined)
   tex->levels[face][level] = std::move(next);
+}
+
+void Context::TexImage1D(Enum target, int level, Enum internal_format, int width, int border, Enum format, Enum type,
+                         const void* pixels) {
+  state_->Sync(__func__);
+  auto& s = *state_;
+  if (target != TEXTURE_1D) return s.SetError(INVALID_ENUM, __func__, "target must be TEXTURE_1D");
+  if (level < 0 || level >= detail::kMaxLevels || width < 0 || width > kMaxTextureSize || border != 0 ||
+      detail::FormatComponents(internal_format) == 0)
+    return s.SetError(INVALID_VALUE, __func__, "a numeric argument is out of range");
+  if (!CheckTransfer(s, __func__, format, type)) return;
+  if (detail::IsDepthFormat(internal_format) != IsDepthTransfer(format)) return s.SetError(INVALID_OPERATION, __func__, "depth data for a colour format, or the reverse");
+  detail::TextureObject* tex = s.Bound(target);
+  if (!tex) return s.SetError(INVALID_OPERATION, __func__, "no texture is bound to that target of the active unit");
+  detail::TextureLevel next;
+  try {
+    next.Allocate(internal_format, width, 1);
+  } catch (const std::bad_alloc&) {
+    return s.SetError(OUT_OF_MEMORY, __func__, "out of memory");
+  }
+  detail::UploadPixels(next, 0, 0, width, 1, format, type, s.unpack, pixels);
+  tex->levels[0][level] = std::move(next);
+}
+
+void Context::TexSubImage1D(Enum target, int level, int x, int width, Enum format, Enum type, const void* pixels) {
+  state_->Sync(__func__);
+  auto& s = *state_;
+  if (target != TEXTURE_1D) return s.SetError(INVALID_ENUM, __func__, "target must be TEXTURE_1D");
+  if (!CheckTransfer(s, __func__, format, type)) return;
+  if (level < 0 || level >= detail::kMaxLevels) return s.SetError(INVALID_VALUE, __func__, "level is negative or beyond the largest mipmap level");
+  detail::TextureObject* tex = s.Bound(target);
+  if (!tex || !tex->levels[0][level].Defined()) return s.SetError(INVALID_OPERATION, __func__, "no texture bound, or that level is not defined");
+  detail::TextureLevel& lv = tex->levels[0][level];
+  if (detail::IsDepthFormat(lv.format) != IsDepthTransfer(format)) return s.SetError(INVALID_OPERATION, __func__, "depth data for a colour texture, or the reverse");
+  if (x < 0 || width < 0 || std::int64_t(x) + width > lv.width) return s.SetError(INVALID_VALUE, __func__, "a numeric argument is out of range");
+  if (width == 0 || !NotNull(s, __func__, pixels, "pixels")) return;
+  detail::UploadPixels(lv, x, 0, width, 1, format, type, s.unpack, pixels);
 }
 
 void Context::TexSubImage2D(Enum target, int level, int x, int y, int width, int height, Enum format, Enum type,
                             const void* pixels) {
   state_->Sync(__func__);
   auto& s = *state_;
-  if (!IsTexImageTarget(target)) return s.SetError(INVALID_ENUM, __func__, "target must be TEXTURE_2D or a TEXTURE_CUBE_MAP_* face");
+  if (!IsTexImageTarget(target) && target != TEXTURE_1D_ARRAY) return s.SetError(INVALID_ENUM, __func__, "target must be TEXTURE_2D, a TEXTURE_CUBE_MAP_* face or TEXTURE_1D_ARRAY");
   if (!CheckTransfer(s, __func__, format, type)) return;
   if (level < 0 || level >= LevelCount(target)) return s.SetError(INVALID_VALUE, __func__, "level is negative or beyond the largest mipmap level");
   int face = 0;
@@ -117,8 +159,9 @@ void Context::TexSubImage2D(Enum target, int level, int x, int y, int width, int
   if (!tex || !tex->levels[face][level].Defined()) return s.SetError(INVALID_OPERATION, __func__, "no texture bound, or that level is not defined");
   detail::TextureLevel& lv = tex->levels[face][level];
   if (detail::IsDepthFormat(lv.format) != IsDepthTransfer(format)) return s.SetError(INVALID_OPERATION, __func__, "depth data for a colour texture, or the reverse");
+  // (A 1D array's rows are its layers.)
   if (x < 0 || y < 0 || width < 0 || height < 0 || std::int64_t(x) + width > lv.width ||
-      std::int64_t(y) + height > lv.height)
+      std::int64_t(y) + height > std::int64_t(lv.height) * lv.depth)
     return s.SetError(INVALID_VALUE, __func__, "a numeric argument is out of range");
   if (width == 0 || height == 0 || !NotNull(s, __func__, pixels, "pixels")) return;
   detail::UploadPixels(lv, x, y, width, height, format, type, s.unpack, pixels);
@@ -246,7 +289,7 @@ bool Context::TexImage2DFromMemory(Enum target, const void* data, std::size_t si
 void Context::GenerateMipmap(Enum target) {
   state_->Sync(__func__);
   auto& s = *state_;
-  if (detail::TextureKind(target) < 0 || target == TEXTURE_2D_MULTISAMPLE) return s.SetError(INVALID_ENUM, __func__, "target must be TEXTURE_2D, TEXTURE_CUBE_MAP, TEXTURE_2D_ARRAY or TEXTURE_3D (a multisample texture has no levels or sampling state)");
+  if (detail::TextureKind(target) < 0 || target == TEXTURE_2D_MULTISAMPLE) return s.SetError(INVALID_ENUM, __func__, "target must be TEXTURE_1D, TEXTURE_2D, TEXTURE_CUBE_MAP, TEXTURE_1D_ARRAY, TEXTURE_2D_ARRAY or TEXTURE_3D (a multisample texture has no levels or sampling state)");
   detail::TextureObject* tex = s.Bound(target);
   if (!tex) return s.SetError(INVALID_OPERATION, __func__, "no texture is bound to that target of the active unit");
   const int base = tex->params.base_level;
@@ -341,7 +384,7 @@ void BorderOfIntegers(const int* values, float out[4]) {
 void Context::TexParameterfv(Enum target, Enum pname, const float* values) {
   state_->Sync(__func__);
   auto& s = *state_;
-  if (detail::TextureKind(target) < 0 || target == TEXTURE_2D_MULTISAMPLE) return s.SetError(INVALID_ENUM, __func__, "target must be TEXTURE_2D, TEXTURE_CUBE_MAP, TEXTURE_2D_ARRAY or TEXTURE_3D (a multisample texture has no levels or sampling state)");
+  if (detail::TextureKind(target) < 0 || target == TEXTURE_2D_MULTISAMPLE) return s.SetError(INVALID_ENUM, __func__, "target must be TEXTURE_1D, TEXTURE_2D, TEXTURE_CUBE_MAP, TEXTURE_1D_ARRAY, TEXTURE_2D_ARRAY or TEXTURE_3D (a multisample texture has no levels or sampling state)");
   if (values == nullptr) return s.SetError(INVALID_VALUE, __func__, "values is null");
   detail::TextureObject* tex = s.Bound(target);
   if (!tex) return s.SetError(INVALID_OPERATION, __func__, "no texture is bound to that target of the active unit");
@@ -385,7 +428,7 @@ void IntegersOfValues(Enum pname, const float* v, int n, int* params) {
 
 // The sampling state `pname` of the texture bound to target, as up to four floats; false with the error set.
 bool TexParameterValues(ContextState& s, const char* what, Enum target, Enum pname, float out[4], int& n) {
-  if (detail::TextureKind(target) < 0 || target == TEXTURE_2D_MULTISAMPLE) return s.SetError(INVALID_ENUM, what, "target must be TEXTURE_2D, TEXTURE_CUBE_MAP, TEXTURE_2D_ARRAY or TEXTURE_3D (a multisample texture has no sampling state)"), false;
+  if (detail::TextureKind(target) < 0 || target == TEXTURE_2D_MULTISAMPLE) return s.SetError(INVALID_ENUM, what, "target must be TEXTURE_1D, TEXTURE_2D, TEXTURE_CUBE_MAP, TEXTURE_1D_ARRAY, TEXTURE_2D_ARRAY or TEXTURE_3D (a multisample texture has no sampling state)"), false;
   const detail::TextureObject* tex = s.Bound(target);
   if (!tex) return s.SetError(INVALID_OPERATION, what, "no texture is bound to that target of the active unit"), false;
   return SamplerParameterValues(s, what, tex->params, pname, out, n, true);
@@ -424,8 +467,9 @@ bool SamplerParameterValues(ContextState& s, const char* what, const detail::Sam
 // texture); false with the
 // error set.
 bool TexLevelValue(ContextState& s, const char* what, Enum target, int level, Enum pname, int& out) {
-  if (!IsTexImageTarget(target) && target != TEXTURE_2D_ARRAY && target != TEXTURE_3D && target != TEXTURE_2D_MULTISAMPLE)
-    return s.SetError(INVALID_ENUM, what, "target must be TEXTURE_2D, a TEXTURE_CUBE_MAP_* face, TEXTURE_2D_ARRAY, TEXTURE_3D or TEXTURE_2D_MULTISAMPLE"), false;
+  if (!IsTexImageTarget(target) && target != TEXTURE_2D_ARRAY && target != TEXTURE_3D && target != TEXTURE_2D_MULTISAMPLE &&
+      target != TEXTURE_1D && target != TEXTURE_1D_ARRAY)
+    return s.SetError(INVALID_ENUM, what, "target must be TEXTURE_1D, TEXTURE_2D, a TEXTURE_CUBE_MAP_* face, TEXTURE_1D_ARRAY, TEXTURE_2D_ARRAY, TEXTURE_3D or TEXTURE_2D_MULTISAMPLE"), false;
   if (level < 0 || level >= LevelCount(target)) return s.SetError(INVALID_VALUE, what, "level is negative or beyond the largest mipmap level"), false;
   int face = 0;
   const detail::TextureObject* tex = s.Bound(target, &face);
@@ -434,8 +478,9 @@ bool TexLevelValue(ContextState& s, const char* what, Enum target, int level, En
   const FormatBits bits = BitsOf(lv.Defined() ? lv.format : 0);
   switch (pname) {
     case TEXTURE_WIDTH: out = lv.Defined() ? lv.width : 0; return true;
-    case TEXTURE_HEIGHT: out = lv.Defined() ? lv.height : 0; return true;
-    case TEXTURE_DEPTH: out = lv.Defined() ? lv.depth : 0; return true;
+    // (A 1D array's layers are its height, as OpenGL counts them.)
+    case TEXTURE_HEIGHT: out = lv.Defined() ? (tex->target == TEXTURE_1D_ARRAY ? lv.depth : lv.height) : 0; return true;
+    case TEXTURE_DEPTH: out = lv.Defined() ? (tex->target == TEXTURE_1D_ARRAY ? 1 : lv.depth) : 0; return true;
     case TEXTURE_SAMPLES: out = lv.Defined() && tex->target == TEXTURE_2D_MULTISAMPLE ? lv.samples : 0; return true;
     case TEXTURE_FIXED_SAMPLE_LOCATIONS: out = 1; return true;  // the standard positions, always
     case TEXTURE_INTERNAL_FORMAT: out = int(lv.Defined() ? lv.format : RGBA); return true;
@@ -634,7 +679,7 @@ void SamplerParameterI(ContextState& s, const char* what, std::uint32_t sampler,
 // The texture bound to `target` for TexParameterI*v, or null with the error set.
 detail::TextureObject* TexParameterTarget(ContextState& s, const char* what, Enum target) {
   s.Sync(what);
-  if (detail::TextureKind(target) < 0 || target == TEXTURE_2D_MULTISAMPLE) return s.SetError(INVALID_ENUM, what, "target must be TEXTURE_2D, TEXTURE_CUBE_MAP, TEXTURE_2D_ARRAY or TEXTURE_3D (a multisample texture has no levels or sampling state)"), nullptr;
+  if (detail::TextureKind(target) < 0 || target == TEXTURE_2D_MULTISAMPLE) return s.SetError(INVALID_ENUM, what, "target must be TEXTURE_1D, TEXTURE_2D, TEXTURE_CUBE_MAP, TEXTURE_1D_ARRAY, TEXTURE_2D_ARRAY or TEXTURE_3D (a multisample texture has no levels or sampling state)"), nullptr;
   detail::TextureObject* tex = s.Bound(target);
   if (!tex) return s.SetError(INVALID_OPERATION, what, "no texture is bound to that target of the active unit"), nullptr;
   return tex;

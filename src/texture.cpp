@@ -705,6 +705,11 @@ TextureView MakeView(const TextureObject& texture, const SamplerParams* sampler)
     view.params.base_level = texture.params.base_level;
     view.params.max_level = texture.params.max_level;
   }
+  if (texture.target == TEXTURE_1D || texture.target == TEXTURE_1D_ARRAY) {
+    // One texel high, sampled at its middle: TEXTURE_WRAP_T has no part (a border texel would enter LINEAR's
+    // weights at 0, and a NaN border colour would still reach the sum).
+    view.params.wrap_t = view.params.wrap_r = CLAMP_TO_EDGE;
+  }
   const SamplerParams& p = view.params;
   view.base = p.base_level;
   if (p.base_level < 0 || p.base_level >= kMaxLevels || p.base_level > p.max_level) return view;
@@ -755,7 +760,7 @@ TextureView MakeView(const TextureObject& texture, const SamplerParams* sampler)
     if (p.min_filter == LINEAR_MIPMAP_LINEAR) view.fast = TextureView::Fast::kRepeatTrilinear;
   }
   view.wide = texture.target == TEXTURE_2D || texture.target == TEXTURE_CUBE_MAP || texture.target == TEXTURE_2D_ARRAY ||
-              texture.target == TEXTURE_3D;
+              texture.target == TEXTURE_3D || texture.target == TEXTURE_1D || texture.target == TEXTURE_1D_ARRAY;
   return view;
 }
 

@@ -236,21 +236,24 @@ struct SamplerParams {
 };
 
 struct TextureObject {
-  Enum target = 0;  // TEXTURE_2D, TEXTURE_CUBE_MAP, TEXTURE_2D_ARRAY, TEXTURE_3D or TEXTURE_2D_MULTISAMPLE (its
-                    // one image is level 0, with `samples` planes), fixed by the first bind
+  Enum target = 0;  // TEXTURE_2D, TEXTURE_CUBE_MAP, TEXTURE_2D_ARRAY, TEXTURE_3D, TEXTURE_2D_MULTISAMPLE (its
+                    // one image is level 0, with `samples` planes), TEXTURE_1D or TEXTURE_1D_ARRAY (levels one
+                    // texel high), fixed by the first bind
   TextureLevel levels[6][kMaxLevels];  // [face][level]; all but a cube map use face 0
   SamplerParams params;
   int Faces() const { return target == TEXTURE_CUBE_MAP ? 6 : 1; }
   /// Levels with planes: the layers of a 2D array (as many at every level) or the slices of a 3D texture (halved
   /// with each level, as width and height are).
-  bool Layered() const { return target == TEXTURE_2D_ARRAY || target == TEXTURE_3D; }
+  bool Layered() const { return target == TEXTURE_2D_ARRAY || target == TEXTURE_3D || target == TEXTURE_1D_ARRAY; }
 };
 
 /// The texture targets a unit binds, in this order: TEXTURE_2D, TEXTURE_CUBE_MAP, TEXTURE_2D_ARRAY, TEXTURE_3D,
-/// TEXTURE_2D_MULTISAMPLE.
-inline constexpr int kTextureKinds = 5;
+/// TEXTURE_2D_MULTISAMPLE, TEXTURE_1D, TEXTURE_1D_ARRAY. A 1D texture's levels are one texel high; a 1D array's
+/// layers are the planes of its levels, as a 2D array's.
+inline constexpr int kTextureKinds = 7;
 inline constexpr Enum kTextureKindTarget[kTextureKinds] = {TEXTURE_2D, TEXTURE_CUBE_MAP, TEXTURE_2D_ARRAY,
-                                                           TEXTURE_3D, TEXTURE_2D_MULTISAMPLE};
+                                                           TEXTURE_3D, TEXTURE_2D_MULTISAMPLE, TEXTURE_1D,
+                                                           TEXTURE_1D_ARRAY};
 /// The index of a texture target in kTextureKindTarget, -1 for another enum.
 inline int TextureKind(Enum target) {
   for (int k = 0; k < kTextureKinds; ++k)
@@ -261,7 +264,8 @@ inline int TextureKind(Enum target) {
 using UnitViews = const TextureView* (Textures::*)[kMaxTextureUnits];
 inline constexpr UnitViews kKindUnits[kTextureKinds] = {&Textures::unit_2d, &Textures::unit_cube,
                                                         &Textures::unit_2d_array, &Textures::unit_3d,
-                                                        &Textures::unit_2d_ms};
+                                                        &Textures::unit_2d_ms, &Textures::unit_1d,
+                                                        &Textures::unit_1d_array};
 
 /// A texture as one draw samples it: completeness and the levels in use resolved once.
 struct TextureView {

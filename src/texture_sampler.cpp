@@ -1547,6 +1547,58 @@ void Textures::Sample3DLodLanes(int unit, const Lanes& c, const float lod[16], f
   SampleBlock(Usable(unit_3d, unit), Lookup::k3DLod, c, 0.0f, lod, out);
 }
 
+// 1D textures: as 2D ones one texel high, sampled at t = 1/2 with t's derivatives 0 (the view clamps in t).
+glm::vec4 Textures::Sample1D(int unit, float s, float ds_dx, float ds_dy, float bias) const {
+  const TextureView* v = Usable(unit_1d, unit);
+  return v ? Sample2D(*v, glm::vec2(s, 0.5f), glm::vec2(ds_dx, 0.0f), glm::vec2(ds_dy, 0.0f), bias) : kMissing;
+}
+
+glm::vec4 Textures::Sample1DLod(int unit, float s, float lod) const {
+  const TextureView* v = Usable(unit_1d, unit);
+  return v ? SampleLodOf(*v, glm::vec2(s, 0.5f), lod) : kMissing;
+}
+
+glm::vec4 Textures::Sample1DArray(int unit, glm::vec2 sl, float ds_dx, float ds_dy, float bias) const {
+  const TextureView* v = Usable(unit_1d_array, unit);
+  return v ? SampleArrayOf(*v, glm::vec3(sl.x, 0.5f, sl.y), glm::vec2(ds_dx, 0.0f), glm::vec2(ds_dy, 0.0f), bias)
+           : kMissing;
+}
+
+glm::vec4 Textures::Sample1DArrayLod(int unit, glm::vec2 sl, float lod) const {
+  const TextureView* v = Usable(unit_1d_array, unit);
+  return v ? SampleLodOf(*v, glm::vec2(sl.x, 0.5f), lod, ArrayLayer(*v, sl.y)) : kMissing;
+}
+
+namespace {
+// The lanes of a 1D lookup as the 2D (or 2D array) lookup takes them: t = 1/2 (or the layer moved from t to r),
+// t's derivatives 0.
+Textures::Lanes OneDimensional(const Textures::Lanes& c, bool array) {
+  Textures::Lanes d = c;
+  for (int l = 0; l < 16; ++l) {
+    d.r[l] = array ? c.t[l] : 0.0f;
+    d.t[l] = 0.5f;
+    d.dt_dx[l] = d.dt_dy[l] = 0.0f;
+  }
+  return d;
+}
+}  // namespace
+
+void Textures::Sample1DLanes(int unit, const Lanes& c, float bias, float out[4][16]) const {
+  SampleBlock(Usable(unit_1d, unit), Lookup::k2D, OneDimensional(c, false), bias, nullptr, out);
+}
+
+void Textures::Sample1DLodLanes(int unit, const Lanes& c, const float lod[16], float out[4][16]) const {
+  SampleBlock(Usable(unit_1d, unit), Lookup::kLod, OneDimensional(c, false), 0.0f, lod, out);
+}
+
+void Textures::Sample1DArrayLanes(int unit, const Lanes& c, float bias, float out[4][16]) const {
+  SampleBlock(Usable(unit_1d_array, unit), Lookup::kArray, OneDimensional(c, true), bias, nullptr, out);
+}
+
+void Textures::Sample1DArrayLodLanes(int unit, const Lanes& c, const float lod[16], float out[4][16]) const {
+  SampleBlock(Usable(unit_1d_array, unit), Lookup::kArrayLod, OneDimensional(c, true), 0.0f, lod, out);
+}
+
 namespace {
 // Width, height and layers (or slices) of a level of the view's texture; zero where there is none.
 glm::ivec3 LevelSize(const TextureView* v, int level) {
@@ -1562,6 +1614,16 @@ glm::ivec3 Textures::SizeArray(int unit, int level) const {
 
 glm::ivec3 Textures::Size3D(int unit, int level) const {
   return unit < 0 || unit >= kMaxTextureUnits ? glm::ivec3(0) : LevelSize(unit_3d[unit], level);
+}
+
+int Textures::Size1D(int unit, int level) const {
+  return unit < 0 || unit >= kMaxTextureUnits ? 0 : LevelSize(unit_1d[unit], level).x;
+}
+
+glm::ivec2 Textures::Size1DArray(int unit, int level) const {
+  if (unit < 0 || unit >= kMaxTextureUnits) return glm::ivec2(0);
+  const glm::ivec3 s = LevelSize(unit_1d_array[unit], level);
+  return glm::ivec2(s.x, s.z);
 }
 
 namespace {

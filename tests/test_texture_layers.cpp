@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "helpers.h"
@@ -287,6 +288,28 @@ TEST_CASE("FramebufferTextureLayer draws into one layer, of colour and of depth"
 }
 
 namespace {
+// A quad in perspective drawn with `program` (w grows upwards, so the level of detail changes over it): the image.
+std::vector<std::uint8_t> DrawPerspectiveQuad(Context& gl, const Program& program) {
+  gl.UseProgram(program);
+  testing::MakeVertexArray(gl, {{-1, -1, 0, 1}, {1, -1, 0, 1}, {-3, 3, 0, 3}, {3, 3, 0, 3}},
+                           {{0, 0, 0, 1}, {1, 0, 0, 1}, {0, 3, 0, 3}, {3, 3, 0, 3}});
+  gl.DrawArrays(TRIANGLE_STRIP, 0, 4);
+  CHECK(gl.GetError() == NO_ERROR);
+  return gl.ReadPixels().rgba;
+}
+
+// A wide shader's image against its one-lane twin's: the same bytes, and most of the 48 x 40 pixels coloured.
+void CheckSameImage(const std::vector<std::uint8_t>& a, const std::vector<std::uint8_t>& b) {
+  REQUIRE(a.size() == b.size());
+  int differing = 0, coloured = 0;
+  for (std::size_t i = 0; i < a.size(); i += 4) {
+    differing += a[i] != b[i] || a[i + 1] != b[i + 1] || a[i + 2] != b[i + 2];
+    coloured += a[i] != 0 || a[i + 1] != 0;
+  }
+  CHECK(differing == 0);
+  CHECK(coloured > 48 * 40 / 2);
+}
+
 // The same lookups written wide and one lane at a time: a 2D array (its layer from x) and a 3D texture (r from
 // y), both LINEAR_MIPMAP_LINEAR with mipmaps, so that the level of detail and both filters take part.
 struct WideUv {
@@ -341,25 +364,11 @@ TEST_CASE("the wide array and 3D calls give the one-lane calls' bytes", "[textur
     gl.TexImage3D(TEXTURE_3D, 0, RGBA8, 16, 16, 8, 0, RGBA, UNSIGNED_BYTE, noise.data());
     gl.GenerateMipmap(TEXTURE_3D);
     gl.TexParameteri(TEXTURE_3D, TEXTURE_MIN_FILTER, LINEAR_MIPMAP_LINEAR);
-    gl.UseProgram(program);
-    // A quad in perspective: w grows upwards, so the level of detail changes over it.
-    testing::MakeVertexArray(gl, {{-1, -1, 0, 1}, {1, -1, 0, 1}, {-3, 3, 0, 3}, {3, 3, 0, 3}},
-                             {{0, 0, 0, 1}, {1, 0, 0, 1}, {0, 3, 0, 3}, {3, 3, 0, 3}});
-    gl.DrawArrays(TRIANGLE_STRIP, 0, 4);
-    CHECK(gl.GetError() == NO_ERROR);
-    return gl.ReadPixels().rgba;
+    return DrawPerspectiveQuad(gl, program);
   };
   WideLayers wide;
   ScalarLayers scalar;
-  const std::vector<std::uint8_t> a = render(wide), b = render(scalar);
-  REQUIRE(a.size() == b.size());
-  int differing = 0, coloured = 0;
-  for (std::size_t i = 0; i < a.size(); i += 4) {
-    differing += a[i] != b[i] || a[i + 1] != b[i + 1] || a[i + 2] != b[i + 2];
-    coloured += a[i] != 0 || a[i + 1] != 0;
-  }
-  CHECK(differing == 0);
-  CHECK(coloured > 48 * 40 / 2);
+  CheckSameImage(render(wide), render(scalar));
 }
 
 TEST_CASE("TexImage3D, TexSubImage3D and FramebufferTextureLayer reject bad input", "[texture][layers][errors]") {
@@ -707,4 +716,292 @@ TEST_CASE("gl_Layer from the vertex stage routes each primitive to its layer", "
     for (int l = 0; l < 4; ++l) CHECK(int(out[std::size_t(l * 64 + 27) * 4 + 2]) == (l == 0 ? 255 : 0));
     CHECK(gl.GetError() == NO_ERROR);
   }
+}
+
+// ---- 1D textures and 1D arrays ----------------------------------------------------------------------------------
+
+namespace {
+struct WideS {
+  softgl::Float s;
+  softgl::vec2 sl;
+};
+struct ScalarS {
+  float s;
+  glm::vec2 sl;
+};
+// texture(sampler1D) on unit 0 and texture(sampler1DArray) on unit 1, wide and one lane at a time.
+struct Wide1D : softgl::Shader<Wide1D, WideS> {
+  void Vertex(const softgl::VertexLanes& in, softgl::VertexLanesOut<WideS>& out) const {
+    out.position = in.attrib[0];
+    out.varyings.s = in.attrib[1].x * 3.0f - 1.0f;
+    out.varyings.sl = softgl::vec2(in.attrib[1].x * 2.0f, in.attrib[1].y * 3.0f);
+  }
+  void Fragment(const softgl::FragmentLanes<WideS>& in, softgl::FragmentLanesOut& out) const {
+    const softgl::vec4 a = in.Texture1D(0, in.varyings.s);
+    const softgl::vec4 b = in.Texture1DArray(1, in.varyings.sl);
+    out.color[0] = softgl::vec4(a.x, b.y, a.z * 0.5f + b.z * 0.5f, 1.0f);
+  }
+};
+struct Scalar1D : softgl::Shader<Scalar1D, ScalarS> {
+  void Vertex(const VertexIn& in, VertexOut<ScalarS>& out) const {
+    out.position = in.attrib[0];
+    out.varyings.s = in.attrib[1].x * 3.0f - 1.0f;
+    out.varyings.sl = glm::vec2(in.attrib[1].x * 2.0f, in.attrib[1].y * 3.0f);
+  }
+  bool Fragment(const FragmentIn<ScalarS>& in, FragmentOut& out) const {
+    const glm::vec4 a = in.Texture1D(0, &ScalarS::s);
+    const glm::vec4 b = in.Texture1DArray(1, &ScalarS::sl);
+    out.color[0] = glm::vec4(a.x, b.y, a.z * 0.5f + b.z * 0.5f, 1.0f);
+    return true;
+  }
+};
+}  // namespace
+
+TEST_CASE("1D textures sample as a 2D texture one texel high, whatever TEXTURE_WRAP_T says", "[texture][layers][1d]") {
+  // 13 texels with their mipmaps, as TEXTURE_1D and as a 13 x 1 TEXTURE_2D clamped in t; the 1D texture's own
+  // TEXTURE_WRAP_T is CLAMP_TO_BORDER with a NaN border, which must not reach a sample.
+  auto texel = [](int i, int, int) { return glm::vec4(float(i), float(i * i) * 0.25f, 13.0f - float(i), 1.0f); };
+  TextureObject one = MakeLayered(TEXTURE_1D, 13, 1, 1, texel), two = MakeLayered(TEXTURE_2D, 13, 1, 1, texel);
+  detail::GenerateMipmaps(one);
+  detail::GenerateMipmaps(two);
+  one.params.wrap_t = CLAMP_TO_BORDER;
+  one.params.border = glm::vec4(std::nanf(""));
+  two.params.wrap_t = CLAMP_TO_EDGE;
+  // NEAREST picks texel floor(13 s).
+  {
+    const TextureView v = detail::MakeView(one);
+    Textures tx;
+    tx.unit_1d[0] = &v;
+    REQUIRE(v.complete);
+    for (int i = 0; i < 13; ++i) CHECK(tx.Sample1D(0, (float(i) + 0.5f) / 13.0f, 0, 0) == texel(i, 0, 0));
+    CHECK(tx.Size1D(0) == 13);
+    CHECK(tx.Size1D(0, 1) == 6);
+    CHECK(tx.Sample(0, {0.5f, 0.5f}, {}, {}) == glm::vec4(0, 0, 0, 1));  // the 2D unit is empty
+  }
+  const Enum filters[][2] = {{NEAREST, NEAREST}, {LINEAR, LINEAR}, {LINEAR_MIPMAP_LINEAR, LINEAR},
+                             {NEAREST_MIPMAP_NEAREST, NEAREST}, {LINEAR_MIPMAP_NEAREST, LINEAR}};
+  const Enum wraps[] = {REPEAT, MIRRORED_REPEAT, CLAMP_TO_EDGE, CLAMP_TO_BORDER};
+  int compared = 0;
+  for (const auto& f : filters)
+    for (const Enum w : wraps) {
+      for (TextureObject* t : {&one, &two}) {
+        t->params.min_filter = f[0];
+        t->params.mag_filter = f[1];
+        t->params.wrap_s = w;
+        t->params.border = t == &one ? glm::vec4(std::nanf("")) : glm::vec4(0.25f, 0.5f, 0.75f, 1.0f);
+      }
+      one.params.border = two.params.border;  // (the border in s is the same colour for both)
+      one.params.wrap_t = CLAMP_TO_BORDER;
+      const TextureView v1 = detail::MakeView(one), v2 = detail::MakeView(two);
+      Textures tx;
+      tx.unit_1d[0] = &v1;
+      tx.unit_2d[0] = &v2;
+      Textures::Lanes lanes{};
+      float lod[16];
+      for (int l = 0; l < 16; ++l) {
+        lanes.s[l] = -1.3f + 0.23f * float(l);
+        lanes.t[l] = 7.0f;  // unread
+        lanes.ds_dx[l] = 0.01f * float(l * l);
+        lanes.ds_dy[l] = l % 3 == 0 ? 0.3f : 0.0f;
+        lod[l] = -1.0f + 0.4f * float(l);
+      }
+      float wide[4][16], wide_lod[4][16];
+      tx.Sample1DLanes(0, lanes, 0.25f, wide);
+      tx.Sample1DLodLanes(0, lanes, lod, wide_lod);
+      for (int l = 0; l < 16; ++l) {
+        const float s = lanes.s[l];
+        const glm::vec4 a = tx.Sample1D(0, s, lanes.ds_dx[l], lanes.ds_dy[l], 0.25f);
+        const glm::vec4 b = tx.Sample(0, {s, 0.5f}, {lanes.ds_dx[l], 0.0f}, {lanes.ds_dy[l], 0.0f}, 0.25f);
+        INFO("filter 0x" << std::hex << f[0] << ", wrap 0x" << w << std::dec << ", lane " << l);
+        CHECK(a == b);
+        CHECK(glm::vec4(wide[0][l], wide[1][l], wide[2][l], wide[3][l]) == a);
+        CHECK(tx.Sample1DLod(0, s, lod[l]) == tx.SampleLod(0, {s, 0.5f}, lod[l]));
+        CHECK(glm::vec4(wide_lod[0][l], wide_lod[1][l], wide_lod[2][l], wide_lod[3][l]) == tx.Sample1DLod(0, s, lod[l]));
+        ++compared;
+      }
+    }
+  CHECK(compared == 5 * 4 * 16);
+  // TEXTURE_WRAP_T unused: CLAMP_TO_BORDER with an infinite or NaN border in t changes no LINEAR sample.
+  for (const float border : {std::numeric_limits<float>::infinity(), std::nanf("")}) {
+    one.params.min_filter = one.params.mag_filter = two.params.min_filter = two.params.mag_filter = LINEAR;
+    one.params.wrap_s = two.params.wrap_s = REPEAT;
+    one.params.wrap_t = CLAMP_TO_BORDER;
+    one.params.border = glm::vec4(border);
+    const TextureView v1 = detail::MakeView(one), v2 = detail::MakeView(two);
+    Textures tx;
+    tx.unit_1d[0] = &v1;
+    tx.unit_2d[0] = &v2;
+    for (int k = 0; k < 40; ++k) {
+      const float s = -1.0f + 0.077f * float(k);
+      CHECK(tx.Sample1D(0, s, 0.002f, 0.0f) == tx.Sample(0, {s, 0.5f}, {0.002f, 0.0f}, {}));
+    }
+  }
+}
+
+TEST_CASE("1D arrays: a row of texels a layer; the layer is floor(layer + 0.5), clamped", "[texture][layers][1d]") {
+  // 4 texels x 3 layers: texel (i, layer k) = 100 k + i.
+  TextureObject t = MakeLayered(TEXTURE_1D_ARRAY, 4, 1, 3, [](int i, int, int k) {
+    return glm::vec4(float(100 * k + i), 0.0f, 0.0f, 1.0f);
+  });
+  const TextureView v = detail::MakeView(t);
+  Textures tx;
+  tx.unit_1d_array[0] = &v;
+  REQUIRE(v.complete);
+  auto at = [&](float s, float layer) { return tx.Sample1DArray(0, {s, layer}, 0, 0).r; };
+  CHECK(at(0.125f, 0.0f) == 0.0f);
+  CHECK(at(0.875f, 1.0f) == 103.0f);
+  CHECK(at(0.375f, 1.49f) == 101.0f);
+  CHECK(at(0.375f, 1.5f) == 201.0f);
+  CHECK(at(0.625f, -7.0f) == 2.0f);
+  CHECK(at(0.625f, 9.0f) == 202.0f);
+  CHECK(tx.Sample1DArrayLod(0, {0.625f, 2.0f}, 0.0f).r == 202.0f);
+  CHECK(tx.Size1DArray(0) == glm::ivec2(4, 3));
+  Textures::Lanes lanes{};
+  for (int l = 0; l < 16; ++l) {
+    lanes.s[l] = float(l) / 16.0f;
+    lanes.t[l] = float(l % 5) * 0.6f - 0.5f;
+  }
+  float wide[4][16];
+  tx.Sample1DArrayLanes(0, lanes, 0.0f, wide);
+  for (int l = 0; l < 16; ++l) CHECK(wide[0][l] == at(lanes.s[l], lanes.t[l]));
+}
+
+TEST_CASE("1D textures through the API: uploads, copies, mipmaps, rendering into them, queries", "[texture][layers][1d]") {
+  Context gl(8, 4);
+  const std::uint32_t one = gl.GenTexture(), arr = gl.GenTexture();
+  gl.BindTexture(TEXTURE_1D, one);
+  const std::uint8_t row[8 * 4] = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16,
+                                   17, 18, 19, 20, 21, 22, 23, 24, 25, 26, 27, 28, 29, 30, 31, 32};
+  gl.TexImage1D(TEXTURE_1D, 0, RGBA8, 8, 0, RGBA, UNSIGNED_BYTE, row);
+  const std::uint8_t two[8] = {200, 201, 202, 203, 204, 205, 206, 207};
+  gl.TexSubImage1D(TEXTURE_1D, 0, 3, 2, RGBA, UNSIGNED_BYTE, two);
+  std::uint8_t back[8 * 4] = {};
+  gl.GetTexImage(TEXTURE_1D, 0, RGBA, UNSIGNED_BYTE, back);
+  for (int i = 0; i < 32; ++i) CHECK(int(back[i]) == (i >= 12 && i < 20 ? 200 + i - 12 : i + 1));
+  int v = 0;
+  gl.GetTexLevelParameteriv(TEXTURE_1D, 0, TEXTURE_HEIGHT, &v);
+  CHECK(v == 1);
+  gl.GenerateMipmap(TEXTURE_1D);
+  gl.GetTexLevelParameteriv(TEXTURE_1D, 2, TEXTURE_WIDTH, &v);
+  CHECK(v == 2);
+  gl.GetIntegerv(TEXTURE_BINDING_1D, &v);
+  CHECK(v == int(one));
+  // A 1D array of 3 layers from a 2D image, rows as layers.
+  gl.BindTexture(TEXTURE_1D_ARRAY, arr);
+  std::uint8_t rows[4 * 3 * 4];
+  for (int i = 0; i < 48; ++i) rows[i] = std::uint8_t(i * 5);
+  gl.TexImage2D(TEXTURE_1D_ARRAY, 0, RGBA8, 4, 3, 0, RGBA, UNSIGNED_BYTE, rows);
+  gl.GetTexLevelParameteriv(TEXTURE_1D_ARRAY, 0, TEXTURE_HEIGHT, &v);
+  CHECK(v == 3);  // the layers
+  std::uint8_t rows_back[48] = {};
+  gl.GetTexImage(TEXTURE_1D_ARRAY, 0, RGBA, UNSIGNED_BYTE, rows_back);
+  CHECK(std::equal(rows, rows + 48, rows_back));
+  gl.GetIntegerv(TEXTURE_BINDING_1D_ARRAY, &v);
+  CHECK(v == int(arr));
+  CHECK(gl.GetError() == NO_ERROR);
+
+  // Rendering into level 0 of the 1D texture (a framebuffer 8 x 1) and into layer 1 of the array.
+  testing::SolidShader shader;
+  auto full_quad = [&](glm::vec4 c) {
+    testing::MakeVertexArray(gl, {{-1, -1, 0, 1}, {1, -1, 0, 1}, {-1, 1, 0, 1}, {1, 1, 0, 1}});
+    shader.color = c;
+    gl.UseProgram(shader);
+    gl.DrawArrays(TRIANGLE_STRIP, 0, 4);
+  };
+  const std::uint32_t fbo = gl.GenFramebuffer();
+  gl.BindFramebuffer(FRAMEBUFFER, fbo);
+  gl.FramebufferTexture1D(FRAMEBUFFER, COLOR_ATTACHMENT0, TEXTURE_1D, one, 0);
+  REQUIRE(gl.CheckFramebufferStatus(FRAMEBUFFER) == FRAMEBUFFER_COMPLETE);
+  gl.Viewport(0, 0, 8, 1);
+  full_quad({1.0f, 0.0f, 0.5f, 1.0f});
+  gl.GetTexImage(TEXTURE_1D, 0, RGBA, UNSIGNED_BYTE, back);
+  for (int i = 0; i < 8; ++i) CHECK((back[4 * i] == 255 && back[4 * i + 1] == 0 && back[4 * i + 2] == 128));
+  gl.FramebufferTextureLayer(FRAMEBUFFER, COLOR_ATTACHMENT0, arr, 0, 1);
+  REQUIRE(gl.CheckFramebufferStatus(FRAMEBUFFER) == FRAMEBUFFER_COMPLETE);
+  gl.Viewport(0, 0, 4, 1);
+  full_quad({0.0f, 1.0f, 0.0f, 1.0f});
+  gl.GetTexImage(TEXTURE_1D_ARRAY, 0, RGBA, UNSIGNED_BYTE, rows_back);
+  for (int i = 0; i < 48; ++i) {
+    const bool layer1 = i >= 16 && i < 32;
+    CHECK(int(rows_back[i]) == (layer1 ? (i % 4 == 1 || i % 4 == 3 ? 255 : 0) : i * 5));
+  }
+  // Copies from the context's framebuffer: row 2 into the 1D texture, rows 1 and 2 into layers 0 and 1.
+  gl.BindFramebuffer(FRAMEBUFFER, 0);
+  gl.Viewport(0, 0, 8, 4);
+  gl.ClearColor(0.2f, 0.4f, 0.6f, 0.8f);
+  gl.Clear(COLOR_BUFFER_BIT);
+  gl.CopyTexSubImage1D(TEXTURE_1D, 0, 2, 1, 2, 3);
+  gl.GetTexImage(TEXTURE_1D, 0, RGBA, UNSIGNED_BYTE, back);
+  for (int i = 0; i < 8; ++i) CHECK(int(back[4 * i]) == (i >= 2 && i < 5 ? 51 : 255));
+  gl.CopyTexImage1D(TEXTURE_1D, 1, RGBA8, 0, 0, 4, 0);
+  gl.GetTexLevelParameteriv(TEXTURE_1D, 1, TEXTURE_WIDTH, &v);
+  CHECK(v == 4);
+  gl.CopyTexSubImage2D(TEXTURE_1D_ARRAY, 0, 0, 0, 0, 1, 4, 2);
+  gl.GetTexImage(TEXTURE_1D_ARRAY, 0, RGBA, UNSIGNED_BYTE, rows_back);
+  for (int i = 0; i < 32; ++i) CHECK(int(rows_back[i]) == (i % 4 == 0 ? 51 : i % 4 == 1 ? 102 : i % 4 == 2 ? 153 : 204));
+  CHECK(gl.GetError() == NO_ERROR);
+}
+
+TEST_CASE("1D texture calls reject bad input", "[texture][layers][1d][errors]") {
+  Context gl(4, 4);
+  const std::uint32_t one = gl.GenTexture(), flat = gl.GenTexture();
+  const std::uint8_t px[16] = {};
+  gl.TexImage1D(TEXTURE_1D, 0, RGBA8, 4, 0, RGBA, UNSIGNED_BYTE, px);
+  CHECK(gl.GetError() == INVALID_OPERATION);  // nothing bound
+  gl.BindTexture(TEXTURE_1D, one);
+  gl.TexImage1D(TEXTURE_2D, 0, RGBA8, 4, 0, RGBA, UNSIGNED_BYTE, px);
+  CHECK(gl.GetError() == INVALID_ENUM);
+  gl.TexImage1D(TEXTURE_1D, 0, RGBA8, -1, 0, RGBA, UNSIGNED_BYTE, px);
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.TexImage1D(TEXTURE_1D, 0, RGBA8, 4, 1, RGBA, UNSIGNED_BYTE, px);
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.TexImage1D(TEXTURE_1D, 0, RGBA8, 4, 0, RGBA, UNSIGNED_BYTE, px);
+  CHECK(gl.GetError() == NO_ERROR);
+  gl.TexSubImage1D(TEXTURE_1D, 0, 3, 2, RGBA, UNSIGNED_BYTE, px);
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.TexSubImage1D(TEXTURE_1D, 1, 0, 1, RGBA, UNSIGNED_BYTE, px);
+  CHECK(gl.GetError() == INVALID_OPERATION);  // level 1 not defined
+  gl.CopyTexSubImage1D(TEXTURE_1D, 0, 2, 0, 0, 3);
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.BindTexture(TEXTURE_2D, one);  // first bound as 1D
+  CHECK(gl.GetError() == INVALID_OPERATION);
+  gl.TexImage3D(TEXTURE_1D_ARRAY, 0, RGBA8, 1, 1, 1, 0, RGBA, UNSIGNED_BYTE, px);
+  CHECK(gl.GetError() == INVALID_ENUM);
+  gl.BindTexture(TEXTURE_2D, flat);
+  gl.TexImage2D(TEXTURE_2D, 0, RGBA8, 2, 2, 0, RGBA, UNSIGNED_BYTE, px);
+  gl.BindFramebuffer(FRAMEBUFFER, gl.GenFramebuffer());
+  gl.FramebufferTexture1D(FRAMEBUFFER, COLOR_ATTACHMENT0, TEXTURE_2D, one, 0);
+  CHECK(gl.GetError() == INVALID_ENUM);
+  gl.FramebufferTexture1D(FRAMEBUFFER, COLOR_ATTACHMENT0, TEXTURE_1D, flat, 0);
+  CHECK(gl.GetError() == INVALID_OPERATION);
+  gl.FramebufferTexture1D(FRAMEBUFFER, COLOR_ATTACHMENT0, TEXTURE_1D, one, -1);
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.FramebufferTextureLayer(FRAMEBUFFER, COLOR_ATTACHMENT0, one, 0, 0);
+  CHECK(gl.GetError() == INVALID_OPERATION);  // a 1D texture has no layers
+  CHECK(gl.GetError() == NO_ERROR);
+}
+
+TEST_CASE("the wide 1D calls give the one-lane calls' bytes", "[texture][layers][1d][wide]") {
+  auto render = [](const Program& program) {
+    Context gl(48, 40);
+    std::vector<std::uint8_t> noise(64 * 5 * 4);
+    std::uint32_t x = 777;
+    for (auto& b : noise) b = std::uint8_t((x = x * 1664525u + 1013904223u) >> 24);
+    const std::uint32_t one = gl.GenTexture(), arr = gl.GenTexture();
+    gl.ActiveTexture(TEXTURE0);
+    gl.BindTexture(TEXTURE_1D, one);
+    gl.TexImage1D(TEXTURE_1D, 0, RGBA8, 64, 0, RGBA, UNSIGNED_BYTE, noise.data());
+    gl.GenerateMipmap(TEXTURE_1D);
+    gl.TexParameteri(TEXTURE_1D, TEXTURE_MIN_FILTER, LINEAR_MIPMAP_LINEAR);
+    gl.TexParameteri(TEXTURE_1D, TEXTURE_WRAP_S, MIRRORED_REPEAT);
+    gl.ActiveTexture(TEXTURE0 + 1);
+    gl.BindTexture(TEXTURE_1D_ARRAY, arr);
+    gl.TexImage2D(TEXTURE_1D_ARRAY, 0, RGBA8, 64, 5, 0, RGBA, UNSIGNED_BYTE, noise.data());
+    gl.GenerateMipmap(TEXTURE_1D_ARRAY);
+    gl.TexParameteri(TEXTURE_1D_ARRAY, TEXTURE_MIN_FILTER, LINEAR_MIPMAP_NEAREST);
+    return DrawPerspectiveQuad(gl, program);
+  };
+  Wide1D wide;
+  Scalar1D scalar;
+  CheckSameImage(render(wide), render(scalar));
 }

@@ -310,8 +310,8 @@ class Context {
   /// Selects the texture unit that BindTexture, TexImage2D, TexParameter and GenerateMipmap act on: TEXTURE0 + i,
   /// i < kMaxTextureUnits (else INVALID_ENUM).
   void ActiveTexture(Enum unit);
-  /// Binds texture (0 unbinds) to TEXTURE_2D, TEXTURE_CUBE_MAP, TEXTURE_2D_ARRAY, TEXTURE_3D or
-  /// TEXTURE_2D_MULTISAMPLE of the active unit
+  /// Binds texture (0 unbinds) to TEXTURE_1D, TEXTURE_2D, TEXTURE_CUBE_MAP, TEXTURE_1D_ARRAY, TEXTURE_2D_ARRAY,
+  /// TEXTURE_3D or TEXTURE_2D_MULTISAMPLE of the active unit
   /// (each unit holds one texture of each target). Bad target: INVALID_ENUM;
   /// unknown id, or a texture first bound to the other target: INVALID_OPERATION. There is no default texture
   /// object: texture calls with nothing bound record INVALID_OPERATION.
@@ -334,12 +334,25 @@ class Context {
   /// non-square cube face: INVALID_VALUE; depth data for a colour format or the reverse, a packed type with a format
   /// of another component count, an integer format (RED_INTEGER ...: softgl has no integer textures), nothing
   /// bound: INVALID_OPERATION; no memory: OUT_OF_MEMORY.
+  /// Target TEXTURE_1D_ARRAY: `height` layers (up to kMaxArrayTextureLayers) of `width` texels, row j of the
+  /// image layer j, all kept at every mipmap level.
   void TexImage2D(Enum target, int level, Enum internal_format, int width, int height, int border, Enum format,
                   Enum type, const void* pixels);
-  /// Replaces the rectangle (x, y, width, height) of a defined level. Outside the level: INVALID_VALUE; level not
-  /// defined: INVALID_OPERATION.
+  /// Replaces the rectangle (x, y, width, height) of a defined level (of a TEXTURE_1D_ARRAY: layers y .. y +
+  /// height - 1). Outside the level: INVALID_VALUE; level not defined: INVALID_OPERATION.
   void TexSubImage2D(Enum target, int level, int x, int y, int width, int height, Enum format, Enum type,
                      const void* pixels);
+  /// Defines level `level` of the bound TEXTURE_1D: a row of `width` texels, with TexImage2D's formats, types,
+  /// unpacking and errors (another target: INVALID_ENUM). A 1D texture samples as a 2D one a texel high at its
+  /// middle (TEXTURE_WRAP_T unused): FragmentLanes::Texture1D, Texture1DLod, TextureSize1D.
+  void TexImage1D(Enum target, int level, Enum internal_format, int width, int border, Enum format, Enum type,
+                  const void* pixels);
+  /// Replaces texels x .. x + width - 1 of a defined level of the bound TEXTURE_1D, as TexSubImage2D.
+  void TexSubImage1D(Enum target, int level, int x, int width, Enum format, Enum type, const void* pixels);
+  /// CopyTexImage2D for TEXTURE_1D: the read framebuffer's row y, columns x .. x + width - 1.
+  void CopyTexImage1D(Enum target, int level, Enum internal_format, int x, int y, int width, int border);
+  /// CopyTexSubImage2D for TEXTURE_1D: into texels xoffset .. xoffset + width - 1.
+  void CopyTexSubImage1D(Enum target, int level, int xoffset, int x, int y, int width);
   /// Defines level `level` of the bound TEXTURE_2D_ARRAY (depth layers, all kept at every mipmap level) or
   /// TEXTURE_3D (depth slices, halved with each level as width and height are): the internal formats, pixel
   /// formats and types of TexImage2D; `pixels` holds `depth` images of height rows one after another (layer or
@@ -373,6 +386,7 @@ class Context {
   /// INVALID_ENUM; level out of range, a rectangle outside the level: INVALID_VALUE; nothing bound, level not
   /// defined, no buffer of the texture's kind to read: INVALID_OPERATION; incomplete read framebuffer:
   /// INVALID_FRAMEBUFFER_OPERATION.
+  /// Into a TEXTURE_1D_ARRAY, each row of the rectangle goes to one layer, from layer yoffset on.
   void CopyTexSubImage2D(Enum target, int level, int xoffset, int yoffset, int x, int y, int width, int height);
   /// CopyTexSubImage2D into layer `zoffset` of level `level` of the bound TEXTURE_2D_ARRAY (a slice of a
   /// TEXTURE_3D). Errors as CopyTexSubImage2D's; another target: INVALID_ENUM; zoffset outside the level's layers
@@ -380,11 +394,13 @@ class Context {
   void CopyTexSubImage3D(Enum target, int level, int xoffset, int yoffset, int zoffset, int x, int y, int width,
                          int height);
   /// Defines level `level` of the bound texture as width x height of `internal_format` (as TexImage2D, with its
-  /// errors) holding the read framebuffer's rectangle (x, y, width, height), as CopyTexSubImage2D copies it.
+  /// errors) holding the read framebuffer's rectangle (x, y, width, height), as CopyTexSubImage2D copies it (a
+  /// TEXTURE_1D_ARRAY of `height` layers, a row each).
   void CopyTexImage2D(Enum target, int level, Enum internal_format, int x, int y, int width, int height, int border);
-  /// Writes level `level` of the bound texture (TEXTURE_2D, a cube face, TEXTURE_2D_ARRAY or TEXTURE_3D) to
-  /// `pixels`, rows bottom first, laid out by the PACK_ settings as ReadPixels lays them out (an array's layers or
-  /// a 3D texture's slices one image after another, each `height` rows): the formats and types ReadPixels takes,
+  /// Writes level `level` of the bound texture (TEXTURE_1D, TEXTURE_2D, a cube face, TEXTURE_1D_ARRAY,
+  /// TEXTURE_2D_ARRAY or TEXTURE_3D) to `pixels`, rows bottom first, laid out by the PACK_ settings as ReadPixels
+  /// lays them out (a 1D array as one image, a layer a row; a 2D array's layers or a 3D texture's slices one image
+  /// after another, each `height` rows): the formats and types ReadPixels takes,
   /// but not STENCIL_INDEX; DEPTH_COMPONENT for a depth texture, DEPTH_STENCIL for a depth-stencil one. An
   /// undefined level writes nothing. Errors: bad target, format or type, DEPTH_STENCIL with another type:
   /// INVALID_ENUM; level out of range: INVALID_VALUE; nothing bound, DEPTH_COMPONENT for a colour texture or the
@@ -495,6 +511,10 @@ class Context {
   /// Errors: bad target or attachment: INVALID_ENUM; framebuffer 0 bound, unknown texture, textarget not the
   /// texture's: INVALID_OPERATION; level out of range: INVALID_VALUE.
   void FramebufferTexture2D(Enum target, Enum attachment, Enum textarget, std::uint32_t texture, int level);
+  /// Level `level` of a TEXTURE_1D texture, as FramebufferTexture2D attaches a 2D one (a framebuffer one pixel
+  /// high). textarget not TEXTURE_1D: INVALID_ENUM; the texture not a 1D one: INVALID_OPERATION. A TEXTURE_1D_ARRAY's
+  /// layer attaches by FramebufferTextureLayer, all of them by FramebufferTexture.
+  void FramebufferTexture1D(Enum target, Enum attachment, Enum textarget, std::uint32_t texture, int level);
   /// Attaches one layer of level `level` of a TEXTURE_2D_ARRAY (or one slice of a TEXTURE_3D) as
   /// FramebufferTexture2D attaches a 2D level: drawing renders into that layer alone. A layer the level does not
   /// have leaves the framebuffer FRAMEBUFFER_INCOMPLETE_ATTACHMENT. Errors: bad target or attachment:

@@ -192,6 +192,8 @@ inline constexpr Enum NONE = 0;
 inline constexpr Enum TEXTURE_2D = 0x0DE1;
 inline constexpr Enum TEXTURE_CUBE_MAP = 0x8513;
 inline constexpr Enum TEXTURE_2D_ARRAY = 0x8C1A;
+inline constexpr Enum TEXTURE_1D = 0x0DE0;
+inline constexpr Enum TEXTURE_1D_ARRAY = 0x8C18;
 inline constexpr Enum TEXTURE_3D = 0x806F;
 inline constexpr Enum TEXTURE_2D_MULTISAMPLE = 0x9100;
 inline constexpr Enum TEXTURE_CUBE_MAP_POSITIVE_X = 0x8515;
@@ -393,6 +395,8 @@ inline constexpr Enum TEXTURE_BINDING_2D = 0x8069;
 inline constexpr Enum TEXTURE_BINDING_CUBE_MAP = 0x8514;
 inline constexpr Enum TEXTURE_BINDING_2D_ARRAY = 0x8C1D;
 inline constexpr Enum TEXTURE_BINDING_3D = 0x806A;
+inline constexpr Enum TEXTURE_BINDING_1D = 0x8068;
+inline constexpr Enum TEXTURE_BINDING_1D_ARRAY = 0x8C1C;
 // GetVertexAttrib* (VERTEX_ATTRIB_ARRAY_DIVISOR and the others an attribute array has).
 inline constexpr Enum VERTEX_ATTRIB_ARRAY_ENABLED = 0x8622;
 inline constexpr Enum VERTEX_ATTRIB_ARRAY_SIZE = 0x8623;

@@ -247,6 +247,15 @@ struct LodTextures {
     return shader_detail::Lod(textures, unit, shader_detail::Coords(str.x, str.y, str.z), lod,
                               &Textures::Sample3DLodLanes);
   }
+  /// textureLod(sampler1D, s, lod).
+  vec4 Texture1DLod(int unit, const Float& s, Float lod) const {
+    return shader_detail::Lod(textures, unit, shader_detail::Coords(s, 0.0f), lod, &Textures::Sample1DLodLanes);
+  }
+  /// textureLod(sampler1DArray, vec2(s, layer), lod).
+  vec4 Texture1DArrayLod(int unit, const vec2& s_layer, Float lod) const {
+    return shader_detail::Lod(textures, unit, shader_detail::Coords(s_layer.x, s_layer.y), lod,
+                              &Textures::Sample1DArrayLodLanes);
+  }
 };
 
 /// What a wide vertex stage reads: the attributes of 16 vertices (and, from LodTextures, the textures).
@@ -477,6 +486,31 @@ struct FragmentLanes {
     return shader_detail::Lod(textures, unit, shader_detail::Coords(str.x, str.y, str.z), lod,
                               &Textures::Sample3DLodLanes);
   }
+  /// texture(sampler1D, s): the level of detail from s's derivatives across each quad.
+  vec4 Texture1D(int unit, const Float& s, float bias = 0.0f) const {
+    Textures::Lanes c = shader_detail::Coords(s, 0.0f);
+    return shader_detail::Sample(textures, unit, c, vec3(dFdx(s), 0.0f, 0.0f), vec3(dFdy(s), 0.0f, 0.0f), bias,
+                                 &Textures::Sample1DLanes);
+  }
+  /// textureLod(sampler1D, s, lod).
+  vec4 Texture1DLod(int unit, const Float& s, Float lod) const {
+    return shader_detail::Lod(textures, unit, shader_detail::Coords(s, 0.0f), lod, &Textures::Sample1DLodLanes);
+  }
+  /// texture(sampler1DArray, vec2(s, layer)): the layer floor(layer + 0.5), clamped to the texture's layers; the
+  /// level of detail from s's derivatives.
+  vec4 Texture1DArray(int unit, const vec2& s_layer, float bias = 0.0f) const {
+    Textures::Lanes c = shader_detail::Coords(s_layer.x, s_layer.y);
+    return shader_detail::Sample(textures, unit, c, vec3(dFdx(s_layer.x), 0.0f, 0.0f),
+                                 vec3(dFdy(s_layer.x), 0.0f, 0.0f), bias, &Textures::Sample1DArrayLanes);
+  }
+  /// textureLod(sampler1DArray, vec2(s, layer), lod).
+  vec4 Texture1DArrayLod(int unit, const vec2& s_layer, Float lod) const {
+    return shader_detail::Lod(textures, unit, shader_detail::Coords(s_layer.x, s_layer.y), lod,
+                              &Textures::Sample1DArrayLodLanes);
+  }
+  /// textureSize(sampler1D, level) and textureSize(sampler1DArray, level) (width, layers).
+  int TextureSize1D(int unit, int level = 0) const { return textures->Size1D(unit, level); }
+  glm::ivec2 TextureSize1DArray(int unit, int level = 0) const { return textures->Size1DArray(unit, level); }
   /// texture(sampler2DShadow, vec3(uv, ref)): percentage-closer filtering of the comparison (see
   /// Textures::SampleShadow).
   Float TextureShadow(int unit, const vec3& uv_ref) const {
@@ -616,6 +650,14 @@ struct FragmentIn {
   /// texture(sampler3D, str) with str a varying.
   glm::vec4 Texture3D(int unit, glm::vec3 Varyings::*str, float bias = 0.0f) const {
     return textures->Sample3D(unit, varyings.*str, dFdx(str), dFdy(str), bias);
+  }
+  /// texture(sampler1D, s) with s a varying.
+  glm::vec4 Texture1D(int unit, float Varyings::*s, float bias = 0.0f) const {
+    return textures->Sample1D(unit, varyings.*s, dFdx(s), dFdy(s), bias);
+  }
+  /// texture(sampler1DArray, vec2(s, layer)) with (s, layer) a varying; the level of detail from s alone.
+  glm::vec4 Texture1DArray(int unit, glm::vec2 Varyings::*s_layer, float bias = 0.0f) const {
+    return textures->Sample1DArray(unit, varyings.*s_layer, dFdx(s_layer).x, dFdy(s_layer).x, bias);
   }
 
   /// Screen-space derivative of a varying along x (GLSL dFdx, within the 2x2 quad).

@@ -71,6 +71,21 @@ class Textures {
   /// textureSize(sampler3D, level): width, height and depth; (0, 0, 0) if there is none.
   glm::ivec3 Size3D(int unit, int level = 0) const;
 
+  /// texture(sampler1D, s): filtered sample of unit's TEXTURE_1D (a row of texels: as a 2D texture one texel high
+  /// sampled at its middle, TEXTURE_WRAP_T unused); the level of detail from s's derivatives.
+  glm::vec4 Sample1D(int unit, float s, float ds_dx, float ds_dy, float bias = 0.0f) const;
+  /// textureLod(sampler1D, s, lod).
+  glm::vec4 Sample1DLod(int unit, float s, float lod) const;
+  /// texture(sampler1DArray, vec2(s, layer)): Sample1D on one layer of unit's TEXTURE_1D_ARRAY, the layer
+  /// floor(layer + 0.5) clamped to the texture's layers.
+  glm::vec4 Sample1DArray(int unit, glm::vec2 s_layer, float ds_dx, float ds_dy, float bias = 0.0f) const;
+  /// textureLod(sampler1DArray, vec2(s, layer), lod).
+  glm::vec4 Sample1DArrayLod(int unit, glm::vec2 s_layer, float lod) const;
+  /// textureSize(sampler1D, level): the width of a level, 0 if there is none.
+  int Size1D(int unit, int level = 0) const;
+  /// textureSize(sampler1DArray, level): width and layers; (0, 0) if there is none.
+  glm::ivec2 Size1DArray(int unit, int level = 0) const;
+
   /// texelFetch(sampler2D, texel, level): texel (x, y) of a level of unit's 2D texture, unfiltered (an sRGB colour
   /// decoded); (0, 0, 0, 0) outside the level, for a level the texture does not have, or an incomplete texture.
   glm::vec4 Fetch(int unit, glm::ivec2 texel, int level = 0) const;
@@ -100,6 +115,12 @@ class Textures {
   void SampleArrayShadowLanes(int unit, const Lanes& c, const float ref[16], float out[16]) const;
   void Sample3DLanes(int unit, const Lanes& c, float bias, float out[4][16]) const;  ///< Sample3D
   void Sample3DLodLanes(int unit, const Lanes& c, const float lod[16], float out[4][16]) const;
+  /// Sample1D and Sample1DLod: s the coordinate (t and r unread).
+  void Sample1DLanes(int unit, const Lanes& c, float bias, float out[4][16]) const;
+  void Sample1DLodLanes(int unit, const Lanes& c, const float lod[16], float out[4][16]) const;
+  /// Sample1DArray and Sample1DArrayLod: s the coordinate, t the layer (r unread).
+  void Sample1DArrayLanes(int unit, const Lanes& c, float bias, float out[4][16]) const;
+  void Sample1DArrayLodLanes(int unit, const Lanes& c, const float lod[16], float out[4][16]) const;
   /// Fetch and FetchSample, lane by lane: texel (x[l], y[l]) at level[l] (or sample[l]).
   void FetchLanes(int unit, const int x[16], const int y[16], const int level[16], float out[4][16]) const;
   void FetchSampleLanes(int unit, const int x[16], const int y[16], const int sample[16], float out[4][16]) const;
@@ -109,6 +130,8 @@ class Textures {
   const detail::TextureView* unit_2d_array[kMaxTextureUnits] = {};
   const detail::TextureView* unit_3d[kMaxTextureUnits] = {};
   const detail::TextureView* unit_2d_ms[kMaxTextureUnits] = {};
+  const detail::TextureView* unit_1d[kMaxTextureUnits] = {};
+  const detail::TextureView* unit_1d_array[kMaxTextureUnits] = {};
   /// Units from this one on have no texture bound (their entries above are null): what a draw copies and compares
   /// stops here.
   int units = kMaxTextureUnits;

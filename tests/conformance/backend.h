@@ -52,10 +52,13 @@ enum class Program {
   kGeometryLineAdjacency,  // lines with adjacency: the line, its ends coloured as adjacent vertices 0 and 3
   kGeometryLayer,  // triangles, three invocations: into layer int(extra.w) + gl_InvocationID, the colour times
                    // 1 - invocation / 4
+  kTexture1D,       // colour = texture(1D texture on unit 7, extra.x)
+  kTexture1DArray,  // colour = texture(1D array on unit 7, extra.xy): layer extra.y
 };
 
 /// A TEXTURE_2D_ARRAY or TEXTURE_3D defined by TexImage3D: RGBA8 from `rgba` (unit 3 for an array, 4 for 3D), or
-/// an array of DEPTH_COMPONENT32F from `depth` compared by `compare_func` (unit 5).
+/// an array of DEPTH_COMPONENT32F from `depth` compared by `compare_func` (unit 5); or a TEXTURE_1D (TexImage1D,
+/// `width` texels) or TEXTURE_1D_ARRAY (TexImage2D, `depth_or_layers` rows) of RGBA8 on unit 7.
 struct LayeredDesc {
   Enum target = softgl::TEXTURE_2D_ARRAY;
   int width = 0, height = 0, depth_or_layers = 0;

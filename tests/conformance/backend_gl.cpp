@@ -113,6 +113,20 @@ out vec4 o_color;
 void main() { o_color = texture(u_array, v_extra.xyz); }
 )";
 
+constexpr const char* kTexture1DFragment = R"(#version 330 core
+in vec4 v_extra;
+uniform sampler1D u_1d;
+out vec4 o_color;
+void main() { o_color = texture(u_1d, v_extra.x); }
+)";
+
+constexpr const char* kTexture1DArrayFragment = R"(#version 330 core
+in vec4 v_extra;
+uniform sampler1DArray u_1d_array;
+out vec4 o_color;
+void main() { o_color = texture(u_1d_array, v_extra.xy); }
+)";
+
 constexpr const char* kVolumeFragment = R"(#version 330 core
 in vec4 v_extra;
 uniform sampler3D u_volume;
@@ -321,6 +335,8 @@ class GlBackend final : public Backend {
       programs_[13] = Link(kColorFragment, &layer_error, kLayerVertexShader);
       if (!layer_error.empty()) programs_[13] = 0;
     }
+    programs_[19] = Link(kTexture1DFragment, error);
+    programs_[20] = Link(kTexture1DArrayFragment, error);
     programs_[15] = Link(kGeometryFragment, error, kVertexShader, kSpritesGeometry);
     programs_[16] = Link(kGeometryFragment, error, kVertexShader, kAdjacencyGeometry);
     programs_[17] = Link(kGeometryFragment, error, kVertexShader, kLineAdjacencyGeometry);
@@ -342,6 +358,10 @@ class GlBackend final : public Backend {
     glUniform1i(glGetUniformLocation(programs_[8], "u_shadow_array"), 5);
     glUseProgram(programs_[9]);
     glUniform1i(glGetUniformLocation(programs_[9], "u_ms"), 6);
+    glUseProgram(programs_[19]);
+    glUniform1i(glGetUniformLocation(programs_[19], "u_1d"), 7);
+    glUseProgram(programs_[20]);
+    glUniform1i(glGetUniformLocation(programs_[20], "u_1d_array"), 7);
     if (!error->empty()) return false;
     glGenVertexArrays(1, &vao_);
     glBindVertexArray(vao_);
@@ -579,10 +599,15 @@ class GlBackend final : public Backend {
     glGenTextures(1, &tex);
     const bool depth = !d.depth.empty();
     const GLenum target = GLenum(d.target);
-    glActiveTexture(GL_TEXTURE0 + (depth ? 5 : d.target == softgl::TEXTURE_3D ? 4 : 3));
+    const bool one_d = d.target == softgl::TEXTURE_1D || d.target == softgl::TEXTURE_1D_ARRAY;
+    glActiveTexture(GL_TEXTURE0 + (one_d ? 7 : depth ? 5 : d.target == softgl::TEXTURE_3D ? 4 : 3));
     glBindTexture(target, tex);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    if (depth)
+    if (d.target == softgl::TEXTURE_1D)
+      glTexImage1D(target, 0, GL_RGBA8, d.width, 0, GL_RGBA, GL_UNSIGNED_BYTE, d.rgba.data());
+    else if (d.target == softgl::TEXTURE_1D_ARRAY)
+      glTexImage2D(target, 0, GL_RGBA8, d.width, d.depth_or_layers, 0, GL_RGBA, GL_UNSIGNED_BYTE, d.rgba.data());
+    else if (depth)
       glTexImage3D(target, 0, GL_DEPTH_COMPONENT32F, d.width, d.height, d.depth_or_layers, 0, GL_DEPTH_COMPONENT,
                    GL_FLOAT, d.depth.data());
     else
@@ -894,7 +919,7 @@ class GlBackend final : public Backend {
   OSMesaContext ctx_;
   int w_, h_;
   std::vector<std::uint8_t> buffer_;
-  GLuint programs_[19] = {};
+  GLuint programs_[21] = {};
   GLuint instanced_ = 0;
   GLuint rtt_color_ = 0;
   GLuint vao_ = 0, vbo_ = 0, ebo_ = 0;

@@ -98,7 +98,7 @@ struct LayerVaryings {
   glm::vec4 coord;
 };
 
-// kArray, kVolume and kArrayShadow: texture(unit 3, 4 or 5, extra).
+// kArray, kVolume and kArrayShadow: texture(unit 3, 4 or 5, extra); kTexture1D and kTexture1DArray: unit 7.
 struct LayeredShader : softgl::Shader<LayeredShader, LayerVaryings> {
   softgl::Enum target = softgl::TEXTURE_2D_ARRAY;
   bool shadow = false;
@@ -111,6 +111,10 @@ struct LayeredShader : softgl::Shader<LayeredShader, LayerVaryings> {
     const glm::vec2 dx(in.dFdx(&LayerVaryings::coord)), dy(in.dFdy(&LayerVaryings::coord));
     if (shadow)
       out.color[0] = glm::vec4(in.textures->SampleArrayShadow(5, glm::vec3(c), c.w, dx, dy), 0.0f, 0.0f, 1.0f);
+    else if (target == softgl::TEXTURE_1D)
+      out.color[0] = in.textures->Sample1D(7, c.x, dx.x, dy.x);
+    else if (target == softgl::TEXTURE_1D_ARRAY)
+      out.color[0] = in.textures->Sample1DArray(7, glm::vec2(c), dx.x, dy.x);
     else if (target == softgl::TEXTURE_3D)
       out.color[0] = in.textures->Sample3D(4, glm::vec3(c), glm::vec3(in.dFdx(&LayerVaryings::coord)),
                                            glm::vec3(in.dFdy(&LayerVaryings::coord)));
@@ -336,6 +340,8 @@ class SoftglBackend final : public Backend {
  public:
   SoftglBackend(int w, int h) : gl_(w, h) {
     volume_.target = softgl::TEXTURE_3D;
+    texture_1d_.target = softgl::TEXTURE_1D;
+    texture_1d_array_.target = softgl::TEXTURE_1D_ARRAY;
     array_shadow_.shadow = true;
     vao_ = gl_.GenVertexArray();
     vbo_ = gl_.GenBuffer();
@@ -411,6 +417,8 @@ class SoftglBackend final : public Backend {
       case Program::kShadow: gl_.UseProgram(shadow_); break;
       case Program::kArray: gl_.UseProgram(array_); break;
       case Program::kVolume: gl_.UseProgram(volume_); break;
+      case Program::kTexture1D: gl_.UseProgram(texture_1d_); break;
+      case Program::kTexture1DArray: gl_.UseProgram(texture_1d_array_); break;
       case Program::kArrayShadow: gl_.UseProgram(array_shadow_); break;
       case Program::kFetchSample: gl_.UseProgram(fetch_sample_); break;
       case Program::kOutputs: gl_.UseProgram(outputs_); break;
@@ -568,10 +576,16 @@ class SoftglBackend final : public Backend {
 
   void SetLayeredTexture(const LayeredDesc& d) override {
     const bool depth = !d.depth.empty();
-    gl_.ActiveTexture(softgl::TEXTURE0 + (depth ? 5 : d.target == softgl::TEXTURE_3D ? 4 : 3));
+    const bool one_d = d.target == softgl::TEXTURE_1D || d.target == softgl::TEXTURE_1D_ARRAY;
+    gl_.ActiveTexture(softgl::TEXTURE0 + (one_d ? 7 : depth ? 5 : d.target == softgl::TEXTURE_3D ? 4 : 3));
     gl_.BindTexture(d.target, gl_.GenTexture());
     gl_.PixelStore(softgl::UNPACK_ALIGNMENT, 1);
-    if (depth)
+    if (d.target == softgl::TEXTURE_1D)
+      gl_.TexImage1D(d.target, 0, softgl::RGBA8, d.width, 0, softgl::RGBA, softgl::UNSIGNED_BYTE, d.rgba.data());
+    else if (d.target == softgl::TEXTURE_1D_ARRAY)
+      gl_.TexImage2D(d.target, 0, softgl::RGBA8, d.width, d.depth_or_layers, 0, softgl::RGBA, softgl::UNSIGNED_BYTE,
+                     d.rgba.data());
+    else if (depth)
       gl_.TexImage3D(d.target, 0, softgl::DEPTH_COMPONENT32F, d.width, d.height, d.depth_or_layers, 0,
                      softgl::DEPTH_COMPONENT, softgl::FLOAT, d.depth.data());
     else
@@ -875,7 +889,7 @@ class SoftglBackend final : public Backend {
   TextureShader texture_;
   CubeShader cube_;
   ShadowShader shadow_;
-  LayeredShader array_, volume_, array_shadow_;
+  LayeredShader array_, volume_, array_shadow_, texture_1d_, texture_1d_array_;
   FetchSampleShader fetch_sample_;
   OutputsShader outputs_;
   PointCoordShader point_coord_;

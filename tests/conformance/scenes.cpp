@@ -1979,6 +1979,71 @@ void TextureArray(Backend& b) {
          Program::kArray);
 }
 
+// 1D textures: a mipmapped 32-texel TEXTURE_1D on receding floors (trilinear, REPEAT and MIRRORED_REPEAT), the
+// same magnified with NEAREST and LINEAR under CLAMP_TO_EDGE and CLAMP_TO_BORDER (TEXTURE_WRAP_T set to
+// CLAMP_TO_BORDER too, which a 1D texture does not use), and a TEXTURE_1D_ARRAY of 5 layers: mipmapped on a floor,
+// and a band per layer (the layer floor(y + 0.5), clamped) with NEAREST.
+void Texture1D(Backend& b) {
+  ClearBlack(b);
+  LayeredDesc d;
+  d.target = TEXTURE_1D;
+  d.width = 32;
+  d.height = d.depth_or_layers = 1;
+  d.rgba = LayeredPattern(32, 1, 1);
+  d.generate_mipmap = true;
+  d.min_filter = LINEAR_MIPMAP_LINEAR;
+  const glm::mat4 mvp = glm::perspective(glm::radians(60.0f), 1.0f, 0.3f, 60.0f) *
+                        glm::lookAt(glm::vec3(0, 1, 1), glm::vec3(0, 0, -8), glm::vec3(0, 1, 0));
+  const Enum wraps[2] = {REPEAT, MIRRORED_REPEAT};
+  for (int q = 0; q < 2; ++q) {
+    d.wrap_s = wraps[q];
+    b.SetLayeredTexture(d);
+    b.Viewport(0, 64 + q * 32, 64, 32);
+    b.Draw(TRIANGLES,
+           QuadWith(Floor(mvp, -6, 6, 1, -7), {glm::vec4(-0.25f, 0, 0, 0), glm::vec4(1.25f, 0, 0, 0),
+                                                glm::vec4(1.25f, 10, 0, 0), glm::vec4(-0.25f, 10, 0, 0)}),
+           Program::kTexture1D);
+  }
+  b.Viewport(0, 0, kSize, kSize);
+  d.generate_mipmap = false;
+  d.wrap_t = CLAMP_TO_BORDER;
+  const Enum filters[2] = {NEAREST, LINEAR}, edges[2] = {CLAMP_TO_EDGE, CLAMP_TO_BORDER};
+  for (int k = 0; k < 4; ++k) {
+    d.min_filter = d.mag_filter = filters[k % 2];
+    d.wrap_s = edges[k / 2];
+    b.SetLayeredTexture(d);
+    const float y0 = float(k) * 16;
+    b.Draw(TRIANGLES,
+           QuadWith({Win(0, y0), Win(64, y0), Win(64, y0 + 16), Win(0, y0 + 16)},
+                    {glm::vec4(-0.2f, 0, 0, 0), glm::vec4(1.2f, 0, 0, 0), glm::vec4(1.2f, 0, 0, 0),
+                     glm::vec4(-0.2f, 0, 0, 0)}),
+           Program::kTexture1D);
+  }
+  LayeredDesc a;
+  a.target = TEXTURE_1D_ARRAY;
+  a.width = 16;
+  a.height = 1;
+  a.depth_or_layers = 5;
+  a.rgba = LayeredPattern(16, 1, 5);
+  a.generate_mipmap = true;
+  a.min_filter = LINEAR_MIPMAP_LINEAR;
+  b.SetLayeredTexture(a);
+  b.Viewport(64, 64, 64, 64);
+  b.Draw(TRIANGLES,
+         QuadWith(Floor(mvp, -6, 6, 1, -7), {glm::vec4(0, 0.4f, 0, 0), glm::vec4(3, 0.4f, 0, 0),
+                                              glm::vec4(3, 3.6f, 0, 0), glm::vec4(0, 3.6f, 0, 0)}),
+         Program::kTexture1DArray);
+  b.Viewport(0, 0, kSize, kSize);
+  a.generate_mipmap = false;
+  a.min_filter = a.mag_filter = NEAREST;
+  b.SetLayeredTexture(a);
+  b.Draw(TRIANGLES,
+         QuadWith({Win(64, 0), Win(128, 0), Win(128, 64), Win(64, 64)},
+                  {glm::vec4(0, -1.3f, 0, 0), glm::vec4(1, -1.3f, 0, 0), glm::vec4(1, 6.3f, 0, 0),
+                   glm::vec4(0, 6.3f, 0, 0)}),
+         Program::kTexture1DArray);
+}
+
 // A mipmapped 16 x 16 x 8 3D texture: trilinear filtering on a receding plane whose r runs through the slices (the
 // level of detail takes r's derivatives too), REPEAT and CLAMP_TO_EDGE in r, and NEAREST slices.
 void Texture3D(Backend& b) {
@@ -2168,6 +2233,7 @@ const std::vector<SceneInfo>& Scenes() {
       {"shadow_compare", kSize, kSize, Check::kTexture, ShadowCompare},
       {"texture_array", kSize, kSize, Check::kTexture, TextureArray},
       {"texture_3d", kSize, kSize, Check::kTexture, Texture3D},
+      {"texture_1d", kSize, kSize, Check::kTexture, Texture1D},
       {"shadow_array", kSize, kSize, Check::kTexture, ShadowArray},
       {"model", 256, 256, Check::kColor, Model},
   };

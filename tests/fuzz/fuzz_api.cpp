@@ -39,7 +39,9 @@ struct FuzzShader : softgl::Shader<FuzzShader, Vary> {
     out.color[3] = in.TextureArray(4, &Vary::dir) + in.Texture3D(5, &Vary::dir) +
                    glm::vec4(in.textures->SampleArrayShadow(6, in.varyings.dir, in.varyings.a.x, {}, {})) +
                    in.textures->FetchSample(7, texel, small(in.varyings.a.y * 9.0f) - 1) +
-                   in.textures->Fetch(0, texel, small(in.varyings.a.z * 4.0f) - 1);
+                   in.textures->Fetch(0, texel, small(in.varyings.a.z * 4.0f) - 1) +
+                   in.textures->Sample1D(8, in.varyings.uv.x, in.varyings.a.x, in.varyings.a.y) +
+                   in.textures->Sample1DArray(9, in.varyings.uv, in.varyings.a.z, 0.0f);
     out.depth = in.varyings.a.z;
     return in.varyings.a.w > -0.5f;
   }
@@ -113,7 +115,7 @@ constexpr std::uint32_t kIndexTypes[] = {UNSIGNED_BYTE, UNSIGNED_SHORT, UNSIGNED
 constexpr std::uint32_t kBufferTargets[] = {ARRAY_BUFFER, ELEMENT_ARRAY_BUFFER, COPY_READ_BUFFER, COPY_WRITE_BUFFER,
                                             TRANSFORM_FEEDBACK_BUFFER};
 constexpr std::uint32_t kTexTargets[] = {TEXTURE_2D, TEXTURE_CUBE_MAP, TEXTURE_2D_ARRAY, TEXTURE_3D,
-                                         TEXTURE_2D_MULTISAMPLE};
+                                         TEXTURE_2D_MULTISAMPLE, TEXTURE_1D, TEXTURE_1D_ARRAY};
 constexpr std::uint32_t kImageTargets[] = {TEXTURE_2D,
                                            TEXTURE_CUBE_MAP_POSITIVE_X, TEXTURE_CUBE_MAP_NEGATIVE_X,
                                            TEXTURE_CUBE_MAP_POSITIVE_Y, TEXTURE_CUBE_MAP_NEGATIVE_Y,
@@ -331,8 +333,32 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         const int w = in.Amount(0, 16, 64, kMaxTextureSize), h = in.Amount(0, 16, 64, kMaxTextureSize);
         const bool small = w >= 0 && h >= 0 && w <= 64 && h <= 64;
         if (small) scratch.assign(std::size_t(w) * std::size_t(h) * 16 + 64, in.Byte());
-        gl.TexImage2D(in.Enum(kImageTargets), in.Int(-1, 5), in.Enum(kInternal), w, h, in.Byte() < 8,
-                      in.Enum(kFormats), in.Enum(kPixelTypes), small && in.Byte() % 4 ? scratch.data() : nullptr);
+        const void* pixels = small && in.Byte() % 4 ? scratch.data() : nullptr;
+        switch (in.Byte() % 8) {  // 1D textures and 1D arrays now and then
+          case 0:
+            gl.TexImage1D(in.Byte() % 4 ? TEXTURE_1D : TEXTURE_2D, in.Int(-1, 5), in.Enum(kInternal), w, in.Byte() < 8,
+                          in.Enum(kFormats), in.Enum(kPixelTypes), pixels);
+            break;
+          case 1:
+            gl.TexSubImage1D(TEXTURE_1D, in.Int(-1, 3), in.Int(-2, 8), w, in.Enum(kFormats), in.Enum(kPixelTypes), pixels);
+            break;
+          case 2:
+            gl.TexImage2D(TEXTURE_1D_ARRAY, in.Int(-1, 5), in.Enum(kInternal), w, h, in.Byte() < 8, in.Enum(kFormats),
+                          in.Enum(kPixelTypes), pixels);
+            break;
+          case 3:
+            if (in.Byte() % 2) gl.CopyTexImage1D(TEXTURE_1D, in.Int(-1, 3), in.Enum(kFormats), in.Int(-60, 60), in.Int(-60, 60), in.Int(-1, 64), in.Byte() < 8);
+            else gl.CopyTexSubImage1D(TEXTURE_1D, in.Int(-1, 3), in.Int(-2, 8), in.Int(-60, 60), in.Int(-60, 60), in.Int(-1, 64));
+            break;
+          case 4:
+            gl.FramebufferTexture1D(in.Enum(kFbTargets), in.Enum(kAttachments), in.Byte() % 4 ? TEXTURE_1D : TEXTURE_2D, id(),
+                                    in.Int(-1, 4));
+            break;
+          default:
+            gl.TexImage2D(in.Enum(kImageTargets), in.Int(-1, 5), in.Enum(kInternal), w, h, in.Byte() < 8,
+                          in.Enum(kFormats), in.Enum(kPixelTypes), pixels);
+            break;
+        }
         break;
       }
       case 23: {
