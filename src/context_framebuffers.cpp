@@ -2,6 +2,7 @@
 // reading back (ReadPixels and its pack layout, CopyTexImage2D, GetTexImage), and BlitFramebuffer.
 #include "context_state.h"
 #include "pixel_transfer.h"
+#include "texture_compression.h"
 
 #include <algorithm>
 #include <cmath>
@@ -17,7 +18,8 @@ Enum FramebufferStatus(const FramebufferObject& f) {
     if (!a.Present()) continue;
     any = true;
     const detail::TextureLevel* l = a.Level();
-    if (!l->Defined() || detail::IsDepthFormat(l->format) || detail::HasStencil(l->format) || a.layer >= l->depth)
+    if (!l->Defined() || detail::IsDepthFormat(l->format) || detail::HasStencil(l->format) || a.layer >= l->depth ||
+        l->compressed != 0)  // (a compressed format is not colour-renderable)
       return FRAMEBUFFER_INCOMPLETE_ATTACHMENT;
   }
   if (f.depth.Present()) {
@@ -433,6 +435,7 @@ void Context::CopyTexSubImage2D(Enum target, int level, int xoffset, int yoffset
   detail::TextureObject* tex = s.Bound(target, &face);
   if (!tex || !tex->levels[face][level].Defined()) return s.SetError(INVALID_OPERATION, __func__, "no texture bound, or that level is not defined");
   detail::TextureLevel& lv = tex->levels[face][level];
+  if (lv.compressed != 0) return s.SetError(INVALID_OPERATION, __func__, "the level is compressed: replace its blocks with CompressedTexSubImage*");
   if (xoffset < 0 || yoffset < 0 || width < 0 || height < 0 || std::int64_t(xoffset) + width > lv.width ||
       std::int64_t(yoffset) + height > std::int64_t(lv.height) * lv.depth)  // (a 1D array's rows are its layers)
     return s.SetError(INVALID_VALUE, __func__, "the rectangle is outside the level");
@@ -452,6 +455,7 @@ void Context::CopyTexSubImage3D(Enum target, int level, int xoffset, int yoffset
   detail::TextureObject* tex = s.Bound(target);
   if (!tex || !tex->levels[0][level].Defined()) return s.SetError(INVALID_OPERATION, __func__, "no texture bound, or that level is not defined");
   detail::TextureLevel& lv = tex->levels[0][level];
+  if (lv.compressed != 0) return s.SetError(INVALID_OPERATION, __func__, "the level is compressed: replace its blocks with CompressedTexSubImage*");
   if (xoffset < 0 || yoffset < 0 || zoffset < 0 || width < 0 || height < 0 ||
       std::int64_t(xoffset) + width > lv.width || std::int64_t(yoffset) + height > lv.height || zoffset >= lv.depth)
     return s.SetError(INVALID_VALUE, __func__, "the rectangle is outside the level, or the layer beyond its depth");
@@ -466,6 +470,8 @@ void Context::CopyTexSubImage3D(Enum target, int level, int xoffset, int yoffset
 void Context::CopyTexImage2D(Enum target, int level, Enum internal_format, int x, int y, int width, int height,
                              int border) {
   auto& s = *state_;
+  internal_format = detail::UncompressedForGeneric(internal_format);
+  if (detail::CompressedFormatOf(internal_format)) return s.SetError(INVALID_OPERATION, __func__, "softgl does not compress: define a compressed level from its blocks with CompressedTexImage*");
   const bool rows_of_layers = target == TEXTURE_1D_ARRAY;
   if (!IsTexImageTarget(target) && !rows_of_layers) return s.SetError(INVALID_ENUM, __func__, "target must be TEXTURE_2D, a TEXTURE_CUBE_MAP_* face or TEXTURE_1D_ARRAY");
   if (level < 0 || level >= detail::kMaxLevels || width < 0 || height < 0 || width > kMaxTextureSize ||
@@ -492,6 +498,8 @@ void Context::CopyTexImage2D(Enum target, int level, Enum internal_format, int x
 
 void Context::CopyTexImage1D(Enum target, int level, Enum internal_format, int x, int y, int width, int border) {
   auto& s = *state_;
+  internal_format = detail::UncompressedForGeneric(internal_format);
+  if (detail::CompressedFormatOf(internal_format)) return s.SetError(INVALID_OPERATION, __func__, "softgl does not compress: define a compressed level from its blocks with CompressedTexImage*");
   if (target != TEXTURE_1D) return s.SetError(INVALID_ENUM, __func__, "target must be TEXTURE_1D");
   if (level < 0 || level >= detail::kMaxLevels || width < 0 || width > kMaxTextureSize || border != 0 ||
       detail::FormatComponents(internal_format) == 0)
@@ -517,6 +525,7 @@ void Context::CopyTexSubImage1D(Enum target, int level, int xoffset, int x, int 
   detail::TextureObject* tex = s.Bound(target);
   if (!tex || !tex->levels[0][level].Defined()) return s.SetError(INVALID_OPERATION, __func__, "no texture bound, or that level is not defined");
   detail::TextureLevel& lv = tex->levels[0][level];
+  if (lv.compressed != 0) return s.SetError(INVALID_OPERATION, __func__, "the level is compressed: replace its blocks with CompressedTexSubImage*");
   if (xoffset < 0 || width < 0 || std::int64_t(xoffset) + width > lv.width) return s.SetError(INVALID_VALUE, __func__, "the span is outside the level");
   if (!CheckCopySource(s, __func__, detail::IsDepthFormat(lv.format))) return;
   try {

@@ -1,6 +1,7 @@
 // context_queries.cpp — state queries (GetIntegerv and its kin, GetString) and query objects (occlusion,
 // primitives generated, time elapsed).
 #include "context_state.h"
+#include "texture_compression.h"
 
 #include <cmath>
 
@@ -164,6 +165,11 @@ bool QueryState(ContextState& s, Enum pname, StateValue& out) {
     }
     case MAX_TEXTURE_MAX_ANISOTROPY: return put(Kind::kFloat, {double(detail::kMaxAnisotropy)});
     case MAX_RENDERBUFFER_SIZE: return integer(kMaxFramebufferSize);
+    case NUM_COMPRESSED_TEXTURE_FORMATS: return integer(4);
+    case COMPRESSED_TEXTURE_FORMATS: {
+      const Enum* f = detail::kListedCompressedFormats;
+      return put(Kind::kInt, {double(f[0]), double(f[1]), double(f[2]), double(f[3])});
+    }
     case MAX_VIEWPORT_DIMS: return put(Kind::kInt, {double(kMaxFramebufferSize), double(kMaxFramebufferSize)});
     case MAX_VARYING_COMPONENTS: return integer(kMaxVaryingFloats);
     case MAX_GEOMETRY_INPUT_COMPONENTS:

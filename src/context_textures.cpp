@@ -3,8 +3,11 @@
 #include "context_state.h"
 #include "image_io.h"
 #include "pixel_transfer.h"
+#include "texture_compression.h"
 
+#include <climits>
 #include <cmath>
+#include <cstring>
 #include <limits>
 
 namespace softgl {
@@ -85,6 +88,8 @@ void Context::TexImage2D(Enum target, int level, Enum internal_format, int width
                          Enum format, Enum type, const void* pixels) {
   state_->Sync(__func__);
   auto& s = *state_;
+  internal_format = detail::UncompressedForGeneric(internal_format);
+  if (detail::CompressedFormatOf(internal_format)) return s.SetError(INVALID_OPERATION, __func__, "softgl does not compress: define a compressed level from its blocks with CompressedTexImage*");
   const bool rows_of_layers = target == TEXTURE_1D_ARRAY;  // each row of the image a layer
   if (!IsTexImageTarget(target) && !rows_of_layers) return s.SetError(INVALID_ENUM, __func__, "target must be TEXTURE_2D, a TEXTURE_CUBE_MAP_* face or TEXTURE_1D_ARRAY");
   if (level < 0 || level >= detail::kMaxLevels || width < 0 || height < 0 || width > kMaxTextureSize ||
@@ -114,6 +119,8 @@ void Context::TexImage1D(Enum target, int level, Enum internal_format, int width
                          const void* pixels) {
   state_->Sync(__func__);
   auto& s = *state_;
+  internal_format = detail::UncompressedForGeneric(internal_format);
+  if (detail::CompressedFormatOf(internal_format)) return s.SetError(INVALID_OPERATION, __func__, "softgl does not compress: define a compressed level from its blocks with CompressedTexImage*");
   if (target != TEXTURE_1D) return s.SetError(INVALID_ENUM, __func__, "target must be TEXTURE_1D");
   if (level < 0 || level >= detail::kMaxLevels || width < 0 || width > kMaxTextureSize || border != 0 ||
       detail::FormatComponents(internal_format) == 0)
@@ -141,6 +148,7 @@ void Context::TexSubImage1D(Enum target, int level, int x, int width, Enum forma
   detail::TextureObject* tex = s.Bound(target);
   if (!tex || !tex->levels[0][level].Defined()) return s.SetError(INVALID_OPERATION, __func__, "no texture bound, or that level is not defined");
   detail::TextureLevel& lv = tex->levels[0][level];
+  if (lv.compressed != 0) return s.SetError(INVALID_OPERATION, __func__, "the level is compressed: replace its blocks with CompressedTexSubImage*");
   if (detail::IsDepthFormat(lv.format) != IsDepthTransfer(format)) return s.SetError(INVALID_OPERATION, __func__, "depth data for a colour texture, or the reverse");
   if (x < 0 || width < 0 || std::int64_t(x) + width > lv.width) return s.SetError(INVALID_VALUE, __func__, "a numeric argument is out of range");
   if (width == 0 || !NotNull(s, __func__, pixels, "pixels")) return;
@@ -158,6 +166,7 @@ void Context::TexSubImage2D(Enum target, int level, int x, int y, int width, int
   detail::TextureObject* tex = s.Bound(target, &face);
   if (!tex || !tex->levels[face][level].Defined()) return s.SetError(INVALID_OPERATION, __func__, "no texture bound, or that level is not defined");
   detail::TextureLevel& lv = tex->levels[face][level];
+  if (lv.compressed != 0) return s.SetError(INVALID_OPERATION, __func__, "the level is compressed: replace its blocks with CompressedTexSubImage*");
   if (detail::IsDepthFormat(lv.format) != IsDepthTransfer(format)) return s.SetError(INVALID_OPERATION, __func__, "depth data for a colour texture, or the reverse");
   // (A 1D array's rows are its layers.)
   if (x < 0 || y < 0 || width < 0 || height < 0 || std::int64_t(x) + width > lv.width ||
@@ -171,6 +180,8 @@ void Context::TexImage3D(Enum target, int level, Enum internal_format, int width
                          Enum format, Enum type, const void* pixels) {
   state_->Sync(__func__);
   auto& s = *state_;
+  internal_format = detail::UncompressedForGeneric(internal_format);
+  if (detail::CompressedFormatOf(internal_format)) return s.SetError(INVALID_OPERATION, __func__, "softgl does not compress: define a compressed level from its blocks with CompressedTexImage*");
   if (target != TEXTURE_2D_ARRAY && target != TEXTURE_3D) return s.SetError(INVALID_ENUM, __func__, "target must be TEXTURE_2D_ARRAY or TEXTURE_3D");
   const bool volume = target == TEXTURE_3D;
   const int max_size = volume ? kMax3DTextureSize : kMaxTextureSize;
@@ -205,12 +216,151 @@ void Context::TexSubImage3D(Enum target, int level, int x, int y, int z, int wid
   detail::TextureObject* tex = s.Bound(target);
   if (!tex || !tex->levels[0][level].Defined()) return s.SetError(INVALID_OPERATION, __func__, "no texture bound, or that level is not defined");
   detail::TextureLevel& lv = tex->levels[0][level];
+  if (lv.compressed != 0) return s.SetError(INVALID_OPERATION, __func__, "the level is compressed: replace its blocks with CompressedTexSubImage*");
   if (detail::IsDepthFormat(lv.format) != IsDepthTransfer(format)) return s.SetError(INVALID_OPERATION, __func__, "depth data for a colour texture, or the reverse");
   if (x < 0 || y < 0 || z < 0 || width < 0 || height < 0 || depth < 0 || std::int64_t(x) + width > lv.width ||
       std::int64_t(y) + height > lv.height || std::int64_t(z) + depth > lv.depth)
     return s.SetError(INVALID_VALUE, __func__, "a numeric argument is out of range");
   if (width == 0 || height == 0 || depth == 0 || !NotNull(s, __func__, pixels, "pixels")) return;
   detail::UploadImages(lv, x, y, z, width, height, depth, format, type, s.unpack, pixels);
+}
+
+// ---- Compressed textures (texture_compression.h) ---------------------------------------------------------
+
+namespace {
+
+// The checks every CompressedTexImage* call makes on its format, in OpenGL's order after the target's: the format
+// (INVALID_ENUM unless one softgl decodes), then where the format may go (INVALID_ENUM too: S3TC and RGTC are
+// 2D-block formats, for TEXTURE_2D, cube faces and TEXTURE_2D_ARRAY only). Null with the error set.
+const detail::CompressedFormat* CompressedFormatFor(ContextState& s, const char* what, Enum target, Enum format) {
+  const detail::CompressedFormat* f = detail::CompressedFormatOf(format);
+  if (!f) return s.SetError(INVALID_ENUM, what, "internalformat is not a compressed format softgl decodes (the S3TC and RGTC formats)"), nullptr;
+  if (!IsTexImageTarget(target) && target != TEXTURE_2D_ARRAY)
+    return s.SetError(INVALID_ENUM, what, "S3TC and RGTC images are two-dimensional: TEXTURE_2D, a cube face or TEXTURE_2D_ARRAY only"), nullptr;
+  return f;
+}
+
+// Defines level `level` of the texture bound to target (face `face` found by the caller) from blocks: the part
+// of CompressedTexImage2D and 3D after their target checks.
+void DefineCompressed(ContextState& s, const char* what, Enum target, int level, Enum internal_format, int w, int h,
+                      int d, int border, int image_size, const void* data) {
+  const detail::CompressedFormat* f = CompressedFormatFor(s, what, target, internal_format);
+  if (!f) return;
+  const int max_depth = target == TEXTURE_2D_ARRAY ? kMaxArrayTextureLayers : 1;
+  if (level < 0 || level >= LevelCount(target) || w < 0 || h < 0 || d < 0 || w > kMaxTextureSize ||
+      h > kMaxTextureSize || d > max_depth || border != 0)
+    return s.SetError(INVALID_VALUE, what, "a numeric argument is out of range");
+  if (CubeFaceIndex(target) >= 0 && w != h) return s.SetError(INVALID_VALUE, what, "cube map faces must be square");
+  const std::uint64_t bytes = detail::CompressedImageBytes(*f, w, h, d);
+  if (image_size < 0 || std::uint64_t(image_size) != bytes) return s.SetError(INVALID_VALUE, what, "imageSize is not the bytes of the image's blocks (ceil(width / 4) * ceil(height / 4) * depth blocks of 8 or 16 bytes)");
+  if (bytes > 0 && !NotNull(s, what, data, "data")) return;
+  int face = 0;
+  detail::TextureObject* tex = s.Bound(target, &face);
+  if (!tex) return s.SetError(INVALID_OPERATION, what, "no texture is bound to that target of the active unit");
+  detail::TextureLevel next;
+  next.compressed = f->format;  // (an empty image too is a compressed level: OpenGL keeps its format)
+  if (w > 0 && h > 0 && d > 0) {
+    try {
+      next.Allocate(f->decoded, w, h, 1, d);
+      next.blocks.resize(std::size_t(bytes));
+    } catch (const std::bad_alloc&) {
+      return s.SetError(OUT_OF_MEMORY, what, "out of memory");
+    }
+    detail::DecodeRegion(*f, static_cast<const std::uint8_t*>(data), 0, 0, 0, w, h, d, next);
+  }
+  tex->levels[face][level] = std::move(next);
+}
+
+// Replaces blocks of a compressed level: the part of CompressedTexSubImage2D and 3D after their target checks.
+void ReplaceCompressed(ContextState& s, const char* what, Enum target, int level, int x, int y, int z, int w, int h,
+                       int d, Enum format, int image_size, const void* data) {
+  if (level < 0 || level >= LevelCount(target)) return s.SetError(INVALID_VALUE, what, "level is negative or beyond the largest mipmap level");
+  int face = 0;
+  detail::TextureObject* tex = s.Bound(target, &face);
+  if (!tex || !tex->levels[face][level].Defined()) return s.SetError(INVALID_OPERATION, what, "no texture bound, or that level is not defined");
+  detail::TextureLevel& lv = tex->levels[face][level];
+  if (lv.compressed == 0 || lv.compressed != format) return s.SetError(INVALID_OPERATION, what, "format is not the level's compressed format (or the level is not compressed)");
+  const detail::CompressedFormat* f = detail::CompressedFormatOf(format);
+  if (x < 0 || y < 0 || z < 0 || w < 0 || h < 0 || d < 0 || std::int64_t(x) + w > lv.width ||
+      std::int64_t(y) + h > lv.height || std::int64_t(z) + d > lv.depth)
+    return s.SetError(INVALID_VALUE, what, "the region is outside the level");
+  if (x % 4 != 0 || y % 4 != 0 || (w % 4 != 0 && x + w != lv.width) || (h % 4 != 0 && y + h != lv.height))
+    return s.SetError(INVALID_OPERATION, what, "the region is not whole 4 x 4 blocks (offsets multiples of 4; sizes too, unless they reach the level's edge)");
+  const std::uint64_t bytes = detail::CompressedImageBytes(*f, w, h, d);
+  if (image_size < 0 || std::uint64_t(image_size) != bytes) return s.SetError(INVALID_VALUE, what, "imageSize is not the bytes of the region's blocks");
+  if (bytes == 0 || !NotNull(s, what, data, "data")) return;
+  detail::DecodeRegion(*f, static_cast<const std::uint8_t*>(data), x, y, z, w, h, d, lv);
+}
+
+}  // namespace
+
+void Context::CompressedTexImage1D(Enum target, int level, Enum internal_format, int width, int border, int image_size,
+                                   const void* data) {
+  state_->Sync(__func__);
+  auto& s = *state_;
+  (void)level, (void)width, (void)border, (void)image_size, (void)data;
+  if (target != TEXTURE_1D) return s.SetError(INVALID_ENUM, __func__, "target must be TEXTURE_1D");
+  if (detail::CompressedFormatOf(internal_format)) return s.SetError(INVALID_ENUM, __func__, "OpenGL 3.3 has no one-dimensional compressed format: S3TC and RGTC are 2D-block formats");
+  s.SetError(INVALID_ENUM, __func__, "internalformat is not a compressed format");
+}
+
+void Context::CompressedTexImage2D(Enum target, int level, Enum internal_format, int width, int height, int border,
+                                   int image_size, const void* data) {
+  state_->Sync(__func__);
+  auto& s = *state_;
+  if (!IsTexImageTarget(target) && target != TEXTURE_1D_ARRAY) return s.SetError(INVALID_ENUM, __func__, "target must be TEXTURE_2D or a TEXTURE_CUBE_MAP_* face");
+  DefineCompressed(s, __func__, target, level, internal_format, width, height, 1, border, image_size, data);
+}
+
+void Context::CompressedTexImage3D(Enum target, int level, Enum internal_format, int width, int height, int depth,
+                                   int border, int image_size, const void* data) {
+  state_->Sync(__func__);
+  auto& s = *state_;
+  if (target != TEXTURE_2D_ARRAY && target != TEXTURE_3D) return s.SetError(INVALID_ENUM, __func__, "target must be TEXTURE_2D_ARRAY");
+  DefineCompressed(s, __func__, target, level, internal_format, width, height, depth, border, image_size, data);
+}
+
+void Context::CompressedTexSubImage1D(Enum target, int level, int x, int width, Enum format, int image_size,
+                                      const void* data) {
+  state_->Sync(__func__);
+  auto& s = *state_;
+  (void)level, (void)x, (void)width, (void)format, (void)image_size, (void)data;
+  if (target != TEXTURE_1D) return s.SetError(INVALID_ENUM, __func__, "target must be TEXTURE_1D");
+  s.SetError(INVALID_ENUM, __func__, "OpenGL 3.3 has no one-dimensional compressed format: S3TC and RGTC are 2D-block formats");
+}
+
+void Context::CompressedTexSubImage2D(Enum target, int level, int x, int y, int width, int height, Enum format,
+                                      int image_size, const void* data) {
+  state_->Sync(__func__);
+  auto& s = *state_;
+  if (!IsTexImageTarget(target) && target != TEXTURE_1D_ARRAY) return s.SetError(INVALID_ENUM, __func__, "target must be TEXTURE_2D or a TEXTURE_CUBE_MAP_* face");
+  ReplaceCompressed(s, __func__, target, level, x, y, 0, width, height, 1, format, image_size, data);
+}
+
+void Context::CompressedTexSubImage3D(Enum target, int level, int x, int y, int z, int width, int height, int depth,
+                                      Enum format, int image_size, const void* data) {
+  state_->Sync(__func__);
+  auto& s = *state_;
+  if (target != TEXTURE_2D_ARRAY && target != TEXTURE_3D) return s.SetError(INVALID_ENUM, __func__, "target must be TEXTURE_2D_ARRAY");
+  ReplaceCompressed(s, __func__, target, level, x, y, z, width, height, depth, format, image_size, data);
+}
+
+void Context::GetCompressedTexImage(Enum target, int level, void* data) const {
+  auto& s = *state_;
+  if (!IsTexImageTarget(target) && target != TEXTURE_2D_ARRAY && target != TEXTURE_3D && target != TEXTURE_1D &&
+      target != TEXTURE_1D_ARRAY)
+    return s.SetError(INVALID_ENUM, __func__, "target must be TEXTURE_1D, TEXTURE_2D, a TEXTURE_CUBE_MAP_* face, TEXTURE_1D_ARRAY, TEXTURE_2D_ARRAY or TEXTURE_3D");
+  if (level < 0 || level >= LevelCount(target)) return s.SetError(INVALID_VALUE, __func__, "level is negative or beyond the largest mipmap level");
+  int face = 0;
+  const detail::TextureObject* tex = s.Bound(target, &face);
+  if (!tex) return s.SetError(INVALID_OPERATION, __func__, "no texture is bound to that target of the active unit");
+  const detail::TextureLevel& lv = tex->levels[face][level];
+  if (lv.compressed == 0) {
+    if (!lv.Defined()) return s.SetError(INVALID_VALUE, __func__, "the level is not defined");
+    return s.SetError(INVALID_OPERATION, __func__, "the level is not compressed");
+  }
+  if (lv.blocks.empty() || !NotNull(s, __func__, data, "data")) return;
+  std::memcpy(data, lv.blocks.data(), lv.blocks.size());
 }
 
 namespace {
@@ -299,6 +449,7 @@ void Context::GenerateMipmap(Enum target) {
     const detail::TextureLevel& b0 = tex->levels[0][base];
     if (!b.Defined() || b.width != b0.width || b.height != b0.height || b.format != b0.format)
       return s.SetError(INVALID_OPERATION, __func__, "not allowed in the current state");
+    if (b.compressed != 0) return s.SetError(INVALID_OPERATION, __func__, "the base level is compressed, and softgl does not compress the levels it would make: define each with CompressedTexImage*");
   }
   try {
     detail::GenerateMipmaps(*tex);
@@ -483,7 +634,13 @@ bool TexLevelValue(ContextState& s, const char* what, Enum target, int level, En
     case TEXTURE_DEPTH: out = lv.Defined() ? (tex->target == TEXTURE_1D_ARRAY ? 1 : lv.depth) : 0; return true;
     case TEXTURE_SAMPLES: out = lv.Defined() && tex->target == TEXTURE_2D_MULTISAMPLE ? lv.samples : 0; return true;
     case TEXTURE_FIXED_SAMPLE_LOCATIONS: out = 1; return true;  // the standard positions, always
-    case TEXTURE_INTERNAL_FORMAT: out = int(lv.Defined() ? lv.format : RGBA); return true;
+    // (A compressed level keeps its format even when it is empty, as OpenGL keeps it.)
+    case TEXTURE_INTERNAL_FORMAT: out = int(lv.compressed != 0 ? lv.compressed : lv.Defined() ? lv.format : RGBA); return true;
+    case TEXTURE_COMPRESSED: out = lv.compressed != 0; return true;
+    case TEXTURE_COMPRESSED_IMAGE_SIZE:
+      if (lv.compressed == 0) return s.SetError(INVALID_OPERATION, what, "the level is not compressed"), false;
+      out = int(std::min<std::size_t>(lv.blocks.size(), INT_MAX));
+      return true;
     case TEXTURE_RED_SIZE: out = bits.r; return true;
     case TEXTURE_GREEN_SIZE: out = bits.g; return true;
     case TEXTURE_BLUE_SIZE: out = bits.b; return true;

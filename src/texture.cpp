@@ -745,7 +745,7 @@ TextureView MakeView(const TextureObject& texture, const SamplerParams* sampler)
     for (int l = p.base_level; l <= last; ++l) {
       const TextureLevel& lv = texture.levels[face][l];
       const int shift = l - p.base_level;
-      if (lv.format != base.format || lv.width != std::max(1, base.width >> shift) ||
+      if (lv.format != base.format || lv.compressed != base.compressed || lv.width != std::max(1, base.width >> shift) ||
           lv.height != std::max(1, base.height >> shift) ||
           lv.depth != (volume ? std::max(1, base.depth >> shift) : base.depth))
         return view;

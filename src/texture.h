@@ -193,6 +193,10 @@ struct TextureLevel {
   // texels one after another (1 otherwise). Texel (i, j) of plane k is At(i, k * height + j): plane by plane, the
   // rows continue upwards.
   int depth = 1;
+  // A level defined by CompressedTexImage*: its compressed format and its blocks as given (texture_compression.h
+  // orders them); `format` is then the format its texels were decoded into. 0 and empty for every other level.
+  Enum compressed = 0;
+  std::vector<std::uint8_t> blocks;
   bool Defined() const { return format != 0 && width > 0 && height > 0; }
   std::uint8_t* At(int i, int j) {
     return data.data() + (std::size_t(j) * std::size_t(width) + std::size_t(i)) * std::size_t(bytes);

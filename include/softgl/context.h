@@ -366,6 +366,41 @@ class Context {
   /// TEXTURE_3D. Outside the level: INVALID_VALUE; level not defined: INVALID_OPERATION.
   void TexSubImage3D(Enum target, int level, int x, int y, int z, int width, int height, int depth, Enum format,
                      Enum type, const void* pixels);
+  /// Defines level `level` of the bound texture from compressed data: `image_size` bytes of 4 x 4 blocks in one of
+  /// the S3TC formats (COMPRESSED_RGB_S3TC_DXT1_EXT ... COMPRESSED_SRGB_ALPHA_S3TC_DXT5_EXT) or the RGTC ones
+  /// (COMPRESSED_RED_RGTC1 ... COMPRESSED_SIGNED_RG_RGTC2), ceil(width / 4) * ceil(height / 4) blocks an image, rows
+  /// of blocks bottom first. softgl decodes them at once (8 bits a channel; signed RGTC as floats) and keeps the
+  /// blocks too, for GetCompressedTexImage and TEXTURE_COMPRESSED_IMAGE_SIZE; sampling reads the decoded texels as it
+  /// reads any level's. CompressedTexImage2D takes TEXTURE_2D or a cube face, CompressedTexImage3D TEXTURE_2D_ARRAY
+  /// (`depth` layers, one image after another). Errors: bad target, a format that is not one of those (the generic
+  /// COMPRESSED_RGBA and its kin are for TexImage*), TEXTURE_1D_ARRAY or TEXTURE_3D (the formats are
+  /// two-dimensional): INVALID_ENUM; nothing bound: INVALID_OPERATION; sizes as TexImage2D's, `image_size` not the
+  /// blocks' bytes, null data for a non-empty image: INVALID_VALUE; no memory: OUT_OF_MEMORY. A 0 x 0 image makes
+  /// an empty level that keeps its compressed format (TEXTURE_INTERNAL_FORMAT, TEXTURE_COMPRESSED).
+  /// TexImage*, TexSubImage*, CopyTex(Sub)Image* and GenerateMipmap do not compress: with a specific compressed format, or on a
+  /// compressed level, they answer INVALID_OPERATION.
+  void CompressedTexImage2D(Enum target, int level, Enum internal_format, int width, int height, int border,
+                            int image_size, const void* data);
+  void CompressedTexImage3D(Enum target, int level, Enum internal_format, int width, int height, int depth,
+                            int border, int image_size, const void* data);
+  /// OpenGL 3.3 has no one-dimensional compressed format: every call answers INVALID_ENUM (bad target or format).
+  void CompressedTexImage1D(Enum target, int level, Enum internal_format, int width, int border, int image_size,
+                            const void* data);
+  /// Replaces the blocks of region (x, y, width, height) (and layers z .. z + depth - 1) of a compressed level.
+  /// Errors: bad target: INVALID_ENUM; level out of range, the region outside the level, `image_size` not the
+  /// region's blocks' bytes: INVALID_VALUE; no texture or level, `format` not the level's compressed format, x or
+  /// y not a multiple of 4, a width or height that is not one and does not reach the level's edge:
+  /// INVALID_OPERATION. The 1D form always fails with INVALID_ENUM (no 1D level is compressed).
+  void CompressedTexSubImage2D(Enum target, int level, int x, int y, int width, int height, Enum format,
+                               int image_size, const void* data);
+  void CompressedTexSubImage3D(Enum target, int level, int x, int y, int z, int width, int height, int depth,
+                               Enum format, int image_size, const void* data);
+  void CompressedTexSubImage1D(Enum target, int level, int x, int width, Enum format, int image_size,
+                               const void* data);
+  /// Writes the blocks of compressed level `level` of the bound texture (TEXTURE_COMPRESSED_IMAGE_SIZE bytes) to
+  /// `data`. Errors: bad target: INVALID_ENUM; level out of range or not defined: INVALID_VALUE; nothing bound, a
+  /// level that is not compressed: INVALID_OPERATION.
+  void GetCompressedTexImage(Enum target, int level, void* data) const;
   /// Loads an image file (PNG, TGA, BMP, HDR through stb_image; JPEG through libjpeg-turbo) into level 0 of the
   /// texture bound to target (TEXTURE_2D or a cube face): 1 to 4 channels become R8, RG8, RGB8, RGBA8; HDR becomes
   /// RGBA32F.

@@ -242,6 +242,30 @@ inline constexpr Enum R11F_G11F_B10F = 0x8C3A;  // unsigned 11-, 11- and 10-bit 
 inline constexpr Enum SRGB = 0x8C40;          // FRAMEBUFFER_ATTACHMENT_COLOR_ENCODING's value for sRGB buffers
 inline constexpr Enum SRGB8 = 0x8C41;         // sRGB-encoded RGB, 8 bits a channel (alpha reads 1)
 inline constexpr Enum SRGB8_ALPHA8 = 0x8C43;  // sRGB-encoded RGB with linear alpha, 8 bits a channel
+// Compressed formats: 4 x 4 blocks of texels, 8 or 16 bytes a block, defined by CompressedTexImage1D/2D/3D (see
+// docs/guide.md, "Compressed textures"). RGTC (OpenGL 3.0): one or two channels, unsigned or signed. S3TC
+// (EXT_texture_compression_s3tc, with EXT_texture_sRGB's sRGB forms): DXT1 (BC1) with or without its one-bit alpha,
+// DXT3 (BC2) and DXT5 (BC3).
+inline constexpr Enum COMPRESSED_RED_RGTC1 = 0x8DBB;
+inline constexpr Enum COMPRESSED_SIGNED_RED_RGTC1 = 0x8DBC;
+inline constexpr Enum COMPRESSED_RG_RGTC2 = 0x8DBD;
+inline constexpr Enum COMPRESSED_SIGNED_RG_RGTC2 = 0x8DBE;
+inline constexpr Enum COMPRESSED_RGB_S3TC_DXT1_EXT = 0x83F0;
+inline constexpr Enum COMPRESSED_RGBA_S3TC_DXT1_EXT = 0x83F1;
+inline constexpr Enum COMPRESSED_RGBA_S3TC_DXT3_EXT = 0x83F2;
+inline constexpr Enum COMPRESSED_RGBA_S3TC_DXT5_EXT = 0x83F3;
+inline constexpr Enum COMPRESSED_SRGB_S3TC_DXT1_EXT = 0x8C4C;
+inline constexpr Enum COMPRESSED_SRGB_ALPHA_S3TC_DXT1_EXT = 0x8C4D;
+inline constexpr Enum COMPRESSED_SRGB_ALPHA_S3TC_DXT3_EXT = 0x8C4E;
+inline constexpr Enum COMPRESSED_SRGB_ALPHA_S3TC_DXT5_EXT = 0x8C4F;
+// OpenGL's generic compressed formats, which TexImage* accepts and softgl stores uncompressed (as OpenGL allows):
+// as R8, RG8, RGB8, RGBA8, SRGB8 and SRGB8_ALPHA8.
+inline constexpr Enum COMPRESSED_RED = 0x8225;
+inline constexpr Enum COMPRESSED_RG = 0x8226;
+inline constexpr Enum COMPRESSED_RGB = 0x84ED;
+inline constexpr Enum COMPRESSED_RGBA = 0x84EE;
+inline constexpr Enum COMPRESSED_SRGB = 0x8C48;
+inline constexpr Enum COMPRESSED_SRGB_ALPHA = 0x8C49;
 inline constexpr Enum DEPTH_COMPONENT16 = 0x81A5;  // 16-bit fixed point (k / 65535); the other depth formats float
 inline constexpr Enum DEPTH_COMPONENT24 = 0x81A6;
 inline constexpr Enum DEPTH_COMPONENT32F = 0x8CAC;
@@ -311,6 +335,8 @@ inline constexpr Enum TEXTURE_BLUE_SIZE = 0x805E;
 inline constexpr Enum TEXTURE_ALPHA_SIZE = 0x805F;
 inline constexpr Enum TEXTURE_DEPTH_SIZE = 0x884A;
 inline constexpr Enum TEXTURE_STENCIL_SIZE = 0x88F1;
+inline constexpr Enum TEXTURE_COMPRESSED = 0x86A1;             // a level of a compressed format
+inline constexpr Enum TEXTURE_COMPRESSED_IMAGE_SIZE = 0x86A0;  // its bytes, as GetCompressedTexImage writes them
 inline constexpr Enum NEAREST = 0x2600;
 inline constexpr Enum LINEAR = 0x2601;
 inline constexpr Enum NEAREST_MIPMAP_NEAREST = 0x2700;
@@ -483,6 +509,8 @@ inline constexpr Enum MAX_SAMPLE_MASK_WORDS = 0x8E59;
 inline constexpr Enum SAMPLE_POSITION = 0x8E50;         // GetMultisamplefv
 inline constexpr Enum MAX_TEXTURE_MAX_ANISOTROPY = 0x84FF;  // 16
 inline constexpr Enum MAX_VIEWPORT_DIMS = 0x0D3A;
+inline constexpr Enum NUM_COMPRESSED_TEXTURE_FORMATS = 0x86A2;  // 4: the S3TC formats (RGTC's are not listed, as OpenGL says)
+inline constexpr Enum COMPRESSED_TEXTURE_FORMATS = 0x86A3;
 inline constexpr Enum MAX_VARYING_COMPONENTS = 0x8B4B;
 inline constexpr Enum MAX_GEOMETRY_OUTPUT_VERTICES = 0x8DE0;
 inline constexpr Enum MAX_GEOMETRY_TOTAL_OUTPUT_COMPONENTS = 0x8DE1;

@@ -79,7 +79,9 @@ struct TextureDesc {
     int width = 0, height = 0;
     std::vector<std::uint8_t> rgba;     // rows bottom first
     std::vector<std::uint16_t> shorts;  // the same, 16 bits a channel
+    std::vector<std::uint8_t> blocks;   // with `compressed`: the level's blocks
   };
+  Enum compressed = 0;  // a compressed format: each level defined by CompressedTexImage2D from its blocks
   std::vector<Level> levels;
   bool generate_mipmap = false;
   Enum min_filter = softgl::LINEAR_MIPMAP_LINEAR, mag_filter = softgl::LINEAR;
@@ -292,6 +294,22 @@ class Backend {
   virtual std::vector<std::uint8_t> ReadPixels(const PixelRead& read, std::size_t bytes) = 0;
   /// Defines the texture of unit 0 (replacing any before).
   virtual void SetTexture(const TextureDesc& desc) = 0;
+  /// Compressed textures and the calls around them, one to one with OpenGL's (dims 1, 2 or 3 picks the 1D, 2D or
+  /// 3D form), on the active unit: BindNewTexture binds a new texture to `target`; TexImage2D and TexSubImage2D take
+  /// RGBA / UNSIGNED_BYTE data (null for TexImage2D); GetTexImageFloats is GetTexImage of RGBA / FLOAT into `floats`
+  /// floats, GetCompressedTexImage into `bytes` bytes (both first filled with a marker, -9 or 0xCD);
+  /// GetTexLevelParameter is GetTexLevelParameteriv of one value (-1 where the call writes none).
+  virtual void BindNewTexture(Enum target) = 0;
+  virtual void CompressedTexImage(int dims, Enum target, int level, Enum format, int w, int h, int d, int image_size,
+                                  const void* data) = 0;
+  virtual void CompressedTexSubImage(int dims, Enum target, int level, int x, int y, int z, int w, int h, int d,
+                                     Enum format, int image_size, const void* data) = 0;
+  virtual std::vector<std::uint8_t> GetCompressedTexImage(Enum target, int level, int bytes) = 0;
+  virtual std::vector<float> GetTexImageFloats(Enum target, int level, int floats) = 0;
+  virtual int GetTexLevelParameter(Enum target, int level, Enum pname) = 0;
+  virtual void TexImage2D(Enum target, int level, Enum internal_format, int w, int h) = 0;
+  virtual void TexSubImage2D(Enum target, int level, int x, int y, int w, int h, const std::uint8_t* rgba) = 0;
+  virtual void GenerateMipmap(Enum target) = 0;
   /// Defines the cube map of unit 1 from six faces (+x, -x, +y, -y, +z, -z) of size x size RGBA8, mipmapped with
   /// GenerateMipmap, LINEAR_MIPMAP_LINEAR, CLAMP_TO_EDGE.
   virtual void SetCubeTexture(int size, const std::vector<std::uint8_t> faces[6]) = 0;

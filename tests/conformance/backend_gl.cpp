@@ -547,6 +547,10 @@ class GlBackend final : public Backend {
     glBindTexture(GL_TEXTURE_2D, tex);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
     for (std::size_t l = 0; l < d.levels.size(); ++l)
+      if (d.compressed)
+        glCompressedTexImage2D(GL_TEXTURE_2D, GLint(l), GLenum(d.compressed), d.levels[l].width, d.levels[l].height, 0,
+                               GLsizei(d.levels[l].blocks.size()), d.levels[l].blocks.data());
+      else
       glTexImage2D(GL_TEXTURE_2D, GLint(l), GLint(d.internal_format), d.levels[l].width, d.levels[l].height, 0, GL_RGBA,
                    GLenum(d.type),
                    d.type == softgl::UNSIGNED_BYTE ? static_cast<const void*>(d.levels[l].rgba.data())
@@ -562,6 +566,56 @@ class GlBackend final : public Backend {
     glUseProgram(programs_[3]);
     glUniform1i(glGetUniformLocation(programs_[3], "u_tex"), 0);
   }
+
+  void BindNewTexture(Enum target) override {
+    GLuint tex = 0;
+    glGenTextures(1, &tex);
+    glBindTexture(GLenum(target), tex);
+  }
+
+  void CompressedTexImage(int dims, Enum target, int level, Enum format, int w, int h, int d, int image_size,
+                          const void* data) override {
+    if (dims == 1) glCompressedTexImage1D(GLenum(target), level, GLenum(format), w, 0, image_size, data);
+    else if (dims == 2) glCompressedTexImage2D(GLenum(target), level, GLenum(format), w, h, 0, image_size, data);
+    else glCompressedTexImage3D(GLenum(target), level, GLenum(format), w, h, d, 0, image_size, data);
+  }
+
+  void CompressedTexSubImage(int dims, Enum target, int level, int x, int y, int z, int w, int h, int d, Enum format,
+                             int image_size, const void* data) override {
+    if (dims == 1) glCompressedTexSubImage1D(GLenum(target), level, x, w, GLenum(format), image_size, data);
+    else if (dims == 2) glCompressedTexSubImage2D(GLenum(target), level, x, y, w, h, GLenum(format), image_size, data);
+    else glCompressedTexSubImage3D(GLenum(target), level, x, y, z, w, h, d, GLenum(format), image_size, data);
+  }
+
+  std::vector<std::uint8_t> GetCompressedTexImage(Enum target, int level, int bytes) override {
+    std::vector<std::uint8_t> out(std::size_t(bytes), 0xCD);
+    glGetCompressedTexImage(GLenum(target), level, out.data());
+    return out;
+  }
+
+  std::vector<float> GetTexImageFloats(Enum target, int level, int floats) override {
+    std::vector<float> out(std::size_t(floats), -9.0f);
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    glGetTexImage(GLenum(target), level, GL_RGBA, GL_FLOAT, out.data());
+    return out;
+  }
+
+  int GetTexLevelParameter(Enum target, int level, Enum pname) override {
+    GLint v = -1;
+    glGetTexLevelParameteriv(GLenum(target), level, GLenum(pname), &v);
+    return v;
+  }
+
+  void TexImage2D(Enum target, int level, Enum internal_format, int w, int h) override {
+    glTexImage2D(GLenum(target), level, GLint(internal_format), w, h, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+  }
+
+  void TexSubImage2D(Enum target, int level, int x, int y, int w, int h, const std::uint8_t* rgba) override {
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTexSubImage2D(GLenum(target), level, x, y, w, h, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
+  }
+
+  void GenerateMipmap(Enum target) override { glGenerateMipmap(GLenum(target)); }
 
   void SetCubeTexture(int size, const std::vector<std::uint8_t> faces[6]) override {
     GLuint tex = 0;

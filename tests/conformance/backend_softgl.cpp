@@ -533,6 +533,10 @@ class SoftglBackend final : public Backend {
     gl_.BindTexture(softgl::TEXTURE_2D, tex);
     gl_.PixelStore(softgl::UNPACK_ALIGNMENT, 1);
     for (std::size_t l = 0; l < d.levels.size(); ++l)
+      if (d.compressed)
+        gl_.CompressedTexImage2D(softgl::TEXTURE_2D, int(l), d.compressed, d.levels[l].width, d.levels[l].height, 0,
+                                 int(d.levels[l].blocks.size()), d.levels[l].blocks.data());
+      else
       gl_.TexImage2D(softgl::TEXTURE_2D, int(l), d.internal_format, d.levels[l].width, d.levels[l].height, 0, softgl::RGBA,
                      d.type, d.type == softgl::UNSIGNED_BYTE ? static_cast<const void*>(d.levels[l].rgba.data())
                                                              : static_cast<const void*>(d.levels[l].shorts.data()));
@@ -545,6 +549,52 @@ class SoftglBackend final : public Backend {
     gl_.TexParameterfv(softgl::TEXTURE_2D, softgl::TEXTURE_BORDER_COLOR, &d.border[0]);
     if (d.max_anisotropy != 1.0f) gl_.TexParameterf(softgl::TEXTURE_2D, softgl::TEXTURE_MAX_ANISOTROPY, d.max_anisotropy);
   }
+
+  void BindNewTexture(Enum target) override { gl_.BindTexture(target, gl_.GenTexture()); }
+
+  void CompressedTexImage(int dims, Enum target, int level, Enum format, int w, int h, int d, int image_size,
+                          const void* data) override {
+    if (dims == 1) gl_.CompressedTexImage1D(target, level, format, w, 0, image_size, data);
+    else if (dims == 2) gl_.CompressedTexImage2D(target, level, format, w, h, 0, image_size, data);
+    else gl_.CompressedTexImage3D(target, level, format, w, h, d, 0, image_size, data);
+  }
+
+  void CompressedTexSubImage(int dims, Enum target, int level, int x, int y, int z, int w, int h, int d, Enum format,
+                             int image_size, const void* data) override {
+    if (dims == 1) gl_.CompressedTexSubImage1D(target, level, x, w, format, image_size, data);
+    else if (dims == 2) gl_.CompressedTexSubImage2D(target, level, x, y, w, h, format, image_size, data);
+    else gl_.CompressedTexSubImage3D(target, level, x, y, z, w, h, d, format, image_size, data);
+  }
+
+  std::vector<std::uint8_t> GetCompressedTexImage(Enum target, int level, int bytes) override {
+    std::vector<std::uint8_t> out(std::size_t(bytes), 0xCD);
+    gl_.GetCompressedTexImage(target, level, out.data());
+    return out;
+  }
+
+  std::vector<float> GetTexImageFloats(Enum target, int level, int floats) override {
+    std::vector<float> out(std::size_t(floats), -9.0f);
+    gl_.PixelStore(softgl::PACK_ALIGNMENT, 4);
+    gl_.GetTexImage(target, level, softgl::RGBA, softgl::FLOAT, out.data());
+    return out;
+  }
+
+  int GetTexLevelParameter(Enum target, int level, Enum pname) override {
+    int v = -1;
+    gl_.GetTexLevelParameteriv(target, level, pname, &v);
+    return v;
+  }
+
+  void TexImage2D(Enum target, int level, Enum internal_format, int w, int h) override {
+    gl_.TexImage2D(target, level, internal_format, w, h, 0, softgl::RGBA, softgl::UNSIGNED_BYTE, nullptr);
+  }
+
+  void TexSubImage2D(Enum target, int level, int x, int y, int w, int h, const std::uint8_t* rgba) override {
+    gl_.PixelStore(softgl::UNPACK_ALIGNMENT, 1);
+    gl_.TexSubImage2D(target, level, x, y, w, h, softgl::RGBA, softgl::UNSIGNED_BYTE, rgba);
+  }
+
+  void GenerateMipmap(Enum target) override { gl_.GenerateMipmap(target); }
 
   void SetCubeTexture(int size, const std::vector<std::uint8_t> faces[6]) override {
     gl_.ActiveTexture(softgl::TEXTURE0 + 1);

@@ -362,7 +362,7 @@ TEST_CASE("sampler object and vertex attribute state read back as Mesa reads it"
   }
   // A texture's parameters by the integer forms: the border colour kept as integers, other names as iv; errors.
   TextureDesc desc;
-  desc.levels.push_back({2, 2, std::vector<std::uint8_t>(16, 200), {}});
+  desc.levels.push_back({2, 2, std::vector<std::uint8_t>(16, 200), {}, {}});
   // (A border colour set as floats is not compared through these queries: softgl rounds and clamps the floats to
   // the type, Mesa returns their bit patterns. docs/guide.md says so.)
   mesa->SetTexture(desc);
@@ -830,6 +830,144 @@ TEST_CASE("layered framebuffers: completeness, attachment state and errors as Me
     state(c0);
     b.BindFramebuffer(fb, 0);
     b.FramebufferTexture(fb, c0, array, 0);
+    step(0);
+  };
+  CompareSteps(16, run);
+}
+
+TEST_CASE("compressed textures: decoded texels, blocks read back, level state and errors as Mesa's", "[conformance]") {
+  namespace gl = softgl;
+  // Every S3TC and RGTC format, decoded by both from the same pseudo-random blocks (both modes of each block kind
+  // come up: c0 > c1 and not, a0 > a1 and not, signed endpoints of -128), read back as floats (compared as whole
+  // multiples of 1 / (255 * 127), exact for both unsigned bytes and signed ones); images with partial blocks;
+  // CompressedTexSubImage; a 2D array; then OpenGL's errors.
+  const Enum formats[] = {gl::COMPRESSED_RGB_S3TC_DXT1_EXT,        gl::COMPRESSED_RGBA_S3TC_DXT1_EXT,
+                          gl::COMPRESSED_RGBA_S3TC_DXT3_EXT,       gl::COMPRESSED_RGBA_S3TC_DXT5_EXT,
+                          gl::COMPRESSED_SRGB_S3TC_DXT1_EXT,       gl::COMPRESSED_SRGB_ALPHA_S3TC_DXT1_EXT,
+                          gl::COMPRESSED_SRGB_ALPHA_S3TC_DXT3_EXT, gl::COMPRESSED_SRGB_ALPHA_S3TC_DXT5_EXT,
+                          gl::COMPRESSED_RED_RGTC1,                gl::COMPRESSED_SIGNED_RED_RGTC1,
+                          gl::COMPRESSED_RG_RGTC2,                 gl::COMPRESSED_SIGNED_RG_RGTC2};
+  auto block_bytes = [](Enum f) {
+    return f == gl::COMPRESSED_RGB_S3TC_DXT1_EXT || f == gl::COMPRESSED_RGBA_S3TC_DXT1_EXT ||
+                   f == gl::COMPRESSED_SRGB_S3TC_DXT1_EXT || f == gl::COMPRESSED_SRGB_ALPHA_S3TC_DXT1_EXT ||
+                   f == gl::COMPRESSED_RED_RGTC1 || f == gl::COMPRESSED_SIGNED_RED_RGTC1
+               ? 8
+               : 16;
+  };
+  auto size_of = [&](Enum f, int w, int h, int d) { return (w + 3) / 4 * ((h + 3) / 4) * d * block_bytes(f); };
+  auto blocks = [](int bytes, std::uint32_t seed) {
+    std::vector<std::uint8_t> v(static_cast<std::size_t>(bytes));
+    for (std::uint8_t& x : v) {
+      seed = seed * 1664525u + 1013904223u;
+      x = std::uint8_t(seed >> 24);
+    }
+    for (std::size_t i = 0; i + 16 <= v.size(); i += 40) v[i] = 0x80;  // a signed endpoint of -128 now and then
+    return v;
+  };
+  auto run = [&](Backend& b, const auto& step) {
+    auto read = [&](Enum target, int w, int h, int d) {
+      for (float v : b.GetTexImageFloats(target, 0, w * h * d * 4)) step(std::llround(double(v) * 255.0 * 127.0));
+    };
+    auto level_state = [&](Enum target, int level) {
+      for (Enum pname : {gl::TEXTURE_COMPRESSED, gl::TEXTURE_COMPRESSED_IMAGE_SIZE, gl::TEXTURE_INTERNAL_FORMAT,
+                         gl::TEXTURE_WIDTH, gl::TEXTURE_HEIGHT})
+        step(b.GetTexLevelParameter(target, level, pname));
+    };
+    std::uint32_t seed = 1;
+    for (Enum f : formats) {
+      for (const glm::ivec2 size : {glm::ivec2(16, 16), glm::ivec2(10, 6), glm::ivec2(3, 2)}) {
+        b.BindNewTexture(gl::TEXTURE_2D);
+        const int n = size_of(f, size.x, size.y, 1);
+        const std::vector<std::uint8_t> data = blocks(n, seed++);
+        b.CompressedTexImage(2, gl::TEXTURE_2D, 0, f, size.x, size.y, 1, n, data.data());
+        step(0);
+        level_state(gl::TEXTURE_2D, 0);
+        read(gl::TEXTURE_2D, size.x, size.y, 1);
+        for (std::uint8_t v : b.GetCompressedTexImage(gl::TEXTURE_2D, 0, n + 4)) step(v);
+        if (size.x == 10) {  // one whole block, then the partial block at the right edge
+          const int k = block_bytes(f);
+          const std::vector<std::uint8_t> sub = blocks(2 * k, seed++);
+          b.CompressedTexSubImage(2, gl::TEXTURE_2D, 0, 4, 0, 0, 4, 4, 1, f, k, sub.data());
+          step(0);
+          b.CompressedTexSubImage(2, gl::TEXTURE_2D, 0, 8, 4, 0, 2, 2, 1, f, k, sub.data() + k);
+          step(0);
+          read(gl::TEXTURE_2D, size.x, size.y, 1);
+        }
+      }
+    }
+    // A 2D array of three layers, and one layer's block replaced.
+    const Enum dxt5 = gl::COMPRESSED_RGBA_S3TC_DXT5_EXT;
+    b.BindNewTexture(gl::TEXTURE_2D_ARRAY);
+    const std::vector<std::uint8_t> layers = blocks(size_of(dxt5, 8, 8, 3), 99);
+    b.CompressedTexImage(3, gl::TEXTURE_2D_ARRAY, 0, dxt5, 8, 8, 3, size_of(dxt5, 8, 8, 3), layers.data());
+    step(0);
+    b.CompressedTexSubImage(3, gl::TEXTURE_2D_ARRAY, 0, 4, 4, 1, 4, 4, 1, dxt5, 16, layers.data());
+    step(0);
+    level_state(gl::TEXTURE_2D_ARRAY, 0);
+    read(gl::TEXTURE_2D_ARRAY, 8, 8, 3);
+    // Errors, each call's alone.
+    const std::vector<std::uint8_t> some = blocks(4096, 7);
+    b.BindNewTexture(gl::TEXTURE_2D);
+    b.CompressedTexImage(2, gl::TEXTURE_2D, 0, gl::RGBA8, 4, 4, 1, 16, some.data());  // not a compressed format
+    step(0);
+    b.CompressedTexImage(2, gl::TEXTURE_2D, 0, gl::COMPRESSED_RGBA, 4, 4, 1, 16, some.data());  // generic
+    step(0);
+    b.CompressedTexImage(2, gl::TEXTURE_2D, 0, dxt5, 4, 4, 1, 17, some.data());  // wrong size
+    step(0);
+    b.CompressedTexImage(2, gl::TEXTURE_2D, 0, dxt5, -4, 4, 1, 16, some.data());
+    step(0);
+    b.CompressedTexImage(2, gl::TEXTURE_2D, -1, dxt5, 4, 4, 1, 16, some.data());
+    step(0);
+    b.CompressedTexImage(2, gl::TEXTURE_2D, 0, dxt5, 0, 0, 1, 0, some.data());  // empty: fine
+    step(0);
+    level_state(gl::TEXTURE_2D, 0);
+    b.CompressedTexImage(2, gl::TEXTURE_CUBE_MAP, 0, dxt5, 4, 4, 1, 16, some.data());  // the cube map itself
+    step(0);
+    b.BindNewTexture(gl::TEXTURE_CUBE_MAP);
+    b.CompressedTexImage(2, gl::TEXTURE_CUBE_MAP_POSITIVE_X, 0, dxt5, 8, 4, 1, 32, some.data());  // not square
+    step(0);
+    b.CompressedTexImage(2, gl::TEXTURE_CUBE_MAP_NEGATIVE_Y, 1, dxt5, 8, 8, 1, 64, some.data());
+    step(0);
+    level_state(gl::TEXTURE_CUBE_MAP_NEGATIVE_Y, 1);
+    b.BindNewTexture(gl::TEXTURE_1D);
+    b.CompressedTexImage(1, gl::TEXTURE_1D, 0, gl::COMPRESSED_RED_RGTC1, 4, 1, 1, 8, some.data());
+    step(0);
+    b.CompressedTexSubImage(1, gl::TEXTURE_1D, 0, 0, 0, 0, 4, 1, 1, gl::COMPRESSED_RED_RGTC1, 8, some.data());
+    step(0);
+    b.BindNewTexture(gl::TEXTURE_3D);
+    b.CompressedTexImage(3, gl::TEXTURE_3D, 0, dxt5, 4, 4, 4, 64, some.data());
+    step(0);
+    b.BindNewTexture(gl::TEXTURE_1D_ARRAY);
+    b.CompressedTexImage(2, gl::TEXTURE_1D_ARRAY, 0, gl::COMPRESSED_RED_RGTC1, 4, 4, 1, 8, some.data());
+    step(0);
+    b.BindNewTexture(gl::TEXTURE_2D);
+    b.CompressedTexImage(2, gl::TEXTURE_2D, 0, dxt5, 10, 10, 1, size_of(dxt5, 10, 10, 1), some.data());
+    step(0);
+    const struct Sub { int x, y, w, h, size; Enum format; } subs[] = {
+        {2, 0, 4, 4, 16, dxt5},                              // offset not a multiple of 4
+        {0, 0, 3, 4, 16, dxt5},                              // width short of the edge
+        {8, 8, 2, 2, 16, dxt5},                              // the corner block, reaching both edges: fine
+        {8, 8, 4, 4, 16, dxt5},                              // past the level
+        {0, 0, 4, 4, 15, dxt5},                              // wrong size
+        {0, 0, 4, 4, 16, gl::COMPRESSED_RGBA_S3TC_DXT3_EXT},  // another compressed format
+        {0, 0, 4, 4, 16, gl::RGBA8},                          // not a compressed format
+        {0, 0, 0, 0, 0, dxt5},                                // empty: fine
+        {-4, 0, 4, 4, 16, dxt5},
+    };
+    for (const Sub& u : subs) {
+      b.CompressedTexSubImage(2, gl::TEXTURE_2D, 0, u.x, u.y, 0, u.w, u.h, 1, u.format, u.size, some.data());
+      step(0);
+    }
+    b.CompressedTexSubImage(2, gl::TEXTURE_2D, 1, 0, 0, 0, 4, 4, 1, dxt5, 16, some.data());  // level not defined
+    step(0);
+    b.TexImage2D(gl::TEXTURE_2D, 1, gl::RGBA8, 5, 5);
+    step(0);
+    b.CompressedTexSubImage(2, gl::TEXTURE_2D, 1, 0, 0, 0, 4, 4, 1, dxt5, 16, some.data());  // not compressed
+    step(0);
+    level_state(gl::TEXTURE_2D, 1);  // TEXTURE_COMPRESSED_IMAGE_SIZE of an uncompressed level
+    b.GetCompressedTexImage(gl::TEXTURE_2D, 1, 64);
+    step(0);
+    b.GetCompressedTexImage(gl::TEXTURE_2D, 3, 64);  // not defined
     step(0);
   };
   CompareSteps(16, run);

@@ -122,7 +122,14 @@ constexpr std::uint32_t kImageTargets[] = {TEXTURE_2D,
                                            TEXTURE_CUBE_MAP_POSITIVE_Z, TEXTURE_CUBE_MAP_NEGATIVE_Z,
                                            TEXTURE_2D_MULTISAMPLE};
 constexpr std::uint32_t kInternal[] = {RGBA8, RGB8, RG8, R8, RGBA32F, R32F, RGB10_A2, DEPTH_COMPONENT, DEPTH24_STENCIL8,
-                                       DEPTH32F_STENCIL8, RGBA16, R16, RGBA16F, DEPTH_COMPONENT16};
+                                       DEPTH32F_STENCIL8, RGBA16, R16, RGBA16F, DEPTH_COMPONENT16, COMPRESSED_RGBA,
+                                       COMPRESSED_RGBA_S3TC_DXT5_EXT};
+constexpr std::uint32_t kCompressed[] = {COMPRESSED_RGB_S3TC_DXT1_EXT,   COMPRESSED_RGBA_S3TC_DXT1_EXT,
+                                         COMPRESSED_RGBA_S3TC_DXT3_EXT,  COMPRESSED_RGBA_S3TC_DXT5_EXT,
+                                         COMPRESSED_SRGB_S3TC_DXT1_EXT,  COMPRESSED_SRGB_ALPHA_S3TC_DXT5_EXT,
+                                         COMPRESSED_RED_RGTC1,           COMPRESSED_SIGNED_RED_RGTC1,
+                                         COMPRESSED_RG_RGTC2,            COMPRESSED_SIGNED_RG_RGTC2,
+                                         RGBA8};
 // Every pixel format and type of OpenGL 3.3 (tables 3.2 to 3.5), and one of neither: a pixel is 16 bytes at most.
 constexpr std::uint32_t kFormats[] = {RED, GREEN, BLUE, RG, RGB, BGR, RGBA, BGRA, DEPTH_COMPONENT, DEPTH_STENCIL,
                                       STENCIL_INDEX, RED_INTEGER, RGB_INTEGER, BGRA_INTEGER, RG_INTEGER, 0x1909};
@@ -354,6 +361,30 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
             gl.FramebufferTexture1D(in.Enum(kFbTargets), in.Enum(kAttachments), in.Byte() % 4 ? TEXTURE_1D : TEXTURE_2D, id(),
                                     in.Int(-1, 4));
             break;
+          case 5: {  // compressed images: the right image size mostly, data only where scratch holds that many bytes
+            const Enum format = in.Enum(kCompressed);
+            const int d = in.Amount(0, 2, 4, kMaxArrayTextureLayers);
+            const std::int64_t right = (std::int64_t(std::max(w, 0)) + 3) / 4 * ((std::int64_t(std::max(h, 0)) + 3) / 4) *
+                                       std::max(d, 0) * (in.Byte() % 2 ? 8 : 16);
+            const int size = in.Byte() % 4 ? int(std::min<std::int64_t>(right, INT32_MAX)) : in.Int(-1, 64);
+            const void* data = small && size >= 0 && std::size_t(size) <= scratch.size() && in.Byte() % 8 ? scratch.data() : nullptr;
+            switch (in.Byte() % 6) {
+              case 0: gl.CompressedTexImage2D(in.Enum(kImageTargets), in.Int(-1, 5), format, w, h, in.Byte() < 8, size, data); break;
+              case 1: gl.CompressedTexImage3D(in.Byte() % 2 ? TEXTURE_2D_ARRAY : TEXTURE_3D, in.Int(-1, 5), format, w, h, d, 0, size, data); break;
+              case 2: gl.CompressedTexSubImage2D(in.Enum(kImageTargets), in.Int(-1, 5), 4 * in.Int(-1, 4), 4 * in.Int(-1, 4) + (in.Byte() < 16), w, h, format, size, data); break;
+              case 3: gl.CompressedTexSubImage3D(TEXTURE_2D_ARRAY, in.Int(-1, 5), 4 * in.Int(-1, 4), 4 * in.Int(-1, 4), in.Int(-1, 4), w, h, d, format, size, data); break;
+              case 4: in.Byte() % 2 ? gl.CompressedTexImage1D(TEXTURE_1D, 0, format, w, 0, size, data) : gl.CompressedTexSubImage1D(TEXTURE_1D, 0, 0, w, format, size, data); break;
+              default: {
+                std::vector<std::uint8_t> out;
+                int bytes = 0;
+                gl.GetTexLevelParameteriv(in.Enum(kImageTargets), 0, TEXTURE_COMPRESSED_IMAGE_SIZE, &bytes);
+                if (gl.GetError() == NO_ERROR && bytes >= 0 && bytes <= (1 << 20)) out.resize(std::size_t(bytes) + 1);
+                gl.GetCompressedTexImage(in.Enum(kImageTargets), in.Int(-1, 3), out.empty() ? nullptr : out.data());
+                break;
+              }
+            }
+            break;
+          }
           default:
             gl.TexImage2D(in.Enum(kImageTargets), in.Int(-1, 5), in.Enum(kInternal), w, h, in.Byte() < 8,
                           in.Enum(kFormats), in.Enum(kPixelTypes), pixels);

@@ -1,0 +1,287 @@
+// Compressed textures: each block kind decoded to the values texture_compression.h states, CompressedTexImage2D /
+// 3D and CompressedTexSubImage2D through the context (partial blocks, read back decoded and compressed), the level
+// state, completeness, and what softgl answers where it would have to compress (TexImage*, TexSubImage*,
+// GenerateMipmap, rendering into one). Mesa's decodes and errors are compared by the conformance suite.
+#include <catch2/catch.hpp>
+
+#include <cstdint>
+#include <cstring>
+#include <vector>
+
+#include <softgl/softgl.h>
+
+#include "texture.h"
+#include "texture_compression.h"
+
+using namespace softgl;
+
+namespace {
+
+std::vector<std::uint8_t> Bytes(std::initializer_list<int> v) {
+  std::vector<std::uint8_t> out;
+  for (int x : v) out.push_back(std::uint8_t(x));
+  return out;
+}
+
+// The 16 texels of one block of `format`.
+struct Decoded {
+  float t[16][4];
+};
+Decoded Decode(Enum format, const std::vector<std::uint8_t>& block) {
+  const detail::CompressedFormat* f = detail::CompressedFormatOf(format);
+  REQUIRE(f != nullptr);
+  REQUIRE(block.size() == std::size_t(f->block_bytes));
+  Decoded d;
+  detail::DecodeBlock(*f, block.data(), d.t);
+  return d;
+}
+
+// A DXT1 colour block: c0 pure red, c1 pure blue (c0 > c1: four colours), texels 0..3 indices 0..3, the rest 0.
+const std::vector<std::uint8_t> kFourColours = Bytes({0x00, 0xF8, 0x1F, 0x00, 0xE4, 0, 0, 0});
+// The same colours swapped (c0 < c1: three colours and black).
+const std::vector<std::uint8_t> kThreeColours = Bytes({0x1F, 0x00, 0x00, 0xF8, 0xE4, 0, 0, 0});
+
+}  // namespace
+
+TEST_CASE("S3TC colour blocks decode to their endpoints and 8-bit mixes", "[compression]") {
+  const Decoded four = Decode(COMPRESSED_RGB_S3TC_DXT1_EXT, kFourColours);
+  auto rgba = [](const Decoded& d, int t) {
+    return std::vector<float>{d.t[t][0], d.t[t][1], d.t[t][2], d.t[t][3]};
+  };
+  CHECK(rgba(four, 0) == std::vector<float>{255, 0, 0, 255});
+  CHECK(rgba(four, 1) == std::vector<float>{0, 0, 255, 255});
+  // A third of the way: weight floor(255 / 3) = 85 of 256, rounded down: 255 * 171 / 256 = 170.3, 255 * 85 / 256 = 84.7.
+  CHECK(rgba(four, 2) == std::vector<float>{170, 0, 84, 255});
+  CHECK(rgba(four, 3) == std::vector<float>{85, 0, 169, 255});
+  CHECK(rgba(four, 4) == rgba(four, 0));
+  const Decoded three = Decode(COMPRESSED_RGBA_S3TC_DXT1_EXT, kThreeColours);
+  CHECK(rgba(three, 0) == std::vector<float>{0, 0, 255, 255});
+  CHECK(rgba(three, 2) == std::vector<float>{128, 0, 128, 255});  // (0 + 255 + 1) / 2
+  CHECK(rgba(three, 3) == std::vector<float>{0, 0, 0, 0});        // transparent black
+  CHECK(Decode(COMPRESSED_RGB_S3TC_DXT1_EXT, kThreeColours).t[3][3] == 255.0f);  // opaque without the alpha form
+
+  // DXT3 and DXT5 always take four colours, whatever the order of c0 and c1.
+  std::vector<std::uint8_t> dxt3 = Bytes({0xF0, 0x08, 0, 0, 0, 0, 0, 0});
+  dxt3.insert(dxt3.end(), kThreeColours.begin(), kThreeColours.end());
+  const Decoded d3 = Decode(COMPRESSED_RGBA_S3TC_DXT3_EXT, dxt3);
+  CHECK(d3.t[0][3] == 0.0f);
+  CHECK(d3.t[1][3] == 255.0f);  // nibble 15
+  CHECK(d3.t[2][3] == 136.0f);  // nibble 8: 0x88
+  CHECK(rgba(d3, 2) == std::vector<float>{84, 0, 170, 136});
+  CHECK(d3.t[3][0] == 169.0f);
+  CHECK(d3.t[3][2] == 85.0f);
+}
+
+TEST_CASE("alpha and RGTC blocks: eight values or six and the extremes, unsigned and signed", "[compression]") {
+  // Indices 0..7 in texels 0..7: bits 3t.
+  auto block = [](int a0, int a1) {
+    std::uint64_t bits = 0;
+    for (int t = 0; t < 8; ++t) bits |= std::uint64_t(t) << (3 * t);
+    std::vector<std::uint8_t> b = {std::uint8_t(a0), std::uint8_t(a1)};
+    for (int k = 0; k < 6; ++k) b.push_back(std::uint8_t(bits >> (8 * k)));
+    return b;
+  };
+  const Decoded eight = Decode(COMPRESSED_RED_RGTC1, block(255, 0));
+  const float want8[8] = {255, 0, 219, 183, 146, 110, 73, 37};  // 255 (256 - w) / 256, w = floor(255 k / 7)
+  for (int t = 0; t < 8; ++t) CHECK(eight.t[t][0] == want8[t]);
+  CHECK(eight.t[0][1] == 0.0f);
+  CHECK(eight.t[0][3] == 255.0f);
+  const Decoded six = Decode(COMPRESSED_RED_RGTC1, block(0, 255));
+  const float want6[8] = {0, 255, 50, 101, 152, 203, 0, 255};
+  for (int t = 0; t < 8; ++t) CHECK(six.t[t][0] == want6[t]);
+
+  std::vector<std::uint8_t> dxt5 = block(255, 0);
+  dxt5.insert(dxt5.end(), kFourColours.begin(), kFourColours.end());
+  const Decoded d5 = Decode(COMPRESSED_RGBA_S3TC_DXT5_EXT, dxt5);
+  for (int t = 0; t < 8; ++t) CHECK(d5.t[t][3] == want8[t]);
+
+  // Signed: 127 and -128 (read as -127: both -1), eight values; six values with -127 and 127 as the extremes.
+  const Decoded s8 = Decode(COMPRESSED_SIGNED_RED_RGTC1, block(127, 0x80));
+  CHECK(s8.t[0][0] == 1.0f);
+  CHECK(s8.t[1][0] == -1.0f);
+  CHECK(s8.t[7][0] == -91.0f / 127.0f);  // (127 * 38 - 128 * 218) / 256 = -90.1, rounded down
+  CHECK(s8.t[0][3] == 1.0f);
+  const Decoded s6 = Decode(COMPRESSED_SIGNED_RED_RGTC1, block(0, 100));
+  CHECK(s6.t[6][0] == -1.0f);
+  CHECK(s6.t[7][0] == 1.0f);
+  CHECK(s6.t[2][0] == 19.0f / 127.0f);  // 100 * 51 / 256 = 19.9
+
+  std::vector<std::uint8_t> rg = block(255, 0);
+  const std::vector<std::uint8_t> green = block(0, 255);
+  rg.insert(rg.end(), green.begin(), green.end());
+  const Decoded two = Decode(COMPRESSED_RG_RGTC2, rg);
+  for (int t = 0; t < 8; ++t) {
+    CHECK(two.t[t][0] == want8[t]);
+    CHECK(two.t[t][1] == want6[t]);
+  }
+}
+
+TEST_CASE("CompressedTexImage2D and CompressedTexSubImage2D: decoded texels, blocks and level state", "[compression]") {
+  Context gl(8, 8);
+  gl.BindTexture(TEXTURE_2D, gl.GenTexture());
+  // A 6 x 5 DXT1 image: 2 x 2 blocks, the right and top ones partial.
+  std::vector<std::uint8_t> blocks;
+  for (int b = 0; b < 4; ++b) blocks.insert(blocks.end(), kFourColours.begin(), kFourColours.end());
+  blocks[8 + 4] = 0x55;  // block 1: its first row all index 1 (blue)
+  gl.CompressedTexImage2D(TEXTURE_2D, 0, COMPRESSED_RGB_S3TC_DXT1_EXT, 6, 5, 0, int(blocks.size()), blocks.data());
+  REQUIRE(gl.GetError() == NO_ERROR);
+  int v = 0;
+  gl.GetTexLevelParameteriv(TEXTURE_2D, 0, TEXTURE_COMPRESSED, &v);
+  CHECK(v == 1);
+  gl.GetTexLevelParameteriv(TEXTURE_2D, 0, TEXTURE_COMPRESSED_IMAGE_SIZE, &v);
+  CHECK(v == 32);
+  gl.GetTexLevelParameteriv(TEXTURE_2D, 0, TEXTURE_INTERNAL_FORMAT, &v);
+  CHECK(v == int(COMPRESSED_RGB_S3TC_DXT1_EXT));
+  gl.GetTexLevelParameteriv(TEXTURE_2D, 0, TEXTURE_WIDTH, &v);
+  CHECK(v == 6);
+
+  std::vector<std::uint8_t> texels(6 * 5 * 4);
+  gl.PixelStore(PACK_ALIGNMENT, 1);
+  gl.GetTexImage(TEXTURE_2D, 0, RGBA, UNSIGNED_BYTE, texels.data());
+  auto at = [&](int x, int y) {
+    const std::uint8_t* p = &texels[std::size_t((y * 6 + x) * 4)];
+    return std::vector<int>{p[0], p[1], p[2], p[3]};
+  };
+  CHECK(at(0, 0) == std::vector<int>{255, 0, 0, 255});
+  CHECK(at(2, 0) == std::vector<int>{170, 0, 84, 255});
+  CHECK(at(3, 0) == std::vector<int>{85, 0, 169, 255});
+  CHECK(at(4, 0) == std::vector<int>{0, 0, 255, 255});  // block 1's first row
+  CHECK(at(5, 0) == std::vector<int>{0, 0, 255, 255});
+  CHECK(at(4, 1) == std::vector<int>{255, 0, 0, 255});
+  CHECK(at(2, 4) == std::vector<int>{170, 0, 84, 255});  // block 2 (above block 0), its first row
+
+  std::vector<std::uint8_t> back(40, 0xCD);
+  gl.GetCompressedTexImage(TEXTURE_2D, 0, back.data());
+  CHECK(std::equal(blocks.begin(), blocks.end(), back.begin()));
+  CHECK(back[32] == 0xCD);
+
+  // Block 3 (partial in both directions) replaced by the three-colour block.
+  gl.CompressedTexSubImage2D(TEXTURE_2D, 0, 4, 4, 2, 1, COMPRESSED_RGB_S3TC_DXT1_EXT, 8, kThreeColours.data());
+  REQUIRE(gl.GetError() == NO_ERROR);
+  gl.GetTexImage(TEXTURE_2D, 0, RGBA, UNSIGNED_BYTE, texels.data());
+  CHECK(at(4, 4) == std::vector<int>{0, 0, 255, 255});
+  CHECK(at(5, 4) == std::vector<int>{255, 0, 0, 255});
+  CHECK(at(2, 4) == std::vector<int>{170, 0, 84, 255});  // block 2 unchanged
+  gl.GetCompressedTexImage(TEXTURE_2D, 0, back.data());
+  CHECK(std::equal(kThreeColours.begin(), kThreeColours.end(), back.begin() + 24));
+
+  // A 2D array: layer 1 of two, its one block replaced.
+  gl.BindTexture(TEXTURE_2D_ARRAY, gl.GenTexture());
+  std::vector<std::uint8_t> layers = kFourColours;
+  layers.insert(layers.end(), kFourColours.begin(), kFourColours.end());
+  gl.CompressedTexImage3D(TEXTURE_2D_ARRAY, 0, COMPRESSED_RGBA_S3TC_DXT1_EXT, 4, 4, 2, 0, 16, layers.data());
+  gl.CompressedTexSubImage3D(TEXTURE_2D_ARRAY, 0, 0, 0, 1, 4, 4, 1, COMPRESSED_RGBA_S3TC_DXT1_EXT, 8,
+                             kThreeColours.data());
+  REQUIRE(gl.GetError() == NO_ERROR);
+  std::vector<std::uint8_t> array_texels(4 * 4 * 2 * 4);
+  gl.GetTexImage(TEXTURE_2D_ARRAY, 0, RGBA, UNSIGNED_BYTE, array_texels.data());
+  CHECK(array_texels[0] == 255);    // layer 0, texel 0: red
+  CHECK(array_texels[64 + 2] == 255);  // layer 1, texel 0: blue
+  CHECK(array_texels[64 + 3 * 4 + 3] == 0);  // layer 1, texel 3: transparent black
+}
+
+TEST_CASE("compressed levels: completeness, and what softgl does not compress", "[compression]") {
+  Context gl(8, 8);
+  const std::uint32_t tex = gl.GenTexture();
+  gl.BindTexture(TEXTURE_2D, tex);
+  const std::vector<std::uint8_t> block = kFourColours;
+  gl.CompressedTexImage2D(TEXTURE_2D, 0, COMPRESSED_RGBA_S3TC_DXT1_EXT, 2, 2, 0, 8, block.data());
+  gl.CompressedTexImage2D(TEXTURE_2D, 1, COMPRESSED_RGBA_S3TC_DXT1_EXT, 1, 1, 0, 8, block.data());
+  REQUIRE(gl.GetError() == NO_ERROR);
+  gl.TexParameteri(TEXTURE_2D, TEXTURE_MIN_FILTER, LINEAR_MIPMAP_LINEAR);
+  detail::TextureObject probe;
+  probe.target = TEXTURE_2D;
+  {  // the same chain built directly: complete; with level 1 an RGBA8 level of the decoded bytes: incomplete
+    const detail::CompressedFormat* f = detail::CompressedFormatOf(COMPRESSED_RGBA_S3TC_DXT1_EXT);
+    for (int l = 0; l < 2; ++l) {
+      detail::TextureLevel& lv = probe.levels[0][l];
+      lv.Allocate(f->decoded, 2 >> l, 2 >> l);
+      lv.compressed = f->format;
+      lv.blocks.assign(8, 0);
+      detail::DecodeRegion(*f, block.data(), 0, 0, 0, lv.width, lv.height, 1, lv);
+    }
+    probe.params.min_filter = LINEAR_MIPMAP_LINEAR;
+    CHECK(detail::MakeView(probe).complete);
+    probe.levels[0][1].compressed = 0;
+    probe.levels[0][1].blocks.clear();
+    CHECK(!detail::MakeView(probe).complete);
+  }
+
+  // No compression: a specific compressed format through TexImage*, CopyTexImage*; any change to a compressed
+  // level but CompressedTexSubImage*; GenerateMipmap from one.
+  const std::uint8_t rgba[16] = {};
+  gl.TexImage2D(TEXTURE_2D, 2, COMPRESSED_RGBA_S3TC_DXT5_EXT, 1, 1, 0, RGBA, UNSIGNED_BYTE, rgba);
+  CHECK(gl.GetError() == INVALID_OPERATION);
+  gl.CopyTexImage2D(TEXTURE_2D, 2, COMPRESSED_RED_RGTC1, 0, 0, 1, 1, 0);
+  CHECK(gl.GetError() == INVALID_OPERATION);
+  gl.TexSubImage2D(TEXTURE_2D, 0, 0, 0, 1, 1, RGBA, UNSIGNED_BYTE, rgba);
+  CHECK(gl.GetError() == INVALID_OPERATION);
+  gl.CopyTexSubImage2D(TEXTURE_2D, 0, 0, 0, 0, 0, 1, 1);
+  CHECK(gl.GetError() == INVALID_OPERATION);
+  gl.GenerateMipmap(TEXTURE_2D);
+  CHECK(gl.GetError() == INVALID_OPERATION);
+  // Not colour-renderable.
+  const std::uint32_t fbo = gl.GenFramebuffer();
+  gl.BindFramebuffer(FRAMEBUFFER, fbo);
+  gl.FramebufferTexture2D(FRAMEBUFFER, COLOR_ATTACHMENT0, TEXTURE_2D, tex, 0);
+  CHECK(gl.CheckFramebufferStatus(FRAMEBUFFER) == FRAMEBUFFER_INCOMPLETE_ATTACHMENT);
+  gl.BindFramebuffer(FRAMEBUFFER, 0);
+
+  // The generic formats are accepted and stored uncompressed.
+  gl.BindTexture(TEXTURE_2D, gl.GenTexture());
+  gl.TexImage2D(TEXTURE_2D, 0, COMPRESSED_RGBA, 2, 2, 0, RGBA, UNSIGNED_BYTE, rgba);
+  REQUIRE(gl.GetError() == NO_ERROR);
+  int v = -1;
+  gl.GetTexLevelParameteriv(TEXTURE_2D, 0, TEXTURE_COMPRESSED, &v);
+  CHECK(v == 0);
+  gl.GetTexLevelParameteriv(TEXTURE_2D, 0, TEXTURE_INTERNAL_FORMAT, &v);
+  CHECK(v == int(RGBA8));
+  gl.GetTexLevelParameteriv(TEXTURE_2D, 0, TEXTURE_COMPRESSED_IMAGE_SIZE, &v);
+  CHECK(gl.GetError() == INVALID_OPERATION);
+  gl.TexImage2D(TEXTURE_2D, 0, COMPRESSED_SRGB_ALPHA, 2, 2, 0, RGBA, UNSIGNED_BYTE, rgba);
+  gl.GetTexLevelParameteriv(TEXTURE_2D, 0, TEXTURE_INTERNAL_FORMAT, &v);
+  CHECK(v == int(SRGB8_ALPHA8));
+
+  int formats[5] = {0, 0, 0, 0, -1};
+  gl.GetIntegerv(NUM_COMPRESSED_TEXTURE_FORMATS, formats);
+  CHECK(formats[0] == 4);
+  gl.GetIntegerv(COMPRESSED_TEXTURE_FORMATS, formats);
+  CHECK(formats[0] == int(COMPRESSED_RGB_S3TC_DXT1_EXT));
+  CHECK(formats[3] == int(COMPRESSED_RGBA_S3TC_DXT5_EXT));
+  CHECK(formats[4] == -1);
+}
+
+TEST_CASE("compressed texture calls reject bad sizes, null data and huge images", "[compression]") {
+  Context gl(4, 4);
+  gl.BindTexture(TEXTURE_2D, gl.GenTexture());
+  const std::vector<std::uint8_t> block = kFourColours;
+  const Enum dxt1 = COMPRESSED_RGB_S3TC_DXT1_EXT;
+  gl.CompressedTexImage2D(TEXTURE_2D, 0, dxt1, 4, 4, 0, 8, nullptr);  // null data for a block
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.CompressedTexImage2D(TEXTURE_2D, 0, dxt1, 4, 4, 0, -8, block.data());
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.CompressedTexImage2D(TEXTURE_2D, 0, dxt1, 4, 4, 1, 8, block.data());  // border
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.CompressedTexImage2D(TEXTURE_2D, 0, dxt1, 16384, 16384, 0, 8, block.data());  // the size does not match
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.CompressedTexImage2D(TEXTURE_2D, 0, dxt1, 16385, 4, 0, 8, block.data());
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.CompressedTexImage2D(TEXTURE_2D, 0, 0xFFFF, 4, 4, 0, 8, block.data());
+  CHECK(gl.GetError() == INVALID_ENUM);
+  // Layers beyond what a level holds: the size that would match overflows int, so it cannot be given.
+  gl.BindTexture(TEXTURE_2D_ARRAY, gl.GenTexture());
+  gl.CompressedTexImage3D(TEXTURE_2D_ARRAY, 0, dxt1, 16384, 16384, 2048, 0, 8, block.data());
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.CompressedTexImage3D(TEXTURE_2D_ARRAY, 0, dxt1, 4, 4, 1, 0, 8, block.data());
+  REQUIRE(gl.GetError() == NO_ERROR);
+  gl.CompressedTexSubImage3D(TEXTURE_2D_ARRAY, 0, 0, 0, 0, 4, 4, 1, dxt1, 8, nullptr);
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.CompressedTexSubImage3D(TEXTURE_2D_ARRAY, 0, 0, 0, 1, 4, 4, 1, dxt1, 8, block.data());  // past the layers
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.GetCompressedTexImage(TEXTURE_2D_ARRAY, 0, nullptr);
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.GetCompressedTexImage(TEXTURE_2D_ARRAY, 15, nullptr);
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.GetCompressedTexImage(0x1234, 0, nullptr);
+  CHECK(gl.GetError() == INVALID_ENUM);
+}
