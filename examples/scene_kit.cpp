@@ -1,6 +1,9 @@
 // scene_kit.cpp — meshes and helpers for the example scenes.
 #include "scene_kit.h"
 
+#include <algorithm>
+#include <cstdlib>
+
 #include <glm/gtc/matrix_transform.hpp>
 
 namespace scenes::kit {
@@ -107,6 +110,146 @@ Mesh MakeQuad(float half, const std::uint8_t color[4]) {
     m.vertices.push_back({corners[k], {0, 1, 0}, {color[0], color[1], color[2], color[3]}, uvs[k]});
   m.indices = {0, 1, 2, 0, 2, 3};
   return m;
+}
+
+// ---- Compressed images ----------------------------------------------------------------------------------------
+
+namespace {
+
+// An alpha or RGTC block of 16 values (0..255, or -128..127 for the signed formats).
+void EncodeValues(const int v[16], std::vector<std::uint8_t>& out) {
+  const int hi = *std::max_element(v, v + 16), lo = *std::min_element(v, v + 16);
+  out.push_back(std::uint8_t(hi));
+  out.push_back(std::uint8_t(lo));
+  std::uint64_t bits = 0;
+  for (int t = 0; t < 16; ++t) {
+    int best = 0, best_d = 1 << 30;
+    for (int i = 0; i < 8; ++i) {
+      const int value = i == 0 ? hi : i == 1 ? lo : hi > lo ? ((8 - i) * hi + (i - 1) * lo) / 7 : hi;
+      if (std::abs(value - v[t]) < best_d) best = i, best_d = std::abs(value - v[t]);
+    }
+    bits |= std::uint64_t(best) << (3 * t);
+  }
+  for (int k = 0; k < 6; ++k) out.push_back(std::uint8_t(bits >> (8 * k)));
+}
+
+// An S3TC colour block of the 16 texels' RGB; with `punch`, texels of alpha < 128 become DXT1's transparent black.
+void EncodeColours(const std::uint8_t rgba[16][4], bool punch, std::vector<std::uint8_t>& out) {
+  int lo[3] = {255, 255, 255}, hi[3] = {0, 0, 0};
+  bool any_clear = false;
+  for (int t = 0; t < 16; ++t) {
+    any_clear |= punch && rgba[t][3] < 128;
+    for (int c = 0; c < 3; ++c) lo[c] = std::min(lo[c], int(rgba[t][c])), hi[c] = std::max(hi[c], int(rgba[t][c]));
+  }
+  auto word = [](const int c[3]) { return std::uint16_t((c[0] >> 3) << 11 | (c[1] >> 2) << 5 | (c[2] >> 3)); };
+  std::uint16_t w0 = word(hi), w1 = word(lo);
+  if (any_clear ? w0 > w1 : w0 < w1) std::swap(w0, w1);  // three colours and black, or four
+  auto widen = [](std::uint16_t w, int c) {
+    const int r = w >> 11, g = (w >> 5) & 63, b = w & 31;
+    return c == 0 ? (r << 3 | r >> 2) : c == 1 ? (g << 2 | g >> 4) : (b << 3 | b >> 2);
+  };
+  std::uint32_t bits = 0;
+  for (int t = 0; t < 16; ++t) {
+    int best = 0, best_d = 1 << 30;
+    if (any_clear && rgba[t][3] < 128) {
+      best = 3;
+    } else {
+      for (int i = 0; i < (any_clear ? 3 : 4); ++i) {
+        int d = 0;
+        for (int c = 0; c < 3; ++c) {
+          const int a = widen(w0, c), b = widen(w1, c);
+          const int value = i == 0 ? a : i == 1 ? b : any_clear ? (a + b) / 2 : i == 2 ? (2 * a + b) / 3 : (a + 2 * b) / 3;
+          d += (value - rgba[t][c]) * (value - rgba[t][c]);
+        }
+        if (d < best_d) best = i, best_d = d;
+      }
+    }
+    bits |= std::uint32_t(best) << (2 * t);
+  }
+  for (int k = 0; k < 2; ++k) out.push_back(std::uint8_t(w0 >> (8 * k)));
+  for (int k = 0; k < 2; ++k) out.push_back(std::uint8_t(w1 >> (8 * k)));
+  for (int k = 0; k < 4; ++k) out.push_back(std::uint8_t(bits >> (8 * k)));
+}
+
+}  // namespace
+
+std::vector<std::uint8_t> EncodeBlocks(const std::uint8_t* rgba, int w, int h, softgl::Enum format) {
+  std::vector<std::uint8_t> out;
+  for (int by = 0; by < (h + 3) / 4; ++by)
+    for (int bx = 0; bx < (w + 3) / 4; ++bx) {
+      std::uint8_t t[16][4];
+      for (int k = 0; k < 16; ++k) {
+        const int x = std::min(bx * 4 + k % 4, w - 1), y = std::min(by * 4 + k / 4, h - 1);
+        for (int c = 0; c < 4; ++c) t[k][c] = rgba[std::size_t((y * w + x) * 4 + c)];
+      }
+      int v[16];
+      auto channel = [&](int c, int offset) {
+        for (int k = 0; k < 16; ++k) v[k] = t[k][c] - offset;
+      };
+      const bool is_signed = format == softgl::COMPRESSED_SIGNED_RED_RGTC1 || format == softgl::COMPRESSED_SIGNED_RG_RGTC2;
+      switch (format) {
+        case softgl::COMPRESSED_RGB_S3TC_DXT1_EXT:
+        case softgl::COMPRESSED_SRGB_S3TC_DXT1_EXT: EncodeColours(t, false, out); break;
+        case softgl::COMPRESSED_RGBA_S3TC_DXT1_EXT:
+        case softgl::COMPRESSED_SRGB_ALPHA_S3TC_DXT1_EXT: EncodeColours(t, true, out); break;
+        case softgl::COMPRESSED_RGBA_S3TC_DXT3_EXT:
+        case softgl::COMPRESSED_SRGB_ALPHA_S3TC_DXT3_EXT:
+          for (int k = 0; k < 16; k += 2) out.push_back(std::uint8_t(t[k][3] >> 4 | (t[k + 1][3] >> 4) << 4));
+          EncodeColours(t, false, out);
+          break;
+        case softgl::COMPRESSED_RGBA_S3TC_DXT5_EXT:
+        case softgl::COMPRESSED_SRGB_ALPHA_S3TC_DXT5_EXT:
+          channel(3, 0);
+          EncodeValues(v, out);
+          EncodeColours(t, false, out);
+          break;
+        default:  // RGTC: red, and green for RGTC2
+          channel(0, is_signed ? 128 : 0);
+          EncodeValues(v, out);
+          if (format == softgl::COMPRESSED_RG_RGTC2 || format == softgl::COMPRESSED_SIGNED_RG_RGTC2) {
+            channel(1, is_signed ? 128 : 0);
+            EncodeValues(v, out);
+          }
+          break;
+      }
+    }
+  return out;
+}
+
+
+std::vector<std::uint8_t> MakeDds(softgl::Enum format, int w, int h,
+                                  const std::vector<std::vector<std::uint8_t>>& levels) {
+  std::vector<std::uint8_t> f(128, 0);
+  auto put = [&](std::size_t at, std::uint32_t v) {
+    for (int k = 0; k < 4; ++k) f[at + std::size_t(k)] = std::uint8_t(v >> (8 * k));
+  };
+  const char* four_cc = "DXT5";
+  bool alpha = true;
+  switch (format) {
+    case softgl::COMPRESSED_RGB_S3TC_DXT1_EXT:
+    case softgl::COMPRESSED_SRGB_S3TC_DXT1_EXT: four_cc = "DXT1", alpha = false; break;
+    case softgl::COMPRESSED_RGBA_S3TC_DXT1_EXT:
+    case softgl::COMPRESSED_SRGB_ALPHA_S3TC_DXT1_EXT: four_cc = "DXT1"; break;
+    case softgl::COMPRESSED_RGBA_S3TC_DXT3_EXT:
+    case softgl::COMPRESSED_SRGB_ALPHA_S3TC_DXT3_EXT: four_cc = "DXT3"; break;
+    case softgl::COMPRESSED_RED_RGTC1: four_cc = "ATI1", alpha = false; break;
+    case softgl::COMPRESSED_SIGNED_RED_RGTC1: four_cc = "BC4S", alpha = false; break;
+    case softgl::COMPRESSED_RG_RGTC2: four_cc = "ATI2", alpha = false; break;
+    case softgl::COMPRESSED_SIGNED_RG_RGTC2: four_cc = "BC5S", alpha = false; break;
+    default: break;
+  }
+  f[0] = 'D', f[1] = 'D', f[2] = 'S', f[3] = ' ';
+  put(4, 124);                // the header's size
+  put(8, 0x1007 | 0x20000);   // DDSD_CAPS, HEIGHT, WIDTH, PIXELFORMAT, MIPMAPCOUNT
+  put(12, std::uint32_t(h));
+  put(16, std::uint32_t(w));
+  put(28, std::uint32_t(levels.size()));
+  put(76, 32);                         // the pixel format's size
+  put(80, 0x4 | (alpha ? 0x1 : 0x0));  // DDPF_FOURCC, DDPF_ALPHAPIXELS
+  for (int k = 0; k < 4; ++k) f[std::size_t(84 + k)] = std::uint8_t(four_cc[k]);
+  put(108, 0x1000 | (levels.size() > 1 ? 0x400008 : 0));  // DDSCAPS_TEXTURE, MIPMAP, COMPLEX
+  for (const std::vector<std::uint8_t>& level : levels) f.insert(f.end(), level.begin(), level.end());
+  return f;
 }
 
 }  // namespace scenes::kit

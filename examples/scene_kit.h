@@ -124,6 +124,21 @@ glm::mat4 Projection(int width, int height, float fovy_degrees, float near_plane
 /// A new vertex array (left bound) of one triangle covering the viewport: clip-space x, y in attribute 0.
 std::uint32_t MakeScreenTriangle(softgl::Context& gl);
 
+// ---- Compressed images ----------------------------------------------------------------------------------------
+
+/// A plain S3TC / RGTC block encoder, so that the compressed examples and tests have blocks to load without a
+/// texture tool (a real asset pipeline uses one: this one takes each block's extremes as its endpoints and gives
+/// each texel the nearest value between them). The blocks of a w x h RGBA8 image, rows in the order given (edge
+/// texels repeated into partial blocks), in `format`: the S3TC formats (texels of alpha below 128 become DXT1's
+/// transparent black in the RGBA forms of DXT1) and RGTC's (red, or red and green; the signed forms take each byte
+/// minus 128).
+std::vector<std::uint8_t> EncodeBlocks(const std::uint8_t* rgba, int w, int h, softgl::Enum format);
+
+/// A DDS file of `levels` (each level's blocks, level 0 first) of a w x h image in `format` (an S3TC format, or
+/// RGTC as ATI1 / BC4S / ATI2 / BC5S), with the 128-byte header of FourCC files.
+std::vector<std::uint8_t> MakeDds(softgl::Enum format, int w, int h,
+                                  const std::vector<std::vector<std::uint8_t>>& levels);
+
 /// Draws an uploaded mesh (its vertex array bound) with its element count.
 inline void DrawMesh(softgl::Context& gl, const Mesh& mesh) {
   gl.DrawElement(softgl::TRIANGLES, int(mesh.indices.size()), softgl::UNSIGNED_INT, 0);

@@ -52,6 +52,11 @@ softgl::Image TexturedCube(int width, int height);
 /// the left, and where the red and green panels overlap the left stays bright.
 softgl::Image Srgb(int width, int height);
 
+/// Compressed textures: a receding floor and three cubes with one pattern as RGBA8 (left), DXT1 from a DDS file
+/// (middle: 8 times smaller, each 4 x 4 block's colours on a line between two) and DXT5 (right: colours as DXT1,
+/// plus an alpha block; the dark checks a third opaque, blended over the sky on the floor).
+softgl::Image CompressedTextures(int width, int height);
+
 /// Multisampling: the same scene (a lit torus and thin spokes) with 1, 2, 4 and 8 samples a pixel, left to right,
 /// each rendered at half size into a multisampled framebuffer object, resolved by BlitFramebuffer and magnified 2x
 /// so that the pixels show: staircase edges on the left, smoother with every doubling of the samples.

@@ -2,6 +2,9 @@
 // a framebuffer object, environment mapping with a cube map.
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -64,10 +67,12 @@ struct TexturedShader : softgl::Shader<TexturedShader, TexVaryings> {
     out.varyings.normal = glm::mat3(model) * vec3(in.attrib[1]);
     out.varyings.uv = vec2(in.attrib[3]) * uv_scale;
   }
+  bool use_alpha = false;  // keep the texture's alpha (else 1)
   void Fragment(const FragmentLanes<TexVaryings>& in, FragmentLanesOut& out) const {
     const Float diffuse = max(dot(normalize(in.varyings.normal), light_dir), 0.0f);
-    out.color[0] = in.Texture(0, in.varyings.uv) * (0.35f + 0.65f * diffuse);
-    out.color[0].w = 1.0f;
+    const vec4 texel = in.Texture(0, in.varyings.uv);
+    out.color[0] = texel * (0.35f + 0.65f * diffuse);
+    out.color[0].w = use_alpha ? texel.w : Float(1.0f);
   }
 };
 
@@ -76,19 +81,34 @@ struct ScreenVaryings {
   vec2 uv;
 };
 
+// The floor and cube of TexturedCube and CompressedTextures, uploaded, with the view; depth test on, cleared to sky.
+struct FloorScene {
+  glm::mat4 vp;
+  Mesh floor, cube;
+  std::uint32_t floor_vao = 0, cube_vao = 0;
+  FloorScene(softgl::Context& gl, int width, int height)
+      : vp(Projection(width, height, 55.0f, 0.1f, 200.0f) *
+           glm::lookAt(glm::vec3(0.0f, 1.4f, 3.2f), glm::vec3(0.0f, 0.6f, -4.0f), glm::vec3(0, 1, 0))) {
+    const std::uint8_t white[4] = {255, 255, 255, 255};
+    floor = MakeQuad(60.0f, white);
+    cube = MakeCube();
+    floor_vao = UploadLitMesh(gl, floor);
+    cube_vao = UploadLitMesh(gl, cube);
+    gl.Enable(softgl::DEPTH_TEST);
+    gl.ClearColor(0.62f, 0.75f, 0.9f, 1.0f);
+    gl.Clear(softgl::COLOR_BUFFER_BIT | softgl::DEPTH_BUFFER_BIT);
+  }
+};
+
 }  // namespace
 
 softgl::Image TexturedCube(int width, int height) {
   softgl::Context gl(width, height);
-  const glm::mat4 vp = Projection(width, height, 55.0f, 0.1f, 200.0f) *
-                       glm::lookAt(glm::vec3(0.0f, 1.4f, 3.2f), glm::vec3(0.0f, 0.6f, -4.0f), glm::vec3(0, 1, 0));
-  const std::uint8_t white[4] = {255, 255, 255, 255};
-  const Mesh floor = MakeQuad(60.0f, white), cube = MakeCube();
-  const std::uint32_t floor_vao = UploadLitMesh(gl, floor), cube_vao = UploadLitMesh(gl, cube);
+  const FloorScene scene(gl, width, height);
+  const glm::mat4& vp = scene.vp;
+  const Mesh &floor = scene.floor, &cube = scene.cube;
+  const std::uint32_t floor_vao = scene.floor_vao, cube_vao = scene.cube_vao;
   MakePatternTexture(gl);
-  gl.Enable(softgl::DEPTH_TEST);
-  gl.ClearColor(0.62f, 0.75f, 0.9f, 1.0f);
-  gl.Clear(softgl::COLOR_BUFFER_BIT | softgl::DEPTH_BUFFER_BIT);
   TexturedShader shader;
   gl.UseProgram(shader);
   // The floor repeats the texture 60 times, in three bands. Left, NEAREST (no mipmaps): the far field breaks into
@@ -117,6 +137,90 @@ softgl::Image TexturedCube(int width, int height) {
   shader.uv_scale = 1.0f;
   gl.BindVertexArray(cube_vao);
   DrawMesh(gl, cube);
+  return gl.ReadPixels();
+}
+
+namespace {
+
+// The pattern's levels (2 x 2 box averages down to 1 x 1, alpha 255 on the light checks and 96 on the dark ones),
+// each with its rows top first as an image file stores them, encoded in `format` and written as a DDS file.
+std::vector<std::uint8_t> PatternDds(softgl::Enum format) {
+  constexpr int kN = 256;
+  std::vector<std::uint8_t> level = PatternTexels(kN);
+  for (int y = 0; y < kN; ++y)
+    for (int x = 0; x < kN; ++x) level[(std::size_t(y) * kN + x) * 4 + 3] = ((x / 32) + (y / 32)) % 2 == 0 ? 255 : 96;
+  std::vector<std::vector<std::uint8_t>> blocks;
+  for (int n = kN;; n /= 2) {
+    std::vector<std::uint8_t> top_first(level.size());
+    for (int y = 0; y < n; ++y)
+      std::copy_n(&level[std::size_t(n - 1 - y) * n * 4], std::size_t(n) * 4, &top_first[std::size_t(y) * n * 4]);
+    blocks.push_back(EncodeBlocks(top_first.data(), n, n, format));
+    if (n == 1) break;
+    std::vector<std::uint8_t> next(std::size_t(n / 2) * (n / 2) * 4);
+    for (int y = 0; y < n / 2; ++y)
+      for (int x = 0; x < n / 2; ++x)
+        for (int c = 0; c < 4; ++c) {
+          int sum = 0;
+          for (int k = 0; k < 4; ++k) sum += level[(std::size_t(2 * y + k / 2) * n + 2 * x + k % 2) * 4 + c];
+          next[(std::size_t(y) * (n / 2) + x) * 4 + c] = std::uint8_t((sum + 2) / 4);
+        }
+    level = std::move(next);
+  }
+  return MakeDds(format, kN, kN, blocks);
+}
+
+}  // namespace
+
+softgl::Image CompressedTextures(int width, int height) {
+  softgl::Context gl(width, height);
+  const FloorScene scene(gl, width, height);
+  const glm::mat4& vp = scene.vp;
+  // Three textures of the same pattern: RGBA8 with GenerateMipmap's levels, and DXT1 and DXT5 from DDS files (made
+  // here; a real program reads them with TexImage2DFromFile), each of their levels given in the file. The files
+  // store the top row first: flip_vertically puts the bottom row at t = 0.
+  const std::uint32_t plain = MakePatternTexture(gl), dxt1 = gl.GenTexture(), dxt5 = gl.GenTexture();
+  for (const auto& [tex, format] : {std::pair(dxt1, softgl::COMPRESSED_RGB_S3TC_DXT1_EXT),
+                                    std::pair(dxt5, softgl::COMPRESSED_RGBA_S3TC_DXT5_EXT)}) {
+    const std::vector<std::uint8_t> dds = PatternDds(format);
+    gl.BindTexture(softgl::TEXTURE_2D, tex);
+    std::string error;
+    if (!gl.TexImage2DFromMemory(softgl::TEXTURE_2D, dds.data(), dds.size(), true, &error))
+      std::fprintf(stderr, "compressed_textures: %s\n", error.c_str());
+    gl.TexParameteri(softgl::TEXTURE_2D, softgl::TEXTURE_MIN_FILTER, softgl::LINEAR_MIPMAP_LINEAR);
+  }
+  TexturedShader shader;
+  gl.UseProgram(shader);
+  // The floor in three bands: RGBA8 (4 bytes a texel), DXT1 (half a byte: the colours of each 4 x 4 block on a
+  // line between two), DXT5 (one byte: DXT1's colours and an alpha block, blended over the sky).
+  shader.mvp = vp;
+  shader.uv_scale = 60.0f;
+  gl.BindVertexArray(scene.floor_vao);
+  gl.Enable(softgl::SCISSOR_TEST);
+  const int third = width / 3;
+  const std::uint32_t bands[3] = {plain, dxt1, dxt5};
+  for (int b = 0; b < 3; ++b) {
+    gl.Scissor(b * third, 0, b == 2 ? width - 2 * third : third, height);
+    gl.BindTexture(softgl::TEXTURE_2D, bands[b]);
+    shader.use_alpha = b == 2;
+    if (b == 2) {
+      gl.Enable(softgl::BLEND);
+      gl.BlendFunc(softgl::SRC_ALPHA, softgl::ONE_MINUS_SRC_ALPHA);
+    }
+    DrawMesh(gl, scene.floor);
+  }
+  gl.Disable(softgl::BLEND);
+  gl.Disable(softgl::SCISSOR_TEST);
+  // A cube of each texture, close: the blocks' colours show at this scale.
+  shader.use_alpha = false;
+  shader.uv_scale = 1.0f;
+  gl.BindVertexArray(scene.cube_vao);
+  for (int b = 0; b < 3; ++b) {
+    shader.model = glm::rotate(glm::translate(kIdentity, glm::vec3(-1.5f + 1.5f * float(b), 0.55f, -1.0f)), 0.6f,
+                               glm::vec3(0, 1, 0));
+    shader.mvp = vp * shader.model;
+    gl.BindTexture(softgl::TEXTURE_2D, bands[b]);
+    DrawMesh(gl, scene.cube);
+  }
   return gl.ReadPixels();
 }
 

@@ -5,7 +5,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/deps.sh assimp-testmodels
 
-examples=(hello triangle cube wireframe clipped stencil_outline mirror transparency decals textured_cube srgb
+examples=(hello triangle cube wireframe clipped stencil_outline mirror transparency decals textured_cube compressed_textures srgb
   multisample sample_shading small_formats shadow_map cascaded_shadows post_process environment_map instancing particles feedback_particles geometry_stage models tour)
 
 scripts/configure.sh build/release -DCMAKE_BUILD_TYPE=Release

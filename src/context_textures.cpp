@@ -369,6 +369,20 @@ namespace {
 // (with `srgb` 3 and 4 channels as SRGB8, SRGB8_ALPHA8), HDR as RGBA32F.
 bool TexImageFromLoaded(Context& gl, ContextState& s, Enum target, const detail::LoadedImage& img,
                         const std::string& name, std::string* error, bool srgb) {
+  if (img.compressed != 0) {  // a DDS file: every level it holds, as its blocks
+    const Enum before = s.error;
+    for (std::size_t l = 0; l < img.levels.size() && s.error == before; ++l) {
+      const detail::CompressedImageLevel& lv = img.levels[l];
+      gl.CompressedTexImage2D(target, int(l), img.compressed, lv.width, lv.height, 0, int(lv.blocks.size()),
+                              lv.blocks.data());
+    }
+    if (s.error != before) {
+      if (error) *error = name + ": the texture could not be defined";
+      return false;
+    }
+    s.Bound(target)->params.max_level = int(img.levels.size()) - 1;  // (a chain that stops early stays complete)
+    return true;
+  }
   if (img.width > kMaxTextureSize || img.height > kMaxTextureSize || img.channels < 1 || img.channels > 4) {
     s.SetError(INVALID_VALUE, __func__, "a numeric argument is out of range");
     if (error) *error = name + ": larger than kMaxTextureSize, or an unsupported channel count";
@@ -424,7 +438,7 @@ bool TexImageFromDecoded(Context& gl, ContextState& s, Enum target, const std::s
 bool Context::TexImage2DFromFile(Enum target, const std::string& path, bool flip_vertically, std::string* error,
                                  Enum encoding) {
   return TexImageFromDecoded(*this, *state_, target, path, error, encoding, __func__, [&](detail::LoadedImage& img) {
-    return detail::LoadImageFile(path, flip_vertically, img, error);
+    return detail::LoadImageFile(path, flip_vertically, img, error, encoding == SRGB);
   });
 }
 
@@ -432,7 +446,7 @@ bool Context::TexImage2DFromMemory(Enum target, const void* data, std::size_t si
                                    std::string* error, Enum encoding) {
   const std::string name = "image in memory";
   return TexImageFromDecoded(*this, *state_, target, name, error, encoding, __func__, [&](detail::LoadedImage& img) {
-    return detail::LoadImageMemory(data, size, name, flip_vertically, img, error);
+    return detail::LoadImageMemory(data, size, name, flip_vertically, img, error, encoding == SRGB);
   });
 }
 

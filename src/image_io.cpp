@@ -1,6 +1,7 @@
 // image_io.cpp — PNG output and image decoding: stb_image_write and stb_image (Debian's libstb-dev), and
 // libjpeg-turbo for JPEG (docs/testing.md says why: stb_image 2.27 misbehaves on corrupt JPEG files).
 #include <softgl/image.h>
+#include <softgl/texture.h>
 
 #include <csetjmp>
 #include <cstdio>  // (jpeglib.h needs FILE declared)
@@ -29,6 +30,7 @@
 #include <stb/stb_image_write.h>
 
 #include <cstdint>
+#include <algorithm>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -246,7 +248,166 @@ bool ReadImageInfo(const void* data, std::size_t size, int* width, int* height, 
 
 namespace detail {
 
-bool LoadImageFile(const std::string& path, bool flip_vertically, LoadedImage& out, std::string* error) {
+namespace {
+
+std::uint32_t Le32(const std::uint8_t* p) {
+  return std::uint32_t(p[0]) | std::uint32_t(p[1]) << 8 | std::uint32_t(p[2]) << 16 | std::uint32_t(p[3]) << 24;
+}
+
+constexpr std::uint32_t FourCc(const char (&c)[5]) {
+  return std::uint32_t(std::uint8_t(c[0])) | std::uint32_t(std::uint8_t(c[1])) << 8 |
+         std::uint32_t(std::uint8_t(c[2])) << 16 | std::uint32_t(std::uint8_t(c[3])) << 24;
+}
+
+// The compressed format of a DDS pixel format (its FourCC, or with "DX10" the DXGI format), 0 for one softgl does
+// not take; `why` says which kind that is.
+Enum DdsFormat(std::uint32_t four_cc, std::uint32_t dxgi, bool alpha_pixels, const char*& why) {
+  why = "not a block-compressed DDS file softgl takes (S3TC: DXT1 to DXT5, RGTC: ATI1, ATI2, BC4U/S, BC5U/S)";
+  if (four_cc == FourCc("DX10")) {
+    switch (dxgi) {
+      case 70: case 71: return COMPRESSED_RGBA_S3TC_DXT1_EXT;  // BC1_TYPELESS, BC1_UNORM
+      case 72: return COMPRESSED_SRGB_ALPHA_S3TC_DXT1_EXT;      // BC1_UNORM_SRGB
+      case 73: case 74: return COMPRESSED_RGBA_S3TC_DXT3_EXT;
+      case 75: return COMPRESSED_SRGB_ALPHA_S3TC_DXT3_EXT;
+      case 76: case 77: return COMPRESSED_RGBA_S3TC_DXT5_EXT;
+      case 78: return COMPRESSED_SRGB_ALPHA_S3TC_DXT5_EXT;
+      case 79: case 80: return COMPRESSED_RED_RGTC1;
+      case 81: return COMPRESSED_SIGNED_RED_RGTC1;
+      case 82: case 83: return COMPRESSED_RG_RGTC2;
+      case 84: return COMPRESSED_SIGNED_RG_RGTC2;
+      case 94: case 95: case 96: case 97: case 98: case 99:
+        why = "BPTC (BC6H, BC7) DDS files are not supported yet";
+        return 0;
+      default: return 0;
+    }
+  }
+  if (four_cc == FourCc("DXT1")) return alpha_pixels ? COMPRESSED_RGBA_S3TC_DXT1_EXT : COMPRESSED_RGB_S3TC_DXT1_EXT;
+  if (four_cc == FourCc("DXT2") || four_cc == FourCc("DXT3")) return COMPRESSED_RGBA_S3TC_DXT3_EXT;
+  if (four_cc == FourCc("DXT4") || four_cc == FourCc("DXT5")) return COMPRESSED_RGBA_S3TC_DXT5_EXT;
+  if (four_cc == FourCc("ATI1") || four_cc == FourCc("BC4U")) return COMPRESSED_RED_RGTC1;
+  if (four_cc == FourCc("BC4S")) return COMPRESSED_SIGNED_RED_RGTC1;
+  if (four_cc == FourCc("ATI2") || four_cc == FourCc("BC5U")) return COMPRESSED_RG_RGTC2;
+  if (four_cc == FourCc("BC5S")) return COMPRESSED_SIGNED_RG_RGTC2;
+  return 0;
+}
+
+Enum SrgbFormOf(Enum f) {
+  switch (f) {
+    case COMPRESSED_RGB_S3TC_DXT1_EXT: return COMPRESSED_SRGB_S3TC_DXT1_EXT;
+    case COMPRESSED_RGBA_S3TC_DXT1_EXT: return COMPRESSED_SRGB_ALPHA_S3TC_DXT1_EXT;
+    case COMPRESSED_RGBA_S3TC_DXT3_EXT: return COMPRESSED_SRGB_ALPHA_S3TC_DXT3_EXT;
+    case COMPRESSED_RGBA_S3TC_DXT5_EXT: return COMPRESSED_SRGB_ALPHA_S3TC_DXT5_EXT;
+    default: return f;  // (RGTC has no sRGB form)
+  }
+}
+
+// Reverses rows 0 .. n - 1 of one block, given as 4 rows of `row_bits` bits each from bit `first` of the block.
+void FlipBlockRows(std::uint8_t* block, int first, int row_bits, int n) {
+  std::uint64_t bits = 0;
+  const int bytes = row_bits / 2;  // 4 rows: row_bits * 4 / 8
+  for (int k = 0; k < bytes; ++k) bits |= std::uint64_t(block[first / 8 + k]) << (8 * k);
+  const std::uint64_t mask = (std::uint64_t(1) << row_bits) - 1;
+  std::uint64_t flipped = bits;
+  for (int r = 0; r < n; ++r) {
+    const std::uint64_t row = (bits >> (row_bits * r)) & mask;
+    flipped &= ~(mask << (row_bits * (n - 1 - r)));
+    flipped |= row << (row_bits * (n - 1 - r));
+  }
+  for (int k = 0; k < bytes; ++k) block[first / 8 + k] = std::uint8_t(flipped >> (8 * k));
+}
+
+// Turns a level's blocks upside down (its bottom row first): block rows reversed, and each block's n rows (4, or
+// the height below 4). False where the height is above 4 and not a multiple of it.
+bool FlipLevel(Enum format, CompressedImageLevel& level, int block_bytes) {
+  if (level.height > 4 && level.height % 4 != 0) return false;
+  const int n = std::min(level.height, 4);
+  const int across = (level.width + 3) / 4, up = (level.height + 3) / 4;
+  const std::size_t row = std::size_t(across) * std::size_t(block_bytes);
+  for (int b = 0; b < up / 2; ++b)
+    std::swap_ranges(level.blocks.begin() + std::ptrdiff_t(b * row), level.blocks.begin() + std::ptrdiff_t((b + 1) * row),
+                     level.blocks.begin() + std::ptrdiff_t((up - 1 - b) * row));
+  for (std::size_t at = 0; at + std::size_t(block_bytes) <= level.blocks.size(); at += std::size_t(block_bytes)) {
+    std::uint8_t* block = level.blocks.data() + at;
+    switch (format) {
+      case COMPRESSED_RED_RGTC1:
+      case COMPRESSED_SIGNED_RED_RGTC1: FlipBlockRows(block, 16, 12, n); break;
+      case COMPRESSED_RG_RGTC2:
+      case COMPRESSED_SIGNED_RG_RGTC2:
+        FlipBlockRows(block, 16, 12, n);
+        FlipBlockRows(block + 8, 16, 12, n);
+        break;
+      case COMPRESSED_RGBA_S3TC_DXT3_EXT:
+      case COMPRESSED_SRGB_ALPHA_S3TC_DXT3_EXT:
+        FlipBlockRows(block, 0, 16, n);
+        FlipBlockRows(block + 8, 32, 8, n);
+        break;
+      case COMPRESSED_RGBA_S3TC_DXT5_EXT:
+      case COMPRESSED_SRGB_ALPHA_S3TC_DXT5_EXT:
+        FlipBlockRows(block, 16, 12, n);
+        FlipBlockRows(block + 8, 32, 8, n);
+        break;
+      default: FlipBlockRows(block, 32, 8, n); break;  // DXT1
+    }
+  }
+  return true;
+}
+
+}  // namespace
+
+const char* ReadDds(const std::uint8_t* d, std::size_t size, bool flip_vertically, bool srgb, LoadedImage& out) {
+  constexpr std::size_t kHeader = 128, kHeader10 = 20;
+  if (size < kHeader || Le32(d + 4) != 124) return "truncated or corrupt DDS header";
+  const std::uint32_t flags = Le32(d + 8), height = Le32(d + 12), width = Le32(d + 16);
+  const std::uint32_t mips = Le32(d + 28), pf_flags = Le32(d + 80), four_cc = Le32(d + 84), caps2 = Le32(d + 112);
+  constexpr std::uint32_t kFourCcFlag = 0x4, kAlphaPixels = 0x1, kMipMapCount = 0x20000, kCubeMap = 0x200,
+                          kVolume = 0x200000;
+  if (!(pf_flags & kFourCcFlag)) return "uncompressed DDS files are not supported (use PNG or another image format)";
+  if (caps2 & kCubeMap) return "DDS cube maps are not supported (load each face as its own file)";
+  if (caps2 & kVolume) return "DDS volume textures are not supported";
+  std::size_t at = kHeader;
+  std::uint32_t dxgi = 0;
+  if (four_cc == FourCc("DX10")) {
+    if (size < kHeader + kHeader10) return "truncated DDS header";
+    dxgi = Le32(d + 128);
+    if (Le32(d + 140) > 1) return "DDS texture arrays are not supported";
+    at += kHeader10;
+  }
+  const char* why = nullptr;
+  Enum format = DdsFormat(four_cc, dxgi, (pf_flags & kAlphaPixels) != 0, why);
+  if (format == 0) return why;
+  if (srgb) format = SrgbFormOf(format);
+  if (width == 0 || height == 0 || width > std::uint32_t(kMaxTextureSize) || height > std::uint32_t(kMaxTextureSize))
+    return "DDS image size is zero or larger than kMaxTextureSize";
+  const int block_bytes = format == COMPRESSED_RGB_S3TC_DXT1_EXT || format == COMPRESSED_RGBA_S3TC_DXT1_EXT ||
+                                  format == COMPRESSED_SRGB_S3TC_DXT1_EXT ||
+                                  format == COMPRESSED_SRGB_ALPHA_S3TC_DXT1_EXT || format == COMPRESSED_RED_RGTC1 ||
+                                  format == COMPRESSED_SIGNED_RED_RGTC1
+                              ? 8
+                              : 16;
+  int chain = 1;  // the levels down to 1 x 1
+  for (std::uint32_t s = std::max(width, height); s > 1; s /= 2) ++chain;
+  const int count = (flags & kMipMapCount) && mips > 0 ? int(std::min<std::uint32_t>(mips, std::uint32_t(chain))) : 1;
+  out.compressed = format;
+  out.width = int(width);
+  out.height = int(height);
+  out.channels = 4;
+  for (int l = 0; l < count; ++l) {
+    CompressedImageLevel level;
+    level.width = std::max(1, int(width >> l));
+    level.height = std::max(1, int(height >> l));
+    const std::size_t bytes =
+        std::size_t((level.width + 3) / 4) * std::size_t((level.height + 3) / 4) * std::size_t(block_bytes);
+    if (size - at < bytes) return "truncated DDS data (fewer blocks than its levels need)";
+    level.blocks.assign(d + at, d + at + bytes);
+    at += bytes;
+    if (flip_vertically && !FlipLevel(format, level, block_bytes))
+      return "cannot flip a DDS level whose height is above 4 and not a multiple of 4 (load it unflipped and flip t)";
+    out.levels.push_back(std::move(level));
+  }
+  return nullptr;
+}
+
+bool LoadImageFile(const std::string& path, bool flip_vertically, LoadedImage& out, std::string* error, bool srgb) {
   // Read whole, then decode from memory: the same checks for files and for embedded images.
   std::ifstream file(path, std::ios::binary);
   if (!file) {
@@ -254,16 +415,22 @@ bool LoadImageFile(const std::string& path, bool flip_vertically, LoadedImage& o
     return false;
   }
   const std::vector<char> bytes((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
-  return LoadImageMemory(bytes.data(), bytes.size(), path, flip_vertically, out, error);
+  return LoadImageMemory(bytes.data(), bytes.size(), path, flip_vertically, out, error, srgb);
 }
 
 bool LoadImageMemory(const void* data, std::size_t size, const std::string& name, bool flip_vertically,
-                     LoadedImage& out, std::string* error) {
+                     LoadedImage& out, std::string* error, bool srgb) {
   if (data == nullptr || size == 0 || size > std::size_t(INT32_MAX)) {
     if (error) *error = name + ": empty or oversized image data";
     return false;
   }
   const auto* d = static_cast<const stbi_uc*>(data);
+  if (size >= 4 && std::memcmp(d, "DDS ", 4) == 0) {
+    out = LoadedImage{};
+    const char* why = ReadDds(d, size, flip_vertically, srgb, out);
+    if (why != nullptr && error) *error = name + ": " + why;
+    return why == nullptr;
+  }
   const int len = int(size);
   if (IsJpeg(d, size)) {
     Jpeg jpeg;

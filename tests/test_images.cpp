@@ -87,6 +87,10 @@ TEST_CASE("image: sample shading", "[image][multisample]") {
 
 TEST_CASE("image: shadow map", "[image]") { CompareWithGolden("shadow_map", scenes::ShadowMap(640, 480)); }
 
+TEST_CASE("image: compressed textures", "[image][compression]") {
+  CompareWithGolden("compressed_textures", scenes::CompressedTextures(800, 480));
+}
+
 TEST_CASE("image: small formats", "[image][packed]") {
   CompareWithGolden("small_formats", scenes::SmallFormats(800, 240));
 }

@@ -5,7 +5,9 @@
 #include <catch2/catch.hpp>
 
 #include <cstdint>
+#include <algorithm>
 #include <cstring>
+#include <string>
 #include <vector>
 
 #include <softgl/softgl.h>
@@ -284,4 +286,146 @@ TEST_CASE("compressed texture calls reject bad sizes, null data and huge images"
   CHECK(gl.GetError() == INVALID_VALUE);
   gl.GetCompressedTexImage(0x1234, 0, nullptr);
   CHECK(gl.GetError() == INVALID_ENUM);
+}
+
+namespace {
+
+// A DDS file: the 128-byte header (FourCC `four_cc`, or "DX10" and a 20-byte header of DXGI format `dxgi`),
+// `levels` mipmap levels of `block_bytes` blocks, the blocks pseudo-random from `seed`.
+std::vector<std::uint8_t> MakeDds(const char* four_cc, std::uint32_t dxgi, int w, int h, int levels, int block_bytes,
+                                  std::uint32_t seed, std::uint32_t caps2 = 0) {
+  const bool dx10 = std::strcmp(four_cc, "DX10") == 0;
+  std::vector<std::uint8_t> f(dx10 ? 148 : 128, 0);
+  auto put = [&](std::size_t at, std::uint32_t v) {
+    for (int k = 0; k < 4; ++k) f[at + std::size_t(k)] = std::uint8_t(v >> (8 * k));
+  };
+  f[0] = 'D', f[1] = 'D', f[2] = 'S', f[3] = ' ';
+  put(4, 124);
+  put(8, 0x1007 | 0x20000);  // caps, height, width, pixel format, mipmap count
+  put(12, std::uint32_t(h));
+  put(16, std::uint32_t(w));
+  put(28, std::uint32_t(levels));
+  put(76, 32);
+  put(80, 0x4);  // FourCC
+  for (int k = 0; k < 4; ++k) f[std::size_t(84 + k)] = std::uint8_t(four_cc[k]);
+  put(112, caps2);
+  if (dx10) {
+    put(128, dxgi);
+    put(132, 3);  // a 2D texture
+    put(140, 1);  // one element
+  }
+  std::vector<std::uint8_t> blocks;
+  for (int l = 0; l < levels; ++l) {
+    const int lw = std::max(1, w >> l), lh = std::max(1, h >> l);
+    for (int b = 0; b < (lw + 3) / 4 * ((lh + 3) / 4) * block_bytes; ++b) {
+      seed = seed * 1664525u + 1013904223u;
+      blocks.push_back(std::uint8_t(seed >> 24));
+    }
+  }
+  f.insert(f.end(), blocks.begin(), blocks.end());
+  return f;
+}
+
+// Level `level` of the bound TEXTURE_2D as RGBA floats, rows bottom first.
+std::vector<float> Texels(Context& gl, int level, int w, int h) {
+  std::vector<float> out(std::size_t(w) * std::size_t(h) * 4, -9.0f);
+  gl.GetTexImage(TEXTURE_2D, level, RGBA, FLOAT, out.data());
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("DDS files define every level from their blocks, flipped on request", "[compression]") {
+  struct Case {
+    const char* four_cc;
+    std::uint32_t dxgi;
+    int block_bytes;
+    Enum want;
+  };
+  const Case cases[] = {
+      {"DXT1", 0, 8, COMPRESSED_RGB_S3TC_DXT1_EXT},  {"DXT3", 0, 16, COMPRESSED_RGBA_S3TC_DXT3_EXT},
+      {"DXT5", 0, 16, COMPRESSED_RGBA_S3TC_DXT5_EXT}, {"ATI1", 0, 8, COMPRESSED_RED_RGTC1},
+      {"BC4S", 0, 8, COMPRESSED_SIGNED_RED_RGTC1},    {"ATI2", 0, 16, COMPRESSED_RG_RGTC2},
+      {"DX10", 78, 16, COMPRESSED_SRGB_ALPHA_S3TC_DXT5_EXT}, {"DX10", 84, 16, COMPRESSED_SIGNED_RG_RGTC2},
+  };
+  for (const Case& c : cases) {
+    for (const glm::ivec2 size : {glm::ivec2(16, 8), glm::ivec2(8, 2), glm::ivec2(12, 16)}) {
+      INFO(c.four_cc << " " << c.dxgi << ", " << size.x << " x " << size.y);
+      const int levels = size.x == 12 ? 2 : 3;
+      const std::vector<std::uint8_t> file = MakeDds(c.four_cc, c.dxgi, size.x, size.y, levels, c.block_bytes, 5);
+      Context gl(4, 4);
+      const std::uint32_t plain = gl.GenTexture(), flipped = gl.GenTexture();
+      std::string error;
+      gl.BindTexture(TEXTURE_2D, plain);
+      REQUIRE(gl.TexImage2DFromMemory(TEXTURE_2D, file.data(), file.size(), false, &error));
+      int v = 0;
+      gl.GetTexLevelParameteriv(TEXTURE_2D, 0, TEXTURE_INTERNAL_FORMAT, &v);
+      CHECK(v == int(c.want));
+      gl.GetTexParameteriv(TEXTURE_2D, TEXTURE_MAX_LEVEL, &v);
+      CHECK(v == levels - 1);
+      // Level 1's blocks are the file's second run of blocks.
+      const int w1 = std::max(1, size.x / 2), h1 = std::max(1, size.y / 2);
+      const std::size_t header = c.dxgi ? 148 : 128;
+      const std::size_t first = std::size_t((size.x + 3) / 4 * ((size.y + 3) / 4) * c.block_bytes);
+      const std::size_t second = std::size_t((w1 + 3) / 4 * ((h1 + 3) / 4) * c.block_bytes);
+      std::vector<std::uint8_t> blocks(second);
+      gl.GetCompressedTexImage(TEXTURE_2D, 1, blocks.data());
+      CHECK(std::equal(blocks.begin(), blocks.end(), file.begin() + std::ptrdiff_t(header + first)));
+      // Flipped: every level the mirror image of the unflipped one.
+      gl.BindTexture(TEXTURE_2D, flipped);
+      REQUIRE(gl.TexImage2DFromMemory(TEXTURE_2D, file.data(), file.size(), true, &error));
+      for (int l = 0; l < levels; ++l) {
+        const int lw = std::max(1, size.x >> l), lh = std::max(1, size.y >> l);
+        gl.BindTexture(TEXTURE_2D, plain);
+        const std::vector<float> a = Texels(gl, l, lw, lh);
+        gl.BindTexture(TEXTURE_2D, flipped);
+        const std::vector<float> b = Texels(gl, l, lw, lh);
+        int differ = 0;
+        for (int y = 0; y < lh; ++y)
+          for (int x = 0; x < lw * 4; ++x)
+            differ += a[std::size_t(y * lw * 4 + x)] != b[std::size_t((lh - 1 - y) * lw * 4 + x)];
+        CHECK(differ == 0);
+      }
+      CHECK(gl.GetError() == NO_ERROR);
+    }
+  }
+  // sRGB on request: the S3TC formats' sRGB forms; RGTC has none.
+  Context gl(4, 4);
+  gl.BindTexture(TEXTURE_2D, gl.GenTexture());
+  const std::vector<std::uint8_t> dxt1 = MakeDds("DXT1", 0, 8, 8, 1, 8, 1);
+  REQUIRE(gl.TexImage2DFromMemory(TEXTURE_2D, dxt1.data(), dxt1.size(), false, nullptr, SRGB));
+  int v = 0;
+  gl.GetTexLevelParameteriv(TEXTURE_2D, 0, TEXTURE_INTERNAL_FORMAT, &v);
+  CHECK(v == int(COMPRESSED_SRGB_S3TC_DXT1_EXT));
+}
+
+TEST_CASE("DDS files softgl cannot take are refused with a message", "[compression]") {
+  Context gl(4, 4);
+  gl.BindTexture(TEXTURE_2D, gl.GenTexture());
+  std::vector<std::uint8_t> good = MakeDds("DXT5", 0, 8, 8, 4, 16, 3);
+  auto refused = [&](const std::vector<std::uint8_t>& file, const char* words, bool flip = false) {
+    std::string error;
+    const bool ok = gl.TexImage2DFromMemory(TEXTURE_2D, file.data(), file.size(), flip, &error);
+    INFO(error);
+    CHECK(!ok);
+    CHECK(error.find(words) != std::string::npos);
+    CHECK(gl.GetError() == NO_ERROR);
+  };
+  refused(std::vector<std::uint8_t>(good.begin(), good.end() - 1), "truncated DDS data");
+  refused(std::vector<std::uint8_t>(good.begin(), good.begin() + 100), "DDS header");
+  refused(MakeDds("DX10", 98, 8, 8, 1, 16, 3), "BPTC");
+  refused(MakeDds("DXT5", 0, 8, 8, 1, 16, 3, 0x200), "cube maps");
+  refused(MakeDds("RGBG", 0, 8, 8, 1, 16, 3), "not a block-compressed DDS file");
+  refused(MakeDds("DXT5", 0, 8, 6, 1, 16, 3), "cannot flip", true);
+  refused(MakeDds("DXT5", 0, 16385, 4, 1, 16, 3), "larger than kMaxTextureSize");
+  std::vector<std::uint8_t> uncompressed = good;
+  uncompressed[80] = 0x41;  // RGB with alpha, no FourCC
+  refused(uncompressed, "uncompressed DDS");
+  // A mipmap count beyond the chain reads the chain only.
+  good[28] = 40;
+  std::string error;
+  CHECK(gl.TexImage2DFromMemory(TEXTURE_2D, good.data(), good.size(), false, &error));
+  int v = 0;
+  gl.GetTexParameteriv(TEXTURE_2D, TEXTURE_MAX_LEVEL, &v);
+  CHECK(v == 3);
 }

@@ -4,6 +4,8 @@
 // the per-fragment operations, not two compilers' rounding of a matrix product.
 #include "scenes.h"
 
+#include "scene_kit.h"
+
 #include <array>
 #include <cmath>
 #include <random>
@@ -1064,107 +1066,6 @@ void SrgbTexture(Backend& b) {
          Program::kTexture);
 }
 
-// A plain block encoder for the compressed scene (not a good one: endpoints the block's extremes, each texel the
-// nearest of the palette), enough to make real images of each format from RGBA bytes.
-// An alpha / RGTC block of channel `c` of the 16 texels (values 0..255, or signed when `is_signed`).
-void EncodeValues(const int v[16], bool is_signed, std::vector<std::uint8_t>& out) {
-  const int hi = *std::max_element(v, v + 16), lo = *std::min_element(v, v + 16);
-  out.push_back(std::uint8_t(hi));
-  out.push_back(std::uint8_t(lo));
-  std::uint64_t bits = 0;
-  for (int t = 0; t < 16; ++t) {
-    int best = 0, best_d = 1 << 30;
-    for (int i = 0; i < 8; ++i) {
-      const int value = i == 0 ? hi : i == 1 ? lo : hi > lo ? ((8 - i) * hi + (i - 1) * lo) / 7 : hi;
-      if (std::abs(value - v[t]) < best_d) best = i, best_d = std::abs(value - v[t]);
-    }
-    bits |= std::uint64_t(best) << (3 * t);
-  }
-  (void)is_signed;
-  for (int k = 0; k < 6; ++k) out.push_back(std::uint8_t(bits >> (8 * k)));
-}
-
-// An S3TC colour block of the 16 texels' RGB; with `punch`, texels of alpha < 128 become DXT1's transparent black.
-void EncodeColours(const std::uint8_t rgba[16][4], bool punch, std::vector<std::uint8_t>& out) {
-  int lo[3] = {255, 255, 255}, hi[3] = {0, 0, 0};
-  bool any_clear = false;
-  for (int t = 0; t < 16; ++t) {
-    any_clear |= punch && rgba[t][3] < 128;
-    for (int c = 0; c < 3; ++c) lo[c] = std::min(lo[c], int(rgba[t][c])), hi[c] = std::max(hi[c], int(rgba[t][c]));
-  }
-  auto word = [](const int c[3]) { return std::uint16_t((c[0] >> 3) << 11 | (c[1] >> 2) << 5 | (c[2] >> 3)); };
-  std::uint16_t w0 = word(hi), w1 = word(lo);
-  if (any_clear ? w0 > w1 : w0 < w1) std::swap(w0, w1);  // three colours and black, or four
-  auto widen = [](std::uint16_t w, int c) {
-    const int r = w >> 11, g = (w >> 5) & 63, b = w & 31;
-    return c == 0 ? (r << 3 | r >> 2) : c == 1 ? (g << 2 | g >> 4) : (b << 3 | b >> 2);
-  };
-  std::uint32_t bits = 0;
-  for (int t = 0; t < 16; ++t) {
-    int best = 0, best_d = 1 << 30;
-    if (any_clear && rgba[t][3] < 128) {
-      best = 3;
-    } else {
-      for (int i = 0; i < (any_clear ? 3 : 4); ++i) {
-        int d = 0;
-        for (int c = 0; c < 3; ++c) {
-          const int a = widen(w0, c), b = widen(w1, c);
-          const int value = i == 0 ? a : i == 1 ? b : any_clear ? (a + b) / 2 : i == 2 ? (2 * a + b) / 3 : (a + 2 * b) / 3;
-          d += (value - rgba[t][c]) * (value - rgba[t][c]);
-        }
-        if (d < best_d) best = i, best_d = d;
-      }
-    }
-    bits |= std::uint32_t(best) << (2 * t);
-  }
-  for (int k = 0; k < 2; ++k) out.push_back(std::uint8_t(w0 >> (8 * k)));
-  for (int k = 0; k < 2; ++k) out.push_back(std::uint8_t(w1 >> (8 * k)));
-  for (int k = 0; k < 4; ++k) out.push_back(std::uint8_t(bits >> (8 * k)));
-}
-
-// `level` (RGBA8 rows bottom first) as the blocks of `format` (edge texels repeated into partial blocks).
-std::vector<std::uint8_t> EncodeLevel(const TextureDesc::Level& level, Enum format) {
-  std::vector<std::uint8_t> out;
-  for (int by = 0; by < (level.height + 3) / 4; ++by)
-    for (int bx = 0; bx < (level.width + 3) / 4; ++bx) {
-      std::uint8_t t[16][4];
-      for (int k = 0; k < 16; ++k) {
-        const int x = std::min(bx * 4 + k % 4, level.width - 1), y = std::min(by * 4 + k / 4, level.height - 1);
-        for (int c = 0; c < 4; ++c) t[k][c] = level.rgba[std::size_t((y * level.width + x) * 4 + c)];
-      }
-      int v[16];
-      auto channel = [&](int c, int offset) {
-        for (int k = 0; k < 16; ++k) v[k] = t[k][c] - offset;
-      };
-      switch (format) {
-        case COMPRESSED_RGB_S3TC_DXT1_EXT:
-        case COMPRESSED_SRGB_S3TC_DXT1_EXT: EncodeColours(t, false, out); break;
-        case COMPRESSED_RGBA_S3TC_DXT1_EXT: EncodeColours(t, true, out); break;
-        case COMPRESSED_RGBA_S3TC_DXT3_EXT: {
-          for (int k = 0; k < 16; k += 2) out.push_back(std::uint8_t(t[k][3] >> 4 | (t[k + 1][3] >> 4) << 4));
-          EncodeColours(t, false, out);
-          break;
-        }
-        case COMPRESSED_RGBA_S3TC_DXT5_EXT:
-          channel(3, 0);
-          EncodeValues(v, false, out);
-          EncodeColours(t, false, out);
-          break;
-        case COMPRESSED_SIGNED_RED_RGTC1:
-          channel(0, 128);
-          EncodeValues(v, true, out);
-          break;
-        default:  // COMPRESSED_RG_RGTC2
-          channel(0, 0);
-          EncodeValues(v, false, out);
-          channel(1, 0);
-          EncodeValues(v, false, out);
-          break;
-      }
-    }
-  return out;
-}
-
 // Compressed textures: the pattern with its levels (alpha varied across it) encoded here into six formats, drawn
 // trilinear on receding floors: DXT1, DXT1 with its one-bit alpha (alpha shows in the frame's alpha), DXT3, DXT5,
 // sRGB DXT1 (decoded to linear before filtering) and RGTC2 (red and green); then signed RGTC1 (red - 128 as a
@@ -1180,7 +1081,7 @@ void CompressedTextures(Backend& b) {
   for (int i = 0; i < 6; ++i) {
     TextureDesc d = pattern;
     d.compressed = formats[i];
-    for (TextureDesc::Level& l : d.levels) l.blocks = EncodeLevel(l, formats[i]);
+    for (TextureDesc::Level& l : d.levels) l.blocks = scenes::kit::EncodeBlocks(l.rgba.data(), l.width, l.height, formats[i]);
     b.SetTexture(d);
     RecedingPlane(b, (i % 3) * 42, (i / 3) * 48, 42, 48, 4.0f);
   }
@@ -1188,7 +1089,7 @@ void CompressedTextures(Backend& b) {
     TextureDesc d = pattern;
     d.compressed = COMPRESSED_SIGNED_RED_RGTC1;
     d.levels.resize(1);
-    d.levels[0].blocks = EncodeLevel(d.levels[0], d.compressed);
+    d.levels[0].blocks = scenes::kit::EncodeBlocks(d.levels[0].rgba.data(), d.levels[0].width, d.levels[0].height, d.compressed);
     d.min_filter = d.mag_filter = k ? LINEAR : NEAREST;
     b.SetTexture(d);
     const float x0 = float(k) * 64;
