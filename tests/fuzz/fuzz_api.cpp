@@ -368,11 +368,13 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                                        std::max(d, 0) * (in.Byte() % 2 ? 8 : 16);
             const int size = in.Byte() % 4 ? int(std::min<std::int64_t>(right, INT32_MAX)) : in.Int(-1, 64);
             const void* data = small && size >= 0 && std::size_t(size) <= scratch.size() && in.Byte() % 8 ? scratch.data() : nullptr;
+            // (Int may return any int: block offsets are clamped before they are multiplied.)
+            const auto block = [&] { return 4 * std::clamp(in.Int(-1, 4), -1, 4); };
             switch (in.Byte() % 6) {
               case 0: gl.CompressedTexImage2D(in.Enum(kImageTargets), in.Int(-1, 5), format, w, h, in.Byte() < 8, size, data); break;
               case 1: gl.CompressedTexImage3D(in.Byte() % 2 ? TEXTURE_2D_ARRAY : TEXTURE_3D, in.Int(-1, 5), format, w, h, d, 0, size, data); break;
-              case 2: gl.CompressedTexSubImage2D(in.Enum(kImageTargets), in.Int(-1, 5), 4 * in.Int(-1, 4), 4 * in.Int(-1, 4) + (in.Byte() < 16), w, h, format, size, data); break;
-              case 3: gl.CompressedTexSubImage3D(TEXTURE_2D_ARRAY, in.Int(-1, 5), 4 * in.Int(-1, 4), 4 * in.Int(-1, 4), in.Int(-1, 4), w, h, d, format, size, data); break;
+              case 2: gl.CompressedTexSubImage2D(in.Enum(kImageTargets), in.Int(-1, 5), block(), block() + (in.Byte() < 16), w, h, format, size, data); break;
+              case 3: gl.CompressedTexSubImage3D(TEXTURE_2D_ARRAY, in.Int(-1, 5), block(), block(), in.Int(-1, 4), w, h, d, format, size, data); break;
               case 4: in.Byte() % 2 ? gl.CompressedTexImage1D(TEXTURE_1D, 0, format, w, 0, size, data) : gl.CompressedTexSubImage1D(TEXTURE_1D, 0, 0, w, format, size, data); break;
               default: {
                 std::vector<std::uint8_t> out;
