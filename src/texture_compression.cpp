@@ -110,7 +110,7 @@ Enum UncompressedForGeneric(Enum f) {
 }
 
 std::uint64_t CompressedImageBytes(const CompressedFormat& f, int w, int h, int d) {
-  return std::uint64_t((std::max(w, 0) + 3) / 4) * std::uint64_t((std::max(h, 0) + 3) / 4) *
+  return (std::uint64_t(std::max(w, 0)) + 3) / 4 * ((std::uint64_t(std::max(h, 0)) + 3) / 4) *
          std::uint64_t(std::max(d, 0)) * std::uint64_t(f.block_bytes);
 }
 

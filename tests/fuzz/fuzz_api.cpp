@@ -364,8 +364,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
           case 5: {  // compressed images: the right image size mostly, data only where scratch holds that many bytes
             const Enum format = in.Enum(kCompressed);
             const int d = in.Amount(0, 2, 4, kMaxArrayTextureLayers);
-            const std::int64_t right = (std::int64_t(std::max(w, 0)) + 3) / 4 * ((std::int64_t(std::max(h, 0)) + 3) / 4) *
-                                       std::max(d, 0) * (in.Byte() % 2 ? 8 : 16);
+            // (Amount may return any int too: sizes are clamped before the product.)
+            const auto clamped = [](int v) { return std::int64_t(std::clamp(v, 0, 1 << 16)); };
+            const std::int64_t right =
+                (clamped(w) + 3) / 4 * ((clamped(h) + 3) / 4) * clamped(d) * (in.Byte() % 2 ? 8 : 16);
             const int size = in.Byte() % 4 ? int(std::min<std::int64_t>(right, INT32_MAX)) : in.Int(-1, 64);
             const void* data = small && size >= 0 && std::size_t(size) <= scratch.size() && in.Byte() % 8 ? scratch.data() : nullptr;
             // (Int may return any int: block offsets are clamped before they are multiplied.)
