@@ -33,6 +33,7 @@ void Context::DeleteBuffer(std::uint32_t buffer) {
   if (s.array_buffer.get() == dead) s.array_buffer.reset();
   if (s.copy_read_buffer.get() == dead) s.copy_read_buffer.reset();
   if (s.copy_write_buffer.get() == dead) s.copy_write_buffer.reset();
+  if (s.texture_buffer.get() == dead) s.texture_buffer.reset();
   if (s.feedback_buffer.get() == dead) s.feedback_buffer.reset();
   for (FeedbackBinding& b : s.feedback->binding)  // the bound transform feedback object's (as the vertex array's)
     if (b.buffer.get() == dead) b = FeedbackBinding{};
@@ -70,6 +71,7 @@ void Context::BufferData(Enum target, std::ptrdiff_t size, const void* data, Enu
   try {
     std::vector<std::uint8_t> store(std::size_t(size), 0);
     if (data != nullptr && size > 0) std::memcpy(store.data(), data, std::size_t(size));
+    s.BeforeStoreChange(*buffer, __func__);
     buffer->Unmap();  // a new store unmaps the old one, as OpenGL does
     buffer->data = std::move(store);
     buffer->usage = usage;
@@ -98,6 +100,7 @@ void Context::BufferSubData(Enum target, std::ptrdiff_t offset, std::ptrdiff_t s
   // OpenGL 3.3 (sections 2.9.2 and 6.1.13): an error whenever the buffer is mapped, whatever range is written.
   if (buffer->mapped) return s.SetError(INVALID_OPERATION, __func__, "the buffer is mapped");
   if (size == 0 || !NotNull(s, __func__, data, "data")) return;
+  s.BeforeStoreChange(*buffer, __func__);
   std::memcpy(buffer->data.data() + offset, data, std::size_t(size));
 }
 
@@ -120,6 +123,7 @@ void* MapRange(ContextState& s, const char* what, Enum target, std::ptrdiff_t of
   if ((access & MAP_FLUSH_EXPLICIT_BIT) && !(access & MAP_WRITE_BIT)) return s.SetError(INVALID_OPERATION, what, "MAP_FLUSH_EXPLICIT_BIT without MAP_WRITE_BIT"), nullptr;
   // Draws read their vertices when they are made, so the store holds everything earlier calls wrote: the caller's
   // view of it is the store itself (invalidated bytes keep their old values, which OpenGL allows).
+  if (access & MAP_WRITE_BIT) s.BeforeStoreChange(*buffer, what);  // the caller may write through the pointer
   buffer->mapped = true;
   buffer->access_flags = access;
   buffer->map_offset = std::size_t(offset);
@@ -176,7 +180,9 @@ void Context::CopyBufferSubData(Enum read_target, Enum write_target, std::ptrdif
   if (src == dst && read_offset < write_offset + size && write_offset < read_offset + size)
     return s.SetError(INVALID_VALUE, __func__, "the ranges overlap within one buffer");
   if (src->mapped || dst->mapped) return s.SetError(INVALID_OPERATION, __func__, "a buffer is mapped");
-  if (size > 0) std::memmove(dst->data.data() + write_offset, src->data.data() + read_offset, std::size_t(size));
+  if (size == 0) return;
+  s.BeforeStoreChange(*dst, __func__);
+  std::memmove(dst->data.data() + write_offset, src->data.data() + read_offset, std::size_t(size));
 }
 
 void Context::GetBufferSubData(Enum target, std::ptrdiff_t offset, std::ptrdiff_t size, void* data) const {

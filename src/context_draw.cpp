@@ -87,6 +87,7 @@ void ContextState::Draw(const detail::DrawCall& call) {
     capture.layout = xfb.layout.get();
     for (int b = 0; b < capture.layout->Buffers(); ++b) {
       const FeedbackBinding& binding = xfb.binding[b];
+      if (binding.buffer) BeforeStoreChange(*binding.buffer, __func__);  // the draw writes it as it is made
       const std::size_t room = binding.Room();
       capture.room[b] = room > xfb.written[b] ? room - xfb.written[b] : 0;
       capture.data[b] = capture.room[b] ? binding.buffer->data.data() + binding.offset + xfb.written[b] : nullptr;

@@ -712,6 +712,7 @@ void Context::FramebufferTexture(Enum target, Enum attachment, std::uint32_t tex
   const auto* it = SlotsAndTexture(s, __func__, target, attachment, texture, slots, n, INVALID_VALUE, true);
   if (!it) return;
   const Enum kind = (*it)->target;
+  if (kind == TEXTURE_BUFFER) return s.SetError(INVALID_OPERATION, __func__, "a buffer texture cannot be attached");
   if (level < 0 || level >= LevelCount(kind) || (kind == TEXTURE_2D_MULTISAMPLE && level != 0)) return s.SetError(INVALID_VALUE, __func__, "level is negative or beyond the texture's largest mipmap level");
   AttachTexture(slots, n, (*it), level, 0, 0, kind == TEXTURE_CUBE_MAP || (*it)->Layered());
 }

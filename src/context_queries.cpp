@@ -46,6 +46,7 @@ bool QueryState(ContextState& s, Enum pname, StateValue& out) {
     case ELEMENT_ARRAY_BUFFER_BINDING: return integer(s.vao ? IdOf(s.buffers, s.vao->element_buffer.get()) : 0);
     case COPY_READ_BUFFER_BINDING: return integer(IdOf(s.buffers, s.copy_read_buffer.get()));
     case COPY_WRITE_BUFFER_BINDING: return integer(IdOf(s.buffers, s.copy_write_buffer.get()));
+    case TEXTURE_BUFFER: return integer(IdOf(s.buffers, s.texture_buffer.get()));  // the buffer binding
     case TRANSFORM_FEEDBACK_BUFFER_BINDING: return integer(IdOf(s.buffers, s.feedback_buffer.get()));
     case TRANSFORM_FEEDBACK_BINDING: return integer(s.feedback_id);
     case TRANSFORM_FEEDBACK_BUFFER_ACTIVE: return boolean(s.feedback->active);
@@ -63,6 +64,7 @@ bool QueryState(ContextState& s, Enum pname, StateValue& out) {
     case TEXTURE_BINDING_3D: return integer(IdOf(s.textures, s.Bound(TEXTURE_3D)));
     case TEXTURE_BINDING_1D: return integer(IdOf(s.textures, s.Bound(TEXTURE_1D)));
     case TEXTURE_BINDING_1D_ARRAY: return integer(IdOf(s.textures, s.Bound(TEXTURE_1D_ARRAY)));
+    case TEXTURE_BINDING_BUFFER: return integer(IdOf(s.textures, s.Bound(TEXTURE_BUFFER)));
     case TEXTURE_BINDING_2D_MULTISAMPLE: return integer(IdOf(s.textures, s.Bound(TEXTURE_2D_MULTISAMPLE)));
     case SAMPLER_BINDING: return integer(IdOf(s.samplers, s.units[s.active_unit].sampler.get()));
     case DRAW_FRAMEBUFFER_BINDING: return integer(IdOf(s.framebuffers, s.draw_fbo));
@@ -143,6 +145,7 @@ bool QueryState(ContextState& s, Enum pname, StateValue& out) {
     case MAX_CUBE_MAP_TEXTURE_SIZE: return integer(kMaxTextureSize);
     case MAX_3D_TEXTURE_SIZE: return integer(kMax3DTextureSize);
     case MAX_ARRAY_TEXTURE_LAYERS: return integer(kMaxArrayTextureLayers);
+    case MAX_TEXTURE_BUFFER_SIZE: return integer(kMaxTextureBufferSize);
     case MAX_TEXTURE_IMAGE_UNITS:
     case MAX_VERTEX_TEXTURE_IMAGE_UNITS:
     case MAX_COMBINED_TEXTURE_IMAGE_UNITS: return integer(kMaxTextureUnits);

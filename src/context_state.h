@@ -27,6 +27,9 @@ namespace softgl {
 struct Buffer {
   std::vector<std::uint8_t> data;
   Enum usage = STATIC_DRAW;
+  // Whether a buffer texture has read this store (TexBuffer named the buffer): recorded draws may sample it, so
+  // they are rendered before it changes (ContextState::BeforeStoreChange).
+  bool texture_store = false;
   // While mapped (MapBufferRange), bytes [map_offset, map_offset + map_length) are the caller's through the pointer
   // it was given; the store is not reallocated until it is unmapped.
   bool mapped = false;
@@ -217,6 +220,7 @@ struct ContextState {
 
   std::shared_ptr<Buffer> array_buffer;
   std::shared_ptr<Buffer> copy_read_buffer, copy_write_buffer;
+  std::shared_ptr<Buffer> texture_buffer;  // the TEXTURE_BUFFER buffer binding (TexBuffer does not read it)
   std::shared_ptr<Buffer> feedback_buffer;  // TRANSFORM_FEEDBACK_BUFFER (the generic binding)
   // Transform feedback objects; `feedback` is the bound one (feedback_id's, or default_feedback for 0).
   std::unordered_map<std::uint32_t, std::unique_ptr<TransformFeedbackObject>> feedbacks;
@@ -305,16 +309,18 @@ struct ContextState {
 
   static bool IsBufferTarget(Enum target) {
     return target == ARRAY_BUFFER || target == ELEMENT_ARRAY_BUFFER || target == COPY_READ_BUFFER ||
-           target == COPY_WRITE_BUFFER || target == TRANSFORM_FEEDBACK_BUFFER;
+           target == COPY_WRITE_BUFFER || target == TRANSFORM_FEEDBACK_BUFFER || target == TEXTURE_BUFFER;
   }
   static constexpr const char* kBufferTargets =
-      "target must be ARRAY_BUFFER, ELEMENT_ARRAY_BUFFER, COPY_READ_BUFFER, COPY_WRITE_BUFFER or TRANSFORM_FEEDBACK_BUFFER";
+      "target must be ARRAY_BUFFER, ELEMENT_ARRAY_BUFFER, COPY_READ_BUFFER, COPY_WRITE_BUFFER, TRANSFORM_FEEDBACK_BUFFER "
+      "or TEXTURE_BUFFER";
 
   std::shared_ptr<Buffer>* BindingFor(Enum target) {
     if (target == ARRAY_BUFFER) return &array_buffer;
     if (target == TRANSFORM_FEEDBACK_BUFFER) return &feedback_buffer;
     if (target == COPY_READ_BUFFER) return &copy_read_buffer;
     if (target == COPY_WRITE_BUFFER) return &copy_write_buffer;
+    if (target == TEXTURE_BUFFER) return &texture_buffer;
     if (target == ELEMENT_ARRAY_BUFFER && vao) return &vao->element_buffer;
     return nullptr;
   }
@@ -326,6 +332,12 @@ struct ContextState {
     auto* binding = BindingFor(target);
     if (binding == nullptr || !*binding) return SetError(INVALID_OPERATION, what, "no buffer is bound to target"), nullptr;
     return binding->get();
+  }
+
+  // Before a call changes the store of `buffer`: when a buffer texture reads it, the draws recorded so far are
+  // rendered first, so that they sample it as it was when they were made.
+  void BeforeStoreChange(const Buffer& buffer, const char* what) {
+    if (buffer.texture_store) Sync(what);
   }
 
   // The draw target's area, cut to the scissor rectangle while the scissor test is enabled.

@@ -55,7 +55,7 @@ void Context::ActiveTexture(Enum unit) {
 void Context::BindTexture(Enum target, std::uint32_t texture) {
   auto& s = *state_;
   const int kind = detail::TextureKind(target);
-  if (kind < 0) return s.SetError(INVALID_ENUM, __func__, "target must be TEXTURE_1D, TEXTURE_2D, TEXTURE_CUBE_MAP, TEXTURE_1D_ARRAY, TEXTURE_2D_ARRAY, TEXTURE_3D or TEXTURE_2D_MULTISAMPLE");
+  if (kind < 0) return s.SetError(INVALID_ENUM, __func__, "target must be TEXTURE_1D, TEXTURE_2D, TEXTURE_CUBE_MAP, TEXTURE_1D_ARRAY, TEXTURE_2D_ARRAY, TEXTURE_3D, TEXTURE_2D_MULTISAMPLE or TEXTURE_BUFFER");
   std::shared_ptr<detail::TextureObject> object;
   if (texture != 0) {
     auto it = s.textures.find(texture);
@@ -450,10 +450,31 @@ bool Context::TexImage2DFromMemory(Enum target, const void* data, std::size_t si
   });
 }
 
+void Context::TexBuffer(Enum target, Enum internal_format, std::uint32_t buffer) {
+  auto& s = *state_;
+  if (target != TEXTURE_BUFFER) return s.SetError(INVALID_ENUM, __func__, "target must be TEXTURE_BUFFER");
+  if (!detail::IsBufferTextureFormat(internal_format))
+    return s.SetError(INVALID_ENUM, __func__, "internal_format must be R8, R16, R16F, R32F, RG8, RG16, RG16F, RG32F, RGBA8, RGBA16, RGBA16F or RGBA32F (integer formats are not supported yet)");
+  std::shared_ptr<Buffer> object;
+  if (buffer != 0) {
+    auto it = s.buffers.find(buffer);
+    if (it == s.buffers.end()) return s.SetError(INVALID_OPERATION, __func__, "buffer is neither 0 nor a buffer id made by GenBuffer (or it was deleted)");
+    object = it->second;
+  }
+  detail::TextureObject* tex = s.Bound(TEXTURE_BUFFER);
+  if (!tex) return s.SetError(INVALID_OPERATION, __func__, "no texture is bound to TEXTURE_BUFFER of the active unit");
+  s.Sync(__func__);  // recorded draws may sample the texture as it was
+  tex->buffer_format = internal_format;
+  tex->buffer_id = buffer;
+  if (object) object->texture_store = true;
+  // (The store, kept alive by its buffer: the aliasing form shares the buffer's ownership.)
+  tex->buffer_store = object ? std::shared_ptr<const std::vector<std::uint8_t>>(object, &object->data) : nullptr;
+}
+
 void Context::GenerateMipmap(Enum target) {
   state_->Sync(__func__);
   auto& s = *state_;
-  if (detail::TextureKind(target) < 0 || target == TEXTURE_2D_MULTISAMPLE) return s.SetError(INVALID_ENUM, __func__, "target must be TEXTURE_1D, TEXTURE_2D, TEXTURE_CUBE_MAP, TEXTURE_1D_ARRAY, TEXTURE_2D_ARRAY or TEXTURE_3D (a multisample texture has no levels or sampling state)");
+  if (!detail::HasLevelsAndSampling(target)) return s.SetError(INVALID_ENUM, __func__, "target must be TEXTURE_1D, TEXTURE_2D, TEXTURE_CUBE_MAP, TEXTURE_1D_ARRAY, TEXTURE_2D_ARRAY or TEXTURE_3D (a multisample or buffer texture has no levels or sampling state)");
   detail::TextureObject* tex = s.Bound(target);
   if (!tex) return s.SetError(INVALID_OPERATION, __func__, "no texture is bound to that target of the active unit");
   const int base = tex->params.base_level;
@@ -549,7 +570,7 @@ void BorderOfIntegers(const int* values, float out[4]) {
 void Context::TexParameterfv(Enum target, Enum pname, const float* values) {
   state_->Sync(__func__);
   auto& s = *state_;
-  if (detail::TextureKind(target) < 0 || target == TEXTURE_2D_MULTISAMPLE) return s.SetError(INVALID_ENUM, __func__, "target must be TEXTURE_1D, TEXTURE_2D, TEXTURE_CUBE_MAP, TEXTURE_1D_ARRAY, TEXTURE_2D_ARRAY or TEXTURE_3D (a multisample texture has no levels or sampling state)");
+  if (!detail::HasLevelsAndSampling(target)) return s.SetError(INVALID_ENUM, __func__, "target must be TEXTURE_1D, TEXTURE_2D, TEXTURE_CUBE_MAP, TEXTURE_1D_ARRAY, TEXTURE_2D_ARRAY or TEXTURE_3D (a multisample or buffer texture has no levels or sampling state)");
   if (values == nullptr) return s.SetError(INVALID_VALUE, __func__, "values is null");
   detail::TextureObject* tex = s.Bound(target);
   if (!tex) return s.SetError(INVALID_OPERATION, __func__, "no texture is bound to that target of the active unit");
@@ -593,7 +614,7 @@ void IntegersOfValues(Enum pname, const float* v, int n, int* params) {
 
 // The sampling state `pname` of the texture bound to target, as up to four floats; false with the error set.
 bool TexParameterValues(ContextState& s, const char* what, Enum target, Enum pname, float out[4], int& n) {
-  if (detail::TextureKind(target) < 0 || target == TEXTURE_2D_MULTISAMPLE) return s.SetError(INVALID_ENUM, what, "target must be TEXTURE_1D, TEXTURE_2D, TEXTURE_CUBE_MAP, TEXTURE_1D_ARRAY, TEXTURE_2D_ARRAY or TEXTURE_3D (a multisample texture has no sampling state)"), false;
+  if (!detail::HasLevelsAndSampling(target)) return s.SetError(INVALID_ENUM, what, "target must be TEXTURE_1D, TEXTURE_2D, TEXTURE_CUBE_MAP, TEXTURE_1D_ARRAY, TEXTURE_2D_ARRAY or TEXTURE_3D (a multisample or buffer texture has no sampling state)"), false;
   const detail::TextureObject* tex = s.Bound(target);
   if (!tex) return s.SetError(INVALID_OPERATION, what, "no texture is bound to that target of the active unit"), false;
   return SamplerParameterValues(s, what, tex->params, pname, out, n, true);
@@ -633,12 +654,34 @@ bool SamplerParameterValues(ContextState& s, const char* what, const detail::Sam
 // error set.
 bool TexLevelValue(ContextState& s, const char* what, Enum target, int level, Enum pname, int& out) {
   if (!IsTexImageTarget(target) && target != TEXTURE_2D_ARRAY && target != TEXTURE_3D && target != TEXTURE_2D_MULTISAMPLE &&
-      target != TEXTURE_1D && target != TEXTURE_1D_ARRAY)
-    return s.SetError(INVALID_ENUM, what, "target must be TEXTURE_1D, TEXTURE_2D, a TEXTURE_CUBE_MAP_* face, TEXTURE_1D_ARRAY, TEXTURE_2D_ARRAY, TEXTURE_3D or TEXTURE_2D_MULTISAMPLE"), false;
-  if (level < 0 || level >= LevelCount(target)) return s.SetError(INVALID_VALUE, what, "level is negative or beyond the largest mipmap level"), false;
+      target != TEXTURE_1D && target != TEXTURE_1D_ARRAY && target != TEXTURE_BUFFER)
+    return s.SetError(INVALID_ENUM, what, "target must be TEXTURE_1D, TEXTURE_2D, a TEXTURE_CUBE_MAP_* face, TEXTURE_1D_ARRAY, TEXTURE_2D_ARRAY, TEXTURE_3D, TEXTURE_2D_MULTISAMPLE or TEXTURE_BUFFER"), false;
+  if (level < 0 || level >= LevelCount(target) || (target == TEXTURE_BUFFER && level != 0))
+    return s.SetError(INVALID_VALUE, what, "level is negative or beyond the largest mipmap level (a buffer texture has level 0 alone)"), false;
   int face = 0;
   const detail::TextureObject* tex = s.Bound(target, &face);
   if (!tex) return s.SetError(INVALID_OPERATION, what, "no texture is bound to that target of the active unit"), false;
+  if (target == TEXTURE_BUFFER) {  // one row of texels, as many as the buffer's store holds; without a buffer, none
+    const detail::TextureView view = detail::MakeView(*tex);
+    const bool image = tex->buffer_store != nullptr;
+    const FormatBits bits = BitsOf(image ? tex->buffer_format : 0);
+    switch (pname) {
+      case TEXTURE_WIDTH: out = view.buffer_texels; return true;
+      case TEXTURE_HEIGHT:
+      case TEXTURE_DEPTH: out = image ? 1 : 0; return true;
+      case TEXTURE_INTERNAL_FORMAT: out = int(tex->buffer_format); return true;
+      case TEXTURE_BUFFER_DATA_STORE_BINDING: out = int(tex->buffer_id); return true;
+      case TEXTURE_SAMPLES:
+      case TEXTURE_COMPRESSED: out = 0; return true;
+      case TEXTURE_RED_SIZE: out = bits.r; return true;
+      case TEXTURE_GREEN_SIZE: out = bits.g; return true;
+      case TEXTURE_BLUE_SIZE: out = bits.b; return true;
+      case TEXTURE_ALPHA_SIZE: out = bits.a; return true;
+      case TEXTURE_DEPTH_SIZE:
+      case TEXTURE_STENCIL_SIZE: out = 0; return true;
+      default: return s.SetError(INVALID_ENUM, what, "pname is not a level parameter of a buffer texture"), false;
+    }
+  }
   const detail::TextureLevel& lv = tex->levels[face][level];
   const FormatBits bits = BitsOf(lv.Defined() ? lv.format : 0);
   switch (pname) {
@@ -850,7 +893,7 @@ void SamplerParameterI(ContextState& s, const char* what, std::uint32_t sampler,
 // The texture bound to `target` for TexParameterI*v, or null with the error set.
 detail::TextureObject* TexParameterTarget(ContextState& s, const char* what, Enum target) {
   s.Sync(what);
-  if (detail::TextureKind(target) < 0 || target == TEXTURE_2D_MULTISAMPLE) return s.SetError(INVALID_ENUM, what, "target must be TEXTURE_1D, TEXTURE_2D, TEXTURE_CUBE_MAP, TEXTURE_1D_ARRAY, TEXTURE_2D_ARRAY or TEXTURE_3D (a multisample texture has no levels or sampling state)"), nullptr;
+  if (!detail::HasLevelsAndSampling(target)) return s.SetError(INVALID_ENUM, what, "target must be TEXTURE_1D, TEXTURE_2D, TEXTURE_CUBE_MAP, TEXTURE_1D_ARRAY, TEXTURE_2D_ARRAY or TEXTURE_3D (a multisample or buffer texture has no levels or sampling state)"), nullptr;
   detail::TextureObject* tex = s.Bound(target);
   if (!tex) return s.SetError(INVALID_OPERATION, what, "no texture is bound to that target of the active unit"), nullptr;
   return tex;

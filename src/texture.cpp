@@ -696,6 +696,14 @@ void GenerateMipmaps(TextureObject& texture) {
   }
 }
 
+bool IsBufferTextureFormat(Enum f) {
+  switch (f) {
+    case R8: case R16: case R16F: case R32F: case RG8: case RG16: case RG16F: case RG32F: case RGBA8: case RGBA16:
+    case RGBA16F: case RGBA32F: return true;
+    default: return false;
+  }
+}
+
 TextureView MakeView(const TextureObject& texture, const SamplerParams* sampler) {
   TextureView view;
   view.texture = &texture;
@@ -704,6 +712,17 @@ TextureView MakeView(const TextureObject& texture, const SamplerParams* sampler)
     view.params = *sampler;
     view.params.base_level = texture.params.base_level;
     view.params.max_level = texture.params.max_level;
+  }
+  if (texture.target == TEXTURE_BUFFER) {  // texels read in place from the buffer's store: no levels, no filtering
+    view.layout = LayoutOf(texture.buffer_format);
+    view.scale = StorageScale(view.layout);
+    view.complete = texture.buffer_store != nullptr;
+    if (view.complete && BytesPerTexel(view.layout) > 0) {
+      view.buffer = texture.buffer_store->data();
+      view.buffer_texels = int(std::min<std::size_t>(texture.buffer_store->size() / std::size_t(BytesPerTexel(view.layout)),
+                                                     std::size_t(kMaxTextureBufferSize)));
+    }
+    return view;
   }
   if (texture.target == TEXTURE_1D || texture.target == TEXTURE_1D_ARRAY) {
     // One texel high, sampled at its middle: TEXTURE_WRAP_T has no part (a border texel would enter LINEAR's

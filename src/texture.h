@@ -242,9 +242,16 @@ struct SamplerParams {
 struct TextureObject {
   Enum target = 0;  // TEXTURE_2D, TEXTURE_CUBE_MAP, TEXTURE_2D_ARRAY, TEXTURE_3D, TEXTURE_2D_MULTISAMPLE (its
                     // one image is level 0, with `samples` planes), TEXTURE_1D or TEXTURE_1D_ARRAY (levels one
-                    // texel high), fixed by the first bind
+                    // texel high), TEXTURE_BUFFER (no levels: the texels are a buffer's store), fixed by the first
+                    // bind
   TextureLevel levels[6][kMaxLevels];  // [face][level]; all but a cube map use face 0
   SamplerParams params;
+  // A TEXTURE_BUFFER texture (OpenGL 4.6, section 8.9): TexBuffer's format (R8 until one is given), the buffer it
+  // named (0: none), and that buffer's store, read in place by every draw (kept alive if the buffer is deleted, as
+  // OpenGL keeps it). The context renders recorded draws before a store a buffer texture reads changes.
+  Enum buffer_format = R8;
+  std::uint32_t buffer_id = 0;
+  std::shared_ptr<const std::vector<std::uint8_t>> buffer_store;
   int Faces() const { return target == TEXTURE_CUBE_MAP ? 6 : 1; }
   /// Levels with planes: the layers of a 2D array (as many at every level) or the slices of a 3D texture (halved
   /// with each level, as width and height are).
@@ -252,12 +259,12 @@ struct TextureObject {
 };
 
 /// The texture targets a unit binds, in this order: TEXTURE_2D, TEXTURE_CUBE_MAP, TEXTURE_2D_ARRAY, TEXTURE_3D,
-/// TEXTURE_2D_MULTISAMPLE, TEXTURE_1D, TEXTURE_1D_ARRAY. A 1D texture's levels are one texel high; a 1D array's
-/// layers are the planes of its levels, as a 2D array's.
-inline constexpr int kTextureKinds = 7;
+/// TEXTURE_2D_MULTISAMPLE, TEXTURE_1D, TEXTURE_1D_ARRAY, TEXTURE_BUFFER. A 1D texture's levels are one texel high;
+/// a 1D array's layers are the planes of its levels, as a 2D array's.
+inline constexpr int kTextureKinds = 8;
 inline constexpr Enum kTextureKindTarget[kTextureKinds] = {TEXTURE_2D, TEXTURE_CUBE_MAP, TEXTURE_2D_ARRAY,
                                                            TEXTURE_3D, TEXTURE_2D_MULTISAMPLE, TEXTURE_1D,
-                                                           TEXTURE_1D_ARRAY};
+                                                           TEXTURE_1D_ARRAY, TEXTURE_BUFFER};
 /// The index of a texture target in kTextureKindTarget, -1 for another enum.
 inline int TextureKind(Enum target) {
   for (int k = 0; k < kTextureKinds; ++k)
@@ -269,7 +276,14 @@ using UnitViews = const TextureView* (Textures::*)[kMaxTextureUnits];
 inline constexpr UnitViews kKindUnits[kTextureKinds] = {&Textures::unit_2d, &Textures::unit_cube,
                                                         &Textures::unit_2d_array, &Textures::unit_3d,
                                                         &Textures::unit_2d_ms, &Textures::unit_1d,
-                                                        &Textures::unit_1d_array};
+                                                        &Textures::unit_1d_array, &Textures::unit_buffer};
+/// The targets with levels and sampling state: every kind but TEXTURE_2D_MULTISAMPLE and TEXTURE_BUFFER.
+inline bool HasLevelsAndSampling(Enum target) {
+  return TextureKind(target) >= 0 && target != TEXTURE_2D_MULTISAMPLE && target != TEXTURE_BUFFER;
+}
+/// The formats TexBuffer takes (OpenGL 3.3's table 3.15 without the integer ones): R8, R16, R16F, R32F, RG8,
+/// RG16, RG16F, RG32F, RGBA8, RGBA16, RGBA16F, RGBA32F.
+bool IsBufferTextureFormat(Enum internal_format);
 
 /// A texture as one draw samples it: completeness and the levels in use resolved once.
 struct TextureView {
@@ -295,6 +309,9 @@ struct TextureView {
   // forms) samples the view: a 2D, cube map, 2D array or 3D texture, any layout, filters, wrap modes, size and
   // anisotropy.
   bool wide = false;
+  // A buffer texture: its store's texels (null: no buffer) and how many the draw may read.
+  const std::uint8_t* buffer = nullptr;
+  int buffer_texels = 0;
   bool operator==(const TextureView&) const = default;
 };
 

@@ -1754,6 +1754,34 @@ void Textures::FetchSampleLanes(int unit, const int x[16], const int y[16], cons
   FetchBlock(Usable(unit_2d_ms, unit), true, x, y, sample, out);
 }
 
+namespace {
+// Texel `index` of a buffer texture's store, divided by the scale: a texel of zero bytes outside the store.
+glm::vec4 BufferTexel(const TextureView& v, int index) {
+  static constexpr std::uint8_t kZero[16] = {};
+  const bool inside = index >= 0 && index < v.buffer_texels;
+  return RawTexel(v.layout, inside ? v.buffer + std::size_t(index) * std::size_t(BytesPerTexel(v.layout)) : kZero) /
+         v.scale;
+}
+}  // namespace
+
+glm::vec4 Textures::FetchBuffer(int unit, int index) const {
+  const TextureView* v = Usable(unit_buffer, unit);
+  return v ? BufferTexel(*v, index) : glm::vec4(0.0f);
+}
+
+int Textures::SizeBuffer(int unit) const {
+  const TextureView* v = Usable(unit_buffer, unit);
+  return v ? v->buffer_texels : 0;
+}
+
+void Textures::FetchBufferLanes(int unit, const int index[16], float out[4][16]) const {
+  const TextureView* v = Usable(unit_buffer, unit);
+  for (int l = 0; l < 16; ++l) {  // (no filtering, no wrapping: one texel a lane, decoded as the one-lane form)
+    const glm::vec4 t = v ? BufferTexel(*v, index[l]) : glm::vec4(0.0f);
+    for (int c = 0; c < 4; ++c) out[c][l] = t[c];
+  }
+}
+
 glm::ivec2 Textures::Size(int unit, int level) const {
   if (unit < 0 || unit >= kMaxTextureUnits || !unit_2d[unit]) return glm::ivec2(0);
   const TextureView& v = *unit_2d[unit];

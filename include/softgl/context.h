@@ -133,8 +133,8 @@ class Context {
   /// DeleteBuffer of each of ids[0 .. n). n < 0: INVALID_VALUE. (Each Delete*s call below is so.)
   void DeleteBuffers(int n, const std::uint32_t* ids);
   bool IsBuffer(std::uint32_t buffer) const;
-  /// Binds buffer (0 unbinds) to target ARRAY_BUFFER, ELEMENT_ARRAY_BUFFER, COPY_READ_BUFFER, COPY_WRITE_BUFFER or
-  /// TRANSFORM_FEEDBACK_BUFFER (the buffer calls below take each of them). The ELEMENT_ARRAY_BUFFER binding is part of the bound vertex array (INVALID_OPERATION if
+  /// Binds buffer (0 unbinds) to target ARRAY_BUFFER, ELEMENT_ARRAY_BUFFER, COPY_READ_BUFFER, COPY_WRITE_BUFFER,
+  /// TRANSFORM_FEEDBACK_BUFFER or TEXTURE_BUFFER (the buffer calls below take each of them). The ELEMENT_ARRAY_BUFFER binding is part of the bound vertex array (INVALID_OPERATION if
   /// none is bound). Bad target: INVALID_ENUM; an id not made by GenBuffer: INVALID_OPERATION.
   void BindBuffer(Enum target, std::uint32_t buffer);
   /// Replaces the store of the buffer bound to target with size bytes copied from data (zeros if data is null),
@@ -311,7 +311,7 @@ class Context {
   /// i < kMaxTextureUnits (else INVALID_ENUM).
   void ActiveTexture(Enum unit);
   /// Binds texture (0 unbinds) to TEXTURE_1D, TEXTURE_2D, TEXTURE_CUBE_MAP, TEXTURE_1D_ARRAY, TEXTURE_2D_ARRAY,
-  /// TEXTURE_3D or TEXTURE_2D_MULTISAMPLE of the active unit
+  /// TEXTURE_3D, TEXTURE_2D_MULTISAMPLE or TEXTURE_BUFFER of the active unit
   /// (each unit holds one texture of each target). Bad target: INVALID_ENUM;
   /// unknown id, or a texture first bound to the other target: INVALID_OPERATION. There is no default texture
   /// object: texture calls with nothing bound record INVALID_OPERATION.
@@ -665,6 +665,20 @@ class Context {
   /// INVALID_OPERATION; no memory: OUT_OF_MEMORY.
   void TexImage2DMultisample(Enum target, int samples, Enum internal_format, int width, int height,
                              bool fixed_sample_locations);
+  /// Makes the store of `buffer` (0: none) the texels of the TEXTURE_BUFFER texture bound to the active unit, read
+  /// in place as `internal_format`: one row of size / bytes-per-texel texels (at most MAX_TEXTURE_BUFFER_SIZE,
+  /// kMaxTextureBufferSize), as the store is when a draw's stage reads it; later BufferData, BufferSubData,
+  /// MapBuffer(Range) for writing, CopyBufferSubData and transform feedback into the buffer are seen by the draws
+  /// made after them, not by those made before. Shaders read it by texelFetch (FragmentLanes::TexelFetchBuffer,
+  /// VertexLanes::TexelFetchBuffer, Textures::FetchBuffer) and textureSize (TextureSizeBuffer); it has no levels
+  /// and no sampling state (TexParameter, GenerateMipmap, TexImage* on it: INVALID_ENUM) and cannot be attached to
+  /// a framebuffer (INVALID_OPERATION). GetTexLevelParameter(TEXTURE_BUFFER, 0, ...) gives TEXTURE_WIDTH (the
+  /// texels), TEXTURE_INTERNAL_FORMAT (R8 before any TexBuffer) and TEXTURE_BUFFER_DATA_STORE_BINDING (the buffer;
+  /// a deleted buffer's store stays the texture's until TexBuffer replaces it). Formats: R8, R16, R16F, R32F, RG8,
+  /// RG16, RG16F, RG32F, RGBA8, RGBA16, RGBA16F, RGBA32F (OpenGL 3.3's, less the integer ones). Errors: target
+  /// not TEXTURE_BUFFER, another format: INVALID_ENUM; buffer neither 0 nor a buffer's id, or no texture bound:
+  /// INVALID_OPERATION.
+  void TexBuffer(Enum target, Enum internal_format, std::uint32_t buffer);
   /// RENDERBUFFER_WIDTH, _HEIGHT, _INTERNAL_FORMAT (as given, RGBA before any storage), _RED_SIZE, _GREEN_SIZE,
   /// _BLUE_SIZE, _ALPHA_SIZE, _DEPTH_SIZE, _STENCIL_SIZE (the format's bits, as OpenGL reports them), _SAMPLES (0,
   /// or the multisampled renderbuffer's count) of the bound renderbuffer. Errors: bad target or pname: INVALID_ENUM; nothing bound: INVALID_OPERATION.

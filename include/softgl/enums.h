@@ -196,6 +196,9 @@ inline constexpr Enum TEXTURE_1D = 0x0DE0;
 inline constexpr Enum TEXTURE_1D_ARRAY = 0x8C18;
 inline constexpr Enum TEXTURE_3D = 0x806F;
 inline constexpr Enum TEXTURE_2D_MULTISAMPLE = 0x9100;
+// A buffer texture's target (BindTexture, TexBuffer), and the buffer target of BindBuffer: GetIntegerv of it
+// names the buffer bound there.
+inline constexpr Enum TEXTURE_BUFFER = 0x8C2A;
 inline constexpr Enum TEXTURE_CUBE_MAP_POSITIVE_X = 0x8515;
 inline constexpr Enum TEXTURE_CUBE_MAP_NEGATIVE_X = 0x8516;
 inline constexpr Enum TEXTURE_CUBE_MAP_POSITIVE_Y = 0x8517;
@@ -423,6 +426,9 @@ inline constexpr Enum TEXTURE_BINDING_2D_ARRAY = 0x8C1D;
 inline constexpr Enum TEXTURE_BINDING_3D = 0x806A;
 inline constexpr Enum TEXTURE_BINDING_1D = 0x8068;
 inline constexpr Enum TEXTURE_BINDING_1D_ARRAY = 0x8C1C;
+inline constexpr Enum TEXTURE_BINDING_BUFFER = 0x8C2C;
+// GetTexLevelParameter of a buffer texture: the buffer whose store holds its texels (0: none).
+inline constexpr Enum TEXTURE_BUFFER_DATA_STORE_BINDING = 0x8C2D;
 // GetVertexAttrib* (VERTEX_ATTRIB_ARRAY_DIVISOR and the others an attribute array has).
 inline constexpr Enum VERTEX_ATTRIB_ARRAY_ENABLED = 0x8622;
 inline constexpr Enum VERTEX_ATTRIB_ARRAY_SIZE = 0x8623;
@@ -488,6 +494,7 @@ inline constexpr Enum COLOR_CLEAR_VALUE = 0x0C22;
 inline constexpr Enum COLOR_WRITEMASK = 0x0C23;
 inline constexpr Enum MAX_VERTEX_ATTRIBS = 0x8869;
 inline constexpr Enum MAX_TEXTURE_SIZE = 0x0D33;
+inline constexpr Enum MAX_TEXTURE_BUFFER_SIZE = 0x8C2B;  // kMaxTextureBufferSize
 inline constexpr Enum MAX_CUBE_MAP_TEXTURE_SIZE = 0x851C;
 inline constexpr Enum MAX_3D_TEXTURE_SIZE = 0x8073;
 inline constexpr Enum MAX_ARRAY_TEXTURE_LAYERS = 0x88FF;

@@ -212,6 +212,14 @@ inline vec4 Fetch(const Textures* textures, int unit, const Int& x, const Int& y
   (textures->*fn)(unit, xs, ys, ws, out);
   return Rgba(out);
 }
+// texelFetch(samplerBuffer, index) through Textures::FetchBufferLanes.
+inline vec4 FetchBuffer(const Textures* textures, int unit, const Int& index) {
+  alignas(64) std::int32_t is[kLanes];
+  index.Store(is);
+  float out[4][kLanes];
+  textures->FetchBufferLanes(unit, is, out);
+  return Rgba(out);
+}
 // texture() through one of Textures' *Lanes calls, with the derivatives of the coordinates c holds.
 using SampleLanesFn = void (Textures::*)(int, const Textures::Lanes&, float, float (*)[16]) const;
 inline vec4 Sample(const Textures* textures, int unit, Textures::Lanes& c, const vec3& dx, const vec3& dy, float bias,
@@ -256,6 +264,10 @@ struct LodTextures {
     return shader_detail::Lod(textures, unit, shader_detail::Coords(s_layer.x, s_layer.y), lod,
                               &Textures::Sample1DArrayLodLanes);
   }
+  /// texelFetch(samplerBuffer, index): texel `index` of unit's buffer texture (Textures::FetchBuffer).
+  vec4 TexelFetchBuffer(int unit, const Int& index) const { return shader_detail::FetchBuffer(textures, unit, index); }
+  /// textureSize(samplerBuffer): the texels the buffer texture holds.
+  int TextureSizeBuffer(int unit) const { return textures->SizeBuffer(unit); }
 };
 
 /// What a wide vertex stage reads: the attributes of 16 vertices (and, from LodTextures, the textures).
@@ -534,6 +546,10 @@ struct FragmentLanes {
   /// textureSize(sampler2DMS) and textureSamples(sampler2DMS).
   glm::ivec2 TextureSizeMS(int unit) const { return textures->SizeMultisample(unit); }
   int TextureSamples(int unit) const { return textures->Samples(unit); }
+  /// texelFetch(samplerBuffer, index): texel `index` of unit's buffer texture (Textures::FetchBuffer).
+  vec4 TexelFetchBuffer(int unit, const Int& index) const { return shader_detail::FetchBuffer(textures, unit, index); }
+  /// textureSize(samplerBuffer): the texels the buffer texture holds.
+  int TextureSizeBuffer(int unit) const { return textures->SizeBuffer(unit); }
   /// textureSize(sampler2DArray, level): width, height, layers.
   glm::ivec3 TextureSizeArray(int unit, int level = 0) const { return textures->SizeArray(unit, level); }
   /// textureSize(sampler3D, level).

@@ -1,7 +1,8 @@
 // softgl/texture.h — textures as the shader stages see them: sampling by texture unit.
 //
 // A draw hands its shader a `Textures`: for each of the kMaxTextureUnits units, the TEXTURE_2D, TEXTURE_CUBE_MAP,
-// TEXTURE_2D_ARRAY, TEXTURE_3D and TEXTURE_2D_MULTISAMPLE textures bound to it and their sampling state.
+// TEXTURE_2D_ARRAY, TEXTURE_3D, TEXTURE_2D_MULTISAMPLE, TEXTURE_1D, TEXTURE_1D_ARRAY and TEXTURE_BUFFER textures
+// bound to it and their sampling state.
 // Filtering, wrapping and the level of detail follow the OpenGL 4.6 specification (section 8.14): texel centres at
 // +0.5, wrap applied per texel, lambda from the screen-space derivatives of the texture coordinates. Sampling a
 // unit with no texture, or an incomplete one, returns (0, 0, 0, 1), as OpenGL does.
@@ -26,6 +27,8 @@ inline constexpr int kMaxTextureSize = 16384;
 inline constexpr int kMax3DTextureSize = 2048;
 /// Most layers of a 2D array texture (GL_MAX_ARRAY_TEXTURE_LAYERS).
 inline constexpr int kMaxArrayTextureLayers = 2048;
+/// Most texels a buffer texture reads from its buffer (GL_MAX_TEXTURE_BUFFER_SIZE): texels past it are outside.
+inline constexpr int kMaxTextureBufferSize = 1 << 27;
 
 namespace detail {
 struct TextureView;  // a bound texture resolved for one draw; defined in src/
@@ -95,6 +98,14 @@ class Textures {
   /// textureSize(sampler2DMS) and textureSamples(sampler2DMS): (0, 0) and 0 when there is none.
   glm::ivec2 SizeMultisample(int unit) const;
   int Samples(int unit) const;
+  /// texelFetch(samplerBuffer, index): texel `index` of unit's buffer texture, read from its buffer's store as it
+  /// is when the draw's stage runs, in the texture's format (Context::TexBuffer), unfiltered: channels the format
+  /// lacks read (0, 0, 1). An index outside the store reads a texel of zero bytes ((0, 0, 0, 1) for a format
+  /// without alpha); a texture without a buffer, or no buffer texture, reads (0, 0, 0, 0).
+  glm::vec4 FetchBuffer(int unit, int index) const;
+  /// textureSize(samplerBuffer): the texels in the buffer's store (its bytes over the texel's, at most
+  /// kMaxTextureBufferSize); 0 when there is none.
+  int SizeBuffer(int unit) const;
 
   /// Coordinates and their screen-space derivatives for 16 lanes (a wide shader's block of fragments).
   struct Lanes {
@@ -124,6 +135,8 @@ class Textures {
   /// Fetch and FetchSample, lane by lane: texel (x[l], y[l]) at level[l] (or sample[l]).
   void FetchLanes(int unit, const int x[16], const int y[16], const int level[16], float out[4][16]) const;
   void FetchSampleLanes(int unit, const int x[16], const int y[16], const int sample[16], float out[4][16]) const;
+  /// FetchBuffer for 16 lanes: texel index[l] in lane l.
+  void FetchBufferLanes(int unit, const int index[16], float out[4][16]) const;
 
   const detail::TextureView* unit_2d[kMaxTextureUnits] = {};
   const detail::TextureView* unit_cube[kMaxTextureUnits] = {};
@@ -132,6 +145,7 @@ class Textures {
   const detail::TextureView* unit_2d_ms[kMaxTextureUnits] = {};
   const detail::TextureView* unit_1d[kMaxTextureUnits] = {};
   const detail::TextureView* unit_1d_array[kMaxTextureUnits] = {};
+  const detail::TextureView* unit_buffer[kMaxTextureUnits] = {};
   /// Units from this one on have no texture bound (their entries above are null): what a draw copies and compares
   /// stops here.
   int units = kMaxTextureUnits;

@@ -54,6 +54,8 @@ enum class Program {
                    // 1 - invocation / 4
   kTexture1D,       // colour = texture(1D texture on unit 7, extra.x)
   kTexture1DArray,  // colour = texture(1D array on unit 7, extra.xy): layer extra.y
+  kTextureBuffer,   // colour = texelFetch(buffer texture on unit 0, int(extra.x) + y / 4 % 16 * 16 + x / 4 % 16) at
+                    // window pixel (x, y); where extra.y > 0.5, (textureSize / 1024, 0, 0, 1) instead
 };
 
 /// A TEXTURE_2D_ARRAY or TEXTURE_3D defined by TexImage3D: RGBA8 from `rgba` (unit 3 for an array, 4 for 3D), or
@@ -310,6 +312,14 @@ class Backend {
   virtual void TexImage2D(Enum target, int level, Enum internal_format, int w, int h) = 0;
   virtual void TexSubImage2D(Enum target, int level, int x, int y, int w, int h, const std::uint8_t* rgba) = 0;
   virtual void GenerateMipmap(Enum target) = 0;
+  /// Buffer textures, on the active unit: NewBufferTexture binds a new texture to TEXTURE_BUFFER and a new buffer to
+  /// the TEXTURE_BUFFER buffer target, fills the buffer with `bytes` (BufferData) and makes it the texture's
+  /// (TexBuffer with `internal_format`); it returns the buffer. BufferSubDataTexture writes `bytes` at `offset` of
+  /// `buffer` through the TEXTURE_BUFFER target (BufferSubData). TexBuffer and DeleteBuffer as OpenGL's.
+  virtual std::uint32_t NewBufferTexture(Enum internal_format, const std::vector<std::uint8_t>& bytes) = 0;
+  virtual void BufferSubDataTexture(std::uint32_t buffer, int offset, const std::vector<std::uint8_t>& bytes) = 0;
+  virtual void TexBuffer(Enum target, Enum internal_format, std::uint32_t buffer) = 0;
+  virtual void DeleteBuffer(std::uint32_t buffer) = 0;
   /// Defines the cube map of unit 1 from six faces (+x, -x, +y, -y, +z, -z) of size x size RGBA8, mipmapped with
   /// GenerateMipmap, LINEAR_MIPMAP_LINEAR, CLAMP_TO_EDGE.
   virtual void SetCubeTexture(int size, const std::vector<std::uint8_t> faces[6]) = 0;

@@ -127,6 +127,17 @@ out vec4 o_color;
 void main() { o_color = texture(u_1d_array, v_extra.xy); }
 )";
 
+constexpr const char* kTextureBufferFragment = R"(#version 330 core
+in vec4 v_extra;
+uniform samplerBuffer u_buffer;
+out vec4 o_color;
+void main() {
+  ivec2 p = ivec2(gl_FragCoord.xy);
+  int i = int(v_extra.x) + p.y / 4 % 16 * 16 + p.x / 4 % 16;
+  o_color = v_extra.y > 0.5 ? vec4(float(textureSize(u_buffer)) / 1024.0, 0.0, 0.0, 1.0) : texelFetch(u_buffer, i);
+}
+)";
+
 constexpr const char* kVolumeFragment = R"(#version 330 core
 in vec4 v_extra;
 uniform sampler3D u_volume;
@@ -337,6 +348,7 @@ class GlBackend final : public Backend {
     }
     programs_[19] = Link(kTexture1DFragment, error);
     programs_[20] = Link(kTexture1DArrayFragment, error);
+    programs_[21] = Link(kTextureBufferFragment, error);
     programs_[15] = Link(kGeometryFragment, error, kVertexShader, kSpritesGeometry);
     programs_[16] = Link(kGeometryFragment, error, kVertexShader, kAdjacencyGeometry);
     programs_[17] = Link(kGeometryFragment, error, kVertexShader, kLineAdjacencyGeometry);
@@ -566,6 +578,28 @@ class GlBackend final : public Backend {
     glUseProgram(programs_[3]);
     glUniform1i(glGetUniformLocation(programs_[3], "u_tex"), 0);
   }
+
+  std::uint32_t NewBufferTexture(Enum internal_format, const std::vector<std::uint8_t>& bytes) override {
+    GLuint tex = 0, buffer = 0;
+    glGenTextures(1, &tex);
+    glBindTexture(GL_TEXTURE_BUFFER, tex);
+    glGenBuffers(1, &buffer);
+    glBindBuffer(GL_TEXTURE_BUFFER, buffer);
+    glBufferData(GL_TEXTURE_BUFFER, GLsizeiptr(bytes.size()), bytes.data(), GL_STATIC_DRAW);
+    glTexBuffer(GL_TEXTURE_BUFFER, GLenum(internal_format), buffer);
+    return buffer;
+  }
+
+  void BufferSubDataTexture(std::uint32_t buffer, int offset, const std::vector<std::uint8_t>& bytes) override {
+    glBindBuffer(GL_TEXTURE_BUFFER, buffer);
+    glBufferSubData(GL_TEXTURE_BUFFER, offset, GLsizeiptr(bytes.size()), bytes.data());
+  }
+
+  void TexBuffer(Enum target, Enum internal_format, std::uint32_t buffer) override {
+    glTexBuffer(GLenum(target), GLenum(internal_format), buffer);
+  }
+
+  void DeleteBuffer(std::uint32_t buffer) override { glDeleteBuffers(1, &buffer); }
 
   void BindNewTexture(Enum target) override {
     GLuint tex = 0;
@@ -973,7 +1007,7 @@ class GlBackend final : public Backend {
   OSMesaContext ctx_;
   int w_, h_;
   std::vector<std::uint8_t> buffer_;
-  GLuint programs_[21] = {};
+  GLuint programs_[22] = {};
   GLuint instanced_ = 0;
   GLuint rtt_color_ = 0;
   GLuint vao_ = 0, vbo_ = 0, ebo_ = 0;

@@ -124,19 +124,36 @@ struct LayeredShader : softgl::Shader<LayeredShader, LayerVaryings> {
   }
 };
 
-// kFetchSample, in the wide form: texelFetch of the multisample texture on unit 6.
+// The wide programs whose fragment stage reads attribute 2 (extra), and gl_FragCoord.
 struct FetchSampleVaryings {
   softgl::vec4 extra;
 };
-struct FetchSampleShader : softgl::Shader<FetchSampleShader, FetchSampleVaryings> {
+template <class Derived>
+struct ExtraShader : softgl::Shader<Derived, FetchSampleVaryings> {
   void Vertex(const softgl::VertexLanes& in, softgl::VertexLanesOut<FetchSampleVaryings>& out) const {
     out.position = in.attrib[0];
     out.varyings.extra = in.attrib[2];
   }
+};
+
+// kFetchSample, in the wide form: texelFetch of the multisample texture on unit 6.
+struct FetchSampleShader : ExtraShader<FetchSampleShader> {
   void Fragment(const softgl::FragmentLanes<FetchSampleVaryings>& in, softgl::FragmentLanesOut& out) const {
     using softgl::Int;
     const softgl::vec4& e = in.varyings.extra;
     out.color[0] = in.TexelFetchMS(6, Int(in.frag_coord.x) - Int(e.x), Int(in.frag_coord.y) - Int(e.y), Int(e.z));
+  }
+};
+
+// kTextureBuffer, in the wide form: texelFetch of the buffer texture on unit 0, or its textureSize.
+struct TextureBufferShader : ExtraShader<TextureBufferShader> {
+  void Fragment(const softgl::FragmentLanes<FetchSampleVaryings>& in, softgl::FragmentLanesOut& out) const {
+    using softgl::Int;
+    const softgl::vec4& e = in.varyings.extra;
+    const Int x(in.frag_coord.x), y(in.frag_coord.y);
+    const softgl::vec4 texel = in.TexelFetchBuffer(0, Int(e.x) + y / 4 % 16 * 16 + x / 4 % 16);
+    const softgl::vec4 size(float(in.TextureSizeBuffer(0)) / 1024.0f, 0.0f, 0.0f, 1.0f);
+    out.color[0] = softgl::select(e.y > 0.5f, size, texel);
   }
 };
 
@@ -421,6 +438,7 @@ class SoftglBackend final : public Backend {
       case Program::kTexture1DArray: gl_.UseProgram(texture_1d_array_); break;
       case Program::kArrayShadow: gl_.UseProgram(array_shadow_); break;
       case Program::kFetchSample: gl_.UseProgram(fetch_sample_); break;
+      case Program::kTextureBuffer: gl_.UseProgram(texture_buffer_); break;
       case Program::kOutputs: gl_.UseProgram(outputs_); break;
       case Program::kPointCoord: gl_.UseProgram(point_coord_); break;
       case Program::kLayer: gl_.UseProgram(layer_); break;
@@ -551,6 +569,26 @@ class SoftglBackend final : public Backend {
   }
 
   void BindNewTexture(Enum target) override { gl_.BindTexture(target, gl_.GenTexture()); }
+
+  std::uint32_t NewBufferTexture(Enum internal_format, const std::vector<std::uint8_t>& bytes) override {
+    gl_.BindTexture(softgl::TEXTURE_BUFFER, gl_.GenTexture());
+    const std::uint32_t buffer = gl_.GenBuffer();
+    gl_.BindBuffer(softgl::TEXTURE_BUFFER, buffer);
+    gl_.BufferData(softgl::TEXTURE_BUFFER, std::ptrdiff_t(bytes.size()), bytes.data());
+    gl_.TexBuffer(softgl::TEXTURE_BUFFER, internal_format, buffer);
+    return buffer;
+  }
+
+  void BufferSubDataTexture(std::uint32_t buffer, int offset, const std::vector<std::uint8_t>& bytes) override {
+    gl_.BindBuffer(softgl::TEXTURE_BUFFER, buffer);
+    gl_.BufferSubData(softgl::TEXTURE_BUFFER, offset, std::ptrdiff_t(bytes.size()), bytes.data());
+  }
+
+  void TexBuffer(Enum target, Enum internal_format, std::uint32_t buffer) override {
+    gl_.TexBuffer(target, internal_format, buffer);
+  }
+
+  void DeleteBuffer(std::uint32_t buffer) override { gl_.DeleteBuffer(buffer); }
 
   void CompressedTexImage(int dims, Enum target, int level, Enum format, int w, int h, int d, int image_size,
                           const void* data) override {
@@ -941,6 +979,7 @@ class SoftglBackend final : public Backend {
   ShadowShader shadow_;
   LayeredShader array_, volume_, array_shadow_, texture_1d_, texture_1d_array_;
   FetchSampleShader fetch_sample_;
+  TextureBufferShader texture_buffer_;
   OutputsShader outputs_;
   PointCoordShader point_coord_;
   FeedbackShader feedback_;

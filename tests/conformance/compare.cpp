@@ -973,6 +973,55 @@ TEST_CASE("compressed textures: decoded texels, blocks read back, level state an
   CompareSteps(16, run);
 }
 
+TEST_CASE("buffer textures: TexBuffer's level state, bindings and errors as Mesa's", "[conformance]") {
+  namespace gl = softgl;
+  auto run = [](Backend& b, const auto& step) {
+    auto level_state = [&](std::uint32_t buffer) {
+      for (Enum pname : {gl::TEXTURE_WIDTH, gl::TEXTURE_HEIGHT, gl::TEXTURE_DEPTH, gl::TEXTURE_INTERNAL_FORMAT,
+                         gl::TEXTURE_RED_SIZE, gl::TEXTURE_GREEN_SIZE, gl::TEXTURE_ALPHA_SIZE, gl::TEXTURE_DEPTH_SIZE,
+                         gl::TEXTURE_COMPRESSED, gl::TEXTURE_SAMPLES})
+        step(b.GetTexLevelParameter(gl::TEXTURE_BUFFER, 0, pname));
+      step(b.GetTexLevelParameter(gl::TEXTURE_BUFFER, 0, gl::TEXTURE_BUFFER_DATA_STORE_BINDING) == int(buffer));
+    };
+    step(b.GetIntegers(gl::MAX_TEXTURE_BUFFER_SIZE, 1)[0] >= 65536);
+    const std::vector<std::uint8_t> bytes(64, 7);
+    const std::uint32_t buffer = b.NewBufferTexture(gl::RGBA8, bytes);
+    step(0);
+    step(b.GetIntegers(gl::TEXTURE_BINDING_BUFFER, 1)[0] != 0);
+    step(b.GetIntegers(gl::TEXTURE_BUFFER, 1)[0] == std::int64_t(buffer));
+    level_state(buffer);
+    for (Enum format : {gl::R8, gl::R16, gl::R16F, gl::R32F, gl::RG8, gl::RG16, gl::RG16F, gl::RG32F, gl::RGBA16,
+                        gl::RGBA16F, gl::RGBA32F}) {
+      b.TexBuffer(gl::TEXTURE_BUFFER, format, buffer);
+      step(0);
+      level_state(buffer);
+    }
+    step(b.GetTexLevelParameter(gl::TEXTURE_BUFFER, 1, gl::TEXTURE_WIDTH));  // no level 1
+    // Errors: each changes nothing.
+    b.TexBuffer(gl::TEXTURE_2D, gl::R8, buffer);
+    step(0);
+    for (Enum format : {gl::RGB8, gl::SRGB8_ALPHA8, gl::DEPTH_COMPONENT32F, gl::RGB565, gl::RGBA}) {
+      b.TexBuffer(gl::TEXTURE_BUFFER, format, buffer);
+      step(0);
+    }
+    b.TexBuffer(gl::TEXTURE_BUFFER, gl::R8, buffer + 1000);
+    step(0);
+    level_state(buffer);
+    b.GenerateMipmap(gl::TEXTURE_BUFFER);
+    step(0);
+    // Detached, attached again, its buffer deleted: the store stays the texture's.
+    b.TexBuffer(gl::TEXTURE_BUFFER, gl::RGBA8, 0);
+    step(0);
+    level_state(0);
+    b.TexBuffer(gl::TEXTURE_BUFFER, gl::RG8, buffer);
+    step(0);
+    b.DeleteBuffer(buffer);
+    step(b.GetIntegers(gl::TEXTURE_BUFFER, 1)[0]);
+    level_state(buffer);
+  };
+  CompareSteps(16, run);
+}
+
 int main(int argc, char** argv) {
   if (argc > 1 && std::string(argv[1]) == "--report") {
     for (const SceneInfo& s : Scenes()) {

@@ -8,6 +8,7 @@
 
 #include <array>
 #include <cmath>
+#include <cstring>
 #include <random>
 
 #include <assimp/cimport.h>
@@ -2078,6 +2079,59 @@ void Texture1D(Backend& b) {
          Program::kTexture1DArray);
 }
 
+// Buffer textures: texelFetch in four formats from buffers of pseudo-random texels, 4 x 4 pixels a texel, 16 x 16
+// texels a quadrant (indices before the store's first texel and past its last among them: zero texels, (0, 0, 0, 1)
+// where the format has no alpha); a store changed by BufferSubData between the draws of the two halves of a
+// quadrant (each half shows the texels it was drawn with); textureSize in the top rows of each quadrant.
+void TextureBuffer(Backend& b) {
+  ClearBlack(b);
+  std::uint32_t seed = 5;
+  const auto next = [&] {
+    seed = seed * 1664525u + 1013904223u;
+    return seed >> 8;
+  };
+  // n texels of `bytes` bytes each, in [0, 1] where the format is a float one (halves 0 ... 0x3C00, floats by value).
+  const auto texels = [&](Enum format, int n) {
+    std::vector<std::uint8_t> v;
+    for (int i = 0; i < n; ++i) {
+      const int channels = format == RG16 ? 2 : format == R32F ? 1 : 4;
+      for (int c = 0; c < channels; ++c) {
+        if (format == RGBA8) {
+          v.push_back(std::uint8_t(next()));
+        } else if (format == R32F) {
+          const float f = float(next() % 100001) / 100000.0f;
+          std::uint8_t b4[4];
+          std::memcpy(b4, &f, 4);
+          v.insert(v.end(), b4, b4 + 4);
+        } else {  // RG16: any word; RGBA16F: a half in [0, 1]
+          const std::uint32_t w = format == RGBA16F ? next() % 0x3C01 : next() & 0xFFFF;
+          v.push_back(std::uint8_t(w));
+          v.push_back(std::uint8_t(w >> 8));
+        }
+      }
+    }
+    return v;
+  };
+  const auto draw = [&](float x0, float y0, float x1, float y1, float offset, float size) {
+    const glm::vec4 e(offset, size, 0, 0);
+    b.Draw(TRIANGLES, QuadWith({Win(x0, y0), Win(x1, y0), Win(x1, y1), Win(x0, y1)}, {e, e, e, e}),
+           Program::kTextureBuffer);
+  };
+  const struct Quadrant { float x, y; Enum format; int texels; float offset; } quadrants[] = {
+      {0, 64, RGBA8, 256, 0}, {64, 64, RG16, 200, -20}, {0, 0, RGBA16F, 256, 40}, {64, 0, R32F, 256, 0}};
+  for (const Quadrant& q : quadrants) {
+    const std::uint32_t buffer = b.NewBufferTexture(q.format, texels(q.format, q.texels));
+    if (q.format != R32F) {
+      draw(q.x, q.y, q.x + 64, q.y + 60, q.offset, 0);
+    } else {  // the left half, then the first 128 texels replaced, then the right half
+      draw(q.x, q.y, q.x + 32, q.y + 60, q.offset, 0);
+      b.BufferSubDataTexture(buffer, 0, texels(R32F, 128));
+      draw(q.x + 32, q.y, q.x + 64, q.y + 60, q.offset, 0);
+    }
+    draw(q.x, q.y + 60, q.x + 64, q.y + 64, 0, 1);
+  }
+}
+
 // A mipmapped 16 x 16 x 8 3D texture: trilinear filtering on a receding plane whose r runs through the slices (the
 // level of detail takes r's derivatives too), REPEAT and CLAMP_TO_EDGE in r, and NEAREST slices.
 void Texture3D(Backend& b) {
@@ -2269,6 +2323,7 @@ const std::vector<SceneInfo>& Scenes() {
       {"texture_3d", kSize, kSize, Check::kTexture, Texture3D},
       {"texture_1d", kSize, kSize, Check::kTexture, Texture1D},
       {"compressed_textures", kSize, kSize, Check::kTexture, CompressedTextures},
+      {"texture_buffer", kSize, kSize, Check::kExact, TextureBuffer},
       {"shadow_array", kSize, kSize, Check::kTexture, ShadowArray},
       {"model", 256, 256, Check::kColor, Model},
   };

@@ -41,7 +41,8 @@ struct FuzzShader : softgl::Shader<FuzzShader, Vary> {
                    in.textures->FetchSample(7, texel, small(in.varyings.a.y * 9.0f) - 1) +
                    in.textures->Fetch(0, texel, small(in.varyings.a.z * 4.0f) - 1) +
                    in.textures->Sample1D(8, in.varyings.uv.x, in.varyings.a.x, in.varyings.a.y) +
-                   in.textures->Sample1DArray(9, in.varyings.uv, in.varyings.a.z, 0.0f);
+                   in.textures->Sample1DArray(9, in.varyings.uv, in.varyings.a.z, 0.0f) +
+                   in.textures->FetchBuffer(0, small(in.varyings.a.w * 9.0f) - 2);
     out.depth = in.varyings.a.z;
     return in.varyings.a.w > -0.5f;
   }
@@ -60,7 +61,8 @@ struct FuzzGeometry : softgl::Shader<FuzzGeometry, WideVary> {
   static constexpr softgl::GeometryLayout kGeometry{softgl::TRIANGLES, softgl::TRIANGLE_STRIP, 8, 3};
   void Vertex(const softgl::VertexLanes& in, softgl::VertexLanesOut<WideVary>& out) const {
     out.position = in.attrib[0];
-    out.varyings.a = in.attrib[1];
+    // (a buffer texture's texels at any index: negative, past the store, from any float)
+    out.varyings.a = in.attrib[1] + in.TexelFetchBuffer(0, softgl::Int(in.attrib[1].w * 40.0f) - 3);
   }
   void Geometry(const softgl::GeometryLanes<WideVary>& in, softgl::GeometryLanesOut<WideVary>& out) const {
     using softgl::Float;
@@ -95,7 +97,7 @@ struct FuzzAdjacency : softgl::Shader<FuzzAdjacency, WideVary> {
     }
   }
   void Fragment(const softgl::FragmentLanes<WideVary>& in, softgl::FragmentLanesOut& out) const {
-    out.color[0] = in.varyings.a;
+    out.color[0] = in.varyings.a + in.TexelFetchBuffer(1, softgl::Int(in.frag_coord.x) - 2) * float(in.TextureSizeBuffer(1));
   }
 };
 
@@ -113,9 +115,12 @@ constexpr std::uint32_t kTypes[] = {BYTE, UNSIGNED_BYTE, SHORT, UNSIGNED_SHORT, 
                                     DOUBLE, INT_2_10_10_10_REV, UNSIGNED_INT_2_10_10_10_REV};
 constexpr std::uint32_t kIndexTypes[] = {UNSIGNED_BYTE, UNSIGNED_SHORT, UNSIGNED_INT};
 constexpr std::uint32_t kBufferTargets[] = {ARRAY_BUFFER, ELEMENT_ARRAY_BUFFER, COPY_READ_BUFFER, COPY_WRITE_BUFFER,
-                                            TRANSFORM_FEEDBACK_BUFFER};
+                                            TRANSFORM_FEEDBACK_BUFFER, TEXTURE_BUFFER};
 constexpr std::uint32_t kTexTargets[] = {TEXTURE_2D, TEXTURE_CUBE_MAP, TEXTURE_2D_ARRAY, TEXTURE_3D,
-                                         TEXTURE_2D_MULTISAMPLE, TEXTURE_1D, TEXTURE_1D_ARRAY};
+                                         TEXTURE_2D_MULTISAMPLE, TEXTURE_1D, TEXTURE_1D_ARRAY, TEXTURE_BUFFER};
+constexpr std::uint32_t kBufferTextureFormats[] = {R8, R16F, RG32F, RGBA8, RGBA16, RGBA32F, RGB8, 0x8D82 /* RGBA32I */};
+constexpr std::uint32_t kBufferTextureNames[] = {TEXTURE_WIDTH, TEXTURE_INTERNAL_FORMAT, TEXTURE_BUFFER_DATA_STORE_BINDING,
+                                                 TEXTURE_RED_SIZE, TEXTURE_SAMPLES, TEXTURE_MIN_FILTER};
 constexpr std::uint32_t kImageTargets[] = {TEXTURE_2D,
                                            TEXTURE_CUBE_MAP_POSITIVE_X, TEXTURE_CUBE_MAP_NEGATIVE_X,
                                            TEXTURE_CUBE_MAP_POSITIVE_Y, TEXTURE_CUBE_MAP_NEGATIVE_Y,
@@ -361,6 +366,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
             gl.FramebufferTexture1D(in.Enum(kFbTargets), in.Enum(kAttachments), in.Byte() % 4 ? TEXTURE_1D : TEXTURE_2D, id(),
                                     in.Int(-1, 4));
             break;
+          case 6: {  // buffer textures: any format and buffer id, and their level queries
+            gl.TexBuffer(in.Byte() % 8 ? TEXTURE_BUFFER : TEXTURE_2D, in.Enum(kBufferTextureFormats), id());
+            int v = 0;
+            gl.GetTexLevelParameteriv(in.Byte() % 4 ? TEXTURE_BUFFER : TEXTURE_2D, in.Int(-1, 2), in.Enum(kBufferTextureNames), &v);
+            break;
+          }
           case 5: {  // compressed images: the right image size mostly, data only where scratch holds that many bytes
             const Enum format = in.Enum(kCompressed);
             const int d = in.Amount(0, 2, 4, kMaxArrayTextureLayers);
