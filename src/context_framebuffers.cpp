@@ -697,8 +697,9 @@ void Context::FramebufferTextureLayer(Enum target, Enum attachment, std::uint32_
   const auto* it = SlotsAndTexture(s, __func__, target, attachment, texture, slots, n, INVALID_OPERATION);
   if (!it) return;
   const Enum kind = (*it)->target;
-  if (kind != TEXTURE_2D_ARRAY && kind != TEXTURE_3D && kind != TEXTURE_1D_ARRAY) return s.SetError(INVALID_OPERATION, __func__, "the texture is not a TEXTURE_1D_ARRAY, TEXTURE_2D_ARRAY or TEXTURE_3D");
-  if (level < 0 || level >= detail::kMaxLevels) return s.SetError(INVALID_VALUE, __func__, "level is negative or beyond the largest mipmap level");
+  if (!(*it)->Layered()) return s.SetError(INVALID_OPERATION, __func__, "the texture is not a TEXTURE_1D_ARRAY, TEXTURE_2D_ARRAY, TEXTURE_2D_MULTISAMPLE_ARRAY or TEXTURE_3D");
+  if (level < 0 || level >= detail::kMaxLevels || (kind == TEXTURE_2D_MULTISAMPLE_ARRAY && level != 0))
+    return s.SetError(INVALID_VALUE, __func__, "level is negative or beyond the largest mipmap level (a multisample array has level 0 alone)");
   if (layer < 0 || layer >= (kind == TEXTURE_3D ? kMax3DTextureSize : kMaxArrayTextureLayers))
     return s.SetError(INVALID_VALUE, __func__, "layer is negative or beyond the most layers a texture has");
   AttachTexture(slots, n, (*it), level, 0, layer, false);
@@ -713,7 +714,7 @@ void Context::FramebufferTexture(Enum target, Enum attachment, std::uint32_t tex
   if (!it) return;
   const Enum kind = (*it)->target;
   if (kind == TEXTURE_BUFFER) return s.SetError(INVALID_OPERATION, __func__, "a buffer texture cannot be attached");
-  if (level < 0 || level >= LevelCount(kind) || (kind == TEXTURE_2D_MULTISAMPLE && level != 0)) return s.SetError(INVALID_VALUE, __func__, "level is negative or beyond the texture's largest mipmap level");
+  if (level < 0 || level >= LevelCount(kind) || (detail::IsMultisampleTarget(kind) && level != 0)) return s.SetError(INVALID_VALUE, __func__, "level is negative or beyond the texture's largest mipmap level");
   AttachTexture(slots, n, (*it), level, 0, 0, kind == TEXTURE_CUBE_MAP || (*it)->Layered());
 }
 
@@ -939,26 +940,46 @@ void Storage(ContextState& s, const char* what, Enum target, int samples, Enum i
 
 }  // namespace
 
-void Context::TexImage2DMultisample(Enum target, int samples, Enum internal_format, int width, int height,
-                                    bool fixed_sample_locations) {
-  auto& s = *state_;
-  (void)fixed_sample_locations;  // the standard positions, whatever is asked
-  if (target != TEXTURE_2D_MULTISAMPLE) return s.SetError(INVALID_ENUM, __func__, "target must be TEXTURE_2D_MULTISAMPLE");
+namespace {
+
+// TexImage2DMultisample (`layers` 0) and TexImage3DMultisample: the image of the multisample texture bound to
+// `target`, `layers` layers of width x height (a 2D one: none).
+void MultisampleImage(ContextState& s, const char* what, Enum target, Enum want, int samples, Enum internal_format,
+                      int width, int height, int layers) {
+  if (target != want)
+    return s.SetError(INVALID_ENUM, what, want == TEXTURE_2D_MULTISAMPLE ? "target must be TEXTURE_2D_MULTISAMPLE" : "target must be TEXTURE_2D_MULTISAMPLE_ARRAY");
   const Enum sized = SizedRenderbufferFormat(internal_format);
-  if (sized == 0) return s.SetError(INVALID_ENUM, __func__, "internal_format is not a colour, depth or stencil format drawing can render to");
+  if (sized == 0) return s.SetError(INVALID_ENUM, what, "internal_format is not a colour, depth or stencil format drawing can render to");
   if (samples < 1 || width < 0 || height < 0 || width > kMaxTextureSize || height > kMaxTextureSize)
-    return s.SetError(INVALID_VALUE, __func__, "samples below 1, or width or height negative or above MAX_TEXTURE_SIZE");
-  if (samples > detail::kMaxSamples) return s.SetError(INVALID_OPERATION, __func__, "samples is above MAX_COLOR_TEXTURE_SAMPLES");
+    return s.SetError(INVALID_VALUE, what, "samples below 1, or width or height negative or above MAX_TEXTURE_SIZE");
+  if (layers < 0 || layers > kMaxArrayTextureLayers) return s.SetError(INVALID_VALUE, what, "depth is negative or above MAX_ARRAY_TEXTURE_LAYERS");
+  if (samples > detail::kMaxSamples) return s.SetError(INVALID_OPERATION, what, "samples is above MAX_COLOR_TEXTURE_SAMPLES");
   detail::TextureObject* tex = s.Bound(target);
-  if (!tex) return s.SetError(INVALID_OPERATION, __func__, "no texture is bound to TEXTURE_2D_MULTISAMPLE of the active unit");
-  s.Sync(__func__);  // recorded draws may render into or sample the old image
+  if (!tex) return s.SetError(INVALID_OPERATION, what, "no texture is bound to that target of the active unit");
+  s.Sync(what);  // recorded draws may render into or sample the old image
+  const bool empty = want == TEXTURE_2D_MULTISAMPLE_ARRAY && layers == 0;  // (no layers: an empty image)
   detail::TextureLevel next;
   try {
-    next.Allocate(sized, width, height, detail::SupportedSamples(samples));
+    next.Allocate(sized, width, empty ? 0 : height, detail::SupportedSamples(samples), std::max(layers, 1));
   } catch (const std::bad_alloc&) {
-    return s.SetError(OUT_OF_MEMORY, __func__, "out of memory");
+    return s.SetError(OUT_OF_MEMORY, what, "out of memory");
   }
   tex->levels[0][0] = std::move(next);
+}
+
+}  // namespace
+
+void Context::TexImage2DMultisample(Enum target, int samples, Enum internal_format, int width, int height,
+                                    bool fixed_sample_locations) {
+  (void)fixed_sample_locations;  // the standard positions, whatever is asked
+  MultisampleImage(*state_, __func__, target, TEXTURE_2D_MULTISAMPLE, samples, internal_format, width, height, 0);
+}
+
+void Context::TexImage3DMultisample(Enum target, int samples, Enum internal_format, int width, int height, int depth,
+                                    bool fixed_sample_locations) {
+  (void)fixed_sample_locations;  // the standard positions, whatever is asked
+  MultisampleImage(*state_, __func__, target, TEXTURE_2D_MULTISAMPLE_ARRAY, samples, internal_format, width, height,
+                   depth);
 }
 
 void Context::RenderbufferStorage(Enum target, Enum internal_format, int width, int height) {

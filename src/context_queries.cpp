@@ -65,6 +65,7 @@ bool QueryState(ContextState& s, Enum pname, StateValue& out) {
     case TEXTURE_BINDING_1D: return integer(IdOf(s.textures, s.Bound(TEXTURE_1D)));
     case TEXTURE_BINDING_1D_ARRAY: return integer(IdOf(s.textures, s.Bound(TEXTURE_1D_ARRAY)));
     case TEXTURE_BINDING_BUFFER: return integer(IdOf(s.textures, s.Bound(TEXTURE_BUFFER)));
+    case TEXTURE_BINDING_2D_MULTISAMPLE_ARRAY: return integer(IdOf(s.textures, s.Bound(TEXTURE_2D_MULTISAMPLE_ARRAY)));
     case TEXTURE_BINDING_2D_MULTISAMPLE: return integer(IdOf(s.textures, s.Bound(TEXTURE_2D_MULTISAMPLE)));
     case SAMPLER_BINDING: return integer(IdOf(s.samplers, s.units[s.active_unit].sampler.get()));
     case DRAW_FRAMEBUFFER_BINDING: return integer(IdOf(s.framebuffers, s.draw_fbo));

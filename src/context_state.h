@@ -99,10 +99,11 @@ struct Attachment {
     (texture->target == TEXTURE_CUBE_MAP ? a.face : a.layer) = l;
     return a;
   }
-  /// Where the attached image starts in its level's planes, in texels (its layer's plane).
+  /// Where the attached image starts in its level's planes, in texels (its layer's plane; a multisample array's
+  /// layer is `samples` planes).
   std::size_t PlaneOffset() const {
     const detail::TextureLevel* l = Level();
-    return l ? std::size_t(layer) * std::size_t(l->width) * std::size_t(l->height) : 0;
+    return l ? std::size_t(layer) * std::size_t(l->samples) * std::size_t(l->width) * std::size_t(l->height) : 0;
   }
   const detail::TextureLevel* Level() const {
     return texture ? &texture->levels[face][level] : renderbuffer ? &renderbuffer->image : nullptr;

@@ -55,7 +55,7 @@ void Context::ActiveTexture(Enum unit) {
 void Context::BindTexture(Enum target, std::uint32_t texture) {
   auto& s = *state_;
   const int kind = detail::TextureKind(target);
-  if (kind < 0) return s.SetError(INVALID_ENUM, __func__, "target must be TEXTURE_1D, TEXTURE_2D, TEXTURE_CUBE_MAP, TEXTURE_1D_ARRAY, TEXTURE_2D_ARRAY, TEXTURE_3D, TEXTURE_2D_MULTISAMPLE or TEXTURE_BUFFER");
+  if (kind < 0) return s.SetError(INVALID_ENUM, __func__, "target must be TEXTURE_1D, TEXTURE_2D, TEXTURE_CUBE_MAP, TEXTURE_1D_ARRAY, TEXTURE_2D_ARRAY, TEXTURE_3D, TEXTURE_2D_MULTISAMPLE, TEXTURE_2D_MULTISAMPLE_ARRAY or TEXTURE_BUFFER");
   std::shared_ptr<detail::TextureObject> object;
   if (texture != 0) {
     auto it = s.textures.find(texture);
@@ -653,11 +653,11 @@ bool SamplerParameterValues(ContextState& s, const char* what, const detail::Sam
 // texture); false with the
 // error set.
 bool TexLevelValue(ContextState& s, const char* what, Enum target, int level, Enum pname, int& out) {
-  if (!IsTexImageTarget(target) && target != TEXTURE_2D_ARRAY && target != TEXTURE_3D && target != TEXTURE_2D_MULTISAMPLE &&
+  if (!IsTexImageTarget(target) && target != TEXTURE_2D_ARRAY && target != TEXTURE_3D && !detail::IsMultisampleTarget(target) &&
       target != TEXTURE_1D && target != TEXTURE_1D_ARRAY && target != TEXTURE_BUFFER)
-    return s.SetError(INVALID_ENUM, what, "target must be TEXTURE_1D, TEXTURE_2D, a TEXTURE_CUBE_MAP_* face, TEXTURE_1D_ARRAY, TEXTURE_2D_ARRAY, TEXTURE_3D, TEXTURE_2D_MULTISAMPLE or TEXTURE_BUFFER"), false;
-  if (level < 0 || level >= LevelCount(target) || (target == TEXTURE_BUFFER && level != 0))
-    return s.SetError(INVALID_VALUE, what, "level is negative or beyond the largest mipmap level (a buffer texture has level 0 alone)"), false;
+    return s.SetError(INVALID_ENUM, what, "target must be TEXTURE_1D, TEXTURE_2D, a TEXTURE_CUBE_MAP_* face, TEXTURE_1D_ARRAY, TEXTURE_2D_ARRAY, TEXTURE_3D, TEXTURE_2D_MULTISAMPLE, TEXTURE_2D_MULTISAMPLE_ARRAY or TEXTURE_BUFFER"), false;
+  if (level < 0 || level >= LevelCount(target) || ((target == TEXTURE_BUFFER || target == TEXTURE_2D_MULTISAMPLE_ARRAY) && level != 0))
+    return s.SetError(INVALID_VALUE, what, "level is negative or beyond the largest mipmap level (a buffer texture and a multisample array have level 0 alone)"), false;
   int face = 0;
   const detail::TextureObject* tex = s.Bound(target, &face);
   if (!tex) return s.SetError(INVALID_OPERATION, what, "no texture is bound to that target of the active unit"), false;
@@ -689,7 +689,7 @@ bool TexLevelValue(ContextState& s, const char* what, Enum target, int level, En
     // (A 1D array's layers are its height, as OpenGL counts them.)
     case TEXTURE_HEIGHT: out = lv.Defined() ? (tex->target == TEXTURE_1D_ARRAY ? lv.depth : lv.height) : 0; return true;
     case TEXTURE_DEPTH: out = lv.Defined() ? (tex->target == TEXTURE_1D_ARRAY ? 1 : lv.depth) : 0; return true;
-    case TEXTURE_SAMPLES: out = lv.Defined() && tex->target == TEXTURE_2D_MULTISAMPLE ? lv.samples : 0; return true;
+    case TEXTURE_SAMPLES: out = lv.Defined() && detail::IsMultisampleTarget(tex->target) ? lv.samples : 0; return true;
     case TEXTURE_FIXED_SAMPLE_LOCATIONS: out = 1; return true;  // the standard positions, always
     // (A compressed level keeps its format even when it is empty, as OpenGL keeps it.)
     case TEXTURE_INTERNAL_FORMAT: out = int(lv.compressed != 0 ? lv.compressed : lv.Defined() ? lv.format : RGBA); return true;

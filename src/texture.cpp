@@ -732,7 +732,7 @@ TextureView MakeView(const TextureObject& texture, const SamplerParams* sampler)
   const SamplerParams& p = view.params;
   view.base = p.base_level;
   if (p.base_level < 0 || p.base_level >= kMaxLevels || p.base_level > p.max_level) return view;
-  if (texture.target == TEXTURE_2D_MULTISAMPLE) {  // one image, fetched by sample: no levels, no filtering
+  if (IsMultisampleTarget(texture.target)) {  // one image (of layers), fetched by sample: no levels, no filtering
     const TextureLevel& image = texture.levels[0][0];
     view.base = view.q = 0;
     view.complete = image.Defined();

@@ -241,9 +241,10 @@ struct SamplerParams {
 
 struct TextureObject {
   Enum target = 0;  // TEXTURE_2D, TEXTURE_CUBE_MAP, TEXTURE_2D_ARRAY, TEXTURE_3D, TEXTURE_2D_MULTISAMPLE (its
-                    // one image is level 0, with `samples` planes), TEXTURE_1D or TEXTURE_1D_ARRAY (levels one
-                    // texel high), TEXTURE_BUFFER (no levels: the texels are a buffer's store), fixed by the first
-                    // bind
+                    // one image is level 0, with `samples` planes), TEXTURE_2D_MULTISAMPLE_ARRAY (level 0 too,
+                    // `depth` layers of `samples` planes each: plane layer * samples + sample), TEXTURE_1D or
+                    // TEXTURE_1D_ARRAY (levels one texel high), TEXTURE_BUFFER (no levels: the texels are a
+                    // buffer's store), fixed by the first bind
   TextureLevel levels[6][kMaxLevels];  // [face][level]; all but a cube map use face 0
   SamplerParams params;
   // A TEXTURE_BUFFER texture (OpenGL 4.6, section 8.9): TexBuffer's format (R8 until one is given), the buffer it
@@ -255,16 +256,20 @@ struct TextureObject {
   int Faces() const { return target == TEXTURE_CUBE_MAP ? 6 : 1; }
   /// Levels with planes: the layers of a 2D array (as many at every level) or the slices of a 3D texture (halved
   /// with each level, as width and height are).
-  bool Layered() const { return target == TEXTURE_2D_ARRAY || target == TEXTURE_3D || target == TEXTURE_1D_ARRAY; }
+  bool Layered() const {
+    return target == TEXTURE_2D_ARRAY || target == TEXTURE_3D || target == TEXTURE_1D_ARRAY ||
+           target == TEXTURE_2D_MULTISAMPLE_ARRAY;
+  }
 };
 
 /// The texture targets a unit binds, in this order: TEXTURE_2D, TEXTURE_CUBE_MAP, TEXTURE_2D_ARRAY, TEXTURE_3D,
-/// TEXTURE_2D_MULTISAMPLE, TEXTURE_1D, TEXTURE_1D_ARRAY, TEXTURE_BUFFER. A 1D texture's levels are one texel high;
-/// a 1D array's layers are the planes of its levels, as a 2D array's.
-inline constexpr int kTextureKinds = 8;
+/// TEXTURE_2D_MULTISAMPLE, TEXTURE_1D, TEXTURE_1D_ARRAY, TEXTURE_BUFFER, TEXTURE_2D_MULTISAMPLE_ARRAY. A 1D
+/// texture's levels are one texel high; a 1D array's layers are the planes of its levels, as a 2D array's.
+inline constexpr int kTextureKinds = 9;
 inline constexpr Enum kTextureKindTarget[kTextureKinds] = {TEXTURE_2D, TEXTURE_CUBE_MAP, TEXTURE_2D_ARRAY,
                                                            TEXTURE_3D, TEXTURE_2D_MULTISAMPLE, TEXTURE_1D,
-                                                           TEXTURE_1D_ARRAY, TEXTURE_BUFFER};
+                                                           TEXTURE_1D_ARRAY, TEXTURE_BUFFER,
+                                                           TEXTURE_2D_MULTISAMPLE_ARRAY};
 /// The index of a texture target in kTextureKindTarget, -1 for another enum.
 inline int TextureKind(Enum target) {
   for (int k = 0; k < kTextureKinds; ++k)
@@ -276,10 +281,15 @@ using UnitViews = const TextureView* (Textures::*)[kMaxTextureUnits];
 inline constexpr UnitViews kKindUnits[kTextureKinds] = {&Textures::unit_2d, &Textures::unit_cube,
                                                         &Textures::unit_2d_array, &Textures::unit_3d,
                                                         &Textures::unit_2d_ms, &Textures::unit_1d,
-                                                        &Textures::unit_1d_array, &Textures::unit_buffer};
-/// The targets with levels and sampling state: every kind but TEXTURE_2D_MULTISAMPLE and TEXTURE_BUFFER.
+                                                        &Textures::unit_1d_array, &Textures::unit_buffer,
+                                                        &Textures::unit_2d_ms_array};
+/// The multisample targets: one image of samples a texel (level 0), no levels, no sampling state.
+inline bool IsMultisampleTarget(Enum target) {
+  return target == TEXTURE_2D_MULTISAMPLE || target == TEXTURE_2D_MULTISAMPLE_ARRAY;
+}
+/// The targets with levels and sampling state: every kind but the multisample ones and TEXTURE_BUFFER.
 inline bool HasLevelsAndSampling(Enum target) {
-  return TextureKind(target) >= 0 && target != TEXTURE_2D_MULTISAMPLE && target != TEXTURE_BUFFER;
+  return TextureKind(target) >= 0 && !IsMultisampleTarget(target) && target != TEXTURE_BUFFER;
 }
 /// The formats TexBuffer takes (OpenGL 3.3's table 3.15 without the integer ones): R8, R16, R16F, R32F, RG8,
 /// RG16, RG16F, RG32F, RGBA8, RGBA16, RGBA16F, RGBA32F.

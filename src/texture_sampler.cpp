@@ -1754,6 +1754,35 @@ void Textures::FetchSampleLanes(int unit, const int x[16], const int y[16], cons
   FetchBlock(Usable(unit_2d_ms, unit), true, x, y, sample, out);
 }
 
+glm::vec4 Textures::FetchSampleArray(int unit, glm::ivec3 texel_layer, int sample) const {
+  const TextureView* v = Usable(unit_2d_ms_array, unit);
+  if (!v) return glm::vec4(0.0f);
+  const TextureLevel& lv = v->texture->levels[0][0];
+  const int layer = texel_layer.z;
+  if (layer < 0 || layer >= lv.depth || sample < 0 || sample >= lv.samples) return glm::vec4(0.0f);
+  return TexelOf(*v, lv, glm::ivec2(texel_layer), layer * lv.samples + sample, lv.samples * lv.depth);
+}
+
+glm::ivec3 Textures::SizeMultisampleArray(int unit) const {
+  const TextureView* v = Usable(unit_2d_ms_array, unit);
+  if (!v) return glm::ivec3(0);
+  const TextureLevel& lv = v->texture->levels[0][0];
+  return glm::ivec3(lv.width, lv.height, lv.depth);
+}
+
+int Textures::SamplesArray(int unit) const {
+  const TextureView* v = Usable(unit_2d_ms_array, unit);
+  return v ? v->texture->levels[0][0].samples : 0;
+}
+
+void Textures::FetchSampleArrayLanes(int unit, const int x[16], const int y[16], const int layer[16],
+                                     const int sample[16], float out[4][16]) const {
+  for (int l = 0; l < 16; ++l) {  // (one texel a lane, unfiltered, as the one-lane form reads it)
+    const glm::vec4 t = FetchSampleArray(unit, glm::ivec3(x[l], y[l], layer[l]), sample[l]);
+    for (int c = 0; c < 4; ++c) out[c][l] = t[c];
+  }
+}
+
 namespace {
 // Texel `index` of a buffer texture's store, divided by the scale: a texel of zero bytes outside the store.
 glm::vec4 BufferTexel(const TextureView& v, int index) {

@@ -589,6 +589,19 @@ TEST_CASE("multisample: Centroid<> varyings are taken at the first covered sampl
 }
 
 namespace {
+// Into the bound 8 x 8 framebuffer (4 samples): blue, then red left of x = 3.5: in pixel column 3 the samples left
+// of its centre, 0 (at x 0.375) and 2 (0.125), are covered; 1 (0.875) and 3 (0.625) are not.
+void BlueThenRedLeftOfColumn3(Context& gl) {
+  gl.ClearColor(0, 0, 1, 1);
+  gl.Clear(COLOR_BUFFER_BIT);
+  SolidShader red;
+  red.color = glm::vec4(1, 0, 0, 1);
+  gl.UseProgram(red);
+  const float x = 3.5f / 4.0f - 1.0f;
+  MakeVertexArray(gl, {{-1, -1, 0, 1}, {x, -1, 0, 1}, {-1, 1, 0, 1}, {x, 1, 0, 1}});
+  gl.DrawArrays(TRIANGLE_STRIP, 0, 4);
+}
+
 // A full-screen pass writing texelFetch(sampler2DMS on unit 0, gl_FragCoord.xy, sample), written wide.
 struct NoVary {};
 struct FetchSampleShader : Shader<FetchSampleShader, NoVary> {
@@ -614,16 +627,7 @@ TEST_CASE("TEXTURE_2D_MULTISAMPLE: drawn into, fetched sample by sample, resolve
   gl.BindFramebuffer(FRAMEBUFFER, fbo);
   gl.FramebufferTexture2D(FRAMEBUFFER, COLOR_ATTACHMENT0, TEXTURE_2D_MULTISAMPLE, tex, 0);
   REQUIRE(gl.CheckFramebufferStatus(FRAMEBUFFER) == FRAMEBUFFER_COMPLETE);
-  gl.ClearColor(0, 0, 1, 1);
-  gl.Clear(COLOR_BUFFER_BIT);
-  // Red left of x = 3.5: in pixel column 3 the samples left of its centre, 0 (at x 0.375) and 2 (0.125), are
-  // covered; 1 (0.875) and 3 (0.625) are not.
-  SolidShader red;
-  red.color = glm::vec4(1, 0, 0, 1);
-  gl.UseProgram(red);
-  const float x = 3.5f / 4.0f - 1.0f;
-  MakeVertexArray(gl, {{-1, -1, 0, 1}, {x, -1, 0, 1}, {-1, 1, 0, 1}, {x, 1, 0, 1}});
-  gl.DrawArrays(TRIANGLE_STRIP, 0, 4);
+  BlueThenRedLeftOfColumn3(gl);
 
   // Each sample through a wide fragment shader into the context's framebuffer.
   gl.BindFramebuffer(FRAMEBUFFER, 0);
@@ -723,6 +727,163 @@ TEST_CASE("TEXTURE_2D_MULTISAMPLE and texelFetch reject bad input with OpenGL's 
   CHECK(probe.got[0].r == Approx(40.0f / 255.0f));
   CHECK(probe.got[1] == glm::vec4(0.0f));
   CHECK(probe.got[2] == glm::vec4(0.0f));
+  CHECK(gl.GetError() == NO_ERROR);
+}
+
+namespace {
+// A full-screen pass writing texelFetch(sampler2DMSArray on unit 0, ivec3(gl_FragCoord.xy, layer), sample).
+struct FetchArrayShader : Shader<FetchArrayShader, NoVary> {
+  int layer = 0, sample = 0;
+  void Vertex(const VertexLanes& in, VertexLanesOut<NoVary>& out) const { out.position = in.attrib[0]; }
+  void Fragment(const FragmentLanes<NoVary>& in, FragmentLanesOut& out) const {
+    out.color[0] = in.TexelFetchMSArray(0, Int(in.frag_coord.x), Int(in.frag_coord.y), Int(layer), Int(sample));
+  }
+};
+// Position from attribute 0, gl_Layer from attribute 1's x, colour (1, 1 - layer / 4, 0, 1).
+struct LayerVary {
+  vec4 color;
+};
+struct ToLayerShader : Shader<ToLayerShader, LayerVary> {
+  static constexpr bool kWritesLayer = true;
+  void Vertex(const VertexLanes& in, VertexLanesOut<LayerVary>& out) const {
+    out.position = in.attrib[0];
+    out.layer = Int(in.attrib[1].x);
+    out.varyings.color = vec4(1.0f, 1.0f - in.attrib[1].x * 0.25f, 0.0f, 1.0f);
+  }
+  void Fragment(const FragmentLanes<LayerVary>& in, FragmentLanesOut& out) const { out.color[0] = in.varyings.color; }
+};
+}  // namespace
+
+TEST_CASE("TEXTURE_2D_MULTISAMPLE_ARRAY: layers drawn into one by one and layered, fetched by sample, resolved",
+          "[multisample]") {
+  Context gl(8, 8, Samples(1));
+  const std::uint32_t tex = gl.GenTexture(), fbo = gl.GenFramebuffer();
+  gl.BindTexture(TEXTURE_2D_MULTISAMPLE_ARRAY, tex);
+  gl.TexImage3DMultisample(TEXTURE_2D_MULTISAMPLE_ARRAY, 3, RGBA8, 8, 8, 3, true);  // 3 samples round up to 4
+  REQUIRE(gl.GetError() == NO_ERROR);
+  int v = 0;
+  const std::pair<Enum, int> levels[] = {{TEXTURE_WIDTH, 8}, {TEXTURE_HEIGHT, 8}, {TEXTURE_DEPTH, 3},
+                                         {TEXTURE_SAMPLES, 4}, {TEXTURE_INTERNAL_FORMAT, int(RGBA8)}};
+  for (const auto& [pname, want] : levels) {
+    gl.GetTexLevelParameteriv(TEXTURE_2D_MULTISAMPLE_ARRAY, 0, pname, &v);
+    CHECK(v == want);
+  }
+  gl.GetIntegerv(TEXTURE_BINDING_2D_MULTISAMPLE_ARRAY, &v);
+  CHECK(v == int(tex));
+  // Layer 1: blue, then red left of x = 3.5 (in column 3, samples 0 and 2); layer 2: green.
+  gl.BindFramebuffer(FRAMEBUFFER, fbo);
+  gl.FramebufferTextureLayer(FRAMEBUFFER, COLOR_ATTACHMENT0, tex, 0, 1);
+  REQUIRE(gl.CheckFramebufferStatus(FRAMEBUFFER) == FRAMEBUFFER_COMPLETE);
+  gl.GetIntegerv(SAMPLES, &v);
+  CHECK(v == 4);
+  BlueThenRedLeftOfColumn3(gl);
+  gl.FramebufferTextureLayer(FRAMEBUFFER, COLOR_ATTACHMENT0, tex, 0, 2);
+  gl.ClearColor(0, 1, 0, 1);
+  gl.Clear(COLOR_BUFFER_BIT);
+
+  // Each layer's samples through a wide fragment shader into the context's framebuffer.
+  gl.BindFramebuffer(FRAMEBUFFER, 0);
+  FetchArrayShader fetch;
+  gl.UseProgram(fetch);
+  MakeVertexArray(gl, {{-1, -1, 0, 1}, {1, -1, 0, 1}, {-1, 1, 0, 1}, {1, 1, 0, 1}});
+  const auto pixel = [&](int layer, int sample, int px) {
+    fetch.layer = layer;
+    fetch.sample = sample;
+    gl.DrawArrays(TRIANGLE_STRIP, 0, 4);
+    std::uint8_t p[4];
+    gl.ReadPixel(px, 4, p);
+    return std::uint32_t(p[0]) << 24 | std::uint32_t(p[1]) << 16 | std::uint32_t(p[2]) << 8 | p[3];
+  };
+  for (int s = 0; s < 4; ++s) {
+    CAPTURE(s);
+    CHECK(pixel(0, s, 3) == 0u);  // never drawn: zero
+    CHECK(pixel(1, s, 3) == (s % 2 == 0 ? 0xFF0000FFu : 0x0000FFFFu));
+    CHECK(pixel(1, s, 2) == 0xFF0000FFu);
+    CHECK(pixel(2, s, 3) == 0x00FF00FFu);
+  }
+  CHECK(pixel(3, 0, 3) == 0u);   // a layer it does not have
+  CHECK(pixel(-1, 0, 3) == 0u);
+  CHECK(pixel(1, 4, 3) == 0u);   // a sample it does not have
+
+  // Layer 1 resolved by a blit: column 3 half red, half blue.
+  gl.BindFramebuffer(READ_FRAMEBUFFER, fbo);
+  gl.FramebufferTextureLayer(READ_FRAMEBUFFER, COLOR_ATTACHMENT0, tex, 0, 1);
+  gl.BindFramebuffer(DRAW_FRAMEBUFFER, 0);
+  gl.BlitFramebuffer(0, 0, 8, 8, 0, 0, 8, 8, COLOR_BUFFER_BIT, NEAREST);
+  gl.BindFramebuffer(FRAMEBUFFER, 0);
+  std::uint8_t px[4];
+  gl.ReadPixel(3, 4, px);
+  CHECK((px[0] == 128 && px[2] == 128));
+
+  // Every layer attached (a layered framebuffer): gl_Layer picks the layer; a clear clears them all.
+  gl.BindFramebuffer(FRAMEBUFFER, fbo);
+  gl.FramebufferTexture(FRAMEBUFFER, COLOR_ATTACHMENT0, tex, 0);
+  REQUIRE(gl.CheckFramebufferStatus(FRAMEBUFFER) == FRAMEBUFFER_COMPLETE);
+  gl.ClearColor(0, 0, 0, 1);
+  gl.Clear(COLOR_BUFFER_BIT);
+  ToLayerShader to_layer;
+  gl.UseProgram(to_layer);
+  MakeVertexArray(gl, {{-1, -1, 0, 1}, {3, -1, 0, 1}, {-1, 3, 0, 1}, {-1, -1, 0, 1}, {3, -1, 0, 1}, {-1, 3, 0, 1}},
+                  {glm::vec4(2), glm::vec4(2), glm::vec4(2), glm::vec4(0), glm::vec4(0), glm::vec4(0)});
+  gl.DrawArrays(TRIANGLES, 0, 6);  // a triangle into layer 2, one into layer 0; layer 1 stays cleared
+  gl.BindFramebuffer(FRAMEBUFFER, 0);
+  gl.UseProgram(fetch);
+  MakeVertexArray(gl, {{-1, -1, 0, 1}, {1, -1, 0, 1}, {-1, 1, 0, 1}, {1, 1, 0, 1}});
+  for (int s = 0; s < 4; ++s) {
+    CAPTURE(s);
+    CHECK(pixel(0, s, 3) == 0xFFFF00FFu);
+    CHECK(pixel(1, s, 3) == 0x000000FFu);
+    CHECK(pixel(2, s, 3) == 0xFF8000FFu);
+  }
+  CHECK(gl.GetError() == NO_ERROR);
+}
+
+TEST_CASE("TEXTURE_2D_MULTISAMPLE_ARRAY rejects bad input with OpenGL's errors", "[multisample][errors]") {
+  Context gl(8, 8);
+  const std::uint32_t tex = gl.GenTexture(), fbo = gl.GenFramebuffer();
+  gl.TexImage3DMultisample(TEXTURE_2D_MULTISAMPLE_ARRAY, 4, RGBA8, 8, 8, 2, true);
+  CHECK(gl.GetError() == INVALID_OPERATION);  // nothing bound
+  gl.BindTexture(TEXTURE_2D_MULTISAMPLE_ARRAY, tex);
+  const struct Bad { Enum target; int samples; Enum format; int w, h, d; Enum error; } bad[] = {
+      {TEXTURE_2D_MULTISAMPLE, 4, RGBA8, 8, 8, 2, INVALID_ENUM},
+      {TEXTURE_2D_ARRAY, 4, RGBA8, 8, 8, 2, INVALID_ENUM},
+      {TEXTURE_2D_MULTISAMPLE_ARRAY, 4, COMPRESSED_RGBA_S3TC_DXT1_EXT, 8, 8, 2, INVALID_ENUM},
+      {TEXTURE_2D_MULTISAMPLE_ARRAY, 0, RGBA8, 8, 8, 2, INVALID_VALUE},
+      {TEXTURE_2D_MULTISAMPLE_ARRAY, 4, RGBA8, 8, 8, -1, INVALID_VALUE},
+      {TEXTURE_2D_MULTISAMPLE_ARRAY, 4, RGBA8, 8, 8, kMaxArrayTextureLayers + 1, INVALID_VALUE},
+      {TEXTURE_2D_MULTISAMPLE_ARRAY, 4, RGBA8, kMaxTextureSize + 1, 8, 2, INVALID_VALUE},
+      {TEXTURE_2D_MULTISAMPLE_ARRAY, 64, RGBA8, 8, 8, 2, INVALID_OPERATION},
+      {TEXTURE_2D_MULTISAMPLE_ARRAY, 2, DEPTH24_STENCIL8, 8, 8, 0, NO_ERROR},  // no layers: an empty image
+      {TEXTURE_2D_MULTISAMPLE_ARRAY, 2, DEPTH24_STENCIL8, 8, 8, 2, NO_ERROR},
+  };
+  for (const Bad& b : bad) {
+    CAPTURE(b.target, b.samples, b.format, b.d);
+    gl.TexImage3DMultisample(b.target, b.samples, b.format, b.w, b.h, b.d, false);
+    CHECK(gl.GetError() == b.error);
+  }
+  int v = -7;
+  gl.GetTexLevelParameteriv(TEXTURE_2D_MULTISAMPLE_ARRAY, 1, TEXTURE_WIDTH, &v);
+  CHECK(gl.GetError() == INVALID_VALUE);
+  CHECK(v == -7);
+  gl.TexParameteri(TEXTURE_2D_MULTISAMPLE_ARRAY, TEXTURE_MIN_FILTER, NEAREST);
+  CHECK(gl.GetError() == INVALID_ENUM);
+  gl.GenerateMipmap(TEXTURE_2D_MULTISAMPLE_ARRAY);
+  CHECK(gl.GetError() == INVALID_ENUM);
+  gl.TexImage3D(TEXTURE_2D_MULTISAMPLE_ARRAY, 0, RGBA8, 8, 8, 2, 0, RGBA, UNSIGNED_BYTE, nullptr);
+  CHECK(gl.GetError() == INVALID_ENUM);
+  gl.BindFramebuffer(FRAMEBUFFER, fbo);
+  const Enum none = NONE;  // (depth and stencil alone)
+  gl.DrawBuffers(1, &none);
+  gl.ReadBuffer(NONE);
+  gl.FramebufferTextureLayer(FRAMEBUFFER, DEPTH_STENCIL_ATTACHMENT, tex, 1, 0);
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.FramebufferTexture(FRAMEBUFFER, DEPTH_STENCIL_ATTACHMENT, tex, 1);
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.FramebufferTextureLayer(FRAMEBUFFER, DEPTH_STENCIL_ATTACHMENT, tex, 0, 1);
+  CHECK(gl.GetError() == NO_ERROR);
+  CHECK(gl.CheckFramebufferStatus(FRAMEBUFFER) == FRAMEBUFFER_COMPLETE);
+  gl.FramebufferTextureLayer(FRAMEBUFFER, DEPTH_STENCIL_ATTACHMENT, tex, 0, 2);  // past its layers
+  CHECK(gl.CheckFramebufferStatus(FRAMEBUFFER) == FRAMEBUFFER_INCOMPLETE_ATTACHMENT);
   CHECK(gl.GetError() == NO_ERROR);
 }
 

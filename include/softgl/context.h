@@ -311,7 +311,7 @@ class Context {
   /// i < kMaxTextureUnits (else INVALID_ENUM).
   void ActiveTexture(Enum unit);
   /// Binds texture (0 unbinds) to TEXTURE_1D, TEXTURE_2D, TEXTURE_CUBE_MAP, TEXTURE_1D_ARRAY, TEXTURE_2D_ARRAY,
-  /// TEXTURE_3D, TEXTURE_2D_MULTISAMPLE or TEXTURE_BUFFER of the active unit
+  /// TEXTURE_3D, TEXTURE_2D_MULTISAMPLE, TEXTURE_2D_MULTISAMPLE_ARRAY or TEXTURE_BUFFER of the active unit
   /// (each unit holds one texture of each target). Bad target: INVALID_ENUM;
   /// unknown id, or a texture first bound to the other target: INVALID_OPERATION. There is no default texture
   /// object: texture calls with nothing bound record INVALID_OPERATION.
@@ -664,6 +664,14 @@ class Context {
   /// above MAX_TEXTURE_SIZE: INVALID_VALUE; samples above MAX_COLOR_TEXTURE_SAMPLES (8), nothing bound:
   /// INVALID_OPERATION; no memory: OUT_OF_MEMORY.
   void TexImage2DMultisample(Enum target, int samples, Enum internal_format, int width, int height,
+                             bool fixed_sample_locations);
+  /// Defines the image of the TEXTURE_2D_MULTISAMPLE_ARRAY texture bound to the active unit: `depth` layers of
+  /// width x height, each as TexImage2DMultisample defines its one image. A layer is drawn into through
+  /// FramebufferTextureLayer(..., texture, 0, layer), every layer through FramebufferTexture (a layered framebuffer:
+  /// gl_Layer picks the layer), and read sample by sample in a shader (FragmentLanes::TexelFetchMSArray,
+  /// Textures::FetchSampleArray). Errors as TexImage2DMultisample's, and target not TEXTURE_2D_MULTISAMPLE_ARRAY:
+  /// INVALID_ENUM; depth negative or above MAX_ARRAY_TEXTURE_LAYERS: INVALID_VALUE.
+  void TexImage3DMultisample(Enum target, int samples, Enum internal_format, int width, int height, int depth,
                              bool fixed_sample_locations);
   /// Makes the store of `buffer` (0: none) the texels of the TEXTURE_BUFFER texture bound to the active unit, read
   /// in place as `internal_format`: one row of size / bytes-per-texel texels (at most MAX_TEXTURE_BUFFER_SIZE,

@@ -196,6 +196,7 @@ inline constexpr Enum TEXTURE_1D = 0x0DE0;
 inline constexpr Enum TEXTURE_1D_ARRAY = 0x8C18;
 inline constexpr Enum TEXTURE_3D = 0x806F;
 inline constexpr Enum TEXTURE_2D_MULTISAMPLE = 0x9100;
+inline constexpr Enum TEXTURE_2D_MULTISAMPLE_ARRAY = 0x9102;
 // A buffer texture's target (BindTexture, TexBuffer), and the buffer target of BindBuffer: GetIntegerv of it
 // names the buffer bound there.
 inline constexpr Enum TEXTURE_BUFFER = 0x8C2A;
@@ -442,6 +443,7 @@ inline constexpr Enum VERTEX_ATTRIB_ARRAY_INTEGER = 0x88FD;
 inline constexpr Enum VERTEX_ATTRIB_ARRAY_DIVISOR = 0x88FE;
 inline constexpr Enum SAMPLER_BINDING = 0x8919;  // GetIntegerv: the sampler object bound to the active unit
 inline constexpr Enum TEXTURE_BINDING_2D_MULTISAMPLE = 0x9104;
+inline constexpr Enum TEXTURE_BINDING_2D_MULTISAMPLE_ARRAY = 0x9105;
 inline constexpr Enum DRAW_FRAMEBUFFER_BINDING = 0x8CA6;  // also FRAMEBUFFER_BINDING
 inline constexpr Enum READ_FRAMEBUFFER_BINDING = 0x8CAA;
 inline constexpr Enum DRAW_BUFFER0 = 0x8825;  // DRAW_BUFFER0 + i

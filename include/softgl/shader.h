@@ -212,6 +212,18 @@ inline vec4 Fetch(const Textures* textures, int unit, const Int& x, const Int& y
   (textures->*fn)(unit, xs, ys, ws, out);
   return Rgba(out);
 }
+// texelFetch(sampler2DMSArray, ivec3(x, y, layer), sample) through Textures::FetchSampleArrayLanes.
+inline vec4 FetchSampleArray(const Textures* textures, int unit, const Int& x, const Int& y, const Int& layer,
+                             const Int& sample) {
+  alignas(64) std::int32_t xs[kLanes], ys[kLanes], ls[kLanes], ss[kLanes];
+  x.Store(xs);
+  y.Store(ys);
+  layer.Store(ls);
+  sample.Store(ss);
+  float out[4][kLanes];
+  textures->FetchSampleArrayLanes(unit, xs, ys, ls, ss, out);
+  return Rgba(out);
+}
 // texelFetch(samplerBuffer, index) through Textures::FetchBufferLanes.
 inline vec4 FetchBuffer(const Textures* textures, int unit, const Int& index) {
   alignas(64) std::int32_t is[kLanes];
@@ -546,6 +558,14 @@ struct FragmentLanes {
   /// textureSize(sampler2DMS) and textureSamples(sampler2DMS).
   glm::ivec2 TextureSizeMS(int unit) const { return textures->SizeMultisample(unit); }
   int TextureSamples(int unit) const { return textures->Samples(unit); }
+  /// texelFetch(sampler2DMSArray, ivec3(x, y, layer), sample): one sample of a layer of a
+  /// TEXTURE_2D_MULTISAMPLE_ARRAY texture.
+  vec4 TexelFetchMSArray(int unit, const Int& x, const Int& y, const Int& layer, const Int& sample) const {
+    return shader_detail::FetchSampleArray(textures, unit, x, y, layer, sample);
+  }
+  /// textureSize(sampler2DMSArray) (width, height, layers) and textureSamples(sampler2DMSArray).
+  glm::ivec3 TextureSizeMSArray(int unit) const { return textures->SizeMultisampleArray(unit); }
+  int TextureSamplesArray(int unit) const { return textures->SamplesArray(unit); }
   /// texelFetch(samplerBuffer, index): texel `index` of unit's buffer texture (Textures::FetchBuffer).
   vec4 TexelFetchBuffer(int unit, const Int& index) const { return shader_detail::FetchBuffer(textures, unit, index); }
   /// textureSize(samplerBuffer): the texels the buffer texture holds.

@@ -1,8 +1,8 @@
 // softgl/texture.h — textures as the shader stages see them: sampling by texture unit.
 //
 // A draw hands its shader a `Textures`: for each of the kMaxTextureUnits units, the TEXTURE_2D, TEXTURE_CUBE_MAP,
-// TEXTURE_2D_ARRAY, TEXTURE_3D, TEXTURE_2D_MULTISAMPLE, TEXTURE_1D, TEXTURE_1D_ARRAY and TEXTURE_BUFFER textures
-// bound to it and their sampling state.
+// TEXTURE_2D_ARRAY, TEXTURE_3D, TEXTURE_2D_MULTISAMPLE, TEXTURE_2D_MULTISAMPLE_ARRAY, TEXTURE_1D, TEXTURE_1D_ARRAY
+// and TEXTURE_BUFFER textures bound to it and their sampling state.
 // Filtering, wrapping and the level of detail follow the OpenGL 4.6 specification (section 8.14): texel centres at
 // +0.5, wrap applied per texel, lambda from the screen-space derivatives of the texture coordinates. Sampling a
 // unit with no texture, or an incomplete one, returns (0, 0, 0, 1), as OpenGL does.
@@ -98,6 +98,12 @@ class Textures {
   /// textureSize(sampler2DMS) and textureSamples(sampler2DMS): (0, 0) and 0 when there is none.
   glm::ivec2 SizeMultisample(int unit) const;
   int Samples(int unit) const;
+  /// texelFetch(sampler2DMSArray, ivec3(texel, layer), sample): one sample of a layer of unit's
+  /// TEXTURE_2D_MULTISAMPLE_ARRAY texture; (0, 0, 0, 0) outside the image, for a layer or a sample it does not have.
+  glm::vec4 FetchSampleArray(int unit, glm::ivec3 texel_layer, int sample) const;
+  /// textureSize(sampler2DMSArray) (width, height, layers) and its samples: zero when there is none.
+  glm::ivec3 SizeMultisampleArray(int unit) const;
+  int SamplesArray(int unit) const;
   /// texelFetch(samplerBuffer, index): texel `index` of unit's buffer texture, read from its buffer's store as it
   /// is when the draw's stage runs, in the texture's format (Context::TexBuffer), unfiltered: channels the format
   /// lacks read (0, 0, 1). An index outside the store reads a texel of zero bytes ((0, 0, 0, 1) for a format
@@ -135,6 +141,9 @@ class Textures {
   /// Fetch and FetchSample, lane by lane: texel (x[l], y[l]) at level[l] (or sample[l]).
   void FetchLanes(int unit, const int x[16], const int y[16], const int level[16], float out[4][16]) const;
   void FetchSampleLanes(int unit, const int x[16], const int y[16], const int sample[16], float out[4][16]) const;
+  /// FetchSampleArray for 16 lanes: texel (x[l], y[l]) of layer layer[l], sample sample[l].
+  void FetchSampleArrayLanes(int unit, const int x[16], const int y[16], const int layer[16], const int sample[16],
+                             float out[4][16]) const;
   /// FetchBuffer for 16 lanes: texel index[l] in lane l.
   void FetchBufferLanes(int unit, const int index[16], float out[4][16]) const;
 
@@ -146,6 +155,7 @@ class Textures {
   const detail::TextureView* unit_1d[kMaxTextureUnits] = {};
   const detail::TextureView* unit_1d_array[kMaxTextureUnits] = {};
   const detail::TextureView* unit_buffer[kMaxTextureUnits] = {};
+  const detail::TextureView* unit_2d_ms_array[kMaxTextureUnits] = {};
   /// Units from this one on have no texture bound (their entries above are null): what a draw copies and compares
   /// stops here.
   int units = kMaxTextureUnits;

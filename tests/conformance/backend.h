@@ -56,6 +56,8 @@ enum class Program {
   kTexture1DArray,  // colour = texture(1D array on unit 7, extra.xy): layer extra.y
   kTextureBuffer,   // colour = texelFetch(buffer texture on unit 0, int(extra.x) + y / 4 % 16 * 16 + x / 4 % 16) at
                     // window pixel (x, y); where extra.y > 0.5, (textureSize / 1024, 0, 0, 1) instead
+  kFetchSampleArray,  // colour = texelFetch(2D multisample array on unit 6, ivec3(ivec2(gl_FragCoord.xy) -
+                      // ivec2(extra.xy), int(extra.w)), int(extra.z))
 };
 
 /// A TEXTURE_2D_ARRAY or TEXTURE_3D defined by TexImage3D: RGBA8 from `rgba` (unit 3 for an array, 4 for 3D), or
@@ -229,6 +231,12 @@ class Backend {
   /// at `layer`. Returns its id.
   virtual std::uint32_t AttachLayered(Enum target, Enum attachment, Enum texture_target, Enum internal_format,
                                       int size, int layers, int layer) = 0;
+  /// A new TEXTURE_2D_MULTISAMPLE_ARRAY texture on unit 6 (TexImage3DMultisample, fixed sample locations), not
+  /// attached; returns its id. TexImage3DMultisample itself on the active unit, and glFramebufferTextureLayer.
+  virtual std::uint32_t NewMultisampleArray(int samples, Enum internal_format, int width, int height, int layers) = 0;
+  virtual void TexImage3DMultisample(Enum target, int samples, Enum internal_format, int width, int height,
+                                     int layers) = 0;
+  virtual void FramebufferTextureLayer(Enum target, Enum attachment, std::uint32_t texture, int level, int layer) = 0;
   /// glFramebufferTexture, glFramebufferTexture3D and glGetFramebufferAttachmentParameteriv (one value).
   virtual void FramebufferTexture(Enum target, Enum attachment, std::uint32_t texture, int level) = 0;
   virtual void FramebufferTexture3D(Enum target, Enum attachment, Enum textarget, std::uint32_t texture, int level,

@@ -159,6 +159,15 @@ out vec4 o_color;
 void main() { o_color = texelFetch(u_ms, ivec2(gl_FragCoord.xy) - ivec2(v_extra.xy), int(v_extra.z)); }
 )";
 
+constexpr const char* kFetchSampleArrayFragment = R"(#version 330 core
+in vec4 v_extra;
+uniform sampler2DMSArray u_ms_array;
+out vec4 o_color;
+void main() {
+  o_color = texelFetch(u_ms_array, ivec3(ivec2(gl_FragCoord.xy) - ivec2(v_extra.xy), int(v_extra.w)), int(v_extra.z));
+}
+)";
+
 constexpr const char* kPointCoordFragment = R"(#version 330 core
 in vec4 v_color;
 out vec4 o_color;
@@ -349,6 +358,7 @@ class GlBackend final : public Backend {
     programs_[19] = Link(kTexture1DFragment, error);
     programs_[20] = Link(kTexture1DArrayFragment, error);
     programs_[21] = Link(kTextureBufferFragment, error);
+    programs_[22] = Link(kFetchSampleArrayFragment, error);
     programs_[15] = Link(kGeometryFragment, error, kVertexShader, kSpritesGeometry);
     programs_[16] = Link(kGeometryFragment, error, kVertexShader, kAdjacencyGeometry);
     programs_[17] = Link(kGeometryFragment, error, kVertexShader, kLineAdjacencyGeometry);
@@ -370,6 +380,8 @@ class GlBackend final : public Backend {
     glUniform1i(glGetUniformLocation(programs_[8], "u_shadow_array"), 5);
     glUseProgram(programs_[9]);
     glUniform1i(glGetUniformLocation(programs_[9], "u_ms"), 6);
+    glUseProgram(programs_[22]);
+    glUniform1i(glGetUniformLocation(programs_[22], "u_ms_array"), 6);
     glUseProgram(programs_[19]);
     glUniform1i(glGetUniformLocation(programs_[19], "u_1d"), 7);
     glUseProgram(programs_[20]);
@@ -815,6 +827,21 @@ class GlBackend final : public Backend {
   void FramebufferTexture(Enum target, Enum attachment, std::uint32_t texture, int level) override {
     glFramebufferTexture(target, attachment, texture, level);
   }
+  std::uint32_t NewMultisampleArray(int samples, Enum internal_format, int width, int height, int layers) override {
+    const GLuint tex = GenOne(glGenTextures);
+    glActiveTexture(GL_TEXTURE6);
+    glBindTexture(GL_TEXTURE_2D_MULTISAMPLE_ARRAY, tex);
+    glTexImage3DMultisample(GL_TEXTURE_2D_MULTISAMPLE_ARRAY, samples, internal_format, width, height, layers, GL_TRUE);
+    glActiveTexture(GL_TEXTURE0);
+    return tex;
+  }
+  void TexImage3DMultisample(Enum target, int samples, Enum internal_format, int width, int height,
+                             int layers) override {
+    glTexImage3DMultisample(target, samples, internal_format, width, height, layers, GL_TRUE);
+  }
+  void FramebufferTextureLayer(Enum target, Enum attachment, std::uint32_t texture, int level, int layer) override {
+    glFramebufferTextureLayer(target, attachment, texture, level, layer);
+  }
   void FramebufferTexture3D(Enum target, Enum attachment, Enum textarget, std::uint32_t texture, int level,
                             int zoffset) override {
     glFramebufferTexture3D(target, attachment, textarget, texture, level, zoffset);
@@ -1007,7 +1034,7 @@ class GlBackend final : public Backend {
   OSMesaContext ctx_;
   int w_, h_;
   std::vector<std::uint8_t> buffer_;
-  GLuint programs_[22] = {};
+  GLuint programs_[23] = {};
   GLuint instanced_ = 0;
   GLuint rtt_color_ = 0;
   GLuint vao_ = 0, vbo_ = 0, ebo_ = 0;

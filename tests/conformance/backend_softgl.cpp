@@ -145,6 +145,16 @@ struct FetchSampleShader : ExtraShader<FetchSampleShader> {
   }
 };
 
+// kFetchSampleArray, in the wide form: texelFetch of the multisample array on unit 6.
+struct FetchSampleArrayShader : ExtraShader<FetchSampleArrayShader> {
+  void Fragment(const softgl::FragmentLanes<FetchSampleVaryings>& in, softgl::FragmentLanesOut& out) const {
+    using softgl::Int;
+    const softgl::vec4& e = in.varyings.extra;
+    out.color[0] = in.TexelFetchMSArray(6, Int(in.frag_coord.x) - Int(e.x), Int(in.frag_coord.y) - Int(e.y), Int(e.w),
+                                        Int(e.z));
+  }
+};
+
 // kTextureBuffer, in the wide form: texelFetch of the buffer texture on unit 0, or its textureSize.
 struct TextureBufferShader : ExtraShader<TextureBufferShader> {
   void Fragment(const softgl::FragmentLanes<FetchSampleVaryings>& in, softgl::FragmentLanesOut& out) const {
@@ -439,6 +449,7 @@ class SoftglBackend final : public Backend {
       case Program::kArrayShadow: gl_.UseProgram(array_shadow_); break;
       case Program::kFetchSample: gl_.UseProgram(fetch_sample_); break;
       case Program::kTextureBuffer: gl_.UseProgram(texture_buffer_); break;
+      case Program::kFetchSampleArray: gl_.UseProgram(fetch_sample_array_); break;
       case Program::kOutputs: gl_.UseProgram(outputs_); break;
       case Program::kPointCoord: gl_.UseProgram(point_coord_); break;
       case Program::kLayer: gl_.UseProgram(layer_); break;
@@ -784,6 +795,21 @@ class SoftglBackend final : public Backend {
   void FramebufferTexture(Enum target, Enum attachment, std::uint32_t texture, int level) override {
     gl_.FramebufferTexture(target, attachment, texture, level);
   }
+  std::uint32_t NewMultisampleArray(int samples, Enum internal_format, int width, int height, int layers) override {
+    const std::uint32_t tex = gl_.GenTexture();
+    gl_.ActiveTexture(softgl::TEXTURE0 + 6);
+    gl_.BindTexture(softgl::TEXTURE_2D_MULTISAMPLE_ARRAY, tex);
+    gl_.TexImage3DMultisample(softgl::TEXTURE_2D_MULTISAMPLE_ARRAY, samples, internal_format, width, height, layers, true);
+    gl_.ActiveTexture(softgl::TEXTURE0);
+    return tex;
+  }
+  void TexImage3DMultisample(Enum target, int samples, Enum internal_format, int width, int height,
+                             int layers) override {
+    gl_.TexImage3DMultisample(target, samples, internal_format, width, height, layers, true);
+  }
+  void FramebufferTextureLayer(Enum target, Enum attachment, std::uint32_t texture, int level, int layer) override {
+    gl_.FramebufferTextureLayer(target, attachment, texture, level, layer);
+  }
   void FramebufferTexture3D(Enum target, Enum attachment, Enum textarget, std::uint32_t texture, int level,
                             int zoffset) override {
     gl_.FramebufferTexture3D(target, attachment, textarget, texture, level, zoffset);
@@ -980,6 +1006,7 @@ class SoftglBackend final : public Backend {
   LayeredShader array_, volume_, array_shadow_, texture_1d_, texture_1d_array_;
   FetchSampleShader fetch_sample_;
   TextureBufferShader texture_buffer_;
+  FetchSampleArrayShader fetch_sample_array_;
   OutputsShader outputs_;
   PointCoordShader point_coord_;
   FeedbackShader feedback_;

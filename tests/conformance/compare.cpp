@@ -973,6 +973,67 @@ TEST_CASE("compressed textures: decoded texels, blocks read back, level state an
   CompareSteps(16, run);
 }
 
+TEST_CASE("multisample arrays: TexImage3DMultisample's level state, attachments and errors as Mesa's", "[conformance]") {
+  namespace gl = softgl;
+  auto run = [](Backend& b, const auto& step) {
+    auto level_state = [&] {
+      for (Enum pname : {gl::TEXTURE_WIDTH, gl::TEXTURE_HEIGHT, gl::TEXTURE_DEPTH, gl::TEXTURE_SAMPLES,
+                         gl::TEXTURE_INTERNAL_FORMAT, gl::TEXTURE_RED_SIZE, gl::TEXTURE_DEPTH_SIZE, gl::TEXTURE_STENCIL_SIZE})
+        step(b.GetTexLevelParameter(gl::TEXTURE_2D_MULTISAMPLE_ARRAY, 0, pname));
+    };
+    b.TexImage3DMultisample(gl::TEXTURE_2D_MULTISAMPLE_ARRAY, 4, gl::RGBA8, 8, 6, 3);  // the default texture: Mesa
+    (void)b.GetError();                                                                // has one, softgl not
+    b.BindNewTexture(gl::TEXTURE_2D_MULTISAMPLE_ARRAY);
+    step(b.GetIntegers(gl::TEXTURE_BINDING_2D_MULTISAMPLE_ARRAY, 1)[0] != 0);
+    const struct Image { Enum target; int samples; Enum format; int w, h, d; } images[] = {
+        {gl::TEXTURE_2D_MULTISAMPLE_ARRAY, 4, gl::RGBA8, 8, 6, 3},
+        {gl::TEXTURE_2D_MULTISAMPLE_ARRAY, 3, gl::DEPTH24_STENCIL8, 5, 7, 2},  // (3 samples: 4 in both)
+        {gl::TEXTURE_2D_MULTISAMPLE_ARRAY, 4, gl::RGBA16F, 4, 4, 1},
+        {gl::TEXTURE_2D_MULTISAMPLE, 4, gl::RGBA8, 8, 8, 2},              // the other target
+        {gl::TEXTURE_2D_MULTISAMPLE_ARRAY, 4, gl::COMPRESSED_RGBA_S3TC_DXT1_EXT, 8, 8, 2},
+        {gl::TEXTURE_2D_MULTISAMPLE_ARRAY, 0, gl::RGBA8, 8, 8, 2},
+        {gl::TEXTURE_2D_MULTISAMPLE_ARRAY, 4, gl::RGBA8, 8, 8, -1},
+        {gl::TEXTURE_2D_MULTISAMPLE_ARRAY, 4, gl::RGBA8, 8, 8, 5000},
+        {gl::TEXTURE_2D_MULTISAMPLE_ARRAY, 4, gl::RGBA8, 20000, 8, 2},
+        {gl::TEXTURE_2D_MULTISAMPLE_ARRAY, 64, gl::RGBA8, 8, 8, 2},
+        {gl::TEXTURE_2D_MULTISAMPLE_ARRAY, 4, gl::RGBA8, 8, 6, 3},
+    };
+    for (const Image& i : images) {
+      b.TexImage3DMultisample(i.target, i.samples, i.format, i.w, i.h, i.d);
+      step(0);
+      level_state();
+    }
+    step(b.GetTexLevelParameter(gl::TEXTURE_2D_MULTISAMPLE_ARRAY, 1, gl::TEXTURE_WIDTH));  // no level 1
+    b.GenerateMipmap(gl::TEXTURE_2D_MULTISAMPLE_ARRAY);
+    step(0);
+    // Attached one layer at a time and every layer, beside a multisample array of depth.
+    const std::uint32_t color = b.NewMultisampleArray(4, gl::RGBA8, 8, 6, 3);
+    const std::uint32_t depth = b.NewMultisampleArray(4, gl::DEPTH24_STENCIL8, 8, 6, 3);
+    b.BindFramebuffer(gl::FRAMEBUFFER, b.GenFramebuffer());
+    b.FramebufferTextureLayer(gl::FRAMEBUFFER, gl::COLOR_ATTACHMENT0, color, 1, 0);  // level 1
+    step(0);
+    b.FramebufferTextureLayer(gl::FRAMEBUFFER, gl::COLOR_ATTACHMENT0, color, 0, -1);
+    step(0);
+    b.FramebufferTextureLayer(gl::FRAMEBUFFER, gl::COLOR_ATTACHMENT0, color, 0, 2);
+    step(0);
+    step(b.CheckFramebufferStatus(gl::FRAMEBUFFER));
+    step(b.GetIntegers(gl::SAMPLES, 1)[0]);
+    b.FramebufferTextureLayer(gl::FRAMEBUFFER, gl::DEPTH_STENCIL_ATTACHMENT, depth, 0, 1);
+    step(b.CheckFramebufferStatus(gl::FRAMEBUFFER));
+    b.FramebufferTexture(gl::FRAMEBUFFER, gl::COLOR_ATTACHMENT0, color, 1);  // level 1
+    step(0);
+    b.FramebufferTexture(gl::FRAMEBUFFER, gl::COLOR_ATTACHMENT0, color, 0);
+    step(b.CheckFramebufferStatus(gl::FRAMEBUFFER));  // layered beside one layer
+    step(b.GetAttachmentParameter(gl::FRAMEBUFFER, gl::COLOR_ATTACHMENT0, gl::FRAMEBUFFER_ATTACHMENT_LAYERED));
+    b.FramebufferTexture(gl::FRAMEBUFFER, gl::DEPTH_STENCIL_ATTACHMENT, depth, 0);
+    step(b.CheckFramebufferStatus(gl::FRAMEBUFFER));
+    b.AttachNewMultisampleTexture(gl::FRAMEBUFFER, gl::COLOR_ATTACHMENT0, 4, gl::RGBA8, 8, 6);  // a 2D one: layered beside not
+    step(b.CheckFramebufferStatus(gl::FRAMEBUFFER));
+    b.BindFramebuffer(gl::FRAMEBUFFER, 0);
+  };
+  CompareSteps(16, run);
+}
+
 TEST_CASE("buffer textures: TexBuffer's level state, bindings and errors as Mesa's", "[conformance]") {
   namespace gl = softgl;
   auto run = [](Backend& b, const auto& step) {

@@ -1870,6 +1870,43 @@ void MultisampleTexture(Backend& b) {
            Program::kFetchSample);
   }
 }
+// A TEXTURE_2D_MULTISAMPLE_ARRAY of three 64 x 64 layers at 4 samples (with a depth-stencil array beside it): layers
+// 0 and 1 drawn into one at a time through FramebufferTextureLayer (depth-tested triangles), then every layer
+// attached (FramebufferTexture) and triangles routed to layer 2 by gl_Layer; each quadrant shows one sample of one
+// layer by texelFetch: layer 0 sample 0, layer 1 sample 3, layer 2 sample 1, layer 0 sample 2.
+void MultisampleTextureArray(Backend& b) {
+  ClearBlack(b);
+  const std::uint32_t fbo = b.GenFramebuffer();
+  b.BindFramebuffer(FRAMEBUFFER, fbo);
+  const std::uint32_t depth = b.NewMultisampleArray(4, DEPTH24_STENCIL8, 64, 64, 3);
+  const std::uint32_t color = b.NewMultisampleArray(4, RGBA8, 64, 64, 3);  // (made last: unit 6 keeps it)
+  b.Viewport(0, 0, 64, 64);
+  b.ClearDepth(1.0);
+  for (int layer = 0; layer < 2; ++layer) {
+    b.FramebufferTextureLayer(FRAMEBUFFER, COLOR_ATTACHMENT0, color, 0, layer);
+    b.FramebufferTextureLayer(FRAMEBUFFER, DEPTH_STENCIL_ATTACHMENT, depth, 0, layer);
+    b.ClearColor(0.1f, 0.1f * float(layer), 0.2f, 1);
+    b.Clear(COLOR_BUFFER_BIT | DEPTH_BUFFER_BIT);
+    b.Enable(DEPTH_TEST);
+    std::vector<Vertex> tris = SampleTriangles(7 + unsigned(layer), 90);
+    for (std::size_t i = 0; i < tris.size(); ++i) tris[i].pos.z = float(int(i / 3) % 5) / 5.0f - 0.5f;
+    b.Draw(TRIANGLES, tris);
+    b.Disable(DEPTH_TEST);
+  }
+  b.FramebufferTexture(FRAMEBUFFER, COLOR_ATTACHMENT0, color, 0);
+  b.FramebufferTexture(FRAMEBUFFER, DEPTH_STENCIL_ATTACHMENT, depth, 0);
+  std::vector<Vertex> to_layer = SampleTriangles(11, 40);
+  for (Vertex& v : to_layer) v.extra.w = 2.0f;
+  b.Draw(TRIANGLES, to_layer, Program::kLayer);
+  EndMultisample(b);
+  const int shown[4][2] = {{0, 0}, {1, 3}, {2, 1}, {0, 2}};  // (layer, sample) of each quadrant
+  for (int q = 0; q < 4; ++q) {
+    const float x0 = float(q & 1) * 64, y0 = float(q >> 1) * 64;
+    const glm::vec4 e(x0, y0, float(shown[q][1]), float(shown[q][0]));
+    b.Draw(TRIANGLES, QuadWith({Win(x0, y0), Win(x0 + 64, y0), Win(x0 + 64, y0 + 64), Win(x0, y0 + 64)}, {e, e, e, e}),
+           Program::kFetchSampleArray);
+  }
+}
 void MultisampleCoverageOps(Backend& b) {
   ClearBlack(b);
   const std::uint32_t fbo = MultisampleTarget(b);
@@ -2317,6 +2354,7 @@ const std::vector<SceneInfo>& Scenes() {
       {"msaa_resolve", kSize, kSize, Check::kColor, MultisampleResolve},
       {"msaa_coverage_ops", kSize, kSize, Check::kColor, MultisampleCoverageOps},
       {"msaa_texture", kSize, kSize, Check::kExact, MultisampleTexture},
+      {"msaa_texture_array", kSize, kSize, Check::kExact, MultisampleTextureArray},
       {"cube_map", kSize, kSize, Check::kTexture, CubeMap},
       {"shadow_compare", kSize, kSize, Check::kTexture, ShadowCompare},
       {"texture_array", kSize, kSize, Check::kTexture, TextureArray},

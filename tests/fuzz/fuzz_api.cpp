@@ -39,6 +39,8 @@ struct FuzzShader : softgl::Shader<FuzzShader, Vary> {
     out.color[3] = in.TextureArray(4, &Vary::dir) + in.Texture3D(5, &Vary::dir) +
                    glm::vec4(in.textures->SampleArrayShadow(6, in.varyings.dir, in.varyings.a.x, {}, {})) +
                    in.textures->FetchSample(7, texel, small(in.varyings.a.y * 9.0f) - 1) +
+                   in.textures->FetchSampleArray(7, glm::ivec3(texel, small(in.varyings.a.x * 5.0f) - 1),
+                                                 small(in.varyings.a.y * 9.0f) - 1) +
                    in.textures->Fetch(0, texel, small(in.varyings.a.z * 4.0f) - 1) +
                    in.textures->Sample1D(8, in.varyings.uv.x, in.varyings.a.x, in.varyings.a.y) +
                    in.textures->Sample1DArray(9, in.varyings.uv, in.varyings.a.z, 0.0f) +
@@ -117,7 +119,8 @@ constexpr std::uint32_t kIndexTypes[] = {UNSIGNED_BYTE, UNSIGNED_SHORT, UNSIGNED
 constexpr std::uint32_t kBufferTargets[] = {ARRAY_BUFFER, ELEMENT_ARRAY_BUFFER, COPY_READ_BUFFER, COPY_WRITE_BUFFER,
                                             TRANSFORM_FEEDBACK_BUFFER, TEXTURE_BUFFER};
 constexpr std::uint32_t kTexTargets[] = {TEXTURE_2D, TEXTURE_CUBE_MAP, TEXTURE_2D_ARRAY, TEXTURE_3D,
-                                         TEXTURE_2D_MULTISAMPLE, TEXTURE_1D, TEXTURE_1D_ARRAY, TEXTURE_BUFFER};
+                                         TEXTURE_2D_MULTISAMPLE, TEXTURE_1D, TEXTURE_1D_ARRAY, TEXTURE_BUFFER,
+                                         TEXTURE_2D_MULTISAMPLE_ARRAY};
 constexpr std::uint32_t kBufferTextureFormats[] = {R8, R16F, RG32F, RGBA8, RGBA16, RGBA32F, RGB8, 0x8D82 /* RGBA32I */};
 constexpr std::uint32_t kBufferTextureNames[] = {TEXTURE_WIDTH, TEXTURE_INTERNAL_FORMAT, TEXTURE_BUFFER_DATA_STORE_BINDING,
                                                  TEXTURE_RED_SIZE, TEXTURE_SAMPLES, TEXTURE_MIN_FILTER};
@@ -609,8 +612,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         const void* pixels = small && in.Byte() % 4 ? scratch.data() : nullptr;
         switch (in.Byte() % 4) {
           case 3:
-            gl.TexImage2DMultisample(in.Byte() % 8 ? TEXTURE_2D_MULTISAMPLE : TEXTURE_2D, in.Int(-1, 10),
-                                     in.Enum(kInternal), w, h, in.Byte() % 2);
+            if (in.Byte() % 2)
+              gl.TexImage2DMultisample(in.Byte() % 8 ? TEXTURE_2D_MULTISAMPLE : TEXTURE_2D, in.Int(-1, 10),
+                                       in.Enum(kInternal), w, h, in.Byte() % 2);
+            else  // multisample arrays: the layers wild only where width and height are small
+              gl.TexImage3DMultisample(in.Byte() % 8 ? TEXTURE_2D_MULTISAMPLE_ARRAY : TEXTURE_2D_ARRAY, in.Int(-1, 10),
+                                       in.Enum(kInternal), w, h, small ? d : in.Int(-1, 4), in.Byte() % 2);
             break;
           case 0:
             gl.TexImage3D(in.Enum(kLayered), in.Int(-1, 5), in.Enum(kInternal), w, h, d, in.Byte() < 8,
