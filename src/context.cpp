@@ -16,7 +16,7 @@ Context::Context(int width, int height) : Context(width, height, Options{}) {}
 Context::Context(int width, int height, const Options& options) : state_(std::make_unique<ContextState>()) {
   state_->pool = std::make_unique<detail::WorkerPool>(options.threads > 0 ? options.threads
                                                                           : detail::DefaultThreadCount());
-  for (auto& a : state_->current_attrib) a = glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
+  for (auto& a : state_->current_attrib) a = glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);  // (as floats: current_integer 0)
   if (width < 0 || height < 0 || width > kMaxFramebufferSize || height > kMaxFramebufferSize) {
     state_->SetError(INVALID_VALUE, __func__, "a numeric argument is out of range");
     width = height = 0;

@@ -282,6 +282,27 @@ void Context::BindVertexArray(std::uint32_t array) {
   s.vao_id = array;
 }
 
+namespace {
+
+// VertexAttributePointer and VertexAttribIPointer once their arguments are checked: attribute `index` of the bound
+// vertex array reads the buffer bound to ARRAY_BUFFER.
+void SetAttribArray(ContextState& s, const char* what, std::uint32_t index, int size, Enum type, bool normalized,
+                    bool bgra, bool integer, int stride, std::size_t offset) {
+  if (s.vao == nullptr) return s.SetError(INVALID_OPERATION, what, "no vertex array is bound");
+  if (!s.array_buffer && offset != 0) return s.SetError(INVALID_OPERATION, what, "no buffer bound to ARRAY_BUFFER (client-side arrays do not exist in a core profile)");
+  AttribBinding& a = s.vao->attrib[index];
+  a.buffer = s.array_buffer;
+  a.offset = offset;
+  a.size = size;
+  a.bgra = bgra;
+  a.integer = integer;
+  a.type = type;
+  a.normalized = normalized;
+  a.stride = stride;
+}
+
+}  // namespace
+
 void Context::VertexAttributePointer(std::uint32_t index, int size, Enum type, bool normalized, int stride,
                                      std::size_t offset) {
   auto& s = *state_;
@@ -295,16 +316,16 @@ void Context::VertexAttributePointer(std::uint32_t index, int size, Enum type, b
   if (packed && size != 4 && !bgra) return s.SetError(INVALID_OPERATION, __func__, "the 2_10_10_10 types take size 4 or BGRA");
   if (bgra && ((!packed && type != UNSIGNED_BYTE) || !normalized))
     return s.SetError(INVALID_OPERATION, __func__, "size BGRA takes UNSIGNED_BYTE or a 2_10_10_10 type, normalized");
-  if (s.vao == nullptr) return s.SetError(INVALID_OPERATION, __func__, "no vertex array is bound");
-  if (!s.array_buffer && offset != 0) return s.SetError(INVALID_OPERATION, __func__, "no buffer bound to ARRAY_BUFFER (client-side arrays do not exist in a core profile)");
-  AttribBinding& a = s.vao->attrib[index];
-  a.buffer = s.array_buffer;
-  a.offset = offset;
-  a.size = bgra ? 4 : size;
-  a.bgra = bgra;
-  a.type = type;
-  a.normalized = normalized;
-  a.stride = stride;
+  SetAttribArray(s, __func__, index, bgra ? 4 : size, type, normalized, bgra, false, stride, offset);
+}
+
+void Context::VertexAttribIPointer(std::uint32_t index, int size, Enum type, int stride, std::size_t offset) {
+  auto& s = *state_;
+  if (index >= std::uint32_t(kMaxVertexAttribs) || size < 1 || size > 4 || stride < 0)
+    return s.SetError(INVALID_VALUE, __func__, "a numeric argument is out of range (size is 1 to 4)");
+  if (type != BYTE && type != UNSIGNED_BYTE && type != SHORT && type != UNSIGNED_SHORT && type != INT && type != UNSIGNED_INT)
+    return s.SetError(INVALID_ENUM, __func__, "type must be BYTE, UNSIGNED_BYTE, SHORT, UNSIGNED_SHORT, INT or UNSIGNED_INT");
+  SetAttribArray(s, __func__, index, size, type, false, false, true, stride, offset);
 }
 
 void Context::EnableVertexAttribArray(std::uint32_t index) {
@@ -331,7 +352,53 @@ void Context::VertexAttribDivisor(std::uint32_t index, std::uint32_t divisor) {
 void Context::VertexAttrib4f(std::uint32_t index, float x, float y, float z, float w) {
   if (index >= std::uint32_t(kMaxVertexAttribs)) return state_->SetError(INVALID_VALUE, __func__, "attribute index is kMaxVertexAttribs or more");
   state_->current_attrib[index] = glm::vec4(x, y, z, w);
+  state_->current_integer[index] = 0;
 }
+
+namespace {
+
+// VertexAttribI*: the first `components` of v (the others (0, 0, 1)) as attribute `index`'s current value,
+// integers of the kind `kind` says (1 signed, 2 unsigned).
+template <class T>
+void SetIntegerAttrib(ContextState& s, const char* what, std::uint32_t index, const T* v, int components, int kind) {
+  if (index >= std::uint32_t(kMaxVertexAttribs)) return s.SetError(INVALID_VALUE, what, "attribute index is kMaxVertexAttribs or more");
+  if (!NotNull(s, what, v, "v")) return;
+  glm::ivec4 current(0, 0, 0, 1);
+  for (int k = 0; k < components; ++k) current[k] = std::int32_t(v[k]);  // (unsigned: the same bits)
+  s.current_attrib[index] = detail::IntegerAttrib(current);
+  s.current_integer[index] = std::uint8_t(kind);
+}
+
+}  // namespace
+
+void Context::VertexAttribI1i(std::uint32_t index, int x) { VertexAttribI4i(index, x, 0, 0, 1); }
+void Context::VertexAttribI2i(std::uint32_t index, int x, int y) { VertexAttribI4i(index, x, y, 0, 1); }
+void Context::VertexAttribI3i(std::uint32_t index, int x, int y, int z) { VertexAttribI4i(index, x, y, z, 1); }
+void Context::VertexAttribI4i(std::uint32_t index, int x, int y, int z, int w) {
+  const int v[4] = {x, y, z, w};
+  SetIntegerAttrib(*state_, __func__, index, v, 4, 1);
+}
+void Context::VertexAttribI1ui(std::uint32_t index, std::uint32_t x) { VertexAttribI4ui(index, x, 0, 0, 1); }
+void Context::VertexAttribI2ui(std::uint32_t index, std::uint32_t x, std::uint32_t y) { VertexAttribI4ui(index, x, y, 0, 1); }
+void Context::VertexAttribI3ui(std::uint32_t index, std::uint32_t x, std::uint32_t y, std::uint32_t z) {
+  VertexAttribI4ui(index, x, y, z, 1);
+}
+void Context::VertexAttribI4ui(std::uint32_t index, std::uint32_t x, std::uint32_t y, std::uint32_t z, std::uint32_t w) {
+  const std::uint32_t v[4] = {x, y, z, w};
+  SetIntegerAttrib(*state_, __func__, index, v, 4, 2);
+}
+void Context::VertexAttribI1iv(std::uint32_t index, const int* v) { SetIntegerAttrib(*state_, __func__, index, v, 1, 1); }
+void Context::VertexAttribI2iv(std::uint32_t index, const int* v) { SetIntegerAttrib(*state_, __func__, index, v, 2, 1); }
+void Context::VertexAttribI3iv(std::uint32_t index, const int* v) { SetIntegerAttrib(*state_, __func__, index, v, 3, 1); }
+void Context::VertexAttribI4iv(std::uint32_t index, const int* v) { SetIntegerAttrib(*state_, __func__, index, v, 4, 1); }
+void Context::VertexAttribI1uiv(std::uint32_t index, const std::uint32_t* v) { SetIntegerAttrib(*state_, __func__, index, v, 1, 2); }
+void Context::VertexAttribI2uiv(std::uint32_t index, const std::uint32_t* v) { SetIntegerAttrib(*state_, __func__, index, v, 2, 2); }
+void Context::VertexAttribI3uiv(std::uint32_t index, const std::uint32_t* v) { SetIntegerAttrib(*state_, __func__, index, v, 3, 2); }
+void Context::VertexAttribI4uiv(std::uint32_t index, const std::uint32_t* v) { SetIntegerAttrib(*state_, __func__, index, v, 4, 2); }
+void Context::VertexAttribI4bv(std::uint32_t index, const std::int8_t* v) { SetIntegerAttrib(*state_, __func__, index, v, 4, 1); }
+void Context::VertexAttribI4sv(std::uint32_t index, const std::int16_t* v) { SetIntegerAttrib(*state_, __func__, index, v, 4, 1); }
+void Context::VertexAttribI4ubv(std::uint32_t index, const std::uint8_t* v) { SetIntegerAttrib(*state_, __func__, index, v, 4, 2); }
+void Context::VertexAttribI4usv(std::uint32_t index, const std::uint16_t* v) { SetIntegerAttrib(*state_, __func__, index, v, 4, 2); }
 
 namespace {
 
@@ -345,6 +412,7 @@ void SetPackedAttrib(ContextState& s, const char* what, std::uint32_t index, Enu
   glm::vec4 current(0.0f, 0.0f, 0.0f, 1.0f);
   for (int k = 0; k < components; ++k) current[k] = v[k];
   s.current_attrib[index] = current;
+  s.current_integer[index] = 0;
 }
 
 }  // namespace
@@ -387,7 +455,12 @@ bool VertexAttribValues(ContextState& s, const char* what, std::uint32_t index, 
   n = 1;
   if (pname == CURRENT_VERTEX_ATTRIB) {
     n = 4;
-    for (int c = 0; c < 4; ++c) out[c] = double(s.current_attrib[index][c]);
+    glm::ivec4 bits;
+    std::memcpy(&bits, &s.current_attrib[index], sizeof bits);
+    for (int c = 0; c < 4; ++c)  // (integers given by VertexAttribI*: their values, signed or not)
+      out[c] = s.current_integer[index] == 0   ? double(s.current_attrib[index][c])
+               : s.current_integer[index] == 1 ? double(bits[c])
+                                               : double(std::uint32_t(bits[c]));
     return true;
   }
   const bool array_state = pname == VERTEX_ATTRIB_ARRAY_ENABLED || pname == VERTEX_ATTRIB_ARRAY_SIZE ||
@@ -403,7 +476,7 @@ bool VertexAttribValues(ContextState& s, const char* what, std::uint32_t index, 
     case VERTEX_ATTRIB_ARRAY_STRIDE: out[0] = a.stride; break;
     case VERTEX_ATTRIB_ARRAY_TYPE: out[0] = double(a.type); break;
     case VERTEX_ATTRIB_ARRAY_NORMALIZED: out[0] = a.normalized ? 1.0 : 0.0; break;
-    case VERTEX_ATTRIB_ARRAY_INTEGER: out[0] = 0.0; break;
+    case VERTEX_ATTRIB_ARRAY_INTEGER: out[0] = a.integer ? 1.0 : 0.0; break;
     case VERTEX_ATTRIB_ARRAY_DIVISOR: out[0] = double(a.divisor); break;
     default: out[0] = double(IdOf(s.buffers, a.buffer.get())); break;  // VERTEX_ATTRIB_ARRAY_BUFFER_BINDING
   }

@@ -25,6 +25,7 @@ void ContextState::Draw(const detail::DrawCall& call) {
     src.type = a.type;
     src.normalized = a.normalized;
     src.bgra = a.bgra;
+    src.integer = a.integer;
     src.divisor = a.divisor;
     src.stride = a.stride ? std::size_t(a.stride) : detail::AttributeBytes(a.type, a.size);
   }

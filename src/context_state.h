@@ -53,6 +53,7 @@ struct AttribBinding {
   Enum type = FLOAT;
   bool normalized = false;
   bool bgra = false;  // size BGRA (4 components, red and blue swapped)
+  bool integer = false;  // VertexAttribIPointer: integers handed on as integers
   int stride = 0;
   std::uint32_t divisor = 0;  // VertexAttribDivisor
 };
@@ -233,6 +234,9 @@ struct ContextState {
   VertexArray* vao = nullptr;
   std::uint32_t vao_id = 0;
   glm::vec4 current_attrib[kMaxVertexAttribs];
+  // How each current value was given: 0 as floats (VertexAttrib4f, VertexAttribP*), 1 as signed integers, 2 as
+  // unsigned integers (VertexAttribI*: current_attrib then holds their bits, detail::IntegerAttrib).
+  std::uint8_t current_integer[kMaxVertexAttribs] = {};
   const Program* program = nullptr;
 
   std::unordered_map<std::uint32_t, std::shared_ptr<detail::TextureObject>> textures;

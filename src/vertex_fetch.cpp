@@ -124,10 +124,27 @@ Resolved Resolve(const AttribSource& src) {
                            : (long long)(std::min<std::size_t>((room - bytes) / src.stride, std::size_t(1) << 40));
   return r;
 }
+// An integer attribute's element at p: each component sign- or zero-extended as its type says.
+glm::vec4 ReadInteger(const AttribSource& src, const std::uint8_t* p) {
+  glm::ivec4 v(0, 0, 0, 1);
+  for (int c = 0; c < src.components; ++c) {
+    const std::uint8_t* q = p + TypeSize(src.type) * std::size_t(c);
+    switch (src.type) {
+      case BYTE: v[c] = LoadUnaligned<std::int8_t>(q); break;
+      case UNSIGNED_BYTE: v[c] = LoadUnaligned<std::uint8_t>(q); break;
+      case SHORT: v[c] = LoadUnaligned<std::int16_t>(q); break;
+      case UNSIGNED_SHORT: v[c] = LoadUnaligned<std::uint16_t>(q); break;
+      default: v[c] = LoadUnaligned<std::int32_t>(q); break;  // INT, UNSIGNED_INT (the same bits)
+    }
+  }
+  return IntegerAttrib(v);
+}
+
 glm::vec4 Read(const AttribSource& src, const Resolved& r, std::uint32_t index) {
   glm::vec4 v(0.0f, 0.0f, 0.0f, 1.0f);
-  if ((long long)index > r.last) return v;
+  if ((long long)index > r.last) return src.integer ? IntegerAttrib(glm::ivec4(0, 0, 0, 1)) : v;
   const std::uint8_t* p = r.base + r.stride * std::size_t(index);
+  if (src.integer) return ReadInteger(src, p);
   if (src.type == FLOAT) {  // the common case: fixed-size copies (glm::vec4 is four floats)
     switch (src.components) {
       case 1: std::memcpy(static_cast<void*>(&v), p, 4); break;
@@ -147,6 +164,12 @@ glm::vec4 Read(const AttribSource& src, const Resolved& r, std::uint32_t index) 
 }  // namespace
 
 glm::vec4 FetchAttribute(const AttribSource& src, std::uint32_t index) { return Read(src, Resolve(src), index); }
+
+glm::vec4 IntegerAttrib(const glm::ivec4& v) {
+  glm::vec4 f;
+  std::memcpy(static_cast<void*>(&f), &v, sizeof f);
+  return f;
+}
 
 void FetchVertices(const FetchPlan& plan, const std::uint32_t* indices, int count, std::uint32_t instance,
                    float* out, int stride) {
@@ -170,11 +193,11 @@ void FetchVertices(const FetchPlan& plan, const std::uint32_t* indices, int coun
       for (int i = 0; i < padded; ++i) put(i, v);
       continue;
     }
-    if (src.type == FLOAT && r.last >= 0) {  // the common case: floats straight into the rows
+    if (src.type == FLOAT && !src.integer && r.last >= 0) {  // the common case: floats straight into the rows
       const int n = src.components;
       for (int i = 0; i < count; ++i) {
         if ((long long)indices[i] > r.last) {
-          put(i, glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
+          put(i, glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));  // (not an integer attribute: FLOAT is not an integer type)
           continue;
         }
         const std::uint8_t* p = r.base + r.stride * std::size_t(indices[i]);

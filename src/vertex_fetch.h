@@ -21,6 +21,9 @@ struct AttribSource {
   Enum type = FLOAT;
   bool normalized = false;
   bool bgra = false;                   // size BGRA: red and blue swapped (4 components)
+  // VertexAttribIPointer: the components are integers, kept as integers (sign- or zero-extended to 32 bits) and
+  // handed on as the bits of the floats they occupy (missing ones 0, 0, 0 and 1 as integers).
+  bool integer = false;
   std::uint32_t divisor = 0;           // VertexAttribDivisor: 0 reads per vertex, d > 0 element instance / d
 };
 
@@ -49,7 +52,8 @@ glm::vec4 Packed2101010(Enum type, bool normalized, std::uint32_t word);
 std::size_t AttributeBytes(Enum type, int components);
 
 /// Reads attribute `src` of vertex `index` (an enabled attribute). Missing components come from (0, 0, 0, 1); an
-/// element that lies (even partly) outside the buffer reads as (0, 0, 0, 1).
+/// element that lies (even partly) outside the buffer reads as (0, 0, 0, 1). An integer attribute's components are
+/// 32-bit integers in the floats' bits (IntegerAttrib makes such a value).
 glm::vec4 FetchAttribute(const AttribSource& src, std::uint32_t index);
 
 /// Fetches all attributes of `count` vertices of instance `instance` into rows of lanes, as VertexBatch::attribs
@@ -60,6 +64,9 @@ glm::vec4 FetchAttribute(const AttribSource& src, std::uint32_t index);
 /// stage reads from there (VertexBatch::current).
 void FetchVertices(const FetchPlan& plan, const std::uint32_t* indices, int count, std::uint32_t instance,
                    float* out, int stride);
+
+/// The floats whose bits are the integers v (an integer attribute's value, or VertexAttribI*'s current value).
+glm::vec4 IntegerAttrib(const glm::ivec4& v);
 
 /// Reads `count` indices of `type` (UNSIGNED_BYTE/SHORT/INT) from `data`. The caller has checked the range.
 void ReadIndices(Enum type, const std::uint8_t* data, int count, std::uint32_t* out);

@@ -351,3 +351,169 @@ TEST_CASE("a DrawArrays larger than a piece shades each of its vertices once, wi
     CHECK(wrong == 0);
   }
 }
+
+// ---- Integer attributes (VertexAttribIPointer, VertexAttribI*) ------------------------------------------------------
+
+TEST_CASE("integer attributes keep every type's integers exactly, sign- or zero-extended", "[vertex_fetch]") {
+  const auto ints = [](const glm::vec4& v) {
+    glm::ivec4 i;
+    std::memcpy(&i, &v, sizeof i);
+    return i;
+  };
+  const std::vector<std::int8_t> b = {-128, 127, -1, 5};
+  const std::vector<std::int16_t> s = {-32768, 32767, -1, 300};
+  const std::vector<std::int32_t> i = {INT32_MIN, INT32_MAX, -1, 0x7F800001};  // (the last: a NaN's bits as a float)
+  AttribSource src = Source(b, 4, BYTE, false);
+  src.integer = true;
+  CHECK(ints(FetchAttribute(src, 0)) == glm::ivec4(-128, 127, -1, 5));
+  src.type = UNSIGNED_BYTE;
+  CHECK(ints(FetchAttribute(src, 0)) == glm::ivec4(128, 127, 255, 5));
+  src = Source(s, 4, SHORT, false);
+  src.integer = true;
+  CHECK(ints(FetchAttribute(src, 0)) == glm::ivec4(-32768, 32767, -1, 300));
+  src.type = UNSIGNED_SHORT;
+  CHECK(ints(FetchAttribute(src, 0)) == glm::ivec4(32768, 32767, 65535, 300));
+  src = Source(i, 4, INT, false);
+  src.integer = true;
+  CHECK(ints(FetchAttribute(src, 0)) == glm::ivec4(INT32_MIN, INT32_MAX, -1, 0x7F800001));
+  src.type = UNSIGNED_INT;
+  CHECK(ints(FetchAttribute(src, 0)) == glm::ivec4(INT32_MIN, INT32_MAX, -1, 0x7F800001));
+  // Missing components and elements past the buffer: (0, 0, 0, 1) as integers.
+  src = Source(i, 2, INT, false);
+  src.integer = true;
+  CHECK(ints(FetchAttribute(src, 1)) == glm::ivec4(-1, 0x7F800001, 0, 1));
+  CHECK(ints(FetchAttribute(src, 2)) == glm::ivec4(0, 0, 0, 1));
+}
+
+namespace {
+// Points whose colour is (x & 255, y & 255, z & 255, w & 255) / 255 of integer attribute 1 (wide), or of
+// attribute 1's integers less attribute 2's (scalar).
+struct WideIntVary {
+  softgl::vec4 color;
+};
+struct WideIntShader : softgl::Shader<WideIntShader, WideIntVary> {
+  void Vertex(const softgl::VertexLanes& in, softgl::VertexLanesOut<WideIntVary>& out) const {
+    out.position = in.attrib[0];
+    const auto byte = [&](int c) { return softgl::Float(in.AttribI(1, c) & 255) / 255.0f; };
+    out.varyings.color = softgl::vec4(byte(0), byte(1), byte(2), byte(3));
+  }
+  void Fragment(const softgl::FragmentLanes<WideIntVary>& in, softgl::FragmentLanesOut& out) const {
+    out.color[0] = in.varyings.color;
+  }
+};
+struct ScalarIntShader : softgl::Shader<ScalarIntShader, testing::Vec4Varyings> {
+  void Vertex(const VertexIn& in, VertexOut<testing::Vec4Varyings>& out) const {
+    out.position = in.attrib[0];
+    out.varyings.value = glm::vec4((in.AttribUI(1) - in.AttribUI(2)) & 255u) / 255.0f;
+  }
+  bool Fragment(const FragmentIn<testing::Vec4Varyings>& in, FragmentOut& out) const {
+    out.color[0] = in.varyings.value;
+    return true;
+  }
+};
+}  // namespace
+
+TEST_CASE("integer attributes reach the vertex stage as integers, wide and scalar, from arrays and current values",
+          "[vertex_fetch]") {
+  Context gl(8, 1);
+  std::vector<glm::vec4> points;
+  for (int x = 0; x < 8; ++x) points.push_back(testing::WindowToClip(float(x) + 0.5f, 0.5f, 8, 1));
+  testing::MakeVertexArray(gl, points);
+  // Attribute 1: four UNSIGNED_SHORTs a vertex, values above 2^8 so that only exact integers give the bytes.
+  std::vector<std::uint16_t> words;
+  for (int x = 0; x < 8; ++x)
+    for (int c = 0; c < 4; ++c) words.push_back(std::uint16_t(0xAB00 + x * 16 + c * 3 + 1));
+  gl.BindBuffer(ARRAY_BUFFER, gl.GenBuffer());
+  gl.BufferData(ARRAY_BUFFER, std::ptrdiff_t(words.size() * 2), words.data());
+  gl.VertexAttribIPointer(1, 4, UNSIGNED_SHORT, 0, 0);
+  gl.EnableVertexAttribArray(1);
+  int integer = -1;
+  gl.GetVertexAttribiv(1, VERTEX_ATTRIB_ARRAY_INTEGER, &integer);
+  CHECK(integer == 1);
+  const auto check = [&](auto want) {
+    const softgl::Image img = gl.ReadPixels();
+    for (int x = 0; x < 8; ++x)
+      for (int c = 0; c < 4; ++c) {
+        CAPTURE(x, c);
+        CHECK(int(img.rgba[std::size_t(x * 4 + c)]) == want(x, c));
+      }
+  };
+  WideIntShader wide;
+  gl.UseProgram(wide);
+  gl.DrawArrays(POINTS, 0, 8);
+  check([](int x, int c) { return (x * 16 + c * 3 + 1) & 255; });
+  // Scalar: attribute 1 less attribute 2, the latter disabled with a current value given by VertexAttribI4ui.
+  ScalarIntShader scalar;
+  gl.UseProgram(scalar);
+  gl.DisableVertexAttribArray(2);
+  gl.VertexAttribI4ui(2, 1, 2, 3, 0xFFFFFFFFu);
+  gl.DrawArrays(POINTS, 0, 8);
+  check([](int x, int c) { return (x * 16 + c * 3 + 1 - (c == 3 ? -1 : c + 1)) & 255; });
+  // The current value of a disabled integer attribute, read wide: VertexAttribI4i.
+  gl.DisableVertexAttribArray(1);
+  gl.VertexAttribI4i(1, -1, 257, 0x12345678, 7);
+  gl.UseProgram(wide);
+  gl.DrawArrays(POINTS, 0, 8);
+  check([](int, int c) { return c == 0 ? 255 : c == 1 ? 1 : c == 2 ? 0x78 : 7; });
+  CHECK(gl.GetError() == NO_ERROR);
+}
+
+TEST_CASE("VertexAttribIPointer and VertexAttribI*: state queries and OpenGL's errors", "[vertex_fetch][errors]") {
+  Context gl(4, 4);
+  gl.VertexAttribIPointer(0, 4, INT, 0, 0);
+  CHECK(gl.GetError() == INVALID_OPERATION);  // no vertex array
+  gl.BindVertexArray(gl.GenVertexArray());
+  gl.VertexAttribIPointer(0, 4, INT, 0, 16);
+  CHECK(gl.GetError() == INVALID_OPERATION);  // no ARRAY_BUFFER with an offset
+  gl.BindBuffer(ARRAY_BUFFER, gl.GenBuffer());
+  gl.VertexAttribIPointer(0, 4, FLOAT, 0, 0);
+  CHECK(gl.GetError() == INVALID_ENUM);
+  gl.VertexAttribIPointer(0, 4, INT_2_10_10_10_REV, 0, 0);
+  CHECK(gl.GetError() == INVALID_ENUM);
+  gl.VertexAttribIPointer(0, int(BGRA), UNSIGNED_BYTE, 0, 0);
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.VertexAttribIPointer(0, 0, INT, 0, 0);
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.VertexAttribIPointer(0, 4, INT, -4, 0);
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.VertexAttribIPointer(kMaxVertexAttribs, 4, INT, 0, 0);
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.VertexAttribIPointer(3, 2, SHORT, 12, 4);
+  CHECK(gl.GetError() == NO_ERROR);
+  int v = -1;
+  gl.GetVertexAttribiv(3, VERTEX_ATTRIB_ARRAY_INTEGER, &v);
+  CHECK(v == 1);
+  gl.GetVertexAttribiv(3, VERTEX_ATTRIB_ARRAY_TYPE, &v);
+  CHECK(v == int(SHORT));
+  gl.GetVertexAttribiv(3, VERTEX_ATTRIB_ARRAY_NORMALIZED, &v);
+  CHECK(v == 0);
+  gl.VertexAttributePointer(3, 2, SHORT, false, 12, 4);  // the float form again
+  gl.GetVertexAttribiv(3, VERTEX_ATTRIB_ARRAY_INTEGER, &v);
+  CHECK(v == 0);
+  // Current values: the forms, the components they leave as (0, 0, 1), signed and unsigned.
+  int iv[4];
+  std::uint32_t uv[4];
+  gl.VertexAttribI2i(5, -7, 9);
+  gl.GetVertexAttribIiv(5, CURRENT_VERTEX_ATTRIB, iv);
+  CHECK((iv[0] == -7 && iv[1] == 9 && iv[2] == 0 && iv[3] == 1));
+  gl.VertexAttribI4ui(5, 4000000000u, 1, 2, 3);
+  gl.GetVertexAttribIuiv(5, CURRENT_VERTEX_ATTRIB, uv);
+  CHECK((uv[0] == 4000000000u && uv[1] == 1 && uv[2] == 2 && uv[3] == 3));
+  const std::int8_t bytes[4] = {-1, -2, -3, -4};
+  gl.VertexAttribI4bv(5, bytes);
+  gl.GetVertexAttribIiv(5, CURRENT_VERTEX_ATTRIB, iv);
+  CHECK((iv[0] == -1 && iv[3] == -4));
+  const std::uint16_t shorts[4] = {65535, 1, 2, 3};
+  gl.VertexAttribI4usv(5, shorts);
+  gl.GetVertexAttribIuiv(5, CURRENT_VERTEX_ATTRIB, uv);
+  CHECK(uv[0] == 65535u);
+  gl.VertexAttrib4f(5, 1.5f, 0, 0, 1);  // floats again
+  float fv[4];
+  gl.GetVertexAttribfv(5, CURRENT_VERTEX_ATTRIB, fv);
+  CHECK(fv[0] == 1.5f);
+  CHECK(gl.GetError() == NO_ERROR);
+  gl.VertexAttribI4i(kMaxVertexAttribs, 0, 0, 0, 0);
+  CHECK(gl.GetError() == INVALID_VALUE);
+  gl.VertexAttribI4iv(0, nullptr);
+  CHECK(gl.GetError() == INVALID_VALUE);
+}

@@ -201,6 +201,13 @@ class Context {
   /// not normalized, no vertex array bound, or no ARRAY_BUFFER bound with offset != 0: INVALID_OPERATION.
   void VertexAttributePointer(std::uint32_t index, int size, Enum type, bool normalized, int stride,
                               std::size_t offset);
+  /// Attribute `index` reads integers: `size` (1 to 4) components of BYTE, UNSIGNED_BYTE, SHORT, UNSIGNED_SHORT,
+  /// INT or UNSIGNED_INT from the buffer bound to ARRAY_BUFFER, as VertexAttributePointer reads them, but kept as
+  /// integers (sign- or zero-extended to 32 bits, missing components 0, 0, 0 and 1): the vertex stage reads them by
+  /// VertexLanes::AttribI (VertexIn::AttribI), GLSL's `in ivec4` / `in uvec4`. index >= kMaxVertexAttribs, size
+  /// not 1 to 4, or stride < 0: INVALID_VALUE; another type: INVALID_ENUM; no vertex array bound, or no
+  /// ARRAY_BUFFER bound with offset != 0: INVALID_OPERATION.
+  void VertexAttribIPointer(std::uint32_t index, int size, Enum type, int stride, std::size_t offset);
   void EnableVertexAttribArray(std::uint32_t index);
   void DisableVertexAttribArray(std::uint32_t index);
   /// How attribute `index` of the bound vertex array advances: 0 (the default) once per vertex; d > 0 once per d
@@ -222,11 +229,35 @@ class Context {
   void VertexAttribP2uiv(std::uint32_t index, Enum type, bool normalized, const std::uint32_t* value);
   void VertexAttribP3uiv(std::uint32_t index, Enum type, bool normalized, const std::uint32_t* value);
   void VertexAttribP4uiv(std::uint32_t index, Enum type, bool normalized, const std::uint32_t* value);
+  /// glVertexAttribI*: the current value of attribute `index` as integers (signed for the i, b and s forms,
+  /// unsigned for the ui, ub and us forms; the components a form does not give are (0, 0, 1)), read by
+  /// VertexLanes::AttribI while the array is disabled. index >= kMaxVertexAttribs: INVALID_VALUE; v null:
+  /// INVALID_VALUE.
+  void VertexAttribI1i(std::uint32_t index, int x);
+  void VertexAttribI2i(std::uint32_t index, int x, int y);
+  void VertexAttribI3i(std::uint32_t index, int x, int y, int z);
+  void VertexAttribI4i(std::uint32_t index, int x, int y, int z, int w);
+  void VertexAttribI1ui(std::uint32_t index, std::uint32_t x);
+  void VertexAttribI2ui(std::uint32_t index, std::uint32_t x, std::uint32_t y);
+  void VertexAttribI3ui(std::uint32_t index, std::uint32_t x, std::uint32_t y, std::uint32_t z);
+  void VertexAttribI4ui(std::uint32_t index, std::uint32_t x, std::uint32_t y, std::uint32_t z, std::uint32_t w);
+  void VertexAttribI1iv(std::uint32_t index, const int* v);
+  void VertexAttribI2iv(std::uint32_t index, const int* v);
+  void VertexAttribI3iv(std::uint32_t index, const int* v);
+  void VertexAttribI4iv(std::uint32_t index, const int* v);
+  void VertexAttribI1uiv(std::uint32_t index, const std::uint32_t* v);
+  void VertexAttribI2uiv(std::uint32_t index, const std::uint32_t* v);
+  void VertexAttribI3uiv(std::uint32_t index, const std::uint32_t* v);
+  void VertexAttribI4uiv(std::uint32_t index, const std::uint32_t* v);
+  void VertexAttribI4bv(std::uint32_t index, const std::int8_t* v);
+  void VertexAttribI4sv(std::uint32_t index, const std::int16_t* v);
+  void VertexAttribI4ubv(std::uint32_t index, const std::uint8_t* v);
+  void VertexAttribI4usv(std::uint32_t index, const std::uint16_t* v);
   /// Attribute `index`'s state in the bound vertex array: VERTEX_ATTRIB_ARRAY_ENABLED, _SIZE (1 to 4, or BGRA),
-  /// _STRIDE (as given: 0 for tightly packed), _TYPE, _NORMALIZED, _INTEGER (0: softgl's attributes are read as
-  /// floats), _DIVISOR, _BUFFER_BINDING (the buffer's id; 0 once deleted, while the array still reads its store);
-  /// and CURRENT_VERTEX_ATTRIB, the four values of VertexAttrib4f (no vertex array needed). The I forms give
-  /// CURRENT_VERTEX_ATTRIB's values rounded to integers (softgl has no integer attributes). index >=
+  /// _STRIDE (as given: 0 for tightly packed), _TYPE, _NORMALIZED, _INTEGER (1 for VertexAttribIPointer's
+  /// arrays), _DIVISOR, _BUFFER_BINDING (the buffer's id; 0 once deleted, while the array still reads its store);
+  /// and CURRENT_VERTEX_ATTRIB, the four values of VertexAttrib4f or VertexAttribI* (no vertex array needed). The
+  /// integer forms give float values rounded to integers, and all forms clamp to their type. index >=
   /// kMaxVertexAttribs: INVALID_VALUE; another name: INVALID_ENUM; an array state with no vertex array bound:
   /// INVALID_OPERATION.
   void GetVertexAttribdv(std::uint32_t index, Enum pname, double* params) const;

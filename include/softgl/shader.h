@@ -288,6 +288,13 @@ struct VertexLanes : LodTextures {
   /// read (0, 0, 0, 1); a disabled attribute reads its current value (VertexAttrib4f), by default (0, 0, 0, 1).
   vec4 attrib[kMaxVertexAttribs];
   Int vertex_id;  ///< gl_VertexID: the index of each vertex (the element value for DrawElement)
+  /// Component c (0 to 3: x, y, z, w) of an integer attribute (Context::VertexAttribIPointer, or VertexAttribI*
+  /// while its array is disabled): GLSL's `in ivec4`, and `in uvec4` as the same 32 bits. (attrib[i] holds its
+  /// integers as the floats' bits.)
+  Int AttribI(int i, int c) const {
+    const vec4& a = attrib[i];
+    return (c == 0 ? a.x : c == 1 ? a.y : c == 2 ? a.z : a.w).Bits();
+  }
   Int instance_id;  ///< gl_InstanceID: the instance of an instanced draw (DrawArraysInstanced, ...); 0 otherwise
 };
 
@@ -595,6 +602,13 @@ struct VertexIn {
   const glm::vec4* attrib;
   /// gl_VertexID: the index of this vertex (the element value for DrawElement).
   int vertex_id;
+  /// An integer attribute (Context::VertexAttribIPointer, VertexAttribI*): GLSL's `in ivec4` and `in uvec4`.
+  glm::ivec4 AttribI(int i) const {
+    glm::ivec4 v;
+    std::memcpy(&v, &attrib[i], sizeof v);
+    return v;
+  }
+  glm::uvec4 AttribUI(int i) const { return glm::uvec4(AttribI(i)); }
   /// The textures bound for this draw (SampleLod only: there are no derivatives in the vertex stage).
   const Textures* textures;
   /// gl_InstanceID: the instance of an instanced draw (DrawArraysInstanced, ...); 0 otherwise.

@@ -189,6 +189,12 @@ class Backend {
   /// divisor c.divisor.
   virtual void DrawInstanced(const std::vector<Vertex>& vertices, const std::vector<std::uint32_t>& indices,
                              const std::vector<glm::vec4>& instance_data, const std::vector<DrawVariant>& calls) = 0;
+  /// Draws `vertices` (their positions) as points (of PointSize's size) with the integer program: attribute 3 an `ivec4` read by VertexAttribIPointer(3, size, type, stride,
+  /// 0) from `bytes` (in a buffer of its own), colour = vec4(a & 255) / 255; with `bytes` empty, attribute 3
+  /// disabled and its current value VertexAttribI4i(3, current) instead. Attribute 3 is left disabled, as a float
+  /// array. Returns VERTEX_ATTRIB_ARRAY_INTEGER of attribute 3 just before the draw.
+  virtual int DrawIntegerAttribs(const std::vector<Vertex>& vertices, int size, Enum type, int stride,
+                                 const std::vector<std::uint8_t>& bytes, glm::ivec4 current) = 0;
   /// Fills a new vertex buffer through the buffer calls: the first `mapped` vertices written through
   /// MapBufferRange (with an explicit flush), the rest copied from a COPY_READ_BUFFER by CopyBufferSubData; draws
   /// BUFFER_SIZE / sizeof(Vertex) of them as `mode` with the kColor program, and returns the store as

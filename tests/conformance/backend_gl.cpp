@@ -42,6 +42,16 @@ void main() {
 }
 )";
 
+constexpr const char* kIntegerVertexShader = R"(#version 330 core
+layout(location = 0) in vec4 a_pos;
+layout(location = 3) in ivec4 a_int;
+out vec4 v_color;
+void main() {
+  gl_Position = a_pos;
+  v_color = vec4(a_int & 255) / 255.0;
+}
+)";
+
 constexpr const char* kFeedbackVertexShader = "#version 330 core" VERTEX_DECLARATIONS R"(
 void main() {
   gl_Position = a_pos;
@@ -368,6 +378,7 @@ class GlBackend final : public Backend {
       if (!instanced_error.empty()) programs_[k] = 0;
     }
     instanced_ = Link(kColorFragment, error, kInstancedVertexShader);
+    integer_ = Link(kColorFragment, error, kIntegerVertexShader);
     glUseProgram(programs_[4]);
     glUniform1i(glGetUniformLocation(programs_[4], "u_cube"), 1);
     glUseProgram(programs_[5]);
@@ -539,6 +550,31 @@ class GlBackend final : public Backend {
     glVertexAttribDivisor(3, 0);
     glBindBuffer(GL_ARRAY_BUFFER, vbo_);
     glDeleteBuffers(1, &instance_vbo);
+  }
+
+  int DrawIntegerAttribs(const std::vector<Vertex>& vertices, int size, Enum type, int stride,
+                         const std::vector<std::uint8_t>& bytes, glm::ivec4 current) override {
+    glUseProgram(integer_);
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(vertices.size() * sizeof(Vertex)), vertices.data(), GL_STREAM_DRAW);
+    GLuint ints = 0;
+    glGenBuffers(1, &ints);
+    glBindBuffer(GL_ARRAY_BUFFER, ints);
+    if (bytes.empty()) {
+      glDisableVertexAttribArray(3);
+      glVertexAttribI4i(3, current.x, current.y, current.z, current.w);
+    } else {
+      glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(bytes.size()), bytes.data(), GL_STREAM_DRAW);
+      glVertexAttribIPointer(3, size, type, stride, nullptr);
+      glEnableVertexAttribArray(3);
+    }
+    GLint integer = -1;
+    glGetVertexAttribiv(3, GL_VERTEX_ATTRIB_ARRAY_INTEGER, &integer);
+    glDrawArrays(GL_POINTS, 0, GLsizei(vertices.size()));
+    glDisableVertexAttribArray(3);
+    glVertexAttribPointer(3, 4, GL_FLOAT, GL_FALSE, 0, nullptr);
+    glBindBuffer(GL_ARRAY_BUFFER, vbo_);
+    glDeleteBuffers(1, &ints);
+    return integer;
   }
 
   std::vector<Vertex> DrawThroughBufferCalls(Enum mode, const std::vector<Vertex>& vertices, int mapped) override {
@@ -1035,7 +1071,7 @@ class GlBackend final : public Backend {
   int w_, h_;
   std::vector<std::uint8_t> buffer_;
   GLuint programs_[23] = {};
-  GLuint instanced_ = 0;
+  GLuint instanced_ = 0, integer_ = 0;
   GLuint rtt_color_ = 0;
   GLuint vao_ = 0, vbo_ = 0, ebo_ = 0;
 };

@@ -218,6 +218,18 @@ struct InstancedShader : softgl::Shader<InstancedShader, InstancedVaryings> {
   }
 };
 
+// The integer program: colour = vec4(a & 255) / 255 of integer attribute 3.
+struct IntegerShader : softgl::Shader<IntegerShader, InstancedVaryings> {
+  void Vertex(const softgl::VertexLanes& in, softgl::VertexLanesOut<InstancedVaryings>& out) const {
+    out.position = in.attrib[0];
+    const auto byte = [&](int c) { return softgl::Float(in.AttribI(3, c) & 255) / 255.0f; };
+    out.varyings.color = softgl::vec4(byte(0), byte(1), byte(2), byte(3));
+  }
+  void Fragment(const softgl::FragmentLanes<InstancedVaryings>& in, softgl::FragmentLanesOut& out) const {
+    out.color[0] = in.varyings.color;
+  }
+};
+
 struct FeedbackVaryings {
   glm::vec4 color;
   glm::vec4 extra;
@@ -533,6 +545,30 @@ class SoftglBackend final : public Backend {
     gl_.VertexAttribDivisor(3, 0);
     gl_.BindBuffer(softgl::ARRAY_BUFFER, vbo_);
     gl_.DeleteBuffer(instance_vbo);
+  }
+
+  int DrawIntegerAttribs(const std::vector<Vertex>& vertices, int size, Enum type, int stride,
+                         const std::vector<std::uint8_t>& bytes, glm::ivec4 current) override {
+    gl_.UseProgram(integer_);
+    gl_.BufferData(softgl::ARRAY_BUFFER, std::ptrdiff_t(vertices.size() * sizeof(Vertex)), vertices.data());
+    const std::uint32_t ints = gl_.GenBuffer();
+    gl_.BindBuffer(softgl::ARRAY_BUFFER, ints);
+    if (bytes.empty()) {
+      gl_.DisableVertexAttribArray(3);
+      gl_.VertexAttribI4i(3, current.x, current.y, current.z, current.w);
+    } else {
+      gl_.BufferData(softgl::ARRAY_BUFFER, std::ptrdiff_t(bytes.size()), bytes.data());
+      gl_.VertexAttribIPointer(3, size, type, stride, 0);
+      gl_.EnableVertexAttribArray(3);
+    }
+    int integer = -1;
+    gl_.GetVertexAttribiv(3, softgl::VERTEX_ATTRIB_ARRAY_INTEGER, &integer);
+    gl_.DrawArrays(softgl::POINTS, 0, int(vertices.size()));
+    gl_.DisableVertexAttribArray(3);
+    gl_.VertexAttributePointer(3, 4, softgl::FLOAT, false, 0, 0);
+    gl_.BindBuffer(softgl::ARRAY_BUFFER, vbo_);
+    gl_.DeleteBuffer(ints);
+    return integer;
   }
 
   std::vector<Vertex> DrawThroughBufferCalls(Enum mode, const std::vector<Vertex>& vertices, int mapped) override {
@@ -1005,6 +1041,7 @@ class SoftglBackend final : public Backend {
   ShadowShader shadow_;
   LayeredShader array_, volume_, array_shadow_, texture_1d_, texture_1d_array_;
   FetchSampleShader fetch_sample_;
+  IntegerShader integer_;
   TextureBufferShader texture_buffer_;
   FetchSampleArrayShader fetch_sample_array_;
   OutputsShader outputs_;

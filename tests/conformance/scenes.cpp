@@ -319,6 +319,42 @@ void DrawVariants(Backend& b) {
   b.DrawVariants(v, idx, calls);
 }
 
+// Integer attributes (VertexAttribIPointer): 4 x 4-pixel points coloured by the low bytes of an `ivec4` attribute,
+// one quadrant a type (BYTE size 4, UNSIGNED_SHORT size 3, INT size 2 with a stride of 12, UNSIGNED_INT size 4),
+// pseudo-random values over each type's whole range (so that only exact integers give the bytes), and a row whose
+// attribute is disabled and read from VertexAttribI4i's current value. Attribute 3's VERTEX_ATTRIB_ARRAY_INTEGER
+// is drawn too: the top row red where it reads 1.
+void IntegerAttributes(Backend& b) {
+  ClearBlack(b);
+  b.PointSize(4.0f);
+  std::uint32_t seed = 3;
+  const auto next = [&] {
+    seed = seed * 1664525u + 1013904223u;
+    return std::uint8_t(seed >> 24);
+  };
+  const struct Quadrant { float x, y; Enum type; int size, stride; } quadrants[] = {
+      {0, 0, BYTE, 4, 0}, {64, 0, UNSIGNED_SHORT, 3, 0}, {0, 64, INT, 2, 12}, {64, 64, UNSIGNED_INT, 4, 0}};
+  std::vector<int> integer_state;
+  for (const Quadrant& q : quadrants) {
+    std::vector<Vertex> points;
+    for (int j = 0; j < 15; ++j)
+      for (int i = 0; i < 16; ++i) points.push_back({Win(q.x + float(i) * 4 + 2, q.y + float(j) * 4 + 2)});
+    const int element = q.type == BYTE ? 1 : q.type == UNSIGNED_SHORT ? 2 : 4;
+    const int stride = q.stride ? q.stride : element * q.size;
+    std::vector<std::uint8_t> bytes(points.size() * std::size_t(stride));
+    for (std::uint8_t& v : bytes) v = next();
+    integer_state.push_back(b.DrawIntegerAttribs(points, q.size, q.type, q.stride, bytes, {}));
+  }
+  std::vector<Vertex> row;
+  for (int i = 0; i < 32; ++i) row.push_back({Win(float(i) * 4 + 2, 62)});
+  integer_state.push_back(b.DrawIntegerAttribs(row, 4, INT, 0, {}, glm::ivec4(-1, 0x1234, 0x7F800001, -200)));
+  std::vector<Vertex> flags;
+  for (std::size_t k = 0; k < integer_state.size(); ++k)
+    flags.push_back({Win(float(k) * 8 + 4, 126), integer_state[k] == 1 ? glm::vec4(1, 0, 0, 1) : glm::vec4(0, 0, 1, 1)});
+  b.Draw(POINTS, flags);
+  b.PointSize(1.0f);
+}
+
 // A 4 x 3 grid of cells drawn by instanced calls, each instance placed by attribute 3 (divisor 1 or 2) and
 // darkened by gl_InstanceID: row 0 one quad by DrawElementsInstanced, row 1 a fan by DrawArraysInstanced with
 // divisor 2 (instances 2k and 2k + 1 in the same cell, the odd one on top), row 2 another quad through relative
@@ -2305,6 +2341,7 @@ const std::vector<SceneInfo>& Scenes() {
       {"culling", kSize, kSize, Check::kExact, Culling},
       {"draw_variants", kSize, kSize, Check::kColor, DrawVariants},
       {"instancing", kSize, kSize, Check::kColor, Instancing},
+      {"integer_attributes", kSize, kSize, Check::kExact, IntegerAttributes},
       {"primitive_restart", kSize, kSize, Check::kColor, PrimitiveRestart},
       {"buffers", kSize, kSize, Check::kColor, Buffers},
       {"clipping", kSize, kSize, Check::kColor, Clipping},

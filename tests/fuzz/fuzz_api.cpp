@@ -26,7 +26,7 @@ struct FuzzShader : softgl::Shader<FuzzShader, Vary> {
     const float layer = in.attrib[2].w * 4.0f;
     out.layer = std::isfinite(layer) ? int(std::clamp(layer, -4.0f, 8.0f)) : 0;
     out.point_size = in.attrib[1].x * 8.0f;
-    out.varyings.a = in.attrib[1];
+    out.varyings.a = in.attrib[1] + glm::vec4(in.AttribI(3) & 7) * 0.01f;  // (attribute 3 may be an integer one)
     out.varyings.dir = glm::vec3(in.attrib[2]);
     out.varyings.uv = glm::vec2(in.attrib[2]);
   }
@@ -261,13 +261,25 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       case 4: gl.GenVertexArray(); break;
       case 5: gl.BindVertexArray(id()); break;
       case 6:
-        gl.VertexAttributePointer(std::uint32_t(in.Int(0, 16)), in.Byte() % 8 ? in.Int(0, 5) : int(BGRA), in.Enum(kTypes), in.Byte() & 1,
-                                  in.Int(-4, 64), std::size_t(std::uint32_t(in.Int(0, 256))));
+        if (in.Byte() % 4)
+          gl.VertexAttributePointer(std::uint32_t(in.Int(0, 16)), in.Byte() % 8 ? in.Int(0, 5) : int(BGRA), in.Enum(kTypes), in.Byte() & 1,
+                                    in.Int(-4, 64), std::size_t(std::uint32_t(in.Int(0, 256))));
+        else  // integer arrays (any type: the float ones are errors)
+          gl.VertexAttribIPointer(std::uint32_t(in.Int(0, 16)), in.Int(0, 5), in.Enum(kTypes), in.Int(-4, 64),
+                                  std::size_t(std::uint32_t(in.Int(0, 256))));
         break;
       case 7: gl.EnableVertexAttribArray(std::uint32_t(in.Int(0, 16))); break;
       case 8:
-        if (in.Byte() % 2) gl.DisableVertexAttribArray(std::uint32_t(in.Int(0, 16)));
-        else gl.VertexAttribDivisor(std::uint32_t(in.Int(0, 16)), std::uint32_t(in.Int(0, 3)));
+        switch (in.Byte() % 4) {
+          case 0: gl.DisableVertexAttribArray(std::uint32_t(in.Int(0, 16))); break;
+          case 1: gl.VertexAttribDivisor(std::uint32_t(in.Int(0, 16)), std::uint32_t(in.Int(0, 3))); break;
+          case 2: gl.VertexAttribI4i(std::uint32_t(in.Int(0, 16)), in.Get<int>(), in.Get<int>(), in.Get<int>(), in.Get<int>()); break;
+          default: {
+            const std::uint32_t v[4] = {in.Get<std::uint32_t>(), in.Get<std::uint32_t>(), 0, 1};
+            gl.VertexAttribI4uiv(std::uint32_t(in.Int(0, 16)), in.Byte() % 8 ? v : nullptr);
+            break;
+          }
+        }
         break;
       case 9: {  // one of the programs, two of them with a geometry stage
         const int which = in.Byte() % 4;
