@@ -262,12 +262,34 @@ struct FieldVaryings {
   vec3 color;
 };
 
-// One cube per instance: gl_InstanceID places it on a kSide x kSide grid; attribute 4 (divisor 1) holds its
-// height and attribute 5 (divisor 1) its colour, as normalized bytes.
-struct FieldShader : softgl::Shader<FieldShader, FieldVaryings> {
-  static constexpr int kSide = 100;
+// The fragment stage of the instanced cubes: the colour lit by one directional light, with some ambient.
+template <class Derived>
+struct LitInstances : softgl::Shader<Derived, FieldVaryings> {
   glm::mat4 view_proj{1.0f};
   glm::vec3 light_dir = glm::normalize(glm::vec3(0.5f, 0.8f, 0.3f));
+  void Fragment(const FragmentLanes<FieldVaryings>& in, FragmentLanesOut& out) const {
+    const Float diffuse = max(dot(normalize(in.varyings.normal), light_dir), 0.0f);
+    out.color[0] = vec4(in.varyings.color * (0.3f + 0.7f * diffuse), 1.0f);
+  }
+};
+
+// Clears to `clear` and draws `instances` of the cube bound (its `indices` indices) with `shader`, depth-tested
+// and back faces culled; the image.
+template <class Shader>
+softgl::Image DrawCubes(softgl::Context& gl, Shader& shader, glm::vec3 clear, int indices, int instances) {
+  gl.UseProgram(shader);
+  gl.Enable(softgl::DEPTH_TEST);
+  gl.Enable(softgl::CULL_FACE);
+  gl.ClearColor(clear.r, clear.g, clear.b, 1.0f);
+  gl.Clear(softgl::COLOR_BUFFER_BIT | softgl::DEPTH_BUFFER_BIT);
+  gl.DrawElementsInstanced(softgl::TRIANGLES, indices, softgl::UNSIGNED_INT, 0, instances);
+  return gl.ReadPixels();
+}
+
+// One cube per instance: gl_InstanceID places it on a kSide x kSide grid; attribute 4 (divisor 1) holds its
+// height and attribute 5 (divisor 1) its colour, as normalized bytes.
+struct FieldShader : LitInstances<FieldShader> {
+  static constexpr int kSide = 100;
   void Vertex(const VertexLanes& in, VertexLanesOut<FieldVaryings>& out) const {
     const Float col = Float(in.instance_id % kSide), row = Float(in.instance_id / kSide);
     const Float height = in.attrib[4].x;
@@ -276,10 +298,6 @@ struct FieldShader : softgl::Shader<FieldShader, FieldVaryings> {
     out.position = view_proj * vec4(world, 1.0f);
     out.varyings.normal = vec3(in.attrib[1]);  // scaling along the axes keeps a cube's face normals
     out.varyings.color = vec3(in.attrib[5]);
-  }
-  void Fragment(const FragmentLanes<FieldVaryings>& in, FragmentLanesOut& out) const {
-    const Float diffuse = max(dot(normalize(in.varyings.normal), light_dir), 0.0f);
-    out.color[0] = vec4(in.varyings.color * (0.3f + 0.7f * diffuse), 1.0f);
   }
 };
 
@@ -317,13 +335,68 @@ softgl::Image Instancing(int width, int height) {
   FieldShader shader;
   const glm::mat4 view = glm::lookAt(glm::vec3(-50.0f, 56.0f, 74.0f), glm::vec3(2.0f, -8.0f, 4.0f), glm::vec3(0, 1, 0));
   shader.view_proj = Projection(width, height, 50.0f, 1.0f, 300.0f) * view;
-  gl.UseProgram(shader);
-  gl.Enable(softgl::DEPTH_TEST);
-  gl.Enable(softgl::CULL_FACE);
-  gl.ClearColor(0.08f, 0.09f, 0.12f, 1.0f);
-  gl.Clear(softgl::COLOR_BUFFER_BIT | softgl::DEPTH_BUFFER_BIT);
-  gl.DrawElementsInstanced(softgl::TRIANGLES, int(cube.indices.size()), softgl::UNSIGNED_INT, 0, kInstances);
-  return gl.ReadPixels();
+  return DrawCubes(gl, shader, glm::vec3(0.08f, 0.09f, 0.12f), int(cube.indices.size()), kInstances);
+}
+
+namespace {
+
+// One cube per instance, its model matrix read from a buffer texture (unit 0: four RGBA32F texels, the columns, per
+// instance) by gl_InstanceID, its colour from a palette (unit 1: a buffer texture of RGBA8 texels) at the index an
+// integer attribute gives (attribute 4, VertexAttribIPointer, divisor 1).
+struct HelixShader : LitInstances<HelixShader> {
+  void Vertex(const VertexLanes& in, VertexLanesOut<FieldVaryings>& out) const {
+    const softgl::Int first = in.instance_id * 4;
+    const softgl::mat4 model(in.TexelFetchBuffer(0, first), in.TexelFetchBuffer(0, first + 1),
+                             in.TexelFetchBuffer(0, first + 2), in.TexelFetchBuffer(0, first + 3));
+    out.position = view_proj * (model * vec4(vec3(in.attrib[0]), 1.0f));
+    out.varyings.normal = vec3(model * vec4(vec3(in.attrib[1]), 0.0f));  // rotation and uniform scale only
+    out.varyings.color = vec3(in.TexelFetchBuffer(1, in.AttribI(4, 0)));
+  }
+};
+
+}  // namespace
+
+softgl::Image BufferTextures(int width, int height) {
+  softgl::Context gl(width, height);
+  const Mesh cube = MakeCube();
+  UploadLitMesh(gl, cube);
+  // 1,200 cubes along a double helix of four turns: a matrix (four texels) and a palette index each.
+  constexpr int kInstances = 1200, kPairs = kInstances / 2;
+  std::vector<glm::mat4> models(kInstances);
+  std::vector<std::uint8_t> palette_index(kInstances);
+  for (int i = 0; i < kInstances; ++i) {
+    const float t = float(i / 2) / float(kPairs), angle = t * 4.0f * 6.2831853f + ((i % 2) ? 3.14159265f : 0.0f);
+    const glm::vec3 at(3.2f * std::cos(angle), t * 16.0f - 8.0f, 3.2f * std::sin(angle));
+    models[std::size_t(i)] = glm::scale(glm::rotate(glm::translate(glm::mat4(1.0f), at), angle * 2.0f, glm::vec3(0.3f, 1, 0.2f)),
+                                        glm::vec3(0.3f + 0.12f * std::sin(t * 40.0f)));
+    palette_index[std::size_t(i)] = std::uint8_t((i / 2) % 48 / 6 + (i % 2) * 8);
+  }
+  const std::uint8_t palette[16][4] = {{230, 57, 70, 255},   {241, 130, 60, 255},  {244, 200, 70, 255},
+                                       {140, 200, 80, 255},  {60, 180, 140, 255},  {60, 150, 220, 255},
+                                       {100, 90, 210, 255},  {190, 80, 190, 255},  {250, 250, 250, 255},
+                                       {200, 210, 225, 255}, {150, 170, 195, 255}, {110, 130, 160, 255},
+                                       {150, 170, 195, 255}, {200, 210, 225, 255}, {250, 250, 250, 255},
+                                       {225, 225, 235, 255}};
+  const auto buffer_texture = [&](int unit, softgl::Enum format, const void* data, std::size_t bytes) {
+    gl.ActiveTexture(softgl::TEXTURE0 + std::uint32_t(unit));
+    gl.BindTexture(softgl::TEXTURE_BUFFER, gl.GenTexture());
+    const std::uint32_t buffer = gl.GenBuffer();
+    gl.BindBuffer(softgl::TEXTURE_BUFFER, buffer);
+    gl.BufferData(softgl::TEXTURE_BUFFER, std::ptrdiff_t(bytes), data);
+    gl.TexBuffer(softgl::TEXTURE_BUFFER, format, buffer);
+  };
+  buffer_texture(0, softgl::RGBA32F, models.data(), models.size() * sizeof(glm::mat4));  // (columns, in order)
+  buffer_texture(1, softgl::RGBA8, palette, sizeof palette);
+  gl.BindBuffer(softgl::ARRAY_BUFFER, gl.GenBuffer());
+  gl.BufferData(softgl::ARRAY_BUFFER, std::ptrdiff_t(palette_index.size()), palette_index.data());
+  gl.VertexAttribIPointer(4, 1, softgl::UNSIGNED_BYTE, 0, 0);
+  gl.EnableVertexAttribArray(4);
+  gl.VertexAttribDivisor(4, 1);
+
+  HelixShader shader;
+  const glm::mat4 view = glm::lookAt(glm::vec3(0.0f, 5.0f, 20.0f), glm::vec3(0.0f, 0.0f, 0.0f), glm::vec3(0, 1, 0));
+  shader.view_proj = Projection(width, height, 55.0f, 1.0f, 100.0f) * view;
+  return DrawCubes(gl, shader, glm::vec3(0.06f, 0.07f, 0.1f), int(cube.indices.size()), kInstances);
 }
 
 namespace {

@@ -94,6 +94,11 @@ softgl::Image EnvironmentMap(int width, int height);
 /// attributes with divisor 1 give its height and colour.
 softgl::Image Instancing(int width, int height);
 
+/// 1,200 lit cubes along a double helix from one instanced draw: each cube's model matrix read from a buffer
+/// texture by gl_InstanceID, its colour from a palette (a second buffer texture) at an index an integer attribute
+/// gives.
+softgl::Image BufferTextures(int width, int height);
+
 /// A fountain of 1,500 particles drawn as point sprites in one draw: gl_PointSize by distance, a soft disc shaped
 /// from gl_PointCoord, additive blending.
 softgl::Image Particles(int width, int height);

@@ -102,6 +102,9 @@ TEST_CASE("image: cascaded shadows", "[image][layers]") {
 TEST_CASE("image: post-processing", "[image]") { CompareWithGolden("post_process", scenes::PostProcess(640, 480)); }
 
 TEST_CASE("image: instancing", "[image]") { CompareWithGolden("instancing", scenes::Instancing(800, 500)); }
+TEST_CASE("image: buffer_texture", "[image]") {
+  CompareWithGolden("buffer_texture", scenes::BufferTextures(800, 500));
+}
 
 TEST_CASE("image: particles", "[image]") { CompareWithGolden("particles", scenes::Particles(640, 400)); }
 TEST_CASE("image: feedback_particles", "[image]") {
