@@ -231,12 +231,14 @@ namespace {
 
 // The checks every CompressedTexImage* call makes on its format, in OpenGL's order after the target's: the format
 // (INVALID_ENUM unless one softgl decodes), then where the format may go (INVALID_ENUM too: S3TC and RGTC are
-// 2D-block formats, for TEXTURE_2D, cube faces and TEXTURE_2D_ARRAY only). Null with the error set.
+// 2D-block formats, for TEXTURE_2D, cube faces and TEXTURE_2D_ARRAY only; BPTC goes into TEXTURE_3D as well, a
+// slice's blocks after another's). Null with the error set.
 const detail::CompressedFormat* CompressedFormatFor(ContextState& s, const char* what, Enum target, Enum format) {
   const detail::CompressedFormat* f = detail::CompressedFormatOf(format);
-  if (!f) return s.SetError(INVALID_ENUM, what, "internalformat is not a compressed format softgl decodes (the S3TC and RGTC formats)"), nullptr;
-  if (!IsTexImageTarget(target) && target != TEXTURE_2D_ARRAY)
-    return s.SetError(INVALID_ENUM, what, "S3TC and RGTC images are two-dimensional: TEXTURE_2D, a cube face or TEXTURE_2D_ARRAY only"), nullptr;
+  if (!f) return s.SetError(INVALID_ENUM, what, "internalformat is not a compressed format softgl decodes (the S3TC, RGTC and BPTC formats)"), nullptr;
+  const bool volume = target == TEXTURE_3D && f->kind == detail::CompressedFormat::Kind::kBc7;
+  if (!IsTexImageTarget(target) && target != TEXTURE_2D_ARRAY && !volume)
+    return s.SetError(INVALID_ENUM, what, "S3TC and RGTC images are two-dimensional: TEXTURE_2D, a cube face or TEXTURE_2D_ARRAY only (BPTC: TEXTURE_3D too)"), nullptr;
   return f;
 }
 
@@ -246,9 +248,10 @@ void DefineCompressed(ContextState& s, const char* what, Enum target, int level,
                       int d, int border, int image_size, const void* data) {
   const detail::CompressedFormat* f = CompressedFormatFor(s, what, target, internal_format);
   if (!f) return;
-  const int max_depth = target == TEXTURE_2D_ARRAY ? kMaxArrayTextureLayers : 1;
-  if (level < 0 || level >= LevelCount(target) || w < 0 || h < 0 || d < 0 || w > kMaxTextureSize ||
-      h > kMaxTextureSize || d > max_depth || border != 0)
+  const int max_depth = target == TEXTURE_2D_ARRAY ? kMaxArrayTextureLayers : target == TEXTURE_3D ? kMax3DTextureSize : 1;
+  const int max_size = target == TEXTURE_3D ? kMax3DTextureSize : kMaxTextureSize;
+  if (level < 0 || level >= LevelCount(target) || w < 0 || h < 0 || d < 0 || w > max_size || h > max_size ||
+      d > max_depth || border != 0)
     return s.SetError(INVALID_VALUE, what, "a numeric argument is out of range");
   if (CubeFaceIndex(target) >= 0 && w != h) return s.SetError(INVALID_VALUE, what, "cube map faces must be square");
   const std::uint64_t bytes = detail::CompressedImageBytes(*f, w, h, d);
@@ -300,7 +303,7 @@ void Context::CompressedTexImage1D(Enum target, int level, Enum internal_format,
   auto& s = *state_;
   (void)level, (void)width, (void)border, (void)image_size, (void)data;
   if (target != TEXTURE_1D) return s.SetError(INVALID_ENUM, __func__, "target must be TEXTURE_1D");
-  if (detail::CompressedFormatOf(internal_format)) return s.SetError(INVALID_ENUM, __func__, "OpenGL 3.3 has no one-dimensional compressed format: S3TC and RGTC are 2D-block formats");
+  if (detail::CompressedFormatOf(internal_format)) return s.SetError(INVALID_ENUM, __func__, "OpenGL 3.3 has no one-dimensional compressed format: S3TC, RGTC and BPTC are 2D-block formats");
   s.SetError(INVALID_ENUM, __func__, "internalformat is not a compressed format");
 }
 
@@ -316,7 +319,7 @@ void Context::CompressedTexImage3D(Enum target, int level, Enum internal_format,
                                    int border, int image_size, const void* data) {
   state_->Sync(__func__);
   auto& s = *state_;
-  if (target != TEXTURE_2D_ARRAY && target != TEXTURE_3D) return s.SetError(INVALID_ENUM, __func__, "target must be TEXTURE_2D_ARRAY");
+  if (target != TEXTURE_2D_ARRAY && target != TEXTURE_3D) return s.SetError(INVALID_ENUM, __func__, "target must be TEXTURE_2D_ARRAY or (BPTC) TEXTURE_3D");
   DefineCompressed(s, __func__, target, level, internal_format, width, height, depth, border, image_size, data);
 }
 
@@ -326,7 +329,7 @@ void Context::CompressedTexSubImage1D(Enum target, int level, int x, int width, 
   auto& s = *state_;
   (void)level, (void)x, (void)width, (void)format, (void)image_size, (void)data;
   if (target != TEXTURE_1D) return s.SetError(INVALID_ENUM, __func__, "target must be TEXTURE_1D");
-  s.SetError(INVALID_ENUM, __func__, "OpenGL 3.3 has no one-dimensional compressed format: S3TC and RGTC are 2D-block formats");
+  s.SetError(INVALID_ENUM, __func__, "OpenGL 3.3 has no one-dimensional compressed format: S3TC, RGTC and BPTC are 2D-block formats");
 }
 
 void Context::CompressedTexSubImage2D(Enum target, int level, int x, int y, int width, int height, Enum format,

@@ -30,9 +30,9 @@ struct LoadedImage {
 
 /// Decodes `path`. Decoders return the top row first; flip_vertically puts the bottom row first, which is where
 /// OpenGL's texture coordinate t = 0 is (for a DDS file, by reordering the blocks and the rows inside them, which
-/// needs each level's height a multiple of 4, or below 4). Returns false with a message for a missing, truncated or
-/// corrupt file, or a DDS file softgl cannot take (BPTC, cube maps, volumes, arrays, uncompressed data). `srgb`
-/// picks the sRGB form of a DDS file's S3TC format.
+/// needs each level's height a multiple of 4, or below 4, and is refused for BC7). Returns false with a message for
+/// a missing, truncated or corrupt file, or a DDS file softgl cannot take (BC6H, cube maps, volumes, arrays,
+/// uncompressed data). `srgb` picks the sRGB form of a DDS file's S3TC or BC7 format.
 bool LoadImageFile(const std::string& path, bool flip_vertically, LoadedImage& out, std::string* error,
                    bool srgb = false);
 

@@ -1,4 +1,4 @@
-// texture_compression.cpp — decoding S3TC and RGTC blocks into level texels.
+// texture_compression.cpp — decoding S3TC, RGTC and BPTC (BC7) blocks into level texels.
 #include "texture_compression.h"
 
 #include <algorithm>
@@ -25,7 +25,159 @@ constexpr CompressedFormat kFormats[] = {
     {COMPRESSED_SIGNED_RED_RGTC1, 8, R32F, Kind::kRgtc1Signed},
     {COMPRESSED_RG_RGTC2, 16, RG8, Kind::kRgtc2},
     {COMPRESSED_SIGNED_RG_RGTC2, 16, RG32F, Kind::kRgtc2Signed},
+    {COMPRESSED_RGBA_BPTC_UNORM, 16, RGBA8, Kind::kBc7},
+    {COMPRESSED_SRGB_ALPHA_BPTC_UNORM, 16, SRGB8_ALPHA8, Kind::kBc7},
 };
+
+// ---- BPTC (BC7) -----------------------------------------------------------------------------------------------
+//
+// The partition shapes and anchor texels of BC7 (ARB_texture_compression_bptc's tables): kShapes2[p] bit t set puts
+// texel t in subset 1 of a two-subset block; kShapes3[p] holds each texel's subset of a three-subset block in two
+// bits (texel t at bits 2t); kAnchor2, kAnchor3a and kAnchor3b give the anchor texel of subset 1 (and 2).
+constexpr std::uint16_t kShapes2[64] = {
+    0xCCCC, 0x8888, 0xEEEE, 0xECC8, 0xC880, 0xFEEC, 0xFEC8, 0xEC80,
+    0xC800, 0xFFEC, 0xFE80, 0xE800, 0xFFE8, 0xFF00, 0xFFF0, 0xF000,
+    0xF710, 0x008E, 0x7100, 0x08CE, 0x008C, 0x7310, 0x3100, 0x8CCE,
+    0x088C, 0x3110, 0x6666, 0x366C, 0x17E8, 0x0FF0, 0x718E, 0x399C,
+    0xAAAA, 0xF0F0, 0x5A5A, 0x33CC, 0x3C3C, 0x55AA, 0x9696, 0xA55A,
+    0x73CE, 0x13C8, 0x324C, 0x3BDC, 0x6996, 0xC33C, 0x9966, 0x0660,
+    0x0272, 0x04E4, 0x4E40, 0x2720, 0xC936, 0x936C, 0x39C6, 0x639C,
+    0x9336, 0x9CC6, 0x817E, 0xE718, 0xCCF0, 0x0FCC, 0x7744, 0xEE22,
+};
+constexpr std::uint8_t kAnchor2[64] = {
+    15, 15, 15, 15, 15, 15, 15, 15, 15, 15, 15, 15, 15, 15, 15, 15,
+    15, 2, 8, 2, 2, 8, 8, 15, 2, 8, 2, 2, 8, 8, 2, 2,
+    15, 15, 6, 8, 2, 8, 15, 15, 2, 8, 2, 2, 2, 15, 15, 6,
+    6, 2, 6, 8, 15, 15, 2, 2, 15, 15, 15, 15, 15, 2, 2, 15,
+};
+constexpr std::uint32_t kShapes3[64] = {
+    0xAA685050, 0x6A5A5040, 0x5A5A4200, 0x5450A0A8, 0xA5A50000, 0xA0A05050,
+    0x5555A0A0, 0x5A5A5050, 0xAA550000, 0xAA555500, 0xAAAA5500, 0x90909090,
+    0x94949494, 0xA4A4A4A4, 0xA9A59450, 0x2A0A4250, 0xA5945040, 0x0A425054,
+    0xA5A5A500, 0x55A0A0A0, 0xA8A85454, 0x6A6A4040, 0xA4A45000, 0x1A1A0500,
+    0x0050A4A4, 0xAAA59090, 0x14696914, 0x69691400, 0xA08585A0, 0xAA821414,
+    0x50A4A450, 0x6A5A0200, 0xA9A58000, 0x5090A0A8, 0xA8A09050, 0x24242424,
+    0x00AA5500, 0x24924924, 0x24499224, 0x50A50A50, 0x500AA550, 0xAAAA4444,
+    0x66660000, 0xA5A0A5A0, 0x50A050A0, 0x69286928, 0x44AAAA44, 0x66666600,
+    0xAA444444, 0x54A854A8, 0x95809580, 0x96969600, 0xA85454A8, 0x80959580,
+    0xAA141414, 0x96960000, 0xAAAA1414, 0xA05050A0, 0xA0A5A5A0, 0x96000000,
+    0x40804080, 0xA9A8A9A8, 0xAAAAAA44, 0x2A4A5254,
+};
+constexpr std::uint8_t kAnchor3a[64] = {
+    3, 3, 15, 15, 8, 3, 15, 15, 8, 8, 6, 6, 6, 5, 3, 3,
+    3, 3, 8, 15, 3, 3, 6, 10, 5, 8, 8, 6, 8, 5, 15, 15,
+    8, 15, 3, 5, 6, 10, 8, 15, 15, 3, 15, 5, 15, 15, 15, 15,
+    3, 15, 5, 5, 5, 8, 5, 10, 5, 10, 8, 13, 15, 12, 3, 3,
+};
+constexpr std::uint8_t kAnchor3b[64] = {
+    15, 8, 8, 3, 15, 15, 3, 8, 15, 15, 15, 15, 15, 15, 15, 8,
+    15, 8, 15, 3, 15, 8, 15, 8, 3, 15, 6, 10, 15, 15, 10, 8,
+    15, 3, 15, 10, 10, 8, 9, 10, 6, 15, 8, 15, 3, 6, 6, 8,
+    15, 3, 15, 15, 15, 15, 15, 15, 15, 15, 15, 15, 3, 15, 15, 8,
+};
+
+// One BC7 mode's layout: subsets, partition bits, rotation bits, index-selection bits, colour and alpha bits an
+// endpoint, p-bits (one an endpoint, or one shared by a subset's two), and the bits of the two index sets.
+struct Bc7Mode {
+  int subsets, partition_bits, rotation_bits, selection_bits, colour_bits, alpha_bits;
+  bool endpoint_pbits, shared_pbits;
+  int index_bits, index2_bits;
+};
+constexpr Bc7Mode kBc7Modes[8] = {
+    {3, 4, 0, 0, 4, 0, true, false, 3, 0}, {2, 6, 0, 0, 6, 0, false, true, 3, 0},
+    {3, 6, 0, 0, 5, 0, false, false, 2, 0}, {2, 6, 0, 0, 7, 0, true, false, 2, 0},
+    {1, 0, 2, 1, 5, 6, false, false, 2, 3}, {1, 0, 2, 0, 7, 8, false, false, 2, 2},
+    {1, 0, 0, 0, 7, 7, true, false, 4, 0},  {2, 6, 0, 0, 5, 5, true, false, 2, 0},
+};
+// The interpolation weights (of 64) for 2-, 3- and 4-bit indices.
+constexpr int kWeights2[4] = {0, 21, 43, 64};
+constexpr int kWeights3[8] = {0, 9, 18, 27, 37, 46, 55, 64};
+constexpr int kWeights4[16] = {0, 4, 9, 13, 17, 21, 26, 30, 34, 38, 43, 47, 51, 55, 60, 64};
+
+// The block's bits from the first byte's lowest on.
+struct BlockBits {
+  const std::uint8_t* b;
+  int pos = 0;
+  int Take(int n) {
+    int v = 0;
+    for (int i = 0; i < n; ++i, ++pos) v |= ((b[pos >> 3] >> (pos & 7)) & 1) << i;
+    return v;
+  }
+};
+
+// An endpoint of `bits` bits (p-bit included) widened to 8 by repeating its high bits.
+int Widen(int v, int bits) { return bits >= 8 ? v : (v << (8 - bits)) | (v >> (2 * bits - 8)); }
+
+int Interpolate(int e0, int e1, int index, int index_bits) {
+  const int w = index_bits == 2 ? kWeights2[index] : index_bits == 3 ? kWeights3[index] : kWeights4[index];
+  return ((64 - w) * e0 + w * e1 + 32) >> 6;
+}
+
+// Decodes a BC7 block into 16 RGBA bytes a texel (as floats 0..255); a block of no mode (its first byte 0) is
+// transparent black.
+void Bc7Block(const std::uint8_t* block, float out[16][4]) {
+  BlockBits in{block};
+  int m = 0;
+  while (m < 8 && in.Take(1) == 0) ++m;
+  if (m == 8) {
+    for (int t = 0; t < 16; ++t) out[t][0] = out[t][1] = out[t][2] = out[t][3] = 0.0f;
+    return;
+  }
+  const Bc7Mode& mode = kBc7Modes[m];
+  const int partition = in.Take(mode.partition_bits), rotation = in.Take(mode.rotation_bits);
+  const int selection = in.Take(mode.selection_bits);
+  int e[3][2][4] = {};  // [subset][endpoint][channel]
+  for (int c = 0; c < 3; ++c)
+    for (int s = 0; s < mode.subsets; ++s)
+      for (int k = 0; k < 2; ++k) e[s][k][c] = in.Take(mode.colour_bits);
+  for (int s = 0; s < mode.subsets; ++s)
+    for (int k = 0; k < 2; ++k) e[s][k][3] = mode.alpha_bits ? in.Take(mode.alpha_bits) : 255;
+  int colour_bits = mode.colour_bits, alpha_bits = mode.alpha_bits;
+  if (mode.endpoint_pbits || mode.shared_pbits) {
+    for (int s = 0; s < mode.subsets; ++s) {
+      const int shared = mode.shared_pbits ? in.Take(1) : 0;
+      for (int k = 0; k < 2; ++k) {
+        const int p = mode.endpoint_pbits ? in.Take(1) : shared;
+        for (int c = 0; c < 4; ++c)
+          if (c < 3 || mode.alpha_bits) e[s][k][c] = e[s][k][c] << 1 | p;
+      }
+    }
+    ++colour_bits;
+    if (alpha_bits) ++alpha_bits;
+  }
+  for (int s = 0; s < mode.subsets; ++s)
+    for (int k = 0; k < 2; ++k) {
+      for (int c = 0; c < 3; ++c) e[s][k][c] = Widen(e[s][k][c], colour_bits);
+      if (alpha_bits) e[s][k][3] = Widen(e[s][k][3], alpha_bits);
+    }
+  // Each texel's subset, and the anchors whose index has one bit less.
+  int subset[16];
+  for (int t = 0; t < 16; ++t)
+    subset[t] = mode.subsets == 2 ? (kShapes2[partition] >> t) & 1
+                : mode.subsets == 3 ? int(kShapes3[partition] >> (2 * t)) & 3 : 0;
+  const auto anchor = [&](int t) {
+    return t == 0 || (mode.subsets == 2 && t == kAnchor2[partition]) ||
+           (mode.subsets == 3 && (t == kAnchor3a[partition] || t == kAnchor3b[partition]));
+  };
+  int index[16], index2[16] = {};
+  for (int t = 0; t < 16; ++t) index[t] = in.Take(mode.index_bits - (anchor(t) ? 1 : 0));
+  if (mode.index2_bits)
+    for (int t = 0; t < 16; ++t) index2[t] = in.Take(mode.index2_bits - (t == 0 ? 1 : 0));
+  for (int t = 0; t < 16; ++t) {
+    const int (&ends)[2][4] = e[subset[t]];
+    int rgba[4];
+    // Colour from the first index set and alpha from the second (mode 4 with its selection bit: the other way).
+    const bool swap = selection == 1;
+    const int ci = mode.index2_bits && swap ? index2[t] : index[t];
+    const int cb = mode.index2_bits && swap ? mode.index2_bits : mode.index_bits;
+    const int ai = mode.index2_bits ? (swap ? index[t] : index2[t]) : index[t];
+    const int ab = mode.index2_bits ? (swap ? mode.index_bits : mode.index2_bits) : mode.index_bits;
+    for (int c = 0; c < 3; ++c) rgba[c] = Interpolate(ends[0][c], ends[1][c], ci, cb);
+    rgba[3] = Interpolate(ends[0][3], ends[1][3], ai, ab);
+    if (rotation > 0) std::swap(rgba[3], rgba[rotation - 1]);
+    for (int c = 0; c < 4; ++c) out[t][c] = float(rgba[c]);
+  }
+}
 
 // k / n of the way from a to b, by an 8-bit weight w = floor(255 k / n): (a (256 - w) + b w) / 256 rounded down.
 int Mix(int a, int b, int k, int n) {
@@ -117,6 +269,7 @@ std::uint64_t CompressedImageBytes(const CompressedFormat& f, int w, int h, int 
 void DecodeBlock(const CompressedFormat& f, const std::uint8_t* block, float out[16][4]) {
   int v[16];
   switch (f.kind) {
+    case Kind::kBc7: Bc7Block(block, out); return;
     case Kind::kDxt1Rgb: ColourBlock(block, false, 255, out); return;
     case Kind::kDxt1Rgba: ColourBlock(block, false, 0, out); return;
     case Kind::kDxt3:

@@ -3,8 +3,8 @@
 // softgl decodes compressed images when they are defined (CompressedTexImage*, CompressedTexSubImage*) into an
 // ordinary level format, which every sampling path then reads as it reads any other level; the level also keeps
 // the blocks as given, for GetCompressedTexImage and TEXTURE_COMPRESSED_IMAGE_SIZE. A compressed level so costs its
-// decoded size (4 bytes a texel for S3TC, 1 or 2 for unsigned RGTC, 4 or 8 for signed RGTC) plus its blocks (half a
-// byte or one byte a texel).
+// decoded size (4 bytes a texel for S3TC and BC7, 1 or 2 for unsigned RGTC, 4 or 8 for signed RGTC) plus its blocks
+// (half a byte or one byte a texel).
 //
 // Each format's texels are 4 x 4 blocks, rows of blocks from the image's first row (the bottom, as OpenGL orders
 // rows), a block's texels row by row from its own first row; blocks past the image's right or top edge are whole
@@ -22,6 +22,10 @@
 // - DXT5 alpha and RGTC channels: two 8-bit endpoints a0, a1 (signed bytes for signed RGTC) and 3 bits an index: 0
 //   a0, 1 a1, and with a0 > a1 index i in 2..7 Mix(a0, a1, i - 1, 7), otherwise i in 2..5 Mix(a0, a1, i - 1, 5), 6
 //   the least value (0, or -127 signed) and 7 the greatest (255, or 127).
+// - BC7 (BPTC's RGBA forms) defines its arithmetic itself: endpoints (with their p-bits) widened to 8 bits by
+//   repeating their high bits, and index i of a 2-, 3- or 4-bit set the weight w = BC7's table value (of 64), giving
+//   ((64 - w) e0 + w e1 + 32) / 64 rounded down; a block whose first byte has no mode bit decodes to transparent
+//   black.
 #pragma once
 
 #include <cstddef>
@@ -35,7 +39,9 @@ struct TextureLevel;
 
 /// A compressed format: its enum, its block's bytes, the level format it decodes into, and its kind.
 struct CompressedFormat {
-  enum class Kind : std::uint8_t { kDxt1Rgb, kDxt1Rgba, kDxt3, kDxt5, kRgtc1, kRgtc1Signed, kRgtc2, kRgtc2Signed };
+  enum class Kind : std::uint8_t {
+    kDxt1Rgb, kDxt1Rgba, kDxt3, kDxt5, kRgtc1, kRgtc1Signed, kRgtc2, kRgtc2Signed, kBc7
+  };
   Enum format;
   int block_bytes;  // 8 or 16
   Enum decoded;     // RGB8, RGBA8, SRGB8, SRGB8_ALPHA8, R8, RG8, R32F or RG32F

@@ -118,6 +118,62 @@ TEST_CASE("alpha and RGTC blocks: eight values or six and the extremes, unsigned
   }
 }
 
+namespace {
+// A BC7 block written bit by bit, lowest first (the layout ARB_texture_compression_bptc gives each mode).
+struct Bc7Writer {
+  std::vector<std::uint8_t> block = std::vector<std::uint8_t>(16, 0);
+  int pos = 0;
+  Bc7Writer& Put(std::uint32_t v, int bits) {
+    for (int i = 0; i < bits; ++i, ++pos)
+      if ((v >> i) & 1) block[std::size_t(pos >> 3)] = std::uint8_t(block[std::size_t(pos >> 3)] | 1 << (pos & 7));
+    return *this;
+  }
+};
+}  // namespace
+
+TEST_CASE("BC7 blocks: endpoints widened with their p-bits, 64ths between them, subsets, rotation", "[compression]") {
+  // Mode 6: one subset, RGBA endpoints of 7 bits and a p-bit each, 4-bit indices (texel 0's has 3 bits).
+  Bc7Writer m6;
+  m6.Put(1 << 6, 7);
+  for (const int v : {10, 100, 20, 110, 30, 120, 40, 127}) m6.Put(std::uint32_t(v), 7);  // R0 R1 G0 G1 B0 B1 A0 A1
+  m6.Put(1, 1).Put(0, 1);                                                                 // p-bits: 1, 0
+  m6.Put(0, 3);                                                                           // texel 0: index 0
+  for (int t = 1; t < 16; ++t) m6.Put(std::uint32_t(t), 4);                               // texel t: index t
+  const Decoded d6 = Decode(COMPRESSED_RGBA_BPTC_UNORM, m6.block);
+  // Endpoint 0 = (v << 1 | 1) (8 bits already), endpoint 1 = (v << 1).
+  const int e0[4] = {21, 41, 61, 81}, e1[4] = {200, 220, 240, 254};
+  const int weights[16] = {0, 4, 9, 13, 17, 21, 26, 30, 34, 38, 43, 47, 51, 55, 60, 64};
+  for (int t = 0; t < 16; ++t)
+    for (int c = 0; c < 4; ++c) {
+      CAPTURE(t, c);
+      CHECK(d6.t[t][c] == float(((64 - weights[t]) * e0[c] + weights[t] * e1[c] + 32) >> 6));
+    }
+  // Mode 5 with rotation 1 (alpha and red swapped after interpolation): colour 7-bit endpoints widened by
+  // repeating their high bit, alpha 8-bit; 2-bit indices for both.
+  Bc7Writer m5;
+  m5.Put(1 << 5, 6).Put(1, 2);                                               // mode 5, rotation 1
+  for (const int v : {127, 0, 64, 64, 1, 126}) m5.Put(std::uint32_t(v), 7);  // R0 R1 G0 G1 B0 B1
+  m5.Put(50, 8).Put(250, 8);                                                 // A0 A1
+  for (int t = 0; t < 16; ++t) m5.Put(3, t == 0 ? 1 : 2);                    // colour indices: 3 (texel 0: 1)
+  for (int t = 0; t < 16; ++t) m5.Put(0, t == 0 ? 1 : 2);                    // alpha indices: 0
+  const Decoded d5 = Decode(COMPRESSED_RGBA_BPTC_UNORM, m5.block);
+  CHECK(d5.t[1][3] == 0.0f);    // red (index 3: endpoint 1, 0) moved to alpha
+  CHECK(d5.t[1][0] == 50.0f);   // alpha (index 0: 50) moved to red
+  CHECK(d5.t[1][1] == 129.0f);  // 64 widened: 64 << 1 | 64 >> 6
+  CHECK(d5.t[1][2] == 253.0f);  // 126 widened: 126 << 1 | 1
+  CHECK(d5.t[0][3] == 171.0f);  // texel 0's index 1 (one bit): 21 / 64 of the way from 255 to 0, as alpha
+  // Mode 1, partition 13 (the lower half subset 0, the upper subset 1): each subset its own colour.
+  Bc7Writer m1;
+  m1.Put(1 << 1, 2).Put(13, 6);
+  for (int c = 0; c < 3; ++c) m1.Put(0, 6).Put(0, 6).Put(63, 6).Put(63, 6);  // subset 0 black, subset 1 white
+  m1.Put(0, 1).Put(1, 1);                                                      // shared p-bits: 0 and 1
+  const Decoded d1 = Decode(COMPRESSED_RGBA_BPTC_UNORM, m1.block);
+  for (int t = 0; t < 16; ++t) CHECK(d1.t[t][0] == (t >= 8 ? 255.0f : 0.0f));
+  // No mode bit in the first byte: a reserved mode, transparent black.
+  const Decoded none = Decode(COMPRESSED_RGBA_BPTC_UNORM, std::vector<std::uint8_t>(16, 0));
+  for (int t = 0; t < 16; ++t) CHECK((none.t[t][0] == 0.0f && none.t[t][3] == 0.0f));
+}
+
 TEST_CASE("CompressedTexImage2D and CompressedTexSubImage2D: decoded texels, blocks and level state", "[compression]") {
   Context gl(8, 8);
   gl.BindTexture(TEXTURE_2D, gl.GenTexture());
@@ -389,7 +445,7 @@ TEST_CASE("DDS files define every level from their blocks, flipped on request", 
       CHECK(gl.GetError() == NO_ERROR);
     }
   }
-  // sRGB on request: the S3TC formats' sRGB forms; RGTC has none.
+  // sRGB on request: the S3TC and BC7 formats' sRGB forms; RGTC has none.
   Context gl(4, 4);
   gl.BindTexture(TEXTURE_2D, gl.GenTexture());
   const std::vector<std::uint8_t> dxt1 = MakeDds("DXT1", 0, 8, 8, 1, 8, 1);
@@ -397,6 +453,20 @@ TEST_CASE("DDS files define every level from their blocks, flipped on request", 
   int v = 0;
   gl.GetTexLevelParameteriv(TEXTURE_2D, 0, TEXTURE_INTERNAL_FORMAT, &v);
   CHECK(v == int(COMPRESSED_SRGB_S3TC_DXT1_EXT));
+  // BC7 (DX10 headers only), unflipped: its blocks as they are, in both forms.
+  for (const std::uint32_t dxgi : {98u, 99u}) {
+    const std::vector<std::uint8_t> bc7 = MakeDds("DX10", dxgi, 8, 8, 2, 16, 9);
+    REQUIRE(gl.TexImage2DFromMemory(TEXTURE_2D, bc7.data(), bc7.size(), false));
+    gl.GetTexLevelParameteriv(TEXTURE_2D, 0, TEXTURE_INTERNAL_FORMAT, &v);
+    CHECK(v == int(dxgi == 98 ? COMPRESSED_RGBA_BPTC_UNORM : COMPRESSED_SRGB_ALPHA_BPTC_UNORM));
+    std::vector<std::uint8_t> blocks(64);
+    gl.GetCompressedTexImage(TEXTURE_2D, 0, blocks.data());
+    CHECK(std::equal(blocks.begin(), blocks.end(), bc7.begin() + 148));
+  }
+  const std::vector<std::uint8_t> bc7 = MakeDds("DX10", 98, 4, 4, 1, 16, 9);
+  REQUIRE(gl.TexImage2DFromMemory(TEXTURE_2D, bc7.data(), bc7.size(), false, nullptr, SRGB));
+  gl.GetTexLevelParameteriv(TEXTURE_2D, 0, TEXTURE_INTERNAL_FORMAT, &v);
+  CHECK(v == int(COMPRESSED_SRGB_ALPHA_BPTC_UNORM));
 }
 
 TEST_CASE("DDS files softgl cannot take are refused with a message", "[compression]") {
@@ -413,7 +483,8 @@ TEST_CASE("DDS files softgl cannot take are refused with a message", "[compressi
   };
   refused(std::vector<std::uint8_t>(good.begin(), good.end() - 1), "truncated DDS data");
   refused(std::vector<std::uint8_t>(good.begin(), good.begin() + 100), "DDS header");
-  refused(MakeDds("DX10", 98, 8, 8, 1, 16, 3), "BPTC");
+  refused(MakeDds("DX10", 95, 8, 8, 1, 16, 3), "BC6H");
+  refused(MakeDds("DX10", 98, 8, 8, 1, 16, 3), "BC7 blocks cannot be turned upside down", true);
   refused(MakeDds("DXT5", 0, 8, 8, 1, 16, 3, 0x200), "cube maps");
   refused(MakeDds("RGBG", 0, 8, 8, 1, 16, 3), "not a block-compressed DDS file");
   refused(MakeDds("DXT5", 0, 8, 6, 1, 16, 3), "cannot flip", true);

@@ -441,11 +441,12 @@ class Context {
   /// t = 0, OpenGL's convention. Returns false with a message in `error` for a missing or corrupt file (the texture
   /// is unchanged, no GL error), or an image too large (INVALID_VALUE); `encoding` neither LINEAR nor SRGB:
   /// INVALID_ENUM.
-  /// A DDS file of S3TC or RGTC blocks (FourCC DXT1 ... DXT5, ATI1, ATI2, BC4U/S, BC5U/S, or a DX10 header with
-  /// BC1 ... BC5) defines every mipmap level it holds with CompressedTexImage2D, blocks as they are (sRGB where the
-  /// file or `encoding` says so), and sets TEXTURE_MAX_LEVEL to its last level; flip_vertically reorders the blocks
-  /// (each level's height a multiple of 4, or below 4). BPTC, cube map, volume, array and uncompressed DDS files
-  /// are refused with a message.
+  /// A DDS file of S3TC, RGTC or BC7 blocks (FourCC DXT1 ... DXT5, ATI1, ATI2, BC4U/S, BC5U/S, or a DX10 header
+  /// with BC1 ... BC5 or BC7) defines every mipmap level it holds with CompressedTexImage2D, blocks as they are
+  /// (sRGB where the file or `encoding` says so), and sets TEXTURE_MAX_LEVEL to its last level; flip_vertically
+  /// reorders the blocks (each level's height a multiple of 4, or below 4; BC7 blocks cannot be reordered, so a
+  /// BC7 file must be loaded unflipped). BC6H, cube map, volume, array and uncompressed DDS files are refused with a
+  /// message.
   bool TexImage2DFromFile(Enum target, const std::string& path, bool flip_vertically, std::string* error = nullptr,
                           Enum encoding = LINEAR);
   /// As TexImage2DFromFile, for an encoded image (PNG, JPEG, ...) already in memory, such as one embedded in a model.

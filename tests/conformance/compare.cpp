@@ -837,7 +837,7 @@ TEST_CASE("layered framebuffers: completeness, attachment state and errors as Me
 
 TEST_CASE("compressed textures: decoded texels, blocks read back, level state and errors as Mesa's", "[conformance]") {
   namespace gl = softgl;
-  // Every S3TC and RGTC format, decoded by both from the same pseudo-random blocks (both modes of each block kind
+  // Every S3TC, RGTC and BC7 format, decoded by both from the same pseudo-random blocks (both modes of each block kind
   // come up: c0 > c1 and not, a0 > a1 and not, signed endpoints of -128), read back as floats (compared as whole
   // multiples of 1 / (255 * 127), exact for both unsigned bytes and signed ones); images with partial blocks;
   // CompressedTexSubImage; a 2D array; then OpenGL's errors.
@@ -846,7 +846,8 @@ TEST_CASE("compressed textures: decoded texels, blocks read back, level state an
                           gl::COMPRESSED_SRGB_S3TC_DXT1_EXT,       gl::COMPRESSED_SRGB_ALPHA_S3TC_DXT1_EXT,
                           gl::COMPRESSED_SRGB_ALPHA_S3TC_DXT3_EXT, gl::COMPRESSED_SRGB_ALPHA_S3TC_DXT5_EXT,
                           gl::COMPRESSED_RED_RGTC1,                gl::COMPRESSED_SIGNED_RED_RGTC1,
-                          gl::COMPRESSED_RG_RGTC2,                 gl::COMPRESSED_SIGNED_RG_RGTC2};
+                          gl::COMPRESSED_RG_RGTC2,                 gl::COMPRESSED_SIGNED_RG_RGTC2,
+                          gl::COMPRESSED_RGBA_BPTC_UNORM,          gl::COMPRESSED_SRGB_ALPHA_BPTC_UNORM};
   auto block_bytes = [](Enum f) {
     return f == gl::COMPRESSED_RGB_S3TC_DXT1_EXT || f == gl::COMPRESSED_RGBA_S3TC_DXT1_EXT ||
                    f == gl::COMPRESSED_SRGB_S3TC_DXT1_EXT || f == gl::COMPRESSED_SRGB_ALPHA_S3TC_DXT1_EXT ||
@@ -905,6 +906,15 @@ TEST_CASE("compressed textures: decoded texels, blocks read back, level state an
     step(0);
     level_state(gl::TEXTURE_2D_ARRAY, 0);
     read(gl::TEXTURE_2D_ARRAY, 8, 8, 3);
+    // BC7 in a 3D texture (BPTC's blocks may stack as slices), every mode's first-byte pattern among the blocks.
+    const Enum bc7 = gl::COMPRESSED_RGBA_BPTC_UNORM;
+    b.BindNewTexture(gl::TEXTURE_3D);
+    std::vector<std::uint8_t> slices = blocks(size_of(bc7, 8, 8, 4), 123);
+    for (std::size_t k = 0; k * 16 < slices.size(); ++k) slices[k * 16] = std::uint8_t(k % 9 == 8 ? 0 : 1u << (k % 9));
+    b.CompressedTexImage(3, gl::TEXTURE_3D, 0, bc7, 8, 8, 4, size_of(bc7, 8, 8, 4), slices.data());
+    step(0);
+    level_state(gl::TEXTURE_3D, 0);
+    read(gl::TEXTURE_3D, 8, 8, 4);
     // Errors, each call's alone.
     const std::vector<std::uint8_t> some = blocks(4096, 7);
     b.BindNewTexture(gl::TEXTURE_2D);

@@ -137,6 +137,7 @@ constexpr std::uint32_t kCompressed[] = {COMPRESSED_RGB_S3TC_DXT1_EXT,   COMPRES
                                          COMPRESSED_SRGB_S3TC_DXT1_EXT,  COMPRESSED_SRGB_ALPHA_S3TC_DXT5_EXT,
                                          COMPRESSED_RED_RGTC1,           COMPRESSED_SIGNED_RED_RGTC1,
                                          COMPRESSED_RG_RGTC2,            COMPRESSED_SIGNED_RG_RGTC2,
+                                         COMPRESSED_RGBA_BPTC_UNORM,     COMPRESSED_SRGB_ALPHA_BPTC_UNORM,
                                          RGBA8};
 // Every pixel format and type of OpenGL 3.3 (tables 3.2 to 3.5), and one of neither: a pixel is 16 bytes at most.
 constexpr std::uint32_t kFormats[] = {RED, GREEN, BLUE, RG, RGB, BGR, RGBA, BGRA, DEPTH_COMPONENT, DEPTH_STENCIL,
