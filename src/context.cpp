@@ -6,6 +6,7 @@
 #include "context_state.h"
 
 #include <algorithm>
+#include <cstring>
 #include <initializer_list>
 #include <utility>
 
@@ -452,7 +453,12 @@ void Context::Clear(Bitfield mask) {
   clear.stencil_mask = std::uint8_t(s.ops.front.write_mask);
   // Each draw buffer through its own colour mask: one packet per distinct mask (one, unless ColorMaski made them
   // differ), the depth and stencil with the first.
-  std::uint32_t left = clear.color ? 0xFFu : 0u;
+  // (An integer buffer is left as it is: OpenGL leaves Clear's result there undefined; ClearBufferiv and uiv clear
+  // it. Mesa leaves it too.)
+  std::uint32_t left = 0;
+  for (int o = 0; o < kMaxColorOutputs && clear.color; ++o)
+    if (!detail::IsIntegerLayout(target.color[o].layout)) left |= 1u << o;
+  clear.color = left != 0;
   do {
     const int first = left ? std::countr_zero(left) : 0;
     const std::uint8_t m = s.ops.color_masks[first];
@@ -506,6 +512,16 @@ bool ClearBufferPacket(ContextState& s, const char* what, Enum buffer, int drawb
   return true;
 }
 
+// ClearBufferiv's and uiv's colour for buffer `cb`: an integer buffer's integers as the floats' bits (stored
+// clamped to its channels' range), another buffer's the numbers as floats (OpenGL leaves that case undefined).
+template <class T>
+glm::vec4 ClearValue(const detail::ColorBuffer& cb, const T* value) {
+  if (!detail::IsIntegerLayout(cb.layout)) return glm::vec4(float(value[0]), float(value[1]), float(value[2]), float(value[3]));
+  glm::vec4 bits;
+  std::memcpy(&bits.x, value, 16);
+  return bits;
+}
+
 }  // namespace
 
 void Context::ClearBufferfv(Enum buffer, int drawbuffer, const float* value) {
@@ -530,7 +546,7 @@ void Context::ClearBufferiv(Enum buffer, int drawbuffer, const int* value) {
   if (!ClearBufferPacket(s, __func__, buffer, drawbuffer, {COLOR, STENCIL}, target, clear) || !NotNull(s, __func__, value, "value")) return;
   if (buffer == COLOR) {
     clear.color = target.color[drawbuffer].Present();
-    clear.color_value = glm::vec4(float(value[0]), float(value[1]), float(value[2]), float(value[3]));
+    clear.color_value = ClearValue(target.color[drawbuffer], value);
   } else {
     clear.stencil = target.stencil != nullptr;
     clear.stencil_value = std::uint8_t(value[0] & 0xFF);
@@ -544,7 +560,7 @@ void Context::ClearBufferuiv(Enum buffer, int drawbuffer, const std::uint32_t* v
   detail::ClearPacket clear;
   if (!ClearBufferPacket(s, __func__, buffer, drawbuffer, {COLOR}, target, clear) || !NotNull(s, __func__, value, "value")) return;
   clear.color = target.color[drawbuffer].Present();
-  clear.color_value = glm::vec4(float(value[0]), float(value[1]), float(value[2]), float(value[3]));
+  clear.color_value = ClearValue(target.color[drawbuffer], value);
   RecordClear(s, target, clear, __func__);
 }
 

@@ -19,7 +19,8 @@ Enum FramebufferStatus(const FramebufferObject& f) {
     any = true;
     const detail::TextureLevel* l = a.Level();
     if (!l->Defined() || detail::IsDepthFormat(l->format) || detail::HasStencil(l->format) || a.layer >= l->depth ||
-        l->compressed != 0)  // (a compressed format is not colour-renderable)
+        l->compressed != 0 ||  // (a compressed format is not colour-renderable, nor an RGB integer one)
+        (detail::IsIntegerInternalFormat(l->format) && detail::FormatComponents(l->format) == 3))
       return FRAMEBUFFER_INCOMPLETE_ATTACHMENT;
   }
   if (f.depth.Present()) {
@@ -256,6 +257,16 @@ void ReadColorRows(const detail::ColorBuffer& cb, Enum format, Enum type, const 
                      stored == 4 && cb.step == 1;
   const bool floats = type == FLOAT && channels == 4 && ch[0] == 0 && ch[1] == 1 && ch[2] == 2 && ch[3] == 3 &&
                       reinterpret_cast<std::uintptr_t>(pack.At(i0, j0)) % alignof(float) == 0 && pack.stride % 4 == 0;
+  if (detail::IsIntegerLayout(cb.layout)) {  // integers, clamped to the type's range (PackInteger)
+    for (int y = y0; y < y1; ++y) {
+      std::uint8_t* out = pack.At(i0, j0 + (y - y0));
+      for (int x = x0; x < x1; ++x, out += pack.pixel) {
+        detail::PackIntegerTexel(cb.layout, cb.At(x, y), format, type, out);
+        pack.Swap(out);
+      }
+    }
+    return;
+  }
   std::vector<float> row(bytes || floats ? 0 : std::size_t(n) * 4);
   for (int y = y0; y < y1; ++y) {
     std::uint8_t* out = pack.At(i0, j0 + (y - y0));
@@ -310,6 +321,9 @@ void Context::ReadPixels(int x, int y, int width, int height, Enum format, Enum 
   if (!EmptyDefaultRead(s, t, !depth && !stencil) &&
       ((depth && !t.HasDepth()) || (stencil && !t.stencil) || (!depth && !stencil && !t.color[0].Present())))
     return s.SetError(INVALID_OPERATION, __func__, "the read framebuffer has no buffer of that kind");
+  if (!depth && !stencil && t.color[0].Present() &&
+      detail::IsIntegerLayout(t.color[0].layout) != detail::IsIntegerTransfer(format))
+    return s.SetError(INVALID_OPERATION, __func__, "an integer read buffer is read with an integer format (RED_INTEGER ...) only, and the reverse");
   if (width == 0 || height == 0 || !NotNull(s, __func__, pixels, "pixels")) return;
   const PackLayout pack = Pack(s, width, height, false, format, type, pixels);
   // Only pixels inside the read buffer are written (the others are undefined in OpenGL: left as they are).
@@ -355,6 +369,8 @@ void Context::GetTexImage(Enum target, int level, Enum format, Enum type, void* 
   const bool depth = format == DEPTH_COMPONENT || format == DEPTH_STENCIL, stencil = format == DEPTH_STENCIL;
   if (detail::IsDepthFormat(lv.format) != depth) return s.SetError(INVALID_OPERATION, __func__, "DEPTH_COMPONENT for a colour texture, or the reverse");
   if (stencil && lv.stencil.empty()) return s.SetError(INVALID_OPERATION, __func__, "DEPTH_STENCIL for a texture without stencil");
+  const bool integer = detail::IsIntegerInternalFormat(lv.format);
+  if (integer != detail::IsIntegerTransfer(format)) return s.SetError(INVALID_OPERATION, __func__, "an integer texture is read with an integer format (RED_INTEGER ...) only, and the reverse");
   s.Sync(__func__);  // a texture being rendered into holds its texels once the recorded draws are rendered
   const bool layered = target == TEXTURE_2D_ARRAY || target == TEXTURE_3D;
   // (A 1D array goes out as one image whose rows are its layers, each of its planes being one row.)
@@ -364,8 +380,13 @@ void Context::GetTexImage(Enum target, int level, Enum format, Enum type, void* 
   // level stores image k's row j as its row k * height + j.
   for (int j = 0; j < lv.height * lv.depth; ++j)
     for (int i = 0; i < lv.width; ++i) {
-      const glm::vec4 c = lv.Texel(i, j);
       std::uint8_t* dst = target == TEXTURE_1D_ARRAY ? pack.At(i, j, 0) : pack.At(i, j % lv.height, j / lv.height);
+      if (integer) {
+        detail::PackIntegerTexel(lv.layout, lv.At(i, j), format, type, dst);
+        pack.Swap(dst);
+        continue;
+      }
+      const glm::vec4 c = lv.Texel(i, j);
       if (stencil)
         detail::PackDepthStencil(type, c.r, lv.stencil[std::size_t(j) * std::size_t(lv.width) + std::size_t(i)], dst);
       else
@@ -378,12 +399,16 @@ namespace {
 
 // The checks CopyTexImage2D and CopyTexSubImage2D share about the read framebuffer: complete, and holding the kind
 // of buffer the texture needs. False with the error set otherwise.
-bool CheckCopySource(ContextState& s, const char* what, bool depth) {
+bool CheckCopySource(ContextState& s, const char* what, Enum internal_format) {
+  const bool depth = detail::IsDepthFormat(internal_format);
   if (s.read_fbo && FramebufferStatus(*s.read_fbo) != FRAMEBUFFER_COMPLETE) return s.SetError(INVALID_FRAMEBUFFER_OPERATION, what, "the read framebuffer is not complete"), false;
   if (ReadFboSamples(s) > 1) return s.SetError(INVALID_OPERATION, what, "the read framebuffer object is multisampled: resolve it with BlitFramebuffer first"), false;
   const detail::RenderTarget t = ReadTarget(s);
   if (!EmptyDefaultRead(s, t, !depth) && (depth ? !t.HasDepth() : !t.color[0].Present()))
     return s.SetError(INVALID_OPERATION, what, "the read framebuffer has no buffer of the texture's kind"), false;
+  if (!depth && t.color[0].Present() &&
+      detail::IsIntegerLayout(t.color[0].layout) != detail::IsIntegerInternalFormat(internal_format))
+    return s.SetError(INVALID_OPERATION, what, "an integer texture copies from an integer read buffer only, and the reverse"), false;
   return true;
 }
 
@@ -393,6 +418,24 @@ void CopyToLevel(ContextState& s, const char* what, detail::TextureLevel& lv, in
   s.Sync(what);
   const detail::RenderTarget t = ReadTarget(s);
   const bool depth = detail::IsDepthFormat(lv.format);
+  if (detail::IsIntegerLayout(lv.layout)) {  // integers copied as they are, clamped to the level's channels
+    std::vector<std::int64_t> values(std::size_t(w) * std::size_t(h) * 4, 0);  // read first: lv may be the source
+    const detail::ColorBuffer& cb = t.color[0];
+    for (int j = 0; j < h; ++j)
+      for (int i = 0; i < w; ++i) {
+        const std::int64_t px = std::int64_t(x) + i, py = std::int64_t(y) + j;
+        if (px < 0 || py < 0 || px >= t.width || py >= t.height) continue;
+        const glm::ivec4 v = detail::IntegerTexel(cb.layout, cb.At(int(px), int(py)));
+        for (int c = 0; c < 4; ++c)
+          values[(std::size_t(j) * std::size_t(w) + std::size_t(i)) * 4 + std::size_t(c)] = detail::IntegerValue(cb.layout, v[c]);
+      }
+    const bool rgb_only = detail::FormatComponents(lv.format) == 3;
+    for (int j = 0; j < h; ++j)
+      for (int i = 0; i < w; ++i)
+        detail::StoreIntegerTexel(lv.layout, lv.At(xo + i, yo + j),
+                                  &values[(std::size_t(j) * std::size_t(w) + std::size_t(i)) * 4], rgb_only);
+    return;
+  }
   std::vector<float> rect(std::size_t(w) * std::size_t(h) * (depth ? 1 : 4), 0.0f);  // read first: the
                                                                                        // source may be lv itself
   // The columns inside the framebuffer, [i0, i1) of each row (in 64 bits: x and y may be anything up to INT_MAX,
@@ -439,7 +482,7 @@ void Context::CopyTexSubImage2D(Enum target, int level, int xoffset, int yoffset
   if (xoffset < 0 || yoffset < 0 || width < 0 || height < 0 || std::int64_t(xoffset) + width > lv.width ||
       std::int64_t(yoffset) + height > std::int64_t(lv.height) * lv.depth)  // (a 1D array's rows are its layers)
     return s.SetError(INVALID_VALUE, __func__, "the rectangle is outside the level");
-  if (!CheckCopySource(s, __func__, detail::IsDepthFormat(lv.format))) return;
+  if (!CheckCopySource(s, __func__, lv.format)) return;
   try {
     CopyToLevel(s, __func__, lv, xoffset, yoffset, x, y, width, height);
   } catch (const std::bad_alloc&) {
@@ -459,7 +502,7 @@ void Context::CopyTexSubImage3D(Enum target, int level, int xoffset, int yoffset
   if (xoffset < 0 || yoffset < 0 || zoffset < 0 || width < 0 || height < 0 ||
       std::int64_t(xoffset) + width > lv.width || std::int64_t(yoffset) + height > lv.height || zoffset >= lv.depth)
     return s.SetError(INVALID_VALUE, __func__, "the rectangle is outside the level, or the layer beyond its depth");
-  if (!CheckCopySource(s, __func__, detail::IsDepthFormat(lv.format))) return;
+  if (!CheckCopySource(s, __func__, lv.format)) return;
   try {  // layer (slice) zoffset's rows follow the layers below it
     CopyToLevel(s, __func__, lv, xoffset, zoffset * lv.height + yoffset, x, y, width, height);
   } catch (const std::bad_alloc&) {
@@ -482,7 +525,7 @@ void Context::CopyTexImage2D(Enum target, int level, Enum internal_format, int x
   int face = 0;
   detail::TextureObject* tex = s.Bound(target, &face);
   if (!tex) return s.SetError(INVALID_OPERATION, __func__, "no texture is bound to that target of the active unit");
-  if (!CheckCopySource(s, __func__, detail::IsDepthFormat(internal_format))) return;
+  if (!CheckCopySource(s, __func__, internal_format)) return;
   try {
     s.Sync(__func__);  // the old level may be what recorded draws sample or render into
     detail::TextureLevel next;
@@ -506,7 +549,7 @@ void Context::CopyTexImage1D(Enum target, int level, Enum internal_format, int x
     return s.SetError(INVALID_VALUE, __func__, "a numeric argument is out of range");
   detail::TextureObject* tex = s.Bound(target);
   if (!tex) return s.SetError(INVALID_OPERATION, __func__, "no texture is bound to that target of the active unit");
-  if (!CheckCopySource(s, __func__, detail::IsDepthFormat(internal_format))) return;
+  if (!CheckCopySource(s, __func__, internal_format)) return;
   try {
     s.Sync(__func__);
     detail::TextureLevel next;
@@ -527,7 +570,7 @@ void Context::CopyTexSubImage1D(Enum target, int level, int xoffset, int x, int 
   detail::TextureLevel& lv = tex->levels[0][level];
   if (lv.compressed != 0) return s.SetError(INVALID_OPERATION, __func__, "the level is compressed: replace its blocks with CompressedTexSubImage*");
   if (xoffset < 0 || width < 0 || std::int64_t(xoffset) + width > lv.width) return s.SetError(INVALID_VALUE, __func__, "the span is outside the level");
-  if (!CheckCopySource(s, __func__, detail::IsDepthFormat(lv.format))) return;
+  if (!CheckCopySource(s, __func__, lv.format)) return;
   try {
     CopyToLevel(s, __func__, lv, xoffset, 0, x, y, width, 1);
   } catch (const std::bad_alloc&) {
@@ -824,6 +867,9 @@ Enum SizedRenderbufferFormat(Enum f) {
     case RGBA16: case RG16: case R16:
     case DEPTH_COMPONENT24: case DEPTH_COMPONENT32F: case DEPTH24_STENCIL8: case DEPTH32F_STENCIL8:
     case STENCIL_INDEX8: return f;
+    case R8I: case R8UI: case R16I: case R16UI: case R32I: case R32UI: case RG8I: case RG8UI: case RG16I: case RG16UI:
+    case RG32I: case RG32UI: case RGBA8I: case RGBA8UI: case RGBA16I: case RGBA16UI: case RGBA32I: case RGBA32UI:
+    case RGB10_A2UI: return f;
     default: return 0;
   }
 }
@@ -866,7 +912,12 @@ FormatBits BitsOf(Enum f) {
     case DEPTH24_STENCIL8: return {0, 0, 0, 0, 24, 8};
     case DEPTH32F_STENCIL8: return {0, 0, 0, 0, 32, 8};
     case STENCIL_INDEX8: return {0, 0, 0, 0, 0, 8};
-    default: return {};
+    case RGB10_A2UI: return {10, 10, 10, 2, 0, 0};
+    default: {
+      if (!detail::IsIntegerInternalFormat(f)) return {};
+      const int n = detail::FormatComponents(f), bits = 8 * detail::IntegerLayoutOf(detail::LayoutOf(f)).bytes;
+      return {bits, n > 1 ? bits : 0, n > 2 ? bits : 0, n > 3 ? bits : 0, 0, 0};
+    }
   }
 }
 
@@ -926,10 +977,12 @@ void Storage(ContextState& s, const char* what, Enum target, int samples, Enum i
   // OpenGL 3.3 (section 4.4.2.1) makes samples above MAX_SAMPLES INVALID_VALUE; OpenGL 4.2 and later (and Mesa)
   // INVALID_OPERATION. softgl is OpenGL 3.3.
   if (samples < 0 || samples > detail::kMaxSamples) return s.SetError(INVALID_VALUE, what, "samples is negative or above MAX_SAMPLES");
+  const bool integer = detail::IsIntegerInternalFormat(sized);
+  if (integer && samples > kMaxIntegerSamples) return s.SetError(INVALID_OPERATION, what, "an integer format is not multisampled: samples is above MAX_INTEGER_SAMPLES (1)");
   s.Sync(what);  // recorded draws may render into the old image
   detail::TextureLevel next;
   try {
-    next.Allocate(sized, width, height, detail::SupportedSamples(samples));
+    next.Allocate(sized, width, height, integer ? 1 : detail::SupportedSamples(samples));
   } catch (const std::bad_alloc&) {
     return s.SetError(OUT_OF_MEMORY, what, "out of memory");
   }
@@ -954,13 +1007,15 @@ void MultisampleImage(ContextState& s, const char* what, Enum target, Enum want,
     return s.SetError(INVALID_VALUE, what, "samples below 1, or width or height negative or above MAX_TEXTURE_SIZE");
   if (layers < 0 || layers > kMaxArrayTextureLayers) return s.SetError(INVALID_VALUE, what, "depth is negative or above MAX_ARRAY_TEXTURE_LAYERS");
   if (samples > detail::kMaxSamples) return s.SetError(INVALID_OPERATION, what, "samples is above MAX_COLOR_TEXTURE_SAMPLES");
+  const bool integer = detail::IsIntegerInternalFormat(sized);
+  if (integer && samples > kMaxIntegerSamples) return s.SetError(INVALID_OPERATION, what, "an integer format is not multisampled: samples is above MAX_INTEGER_SAMPLES (1)");
   detail::TextureObject* tex = s.Bound(target);
   if (!tex) return s.SetError(INVALID_OPERATION, what, "no texture is bound to that target of the active unit");
   s.Sync(what);  // recorded draws may render into or sample the old image
   const bool empty = want == TEXTURE_2D_MULTISAMPLE_ARRAY && layers == 0;  // (no layers: an empty image)
   detail::TextureLevel next;
   try {
-    next.Allocate(sized, width, empty ? 0 : height, detail::SupportedSamples(samples), std::max(layers, 1));
+    next.Allocate(sized, width, empty ? 0 : height, integer ? 1 : detail::SupportedSamples(samples), std::max(layers, 1));
   } catch (const std::bad_alloc&) {
     return s.SetError(OUT_OF_MEMORY, what, "out of memory");
   }
@@ -1084,6 +1139,13 @@ void Context::BlitFramebuffer(int src_x0, int src_y0, int src_x1, int src_y1, in
       return s.SetError(INVALID_OPERATION, __func__, "the read and draw framebuffers' depth or stencil formats differ");
   }
   const bool color = (mask & COLOR_BUFFER_BIT) != 0 && src.color[0].Present();
+  if (color) {  // integers go to integer buffers only, unfiltered (OpenGL 3.3, section 4.3.2)
+    const bool integer = detail::IsIntegerLayout(src.color[0].layout);
+    for (const detail::ColorBuffer& cb : dst.color)
+      if (cb.Present() && detail::IsIntegerLayout(cb.layout) != integer)
+        return s.SetError(INVALID_OPERATION, __func__, "integer colour is blitted between integer buffers only");
+    if (integer && filter == LINEAR) return s.SetError(INVALID_OPERATION, __func__, "integer colour is blitted with NEAREST only");
+  }
   bool same = (depth && src.depth == dst.depth && src.depth16 == dst.depth16) || (stencil && src.stencil == dst.stencil);
   for (const detail::ColorBuffer& cb : dst.color) same = same || (color && cb.Present() && cb.data == src.color[0].data);
   // OpenGL leaves a copy between overlapping rectangles of one buffer undefined: it is refused, as OpenGL ES 3.0

@@ -155,6 +155,7 @@ bool QueryState(ContextState& s, Enum pname, StateValue& out) {
     case MAX_SAMPLES:
     case MAX_COLOR_TEXTURE_SAMPLES:
     case MAX_DEPTH_TEXTURE_SAMPLES: return integer(detail::kMaxSamples);
+    case MAX_INTEGER_SAMPLES: return integer(kMaxIntegerSamples);
     case MAX_SAMPLE_MASK_WORDS: return integer(1);
     case SAMPLE_COVERAGE_VALUE: return put(Kind::kFloat, {s.ops.multisample.coverage_value});
     case SAMPLE_COVERAGE_INVERT: return boolean(s.ops.multisample.coverage_invert);

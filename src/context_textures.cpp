@@ -82,6 +82,17 @@ bool CheckTransfer(ContextState& s, const char* what, Enum format, Enum type) {
 
 bool IsDepthTransfer(Enum format) { return format == DEPTH_COMPONENT || format == DEPTH_STENCIL; }
 
+// Whether client data of `format` suits a level of `internal_format`: depth data for the depth formats and integer
+// data (RED_INTEGER ...) for the integer ones, and neither for the others (OpenGL 3.3, section 3.8.3). False with
+// the error recorded otherwise.
+bool DataSuits(ContextState& s, const char* what, Enum internal_format, Enum format) {
+  if (detail::IsDepthFormat(internal_format) != IsDepthTransfer(format))
+    return s.SetError(INVALID_OPERATION, what, "depth data for a colour format, or the reverse"), false;
+  if (detail::IsIntegerInternalFormat(internal_format) != detail::IsIntegerTransfer(format))
+    return s.SetError(INVALID_OPERATION, what, "integer data (RED_INTEGER ...) for a format that is not integer, or the reverse"), false;
+  return true;
+}
+
 }  // namespace
 
 void Context::TexImage2D(Enum target, int level, Enum internal_format, int width, int height, int border,
@@ -97,7 +108,7 @@ void Context::TexImage2D(Enum target, int level, Enum internal_format, int width
       detail::FormatComponents(internal_format) == 0)
     return s.SetError(INVALID_VALUE, __func__, "a numeric argument is out of range");
   if (!CheckTransfer(s, __func__, format, type)) return;
-  if (detail::IsDepthFormat(internal_format) != IsDepthTransfer(format)) return s.SetError(INVALID_OPERATION, __func__, "depth data for a colour format, or the reverse");
+  if (!DataSuits(s, __func__, internal_format, format)) return;
   if (CubeFaceIndex(target) >= 0 && width != height) return s.SetError(INVALID_VALUE, __func__, "cube map faces must be square");
   int face = 0;
   detail::TextureObject* tex = s.Bound(target, &face);
@@ -126,7 +137,7 @@ void Context::TexImage1D(Enum target, int level, Enum internal_format, int width
       detail::FormatComponents(internal_format) == 0)
     return s.SetError(INVALID_VALUE, __func__, "a numeric argument is out of range");
   if (!CheckTransfer(s, __func__, format, type)) return;
-  if (detail::IsDepthFormat(internal_format) != IsDepthTransfer(format)) return s.SetError(INVALID_OPERATION, __func__, "depth data for a colour format, or the reverse");
+  if (!DataSuits(s, __func__, internal_format, format)) return;
   detail::TextureObject* tex = s.Bound(target);
   if (!tex) return s.SetError(INVALID_OPERATION, __func__, "no texture is bound to that target of the active unit");
   detail::TextureLevel next;
@@ -149,7 +160,7 @@ void Context::TexSubImage1D(Enum target, int level, int x, int width, Enum forma
   if (!tex || !tex->levels[0][level].Defined()) return s.SetError(INVALID_OPERATION, __func__, "no texture bound, or that level is not defined");
   detail::TextureLevel& lv = tex->levels[0][level];
   if (lv.compressed != 0) return s.SetError(INVALID_OPERATION, __func__, "the level is compressed: replace its blocks with CompressedTexSubImage*");
-  if (detail::IsDepthFormat(lv.format) != IsDepthTransfer(format)) return s.SetError(INVALID_OPERATION, __func__, "depth data for a colour texture, or the reverse");
+  if (!DataSuits(s, __func__, lv.format, format)) return;
   if (x < 0 || width < 0 || std::int64_t(x) + width > lv.width) return s.SetError(INVALID_VALUE, __func__, "a numeric argument is out of range");
   if (width == 0 || !NotNull(s, __func__, pixels, "pixels")) return;
   detail::UploadPixels(lv, x, 0, width, 1, format, type, s.unpack, pixels);
@@ -167,7 +178,7 @@ void Context::TexSubImage2D(Enum target, int level, int x, int y, int width, int
   if (!tex || !tex->levels[face][level].Defined()) return s.SetError(INVALID_OPERATION, __func__, "no texture bound, or that level is not defined");
   detail::TextureLevel& lv = tex->levels[face][level];
   if (lv.compressed != 0) return s.SetError(INVALID_OPERATION, __func__, "the level is compressed: replace its blocks with CompressedTexSubImage*");
-  if (detail::IsDepthFormat(lv.format) != IsDepthTransfer(format)) return s.SetError(INVALID_OPERATION, __func__, "depth data for a colour texture, or the reverse");
+  if (!DataSuits(s, __func__, lv.format, format)) return;
   // (A 1D array's rows are its layers.)
   if (x < 0 || y < 0 || width < 0 || height < 0 || std::int64_t(x) + width > lv.width ||
       std::int64_t(y) + height > std::int64_t(lv.height) * lv.depth)
@@ -190,7 +201,7 @@ void Context::TexImage3D(Enum target, int level, Enum internal_format, int width
       height > max_size || depth > max_depth || border != 0 || detail::FormatComponents(internal_format) == 0)
     return s.SetError(INVALID_VALUE, __func__, "a numeric argument is out of range");
   if (!CheckTransfer(s, __func__, format, type)) return;
-  if (detail::IsDepthFormat(internal_format) != IsDepthTransfer(format)) return s.SetError(INVALID_OPERATION, __func__, "depth data for a colour format, or the reverse");
+  if (!DataSuits(s, __func__, internal_format, format)) return;
   if (volume && detail::IsDepthFormat(internal_format)) return s.SetError(INVALID_OPERATION, __func__, "a 3D texture cannot have a depth format");
   detail::TextureObject* tex = s.Bound(target);
   if (!tex) return s.SetError(INVALID_OPERATION, __func__, "no texture is bound to that target of the active unit");
@@ -217,7 +228,7 @@ void Context::TexSubImage3D(Enum target, int level, int x, int y, int z, int wid
   if (!tex || !tex->levels[0][level].Defined()) return s.SetError(INVALID_OPERATION, __func__, "no texture bound, or that level is not defined");
   detail::TextureLevel& lv = tex->levels[0][level];
   if (lv.compressed != 0) return s.SetError(INVALID_OPERATION, __func__, "the level is compressed: replace its blocks with CompressedTexSubImage*");
-  if (detail::IsDepthFormat(lv.format) != IsDepthTransfer(format)) return s.SetError(INVALID_OPERATION, __func__, "depth data for a colour texture, or the reverse");
+  if (!DataSuits(s, __func__, lv.format, format)) return;
   if (x < 0 || y < 0 || z < 0 || width < 0 || height < 0 || depth < 0 || std::int64_t(x) + width > lv.width ||
       std::int64_t(y) + height > lv.height || std::int64_t(z) + depth > lv.depth)
     return s.SetError(INVALID_VALUE, __func__, "a numeric argument is out of range");
@@ -457,7 +468,7 @@ void Context::TexBuffer(Enum target, Enum internal_format, std::uint32_t buffer)
   auto& s = *state_;
   if (target != TEXTURE_BUFFER) return s.SetError(INVALID_ENUM, __func__, "target must be TEXTURE_BUFFER");
   if (!detail::IsBufferTextureFormat(internal_format))
-    return s.SetError(INVALID_ENUM, __func__, "internal_format must be R8, R16, R16F, R32F, RG8, RG16, RG16F, RG32F, RGBA8, RGBA16, RGBA16F or RGBA32F (integer formats are not supported yet)");
+    return s.SetError(INVALID_ENUM, __func__, "internal_format must be R8, R16, R16F, R32F, RG8, RG16, RG16F, RG32F, RGBA8, RGBA16, RGBA16F, RGBA32F, or an integer R, RG or RGBA format (R8I ... RGBA32UI)");
   std::shared_ptr<Buffer> object;
   if (buffer != 0) {
     auto it = s.buffers.find(buffer);
@@ -488,6 +499,7 @@ void Context::GenerateMipmap(Enum target) {
     if (!b.Defined() || b.width != b0.width || b.height != b0.height || b.format != b0.format)
       return s.SetError(INVALID_OPERATION, __func__, "not allowed in the current state");
     if (b.compressed != 0) return s.SetError(INVALID_OPERATION, __func__, "the base level is compressed, and softgl does not compress the levels it would make: define each with CompressedTexImage*");
+    if (detail::IsIntegerInternalFormat(b.format)) return s.SetError(INVALID_OPERATION, __func__, "an integer texture is not filterable: its levels are not generated");
   }
   try {
     detail::GenerateMipmaps(*tex);

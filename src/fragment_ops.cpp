@@ -146,6 +146,7 @@ namespace {
 ColourPath PathOf(const ColorBuffer& cb) {
   if (!cb.Present()) return ColourPath::kNone;
   if (IsUnorm8(cb.layout)) return cb.srgb ? ColourPath::kFloat : ColourPath::kUnorm8;
+  if (IsIntegerLayout(cb.layout)) return ColourPath::kInteger;
   // Float, half, R11F_G11F_B10F, packed and 16-bit fixed point in vectors.
   return ColourPath::kFloat;
 }
@@ -477,9 +478,39 @@ SOFTGL_WIDE typename V<W>::I Depth16Lanes(typename V<W>::F d) {
   return __builtin_convertvector((d * 65535.0f + 12582912.0f) - 12582912.0f, typename V<W>::I);
 }
 
+// Output o of block b's lane `lane` into integer colour buffer `cb` (R8UI ... RGBA32I, RGB10_A2UI): the output's
+// integers (its floats' bits) clamped to the channels' range, then the logic operation with the stored integers
+// (on the channels' bits), through the colour mask. Integer buffers are never blended (OpenGL 4.6, section 17.3.6).
+void IntegerLane(const FragmentOpsState& st, const BlockBuffer& bb, int b, int o, int lane, const ColorBuffer& cb) {
+  const int x = bb.X(b, lane), y = bb.Y(b, lane);
+  glm::vec4 color(bb.Color(b, o, 0)[lane], bb.Color(b, o, 1)[lane], bb.Color(b, o, 2)[lane], bb.Color(b, o, 3)[lane]);
+  bool mask[4];
+  st.Mask(o, mask);
+  if (const Enum logic = st.LogicMode()) {
+    const IntegerLayout k = IntegerLayoutOf(cb.layout);
+    std::int32_t bits[4];
+    std::memcpy(bits, &color.x, 16);
+    std::uint8_t texel[16];
+    std::int64_t v[4];
+    for (int c = 0; c < 4; ++c) v[c] = IntegerValue(cb.layout, bits[c]);
+    StoreIntegerTexel(cb.layout, texel, v);
+    const glm::ivec4 src = IntegerTexel(cb.layout, texel), dst = IntegerTexel(cb.layout, cb.At(x, y));
+    for (int c = 0; c < 4; ++c) {
+      // (Sign-extended operands give a sign-extended result; an unsigned channel keeps its own bits.)
+      const int width = k.packed ? (c < 3 ? 10 : 2) : 8 * k.bytes;
+      std::uint32_t r = LogicOpBits(logic, std::uint32_t(src[c]), std::uint32_t(dst[c]));
+      if (!k.is_signed && width < 32) r &= (1u << width) - 1u;
+      bits[c] = std::int32_t(r);
+    }
+    std::memcpy(&color.x, bits, 16);
+  }
+  cb.Store(x, y, color, mask);
+}
+
 // Output o of block b's lane `lane` into colour buffer `cb` (present), through blending and the colour mask.
 void ColourLane(const FragmentOpsState& st, const Unorm8Blend& blend8, const BlockBuffer& bb, int b, int o, int lane,
                 const ColorBuffer& cb) {
+  if (IsIntegerLayout(cb.layout)) return IntegerLane(st, bb, b, o, lane, cb);
   const int x = bb.X(b, lane), y = bb.Y(b, lane);
   glm::vec4 color(bb.Color(b, o, 0)[lane], bb.Color(b, o, 1)[lane], bb.Color(b, o, 2)[lane], bb.Color(b, o, 3)[lane]);
   if (cb.srgb || IsWideFixedPoint(cb.layout)) {
@@ -990,6 +1021,13 @@ struct PlaneIo {
       std::uint8_t* base = cb.data + Plane(cb.plane) * std::size_t(cb.Bytes());
       F color[4];
       for (int c = 0; c < 4; ++c) color[c] = LoadVec<F>(bb.Color(b, o, c) + l0);
+      if (path == ColourPath::kInteger) {  // lane by lane (IntegerLane), in this lane's sample plane
+        ColorBuffer plane = cb;
+        plane.data = base;
+        for (int l = 0; l < W; ++l)
+          if (go[l] != 0 && ((live() >> (l0 + l)) & 1u)) IntegerLane(*ctx.state, bb, b, o, l0 + l, plane);
+        continue;
+      }
       const TexelQuads<W> at{base, colour_at[o], live(), l0};
       if (path == ColourPath::kUnorm8) Unorm8Lanes<W>(ctx.plan->blend[o], cb, at, color, go);
       else FloatLanes<W>(*ctx.state, *ctx.plan, o, cb, at, color, go);

@@ -25,6 +25,7 @@ std::uint8_t FloatToUnorm8(float f) {
 
 glm::vec4 ColorBuffer::Load(int x, int y) const {
   glm::vec4 raw = RawTexel(layout, At(x, y));
+  if (IsIntegerLayout(layout)) return raw;  // the integers as the floats' bits
   if (rgb_only) raw.a = 255.0f;
   if (srgb) return glm::vec4(SrgbDecode8(std::uint8_t(raw.r)), SrgbDecode8(std::uint8_t(raw.g)),
                              SrgbDecode8(std::uint8_t(raw.b)), raw.a / 255.0f);
@@ -49,7 +50,17 @@ void ColorBuffer::Store(int x, int y, const glm::vec4& c, const bool mask[4]) co
     case TexelLayout::kFloat32x1:
       if (mask[0]) std::memcpy(p, &c[0], 4);
       return;
-    default: {  // the other float layouts: the masked channels replaced, the texel encoded again
+    default: {
+      if (IsIntegerLayout(layout)) {  // c holds integers as its floats' bits: stored clamped to the channels' range
+        const glm::ivec4 old = IntegerTexel(layout, p);
+        std::int32_t bits[4];
+        std::memcpy(bits, &c.x, 16);
+        std::int64_t v[4];
+        for (int k = 0; k < 4; ++k) v[k] = IntegerValue(layout, mask[k] ? bits[k] : old[k]);
+        StoreIntegerTexel(layout, p, v);
+        return;
+      }
+      // The other float layouts: the masked channels replaced, the texel encoded again.
       glm::vec4 v = RawTexel(layout, p);
       for (int k = 0; k < 4; ++k)
         if (mask[k]) v[k] = c[k];
@@ -165,7 +176,11 @@ ChannelBits ChannelBitsOf(TexelLayout l, int c) {
       const PackedUnorm p = PackingOf(l);
       return {p.shift[c], p.bits[c]};
     }
-    default: return {};
+    case TexelLayout::kUint1010102: return {10 * c, c < 3 ? 10 : 2};
+    default: {
+      const IntegerLayout k = IntegerLayoutOf(l);
+      return c < k.channels ? ChannelBits{8 * k.bytes * c, 8 * k.bytes} : ChannelBits{};
+    }
   }
 }
 }  // namespace

@@ -42,9 +42,7 @@ int FormatChannels(Enum format, int ch[4]) {
   }
 }
 
-namespace {
-
-bool IsIntegerFormat(Enum format) {
+bool IsIntegerTransfer(Enum format) {
   switch (format) {
     case RED_INTEGER:
     case GREEN_INTEGER:
@@ -57,6 +55,8 @@ bool IsIntegerFormat(Enum format) {
     default: return false;
   }
 }
+
+namespace {
 
 // A packed type's fields in client order (the format's first component in field 0): lowest bit and width.
 struct Packing {
@@ -208,10 +208,9 @@ Enum CheckPixelTransfer(Enum format, Enum type, TransferCall call, const char*& 
       return INVALID_OPERATION;
     }
   }
-  if (IsIntegerFormat(format)) {
-    why = type == FLOAT || type == HALF_FLOAT || type == UNSIGNED_INT_10F_11F_11F_REV || type == UNSIGNED_INT_5_9_9_9_REV
-              ? "an integer format with a float type"
-              : "an integer format: softgl has no integer textures or colour buffers";
+  if (IsIntegerTransfer(format) && (type == FLOAT || type == HALF_FLOAT || type == UNSIGNED_INT_10F_11F_11F_REV ||
+                                    type == UNSIGNED_INT_5_9_9_9_REV)) {
+    why = "an integer format with a float type";
     return INVALID_OPERATION;
   }
   return NO_ERROR;
@@ -277,6 +276,58 @@ glm::vec4 UnpackColor(Enum format, Enum type, const std::uint8_t* p) {
                                                       : float(double(field) / double((1u << packing.bits[k]) - 1u));
   }
   return out;
+}
+
+void UnpackInteger(Enum format, Enum type, const std::uint8_t* p, std::int64_t out[4]) {
+  int ch[4];
+  const int n = FormatChannels(format, ch);
+  out[0] = out[1] = out[2] = 0;
+  out[3] = 1;
+  const Packing packing = PackingOf(type);
+  if (packing.fields == 0) {
+    const std::size_t size = PlainBytes(type);
+    for (int k = 0; k < n; ++k) {
+      const std::uint8_t* e = p + std::size_t(k) * size;
+      switch (type) {
+        case UNSIGNED_BYTE: out[ch[k]] = *e; break;
+        case BYTE: out[ch[k]] = LoadUnaligned<std::int8_t>(e); break;
+        case UNSIGNED_SHORT: out[ch[k]] = LoadUnaligned<std::uint16_t>(e); break;
+        case SHORT: out[ch[k]] = LoadUnaligned<std::int16_t>(e); break;
+        case UNSIGNED_INT: out[ch[k]] = LoadUnaligned<std::uint32_t>(e); break;
+        default: out[ch[k]] = LoadUnaligned<std::int32_t>(e); break;  // INT (CheckPixelTransfer refused floats)
+      }
+    }
+    return;
+  }
+  const std::uint32_t word = LoadWord(p, packing.bytes);
+  for (int k = 0; k < n && k < packing.fields; ++k)
+    out[ch[k]] = (word >> packing.shift[k]) & ((1u << packing.bits[k]) - 1u);
+}
+
+void PackInteger(Enum format, Enum type, const std::int64_t v[4], std::uint8_t* p) {
+  int ch[4];
+  const int n = FormatChannels(format, ch);
+  const Packing packing = PackingOf(type);
+  if (packing.fields == 0) {
+    const std::size_t size = PlainBytes(type);
+    for (int k = 0; k < n; ++k) {
+      std::uint8_t* e = p + std::size_t(k) * size;
+      const std::int64_t c = v[ch[k]];
+      switch (type) {
+        case UNSIGNED_BYTE: *e = std::uint8_t(std::clamp<std::int64_t>(c, 0, 255)); break;
+        case BYTE: StoreUnaligned(e, std::int8_t(std::clamp<std::int64_t>(c, -128, 127))); break;
+        case UNSIGNED_SHORT: StoreUnaligned(e, std::uint16_t(std::clamp<std::int64_t>(c, 0, 65535))); break;
+        case SHORT: StoreUnaligned(e, std::int16_t(std::clamp<std::int64_t>(c, -32768, 32767))); break;
+        case UNSIGNED_INT: StoreUnaligned(e, std::uint32_t(std::clamp<std::int64_t>(c, 0, 4294967295LL))); break;
+        default: StoreUnaligned(e, std::int32_t(std::clamp<std::int64_t>(c, INT32_MIN, INT32_MAX))); break;
+      }
+    }
+    return;
+  }
+  std::uint32_t word = 0;
+  for (int k = 0; k < n && k < packing.fields; ++k)
+    word |= std::uint32_t(std::clamp<std::int64_t>(v[ch[k]], 0, (1 << packing.bits[k]) - 1)) << packing.shift[k];
+  StoreWord(p, packing.bytes, word);
 }
 
 void UnpackDepthStencil(Enum type, const std::uint8_t* p, float& depth, std::uint8_t& stencil) {

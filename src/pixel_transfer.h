@@ -31,8 +31,8 @@ enum class TransferCall { kUnpack, kReadPixels, kGetTexImage };
 /// OpenGL 3.3's answer to `format` with `type`: NO_ERROR; INVALID_ENUM for a format or type the call does not take,
 /// or DEPTH_STENCIL with a type other than UNSIGNED_INT_24_8 and FLOAT_32_UNSIGNED_INT_24_8_REV (section 4.3.1);
 /// INVALID_OPERATION for a packed type with another format than its own (table 3.5), and for an integer format
-/// (RED_INTEGER ...): with a float type OpenGL refuses it, and softgl has no integer textures or colour buffers for
-/// it to go with. `why` is set to a message when the answer is an error.
+/// (RED_INTEGER ...) with a float type. (Whether integer data suits the texture or buffer is the caller's check.)
+/// `why` is set to a message when the answer is an error.
 Enum CheckPixelTransfer(Enum format, Enum type, TransferCall call, const char*& why);
 
 /// Bytes of one client pixel of a valid (format, type).
@@ -47,6 +47,16 @@ std::size_t TransferElementBytes(Enum type);
 /// max(c / (2^(b-1) - 1), -1) (OpenGL 4.2's rule, which Mesa also follows; 3.3 has (2c + 1) / (2^b - 1)),
 /// HALF_FLOAT, FLOAT and the packed float types their values. DEPTH_COMPONENT's depth is in red.
 glm::vec4 UnpackColor(Enum format, Enum type, const std::uint8_t* p);
+
+/// RED_INTEGER ... BGRA_INTEGER.
+bool IsIntegerTransfer(Enum format);
+
+/// An integer client pixel at p (an integer format with an integer or packed type): the format's components as
+/// the numbers they are (signed or unsigned by the type; a packed type's fields), absent ones 0 and alpha 1.
+void UnpackInteger(Enum format, Enum type, const std::uint8_t* p, std::int64_t out[4]);
+/// Writes integers v (RGBA) as a client pixel of an integer format at p: each clamped to the type's range (a
+/// packed field's), as Mesa packs them.
+void PackInteger(Enum format, Enum type, const std::int64_t v[4], std::uint8_t* p);
 
 /// A DEPTH_STENCIL client pixel (UNSIGNED_INT_24_8: depth in the high 24 bits; FLOAT_32_UNSIGNED_INT_24_8_REV: a
 /// float, then a word with the stencil in its low 8 bits).

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -42,9 +43,17 @@ int FormatComponents(Enum f) {
     case RGBA16:
     case RGBA16F:
     case RGBA32F: return 4;
-    default: return 0;
+    default: {
+      // The integer formats: the R, RG and RGBA ones by their layout's channels, the RGB ones 3.
+      switch (f) {
+        case RGB8UI: case RGB8I: case RGB16UI: case RGB16I: case RGB32UI: case RGB32I: return 3;
+        default: return IntegerLayoutOf(LayoutOf(f)).channels;
+      }
+    }
   }
 }
+
+bool IsIntegerInternalFormat(Enum f) { return IsIntegerLayout(LayoutOf(f)); }
 
 bool IsDepthFormat(Enum f) {
   return f == DEPTH_COMPONENT || f == DEPTH_COMPONENT16 || f == DEPTH_COMPONENT24 || f == DEPTH_COMPONENT32F ||
@@ -86,6 +95,31 @@ TexelLayout LayoutOf(Enum f) {
     case DEPTH_COMPONENT32F:
     case DEPTH24_STENCIL8:
     case DEPTH32F_STENCIL8: return TexelLayout::kFloat32x1;
+    case R8UI: return IntegerLayoutFor(1, 1, false);
+    case R8I: return IntegerLayoutFor(1, 1, true);
+    case R16UI: return IntegerLayoutFor(1, 2, false);
+    case R16I: return IntegerLayoutFor(1, 2, true);
+    case R32UI: return IntegerLayoutFor(1, 4, false);
+    case R32I: return IntegerLayoutFor(1, 4, true);
+    case RG8UI: return IntegerLayoutFor(2, 1, false);
+    case RG8I: return IntegerLayoutFor(2, 1, true);
+    case RG16UI: return IntegerLayoutFor(2, 2, false);
+    case RG16I: return IntegerLayoutFor(2, 2, true);
+    case RG32UI: return IntegerLayoutFor(2, 4, false);
+    case RG32I: return IntegerLayoutFor(2, 4, true);
+    case RGB8UI:
+    case RGBA8UI: return IntegerLayoutFor(4, 1, false);
+    case RGB8I:
+    case RGBA8I: return IntegerLayoutFor(4, 1, true);
+    case RGB16UI:
+    case RGBA16UI: return IntegerLayoutFor(4, 2, false);
+    case RGB16I:
+    case RGBA16I: return IntegerLayoutFor(4, 2, true);
+    case RGB32UI:
+    case RGBA32UI: return IntegerLayoutFor(4, 4, false);
+    case RGB32I:
+    case RGBA32I: return IntegerLayoutFor(4, 4, true);
+    case RGB10_A2UI: return TexelLayout::kUint1010102;
     default: return TexelLayout::kNone;
   }
 }
@@ -190,7 +224,70 @@ void StorePacked(TexelLayout l, std::uint8_t* p, std::uint32_t w) {
 
 }  // namespace
 
+glm::ivec4 IntegerTexel(TexelLayout layout, const std::uint8_t* p) {
+  const IntegerLayout k = IntegerLayoutOf(layout);
+  glm::ivec4 v(0, 0, 0, 1);
+  if (k.packed) {
+    const std::uint32_t w = LoadPacked(TexelLayout::kUnorm1010102, p);
+    return glm::ivec4(int(w & 0x3FFu), int((w >> 10) & 0x3FFu), int((w >> 20) & 0x3FFu), int(w >> 30));
+  }
+  for (int c = 0; c < k.channels; ++c, p += k.bytes) {
+    switch (k.bytes) {
+      case 1: v[c] = k.is_signed ? int(std::int8_t(*p)) : int(*p); break;
+      case 2: {
+        std::uint16_t h;
+        std::memcpy(&h, p, 2);
+        v[c] = k.is_signed ? int(std::int16_t(h)) : int(h);
+        break;
+      }
+      default: std::memcpy(&v[c], p, 4); break;
+    }
+  }
+  return v;
+}
+
+void StoreIntegerTexel(TexelLayout layout, std::uint8_t* p, const std::int64_t in[4], bool rgb_only) {
+  const IntegerLayout k = IntegerLayoutOf(layout);
+  std::int64_t v[4] = {in[0], in[1], in[2], rgb_only ? 1 : in[3]};
+  if (k.packed) {
+    std::uint32_t w = 0;
+    for (int c = 0; c < 4; ++c) {
+      const int bits = c < 3 ? 10 : 2;
+      w |= std::uint32_t(std::clamp<std::int64_t>(v[c], 0, (1 << bits) - 1)) << (10 * c);
+    }
+    return StorePacked(TexelLayout::kUnorm1010102, p, w);
+  }
+  const int bits = 8 * k.bytes;
+  const std::int64_t lo = k.is_signed ? -(std::int64_t(1) << (bits - 1)) : 0;
+  const std::int64_t hi = k.is_signed ? (std::int64_t(1) << (bits - 1)) - 1 : (std::int64_t(1) << bits) - 1;
+  for (int c = 0; c < k.channels; ++c, p += k.bytes) {
+    const std::uint32_t w = std::uint32_t(std::clamp(v[c], lo, hi));  // (two's complement for the signed ones)
+    switch (k.bytes) {
+      case 1: *p = std::uint8_t(w); break;
+      case 2: {
+        const std::uint16_t h = std::uint16_t(w);
+        std::memcpy(p, &h, 2);
+        break;
+      }
+      default: std::memcpy(p, &w, 4); break;
+    }
+  }
+}
+
+void PackIntegerTexel(TexelLayout layout, const std::uint8_t* texel, Enum format, Enum type, std::uint8_t* out) {
+  const glm::ivec4 v = IntegerTexel(layout, texel);
+  const std::int64_t values[4] = {IntegerValue(layout, v[0]), IntegerValue(layout, v[1]), IntegerValue(layout, v[2]),
+                                  IntegerValue(layout, v[3])};
+  PackInteger(format, type, values, out);
+}
+
 glm::vec4 RawTexel(TexelLayout layout, const std::uint8_t* p) {
+  if (IsIntegerLayout(layout)) {
+    const glm::ivec4 i = IntegerTexel(layout, p);
+    glm::vec4 v;
+    std::memcpy(&v.x, &i.x, 16);
+    return v;
+  }
   if (IsPackedUnorm(layout)) {
     const PackedUnorm k = PackingOf(layout);
     const std::uint32_t w = LoadPacked(layout, p);
@@ -374,6 +471,10 @@ void TextureLevel::Allocate(Enum internal_format, int w, int h, int sample_count
   srgb = IsSrgbFormat(internal_format);
   if (NoStoredAlpha(internal_format))  // alpha reads 1
     for (std::size_t k = 3; k < data.size() - kGatherPad; k += 4) data[k] = 255;
+  if (IsIntegerLayout(l) && FormatComponents(internal_format) == 3) {  // RGB8UI ...: alpha is 1 too
+    const std::int64_t zero[4] = {0, 0, 0, 1};
+    for (std::size_t k = 0; k < texels; ++k) StoreIntegerTexel(l, data.data() + k * std::size_t(b), zero);
+  }
 }
 
 void StoreTexel(TextureLevel& level, int i, int j, const glm::vec4& in, bool encode) {
@@ -438,6 +539,16 @@ void UploadRect(TextureLevel& level, int x, int y, int w, int h, Enum format, En
       for (std::size_t b = 0; b < element; ++b) swapped[e + b] = p[e + element - 1 - b];
     return swapped;
   };
+  if (IsIntegerLayout(level.layout)) {  // integers as they are, clamped to the channels' range
+    const bool rgb_only = FormatComponents(level.format) == 3;
+    std::int64_t v[4];
+    for (int j = 0; j < h; ++j)
+      for (int i = 0; i < w; ++i) {
+        UnpackInteger(format, type, pixel(i, j), v);
+        StoreIntegerTexel(level.layout, level.At(x + i, y + j), v, rgb_only);
+      }
+    return;
+  }
   if (format == DEPTH_STENCIL) {  // one packed value a pixel: 4 bytes (24_8) or 8 (float, then 24_8 with stencil low)
     for (int j = 0; j < h; ++j)
       for (int i = 0; i < w; ++i) {
@@ -699,7 +810,9 @@ void GenerateMipmaps(TextureObject& texture) {
 bool IsBufferTextureFormat(Enum f) {
   switch (f) {
     case R8: case R16: case R16F: case R32F: case RG8: case RG16: case RG16F: case RG32F: case RGBA8: case RGBA16:
-    case RGBA16F: case RGBA32F: return true;
+    case RGBA16F: case RGBA32F: case R8I: case R8UI: case R16I: case R16UI: case R32I: case R32UI: case RG8I:
+    case RG8UI: case RG16I: case RG16UI: case RG32I: case RG32UI: case RGBA8I: case RGBA8UI: case RGBA16I:
+    case RGBA16UI: case RGBA32I: case RGBA32UI: return true;
     default: return false;
   }
 }
@@ -716,6 +829,7 @@ TextureView MakeView(const TextureObject& texture, const SamplerParams* sampler)
   if (texture.target == TEXTURE_BUFFER) {  // texels read in place from the buffer's store: no levels, no filtering
     view.layout = LayoutOf(texture.buffer_format);
     view.scale = StorageScale(view.layout);
+    view.integer = IsIntegerLayout(view.layout);
     view.complete = texture.buffer_store != nullptr;
     if (view.complete && BytesPerTexel(view.layout) > 0) {
       view.buffer = texture.buffer_store->data();
@@ -740,6 +854,7 @@ TextureView MakeView(const TextureObject& texture, const SamplerParams* sampler)
     view.srgb = image.srgb;
     view.depth = IsDepthFormat(image.format);
     view.scale = StorageScale(image.layout);
+    view.integer = IsIntegerLayout(image.layout);
     return view;
   }
   const TextureLevel& base = texture.levels[0][p.base_level];
@@ -753,6 +868,26 @@ TextureView MakeView(const TextureObject& texture, const SamplerParams* sampler)
   view.border_raw = IsUnorm8(base.layout)    ? glm::clamp(p.border, 0.0f, 1.0f) * 255.0f
                     : IsWideFixedPoint(base.layout) ? glm::clamp(p.border, 0.0f, 1.0f)
                                               : p.border;
+  view.integer = IsIntegerLayout(base.layout);
+  if (view.integer) {
+    // An integer texture's border is the numbers TexParameterI* gave, else the bits of the floats (Mesa keeps the
+    // colour as one union and reads it so); it is filtered by NEAREST only (any other filter leaves it incomplete).
+    std::uint32_t bits[4];
+    if (p.border_integer) std::memcpy(bits, p.border_bits, 16);
+    else std::memcpy(bits, &p.border.x, 16);
+    std::memcpy(&view.border_raw.x, bits, 16);
+    view.anisotropy = 1.0f;
+  }
+  // The border colour as a texel of the format (OpenGL 4.6, section 8.14.2 and table 8.11): the channels the
+  // format lacks read 0, alpha 1 (in storage units; an integer format's 1).
+  const int channels = FormatComponents(base.format);
+  for (int c = channels; c < 3; ++c) view.border_raw[c] = 0.0f;
+  if (channels < 4) {
+    view.border_raw.a = IsUnorm8(base.layout) ? 255.0f : 1.0f;
+    if (view.integer) view.border_raw.a = std::bit_cast<float>(1);
+  }
+  if (view.integer && (p.mag_filter != NEAREST || (p.min_filter != NEAREST && p.min_filter != NEAREST_MIPMAP_NEAREST)))
+    return view;
   // q: the last level of the chain, level_base + floor(log2(max size)), but at most level_max.
   int levels = 0;
   const bool volume = texture.target == TEXTURE_3D;
@@ -778,8 +913,8 @@ TextureView MakeView(const TextureObject& texture, const SamplerParams* sampler)
     if (p.min_filter == LINEAR) view.fast = TextureView::Fast::kRepeatLinear;
     if (p.min_filter == LINEAR_MIPMAP_LINEAR) view.fast = TextureView::Fast::kRepeatTrilinear;
   }
-  view.wide = texture.target == TEXTURE_2D || texture.target == TEXTURE_CUBE_MAP || texture.target == TEXTURE_2D_ARRAY ||
-              texture.target == TEXTURE_3D || texture.target == TEXTURE_1D || texture.target == TEXTURE_1D_ARRAY;
+  view.wide = !view.integer && (texture.target == TEXTURE_2D || texture.target == TEXTURE_CUBE_MAP || texture.target == TEXTURE_2D_ARRAY ||
+              texture.target == TEXTURE_3D || texture.target == TEXTURE_1D || texture.target == TEXTURE_1D_ARRAY);
   return view;
 }
 

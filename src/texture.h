@@ -45,7 +45,33 @@ enum class TexelLayout : std::uint8_t {
   kUnorm16x4,  // RGBA16: four 16-bit words k, each k / 65535
   kUnorm16x2,  // RG16
   kUnorm16x1,  // R16, DEPTH_COMPONENT16
+  // Integer formats (R8UI ... RGBA32I): 8-, 16- or 32-bit integers a channel, unsigned or signed, four, two or one
+  // channels (the RGB formats in four, alpha kept 1). IntegerLayoutOf describes them; RGB10_A2UI packs its own.
+  kUint8x4, kUint8x2, kUint8x1, kSint8x4, kSint8x2, kSint8x1,
+  kUint16x4, kUint16x2, kUint16x1, kSint16x4, kSint16x2, kSint16x1,
+  kUint32x4, kUint32x2, kUint32x1, kSint32x4, kSint32x2, kSint32x1,
+  kUint1010102,  // RGB10_A2UI: red in bits 0-9, green 10-19, blue 20-29, alpha 30-31, as integers
 };
+
+/// An integer layout's channels: how many are stored (0: not an integer layout), their bytes, whether signed.
+/// (kUint1010102: four, packed in one word; `packed` set.)
+struct IntegerLayout {
+  int channels = 0, bytes = 0;
+  bool is_signed = false, packed = false;
+};
+constexpr IntegerLayout IntegerLayoutOf(TexelLayout l) {
+  if (l == TexelLayout::kUint1010102) return {4, 1, false, true};
+  const int i = int(l) - int(TexelLayout::kUint8x4);
+  if (i < 0 || i >= 18) return {};
+  constexpr int kCounts[3] = {4, 2, 1};
+  return {kCounts[i % 3], 1 << (i / 6), (i / 3) % 2 == 1, false};
+}
+constexpr bool IsIntegerLayout(TexelLayout l) { return IntegerLayoutOf(l).channels != 0; }
+/// The integer layout of `channels` (1, 2 or 4) channels of `bytes` (1, 2 or 4) bytes.
+constexpr TexelLayout IntegerLayoutFor(int channels, int bytes, bool is_signed) {
+  const int size = bytes == 4 ? 2 : bytes == 2 ? 1 : 0, count = channels == 4 ? 0 : channels == 2 ? 1 : 2;
+  return TexelLayout(int(TexelLayout::kUint8x4) + size * 6 + (is_signed ? 3 : 0) + count);
+}
 
 /// The layout of an internal format (kNone if softgl does not support it), and its bytes per texel.
 TexelLayout LayoutOf(Enum internal_format);
@@ -68,12 +94,30 @@ constexpr int BytesPerTexel(TexelLayout l) {
     case TexelLayout::kUnorm565:
     case TexelLayout::kUnorm4444:
     case TexelLayout::kUnorm5551: return 2;
-    default: return 0;
+    case TexelLayout::kUint1010102: return 4;
+    default: {
+      const IntegerLayout k = IntegerLayoutOf(l);
+      return k.channels * k.bytes;
+    }
   }
 }
 /// The texel at p as RGBA in storage units: byte values 0..255 for fixed-point layouts, the floats otherwise;
 /// channels the layout lacks read (0, 0, 0, 1) in the same units.
 glm::vec4 RawTexel(TexelLayout layout, const std::uint8_t* p);
+/// The texel of an integer layout at p: its channels sign- or zero-extended to 32 bits (an unsigned channel's value
+/// as the bits of a uint32), the channels the layout lacks (0, 0, 0, 1). RawTexel gives these 32 bits as floats'
+/// bits, so that sampling, which only copies an integer texture's texels, hands them on unchanged.
+glm::ivec4 IntegerTexel(TexelLayout layout, const std::uint8_t* p);
+/// Stores integer values v (any, each clamped to the channel's range: OpenGL's conversion to an integer format)
+/// into an integer texel at p; with `rgb_only` alpha is stored as 1.
+void StoreIntegerTexel(TexelLayout layout, std::uint8_t* p, const std::int64_t v[4], bool rgb_only = false);
+/// The value of channel bits `bits` (IntegerTexel's) of an integer layout, as a number: signed or unsigned.
+inline std::int64_t IntegerValue(TexelLayout layout, std::int32_t bits) {
+  return IntegerLayoutOf(layout).is_signed ? std::int64_t(bits) : std::int64_t(std::uint32_t(bits));
+}
+/// Writes the integer texel at `texel` as a client pixel of integer format `format` and `type` at out (PackInteger's
+/// clamping to the type).
+void PackIntegerTexel(TexelLayout layout, const std::uint8_t* texel, Enum format, Enum type, std::uint8_t* out);
 constexpr bool IsUnorm8(TexelLayout l) {
   return l == TexelLayout::kUnorm8x4 || l == TexelLayout::kUnorm8x2 || l == TexelLayout::kUnorm8x1;
 }
@@ -125,6 +169,8 @@ float HalfToFloat(std::uint16_t h);
 std::uint32_t FloatToUnsignedSmall(float f, int mantissa_bits);
 float UnsignedSmallToFloat(std::uint32_t v, int mantissa_bits);
 
+/// The integer internal formats (R8UI ... RGBA32I, RGB10_A2UI).
+bool IsIntegerInternalFormat(Enum f);
 /// SRGB8 and SRGB8_ALPHA8: colour channels stored sRGB-encoded (OpenGL 4.6, section 8.24).
 inline bool IsSrgbFormat(Enum f) { return f == SRGB8 || f == SRGB8_ALPHA8; }
 /// RGB8 and SRGB8: four bytes a texel, alpha not stored (kept 255, reads 1).
@@ -291,8 +337,8 @@ inline bool IsMultisampleTarget(Enum target) {
 inline bool HasLevelsAndSampling(Enum target) {
   return TextureKind(target) >= 0 && !IsMultisampleTarget(target) && target != TEXTURE_BUFFER;
 }
-/// The formats TexBuffer takes (OpenGL 3.3's table 3.15 without the integer ones): R8, R16, R16F, R32F, RG8,
-/// RG16, RG16F, RG32F, RGBA8, RGBA16, RGBA16F, RGBA32F.
+/// The formats TexBuffer takes (OpenGL 3.3's table 3.15): R8, R16, R16F, R32F, RG8, RG16, RG16F, RG32F, RGBA8,
+/// RGBA16, RGBA16F, RGBA32F and the integer R, RG and RGBA formats of 8, 16 and 32 bits.
 bool IsBufferTextureFormat(Enum internal_format);
 
 /// A texture as one draw samples it: completeness and the levels in use resolved once.
@@ -307,6 +353,9 @@ struct TextureView {
   int q = 0;           // the last level mipmapped filtering may use
   TexelLayout layout = TexelLayout::kNone;
   bool srgb = false;   // an sRGB format: colours decoded before filtering
+  // An integer format (R8UI ...): texels copied, never filtered or scaled (their 32 bits carried as floats' bits),
+  // NEAREST or NEAREST_MIPMAP_NEAREST only; incomplete, it samples as the integers (0, 0, 0, 1).
+  bool integer = false;
   float anisotropy = 1.0f;  // TEXTURE_MAX_ANISOTROPY cut to kMaxAnisotropy; above 1 2D, array and cube samples are anisotropic
   float scale = 1.0f;  // StorageScale(layout)
   glm::vec4 border_raw{0.0f};  // the border colour in storage units

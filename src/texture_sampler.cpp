@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <bit>
 #include <cstring>
 #include <utility>
 
@@ -47,6 +48,11 @@ using detail::TextureLevel;
 using detail::TextureView;
 
 const glm::vec4 kMissing(0.0f, 0.0f, 0.0f, 1.0f);  // what an incomplete or missing texture samples as
+// What an incomplete integer texture samples as: the integers (0, 0, 0, 1), as floats' bits.
+const glm::vec4 kMissingInteger(0.0f, 0.0f, 0.0f, std::bit_cast<float>(1));
+
+// A sample in the view's units: the storage units divided by the scale; an integer texture's bits as they are.
+SOFTGL_INLINE glm::vec4 Unscaled(const TextureView& v, const glm::vec4& t) { return v.integer ? t : t / v.scale; }
 
 // Table 8.20: the texel index i wrapped into [0, size); -1 for a border texel.
 SOFTGL_INLINE int Wrap(Enum mode, long i, int size) {
@@ -245,6 +251,12 @@ int ArrayLayer(const TextureView& view, float r) {
   const int layers = view.texture->levels[0][view.base].depth;
   const float l = std::floor(r + 0.5f);
   return std::isnan(l) ? 0 : int(std::clamp(l, 0.0f, float(layers - 1)));
+}
+
+// What unit's texture samples as while unusable: an integer texture's integers (0, 0, 0, 1), else kMissing.
+const glm::vec4& MissingFor(const TextureView* const* units, int unit) {
+  const bool integer = unit >= 0 && unit < kMaxTextureUnits && units[unit] && units[unit]->integer;
+  return integer ? kMissingInteger : kMissing;
 }
 
 const TextureView* Usable(const TextureView* const* units, int unit) {
@@ -1340,18 +1352,18 @@ glm::vec4 SampleAnisotropic(const TextureView& view, glm::vec2 uv, glm::vec2 dx,
 }
 
 glm::vec4 Sample2D(const TextureView& v, glm::vec2 uv, glm::vec2 duv_dx, glm::vec2 duv_dy, float bias) {
-  if (v.anisotropy > 1.0f && !v.depth) return SampleAnisotropic(v, uv, duv_dx, duv_dy, bias) / v.scale;
+  if (v.anisotropy > 1.0f && !v.depth) return Unscaled(v, SampleAnisotropic(v, uv, duv_dx, duv_dy, bias));
   const float lambda = Lambda(v, duv_dx, duv_dy, bias);
-  if (v.fast != TextureView::Fast::kNone) return SampleRepeat(v, uv, lambda) / v.scale;
-  return SampleFace(v, 0, uv, lambda, DepthCompare{}) / v.scale;
+  if (v.fast != TextureView::Fast::kNone) return Unscaled(v, SampleRepeat(v, uv, lambda));
+  return Unscaled(v, SampleFace(v, 0, uv, lambda, DepthCompare{}));
 }
 
 // Textures::SampleArray and SampleCube on a usable view.
 glm::vec4 SampleArrayOf(const TextureView& v, glm::vec3 uvl, glm::vec2 duv_dx, glm::vec2 duv_dy, float bias) {
   const int layer = ArrayLayer(v, uvl.z);
   const glm::vec2 uv(uvl);
-  if (v.anisotropy > 1.0f && !v.depth) return SampleAnisotropic(v, uv, duv_dx, duv_dy, bias, layer) / v.scale;
-  return SampleFace(v, 0, uv, Lambda(v, duv_dx, duv_dy, bias), DepthCompare{}, layer) / v.scale;
+  if (v.anisotropy > 1.0f && !v.depth) return Unscaled(v, SampleAnisotropic(v, uv, duv_dx, duv_dy, bias, layer));
+  return Unscaled(v, SampleFace(v, 0, uv, Lambda(v, duv_dx, duv_dy, bias), DepthCompare{}, layer));
 }
 glm::vec4 SampleCubeOf(const TextureView& v, glm::vec3 dir, glm::vec3 ddir_dx, glm::vec3 ddir_dy, float bias) {
   const int face = CubeFace(dir);
@@ -1361,8 +1373,8 @@ glm::vec4 SampleCubeOf(const TextureView& v, glm::vec3 dir, glm::vec3 ddir_dx, g
   // neighbour may point at another face: its coordinates must still be measured on this one).
   const glm::vec2 dx = FaceCoords(face, dir + ddir_dx, st_x) ? st_x - st : glm::vec2(0.0f);
   const glm::vec2 dy = FaceCoords(face, dir + ddir_dy, st_y) ? st_y - st : glm::vec2(0.0f);
-  if (v.anisotropy > 1.0f && !v.depth) return SampleAnisotropic(v, st, dx, dy, bias, 0, face) / v.scale;
-  return SampleFace(v, face, st, Lambda(v, dx, dy, bias), DepthCompare{}) / v.scale;
+  if (v.anisotropy > 1.0f && !v.depth) return Unscaled(v, SampleAnisotropic(v, st, dx, dy, bias, 0, face));
+  return Unscaled(v, SampleFace(v, face, st, Lambda(v, dx, dy, bias), DepthCompare{}));
 }
 // SampleShadow on a 2D texture or one layer of a 2D array.
 float ShadowOf(const TextureView* v, glm::vec2 uv, int layer_or_minus, float r, float ref, glm::vec2 duv_dx,
@@ -1378,26 +1390,25 @@ float ShadowOf(const TextureView* v, glm::vec2 uv, int layer_or_minus, float r, 
 
 // Textures::SampleLod, SampleArrayLod and SampleCubeLod on a usable view.
 glm::vec4 SampleLodOf(const TextureView& v, glm::vec2 uv, float lod, int layer = 0) {
-  return SampleFace(v, 0, uv, ExplicitLambda(v, lod), DepthCompare{}, layer) / v.scale;
+  return Unscaled(v, SampleFace(v, 0, uv, ExplicitLambda(v, lod), DepthCompare{}, layer));
 }
 glm::vec4 SampleCubeLodOf(const TextureView& v, glm::vec3 dir, float lod) {
   const int face = CubeFace(dir);
   glm::vec2 st(0.5f);
   FaceCoords(face, dir, st);
-  return SampleFace(v, face, st, ExplicitLambda(v, lod), DepthCompare{}) / v.scale;
+  return Unscaled(v, SampleFace(v, face, st, ExplicitLambda(v, lod), DepthCompare{}));
 }
 
 // Textures::Sample3D and Sample3DLod on a usable view.
 glm::vec4 Sample3DOf(const TextureView& v, glm::vec3 str, glm::vec3 dstr_dx, glm::vec3 dstr_dy, float bias) {
   const auto& levels = v.texture->levels[0];
-  return SampleMip(v, LambdaVolume(v, dstr_dx, dstr_dy, bias),
-                   [&](int d, Enum f) { return FilterVolume(v, levels[d], f, str); }) /
-         v.scale;
+  return Unscaled(v, SampleMip(v, LambdaVolume(v, dstr_dx, dstr_dy, bias),
+                               [&](int d, Enum f) { return FilterVolume(v, levels[d], f, str); }));
 }
 glm::vec4 Sample3DLodOf(const TextureView& v, glm::vec3 str, float lod) {
   const auto& levels = v.texture->levels[0];
-  return SampleMip(v, ExplicitLambda(v, lod), [&](int d, Enum f) { return FilterVolume(v, levels[d], f, str); }) /
-         v.scale;
+  return Unscaled(v, SampleMip(v, ExplicitLambda(v, lod),
+                               [&](int d, Enum f) { return FilterVolume(v, levels[d], f, str); }));
 }
 
 glm::vec4 SampleOneLane(const TextureView& v, Lookup kind, const Textures::Lanes& c, int l, float bias,
@@ -1424,11 +1435,11 @@ glm::vec4 SampleOneLane(const TextureView& v, Lookup kind, const Textures::Lanes
 }
 
 // A block's lookup: on the vector path where the view allows, else lane by lane.
-void SampleBlock(const TextureView* v, Lookup kind, const Textures::Lanes& c, float bias, const float* lod,
-                 float out[4][16]) {
+void SampleBlock(const TextureView* v, const glm::vec4& missing, Lookup kind, const Textures::Lanes& c, float bias,
+                 const float* lod, float out[4][16]) {
   if (!v) {
     for (int l = 0; l < 16; ++l)
-      for (int ch = 0; ch < 4; ++ch) out[ch][l] = kMissing[ch];
+      for (int ch = 0; ch < 4; ++ch) out[ch][l] = missing[ch];
     return;
   }
   const bool shadow = kind == Lookup::kShadow || kind == Lookup::kArrayShadow;
@@ -1450,7 +1461,7 @@ void SampleBlock(const TextureView* v, Lookup kind, const Textures::Lanes& c, fl
 
 glm::vec4 Textures::Sample(int unit, glm::vec2 uv, glm::vec2 duv_dx, glm::vec2 duv_dy, float bias) const {
   const TextureView* v = Usable(unit_2d, unit);
-  return v ? Sample2D(*v, uv, duv_dx, duv_dy, bias) : kMissing;
+  return v ? Sample2D(*v, uv, duv_dx, duv_dy, bias) : MissingFor(unit_2d, unit);
 }
 
 void Textures::SampleQuad(int unit, const glm::vec2 uv[4], const glm::vec2 duv_dx[4], const glm::vec2 duv_dy[4],
@@ -1459,34 +1470,34 @@ void Textures::SampleQuad(int unit, const glm::vec2 uv[4], const glm::vec2 duv_d
 }
 
 void Textures::SampleLanes(int unit, const Lanes& c, float bias, float out[4][16]) const {
-  SampleBlock(Usable(unit_2d, unit), Lookup::k2D, c, bias, nullptr, out);
+  SampleBlock(Usable(unit_2d, unit), MissingFor(unit_2d, unit), Lookup::k2D, c, bias, nullptr, out);
 }
 
 glm::vec4 Textures::SampleLod(int unit, glm::vec2 uv, float lod) const {
   const TextureView* v = Usable(unit_2d, unit);
-  return v ? SampleLodOf(*v, uv, lod) : kMissing;
+  return v ? SampleLodOf(*v, uv, lod) : MissingFor(unit_2d, unit);
 }
 
 void Textures::SampleLodLanes(int unit, const Lanes& c, const float lod[16], float out[4][16]) const {
-  SampleBlock(Usable(unit_2d, unit), Lookup::kLod, c, 0.0f, lod, out);
+  SampleBlock(Usable(unit_2d, unit), MissingFor(unit_2d, unit), Lookup::kLod, c, 0.0f, lod, out);
 }
 
 glm::vec4 Textures::SampleCube(int unit, glm::vec3 dir, glm::vec3 ddir_dx, glm::vec3 ddir_dy, float bias) const {
   const TextureView* v = Usable(unit_cube, unit);
-  return v ? SampleCubeOf(*v, dir, ddir_dx, ddir_dy, bias) : kMissing;
+  return v ? SampleCubeOf(*v, dir, ddir_dx, ddir_dy, bias) : MissingFor(unit_cube, unit);
 }
 
 void Textures::SampleCubeLanes(int unit, const Lanes& c, float bias, float out[4][16]) const {
-  SampleBlock(Usable(unit_cube, unit), Lookup::kCube, c, bias, nullptr, out);
+  SampleBlock(Usable(unit_cube, unit), MissingFor(unit_cube, unit), Lookup::kCube, c, bias, nullptr, out);
 }
 
 glm::vec4 Textures::SampleCubeLod(int unit, glm::vec3 dir, float lod) const {
   const TextureView* v = Usable(unit_cube, unit);
-  return v ? SampleCubeLodOf(*v, dir, lod) : kMissing;
+  return v ? SampleCubeLodOf(*v, dir, lod) : MissingFor(unit_cube, unit);
 }
 
 void Textures::SampleCubeLodLanes(int unit, const Lanes& c, const float lod[16], float out[4][16]) const {
-  SampleBlock(Usable(unit_cube, unit), Lookup::kCubeLod, c, 0.0f, lod, out);
+  SampleBlock(Usable(unit_cube, unit), MissingFor(unit_cube, unit), Lookup::kCubeLod, c, 0.0f, lod, out);
 }
 
 
@@ -1496,18 +1507,18 @@ float Textures::SampleShadow(int unit, glm::vec2 uv, float ref, glm::vec2 duv_dx
 
 void Textures::SampleShadowLanes(int unit, const Lanes& c, float out[16]) const {
   float all[4][16];
-  SampleBlock(Usable(unit_2d, unit), Lookup::kShadow, c, 0.0f, nullptr, all);
+  SampleBlock(Usable(unit_2d, unit), MissingFor(unit_2d, unit), Lookup::kShadow, c, 0.0f, nullptr, all);
   std::memcpy(out, all[0], sizeof all[0]);
 }
 
 glm::vec4 Textures::SampleArray(int unit, glm::vec3 uvl, glm::vec2 duv_dx, glm::vec2 duv_dy, float bias) const {
   const TextureView* v = Usable(unit_2d_array, unit);
-  return v ? SampleArrayOf(*v, uvl, duv_dx, duv_dy, bias) : kMissing;
+  return v ? SampleArrayOf(*v, uvl, duv_dx, duv_dy, bias) : MissingFor(unit_2d_array, unit);
 }
 
 glm::vec4 Textures::SampleArrayLod(int unit, glm::vec3 uvl, float lod) const {
   const TextureView* v = Usable(unit_2d_array, unit);
-  return v ? SampleLodOf(*v, glm::vec2(uvl), lod, ArrayLayer(*v, uvl.z)) : kMissing;
+  return v ? SampleLodOf(*v, glm::vec2(uvl), lod, ArrayLayer(*v, uvl.z)) : MissingFor(unit_2d_array, unit);
 }
 
 float Textures::SampleArrayShadow(int unit, glm::vec3 uvl, float ref, glm::vec2 duv_dx, glm::vec2 duv_dy) const {
@@ -1516,57 +1527,57 @@ float Textures::SampleArrayShadow(int unit, glm::vec3 uvl, float ref, glm::vec2 
 
 glm::vec4 Textures::Sample3D(int unit, glm::vec3 str, glm::vec3 dstr_dx, glm::vec3 dstr_dy, float bias) const {
   const TextureView* v = Usable(unit_3d, unit);
-  return v ? Sample3DOf(*v, str, dstr_dx, dstr_dy, bias) : kMissing;
+  return v ? Sample3DOf(*v, str, dstr_dx, dstr_dy, bias) : MissingFor(unit_3d, unit);
 }
 
 glm::vec4 Textures::Sample3DLod(int unit, glm::vec3 str, float lod) const {
   const TextureView* v = Usable(unit_3d, unit);
-  return v ? Sample3DLodOf(*v, str, lod) : kMissing;
+  return v ? Sample3DLodOf(*v, str, lod) : MissingFor(unit_3d, unit);
 }
 
 
 void Textures::SampleArrayLanes(int unit, const Lanes& c, float bias, float out[4][16]) const {
-  SampleBlock(Usable(unit_2d_array, unit), Lookup::kArray, c, bias, nullptr, out);
+  SampleBlock(Usable(unit_2d_array, unit), MissingFor(unit_2d_array, unit), Lookup::kArray, c, bias, nullptr, out);
 }
 
 void Textures::SampleArrayLodLanes(int unit, const Lanes& c, const float lod[16], float out[4][16]) const {
-  SampleBlock(Usable(unit_2d_array, unit), Lookup::kArrayLod, c, 0.0f, lod, out);
+  SampleBlock(Usable(unit_2d_array, unit), MissingFor(unit_2d_array, unit), Lookup::kArrayLod, c, 0.0f, lod, out);
 }
 
 void Textures::SampleArrayShadowLanes(int unit, const Lanes& c, const float ref[16], float out[16]) const {
   float all[4][16];
-  SampleBlock(Usable(unit_2d_array, unit), Lookup::kArrayShadow, c, 0.0f, ref, all);
+  SampleBlock(Usable(unit_2d_array, unit), MissingFor(unit_2d_array, unit), Lookup::kArrayShadow, c, 0.0f, ref, all);
   std::memcpy(out, all[0], sizeof all[0]);
 }
 
 void Textures::Sample3DLanes(int unit, const Lanes& c, float bias, float out[4][16]) const {
-  SampleBlock(Usable(unit_3d, unit), Lookup::k3D, c, bias, nullptr, out);
+  SampleBlock(Usable(unit_3d, unit), MissingFor(unit_3d, unit), Lookup::k3D, c, bias, nullptr, out);
 }
 
 void Textures::Sample3DLodLanes(int unit, const Lanes& c, const float lod[16], float out[4][16]) const {
-  SampleBlock(Usable(unit_3d, unit), Lookup::k3DLod, c, 0.0f, lod, out);
+  SampleBlock(Usable(unit_3d, unit), MissingFor(unit_3d, unit), Lookup::k3DLod, c, 0.0f, lod, out);
 }
 
 // 1D textures: as 2D ones one texel high, sampled at t = 1/2 with t's derivatives 0 (the view clamps in t).
 glm::vec4 Textures::Sample1D(int unit, float s, float ds_dx, float ds_dy, float bias) const {
   const TextureView* v = Usable(unit_1d, unit);
-  return v ? Sample2D(*v, glm::vec2(s, 0.5f), glm::vec2(ds_dx, 0.0f), glm::vec2(ds_dy, 0.0f), bias) : kMissing;
+  return v ? Sample2D(*v, glm::vec2(s, 0.5f), glm::vec2(ds_dx, 0.0f), glm::vec2(ds_dy, 0.0f), bias) : MissingFor(unit_1d, unit);
 }
 
 glm::vec4 Textures::Sample1DLod(int unit, float s, float lod) const {
   const TextureView* v = Usable(unit_1d, unit);
-  return v ? SampleLodOf(*v, glm::vec2(s, 0.5f), lod) : kMissing;
+  return v ? SampleLodOf(*v, glm::vec2(s, 0.5f), lod) : MissingFor(unit_1d, unit);
 }
 
 glm::vec4 Textures::Sample1DArray(int unit, glm::vec2 sl, float ds_dx, float ds_dy, float bias) const {
   const TextureView* v = Usable(unit_1d_array, unit);
   return v ? SampleArrayOf(*v, glm::vec3(sl.x, 0.5f, sl.y), glm::vec2(ds_dx, 0.0f), glm::vec2(ds_dy, 0.0f), bias)
-           : kMissing;
+           : MissingFor(unit_1d_array, unit);
 }
 
 glm::vec4 Textures::Sample1DArrayLod(int unit, glm::vec2 sl, float lod) const {
   const TextureView* v = Usable(unit_1d_array, unit);
-  return v ? SampleLodOf(*v, glm::vec2(sl.x, 0.5f), lod, ArrayLayer(*v, sl.y)) : kMissing;
+  return v ? SampleLodOf(*v, glm::vec2(sl.x, 0.5f), lod, ArrayLayer(*v, sl.y)) : MissingFor(unit_1d_array, unit);
 }
 
 namespace {
@@ -1584,19 +1595,19 @@ Textures::Lanes OneDimensional(const Textures::Lanes& c, bool array) {
 }  // namespace
 
 void Textures::Sample1DLanes(int unit, const Lanes& c, float bias, float out[4][16]) const {
-  SampleBlock(Usable(unit_1d, unit), Lookup::k2D, OneDimensional(c, false), bias, nullptr, out);
+  SampleBlock(Usable(unit_1d, unit), MissingFor(unit_1d, unit), Lookup::k2D, OneDimensional(c, false), bias, nullptr, out);
 }
 
 void Textures::Sample1DLodLanes(int unit, const Lanes& c, const float lod[16], float out[4][16]) const {
-  SampleBlock(Usable(unit_1d, unit), Lookup::kLod, OneDimensional(c, false), 0.0f, lod, out);
+  SampleBlock(Usable(unit_1d, unit), MissingFor(unit_1d, unit), Lookup::kLod, OneDimensional(c, false), 0.0f, lod, out);
 }
 
 void Textures::Sample1DArrayLanes(int unit, const Lanes& c, float bias, float out[4][16]) const {
-  SampleBlock(Usable(unit_1d_array, unit), Lookup::kArray, OneDimensional(c, true), bias, nullptr, out);
+  SampleBlock(Usable(unit_1d_array, unit), MissingFor(unit_1d_array, unit), Lookup::kArray, OneDimensional(c, true), bias, nullptr, out);
 }
 
 void Textures::Sample1DArrayLodLanes(int unit, const Lanes& c, const float lod[16], float out[4][16]) const {
-  SampleBlock(Usable(unit_1d_array, unit), Lookup::kArrayLod, OneDimensional(c, true), 0.0f, lod, out);
+  SampleBlock(Usable(unit_1d_array, unit), MissingFor(unit_1d_array, unit), Lookup::kArrayLod, OneDimensional(c, true), 0.0f, lod, out);
 }
 
 namespace {
@@ -1632,7 +1643,7 @@ namespace {
 glm::vec4 TexelOf(const TextureView& v, const TextureLevel& lv, glm::ivec2 p, int plane, int planes) {
   if (!lv.Defined() || p.x < 0 || p.y < 0 || p.x >= lv.width || p.y >= lv.height || plane < 0 || plane >= planes)
     return glm::vec4(0.0f);
-  return lv.Sampled(p.x, plane * lv.height + p.y) / v.scale;
+  return Unscaled(v, lv.Sampled(p.x, plane * lv.height + p.y));
 }
 
 // ---- texelFetch for a block of lanes ------------------------------------------------------------------------------
@@ -1717,6 +1728,18 @@ void FetchBlock(const TextureView* v, bool multisample, const int* x, const int*
       for (int l = 0; l < 16; ++l) out[c][l] = 0.0f;
     return;
   }
+  if (v->integer) {  // integer texels one lane at a time, copied as they are (TexelOf)
+    const auto& levels = v->texture->levels[0];
+    for (int l = 0; l < 16; ++l) {
+      const bool level_ok = multisample ? true : unsigned(k[l]) < unsigned(detail::kMaxLevels - v->base);
+      const TextureLevel& lv = levels[multisample ? 0 : (level_ok ? v->base + k[l] : 0)];
+      const glm::vec4 t = !level_ok ? glm::vec4(0.0f)
+                          : multisample ? TexelOf(*v, lv, glm::ivec2(x[l], y[l]), k[l], lv.samples)
+                                        : TexelOf(*v, lv, glm::ivec2(x[l], y[l]), 0, 1);
+      for (int c = 0; c < 4; ++c) out[c][l] = t[c];
+    }
+    return;
+  }
   static const FetchTexelLanesFn fetch = SOFTGL_CHOOSE(FetchTexelLanes, );
   fetch(*v, multisample, x, y, k, out);
 }
@@ -1788,8 +1811,7 @@ namespace {
 glm::vec4 BufferTexel(const TextureView& v, int index) {
   static constexpr std::uint8_t kZero[16] = {};
   const bool inside = index >= 0 && index < v.buffer_texels;
-  return RawTexel(v.layout, inside ? v.buffer + std::size_t(index) * std::size_t(BytesPerTexel(v.layout)) : kZero) /
-         v.scale;
+  return Unscaled(v, RawTexel(v.layout, inside ? v.buffer + std::size_t(index) * std::size_t(BytesPerTexel(v.layout)) : kZero));
 }
 }  // namespace
 

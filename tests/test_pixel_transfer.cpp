@@ -50,7 +50,9 @@ Enum Expected(Enum format, Enum type, TransferCall call) {
   if (In(type, kDepthStencilTypes)) return INVALID_OPERATION;
   if (In(type, kRgbPacked) && format != RGB && format != RGB_INTEGER) return INVALID_OPERATION;
   if (In(type, kRgbaPacked) && !InList(format, {RGBA, BGRA, RGBA_INTEGER, BGRA_INTEGER})) return INVALID_OPERATION;
-  if (In(format, kIntegerFormats)) return INVALID_OPERATION;  // no integer data in softgl
+  // Integer data with a float type (section 3.7.2: an integer format goes with an integer or packed type).
+  if (In(format, kIntegerFormats) && InList(type, {FLOAT, HALF_FLOAT, UNSIGNED_INT_10F_11F_11F_REV, UNSIGNED_INT_5_9_9_9_REV}))
+    return INVALID_OPERATION;
   return NO_ERROR;
 }
 
@@ -94,8 +96,9 @@ TEST_CASE("pixel transfer: every format and type pair gets OpenGL 3.3's code", "
         accepted += got == NO_ERROR;
       }
     // 8 colour formats x 8 plain types, RGB x 6 packed types, RGBA and BGRA x 8, DEPTH_COMPONENT x 8, DEPTH_STENCIL
-    // x 2; and STENCIL_INDEX x 8 for ReadPixels.
-    CHECK(accepted == 64 + 6 + 16 + 8 + 2 + (call == TransferCall::kReadPixels ? 8 : 0));
+    // x 2; the 8 integer formats x the 6 integer types, RGB_INTEGER x the 4 packed ones that are not floats,
+    // RGBA_INTEGER and BGRA_INTEGER x 8; and STENCIL_INDEX x 8 for ReadPixels.
+    CHECK(accepted == 64 + 6 + 16 + 8 + 2 + 48 + 4 + 16 + (call == TransferCall::kReadPixels ? 8 : 0));
   }
   // Sizes: one packed value a pixel, the plain types a component each.
   CHECK(detail::TransferPixelBytes(RGB, UNSIGNED_SHORT_5_6_5) == 2);
@@ -477,7 +480,7 @@ TEST_CASE("pixel transfer: TexImage2D takes every type and GetTexImage gives it 
     gl.GetTexImage(TEXTURE_2D, 0, BGR, UNSIGNED_INT_5_9_9_9_REV, &out);
     CHECK(gl.GetError() == INVALID_OPERATION);
     gl.GetTexImage(TEXTURE_2D, 0, BGRA_INTEGER, UNSIGNED_INT_8_8_8_8, &out);
-    CHECK(gl.GetError() == INVALID_OPERATION);
+    CHECK(gl.GetError() == INVALID_OPERATION);  // integer data from a normalized texture
     gl.ReadPixels(0, 0, 1, 1, RGBA, UNSIGNED_SHORT_5_6_5, &out);
     CHECK(gl.GetError() == INVALID_OPERATION);
     gl.ReadPixels(0, 0, 1, 1, RED_INTEGER, FLOAT, &out);

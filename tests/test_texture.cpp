@@ -358,6 +358,36 @@ TEST_CASE("depth comparison filters the results of the comparisons (PCF)", "[tex
   CHECK(tx.SampleShadow(0, {0.5f, 0.5f}, 0.4f, {}, {}) == 0.0f);
 }
 
+TEST_CASE("the border colour is a texel of the texture's format: channels it lacks read 0, alpha 1", "[texture]") {
+  // (OpenGL 4.6, table 8.11; Mesa gives these too.) Sampled outside a 2 x 2 texture under CLAMP_TO_BORDER, on the
+  // one-lane path and the vector one.
+  const struct { Enum format; glm::vec4 want; } cases[] = {
+      {R8, {0.4f, 0, 0, 1}},       {RG8, {0.4f, 0.6f, 0, 1}},   {RGB8, {0.4f, 0.6f, 0.2f, 1}},
+      {R32F, {0.4f, 0, 0, 1}},     {RGB565, {0.4f, 0.6f, 0.2f, 1}}, {R11F_G11F_B10F, {0.4f, 0.6f, 0.2f, 1}},
+      {RGBA8, {0.4f, 0.6f, 0.2f, 0.8f}}, {RG16F, {0.4f, 0.6f, 0, 1}}};
+  for (const auto& c : cases) {
+    CAPTURE(c.format);
+    TextureObject t;
+    t.target = TEXTURE_2D;
+    t.levels[0][0].Allocate(c.format, 2, 2);
+    t.params.min_filter = t.params.mag_filter = NEAREST;
+    t.params.wrap_s = t.params.wrap_t = CLAMP_TO_BORDER;
+    t.params.border = glm::vec4(0.4f, 0.6f, 0.2f, 0.8f);
+    TextureView view = detail::MakeView(t);
+    Textures tx;
+    tx.unit_2d[0] = &view;
+    const glm::vec4 one = tx.Sample(0, {-0.5f, -0.5f}, {}, {});
+    Textures::Lanes lanes{};
+    for (int l = 0; l < 16; ++l) lanes.s[l] = lanes.t[l] = -0.5f;
+    float out[4][16];
+    tx.SampleLanes(0, lanes, 0.0f, out);
+    for (int ch = 0; ch < 4; ++ch) {
+      CHECK(one[ch] == Approx(c.want[ch]).margin(1e-6));
+      CHECK(out[ch][7] == Approx(c.want[ch]).margin(1e-6));
+    }
+  }
+}
+
 TEST_CASE("cube maps choose the face of the major axis", "[texture]") {
   TextureObject t;
   t.target = TEXTURE_CUBE_MAP;

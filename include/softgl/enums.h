@@ -243,6 +243,35 @@ inline constexpr Enum RGBA16F = 0x881A;  // half floats (IEEE binary16), 8 bytes
 inline constexpr Enum RG16F = 0x822F;
 inline constexpr Enum R16F = 0x822D;
 inline constexpr Enum R11F_G11F_B10F = 0x8C3A;  // unsigned 11-, 11- and 10-bit floats packed in 32 bits
+// Integer formats (OpenGL 3.3, table 3.12): 8-, 16- or 32-bit integers a channel, unsigned (UI) or signed (I),
+// sampled without filtering and read as integers (the shader's ITexture, ITexelFetch ...; see docs/guide.md,
+// "Integer textures and colour buffers"). The R, RG and RGBA ones and RGB10_A2UI are colour-renderable; the RGB
+// ones are textures only.
+inline constexpr Enum R8I = 0x8231;
+inline constexpr Enum R8UI = 0x8232;
+inline constexpr Enum R16I = 0x8233;
+inline constexpr Enum R16UI = 0x8234;
+inline constexpr Enum R32I = 0x8235;
+inline constexpr Enum R32UI = 0x8236;
+inline constexpr Enum RG8I = 0x8237;
+inline constexpr Enum RG8UI = 0x8238;
+inline constexpr Enum RG16I = 0x8239;
+inline constexpr Enum RG16UI = 0x823A;
+inline constexpr Enum RG32I = 0x823B;
+inline constexpr Enum RG32UI = 0x823C;
+inline constexpr Enum RGBA32UI = 0x8D70;
+inline constexpr Enum RGB32UI = 0x8D71;
+inline constexpr Enum RGBA16UI = 0x8D76;
+inline constexpr Enum RGB16UI = 0x8D77;
+inline constexpr Enum RGBA8UI = 0x8D7C;
+inline constexpr Enum RGB8UI = 0x8D7D;
+inline constexpr Enum RGBA32I = 0x8D82;
+inline constexpr Enum RGB32I = 0x8D83;
+inline constexpr Enum RGBA16I = 0x8D88;
+inline constexpr Enum RGB16I = 0x8D89;
+inline constexpr Enum RGBA8I = 0x8D8E;
+inline constexpr Enum RGB8I = 0x8D8F;
+inline constexpr Enum RGB10_A2UI = 0x906F;  // 10 bits a colour channel, alpha 2, unsigned integers
 inline constexpr Enum SRGB = 0x8C40;          // FRAMEBUFFER_ATTACHMENT_COLOR_ENCODING's value for sRGB buffers
 inline constexpr Enum SRGB8 = 0x8C41;         // sRGB-encoded RGB, 8 bits a channel (alpha reads 1)
 inline constexpr Enum SRGB8_ALPHA8 = 0x8C43;  // sRGB-encoded RGB with linear alpha, 8 bits a channel
@@ -286,8 +315,9 @@ inline constexpr Enum STENCIL_INDEX1 = 0x8D46;
 inline constexpr Enum STENCIL_INDEX4 = 0x8D47;
 inline constexpr Enum STENCIL_INDEX16 = 0x8D49;
 inline constexpr Enum FLOAT_32_UNSIGNED_INT_24_8_REV = 0x8DAD;  // DEPTH_STENCIL pixels: a float, then stencil low
-// Integer pixel formats. OpenGL 3.3 accepts them as names; softgl has no integer textures or colour buffers yet, so a
-// transfer with one is answered INVALID_OPERATION, as OpenGL answers one between integer and non-integer data.
+// Integer pixel formats: client data of the integer textures and colour buffers (TexImage*, ReadPixels,
+// GetTexImage), with integer types only; a transfer between integer data and a non-integer format (or the reverse)
+// is answered INVALID_OPERATION.
 inline constexpr Enum RED_INTEGER = 0x8D94;
 inline constexpr Enum GREEN_INTEGER = 0x8D95;
 inline constexpr Enum BLUE_INTEGER = 0x8D96;
@@ -511,6 +541,7 @@ inline constexpr Enum MAX_COLOR_ATTACHMENTS = 0x8CDF;
 inline constexpr Enum MAX_SAMPLES = 0x8D57;
 inline constexpr Enum MAX_COLOR_TEXTURE_SAMPLES = 0x910E;
 inline constexpr Enum MAX_DEPTH_TEXTURE_SAMPLES = 0x910F;
+inline constexpr Enum MAX_INTEGER_SAMPLES = 0x9110;  // GetIntegerv: 1, integer images are single-sampled
 inline constexpr Enum SAMPLE_BUFFERS = 0x80A8;          // 1 when the draw framebuffer is multisampled, else 0
 inline constexpr Enum SAMPLES = 0x80A9;                 // the draw framebuffer's samples per pixel (0: single)
 inline constexpr Enum SAMPLE_COVERAGE_VALUE = 0x80AA;

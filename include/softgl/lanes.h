@@ -384,6 +384,26 @@ struct vec4 {
   glm::vec4 Lane(int i) const { return glm::vec4(x[i], y[i], z[i], w[i]); }
 };
 
+/// Four Ints a lane: GLSL's ivec4, and its uvec4 as the same 32 bits (an unsigned value v is the Int of the same
+/// bits: compare such values with care above 2^31). Integer textures read as it (FragmentLanes::ITexture ...), and
+/// integer colour outputs take it (FragmentLanesOut::SetColorI).
+struct ivec4 {
+  using Glm = glm::ivec4;
+  Int x, y, z, w;
+  ivec4() = default;
+  ivec4(Int s) : x(s), y(s), z(s), w(s) {}
+  ivec4(int s) : x(s), y(s), z(s), w(s) {}
+  ivec4(Int x_, Int y_, Int z_, Int w_) : x(x_), y(y_), z(z_), w(w_) {}
+  ivec4(const glm::ivec4& g) : x(g.x), y(g.y), z(g.z), w(g.w) {}
+  static constexpr int size() { return 4; }
+  Int& operator[](int i) { return i == 0 ? x : i == 1 ? y : i == 2 ? z : w; }
+  const Int& operator[](int i) const { return i == 0 ? x : i == 1 ? y : i == 2 ? z : w; }
+  /// floatBitsToInt of each component, and intBitsToFloat back: how integers travel in a vec4's floats.
+  static ivec4 FromBits(const vec4& v) { return ivec4(v.x.Bits(), v.y.Bits(), v.z.Bits(), v.w.Bits()); }
+  vec4 Bits() const { return vec4(Float::FromBits(x), Float::FromBits(y), Float::FromBits(z), Float::FromBits(w)); }
+  glm::ivec4 Lane(int i) const { return glm::ivec4(x[i], y[i], z[i], w[i]); }
+};
+
 inline vec2::vec2(const vec3& v) : x(v.x), y(v.y) {}
 inline vec2::vec2(const vec4& v) : x(v.x), y(v.y) {}
 inline vec3::vec3(const vec4& v) : x(v.x), y(v.y), z(v.z) {}

@@ -280,6 +280,10 @@ struct LodTextures {
   vec4 TexelFetchBuffer(int unit, const Int& index) const { return shader_detail::FetchBuffer(textures, unit, index); }
   /// textureSize(samplerBuffer): the texels the buffer texture holds.
   int TextureSizeBuffer(int unit) const { return textures->SizeBuffer(unit); }
+  /// The integer forms (isampler2D / usampler2D ...), for integer textures (R8UI ... RGBA32I): the texels' integers
+  /// (0, 0, 0, 1 while incomplete; an unsigned texture's as the same 32 bits).
+  ivec4 ITextureLod(int unit, const vec2& uv, Float lod) const { return ivec4::FromBits(TextureLod(unit, uv, lod)); }
+  ivec4 ITexelFetchBuffer(int unit, const Int& index) const { return ivec4::FromBits(TexelFetchBuffer(unit, index)); }
 };
 
 /// What a wide vertex stage reads: the attributes of 16 vertices (and, from LodTextures, the textures).
@@ -581,6 +585,31 @@ struct FragmentLanes {
   glm::ivec3 TextureSizeArray(int unit, int level = 0) const { return textures->SizeArray(unit, level); }
   /// textureSize(sampler3D, level).
   glm::ivec3 TextureSize3D(int unit, int level = 0) const { return textures->Size3D(unit, level); }
+
+  /// The lookups of integer textures (R8UI ... RGBA32I, RGB10_A2UI), GLSL's isampler* and usampler*: the texels'
+  /// integers, sign- or zero-extended (an unsigned texture's as the same 32 bits). OpenGL samples them with NEAREST
+  /// filters only (another filter leaves the texture incomplete: it reads (0, 0, 0, 1)). texture(isampler2D, uv):
+  ivec4 ITexture(int unit, const vec2& uv, float bias = 0.0f) const { return ivec4::FromBits(Texture(unit, uv, bias)); }
+  /// textureLod(isampler2D, uv, lod).
+  ivec4 ITextureLod(int unit, const vec2& uv, Float lod) const { return ivec4::FromBits(TextureLod(unit, uv, lod)); }
+  /// texture(isampler2DArray, vec3(uv, layer)).
+  ivec4 ITextureArray(int unit, const vec3& uv_layer, float bias = 0.0f) const {
+    return ivec4::FromBits(TextureArray(unit, uv_layer, bias));
+  }
+  /// texture(isampler3D, str).
+  ivec4 ITexture3D(int unit, const vec3& str, float bias = 0.0f) const {
+    return ivec4::FromBits(Texture3D(unit, str, bias));
+  }
+  /// texture(isamplerCube, dir).
+  ivec4 ITextureCube(int unit, const vec3& dir, float bias = 0.0f) const {
+    return ivec4::FromBits(TextureCube(unit, dir, bias));
+  }
+  /// texelFetch(isampler2D, ivec2(x, y), level) ((0, 0, 0, 0) outside the level).
+  ivec4 ITexelFetch(int unit, const Int& x, const Int& y, const Int& level = Int(0)) const {
+    return ivec4::FromBits(TexelFetch(unit, x, y, level));
+  }
+  /// texelFetch(isamplerBuffer, index).
+  ivec4 ITexelFetchBuffer(int unit, const Int& index) const { return ivec4::FromBits(TexelFetchBuffer(unit, index)); }
 };
 
 /// What a wide fragment stage writes for its 16 fragments.
@@ -590,6 +619,10 @@ struct FragmentLanesOut {
   Bool discarded = false;        ///< lanes discarded so far
   /// GLSL's discard, in the lanes where `c` holds (the others go on).
   void Discard(Bool c) { discarded = discarded | c; }
+  /// An integer output (GLSL's `out ivec4` / `out uvec4`) for an integer colour buffer (R8UI ... RGBA32I): output
+  /// o holds the integers as its floats' bits, which such a buffer stores clamped to its channels' range (another
+  /// buffer would take those bits as floats).
+  void SetColorI(int o, const ivec4& c) { color[o] = c.Bits(); }
 };
 
 // ---- The scalar form: one vertex or fragment per call ---------------------------------------------------------------
@@ -628,6 +661,9 @@ struct VertexOut {
 struct FragmentOut {
   glm::vec4 color[kMaxColorOutputs];  ///< Colour outputs; color[0] is written to the colour buffer.
   float depth;                        ///< gl_FragDepth, preset to frag_coord.z (see Shader<>::kWritesDepth)
+  /// An integer output for an integer colour buffer, as FragmentLanesOut::SetColorI: the integers as the floats'
+  /// bits.
+  void SetColorI(int o, const glm::ivec4& c) { std::memcpy(&color[o].x, &c.x, sizeof c); }
 };
 
 /// The texture samples a quad's fragments have taken through FragmentIn::Texture(unit, &Varyings::uv): the first

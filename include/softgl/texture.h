@@ -29,11 +29,16 @@ inline constexpr int kMax3DTextureSize = 2048;
 inline constexpr int kMaxArrayTextureLayers = 2048;
 /// Most texels a buffer texture reads from its buffer (GL_MAX_TEXTURE_BUFFER_SIZE): texels past it are outside.
 inline constexpr int kMaxTextureBufferSize = 1 << 27;
+/// Most samples of an integer renderbuffer or multisample texture (GL_MAX_INTEGER_SAMPLES, OpenGL 3.3's minimum):
+/// integer images are single-sampled.
+inline constexpr int kMaxIntegerSamples = 1;
 
 namespace detail {
 struct TextureView;  // a bound texture resolved for one draw; defined in src/
 }
 
+/// The textures a draw samples, unit by unit, and their lookups. An integer texture's (R8UI ... RGBA32I) samples
+/// are its integers carried as the floats' bits (FragmentLanes::ITexture and its kin read them so).
 class Textures {
  public:
   /// texture(sampler2D, uv): filtered sample of unit's 2D texture; duv_dx, duv_dy are the derivatives of uv along

@@ -22,6 +22,16 @@ struct Vertex {
   glm::vec4 extra{0.0f};
 };
 
+/// Whether an integer internal format is signed (R8I ... RGBA32I) rather than unsigned.
+inline bool IsSignedInteger(Enum format) {
+  switch (format) {
+    case softgl::R8I: case softgl::R16I: case softgl::R32I: case softgl::RG8I: case softgl::RG16I: case softgl::RG32I:
+    case softgl::RGB8I: case softgl::RGB16I: case softgl::RGB32I: case softgl::RGBA8I: case softgl::RGBA16I:
+    case softgl::RGBA32I: return true;
+    default: return false;
+  }
+}
+
 /// The shader pair a draw uses; each is written once in C++ (backend_softgl.cpp) and once in GLSL
 /// (backend_gl.cpp).
 enum class Program {
@@ -195,6 +205,23 @@ class Backend {
   /// array. Returns VERTEX_ATTRIB_ARRAY_INTEGER of attribute 3 just before the draw.
   virtual int DrawIntegerAttribs(const std::vector<Vertex>& vertices, int size, Enum type, int stride,
                                  const std::vector<std::uint8_t>& bytes, glm::ivec4 current) = 0;
+  /// One draw of DrawIntegerTarget: triangles whose attribute 2 (extra) holds the integers each writes, through
+  /// COLOR_LOGIC_OP's `logic` (0: disabled) and the colour mask `mask` (bit c: channel c).
+  struct IntegerDraw {
+    std::vector<Vertex> triangles;
+    Enum logic = 0;
+    unsigned mask = 0xF;
+  };
+  /// Integer colour buffers and textures: a TEXTURE_2D of the integer `format`, w x h, attached to a framebuffer
+  /// object of its own, cleared by ClearBufferuiv (an unsigned format) or ClearBufferiv (a signed one) to `clear`;
+  /// each of `draws` drawn into it by a fragment stage writing uvec4(extra) or ivec4(extra) (the provoking
+  /// vertex's: flat); then `quad` drawn into the default framebuffer (viewport w_ x h_ again) with colour
+  /// vec4((t.r, t.g, t.b + 64 t.a) & 255) / 255, 1) of t = texture(usampler2D or isampler2D on unit 0, extra.xy),
+  /// NEAREST, wrap mode `wrap` in s and t, border `border` given by TexParameterIiv. The texture and framebuffer
+  /// are deleted after.
+  virtual void DrawIntegerTarget(Enum format, int w, int h, const glm::ivec4& clear,
+                                 const std::vector<IntegerDraw>& draws, Enum wrap, const glm::ivec4& border,
+                                 const std::vector<Vertex>& quad) = 0;
   /// Fills a new vertex buffer through the buffer calls: the first `mapped` vertices written through
   /// MapBufferRange (with an explicit flush), the rest copied from a COPY_READ_BUFFER by CopyBufferSubData; draws
   /// BUFFER_SIZE / sizeof(Vertex) of them as `mode` with the kColor program, and returns the store as

@@ -52,6 +52,46 @@ void main() {
 }
 )";
 
+// DrawIntegerTarget's programs: integer outputs from a flat attribute 2, and an integer texture's texel shown as
+// bytes. %s is "u" (unsigned) or "i" (signed).
+constexpr const char* kIntegerOutputVertexShader = R"(#version 330 core
+layout(location = 0) in vec4 a_pos;
+layout(location = 2) in vec4 a_extra;
+flat out vec4 v_value;
+void main() {
+  gl_Position = a_pos;
+  v_value = a_extra;
+}
+)";
+constexpr const char* kUnsignedOutputFragment = R"(#version 330 core
+flat in vec4 v_value;
+out uvec4 o_color;
+void main() { o_color = uvec4(v_value); }
+)";
+constexpr const char* kSignedOutputFragment = R"(#version 330 core
+flat in vec4 v_value;
+out ivec4 o_color;
+void main() { o_color = ivec4(v_value); }
+)";
+constexpr const char* kUnsignedTextureFragment = R"(#version 330 core
+in vec4 v_extra;
+uniform usampler2D u_int;
+out vec4 o_color;
+void main() {
+  uvec4 t = texture(u_int, v_extra.xy);
+  o_color = vec4(vec3(uvec3(t.r, t.g, t.b + 64u * t.a) & 255u) / 255.0, 1.0);
+}
+)";
+constexpr const char* kSignedTextureFragment = R"(#version 330 core
+in vec4 v_extra;
+uniform isampler2D u_int;
+out vec4 o_color;
+void main() {
+  ivec4 t = texture(u_int, v_extra.xy);
+  o_color = vec4(vec3(ivec3(t.r, t.g, t.b + 64 * t.a) & 255) / 255.0, 1.0);
+}
+)";
+
 constexpr const char* kFeedbackVertexShader = "#version 330 core" VERTEX_DECLARATIONS R"(
 void main() {
   gl_Position = a_pos;
@@ -379,6 +419,10 @@ class GlBackend final : public Backend {
     }
     instanced_ = Link(kColorFragment, error, kInstancedVertexShader);
     integer_ = Link(kColorFragment, error, kIntegerVertexShader);
+    integer_output_[0] = Link(kUnsignedOutputFragment, error, kIntegerOutputVertexShader);
+    integer_output_[1] = Link(kSignedOutputFragment, error, kIntegerOutputVertexShader);
+    integer_texture_[0] = Link(kUnsignedTextureFragment, error);
+    integer_texture_[1] = Link(kSignedTextureFragment, error);
     glUseProgram(programs_[4]);
     glUniform1i(glGetUniformLocation(programs_[4], "u_cube"), 1);
     glUseProgram(programs_[5]);
@@ -575,6 +619,46 @@ class GlBackend final : public Backend {
     glBindBuffer(GL_ARRAY_BUFFER, vbo_);
     glDeleteBuffers(1, &ints);
     return integer;
+  }
+
+  void DrawIntegerTarget(Enum format, int w, int h, const glm::ivec4& clear, const std::vector<IntegerDraw>& draws,
+                         Enum wrap, const glm::ivec4& border, const std::vector<Vertex>& quad) override {
+    const bool is_signed = IsSignedInteger(format);
+    GLuint tex = 0, fbo = 0;
+    glGenTextures(1, &tex);
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, tex);
+    glTexImage2D(GL_TEXTURE_2D, 0, GLint(format), w, h, 0, GL_RGBA_INTEGER, GL_INT, nullptr);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GLint(wrap));
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GLint(wrap));
+    glTexParameterIiv(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, &border.x);
+    glGenFramebuffers(1, &fbo);
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, tex, 0);
+    glViewport(0, 0, w, h);
+    if (is_signed) glClearBufferiv(GL_COLOR, 0, &clear.x);
+    else glClearBufferuiv(GL_COLOR, 0, reinterpret_cast<const GLuint*>(&clear.x));
+    glUseProgram(integer_output_[is_signed]);
+    for (const IntegerDraw& d : draws) {
+      if (d.logic) {
+        glEnable(GL_COLOR_LOGIC_OP);
+        glLogicOp(d.logic);
+      }
+      glColorMask(d.mask & 1u, (d.mask >> 1) & 1u, (d.mask >> 2) & 1u, (d.mask >> 3) & 1u);
+      glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(d.triangles.size() * sizeof(Vertex)), d.triangles.data(), GL_STREAM_DRAW);
+      glDrawArrays(GL_TRIANGLES, 0, GLsizei(d.triangles.size()));
+      glDisable(GL_COLOR_LOGIC_OP);
+      glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glViewport(0, 0, w_, h_);
+    glUseProgram(integer_texture_[is_signed]);
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(quad.size() * sizeof(Vertex)), quad.data(), GL_STREAM_DRAW);
+    glDrawArrays(GL_TRIANGLES, 0, GLsizei(quad.size()));
+    glDeleteFramebuffers(1, &fbo);
+    glDeleteTextures(1, &tex);
   }
 
   std::vector<Vertex> DrawThroughBufferCalls(Enum mode, const std::vector<Vertex>& vertices, int mapped) override {
@@ -1072,6 +1156,7 @@ class GlBackend final : public Backend {
   std::vector<std::uint8_t> buffer_;
   GLuint programs_[23] = {};
   GLuint instanced_ = 0, integer_ = 0;
+  GLuint integer_output_[2] = {}, integer_texture_[2] = {};  // [0] unsigned, [1] signed
   GLuint rtt_color_ = 0;
   GLuint vao_ = 0, vbo_ = 0, ebo_ = 0;
 };

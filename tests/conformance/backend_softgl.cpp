@@ -167,6 +167,34 @@ struct TextureBufferShader : ExtraShader<TextureBufferShader> {
   }
 };
 
+// DrawIntegerTarget's stages: integer outputs from a flat attribute 2 (uint(extra) where `is_unsigned`: values
+// from 2^31 up taken as their bits), and an integer texture's texel on unit 0 shown as bytes.
+struct IntegerOutputVaryings {
+  softgl::Flat<softgl::vec4> value;
+};
+struct IntegerOutputShader : softgl::Shader<IntegerOutputShader, IntegerOutputVaryings> {
+  bool is_unsigned = false;
+  void Vertex(const softgl::VertexLanes& in, softgl::VertexLanesOut<IntegerOutputVaryings>& out) const {
+    out.position = in.attrib[0];
+    out.varyings.value = in.attrib[2];
+  }
+  void Fragment(const softgl::FragmentLanes<IntegerOutputVaryings>& in, softgl::FragmentLanesOut& out) const {
+    const auto integer = [this](const softgl::Float& f) {
+      return softgl::Int(is_unsigned ? softgl::select(f >= 2147483648.0f, f - 4294967296.0f, f) : f);
+    };
+    const softgl::vec4& v = in.varyings.value;
+    out.SetColorI(0, softgl::ivec4(integer(v.x), integer(v.y), integer(v.z), integer(v.w)));
+  }
+};
+struct IntegerTextureShader : ExtraShader<IntegerTextureShader> {
+  void Fragment(const softgl::FragmentLanes<FetchSampleVaryings>& in, softgl::FragmentLanesOut& out) const {
+    using softgl::Float;
+    const softgl::ivec4 t = in.ITexture(0, softgl::vec2(in.varyings.extra.x, in.varyings.extra.y));
+    out.color[0] = softgl::vec4(Float(t.x & 255) / 255.0f, Float(t.y & 255) / 255.0f,
+                                Float((t.z + t.w * 64) & 255) / 255.0f, 1.0f);
+  }
+};
+
 // kPointCoord, in the wide form: gl_PointCoord and the colour's blue.
 struct PointCoordVaryings {
   softgl::Float blue;
@@ -377,7 +405,7 @@ struct GeometryLayerShader : GeometryProgram<GeometryLayerShader> {
 
 class SoftglBackend final : public Backend {
  public:
-  SoftglBackend(int w, int h) : gl_(w, h) {
+  SoftglBackend(int w, int h) : gl_(w, h), w_(w), h_(h) {
     volume_.target = softgl::TEXTURE_3D;
     texture_1d_.target = softgl::TEXTURE_1D;
     texture_1d_array_.target = softgl::TEXTURE_1D_ARRAY;
@@ -569,6 +597,45 @@ class SoftglBackend final : public Backend {
     gl_.BindBuffer(softgl::ARRAY_BUFFER, vbo_);
     gl_.DeleteBuffer(ints);
     return integer;
+  }
+
+  void DrawIntegerTarget(Enum format, int w, int h, const glm::ivec4& clear, const std::vector<IntegerDraw>& draws,
+                         Enum wrap, const glm::ivec4& border, const std::vector<Vertex>& quad) override {
+    const bool is_signed = IsSignedInteger(format);
+    const std::uint32_t tex = gl_.GenTexture(), fbo = gl_.GenFramebuffer();
+    gl_.ActiveTexture(softgl::TEXTURE0);
+    gl_.BindTexture(softgl::TEXTURE_2D, tex);
+    gl_.TexImage2D(softgl::TEXTURE_2D, 0, format, w, h, 0, softgl::RGBA_INTEGER, softgl::INT, nullptr);
+    gl_.TexParameteri(softgl::TEXTURE_2D, softgl::TEXTURE_MIN_FILTER, softgl::NEAREST);
+    gl_.TexParameteri(softgl::TEXTURE_2D, softgl::TEXTURE_MAG_FILTER, softgl::NEAREST);
+    gl_.TexParameteri(softgl::TEXTURE_2D, softgl::TEXTURE_WRAP_S, int(wrap));
+    gl_.TexParameteri(softgl::TEXTURE_2D, softgl::TEXTURE_WRAP_T, int(wrap));
+    gl_.TexParameterIiv(softgl::TEXTURE_2D, softgl::TEXTURE_BORDER_COLOR, &border.x);
+    gl_.BindFramebuffer(softgl::FRAMEBUFFER, fbo);
+    gl_.FramebufferTexture2D(softgl::FRAMEBUFFER, softgl::COLOR_ATTACHMENT0, softgl::TEXTURE_2D, tex, 0);
+    gl_.Viewport(0, 0, w, h);
+    if (is_signed) gl_.ClearBufferiv(softgl::COLOR, 0, &clear.x);
+    else gl_.ClearBufferuiv(softgl::COLOR, 0, reinterpret_cast<const std::uint32_t*>(&clear.x));
+    integer_output_.is_unsigned = !is_signed;
+    gl_.UseProgram(integer_output_);
+    for (const IntegerDraw& d : draws) {
+      if (d.logic) {
+        gl_.Enable(softgl::COLOR_LOGIC_OP);
+        gl_.LogicOp(d.logic);
+      }
+      gl_.ColorMask(d.mask & 1u, (d.mask >> 1) & 1u, (d.mask >> 2) & 1u, (d.mask >> 3) & 1u);
+      gl_.BufferData(softgl::ARRAY_BUFFER, std::ptrdiff_t(d.triangles.size() * sizeof(Vertex)), d.triangles.data());
+      gl_.DrawArrays(softgl::TRIANGLES, 0, int(d.triangles.size()));
+      gl_.Disable(softgl::COLOR_LOGIC_OP);
+      gl_.ColorMask(true, true, true, true);
+    }
+    gl_.BindFramebuffer(softgl::FRAMEBUFFER, 0);
+    gl_.Viewport(0, 0, w_, h_);
+    gl_.UseProgram(integer_texture_);
+    gl_.BufferData(softgl::ARRAY_BUFFER, std::ptrdiff_t(quad.size() * sizeof(Vertex)), quad.data());
+    gl_.DrawArrays(softgl::TRIANGLES, 0, int(quad.size()));
+    gl_.DeleteFramebuffer(fbo);
+    gl_.DeleteTexture(tex);
   }
 
   std::vector<Vertex> DrawThroughBufferCalls(Enum mode, const std::vector<Vertex>& vertices, int mapped) override {
@@ -1042,6 +1109,9 @@ class SoftglBackend final : public Backend {
   LayeredShader array_, volume_, array_shadow_, texture_1d_, texture_1d_array_;
   FetchSampleShader fetch_sample_;
   IntegerShader integer_;
+  IntegerOutputShader integer_output_;
+  int w_, h_;  // the default framebuffer's size
+  IntegerTextureShader integer_texture_;
   TextureBufferShader texture_buffer_;
   FetchSampleArrayShader fetch_sample_array_;
   OutputsShader outputs_;

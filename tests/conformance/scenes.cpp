@@ -2152,6 +2152,61 @@ void Texture1D(Backend& b) {
          Program::kTexture1DArray);
 }
 
+// Integer colour buffers and textures: six 16 x 16 integer textures (R32UI, RGBA8I, RG16UI, RGB10_A2UI, R16I,
+// RGBA32I), each cleared by ClearBufferuiv or iv, drawn into by triangles writing integers (values past the
+// format's range among them, clamped), then by a triangle through a logic operation and another through a colour
+// mask, and shown 40 x 40 pixels each by texture(usampler2D / isampler2D) over uv from -0.25 to 1.25, in each
+// wrap mode (integer border colours), as the low bytes of the integers.
+void IntegerFormats(Backend& b) {
+  ClearBlack(b);
+  using IntegerDraw = Backend::IntegerDraw;
+  // A triangle of the 16 x 16 target, corners in its pixels, writing `value`.
+  const auto tri = [](glm::vec2 p0, glm::vec2 p1, glm::vec2 p2, glm::vec4 value) {
+    std::vector<Vertex> v;
+    for (glm::vec2 p : {p0, p1, p2}) v.push_back({glm::vec4(p.x / 8.0f - 1.0f, p.y / 8.0f - 1.0f, 0, 1), glm::vec4(1), value});
+    return v;
+  };
+  const auto join = [](std::vector<Vertex> a, const std::vector<Vertex>& c) {
+    a.insert(a.end(), c.begin(), c.end());
+    return a;
+  };
+  const struct Cell {
+    Enum format;
+    glm::ivec4 clear;
+    glm::vec4 a, c, logic_value, masked;
+    Enum logic;
+    unsigned mask;
+    Enum wrap;
+    glm::ivec4 border;
+  } cells[] = {
+      {R32UI, glm::ivec4(-1), {3e9f, 0, 0, 0}, {70000, 0, 0, 0}, {3855, 0, 0, 0}, {77, 0, 0, 0}, XOR, 0x1,
+       CLAMP_TO_BORDER, glm::ivec4(0x12345678, 0, 0, 0)},
+      {RGBA8I, glm::ivec4(-300, 200, 5, -1), {-5, 100, -128, 127}, {400, -400, 7, 1}, {0x55, -2, 3, 0x70}, {9, 9, 9, 9},
+       OR_REVERSE, 0x5, REPEAT, glm::ivec4(0)},
+      {RG16UI, glm::ivec4(70000, 1, 0, 0), {65535, 40000, 0, 0}, {123, 4567, 0, 0}, {0, 0, 0, 0}, {300, 301, 0, 0},
+       INVERT, 0x2, MIRRORED_REPEAT, glm::ivec4(0)},
+      {RGB10_A2UI, glm::ivec4(2000, 5, 1023, 9), {512, 1023, 7, 2}, {5000, 1, 2, 3}, {0x3F0, 0x0FF, 0x2AA, 1},
+       {11, 12, 13, 0}, AND, 0xB, CLAMP_TO_EDGE, glm::ivec4(0)},
+      {R16I, glm::ivec4(-40000, 0, 0, 0), {-1234, 0, 0, 0}, {32767, 0, 0, 0}, {0x1FF, 0, 0, 0}, {-2, 0, 0, 0}, XOR, 0x1,
+       CLAMP_TO_BORDER, glm::ivec4(-2, 7, -9, 100)},
+      {RGBA32I, glm::ivec4(INT32_MIN, INT32_MAX, -1, 0), {-7, 1e9f, -2e9f, 3}, {2e9f, -5, 6, -2147483648.0f},
+       {-1, 0x7FF, -0x800, 5}, {-20, -21, -22, -23}, NAND, 0xA, CLAMP_TO_BORDER, glm::ivec4(INT32_MIN, 5, -6, 7)},
+  };
+  for (int k = 0; k < 6; ++k) {
+    const Cell& c = cells[k];
+    std::vector<IntegerDraw> draws(3);
+    draws[0].triangles = join(tri({0, 0}, {16, 0}, {0, 16}, c.a), tri({16, 16}, {4.5f, 16}, {16, 5.25f}, c.c));
+    draws[1].triangles = tri({2, 1}, {15, 9}, {6, 15}, c.logic_value);
+    draws[1].logic = c.logic;
+    draws[2].triangles = tri({0, 8}, {10, 2}, {12, 14}, c.masked);
+    draws[2].mask = c.mask;
+    const float x = 2.0f + float(k % 3) * 42.0f, y = 10.0f + float(k / 3) * 62.0f;
+    const std::vector<Vertex> quad = QuadWith({Win(x, y), Win(x + 40, y), Win(x + 40, y + 40), Win(x, y + 40)},
+                                              Uv({-0.25f, -0.25f}, {1.25f, -0.25f}, {1.25f, 1.25f}, {-0.25f, 1.25f}));
+    b.DrawIntegerTarget(c.format, 16, 16, c.clear, draws, c.wrap, c.border, quad);
+  }
+}
+
 // Buffer textures: texelFetch in four formats from buffers of pseudo-random texels, 4 x 4 pixels a texel, 16 x 16
 // texels a quadrant (indices before the store's first texel and past its last among them: zero texels, (0, 0, 0, 1)
 // where the format has no alpha); a store changed by BufferSubData between the draws of the two halves of a
@@ -2399,6 +2454,7 @@ const std::vector<SceneInfo>& Scenes() {
       {"texture_1d", kSize, kSize, Check::kTexture, Texture1D},
       {"compressed_textures", kSize, kSize, Check::kTexture, CompressedTextures},
       {"texture_buffer", kSize, kSize, Check::kExact, TextureBuffer},
+      {"integer_formats", kSize, kSize, Check::kExact, IntegerFormats},
       {"shadow_array", kSize, kSize, Check::kTexture, ShadowArray},
       {"model", 256, 256, Check::kColor, Model},
   };

@@ -121,7 +121,7 @@ constexpr std::uint32_t kBufferTargets[] = {ARRAY_BUFFER, ELEMENT_ARRAY_BUFFER, 
 constexpr std::uint32_t kTexTargets[] = {TEXTURE_2D, TEXTURE_CUBE_MAP, TEXTURE_2D_ARRAY, TEXTURE_3D,
                                          TEXTURE_2D_MULTISAMPLE, TEXTURE_1D, TEXTURE_1D_ARRAY, TEXTURE_BUFFER,
                                          TEXTURE_2D_MULTISAMPLE_ARRAY};
-constexpr std::uint32_t kBufferTextureFormats[] = {R8, R16F, RG32F, RGBA8, RGBA16, RGBA32F, RGB8, 0x8D82 /* RGBA32I */};
+constexpr std::uint32_t kBufferTextureFormats[] = {R8, R16F, RG32F, RGBA8, RGBA16, RGBA32F, RGB8, RGBA32I, R8UI, RGB32UI};
 constexpr std::uint32_t kBufferTextureNames[] = {TEXTURE_WIDTH, TEXTURE_INTERNAL_FORMAT, TEXTURE_BUFFER_DATA_STORE_BINDING,
                                                  TEXTURE_RED_SIZE, TEXTURE_SAMPLES, TEXTURE_MIN_FILTER};
 constexpr std::uint32_t kImageTargets[] = {TEXTURE_2D,
@@ -131,7 +131,7 @@ constexpr std::uint32_t kImageTargets[] = {TEXTURE_2D,
                                            TEXTURE_2D_MULTISAMPLE};
 constexpr std::uint32_t kInternal[] = {RGBA8, RGB8, RG8, R8, RGBA32F, R32F, RGB10_A2, DEPTH_COMPONENT, DEPTH24_STENCIL8,
                                        DEPTH32F_STENCIL8, RGBA16, R16, RGBA16F, DEPTH_COMPONENT16, COMPRESSED_RGBA,
-                                       COMPRESSED_RGBA_S3TC_DXT5_EXT};
+                                       COMPRESSED_RGBA_S3TC_DXT5_EXT, R32UI, RGBA8I, RGB16UI, RG16I, RGB10_A2UI};
 constexpr std::uint32_t kCompressed[] = {COMPRESSED_RGB_S3TC_DXT1_EXT,   COMPRESSED_RGBA_S3TC_DXT1_EXT,
                                          COMPRESSED_RGBA_S3TC_DXT3_EXT,  COMPRESSED_RGBA_S3TC_DXT5_EXT,
                                          COMPRESSED_SRGB_S3TC_DXT1_EXT,  COMPRESSED_SRGB_ALPHA_S3TC_DXT5_EXT,
@@ -141,7 +141,8 @@ constexpr std::uint32_t kCompressed[] = {COMPRESSED_RGB_S3TC_DXT1_EXT,   COMPRES
                                          RGBA8};
 // Every pixel format and type of OpenGL 3.3 (tables 3.2 to 3.5), and one of neither: a pixel is 16 bytes at most.
 constexpr std::uint32_t kFormats[] = {RED, GREEN, BLUE, RG, RGB, BGR, RGBA, BGRA, DEPTH_COMPONENT, DEPTH_STENCIL,
-                                      STENCIL_INDEX, RED_INTEGER, RGB_INTEGER, BGRA_INTEGER, RG_INTEGER, 0x1909};
+                                      STENCIL_INDEX, RED_INTEGER, RGB_INTEGER, BGRA_INTEGER, RG_INTEGER, RGBA_INTEGER,
+                                      0x1909};
 constexpr std::uint32_t kPixelTypes[] = {UNSIGNED_BYTE, BYTE, UNSIGNED_SHORT, SHORT, UNSIGNED_INT, INT, HALF_FLOAT,
                                          FLOAT, UNSIGNED_BYTE_3_3_2, UNSIGNED_BYTE_2_3_3_REV, UNSIGNED_SHORT_5_6_5,
                                          UNSIGNED_SHORT_5_6_5_REV, UNSIGNED_SHORT_4_4_4_4, UNSIGNED_SHORT_4_4_4_4_REV,
@@ -190,7 +191,7 @@ constexpr std::uint32_t kAttachments[] = {COLOR_ATTACHMENT0, COLOR_ATTACHMENT0 +
                                           DEPTH_ATTACHMENT, STENCIL_ATTACHMENT, DEPTH_STENCIL_ATTACHMENT,
                                           COLOR_ATTACHMENT0 + 7, COLOR_ATTACHMENT0 + 8};
 constexpr std::uint32_t kRenderbufferFormats[] = {RGBA8, RGB8, R32F, RGBA, DEPTH_COMPONENT16, DEPTH_COMPONENT24,
-                                                  DEPTH24_STENCIL8, DEPTH32F_STENCIL8, STENCIL_INDEX8, 0x1234};
+                                                  DEPTH24_STENCIL8, DEPTH32F_STENCIL8, STENCIL_INDEX8, R32UI, RGBA16I, 0x1234};
 constexpr std::uint32_t kReadBuffers[] = {NONE, BACK, FRONT, RIGHT, COLOR_ATTACHMENT0, COLOR_ATTACHMENT0 + 1,
                                           COLOR_ATTACHMENT0 + 3, COLOR_ATTACHMENT0 + 5};
 constexpr std::uint32_t kPolygonModes[] = {FILL, LINE, POINT};

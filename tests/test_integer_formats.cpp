@@ -1,0 +1,312 @@
+// Integer textures and colour buffers (R8UI ... RGBA32I, RGB10_A2UI): uploads and read-backs clamped as OpenGL
+// converts integers (the values Mesa gives), every 32-bit pattern kept exact through sampling and rendering, no
+// filtering, no blending, the logic operation and the colour mask, ClearBufferiv / uiv, and the errors of mixing
+// integer and non-integer data.
+#include <catch2/catch.hpp>
+
+#include <cstdint>
+#include <cstring>
+#include <vector>
+
+#include "helpers.h"
+
+using namespace softgl;
+using namespace testing;
+
+namespace {
+
+constexpr int kW = 8, kH = 4;
+
+struct NoVary {};
+
+// A full-screen pass writing one integer output: the value `value` everywhere (`kind` 0), texture(isampler2D) of
+// unit 0 at the pixel's centre scaled by `scale` (1), or texelFetch(isampler2D, (x, y), 0) (2), or
+// texelFetch(isamplerBuffer, x + y * kW) (3).
+struct IntegerShader : Shader<IntegerShader, NoVary> {
+  int kind = 0;
+  glm::ivec4 value{0};
+  float scale = 1.0f;
+  void Vertex(const VertexLanes& in, VertexLanesOut<NoVary>& out) const { out.position = in.attrib[0]; }
+  void Fragment(const FragmentLanes<NoVary>& in, FragmentLanesOut& out) const {
+    const Int x(in.frag_coord.x), y(in.frag_coord.y);
+    ivec4 v(value);
+    if (kind == 1) v = in.ITexture(0, vec2(in.frag_coord.x / float(kW), in.frag_coord.y / float(kH)) * scale);
+    if (kind == 2) v = in.ITexelFetch(0, x, y);
+    if (kind == 3) v = in.ITexelFetchBuffer(0, x + y * kW);
+    out.SetColorI(0, v);
+  }
+};
+
+// A kW x kH context drawing into a renderbuffer of `format`, bound, with a full-screen strip and an IntegerShader.
+struct IntegerTarget {
+  Context gl{kW, kH};
+  std::uint32_t fbo = gl.GenFramebuffer(), rb = gl.GenRenderbuffer();
+  IntegerShader shader;
+  explicit IntegerTarget(Enum format) {
+    gl.BindRenderbuffer(RENDERBUFFER, rb);
+    gl.RenderbufferStorage(RENDERBUFFER, format, kW, kH);
+    gl.BindFramebuffer(FRAMEBUFFER, fbo);
+    gl.FramebufferRenderbuffer(FRAMEBUFFER, COLOR_ATTACHMENT0, RENDERBUFFER, rb);
+    gl.Viewport(0, 0, kW, kH);
+    gl.UseProgram(shader);
+    MakeVertexArray(gl, {{-1, -1, 0, 1}, {1, -1, 0, 1}, {-1, 1, 0, 1}, {1, 1, 0, 1}});
+  }
+  void Draw() { gl.DrawArrays(TRIANGLE_STRIP, 0, 4); }
+  // The target as RGBA_INTEGER INT (unsigned values above 2^31 as their bits).
+  std::vector<glm::ivec4> Read(Enum type = INT) {
+    std::vector<glm::ivec4> px(kW * kH, glm::ivec4(-7));
+    gl.ReadPixels(0, 0, kW, kH, RGBA_INTEGER, type, px.data());
+    return px;
+  }
+};
+
+}  // namespace
+
+TEST_CASE("integer textures: uploads clamp to the format's range, read-backs to the type's, as Mesa converts", "[texture][integer]") {
+  Context gl(1, 1);
+  gl.BindTexture(TEXTURE_2D, gl.GenTexture());
+  const std::uint32_t ui[4] = {300, 5, 0xFFFFFFFFu, 7};
+  const std::int32_t si[4] = {-200, 100, -5, 1000000};
+  std::uint32_t out[8];
+  std::int32_t sout[4];
+  gl.TexImage2D(TEXTURE_2D, 0, R8UI, 4, 1, 0, RED_INTEGER, UNSIGNED_INT, ui);
+  gl.GetTexImage(TEXTURE_2D, 0, RED_INTEGER, UNSIGNED_INT, out);
+  CHECK((out[0] == 255 && out[1] == 5 && out[2] == 255 && out[3] == 7));
+  gl.TexImage2D(TEXTURE_2D, 0, R8UI, 4, 1, 0, RED_INTEGER, INT, si);
+  gl.GetTexImage(TEXTURE_2D, 0, RED_INTEGER, UNSIGNED_INT, out);
+  CHECK((out[0] == 0 && out[1] == 100 && out[2] == 0 && out[3] == 255));
+  gl.TexImage2D(TEXTURE_2D, 0, R8I, 4, 1, 0, RED_INTEGER, INT, si);
+  gl.GetTexImage(TEXTURE_2D, 0, RED_INTEGER, INT, sout);
+  CHECK((sout[0] == -128 && sout[1] == 100 && sout[2] == -5 && sout[3] == 127));
+  gl.TexImage2D(TEXTURE_2D, 0, R8I, 4, 1, 0, RED_INTEGER, UNSIGNED_INT, ui);
+  gl.GetTexImage(TEXTURE_2D, 0, RED_INTEGER, INT, sout);
+  CHECK((sout[0] == 127 && sout[1] == 5 && sout[2] == 127 && sout[3] == 7));
+  gl.TexImage2D(TEXTURE_2D, 0, R32I, 4, 1, 0, RED_INTEGER, UNSIGNED_INT, ui);
+  gl.GetTexImage(TEXTURE_2D, 0, RED_INTEGER, INT, sout);
+  CHECK((sout[0] == 300 && sout[1] == 5 && sout[2] == 2147483647 && sout[3] == 7));
+  std::uint8_t ub[4];
+  std::int8_t sb[4];
+  gl.GetTexImage(TEXTURE_2D, 0, RED_INTEGER, UNSIGNED_BYTE, ub);
+  CHECK((ub[0] == 255 && ub[1] == 5 && ub[2] == 255 && ub[3] == 7));
+  gl.GetTexImage(TEXTURE_2D, 0, RED_INTEGER, BYTE, sb);
+  CHECK((sb[0] == 127 && sb[1] == 5 && sb[2] == 127 && sb[3] == 7));
+  // RGB: alpha reads 1.
+  const std::uint32_t rgb[6] = {300, 5, 0xFFFFFFFFu, 7, 0, 0};
+  gl.TexImage2D(TEXTURE_2D, 0, RGB32UI, 2, 1, 0, RGB_INTEGER, UNSIGNED_INT, rgb);
+  gl.GetTexImage(TEXTURE_2D, 0, RGBA_INTEGER, UNSIGNED_INT, out);
+  CHECK((out[0] == 300 && out[1] == 5 && out[2] == 0xFFFFFFFFu && out[3] == 1));
+  CHECK((out[4] == 7 && out[5] == 0 && out[6] == 0 && out[7] == 1));
+  // RGB10_A2UI from its packed type, and from integers (clamped to 10 and 2 bits).
+  const std::uint32_t packed = 3u << 30 | 1023u << 20 | 5u << 10 | 9u;
+  gl.TexImage2D(TEXTURE_2D, 0, RGB10_A2UI, 1, 1, 0, RGBA_INTEGER, UNSIGNED_INT_2_10_10_10_REV, &packed);
+  gl.GetTexImage(TEXTURE_2D, 0, RGBA_INTEGER, UNSIGNED_INT, out);
+  CHECK((out[0] == 9 && out[1] == 5 && out[2] == 1023 && out[3] == 3));
+  const std::uint32_t wide[4] = {2000, 3, 4, 9};
+  gl.TexImage2D(TEXTURE_2D, 0, RGB10_A2UI, 1, 1, 0, RGBA_INTEGER, UNSIGNED_INT, wide);
+  gl.GetTexImage(TEXTURE_2D, 0, RGBA_INTEGER, UNSIGNED_INT, out);
+  CHECK((out[0] == 1023 && out[1] == 3 && out[2] == 4 && out[3] == 3));
+  std::uint32_t back = 0;
+  gl.GetTexImage(TEXTURE_2D, 0, RGBA_INTEGER, UNSIGNED_INT_2_10_10_10_REV, &back);
+  CHECK(back == (3u << 30 | 4u << 20 | 3u << 10 | 1023u));
+  // Signed 16 bits, two channels, from shorts and bytes; TexSubImage into part of it.
+  const std::int16_t shorts[4] = {-32768, 32767, -1, 2};
+  gl.TexImage2D(TEXTURE_2D, 0, RG16I, 2, 1, 0, RG_INTEGER, SHORT, shorts);
+  const std::int8_t bytes[2] = {-100, 100};
+  gl.TexSubImage2D(TEXTURE_2D, 0, 1, 0, 1, 1, RG_INTEGER, BYTE, bytes);
+  gl.GetTexImage(TEXTURE_2D, 0, RGBA_INTEGER, INT, out);
+  const std::int32_t want[8] = {-32768, 32767, 0, 1, -100, 100, 0, 1};
+  CHECK(std::memcmp(out, want, sizeof want) == 0);
+  CHECK(gl.GetError() == NO_ERROR);
+}
+
+TEST_CASE("integer textures: integer and non-integer data do not mix; no mipmaps, no multisampling", "[texture][integer]") {
+  Context gl(1, 1);
+  gl.BindTexture(TEXTURE_2D, gl.GenTexture());
+  const std::int32_t v[4] = {1, 2, 3, 4};
+  gl.TexImage2D(TEXTURE_2D, 0, R32I, 1, 1, 0, RED, INT, v);
+  CHECK(gl.GetError() == INVALID_OPERATION);
+  gl.TexImage2D(TEXTURE_2D, 0, RGBA8, 1, 1, 0, RGBA_INTEGER, UNSIGNED_BYTE, v);
+  CHECK(gl.GetError() == INVALID_OPERATION);
+  gl.TexImage2D(TEXTURE_2D, 0, R32I, 1, 1, 0, RED_INTEGER, FLOAT, v);
+  CHECK(gl.GetError() == INVALID_OPERATION);
+  gl.TexImage2D(TEXTURE_2D, 0, R32I, 1, 1, 0, RED_INTEGER, INT, v);
+  CHECK(gl.GetError() == NO_ERROR);
+  gl.TexSubImage2D(TEXTURE_2D, 0, 0, 0, 1, 1, RED, INT, v);
+  CHECK(gl.GetError() == INVALID_OPERATION);
+  std::int32_t out[4];
+  gl.GetTexImage(TEXTURE_2D, 0, RED, UNSIGNED_BYTE, out);
+  CHECK(gl.GetError() == INVALID_OPERATION);
+  gl.GenerateMipmap(TEXTURE_2D);
+  CHECK(gl.GetError() == INVALID_OPERATION);  // not filterable
+  int max_samples = -1;
+  gl.GetIntegerv(MAX_INTEGER_SAMPLES, &max_samples);
+  CHECK(max_samples == kMaxIntegerSamples);
+  gl.BindRenderbuffer(RENDERBUFFER, gl.GenRenderbuffer());
+  gl.RenderbufferStorageMultisample(RENDERBUFFER, 4, RGBA8UI, 4, 4);
+  CHECK(gl.GetError() == INVALID_OPERATION);
+  gl.RenderbufferStorageMultisample(RENDERBUFFER, 1, RGBA8UI, 4, 4);
+  CHECK(gl.GetError() == NO_ERROR);
+  int samples = -1;
+  gl.GetRenderbufferParameteriv(RENDERBUFFER, RENDERBUFFER_SAMPLES, &samples);
+  CHECK(samples == 1);
+  gl.BindTexture(TEXTURE_2D_MULTISAMPLE, gl.GenTexture());
+  gl.TexImage2DMultisample(TEXTURE_2D_MULTISAMPLE, 2, R32UI, 4, 4, true);
+  CHECK(gl.GetError() == INVALID_OPERATION);
+  // RGB integer formats are textures only: an attachment of one leaves the framebuffer incomplete.
+  const std::uint32_t tex = gl.GenTexture();
+  gl.BindTexture(TEXTURE_2D, tex);
+  gl.TexImage2D(TEXTURE_2D, 0, RGB16UI, 4, 4, 0, RGB_INTEGER, UNSIGNED_SHORT, nullptr);
+  gl.BindFramebuffer(FRAMEBUFFER, gl.GenFramebuffer());
+  gl.FramebufferTexture2D(FRAMEBUFFER, COLOR_ATTACHMENT0, TEXTURE_2D, tex, 0);
+  CHECK(gl.CheckFramebufferStatus(FRAMEBUFFER) == FRAMEBUFFER_INCOMPLETE_ATTACHMENT);
+  gl.TexImage2D(TEXTURE_2D, 0, RGBA16UI, 4, 4, 0, RGBA_INTEGER, UNSIGNED_SHORT, nullptr);
+  CHECK(gl.CheckFramebufferStatus(FRAMEBUFFER) == FRAMEBUFFER_COMPLETE);
+  CHECK(gl.GetError() == NO_ERROR);
+}
+
+TEST_CASE("integer colour buffers: outputs stored exactly, clamped to the channels, never blended", "[framebuffer][integer]") {
+  SECTION("R32UI keeps every 32-bit pattern, NaN's bits included") {
+    IntegerTarget t(R32UI);
+    for (const std::uint32_t id : {0u, 1u, 0x7F800001u, 0xFF800001u, 0xFFFFFFFFu, 0x80000000u}) {
+      CAPTURE(id);
+      t.shader.value = glm::ivec4(int(id), 0, 0, 0);
+      t.Draw();
+      std::vector<std::uint32_t> px(kW * kH, 7);
+      t.gl.ReadPixels(0, 0, kW, kH, RED_INTEGER, UNSIGNED_INT, px.data());
+      for (const std::uint32_t p : px) CHECK(p == id);
+    }
+  }
+  SECTION("RGBA8I clamps, blending and glClear leave it, ClearBufferiv clears it, XOR and masks apply") {
+    IntegerTarget t(RGBA8I);
+    t.gl.Enable(BLEND);
+    t.gl.BlendFunc(ONE, ONE);
+    t.shader.value = glm::ivec4(-300, 200, -5, 127);
+    t.Draw();
+    CHECK(t.Read()[5] == glm::ivec4(-128, 127, -5, 127));  // as Mesa
+    t.gl.ClearColor(0.5f, 0.5f, 0.5f, 0.5f);
+    t.gl.Clear(COLOR_BUFFER_BIT);
+    CHECK(t.Read()[5] == glm::ivec4(-128, 127, -5, 127));  // Clear leaves an integer buffer (undefined in OpenGL)
+    const int value[4] = {10, -20, 300, -400};
+    t.gl.ClearBufferiv(COLOR, 0, value);
+    CHECK(t.Read()[0] == glm::ivec4(10, -20, 127, -128));
+    t.gl.Disable(BLEND);
+    t.gl.Enable(COLOR_LOGIC_OP);
+    t.gl.LogicOp(XOR);
+    t.shader.value = glm::ivec4(3, -1, 0, 1);
+    t.Draw();
+    CHECK(t.Read()[7] == glm::ivec4(10 ^ 3, -20 ^ -1, 127, -128 ^ 1));
+    t.gl.LogicOp(INVERT);  // the inverted bits of a signed channel stay in range
+    t.Draw();
+    CHECK(t.Read()[7] == glm::ivec4(~(10 ^ 3), ~(-20 ^ -1), ~127, ~(-128 ^ 1)));
+    t.gl.Disable(COLOR_LOGIC_OP);
+    t.gl.ColorMask(true, false, true, false);
+    t.shader.value = glm::ivec4(1, 2, 3, 4);
+    t.Draw();
+    CHECK(t.Read()[3] == glm::ivec4(1, ~(-20 ^ -1), 3, ~(-128 ^ 1)));
+    CHECK(t.gl.GetError() == NO_ERROR);
+  }
+  SECTION("RG16UI: the logic operation keeps an unsigned channel's bits; ClearBufferuiv clamps") {
+    IntegerTarget t(RG16UI);
+    const std::uint32_t value[4] = {70000, 65535, 9, 9};
+    t.gl.ClearBufferuiv(COLOR, 0, value);
+    CHECK(t.Read()[0] == glm::ivec4(65535, 65535, 0, 1));
+    t.gl.Enable(COLOR_LOGIC_OP);
+    t.gl.LogicOp(COPY_INVERTED);
+    t.shader.value = glm::ivec4(1, 0x1234, 0, 0);
+    t.Draw();
+    CHECK(t.Read()[0] == glm::ivec4(0xFFFE, 0xFFFF ^ 0x1234, 0, 1));
+  }
+  SECTION("reads and blits keep integer and non-integer apart") {
+    IntegerTarget t(R16I);
+    std::uint8_t rgba[4];
+    t.gl.ReadPixels(0, 0, 1, 1, RGBA, UNSIGNED_BYTE, rgba);
+    CHECK(t.gl.GetError() == INVALID_OPERATION);
+    const std::uint32_t draw = t.gl.GenFramebuffer(), rb = t.gl.GenRenderbuffer();
+    t.gl.BindRenderbuffer(RENDERBUFFER, rb);
+    t.gl.RenderbufferStorage(RENDERBUFFER, RGBA8, kW, kH);
+    t.gl.BindFramebuffer(DRAW_FRAMEBUFFER, draw);
+    t.gl.FramebufferRenderbuffer(DRAW_FRAMEBUFFER, COLOR_ATTACHMENT0, RENDERBUFFER, rb);
+    t.gl.BlitFramebuffer(0, 0, kW, kH, 0, 0, kW, kH, COLOR_BUFFER_BIT, NEAREST);
+    CHECK(t.gl.GetError() == INVALID_OPERATION);
+    t.gl.RenderbufferStorage(RENDERBUFFER, R32I, kW, kH);
+    t.gl.BlitFramebuffer(0, 0, kW, kH, 0, 0, kW, kH, COLOR_BUFFER_BIT, LINEAR);
+    CHECK(t.gl.GetError() == INVALID_OPERATION);
+    const int v[4] = {-1234, 0, 0, 0};
+    t.gl.BindFramebuffer(FRAMEBUFFER, t.fbo);
+    t.gl.ClearBufferiv(COLOR, 0, v);
+    t.gl.BindFramebuffer(DRAW_FRAMEBUFFER, draw);
+    t.gl.BlitFramebuffer(0, 0, kW, kH, kW, 0, 0, kH, COLOR_BUFFER_BIT, NEAREST);
+    CHECK(t.gl.GetError() == NO_ERROR);
+    t.gl.BindFramebuffer(READ_FRAMEBUFFER, draw);
+    std::int32_t back[4] = {};
+    t.gl.ReadPixels(2, 1, 1, 1, RGBA_INTEGER, INT, back);
+    CHECK((back[0] == -1234 && back[1] == 0 && back[2] == 0 && back[3] == 1));
+  }
+}
+
+TEST_CASE("integer textures: sampled and fetched exactly, NEAREST only, integer border and incomplete values", "[texture][integer]") {
+  IntegerTarget t(RGBA32I);
+  std::vector<glm::ivec4> texels(kW * kH);
+  for (int i = 0; i < kW * kH; ++i)  // patterns that are NaNs and denormals as floats
+    texels[std::size_t(i)] = glm::ivec4(i, -i, int(0x7F800001u) + i, int(0xFF800001u) - i);
+  const std::uint32_t tex = t.gl.GenTexture();
+  t.gl.BindTexture(TEXTURE_2D, tex);
+  t.gl.TexImage2D(TEXTURE_2D, 0, RGBA32I, kW, kH, 0, RGBA_INTEGER, INT, texels.data());
+  t.gl.TexParameteri(TEXTURE_2D, TEXTURE_MIN_FILTER, NEAREST);
+  t.gl.TexParameteri(TEXTURE_2D, TEXTURE_MAG_FILTER, NEAREST);
+  for (const int kind : {1, 2}) {
+    CAPTURE(kind);
+    t.shader.kind = kind;
+    t.Draw();
+    CHECK(t.Read() == texels);
+  }
+  // Outside [0, 1] with CLAMP_TO_BORDER: TexParameterIiv's numbers.
+  t.gl.TexParameteri(TEXTURE_2D, TEXTURE_WRAP_S, CLAMP_TO_BORDER);
+  const int border[4] = {-5, 6, int(0x7FC00001u), 8};
+  t.gl.TexParameterIiv(TEXTURE_2D, TEXTURE_BORDER_COLOR, border);
+  t.shader.kind = 1;
+  t.shader.scale = 2.0f;
+  t.Draw();
+  const std::vector<glm::ivec4> px = t.Read();
+  CHECK(px[0] == texels[kW + 1]);  // (0.0625, 0.125) x 2: texel (1, 1)
+  CHECK(px[kW - 1] == glm::ivec4(border[0], border[1], border[2], border[3]));
+  // LINEAR filtering leaves an integer texture incomplete: it reads (0, 0, 0, 1).
+  t.gl.TexParameteri(TEXTURE_2D, TEXTURE_MAG_FILTER, LINEAR);
+  t.Draw();
+  for (const glm::ivec4& p : t.Read()) CHECK(p == glm::ivec4(0, 0, 0, 1));
+  CHECK(t.gl.GetError() == NO_ERROR);
+}
+
+TEST_CASE("integer textures: buffer textures of integer formats, and a rendered R16UI texture sampled back", "[texture][integer]") {
+  IntegerTarget t(RGBA32UI);
+  std::vector<std::uint16_t> values(kW * kH * 2);
+  for (std::size_t i = 0; i < values.size(); ++i) values[i] = std::uint16_t(65535 - 977 * i);
+  const std::uint32_t buf = t.gl.GenBuffer(), tex = t.gl.GenTexture();
+  t.gl.BindBuffer(TEXTURE_BUFFER, buf);
+  t.gl.BufferData(TEXTURE_BUFFER, std::ptrdiff_t(values.size() * 2), values.data(), STATIC_DRAW);
+  t.gl.BindTexture(TEXTURE_BUFFER, tex);
+  t.gl.TexBuffer(TEXTURE_BUFFER, RG16UI, buf);
+  CHECK(t.gl.GetError() == NO_ERROR);
+  t.shader.kind = 3;
+  t.Draw();
+  std::vector<glm::ivec4> px = t.Read(UNSIGNED_INT);
+  for (int i = 0; i < kW * kH; ++i)
+    CHECK(px[std::size_t(i)] == glm::ivec4(values[2 * std::size_t(i)], values[2 * std::size_t(i) + 1], 0, 1));
+  // Render ids into an R16UI texture, then fetch them from it.
+  const std::uint32_t ids = t.gl.GenTexture(), fbo = t.gl.GenFramebuffer();
+  t.gl.BindTexture(TEXTURE_2D, ids);
+  t.gl.TexImage2D(TEXTURE_2D, 0, R16UI, kW, kH, 0, RED_INTEGER, UNSIGNED_SHORT, nullptr);
+  t.gl.TexParameteri(TEXTURE_2D, TEXTURE_MIN_FILTER, NEAREST);
+  t.gl.TexParameteri(TEXTURE_2D, TEXTURE_MAG_FILTER, NEAREST);
+  t.gl.BindFramebuffer(FRAMEBUFFER, fbo);
+  t.gl.FramebufferTexture2D(FRAMEBUFFER, COLOR_ATTACHMENT0, TEXTURE_2D, ids, 0);
+  t.shader.kind = 0;
+  t.shader.value = glm::ivec4(40000, 1, 2, 3);
+  t.Draw();
+  t.gl.BindFramebuffer(FRAMEBUFFER, t.fbo);
+  t.shader.kind = 2;
+  t.Draw();
+  px = t.Read(UNSIGNED_INT);
+  for (const glm::ivec4& p : px) CHECK(p == glm::ivec4(40000, 0, 0, 1));
+  CHECK(t.gl.GetError() == NO_ERROR);
+}
