@@ -600,4 +600,164 @@ softgl::Image FeedbackParticles(int width, int height) {
   return gl.ReadPixels();
 }
 
+namespace {
+
+// The picking pass: every fragment of an object writes its id (GLSL: `out uvec4 id;`) into an R32UI attachment.
+struct PickVaryings {};
+struct PickShader : softgl::Shader<PickShader, PickVaryings> {
+  glm::mat4 mvp{1.0f};
+  int id = 0;
+  void Vertex(const VertexLanes& in, VertexLanesOut<PickVaryings>& out) const {
+    out.position = mvp * vec4(vec3(in.attrib[0]), 1.0f);
+  }
+  void Fragment(const FragmentLanes<PickVaryings>&, FragmentLanesOut& out) const {
+    out.SetColorI(0, softgl::ivec4(id, 0, 0, 0));
+  }
+};
+
+// The picked objects lit in their colour, the others dimmed towards grey.
+struct PickedLitShader : softgl::Shader<PickedLitShader, FieldVaryings> {
+  glm::mat4 mvp{1.0f}, model{1.0f};
+  glm::vec3 color{1.0f};
+  bool picked = false;
+  glm::vec3 light_dir = glm::normalize(glm::vec3(0.4f, 0.8f, 0.6f));
+  void Vertex(const VertexLanes& in, VertexLanesOut<FieldVaryings>& out) const {
+    out.position = mvp * vec4(vec3(in.attrib[0]), 1.0f);
+    out.varyings.normal = glm::mat3(model) * vec3(in.attrib[1]);
+    out.varyings.color = picked ? color : glm::mix(color, glm::vec3(0.45f), 0.75f) * 0.6f;
+  }
+  void Fragment(const FragmentLanes<FieldVaryings>& in, FragmentLanesOut& out) const {
+    const Float diffuse = max(dot(normalize(in.varyings.normal), light_dir), 0.0f);
+    out.color[0] = vec4(in.varyings.color * (0.3f + 0.7f * diffuse), 1.0f);
+  }
+};
+
+// The id buffer (unit 0, R32UI) in false colours: texelFetch of the integer texture, each id hashed to a colour,
+// 0 (nothing) black. Drawn over a viewport the size of the id buffer scaled down: the texel at the fragment's
+// place times `scale`.
+struct IdColorsShader : softgl::Shader<IdColorsShader, PickVaryings> {
+  glm::vec2 origin{0.0f};
+  float scale = 1.0f;
+  void Vertex(const VertexLanes& in, VertexLanesOut<PickVaryings>& out) const {
+    out.position = vec4(in.attrib[0].x, in.attrib[0].y, 0.0f, 1.0f);
+  }
+  void Fragment(const FragmentLanes<PickVaryings>& in, FragmentLanesOut& out) const {
+    using softgl::Int;
+    const Int x((in.frag_coord.x - origin.x) * scale), y((in.frag_coord.y - origin.y) * scale);
+    const Int id = in.ITexelFetch(0, x, y).x;
+    const Int h = id * Int(int(2654435761u));
+    const vec3 c(Float((h >> 8) & 255), Float((h >> 16) & 255), Float((h >> 24) & 255));
+    out.color[0] = vec4(select(id == 0, vec3(0.0f), c / 255.0f * 0.8f + 0.2f), 1.0f);
+  }
+};
+
+}  // namespace
+
+softgl::Image Picking(int width, int height) {
+  softgl::Context gl(width, height);
+  // 6 x 4 objects (cubes, tori and spheres turning each its own way), ids 1 to 24; 0 is the background.
+  const Mesh meshes[3] = {MakeCube(), MakeTorus(32, 16, 0.42f, 0.16f), MakeSphere(32, 16, 0.5f)};
+  std::uint32_t vaos[3];
+  for (int m = 0; m < 3; ++m) vaos[m] = UploadLitMesh(gl, meshes[m]);
+  constexpr int kCols = 6, kRows = 4, kObjects = kCols * kRows;
+  const glm::mat4 proj = Projection(width, height, 45.0f, 1.0f, 50.0f);
+  const glm::mat4 view = glm::lookAt(glm::vec3(0.0f, 6.5f, 8.0f), glm::vec3(0.0f, -0.6f, 0.2f), glm::vec3(0, 1, 0));
+  glm::mat4 models[kObjects];
+  glm::vec3 colors[kObjects];
+  for (int i = 0; i < kObjects; ++i) {
+    const float x = (float(i % kCols) - 2.5f) * 1.5f, z = (float(i / kCols) - 1.5f) * -1.6f;
+    models[i] = glm::rotate(glm::translate(glm::mat4(1.0f), glm::vec3(x, 0.0f, z)), 0.4f + 0.9f * float(i),
+                            glm::normalize(glm::vec3(0.3f, 1.0f, 0.2f * float(i % 3))));
+    const float t = float(i) / float(kObjects);
+    colors[i] = glm::vec3(0.55f + 0.45f * std::cos(6.2831853f * t), 0.55f + 0.45f * std::cos(6.2831853f * (t + 0.33f)),
+                          0.55f + 0.45f * std::cos(6.2831853f * (t + 0.67f)));
+  }
+  const auto draw_all = [&](auto& shader, auto&& set) {
+    for (int i = 0; i < kObjects; ++i) {
+      set(i);
+      shader.mvp = proj * view * models[i];
+      gl.BindVertexArray(vaos[i % 3]);
+      DrawMesh(gl, meshes[i % 3]);
+    }
+  };
+
+  // The picking pass: ids into an R32UI texture, with a depth buffer of its own.
+  const std::uint32_t ids = gl.GenTexture(), depth = gl.GenRenderbuffer(), fbo = gl.GenFramebuffer();
+  gl.BindTexture(softgl::TEXTURE_2D, ids);
+  gl.TexImage2D(softgl::TEXTURE_2D, 0, softgl::R32UI, width, height, 0, softgl::RED_INTEGER, softgl::UNSIGNED_INT, nullptr);
+  gl.TexParameteri(softgl::TEXTURE_2D, softgl::TEXTURE_MIN_FILTER, softgl::NEAREST);
+  gl.TexParameteri(softgl::TEXTURE_2D, softgl::TEXTURE_MAG_FILTER, softgl::NEAREST);
+  gl.BindRenderbuffer(softgl::RENDERBUFFER, depth);
+  gl.RenderbufferStorage(softgl::RENDERBUFFER, softgl::DEPTH_COMPONENT24, width, height);
+  gl.BindFramebuffer(softgl::FRAMEBUFFER, fbo);
+  gl.FramebufferTexture2D(softgl::FRAMEBUFFER, softgl::COLOR_ATTACHMENT0, softgl::TEXTURE_2D, ids, 0);
+  gl.FramebufferRenderbuffer(softgl::FRAMEBUFFER, softgl::DEPTH_ATTACHMENT, softgl::RENDERBUFFER, depth);
+  gl.Enable(softgl::DEPTH_TEST);
+  gl.Enable(softgl::CULL_FACE);
+  const std::uint32_t nothing[4] = {0, 0, 0, 0};
+  gl.ClearBufferuiv(softgl::COLOR, 0, nothing);
+  gl.Clear(softgl::DEPTH_BUFFER_BIT);
+  PickShader pick;
+  gl.UseProgram(pick);
+  draw_all(pick, [&](int i) { pick.id = i + 1; });
+
+  // Five clicks: four at objects' centres (projected), one on the background; each reads the id under it.
+  const glm::vec3 targets[] = {{-3.75f, 0.0f, 2.4f}, {0.75f, 0.0f, 0.8f}, {2.25f, 0.0f, -0.8f}, {-0.75f, 0.0f, -2.4f},
+                               {5.2f, 0.0f, 2.4f}};
+  bool picked[kObjects + 1] = {};
+  glm::vec2 clicks[5];
+  for (int k = 0; k < 5; ++k) {
+    const glm::vec4 clip = proj * view * glm::vec4(targets[k], 1.0f);
+    clicks[k] = (glm::vec2(clip) / clip.w * 0.5f + 0.5f) * glm::vec2(float(width), float(height));
+    std::uint32_t id = 0;
+    gl.ReadPixels(int(clicks[k].x), int(clicks[k].y), 1, 1, softgl::RED_INTEGER, softgl::UNSIGNED_INT, &id);
+    if (id <= std::uint32_t(kObjects)) picked[id] = true;
+  }
+
+  // The scene, the picked objects in colour.
+  gl.BindFramebuffer(softgl::FRAMEBUFFER, 0);
+  gl.ClearColor(0.07f, 0.08f, 0.11f, 1.0f);
+  gl.Clear(softgl::COLOR_BUFFER_BIT | softgl::DEPTH_BUFFER_BIT);
+  PickedLitShader lit;
+  gl.UseProgram(lit);
+  draw_all(lit, [&](int i) {
+    lit.model = models[i];
+    lit.color = colors[i];
+    lit.picked = picked[i + 1];
+  });
+  gl.Disable(softgl::DEPTH_TEST);
+  gl.Disable(softgl::CULL_FACE);
+
+  // The clicks as small crosses (white where they hit, red where they missed), by the scissor box and Clear.
+  gl.Enable(softgl::SCISSOR_TEST);
+  for (int k = 0; k < 5; ++k) {
+    std::uint32_t id = 0;
+    gl.BindFramebuffer(softgl::READ_FRAMEBUFFER, fbo);
+    gl.ReadPixels(int(clicks[k].x), int(clicks[k].y), 1, 1, softgl::RED_INTEGER, softgl::UNSIGNED_INT, &id);
+    gl.ClearColor(1.0f, id ? 1.0f : 0.2f, id ? 1.0f : 0.2f, 1.0f);
+    const int x = int(clicks[k].x), y = int(clicks[k].y);
+    gl.Scissor(x - 7, y - 1, 15, 3);
+    gl.Clear(softgl::COLOR_BUFFER_BIT);
+    gl.Scissor(x - 1, y - 7, 3, 15);
+    gl.Clear(softgl::COLOR_BUFFER_BIT);
+  }
+  gl.BindFramebuffer(softgl::READ_FRAMEBUFFER, 0);
+
+  // The id buffer itself, a quarter of the size, in the top right corner (framed in grey).
+  const int iw = width / 4, ih = height / 4, ix = width - iw - 8, iy = height - ih - 8;
+  gl.Scissor(ix - 2, iy - 2, iw + 4, ih + 4);
+  gl.ClearColor(0.6f, 0.6f, 0.65f, 1.0f);
+  gl.Clear(softgl::COLOR_BUFFER_BIT);
+  gl.Disable(softgl::SCISSOR_TEST);
+  gl.Viewport(ix, iy, iw, ih);
+  IdColorsShader colors_of_ids;
+  colors_of_ids.origin = glm::vec2(float(ix), float(iy));
+  colors_of_ids.scale = 4.0f;
+  gl.UseProgram(colors_of_ids);
+  gl.BindTexture(softgl::TEXTURE_2D, ids);
+  MakeScreenTriangle(gl);
+  gl.DrawArrays(softgl::TRIANGLES, 0, 3);
+  return gl.ReadPixels();
+}
+
 }  // namespace scenes

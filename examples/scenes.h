@@ -99,6 +99,12 @@ softgl::Image Instancing(int width, int height);
 /// gives.
 softgl::Image BufferTextures(int width, int height);
 
+/// Picking: 24 objects drawn once more into an R32UI texture, each fragment writing its object's id (an integer
+/// colour output), and the ids under five clicks read back by ReadPixels(RED_INTEGER, UNSIGNED_INT); the scene shows
+/// the picked objects in colour, the others dimmed, the clicks as crosses (red: nothing there), and the id buffer
+/// in false colours (texelFetch of the integer texture) in the top right corner.
+softgl::Image Picking(int width, int height);
+
 /// A fountain of 1,500 particles drawn as point sprites in one draw: gl_PointSize by distance, a soft disc shaped
 /// from gl_PointCoord, additive blending.
 softgl::Image Particles(int width, int height);

@@ -106,6 +106,10 @@ TEST_CASE("image: buffer_texture", "[image]") {
   CompareWithGolden("buffer_texture", scenes::BufferTextures(800, 500));
 }
 
+TEST_CASE("image: picking", "[image]") {
+  CompareWithGolden("picking", scenes::Picking(800, 500));
+}
+
 TEST_CASE("image: particles", "[image]") { CompareWithGolden("particles", scenes::Particles(640, 400)); }
 TEST_CASE("image: feedback_particles", "[image]") {
   CompareWithGolden("feedback_particles", scenes::FeedbackParticles(640, 400));
