@@ -262,7 +262,7 @@ constexpr std::uint32_t FourCc(const char (&c)[5]) {
 // The compressed format of a DDS pixel format (its FourCC, or with "DX10" the DXGI format), 0 for one softgl does
 // not take; `why` says which kind that is.
 Enum DdsFormat(std::uint32_t four_cc, std::uint32_t dxgi, bool alpha_pixels, const char*& why) {
-  why = "not a block-compressed DDS file softgl takes (S3TC: DXT1 to DXT5, RGTC: ATI1, ATI2, BC4U/S, BC5U/S, BC7)";
+  why = "not a block-compressed DDS file softgl takes (S3TC: DXT1 to DXT5, RGTC: ATI1, ATI2, BC4U/S, BC5U/S, BC6H, BC7)";
   if (four_cc == FourCc("DX10")) {
     switch (dxgi) {
       case 70: case 71: return COMPRESSED_RGBA_S3TC_DXT1_EXT;  // BC1_TYPELESS, BC1_UNORM
@@ -277,9 +277,8 @@ Enum DdsFormat(std::uint32_t four_cc, std::uint32_t dxgi, bool alpha_pixels, con
       case 84: return COMPRESSED_SIGNED_RG_RGTC2;
       case 97: case 98: return COMPRESSED_RGBA_BPTC_UNORM;  // BC7_TYPELESS, BC7_UNORM
       case 99: return COMPRESSED_SRGB_ALPHA_BPTC_UNORM;        // BC7_UNORM_SRGB
-      case 94: case 95: case 96:
-        why = "BC6H (BPTC float) DDS files are not supported yet";
-        return 0;
+      case 94: case 95: return COMPRESSED_RGB_BPTC_UNSIGNED_FLOAT;  // BC6H_TYPELESS, BC6H_UF16
+      case 96: return COMPRESSED_RGB_BPTC_SIGNED_FLOAT;               // BC6H_SF16
       default: return 0;
     }
   }
@@ -403,9 +402,10 @@ const char* ReadDds(const std::uint8_t* d, std::size_t size, bool flip_verticall
     if (size - at < bytes) return "truncated DDS data (fewer blocks than its levels need)";
     level.blocks.assign(d + at, d + at + bytes);
     at += bytes;
-    const bool bptc = format == COMPRESSED_RGBA_BPTC_UNORM || format == COMPRESSED_SRGB_ALPHA_BPTC_UNORM;
-    if (flip_vertically && bptc)  // (a BC7 block's partition and anchors tie its texels to their places)
-      return "BC7 blocks cannot be turned upside down: load the DDS file unflipped and flip t";
+    const bool bptc = format == COMPRESSED_RGBA_BPTC_UNORM || format == COMPRESSED_SRGB_ALPHA_BPTC_UNORM ||
+                      format == COMPRESSED_RGB_BPTC_SIGNED_FLOAT || format == COMPRESSED_RGB_BPTC_UNSIGNED_FLOAT;
+    if (flip_vertically && bptc)  // (a BPTC block's partition and anchors tie its texels to their places)
+      return "BPTC (BC6H, BC7) blocks cannot be turned upside down: load the DDS file unflipped and flip t";
     if (flip_vertically && !FlipLevel(format, level, block_bytes))
       return "cannot flip a DDS level whose height is above 4 and not a multiple of 4 (load it unflipped and flip t)";
     out.levels.push_back(std::move(level));

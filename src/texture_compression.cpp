@@ -1,4 +1,4 @@
-// texture_compression.cpp — decoding S3TC, RGTC and BPTC (BC7) blocks into level texels.
+// texture_compression.cpp — decoding S3TC, RGTC and BPTC (BC7, BC6H) blocks into level texels.
 #include "texture_compression.h"
 
 #include <algorithm>
@@ -27,6 +27,8 @@ constexpr CompressedFormat kFormats[] = {
     {COMPRESSED_SIGNED_RG_RGTC2, 16, RG32F, Kind::kRgtc2Signed},
     {COMPRESSED_RGBA_BPTC_UNORM, 16, RGBA8, Kind::kBc7},
     {COMPRESSED_SRGB_ALPHA_BPTC_UNORM, 16, SRGB8_ALPHA8, Kind::kBc7},
+    {COMPRESSED_RGB_BPTC_SIGNED_FLOAT, 16, RGBA16F, Kind::kBc6hSigned},
+    {COMPRESSED_RGB_BPTC_UNSIGNED_FLOAT, 16, RGBA16F, Kind::kBc6hUnsigned},
 };
 
 // ---- BPTC (BC7) -----------------------------------------------------------------------------------------------
@@ -179,6 +181,143 @@ void Bc7Block(const std::uint8_t* block, float out[16][4]) {
   }
 }
 
+// ---- BPTC (BC6H) ----------------------------------------------------------------------------------------------
+//
+// BC6H's fourteen modes (ARB_texture_compression_bptc, tables MF and F): each block's mode in its low 2 bits (0 and
+// 1) or 5 bits, then the endpoints' bits scattered as the mode lays them out. A Bc6Step gives the next `count`
+// bits of the block to endpoint component `field` (r0 g0 b0 r1 g1 b1 r2 g2 b2 r3 g3 b3: 0 to 11) from bit `lo`
+// up, or with `reversed` from bit lo + count - 1 down.
+struct Bc6Step {
+  std::uint8_t field, lo, count, reversed;
+};
+struct Bc6Mode {
+  int number;        // the mode bits' value
+  bool transformed;  // endpoints after the first are deltas from it
+  int partition_bits, endpoint_bits, delta_bits[3];
+  Bc6Step steps[23];
+};
+constexpr Bc6Mode kBc6Modes[14] = {
+    {0, true, 5, 10, {5, 5, 5}, {}},  {1, true, 5, 7, {6, 6, 6}, {}},   {2, true, 5, 11, {5, 4, 4}, {}},
+    {6, true, 5, 11, {4, 5, 4}, {}},  {10, true, 5, 11, {4, 4, 5}, {}}, {14, true, 5, 9, {5, 5, 5}, {}},
+    {18, true, 5, 8, {6, 5, 5}, {}},  {22, true, 5, 8, {5, 6, 5}, {}},  {26, true, 5, 8, {5, 5, 6}, {}},
+    {30, false, 5, 6, {6, 6, 6}, {}}, {3, false, 0, 10, {10, 10, 10}, {}}, {7, true, 0, 11, {9, 9, 9}, {}},
+    {11, true, 0, 12, {8, 8, 8}, {}}, {15, true, 0, 16, {4, 4, 4}, {}},
+};
+// Each mode's layout, in kBc6Modes' order (empty steps end a list).
+constexpr Bc6Step kBc6Layouts[14][23] = {
+    /*  0 */ {{7, 4, 1, 0}, {8, 4, 1, 0}, {11, 4, 1, 0}, {0, 0, 10, 0}, {1, 0, 10, 0}, {2, 0, 10, 0}, {3, 0, 5, 0},
+                  {10, 4, 1, 0}, {7, 0, 4, 0}, {4, 0, 5, 0}, {11, 0, 1, 0}, {10, 0, 4, 0}, {5, 0, 5, 0},
+                  {11, 1, 1, 0}, {8, 0, 4, 0}, {6, 0, 5, 0}, {11, 2, 1, 0}, {9, 0, 5, 0}, {11, 3, 1, 0}},
+    /*  1 */ {{7, 5, 1, 0}, {10, 4, 1, 0}, {10, 5, 1, 0}, {0, 0, 7, 0}, {11, 0, 1, 0}, {11, 1, 1, 0}, {8, 4, 1, 0},
+                  {1, 0, 7, 0}, {8, 5, 1, 0}, {11, 2, 1, 0}, {7, 4, 1, 0}, {2, 0, 7, 0}, {11, 3, 1, 0},
+                  {11, 5, 1, 0}, {11, 4, 1, 0}, {3, 0, 6, 0}, {7, 0, 4, 0}, {4, 0, 6, 0}, {10, 0, 4, 0},
+                  {5, 0, 6, 0}, {8, 0, 4, 0}, {6, 0, 6, 0}, {9, 0, 6, 0}},
+    /*  2 */ {{0, 0, 10, 0}, {1, 0, 10, 0}, {2, 0, 10, 0}, {3, 0, 5, 0}, {0, 10, 1, 0}, {7, 0, 4, 0}, {4, 0, 4, 0},
+                  {1, 10, 1, 0}, {11, 0, 1, 0}, {10, 0, 4, 0}, {5, 0, 4, 0}, {2, 10, 1, 0}, {11, 1, 1, 0},
+                  {8, 0, 4, 0}, {6, 0, 5, 0}, {11, 2, 1, 0}, {9, 0, 5, 0}, {11, 3, 1, 0}},
+    /*  6 */ {{0, 0, 10, 0}, {1, 0, 10, 0}, {2, 0, 10, 0}, {3, 0, 4, 0}, {0, 10, 1, 0}, {10, 4, 1, 0}, {7, 0, 4, 0},
+                  {4, 0, 5, 0}, {1, 10, 1, 0}, {10, 0, 4, 0}, {5, 0, 4, 0}, {2, 10, 1, 0}, {11, 1, 1, 0},
+                  {8, 0, 4, 0}, {6, 0, 4, 0}, {11, 0, 1, 0}, {11, 2, 1, 0}, {9, 0, 4, 0}, {7, 4, 1, 0},
+                  {11, 3, 1, 0}},
+    /* 10 */ {{0, 0, 10, 0}, {1, 0, 10, 0}, {2, 0, 10, 0}, {3, 0, 4, 0}, {0, 10, 1, 0}, {8, 4, 1, 0}, {7, 0, 4, 0},
+                  {4, 0, 4, 0}, {1, 10, 1, 0}, {11, 0, 1, 0}, {10, 0, 4, 0}, {5, 0, 5, 0}, {2, 10, 1, 0},
+                  {8, 0, 4, 0}, {6, 0, 4, 0}, {11, 1, 1, 0}, {11, 2, 1, 0}, {9, 0, 4, 0}, {11, 4, 1, 0},
+                  {11, 3, 1, 0}},
+    /* 14 */ {{0, 0, 9, 0}, {8, 4, 1, 0}, {1, 0, 9, 0}, {7, 4, 1, 0}, {2, 0, 9, 0}, {11, 4, 1, 0}, {3, 0, 5, 0},
+                  {10, 4, 1, 0}, {7, 0, 4, 0}, {4, 0, 5, 0}, {11, 0, 1, 0}, {10, 0, 4, 0}, {5, 0, 5, 0},
+                  {11, 1, 1, 0}, {8, 0, 4, 0}, {6, 0, 5, 0}, {11, 2, 1, 0}, {9, 0, 5, 0}, {11, 3, 1, 0}},
+    /* 18 */ {{0, 0, 8, 0}, {10, 4, 1, 0}, {8, 4, 1, 0}, {1, 0, 8, 0}, {11, 2, 1, 0}, {7, 4, 1, 0}, {2, 0, 8, 0},
+                  {11, 3, 1, 0}, {11, 4, 1, 0}, {3, 0, 6, 0}, {7, 0, 4, 0}, {4, 0, 5, 0}, {11, 0, 1, 0},
+                  {10, 0, 4, 0}, {5, 0, 5, 0}, {11, 1, 1, 0}, {8, 0, 4, 0}, {6, 0, 6, 0}, {9, 0, 6, 0}},
+    /* 22 */ {{0, 0, 8, 0}, {11, 0, 1, 0}, {8, 4, 1, 0}, {1, 0, 8, 0}, {7, 5, 1, 0}, {7, 4, 1, 0}, {2, 0, 8, 0},
+                  {10, 5, 1, 0}, {11, 4, 1, 0}, {3, 0, 5, 0}, {10, 4, 1, 0}, {7, 0, 4, 0}, {4, 0, 6, 0},
+                  {10, 0, 4, 0}, {5, 0, 5, 0}, {11, 1, 1, 0}, {8, 0, 4, 0}, {6, 0, 5, 0}, {11, 2, 1, 0},
+                  {9, 0, 5, 0}, {11, 3, 1, 0}},
+    /* 26 */ {{0, 0, 8, 0}, {11, 1, 1, 0}, {8, 4, 1, 0}, {1, 0, 8, 0}, {8, 5, 1, 0}, {7, 4, 1, 0}, {2, 0, 8, 0},
+                  {11, 5, 1, 0}, {11, 4, 1, 0}, {3, 0, 5, 0}, {10, 4, 1, 0}, {7, 0, 4, 0}, {4, 0, 5, 0},
+                  {11, 0, 1, 0}, {10, 0, 4, 0}, {5, 0, 6, 0}, {8, 0, 4, 0}, {6, 0, 5, 0}, {11, 2, 1, 0},
+                  {9, 0, 5, 0}, {11, 3, 1, 0}},
+    /* 30 */ {{0, 0, 6, 0}, {10, 4, 1, 0}, {11, 0, 1, 0}, {11, 1, 1, 0}, {8, 4, 1, 0}, {1, 0, 6, 0}, {7, 5, 1, 0},
+                  {8, 5, 1, 0}, {11, 2, 1, 0}, {7, 4, 1, 0}, {2, 0, 6, 0}, {10, 5, 1, 0}, {11, 3, 1, 0},
+                  {11, 5, 1, 0}, {11, 4, 1, 0}, {3, 0, 6, 0}, {7, 0, 4, 0}, {4, 0, 6, 0}, {10, 0, 4, 0},
+                  {5, 0, 6, 0}, {8, 0, 4, 0}, {6, 0, 6, 0}, {9, 0, 6, 0}},
+    /*  3 */ {{0, 0, 10, 0}, {1, 0, 10, 0}, {2, 0, 10, 0}, {3, 0, 10, 0}, {4, 0, 10, 0}, {5, 0, 10, 0}},
+    /*  7 */ {{0, 0, 10, 0}, {1, 0, 10, 0}, {2, 0, 10, 0}, {3, 0, 9, 0}, {0, 10, 1, 0}, {4, 0, 9, 0}, {1, 10, 1, 0},
+                  {5, 0, 9, 0}, {2, 10, 1, 0}},
+    /* 11 */ {{0, 0, 10, 0}, {1, 0, 10, 0}, {2, 0, 10, 0}, {3, 0, 8, 0}, {0, 10, 2, 1}, {4, 0, 8, 0}, {1, 10, 2, 1},
+                  {5, 0, 8, 0}, {2, 10, 2, 1}},
+    /* 15 */ {{0, 0, 10, 0}, {1, 0, 10, 0}, {2, 0, 10, 0}, {3, 0, 4, 0}, {0, 10, 6, 1}, {4, 0, 4, 0}, {1, 10, 6, 1},
+                  {5, 0, 4, 0}, {2, 10, 6, 1}},
+};
+
+int SignExtend(int v, int bits) { return bits >= 32 ? v : int(std::uint32_t(v) << (32 - bits)) >> (32 - bits); }
+
+// The endpoint unquantization of BC6H (the extension's pseudocode): x of `bits` bits to a 16-bit range.
+int Bc6Unquantize(int x, int bits, bool is_signed) {
+  if (!is_signed) {
+    if (bits >= 15) return x;
+    if (x == 0) return 0;
+    if (x == (1 << bits) - 1) return 0xFFFF;
+    return ((x << 15) + 0x4000) >> (bits - 1);
+  }
+  if (bits >= 16) return x;
+  const bool negative = x < 0;
+  const int a = negative ? -x : x;
+  int q = 0;
+  if (a == 0) q = 0;
+  else if (a >= (1 << (bits - 1)) - 1) q = 0x7FFF;
+  else q = ((a << 15) + 0x4000) >> (bits - 1);
+  return negative ? -q : q;
+}
+
+// Decodes a BC6H block into 16 RGB half floats a texel (alpha 1), as floats; a reserved mode gives (0, 0, 0, 1).
+void Bc6hBlock(const std::uint8_t* block, bool is_signed, float out[16][4]) {
+  BlockBits in{block};
+  int number = in.Take(2);
+  if (number >= 2) number |= in.Take(3) << 2;
+  int m = 0;
+  while (m < 14 && kBc6Modes[m].number != number) ++m;
+  for (int t = 0; t < 16; ++t) out[t][0] = out[t][1] = out[t][2] = 0.0f, out[t][3] = 1.0f;
+  if (m == 14) return;
+  const Bc6Mode& mode = kBc6Modes[m];
+  int e[12] = {};
+  for (const Bc6Step& step : kBc6Layouts[m]) {
+    for (int i = 0; i < step.count; ++i) {
+      const int bit = step.reversed ? step.lo + step.count - 1 - i : step.lo + i;
+      e[step.field] |= in.Take(1) << bit;
+    }
+  }
+  const int subsets = mode.partition_bits ? 2 : 1;
+  const int partition = in.Take(mode.partition_bits);
+  const int bits = mode.endpoint_bits, mask = (1 << bits) - 1;
+  for (int c = 0; c < 3; ++c) {
+    if (is_signed) e[c] = SignExtend(e[c], bits);
+    for (int k = 1; k < 2 * subsets; ++k) {
+      int& v = e[3 * k + c];
+      if (mode.transformed) {
+        v = (e[c] + SignExtend(v, mode.delta_bits[c])) & mask;
+        if (is_signed) v = SignExtend(v, bits);
+      } else if (is_signed) {
+        v = SignExtend(v, bits);
+      }
+    }
+  }
+  for (int& v : e) v = Bc6Unquantize(v, bits, is_signed);
+  const int index_bits = subsets == 2 ? 3 : 4;
+  for (int t = 0; t < 16; ++t) {
+    const int s = subsets == 2 ? (kShapes2[partition] >> t) & 1 : 0;
+    const bool anchor = t == 0 || (subsets == 2 && t == kAnchor2[partition]);
+    const int index = in.Take(index_bits - (anchor ? 1 : 0));
+    for (int c = 0; c < 3; ++c) {
+      const int v = Interpolate(e[6 * s + c], e[6 * s + 3 + c], index, index_bits);
+      std::uint16_t h;
+      if (!is_signed) h = std::uint16_t((v * 31) >> 6);
+      else h = std::uint16_t(v < 0 ? ((-v * 31) >> 5) | 0x8000 : (v * 31) >> 5);
+      out[t][c] = HalfToFloat(h);
+    }
+  }
+}
+
 // k / n of the way from a to b, by an 8-bit weight w = floor(255 k / n): (a (256 - w) + b w) / 256 rounded down.
 int Mix(int a, int b, int k, int n) {
   const int w = 255 * k / n;
@@ -270,6 +409,8 @@ void DecodeBlock(const CompressedFormat& f, const std::uint8_t* block, float out
   int v[16];
   switch (f.kind) {
     case Kind::kBc7: Bc7Block(block, out); return;
+    case Kind::kBc6hSigned: Bc6hBlock(block, true, out); return;
+    case Kind::kBc6hUnsigned: Bc6hBlock(block, false, out); return;
     case Kind::kDxt1Rgb: ColourBlock(block, false, 255, out); return;
     case Kind::kDxt1Rgba: ColourBlock(block, false, 0, out); return;
     case Kind::kDxt3:
@@ -321,6 +462,11 @@ void DecodeRegion(const CompressedFormat& f, const std::uint8_t* blocks, int x, 
           std::uint8_t* p = level.At(i, (z + k) * level.height + j);
           if (floats) {
             std::memcpy(p, texels[t], std::size_t(channels) * 4);
+          } else if (level.layout == TexelLayout::kFloat16x4) {  // BC6H: its halves, exactly
+            for (int ch = 0; ch < 4; ++ch) {
+              const std::uint16_t h = FloatToHalf(texels[t][ch]);
+              std::memcpy(p + 2 * ch, &h, 2);
+            }
           } else {
             // (RGB8 and SRGB8 keep four bytes a texel, their alpha 255.)
             for (int ch = 0; ch < level.bytes; ++ch) p[ch] = std::uint8_t(texels[t][ch]);

@@ -3,8 +3,8 @@
 // softgl decodes compressed images when they are defined (CompressedTexImage*, CompressedTexSubImage*) into an
 // ordinary level format, which every sampling path then reads as it reads any other level; the level also keeps
 // the blocks as given, for GetCompressedTexImage and TEXTURE_COMPRESSED_IMAGE_SIZE. A compressed level so costs its
-// decoded size (4 bytes a texel for S3TC and BC7, 1 or 2 for unsigned RGTC, 4 or 8 for signed RGTC) plus its blocks
-// (half a byte or one byte a texel).
+// decoded size (4 bytes a texel for S3TC and BC7, 1 or 2 for unsigned RGTC, 4 or 8 for signed RGTC, 8 for BC6H's
+// RGBA16F) plus its blocks (half a byte or one byte a texel).
 //
 // Each format's texels are 4 x 4 blocks, rows of blocks from the image's first row (the bottom, as OpenGL orders
 // rows), a block's texels row by row from its own first row; blocks past the image's right or top edge are whole
@@ -26,6 +26,10 @@
 //   repeating their high bits, and index i of a 2-, 3- or 4-bit set the weight w = BC7's table value (of 64), giving
 //   ((64 - w) e0 + w e1 + 32) / 64 rounded down; a block whose first byte has no mode bit decodes to transparent
 //   black.
+// - BC6H (BPTC's float forms) too: endpoints (deltas from the first in most modes, sign-extended for the signed
+//   form) unquantized to 16 bits, interpolated as BC7's, then scaled by 31 / 64 (unsigned) or 31 / 32 (signed,
+//   on the magnitude) into a half float's bits, kept exactly in an RGBA16F level (alpha 1); a reserved mode
+//   decodes to (0, 0, 0, 1).
 #pragma once
 
 #include <cstddef>
@@ -40,11 +44,11 @@ struct TextureLevel;
 /// A compressed format: its enum, its block's bytes, the level format it decodes into, and its kind.
 struct CompressedFormat {
   enum class Kind : std::uint8_t {
-    kDxt1Rgb, kDxt1Rgba, kDxt3, kDxt5, kRgtc1, kRgtc1Signed, kRgtc2, kRgtc2Signed, kBc7
+    kDxt1Rgb, kDxt1Rgba, kDxt3, kDxt5, kRgtc1, kRgtc1Signed, kRgtc2, kRgtc2Signed, kBc7, kBc6hSigned, kBc6hUnsigned
   };
   Enum format;
   int block_bytes;  // 8 or 16
-  Enum decoded;     // RGB8, RGBA8, SRGB8, SRGB8_ALPHA8, R8, RG8, R32F or RG32F
+  Enum decoded;     // RGB8, RGBA8, SRGB8, SRGB8_ALPHA8, R8, RG8, R32F, RG32F or RGBA16F (BC6H)
   Kind kind;
 };
 

@@ -174,6 +174,39 @@ TEST_CASE("BC7 blocks: endpoints widened with their p-bits, 64ths between them, 
   for (int t = 0; t < 16; ++t) CHECK((none.t[t][0] == 0.0f && none.t[t][3] == 0.0f));
 }
 
+TEST_CASE("BC6H blocks: endpoints unquantized to 16 bits, 64ths between them, half floats; reserved modes", "[compression]") {
+  // Mode 3 (bits 00011): one subset, six 10-bit endpoint components stored whole, 4-bit indices (texel 0's 3).
+  const auto block = [](int r0, int g0, int b0, int r1, int g1, int b1) {
+    Bc7Writer w;
+    w.Put(3, 5);
+    for (const int v : {r0, g0, b0, r1, g1, b1}) w.Put(std::uint32_t(v), 10);
+    w.Put(0, 3).Put(15, 4).Put(8, 4);  // texels 0, 1, 2: indices 0, 15, 8; the others 0
+    return w.block;
+  };
+  const auto half = [](const Decoded& d, int t, int c) { return detail::FloatToHalf(d.t[t][c]); };
+  const Decoded u = Decode(COMPRESSED_RGB_BPTC_UNSIGNED_FLOAT, block(0, 512, 1023, 1023, 512, 0));
+  // Unquantized: 0 -> 0, 1023 -> 0xFFFF, 512 -> ((512 << 15) + 0x4000) >> 9 = 32800; then times 31 / 64.
+  CHECK(half(u, 0, 0) == 0);
+  CHECK(half(u, 0, 1) == 0x3E0F);  // 32800 * 31 >> 6
+  CHECK(half(u, 0, 2) == 0x7BFF);  // 65535 * 31 >> 6: the largest half, 65504
+  CHECK(half(u, 1, 0) == 0x7BFF);
+  CHECK(half(u, 1, 2) == 0);
+  CHECK(half(u, 2, 0) == 0x41DF);  // weight 34: (34 * 65535 + 32) >> 6 = 34815, times 31 / 64
+  CHECK(u.t[0][3] == 1.0f);
+  // Signed: 10-bit endpoints sign-extended (-512 -> -0x7FFF, saturated), then times 31 / 32 with the sign kept.
+  const Decoded s = Decode(COMPRESSED_RGB_BPTC_SIGNED_FLOAT, block(512, 256, 0, 1, 1, 1));
+  CHECK(half(s, 0, 0) == (0x8000 | 0x7BFF));   // -32767 -> -(32767 * 31 >> 5)
+  CHECK(half(s, 0, 1) == 0x3E1F);              // 256: ((256 << 15) + 0x4000) >> 9 = 16416, * 31 >> 5 = 15903
+  CHECK(half(s, 0, 2) == 0);
+  // The reserved modes (19, 23, 27, 31) decode to (0, 0, 0, 1).
+  for (const int mode : {19, 23, 27, 31}) {
+    std::vector<std::uint8_t> reserved(16, 0xFF);
+    reserved[0] = std::uint8_t(0xE0 | mode);
+    const Decoded r = Decode(COMPRESSED_RGB_BPTC_UNSIGNED_FLOAT, reserved);
+    for (int t = 0; t < 16; ++t) CHECK((r.t[t][0] == 0.0f && r.t[t][1] == 0.0f && r.t[t][2] == 0.0f && r.t[t][3] == 1.0f));
+  }
+}
+
 TEST_CASE("CompressedTexImage2D and CompressedTexSubImage2D: decoded texels, blocks and level state", "[compression]") {
   Context gl(8, 8);
   gl.BindTexture(TEXTURE_2D, gl.GenTexture());
@@ -463,6 +496,13 @@ TEST_CASE("DDS files define every level from their blocks, flipped on request", 
     gl.GetCompressedTexImage(TEXTURE_2D, 0, blocks.data());
     CHECK(std::equal(blocks.begin(), blocks.end(), bc7.begin() + 148));
   }
+  // BC6H (DX10 headers), unsigned and signed; no sRGB form.
+  for (const std::uint32_t dxgi : {95u, 96u}) {
+    const std::vector<std::uint8_t> bc6 = MakeDds("DX10", dxgi, 8, 8, 1, 16, 5);
+    REQUIRE(gl.TexImage2DFromMemory(TEXTURE_2D, bc6.data(), bc6.size(), false, nullptr, SRGB));
+    gl.GetTexLevelParameteriv(TEXTURE_2D, 0, TEXTURE_INTERNAL_FORMAT, &v);
+    CHECK(v == int(dxgi == 95 ? COMPRESSED_RGB_BPTC_UNSIGNED_FLOAT : COMPRESSED_RGB_BPTC_SIGNED_FLOAT));
+  }
   const std::vector<std::uint8_t> bc7 = MakeDds("DX10", 98, 4, 4, 1, 16, 9);
   REQUIRE(gl.TexImage2DFromMemory(TEXTURE_2D, bc7.data(), bc7.size(), false, nullptr, SRGB));
   gl.GetTexLevelParameteriv(TEXTURE_2D, 0, TEXTURE_INTERNAL_FORMAT, &v);
@@ -483,8 +523,8 @@ TEST_CASE("DDS files softgl cannot take are refused with a message", "[compressi
   };
   refused(std::vector<std::uint8_t>(good.begin(), good.end() - 1), "truncated DDS data");
   refused(std::vector<std::uint8_t>(good.begin(), good.begin() + 100), "DDS header");
-  refused(MakeDds("DX10", 95, 8, 8, 1, 16, 3), "BC6H");
-  refused(MakeDds("DX10", 98, 8, 8, 1, 16, 3), "BC7 blocks cannot be turned upside down", true);
+  refused(MakeDds("DX10", 95, 8, 8, 1, 16, 3), "BPTC (BC6H, BC7) blocks cannot be turned upside down", true);
+  refused(MakeDds("DX10", 98, 8, 8, 1, 16, 3), "BPTC (BC6H, BC7) blocks cannot be turned upside down", true);
   refused(MakeDds("DXT5", 0, 8, 8, 1, 16, 3, 0x200), "cube maps");
   refused(MakeDds("RGBG", 0, 8, 8, 1, 16, 3), "not a block-compressed DDS file");
   refused(MakeDds("DXT5", 0, 8, 6, 1, 16, 3), "cannot flip", true);

@@ -278,10 +278,12 @@ inline constexpr Enum SRGB8_ALPHA8 = 0x8C43;  // sRGB-encoded RGB with linear al
 // Compressed formats: 4 x 4 blocks of texels, 8 or 16 bytes a block, defined by CompressedTexImage1D/2D/3D (see
 // docs/guide.md, "Compressed textures"). RGTC (OpenGL 3.0): one or two channels, unsigned or signed. S3TC
 // (EXT_texture_compression_s3tc, with EXT_texture_sRGB's sRGB forms): DXT1 (BC1) with or without its one-bit alpha,
-// DXT3 (BC2) and DXT5 (BC3). BPTC (ARB_texture_compression_bptc, core in OpenGL 4.2): BC7's RGBA, linear or sRGB
-// (BC6H's float forms are not decoded).
+// DXT3 (BC2) and DXT5 (BC3). BPTC (ARB_texture_compression_bptc, core in OpenGL 4.2): BC7's RGBA, linear or sRGB,
+// and BC6H's RGB half floats, signed or unsigned.
 inline constexpr Enum COMPRESSED_RGBA_BPTC_UNORM = 0x8E8C;
 inline constexpr Enum COMPRESSED_SRGB_ALPHA_BPTC_UNORM = 0x8E8D;
+inline constexpr Enum COMPRESSED_RGB_BPTC_SIGNED_FLOAT = 0x8E8E;    // BC6H: RGB half floats, signed
+inline constexpr Enum COMPRESSED_RGB_BPTC_UNSIGNED_FLOAT = 0x8E8F;  // BC6H: RGB half floats, not below 0
 inline constexpr Enum COMPRESSED_RED_RGTC1 = 0x8DBB;
 inline constexpr Enum COMPRESSED_SIGNED_RED_RGTC1 = 0x8DBC;
 inline constexpr Enum COMPRESSED_RG_RGTC2 = 0x8DBD;

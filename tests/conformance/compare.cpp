@@ -837,7 +837,7 @@ TEST_CASE("layered framebuffers: completeness, attachment state and errors as Me
 
 TEST_CASE("compressed textures: decoded texels, blocks read back, level state and errors as Mesa's", "[conformance]") {
   namespace gl = softgl;
-  // Every S3TC, RGTC and BC7 format, decoded by both from the same pseudo-random blocks (both modes of each block kind
+  // Every S3TC, RGTC and BPTC (BC7, BC6H) format, decoded by both from the same pseudo-random blocks (both modes of each block kind
   // come up: c0 > c1 and not, a0 > a1 and not, signed endpoints of -128), read back as floats (compared as whole
   // multiples of 1 / (255 * 127), exact for both unsigned bytes and signed ones); images with partial blocks;
   // CompressedTexSubImage; a 2D array; then OpenGL's errors.
@@ -847,7 +847,8 @@ TEST_CASE("compressed textures: decoded texels, blocks read back, level state an
                           gl::COMPRESSED_SRGB_ALPHA_S3TC_DXT3_EXT, gl::COMPRESSED_SRGB_ALPHA_S3TC_DXT5_EXT,
                           gl::COMPRESSED_RED_RGTC1,                gl::COMPRESSED_SIGNED_RED_RGTC1,
                           gl::COMPRESSED_RG_RGTC2,                 gl::COMPRESSED_SIGNED_RG_RGTC2,
-                          gl::COMPRESSED_RGBA_BPTC_UNORM,          gl::COMPRESSED_SRGB_ALPHA_BPTC_UNORM};
+                          gl::COMPRESSED_RGBA_BPTC_UNORM,          gl::COMPRESSED_SRGB_ALPHA_BPTC_UNORM,
+                          gl::COMPRESSED_RGB_BPTC_SIGNED_FLOAT,    gl::COMPRESSED_RGB_BPTC_UNSIGNED_FLOAT};
   auto block_bytes = [](Enum f) {
     return f == gl::COMPRESSED_RGB_S3TC_DXT1_EXT || f == gl::COMPRESSED_RGBA_S3TC_DXT1_EXT ||
                    f == gl::COMPRESSED_SRGB_S3TC_DXT1_EXT || f == gl::COMPRESSED_SRGB_ALPHA_S3TC_DXT1_EXT ||
@@ -915,6 +916,21 @@ TEST_CASE("compressed textures: decoded texels, blocks read back, level state an
     step(0);
     level_state(gl::TEXTURE_3D, 0);
     read(gl::TEXTURE_3D, 8, 8, 4);
+    // BC6H, signed and unsigned, every mode (and two reserved ones) in the low bits of a block's first byte; the
+    // first 16 blocks pseudo-random, the next 16 all ones past the mode bits (the largest endpoints, and the
+    // deltas of -1), the last 16 all zeros.
+    const int bc6_modes[16] = {0, 1, 2, 6, 10, 14, 18, 22, 26, 30, 3, 7, 11, 15, 19, 31};
+    for (const Enum bc6 : {gl::COMPRESSED_RGB_BPTC_SIGNED_FLOAT, gl::COMPRESSED_RGB_BPTC_UNSIGNED_FLOAT}) {
+      b.BindNewTexture(gl::TEXTURE_2D);
+      std::vector<std::uint8_t> modes = blocks(size_of(bc6, 16, 48, 1), 321);
+      for (std::size_t k = 0; k * 16 < modes.size(); ++k) {
+        if (k >= 16) std::fill_n(modes.begin() + std::ptrdiff_t(k * 16), 16, std::uint8_t(k < 32 ? 0xFF : 0));
+        modes[k * 16] = std::uint8_t((modes[k * 16] & 0xE0) | bc6_modes[k % 16]);
+      }
+      b.CompressedTexImage(2, gl::TEXTURE_2D, 0, bc6, 16, 48, 1, size_of(bc6, 16, 48, 1), modes.data());
+      step(0);
+      read(gl::TEXTURE_2D, 16, 48, 1);
+    }
     // Errors, each call's alone.
     const std::vector<std::uint8_t> some = blocks(4096, 7);
     b.BindNewTexture(gl::TEXTURE_2D);

@@ -138,6 +138,7 @@ constexpr std::uint32_t kCompressed[] = {COMPRESSED_RGB_S3TC_DXT1_EXT,   COMPRES
                                          COMPRESSED_RED_RGTC1,           COMPRESSED_SIGNED_RED_RGTC1,
                                          COMPRESSED_RG_RGTC2,            COMPRESSED_SIGNED_RG_RGTC2,
                                          COMPRESSED_RGBA_BPTC_UNORM,     COMPRESSED_SRGB_ALPHA_BPTC_UNORM,
+                                         COMPRESSED_RGB_BPTC_SIGNED_FLOAT, COMPRESSED_RGB_BPTC_UNSIGNED_FLOAT,
                                          RGBA8};
 // Every pixel format and type of OpenGL 3.3 (tables 3.2 to 3.5), and one of neither: a pixel is 16 bytes at most.
 constexpr std::uint32_t kFormats[] = {RED, GREEN, BLUE, RG, RGB, BGR, RGBA, BGRA, DEPTH_COMPONENT, DEPTH_STENCIL,
