@@ -862,6 +862,82 @@ SOFTGL_WIDE void FloatLanesOf(const FragmentOpsState& st, const FragmentOpsPlan&
     at.template Store<std::uint32_t>(go ? as_u(r[0]) : word);
   }
 }
+// Integer colour buffers (ColourPath::kInteger) without a logic operation, the lanes of `go`: each channel's
+// integers (the output's floats' bits) clamped to the channel's range, packed into the texel's 32-bit words, the
+// channels the colour mask keeps taken from the stored texel; what IntegerLane stores lane by lane.
+template <int W>
+SOFTGL_WIDE void IntegerLanes(const FragmentOpsState& st, int o, const ColorBuffer& cb, const TexelQuads<W>& at,
+                              const typename V<W>::F color[4], typename V<W>::I go) {
+  using U = typename V<W>::U;
+  using I = typename V<W>::I;
+  using D = typename V<W>::D;
+  using F = typename V<W>::F;
+  const IntegerLayout k = IntegerLayoutOf(cb.layout);
+  bool mask[4];
+  st.Mask(o, mask);
+  U word[4] = {};
+  std::uint32_t keep[4] = {0, 0, 0, 0};  // the bits of each word the colour mask keeps
+  for (int c = 0; c < k.channels; ++c) {
+    U v;
+    std::memcpy(&v, &color[c], sizeof v);
+    const int bits = k.packed ? (c < 3 ? 10 : 2) : 8 * k.bytes, shift = k.packed ? 10 * c : 8 * k.bytes * c;
+    const std::uint32_t ones = bits == 32 ? ~0u : (1u << bits) - 1u;
+    if (bits < 32 && k.is_signed) {
+      const I lo = I{} - (1 << (bits - 1)), hi = I{} + ((1 << (bits - 1)) - 1);
+      I value = I(v);
+      value = value < lo ? lo : value;
+      value = value > hi ? hi : value;
+      v = U(value) & ones;
+    } else if (bits < 32) {
+      v = v > ones ? U{} + ones : v;  // (unsigned: the bits of a negative int are above every channel's range)
+    }
+    word[shift / 32] |= v << (shift % 32);
+    if (!mask[c]) keep[shift / 32] |= ones << (shift % 32);
+  }
+  const auto merge = [&](U fresh, U old, int w) SOFTGL_WIDE_LAMBDA {
+    return go ? ((fresh & ~keep[w]) | (old & keep[w])) : old;
+  };
+  switch (cb.Bytes()) {
+    case 1: {
+      const U old = __builtin_convertvector((at.template Load<std::uint8_t, typename V<W>::B>()), U);
+      at.template Store<std::uint8_t>(__builtin_convertvector(merge(word[0], old, 0), typename V<W>::B));
+      return;
+    }
+    case 2: {
+      const U old = __builtin_convertvector((at.template Load<std::uint16_t, typename V<W>::S>()), U);
+      at.template Store<std::uint16_t>(__builtin_convertvector(merge(word[0], old, 0), typename V<W>::S));
+      return;
+    }
+    case 4: {
+      const U old = at.template Load<std::uint32_t, U>();
+      at.template Store<std::uint32_t>(merge(word[0], old, 0));
+      return;
+    }
+    case 8: {
+      const D old = at.template Load<std::uint64_t, D>();
+      const U old0 = __builtin_convertvector(old, U), old1 = __builtin_convertvector(old >> 32, U);
+      const D out = __builtin_convertvector(merge(word[0], old0, 0), D) |
+                    (__builtin_convertvector(merge(word[1], old1, 1), D) << 32);
+      at.template Store<std::uint64_t>(out);
+      return;
+    }
+    default: {  // 16 bytes: four words, as RGBA32F's texels (their bits only moved)
+      F old[4], out[4];
+      LoadComponentsAt<W>([&](int t) SOFTGL_WIDE_LAMBDA { return Float4TexelAt(at, t); }, old);
+      for (int w = 0; w < 4; ++w) {
+        U old_bits;
+        std::memcpy(&old_bits, &old[w], sizeof old_bits);
+        const U merged = merge(word[w], old_bits, w);
+        std::memcpy(&out[w], &merged, sizeof merged);
+      }
+      unsigned quads = 0;  // those with a live lane (StoreQuads)
+      for (int q = 0; q < W / 4; ++q) quads |= ((at.live >> (at.l0 + 4 * q)) & 0xFu) ? 1u << q : 0u;
+      StoreComponentsAt<W>([&](int t) SOFTGL_WIDE_LAMBDA { return Float4TexelAt(at, t); }, out, quads);
+      return;
+    }
+  }
+}
+
 template <int W>
 SOFTGL_WIDE void FloatLanes(const FragmentOpsState& st, const FragmentOpsPlan& plan, int o, const ColorBuffer& cb,
                             const TexelQuads<W>& at, const typename V<W>::F color[4], typename V<W>::I go) {
@@ -1021,14 +1097,19 @@ struct PlaneIo {
       std::uint8_t* base = cb.data + Plane(cb.plane) * std::size_t(cb.Bytes());
       F color[4];
       for (int c = 0; c < 4; ++c) color[c] = LoadVec<F>(bb.Color(b, o, c) + l0);
-      if (path == ColourPath::kInteger) {  // lane by lane (IntegerLane), in this lane's sample plane
+      const TexelQuads<W> at{base, colour_at[o], live(), l0};
+      if (path == ColourPath::kInteger) {
+        if (!ctx.state->LogicMode()) {
+          IntegerLanes<W>(*ctx.state, o, cb, at, color, go);
+          continue;
+        }
+        // With a logic operation: lane by lane (IntegerLane), in this lane's sample plane.
         ColorBuffer plane = cb;
         plane.data = base;
         for (int l = 0; l < W; ++l)
           if (go[l] != 0 && ((live() >> (l0 + l)) & 1u)) IntegerLane(*ctx.state, bb, b, o, l0 + l, plane);
         continue;
       }
-      const TexelQuads<W> at{base, colour_at[o], live(), l0};
       if (path == ColourPath::kUnorm8) Unorm8Lanes<W>(ctx.plan->blend[o], cb, at, color, go);
       else FloatLanes<W>(*ctx.state, *ctx.plan, o, cb, at, color, go);
     }

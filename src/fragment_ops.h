@@ -200,7 +200,7 @@ enum class ColourPath : std::uint8_t {
   kNone,     // no buffer, or every channel masked
   kUnorm8,   // RGBA8, RGB8, RG8, R8: the exact 8-bit blend in vectors (Unorm8Blend)
   kFloat,    // decoded to floats, blended and encoded again in vectors: the other formats
-  kInteger,  // the integer formats (R8UI ... RGBA32I): never blended, stored lane by lane (IntegerLane)
+  kInteger,  // the integer formats (R8UI ... RGBA32I): never blended, clamped and packed in vectors
 };
 
 /// What the per-fragment operations resolve once per draw and target.

@@ -2,6 +2,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <bit>
 #include <array>
 #include <atomic>
 #include <memory>
@@ -850,6 +851,17 @@ const TargetFormat kTargetFormats[] = {
     {"RGBA16", detail::TexelLayout::kUnorm16x4},
     {"RG16", detail::TexelLayout::kUnorm16x2},
     {"R16", detail::TexelLayout::kUnorm16x1},
+    {"RGBA8UI", detail::IntegerLayoutFor(4, 1, false)},
+    {"RGBA8I", detail::IntegerLayoutFor(4, 1, true)},
+    {"RG8UI", detail::IntegerLayoutFor(2, 1, false)},
+    {"R8I", detail::IntegerLayoutFor(1, 1, true)},
+    {"RGBA16UI", detail::IntegerLayoutFor(4, 2, false)},
+    {"RG16I", detail::IntegerLayoutFor(2, 2, true)},
+    {"R16UI", detail::IntegerLayoutFor(1, 2, false)},
+    {"RGBA32I", detail::IntegerLayoutFor(4, 4, true)},
+    {"RG32UI", detail::IntegerLayoutFor(2, 4, false)},
+    {"R32UI", detail::IntegerLayoutFor(1, 4, false)},
+    {"RGB10_A2UI", detail::TexelLayout::kUint1010102},
 };
 
 // Buffers of a render target for the comparison below: colour buffers of the given formats, float depth and 8-bit
@@ -981,10 +993,16 @@ TEST_CASE("every colour format, draw buffer set and depth-stencil state: the blo
       }
       blocks->live[b] = next() % 3 == 0 ? 0xFFFFu : next() & 0xFFFFu;
       blocks->live[b] &= (1u << (4 * quads)) - 1u;
+      // Colours as floats, or (a third of the blocks) as integers' bits, as integer outputs give them: small
+      // numbers of either sign, or any 32 bits.
+      const bool integers = next() % 3 == 0;
       for (int l = 0; l < softgl::kLanes; ++l) {
         blocks->frag_coord[b][2][l] = value(-0.1f, 1.1f);
         for (int o = 0; o < kMaxColorOutputs; ++o)
-          for (int c = 0; c < 4; ++c) blocks->out[b].color[o][c].v.Set(l, value(-0.3f, 1.3f));
+          for (int c = 0; c < 4; ++c) {
+            const std::uint32_t bits = next() % 2 ? next() % 2048 - 1024 : (next() << 8) ^ next();
+            blocks->out[b].color[o][c].v.Set(l, integers ? std::bit_cast<float>(bits) : value(-0.3f, 1.3f));
+          }
       }
     }
     TargetBuffers b(a);
