@@ -601,6 +601,32 @@ SOFTGL_INLINE void GatherTexels(const TextureLevel& lv, typename V<W>::I index, 
   using U = typename V<W>::U;
   using D = typename V<W>::D;
   const TexelLayout layout = lv.layout;
+  if (const detail::IntegerLayout k = detail::IntegerLayoutOf(layout); k.channels) {
+    // An integer texel's channels sign- or zero-extended to 32 bits and carried as the floats' bits (IntegerTexel's
+    // values), the channels it lacks (0, 0, 0, 1). (Lanes outside the mask read at texel 0; a 64-bit read at the
+    // last texel stays in the level's padding.)
+    using I = typename V<W>::I;
+    const std::uint8_t* base = lv.data.data();
+    const I at = (All ? index : index & mask) * lv.bytes;
+    if (lv.bytes == 16) return Rgba32Texels<W>(base, at, out);
+    const D lo = LoadPairs<W>(base, at, std::make_index_sequence<W>());
+    for (int c = 0; c < 4; ++c) {
+      I v;
+      if (c >= k.channels) {
+        v = I{} + (c == 3 ? 1 : 0);
+      } else if (k.packed) {  // RGB10_A2UI
+        v = I(__builtin_convertvector((lo >> (10 * c)) & (c < 3 ? 0x3FFu : 0x3u), U));
+      } else {
+        const int bits = 8 * k.bytes;
+        const U raw = __builtin_convertvector(lo >> (bits * c), U);
+        if (bits == 32) v = I(raw);
+        else if (k.is_signed) v = I(raw << (32 - bits)) >> (32 - bits);
+        else v = I(raw & ((1u << bits) - 1u));
+      }
+      std::memcpy(&out[c], &v, sizeof v);
+    }
+    return;
+  }
   if (IsWordLayout(layout)) {  // (lanes outside the mask read at texel 0)
     const typename V<W>::I at = (All ? index : index & mask) * lv.bytes;
     WordTexels<W>(layout, __builtin_convertvector(LoadPairs<W>(lv.data.data(), at, std::make_index_sequence<W>()), U),
@@ -1701,7 +1727,7 @@ SOFTGL_INLINE void FetchTexelLanes(const TextureView& v, bool multisample, const
         }
         default: GatherTexels<W, false>(lv, index, in, t); break;
       }
-      for (int c = 0; c < 4; ++c) r[c] = in != 0 ? t[c] / v.scale : r[c];
+      for (int c = 0; c < 4; ++c) r[c] = in != 0 ? (v.integer ? t[c] : t[c] / v.scale) : r[c];  // (bits kept)
     }
     for (int c = 0; c < 4; ++c) std::memcpy(&out[c][l0], &r[c], sizeof r[c]);
   }
@@ -1726,18 +1752,6 @@ void FetchBlock(const TextureView* v, bool multisample, const int* x, const int*
   if (!v) {
     for (int c = 0; c < 4; ++c)
       for (int l = 0; l < 16; ++l) out[c][l] = 0.0f;
-    return;
-  }
-  if (v->integer) {  // integer texels one lane at a time, copied as they are (TexelOf)
-    const auto& levels = v->texture->levels[0];
-    for (int l = 0; l < 16; ++l) {
-      const bool level_ok = multisample ? true : unsigned(k[l]) < unsigned(detail::kMaxLevels - v->base);
-      const TextureLevel& lv = levels[multisample ? 0 : (level_ok ? v->base + k[l] : 0)];
-      const glm::vec4 t = !level_ok ? glm::vec4(0.0f)
-                          : multisample ? TexelOf(*v, lv, glm::ivec2(x[l], y[l]), k[l], lv.samples)
-                                        : TexelOf(*v, lv, glm::ivec2(x[l], y[l]), 0, 1);
-      for (int c = 0; c < 4; ++c) out[c][l] = t[c];
-    }
     return;
   }
   static const FetchTexelLanesFn fetch = SOFTGL_CHOOSE(FetchTexelLanes, );

@@ -4,11 +4,13 @@
 // integer and non-integer data.
 #include <catch2/catch.hpp>
 
+#include <bit>
 #include <cstdint>
 #include <cstring>
 #include <vector>
 
 #include "helpers.h"
+#include "texture.h"
 
 using namespace softgl;
 using namespace testing;
@@ -309,4 +311,51 @@ TEST_CASE("integer textures: buffer textures of integer formats, and a rendered 
   px = t.Read(UNSIGNED_INT);
   for (const glm::ivec4& p : px) CHECK(p == glm::ivec4(40000, 0, 0, 1));
   CHECK(t.gl.GetError() == NO_ERROR);
+}
+
+TEST_CASE("integer textures: texelFetch in vectors gives the one-lane fetch's integers, every format", "[texture][integer]") {
+  // Texels of pseudo-random bytes (every bit pattern of each channel), two levels, fetched 16 lanes at a time at
+  // places inside and outside each level, against Textures::Fetch's texel by texel.
+  const Enum formats[] = {R8I,     R8UI,     R16I,     R16UI,   R32I,    R32UI,    RG8I,    RG8UI,   RG16I,
+                          RG16UI,  RG32I,    RG32UI,   RGB8I,   RGB8UI,  RGB16I,   RGB16UI, RGB32I,  RGB32UI,
+                          RGBA8I,  RGBA8UI,  RGBA16I,  RGBA16UI, RGBA32I, RGBA32UI, RGB10_A2UI};
+  std::uint32_t seed = 9;
+  const auto next = [&] {
+    seed = seed * 1664525u + 1013904223u;
+    return seed >> 8;
+  };
+  for (const Enum format : formats) {
+    CAPTURE(format);
+    detail::TextureObject t;
+    t.target = TEXTURE_2D;
+    for (int level = 0; level < 2; ++level) {
+      detail::TextureLevel& lv = t.levels[0][level];
+      lv.Allocate(format, 7 >> level, 5 >> level);
+      for (std::size_t i = 0; i + detail::TextureLevel::kGatherPad < lv.data.size(); ++i) lv.data[i] = std::uint8_t(next());
+    }
+    t.params.min_filter = NEAREST_MIPMAP_NEAREST;
+    t.params.mag_filter = NEAREST;
+    t.params.max_level = 1;
+    const detail::TextureView view = detail::MakeView(t);
+    REQUIRE(view.complete);
+    Textures tx;
+    tx.unit_2d[0] = &view;
+    for (int round = 0; round < 8; ++round) {
+      int x[16], y[16], level[16];
+      for (int l = 0; l < 16; ++l) {
+        x[l] = int(next() % 10) - 1;
+        y[l] = int(next() % 8) - 1;
+        level[l] = int(next() % 4) - 1;
+      }
+      float out[4][16];
+      tx.FetchLanes(0, x, y, level, out);
+      for (int l = 0; l < 16; ++l) {
+        const glm::vec4 one = tx.Fetch(0, glm::ivec2(x[l], y[l]), level[l]);
+        for (int c = 0; c < 4; ++c) {
+          CAPTURE(l, c, x[l], y[l], level[l]);
+          CHECK(std::bit_cast<std::uint32_t>(out[c][l]) == std::bit_cast<std::uint32_t>(one[c]));
+        }
+      }
+    }
+  }
 }
