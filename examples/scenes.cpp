@@ -632,19 +632,25 @@ struct PickedLitShader : softgl::Shader<PickedLitShader, FieldVaryings> {
   }
 };
 
-// The id buffer (unit 0, R32UI) in false colours: texelFetch of the integer texture, each id hashed to a colour,
-// 0 (nothing) black. Drawn over a viewport the size of the id buffer scaled down: the texel at the fragment's
-// place times `scale`.
-struct IdColorsShader : softgl::Shader<IdColorsShader, PickVaryings> {
+// A pass over the screen triangle (MakeScreenTriangle) that reads whole buffers, maybe scaled down: the texel of
+// a fragment is (its place - origin) * scale.
+template <class Derived>
+struct ScreenPass : softgl::Shader<Derived, PickVaryings> {
   glm::vec2 origin{0.0f};
   float scale = 1.0f;
   void Vertex(const VertexLanes& in, VertexLanesOut<PickVaryings>& out) const {
     out.position = vec4(in.attrib[0].x, in.attrib[0].y, 0.0f, 1.0f);
   }
+  softgl::Int TexelX(const FragmentLanes<PickVaryings>& in) const { return softgl::Int((in.frag_coord.x - origin.x) * scale); }
+  softgl::Int TexelY(const FragmentLanes<PickVaryings>& in) const { return softgl::Int((in.frag_coord.y - origin.y) * scale); }
+};
+
+// The id buffer (unit 0, R32UI) in false colours: texelFetch of the integer texture, each id hashed to a colour,
+// 0 (nothing) black.
+struct IdColorsShader : ScreenPass<IdColorsShader> {
   void Fragment(const FragmentLanes<PickVaryings>& in, FragmentLanesOut& out) const {
     using softgl::Int;
-    const Int x((in.frag_coord.x - origin.x) * scale), y((in.frag_coord.y - origin.y) * scale);
-    const Int id = in.ITexelFetch(0, x, y).x;
+    const Int id = in.ITexelFetch(0, TexelX(in), TexelY(in)).x;
     const Int h = id * Int(int(2654435761u));
     const vec3 c(Float((h >> 8) & 255), Float((h >> 16) & 255), Float((h >> 24) & 255));
     out.color[0] = vec4(select(id == 0, vec3(0.0f), c / 255.0f * 0.8f + 0.2f), 1.0f);
@@ -757,6 +763,169 @@ softgl::Image Picking(int width, int height) {
   gl.BindTexture(softgl::TEXTURE_2D, ids);
   MakeScreenTriangle(gl);
   gl.DrawArrays(softgl::TRIANGLES, 0, 3);
+  return gl.ReadPixels();
+}
+
+namespace {
+
+// The G-buffer pass: three outputs, albedo (RGBA8), the world normal (RGBA16F, w 1 where something was drawn) and
+// the world position (RGBA16F).
+struct GBufferVaryings {
+  vec3 normal, color, world;
+};
+struct GBufferShader : softgl::Shader<GBufferShader, GBufferVaryings> {
+  glm::mat4 mvp{1.0f}, model{1.0f};
+  void Vertex(const VertexLanes& in, VertexLanesOut<GBufferVaryings>& out) const {
+    const vec4 p = vec4(vec3(in.attrib[0]), 1.0f);
+    out.position = mvp * p;
+    out.varyings.normal = glm::mat3(model) * vec3(in.attrib[1]);
+    out.varyings.color = vec3(in.attrib[2]);
+    out.varyings.world = vec3(model * p);
+  }
+  void Fragment(const FragmentLanes<GBufferVaryings>& in, FragmentLanesOut& out) const {
+    out.color[0] = vec4(in.varyings.color, 1.0f);
+    out.color[1] = vec4(normalize(in.varyings.normal), 1.0f);
+    out.color[2] = vec4(in.varyings.world, 1.0f);
+  }
+};
+
+// A decal on the floor: stripes written into the albedo target alone (ColorMaski keeps the others); its fragment
+// stage writes all three outputs, as any shader of the pass would.
+struct StripesShader : softgl::Shader<StripesShader, GBufferVaryings> {
+  glm::mat4 mvp{1.0f};
+  void Vertex(const VertexLanes& in, VertexLanesOut<GBufferVaryings>& out) const {
+    out.position = mvp * vec4(vec3(in.attrib[0]), 1.0f);
+    out.varyings.world = vec3(in.attrib[0]);
+  }
+  void Fragment(const FragmentLanes<GBufferVaryings>& in, FragmentLanesOut& out) const {
+    const softgl::Bool dark = (softgl::Int(floor((in.varyings.world.x + in.varyings.world.z) * 2.0f)) & 1) != 0;
+    out.color[0] = select(dark, vec4(glm::vec4(0.16f, 0.17f, 0.2f, 1.0f)), vec4(glm::vec4(0.85f, 0.8f, 0.7f, 1.0f)));
+    out.color[1] = vec4(0.0f);  // (masked: the floor's normal and position stay)
+    out.color[2] = vec4(0.0f);
+  }
+};
+
+// The lighting pass: per pixel, the G-buffer's three texels (texelFetch of units 0, 1 and 2) lit by kLights point
+// lights; where no surface was drawn (normal w 0) the albedo target's clear colour shows. `inset` draws one target
+// scaled down instead (0 none, 1 albedo, 2 normal, 3 position).
+struct DeferredLightShader : ScreenPass<DeferredLightShader> {
+  static constexpr int kLights = 6;
+  glm::vec3 light_pos[kLights], light_color[kLights];
+  int inset = 0;
+  void Fragment(const FragmentLanes<PickVaryings>& in, FragmentLanesOut& out) const {
+    const softgl::Int x = TexelX(in), y = TexelY(in);
+    const vec4 albedo = in.TexelFetch(0, x, y), normal = in.TexelFetch(1, x, y), world = in.TexelFetch(2, x, y);
+    if (inset == 1) return void(out.color[0] = albedo);
+    if (inset == 2) return void(out.color[0] = vec4(vec3(normal) * 0.5f + 0.5f, 1.0f));
+    if (inset == 3) return void(out.color[0] = vec4(fract(vec3(world) * 0.5f), 1.0f));
+    const vec3 n = vec3(normal), p = vec3(world);
+    vec3 light = vec3(0.08f);
+    for (int k = 0; k < kLights; ++k) {
+      const vec3 to = vec3(light_pos[k]) - p;
+      const Float d2 = dot(to, to);
+      const Float lambert = max(dot(n, to * inversesqrt(d2)), 0.0f);
+      light = light + vec3(light_color[k]) * (lambert * 2.5f / (1.0f + d2));
+    }
+    out.color[0] = vec4(select(normal.w > 0.5f, vec3(albedo) * light, vec3(albedo)), 1.0f);
+  }
+};
+
+}  // namespace
+
+softgl::Image Deferred(int width, int height) {
+  softgl::Context gl(width, height);
+  // The G-buffer: albedo RGBA8, normal and position RGBA16F, a depth buffer; each target cleared to its own value.
+  const softgl::Enum formats[3] = {softgl::RGBA8, softgl::RGBA16F, softgl::RGBA16F};
+  std::uint32_t targets[3];
+  const std::uint32_t fbo = gl.GenFramebuffer(), depth = gl.GenRenderbuffer();
+  gl.BindFramebuffer(softgl::FRAMEBUFFER, fbo);
+  for (int k = 0; k < 3; ++k) {
+    targets[k] = gl.GenTexture();
+    gl.BindTexture(softgl::TEXTURE_2D, targets[k]);
+    gl.TexImage2D(softgl::TEXTURE_2D, 0, formats[k], width, height, 0, softgl::RGBA, softgl::FLOAT, nullptr);
+    gl.TexParameteri(softgl::TEXTURE_2D, softgl::TEXTURE_MIN_FILTER, softgl::NEAREST);  // one level: complete
+    gl.FramebufferTexture2D(softgl::FRAMEBUFFER, softgl::COLOR_ATTACHMENT0 + softgl::Enum(k), softgl::TEXTURE_2D,
+                            targets[k], 0);
+  }
+  gl.BindRenderbuffer(softgl::RENDERBUFFER, depth);
+  gl.RenderbufferStorage(softgl::RENDERBUFFER, softgl::DEPTH_COMPONENT24, width, height);
+  gl.FramebufferRenderbuffer(softgl::FRAMEBUFFER, softgl::DEPTH_ATTACHMENT, softgl::RENDERBUFFER, depth);
+  const softgl::Enum draw_buffers[3] = {softgl::COLOR_ATTACHMENT0, softgl::COLOR_ATTACHMENT0 + 1,
+                                        softgl::COLOR_ATTACHMENT0 + 2};
+  gl.DrawBuffers(3, draw_buffers);
+  const float sky[4] = {0.1f, 0.12f, 0.2f, 1.0f}, no_normal[4] = {0, 0, 0, 0}, far_away[4] = {0, -100, 0, 1};
+  const float far_depth = 1.0f;
+  gl.ClearBufferfv(softgl::COLOR, 0, sky);
+  gl.ClearBufferfv(softgl::COLOR, 1, no_normal);
+  gl.ClearBufferfv(softgl::COLOR, 2, far_away);
+  gl.ClearBufferfv(softgl::DEPTH, 0, &far_depth);
+
+  // The geometry pass: a floor and a ring of objects.
+  const glm::mat4 vp = Projection(width, height, 50.0f, 0.5f, 60.0f) *
+                       glm::lookAt(glm::vec3(0.0f, 5.0f, 9.0f), glm::vec3(0.0f, 0.3f, 0.0f), glm::vec3(0, 1, 0));
+  const std::uint8_t grey[4] = {170, 170, 170, 255};
+  const Mesh meshes[4] = {MakeQuad(7.0f, grey), MakeCube(), MakeTorus(40, 20, 0.55f, 0.22f), MakeSphere(32, 16, 0.6f)};
+  std::uint32_t vaos[4];
+  for (int m = 0; m < 4; ++m) vaos[m] = UploadLitMesh(gl, meshes[m]);
+  gl.Enable(softgl::DEPTH_TEST);
+  GBufferShader geometry;
+  gl.UseProgram(geometry);
+  const auto draw = [&](int m, const glm::mat4& model) {
+    geometry.model = model;
+    geometry.mvp = vp * model;
+    gl.BindVertexArray(vaos[m]);
+    DrawMesh(gl, meshes[m]);
+  };
+  draw(0, glm::mat4(1.0f));
+  for (int i = 0; i < 9; ++i) {
+    const float a = 6.2831853f * float(i) / 9.0f;
+    const glm::vec3 at(3.6f * std::cos(a), 0.62f, 3.6f * std::sin(a) - 0.5f);
+    draw(1 + i % 3, glm::rotate(glm::translate(glm::mat4(1.0f), at), a * 1.7f, glm::vec3(0.2f, 1.0f, 0.3f)));
+  }
+  // The decal: stripes into the albedo target only, over the floor's middle.
+  gl.ColorMaski(1, false, false, false, false);
+  gl.ColorMaski(2, false, false, false, false);
+  gl.DepthMask(false);
+  gl.DepthFunc(softgl::LEQUAL);
+  StripesShader stripes;
+  stripes.mvp = vp * glm::scale(glm::mat4(1.0f), glm::vec3(0.25f, 1.0f, 0.25f));
+  gl.UseProgram(stripes);
+  gl.BindVertexArray(vaos[0]);
+  DrawMesh(gl, meshes[0]);
+  gl.ColorMaski(1, true, true, true, true);
+  gl.ColorMaski(2, true, true, true, true);
+  gl.DepthMask(true);
+
+  // The lighting pass into the context's framebuffer, then the three targets as insets along the bottom.
+  gl.BindFramebuffer(softgl::FRAMEBUFFER, 0);
+  gl.Disable(softgl::DEPTH_TEST);
+  for (int k = 0; k < 3; ++k) {
+    gl.ActiveTexture(softgl::TEXTURE0 + softgl::Enum(k));
+    gl.BindTexture(softgl::TEXTURE_2D, targets[k]);
+  }
+  DeferredLightShader light;
+  for (int k = 0; k < DeferredLightShader::kLights; ++k) {
+    const float a = 6.2831853f * (float(k) + 0.5f) / float(DeferredLightShader::kLights);
+    light.light_pos[k] = glm::vec3(2.2f * std::cos(a), 1.2f, 2.2f * std::sin(a) - 0.5f);
+    light.light_color[k] = glm::vec3(0.6f + 0.4f * std::cos(a), 0.6f + 0.4f * std::cos(a + 2.1f),
+                                     0.6f + 0.4f * std::cos(a + 4.2f));
+  }
+  gl.UseProgram(light);
+  MakeScreenTriangle(gl);
+  gl.DrawArrays(softgl::TRIANGLES, 0, 3);
+  const int iw = width / 5, ih = height / 5;
+  gl.Enable(softgl::SCISSOR_TEST);
+  for (int k = 0; k < 3; ++k) {
+    const int ix = 8 + k * (iw + 8), iy = 8;
+    gl.Scissor(ix - 2, iy - 2, iw + 4, ih + 4);  // a frame
+    gl.ClearColor(0.6f, 0.6f, 0.65f, 1.0f);
+    gl.Clear(softgl::COLOR_BUFFER_BIT);
+    gl.Scissor(ix, iy, iw, ih);
+    light.inset = k + 1;
+    light.origin = glm::vec2(float(ix), float(iy));
+    light.scale = 5.0f;
+    gl.DrawArrays(softgl::TRIANGLES, 0, 3);
+  }
   return gl.ReadPixels();
 }
 

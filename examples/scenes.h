@@ -105,6 +105,11 @@ softgl::Image BufferTextures(int width, int height);
 /// in false colours (texelFetch of the integer texture) in the top right corner.
 softgl::Image Picking(int width, int height);
 
+/// Deferred shading: a G-buffer of three targets (albedo RGBA8, normal and position RGBA16F), each cleared to its
+/// own value by ClearBufferfv; a decal pass writes the albedo target alone (ColorMaski masks the others); a lighting
+/// pass reads the three by texelFetch and lights every pixel by six point lights. Along the bottom, the targets.
+softgl::Image Deferred(int width, int height);
+
 /// A fountain of 1,500 particles drawn as point sprites in one draw: gl_PointSize by distance, a soft disc shaped
 /// from gl_PointCoord, additive blending.
 softgl::Image Particles(int width, int height);

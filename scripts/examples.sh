@@ -6,7 +6,7 @@ cd "$(dirname "$0")/.."
 scripts/deps.sh assimp-testmodels
 
 examples=(hello triangle cube wireframe clipped stencil_outline mirror transparency decals textured_cube compressed_textures srgb
-  multisample sample_shading small_formats shadow_map cascaded_shadows post_process environment_map instancing buffer_texture picking particles feedback_particles geometry_stage models tour)
+  multisample sample_shading small_formats shadow_map cascaded_shadows post_process environment_map instancing buffer_texture picking deferred particles feedback_particles geometry_stage models tour)
 
 scripts/configure.sh build/release -DCMAKE_BUILD_TYPE=Release
 cmake --build build/release -j "$(nproc)" --target "${examples[@]}"

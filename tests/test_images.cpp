@@ -110,6 +110,10 @@ TEST_CASE("image: picking", "[image]") {
   CompareWithGolden("picking", scenes::Picking(800, 500));
 }
 
+TEST_CASE("image: deferred", "[image]") {
+  CompareWithGolden("deferred", scenes::Deferred(800, 500));
+}
+
 TEST_CASE("image: particles", "[image]") { CompareWithGolden("particles", scenes::Particles(640, 400)); }
 TEST_CASE("image: feedback_particles", "[image]") {
   CompareWithGolden("feedback_particles", scenes::FeedbackParticles(640, 400));

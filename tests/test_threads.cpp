@@ -67,6 +67,7 @@ TEST_CASE("every example scene is the same image with 1, 2, 3 and 8 threads", "[
       {"compressed_textures", [] { return scenes::CompressedTextures(400, 240); }},
       {"buffer_texture", [] { return scenes::BufferTextures(320, 200); }},
       {"picking", [] { return scenes::Picking(320, 200); }},
+      {"deferred", [] { return scenes::Deferred(320, 200); }},
       {"post_process", [] { return scenes::PostProcess(320, 240); }},
       {"environment_map", [] { return scenes::EnvironmentMap(320, 240); }},
       {"model_duck_phong", [&] { return scenes::ModelView(models + "/Collada/duck.dae", "phong", 320, 240, 30, 20); }},
