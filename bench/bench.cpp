@@ -286,13 +286,17 @@ struct MatrixShader : Shader<MatrixShader, UvVaryings> {
 // `outputs` draw buffers (each output a little different).
 struct FormatShader : Shader<FormatShader, UvVaryings> {
   int outputs = 1;
+  bool integer = false;  // integer outputs (uvec4 / ivec4) for integer buffers: (uv * 1000, o, 7)
   void Vertex(const VertexLanes& in, VertexLanesOut<UvVaryings>& out) const {
     out.position = vec4(vec3(in.attrib[0]), 1.0f);
     out.varyings.uv = vec2(in.attrib[1]);
   }
   void Fragment(const FragmentLanes<UvVaryings>& in, FragmentLanesOut& out) const {
     const vec2 t = in.varyings.uv;
-    for (int o = 0; o < outputs; ++o) out.color[o] = vec4(t.x, t.y, Float(0.5f) + 0.1f * float(o), Float(0.35f));
+    for (int o = 0; o < outputs; ++o) {
+      if (integer) out.SetColorI(o, softgl::ivec4(Int(t.x * 1000.0f), Int(t.y * 1000.0f), o, 7));
+      else out.color[o] = vec4(t.x, t.y, Float(0.5f) + 0.1f * float(o), Float(0.35f));
+    }
   }
 };
 
@@ -514,12 +518,18 @@ const char* kArrayFs = "#version 330 core\nin vec2 uv; uniform sampler2DArray te
                        "void main(){ o = texture(tex, vec3(uv, uv.x * 0.1)); }";
 const char* k3DFs = "#version 330 core\nin vec2 uv; uniform sampler3D tex; out vec4 o;"
                     "void main(){ o = texture(tex, vec3(uv, uv.x * 0.1)); }";
-// FormatShader in GLSL, for 1 to 4 outputs.
-std::string FormatFs(int outputs) {
+// FormatShader in GLSL, for 1 to 4 outputs; `integer` 1 for uvec4 outputs, 2 for ivec4.
+std::string FormatFs(int outputs, int integer = 0) {
+  const std::string type = integer == 1 ? "uvec4" : integer == 2 ? "ivec4" : "vec4";
   std::string fs = "#version 330 core\nin vec2 uv;";
-  for (int o = 0; o < outputs; ++o) fs += " layout(location=" + std::to_string(o) + ") out vec4 o" + std::to_string(o) + ";";
+  for (int o = 0; o < outputs; ++o)
+    fs += " layout(location=" + std::to_string(o) + ") out " + type + " o" + std::to_string(o) + ";";
   fs += " void main(){";
-  for (int o = 0; o < outputs; ++o) fs += " o" + std::to_string(o) + " = vec4(uv, 0.5 + 0.1 * " + std::to_string(o) + ".0, 0.35);";
+  for (int o = 0; o < outputs; ++o) {
+    const std::string n = std::to_string(o);
+    if (integer) fs += " o" + n + " = " + type + "(ivec4(ivec2(uv * 1000.0), " + n + ", 7));";
+    else fs += " o" + n + " = vec4(uv, 0.5 + 0.1 * " + n + ".0, 0.35);";
+  }
   return fs + " }";
 }
 // MatrixShader's lookups in GLSL, by mode.
@@ -1016,6 +1026,7 @@ int main(int argc, char** argv) {
     struct FormatRow {
       const char* name;
       std::vector<Enum> colour;
+      int integer = 0;  // 1: unsigned integer buffers, 2: signed ones (FormatShader's integer outputs)
     };
     const FormatRow rows[] = {{"RGBA8", {sg::RGBA8}},
                               {"SRGB8_ALPHA8", {sg::SRGB8_ALPHA8}},
@@ -1032,7 +1043,11 @@ int main(int argc, char** argv) {
                               {"RGB10_A2", {sg::RGB10_A2}},
                               {"RG8", {sg::RG8}},
                               {"R8", {sg::R8}},
-                              {"G-buffer RGBA8 + RGBA16F x 2 + R32F", {sg::RGBA8, sg::RGBA16F, sg::RGBA16F, sg::R32F}}};
+                              {"G-buffer RGBA8 + RGBA16F x 2 + R32F", {sg::RGBA8, sg::RGBA16F, sg::RGBA16F, sg::R32F}},
+                              {"R32UI", {sg::R32UI}, 1},
+                              {"RG16UI", {sg::RG16UI}, 1},
+                              {"RGBA8UI", {sg::RGBA8UI}, 1},
+                              {"RGBA32I", {sg::RGBA32I}, 2}};
     const std::pair<const char*, Enum> depths[] = {{"DEPTH24_STENCIL8", sg::DEPTH24_STENCIL8},
                                                    {"DEPTH_COMPONENT16", sg::DEPTH_COMPONENT16},
                                                    {"DEPTH_COMPONENT32F", sg::DEPTH_COMPONENT32F},
@@ -1056,6 +1071,7 @@ int main(int argc, char** argv) {
           const double sg_ms = [&] {
             wide::FormatShader shader;
             shader.outputs = n;
+            shader.integer = row.integer != 0;
             softgl::Context gl(1280, 720, g_options);
             softgl_setup(gl, quads);
             gl.BindFramebuffer(sg::FRAMEBUFFER, gl.GenFramebuffer());
@@ -1111,7 +1127,7 @@ int main(int argc, char** argv) {
               glEnable(GL_BLEND);
               glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
             }
-            const std::string fs = FormatFs(n);
+            const std::string fs = FormatFs(n, row.integer);
             Program(kTexVs, fs.c_str());
             return TimeGl(frames, frame);
           });
