@@ -8,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include <catch2/catch.hpp>
 #include <softgl/softgl.h>
 
 #include "types.h"
@@ -15,6 +16,19 @@
 namespace testing {
 
 struct NoVaryings {};
+
+/// Checks that a texture target without levels or sampling state (a multisample or buffer texture) refuses them
+/// with INVALID_ENUM: TexParameteri of a filter, GenerateMipmap, and defining a level by TexImage2D or (`layered`)
+/// TexImage3D.
+inline void CheckRefusesLevelsAndSampling(softgl::Context& gl, softgl::Enum target, bool layered = false) {
+  gl.TexParameteri(target, softgl::TEXTURE_MIN_FILTER, softgl::NEAREST);
+  CHECK(gl.GetError() == softgl::INVALID_ENUM);
+  gl.GenerateMipmap(target);
+  CHECK(gl.GetError() == softgl::INVALID_ENUM);
+  if (layered) gl.TexImage3D(target, 0, softgl::RGBA8, 8, 8, 2, 0, softgl::RGBA, softgl::UNSIGNED_BYTE, nullptr);
+  else gl.TexImage2D(target, 0, softgl::RGBA8, 8, 8, 0, softgl::RGBA, softgl::UNSIGNED_BYTE, nullptr);
+  CHECK(gl.GetError() == softgl::INVALID_ENUM);
+}
 
 /// Passes attribute 0 through as the clip-space position and writes a constant colour.
 struct SolidShader : softgl::Shader<SolidShader, NoVaryings> {

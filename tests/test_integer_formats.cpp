@@ -18,8 +18,7 @@ using namespace testing;
 namespace {
 
 constexpr int kW = 8, kH = 4;
-
-struct NoVary {};
+using NoVary = NoVaryings;
 
 // A full-screen pass writing one integer output: the value `value` everywhere (`kind` 0), texture(isampler2D) of
 // unit 0 at the pixel's centre scaled by `scale` (1), or texelFetch(isampler2D, (x, y), 0) (2), or
@@ -70,22 +69,25 @@ TEST_CASE("integer textures: uploads clamp to the format's range, read-backs to 
   const std::uint32_t ui[4] = {300, 5, 0xFFFFFFFFu, 7};
   const std::int32_t si[4] = {-200, 100, -5, 1000000};
   std::uint32_t out[8];
-  std::int32_t sout[4];
-  gl.TexImage2D(TEXTURE_2D, 0, R8UI, 4, 1, 0, RED_INTEGER, UNSIGNED_INT, ui);
-  gl.GetTexImage(TEXTURE_2D, 0, RED_INTEGER, UNSIGNED_INT, out);
-  CHECK((out[0] == 255 && out[1] == 5 && out[2] == 255 && out[3] == 7));
-  gl.TexImage2D(TEXTURE_2D, 0, R8UI, 4, 1, 0, RED_INTEGER, INT, si);
-  gl.GetTexImage(TEXTURE_2D, 0, RED_INTEGER, UNSIGNED_INT, out);
-  CHECK((out[0] == 0 && out[1] == 100 && out[2] == 0 && out[3] == 255));
-  gl.TexImage2D(TEXTURE_2D, 0, R8I, 4, 1, 0, RED_INTEGER, INT, si);
-  gl.GetTexImage(TEXTURE_2D, 0, RED_INTEGER, INT, sout);
-  CHECK((sout[0] == -128 && sout[1] == 100 && sout[2] == -5 && sout[3] == 127));
-  gl.TexImage2D(TEXTURE_2D, 0, R8I, 4, 1, 0, RED_INTEGER, UNSIGNED_INT, ui);
-  gl.GetTexImage(TEXTURE_2D, 0, RED_INTEGER, INT, sout);
-  CHECK((sout[0] == 127 && sout[1] == 5 && sout[2] == 127 && sout[3] == 7));
-  gl.TexImage2D(TEXTURE_2D, 0, R32I, 4, 1, 0, RED_INTEGER, UNSIGNED_INT, ui);
-  gl.GetTexImage(TEXTURE_2D, 0, RED_INTEGER, INT, sout);
-  CHECK((sout[0] == 300 && sout[1] == 5 && sout[2] == 2147483647 && sout[3] == 7));
+  // Four texels of a red format from unsigned or signed ints, read back as the format's own sign.
+  const struct {
+    Enum format;
+    bool from_signed;
+    std::int64_t want[4];
+  } clamps[] = {{R8UI, false, {255, 5, 255, 7}},
+                {R8UI, true, {0, 100, 0, 255}},
+                {R8I, true, {-128, 100, -5, 127}},
+                {R8I, false, {127, 5, 127, 7}},
+                {R32I, false, {300, 5, 2147483647, 7}}};
+  for (const auto& c : clamps) {
+    CAPTURE(c.format, c.from_signed);
+    gl.TexImage2D(TEXTURE_2D, 0, c.format, 4, 1, 0, RED_INTEGER, c.from_signed ? INT : UNSIGNED_INT,
+                  c.from_signed ? static_cast<const void*>(si) : static_cast<const void*>(ui));
+    const bool is_signed = c.format != R8UI;
+    gl.GetTexImage(TEXTURE_2D, 0, RED_INTEGER, is_signed ? INT : UNSIGNED_INT, out);
+    for (int i = 0; i < 4; ++i)
+      CHECK((is_signed ? std::int64_t(std::int32_t(out[i])) : std::int64_t(out[i])) == c.want[i]);
+  }
   std::uint8_t ub[4];
   std::int8_t sb[4];
   gl.GetTexImage(TEXTURE_2D, 0, RED_INTEGER, UNSIGNED_BYTE, ub);

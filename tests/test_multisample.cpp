@@ -677,12 +677,7 @@ TEST_CASE("TEXTURE_2D_MULTISAMPLE and texelFetch reject bad input with OpenGL's 
   CHECK(gl.GetError() == INVALID_OPERATION);
   gl.TexImage2DMultisample(TEXTURE_2D_MULTISAMPLE, 2, RGBA8, 8, 8, false);
   CHECK(gl.GetError() == NO_ERROR);
-  gl.TexParameteri(TEXTURE_2D_MULTISAMPLE, TEXTURE_MIN_FILTER, NEAREST);
-  CHECK(gl.GetError() == INVALID_ENUM);
-  gl.GenerateMipmap(TEXTURE_2D_MULTISAMPLE);
-  CHECK(gl.GetError() == INVALID_ENUM);
-  gl.TexImage2D(TEXTURE_2D_MULTISAMPLE, 0, RGBA8, 8, 8, 0, RGBA, UNSIGNED_BYTE, nullptr);
-  CHECK(gl.GetError() == INVALID_ENUM);
+  CheckRefusesLevelsAndSampling(gl, TEXTURE_2D_MULTISAMPLE);
   gl.BindFramebuffer(FRAMEBUFFER, fbo);
   gl.FramebufferTexture2D(FRAMEBUFFER, COLOR_ATTACHMENT0, TEXTURE_2D_MULTISAMPLE, tex, 1);
   CHECK(gl.GetError() == INVALID_VALUE);
@@ -865,12 +860,7 @@ TEST_CASE("TEXTURE_2D_MULTISAMPLE_ARRAY rejects bad input with OpenGL's errors",
   gl.GetTexLevelParameteriv(TEXTURE_2D_MULTISAMPLE_ARRAY, 1, TEXTURE_WIDTH, &v);
   CHECK(gl.GetError() == INVALID_VALUE);
   CHECK(v == -7);
-  gl.TexParameteri(TEXTURE_2D_MULTISAMPLE_ARRAY, TEXTURE_MIN_FILTER, NEAREST);
-  CHECK(gl.GetError() == INVALID_ENUM);
-  gl.GenerateMipmap(TEXTURE_2D_MULTISAMPLE_ARRAY);
-  CHECK(gl.GetError() == INVALID_ENUM);
-  gl.TexImage3D(TEXTURE_2D_MULTISAMPLE_ARRAY, 0, RGBA8, 8, 8, 2, 0, RGBA, UNSIGNED_BYTE, nullptr);
-  CHECK(gl.GetError() == INVALID_ENUM);
+  CheckRefusesLevelsAndSampling(gl, TEXTURE_2D_MULTISAMPLE_ARRAY, true);
   gl.BindFramebuffer(FRAMEBUFFER, fbo);
   const Enum none = NONE;  // (depth and stencil alone)
   gl.DrawBuffers(1, &none);

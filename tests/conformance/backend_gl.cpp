@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <cstring>
+#include <string>
 
 #include "backend.h"
 
@@ -53,7 +54,8 @@ void main() {
 )";
 
 // DrawIntegerTarget's programs: integer outputs from a flat attribute 2, and an integer texture's texel shown as
-// bytes. %s is "u" (unsigned) or "i" (signed).
+// bytes. The fragment stages are written once and compiled unsigned or signed: IntegerFragment(true) defines I as
+// "u" (uvec4, usampler2D, the mask 255u), IntegerFragment(false) as "i".
 constexpr const char* kIntegerOutputVertexShader = R"(#version 330 core
 layout(location = 0) in vec4 a_pos;
 layout(location = 2) in vec4 a_extra;
@@ -63,34 +65,25 @@ void main() {
   v_value = a_extra;
 }
 )";
-constexpr const char* kUnsignedOutputFragment = R"(#version 330 core
+constexpr const char* kIntegerOutputFragment = R"(
 flat in vec4 v_value;
-out uvec4 o_color;
-void main() { o_color = uvec4(v_value); }
+out IVEC4 o_color;
+void main() { o_color = IVEC4(v_value); }
 )";
-constexpr const char* kSignedOutputFragment = R"(#version 330 core
-flat in vec4 v_value;
-out ivec4 o_color;
-void main() { o_color = ivec4(v_value); }
-)";
-constexpr const char* kUnsignedTextureFragment = R"(#version 330 core
+constexpr const char* kIntegerTextureFragment = R"(
 in vec4 v_extra;
-uniform usampler2D u_int;
+uniform ISAMPLER2D u_int;
 out vec4 o_color;
 void main() {
-  uvec4 t = texture(u_int, v_extra.xy);
-  o_color = vec4(vec3(uvec3(t.r, t.g, t.b + 64u * t.a) & 255u) / 255.0, 1.0);
+  IVEC4 t = texture(u_int, v_extra.xy);
+  o_color = vec4(vec3(IVEC3(t.r, t.g, t.b + IVEC4(64).x * t.a) & IVEC4(255).x) / 255.0, 1.0);
 }
 )";
-constexpr const char* kSignedTextureFragment = R"(#version 330 core
-in vec4 v_extra;
-uniform isampler2D u_int;
-out vec4 o_color;
-void main() {
-  ivec4 t = texture(u_int, v_extra.xy);
-  o_color = vec4(vec3(ivec3(t.r, t.g, t.b + 64 * t.a) & 255) / 255.0, 1.0);
+std::string IntegerFragment(bool is_unsigned, const char* body) {
+  const std::string i = is_unsigned ? "u" : "i";
+  return "#version 330 core\n#define IVEC4 " + i + "vec4\n#define IVEC3 " + i + "vec3\n#define ISAMPLER2D " + i +
+         "sampler2D\n" + body;
 }
-)";
 
 constexpr const char* kFeedbackVertexShader = "#version 330 core" VERTEX_DECLARATIONS R"(
 void main() {
@@ -419,10 +412,11 @@ class GlBackend final : public Backend {
     }
     instanced_ = Link(kColorFragment, error, kInstancedVertexShader);
     integer_ = Link(kColorFragment, error, kIntegerVertexShader);
-    integer_output_[0] = Link(kUnsignedOutputFragment, error, kIntegerOutputVertexShader);
-    integer_output_[1] = Link(kSignedOutputFragment, error, kIntegerOutputVertexShader);
-    integer_texture_[0] = Link(kUnsignedTextureFragment, error);
-    integer_texture_[1] = Link(kSignedTextureFragment, error);
+    for (int is_signed = 0; is_signed < 2; ++is_signed) {
+      integer_output_[is_signed] =
+          Link(IntegerFragment(!is_signed, kIntegerOutputFragment).c_str(), error, kIntegerOutputVertexShader);
+      integer_texture_[is_signed] = Link(IntegerFragment(!is_signed, kIntegerTextureFragment).c_str(), error);
+    }
     glUseProgram(programs_[4]);
     glUniform1i(glGetUniformLocation(programs_[4], "u_cube"), 1);
     glUseProgram(programs_[5]);
