@@ -21,7 +21,8 @@
 //   --cpu-time 1       softgl's mean wall and process CPU time per timed frame to stderr, and how busy its threads
 //                      were (CPU / (wall x threads)); with --threads N > 1 for the one-thread run too: where N
 //                      threads spend more CPU time than one on the same frames, each thread ran slower
-//   --matrix 1         the sampler matrix instead of the scenes: every target x wrap mode x filter x format (below);
+//   --matrix 1         the sampler matrix instead of the scenes: every target x wrap mode x filter x format (below,
+//                      integer formats NEAREST only);
 //                      --scene TEXT then picks its rows ("2D 256^2, RGBA8, NEAREST"), --softgl-only 1 its ms
 //   --formats 1        the colour format matrix instead: every colour format (and a G-buffer of four) x opaque or
 //                      blended x depth format (below); --scene and --softgl-only as for --matrix
@@ -263,15 +264,28 @@ struct PlaneShader : Shader<PlaneShader, UvVaryings> {
 
 // The sampler matrix's lookups on PerspectiveQuad's (u, v): a 2D texture (mode 0), a cube map at (u - 1/2, 1/2,
 // v - 4) (1: several faces), a 2D array at (u, v, u + 1) (2: layers 0 to 3), a 3D texture at (u, v, u / 2) (3), a
-// 2D shadow map at (u, v) with reference v / 8 (4).
+// 2D shadow map at (u, v) with reference v / 8 (4). With `integer` the texture is an unsigned integer one (usampler*),
+// its integers over 255 the colour.
 struct MatrixShader : Shader<MatrixShader, UvVaryings> {
   int mode = 0;
+  bool integer = false;
   void Vertex(const VertexLanes& in, VertexLanesOut<UvVaryings>& out) const {
     out.position = in.attrib[0];
     out.varyings.uv = vec2(in.attrib[1]);
   }
   void Fragment(const FragmentLanes<UvVaryings>& in, FragmentLanesOut& out) const {
     const vec2 t = in.varyings.uv;
+    if (integer) {
+      ivec4 k;
+      switch (mode) {
+        case 0: k = in.ITexture(0, t); break;
+        case 1: k = in.ITextureCube(0, vec3(t.x - 0.5f, Float(0.5f), t.y - 4.0f)); break;
+        case 2: k = in.ITextureArray(0, vec3(t.x, t.y, t.x + 1.0f)); break;
+        default: k = in.ITexture3D(0, vec3(t.x, t.y, t.x * 0.5f)); break;
+      }
+      out.color[0] = vec4(Float(k.x), Float(k.y), Float(k.z), Float(k.w)) * (1.0f / 255.0f);
+      return;
+    }
     switch (mode) {
       case 0: out.color[0] = in.Texture(0, t); break;
       case 1: out.color[0] = in.TextureCube(0, vec3(t.x - 0.5f, Float(0.5f), t.y - 4.0f)); break;
@@ -543,6 +557,15 @@ const char* const kMatrixFs[5] = {
     "void main(){ o = texture(tex, vec3(uv, uv.x * 0.5)); }",
     "#version 330 core\nin vec2 uv; uniform sampler2DShadow tex; out vec4 o;"
     "void main(){ o = vec4(vec3(texture(tex, vec3(uv, uv.y * 0.125))), 1.0); }"};
+// Their integer forms (modes 0 to 3), for unsigned integer textures.
+const char* const kMatrixIntegerFs[4] = {
+    "#version 330 core\nin vec2 uv; uniform usampler2D tex; out vec4 o; void main(){ o = vec4(texture(tex, uv)) / 255.0; }",
+    "#version 330 core\nin vec2 uv; uniform usamplerCube tex; out vec4 o;"
+    "void main(){ o = vec4(texture(tex, vec3(uv.x - 0.5, 0.5, uv.y - 4.0))) / 255.0; }",
+    "#version 330 core\nin vec2 uv; uniform usampler2DArray tex; out vec4 o;"
+    "void main(){ o = vec4(texture(tex, vec3(uv, uv.x + 1.0))) / 255.0; }",
+    "#version 330 core\nin vec2 uv; uniform usampler3D tex; out vec4 o;"
+    "void main(){ o = vec4(texture(tex, vec3(uv, uv.x * 0.5))) / 255.0; }"};
 const char* kShadowFs = "#version 330 core\nin vec2 uv; uniform sampler2DShadow tex; out vec4 o;"
                         "void main(){ o = vec4(vec3(texture(tex, vec3(uv, uv.x) / 40.0)), 1.0); }";
 const char* kPhongVs =
@@ -880,7 +903,8 @@ int main(int argc, char** argv) {
   // --matrix 1: the sampler matrix. Each cell one full-screen draw (PerspectiveQuad, 1280 x 720) that samples once
   // per fragment, timed for softgl and for llvmpipe in the same run. Targets: a 256^2 2D texture, a 1000 x 600 one,
   // a cube map of 256^2 faces, a 2D array of four 256^2 layers, a 64^3 3D texture (each from PatternImage, uploaded
-  // as RGBA bytes and converted to the cell's format), and a 2048^2 DEPTH_COMPONENT32F shadow map compared with
+  // as RGBA bytes and converted to the cell's format; RGBA8UI and RGBA32UI take them as integers, NEAREST only),
+  // and a 2048^2 DEPTH_COMPONENT32F shadow map compared with
   // LEQUAL (its own format; NEAREST and bilinear only). Filters: NEAREST (NEAREST / NEAREST), bilinear (LINEAR /
   // LINEAR), trilinear (LINEAR_MIPMAP_LINEAR / LINEAR), and trilinear with 16x anisotropy. Prints softgl's time
   // over llvmpipe's per cell, and in brackets softgl's time over its own in the first cell (2D 256^2, RGBA8,
@@ -901,7 +925,8 @@ int main(int argc, char** argv) {
                                     {"3D 64^3", 3, sg::TEXTURE_3D, 64, 64, 64},
                                     {"shadow 2048^2", 4, sg::TEXTURE_2D, 2048, 2048, 1}};
     const std::pair<const char*, Enum> formats[] = {
-        {"RGBA8", sg::RGBA8}, {"SRGB8_ALPHA8", sg::SRGB8_ALPHA8}, {"RGBA16F", sg::RGBA16F}, {"RGBA32F", sg::RGBA32F}};
+        {"RGBA8", sg::RGBA8},     {"SRGB8_ALPHA8", sg::SRGB8_ALPHA8}, {"RGBA16F", sg::RGBA16F},
+        {"RGBA32F", sg::RGBA32F}, {"RGBA8UI", sg::RGBA8UI},           {"RGBA32UI", sg::RGBA32UI}};
     struct MatrixFilter {
       const char* name;
       Enum min, mag;
@@ -916,6 +941,7 @@ int main(int argc, char** argv) {
     const char* const png[5] = {"bench_matrix_2d.png", "bench_matrix_cube.png", "bench_matrix_array.png",
                                 "bench_matrix_3d.png", "bench_matrix_shadow.png"};  // (--png: each target's last cell)
     const float border[4] = {0.2f, 0.4f, 0.6f, 1.0f};
+    const std::uint32_t border_integer[4] = {51, 102, 153, 255};  // (an integer texture's, the same colour)
     std::vector<float> depths;
     for (int y = 0; y < 2048; ++y)
       for (int x = 0; x < 2048; ++x)
@@ -936,8 +962,12 @@ int main(int argc, char** argv) {
       }
       for (const auto& [format_name, format] : formats) {
         if (shadow && format != sg::RGBA8) continue;  // (one row set: DEPTH_COMPONENT32F)
+        // (An integer texture: NEAREST only, its other filters leave it incomplete; its texels the bytes as integers.)
+        const bool integer = format == sg::RGBA8UI || format == sg::RGBA32UI;
+        const Enum client = integer ? sg::RGBA_INTEGER : sg::RGBA;
         for (const MatrixFilter& mf : filters) {
           if (shadow && (mf.min != sg::NEAREST && mf.min != sg::LINEAR)) continue;
+          if (integer && mf.min != sg::NEAREST) continue;
           const std::string row = std::string(mt.name) + ", " + (shadow ? "DEPTH_COMPONENT32F" : format_name) + ", " +
                                   mf.name;  // (--scene TEXT: the rows whose name contains TEXT)
           if (row.find(only) == std::string::npos) continue;
@@ -948,6 +978,7 @@ int main(int argc, char** argv) {
             const double sg_ms = [&] {
               wide::MatrixShader shader;
               shader.mode = mt.mode;
+              shader.integer = integer;
               softgl::Context gl(1280, 720, g_options);
               softgl_setup(gl, quad);
               gl.BindTexture(mt.target, gl.GenTexture());
@@ -958,19 +989,20 @@ int main(int argc, char** argv) {
                 gl.TexParameteri(mt.target, sg::TEXTURE_COMPARE_FUNC, sg::LEQUAL);
               } else if (mt.mode == 1) {
                 for (int f = 0; f < 6; ++f)
-                  gl.TexImage2D(sg::TEXTURE_CUBE_MAP_POSITIVE_X + Enum(f), 0, format, mt.w, mt.h, 0, sg::RGBA,
+                  gl.TexImage2D(sg::TEXTURE_CUBE_MAP_POSITIVE_X + Enum(f), 0, format, mt.w, mt.h, 0, client,
                                 sg::UNSIGNED_BYTE, pixels.data());
               } else if (mt.d > 1) {
-                gl.TexImage3D(mt.target, 0, format, mt.w, mt.h, mt.d, 0, sg::RGBA, sg::UNSIGNED_BYTE, pixels.data());
+                gl.TexImage3D(mt.target, 0, format, mt.w, mt.h, mt.d, 0, client, sg::UNSIGNED_BYTE, pixels.data());
               } else {
-                gl.TexImage2D(mt.target, 0, format, mt.w, mt.h, 0, sg::RGBA, sg::UNSIGNED_BYTE, pixels.data());
+                gl.TexImage2D(mt.target, 0, format, mt.w, mt.h, 0, client, sg::UNSIGNED_BYTE, pixels.data());
               }
               if (mipmapped) gl.GenerateMipmap(mt.target);
               gl.TexParameteri(mt.target, sg::TEXTURE_MIN_FILTER, mf.min);
               gl.TexParameteri(mt.target, sg::TEXTURE_MAG_FILTER, mf.mag);
               for (const Enum pname : {sg::TEXTURE_WRAP_S, sg::TEXTURE_WRAP_T, sg::TEXTURE_WRAP_R})
                 gl.TexParameteri(mt.target, pname, wrap);
-              gl.TexParameterfv(mt.target, sg::TEXTURE_BORDER_COLOR, border);
+              if (integer) gl.TexParameterIuiv(mt.target, sg::TEXTURE_BORDER_COLOR, border_integer);
+              else gl.TexParameterfv(mt.target, sg::TEXTURE_BORDER_COLOR, border);
               gl.TexParameterf(mt.target, sg::TEXTURE_MAX_ANISOTROPY, mf.anisotropy);
               gl.UseProgram(shader);
               return TimeSoftgl(frames, gl, FrameSpec{false, false, 6, png[mt.mode]});
@@ -988,21 +1020,22 @@ int main(int argc, char** argv) {
                 glTexParameteri(t, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
               } else if (mt.mode == 1) {
                 for (int f = 0; f < 6; ++f)
-                  glTexImage2D(GLenum(GL_TEXTURE_CUBE_MAP_POSITIVE_X + f), 0, GLint(format), mt.w, mt.h, 0, GL_RGBA,
-                               GL_UNSIGNED_BYTE, pixels.data());
+                  glTexImage2D(GLenum(GL_TEXTURE_CUBE_MAP_POSITIVE_X + f), 0, GLint(format), mt.w, mt.h, 0,
+                               GLenum(client), GL_UNSIGNED_BYTE, pixels.data());
               } else if (mt.d > 1) {
-                glTexImage3D(t, 0, GLint(format), mt.w, mt.h, mt.d, 0, GL_RGBA, GL_UNSIGNED_BYTE, pixels.data());
+                glTexImage3D(t, 0, GLint(format), mt.w, mt.h, mt.d, 0, GLenum(client), GL_UNSIGNED_BYTE, pixels.data());
               } else {
-                glTexImage2D(t, 0, GLint(format), mt.w, mt.h, 0, GL_RGBA, GL_UNSIGNED_BYTE, pixels.data());
+                glTexImage2D(t, 0, GLint(format), mt.w, mt.h, 0, GLenum(client), GL_UNSIGNED_BYTE, pixels.data());
               }
               if (mipmapped) glGenerateMipmap(t);
               glTexParameteri(t, GL_TEXTURE_MIN_FILTER, GLint(mf.min));
               glTexParameteri(t, GL_TEXTURE_MAG_FILTER, GLint(mf.mag));
               for (const GLenum pname : {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T, GL_TEXTURE_WRAP_R})
                 glTexParameteri(t, pname, GLint(wrap));
-              glTexParameterfv(t, GL_TEXTURE_BORDER_COLOR, border);
+              if (integer) glTexParameterIuiv(t, GL_TEXTURE_BORDER_COLOR, border_integer);
+              else glTexParameterfv(t, GL_TEXTURE_BORDER_COLOR, border);
               if (mf.anisotropy > 1.0f) glTexParameterf(t, GL_TEXTURE_MAX_ANISOTROPY_EXT, mf.anisotropy);
-              Program(kPlaneVs, kMatrixFs[mt.mode]);
+              Program(kPlaneVs, integer ? kMatrixIntegerFs[mt.mode] : kMatrixFs[mt.mode]);
               return TimeGl(frames, FrameSpec{false, false, 6, png[mt.mode]});
             });
             PrintCell(softgl_only, sg_ms, gl_ms, first_ms);

@@ -913,7 +913,7 @@ TextureView MakeView(const TextureObject& texture, const SamplerParams* sampler)
     if (p.min_filter == LINEAR) view.fast = TextureView::Fast::kRepeatLinear;
     if (p.min_filter == LINEAR_MIPMAP_LINEAR) view.fast = TextureView::Fast::kRepeatTrilinear;
   }
-  view.wide = !view.integer && (texture.target == TEXTURE_2D || texture.target == TEXTURE_CUBE_MAP || texture.target == TEXTURE_2D_ARRAY ||
+  view.wide = (texture.target == TEXTURE_2D || texture.target == TEXTURE_CUBE_MAP || texture.target == TEXTURE_2D_ARRAY ||
               texture.target == TEXTURE_3D || texture.target == TEXTURE_1D || texture.target == TEXTURE_1D_ARRAY);
   return view;
 }

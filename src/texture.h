@@ -365,8 +365,8 @@ struct TextureView {
   enum class Fast : unsigned char { kNone, kRepeatLinear, kRepeatTrilinear };
   Fast fast = Fast::kNone;
   // Whether the vector path (SampleLanes, SampleLodLanes, SampleShadowLanes, and the cube map, 2D array and 3D
-  // forms) samples the view: a 2D, cube map, 2D array or 3D texture, any layout, filters, wrap modes, size and
-  // anisotropy.
+  // forms) samples the view: a 2D, cube map, 2D array or 3D texture, any layout (an integer one's texels copied as
+  // bits), filters, wrap modes, size and anisotropy.
   bool wide = false;
   // A buffer texture: its store's texels (null: no buffer) and how many the draw may read.
   const std::uint8_t* buffer = nullptr;

@@ -441,6 +441,16 @@ SOFTGL_INLINE typename V<W>::F TexelCoordLanes(typename V<W>::F x, float size) {
   return u < -1e9f ? F{} - 1e9f : u;
 }
 
+// x in every lane, its bits as they are (F{} + x would quiet a signalling NaN: an integer border colour's bits
+// may be one).
+template <int W>
+SOFTGL_INLINE typename V<W>::F SplatBits(float x) {
+  const typename V<W>::U bits = typename V<W>::U{} + std::bit_cast<std::uint32_t>(x);
+  typename V<W>::F f;
+  std::memcpy(&f, &bits, sizeof f);
+  return f;
+}
+
 // What the filters of one 2D view need: its wrap modes, whether one is CLAMP_TO_BORDER, and the border colour.
 // (And, for a 2D array, each lane's layer: `layered` set, `layer` the layer.)
 template <int W>
@@ -961,7 +971,7 @@ SOFTGL_INLINE void SampleTexelLanes(const TextureView& view, Lookup kind, const 
   wr.s = p.wrap_s;
   wr.t = p.wrap_t;
   wr.border = p.wrap_s == CLAMP_TO_BORDER || p.wrap_t == CLAMP_TO_BORDER;
-  for (int ch = 0; ch < 4; ++ch) wr.border_raw[ch] = F{} + view.border_raw[ch];
+  for (int ch = 0; ch < 4; ++ch) wr.border_raw[ch] = SplatBits<W>(view.border_raw[ch]);
   // 0: no mipmaps (NEAREST, LINEAR); 1: *_MIPMAP_NEAREST; 2: *_MIPMAP_LINEAR.
   const int mip = p.min_filter == NEAREST || p.min_filter == LINEAR                             ? 0
                   : p.min_filter == NEAREST_MIPMAP_NEAREST || p.min_filter == LINEAR_MIPMAP_NEAREST ? 1
@@ -1179,7 +1189,7 @@ SOFTGL_INLINE void SampleTexelLanes(const TextureView& view, Lookup kind, const 
     for (int ch = 0; ch < 4; ++ch) {
       F v = first[ch];
       if (probes > 1) v = n == 1 ? v : sum[ch] / __builtin_convertvector(n, F);
-      v = v / view.scale;
+      if (!view.integer) v = v / view.scale;  // (an integer texture's bits as they are: Unscaled)
       std::memcpy(&out[ch][l0], &v, sizeof v);
     }
     // Lanes the vector path does not take: one lane at a time.
@@ -1228,7 +1238,7 @@ SOFTGL_INLINE void SampleBaseLanes(const TextureView& view, Lookup kind, const T
   wr.s = p.wrap_s;
   wr.t = p.wrap_t;
   wr.border = p.wrap_s == CLAMP_TO_BORDER || p.wrap_t == CLAMP_TO_BORDER;
-  for (int ch = 0; ch < 4; ++ch) wr.border_raw[ch] = F{} + view.border_raw[ch];
+  for (int ch = 0; ch < 4; ++ch) wr.border_raw[ch] = SplatBits<W>(view.border_raw[ch]);
   const bool cube = kind == Lookup::kCube || kind == Lookup::kCubeLod;
   const bool volume = kind == Lookup::k3D || kind == Lookup::k3DLod;
   const bool array = kind == Lookup::kArray || kind == Lookup::kArrayLod || kind == Lookup::kArrayShadow;
@@ -1293,8 +1303,8 @@ SOFTGL_INLINE void SampleBaseLanes(const TextureView& view, Lookup kind, const T
       if (volume)
         for (int ch = 0; ch < 4; ++ch) r[ch] = linear ? (1.0f - cw) * slice[0][ch] + cw * slice[1][ch] : slice[0][ch];
     }
-    for (int ch = 0; ch < 4; ++ch) {
-      const F v = r[ch] / view.scale;
+    for (int ch = 0; ch < 4; ++ch) {  // (an integer texture's bits as they are: Unscaled)
+      const F v = view.integer ? r[ch] : r[ch] / view.scale;
       std::memcpy(&out[ch][l0], &v, sizeof v);
     }
   }

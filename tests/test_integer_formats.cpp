@@ -4,9 +4,11 @@
 // integer and non-integer data.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <bit>
 #include <cstdint>
 #include <cstring>
+#include <limits>
 #include <vector>
 
 #include "helpers.h"
@@ -360,4 +362,140 @@ TEST_CASE("integer textures: texelFetch in vectors gives the one-lane fetch's in
       }
     }
   }
+}
+
+TEST_CASE("integer textures: texture() and textureLod() in vectors give the one-lane lookup's integers, every format, "
+          "target, wrap mode and filter",
+          "[texture][integer]") {
+  // Texels of pseudo-random bytes (NaN and denormal patterns among them) in a full mip chain; NEAREST and
+  // NEAREST_MIPMAP_NEAREST (the filters that leave an integer texture complete) under each wrap mode, an integer
+  // border colour that is a NaN pattern; 2D textures, 2D arrays, cube maps and 3D textures, 16 lanes a call
+  // (lanes on several levels, faces and layers, NaN, huge and zero coordinates and derivatives) against the
+  // one-lane calls, compared as bits.
+  const Enum formats[] = {R8I,     R8UI,     R16I,     R16UI,   R32I,    R32UI,    RG8I,    RG8UI,   RG16I,
+                          RG16UI,  RG32I,    RG32UI,   RGB8I,   RGB8UI,  RGB16I,   RGB16UI, RGB32I,  RGB32UI,
+                          RGBA8I,  RGBA8UI,  RGBA16I,  RGBA16UI, RGBA32I, RGBA32UI, RGB10_A2UI};
+  const Enum targets[] = {TEXTURE_2D, TEXTURE_2D_ARRAY, TEXTURE_CUBE_MAP, TEXTURE_3D};
+  const Enum wraps[] = {REPEAT, MIRRORED_REPEAT, CLAMP_TO_EDGE, CLAMP_TO_BORDER};
+  std::uint32_t seed = 21;
+  const auto next = [&] {
+    seed = seed * 1664525u + 1013904223u;
+    return seed >> 8;
+  };
+  const auto uniform = [&](float lo, float hi) { return lo + (hi - lo) * float(next() & 0xFFFF) / 65535.0f; };
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  int compared = 0, differing = 0;
+  for (const Enum format : formats) {
+    for (const Enum target : targets) {
+      for (int state = 0; state < 8; ++state) {
+        const Enum wrap = wraps[state % 4];
+        const Enum min_filter = state < 4 ? NEAREST : NEAREST_MIPMAP_NEAREST;
+        detail::TextureObject t;
+        t.target = target;
+        const int w = target == TEXTURE_CUBE_MAP ? 4 : 7, h = target == TEXTURE_CUBE_MAP ? 4 : 5;
+        const int d = target == TEXTURE_2D_ARRAY ? 3 : target == TEXTURE_3D ? 6 : 1;
+        int levels = 0;
+        for (int size = std::max({w, h, target == TEXTURE_3D ? d : 1}); size > 0; size >>= 1) ++levels;
+        for (int face = 0; face < t.Faces(); ++face) {
+          for (int level = 0; level < levels; ++level) {
+            detail::TextureLevel& lv = t.levels[face][level];
+            lv.Allocate(format, std::max(1, w >> level), std::max(1, h >> level), 1,
+                        target == TEXTURE_3D ? std::max(1, d >> level) : d);
+            for (std::size_t i = 0; i + detail::TextureLevel::kGatherPad < lv.data.size(); ++i)
+              lv.data[i] = std::uint8_t(next());
+          }
+        }
+        t.params.min_filter = min_filter;
+        t.params.mag_filter = NEAREST;
+        t.params.wrap_s = t.params.wrap_t = t.params.wrap_r = wrap;
+        t.params.border_integer = 1;
+        const std::uint32_t border[4] = {0xFFFFFFFBu, 7u, 0x7F800003u, 0x80000001u};
+        std::memcpy(t.params.border_bits, border, sizeof border);
+        std::memcpy(&t.params.border.x, border, sizeof border);
+        const detail::TextureView view = detail::MakeView(t);
+        REQUIRE(view.complete);
+        REQUIRE(view.wide);
+        Textures tx;
+        if (target == TEXTURE_CUBE_MAP) tx.unit_cube[0] = &view;
+        else if (target == TEXTURE_2D_ARRAY) tx.unit_2d_array[0] = &view;
+        else if (target == TEXTURE_3D) tx.unit_3d[0] = &view;
+        else tx.unit_2d[0] = &view;
+        for (int round = 0; round < 6; ++round) {
+          Textures::Lanes c;
+          float lod[16];
+          for (int k = 0; k < 16; ++k) {
+            c.s[k] = uniform(-2.0f, 2.0f);
+            c.t[k] = uniform(-2.0f, 2.0f);
+            c.r[k] = target == TEXTURE_2D_ARRAY ? uniform(-1.0f, 4.0f) : uniform(-2.0f, 2.0f);
+            const float scale = k % 3 == 0 ? 0.01f : k % 3 == 1 ? 0.2f : 1.5f;  // lanes on several levels
+            c.ds_dx[k] = uniform(-1.0f, 1.0f) * scale;
+            c.dt_dx[k] = uniform(-1.0f, 1.0f) * scale;
+            c.dr_dx[k] = uniform(-1.0f, 1.0f) * scale;
+            c.ds_dy[k] = uniform(-1.0f, 1.0f) * scale;
+            c.dt_dy[k] = uniform(-1.0f, 1.0f) * scale;
+            c.dr_dy[k] = uniform(-1.0f, 1.0f) * scale;
+            lod[k] = uniform(-3.0f, 6.0f);
+          }
+          if (round == 1) {
+            c.s[0] = nan;
+            c.t[1] = 1e30f;
+            c.r[2] = -1e30f;
+            c.r[3] = nan;
+            c.s[4] = c.t[4] = c.r[4] = 0.0f;
+            c.ds_dx[5] = c.dt_dx[5] = c.dr_dx[5] = c.ds_dy[5] = c.dt_dy[5] = c.dr_dy[5] = 0.0f;
+            c.ds_dy[6] = nan;
+            lod[7] = nan;
+            lod[8] = -1e30f;
+            lod[9] = 1e30f;
+          }
+          float out[4][16], out_lod[4][16];
+          if (target == TEXTURE_CUBE_MAP) {
+            tx.SampleCubeLanes(0, c, 0.0f, out);
+            tx.SampleCubeLodLanes(0, c, lod, out_lod);
+          } else if (target == TEXTURE_2D_ARRAY) {
+            tx.SampleArrayLanes(0, c, 0.0f, out);
+            tx.SampleArrayLodLanes(0, c, lod, out_lod);
+          } else if (target == TEXTURE_3D) {
+            tx.Sample3DLanes(0, c, 0.0f, out);
+            tx.Sample3DLodLanes(0, c, lod, out_lod);
+          } else {
+            tx.SampleLanes(0, c, 0.0f, out);
+            tx.SampleLodLanes(0, c, lod, out_lod);
+          }
+          for (int k = 0; k < 16; ++k) {
+            const glm::vec3 p(c.s[k], c.t[k], c.r[k]);
+            const glm::vec3 dx(c.ds_dx[k], c.dt_dx[k], c.dr_dx[k]), dy(c.ds_dy[k], c.dt_dy[k], c.dr_dy[k]);
+            glm::vec4 one, one_lod;
+            if (target == TEXTURE_CUBE_MAP) {
+              one = tx.SampleCube(0, p, dx, dy, 0.0f);
+              one_lod = tx.SampleCubeLod(0, p, lod[k]);
+            } else if (target == TEXTURE_2D_ARRAY) {
+              one = tx.SampleArray(0, p, glm::vec2(dx), glm::vec2(dy), 0.0f);
+              one_lod = tx.SampleArrayLod(0, p, lod[k]);
+            } else if (target == TEXTURE_3D) {
+              one = tx.Sample3D(0, p, dx, dy, 0.0f);
+              one_lod = tx.Sample3DLod(0, p, lod[k]);
+            } else {
+              one = tx.Sample(0, glm::vec2(p), glm::vec2(dx), glm::vec2(dy), 0.0f);
+              one_lod = tx.SampleLod(0, glm::vec2(p), lod[k]);
+            }
+            for (int ch = 0; ch < 4; ++ch) {
+              const bool same = std::bit_cast<std::uint32_t>(out[ch][k]) == std::bit_cast<std::uint32_t>(one[ch]) &&
+                                std::bit_cast<std::uint32_t>(out_lod[ch][k]) ==
+                                    std::bit_cast<std::uint32_t>(one_lod[ch]);
+              if (!same) {
+                CAPTURE(format, target, wrap, min_filter, round, k, ch);
+                CHECK(std::bit_cast<std::uint32_t>(out[ch][k]) == std::bit_cast<std::uint32_t>(one[ch]));
+                CHECK(std::bit_cast<std::uint32_t>(out_lod[ch][k]) == std::bit_cast<std::uint32_t>(one_lod[ch]));
+                ++differing;
+              }
+              compared += 2;
+            }
+          }
+        }
+      }
+    }
+  }
+  CHECK(differing == 0);
+  CHECK(compared == 25 * 4 * 8 * 6 * 16 * 8);
 }
