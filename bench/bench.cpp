@@ -26,6 +26,9 @@
 //                      --scene TEXT then picks its rows ("2D 256^2, RGBA8, NEAREST"), --softgl-only 1 its ms
 //   --formats 1        the colour format matrix instead: every colour format (and a G-buffer of four) x opaque or
 //                      blended x depth format (below); --scene and --softgl-only as for --matrix
+//   --fetch 1          the texel fetch matrix instead: texelFetch from a 2D texture, a buffer texture, a multisample
+//                      texture and a multisample array x texel format (below); --scene and --softgl-only as for
+//                      --matrix
 //   --msaa-pairs N     also the model scene's softgl frame without and with 4x MSAA in turn, N pairs, in two
 //                      contexts side by side: each pair's ratio is taken a few milliseconds apart, so that a shared
 //                      machine's drifts in speed weigh on both frames of a pair alike; prints the median ratio
@@ -55,6 +58,7 @@
 #include <assimp/scene.h>
 #include <assimp/Importer.hpp>
 #include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/packing.hpp>
 #include <softgl/softgl.h>
 
 namespace {
@@ -314,6 +318,33 @@ struct FormatShader : Shader<FormatShader, UvVaryings> {
   }
 };
 
+// The texel fetch matrix's fragments: texelFetch at the pixel from a 2D texture (mode 0), a buffer texture of the
+// screen's pixels row by row (1), a multisample texture, sample (x + y) & 3 (2), or a multisample array, layer x & 1
+// (3). With `integer` the texture is an unsigned integer one, its integers over 255 the colour.
+struct FetchShader : Shader<FetchShader, UvVaryings> {
+  int mode = 0;
+  bool integer = false;
+  void Vertex(const VertexLanes& in, VertexLanesOut<UvVaryings>& out) const {
+    out.position = vec4(vec3(in.attrib[0]), 1.0f);
+    out.varyings.uv = vec2(in.attrib[1]);
+  }
+  void Fragment(const FragmentLanes<UvVaryings>& in, FragmentLanesOut& out) const {
+    const Int x(in.frag_coord.x), y(in.frag_coord.y);
+    vec4 t;
+    switch (mode) {
+      case 0: t = in.TexelFetch(0, x, y); break;
+      case 1: t = in.TexelFetchBuffer(0, x + y * 1280); break;
+      case 2: t = in.TexelFetchMS(0, x, y, (x + y) & 3); break;
+      default: t = in.TexelFetchMSArray(0, x, y, x & 1, (x + y) & 3); break;
+    }
+    if (integer) {
+      const softgl::ivec4 k = softgl::ivec4::FromBits(t);
+      t = vec4(Float(k.x), Float(k.y), Float(k.z), Float(k.w)) * (1.0f / 255.0f);
+    }
+    out.color[0] = t;
+  }
+};
+
 // The ground plane with a cube map (mode 0: direction (u - 20, 1, v - 2): the top face near the camera, the
 // sides towards the horizon), a 2D array (mode 1: (u, v), layer u / 10) or a shadow map (mode 2: (u, v) / 40,
 // reference u / 40).
@@ -566,6 +597,17 @@ const char* const kMatrixIntegerFs[4] = {
     "void main(){ o = vec4(texture(tex, vec3(uv, uv.x + 1.0))) / 255.0; }",
     "#version 330 core\nin vec2 uv; uniform usampler3D tex; out vec4 o;"
     "void main(){ o = vec4(texture(tex, vec3(uv, uv.x * 0.5))) / 255.0; }"};
+// FetchShader's lookups in GLSL, by mode: the sampler's type (with a "u" before it for an integer texture), then
+// the texel it reads.
+const char* const kFetchSamplers[4] = {"sampler2D", "samplerBuffer", "sampler2DMS", "sampler2DMSArray"};
+const char* const kFetchTexels[4] = {"texelFetch(tex, p, 0)", "texelFetch(tex, p.x + p.y * 1280)",
+                                     "texelFetch(tex, p, (p.x + p.y) & 3)",
+                                     "texelFetch(tex, ivec3(p, p.x & 1), (p.x + p.y) & 3)"};
+std::string FetchFs(int mode, bool integer) {
+  return std::string("#version 330 core\nin vec2 uv; uniform ") + (integer ? "u" : "") + kFetchSamplers[mode] +
+         " tex; out vec4 o; void main(){ ivec2 p = ivec2(gl_FragCoord.xy); o = vec4(" + kFetchTexels[mode] + ")" +
+         (integer ? " / 255.0" : "") + "; }";
+}
 const char* kShadowFs = "#version 330 core\nin vec2 uv; uniform sampler2DShadow tex; out vec4 o;"
                         "void main(){ o = vec4(vec3(texture(tex, vec3(uv, uv.x) / 40.0)), 1.0); }";
 const char* kPhongVs =
@@ -807,6 +849,7 @@ int main(int argc, char** argv) {
   int msaa_pairs = 0;        // --msaa-pairs N
   bool matrix = false;       // --matrix 1
   bool format_matrix = false;  // --formats 1
+  bool fetch_matrix = false;   // --fetch 1
   for (int i = 1; i + 1 < argc; i += 2) {
     if (!std::strcmp(argv[i], "--threads")) threads = std::max(1, std::atoi(argv[i + 1]));
     if (!std::strcmp(argv[i], "--frames")) frames = std::max(1, std::atoi(argv[i + 1]));
@@ -823,6 +866,7 @@ int main(int argc, char** argv) {
     if (!std::strcmp(argv[i], "--msaa-pairs")) msaa_pairs = std::max(0, std::atoi(argv[i + 1]));
     if (!std::strcmp(argv[i], "--matrix")) matrix = std::atoi(argv[i + 1]) != 0;
     if (!std::strcmp(argv[i], "--formats")) format_matrix = std::atoi(argv[i + 1]) != 0;
+    if (!std::strcmp(argv[i], "--fetch")) fetch_matrix = std::atoi(argv[i + 1]) != 0;
   }
   const std::string lp_threads = std::to_string(threads == 1 ? 0 : threads);
   setenv("LP_NUM_THREADS", lp_threads.c_str(), 1);
@@ -1168,6 +1212,113 @@ int main(int argc, char** argv) {
         }
         std::printf("\n");
       }
+    return 0;
+  }
+
+  // --fetch 1: the texel fetch matrix. Each cell 4 full-screen quads (FullScreenQuads, no depth test), 1280 x 720,
+  // whose fragments read one texel each (FetchShader): from a 1280 x 720 2D texture (PatternImage's bytes in the
+  // row's format), a buffer texture holding the same texels, a 4-sample multisample texture and a 4-sample
+  // multisample array of two layers (as the API leaves them: zero). Formats RGBA8, RGBA16F, RGBA32F and RGBA8UI
+  // (not multisampled: at most one sample for integer formats). Prints softgl's time over llvmpipe's per cell, and
+  // in brackets softgl's time over its own in the first cell (2D, RGBA8).
+  if (fetch_matrix) {
+    using softgl::Enum;
+    namespace sg = softgl;
+    const std::pair<const char*, Enum> formats[] = {
+        {"RGBA8", sg::RGBA8}, {"RGBA16F", sg::RGBA16F}, {"RGBA32F", sg::RGBA32F}, {"RGBA8UI", sg::RGBA8UI}};
+    const Geometry quads = FullScreenQuads(4, 1.0f);
+    const FrameSpec frame{false, false, 24, "bench_fetch.png"};
+    const std::vector<std::uint8_t> pattern = PatternImage(1280, 720);
+    std::printf("Texel fetch matrix, %d thread(s), %d frames a cell: softgl / llvmpipe (softgl ms / ms of the first "
+                "cell)\n\n| format | 2D | buffer | multisample | multisample array |\n|---|---|---|---|---|\n",
+                threads, frames);
+    double first_ms = 0.0;
+    for (const auto& [format_name, format] : formats) {
+      if (std::string(format_name).find(only) == std::string::npos) continue;
+      const bool integer = format == sg::RGBA8UI;
+      // The buffer texture's store: the pattern's texels in the format (halves, floats, or the bytes).
+      std::vector<std::uint8_t> store;
+      for (const std::uint8_t b : pattern) {
+        if (format == sg::RGBA16F) {
+          const std::uint16_t h = glm::packHalf1x16(float(b) / 255.0f);
+          store.insert(store.end(), {std::uint8_t(h & 0xFF), std::uint8_t(h >> 8)});
+        } else if (format == sg::RGBA32F) {
+          const float f = float(b) / 255.0f;
+          std::uint8_t bytes[4];
+          std::memcpy(bytes, &f, 4);
+          store.insert(store.end(), bytes, bytes + 4);
+        } else {
+          store.push_back(b);
+        }
+      }
+      const Enum client = integer ? sg::RGBA_INTEGER : sg::RGBA;
+      std::printf("| %s |", format_name);
+      std::fflush(stdout);
+      for (int mode = 0; mode < 4; ++mode) {
+        if (integer && mode >= 2) {
+          std::printf(" - |");
+          continue;
+        }
+        const double sg_ms = [&] {
+          wide::FetchShader shader;
+          shader.mode = mode;
+          shader.integer = integer;
+          softgl::Context gl(1280, 720, g_options);
+          softgl_setup(gl, quads);
+          const std::uint32_t tex = gl.GenTexture();
+          if (mode == 0) {
+            gl.BindTexture(sg::TEXTURE_2D, tex);
+            gl.TexImage2D(sg::TEXTURE_2D, 0, format, 1280, 720, 0, client, sg::UNSIGNED_BYTE, pattern.data());
+            gl.TexParameteri(sg::TEXTURE_2D, sg::TEXTURE_MIN_FILTER, sg::NEAREST);
+            gl.TexParameteri(sg::TEXTURE_2D, sg::TEXTURE_MAG_FILTER, sg::NEAREST);
+          } else if (mode == 1) {
+            const std::uint32_t buf = gl.GenBuffer();
+            gl.BindBuffer(sg::TEXTURE_BUFFER, buf);
+            gl.BufferData(sg::TEXTURE_BUFFER, std::ptrdiff_t(store.size()), store.data(), sg::STATIC_DRAW);
+            gl.BindTexture(sg::TEXTURE_BUFFER, tex);
+            gl.TexBuffer(sg::TEXTURE_BUFFER, format, buf);
+          } else if (mode == 2) {
+            gl.BindTexture(sg::TEXTURE_2D_MULTISAMPLE, tex);
+            gl.TexImage2DMultisample(sg::TEXTURE_2D_MULTISAMPLE, 4, format, 1280, 720, true);
+          } else {
+            gl.BindTexture(sg::TEXTURE_2D_MULTISAMPLE_ARRAY, tex);
+            gl.TexImage3DMultisample(sg::TEXTURE_2D_MULTISAMPLE_ARRAY, 4, format, 1280, 720, 2, true);
+          }
+          gl.UseProgram(shader);
+          return TimeSoftgl(frames, gl, frame);
+        }();
+        const double gl_ms = softgl_only ? 1.0 : with_osmesa(1280, 720, [&] {
+          gl_setup(quads);
+          GLuint tex;
+          glGenTextures(1, &tex);
+          if (mode == 0) {
+            glBindTexture(GL_TEXTURE_2D, tex);
+            glTexImage2D(GL_TEXTURE_2D, 0, GLint(format), 1280, 720, 0, GLenum(client), GL_UNSIGNED_BYTE,
+                         pattern.data());
+            glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+            glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+          } else if (mode == 1) {
+            GLuint buf;
+            glGenBuffers(1, &buf);
+            glBindBuffer(GL_TEXTURE_BUFFER, buf);
+            glBufferData(GL_TEXTURE_BUFFER, GLsizeiptr(store.size()), store.data(), GL_STATIC_DRAW);
+            glBindTexture(GL_TEXTURE_BUFFER, tex);
+            glTexBuffer(GL_TEXTURE_BUFFER, GLenum(format), buf);
+          } else if (mode == 2) {
+            glBindTexture(GL_TEXTURE_2D_MULTISAMPLE, tex);
+            glTexImage2DMultisample(GL_TEXTURE_2D_MULTISAMPLE, 4, GLenum(format), 1280, 720, GL_TRUE);
+          } else {
+            glBindTexture(GL_TEXTURE_2D_MULTISAMPLE_ARRAY, tex);
+            glTexImage3DMultisample(GL_TEXTURE_2D_MULTISAMPLE_ARRAY, 4, GLenum(format), 1280, 720, 2, GL_TRUE);
+          }
+          const std::string fs = FetchFs(mode, integer);
+          Program(kTexVs, fs.c_str());
+          return TimeGl(frames, frame);
+        });
+        PrintCell(softgl_only, sg_ms, gl_ms, first_ms);
+      }
+      std::printf("\n");
+    }
     return 0;
   }
 

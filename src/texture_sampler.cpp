@@ -604,21 +604,22 @@ __attribute__((target("avx512f"))) inline void Rgba32Texels<16>(const std::uint8
 // as Sampled() gives it; anything in the other lanes. Float layouts (16- and 32-bit), 16-bit fixed point, the
 // packed fixed-point layouts and R11F_G11F_B10F are read with one or two 64-bit loads a lane and converted in vector
 // form; any other layout (the 8-bit ones, which the callers load themselves) with RawTexel, one lane at a time.
+// (The texels at `data`, `bytes` a texel, of `layout`: a level's, or a buffer texture's store, whose reads the
+// caller keeps inside it.)
 template <int W, bool All>
-SOFTGL_INLINE void GatherTexels(const TextureLevel& lv, typename V<W>::I index, typename V<W>::I mask,
-                                typename V<W>::F out[4]) {
+SOFTGL_INLINE void GatherTexels(const std::uint8_t* data, TexelLayout layout, int bytes, typename V<W>::I index,
+                                typename V<W>::I mask, typename V<W>::F out[4]) {
   using F = typename V<W>::F;
   using U = typename V<W>::U;
   using D = typename V<W>::D;
-  const TexelLayout layout = lv.layout;
   if (const detail::IntegerLayout k = detail::IntegerLayoutOf(layout); k.channels) {
     // An integer texel's channels sign- or zero-extended to 32 bits and carried as the floats' bits (IntegerTexel's
     // values), the channels it lacks (0, 0, 0, 1). (Lanes outside the mask read at texel 0; a 64-bit read at the
     // last texel stays in the level's padding.)
     using I = typename V<W>::I;
-    const std::uint8_t* base = lv.data.data();
-    const I at = (All ? index : index & mask) * lv.bytes;
-    if (lv.bytes == 16) return Rgba32Texels<W>(base, at, out);
+    const std::uint8_t* base = data;
+    const I at = (All ? index : index & mask) * bytes;
+    if (bytes == 16) return Rgba32Texels<W>(base, at, out);
     const D lo = LoadPairs<W>(base, at, std::make_index_sequence<W>());
     for (int c = 0; c < 4; ++c) {
       I v;
@@ -638,9 +639,8 @@ SOFTGL_INLINE void GatherTexels(const TextureLevel& lv, typename V<W>::I index, 
     return;
   }
   if (IsWordLayout(layout)) {  // (lanes outside the mask read at texel 0)
-    const typename V<W>::I at = (All ? index : index & mask) * lv.bytes;
-    WordTexels<W>(layout, __builtin_convertvector(LoadPairs<W>(lv.data.data(), at, std::make_index_sequence<W>()), U),
-                  out);
+    const typename V<W>::I at = (All ? index : index & mask) * bytes;
+    WordTexels<W>(layout, __builtin_convertvector(LoadPairs<W>(data, at, std::make_index_sequence<W>()), U), out);
     return;
   }
   const int channels =
@@ -656,8 +656,8 @@ SOFTGL_INLINE void GatherTexels(const TextureLevel& lv, typename V<W>::I index, 
   if (half || single || unorm16) {
     // (A texel's 64-bit read may run past the level's last texel into its padding; lanes outside the mask read at
     // texel 0.)
-    const std::uint8_t* base = lv.data.data();
-    const typename V<W>::I at = (All ? index : index & mask) * lv.bytes;
+    const std::uint8_t* base = data;
+    const typename V<W>::I at = (All ? index : index & mask) * bytes;
     if (channels == 4 && single) return Rgba32Texels<W>(base, at, out);
     const D lo = LoadPairs<W>(base, at, std::make_index_sequence<W>());
     if (channels == 4 && half) return Rgba16fTexels<W>(lo, out);
@@ -682,10 +682,15 @@ SOFTGL_INLINE void GatherTexels(const TextureLevel& lv, typename V<W>::I index, 
   const std::uint32_t lanes = All ? (1u << W) - 1 : detail::MaskToBits<W>(mask, 0);
   for (std::uint32_t bits = lanes; bits != 0; bits &= bits - 1) {
     const int l = __builtin_ctz(bits);
-    const glm::vec4 t = detail::RawTexel(layout, lv.data.data() + std::size_t(at[l]) * std::size_t(lv.bytes));
+    const glm::vec4 t = detail::RawTexel(layout, data + std::size_t(at[l]) * std::size_t(bytes));
     for (int c = 0; c < 4; ++c) v[c][l] = t[c];
   }
   for (int c = 0; c < 4; ++c) out[c] = detail::LoadVec<F>(v[c]);
+}
+template <int W, bool All>
+SOFTGL_INLINE void GatherTexels(const TextureLevel& lv, typename V<W>::I index, typename V<W>::I mask,
+                                typename V<W>::F out[4]) {
+  GatherTexels<W, All>(lv.data.data(), lv.layout, lv.bytes, index, mask, out);
 }
 
 // The first 32 bits of the four texels of each lane's bilinear footprint (bytes a texel, at most 4): rows r0 and r1
@@ -1707,7 +1712,7 @@ SOFTGL_INLINE void FetchTexelLanes(const TextureView& v, bool multisample, const
       pending &= ~on_level;
       const TextureLevel& lv = levels[L];
       if (!lv.Defined()) continue;
-      const int planes = multisample ? lv.samples : 1;
+      const int planes = multisample ? lv.samples * lv.depth : 1;  // (a multisample array's: layer * samples + sample)
       const I plane = multisample ? k : I{};
       // Inside: 0 <= x < width, 0 <= y < height, 0 <= plane < planes (unsigned comparisons, as bits).
       const std::uint32_t inside = detail::MaskToBits<W>(on_level, 0) &
@@ -1824,18 +1829,24 @@ int Textures::SamplesArray(int unit) const {
 
 void Textures::FetchSampleArrayLanes(int unit, const int x[16], const int y[16], const int layer[16],
                                      const int sample[16], float out[4][16]) const {
-  for (int l = 0; l < 16; ++l) {  // (one texel a lane, unfiltered, as the one-lane form reads it)
-    const glm::vec4 t = FetchSampleArray(unit, glm::ivec3(x[l], y[l], layer[l]), sample[l]);
-    for (int c = 0; c < 4; ++c) out[c][l] = t[c];
-  }
+  // Each lane's plane, layer * samples + sample (-1 where either is outside: zero), fetched as a multisample
+  // texture's sample.
+  const TextureView* v = Usable(unit_2d_ms_array, unit);
+  const int layers = v ? v->texture->levels[0][0].depth : 0, samples = v ? v->texture->levels[0][0].samples : 0;
+  alignas(64) int plane[16];
+  for (int l = 0; l < 16; ++l)
+    plane[l] = layer[l] >= 0 && layer[l] < layers && sample[l] >= 0 && sample[l] < samples ? layer[l] * samples + sample[l]
+                                                                                         : -1;
+  FetchBlock(v, true, x, y, plane, out);
 }
 
 namespace {
+constexpr std::uint8_t kZeroTexel[16] = {};
 // Texel `index` of a buffer texture's store, divided by the scale: a texel of zero bytes outside the store.
 glm::vec4 BufferTexel(const TextureView& v, int index) {
-  static constexpr std::uint8_t kZero[16] = {};
   const bool inside = index >= 0 && index < v.buffer_texels;
-  return Unscaled(v, RawTexel(v.layout, inside ? v.buffer + std::size_t(index) * std::size_t(BytesPerTexel(v.layout)) : kZero));
+  return Unscaled(v, RawTexel(v.layout, inside ? v.buffer + std::size_t(index) * std::size_t(BytesPerTexel(v.layout))
+                                               : kZeroTexel));
 }
 }  // namespace
 
@@ -1849,12 +1860,83 @@ int Textures::SizeBuffer(int unit) const {
   return v ? v->buffer_texels : 0;
 }
 
+namespace {
+// ---- Buffer textures' texels for a block of lanes -----------------------------------------------------------------
+//
+// BufferTexel for W lanes at a time: no filtering, no wrapping, a texel of zero bytes outside the store. The texels are read in
+// vector form (GatherTexels; an 8-bit layout's with one load a lane) where a lane's read stays inside the store (a
+// 64-bit read at each texel of under 8 bytes: the store has no padding, so its last few texels), the rest one lane
+// at a time (BufferTexel).
+template <int W>
+SOFTGL_INLINE void FetchBufferTexelLanes(const TextureView& v, const int* indices, float out[4][16]) {
+  using F = typename V<W>::F;
+  using I = typename V<W>::I;
+  using U = typename V<W>::U;
+  const int bytes = BytesPerTexel(v.layout);
+  // The texels whose read stays inside: those of 8 or 16 bytes all, else up to the last 8 bytes' first texel.
+  const int safe = bytes == 8 || bytes == 16                  ? v.buffer_texels
+                   : (bytes == 1 || bytes == 2 || bytes == 4) ? std::max(0, v.buffer_texels - 8 / bytes + 1)
+                                                              : 0;
+  const std::uint8_t* data = v.buffer;
+  const glm::vec4 zero = Unscaled(v, RawTexel(v.layout, kZeroTexel));
+  F outside[4];
+  for (int c = 0; c < 4; ++c) outside[c] = SplatBits<W>(zero[c]);
+  for (int l0 = 0; l0 < 16; l0 += W) {
+    const I index = detail::LoadVec<I>(indices + l0);
+    const I in = U(index) < unsigned(safe);
+    const std::uint32_t in_bits = detail::MaskToBits<W>(in, 0);
+    F t[4] = {};
+    if (in_bits != 0) {
+      const I at = index & in;  // (lanes outside read texel 0, inside when safe > 0)
+      switch (v.layout) {
+        case TexelLayout::kUnorm8x4:
+          Channels<W, 4, false>(__builtin_convertvector(LoadPairs<W>(data, at * 4, std::make_index_sequence<W>()), U), t);
+          break;
+        case TexelLayout::kUnorm8x2:
+          Channels<W, 2, false>(__builtin_convertvector(LoadPairs<W>(data, at * 2, std::make_index_sequence<W>()), U), t);
+          break;
+        case TexelLayout::kUnorm8x1:
+          Channels<W, 1, false>(__builtin_convertvector(LoadPairs<W>(data, at, std::make_index_sequence<W>()), U), t);
+          break;
+        default: GatherTexels<W, false>(data, v.layout, bytes, at, in, t); break;
+      }
+    }
+    for (int c = 0; c < 4; ++c) {
+      const F r = in != 0 ? (v.integer ? t[c] : t[c] / v.scale) : outside[c];  // (bits kept)
+      std::memcpy(&out[c][l0], &r, sizeof r);
+    }
+    // The lanes inside the store past `safe`: one at a time.
+    for (std::uint32_t rest = ~in_bits & ((1u << W) - 1); rest != 0; rest &= rest - 1) {
+      const int lane = l0 + __builtin_ctz(rest);
+      if (indices[lane] < safe || indices[lane] >= v.buffer_texels) continue;  // (outside: the zero texel, as set)
+      const glm::vec4 r = BufferTexel(v, indices[lane]);
+      for (int c = 0; c < 4; ++c) out[c][lane] = r[c];
+    }
+  }
+}
+
+void FetchBufferTexelLanesBase(const TextureView& v, const int* index, float out[4][16]) {
+  FetchBufferTexelLanes<4>(v, index, out);
+}
+#if defined(SOFTGL_HAS_DISPATCH)
+SOFTGL_TARGET_AVX2 void FetchBufferTexelLanesAvx2(const TextureView& v, const int* index, float out[4][16]) {
+  FetchBufferTexelLanes<8>(v, index, out);
+}
+SOFTGL_TARGET_AVX512 void FetchBufferTexelLanesAvx512(const TextureView& v, const int* index, float out[4][16]) {
+  FetchBufferTexelLanes<16>(v, index, out);
+}
+#endif
+}  // namespace
+
 void Textures::FetchBufferLanes(int unit, const int index[16], float out[4][16]) const {
   const TextureView* v = Usable(unit_buffer, unit);
-  for (int l = 0; l < 16; ++l) {  // (no filtering, no wrapping: one texel a lane, decoded as the one-lane form)
-    const glm::vec4 t = v ? BufferTexel(*v, index[l]) : glm::vec4(0.0f);
-    for (int c = 0; c < 4; ++c) out[c][l] = t[c];
+  if (!v) {
+    for (int c = 0; c < 4; ++c)
+      for (int l = 0; l < 16; ++l) out[c][l] = 0.0f;
+    return;
   }
+  static const auto fetch = SOFTGL_CHOOSE(FetchBufferTexelLanes, );
+  fetch(*v, index, out);
 }
 
 glm::ivec2 Textures::Size(int unit, int level) const {

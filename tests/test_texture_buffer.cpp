@@ -3,6 +3,8 @@
 // one, and the state and errors of TexBuffer.
 #include <catch2/catch.hpp>
 
+#include <bit>
+
 #include <cstdint>
 #include <cstring>
 #include <limits>
@@ -293,6 +295,47 @@ TEST_CASE("buffer textures: the wide fetch gives the one-lane fetch's floats in 
     CHECK(tx.FetchBuffer(1, 0) == glm::vec4(0.0f));
     CHECK(tx.FetchBuffer(-5, 0) == glm::vec4(0.0f));
   }
+}
+
+TEST_CASE("buffer textures: the wide fetch keeps integer texels' bits, and reads nothing past a small store",
+          "[texture][buffer][wide]") {
+  // Every integer buffer format over random bytes (NaN patterns among the texels' bits), and stores of 0 to 9
+  // bytes of each format (under a 64-bit read): the wide fetch against the one-lane fetch, as bits.
+  const Enum formats[] = {R8I,   R8UI,   R16I,   R16UI,  R32I,    R32UI,    RG8I,    RG8UI,    RG16I,   RG16UI,
+                          RG32I, RG32UI, RGBA8I, RGBA8UI, RGBA16I, RGBA16UI, RGBA32I, RGBA32UI, R8,      RG16F,
+                          RGBA8, R32F};
+  std::mt19937 rng(7);
+  int compared = 0;
+  for (const Enum format : formats) {
+    for (int size = 0; size <= 10; ++size) {
+      const int bytes = size == 10 ? 997 : size;
+      std::vector<std::uint8_t> data(static_cast<std::size_t>(bytes));
+      for (std::uint8_t& b : data) b = std::uint8_t(rng());
+      detail::TextureObject t;
+      t.target = TEXTURE_BUFFER;
+      t.buffer_format = format;
+      t.buffer_store = std::make_shared<const std::vector<std::uint8_t>>(data);
+      const detail::TextureView view = detail::MakeView(t);
+      Textures tx;
+      tx.unit_buffer[0] = &view;
+      for (int round = 0; round < 8; ++round) {
+        int index[16];
+        for (int l = 0; l < 16; ++l) index[l] = int(rng() % std::uint32_t(view.buffer_texels + 4)) - 2;
+        if (round == 0) index[0] = std::numeric_limits<int>::min(), index[1] = std::numeric_limits<int>::max();
+        float out[4][16];
+        tx.FetchBufferLanes(0, index, out);
+        for (int l = 0; l < 16; ++l) {
+          const glm::vec4 one = tx.FetchBuffer(0, index[l]);
+          for (int c = 0; c < 4; ++c) {
+            CAPTURE(format, bytes, index[l], c);
+            CHECK(std::bit_cast<std::uint32_t>(out[c][l]) == std::bit_cast<std::uint32_t>(one[c]));
+            ++compared;
+          }
+        }
+      }
+    }
+  }
+  CHECK(compared == 22 * 11 * 8 * 64);
 }
 
 TEST_CASE("TexBuffer: state queries and OpenGL's errors", "[texture][buffer][errors]") {

@@ -3,6 +3,7 @@
 // vertex conventions; the wide vertex stage; textures sampled 16 lanes at a time against one at a time.
 #include <catch2/catch.hpp>
 
+#include <bit>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -909,6 +910,57 @@ TEST_CASE("shadow lookups 16 lanes at a time give the floats of one lane at a ti
     }
     CHECK(compared == 100 * 16 * 5);
   }
+}
+
+TEST_CASE("texelFetch of a multisample array 16 lanes at a time gives the floats of one lane at a time",
+          "[wide][texture]") {
+  // FetchSampleArrayLanes (layer * samples + sample, read as a multisample texture's plane) against FetchSampleArray:
+  // layers and samples inside and outside the texture, texels inside and outside, every kind of layout.
+  const Enum formats[] = {RGBA8, SRGB8_ALPHA8, R8, RGBA16F, RGBA32F, R32F, RGB565, RGBA32UI, RG16I, DEPTH_COMPONENT32F};
+  std::mt19937 rng(29);
+  std::uniform_int_distribution<int> coord(-2, 12), which(-2, 6);
+  std::uniform_real_distribution<float> value(0.0f, 1.0f);
+  int compared = 0;
+  for (const Enum format : formats) {
+    detail::TextureObject t;
+    t.target = TEXTURE_2D_MULTISAMPLE_ARRAY;
+    auto& l = t.levels[0][0];
+    l.Allocate(format, 11, 7, 4, 3);
+    for (std::size_t i = 0; i + detail::TextureLevel::kGatherPad < l.data.size(); ++i) l.data[i] = std::uint8_t(rng());
+    if (!detail::IsIntegerLayout(l.layout))  // (random bytes would be NaN floats)
+      for (int j = 0; j < 7 * 4 * 3; ++j)
+        for (int i = 0; i < 11; ++i)
+          detail::StoreTexel(l, i, j, glm::vec4(value(rng), value(rng), value(rng), value(rng)));
+    const detail::TextureView view = detail::MakeView(t);
+    REQUIRE(view.complete);
+    Textures tx;
+    tx.unit_2d_ms_array[0] = &view;
+    for (int round = 0; round < 40; ++round) {
+      int x[16], y[16], layer[16], sample[16];
+      for (int k = 0; k < 16; ++k) {
+        x[k] = coord(rng);
+        y[k] = coord(rng);
+        layer[k] = which(rng) % 4;
+        sample[k] = which(rng);
+      }
+      if (round == 0) {
+        layer[0] = std::numeric_limits<int>::max();
+        sample[1] = std::numeric_limits<int>::min();
+        x[2] = std::numeric_limits<int>::min();
+      }
+      float out[4][16];
+      tx.FetchSampleArrayLanes(0, x, y, layer, sample, out);
+      for (int k = 0; k < 16; ++k) {
+        const glm::vec4 one = tx.FetchSampleArray(0, glm::ivec3(x[k], y[k], layer[k]), sample[k]);
+        for (int c = 0; c < 4; ++c) {
+          CAPTURE(format, k, x[k], y[k], layer[k], sample[k], c);
+          CHECK(std::bit_cast<std::uint32_t>(out[c][k]) == std::bit_cast<std::uint32_t>(one[c]));
+          ++compared;
+        }
+      }
+    }
+  }
+  CHECK(compared == 10 * 40 * 64);
 }
 
 TEST_CASE("texelFetch 16 lanes at a time gives the floats of one lane at a time", "[wide][texture]") {
