@@ -862,9 +862,10 @@ SOFTGL_WIDE void FloatLanesOf(const FragmentOpsState& st, const FragmentOpsPlan&
     at.template Store<std::uint32_t>(go ? as_u(r[0]) : word);
   }
 }
-// Integer colour buffers (ColourPath::kInteger) without a logic operation, the lanes of `go`: each channel's
-// integers (the output's floats' bits) clamped to the channel's range, packed into the texel's 32-bit words, the
-// channels the colour mask keeps taken from the stored texel; what IntegerLane stores lane by lane.
+// Integer colour buffers (ColourPath::kInteger), the lanes of `go`: each channel's integers (the output's floats'
+// bits) clamped to the channel's range, packed into the texel's 32-bit words, combined with the stored words by
+// the logic operation if one is on (bit by bit: on whole words as on each channel's bits), the channels the colour
+// mask keeps taken from the stored texel; what IntegerLane stores lane by lane.
 template <int W>
 SOFTGL_WIDE void IntegerLanes(const FragmentOpsState& st, int o, const ColorBuffer& cb, const TexelQuads<W>& at,
                               const typename V<W>::F color[4], typename V<W>::I go) {
@@ -894,7 +895,9 @@ SOFTGL_WIDE void IntegerLanes(const FragmentOpsState& st, int o, const ColorBuff
     word[shift / 32] |= v << (shift % 32);
     if (!mask[c]) keep[shift / 32] |= ones << (shift % 32);
   }
+  const Enum logic = st.LogicMode();
   const auto merge = [&](U fresh, U old, int w) SOFTGL_WIDE_LAMBDA {
+    if (logic) fresh = LogicOpBits(logic, fresh, old);
     return go ? ((fresh & ~keep[w]) | (old & keep[w])) : old;
   };
   switch (cb.Bytes()) {
@@ -1099,15 +1102,7 @@ struct PlaneIo {
       for (int c = 0; c < 4; ++c) color[c] = LoadVec<F>(bb.Color(b, o, c) + l0);
       const TexelQuads<W> at{base, colour_at[o], live(), l0};
       if (path == ColourPath::kInteger) {
-        if (!ctx.state->LogicMode()) {
-          IntegerLanes<W>(*ctx.state, o, cb, at, color, go);
-          continue;
-        }
-        // With a logic operation: lane by lane (IntegerLane), in this lane's sample plane.
-        ColorBuffer plane = cb;
-        plane.data = base;
-        for (int l = 0; l < W; ++l)
-          if (go[l] != 0 && ((live() >> (l0 + l)) & 1u)) IntegerLane(*ctx.state, bb, b, o, l0 + l, plane);
+        IntegerLanes<W>(*ctx.state, o, cb, at, color, go);
         continue;
       }
       if (path == ColourPath::kUnorm8) Unorm8Lanes<W>(ctx.plan->blend[o], cb, at, color, go);
