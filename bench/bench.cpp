@@ -25,7 +25,8 @@
 //                      integer formats NEAREST only);
 //                      --scene TEXT then picks its rows ("2D 256^2, RGBA8, NEAREST"), --softgl-only 1 its ms
 //   --formats 1        the colour format matrix instead: every colour format (and a G-buffer of four) x opaque or
-//                      blended x depth format (below); --scene and --softgl-only as for --matrix
+//                      blended x depth format (below); --scene and --softgl-only as for --matrix; with --odd 1
+//                      at 1279 x 719 instead of 1280 x 720 (a target of odd size)
 //   --fetch 1          the texel fetch matrix instead: texelFetch from a 2D texture, a buffer texture, a multisample
 //                      texture and a multisample array x texel format (below); --scene and --softgl-only as for
 //                      --matrix
@@ -850,6 +851,7 @@ int main(int argc, char** argv) {
   bool matrix = false;       // --matrix 1
   bool format_matrix = false;  // --formats 1
   bool fetch_matrix = false;   // --fetch 1
+  bool odd_size = false;       // --odd 1
   for (int i = 1; i + 1 < argc; i += 2) {
     if (!std::strcmp(argv[i], "--threads")) threads = std::max(1, std::atoi(argv[i + 1]));
     if (!std::strcmp(argv[i], "--frames")) frames = std::max(1, std::atoi(argv[i + 1]));
@@ -867,6 +869,7 @@ int main(int argc, char** argv) {
     if (!std::strcmp(argv[i], "--matrix")) matrix = std::atoi(argv[i + 1]) != 0;
     if (!std::strcmp(argv[i], "--formats")) format_matrix = std::atoi(argv[i + 1]) != 0;
     if (!std::strcmp(argv[i], "--fetch")) fetch_matrix = std::atoi(argv[i + 1]) != 0;
+    if (!std::strcmp(argv[i], "--odd")) odd_size = std::atoi(argv[i + 1]) != 0;
   }
   const std::string lp_threads = std::to_string(threads == 1 ? 0 : threads);
   setenv("LP_NUM_THREADS", lp_threads.c_str(), 1);
@@ -1098,6 +1101,7 @@ int main(int argc, char** argv) {
   // softgl's time over llvmpipe's per cell, and in brackets softgl's time over its own in the first cell (RGBA8,
   // opaque, DEPTH24_STENCIL8).
   if (format_matrix) {
+    const int fw = odd_size ? 1279 : 1280, fh = odd_size ? 719 : 720;
     using softgl::Enum;
     namespace sg = softgl;
     struct FormatRow {
@@ -1131,10 +1135,10 @@ int main(int argc, char** argv) {
                                                    {"DEPTH32F_STENCIL8", sg::DEPTH32F_STENCIL8}};
     const Geometry quads = FullScreenQuads(20, 1.0f);
     const FrameSpec frame{true, false, 120, "bench_formats.png"};
-    std::printf("Colour format matrix, %d thread(s), %d frames a cell: softgl / llvmpipe (softgl ms / ms of the "
-                "first cell)\n\n| colour | blend | DEPTH24_STENCIL8 | DEPTH_COMPONENT16 | DEPTH_COMPONENT32F | "
+    std::printf("Colour format matrix, %d x %d, %d thread(s), %d frames a cell: softgl / llvmpipe (softgl ms / ms of "
+                "the first cell)\n\n| colour | blend | DEPTH24_STENCIL8 | DEPTH_COMPONENT16 | DEPTH_COMPONENT32F | "
                 "DEPTH32F_STENCIL8 |\n|---|---|---|---|---|---|\n",
-                threads, frames);
+                fw, fh, threads, frames);
     double first_ms = 0.0;
     for (const FormatRow& row : rows)
       for (const bool blend : {false, true}) {
@@ -1149,21 +1153,21 @@ int main(int argc, char** argv) {
             wide::FormatShader shader;
             shader.outputs = n;
             shader.integer = row.integer != 0;
-            softgl::Context gl(1280, 720, g_options);
+            softgl::Context gl(fw, fh, g_options);
             softgl_setup(gl, quads);
             gl.BindFramebuffer(sg::FRAMEBUFFER, gl.GenFramebuffer());
             Enum bufs[4];
             for (int o = 0; o < n; ++o) {
               const std::uint32_t rb = gl.GenRenderbuffer();
               gl.BindRenderbuffer(sg::RENDERBUFFER, rb);
-              gl.RenderbufferStorage(sg::RENDERBUFFER, row.colour[std::size_t(o)], 1280, 720);
+              gl.RenderbufferStorage(sg::RENDERBUFFER, row.colour[std::size_t(o)], fw, fh);
               gl.FramebufferRenderbuffer(sg::FRAMEBUFFER, sg::COLOR_ATTACHMENT0 + Enum(o), sg::RENDERBUFFER, rb);
               bufs[o] = sg::COLOR_ATTACHMENT0 + Enum(o);
             }
             gl.DrawBuffers(n, bufs);
             const std::uint32_t rb = gl.GenRenderbuffer();
             gl.BindRenderbuffer(sg::RENDERBUFFER, rb);
-            gl.RenderbufferStorage(sg::RENDERBUFFER, depth, 1280, 720);
+            gl.RenderbufferStorage(sg::RENDERBUFFER, depth, fw, fh);
             const bool stencil = depth == sg::DEPTH24_STENCIL8 || depth == sg::DEPTH32F_STENCIL8;
             gl.FramebufferRenderbuffer(sg::FRAMEBUFFER, stencil ? sg::DEPTH_STENCIL_ATTACHMENT : sg::DEPTH_ATTACHMENT,
                                        sg::RENDERBUFFER, rb);
@@ -1176,7 +1180,7 @@ int main(int argc, char** argv) {
             gl.UseProgram(shader);
             return TimeSoftgl(frames, gl, frame);
           }();
-          const double gl_ms = softgl_only ? 1.0 : with_osmesa(1280, 720, [&] {
+          const double gl_ms = softgl_only ? 1.0 : with_osmesa(fw, fh, [&] {
             gl_setup(quads);
             GLuint fbo;
             glGenFramebuffers(1, &fbo);
@@ -1186,7 +1190,7 @@ int main(int argc, char** argv) {
               GLuint rb;
               glGenRenderbuffers(1, &rb);
               glBindRenderbuffer(GL_RENDERBUFFER, rb);
-              glRenderbufferStorage(GL_RENDERBUFFER, GLenum(row.colour[std::size_t(o)]), 1280, 720);
+              glRenderbufferStorage(GL_RENDERBUFFER, GLenum(row.colour[std::size_t(o)]), fw, fh);
               glFramebufferRenderbuffer(GL_FRAMEBUFFER, GLenum(GL_COLOR_ATTACHMENT0 + o), GL_RENDERBUFFER, rb);
               bufs[o] = GLenum(GL_COLOR_ATTACHMENT0 + o);
             }
@@ -1194,7 +1198,7 @@ int main(int argc, char** argv) {
             GLuint rb;
             glGenRenderbuffers(1, &rb);
             glBindRenderbuffer(GL_RENDERBUFFER, rb);
-            glRenderbufferStorage(GL_RENDERBUFFER, GLenum(depth), 1280, 720);
+            glRenderbufferStorage(GL_RENDERBUFFER, GLenum(depth), fw, fh);
             const bool stencil = depth == sg::DEPTH24_STENCIL8 || depth == sg::DEPTH32F_STENCIL8;
             glFramebufferRenderbuffer(GL_FRAMEBUFFER, stencil ? GL_DEPTH_STENCIL_ATTACHMENT : GL_DEPTH_ATTACHMENT,
                                       GL_RENDERBUFFER, rb);

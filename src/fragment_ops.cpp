@@ -1718,13 +1718,24 @@ SOFTGL_TARGET_AVX512 std::uint32_t EarlyBlockAvx512(Enum f, BlockBuffer& bb, con
 bool EarlyTest(const FragmentOpsState& state, BlockBuffer& blocks, const RenderTarget& target, const SampleDepths* depths) {
   static const EarlyRangeFn early_interleaved = SOFTGL_CHOOSE(EarlyRange, <true>);
   static const EarlyRangeFn early_single = SOFTGL_CHOOSE(EarlyRange, <false>);
-  if (target.HasDepth() && ((target.width | target.height) & 1) == 0) {  // every block inside (Inside)
-    if (depths && target.interleaved) return early_interleaved(state.depth_func, blocks, target, 0, blocks.count, depths) != 0;
-    if (!depths) return early_single(state.depth_func, blocks, target, 0, blocks.count, nullptr) != 0;
-  }
+  // The range forms where they apply: on every block of an even-sized target, on each run of blocks inside an
+  // odd-sized one (the others below, one at a time).
+  const EarlyRangeFn range = !target.HasDepth()                ? nullptr
+                             : depths && target.interleaved ? early_interleaved
+                             : !depths                      ? early_single
+                                                            : nullptr;
+  if (range && ((target.width | target.height) & 1) == 0)  // every block inside (Inside)
+    return range(state.depth_func, blocks, target, 0, blocks.count, depths) != 0;
   std::uint32_t live = 0;
   static const EarlyBlockFn early = SOFTGL_CHOOSE(EarlyBlock);
   for (int b = 0; b < blocks.count; ++b) {
+    if (range && Inside(target, blocks, b)) {
+      int end = b + 1;
+      while (end < blocks.count && Inside(target, blocks, end)) ++end;
+      live |= range(state.depth_func, blocks, target, b, end, depths);
+      b = end - 1;
+      continue;
+    }
     if (target.HasDepth() && blocks.live[b]) {
       if (Inside(target, blocks, b)) {
         early(state.depth_func, blocks, target, b, depths);
@@ -1805,13 +1816,24 @@ void BlockOpsAll(const FragmentOpsState& state, const FragmentOpsPlan& plan, con
   static const BlockRangeOpsFn block_ops_interleaved = SOFTGL_CHOOSE(BlockOpsInterleaved);
   static const BlockRangeOpsFn block_ops_single = SOFTGL_CHOOSE(BlockOpsSingle);
   const bool even = ((target.width | target.height) & 1) == 0;  // every block inside (Inside)
-  if (depths && target.interleaved && plan.wide_target && even) {
-    block_ops_interleaved(ctx, 0, blocks.count);
-  } else if (!depths && plan.wide_target && even) {
-    block_ops_single(ctx, 0, blocks.count);
+  const BlockRangeOpsFn range = !plan.wide_target                ? nullptr
+                                : depths && target.interleaved ? block_ops_interleaved
+                                : !depths                      ? block_ops_single
+                                                               : nullptr;
+  if (range && even) {
+    range(ctx, 0, blocks.count);
   } else {
-    for (int b = 0; b < blocks.count; ++b)
-      if (blocks.live[b]) BlockOpsOne(ctx, plan, target, depths, b);
+    // Each run of blocks inside an odd-sized target by the range form, the others one at a time.
+    for (int b = 0; b < blocks.count; ++b) {
+      if (range && Inside(target, blocks, b)) {
+        int end = b + 1;
+        while (end < blocks.count && Inside(target, blocks, end)) ++end;
+        range(ctx, b, end);
+        b = end - 1;
+      } else if (blocks.live[b]) {
+        BlockOpsOne(ctx, plan, target, depths, b);
+      }
+    }
   }
   for (OcclusionCounter* c : state.occlusion)
     if (c && passed) c->passed.fetch_add(passed, std::memory_order_relaxed);

@@ -982,6 +982,13 @@ TEST_CASE("every colour format, draw buffer set and depth-stencil state: the blo
     }
     blocks->count = 4;
     blocks->front_facing = next() % 2;
+    // A third of the rounds into an odd-sized target (7 wide, or high, or both: its edge blocks lane by lane, the
+    // others on the vector operations), its lanes outside it not live, as the rasterizer leaves them.
+    if (next() % 3 == 0) {
+      const int odd = 1 + int(next() % 3);
+      a.target.width = odd & 1 ? 7 : 8;
+      a.target.height = odd & 2 ? 7 : 8;
+    }
     for (int b = 0; b < 4; ++b) {
       // Block b: the quads of rows 2b and 2b + 1, in a scrambled order; sometimes fewer than four, the unused ones
       // at the first one's place without live lanes (as the rasterizer leaves them).
@@ -993,6 +1000,8 @@ TEST_CASE("every colour format, draw buffer set and depth-stencil state: the blo
       }
       blocks->live[b] = next() % 3 == 0 ? 0xFFFFu : next() & 0xFFFFu;
       blocks->live[b] &= (1u << (4 * quads)) - 1u;
+      for (int l = 0; l < 4 * quads; ++l)
+        if (blocks->X(b, l) >= a.target.width || blocks->Y(b, l) >= a.target.height) blocks->live[b] &= ~(1u << l);
       // Colours as floats, or (a third of the blocks) as integers' bits, as integer outputs give them: small
       // numbers of either sign, or any 32 bits.
       const bool integers = next() % 3 == 0;
@@ -1011,7 +1020,8 @@ TEST_CASE("every colour format, draw buffer set and depth-stencil state: the blo
     detail::ApplyFragmentOpsReference(state, plan, *blocks, false, b.target);
     std::string names;
     for (const TargetFormat* f : formats) names += std::string(f ? f->name : "none") + " ";
-    INFO("round " << round << ": " << names << "blend 0x" << std::hex << int(state.blend_buffers) << std::dec
+    INFO("round " << round << ": " << names << a.target.width << " x " << a.target.height << ", blend 0x" << std::hex
+                  << int(state.blend_buffers) << std::dec
                   << ", logic op 0x" << std::hex << state.LogicMode() << std::dec);
     for (int o = 0; o < kMaxColorOutputs; ++o) {
       if (a.color[o] != b.color[o]) {

@@ -1137,6 +1137,50 @@ void DrawMixedScene(Context& gl, int w, int h, bool stencil) {
 
 }  // namespace
 
+TEST_CASE("an odd-sized target draws, where it overlaps, the bytes of an even-sized one", "[fragment_ops]") {
+  // A 31 x 31 target takes the blocks inside it on the vector operations, run by run, and its edge blocks lane by
+  // lane; a 32 x 32 one (drawing through a 31 x 31 viewport) takes every block on the vector operations. The same
+  // scene (depth-tested, blended, stencil-counted triangles, a stencil pass, a line), single-sampled, with float
+  // and 16-bit depth, into the context's framebuffer and into a framebuffer object of RGBA8 and of RGBA16F, must
+  // give the same bytes in the 31 x 31 pixels both have.
+  for (const bool depth16 : {false, true})
+    for (const Enum format : {Enum(0), RGBA8, RGBA16F}) {
+      CAPTURE(depth16, format);
+      auto render = [&](int size) {
+        Context::Options options = Samples(0);
+        if (depth16) options.depth_format = DEPTH_COMPONENT16;
+        Context gl(size, size, options);
+        if (format) {
+          MultisampleFbo fbo(gl, 0, size, size, format);
+          if (depth16) {  // the depth a 16-bit renderbuffer, no stencil
+            const std::uint32_t rb = gl.GenRenderbuffer();
+            gl.BindRenderbuffer(RENDERBUFFER, rb);
+            gl.RenderbufferStorage(RENDERBUFFER, DEPTH_COMPONENT16, size, size);
+            gl.FramebufferRenderbuffer(FRAMEBUFFER, DEPTH_STENCIL_ATTACHMENT, RENDERBUFFER, 0);
+            gl.FramebufferRenderbuffer(FRAMEBUFFER, DEPTH_ATTACHMENT, RENDERBUFFER, rb);
+          }
+          REQUIRE(gl.CheckFramebufferStatus(FRAMEBUFFER) == FRAMEBUFFER_COMPLETE);
+          gl.Viewport(0, 0, 31, 31);
+          gl.Clear(COLOR_BUFFER_BIT | DEPTH_BUFFER_BIT | STENCIL_BUFFER_BIT);
+          DrawMixedScene(gl, 31, 31, !depth16);
+        } else {
+          gl.Viewport(0, 0, 31, 31);
+          gl.Clear(COLOR_BUFFER_BIT | DEPTH_BUFFER_BIT | STENCIL_BUFFER_BIT);
+          DrawMixedScene(gl, 31, 31, !depth16);
+        }
+        std::vector<float> px(31 * 31 * 4);
+        gl.ReadPixels(0, 0, 31, 31, RGBA, FLOAT, px.data());
+        CHECK(gl.GetError() == NO_ERROR);
+        return px;
+      };
+      const std::vector<float> odd = render(31), even = render(32);
+      int drawn = 0;
+      for (std::size_t i = 0; i < odd.size(); i += 4) drawn += odd[i] != 0.0f || odd[i + 1] != 0.0f || odd[i + 2] != 0.0f;
+      CHECK(drawn > 400);
+      CHECK(odd == even);
+    }
+}
+
 TEST_CASE("multisample: the context's framebuffer (samples side by side) draws as a framebuffer object (planes)",
           "[multisample]") {
   // The context's own multisampled framebuffer keeps each pixel's samples together and has its own vector
