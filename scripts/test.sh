@@ -14,6 +14,7 @@
 set -uo pipefail
 cd "$(dirname "$0")/.."
 scripts/deps.sh libosmesa6-dev libgl1-mesa-dri assimp-testmodels clang libclang-rt-14-dev \
+  pybind11-dev python3-dev python3-numpy python3-pytest \
   g++-aarch64-linux-gnu qemu-user-static libassimp-dev:arm64 libjpeg62-turbo-dev:arm64 libwebp-dev:arm64 \
   libstb-dev:arm64 zlib1g-dev:arm64 || exit 1
 
@@ -99,8 +100,9 @@ first_cause() {
   echo "${line:-see the log}"
 }
 
+# The Release and Clang stages build the Python module too (SOFTGL_BUILD_PYTHON) and run its pytest suite in ctest.
 release() {
-  scripts/configure.sh build/release -DCMAKE_BUILD_TYPE=Release -DSOFTGL_WERROR=ON &&
+  scripts/configure.sh build/release -DCMAKE_BUILD_TYPE=Release -DSOFTGL_WERROR=ON -DSOFTGL_BUILD_PYTHON=ON &&
     cmake --build build/release -j "$jobs" &&
     ctest --test-dir build/release --output-on-failure -j "$jobs"
 }
@@ -112,7 +114,7 @@ release() {
 # once more inside another project, runs in the Release stage only.)
 clang_release() {
   CC=clang CXX=clang++ scripts/configure.sh build/clang -DCMAKE_BUILD_TYPE=Release -DSOFTGL_WERROR=ON \
-      "-DCMAKE_CXX_FLAGS=-fsanitize=float-cast-overflow -fsanitize-trap=float-cast-overflow" &&
+      -DSOFTGL_BUILD_PYTHON=ON "-DCMAKE_CXX_FLAGS=-fsanitize=float-cast-overflow -fsanitize-trap=float-cast-overflow" &&
     cmake --build build/clang -j "$jobs" &&
     ctest --test-dir build/clang --output-on-failure -j "$jobs" -E '^consumer_subdirectory$'
 }

@@ -119,6 +119,9 @@ class SurfaceShader : public Shader<Derived, SurfaceVaryings>, public MaterialPr
   bool lit = true;  // false for a mesh without normals (points, lines): Phong and PBR draw it unlit
   ToneMap tone_map = ToneMap::kClamp;
   float exposure = 0.0f;  // in stops: the colour is scaled by 2^exposure before tone mapping
+  /// For a float colour buffer: the colour as shaded (PbrShader's in linear light, Unlit's and Phong's as the
+  /// file's colours are, encoded), scaled by 2^exposure, with no tone curve, clamp or sRGB encoding.
+  bool hdr_output = false;
 
   const Program& GetProgram() const override { return *this; }
   void SetTransforms(const glm::mat4& m, const glm::mat4& vp) override {
@@ -176,6 +179,7 @@ class SurfaceShader : public Shader<Derived, SurfaceVaryings>, public MaterialPr
   /// A colour as the framebuffer gets it: scaled by 2^exposure, tone-mapped, then sRGB-encoded when `encode`
   /// (PbrShader works in linear light; Unlit and Phong take the file's colours as they are, already encoded).
   vec3 Display(const vec3& c, bool encode) const {
+    if (hdr_output) return exposure != 0.0f ? c * std::exp2(exposure) : c;
     if (tone_map == ToneMap::kClamp && exposure == 0.0f && !encode) return c;  // the store clamps
     return DisplayColor(c, tone_map, exposure, encode);
   }
