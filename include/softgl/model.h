@@ -37,6 +37,7 @@ enum MaterialUnit : int {
   kUnitSpecular = 5,   // Phong specular intensity
   kUnitEnvironment = 6,  // not a material's: a cube map for image-based ambient light (PbrShader)
   kUnitIrradiance = 7,   // not a material's: a cube map of diffuse irradiance (PbrShader, with LoadEnvironment)
+  kUnitShadow = 8,       // not a material's: the shadow map of the built-in shaders' first light (SurfaceShader)
 };
 
 struct Material {

@@ -122,6 +122,14 @@ class SurfaceShader : public Shader<Derived, SurfaceVaryings>, public MaterialPr
   /// For a float colour buffer: the colour as shaded (PbrShader's in linear light, Unlit's and Phong's as the
   /// file's colours are, encoded), scaled by 2^exposure, with no tone curve, clamp or sRGB encoding.
   bool hdr_output = false;
+  /// Shadows of the first light (lighting.lights[0], the key light of ThreePoint): while `shadows` is set, its light
+  /// reaches a fragment in the proportion TextureShadow gives on texture unit kUnitShadow (a ShadowMap's depth
+  /// texture: compared with LEQUAL, LINEAR filtering, so four comparisons) at shadow_matrix * world position (world
+  /// to the map's texture coordinates and depth, all in [0, 1]), less shadow_bias from the depth. The other lights
+  /// and ambient light are not shadowed.
+  bool shadows = false;
+  glm::mat4 shadow_matrix{1.0f};
+  float shadow_bias = 0.0f;
 
   const Program& GetProgram() const override { return *this; }
   void SetTransforms(const glm::mat4& m, const glm::mat4& vp) override {
@@ -176,6 +184,13 @@ class SurfaceShader : public Shader<Derived, SurfaceVaryings>, public MaterialPr
     return n;
   }
 
+  /// The share of light i that reaches the fragment: 1, or the first light's shadow test (`shadows`).
+  Float LightShare(const In& in, int i) const {
+    if (!shadows || i != 0) return Float(1.0f);
+    const vec4 p = shadow_matrix * vec4(in.varyings.world_pos, 1.0f);
+    return in.TextureShadow(kUnitShadow, vec3(p.x, p.y, p.z - shadow_bias));
+  }
+
   /// A colour as the framebuffer gets it: scaled by 2^exposure, tone-mapped, then sRGB-encoded when `encode`
   /// (PbrShader works in linear light; Unlit and Phong take the file's colours as they are, already encoded).
   vec3 Display(const vec3& c, bool encode) const {
@@ -223,7 +238,7 @@ struct PhongShader : SurfaceShader<PhongShader> {
       if (!any(lit)) continue;
       const vec3 h = normalize(l.direction + v);
       const Float spec = pow(max(dot(n, h), 0.0f), material.shininess);
-      c += select(lit, l.color * (vec3(base) * ndl + spec_color * spec), vec3(0.0f));
+      c += select(lit, l.color * (vec3(base) * ndl + spec_color * spec) * LightShare(in, i), vec3(0.0f));
     }
     out.color[0] = vec4(Display(c + Emissive(in), false), base.w);
   }
@@ -288,7 +303,8 @@ struct PbrShader : SurfaceShader<PbrShader> {
       const vec3 f = f0 + (1.0f - f0) * pow(1.0f - vdh, 5.0f);
       const vec3 specular = d * g * f / (4.0f * ndl * ndv);
       const vec3 kd = (1.0f - f) * (1.0f - metallic);
-      color += select(lit, (kd * albedo / 3.14159265f + specular) * l.color * ndl * 3.14159265f, vec3(0.0f));
+      color += select(lit, (kd * albedo / 3.14159265f + specular) * l.color * ndl * 3.14159265f * LightShare(in, i),
+                      vec3(0.0f));
     }
     vec3 ambient = lighting.ambient * albedo;
     if (environment_levels > 0.0f) {

@@ -203,6 +203,16 @@ py::class_<S> BindSurfaceShader(py::module_& m, const char* name, const char* do
                       s.exposure = float(e);
                     })
       .def_property("lit", [](const S& s) { return s.lit; }, [](S& s, bool lit) { s.lit = lit; })
+      .def_property("shadows", [](const S& s) { return s.shadows; }, [](S& s, bool on) { s.shadows = on; },
+                    "the first light shadowed through the shadow map on unit UNIT_SHADOW (see make_shadow_map)")
+      .def_property("shadow_matrix", [](const S& s) { return ToNumpy(s.shadow_matrix); },
+                    [](S& s, const py::handle& m) { s.shadow_matrix = Matrix4(m, "shadow_matrix"); },
+                    "world to the shadow map's texture coordinates and depth, all in [0, 1]")
+      .def_property("shadow_bias", [](const S& s) { return s.shadow_bias; },
+                    [](S& s, double b) {
+                      if (!std::isfinite(b)) throw py::value_error("shadow_bias: must be finite");
+                      s.shadow_bias = float(b);
+                    })
       .def_property("hdr_output", [](const S& s) { return s.hdr_output; }, [](S& s, bool on) { s.hdr_output = on; },
                     "for a float colour buffer: the colour unclamped, without tone curve or sRGB encoding")
       .def(
@@ -250,6 +260,7 @@ PYBIND11_MODULE(_softgl, m) {
   m.attr("MAX_FRAMEBUFFER_SIZE") = softgl::kMaxFramebufferSize;
   m.attr("UNIT_BASE_COLOR") = int(softgl::kUnitBaseColor);
   m.attr("UNIT_ENVIRONMENT") = int(softgl::kUnitEnvironment);
+  m.attr("UNIT_SHADOW") = int(softgl::kUnitShadow);
   m.attr("ATTRIB_POSITION") = int(softgl::kAttribPosition);
   m.attr("ATTRIB_NORMAL") = int(softgl::kAttribNormal);
   m.attr("ATTRIB_UV") = int(softgl::kAttribUv);
@@ -556,6 +567,13 @@ PYBIND11_MODULE(_softgl, m) {
           return Call(c, "make_studio_environment", [&](softgl::Context& gl) { return softgl::MakeStudioEnvironment(gl, size); });
         }, py::arg("context"), py::arg("size") = 64,
         "A soft studio cube map bound to unit UNIT_ENVIRONMENT; returns its level count (PbrShader.environment_levels).");
+  m.def("make_shadow_map", [](ContextBox& c, int size) {
+          if (size < 1 || size > softgl::kMaxFramebufferSize) throw py::value_error("size: must be 1 to " + std::to_string(softgl::kMaxFramebufferSize));
+          const softgl::ShadowMap map = Call(c, "make_shadow_map", [&](softgl::Context& gl) { return softgl::MakeShadowMap(gl, size); });
+          return py::make_tuple(map.texture, map.framebuffer);
+        }, py::arg("context"), py::arg("size"),
+        "A size x size depth texture compared with LEQUAL and a framebuffer that draws into it, both left bound: "
+        "returns (texture, framebuffer). Bind the texture to unit UNIT_SHADOW for the shaders' `shadows`.");
   m.def("load_environment", [](ContextBox& c, const std::string& path, int size) {
           CheckFile(path, "path");
           std::string error;
@@ -760,6 +778,12 @@ PYBIND11_MODULE(_softgl, m) {
            }, py::arg("tone_map"), py::arg("exposure") = 0.0,
            "'clamp', 'pbr-neutral' or 'aces', after scaling colours by 2**exposure.")
       .def_property("shader", &Renderer::ShaderName, &Renderer::SetShader, "'unlit', 'phong' or 'pbr'")
+      .def("set_shadows", [](Renderer& r, bool on, int size, double bias) { r.SetShadows(on, size, float(bias)); },
+           py::arg("enabled") = true, py::arg("size") = 2048, py::arg("bias") = 0.002,
+           "Shadows of the first light (the key light by default), with the Phong and PBR shaders: a size x size "
+           "shadow map fitted around the objects at each render. bias is subtracted from a fragment's depth in the "
+           "map, whose [0, 1] spans the objects' bounding sphere (the map is drawn with a polygon offset too; the "
+           "default keeps the edges of lit faces from shadowing themselves).")
       .def("set_background", [](Renderer& r, const py::handle& color) {
              const auto c = FloatList(color, "color", 4);
              r.SetBackground(glm::vec4(c[0], c[1], c[2], c[3]));

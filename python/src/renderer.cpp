@@ -326,6 +326,52 @@ void Renderer::SetToneMap(ToneMap tone_map, float exposure) {
   unlit_.exposure = phong_.exposure = pbr_.exposure = exposure;
 }
 
+void Renderer::SetShadows(bool on, int size, float bias) {
+  if (size < 16 || size > 8192) throw std::invalid_argument("size: the shadow map must be 16 to 8192, got " + std::to_string(size));
+  if (!std::isfinite(bias)) throw std::invalid_argument("bias: must be finite");
+  if (shadow_.framebuffer && size != shadow_size_) {  // made again at the new size
+    gl_.DeleteFramebuffer(shadow_.framebuffer);
+    gl_.DeleteTexture(shadow_.texture);
+    shadow_ = ShadowMap();
+  }
+  shadows_ = on;
+  shadow_size_ = size;
+  shadow_bias_ = bias;
+}
+
+void Renderer::DrawShadowMap(const glm::vec3& to_light) {
+  gl_.ActiveTexture(TEXTURE0 + Enum(kUnitShadow));
+  gl_.BindTexture(TEXTURE_2D, 0);  // not bound to a unit while drawn into
+  if (!shadow_.framebuffer) shadow_ = MakeShadowMap(gl_, shadow_size_);
+  glm::vec3 lo, hi;
+  Bounds(lo, hi);
+  const glm::vec3 centre = (lo + hi) * 0.5f;
+  const float r = std::max(glm::length(hi - lo) * 0.5f, 1e-6f);
+  // The light's orthographic view of the objects' bounding sphere, from 3 radii away: depth 0 to 1 over [2 r, 4 r].
+  const glm::vec3 l = glm::normalize(to_light);
+  const glm::vec3 up = std::abs(l.y) > 0.99f ? glm::vec3(0.0f, 0.0f, 1.0f) : glm::vec3(0.0f, 1.0f, 0.0f);
+  const glm::mat4 light_vp = glm::ortho(-r, r, -r, r, 2.0f * r, 4.0f * r) * glm::lookAt(centre + l * 3.0f * r, centre, up);
+  gl_.BindFramebuffer(FRAMEBUFFER, shadow_.framebuffer);
+  gl_.Viewport(0, 0, shadow_size_, shadow_size_);
+  gl_.Enable(DEPTH_TEST);
+  gl_.DepthFunc(LESS);
+  gl_.DepthMask(true);
+  gl_.Clear(DEPTH_BUFFER_BIT);
+  gl_.Enable(POLYGON_OFFSET_FILL);  // keeps surfaces from shadowing themselves (acne)
+  gl_.PolygonOffset(2.0f, 4.0f);
+  AuxShader depth;
+  DrawObjects(depth, light_vp, nullptr);
+  gl_.Finish();  // the shader is a local
+  gl_.Disable(POLYGON_OFFSET_FILL);
+  gl_.ActiveTexture(TEXTURE0 + Enum(kUnitShadow));
+  gl_.BindTexture(TEXTURE_2D, shadow_.texture);
+  // Clip space to the map's texture coordinates and depth, [-1, 1] to [0, 1].
+  const glm::mat4 to_texture = glm::translate(glm::mat4(1.0f), glm::vec3(0.5f)) * glm::scale(glm::mat4(1.0f), glm::vec3(0.5f));
+  unlit_.shadow_matrix = phong_.shadow_matrix = pbr_.shadow_matrix = to_texture * light_vp;
+  unlit_.shadow_bias = phong_.shadow_bias = pbr_.shadow_bias = shadow_bias_;
+  unlit_.shadows = phong_.shadows = pbr_.shadows = true;
+}
+
 void Renderer::SetShader(const std::string& name) {
   CheckShader(name);
   shader_name_ = name;
@@ -376,6 +422,9 @@ void Renderer::DrawColour(const glm::mat4& view_proj, bool hdr) {
   lighting.ambient = ambient_;
   unlit_.lighting = phong_.lighting = pbr_.lighting = lighting;
   unlit_.hdr_output = phong_.hdr_output = pbr_.hdr_output = hdr;
+  unlit_.shadows = phong_.shadows = pbr_.shadows = false;
+  if (shadows_ && lighting.count > 0 && !objects_.empty() && shader_name_ != "unlit")
+    DrawShadowMap(lighting.lights[0].direction);
   if (pbr_.environment_hdr && follow_camera_) pbr_.lighting.count = 0;  // the HDR image is then the only light
 
   if (hdr && !hdr_fbo_) MakeHdrTargets();

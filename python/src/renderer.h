@@ -83,6 +83,9 @@ class Renderer {
   void SetEnvironment(const std::string& path, float strength);
   void SetToneMap(softgl::ToneMap tone_map, float exposure);
   void SetBackground(const glm::vec4& color) { background_ = color; }
+  /// Shadows of the first light from a size x size shadow map fitted around the objects (`bias` subtracted from
+  /// each fragment's depth in the map, which is in [0, 1] across the objects' bounding sphere).
+  void SetShadows(bool on, int size, float bias);
   void SetShader(const std::string& name);
   const std::string& ShaderName() const { return shader_name_; }
 
@@ -92,6 +95,7 @@ class Renderer {
  private:
   struct Object;
   void DrawColour(const glm::mat4& view_proj, bool hdr);
+  void DrawShadowMap(const glm::vec3& to_light);
   void MakeHdrTargets();
   void DrawAux(const glm::mat4& view_proj);
   /// Every object with `program` (its uniforms set per object), writing each object's id to `id` first if given.
@@ -117,6 +121,10 @@ class Renderer {
   std::uint32_t aux_fbo_ = 0;
   // Float colour: a framebuffer of RGBA32F (multisampled as the context's) with its depth, resolved into another.
   std::uint32_t hdr_fbo_ = 0, hdr_resolve_fbo_ = 0;
+  bool shadows_ = false;
+  int shadow_size_ = 2048;
+  float shadow_bias_ = 0.002f;
+  softgl::ShadowMap shadow_;
   int samples_ = 0;
   std::vector<float> scratch_;
 };

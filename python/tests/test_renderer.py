@@ -296,3 +296,40 @@ def test_blended_materials_write_depth_normals_and_ids(tmp_path):
     assert np.allclose(out["depth"][drawn], 2.0, rtol=1e-5)
     assert np.allclose(out["normals"][drawn], [0, 0, 1])
     assert abs(int(out["color"][16, 16, 3]) - 41) <= 1  # blended: alpha 0.4 x 0.4 over a clear alpha of 0
+
+
+def box_triangles(lo, hi):
+    (x0, y0, z0), (x1, y1, z1) = lo, hi
+    v = np.array([[x0, y0, z0], [x1, y0, z0], [x1, y1, z0], [x0, y1, z0], [x0, y0, z1], [x1, y0, z1], [x1, y1, z1],
+                  [x0, y1, z1]], np.float32)
+    f = [[0, 2, 1], [0, 3, 2], [4, 5, 6], [4, 6, 7], [0, 1, 5], [0, 5, 4], [3, 7, 6], [3, 6, 2], [0, 4, 7], [0, 7, 3],
+         [1, 2, 6], [1, 6, 5]]
+    return v[np.ravel(f)]  # a triangle list: each face its own vertices, so its own normal
+
+
+@pytest.mark.parametrize("shader", ["phong", "pbr"])
+def test_shadows_darken_the_floor_under_a_box_and_nothing_else(shader):
+    light = np.array([-0.5, 1.0, -0.4])  # the shadow falls towards the camera
+    images = []
+    for shadows in (False, True):
+        r = softgl.Renderer(160, 120, msaa=1, shader=shader)  # (with samples, an edge pixel mixes box and floor)
+        floor = np.array([[-3, 0, -3], [3, 0, -3], [3, 0, 3], [-3, 0, 3]], np.float32)
+        r.add_mesh(floor, faces=np.array([[0, 2, 1], [0, 3, 2]]), color=(0.6, 0.6, 0.6, 1), object_id=1)
+        r.add_mesh(box_triangles((-0.6, 0.5, -0.6), (0.6, 1.7, 0.6)), color=(0.9, 0.4, 0.2, 1), object_id=2)
+        r.look_at((3.5, 3, 5), (0, 0.5, 0), fov_y=40)
+        r.set_lights([(light, (1, 1, 1)), ((-0.5, 0.6, 0.8), (0.3, 0.3, 0.35))], ambient=(0.1, 0.1, 0.1))
+        r.set_shadows(shadows)
+        images.append(r.render(ids=True))
+    off, on = (out["color"].astype(int) for out in images)
+    ids = images[0]["ids"]
+    changed = (off != on).any(axis=-1)
+    assert 100 < changed.sum() < 0.2 * changed.size
+    assert (ids[changed] == 1).all()  # only the floor: the box's lit faces are the same bytes
+    assert (on <= off).all()  # darker, never brighter
+    # The box's centre seen from the light falls on the floor here, deep in the shadow.
+    centre = np.array([0.0, 1.1, 0.0])
+    ground = centre - light / np.linalg.norm(light) * (1.1 / (light[1] / np.linalg.norm(light)))
+    clip = (r.projection_matrix.astype(np.float64) @ r.view_matrix.astype(np.float64) @ np.r_[ground, 1.0])
+    u = int((clip[0] / clip[3] + 1) / 2 * 160)
+    v = int(120 - (clip[1] / clip[3] + 1) / 2 * 120)
+    assert changed[v, u] and off[v, u].sum() - on[v, u].sum() > 150
