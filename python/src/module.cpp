@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstring>
 #include <filesystem>
+#include <limits>
 #include <mutex>
 #include <stdexcept>
 #include <string>
@@ -244,6 +245,70 @@ py::class_<S> BindSurfaceShader(py::module_& m, const char* name, const char* do
           },
           py::arg("eye"), py::arg("target"), "Key, fill and rim lights placed around the view from eye to target.");
   return cls;
+}
+
+// Per-vertex colours as RGBA floats: (N, 3) or (N, 4), float in [0, 1] or uint8.
+std::vector<float> ColorRows(const py::handle& colors, std::size_t n) {
+  const py::array a = AsArray(colors, "colors");
+  const int cols = a.ndim() == 2 ? int(a.shape(1)) : 0;
+  if (cols != 3 && cols != 4) throw py::value_error("colors: shape must be (N, 3) or (N, 4), got " + ShapeText(a));
+  std::vector<float> c;
+  if (a.dtype().is(py::dtype::of<std::uint8_t>())) {
+    if (!(a.flags() & py::array::c_style))
+      throw py::value_error("colors: the array must be C-contiguous (numpy.ascontiguousarray makes it so)");
+    const auto* p = static_cast<const std::uint8_t*>(a.data());
+    for (py::ssize_t i = 0; i < a.size(); ++i) c.push_back(float(p[i]) / 255.0f);
+  } else {
+    c = FloatRows(colors, "colors", cols);
+  }
+  if (c.size() / std::size_t(cols) != n)
+    throw py::value_error("colors: one row per vertex is needed (" + std::to_string(n) + "), got " +
+                          std::to_string(c.size() / std::size_t(cols)));
+  std::vector<float> out;
+  out.reserve(n * 4);
+  for (std::size_t v = 0; v < n; ++v)
+    for (int k = 0; k < 4; ++k) out.push_back(k < cols ? c[v * std::size_t(cols) + std::size_t(k)] : 1.0f);
+  return out;
+}
+
+std::int64_t ObjectId(const py::object& object_id) {
+  if (object_id.is_none()) return -1;
+  const std::int64_t id = object_id.cast<std::int64_t>();
+  if (id < 0 || id > 0xFFFFFFFFll) throw py::value_error("object_id: must be 0 to 2**32 - 1");
+  return id;
+}
+
+// Points (POINTS) or line segments (LINES) from arrays.
+int AddShape(Renderer& r, softgl::Enum mode, const py::handle& positions, const py::handle& segments,
+             const py::handle& colors, double size, const py::handle& pose, const py::object& object_id,
+             const py::handle& color) {
+  MeshData mesh;
+  mesh.mode = mode;
+  mesh.positions = FloatRows(positions, "positions", 3);
+  const std::size_t n = mesh.positions.size() / 3;
+  const bool lines = mode == softgl::LINES;
+  if (n == 0 || n > std::size_t(std::numeric_limits<int>::max()))
+    throw py::value_error("positions: 1 to 2**31 - 1 vertices are needed, got " + std::to_string(n));
+  if (!segments.is_none()) {
+    mesh.faces = IndexRows(segments, "segments", 2, n);
+    if (mesh.faces.empty()) throw py::value_error("segments: no segment (0 rows)");
+    if (mesh.faces.size() > std::size_t(std::numeric_limits<int>::max())) throw py::value_error("segments: too many");
+  } else if (lines && n % 2 != 0) {
+    throw py::value_error("positions: without segments, the positions are pairs: their count (" + std::to_string(n) +
+                          ") must be even");
+  }
+  if (!colors.is_none()) mesh.colors = ColorRows(colors, n);
+  const float max_size = lines ? 255.0f : 2047.0f;
+  if (!(size >= 1.0 && size <= max_size))
+    throw py::value_error(std::string(lines ? "width" : "size") + ": must be 1 to " + std::to_string(int(max_size)) + " pixels");
+  mesh.size = float(size);
+  Surface surface;
+  const auto c = FloatList(color, "color", 4);
+  surface.base_color = glm::vec4(c[0], c[1], c[2], c[3]);
+  const glm::mat4 p = pose.is_none() ? glm::mat4(1.0f) : Matrix4(pose, "pose");
+  const std::int64_t id = ObjectId(object_id);
+  py::gil_scoped_release release;
+  return r.AddMesh(mesh, surface, p, id, false);
 }
 
 }  // namespace
@@ -625,9 +690,13 @@ PYBIND11_MODULE(_softgl, m) {
              mesh.positions = FloatRows(positions, "positions", 3);
              const std::size_t n = mesh.positions.size() / 3;
              if (n == 0) throw py::value_error("positions: the mesh is empty (0 vertices)");
+             // A draw counts its vertices in an int (as OpenGL's GLsizei).
+             constexpr std::size_t kMaxCount = std::size_t(std::numeric_limits<int>::max());
+             if (n > kMaxCount) throw py::value_error("positions: more than 2**31 - 1 vertices");
              if (!faces.is_none()) {
                mesh.faces = IndexRows(faces, "faces", 3, n);
                if (mesh.faces.empty()) throw py::value_error("faces: the mesh has no triangles (0 faces)");
+               if (mesh.faces.size() > kMaxCount) throw py::value_error("faces: more than (2**31 - 1) / 3 faces");
              } else if (n % 3 != 0 || n < 3) {
                throw py::value_error("positions: without faces, the positions are a triangle list: their count (" +
                                      std::to_string(n) + ") must be a multiple of 3");
@@ -639,22 +708,7 @@ PYBIND11_MODULE(_softgl, m) {
                mesh.normals = FloatRows(normals, "normals", 3);
                per_vertex("normals", mesh.normals.size() / 3);
              }
-             if (!colors.is_none()) {
-               const py::array a = AsArray(colors, "colors");
-               const int cols = a.ndim() == 2 ? int(a.shape(1)) : 0;
-               if (cols != 3 && cols != 4) throw py::value_error("colors: shape must be (N, 3) or (N, 4), got " + ShapeText(a));
-               std::vector<float> c;
-               if (a.dtype().is(py::dtype::of<std::uint8_t>())) {
-                 if (!(a.flags() & py::array::c_style)) throw py::value_error("colors: the array must be C-contiguous (numpy.ascontiguousarray makes it so)");
-                 const auto* p = static_cast<const std::uint8_t*>(a.data());
-                 for (py::ssize_t i = 0; i < a.size(); ++i) c.push_back(float(p[i]) / 255.0f);
-               } else {
-                 c = FloatRows(colors, "colors", cols);
-               }
-               per_vertex("colors", c.size() / std::size_t(cols));
-               for (std::size_t v = 0; v < n; ++v)
-                 for (int k = 0; k < 4; ++k) mesh.colors.push_back(k < cols ? c[v * std::size_t(cols) + std::size_t(k)] : 1.0f);
-             }
+             if (!colors.is_none()) mesh.colors = ColorRows(colors, n);
              if (!uvs.is_none()) {
                mesh.uvs = FloatRows(uvs, "uvs", 2);
                per_vertex("uvs", mesh.uvs.size() / 2);
@@ -698,6 +752,24 @@ PYBIND11_MODULE(_softgl, m) {
            "the faces); colors (N, 3) or (N, 4), float in [0, 1] or uint8; uvs (N, 2), (0, 0) the texture's bottom "
            "left; texture (H, W[, C]) uint8, top row first, an sRGB colour map; pose 4 x 4 model to world; "
            "object_id the value in the 'ids' image (None: the handle); color the base colour factor (RGBA).")
+      .def("add_points", [](Renderer& r, const py::handle& positions, const py::handle& colors, double size,
+                             const py::handle& pose, const py::object& object_id_obj, const py::handle& color) {
+             return AddShape(r, softgl::POINTS, positions, py::none(), colors, size, pose, object_id_obj, color);
+           },
+           py::arg("positions"), py::arg("colors") = py::none(), py::arg("size") = 1.0, py::arg("pose") = py::none(),
+           py::arg("object_id") = py::none(), py::arg("color") = std::vector<float>{1.0f, 1.0f, 1.0f, 1.0f},
+           "Adds a point cloud; returns its handle. positions (N, 3); colors (N, 3) or (N, 4), float or uint8; "
+           "each point a square of `size` pixels, unlit (its colour as given), with depth and id like a mesh's "
+           "(normals 0).")
+      .def("add_lines", [](Renderer& r, const py::handle& positions, const py::handle& segments, const py::handle& colors,
+                            double width, const py::handle& pose, const py::object& object_id_obj, const py::handle& color) {
+             return AddShape(r, softgl::LINES, positions, segments, colors, width, pose, object_id_obj, color);
+           },
+           py::arg("positions"), py::arg("segments") = py::none(), py::arg("colors") = py::none(), py::arg("width") = 1.0,
+           py::arg("pose") = py::none(), py::arg("object_id") = py::none(),
+           py::arg("color") = std::vector<float>{1.0f, 1.0f, 1.0f, 1.0f},
+           "Adds line segments; returns the handle. segments (M, 2) of vertex indices (None: the positions in "
+           "pairs); `width` pixels wide, unlit.")
       .def("add_model", [](Renderer& r, const std::string& path, const py::handle& pose, const py::object& object_id_obj) {
              CheckFile(path, "path");
              const std::int64_t object_id = object_id_obj.is_none() ? -1 : object_id_obj.cast<std::int64_t>();

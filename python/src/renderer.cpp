@@ -100,6 +100,8 @@ struct Renderer::Object {
   std::vector<std::uint32_t> buffers;
   int count = 0;
   bool indexed = false, has_colors = false, cull_back = false;
+  Enum mode = TRIANGLES;
+  float size = 1.0f;  // points and lines
   Material material;
   glm::vec3 min{0.0f}, max{0.0f};  // of the vertices, before the pose
 };
@@ -135,8 +137,10 @@ int Renderer::AddMesh(const MeshData& mesh, const Surface& surface, const glm::m
     o.max = glm::max(o.max, p);
   }
   // Smooth normals from the triangles where none are given: each face's area-weighted normal added to its corners.
+  o.mode = mesh.mode;
+  o.size = mesh.size;
   std::vector<float> normals = mesh.normals;
-  if (normals.empty()) {
+  if (normals.empty() && mesh.mode == TRIANGLES) {
     normals.assign(vertices * 3, 0.0f);
     const std::size_t corners = mesh.faces.empty() ? vertices - vertices % 3 : mesh.faces.size();
     for (std::size_t t = 0; t + 3 <= corners; t += 3) {
@@ -160,7 +164,7 @@ int Renderer::AddMesh(const MeshData& mesh, const Surface& surface, const glm::m
     gl_.EnableVertexAttribArray(location);
   };
   attribute(kAttribPosition, mesh.positions, 3);
-  attribute(kAttribNormal, normals, 3);
+  if (!normals.empty()) attribute(kAttribNormal, normals, 3);
   if (!mesh.uvs.empty()) attribute(kAttribUv, mesh.uvs, 2);
   if (!mesh.colors.empty()) attribute(kAttribColor, mesh.colors, 4);
   o.has_colors = !mesh.colors.empty();
@@ -172,7 +176,8 @@ int Renderer::AddMesh(const MeshData& mesh, const Surface& surface, const glm::m
     o.indexed = true;
     o.count = int(mesh.faces.size());
   } else {
-    o.count = int(vertices - vertices % 3);
+    o.count = mesh.mode == TRIANGLES ? int(vertices - vertices % 3) : mesh.mode == LINES ? int(vertices - vertices % 2)
+                                                                                          : int(vertices);
   }
   gl_.BindVertexArray(0);
   if (!mesh.texture.empty()) {
@@ -443,12 +448,17 @@ void Renderer::DrawObjects(MaterialProgram& program, const glm::mat4& view_proj,
     const Object& o = *object;
     if (id) *id = o.id;
     if (o.is_model) {
+      gl_.PointSize(1.0f);  // (a model's point and line meshes: one pixel, as the C++ API draws them by default)
+      gl_.LineWidth(1.0f);
       o.model.Draw(gl_, program, view_proj, o.pose);
       continue;
     }
     program.SetTransforms(o.pose, view_proj);
     program.SetMaterial(o.material);
-    program.SetMesh(ModelMesh());
+    ModelMesh shape;
+    shape.mode = o.mode;
+    shape.has_normals = o.mode == TRIANGLES;  // points and lines are drawn unlit
+    program.SetMesh(shape);
     gl_.ActiveTexture(TEXTURE0 + Enum(kUnitBaseColor));
     gl_.BindTexture(TEXTURE_2D, o.texture);
     gl_.UseProgram(program.GetProgram());
@@ -456,11 +466,14 @@ void Renderer::DrawObjects(MaterialProgram& program, const glm::mat4& view_proj,
     gl_.VertexAttrib4f(kAttribUv, 0.0f, 0.0f, 0.0f, 1.0f);
     gl_.VertexAttrib4f(kAttribTangent, 0.0f, 0.0f, 0.0f, 1.0f);
     gl_.VertexAttrib4f(kAttribColor, 1.0f, 1.0f, 1.0f, 1.0f);
+    gl_.VertexAttrib4f(kAttribNormal, 0.0f, 0.0f, 0.0f, 1.0f);
     if (o.cull_back) gl_.Enable(CULL_FACE);
     else gl_.Disable(CULL_FACE);
+    if (o.mode == POINTS) gl_.PointSize(o.size);
+    if (o.mode == LINES) gl_.LineWidth(o.size);
     gl_.BindVertexArray(o.vao);
-    if (o.indexed) gl_.DrawElement(TRIANGLES, o.count, UNSIGNED_INT, 0);
-    else gl_.DrawArrays(TRIANGLES, 0, o.count);
+    if (o.indexed) gl_.DrawElement(o.mode, o.count, UNSIGNED_INT, 0);
+    else gl_.DrawArrays(o.mode, 0, o.count);
   }
   gl_.BindVertexArray(0);
   gl_.Disable(CULL_FACE);

@@ -24,6 +24,10 @@ struct MeshData {
   std::vector<float> uvs;        // 2 a vertex, or empty
   std::vector<std::uint8_t> texture;  // RGBA8, rows bottom first (OpenGL's order), or empty
   int texture_width = 0, texture_height = 0;
+  /// TRIANGLES (faces: 3 indices each), LINES (2 each) or POINTS (none: every vertex); points and lines are drawn
+  /// unlit, `size` pixels wide.
+  softgl::Enum mode = softgl::TRIANGLES;
+  float size = 1.0f;
 };
 
 /// The surface of a mesh given as arrays.

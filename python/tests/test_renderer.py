@@ -333,3 +333,31 @@ def test_shadows_darken_the_floor_under_a_box_and_nothing_else(shader):
     u = int((clip[0] / clip[3] + 1) / 2 * 160)
     v = int(120 - (clip[1] / clip[3] + 1) / 2 * 120)
     assert changed[v, u] and off[v, u].sum() - on[v, u].sum() > 150
+
+
+def test_points_and_lines_land_where_the_camera_projects_them():
+    r = softgl.Renderer(W, H, msaa=1)
+    pinhole(r)
+    # Points whose projections are pixel centres: one pixel each (size 1), at their depth.
+    pixels = np.array([[10, 12], [80, 60], [150, 100], [33, 97]], np.float64)
+    z = np.array([2.0, 3.0, 4.5, 6.0])
+    points = np.c_[(pixels[:, 0] - CX) * z / FX, (pixels[:, 1] - CY) * z / FY, z].astype(np.float32)
+    r.add_points(points, colors=np.array([[255, 0, 0]] * 4, np.uint8), object_id=11)
+    # A segment along the pixel centres of row 30, columns 20 to 60, at depth 5.
+    ends = np.array([[20, 30], [60, 30]], np.float64)
+    segment = np.c_[(ends[:, 0] - CX) * 5 / FX, (ends[:, 1] - CY) * 5 / FY, [5, 5]].astype(np.float32)
+    r.add_lines(segment, object_id=12, width=1)
+    out = r.render(depth=True, ids=True, normals=True)
+    ids = out["ids"]
+    assert set(zip(*np.nonzero(ids == 11))) == {(int(v), int(u)) for u, v in pixels}
+    assert np.allclose(out["depth"][pixels[:, 1].astype(int), pixels[:, 0].astype(int)], z, rtol=1e-6)
+    assert (out["color"][ids == 11] == [255, 0, 0]).all()  # unlit: the colour as given
+    rows, cols = np.nonzero(ids == 12)
+    assert set(rows) == {30} and 39 <= len(cols) <= 41 and cols.min() >= 20 and cols.max() <= 60
+    assert (out["normals"][ids > 0] == 0).all()
+    with pytest.raises(ValueError, match="must be even"):
+        r.add_lines(points[:3])
+    with pytest.raises(ValueError, match="segments: index 9"):
+        r.add_lines(points, segments=np.array([[0, 9]]))
+    with pytest.raises(ValueError, match="size: must be 1 to"):
+        r.add_points(points, size=0.0)
