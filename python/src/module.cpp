@@ -520,7 +520,8 @@ PYBIND11_MODULE(_softgl, m) {
       .def("clear_depth", [](ContextBox& c, double d) { Call(c, "clear_depth", [&](softgl::Context& gl) { gl.ClearDepth(d); }); })
       .def("clear_stencil", [](ContextBox& c, int s) { Call(c, "clear_stencil", [&](softgl::Context& gl) { gl.ClearStencil(s); }); })
       .def("clear", [](ContextBox& c, softgl::Bitfield mask) { Call(c, "clear", [&](softgl::Context& gl) { gl.Clear(mask); }); })
-      .def("pixel_store", [](ContextBox& c, softgl::Enum pname, int value) { Call(c, "pixel_store", [&](softgl::Context& gl) { gl.PixelStore(pname, value); }); })
+      // (No pixel_store: tex_image_2d and read_pixels lay the pixels out as their arrays are, rows packed tight; a
+      // row length or skip set from Python would make them read or write past the array.)
       // Draws (recorded; rendered by finish, a read back or a query)
       .def("draw_arrays", [](ContextBox& c, softgl::Enum mode, int first, int count) { Call(c, "draw_arrays", [&](softgl::Context& gl) { gl.DrawArrays(mode, first, count); }); },
            py::arg("mode"), py::arg("first"), py::arg("count"))

@@ -98,6 +98,10 @@ def test_read_pixels_rows_and_types():
     assert floats[5, 0, 1] == pytest.approx(128 / 255)
     depth = ctx.read_pixels(format=gl.DEPTH_COMPONENT, type=gl.FLOAT)
     assert depth.shape == (6, 8) and (depth == 1.0).all()
+    # A rectangle inside: x, y from the bottom left as in OpenGL, rows packed tight (3 RGB bytes a pixel, no padding).
+    part = ctx.read_pixels(2, 1, 5, 3, format=gl.RGB)
+    assert part.shape == (3, 5, 3)
+    assert np.array_equal(part, image[6 - (1 + 3):6 - 1, 2:7, :3])  # rows y = 1 .. 3 from the bottom
 
 
 def test_gl_errors_raise_with_their_names():
