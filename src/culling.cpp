@@ -3,6 +3,7 @@
 
 #include "rasterizer.h"
 #include "simd.h"
+#include "snap_wide.h"
 #include "wide.h"
 
 namespace softgl::detail {
@@ -67,19 +68,9 @@ SOFTGL_WIDE void JudgeLanes(const TriangleGroup& g, const CullState& st, int l0,
       default: nothing = nothing | ~front; break;
     }
   }
-  // Snapped to 1/256 pixel, rounded to nearest even: x * 256 is exact in float, and adding then subtracting
-  // 1.5 * 2^23 rounds it to an integer as llrint does, for |x * 256| < 2^22.
-  constexpr float kRound = 12582912.0f;  // 1.5 * 2^23
+  // Snapped to 1/256 pixel as the rasterizer snaps, exact in range (the lanes out of range are not marked).
   I exact = ~I{}, X[3], Y[3];
-  for (int k = 0; k < 3; ++k) {
-    F sx = x[k] * 256.0f, sy = y[k] * 256.0f;
-    const I in_range = I(sx < 4194304.0f) & I(sx > -4194304.0f) & I(sy < 4194304.0f) & I(sy > -4194304.0f);
-    exact = exact & in_range;
-    sx = F(I(sx) & in_range);  // 0 in the lanes out of range (or NaN), which are not marked: no conversion overflows
-    sy = F(I(sy) & in_range);
-    X[k] = __builtin_convertvector((sx + kRound) - kRound, I);
-    Y[k] = __builtin_convertvector((sy + kRound) - kRound, I);
-  }
+  for (int k = 0; k < 3; ++k) exact = exact & SnapLanes<W>(x[k], y[k], X[k], Y[k]);
   // Lane-wise minimum and maximum, by masks (a comparison gives all bits set where it holds).
   auto min = [](I a, I b) SOFTGL_WIDE_LAMBDA { return (a & (a < b)) | (b & ~(a < b)); };
   auto max = [](I a, I b) SOFTGL_WIDE_LAMBDA { return (a & (a > b)) | (b & ~(a > b)); };

@@ -17,6 +17,7 @@
 
 #include "hierarchical_depth.h"
 #include "simd.h"
+#include "snap_wide.h"
 #include "wide.h"
 
 namespace softgl::detail {
@@ -701,43 +702,54 @@ void RasterizeTriangle(const VertexView& v0, const VertexView& v1, const VertexV
 
 namespace {
 
-void TriangleQuads(const VertexView& v0, const VertexView& v1, const VertexView& v2, bool front_facing,
-                   const RasterTarget& target, BlockBuffer& blocks, const BlockSink& sink) {
+// A filled triangle set up for coverage: what RasterizeTriangle computes of it before any pixel is tested.
+struct TriangleSetup {
+  const float* var[3];       // the vertices' varyings, counter-clockwise (y up): the interior is left of every edge
+  std::int64_t X[3], Y[3];   // the vertices snapped to the subpixel grid, in that order
+  std::int64_t area;         // twice the snapped area (> 0)
+  std::int64_t minX, maxX, minY, maxY;
+  std::int64_t px0, px1, py0, py1;  // the pixels whose centres (samples) the box holds, cut to the bounds
+  float x0, y0;              // vertex 0's unsnapped position, the planes' origin
+  float dx1, dy1, dx2, dy2;  // vertices 1 and 2 less vertex 0 (snapped where float rounding disagrees on the area)
+  float inv_det;
+  Plane z, oow;              // depth (with the polygon offset) and 1/w
+  // Single-sampled: the triangle's centres lie in one 8x8 region from the box's first quad, and `edges` holds its
+  // three edges there (RegionCoverage's c00, sx, sy).
+  bool small = false;
+  std::int32_t c00[3], sx[3], sy[3];
+};
+
+// The set-up of triangle v0, v1, v2 with polygon offset `depth_offset`; false when it draws nothing (no snapped
+// area, beyond the rasterizer's range, or no pixel centre in its box).
+bool SetUpTriangle(const VertexView& v0, const VertexView& v1, const VertexView& v2, float depth_offset,
+                   const RasterTarget& target, TriangleSetup& s) {
   const VertexView* v[3] = {&v0, &v1, &v2};
-  std::int64_t X[3], Y[3];
+  std::int64_t* X = s.X;
+  std::int64_t* Y = s.Y;
   const glm::vec4* const pos[3] = {&v0.win, &v1.win, &v2.win};
-  if (!Snap(pos, X, Y)) return;
+  if (!Snap(pos, X, Y)) return false;
   std::int64_t area = SnappedArea(X, Y);
-  if (area == 0) return;
+  if (area == 0) return false;
   if (area < 0) {  // make the vertex order counter-clockwise (y up): the interior is left of every edge
     std::swap(v[1], v[2]);
     std::swap(X[1], X[2]);
     std::swap(Y[1], Y[2]);
     area = -area;
   }
-
-  // Edge i runs from vertex i to vertex i+1; E(p) = A (px - Xa) + B (py - Ya) is > 0 inside.
-  std::int64_t A[3], B[3], C[3];
-  for (int i = 0; i < 3; ++i) {
-    const int j = (i + 1) % 3;
-    const std::int64_t dx = X[j] - X[i], dy = Y[j] - Y[i];
-    A[i] = -dy;
-    B[i] = dx;
-    // E at the origin of the fixed-point grid, with the tie rule folded in: left and bottom edges own centres
-    // that lie exactly on them; for the others, E must be strictly positive.
-    const bool owns_ties = dy < 0 || (dy == 0 && dx > 0);
-    C[i] = -A[i] * X[i] - B[i] * Y[i] - (owns_ties ? 0 : 1);
-  }
+  s.area = area;
+  for (int k = 0; k < 3; ++k) s.var[k] = v[k]->var;
 
   // Pixel range whose centres (samples) lie in the snapped bounding box, clipped to the target bounds.
-  const std::int64_t minX = std::min({X[0], X[1], X[2]}), maxX = std::max({X[0], X[1], X[2]});
-  const std::int64_t minY = std::min({Y[0], Y[1], Y[2]}), maxY = std::max({Y[0], Y[1], Y[2]});
+  s.minX = std::min({X[0], X[1], X[2]});
+  s.maxX = std::max({X[0], X[1], X[2]});
+  s.minY = std::min({Y[0], Y[1], Y[2]});
+  s.maxY = std::max({Y[0], Y[1], Y[2]});
   const SampleSpan& span = SampleSpan::Of(target.samples);
-  const std::int64_t px0 = std::max<std::int64_t>(FirstAt(minX, span.x1), target.bounds.x0);
-  const std::int64_t px1 = std::min<std::int64_t>(LastAt(maxX, span.x0), target.bounds.x1 - 1);
-  const std::int64_t py0 = std::max<std::int64_t>(FirstAt(minY, span.y1), target.bounds.y0);
-  const std::int64_t py1 = std::min<std::int64_t>(LastAt(maxY, span.y0), target.bounds.y1 - 1);
-  if (px0 > px1 || py0 > py1) return;
+  s.px0 = std::max<std::int64_t>(FirstAt(s.minX, span.x1), target.bounds.x0);
+  s.px1 = std::min<std::int64_t>(LastAt(s.maxX, span.x0), target.bounds.x1 - 1);
+  s.py0 = std::max<std::int64_t>(FirstAt(s.minY, span.y1), target.bounds.y0);
+  s.py1 = std::min<std::int64_t>(LastAt(s.maxY, span.y0), target.bounds.y1 - 1);
+  if (s.px0 > s.px1 || s.py0 > s.py1) return false;
 
   // Interpolation planes from the unsnapped float positions, relative to vertex 0.
   const float x0 = v[0]->win.x, y0 = v[0]->win.y;
@@ -756,23 +768,60 @@ void TriangleQuads(const VertexView& v0, const VertexView& v1, const VertexView&
     const float da1 = a1 - a0, da2 = a2 - a0;
     return Plane{a0, (da1 * dy2 - da2 * dy1) * inv_det, (da2 * dx1 - da1 * dx2) * inv_det};
   };
+  s.x0 = x0;
+  s.y0 = y0;
+  s.dx1 = dx1;
+  s.dy1 = dy1;
+  s.dx2 = dx2;
+  s.dy2 = dy2;
+  s.inv_det = inv_det;
+  s.z = make_plane(v[0]->win.z, v[1]->win.z, v[2]->win.z);
+  s.z.a0 += depth_offset;
+  s.oow = make_plane(v[0]->win.w, v[1]->win.w, v[2]->win.w);
+
+  // A small triangle (most of a detailed model's): all its centres in one region even before the bounds cut it,
+  // so its vertices lie within a few pixels and every edge's values there fit 32 bits.
+  s.small = target.samples == 1 && LastCentre(s.maxX) - (FirstCentre(s.minX) & ~std::int64_t(1)) < 8 &&
+            LastCentre(s.maxY) - (FirstCentre(s.minY) & ~std::int64_t(1)) < 8;
+  if (s.small) {
+    const std::int64_t qx = s.px0 & ~std::int64_t(1), qy = s.py0 & ~std::int64_t(1);
+    for (int i = 0; i < 3; ++i) {
+      const int j = (i + 1) % 3;
+      const std::int64_t dx = X[j] - X[i], dy = Y[j] - Y[i];
+      const bool owns_ties = dy < 0 || (dy == 0 && dx > 0);  // RasterizeTriangle's edges, below
+      s.c00[i] = std::int32_t(-dy * (qx * kOne + kHalf - X[i]) + dx * (qy * kOne + kHalf - Y[i]) - (owns_ties ? 0 : 1));
+      s.sx[i] = std::int32_t(-dy * kOne);
+      s.sy[i] = std::int32_t(dx * kOne);
+    }
+  }
+  return true;
+}
+
+// Coverage of a set-up triangle, its quads into `blocks`.
+void CoverTriangle(const TriangleSetup& s, bool front_facing, const RasterTarget& target, BlockBuffer& blocks,
+                   const BlockSink& sink) {
+  const float* const* var = s.var;
+  const std::int64_t* X = s.X;
+  const std::int64_t* Y = s.Y;
+  const std::int64_t px0 = s.px0, px1 = s.px1, py0 = s.py0, py1 = s.py1;
+  const std::int64_t minX = s.minX, maxX = s.maxX, minY = s.minY, maxY = s.maxY;
+  const float x0 = s.x0, y0 = s.y0, dx1 = s.dx1, dy1 = s.dy1, dx2 = s.dx2, dy2 = s.dy2, inv_det = s.inv_det;
   const int nvar = target.nvar;
   TrianglePlanes planes;  // position and depth now; the varyings' planes once a quad is emitted
   planes.x0 = x0;
   planes.y0 = y0;
   planes.nvar = nvar;
-  planes.z = make_plane(v[0]->win.z, v[1]->win.z, v[2]->win.z);
-  planes.z.a0 += target.depth_offset;
+  planes.z = s.z;
+  planes.oow = s.oow;
   // Hierarchical depth: a triangle whose depths over its box cannot pass the depth test there is dropped now.
   HierarchicalDepth* const hz = target.depth_bounds;
   if (hz && HiddenTriangle(*hz, planes.z, x0, y0, int(px0), int(py0), int(px1), int(py1))) return;
-  planes.oow = make_plane(v[0]->win.w, v[1]->win.w, v[2]->win.w);
   // The varyings' planes four at a time, each lane make_plane's operations in its order.
   auto varying_planes = [&](TrianglePlanes& p) {
     using F4 = V<4>::F;
     alignas(16) float a[3][kMaxVaryingFloats + 4];
     for (int k = 0; k < 3; ++k) {
-      if (nvar > 0) std::memcpy(a[k], v[k]->var, sizeof(float) * std::size_t(nvar));  // (var may be null)
+      if (nvar > 0) std::memcpy(a[k], var[k], sizeof(float) * std::size_t(nvar));  // (var may be null)
       std::memset(a[k] + nvar, 0, sizeof(float) * 4);  // the last group's unused lanes
     }
     for (int i = 0; i < nvar; i += 4) {
@@ -795,14 +844,6 @@ void TriangleQuads(const VertexView& v0, const VertexView& v1, const VertexView&
   // pixel-by-pixel walk; quads come out region by region (each pixel of a triangle once, so the order does not
   // change the image).
   constexpr int kRegion = 8;
-  std::int64_t step_x[3], step_y[3];  // E(px + 1) - E(px), E(py + 1) - E(py)
-  for (int e = 0; e < 3; ++e) {
-    step_x[e] = A[e] * kOne;
-    step_y[e] = B[e] * kOne;
-  }
-  auto edge_at = [&](int e, std::int64_t px, std::int64_t py) {
-    return A[e] * (px * kOne + kHalf) + B[e] * (py * kOne + kHalf) + C[e];
-  };
   const Rect& bounds = target.bounds;
   static const CoverageFn region_coverage = SOFTGL_CHOOSE(RegionCoverage);
   PlanesEntry entry;
@@ -821,7 +862,45 @@ void TriangleQuads(const VertexView& v0, const VertexView& v1, const VertexView&
   // Regions start at the first quad of the box (quads are at even pixels; a block takes quads anywhere), so that a
   // triangle of at most 8x8 pixel centres is one region wherever it lies.
   const std::int64_t qx_first = px0 & ~std::int64_t(1), qy_first = py0 & ~std::int64_t(1);
+  if (s.small) {
+    // A small triangle: one coverage test of the three edges, cut to the box; no corner tests.
+    RegionEdges edges;
+    edges.count = 3;
+    for (int e = 0; e < 3; ++e) {
+      edges.c00[e] = s.c00[e];
+      edges.sx[e] = s.sx[e];
+      edges.sy[e] = s.sy[e];
+    }
+    edges.row0 = 0;
+    edges.row1 = int(py1 - qy_first) >> 1;
+    const std::uint64_t cover = region_coverage(edges) & RegionRect(int(px0 - qx_first), int(px1 - qx_first) + 1,
+                                                                    int(py0 - qy_first), int(py1 - qy_first) + 1);
+    emit_region(int(qx_first), int(qy_first), cover);
+    return;
+  }
+
+  // Edge i runs from vertex i to vertex i+1; E(p) = A (px - Xa) + B (py - Ya) is > 0 inside.
+  std::int64_t A[3], B[3], C[3];
+  for (int i = 0; i < 3; ++i) {
+    const int j = (i + 1) % 3;
+    const std::int64_t dx = X[j] - X[i], dy = Y[j] - Y[i];
+    A[i] = -dy;
+    B[i] = dx;
+    // E at the origin of the fixed-point grid, with the tie rule folded in: left and bottom edges own centres
+    // that lie exactly on them; for the others, E must be strictly positive.
+    const bool owns_ties = dy < 0 || (dy == 0 && dx > 0);
+    C[i] = -A[i] * X[i] - B[i] * Y[i] - (owns_ties ? 0 : 1);
+  }
+  std::int64_t step_x[3], step_y[3];  // E(px + 1) - E(px), E(py + 1) - E(py)
+  for (int e = 0; e < 3; ++e) {
+    step_x[e] = A[e] * kOne;
+    step_y[e] = B[e] * kOne;
+  }
+  auto edge_at = [&](int e, std::int64_t px, std::int64_t py) {
+    return A[e] * (px * kOne + kHalf) + B[e] * (py * kOne + kHalf) + C[e];
+  };
   if (target.samples > 1) {
+    const SampleSpan& span = SampleSpan::Of(target.samples);
     const bool small = LastAt(maxX, span.x0) - (FirstAt(minX, span.x1) & ~std::int64_t(1)) < kRegion &&
                        LastAt(maxY, span.y0) - (FirstAt(minY, span.y1) & ~std::int64_t(1)) < kRegion;
     // One instance per sample count, so that the loops over the samples have a fixed length.
@@ -867,25 +946,6 @@ void TriangleQuads(const VertexView& v0, const VertexView& v1, const VertexView&
     if (target.samples == 2) rasterize(std::integral_constant<int, 2>{});
     else if (target.samples == 4) rasterize(std::integral_constant<int, 4>{});
     else rasterize(std::integral_constant<int, 8>{});
-    return;
-  }
-  if (LastCentre(maxX) - (FirstCentre(minX) & ~std::int64_t(1)) < kRegion &&
-      LastCentre(maxY) - (FirstCentre(minY) & ~std::int64_t(1)) < kRegion) {
-    // A small triangle (most of a detailed model's): all its centres in one region even before the bounds cut
-    // it, so its vertices lie within a few pixels and every edge's values there fit 32 bits. One coverage test of
-    // the three edges, cut to the box; no corner tests.
-    RegionEdges edges;
-    edges.count = 3;
-    for (int e = 0; e < 3; ++e) {
-      edges.c00[e] = std::int32_t(edge_at(e, qx_first, qy_first));
-      edges.sx[e] = std::int32_t(step_x[e]);
-      edges.sy[e] = std::int32_t(step_y[e]);
-    }
-    edges.row0 = 0;
-    edges.row1 = int(py1 - qy_first) >> 1;
-    const std::uint64_t cover = region_coverage(edges) & RegionRect(int(px0 - qx_first), int(px1 - qx_first) + 1,
-                                                                    int(py0 - qy_first), int(py1 - qy_first) + 1);
-    emit_region(int(qx_first), int(qy_first), cover);
     return;
   }
   // Edges no steeper than 2^26 (a side of at most 1024 pixels in x and y) keep a region's edge values in 32 bits.
@@ -973,6 +1033,173 @@ void TriangleQuads(const VertexView& v0, const VertexView& v1, const VertexView&
   }
 }
 
+void TriangleQuads(const VertexView& v0, const VertexView& v1, const VertexView& v2, bool front_facing,
+                   const RasterTarget& target, BlockBuffer& blocks, const BlockSink& sink) {
+  TriangleSetup s;
+  if (SetUpTriangle(v0, v1, v2, target.depth_offset, target, s)) CoverTriangle(s, front_facing, target, blocks, sink);
+}
+
+// SetUpTriangle for many triangles: each field of TriangleSetup as a row of kTriangleGroup lanes. `handled`: bit t
+// for each triangle set up here (its vertices snap exactly in 32 bits and its sides are shorter than 2^15
+// subpixels, so that every product below fits 32 bits); `drawn`: those of them that SetUpTriangle would not reject.
+struct SetUpRows {
+  std::uint32_t handled = 0, drawn = 0, swapped = 0;
+  std::int32_t X[3][kTriangleGroup], Y[3][kTriangleGroup];
+  std::int32_t area[kTriangleGroup];
+  std::int32_t minX[kTriangleGroup], maxX[kTriangleGroup], minY[kTriangleGroup], maxY[kTriangleGroup];
+  std::int32_t px0[kTriangleGroup], px1[kTriangleGroup], py0[kTriangleGroup], py1[kTriangleGroup];
+  float x0[kTriangleGroup], y0[kTriangleGroup], dx1[kTriangleGroup], dy1[kTriangleGroup], dx2[kTriangleGroup],
+      dy2[kTriangleGroup], inv_det[kTriangleGroup];
+  float z[3][kTriangleGroup], oow[3][kTriangleGroup];
+  std::uint32_t small = 0;
+  std::int32_t c00[3][kTriangleGroup], sx[3][kTriangleGroup], sy[3][kTriangleGroup];
+};
+
+// W lanes from l0 of SetUpTriangle's arithmetic, the same operations in the same order on each lane (float lanes
+// give the same bits; the integers are exact).
+template <int W>
+SOFTGL_WIDE void SetUpLanes(const TriangleQueue& in, const RasterTarget& target, int l0, SetUpRows& out) {
+  using F = typename V<W>::F;
+  using I = typename V<W>::I;
+  using U = typename V<W>::U;
+  auto select = [](I m, auto a, auto b) SOFTGL_WIDE_LAMBDA {
+    using T = decltype(a);
+    return T((I(a) & m) | (I(b) & ~m));
+  };
+  auto min = [&](I a, I b) SOFTGL_WIDE_LAMBDA { return select(a < b, a, b); };
+  auto max = [&](I a, I b) SOFTGL_WIDE_LAMBDA { return select(a > b, a, b); };
+  F x[3], y[3], z[3], w[3];
+  for (int k = 0; k < 3; ++k) {
+    x[k] = LoadVec<F>(in.x[k] + l0);
+    y[k] = LoadVec<F>(in.y[k] + l0);
+    z[k] = LoadVec<F>(in.z[k] + l0);
+    w[k] = LoadVec<F>(in.w[k] + l0);
+  }
+  I exact = ~I{}, X[3], Y[3];
+  for (int k = 0; k < 3; ++k) exact = exact & SnapLanes<W>(x[k], y[k], X[k], Y[k]);  // (Snap's values, in range)
+  auto short_side = [](I d) SOFTGL_WIDE_LAMBDA { return I(d < 32768) & I(d > -32768); };
+  const I handled = exact & short_side(X[1] - X[0]) & short_side(Y[1] - Y[0]) & short_side(X[2] - X[0]) &
+                    short_side(Y[2] - Y[0]);
+  // SnappedArea: each product below 2^30 in magnitude where handled (computed unsigned: the others may wrap).
+  const I signed_area = I(U(X[1] - X[0]) * U(Y[2] - Y[0]) - U(X[2] - X[0]) * U(Y[1] - Y[0]));
+  const I swap = signed_area < 0;  // counter-clockwise order: vertices 1 and 2 exchanged
+  const I area = select(swap, -signed_area, signed_area);
+  {
+    const I X1 = X[1], Y1 = Y[1];
+    X[1] = select(swap, X[2], X1);
+    X[2] = select(swap, X1, X[2]);
+    Y[1] = select(swap, Y[2], Y1);
+    Y[2] = select(swap, Y1, Y[2]);
+    const F f[4][2] = {{x[1], x[2]}, {y[1], y[2]}, {z[1], z[2]}, {w[1], w[2]}};
+    x[1] = select(swap, f[0][1], f[0][0]);
+    x[2] = select(swap, f[0][0], f[0][1]);
+    y[1] = select(swap, f[1][1], f[1][0]);
+    y[2] = select(swap, f[1][0], f[1][1]);
+    z[1] = select(swap, f[2][1], f[2][0]);
+    z[2] = select(swap, f[2][0], f[2][1]);
+    w[1] = select(swap, f[3][1], f[3][0]);
+    w[2] = select(swap, f[3][0], f[3][1]);
+  }
+  const I minX = min(min(X[0], X[1]), X[2]), maxX = max(max(X[0], X[1]), X[2]);
+  const I minY = min(min(Y[0], Y[1]), Y[2]), maxY = max(max(Y[0], Y[1]), Y[2]);
+  const SampleSpan& span = SampleSpan::Of(target.samples);
+  // FirstAt and LastAt, cut to the bounds.
+  const I px0 = max(-((std::int32_t(span.x1) - minX) >> kSubpixelBits), I{} + target.bounds.x0);
+  const I px1 = min((maxX - std::int32_t(span.x0)) >> kSubpixelBits, I{} + (target.bounds.x1 - 1));
+  const I py0 = max(-((std::int32_t(span.y1) - minY) >> kSubpixelBits), I{} + target.bounds.y0);
+  const I py1 = min((maxY - std::int32_t(span.y0)) >> kSubpixelBits, I{} + (target.bounds.y1 - 1));
+  const I drawn = handled & (area != 0) & (px0 <= px1) & (py0 <= py1);
+
+  // The planes, relative to vertex 0: from the float positions, or the snapped ones where float rounding
+  // disagrees with the exact area.
+  F dx1 = x[1] - x[0], dy1 = y[1] - y[0], dx2 = x[2] - x[0], dy2 = y[2] - y[0];
+  F det = dx1 * dy2 - dx2 * dy1;
+  const I bad = ~I(det > 0.0f);
+  const float kOneF = float(kOne);
+  dx1 = select(bad, __builtin_convertvector(X[1] - X[0], F) / kOneF, dx1);
+  dy1 = select(bad, __builtin_convertvector(Y[1] - Y[0], F) / kOneF, dy1);
+  dx2 = select(bad, __builtin_convertvector(X[2] - X[0], F) / kOneF, dx2);
+  dy2 = select(bad, __builtin_convertvector(Y[2] - Y[0], F) / kOneF, dy2);
+  det = select(bad, __builtin_convertvector(area, F) / float(kOne * kOne), det);
+  const F inv_det = 1.0f / det;
+  auto plane = [&](const F* a, float (*rows)[kTriangleGroup]) SOFTGL_WIDE_LAMBDA {
+    const F da1 = a[1] - a[0], da2 = a[2] - a[0];
+    StoreVec(rows[0] + l0, a[0]);
+    StoreVec(rows[1] + l0, (da1 * dy2 - da2 * dy1) * inv_det);
+    StoreVec(rows[2] + l0, (da2 * dx1 - da1 * dx2) * inv_det);
+  };
+  plane(z, out.z);
+  StoreVec(out.z[0] + l0, LoadVec<F>(out.z[0] + l0) + LoadVec<F>(in.depth_offset + l0));
+  plane(w, out.oow);
+
+  // A small triangle's edges at the box's first quad (SetUpTriangle's), exact where small.
+  I small{};
+  if (target.samples == 1) {
+    auto first_centre = [](I lo) SOFTGL_WIDE_LAMBDA { return -((std::int32_t(kHalf) - lo) >> kSubpixelBits); };
+    auto last_centre = [](I hi) SOFTGL_WIDE_LAMBDA { return (hi - std::int32_t(kHalf)) >> kSubpixelBits; };
+    small = drawn & I(last_centre(maxX) - (first_centre(minX) & ~1) < 8) &
+            I(last_centre(maxY) - (first_centre(minY) & ~1) < 8);
+    const U qx = U(px0 & ~1) * std::uint32_t(kOne) + std::uint32_t(kHalf);
+    const U qy = U(py0 & ~1) * std::uint32_t(kOne) + std::uint32_t(kHalf);
+    for (int i = 0; i < 3; ++i) {
+      const int j = (i + 1) % 3;
+      const I dx = X[j] - X[i], dy = Y[j] - Y[i];
+      const I owns_ties = I(dy < 0) | (I(dy == 0) & I(dx > 0));
+      const U value = U(-dy) * (qx - U(X[i])) + U(dx) * (qy - U(Y[i])) - U(~owns_ties & 1);
+      StoreVec(out.c00[i] + l0, I(value));
+      StoreVec(out.sx[i] + l0, I(U(-dy) * std::uint32_t(kOne)));
+      StoreVec(out.sy[i] + l0, I(U(dx) * std::uint32_t(kOne)));
+    }
+  }
+
+  out.handled |= MaskToBits<W>(handled, l0);
+  out.drawn |= MaskToBits<W>(drawn, l0);
+  out.swapped |= MaskToBits<W>(swap, l0);
+  out.small |= MaskToBits<W>(small, l0);
+  for (int k = 0; k < 3; ++k) {
+    StoreVec(out.X[k] + l0, X[k]);
+    StoreVec(out.Y[k] + l0, Y[k]);
+  }
+  StoreVec(out.area + l0, area);
+  StoreVec(out.minX + l0, minX);
+  StoreVec(out.maxX + l0, maxX);
+  StoreVec(out.minY + l0, minY);
+  StoreVec(out.maxY + l0, maxY);
+  StoreVec(out.px0 + l0, px0);
+  StoreVec(out.px1 + l0, px1);
+  StoreVec(out.py0 + l0, py0);
+  StoreVec(out.py1 + l0, py1);
+  StoreVec(out.x0 + l0, x[0]);
+  StoreVec(out.y0 + l0, y[0]);
+  StoreVec(out.dx1 + l0, dx1);
+  StoreVec(out.dy1 + l0, dy1);
+  StoreVec(out.dx2 + l0, dx2);
+  StoreVec(out.dy2 + l0, dy2);
+  StoreVec(out.inv_det + l0, inv_det);
+}
+
+template <int W>
+SOFTGL_WIDE void SetUpGroup(const TriangleQueue& in, int n, const RasterTarget& target, SetUpRows& out) {
+  for (int l0 = 0; l0 < n; l0 += W) SetUpLanes<W>(in, target, l0, out);
+  const std::uint32_t used = (std::uint32_t(1) << n) - 1;
+  out.handled &= used;
+  out.drawn &= used;
+}
+
+using SetUpGroupFn = void (*)(const TriangleQueue&, int, const RasterTarget&, SetUpRows&);
+void SetUpGroupBase(const TriangleQueue& in, int n, const RasterTarget& t, SetUpRows& out) {
+  SetUpGroup<4>(in, n, t, out);
+}
+#if defined(SOFTGL_HAS_DISPATCH)
+SOFTGL_TARGET_AVX2 void SetUpGroupAvx2(const TriangleQueue& in, int n, const RasterTarget& t, SetUpRows& out) {
+  SetUpGroup<8>(in, n, t, out);
+}
+// 8 lanes on AVX-512 too, with its instruction set, as the coverage kernels.
+SOFTGL_TARGET_AVX512 void SetUpGroupAvx512(const TriangleQueue& in, int n, const RasterTarget& t, SetUpRows& out) {
+  SetUpGroup<8>(in, n, t, out);
+}
+#endif
+
 // A rectangle with corners p[0..3] in order, rasterized as the two triangles (p0, p1, p2) and (p0, p2, p3): the fill
 // rule gives each sample on their shared diagonal to one of them, and the rectangle's sides own the samples on them
 // as a triangle's edges do. Each corner carries the varyings `var[k]`.
@@ -985,6 +1212,64 @@ void RasterizeRectangle(const glm::vec4 (&p)[4], const float* const (&var)[4], b
 }
 
 }  // namespace
+
+void RasterizeTriangles(TriangleQueue& q, const RasterTarget& target, BlockBuffer& blocks, const BlockSink& sink) {
+  const int n = q.count;
+  q.count = 0;
+  if (n <= 0) return;
+  if (blocks.points) EndPoints(blocks, sink);
+  for (int t = n; t < kTriangleGroup; ++t)  // (the vectors' unused lanes: any finite values)
+    for (int k = 0; k < 3; ++k) q.x[k][t] = q.y[k][t] = q.z[k][t] = q.w[k][t] = q.depth_offset[t] = 0.0f;
+  static const SetUpGroupFn set_up = SOFTGL_CHOOSE(SetUpGroup);
+  SetUpRows rows;
+  set_up(q, n, target, rows);
+  for (int t = 0; t < n; ++t) {
+    TriangleSetup s;
+    if (rows.handled >> t & 1u) {
+      if (!(rows.drawn >> t & 1u)) continue;
+      const bool swapped = rows.swapped >> t & 1u;
+      s.var[0] = q.var[0][t];
+      s.var[1] = q.var[swapped ? 2 : 1][t];
+      s.var[2] = q.var[swapped ? 1 : 2][t];
+      s.px0 = rows.px0[t];
+      s.px1 = rows.px1[t];
+      s.py0 = rows.py0[t];
+      s.py1 = rows.py1[t];
+      s.x0 = rows.x0[t];
+      s.y0 = rows.y0[t];
+      s.dx1 = rows.dx1[t];
+      s.dy1 = rows.dy1[t];
+      s.dx2 = rows.dx2[t];
+      s.dy2 = rows.dy2[t];
+      s.inv_det = rows.inv_det[t];
+      s.z = Plane{rows.z[0][t], rows.z[1][t], rows.z[2][t]};
+      s.oow = Plane{rows.oow[0][t], rows.oow[1][t], rows.oow[2][t]};
+      s.small = rows.small >> t & 1u;
+      if (s.small) {  // what the small triangle's coverage reads
+        for (int e = 0; e < 3; ++e) {
+          s.c00[e] = rows.c00[e][t];
+          s.sx[e] = rows.sx[e][t];
+          s.sy[e] = rows.sy[e][t];
+        }
+      } else {  // and a larger one's
+        for (int k = 0; k < 3; ++k) {
+          s.X[k] = rows.X[k][t];
+          s.Y[k] = rows.Y[k][t];
+        }
+        s.area = rows.area[t];
+        s.minX = rows.minX[t];
+        s.maxX = rows.maxX[t];
+        s.minY = rows.minY[t];
+        s.maxY = rows.maxY[t];
+      }
+    } else {
+      VertexView v[3];
+      for (int k = 0; k < 3; ++k) v[k] = VertexView(glm::vec4(q.x[k][t], q.y[k][t], q.z[k][t], q.w[k][t]), q.var[k][t]);
+      if (!SetUpTriangle(v[0], v[1], v[2], q.depth_offset[t], target, s)) continue;
+    }
+    CoverTriangle(s, q.front_facing[t], target, blocks, sink);
+  }
+}
 
 void RasterizeLine(const WindowVertex& a, const WindowVertex& b, bool front_facing, const RasterTarget& target,
                    BlockBuffer& blocks, const BlockSink& sink) {

@@ -71,6 +71,40 @@ Rect TriangleCentreBox(const glm::vec4& a, const glm::vec4& b, const glm::vec4& 
 void RasterizeTriangle(const VertexView& v0, const VertexView& v1, const VertexView& v2, bool front_facing,
                        const RasterTarget& target, BlockBuffer& blocks, const BlockSink& sink);
 
+inline constexpr int kTriangleGroup = 16;
+
+/// Filled triangles waiting to be rasterized together (RasterizeTriangles), in order: their vertices' window
+/// positions as rows of kTriangleGroup lanes, where their varyings are (which must stay there), their polygon
+/// offsets and facings.
+struct TriangleQueue {
+  int count = 0;
+  float x[3][kTriangleGroup], y[3][kTriangleGroup], z[3][kTriangleGroup], w[3][kTriangleGroup];
+  const float* var[3][kTriangleGroup];
+  float depth_offset[kTriangleGroup];
+  bool front_facing[kTriangleGroup];
+  /// Adds a triangle; true when the queue is then full.
+  bool Add(const VertexView& a, const VertexView& b, const VertexView& c, float offset, bool front) {
+    const int t = count++;
+    const VertexView* v[3] = {&a, &b, &c};
+    for (int k = 0; k < 3; ++k) {
+      x[k][t] = v[k]->win.x;
+      y[k][t] = v[k]->win.y;
+      z[k][t] = v[k]->win.z;
+      w[k][t] = v[k]->win.w;
+      var[k][t] = v[k]->var;
+    }
+    depth_offset[t] = offset;
+    front_facing[t] = front;
+    return count == kTriangleGroup;
+  }
+};
+
+/// RasterizeTriangle on each triangle of the queue, in order, with target.depth_offset taken from each: the same
+/// quads in the same order. Their set-up (snapping, orientation, pixel box, the depth and 1/w planes, a small
+/// triangle's edges) is computed several triangles per instruction, for those whose vertices lie within 16384
+/// pixels of the origin and whose sides are shorter than 128 pixels; the others one by one. Empties the queue.
+void RasterizeTriangles(TriangleQueue& queue, const RasterTarget& target, BlockBuffer& blocks, const BlockSink& sink);
+
 void RasterizeLine(const WindowVertex& a, const WindowVertex& b, bool front_facing, const RasterTarget& target,
                    BlockBuffer& blocks, const BlockSink& sink);
 

@@ -425,6 +425,9 @@ void Frame::RenderTile(int tile, TileScratch& scratch) const {
     if (target_.color[o].Present()) outputs = o + 1;
   const int simd = int(CpuSimdLevel());
   WindowVertex v[3];
+  // Filled triangles wait here to be set up many at a time (RasterizeTriangles), in their order; any other
+  // primitive and the end of the draw let them go first.
+  TriangleQueue queue;
   FragmentOpsPlan plan;  // for the operations at `planned`
   const FragmentOpsState* planned = nullptr;
   const BinnedBatch* shared = nullptr;  // the shared batch `cursor` walks
@@ -510,12 +513,14 @@ void Frame::RenderTile(int tile, TileScratch& scratch) const {
       return [&](const BinnedPrimitive& p, const float* vertices) {
         if (counts_) ++(*counts_)[std::size_t(tile)];  // (each tile is rendered by one thread)
         if (lazy && lazy_tile->cleared) lazy->Store(target_, tile, kAllBuffers);  // the first primitive here
-        rt.depth_offset = p.depth_offset;
         if (p.kind == PrimitiveKind::kTriangle) {  // read in place
-          RasterizeTriangle(batch.View(vertices, 0), batch.View(vertices, 1), batch.View(vertices, 2),
-                            p.front_facing, rt, blocks, sink);
+          if (queue.Add(batch.View(vertices, 0), batch.View(vertices, 1), batch.View(vertices, 2), p.depth_offset,
+                        p.front_facing))
+            RasterizeTriangles(queue, rt, blocks, sink);
           return;
         }
+        RasterizeTriangles(queue, rt, blocks, sink);
+        rt.depth_offset = p.depth_offset;
         for (int k = 0; k < int(p.kind); ++k) batch.Vertex(vertices, k, v[k]);
         if (p.kind == PrimitiveKind::kLine)
           RasterizeLine(v[0], v[1], p.front_facing, rt, blocks, sink);
@@ -540,6 +545,7 @@ void Frame::RenderTile(int tile, TileScratch& scratch) const {
         batch.ForEachInTile(tile, rect, rasterize(batch));
       }
     }
+    RasterizeTriangles(queue, rt, blocks, sink);
     sink.Flush(blocks);
     if (hz && draw.ops.depth_test && draw.ops.depth_write) hz->Wrote(draw.ops.depth_func);
   }

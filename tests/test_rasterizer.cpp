@@ -1,11 +1,15 @@
 // Rasterization: the fill rule (no gaps, no double hits, Mesa's tie convention), bounds, lines and points.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <cstring>
+#include <limits>
 #include <memory>
 #include <random>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "helpers.h"
 #include "rasterizer.h"
@@ -435,5 +439,116 @@ TEST_CASE("lines: varyings follow OpenGL's projection parameter", "[rasterizer]"
     const glm::vec2 d(20.0f, 12.0f);
     const float t = glm::dot(p - glm::vec2(0.5f, 0.5f), d) / glm::dot(d, d);
     CHECK(value == Approx(t).margin(1e-5));
+  }
+}
+
+namespace {
+
+// Every block a sink receives, as words: facing, quads, positions, coverage (and each sample's), gl_FragCoord and
+// the varyings of every lane (interpolated here), compared bit for bit.
+struct BlockRecorder {
+  std::vector<std::uint32_t> words;
+  static void Flush(void* user, BlockBuffer& blocks) {
+    auto& w = static_cast<BlockRecorder*>(user)->words;
+    InterpolateVaryings(blocks);
+    auto bits = [&](float f) {
+      std::uint32_t u;
+      std::memcpy(&u, &f, sizeof u);
+      w.push_back(u);
+    };
+    for (int b = 0; b < blocks.count; ++b) {
+      w.push_back(blocks.front_facing);
+      w.push_back(std::uint32_t(blocks.quads[b]));
+      w.push_back(blocks.live[b]);
+      for (int s = 0; blocks.samples > 1 && s < blocks.samples; ++s) w.push_back(blocks.sample_live[b][s]);
+      for (int q = 0; q < 4; ++q) {
+        w.push_back(std::uint32_t(blocks.qx[b][q]));
+        w.push_back(std::uint32_t(blocks.qy[b][q]));
+      }
+      for (int c = 0; c < 4; ++c)
+        for (int l = 0; l < softgl::kLanes; ++l) bits(blocks.frag_coord[b][c][l]);
+      const float* v = blocks.Varyings(b);
+      for (int i = 0; i < blocks.nvar * softgl::kLanes; ++i) bits(v[i]);
+    }
+  }
+  BlockSink Sink() { return {&BlockRecorder::Flush, this}; }
+};
+
+}  // namespace
+
+TEST_CASE("triangles rasterized in groups give the quads and values of one at a time", "[rasterizer]") {
+  // RasterizeTriangles sets up many triangles per instruction where their coordinates allow and falls back to the
+  // one-triangle set-up elsewhere: small, medium and large triangles, slivers whose float area disagrees with the
+  // snapped one, vertices on pixel centres (ties), far from the origin, beyond the range, of no area, NaN.
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+  const float sizes[] = {0.4f, 3.0f, 7.0f, 12.0f, 60.0f, 127.0f, 200.0f, 3000.0f};
+  constexpr int kVar = 3;
+  std::vector<float> vars;
+  for (int samples : {1, 4}) {
+    std::vector<WindowVertex> v;
+    std::vector<float> offsets;
+    std::vector<bool> front;
+    for (int i = 0; i < 4000; ++i) {
+      const int kind = i % 11;
+      const float size = sizes[i % 8];
+      glm::vec2 a(unit(rng) * 300.0f - 20.0f, unit(rng) * 220.0f - 20.0f);
+      if (kind == 9) a += glm::vec2(16384.0f - 200.0f * unit(rng), 0.0f);  // at the edge of the exact range
+      glm::vec2 p[3] = {a, a + size * glm::vec2(unit(rng) - 0.5f, unit(rng) - 0.5f) * 2.0f,
+                        a + size * glm::vec2(unit(rng) - 0.5f, unit(rng) - 0.5f) * 2.0f};
+      if (kind == 1)  // on pixel centres
+        for (auto& q : p) q = glm::floor(q) + 0.5f;
+      if (kind == 2) p[2] = p[0] + (p[1] - p[0]) * 0.37f + glm::vec2(1e-4f, -1e-4f) * unit(rng);  // a sliver
+      if (kind == 3) p[2] = p[1];  // no area
+      if (kind == 4 && i % 3 == 0) p[1].x = std::numeric_limits<float>::quiet_NaN();
+      if (kind == 5) p[2].y = 1e6f * (unit(rng) - 0.5f);  // beyond 16384 pixels
+      for (int k = 0; k < 3; ++k) {
+        WindowVertex w{};
+        w.win = glm::vec4(p[k], unit(rng), 0.2f + unit(rng));
+        for (int j = 0; j < kVar; ++j) w.var[j] = unit(rng) * 10.0f - 5.0f;
+        v.push_back(w);
+      }
+      offsets.push_back(kind == 6 ? unit(rng) * 0.01f : 0.0f);
+      front.push_back(unit(rng) < 0.7f);
+    }
+    const int count = int(offsets.size());
+    auto run = [&](bool grouped) {
+      BlockRecorder rec;
+      auto blocks = std::make_unique<BlockBuffer>();
+      blocks->samples = samples;
+      RasterTarget target;
+      target.bounds = Rect{3, 5, 250, 190};
+      target.nvar = kVar;
+      target.samples = samples;
+      const BlockSink sink = rec.Sink();
+      std::mt19937 sizes_rng(3);
+      for (int t = 0; t < count;) {
+        const int n = std::min(count - t, 1 + int(sizes_rng() % kTriangleGroup));  // groups of every size
+        if (grouped) {
+          TriangleQueue q;
+          for (int k = t; k < t + n; ++k)
+            q.Add(v[std::size_t(3 * k)], v[std::size_t(3 * k + 1)], v[std::size_t(3 * k + 2)], offsets[std::size_t(k)],
+                  front[std::size_t(k)]);
+          RasterizeTriangles(q, target, *blocks, sink);
+          CHECK(q.count == 0);
+        } else {
+          for (int k = t; k < t + n; ++k) {
+            target.depth_offset = offsets[std::size_t(k)];
+            RasterizeTriangle(v[std::size_t(3 * k)], v[std::size_t(3 * k + 1)], v[std::size_t(3 * k + 2)],
+                              front[std::size_t(k)], target, *blocks, sink);
+          }
+        }
+        t += n;
+      }
+      sink.Flush(*blocks);
+      return rec.words;
+    };
+    const std::vector<std::uint32_t> one = run(false), grouped = run(true);
+    INFO("samples " << samples);
+    CHECK(one.size() > 100000);
+    REQUIRE(one.size() == grouped.size());
+    // (The first difference, not the whole streams: their printout would be millions of words.)
+    const auto diff = std::mismatch(one.begin(), one.end(), grouped.begin());
+    CHECK(diff.first - one.begin() == std::ptrdiff_t(one.size()));
   }
 }
