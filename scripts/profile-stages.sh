@@ -21,9 +21,9 @@ rules = [
   ("front end", r"FetchAttribute|FetchVertices|ShadeVertices|Vertices(Avx512|Avx2|Base)|VertexLanes|Resolve|ClipCodes|ClipTriangle|ClipLine|ToWindow|SignedArea|AssemblePrimitives|AssembleRun|RecordChunk|RecordDraw|RecordPiece|PrimitiveRunner|ReadIndices|Intersect|IsFrontFacing|IsCulled|PolygonOffset|CoversNoPixelCentre|TriangleCentreBox|DrawsNothing|WindowPositions|JudgeGroup|JudgeTriangles|ContextState::Draw|Context::Draw|MakeView|Snapshot|MakeViewportTransform|WorkerPool"),
   ("binning", r"BinnedBatch::Add|BinnedBatch::Finish|TriangleBox|LineBox|PointBox|::Box\(|SharedBatch|NewBatches|ListLastDraw|Frame::AddDraw|Frame::List"),
   ("clears", r"RenderTarget::Clear"),
-  ("rasterization", r"Rasterize|RenderTile|BinnedBatch::Vertex|BinnedBatch::View|FragmentStage|RegionCoverage|FragCoord|VaryingsOfBlock|InterpolateVaryings|InterpolateFragCoords|AddSquare|AddQuad|EmitQuad|BlockSink"),
-  ("early depth test", r"EarlyDepth|EarlyBlock"),
-  ("fragment shader and texture sampling", r"ShadeBlocks|Blocks(Avx512|Avx2|Base)|BlockLanes|FragmentLanes|Textures::|SampleRepeat|FilterLevel|SampleFace|Fetch\(|Lambda|powf|__pow|expf|logf|sqrt"),
+  ("rasterization", r"Rasterize|TriangleQuads|CoverTriangle|SetUpTriangle|SetUpGroup|RenderTile|BinnedBatch::Vertex|BinnedBatch::View|FragmentStage|RegionCoverage|FragCoord|VaryingsOfBlock|InterpolateVaryings|InterpolateFragCoords|AddSquare|AddQuad|EmitQuad|BlockSink"),
+  ("early depth test", r"EarlyDepth|EarlyBlock|EarlyRange|HierarchicalDepth|HiddenTriangle|HiddenRegion"),
+  ("fragment shader and texture sampling", r"ShadeBlocks|Blocks(Avx512|Avx2|Base)|BlockLanes|FragmentLanes|Textures::|SampleTexel|SampleBlock|SampleRepeat|FilterLevel|SampleFace|Fetch\(|Lambda|powf|__pow|expf|logf|sqrt"),
   ("fragment operations", r"ApplyFragmentOps|BlockOps|Unorm8Blender|ColorBuffer::|FloatToUnorm8|detail::Blend"),
   ("memory copies, fills, page faults", r"memmove|memset|memcpy|page_fault|clear_page|do_anonymous_page|handle_mm_fault"),
 ]
