@@ -1218,7 +1218,8 @@ void RasterizeTriangles(TriangleQueue& q, const RasterTarget& target, BlockBuffe
   q.count = 0;
   if (n <= 0) return;
   if (blocks.points) EndPoints(blocks, sink);
-  for (int t = n; t < kTriangleGroup; ++t)  // (the vectors' unused lanes: any finite values)
+  // The unused lanes of the last vector set up (vectors of 4 or 8 lanes) get finite values.
+  for (int t = n, end = std::min(kTriangleGroup, (n + 7) & ~7); t < end; ++t)
     for (int k = 0; k < 3; ++k) q.x[k][t] = q.y[k][t] = q.z[k][t] = q.w[k][t] = q.depth_offset[t] = 0.0f;
   static const SetUpGroupFn set_up = SOFTGL_CHOOSE(SetUpGroup);
   SetUpRows rows;
