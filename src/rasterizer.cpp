@@ -659,25 +659,20 @@ Rect TriangleCentreBox(const glm::vec4& a, const glm::vec4& b, const glm::vec4& 
 }
 
 namespace {
-// Hierarchical depth's test of a triangle's box, when worth making (HierarchicalDepth::Worth). Out of line, so that
-// RasterizeTriangle's own code stays as the compiler lays it out without.
+// Hierarchical depth's test of a triangle's box, made when worth making (the caller asks HierarchicalDepth::Worth
+// first, inline: most triangles of a scene where few are hidden are not tested). Out of line, so that the coverage
+// step's own code stays as the compiler lays it out without.
 __attribute__((noinline)) bool HiddenTriangle(HierarchicalDepth& hz, const Plane& z, float x0, float y0, int px0,
                                               int py0, int px1, int py1) {
-  if (hz.Worth()) {
-    ++hz.triangles_tested;
-    const bool hidden = hz.Hides(z, x0, y0, px0, py0, px1, py1);
-    hz.Count(hidden);
-    if (hidden) {
-      ++hz.triangles_hidden;
-      return true;
-    }
-  }
-  return false;
+  ++hz.triangles_tested;
+  const bool hidden = hz.Hides(z, x0, y0, px0, py0, px1, py1);
+  hz.Count(hidden);
+  hz.triangles_hidden += hidden;
+  return hidden;
 }
 // The same test of an 8x8 region of a larger triangle.
 __attribute__((noinline)) bool HiddenRegion(HierarchicalDepth& hz, const Plane& z, float x0, float y0, int px0,
                                             int py0, int px1, int py1) {
-  if (!hz.Worth()) return false;
   ++hz.regions_tested;
   const bool hidden = hz.Hides(z, x0, y0, px0, py0, px1, py1);
   hz.Count(hidden);
@@ -815,7 +810,7 @@ void CoverTriangle(const TriangleSetup& s, bool front_facing, const RasterTarget
   planes.oow = s.oow;
   // Hierarchical depth: a triangle whose depths over its box cannot pass the depth test there is dropped now.
   HierarchicalDepth* const hz = target.depth_bounds;
-  if (hz && HiddenTriangle(*hz, planes.z, x0, y0, int(px0), int(py0), int(px1), int(py1))) return;
+  if (hz && hz->Worth() && HiddenTriangle(*hz, planes.z, x0, y0, int(px0), int(py0), int(px1), int(py1))) return;
   // The varyings' planes four at a time, each lane make_plane's operations in its order.
   auto varying_planes = [&](TrianglePlanes& p) {
     using F4 = V<4>::F;
@@ -973,7 +968,7 @@ void CoverTriangle(const TriangleSetup& s, bool front_facing, const RasterTarget
         corner_lo[e] = lo;
       }
       if (skip) continue;
-      if (hz && HiddenRegion(*hz, planes.z, x0, y0, int(std::max(rx, px0)), int(std::max(ry, py0)),
+      if (hz && hz->Worth() && HiddenRegion(*hz, planes.z, x0, y0, int(std::max(rx, px0)), int(std::max(ry, py0)),
                              int(std::min(rx + kRegion - 1, px1)), int(std::min(ry + kRegion - 1, py1))))
         continue;  // the region's pixels of the box lie behind what the tile holds there
       if (whole && rx >= bounds.x0 && rx + kRegion <= bounds.x1 && ry >= bounds.y0 && ry + kRegion <= bounds.y1) {
