@@ -697,30 +697,35 @@ void RasterizeTriangle(const VertexView& v0, const VertexView& v1, const VertexV
 
 namespace {
 
-// A filled triangle set up for coverage: what RasterizeTriangle computes of it before any pixel is tested.
-struct TriangleSetup {
-  const float* var[3];       // the vertices' varyings, counter-clockwise (y up): the interior is left of every edge
-  std::int64_t X[3], Y[3];   // the vertices snapped to the subpixel grid, in that order
-  std::int64_t area;         // twice the snapped area (> 0)
-  std::int64_t minX, maxX, minY, maxY;
-  std::int64_t px0, px1, py0, py1;  // the pixels whose centres (samples) the box holds, cut to the bounds
-  float x0, y0;              // vertex 0's unsnapped position, the planes' origin
-  float dx1, dy1, dx2, dy2;  // vertices 1 and 2 less vertex 0 (snapped where float rounding disagrees on the area)
-  float inv_det;
-  Plane z, oow;              // depth (with the polygon offset) and 1/w
-  // Single-sampled: the triangle's centres lie in one 8x8 region from the box's first quad, and `edges` holds its
-  // three edges there (RegionCoverage's c00, sx, sy).
-  bool small = false;
-  std::int32_t c00[3], sx[3], sy[3];
+// Filled triangles set up for coverage, up to kTriangleGroup of them as rows of lanes: what RasterizeTriangle
+// computes of a triangle before any pixel is tested. Written by the vector set-up (SetUpGroup) or lane by lane
+// (SetUpTriangle), read in place by the coverage step (CoverTriangle).
+struct SetUpRows {
+  static constexpr int N = kTriangleGroup;
+  // Bit t for triangle t: set up by SetUpGroup (`handled`: its values all fit 32 bits exactly), drawing something
+  // (`drawn`), vertices 1 and 2 exchanged for counter-clockwise order (`swapped`), small (below).
+  std::uint32_t handled = 0, drawn = 0, swapped = 0, small = 0;
+  const float* var[3][N];  // the vertices' varyings, counter-clockwise (y up): the interior is left of every edge
+  std::int64_t X[3][N], Y[3][N];  // the vertices snapped to the subpixel grid, in that order
+  std::int64_t area[N];           // twice the snapped area (> 0)
+  std::int64_t minX[N], maxX[N], minY[N], maxY[N];
+  std::int32_t px0[N], px1[N], py0[N], py1[N];  // the pixels whose centres (samples) the box holds, cut to the bounds
+  float x0[N], y0[N];  // vertex 0's unsnapped position, the planes' origin
+  float dx1[N], dy1[N], dx2[N], dy2[N];  // vertices 1 and 2 less vertex 0 (snapped where float rounding disagrees)
+  float inv_det[N];
+  float z[3][N], oow[3][N];  // the depth (with the polygon offset) and 1/w planes: a0, dx, dy
+  // A small triangle (single-sampled, its centres in one 8x8 region from the box's first quad): its three edges
+  // there (RegionCoverage's c00, sx, sy).
+  std::int32_t c00[3][N], sx[3][N], sy[3][N];
 };
 
 // The set-up of triangle v0, v1, v2 with polygon offset `depth_offset`; false when it draws nothing (no snapped
 // area, beyond the rasterizer's range, or no pixel centre in its box).
+// Into lane t of `r` (its bit in r.small set when small, the others left as they are).
 bool SetUpTriangle(const VertexView& v0, const VertexView& v1, const VertexView& v2, float depth_offset,
-                   const RasterTarget& target, TriangleSetup& s) {
+                   const RasterTarget& target, SetUpRows& r, int t) {
   const VertexView* v[3] = {&v0, &v1, &v2};
-  std::int64_t* X = s.X;
-  std::int64_t* Y = s.Y;
+  std::int64_t X[3], Y[3];
   const glm::vec4* const pos[3] = {&v0.win, &v1.win, &v2.win};
   if (!Snap(pos, X, Y)) return false;
   std::int64_t area = SnappedArea(X, Y);
@@ -731,20 +736,30 @@ bool SetUpTriangle(const VertexView& v0, const VertexView& v1, const VertexView&
     std::swap(Y[1], Y[2]);
     area = -area;
   }
-  s.area = area;
-  for (int k = 0; k < 3; ++k) s.var[k] = v[k]->var;
+  r.area[t] = area;
+  for (int k = 0; k < 3; ++k) {
+    r.var[k][t] = v[k]->var;
+    r.X[k][t] = X[k];
+    r.Y[k][t] = Y[k];
+  }
 
   // Pixel range whose centres (samples) lie in the snapped bounding box, clipped to the target bounds.
-  s.minX = std::min({X[0], X[1], X[2]});
-  s.maxX = std::max({X[0], X[1], X[2]});
-  s.minY = std::min({Y[0], Y[1], Y[2]});
-  s.maxY = std::max({Y[0], Y[1], Y[2]});
+  const std::int64_t minX = std::min({X[0], X[1], X[2]}), maxX = std::max({X[0], X[1], X[2]});
+  const std::int64_t minY = std::min({Y[0], Y[1], Y[2]}), maxY = std::max({Y[0], Y[1], Y[2]});
+  r.minX[t] = minX;
+  r.maxX[t] = maxX;
+  r.minY[t] = minY;
+  r.maxY[t] = maxY;
   const SampleSpan& span = SampleSpan::Of(target.samples);
-  s.px0 = std::max<std::int64_t>(FirstAt(s.minX, span.x1), target.bounds.x0);
-  s.px1 = std::min<std::int64_t>(LastAt(s.maxX, span.x0), target.bounds.x1 - 1);
-  s.py0 = std::max<std::int64_t>(FirstAt(s.minY, span.y1), target.bounds.y0);
-  s.py1 = std::min<std::int64_t>(LastAt(s.maxY, span.y0), target.bounds.y1 - 1);
-  if (s.px0 > s.px1 || s.py0 > s.py1) return false;
+  const std::int64_t px0 = std::max<std::int64_t>(FirstAt(minX, span.x1), target.bounds.x0);
+  const std::int64_t px1 = std::min<std::int64_t>(LastAt(maxX, span.x0), target.bounds.x1 - 1);
+  const std::int64_t py0 = std::max<std::int64_t>(FirstAt(minY, span.y1), target.bounds.y0);
+  const std::int64_t py1 = std::min<std::int64_t>(LastAt(maxY, span.y0), target.bounds.y1 - 1);
+  if (px0 > px1 || py0 > py1) return false;
+  r.px0[t] = std::int32_t(px0);  // (inside the bounds)
+  r.px1[t] = std::int32_t(px1);
+  r.py0[t] = std::int32_t(py0);
+  r.py1[t] = std::int32_t(py1);
 
   // Interpolation planes from the unsnapped float positions, relative to vertex 0.
   const float x0 = v[0]->win.x, y0 = v[0]->win.y;
@@ -759,55 +774,56 @@ bool SetUpTriangle(const VertexView& v0, const VertexView& v1, const VertexView&
     det = float(area) / float(kOne * kOne);
   }
   const float inv_det = 1.0f / det;
-  auto make_plane = [&](float a0, float a1, float a2) {
+  auto make_plane = [&](float a0, float a1, float a2, float (*plane)[SetUpRows::N]) {
     const float da1 = a1 - a0, da2 = a2 - a0;
-    return Plane{a0, (da1 * dy2 - da2 * dy1) * inv_det, (da2 * dx1 - da1 * dx2) * inv_det};
+    plane[0][t] = a0;
+    plane[1][t] = (da1 * dy2 - da2 * dy1) * inv_det;
+    plane[2][t] = (da2 * dx1 - da1 * dx2) * inv_det;
   };
-  s.x0 = x0;
-  s.y0 = y0;
-  s.dx1 = dx1;
-  s.dy1 = dy1;
-  s.dx2 = dx2;
-  s.dy2 = dy2;
-  s.inv_det = inv_det;
-  s.z = make_plane(v[0]->win.z, v[1]->win.z, v[2]->win.z);
-  s.z.a0 += depth_offset;
-  s.oow = make_plane(v[0]->win.w, v[1]->win.w, v[2]->win.w);
+  r.x0[t] = x0;
+  r.y0[t] = y0;
+  r.dx1[t] = dx1;
+  r.dy1[t] = dy1;
+  r.dx2[t] = dx2;
+  r.dy2[t] = dy2;
+  r.inv_det[t] = inv_det;
+  make_plane(v[0]->win.z, v[1]->win.z, v[2]->win.z, r.z);
+  r.z[0][t] += depth_offset;
+  make_plane(v[0]->win.w, v[1]->win.w, v[2]->win.w, r.oow);
 
   // A small triangle (most of a detailed model's): all its centres in one region even before the bounds cut it,
   // so its vertices lie within a few pixels and every edge's values there fit 32 bits.
-  s.small = target.samples == 1 && LastCentre(s.maxX) - (FirstCentre(s.minX) & ~std::int64_t(1)) < 8 &&
-            LastCentre(s.maxY) - (FirstCentre(s.minY) & ~std::int64_t(1)) < 8;
-  if (s.small) {
-    const std::int64_t qx = s.px0 & ~std::int64_t(1), qy = s.py0 & ~std::int64_t(1);
+  const bool small = target.samples == 1 && LastCentre(maxX) - (FirstCentre(minX) & ~std::int64_t(1)) < 8 &&
+                     LastCentre(maxY) - (FirstCentre(minY) & ~std::int64_t(1)) < 8;
+  r.small = (r.small & ~(1u << t)) | (std::uint32_t(small) << t);
+  if (small) {
+    const std::int64_t qx = px0 & ~std::int64_t(1), qy = py0 & ~std::int64_t(1);
     for (int i = 0; i < 3; ++i) {
       const int j = (i + 1) % 3;
       const std::int64_t dx = X[j] - X[i], dy = Y[j] - Y[i];
       const bool owns_ties = dy < 0 || (dy == 0 && dx > 0);  // RasterizeTriangle's edges, below
-      s.c00[i] = std::int32_t(-dy * (qx * kOne + kHalf - X[i]) + dx * (qy * kOne + kHalf - Y[i]) - (owns_ties ? 0 : 1));
-      s.sx[i] = std::int32_t(-dy * kOne);
-      s.sy[i] = std::int32_t(dx * kOne);
+      r.c00[i][t] = std::int32_t(-dy * (qx * kOne + kHalf - X[i]) + dx * (qy * kOne + kHalf - Y[i]) - (owns_ties ? 0 : 1));
+      r.sx[i][t] = std::int32_t(-dy * kOne);
+      r.sy[i][t] = std::int32_t(dx * kOne);
     }
   }
   return true;
 }
 
 // Coverage of a set-up triangle, its quads into `blocks`.
-void CoverTriangle(const TriangleSetup& s, bool front_facing, const RasterTarget& target, BlockBuffer& blocks,
+// (Lane t of `r`, read in place.)
+void CoverTriangle(const SetUpRows& r, int t, bool front_facing, const RasterTarget& target, BlockBuffer& blocks,
                    const BlockSink& sink) {
-  const float* const* var = s.var;
-  const std::int64_t* X = s.X;
-  const std::int64_t* Y = s.Y;
-  const std::int64_t px0 = s.px0, px1 = s.px1, py0 = s.py0, py1 = s.py1;
-  const std::int64_t minX = s.minX, maxX = s.maxX, minY = s.minY, maxY = s.maxY;
-  const float x0 = s.x0, y0 = s.y0, dx1 = s.dx1, dy1 = s.dy1, dx2 = s.dx2, dy2 = s.dy2, inv_det = s.inv_det;
+  const std::int64_t px0 = r.px0[t], px1 = r.px1[t], py0 = r.py0[t], py1 = r.py1[t];
+  const float x0 = r.x0[t], y0 = r.y0[t], dx1 = r.dx1[t], dy1 = r.dy1[t], dx2 = r.dx2[t], dy2 = r.dy2[t],
+              inv_det = r.inv_det[t];
   const int nvar = target.nvar;
   TrianglePlanes planes;  // position and depth now; the varyings' planes once a quad is emitted
   planes.x0 = x0;
   planes.y0 = y0;
   planes.nvar = nvar;
-  planes.z = s.z;
-  planes.oow = s.oow;
+  planes.z = Plane{r.z[0][t], r.z[1][t], r.z[2][t]};
+  planes.oow = Plane{r.oow[0][t], r.oow[1][t], r.oow[2][t]};
   // Hierarchical depth: a triangle whose depths over its box cannot pass the depth test there is dropped now.
   HierarchicalDepth* const hz = target.depth_bounds;
   if (hz && hz->Worth() && HiddenTriangle(*hz, planes.z, x0, y0, int(px0), int(py0), int(px1), int(py1))) return;
@@ -816,7 +832,7 @@ void CoverTriangle(const TriangleSetup& s, bool front_facing, const RasterTarget
     using F4 = V<4>::F;
     alignas(16) float a[3][kMaxVaryingFloats + 4];
     for (int k = 0; k < 3; ++k) {
-      if (nvar > 0) std::memcpy(a[k], var[k], sizeof(float) * std::size_t(nvar));  // (var may be null)
+      if (nvar > 0) std::memcpy(a[k], r.var[k][t], sizeof(float) * std::size_t(nvar));  // (var may be null)
       std::memset(a[k] + nvar, 0, sizeof(float) * 4);  // the last group's unused lanes
     }
     for (int i = 0; i < nvar; i += 4) {
@@ -857,14 +873,14 @@ void CoverTriangle(const TriangleSetup& s, bool front_facing, const RasterTarget
   // Regions start at the first quad of the box (quads are at even pixels; a block takes quads anywhere), so that a
   // triangle of at most 8x8 pixel centres is one region wherever it lies.
   const std::int64_t qx_first = px0 & ~std::int64_t(1), qy_first = py0 & ~std::int64_t(1);
-  if (s.small) {
+  if (r.small >> t & 1u) {
     // A small triangle: one coverage test of the three edges, cut to the box; no corner tests.
     RegionEdges edges;
     edges.count = 3;
     for (int e = 0; e < 3; ++e) {
-      edges.c00[e] = s.c00[e];
-      edges.sx[e] = s.sx[e];
-      edges.sy[e] = s.sy[e];
+      edges.c00[e] = r.c00[e][t];
+      edges.sx[e] = r.sx[e][t];
+      edges.sy[e] = r.sy[e][t];
     }
     edges.row0 = 0;
     edges.row1 = int(py1 - qy_first) >> 1;
@@ -875,6 +891,8 @@ void CoverTriangle(const TriangleSetup& s, bool front_facing, const RasterTarget
   }
 
   // Edge i runs from vertex i to vertex i+1; E(p) = A (px - Xa) + B (py - Ya) is > 0 inside.
+  const std::int64_t X[3] = {r.X[0][t], r.X[1][t], r.X[2][t]}, Y[3] = {r.Y[0][t], r.Y[1][t], r.Y[2][t]};
+  const std::int64_t minX = r.minX[t], maxX = r.maxX[t], minY = r.minY[t], maxY = r.maxY[t];
   std::int64_t A[3], B[3], C[3];
   for (int i = 0; i < 3; ++i) {
     const int j = (i + 1) % 3;
@@ -1030,25 +1048,9 @@ void CoverTriangle(const TriangleSetup& s, bool front_facing, const RasterTarget
 
 void TriangleQuads(const VertexView& v0, const VertexView& v1, const VertexView& v2, bool front_facing,
                    const RasterTarget& target, BlockBuffer& blocks, const BlockSink& sink) {
-  TriangleSetup s;
-  if (SetUpTriangle(v0, v1, v2, target.depth_offset, target, s)) CoverTriangle(s, front_facing, target, blocks, sink);
+  SetUpRows r;
+  if (SetUpTriangle(v0, v1, v2, target.depth_offset, target, r, 0)) CoverTriangle(r, 0, front_facing, target, blocks, sink);
 }
-
-// SetUpTriangle for many triangles: each field of TriangleSetup as a row of kTriangleGroup lanes. `handled`: bit t
-// for each triangle set up here (its vertices snap exactly in 32 bits and its sides are shorter than 2^15
-// subpixels, so that every product below fits 32 bits); `drawn`: those of them that SetUpTriangle would not reject.
-struct SetUpRows {
-  std::uint32_t handled = 0, drawn = 0, swapped = 0;
-  std::int32_t X[3][kTriangleGroup], Y[3][kTriangleGroup];
-  std::int32_t area[kTriangleGroup];
-  std::int32_t minX[kTriangleGroup], maxX[kTriangleGroup], minY[kTriangleGroup], maxY[kTriangleGroup];
-  std::int32_t px0[kTriangleGroup], px1[kTriangleGroup], py0[kTriangleGroup], py1[kTriangleGroup];
-  float x0[kTriangleGroup], y0[kTriangleGroup], dx1[kTriangleGroup], dy1[kTriangleGroup], dx2[kTriangleGroup],
-      dy2[kTriangleGroup], inv_det[kTriangleGroup];
-  float z[3][kTriangleGroup], oow[3][kTriangleGroup];
-  std::uint32_t small = 0;
-  std::int32_t c00[3][kTriangleGroup], sx[3][kTriangleGroup], sy[3][kTriangleGroup];
-};
 
 // W lanes from l0 of SetUpTriangle's arithmetic, the same operations in the same order on each lane (float lanes
 // give the same bits; the integers are exact).
@@ -1151,15 +1153,18 @@ SOFTGL_WIDE void SetUpLanes(const TriangleQueue& in, const RasterTarget& target,
   out.drawn |= MaskToBits<W>(drawn, l0);
   out.swapped |= MaskToBits<W>(swap, l0);
   out.small |= MaskToBits<W>(small, l0);
+  // What only a larger triangle's coverage reads, widened to the rows' 64 bits.
+  typedef std::int64_t L __attribute__((vector_size(8 * W)));
+  auto wide = [](I v) SOFTGL_WIDE_LAMBDA { return __builtin_convertvector(v, L); };
   for (int k = 0; k < 3; ++k) {
-    StoreVec(out.X[k] + l0, X[k]);
-    StoreVec(out.Y[k] + l0, Y[k]);
+    StoreVec(out.X[k] + l0, wide(X[k]));
+    StoreVec(out.Y[k] + l0, wide(Y[k]));
   }
-  StoreVec(out.area + l0, area);
-  StoreVec(out.minX + l0, minX);
-  StoreVec(out.maxX + l0, maxX);
-  StoreVec(out.minY + l0, minY);
-  StoreVec(out.maxY + l0, maxY);
+  StoreVec(out.area + l0, wide(area));
+  StoreVec(out.minX + l0, wide(minX));
+  StoreVec(out.maxX + l0, wide(maxX));
+  StoreVec(out.minY + l0, wide(minY));
+  StoreVec(out.maxY + l0, wide(maxY));
   StoreVec(out.px0 + l0, px0);
   StoreVec(out.px1 + l0, px1);
   StoreVec(out.py0 + l0, py0);
@@ -1220,50 +1225,18 @@ void RasterizeTriangles(TriangleQueue& q, const RasterTarget& target, BlockBuffe
   SetUpRows rows;
   set_up(q, n, target, rows);
   for (int t = 0; t < n; ++t) {
-    TriangleSetup s;
     if (rows.handled >> t & 1u) {
       if (!(rows.drawn >> t & 1u)) continue;
       const bool swapped = rows.swapped >> t & 1u;
-      s.var[0] = q.var[0][t];
-      s.var[1] = q.var[swapped ? 2 : 1][t];
-      s.var[2] = q.var[swapped ? 1 : 2][t];
-      s.px0 = rows.px0[t];
-      s.px1 = rows.px1[t];
-      s.py0 = rows.py0[t];
-      s.py1 = rows.py1[t];
-      s.x0 = rows.x0[t];
-      s.y0 = rows.y0[t];
-      s.dx1 = rows.dx1[t];
-      s.dy1 = rows.dy1[t];
-      s.dx2 = rows.dx2[t];
-      s.dy2 = rows.dy2[t];
-      s.inv_det = rows.inv_det[t];
-      s.z = Plane{rows.z[0][t], rows.z[1][t], rows.z[2][t]};
-      s.oow = Plane{rows.oow[0][t], rows.oow[1][t], rows.oow[2][t]};
-      s.small = rows.small >> t & 1u;
-      if (s.small) {  // what the small triangle's coverage reads
-        for (int e = 0; e < 3; ++e) {
-          s.c00[e] = rows.c00[e][t];
-          s.sx[e] = rows.sx[e][t];
-          s.sy[e] = rows.sy[e][t];
-        }
-      } else {  // and a larger one's
-        for (int k = 0; k < 3; ++k) {
-          s.X[k] = rows.X[k][t];
-          s.Y[k] = rows.Y[k][t];
-        }
-        s.area = rows.area[t];
-        s.minX = rows.minX[t];
-        s.maxX = rows.maxX[t];
-        s.minY = rows.minY[t];
-        s.maxY = rows.maxY[t];
-      }
+      rows.var[0][t] = q.var[0][t];
+      rows.var[1][t] = q.var[swapped ? 2 : 1][t];
+      rows.var[2][t] = q.var[swapped ? 1 : 2][t];
     } else {
       VertexView v[3];
       for (int k = 0; k < 3; ++k) v[k] = VertexView(glm::vec4(q.x[k][t], q.y[k][t], q.z[k][t], q.w[k][t]), q.var[k][t]);
-      if (!SetUpTriangle(v[0], v[1], v[2], q.depth_offset[t], target, s)) continue;
+      if (!SetUpTriangle(v[0], v[1], v[2], q.depth_offset[t], target, rows, t)) continue;
     }
-    CoverTriangle(s, q.front_facing[t], target, blocks, sink);
+    CoverTriangle(rows, t, q.front_facing[t], target, blocks, sink);
   }
 }
 
