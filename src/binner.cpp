@@ -2,6 +2,7 @@
 #include "binner.h"
 
 #include <algorithm>
+#include <climits>
 #include <cmath>
 #include <cstring>
 
@@ -31,7 +32,7 @@ void BinnedBatch::Reset(int nvar) {
   large_.clear();
   notes_.clear();
   tile_start_.clear();
-  box_ = Rect{};
+  box_ = Rect{INT_MAX, INT_MAX, INT_MIN, INT_MIN};  // (empty; any box's union with it is that box)
   // tile_data_ keeps its size: Finish overwrites what it uses (tile_start_ bounds it), without zeroing it first.
 }
 
@@ -47,13 +48,19 @@ void BinnedBatch::Add(const BinnedPrimitive& prim, const VertexView* v, const Re
     vertices_.resize(std::max(vertices_.size() * 2, vertices_used_ + need));
   float* dst = vertices_.data() + vertices_used_;
   vertices_used_ += std::uint32_t(need);
-  for (int k = 0; k < n; ++k, dst += stride) {
-    std::memcpy(dst, &v[k].win, sizeof(float) * 4);
-    if (nvar_ > 0) std::memcpy(dst + 4, v[k].var, sizeof(float) * std::size_t(nvar_));  // (var may be null)
+  const auto copy = [&](int k) {
+    std::memcpy(dst + std::size_t(k) * stride, &v[k].win, sizeof(float) * 4);
+    if (nvar_ > 0)  // (var may be null)
+      std::memcpy(dst + std::size_t(k) * stride + 4, v[k].var, sizeof(float) * std::size_t(nvar_));
+  };
+  switch (n) {  // (the vertices of a point, a line or a triangle, each copy inline)
+    case 3: copy(2); [[fallthrough]];
+    case 2: copy(1); [[fallthrough]];
+    default: copy(0);
   }
   prims_.push_back(p);
-  box_ = box_.Empty() ? box : Rect{std::min(box_.x0, box.x0), std::min(box_.y0, box.y0), std::max(box_.x1, box.x1),
-                                   std::max(box_.y1, box.y1)};
+  box_ = Rect{std::min(box_.x0, box.x0), std::min(box_.y0, box.y0), std::max(box_.x1, box.x1),
+              std::max(box_.y1, box.y1)};
   // The box lies inside the framebuffer: its coordinates are not negative.
   const auto tile_of = [](int pixel) { return int(unsigned(pixel) / unsigned(kTileSize)); };
   const int tx0 = tile_of(box.x0), tx1 = tile_of(box.x1 - 1);

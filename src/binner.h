@@ -6,6 +6,7 @@
 // of its list in each batch, batches taken in order, which is the order the draw submitted them.
 #pragma once
 
+#include <climits>
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
@@ -146,7 +147,7 @@ class BinnedBatch {
   }
   int Nvar() const { return nvar_; }
   /// The union of the boxes of the primitives added (pixels; empty when none was).
-  const Rect& Box() const { return box_; }
+  Rect Box() const { return box_.Empty() ? Rect{} : box_; }
   /// Copies vertex k of the run at `vertices` into a WindowVertex.
   void Vertex(const float* vertices, int k, WindowVertex& out) const;
   /// Vertex k of the run at `vertices`, read in place.
@@ -176,7 +177,7 @@ class BinnedBatch {
     return {tile_start_[std::size_t(i)], tile_start_[std::size_t(i) + 1]};
   }
   std::vector<Large> large_;                // primitives over more than kListedTiles tiles, in order
-  Rect box_;                                // the union of the primitives' boxes
+  Rect box_{INT_MAX, INT_MAX, INT_MIN, INT_MIN};  // the union of the primitives' boxes (inverted: none yet)
   int nvar_ = 0;
   std::vector<BinnedPrimitive> prims_;      // in submission order
   std::vector<std::uint32_t> prim_tiles_;   // how many tiles each primitive touches
