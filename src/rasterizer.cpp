@@ -1080,7 +1080,7 @@ SOFTGL_WIDE void SetUpLanes(const TriangleQueue& in, const RasterTarget& target,
   // SnappedArea: each product below 2^30 in magnitude where handled (computed unsigned: the others may wrap).
   const I signed_area = I(U(X[1] - X[0]) * U(Y[2] - Y[0]) - U(X[2] - X[0]) * U(Y[1] - Y[0]));
   const I swap = signed_area < 0;  // counter-clockwise order: vertices 1 and 2 exchanged
-  const I area = select(swap, -signed_area, signed_area);
+  const I area = I(select(swap, U{} - U(signed_area), U(signed_area)));  // (unsigned: no lane overflows)
   {
     const I X1 = X[1], Y1 = Y[1];
     X[1] = select(swap, X[2], X1);
