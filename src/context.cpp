@@ -481,6 +481,7 @@ void RecordClear(ContextState& s, const detail::RenderTarget& target, const deta
   if ((!clear.color && !clear.depth && !clear.stencil) || s.condition_discards || s.rasterizer_discard) return;
   // A layered framebuffer object: every layer of each attachment (OpenGL 4.6, section 17.4.3), `target` being
   // layer 0's.
+  s.RecordPending(what);  // the draws before it first
   const int layers = s.DrawLayers();
   for (int l = 0; l < layers; ++l) {
     const detail::RenderTarget t = l == 0 ? target : s.DrawLayer(l);

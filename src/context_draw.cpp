@@ -96,7 +96,6 @@ void ContextState::Draw(const detail::DrawCall& call) {
     ds.feedback = &capture;
   }
   packet.bounds = ds.bounds;
-  if (!frame.Accepts(target)) Sync(__func__);
   try {
     if (last_snapshot && program->SnapshotIs(*last_snapshot)) {
       packet.snapshot = last_snapshot;
@@ -107,11 +106,22 @@ void ContextState::Draw(const detail::DrawCall& call) {
     }
     packet.program = packet.snapshot ? packet.snapshot.get() : program;
     packet.early_depth = detail::EarlyDepthTestApplies(ops, packet.program->WritesDepth());
-    detail::RecordDraw(call, plan, ds, packet, target, frame, *pool, scratch);
+    // A small draw joins the small draws held before it when it can (the same state): its vertices are shaded
+    // now, the rest of its front end runs with theirs. Any other draw records the held ones first.
+    const bool small = detail::SmallDrawApplies(call, ds, packet);
+    const bool joins = small && !pending.Empty() && detail::JoinsPending(pending, call, ds, packet, target);
+    if (!joins) {  // (a draw that joins has the held draws' target, which the frame accepts)
+      detail::RecordPending(pending, frame, *pool, scratch);
+      if (!frame.Accepts(target)) Sync(__func__);
+    }
+    if (small) detail::ShadeSmallDraw(call, plan, ds, packet, target, pending, scratch);
+    else detail::RecordDraw(call, plan, ds, packet, target, frame, *pool, scratch);
   } catch (const std::bad_alloc&) {
+    pending.Reset();
     frame.Reset();
     SetError(OUT_OF_MEMORY, __func__, "out of memory (recorded draws not yet rendered are dropped)");
   } catch (const std::length_error&) {
+    pending.Reset();
     frame.Reset();
     SetError(OUT_OF_MEMORY, __func__, "out of memory (recorded draws not yet rendered are dropped)");
   }

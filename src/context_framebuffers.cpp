@@ -144,7 +144,7 @@ detail::RenderTarget ReadTarget(ContextState& s, bool srgb = false, bool samples
                                unsigned buffers = detail::kAllBuffers) {
   if (!s.read_fbo) {
     detail::RenderTarget t =
-        s.fb.samples > 1 && s.frame.Empty() && !samples ? s.fb.ReadTarget(srgb, buffers) : s.fb.Target(srgb);
+        s.fb.samples > 1 && s.frame.Empty() && s.pending.Empty() && !samples ? s.fb.ReadTarget(srgb, buffers) : s.fb.Target(srgb);
     if (s.default_read_buffer == NONE) t.color[0] = detail::ColorBuffer{};
     return t;
   }

@@ -295,6 +295,7 @@ struct ContextState {
   detail::Scratch scratch;
   std::unique_ptr<detail::WorkerPool> pool;
   detail::Frame frame;  // recorded clears and draws, not yet rendered
+  detail::PendingDraws pending;  // small draws in a row, shaded but not yet recorded into `frame`
   std::vector<std::uint32_t> tile_counts;  // CountTilePrimitives: primitives per tile (empty when off)
   glm::ivec2 tile_count_grid{0, 0};        // the tiles' columns and rows
   detail::FetchPlan fetch_plan;  // Draw's resolution of the vertex array (a disabled attribute: its current value)
@@ -392,7 +393,7 @@ struct ContextState {
   void Draw(const detail::DrawCall& call);
 
   // A mark for the work recorded so far: WorkDone(mark) once it has all been rendered (0 when there is none).
-  std::uint64_t WorkMark() const { return frame.Empty() ? 0 : renders + 1; }
+  std::uint64_t WorkMark() const { return frame.Empty() && pending.Empty() ? 0 : renders + 1; }
   bool WorkDone(std::uint64_t mark) const { return mark <= renders; }
 
   // Renders what is recorded, so that the buffers hold it: before the buffers are read, before anything a
@@ -400,10 +401,24 @@ struct ContextState {
   void Sync(const char* call) {
     ++renders;
     try {
+      detail::RecordPending(pending, frame, *pool, scratch);
       frame.Render(*pool, scratch.tiles);
       last_snapshot.reset();  // the next frame's draws take a copy of their own
     } catch (const std::bad_alloc&) {
+      pending.Reset();
       SetError(OUT_OF_MEMORY, call, "out of memory while rendering recorded draws (they are dropped)");
+    }
+  }
+
+  // Records the small draws held (PendingDraws) into the frame: before anything else is recorded into it.
+  void RecordPending(const char* call) {
+    if (pending.Empty()) return;
+    try {
+      detail::RecordPending(pending, frame, *pool, scratch);
+    } catch (const std::bad_alloc&) {
+      pending.Reset();
+      frame.Reset();
+      SetError(OUT_OF_MEMORY, call, "out of memory (recorded draws not yet rendered are dropped)");
     }
   }
 };

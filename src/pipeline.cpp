@@ -72,56 +72,96 @@ bool AnyNoPerspective(const Interpolation* interpolation, int nvar) {
   if (record) out.feedback.resize(n * std::size_t(record->floats));
 }
 
-// Stage 1-2: fetch and shade every vertex the draw references, once each where indices repeat. With `geometry`
-// (a geometry stage reads them), only shaded: nothing FinishVertices does.
-void ShadeVertices(const DrawCall& call, const FetchPlan& fetch, const Program& program, const Textures* textures,
-                   const Interpolation* interpolation, const ViewportTransform& viewport,
-                   const FeedbackLayout* record, bool layers, bool geometry, WorkerPool& pool, Scratch& s) {
+// The vertices a draw references, each once where indices repeat: s.shade_indices[0 .. returned count) holds the
+// vertex index of each vertex to shade, in the order of first use, and s.element_to_shaded the slot of each of the
+// call's elements.
+int UniqueVertices(const DrawCall& call, Scratch& s) {
   const int count = call.count;
   auto& to_shade = s.shade_indices;
   auto& map = s.element_to_shaded;
   // Both only grow (growing fills with zeros, which every draw would otherwise pay for again).
   if (to_shade.size() < std::size_t(count)) to_shade.resize(std::size_t(count));
   if (map.size() < std::size_t(count)) map.resize(std::size_t(count));
-  int unique = count;  // the vertices to shade: to_shade[0 .. unique)
   if (call.elements == nullptr) {
     for (int i = 0; i < count; ++i) {
       to_shade[i] = call.first + std::uint32_t(i);
       map[i] = std::uint32_t(i);
     }
-  } else {
-    std::uint32_t lo = call.elements[0], hi = lo;  // values, not positions: a loop the compiler vectorizes
-    for (int i = 1; i < count; ++i) {
-      lo = std::min(lo, call.elements[i]);
-      hi = std::max(hi, call.elements[i]);
-    }
-    const std::uint64_t range = std::uint64_t(hi) - lo + 1;
-    if (range <= std::max<std::uint64_t>(std::uint64_t(count) * 8, std::uint64_t(1) << 16)) {
-      // Each distinct index shaded once, in the order of first use: a table over the index range gives each
-      // vertex its slot (a large mesh drawn in pieces has indices spread over the whole mesh in every piece).
-      // The table holds kUnseen between draws: only the entries a draw set are reset after it.
-      constexpr std::uint32_t kUnseen = 0xFFFFFFFFu;
-      auto& slot = s.first_use;
-      if (slot.size() < range) slot.resize(std::size_t(range), kUnseen);
-      std::uint32_t seen = 0;
-      const std::uint32_t low = lo;
-      std::uint32_t* shade = to_shade.data();
-      for (int i = 0; i < count; ++i) {
-        const std::uint32_t e = call.elements[i];
-        std::uint32_t& k = slot[e - low];
-        if (k == kUnseen) {
-          k = seen;
-          shade[seen++] = e;
-        }
-        map[i] = k;
-      }
-      for (std::uint32_t j = 0; j < seen; ++j) slot[shade[j] - low] = kUnseen;
-      unique = int(seen);
-    } else {  // indices spread far apart: shade per element
-      std::copy(call.elements, call.elements + count, to_shade.begin());
-      for (int i = 0; i < count; ++i) map[i] = std::uint32_t(i);
-    }
+    return count;
   }
+  std::uint32_t lo = call.elements[0], hi = lo;  // values, not positions: a loop the compiler vectorizes
+  for (int i = 1; i < count; ++i) {
+    lo = std::min(lo, call.elements[i]);
+    hi = std::max(hi, call.elements[i]);
+  }
+  const std::uint64_t range = std::uint64_t(hi) - lo + 1;
+  if (range > std::max<std::uint64_t>(std::uint64_t(count) * 8, std::uint64_t(1) << 16)) {
+    // Indices spread far apart: shaded per element.
+    std::copy(call.elements, call.elements + count, to_shade.begin());
+    for (int i = 0; i < count; ++i) map[i] = std::uint32_t(i);
+    return count;
+  }
+  // Each distinct index shaded once, in the order of first use: a table over the index range gives each vertex
+  // its slot (a large mesh drawn in pieces has indices spread over the whole mesh in every piece). The table holds
+  // kUnseen between draws: only the entries a draw set are reset after it.
+  constexpr std::uint32_t kUnseen = 0xFFFFFFFFu;
+  auto& slot = s.first_use;
+  if (slot.size() < range) slot.resize(std::size_t(range), kUnseen);
+  std::uint32_t seen = 0;
+  const std::uint32_t low = lo;
+  std::uint32_t* shade = to_shade.data();
+  for (int i = 0; i < count; ++i) {
+    const std::uint32_t e = call.elements[i];
+    std::uint32_t& k = slot[e - low];
+    if (k == kUnseen) {
+      k = seen;
+      shade[seen++] = e;
+    }
+    map[i] = k;
+  }
+  for (std::uint32_t j = 0; j < seen; ++j) slot[shade[j] - low] = kUnseen;
+  return int(seen);
+}
+
+// Stages 1-2 for vertices to_shade[0 .. m), m <= kVertexBatch, of `instance`: fetched into vs and shaded into
+// out's arrays from `base` on (its layers too when `layers`).
+[[gnu::always_inline]] inline void ShadeBatch(const FetchPlan& fetch, const Program& program, const Textures* textures,
+                                              const std::uint32_t* to_shade, int m, std::uint32_t instance, int simd,
+                                              bool layers, VertexScratch& vs, ShadedVertices& out, int base) {
+  FetchVertices(fetch, to_shade, m, instance, vs.attribs.data(), kVertexBatch);
+  for (int i = 0; i < m; ++i) vs.vertex_ids[i] = int(to_shade[i]);
+  VertexBatch batch;
+  batch.count = m;
+  batch.attribs = vs.attribs.data();
+  batch.stride = kVertexBatch;
+  batch.enabled = fetch.enabled;
+  batch.current = fetch.current;
+  batch.simd = simd;
+  batch.vertex_ids = vs.vertex_ids.data();
+  batch.instance_id = int(instance);
+  batch.positions = out.position.data() + base;
+  batch.point_sizes = out.point_size.data() + base;
+  batch.layers = layers ? out.layer.data() + base : nullptr;
+  batch.varyings = out.varyings.data() + std::size_t(base) * out.nvar;
+  batch.textures = textures;
+  program.ShadeVertices(batch);
+}
+
+// A worker's vertex scratch, sized for ShadeBatch.
+VertexScratch& VertexScratchOf(Scratch& s, int worker) {
+  VertexScratch& vs = s.vertex[std::size_t(worker)];
+  vs.attribs.resize(std::size_t(kVertexBatch) * kMaxVertexAttribs * 4);
+  vs.vertex_ids.resize(kVertexBatch);
+  return vs;
+}
+
+// Stage 1-2: fetch and shade every vertex the draw references, once each where indices repeat. With `geometry`
+// (a geometry stage reads them), only shaded: nothing FinishVertices does.
+void ShadeVertices(const DrawCall& call, const FetchPlan& fetch, const Program& program, const Textures* textures,
+                   const Interpolation* interpolation, const ViewportTransform& viewport,
+                   const FeedbackLayout* record, bool layers, bool geometry, WorkerPool& pool, Scratch& s) {
+  const int unique = UniqueVertices(call, s);  // the vertices to shade: s.shade_indices[0 .. unique)
+  const std::uint32_t* to_shade = s.shade_indices.data();
 
   // An instanced piece shades the vertices once per instance: shaded vertex j is vertex to_shade[j % unique] of
   // instance call.instance + j / unique.
@@ -141,32 +181,14 @@ void ShadeVertices(const DrawCall& call, const FetchPlan& fetch, const Program& 
   // Jobs of kVertexJob vertices, shaded in batches of kVertexBatch; every vertex is written by one job only.
   const int jobs = (n + kVertexJob - 1) / kVertexJob;
   pool.Run(jobs, [&](int job, int worker) {
-    VertexScratch& vs = s.vertex[std::size_t(worker)];
-    vs.attribs.resize(std::size_t(kVertexBatch) * kMaxVertexAttribs * 4);
-    vs.vertex_ids.resize(kVertexBatch);
+    VertexScratch& vs = VertexScratchOf(s, worker);
     const int end = std::min(n, (job + 1) * kVertexJob);
     for (int base = job * kVertexJob, m = 0; base < end; base += m) {
       // A batch never spans two instances.
       const int k0 = base % unique;
       m = std::min({kVertexBatch, end - base, unique - k0});
       const std::uint32_t instance = call.instance + std::uint32_t(base / unique);
-      FetchVertices(fetch, to_shade.data() + k0, m, instance, vs.attribs.data(), kVertexBatch);
-      for (int i = 0; i < m; ++i) vs.vertex_ids[i] = int(to_shade[std::size_t(k0 + i)]);
-      VertexBatch batch;
-      batch.count = m;
-      batch.attribs = vs.attribs.data();
-      batch.stride = kVertexBatch;
-      batch.enabled = fetch.enabled;
-      batch.current = fetch.current;
-      batch.simd = simd;
-      batch.vertex_ids = vs.vertex_ids.data();
-      batch.instance_id = int(instance);
-      batch.positions = out.position.data() + base;
-      batch.point_sizes = out.point_size.data() + base;
-      batch.layers = layers ? out.layer.data() + base : nullptr;
-      batch.varyings = out.varyings.data() + std::size_t(base) * out.nvar;
-      batch.textures = textures;
-      program.ShadeVertices(batch);
+      ShadeBatch(fetch, program, textures, to_shade + k0, m, instance, simd, layers, vs, out, base);
       if (!geometry) FinishVertices(out, base, m, planes, viewport, interpolation, noperspective, record);
     }
   });
@@ -822,6 +844,125 @@ void RecordDraw(const DrawCall& call, const FetchPlan& fetch, const DrawState& s
     sub.elements = closing;
     RecordPiece(sub, fetch, state, packet, target, frame, pool, scratch);
   }
+}
+
+
+void PendingDraws::Reset() {
+  draws = 0;
+  packet.snapshot.reset();
+  for (auto& o : packet.occlusion) o.reset();
+}
+
+bool SmallDrawApplies(const DrawCall& call, const DrawState& state, const DrawPacket& packet) {
+  const bool mode = call.mode == POINTS || call.mode == LINES || call.mode == LINE_STRIP || call.mode == TRIANGLES ||
+                    call.mode == TRIANGLE_STRIP || call.mode == TRIANGLE_FAN;
+  return mode && call.count > 0 && call.count <= kSmallDrawElements && call.instances == 1 &&
+         call.restart_count == 0 && packet.snapshot != nullptr && state.geometry == nullptr && !state.primitive_ids &&
+         state.feedback == nullptr && state.primitives_generated == nullptr && !state.discard &&
+         !state.bounds.Empty() && state.layers <= 1;
+}
+
+namespace {
+
+bool SameRect(const Rect& a, const Rect& b) { return a.x0 == b.x0 && a.y0 == b.y0 && a.x1 == b.x1 && a.y1 == b.y1; }
+
+bool SamePrimitiveState(const PrimitiveState& a, const PrimitiveState& b) {
+  return a.cull_enabled == b.cull_enabled && a.cull_face == b.cull_face && a.front_face == b.front_face &&
+         a.polygon_mode == b.polygon_mode && a.program_point_size == b.program_point_size &&
+         a.point_size == b.point_size && a.line_width == b.line_width && a.point_lower_left == b.point_lower_left &&
+         a.offset_fill == b.offset_fill && a.offset_line == b.offset_line && a.offset_point == b.offset_point &&
+         a.offset_factor == b.offset_factor && a.offset_units == b.offset_units &&
+         a.provoking_first == b.provoking_first;
+}
+
+}  // namespace
+
+bool JoinsPending(const PendingDraws& pending, const DrawCall& call, const DrawState& state, const DrawPacket& packet,
+                  const RenderTarget& target) {
+  const DrawPacket& p = pending.packet;
+  const DrawState& s = pending.state;
+  const ViewportTransform &v = s.viewport, &w = state.viewport;
+  return pending.vertices + call.count <= kPendingVertices && VerticesPerPrimitive(call.mode) == pending.per &&
+         p.snapshot == packet.snapshot && p.nvar == packet.nvar && p.interpolation == packet.interpolation &&
+         p.shader_depth == packet.shader_depth && p.early_depth == packet.early_depth &&
+         p.point_lower_left == packet.point_lower_left && p.line_width == packet.line_width &&
+         SameRect(p.bounds, packet.bounds) && p.ops == packet.ops && v.scale == w.scale &&
+         v.translate == w.translate && SameRect(v.rect, w.rect) && s.samples == state.samples &&
+         s.depth16 == state.depth16 && SamePrimitiveState(s.primitive, state.primitive) &&
+         SameBuffers(pending.target, target) && pending.textures.Same(*packet.textures);
+}
+
+void ShadeSmallDraw(const DrawCall& call, const FetchPlan& fetch, const DrawState& state, const DrawPacket& packet,
+                    const RenderTarget& target, PendingDraws& pending, Scratch& scratch) {
+  ShadedVertices& out = scratch.shaded;
+  std::vector<std::uint32_t>& list = scratch.primitives.indices;
+  const Program& program = *state.program;
+  if (pending.Empty()) {
+    pending.per = VerticesPerPrimitive(call.mode);
+    pending.packet = packet;
+    pending.textures.CopyFrom(*packet.textures);
+    pending.packet.textures = &pending.textures.textures;
+    pending.state = state;
+    pending.state.program = packet.program;
+    pending.state.textures = &pending.textures.textures;
+    pending.target = target;
+    out.count = 0;
+    out.nvar = program.VertexVaryingFloats();
+    list.clear();
+    // Room for every vertex the held draws may have.
+    const std::size_t room = std::size_t(kPendingVertices);
+    if (out.position.size() < room) out.position.resize(room);
+    if (out.point_size.size() < room) out.point_size.resize(room);
+    if (out.varyings.size() < room * std::size_t(out.nvar)) out.varyings.resize(room * std::size_t(out.nvar));
+  }
+  const int unique = UniqueVertices(call, scratch);
+  const int base = out.count;
+  if (scratch.vertex.empty()) scratch.vertex.resize(1);
+  VertexScratch& vs = VertexScratchOf(scratch, 0);
+  const int simd = int(CpuSimdLevel());
+  for (int k = 0, m = 0; k < unique; k += m) {
+    m = std::min(kVertexBatch, unique - k);
+    ShadeBatch(fetch, program, state.textures, scratch.shade_indices.data() + k, m, call.instance, simd, false, vs,
+               out, base + k);
+  }
+  const std::uint32_t* map = scratch.element_to_shaded.data();
+  if (call.mode == POINTS || call.mode == LINES || call.mode == TRIANGLES) {
+    // A list is its own assembly: its elements in order, an incomplete last primitive dropped.
+    const int whole = call.count - call.count % pending.per;
+    for (int i = 0; i < whole; ++i) list.push_back(std::uint32_t(base) + map[i]);
+  } else {
+    AssemblePrimitives(call.mode, call.count, pending.assembled, state.primitive.provoking_first);
+    for (const std::uint32_t i : pending.assembled.indices) list.push_back(std::uint32_t(base) + map[i]);
+  }
+  out.count = pending.vertices = base + unique;
+  ++pending.draws;
+}
+
+void RecordPending(PendingDraws& pending, Frame& frame, WorkerPool& pool, Scratch& scratch) {
+  if (pending.Empty()) return;
+  const DrawState& state = pending.state;
+  ShadedVertices& out = scratch.shaded;
+  const int n = out.count;
+  SizeFinished(out, nullptr);
+  FinishVertices(out, 0, n, GuardBandPlanes(state.viewport), state.viewport, state.interpolation,
+                 AnyNoPerspective(state.interpolation, out.nvar), nullptr);
+  // The held draws as one piece of a list, each element its own shaded vertex.
+  scratch.primitives.vertices_per_primitive = pending.per;
+  auto& map = scratch.element_to_shaded;
+  if (map.size() < std::size_t(n)) map.resize(std::size_t(n));
+  for (int i = 0; i < n; ++i) map[std::size_t(i)] = std::uint32_t(i);
+  AssembledPiece a;
+  a.per = pending.per;
+  a.per_instance = a.count = scratch.primitives.indices.size() / std::size_t(a.per);
+  a.unique = std::uint32_t(n);
+  pending.draws = 0;  // (recorded from here on, or dropped if this throws)
+  if (a.count > 0) {
+    if (frame.Bytes() > kFrameBudgetBytes) frame.Render(pool, scratch.tiles);
+    DrawPacket& packet = frame.AddDraw(pending.target, pending.packet);
+    BinPrimitives(a, state, packet, frame, pool, scratch);
+    frame.ListLastDraw();
+  }
+  pending.Reset();
 }
 
 }  // namespace softgl::detail

@@ -138,6 +138,56 @@ struct Scratch {
   GeometryScratch geometry;
 };
 
+/// Draws of at most this many elements may be held as small draws (PendingDraws).
+inline constexpr int kSmallDrawElements = 128;
+/// Shaded vertices the held small draws may have together.
+inline constexpr int kPendingVertices = 1024;
+
+/// Small draws in a row with the same state, not yet recorded into the frame. Each one's vertices are fetched and
+/// shaded when it is made, as any draw's are (the vertex stage sees the shader, buffers and textures as they are
+/// then), and its primitives are kept as a list of those shaded vertices; the rest of the front end (clip codes,
+/// divide and viewport, culling, binning) runs once for all of them (RecordPending), when a draw that cannot join
+/// them comes, or before anything else is recorded into the frame or the frame is rendered. A frame of many small
+/// draws then pays for that part once per run of draws, not once per draw.
+///
+/// While draws are held, the context's Scratch holds their shaded vertices (`shaded`, with room for
+/// kPendingVertices) and their primitive list (`primitives.indices`, `per` slots each, in draw order): nothing else
+/// uses them until RecordPending.
+struct PendingDraws {
+  int draws = 0;
+  int per = 0;  // vertices per primitive of the list
+  int vertices = 0;  // shaded so far
+  DrawState state;     // the first draw's (program: its shader copy; textures: `textures`)
+  DrawPacket packet;   // the first draw's (textures: `textures`)
+  RenderTarget target;
+  DrawTextures textures;  // a copy of the bound units' views at the first draw
+  Primitives assembled;   // one draw's primitives, as AssemblePrimitives gives them (reused from draw to draw)
+  bool Empty() const { return draws == 0; }
+  /// Forgets the held draws (and releases the shader copy and query counters they keep).
+  void Reset();
+};
+
+/// Whether a draw may be held as a small draw: few elements, one instance, no primitive restart, a point, line or
+/// triangle mode other than LINE_LOOP and the adjacency modes, no geometry stage, transform feedback,
+/// PRIMITIVES_GENERATED query, RASTERIZER_DISCARD, gl_PrimitiveID or layered target, something to draw into, and a
+/// copy of the shader (packet.snapshot).
+bool SmallDrawApplies(const DrawCall& call, const DrawState& state, const DrawPacket& packet);
+
+/// Whether a small draw (SmallDrawApplies) can join the held draws `pending` (not empty): the same shader copy,
+/// textures, operations, viewport, bounds, primitive state and target, primitives of the same kind, and room.
+bool JoinsPending(const PendingDraws& pending, const DrawCall& call, const DrawState& state, const DrawPacket& packet,
+                  const RenderTarget& target);
+
+/// Shades a small draw's vertices (stages 1-2) and adds its assembled primitives to `pending`, which it starts
+/// when empty (then with copies of `state`, `packet`, `target` and the textures). `state.program` is the shader
+/// the vertex stage runs (the live one); the held draws keep `packet.program`, the copy.
+void ShadeSmallDraw(const DrawCall& call, const FetchPlan& fetch, const DrawState& state, const DrawPacket& packet,
+                    const RenderTarget& target, PendingDraws& pending, Scratch& scratch);
+
+/// Records the held draws into `frame` as one draw (the rest of the front end, then binning), and empties
+/// `pending`; nothing when it is empty. May throw std::bad_alloc (`pending` is then to be Reset).
+void RecordPending(PendingDraws& pending, Frame& frame, WorkerPool& pool, Scratch& scratch);
+
 /// Recorded data beyond which a frame is rendered before recording goes on (between pieces of a draw).
 inline constexpr std::size_t kFrameBudgetBytes = std::size_t(64) << 20;
 

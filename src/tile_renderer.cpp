@@ -44,8 +44,6 @@ void DrawTextures::CopyFrom(const Textures& t) {
   textures.units = units;
 }
 
-namespace {
-
 bool SameBuffers(const RenderTarget& a, const RenderTarget& b) {
   if (a.width != b.width || a.height != b.height || a.samples != b.samples || a.depth != b.depth || a.depth_pitch != b.depth_pitch ||
       a.stencil != b.stencil || a.stencil_pitch != b.stencil_pitch || a.depth16 != b.depth16 || a.tiles != b.tiles)
@@ -57,6 +55,8 @@ bool SameBuffers(const RenderTarget& a, const RenderTarget& b) {
   }
   return true;
 }
+
+namespace {
 
 Rect Intersect(const Rect& a, const Rect& b) {
   return Rect{std::max(a.x0, b.x0), std::max(a.y0, b.y0), std::min(a.x1, b.x1), std::min(a.y1, b.y1)};

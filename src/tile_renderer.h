@@ -37,6 +37,10 @@ struct DrawTextures {
   void CopyFrom(const Textures& t);
 };
 
+/// Whether two render targets are the same buffers (size, samples, depth, stencil and colour buffers): commands
+/// for both can be recorded into one frame.
+bool SameBuffers(const RenderTarget& a, const RenderTarget& b);
+
 /// A draw as the back end needs it, captured when the draw is recorded. Small, and kept in one array: a frame of
 /// many small draws reads them one after another.
 struct DrawPacket {

@@ -1834,6 +1834,30 @@ TEST_CASE("draws in a row with the same shader copy keep their own scissor and o
   CHECK(int(px[0]) == 255);
 }
 
+namespace {
+
+// A linear congruential generator: floats in [0, 1), the same sequence on every platform.
+struct Lcg {
+  std::uint32_t seed;
+  float operator()() {
+    seed = seed * 1664525u + 1013904223u;
+    return float(seed >> 8) / float(1u << 24);
+  }
+};
+
+// The number of distinct RGBA values in an image.
+std::size_t CountColours(const Image& image) {
+  std::set<std::uint32_t> colours;
+  for (std::size_t i = 0; i + 4 <= image.rgba.size(); i += 4) {
+    std::uint32_t c;
+    std::memcpy(&c, &image.rgba[i], 4);
+    colours.insert(c);
+  }
+  return colours.size();
+}
+
+}  // namespace
+
 TEST_CASE("many small draws in one frame render what they render one frame each, at any thread count", "[context]") {
   // Consecutive small draws share their binned batch; each tile walks it draw by draw. Overlapping triangles,
   // lines and points in many colours, blended and not, with a larger draw, a clear, a scissor and a shader with
@@ -1841,11 +1865,7 @@ TEST_CASE("many small draws in one frame render what they render one frame each,
   // more than a thousand primitives that draw nothing (clipped away): draws that large bin into batches of their
   // own.
   std::vector<glm::vec4> positions, values;
-  std::uint32_t seed = 12345;
-  auto random = [&] {
-    seed = seed * 1664525u + 1013904223u;
-    return float(seed >> 8) / float(1u << 24);
-  };
+  Lcg random{12345};
   for (int i = 0; i < 3 * 400; ++i) {  // 400 triangles of 0.05 to 0.3 in NDC, some across tile edges
     if (i % 3 == 0) {
       const float x = random() * 2.0f - 1.0f, y = random() * 2.0f - 1.0f, size = 0.05f + 0.25f * random();
@@ -1906,21 +1926,201 @@ TEST_CASE("many small draws in one frame render what they render one frame each,
     CHECK(gl.GetError() == NO_ERROR);
     return gl.ReadPixels();
   };
-  const std::uint32_t start = seed;
+  const std::uint32_t start = random.seed;
   const Image one_frame = render(1, false);
-  seed = start;
+  random.seed = start;
   const Image padded = render(1, true);
-  seed = start;
+  random.seed = start;
   const Image threaded = render(3, false);
   CHECK(one_frame.rgba == padded.rgba);
   CHECK(one_frame.rgba == threaded.rgba);
-  std::set<std::uint32_t> colours;  // the scene is not trivially uniform
-  for (std::size_t i = 0; i < one_frame.rgba.size(); i += 4) {
-    std::uint32_t c;
-    std::memcpy(&c, &one_frame.rgba[i], 4);
-    colours.insert(c);
+  CHECK(CountColours(one_frame) > 100);  // the scene is not trivially uniform
+}
+
+namespace {
+
+// Position from attribute 0 moved by what `offset` points to (data the shader only points to, not copied); colour
+// from attribute 1, scaled by gl_VertexID; flat or smooth by the varyings' type.
+template <class Varyings>
+struct HeldDrawShader : Shader<HeldDrawShader<Varyings>, Varyings> {
+  const glm::vec4* offset = nullptr;
+  float scale = 1.0f;
+  void Vertex(const VertexIn& in, VertexOut<Varyings>& out) const {
+    out.position = in.attrib[0] + (offset ? *offset : glm::vec4(0.0f));
+    out.point_size = 3.0f;
+    out.varyings.value = in.attrib[1] * (scale * float(1 + in.vertex_id % 4) / 4.0f);
   }
-  CHECK(colours.size() > 100);
+  bool Fragment(const FragmentIn<Varyings>& in, FragmentOut& out) const {
+    out.color[0] = glm::vec4(glm::vec3(in.varyings.value), 0.6f);
+    return true;
+  }
+};
+struct FlatVec4Varyings {
+  Flat<glm::vec4> value;
+};
+// Samples unit 0 at its centre.
+struct UnitZeroShader : Shader<UnitZeroShader, testing::NoVaryings> {
+  void Vertex(const VertexIn& in, VertexOut<testing::NoVaryings>& out) const { out.position = in.attrib[0]; }
+  bool Fragment(const FragmentIn<testing::NoVaryings>& in, FragmentOut& out) const {
+    out.color[0] = in.textures->SampleLod(0, glm::vec2(0.5f), 0.0f);
+    return true;
+  }
+};
+
+}  // namespace
+
+TEST_CASE("small draws held together render what each renders recorded on its own", "[context]") {
+  // Small draws with the same state are shaded at once but recorded together. 600 draws of every mode that is held
+  // (and of LINE_LOOP and larger draws, which are not), arrays and indexed, complete and with a partial last
+  // primitive, with state changed between some of them (depth function, blending, culling, provoking vertex,
+  // polygon mode and offset, viewport, point size, the shader and a uniform): as drawn, against the same draws each
+  // followed by Flush (each recorded alone), against them while a PRIMITIVES_GENERATED query counts (no draw is
+  // held then), and at 3 threads.
+  std::vector<glm::vec4> positions, values;
+  Lcg random{777};
+  for (int i = 0; i < 2000; ++i) {
+    positions.push_back({random() * 2.4f - 1.2f, random() * 2.4f - 1.2f, random() * 2 - 1, 1 + random()});
+    values.push_back({random(), random(), random(), 1});
+  }
+  std::vector<std::uint32_t> indices(4000);
+  for (auto& e : indices) e = std::uint32_t(random() * 1999.0f);
+  enum class Way { kAsDrawn, kFlushEach, kCounted };
+  auto render = [&](int threads, Way way) {
+    random.seed = 99;
+    Context gl(120, 90, Context::Options{threads});
+    HeldDrawShader<testing::Vec4Varyings> smooth;
+    HeldDrawShader<FlatVec4Varyings> flat;
+    MakeVertexArray(gl, positions, values);
+    gl.BindBuffer(ELEMENT_ARRAY_BUFFER, gl.GenBuffer());
+    gl.BufferData(ELEMENT_ARRAY_BUFFER, std::ptrdiff_t(indices.size() * 4), indices.data());
+    const std::uint32_t query = gl.GenQuery();
+    if (way == Way::kCounted) gl.BeginQuery(PRIMITIVES_GENERATED, query);
+    gl.ClearColor(0.1f, 0.2f, 0.3f, 1.0f);
+    gl.Clear(COLOR_BUFFER_BIT | DEPTH_BUFFER_BIT);
+    gl.Enable(DEPTH_TEST);
+    gl.Enable(PROGRAM_POINT_SIZE);
+    gl.UseProgram(smooth);
+    const Enum modes[] = {POINTS, LINES, LINE_STRIP, LINE_LOOP, TRIANGLES, TRIANGLE_STRIP, TRIANGLE_FAN};
+    for (int d = 0; d < 600; ++d) {
+      switch (d % 97) {
+        case 10: gl.DepthFunc(d % 2 ? GREATER : LEQUAL); break;
+        case 20: gl.Enable(BLEND); gl.BlendFunc(SRC_ALPHA, ONE_MINUS_SRC_ALPHA); break;
+        case 30: gl.Enable(CULL_FACE); gl.CullFace(d % 2 ? FRONT : BACK); break;
+        case 40: gl.ProvokingVertex(FIRST_VERTEX_CONVENTION); gl.UseProgram(flat); break;
+        case 50: gl.PolygonMode(FRONT_AND_BACK, LINE); break;
+        case 55: gl.Enable(POLYGON_OFFSET_LINE); gl.PolygonOffset(2.0f, 4.0f); break;
+        case 60: gl.PolygonMode(FRONT_AND_BACK, FILL); gl.Viewport(10, 5, 100, 80); break;
+        case 65: smooth.scale = 0.5f + random(); break;  // a uniform: a new shader copy
+        case 70: gl.ProvokingVertex(LAST_VERTEX_CONVENTION); gl.UseProgram(smooth); break;
+        case 80: gl.Disable(BLEND); gl.Disable(CULL_FACE); gl.Disable(POLYGON_OFFSET_LINE); gl.Viewport(0, 0, 120, 90); break;
+        default: break;
+      }
+      const Enum mode = modes[int(random() * 7.0f)];
+      const int count = d % 50 == 0 ? 200 : 1 + int(random() * 20.0f);  // some larger than a held draw
+      const int first = int(random() * 1700.0f);
+      if (random() < 0.5f) gl.DrawArrays(mode, first, count);
+      else gl.DrawElementsBaseVertex(mode, count, UNSIGNED_INT, std::size_t(first) * 4, int(random() * 50.0f));
+      if (way == Way::kFlushEach) gl.Flush();
+    }
+    if (way == Way::kCounted) gl.EndQuery(PRIMITIVES_GENERATED);
+    CHECK(gl.GetError() == NO_ERROR);
+    return gl.ReadPixels();
+  };
+  const Image drawn = render(1, Way::kAsDrawn);
+  CHECK(drawn.rgba == render(1, Way::kFlushEach).rgba);
+  CHECK(drawn.rgba == render(1, Way::kCounted).rgba);
+  CHECK(drawn.rgba == render(3, Way::kAsDrawn).rgba);
+  CHECK(CountColours(drawn) > 1000);  // the scene is not trivially uniform
+}
+
+TEST_CASE("a held small draw is shaded when it is drawn and rendered before what follows it", "[context]") {
+  // Each draw's vertex stage sees the data the shader points to and the buffers as they are at the draw; a clear,
+  // a query's result, a framebuffer switch and a texture bound anew after held draws apply after them.
+  Context gl(8, 8);
+  HeldDrawShader<testing::Vec4Varyings> shader;
+  glm::vec4 offset(0.0f);
+  shader.offset = &offset;
+  gl.UseProgram(shader);
+  const glm::vec4 white(1.0f);
+  const std::uint32_t vao = MakeVertexArray(gl, {{-1, -1, 0, 1}, {0, -1, 0, 1}, {-1, 1, 0, 1}}, {white, white, white});
+  auto lit = [&](int x, int y) {
+    std::uint8_t px[4];
+    gl.ReadPixel(x, y, px);
+    return px[0] > 0;
+  };
+  SECTION("data the shader points to, and the vertex buffer, changed after a draw") {
+    gl.DrawArrays(TRIANGLES, 0, 3);  // the lower left quarter
+    offset = glm::vec4(1.0f, 0.0f, 0.0f, 0.0f);
+    gl.DrawArrays(TRIANGLES, 0, 3);  // moved right
+    const glm::vec4 up[3] = {{-1, 0, 0, 1}, {0, 0, 0, 1}, {-1, 2, 0, 1}};  // the vertices moved up (and right)
+    gl.BufferSubData(ARRAY_BUFFER, 0, sizeof up, up);
+    gl.DrawArrays(TRIANGLES, 0, 3);
+    CHECK(lit(0, 0));  // the first draw, as it was drawn
+    CHECK(lit(4, 0));  // the second
+    CHECK(lit(4, 4));  // the third
+    CHECK_FALSE(lit(0, 7));  // where the first draw would reach had it read the buffer as changed
+  }
+  SECTION("a clear after held draws") {
+    gl.DrawArrays(TRIANGLES, 0, 3);
+    gl.Clear(COLOR_BUFFER_BIT);
+    offset = glm::vec4(1.0f, 0.0f, 0.0f, 0.0f);
+    gl.DrawArrays(TRIANGLES, 0, 3);
+    CHECK_FALSE(lit(0, 0));
+    CHECK(lit(4, 0));
+  }
+  SECTION("a query's result asked for while its draws are held") {
+    const std::uint32_t q = gl.GenQuery();
+    gl.BeginQuery(SAMPLES_PASSED, q);
+    gl.DrawArrays(TRIANGLES, 0, 3);
+    gl.DrawArrays(TRIANGLES, 0, 3);
+    gl.EndQuery(SAMPLES_PASSED);
+    std::uint32_t available = 0, samples = 0;
+    gl.GetQueryObjectuiv(q, QUERY_RESULT, &samples);
+    gl.GetQueryObjectuiv(q, QUERY_RESULT_AVAILABLE, &available);
+    CHECK(available == 1);
+    CHECK(samples == 2 * 16);  // 16 pixel centres under the triangle, twice
+  }
+  SECTION("a framebuffer object bound between held draws") {
+    const std::uint32_t fbo = gl.GenFramebuffer(), rb = gl.GenRenderbuffer();
+    gl.BindRenderbuffer(RENDERBUFFER, rb);
+    gl.RenderbufferStorage(RENDERBUFFER, RGBA8, 8, 8);
+    gl.BindFramebuffer(FRAMEBUFFER, fbo);
+    gl.FramebufferRenderbuffer(FRAMEBUFFER, COLOR_ATTACHMENT0, RENDERBUFFER, rb);
+    gl.Clear(COLOR_BUFFER_BIT);
+    gl.DrawArrays(TRIANGLES, 0, 3);  // into the renderbuffer
+    gl.BindFramebuffer(FRAMEBUFFER, 0);
+    offset = glm::vec4(1.0f, 0.0f, 0.0f, 0.0f);
+    gl.DrawArrays(TRIANGLES, 0, 3);  // into the context's framebuffer, moved right
+    CHECK_FALSE(lit(0, 0));
+    CHECK(lit(4, 0));
+    gl.BindFramebuffer(READ_FRAMEBUFFER, fbo);
+    CHECK(lit(0, 0));
+    CHECK_FALSE(lit(4, 0));
+  }
+  SECTION("another texture bound between held draws") {
+    UnitZeroShader sampling;
+    gl.UseProgram(sampling);
+    const std::uint8_t red[4] = {255, 0, 0, 255}, green[4] = {0, 255, 0, 255};
+    const std::uint32_t a = gl.GenTexture(), b = gl.GenTexture();
+    for (auto [t, texel] : {std::pair{a, red}, std::pair{b, green}}) {
+      gl.BindTexture(TEXTURE_2D, t);
+      gl.TexImage2D(TEXTURE_2D, 0, RGBA8, 1, 1, 0, RGBA, UNSIGNED_BYTE, texel);
+      gl.TexParameteri(TEXTURE_2D, TEXTURE_MIN_FILTER, NEAREST);
+    }
+    const std::uint32_t right = MakeVertexArray(gl, {{0, -1, 0, 1}, {1, -1, 0, 1}, {0, 1, 0, 1}});
+    gl.BindVertexArray(vao);
+    gl.BindTexture(TEXTURE_2D, a);
+    gl.DrawArrays(TRIANGLES, 0, 3);
+    gl.BindVertexArray(right);
+    gl.BindTexture(TEXTURE_2D, b);
+    gl.DrawArrays(TRIANGLES, 0, 3);
+    std::uint8_t px[4];
+    gl.ReadPixel(0, 0, px);
+    CHECK((px[0] == 255 && px[1] == 0));
+    gl.ReadPixel(4, 0, px);
+    CHECK((px[0] == 0 && px[1] == 255));
+  }
+  CHECK(gl.GetError() == NO_ERROR);
 }
 
 TEST_CASE("hostile calls: rectangles at INT_MIN and INT_MAX blit and copy what lies inside", "[context][errors][hostile]") {
