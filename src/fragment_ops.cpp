@@ -155,6 +155,7 @@ ColourPath PathOf(const ColorBuffer& cb) {
 FragmentOpsPlan PlanFragmentOps(const FragmentOpsState& state, const RenderTarget& target) {
   FragmentOpsPlan plan;
   for (int o = 0; o < kMaxColorOutputs; ++o) {
+    if (!target.color[o].Present()) continue;  // (nothing reads an absent buffer's plan)
     plan.blend[o] = Unorm8Blend(state, o, target.color[o].rgb_only);
     plan.path[o] = state.color_masks[o] != 0 ? PathOf(target.color[o]) : ColourPath::kNone;
     if (plan.path[o] != ColourPath::kNone) plan.buffers = o + 1;

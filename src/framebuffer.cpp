@@ -115,9 +115,19 @@ void FillTexels(ColorBuffer cb, int samples, Rect r, const std::uint8_t* texel) 
           std::memcpy(cb.At(x, y) + cb.plane * std::size_t(s) * bytes, texel, bytes);
     return;
   }
+  const int width = r.x1 - r.x0;
+  if (bytes == 4) {  // (RGBA8 and the other 32-bit texels: a loop of stores the compiler vectorizes)
+    std::uint32_t value;
+    std::memcpy(&value, texel, 4);
+    for (int s = 0; s < samples; ++s)
+      for (int y = r.y0; y < r.y1; ++y) {
+        std::uint8_t* row = cb.At(r.x0, y) + cb.plane * std::size_t(s) * bytes;
+        for (int x = 0; x < width; ++x) std::memcpy(row + 4 * std::size_t(x), &value, 4);
+      }
+    return;
+  }
   std::uint8_t run[16 * 16];  // 16 texels of at most 16 bytes
   for (int k = 0; k < 16; ++k) std::memcpy(run + std::size_t(k) * bytes, texel, bytes);
-  const int width = r.x1 - r.x0;
   for (int s = 0; s < samples; ++s)
     for (int y = r.y0; y < r.y1; ++y) {
       std::uint8_t* row = cb.At(r.x0, y) + cb.plane * std::size_t(s) * bytes;
