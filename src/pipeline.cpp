@@ -866,6 +866,12 @@ namespace {
 
 bool SameRect(const Rect& a, const Rect& b) { return a.x0 == b.x0 && a.y0 == b.y0 && a.x1 == b.x1 && a.y1 == b.y1; }
 
+// The same fragment operations: the same bytes (both copies of the context's state: the common case, one compare
+// of the whole), else the same values member by member (a copy whose padding differs, or zeros of either sign).
+bool SameOps(const FragmentOpsState& a, const FragmentOpsState& b) {
+  return std::memcmp(&a, &b, sizeof a) == 0 || a == b;
+}
+
 bool SamePrimitiveState(const PrimitiveState& a, const PrimitiveState& b) {
   return a.cull_enabled == b.cull_enabled && a.cull_face == b.cull_face && a.front_face == b.front_face &&
          a.polygon_mode == b.polygon_mode && a.program_point_size == b.program_point_size &&
@@ -886,7 +892,7 @@ bool JoinsPending(const PendingDraws& pending, const DrawCall& call, const DrawS
          p.snapshot == packet.snapshot && p.nvar == packet.nvar && p.interpolation == packet.interpolation &&
          p.shader_depth == packet.shader_depth && p.early_depth == packet.early_depth &&
          p.point_lower_left == packet.point_lower_left && p.line_width == packet.line_width &&
-         SameRect(p.bounds, packet.bounds) && p.ops == packet.ops && v.scale == w.scale &&
+         SameRect(p.bounds, packet.bounds) && SameOps(p.ops, packet.ops) && v.scale == w.scale &&
          v.translate == w.translate && SameRect(v.rect, w.rect) && s.samples == state.samples &&
          s.depth16 == state.depth16 && SamePrimitiveState(s.primitive, state.primitive) &&
          SameBuffers(pending.target, target) && pending.textures.Same(*packet.textures);

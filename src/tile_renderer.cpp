@@ -50,8 +50,9 @@ bool SameBuffers(const RenderTarget& a, const RenderTarget& b) {
     return false;
   for (int i = 0; i < kMaxColorOutputs; ++i) {
     const ColorBuffer &x = a.color[i], &y = b.color[i];
-    if (x.data != y.data || x.layout != y.layout || x.rgb_only != y.rgb_only || x.srgb != y.srgb || x.pitch != y.pitch)
-      return false;
+    if (x.data != y.data) return false;
+    if (x.data == nullptr) continue;  // (nothing reads the rest of an absent buffer)
+    if (x.layout != y.layout || x.rgb_only != y.rgb_only || x.srgb != y.srgb || x.pitch != y.pitch) return false;
   }
   return true;
 }
