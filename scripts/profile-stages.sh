@@ -3,6 +3,8 @@
 # (from linux-perf), then each sampled function is put in the stage it belongs to. The bench's own set-up
 # (model loading, scene generation, llvmpipe is not run) is counted apart and left out of the percentages.
 # Needs the Release build with the bench (./scripts/bench.sh builds it) and perf.
+#
+#   ./scripts/profile-stages.sh [SCENE ...]   (the scenes whose names contain SCENE; without one, the usual six)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bench=${BENCH:-build/release/bench/bench}  # BENCH=path profiles another build (an older commit's, say)
@@ -11,16 +13,18 @@ data=$(mktemp)
 trap 'rm -f "$data"' EXIT
 echo "| scene | front end | binning | clears | rasterization | early depth test | fragment shader and texture sampling | fragment operations | memory copies, fills, page faults | bench set-up (% of samples, left out) |"
 echo "|---|---|---|---|---|---|---|---|---|---|"
-for scene in "model: 2Cyl" "african_head" "small triangles" "fill rate" "overdraw"; do
+scenes=("model: 2Cyl" "african_head" "small triangles" "fill rate" "overdraw" "many draws, each its own")
+[ $# -gt 0 ] && scenes=("$@")  # scenes named on the command line: only those
+for scene in "${scenes[@]}"; do
   frames=20
-  case "$scene" in model*|african*) frames=200 ;; esac  # short frames: more of them, so set-up weighs little
+  case "$scene" in model*|african*|many*) frames=200 ;; esac  # short frames: more of them, so set-up weighs little
   perf record -q -o "$data" "$bench" --scene "$scene" --frames "$frames" --softgl-only 1 --scalar 0 --threads 1 >/dev/null 2>&1
   perf report -i "$data" --no-children --stdio --sort sym 2>/dev/null | python3 -c '
 import re, sys
 rules = [
-  ("front end", r"FetchAttribute|FetchVertices|ShadeVertices|Vertices(Avx512|Avx2|Base)|VertexLanes|Resolve|ClipCodes|ClipTriangle|ClipLine|ToWindow|SignedArea|AssemblePrimitives|AssembleRun|RecordChunk|RecordDraw|RecordPiece|PrimitiveRunner|ReadIndices|Intersect|IsFrontFacing|IsCulled|PolygonOffset|CoversNoPixelCentre|TriangleCentreBox|DrawsNothing|WindowPositions|JudgeGroup|JudgeTriangles|ContextState::Draw|Context::Draw|MakeView|Snapshot|MakeViewportTransform|WorkerPool"),
+  ("front end", r"FetchAttribute|FetchVertices|ShadeVertices|Vertices(Avx512|Avx2|Base)|VertexLanes|Resolve|ClipCodes|ClipTriangle|ClipLine|ToWindow|SignedArea|AssemblePrimitives|AssembleRun|RecordChunk|RecordDraw|RecordPiece|PrimitiveRunner|ReadIndices|Intersect|IsFrontFacing|IsCulled|PolygonOffset|CoversNoPixelCentre|TriangleCentreBox|DrawsNothing|WindowPositions|JudgeGroup|JudgeTriangles|ContextState::Draw|Context::Draw|Context::BindVertexArray|CheckNotMapped|CheckModes|FrameTarget|Framebuffer::Samples|SameBuffers|MakeView|Snapshot|MakeViewportTransform|WorkerPool|ShadeSmallDraw|SmallDrawApplies|JoinsPending|RecordPending|UniqueVertices|FragmentOpsState::operator=="),
   ("binning", r"BinnedBatch::Add|BinnedBatch::Finish|TriangleBox|LineBox|PointBox|::Box\(|SharedBatch|NewBatches|ListLastDraw|Frame::AddDraw|Frame::List"),
-  ("clears", r"RenderTarget::Clear"),
+  ("clears", r"RenderTarget::Clear|FillTexels"),
   ("rasterization", r"Rasterize|TriangleQuads|CoverTriangle|SetUpTriangle|SetUpGroup|RenderTile|BinnedBatch::Vertex|BinnedBatch::View|FragmentStage|RegionCoverage|FragCoord|VaryingsOfBlock|InterpolateVaryings|InterpolateFragCoords|AddSquare|AddQuad|EmitQuad|BlockSink"),
   ("early depth test", r"EarlyDepth|EarlyBlock|EarlyRange|HierarchicalDepth|HiddenTriangle|HiddenRegion"),
   ("fragment shader and texture sampling", r"ShadeBlocks|Blocks(Avx512|Avx2|Base)|BlockLanes|FragmentLanes|Textures::|SampleTexel|SampleBlock|SampleRepeat|FilterLevel|SampleFace|Fetch\(|Lambda|powf|__pow|expf|logf|sqrt"),
