@@ -24,7 +24,7 @@ valgrind --tool=callgrind --callgrind-out-file="$out" \
   "$bench" --threads 1 --frames "$frames" --scalar 0 --softgl-only 1 --scene "$scene" > /dev/null 2>&1
 # The bench draws two warm-up frames before the timed ones.
 draws=$((per_frame * (frames + 2)))
-callgrind_annotate --inclusive=yes "$out" 2> /dev/null | awk -v draws="$draws" -v scene="$scene" '
+callgrind_annotate --inclusive=yes --threshold=100 "$out" 2> /dev/null | awk -v draws="$draws" -v scene="$scene" '
   /:softgl::Context::(Draw|BindVertexArray)/ { gsub(",", "", $1); record += $1 }
   /:softgl::Context::(Clear|Finish)\(/ { gsub(",", "", $1); render += $1 }
   END {
