@@ -1223,7 +1223,8 @@ void RasterizeTriangles(TriangleQueue& q, const RasterTarget& target, BlockBuffe
     for (int k = 0; k < 3; ++k) q.x[k][t] = q.y[k][t] = q.z[k][t] = q.w[k][t] = q.depth_offset[t] = 0.0f;
   static const SetUpGroupFn set_up = SOFTGL_CHOOSE(SetUpGroup);
   SetUpRows rows;
-  set_up(q, n, target, rows);
+  if (n > 1) set_up(q, n, target, rows);
+  else rows.handled = 0;  // one triangle (a tile's only one of a draw): set up alone, for less than a vector costs
   for (int t = 0; t < n; ++t) {
     if (rows.handled >> t & 1u) {
       if (!(rows.drawn >> t & 1u)) continue;
