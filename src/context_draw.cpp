@@ -5,6 +5,7 @@
 #include "viewport.h"
 
 #include <bit>
+#include <optional>
 
 namespace softgl {
 
@@ -30,8 +31,10 @@ void ContextState::Draw(const detail::DrawCall& call) {
     src.stride = a.stride ? std::size_t(a.stride) : detail::AttributeBytes(a.type, a.size);
   }
 
-  detail::RenderTarget target;
-  if (!DrawTarget(target, true)) return;
+  // The draw's target: the context's framebuffer's as kept from draw to draw, or the framebuffer object's.
+  std::optional<detail::RenderTarget> fbo_target;
+  if (draw_fbo && !DrawTarget(fbo_target.emplace(), true)) return;
+  const detail::RenderTarget& target = draw_fbo ? *fbo_target : fb.KeptFrameTarget(framebuffer_srgb);
   if (condition_discards) return;  // BeginConditionalRender's query counted nothing
 
   // The fragment stage's state, captured now: the shader's uniforms (a copy), the textures of every unit resolved

@@ -1024,6 +1024,18 @@ RenderTarget Framebuffer::FrameTarget(bool srgb_enabled) {
   return t;
 }
 
+const RenderTarget& Framebuffer::KeptFrameTarget(bool srgb_enabled) {
+  KeptTarget& k = kept_[srgb_enabled ? 1 : 0];
+  const TargetKey now{{color.data(), depth16 ? static_cast<const void*>(depth16_data.data()) : depth.data(),
+                       stencil.data(), sample_tiles.tiles.data()},
+                      width, height, samples, layout, srgb, depth16};
+  if (!(k.key == now)) {
+    k.target = FrameTarget(srgb_enabled);
+    k.key = now;
+  }
+  return k.target;
+}
+
 RenderTarget Framebuffer::Samples(bool srgb_enabled) {
   RenderTarget t;
   t.width = width;

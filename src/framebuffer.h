@@ -214,6 +214,24 @@ struct Framebuffer {
   /// The single-sampled image reads take: Target itself when samples is 1, else `resolved`, its stale tiles of
   /// `buffers` (kColorBit, ...) brought up to date first.
   RenderTarget ReadTarget(bool srgb_enabled = false, unsigned buffers = kAllBuffers);
+  /// FrameTarget(srgb_enabled), kept from call to call while the buffers stay the same: what a draw reads, without
+  /// building the target again for each draw.
+  const RenderTarget& KeptFrameTarget(bool srgb_enabled);
+
+ private:
+  // What a kept target was made from: the buffers' storage and the sample tiles', size and format.
+  struct TargetKey {
+    const void* buffers[4] = {};
+    int width = -1, height = -1, samples = 0;
+    TexelLayout layout = TexelLayout::kNone;
+    bool srgb = false, depth16 = false;
+    bool operator==(const TargetKey&) const = default;
+  };
+  struct KeptTarget {
+    RenderTarget target;
+    TargetKey key;
+  };
+  KeptTarget kept_[2];  // by srgb_enabled
 };
 
 /// Averages the samples of pixel (x, y) of a multisampled colour buffer (as Load reads them).
