@@ -5,7 +5,6 @@
 #include "viewport.h"
 
 #include <bit>
-#include <optional>
 
 namespace softgl {
 
@@ -32,9 +31,8 @@ void ContextState::Draw(const detail::DrawCall& call) {
   }
 
   // The draw's target: the context's framebuffer's as kept from draw to draw, or the framebuffer object's.
-  std::optional<detail::RenderTarget> fbo_target;
-  if (draw_fbo && !DrawTarget(fbo_target.emplace(), true)) return;
-  const detail::RenderTarget& target = draw_fbo ? *fbo_target : fb.KeptFrameTarget(framebuffer_srgb);
+  if (draw_fbo && !DrawTarget(fbo_draw_target, true)) return;
+  const detail::RenderTarget& target = draw_fbo ? fbo_draw_target : fb.KeptFrameTarget(framebuffer_srgb);
   if (condition_discards) return;  // BeginConditionalRender's query counted nothing
 
   // The fragment stage's state, captured now: the shader's uniforms (a copy), the textures of every unit resolved

@@ -296,6 +296,7 @@ struct ContextState {
   std::unique_ptr<detail::WorkerPool> pool;
   detail::Frame frame;  // recorded clears and draws, not yet rendered
   detail::PendingDraws pending;  // small draws in a row, shaded but not yet recorded into `frame`
+  detail::RenderTarget fbo_draw_target;  // Draw's target when a framebuffer object is bound (reused from draw to draw)
   std::vector<std::uint32_t> tile_counts;  // CountTilePrimitives: primitives per tile (empty when off)
   glm::ivec2 tile_count_grid{0, 0};        // the tiles' columns and rows
   detail::FetchPlan fetch_plan;  // Draw's resolution of the vertex array (a disabled attribute: its current value)

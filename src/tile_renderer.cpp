@@ -45,6 +45,7 @@ void DrawTextures::CopyFrom(const Textures& t) {
 }
 
 bool SameBuffers(const RenderTarget& a, const RenderTarget& b) {
+  if (std::memcmp(&a, &b, sizeof a) == 0) return true;  // (a copy of the other: the common case, one compare)
   if (a.width != b.width || a.height != b.height || a.samples != b.samples || a.depth != b.depth || a.depth_pitch != b.depth_pitch ||
       a.stencil != b.stencil || a.stencil_pitch != b.stencil_pitch || a.depth16 != b.depth16 || a.tiles != b.tiles)
     return false;
