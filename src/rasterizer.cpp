@@ -974,12 +974,21 @@ void CoverTriangle(const SetUpRows& r, int t, bool front_facing, const RasterTar
     corner_min[e] = std::min<std::int64_t>(dx, 0) + std::min<std::int64_t>(dy, 0);
     corner_max[e] = std::max<std::int64_t>(dx, 0) + std::max<std::int64_t>(dy, 0);
   }
+  // Each edge at the first pixel of a row's first region, then of each region, stepped (exact integers).
+  std::int64_t row_start[3], at[3];
+  for (int e = 0; e < 3; ++e) row_start[e] = edge_at(e, qx_first, qy_first);
   for (std::int64_t ry = qy_first; ry <= py1; ry += kRegion) {
+    for (int e = 0; e < 3; ++e) {
+      at[e] = row_start[e];
+      row_start[e] += step_y[e] * kRegion;
+    }
     for (std::int64_t rx = qx_first; rx <= px1; rx += kRegion) {
       bool skip = false, whole = true;
       std::int64_t corner[3], corner_lo[3];
+      const std::int64_t here[3] = {at[0], at[1], at[2]};
+      for (int e = 0; e < 3; ++e) at[e] += step_x[e] * kRegion;
       for (int e = 0; e < 3 && !skip; ++e) {
-        const std::int64_t c00 = edge_at(e, rx, ry), lo = c00 + corner_min[e], hi = c00 + corner_max[e];
+        const std::int64_t c00 = here[e], lo = c00 + corner_min[e], hi = c00 + corner_max[e];
         if (hi < 0) skip = true;
         if (lo < 0) whole = false;
         corner[e] = c00;
