@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <set>
 #include <vector>
 
 #include "helpers.h"
@@ -317,6 +318,82 @@ TEST_CASE("an indexed draw fetches and shades each distinct index once", "[verte
   gl.Finish();
   CHECK(calls == 300);
   for (int i = 0; i < 300; ++i) CHECK(per_vertex[std::size_t(i)] == (i % 3 == 0 ? 2 : i % 3 == 1 ? 1 : 0));
+}
+
+TEST_CASE("an indexed draw of a mesh shades its index range once and draws what the same triangles draw unindexed",
+          "[vertex_fetch]") {
+  // A 30 x 30 grid of vertices (numbers 40 .. 940, one of them, 490, used by no triangle), 1,682 triangles: its
+  // indices are packed close together (the range a third of the elements at most), so the whole range is shaded,
+  // each vertex once, the unused one too. A few triangles cross the near plane and are clipped. The image must be
+  // the bytes of the same triangles drawn unindexed in draws of 300.
+  struct Counting : softgl::Shader<Counting, testing::Vec4Varyings> {
+    std::vector<std::atomic<int>>* per_vertex = nullptr;
+    void Vertex(const VertexIn& in, VertexOut<testing::Vec4Varyings>& out) const {
+      if (per_vertex) ++(*per_vertex)[std::size_t(in.vertex_id)];
+      out.position = in.attrib[0];
+      out.varyings.value = in.attrib[1];
+    }
+    bool Fragment(const FragmentIn<testing::Vec4Varyings>& in, FragmentOut& out) const {
+      out.color[0] = in.varyings.value;
+      return true;
+    }
+  };
+  constexpr int kSide = 30, kFirst = 40, kUnused = 490, kVertices = kFirst + kSide * kSide + 1;
+  auto number = [](int node) { return kFirst + node + (kFirst + node >= kUnused ? 1 : 0); };
+  std::vector<glm::vec4> positions(kVertices, glm::vec4(0.0f)), colors(kVertices, glm::vec4(0.0f));
+  for (int node = 0; node < kSide * kSide; ++node) {
+    const int i = node % kSide, j = node / kSide;
+    const float x = float(i) / float(kSide - 1) * 1.8f - 0.9f + 0.013f * float(j % 3);
+    const float y = float(j) / float(kSide - 1) * 1.8f - 0.9f + 0.011f * float(i % 4);
+    const float z = (i == 7 && j > 10 && j < 14) ? -2.5f : 0.3f * float((i * 7 + j * 3) % 5) / 5.0f;  // (a few behind the near plane)
+    positions[std::size_t(number(node))] = glm::vec4(x, y, z, 1.0f);
+    colors[std::size_t(number(node))] = glm::vec4(float(i) / kSide, float(j) / kSide, float((i + j) % 7) / 7.0f, 1.0f);
+  }
+  std::vector<std::uint32_t> indices;
+  for (int j = 0; j + 1 < kSide; ++j)
+    for (int i = 0; i + 1 < kSide; ++i) {
+      const int a = j * kSide + i, b = a + 1, c = a + kSide, d = c + 1;
+      for (int node : {a, b, d, a, d, c}) indices.push_back(std::uint32_t(number(node)));
+    }
+  REQUIRE(indices.size() == 1682 * 3);
+  std::vector<std::atomic<int>> per_vertex(kVertices);
+  Counting shader;
+  shader.per_vertex = &per_vertex;
+  auto render = [&](bool indexed) {
+    Context gl(96, 80);
+    gl.Enable(DEPTH_TEST);
+    gl.ClearColor(0.1f, 0.2f, 0.3f, 1.0f);
+    gl.Clear(COLOR_BUFFER_BIT | DEPTH_BUFFER_BIT);
+    gl.UseProgram(shader);
+    if (indexed) {
+      testing::MakeVertexArray(gl, positions, colors);
+      gl.BindBuffer(ELEMENT_ARRAY_BUFFER, gl.GenBuffer());
+      gl.BufferData(ELEMENT_ARRAY_BUFFER, std::ptrdiff_t(indices.size() * 4), indices.data());
+      gl.DrawElement(TRIANGLES, int(indices.size()), UNSIGNED_INT, 0);
+    } else {
+      std::vector<glm::vec4> p, c;
+      for (std::uint32_t i : indices) {
+        p.push_back(positions[i]);
+        c.push_back(colors[i]);
+      }
+      testing::MakeVertexArray(gl, p, c);
+      for (int first = 0; first < int(p.size()); first += 900) gl.DrawArrays(TRIANGLES, first, std::min(900, int(p.size()) - first));
+    }
+    CHECK(gl.GetError() == NO_ERROR);
+    return gl.ReadPixels();
+  };
+  const softgl::Image indexed = render(true);
+  int wrong = 0;
+  for (int i = 0; i < kVertices; ++i) wrong += per_vertex[std::size_t(i)].exchange(0) != (i >= kFirst ? 1 : 0);
+  CHECK(wrong == 0);
+  shader.per_vertex = nullptr;
+  const softgl::Image unindexed = render(false);
+  CHECK(indexed.rgba == unindexed.rgba);
+  // The picture is the grid's colours, not the clear colour alone.
+  std::set<std::uint32_t> colours;
+  for (std::size_t k = 0; k < indexed.rgba.size(); k += 4)
+    colours.insert(std::uint32_t(indexed.rgba[k]) | std::uint32_t(indexed.rgba[k + 1]) << 8 | std::uint32_t(indexed.rgba[k + 2]) << 16);
+  CHECK(colours.size() > 500);
 }
 
 TEST_CASE("a DrawArrays larger than a piece shades each of its vertices once, with its own gl_VertexID",
