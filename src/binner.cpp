@@ -33,31 +33,12 @@ void BinnedBatch::Reset(int nvar) {
   notes_.clear();
   tile_start_.clear();
   box_ = Rect{INT_MAX, INT_MAX, INT_MIN, INT_MIN};  // (empty; any box's union with it is that box)
+  table_ = nullptr;
   // tile_data_ keeps its size: Finish overwrites what it uses (tile_start_ bounds it), without zeroing it first.
 }
 
-void BinnedBatch::Add(const BinnedPrimitive& prim, const VertexView* v, const Rect& box, const TileGrid& grid) {
-  if (box.Empty()) return;
-  const auto index = std::uint32_t(prims_.size());
-  BinnedPrimitive p = prim;
-  p.first_float = vertices_used_;
-  p.index = index;
-  const int n = int(prim.kind);
-  const std::size_t stride = 4 + std::size_t(nvar_), need = std::size_t(n) * stride;
-  if (vertices_used_ + need > vertices_.size())  // grows by doubling; not cleared between batches
-    vertices_.resize(std::max(vertices_.size() * 2, vertices_used_ + need));
-  float* dst = vertices_.data() + vertices_used_;
-  vertices_used_ += std::uint32_t(need);
-  const auto copy = [&](int k) {
-    std::memcpy(dst + std::size_t(k) * stride, &v[k].win, sizeof(float) * 4);
-    if (nvar_ > 0)  // (var may be null)
-      std::memcpy(dst + std::size_t(k) * stride + 4, v[k].var, sizeof(float) * std::size_t(nvar_));
-  };
-  switch (n) {  // (the vertices of a point, a line or a triangle, each copy inline)
-    case 3: copy(2); [[fallthrough]];
-    case 2: copy(1); [[fallthrough]];
-    default: copy(0);
-  }
+[[gnu::always_inline]] inline void BinnedBatch::Note(const BinnedPrimitive& p, const Rect& box, const TileGrid& grid) {
+  const std::uint32_t index = p.index;
   prims_.push_back(p);
   box_ = Rect{std::min(box_.x0, box.x0), std::min(box_.y0, box.y0), std::max(box_.x1, box.x1),
               std::max(box_.y1, box.y1)};
@@ -80,16 +61,61 @@ void BinnedBatch::Add(const BinnedPrimitive& prim, const VertexView* v, const Re
     for (int tx = tx0; tx <= tx1; ++tx) notes_.push_back(std::uint64_t(ty * grid.cols + tx) << 32 | index);
 }
 
+void BinnedBatch::Add(const BinnedPrimitive& prim, const VertexView* v, const Rect& box, const TileGrid& grid) {
+  if (box.Empty()) return;
+  BinnedPrimitive p = prim;
+  p.first_float = vertices_used_;
+  p.index = std::uint32_t(prims_.size());
+  p.indexed = false;
+  const int n = int(prim.kind);
+  const std::size_t stride = 4 + std::size_t(nvar_), need = std::size_t(n) * stride;
+  if (vertices_used_ + need > vertices_.size())  // grows by doubling; not cleared between batches
+    vertices_.resize(std::max(vertices_.size() * 2, vertices_used_ + need));
+  float* dst = vertices_.data() + vertices_used_;
+  vertices_used_ += std::uint32_t(need);
+  const auto copy = [&](int k) {
+    std::memcpy(dst + std::size_t(k) * stride, &v[k].win, sizeof(float) * 4);
+    if (nvar_ > 0)  // (var may be null)
+      std::memcpy(dst + std::size_t(k) * stride + 4, v[k].var, sizeof(float) * std::size_t(nvar_));
+  };
+  switch (n) {  // (the vertices of a point, a line or a triangle, each copy inline)
+    case 3: copy(2); [[fallthrough]];
+    case 2: copy(1); [[fallthrough]];
+    default: copy(0);
+  }
+  Note(p, box, grid);
+}
+
+void BinnedBatch::AddIndexed(const BinnedPrimitive& prim, const std::uint32_t* index, const Rect& box,
+                             const TileGrid& grid) {
+  if (box.Empty()) return;
+  BinnedPrimitive p = prim;
+  p.first_float = vertices_used_;
+  p.index = std::uint32_t(prims_.size());
+  p.indexed = true;
+  const std::size_t need = std::size_t(int(prim.kind));
+  if (vertices_used_ + need > vertices_.size()) vertices_.resize(std::max(vertices_.size() * 2, vertices_used_ + need));
+  float* dst = vertices_.data() + vertices_used_;  // the numbers in floats' places
+  switch (need) {  // (a point, a line or a triangle: each number a move)
+    case 3: std::memcpy(dst + 2, index + 2, sizeof(std::uint32_t)); [[fallthrough]];
+    case 2: std::memcpy(dst + 1, index + 1, sizeof(std::uint32_t)); [[fallthrough]];
+    default: std::memcpy(dst, index, sizeof(std::uint32_t));
+  }
+  vertices_used_ += std::uint32_t(need);
+  Note(p, box, grid);
+}
+
 void BinnedBatch::Finish(const TileGrid& grid) {
   // A stable counting sort of the notes by tile, moving the data: each tile's list keeps submission order.
   static_assert(sizeof(BinnedPrimitive) % sizeof(float) == 0);
   static_assert(sizeof(BinnedPrimitive) == 20);
-  // Primitives over many tiles: their vertices once, in shared_.
+  // Primitives over many tiles: their vertices once, in shared_ (an indexed one's numbers are as small as a
+  // reference to them: it is shared only when in no tile's list, as a large primitive).
   std::size_t next_large = 0;
   for (std::size_t i = 0; i < prims_.size(); ++i) {
-    if (prim_tiles_[i] <= kInlineTiles) continue;
+    if (prim_tiles_[i] <= (prims_[i].indexed ? kListedTiles : kInlineTiles)) continue;
     BinnedPrimitive& p = prims_[i];
-    const std::size_t n = std::size_t(int(p.kind) * (4 + nvar_));
+    const std::size_t n = Words(p);
     const auto at = std::uint32_t(shared_.size());
     shared_.insert(shared_.end(), vertices_.begin() + p.first_float, vertices_.begin() + p.first_float + n);
     p.first_float = at;
@@ -98,7 +124,7 @@ void BinnedBatch::Finish(const TileGrid& grid) {
   }
   auto size_of = [&](std::uint32_t prim) {
     const BinnedPrimitive& p = prims_[prim];
-    return std::uint32_t(kHeaderFloats + (p.shared ? 0 : int(p.kind) * (4 + nvar_)));
+    return std::uint32_t(kHeaderFloats) + (p.shared ? 0u : Words(p));
   };
   // Lists for the tiles from the first to the last one noted (grid order).
   int lo = grid.Count(), hi = -1;
@@ -118,17 +144,15 @@ void BinnedBatch::Finish(const TileGrid& grid) {
     float* dst = tile_data_.data() + fill[std::size_t(int(n >> 32) - lo)];
     const BinnedPrimitive& p = prims_[prim];
     std::memcpy(dst, static_cast<const void*>(&p), sizeof p);
-    if (!p.shared)
-      std::memcpy(dst + kHeaderFloats, vertices_.data() + p.first_float,
-                  sizeof(float) * std::size_t(int(p.kind) * (4 + nvar_)));
+    if (!p.shared) std::memcpy(dst + kHeaderFloats, vertices_.data() + p.first_float, sizeof(float) * Words(p));
     fill[std::size_t(int(n >> 32) - lo)] += size_of(prim);
   }
   notes_.clear();
   vertices_used_ = 0;
 }
 
-void BinnedBatch::Vertex(const float* vertices, int k, WindowVertex& out) const {
-  const float* src = vertices + std::size_t(k) * std::size_t(4 + nvar_);
+void BinnedBatch::Vertex(const VertexRuns& vertices, int k, WindowVertex& out) const {
+  const float* src = vertices.v[k];
   std::memcpy(&out.win, src, sizeof(float) * 4);
   std::memcpy(out.var, src + 4, sizeof(float) * std::size_t(nvar_));
 }

@@ -32,11 +32,13 @@ struct TileGrid {
 enum class PrimitiveKind : std::uint8_t { kPoint = 1, kLine = 2, kTriangle = 3 };
 
 /// One primitive ready for the rasterizer; its vertices are `kind` runs of 4 + nvar floats each (window position,
-/// then varyings), stored from BinnedBatch::vertices[first_float].
+/// then varyings), stored from BinnedBatch::vertices[first_float], or, when `indexed`, `kind` vertex numbers stored
+/// there instead, each vertex a run of the batch's table (SetTable).
 struct BinnedPrimitive {  // 20 bytes: stored inline in the tile lists
   PrimitiveKind kind = PrimitiveKind::kTriangle;
   bool front_facing = true;
   bool shared = false;  // its vertices are stored once for all its tiles (a primitive over many tiles)
+  bool indexed = false;  // its vertices are numbers of runs in the batch's table (32 bits each, in a float's place)
   float depth_offset = 0.0f;  // polygon offset
   float point_size = 1.0f;
   std::uint32_t first_float = 0;
@@ -49,10 +51,18 @@ struct BinnedPrimitive {  // 20 bytes: stored inline in the tile lists
 /// keeps one copy of its vertices that its records point to; one over more than kListedTiles tiles is in no tile
 /// list at all but in the batch's list of large primitives, which every tile walks beside its own list, in
 /// submission order. So a batch's memory is bounded by its primitives, whatever the framebuffer's size.
+/// A binned primitive's vertices as a tile reads them: vertex k's window position, then its varyings, from v[k].
+struct VertexRuns {
+  const float* v[3];
+};
+
 class BinnedBatch {
  public:
   /// Empties the batch for a draw with `nvar` floats of varyings per vertex.
   void Reset(int nvar);
+  /// The vertices AddIndexed refers to: runs of 4 + nvar floats (window position, then varyings), which must stay
+  /// where they are until the batch is reset (the frame keeps them: Frame::KeepVertices).
+  void SetTable(const float* table) { table_ = table; }
 
   /// Appends a primitive whose fragments all lie in `box` (pixels, half-open, already inside the draw's bounds)
   /// and notes it for every tile that box overlaps; its `kind` vertices are read from `v`.
@@ -61,6 +71,9 @@ class BinnedBatch {
     const VertexView views[3] = {v[0], int(prim.kind) > 1 ? v[1] : v[0], int(prim.kind) > 2 ? v[2] : v[0]};
     Add(prim, views, box, grid);
   }
+  /// Add() for a primitive whose vertices are runs index[0 .. kind) of the batch's table, not copied: the tile
+  /// lists hold their numbers.
+  void AddIndexed(const BinnedPrimitive& prim, const std::uint32_t* index, const Rect& box, const TileGrid& grid);
   /// Builds the per-tile lists; call once, after the last Add.
   void Finish(const TileGrid& grid);
 
@@ -70,8 +83,7 @@ class BinnedBatch {
     std::uint32_t at = 0, end = 0;  // in tile_data_
     std::size_t large = 0;          // next in large_
   };
-  /// Walks the primitives of `tile` in order: fn(const BinnedPrimitive&, const float* vertices), the vertices
-  /// being `kind` runs of 4 + nvar floats (window position, then varyings).
+  /// Walks the primitives of `tile` in order: fn(const BinnedPrimitive&, const VertexRuns& vertices).
   template <class Fn>
   void ForEachInTile(int tile, const Rect& tile_rect, Fn&& fn) const {
     Cursor cursor;
@@ -96,14 +108,14 @@ class BinnedBatch {
         const Large& l = large_[cursor.large];
         if (l.prim.index >= hi) return;
         ++cursor.large;
-        if (l.prim.index >= lo && Overlap(l.box, tile_rect)) fn(l.prim, shared_.data() + l.prim.first_float);
+        if (l.prim.index >= lo && Overlap(l.box, tile_rect)) fn(l.prim, Runs(l.prim, shared_.data() + l.prim.first_float));
         continue;
       }
       if (!listed || next >= hi) return;
       const float* p = base + cursor.at + kHeaderFloats;
-      cursor.at += kHeaderFloats + (prim.shared ? 0u : std::uint32_t(int(prim.kind) * (4 + nvar_)));
+      cursor.at += kHeaderFloats + (prim.shared ? 0u : Words(prim));
       if (next < lo) continue;
-      fn(prim, prim.shared ? shared_.data() + prim.first_float : p);
+      fn(prim, Runs(prim, prim.shared ? shared_.data() + prim.first_float : p));
     }
   }
   /// Prefetches, for a walk of `tile` soon, the batch itself (stage 0), where its list starts (1), or the list's
@@ -148,11 +160,11 @@ class BinnedBatch {
   int Nvar() const { return nvar_; }
   /// The union of the boxes of the primitives added (pixels; empty when none was).
   Rect Box() const { return box_.Empty() ? Rect{} : box_; }
-  /// Copies vertex k of the run at `vertices` into a WindowVertex.
-  void Vertex(const float* vertices, int k, WindowVertex& out) const;
-  /// Vertex k of the run at `vertices`, read in place.
-  VertexView View(const float* vertices, int k) const {
-    const float* src = vertices + std::size_t(k) * std::size_t(4 + nvar_);
+  /// Copies vertex k of `vertices` into a WindowVertex.
+  void Vertex(const VertexRuns& vertices, int k, WindowVertex& out) const;
+  /// Vertex k of `vertices`, read in place.
+  static VertexView View(const VertexRuns& vertices, int k) {
+    const float* src = vertices.v[k];
     return VertexView(glm::vec4(src[0], src[1], src[2], src[3]), src + 4);
   }
 
@@ -167,6 +179,29 @@ class BinnedBatch {
     BinnedPrimitive prim;  // shared, in shared_
     Rect box;
   };
+  // The floats a primitive's vertices take where they are stored: its runs, or its runs' numbers.
+  std::uint32_t Words(const BinnedPrimitive& p) const {
+    return std::uint32_t(int(p.kind) * (p.indexed ? 1 : 4 + nvar_));
+  }
+  // Where the vertices of `p`, stored from `words`, are.
+  VertexRuns Runs(const BinnedPrimitive& p, const float* words) const {
+    VertexRuns r;
+    const int n = int(p.kind);
+    const std::size_t stride = std::size_t(4 + nvar_);
+    for (int k = 0; k < 3; ++k) {
+      const int at = k < n ? k : 0;
+      if (p.indexed) {
+        std::uint32_t i;
+        std::memcpy(&i, words + at, sizeof i);
+        r.v[k] = table_ + std::size_t(i) * stride;
+      } else {
+        r.v[k] = words + std::size_t(at) * stride;
+      }
+    }
+    return r;
+  }
+  // Notes primitive p, which Add or AddIndexed stored, for the tiles `box` overlaps.
+  void Note(const BinnedPrimitive& p, const Rect& box, const TileGrid& grid);
   static bool Overlap(const Rect& a, const Rect& b) {
     return a.x0 < b.x1 && b.x0 < a.x1 && a.y0 < b.y1 && b.y0 < a.y1;
   }
@@ -179,6 +214,7 @@ class BinnedBatch {
   std::vector<Large> large_;                // primitives over more than kListedTiles tiles, in order
   Rect box_{INT_MAX, INT_MAX, INT_MIN, INT_MIN};  // the union of the primitives' boxes (inverted: none yet)
   int nvar_ = 0;
+  const float* table_ = nullptr;            // SetTable
   std::vector<BinnedPrimitive> prims_;      // in submission order
   std::vector<std::uint32_t> prim_tiles_;   // how many tiles each primitive touches
   std::vector<float> vertices_;             // the primitives' vertices, vertices_used_ floats of it

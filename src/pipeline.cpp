@@ -11,6 +11,7 @@
 #include "binner.h"
 #include "rasterizer.h"  // PolygonOffset, TriangleCentreBox
 #include "simd.h"
+#include "wide.h"
 
 namespace softgl::detail {
 
@@ -50,16 +51,27 @@ bool AnyNoPerspective(const Interpolation* interpolation, int nvar) {
     }
   ClipCodesOfVertices(&out.position[std::size_t(base)], m, planes, &out.clip_codes[std::size_t(base)]);
   WindowPositions(&out.position[std::size_t(base)], m, viewport, &out.window[std::size_t(base)]);
-  for (int i = base; out.nvar > 0 && i < base + m; ++i) {
+  for (int i = base; i < base + m; ++i) {
     const float w = out.position[std::size_t(i)].w;
     float* __restrict v = out.varyings.data() + std::size_t(i) * out.nvar;
     if (noperspective)
       for (int k = 0; k < out.nvar; ++k)
         if (interpolation[k] == Interpolation::kNoPerspective) v[k] *= w;
     if (out.clip_codes[std::size_t(i)] != 0) continue;
-    const float oow = out.window[std::size_t(i)].w;
-    float* __restrict win = out.window_varyings.data() + std::size_t(i) * out.nvar;
-    for (int k = 0; k < out.nvar; ++k) win[k] = v[k] * oow;
+    const glm::vec4& window = out.window[std::size_t(i)];
+    float* __restrict run = out.window_vertices.data() + std::size_t(i) * std::size_t(out.WindowStride());
+    std::memcpy(run, &window, sizeof(float) * 4);
+    // Four varyings to a vector, then the last one to three (a loop of the varyings' count, which is short, costs
+    // more in its set-up than in its multiplications).
+    using F4 = V<4>::F;
+    int k = 0;
+    for (; k + 4 <= out.nvar; k += 4) StoreVec(run + 4 + k, LoadVec<F4>(v + k) * window.w);
+    switch (out.nvar - k) {  // (not a loop: the compiler would vectorize it too, at a set-up's cost)
+      case 3: run[6 + k] = v[k + 2] * window.w; [[fallthrough]];
+      case 2: run[5 + k] = v[k + 1] * window.w; [[fallthrough]];
+      case 1: run[4 + k] = v[k] * window.w; break;
+      default: break;
+    }
   }
 }
 
@@ -68,7 +80,7 @@ bool AnyNoPerspective(const Interpolation* interpolation, int nvar) {
   const std::size_t n = std::size_t(out.count);
   out.clip_codes.resize(n);
   out.window.resize(n);
-  out.window_varyings.resize(n * std::size_t(out.nvar));
+  out.window_vertices.resize(n * std::size_t(out.WindowStride()));
   if (record) out.feedback.resize(n * std::size_t(record->floats));
 }
 
@@ -258,14 +270,13 @@ class PrimitiveRunner {
   // A filled triangle inside the guard band, without flat varyings, whose facing and TriangleCentreBox (not empty)
   // Judge() found.
   void Known(std::uint32_t i0, std::uint32_t i1, std::uint32_t i2, bool front_facing, const Rect& box) {
-    const float* var = sv_.window_varyings.data();
-    const std::size_t nvar = std::size_t(sv_.nvar);
-    const VertexView view[3] = {VertexView(sv_.window[i0], var + std::size_t(i0) * nvar),
-                                VertexView(sv_.window[i1], var + std::size_t(i1) * nvar),
-                                VertexView(sv_.window[i2], var + std::size_t(i2) * nvar)};
     front_ = front_facing;
-    BinTriangle(view, box);
+    BinTriangle(i0, i1, i2, box);
   }
+
+  // Whether filled triangles that need no clipping are binned by their vertices' numbers in sv.window_vertices
+  // (which the frame then keeps: BinnedBatch::AddIndexed), not with copies of them.
+  void UseTable(bool on) { table_ = on; }
 
   // A line between shaded vertices i0 and i1 whose flat varyings come from vertex `provoking`.
   void Line(std::uint32_t i0, std::uint32_t i1, std::uint32_t provoking, bool front_facing = true) {
@@ -298,16 +309,13 @@ class PrimitiveRunner {
       const Rect box =
           fill ? TriangleCentreBox(win_[0].win, win_[1].win, win_[2].win, state_.bounds, state_.samples) : Rect{};
       if (fill && box.Empty()) return;
-      const float* var = sv_.window_varyings.data();
-      const std::size_t nvar = std::size_t(sv_.nvar);
       if (fill && flat_count_ == 0) {  // binned from where the varyings are
-        VertexView view[3];
-        for (int k = 0; k < 3; ++k) view[k] = VertexView(win_[k].win, var + std::size_t(idx[k]) * nvar);
-        BinTriangle(view, box);
+        BinTriangle(i0, i1, i2, box);
         return;
       }
+      const std::size_t nvar = std::size_t(sv_.nvar);
       for (int k = 0; k < 3; ++k)
-        if (nvar > 0) std::memcpy(win_[k].var, var + std::size_t(idx[k]) * nvar, sizeof(float) * nvar);
+        if (nvar > 0) std::memcpy(win_[k].var, sv_.WindowVertexAt(idx[k]) + 4, sizeof(float) * nvar);
     } else {
       ToClipVertex(sv_, i0, clip_[0]);
       ToClipVertex(sv_, i1, clip_[1]);
@@ -350,15 +358,24 @@ class PrimitiveRunner {
     AddPoint(win_[0], PointSizeOf(i), front_facing);
   }
 
-  // A filled triangle whose pixel centres lie in `box` (TriangleCentreBox), with the facing in front_.
-  void BinTriangle(const VertexView* v, const Rect& box) {
+  // A filled triangle of shaded vertices i0, i1, i2, inside the guard band, whose pixel centres lie in `box`
+  // (TriangleCentreBox), with the facing in front_: by their numbers (UseTable), or with copies of them.
+  void BinTriangle(std::uint32_t i0, std::uint32_t i1, std::uint32_t i2, const Rect& box) {
     BinnedPrimitive p;
     p.kind = PrimitiveKind::kTriangle;
     p.front_facing = front_;
     if (state_.primitive.offset_fill)
-      p.depth_offset = PolygonOffset(v[0].win, v[1].win, v[2].win, state_.primitive.offset_factor,
+      p.depth_offset = PolygonOffset(sv_.window[i0], sv_.window[i1], sv_.window[i2], state_.primitive.offset_factor,
                                      state_.primitive.offset_units, state_.depth16);
-    bins_.Add(p, v, box, grid_);
+    if (table_) {
+      const std::uint32_t index[3] = {i0, i1, i2};
+      bins_.AddIndexed(p, index, box, grid_);
+      return;
+    }
+    const VertexView view[3] = {VertexView(sv_.window[i0], sv_.WindowVertexAt(i0) + 4),
+                                VertexView(sv_.window[i1], sv_.WindowVertexAt(i1) + 4),
+                                VertexView(sv_.window[i2], sv_.WindowVertexAt(i2) + 4)};
+    bins_.Add(p, view, box, grid_);
   }
 
   // The surviving polygon win_[0 .. count) of triangle (i0, i1, i2), filled, as lines or as points.
@@ -424,6 +441,7 @@ class PrimitiveRunner {
   int flat_count_ = 0;
   bool ids_ = false;  // primitives carry their number to the fragment stage
   std::uint32_t id_ = 0;
+  bool table_ = false;  // UseTable
 };
 
 }  // namespace
@@ -560,7 +578,7 @@ void ShadeAndAssemble(const DrawCall& call, const FetchPlan& fetch, const DrawSt
 // primitives, each job into its own batch, the batches kept in primitive order. With `layer` >= 0 (a layered
 // framebuffer), only the primitives scratch.primitive_layer sends to that layer.
 void BinPrimitives(const AssembledPiece& a, const DrawState& state, DrawPacket& packet, Frame& frame,
-                   WorkerPool& pool, Scratch& scratch, int layer = -1) {
+                   WorkerPool& pool, Scratch& scratch, int layer = -1, bool keep_vertices = false) {
   const Primitives& prims = scratch.primitives;
   const int per = a.per;
   const std::size_t per_instance = a.per_instance, count = a.count;
@@ -577,6 +595,11 @@ void BinPrimitives(const AssembledPiece& a, const DrawState& state, DrawPacket& 
   const bool shared = jobs == 1;
   BinnedBatch* shared_batch = shared ? &frame.SharedBatch(scratch.shaded.nvar) : nullptr;
   if (!shared) frame.NewBatches(jobs, scratch.shaded.nvar);
+  // A draw with batches of its own and shaded vertices that stay as they are (`keep_vertices`: no other binning
+  // of them follows) bins its filled triangles inside the guard band by their vertices' numbers, and the frame
+  // keeps the shaded vertices' window runs for its tiles to read: nothing copied per triangle or per tile.
+  const bool indexed = keep_vertices && !shared;
+  const float* table = scratch.shaded.window_vertices.data();
   const auto& map = scratch.element_to_shaded;
   const auto& idx = prims.indices;
   const TileGrid& grid = frame.Grid();
@@ -586,6 +609,10 @@ void BinPrimitives(const AssembledPiece& a, const DrawState& state, DrawPacket& 
   pool.Run(jobs, [&](int job, int worker) {
     BinnedBatch& bins = shared ? *shared_batch : frame.Batch(packet, job);
     PrimitiveRunner runner(state, scratch.shaded, bins, grid, *scratch.primitive[std::size_t(worker)]);
+    if (indexed) {
+      bins.SetTable(table);
+      runner.UseTable(true);
+    }
     const std::size_t end = std::min(count, std::size_t(job + 1) * job_size);
     // Primitive p is primitive q of instance g: q and the instance's shift advance with p (no division per
     // primitive).
@@ -636,6 +663,7 @@ void BinPrimitives(const AssembledPiece& a, const DrawState& state, DrawPacket& 
     return;
   }
   for (int j = 0; j < jobs; ++j) frame.AddBytes(frame.Batch(packet, j).Bytes());
+  if (indexed) frame.KeepVertices(scratch.shaded.window_vertices);  // (its data, `table`, moves with it)
 }
 
 // Primitives drawn into a layered framebuffer whose program writes gl_Layer: each binned into a draw command of its
@@ -690,7 +718,7 @@ void RecordPiece(const DrawCall& call, const FetchPlan& fetch, const DrawState& 
   if (frame.Bytes() > kFrameBudgetBytes) frame.Render(pool, scratch.tiles);
   DrawPacket& packet = frame.AddDraw(target, proto);
   ShadeAndAssemble(call, fetch, state, pool, scratch,
-                   [&](const AssembledPiece& a) { BinPrimitives(a, state, packet, frame, pool, scratch); });
+                   [&](const AssembledPiece& a) { BinPrimitives(a, state, packet, frame, pool, scratch, -1, true); });
   frame.ListLastDraw();
 }
 

@@ -413,8 +413,18 @@ void Frame::Reset() {
     if (batches_[i]->Bytes() > (std::size_t(8) << 20)) batches_[i] = std::make_unique<BinnedBatch>();
   }
   batches_used_ = 0;
+  for (std::vector<float>& kept : kept_vertices_)
+    if (kept.capacity() * sizeof(float) > (std::size_t(8) << 20)) std::vector<float>().swap(kept);
+  kept_used_ = 0;
   open_ = kNone;
   bytes_ = 0;
+}
+
+void Frame::KeepVertices(std::vector<float>& vertices) {
+  if (kept_used_ == kept_vertices_.size()) kept_vertices_.emplace_back();
+  std::vector<float>& kept = kept_vertices_[kept_used_++];
+  kept.swap(vertices);
+  bytes_ += kept.capacity() * sizeof(float);
 }
 
 static_assert(SampleTiles::kSize == kTileSize, "SampleTiles follows the tile renderer's grid");
@@ -512,12 +522,12 @@ void Frame::RenderTile(int tile, TileScratch& scratch) const {
     blocks.count = 0;
     blocks.samples = target_.samples;
     const auto rasterize = [&](const BinnedBatch& batch) {
-      return [&](const BinnedPrimitive& p, const float* vertices) {
+      return [&](const BinnedPrimitive& p, const VertexRuns& vertices) {
         if (counts_) ++(*counts_)[std::size_t(tile)];  // (each tile is rendered by one thread)
         if (lazy && lazy_tile->cleared) lazy->Store(target_, tile, kAllBuffers);  // the first primitive here
         if (p.kind == PrimitiveKind::kTriangle) {  // read in place
-          if (queue.Add(batch.View(vertices, 0), batch.View(vertices, 1), batch.View(vertices, 2), p.depth_offset,
-                        p.front_facing))
+          if (queue.Add(BinnedBatch::View(vertices, 0), BinnedBatch::View(vertices, 1), BinnedBatch::View(vertices, 2),
+                        p.depth_offset, p.front_facing))
             RasterizeTriangles(queue, rt, blocks, sink);
           return;
         }

@@ -106,6 +106,10 @@ class Frame {
   /// the commands listed in it.
   void ListLastDraw();
 
+  /// Keeps `vertices` (the window runs of a draw's shaded vertices, which its batches' tables point into) until
+  /// the frame is rendered or reset, counting its bytes; `vertices` gets in exchange a vector an earlier frame
+  /// kept (its storage reused, so a steady sequence of draws allocates nothing).
+  void KeepVertices(std::vector<float>& vertices);
   /// Memory held by recorded batches, in bytes: the sum of what AddBytes was told since the frame began.
   std::size_t Bytes() const { return bytes_; }
   /// Counts `bytes` more held by the frame's batches (each batch counted once, when it is filled).
@@ -145,6 +149,8 @@ class Frame {
   std::vector<ClearPacket> clears_;
   std::vector<std::unique_ptr<BinnedBatch>> batches_;
   std::size_t batches_used_ = 0;
+  std::vector<std::vector<float>> kept_vertices_;  // KeepVertices: kept_used_ of them held by this frame
+  std::size_t kept_used_ = 0;
   // The open shared batch: its index in batches_, the last command that used it, and where the last draw's part
   // of it began.
   static constexpr std::uint32_t kNone = ~0u;

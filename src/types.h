@@ -38,7 +38,13 @@ struct ShadedVertices {
   // clip codes and, where they are 0, its window position and varyings divided by w (what ToWindow gives).
   std::vector<unsigned> clip_codes;
   std::vector<glm::vec4> window;
-  std::vector<float> window_varyings;  // [count][nvar]
+  // [count][4 + nvar]: each vertex's window position, then its varyings divided by w (a binned primitive's vertex
+  // as the tiles read it: BinnedBatch's tables).
+  std::vector<float> window_vertices;
+  int WindowStride() const { return 4 + nvar; }
+  const float* WindowVertexAt(std::uint32_t i) const {
+    return window_vertices.data() + std::size_t(i) * std::size_t(WindowStride());
+  }
   // While transform feedback records: the values it records of each vertex, as the vertex stage wrote them
   // ([count][FeedbackLayout::floats]).
   std::vector<float> feedback;

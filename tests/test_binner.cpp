@@ -13,6 +13,7 @@ using detail::BinnedPrimitive;
 using detail::PrimitiveKind;
 using detail::Rect;
 using detail::TileGrid;
+using detail::VertexRuns;
 using detail::WindowVertex;
 
 namespace {
@@ -29,9 +30,9 @@ void AddTriangle(BinnedBatch& batch, const TileGrid& grid, const Rect& box, floa
 // The tags of the primitives `tile` visits, in visit order.
 std::vector<float> Visits(const BinnedBatch& batch, const TileGrid& grid, int tile) {
   std::vector<float> tags;
-  batch.ForEachInTile(tile, grid.TileRect(tile), [&](const BinnedPrimitive& p, const float* vertices) {
+  batch.ForEachInTile(tile, grid.TileRect(tile), [&](const BinnedPrimitive& p, const VertexRuns& vertices) {
     CHECK(p.kind == PrimitiveKind::kTriangle);
-    tags.push_back(vertices[2]);  // vertex 0's window z
+    tags.push_back(vertices.v[0][2]);  // vertex 0's window z
   });
   return tags;
 }
@@ -94,10 +95,10 @@ TEST_CASE("binning: a shared batch is walked by ranges of primitives, each range
     const std::uint32_t bounds[] = {0, 2, 4, 6};
     for (int r = 0; r < 3; ++r) {
       const auto before = ranged.size();
-      batch.ForEachInTile(tile, rect, cursor, bounds[r], bounds[r + 1], [&](const BinnedPrimitive& p, const float* v) {
+      batch.ForEachInTile(tile, rect, cursor, bounds[r], bounds[r + 1], [&](const BinnedPrimitive& p, const VertexRuns& v) {
         CHECK(p.index >= bounds[r]);
         CHECK(p.index < bounds[r + 1]);
-        ranged.push_back(v[2]);
+        ranged.push_back(v.v[0][2]);
       });
       for (auto i = before; i < ranged.size(); ++i) CHECK(ranged[i] > float(bounds[r]));  // tags are index + 1
     }
@@ -106,8 +107,61 @@ TEST_CASE("binning: a shared batch is walked by ranges of primitives, each range
   // A range that starts past primitives no draw of this tile claims skips them.
   BinnedBatch::Cursor cursor;
   std::vector<float> late;
-  batch.ForEachInTile(0, grid.TileRect(0), cursor, 3, 6, [&](const BinnedPrimitive&, const float* v) { late.push_back(v[2]); });
+  batch.ForEachInTile(0, grid.TileRect(0), cursor, 3, 6, [&](const BinnedPrimitive&, const VertexRuns& v) { late.push_back(v.v[0][2]); });
   CHECK(late == std::vector<float>{4, 5});
+}
+
+TEST_CASE("binning: primitives whose vertices are numbers in a table read the table's runs, mixed with copied ones",
+          "[binner]") {
+  // A table of 8 vertices with 2 varyings each (window position, then varyings): vertex i has window z 100 + i and
+  // varyings 200 + i, 300 + i. Indexed triangles of each size, between copied ones, and a point.
+  constexpr int kNvar = 2, kStride = 4 + kNvar;
+  std::vector<float> table(8 * kStride);
+  for (int i = 0; i < 8; ++i) {
+    const float run[kStride] = {0.0f, 0.0f, 100.0f + float(i), 1.0f, 200.0f + float(i), 300.0f + float(i)};
+    std::copy(run, run + kStride, table.begin() + i * kStride);
+  }
+  const TileGrid grid = TileGrid::For(1024, 1024);
+  BinnedBatch batch;
+  batch.Reset(kNvar);
+  batch.SetTable(table.data());
+  auto indexed = [&](const Rect& box, std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+    BinnedPrimitive p;
+    p.kind = PrimitiveKind::kTriangle;
+    const std::uint32_t index[3] = {a, b, c};
+    batch.AddIndexed(p, index, box, grid);
+  };
+  indexed(Rect{10, 10, 20, 20}, 0, 1, 2);     // small: tile 0
+  AddTriangle(batch, grid, Rect{0, 0, 300, 100}, 1.0f);  // copied, medium (its vertices shared by its tiles)
+  indexed(Rect{0, 0, 300, 100}, 3, 4, 5);     // medium: 5 x 2 tiles, its numbers in each list
+  indexed(Rect{0, 0, 1024, 1024}, 7, 6, 5);   // large: in no list
+  indexed(Rect{30, 30, 40, 40}, 5, 5, 5);     // small, one vertex three times
+  BinnedPrimitive point;
+  point.kind = PrimitiveKind::kPoint;
+  const std::uint32_t at = 2;
+  batch.AddIndexed(point, &at, Rect{1000, 1000, 1002, 1002}, grid);  // the last tile
+  batch.Finish(grid);
+  // Each visit: vertex 0's window z (a copied triangle's tag) and, for an indexed one, every vertex's varyings.
+  auto visits = [&](int tile) {
+    std::vector<float> seen;
+    batch.ForEachInTile(tile, grid.TileRect(tile), [&](const BinnedPrimitive& p, const VertexRuns& v) {
+      seen.push_back(v.v[0][2]);
+      if (!p.indexed) return;
+      // An indexed triangle's numbers are no larger than a reference to them: only the large one is shared.
+      CHECK(p.shared == (v.v[0][2] == 107.0f));
+      for (int k = 0; k < int(p.kind); ++k) {
+        const float z = v.v[k][2];
+        CHECK(v.v[k][4] == z + 100.0f);
+        CHECK(v.v[k][5] == z + 200.0f);
+        CHECK(BinnedBatch::View(v, k).var == v.v[k] + 4);
+      }
+    });
+    return seen;
+  };
+  CHECK(visits(0) == std::vector<float>{100, 1, 103, 107, 105});
+  CHECK(visits(4) == std::vector<float>{1, 103, 107});
+  CHECK(visits(200) == std::vector<float>{107});
+  CHECK(visits(255) == std::vector<float>{107, 102});
 }
 
 TEST_CASE("binning: a large primitive is visited only by the tiles its box overlaps", "[binner]") {

@@ -324,8 +324,9 @@ TEST_CASE("an indexed draw of a mesh shades its index range once and draws what 
           "[vertex_fetch]") {
   // A 30 x 30 grid of vertices (numbers 40 .. 940, one of them, 490, used by no triangle), 1,682 triangles: its
   // indices are packed close together (the range a third of the elements at most), so the whole range is shaded,
-  // each vertex once, the unused one too. A few triangles cross the near plane and are clipped. The image must be
-  // the bytes of the same triangles drawn unindexed in draws of 300.
+  // each vertex once, the unused one too. The triangles are then binned by their vertices' numbers (more than one
+  // batch's worth); a few cross the near plane and are clipped. The image must be the bytes of the same triangles
+  // drawn unindexed in draws of 300 (their vertices copied into shared batches).
   struct Counting : softgl::Shader<Counting, testing::Vec4Varyings> {
     std::vector<std::atomic<int>>* per_vertex = nullptr;
     void Vertex(const VertexIn& in, VertexOut<testing::Vec4Varyings>& out) const {
