@@ -597,8 +597,12 @@ void BinPrimitives(const AssembledPiece& a, const DrawState& state, DrawPacket& 
   if (!shared) frame.NewBatches(jobs, scratch.shaded.nvar);
   // A draw with batches of its own and shaded vertices that stay as they are (`keep_vertices`: no other binning
   // of them follows) bins its filled triangles inside the guard band by their vertices' numbers, and the frame
-  // keeps the shaded vertices' window runs for its tiles to read: nothing copied per triangle or per tile.
-  const bool indexed = keep_vertices && !shared;
+  // keeps the shaded vertices' window runs for its tiles to read: nothing copied per triangle or per tile. Only
+  // where its primitives share vertices (each used twice at least, on average), as a mesh's do: a tile then reads
+  // runs near each other. Primitives each with vertices of their own are copied into the tiles' lists, which a
+  // tile reads in order; read by number, they would lie all over the draw's vertices.
+  const bool indexed =
+      keep_vertices && !shared && std::uint64_t(unique) * 2 <= std::uint64_t(per_instance) * std::uint64_t(per);
   const float* table = scratch.shaded.window_vertices.data();
   const auto& map = scratch.element_to_shaded;
   const auto& idx = prims.indices;
