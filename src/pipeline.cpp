@@ -51,25 +51,40 @@ bool AnyNoPerspective(const Interpolation* interpolation, int nvar) {
     }
   ClipCodesOfVertices(&out.position[std::size_t(base)], m, planes, &out.clip_codes[std::size_t(base)]);
   WindowPositions(&out.position[std::size_t(base)], m, viewport, &out.window[std::size_t(base)]);
+  // (Everything read once into locals: the vector stores below may alias anything, and the compiler would read
+  // the arrays' places again after each.)
+  const int nvar = out.nvar;
+  const std::size_t stride = std::size_t(out.WindowStride());
+  const glm::vec4* const position = out.position.data();
+  const glm::vec4* const window = out.window.data();
+  const unsigned* const codes = out.clip_codes.data();
+  float* const varyings = out.varyings.data();
+  float* const runs = out.window_vertices.data();
+  using F4 = V<4>::F;
+  if (nvar == 0) {  // the runs are the window positions (those of vertices outside the guard band unread)
+    std::memcpy(runs + std::size_t(base) * 4, window + base, sizeof(glm::vec4) * std::size_t(m));
+    return;
+  }
   for (int i = base; i < base + m; ++i) {
-    const float w = out.position[std::size_t(i)].w;
-    float* __restrict v = out.varyings.data() + std::size_t(i) * out.nvar;
-    if (noperspective)
-      for (int k = 0; k < out.nvar; ++k)
+    float* v = varyings + std::size_t(i) * std::size_t(nvar);
+    if (noperspective) {
+      const float w = position[i].w;
+      for (int k = 0; k < nvar; ++k)
         if (interpolation[k] == Interpolation::kNoPerspective) v[k] *= w;
-    if (out.clip_codes[std::size_t(i)] != 0) continue;
-    const glm::vec4& window = out.window[std::size_t(i)];
-    float* __restrict run = out.window_vertices.data() + std::size_t(i) * std::size_t(out.WindowStride());
-    std::memcpy(run, &window, sizeof(float) * 4);
+    }
+    if (codes[i] != 0) continue;
+    const F4 win = LoadVec<F4>(&window[i]);
+    const float oow = win[3];
+    float* run = runs + std::size_t(i) * stride;
+    StoreVec(run, win);
     // Four varyings to a vector, then the last one to three (a loop of the varyings' count, which is short, costs
     // more in its set-up than in its multiplications).
-    using F4 = V<4>::F;
     int k = 0;
-    for (; k + 4 <= out.nvar; k += 4) StoreVec(run + 4 + k, LoadVec<F4>(v + k) * window.w);
-    switch (out.nvar - k) {  // (not a loop: the compiler would vectorize it too, at a set-up's cost)
-      case 3: run[6 + k] = v[k + 2] * window.w; [[fallthrough]];
-      case 2: run[5 + k] = v[k + 1] * window.w; [[fallthrough]];
-      case 1: run[4 + k] = v[k] * window.w; break;
+    for (; k + 4 <= nvar; k += 4) StoreVec(run + 4 + k, LoadVec<F4>(v + k) * oow);
+    switch (nvar - k) {  // (not a loop: the compiler would vectorize it too, at a set-up's cost)
+      case 3: run[6 + k] = v[k + 2] * oow; [[fallthrough]];
+      case 2: run[5 + k] = v[k + 1] * oow; [[fallthrough]];
+      case 1: run[4 + k] = v[k] * oow; break;
       default: break;
     }
   }
