@@ -13,7 +13,9 @@ data=$(mktemp)
 trap 'rm -f "$data"' EXIT
 echo "| scene | front end | binning | clears | rasterization | early depth test | fragment shader and texture sampling | fragment operations | memory copies, fills, page faults | bench set-up (% of samples, left out) |"
 echo "|---|---|---|---|---|---|---|---|---|---|"
-scenes=("model: 2Cyl" "african_head" "small triangles" "fill rate" "overdraw" "many draws, each its own")
+# (a name ending in $ is matched as the end of the scene's: the engine alone, not its multisampled forms)
+scenes=("model: 2CylinderEngine, Blinn-Phong$" "model: SuzanneSubdiv_252, Blinn-Phong$" "african_head" "small triangles"
+        "fill rate" "overdraw" "many draws, each its own")
 [ $# -gt 0 ] && scenes=("$@")  # scenes named on the command line: only those
 for scene in "${scenes[@]}"; do
   frames=20
@@ -23,7 +25,7 @@ for scene in "${scenes[@]}"; do
 import re, sys
 rules = [
   ("front end", r"FetchAttribute|FetchVertices|ShadeVertices|Vertices(Avx512|Avx2|Base)|VertexLanes|Resolve|ClipCodes|ClipTriangle|ClipLine|ToWindow|SignedArea|AssemblePrimitives|AssembleRun|RecordChunk|RecordDraw|RecordPiece|PrimitiveRunner|ReadIndices|Intersect|IsFrontFacing|IsCulled|PolygonOffset|CoversNoPixelCentre|TriangleCentreBox|DrawsNothing|WindowPositions|JudgeGroup|JudgeTriangles|ContextState::Draw|Context::Draw|Context::BindVertexArray|CheckNotMapped|CheckModes|FrameTarget|Framebuffer::Samples|SameBuffers|MakeView|Snapshot|MakeViewportTransform|WorkerPool|ShadeSmallDraw|SmallDrawApplies|JoinsPending|RecordPending|UniqueVertices|FragmentOpsState::operator=="),
-  ("binning", r"BinnedBatch::Add|BinnedBatch::Finish|TriangleBox|LineBox|PointBox|::Box\(|SharedBatch|NewBatches|ListLastDraw|Frame::AddDraw|Frame::List"),
+  ("binning", r"BinnedBatch::Add|BinnedBatch::Note|BinnedBatch::Finish|TriangleBox|LineBox|PointBox|::Box\(|SharedBatch|NewBatches|ListLastDraw|Frame::AddDraw|Frame::List"),
   ("clears", r"RenderTarget::Clear|FillTexels"),
   ("rasterization", r"Rasterize|TriangleQuads|CoverTriangle|SetUpTriangle|SetUpGroup|RenderTile|BinnedBatch::Vertex|BinnedBatch::View|FragmentStage|RegionCoverage|FragCoord|VaryingsOfBlock|InterpolateVaryings|InterpolateFragCoords|AddSquare|AddQuad|EmitQuad|BlockSink"),
   ("early depth test", r"EarlyDepth|EarlyBlock|EarlyRange|HierarchicalDepth|HiddenTriangle|HiddenRegion"),

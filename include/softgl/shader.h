@@ -28,9 +28,11 @@
 // lane, with the same results and the speed of scalar code.
 //
 // Vertex() and Fragment() run on the context's worker threads, several at once on the same shader object: they
-// must only read the shader's members. The vertex stage runs during the draw call; the fragment stage runs later,
-// when the context renders (ReadPixels, Finish, ...), on a copy of the shader taken at the draw (Snapshot), so
-// changing uniforms between draws works as in OpenGL.
+// must only read the shader's members. How often Vertex() runs for a vertex is not fixed, as in OpenGL: a draw
+// shades each vertex it uses at least once, and an indexed draw whose indices lie close together shades every
+// vertex from its lowest index to its highest. The vertex stage runs during the draw call; the fragment stage runs
+// later, when the context renders (ReadPixels, Finish, ...), on a copy of the shader taken at the draw (Snapshot),
+// so changing uniforms between draws works as in OpenGL.
 #pragma once
 
 #include <softgl/config.h>
