@@ -881,6 +881,9 @@ void RecordDraw(const DrawCall& call, const FetchPlan& fetch, const DrawState& s
     if (!call.elements && piece.empty()) {  // consecutive vertices: a DrawArrays piece of its own
       sub.first = call.first + std::uint32_t(s);
       sub.count = int(stop - s);
+    } else if (piece.empty()) {  // consecutive elements: read where they are
+      sub.elements = call.elements + s;
+      sub.count = int(stop - s);
     } else {
       if (call.elements) piece.insert(piece.end(), call.elements + s, call.elements + stop);
       else

@@ -8,7 +8,9 @@
 #include <set>
 #include <vector>
 
+#include "color_shader.h"
 #include "helpers.h"
+#include "pipeline.h"
 #include "vertex_fetch.h"
 
 using namespace softgl;
@@ -320,6 +322,35 @@ TEST_CASE("an indexed draw fetches and shades each distinct index once", "[verte
   for (int i = 0; i < 300; ++i) CHECK(per_vertex[std::size_t(i)] == (i % 3 == 0 ? 2 : i % 3 == 1 ? 1 : 0));
 }
 
+// The triangles `indices` make of `positions`, coloured by `colors` (attribute 1), drawn with `shader` and the
+// depth test into a w x h target: in one DrawElement (`indexed`), or with their vertices copied and drawn in
+// DrawArrays of 900 vertices.
+template <class S>
+softgl::Image DrawTriangles(S& shader, int w, int h, bool indexed, const std::vector<glm::vec4>& positions,
+                            const std::vector<glm::vec4>& colors, const std::vector<std::uint32_t>& indices) {
+  Context gl(w, h);
+  gl.Enable(DEPTH_TEST);
+  gl.ClearColor(0.1f, 0.2f, 0.3f, 1.0f);
+  gl.Clear(COLOR_BUFFER_BIT | DEPTH_BUFFER_BIT);
+  gl.UseProgram(shader);
+  if (indexed) {
+    testing::MakeVertexArray(gl, positions, colors);
+    gl.BindBuffer(ELEMENT_ARRAY_BUFFER, gl.GenBuffer());
+    gl.BufferData(ELEMENT_ARRAY_BUFFER, std::ptrdiff_t(indices.size() * 4), indices.data());
+    gl.DrawElement(TRIANGLES, int(indices.size()), UNSIGNED_INT, 0);
+  } else {
+    std::vector<glm::vec4> p, c;
+    for (std::uint32_t i : indices) {
+      p.push_back(positions[i]);
+      c.push_back(colors[i]);
+    }
+    testing::MakeVertexArray(gl, p, c);
+    for (int first = 0; first < int(p.size()); first += 900) gl.DrawArrays(TRIANGLES, first, std::min(900, int(p.size()) - first));
+  }
+  CHECK(gl.GetError() == NO_ERROR);
+  return gl.ReadPixels();
+}
+
 TEST_CASE("an indexed draw of a mesh shades its index range once and draws what the same triangles draw unindexed",
           "[vertex_fetch]") {
   // A 30 x 30 grid of vertices (numbers 40 .. 940, one of them, 490, used by no triangle), 1,682 triangles: its
@@ -360,29 +391,7 @@ TEST_CASE("an indexed draw of a mesh shades its index range once and draws what 
   std::vector<std::atomic<int>> per_vertex(kVertices);
   Counting shader;
   shader.per_vertex = &per_vertex;
-  auto render = [&](bool indexed) {
-    Context gl(96, 80);
-    gl.Enable(DEPTH_TEST);
-    gl.ClearColor(0.1f, 0.2f, 0.3f, 1.0f);
-    gl.Clear(COLOR_BUFFER_BIT | DEPTH_BUFFER_BIT);
-    gl.UseProgram(shader);
-    if (indexed) {
-      testing::MakeVertexArray(gl, positions, colors);
-      gl.BindBuffer(ELEMENT_ARRAY_BUFFER, gl.GenBuffer());
-      gl.BufferData(ELEMENT_ARRAY_BUFFER, std::ptrdiff_t(indices.size() * 4), indices.data());
-      gl.DrawElement(TRIANGLES, int(indices.size()), UNSIGNED_INT, 0);
-    } else {
-      std::vector<glm::vec4> p, c;
-      for (std::uint32_t i : indices) {
-        p.push_back(positions[i]);
-        c.push_back(colors[i]);
-      }
-      testing::MakeVertexArray(gl, p, c);
-      for (int first = 0; first < int(p.size()); first += 900) gl.DrawArrays(TRIANGLES, first, std::min(900, int(p.size()) - first));
-    }
-    CHECK(gl.GetError() == NO_ERROR);
-    return gl.ReadPixels();
-  };
+  auto render = [&](bool indexed) { return DrawTriangles(shader, 96, 80, indexed, positions, colors, indices); };
   const softgl::Image indexed = render(true);
   int wrong = 0;
   for (int i = 0; i < kVertices; ++i) wrong += per_vertex[std::size_t(i)].exchange(0) != (i >= kFirst ? 1 : 0);
@@ -395,6 +404,36 @@ TEST_CASE("an indexed draw of a mesh shades its index range once and draws what 
   for (std::size_t k = 0; k < indexed.rgba.size(); k += 4)
     colours.insert(std::uint32_t(indexed.rgba[k]) | std::uint32_t(indexed.rgba[k + 1]) << 8 | std::uint32_t(indexed.rgba[k + 2]) << 16);
   CHECK(colours.size() > 500);
+}
+
+TEST_CASE("an indexed draw larger than a piece draws each piece's own triangles", "[vertex_fetch]") {
+  // A 130 x 130 grid, 33,282 triangles: 99,846 elements, three pieces of kDrawChunk elements at most, each read
+  // from its place in the draw's elements. The image must be the bytes of the same triangles drawn unindexed in
+  // draws of 900 vertices (each a piece of its own).
+  constexpr int kSide = 130;
+  std::vector<glm::vec4> positions, colors;
+  for (int j = 0; j < kSide; ++j)
+    for (int i = 0; i < kSide; ++i) {
+      const float x = float(i) / float(kSide - 1) * 1.9f - 0.95f + 0.004f * float(j % 3);
+      const float y = float(j) / float(kSide - 1) * 1.9f - 0.95f + 0.003f * float(i % 4);
+      positions.emplace_back(x, y, 0.4f * float((i * 5 + j * 3) % 7) / 7.0f - 0.2f, 1.0f);
+      colors.emplace_back(float(i) / kSide, float(j) / kSide, float((i * 3 + j) % 11) / 11.0f, 1.0f);
+    }
+  std::vector<std::uint32_t> indices;
+  for (int j = 0; j + 1 < kSide; ++j)
+    for (int i = 0; i + 1 < kSide; ++i) {
+      const std::uint32_t a = std::uint32_t(j * kSide + i), b = a + 1, c = a + kSide, d = c + 1;
+      for (std::uint32_t v : {a, b, d, a, d, c}) indices.push_back(v);
+    }
+  REQUIRE(indices.size() > 2 * std::size_t(softgl::detail::kDrawChunk));
+  testing::ColorShader shader;
+  auto render = [&](bool indexed) { return DrawTriangles(shader, 160, 144, indexed, positions, colors, indices); };
+  const softgl::Image indexed = render(true), unindexed = render(false);
+  CHECK(indexed.rgba == unindexed.rgba);
+  std::set<std::uint32_t> colours;  // the grid's colours, not the clear colour alone
+  for (std::size_t k = 0; k < indexed.rgba.size(); k += 4)
+    colours.insert(std::uint32_t(indexed.rgba[k]) | std::uint32_t(indexed.rgba[k + 1]) << 8 | std::uint32_t(indexed.rgba[k + 2]) << 16);
+  CHECK(colours.size() > 1000);
 }
 
 TEST_CASE("a DrawArrays larger than a piece shades each of its vertices once, with its own gl_VertexID",
